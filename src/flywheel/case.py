@@ -1,0 +1,506 @@
+"""Case files: TOML read with tomllib, validated by pydantic into typed models.
+
+Units are SI; angles are degrees in the file (``*_deg``) and radians everywhere inside.
+Unknown keys are errors (with the nearest valid key), NaN and infinity are refused, names
+must be defined before they are used. Every problem becomes one
+:class:`~flywheel.errors.CaseFileError` line: ``file: field.path: what is wrong (allowed)``.
+The format is documented field by field in docs/case-format.md.
+"""
+from __future__ import annotations
+
+import difflib
+import math
+import tomllib
+import typing
+from pathlib import Path
+from typing import Annotated, Literal, Union
+
+from pydantic import BaseModel, ConfigDict, Field, ValidationError, model_validator
+
+from flywheel.errors import CaseFileError
+
+Pos = Annotated[float, Field(gt=0)]
+NonNeg = Annotated[float, Field(ge=0)]
+Name = Annotated[str, Field(min_length=1)]
+XY = tuple[float, float]
+
+
+class _Model(BaseModel):
+    model_config = ConfigDict(extra="forbid", allow_inf_nan=False, populate_by_name=True)
+
+
+class Machine(_Model):
+    """Operating data of the machine."""
+
+    speed_rps: Pos | None = Field(None, description="crank speed n1 [rev/s]")
+    speed_rpm: Pos | None = Field(None, description="crank speed [rev/min] (instead of speed_rps)")
+    delta: float = Field(gt=0, lt=1, description="coefficient of speed fluctuation δ, 0 < δ < 1")
+    balance: Literal["driving", "resistance"] = Field(
+        "driving", description="the unknown constant moment found from the cycle balance")
+    gravity: XY = Field((0.0, -9.81), description="gravity vector g [m/s²]")
+    first_group: dict[str, NonNeg] = Field(
+        default_factory=dict,
+        description="moments of inertia already on the crank shaft, reduced to it [kg·m²]")
+
+    @model_validator(mode="after")
+    def _check(self):
+        if (self.speed_rps is None) == (self.speed_rpm is None):
+            raise ValueError("give exactly one of speed_rps, speed_rpm")
+        return self
+
+    @property
+    def omega_mean(self) -> float:
+        """ω_m = 2π·n1 [rad/s] (seed 000: ω_1ср = 2·π·n1)."""
+        n = self.speed_rps if self.speed_rps is not None else self.speed_rpm / 60.0
+        return 2 * math.pi * n
+
+
+class Design(_Model):
+    """Optional design rules that derive lengths as seed 000 does."""
+
+    mean_piston_speed: Pos | None = Field(
+        None, description="V_ср [m/s]: crank length l1 = V_ср/(4·n1) where crank.length is omitted")
+    rod_to_crank: Pos | None = Field(
+        None, description="k: rod length = k·l1 for every RRP dyad whose rod_length is omitted")
+
+
+class CrankSpec(_Model):
+    """The driving link (link 1)."""
+
+    name: Name = Field("1", description="link name")
+    pivot: Name = Field("O", description="name of the fixed pivot")
+    pivot_at: XY = Field((0.0, 0.0), description="pivot position [m]")
+    tip: Name = Field("A", description="name of the crank pin")
+    length: Pos | None = Field(None, description="crank length l1 [m]")
+    start_angle_deg: float = Field(0.0, description="crank angle from +x at φ = 0 [deg]")
+    rotation: Literal["cw", "ccw"] = Field("ccw", description="direction of rotation")
+
+
+class GuideSpec(_Model):
+    """A fixed straight guide."""
+
+    through: XY = Field((0.0, 0.0), description="a point of the guide line [m]")
+    angle_deg: float = Field(description="direction of the guide from +x [deg]")
+    offset: float = Field(0.0, description="shift along the guide's left normal [m]")
+
+
+Branch = Literal["+", "-"]
+
+
+class RRPSpec(_Model):
+    """Connecting rod + slider on a fixed guide."""
+
+    kind: Literal["RRP"]
+    name: str | None = Field(None, description="dyad name (default: the joint's)")
+    from_: Name = Field(alias="from", description="known point the rod starts from")
+    joint: Name = Field(description="name of the rod–slider joint (new point)")
+    rod: Name = Field(description="link name of the rod")
+    rod_length: Pos | None = Field(None, description="rod length [m]")
+    slider: Name = Field(description="link name of the slider")
+    guide: GuideSpec
+    branch: Branch = Field("+", description="assembly: joint ahead (+) of or behind (−) the "
+                                            "rod's foot along the guide direction")
+
+
+class RRRSpec(_Model):
+    """Two links, three revolute joints."""
+
+    kind: Literal["RRR"]
+    name: str | None = None
+    from_: Name = Field(alias="from", description="known point of the first link")
+    link_from: Name = Field(description="link name from `from` to the joint")
+    length_from: Pos = Field(description="its length [m]")
+    to: Name = Field(description="known point of the second link")
+    link_to: Name = Field(description="link name from `to` to the joint")
+    length_to: Pos = Field(description="its length [m]")
+    joint: Name = Field(description="name of the middle joint (new point)")
+    branch: Branch = Field("+", description="joint left (+) or right (−) of the line from → to")
+
+
+class RPRSpec(_Model):
+    """Slotted link (кулиса): a block at a known point slides on a rocker about a pivot."""
+
+    kind: Literal["RPR"]
+    name: str | None = None
+    from_: Name = Field(alias="from", description="known point carrying the block")
+    pivot: Name = Field(description="known point the rocker turns about")
+    rocker: Name = Field(description="link name of the rocker")
+    slider: Name = Field(description="link name of the block")
+    offset: float = Field(0.0, description="slide line offset from the pivot [m]")
+    branch: Branch = Field("+", description="block on the rocker's positive (+) side of the pivot")
+
+
+DyadSpec = Annotated[Union[RRPSpec, RRRSpec, RPRSpec], Field(discriminator="kind")]
+
+
+class PointSpec(_Model):
+    """A point fixed on a link: by fraction from→to (+ across) or by distance and angle."""
+
+    link: Name
+    from_: Name = Field(alias="from", description="a point of the link")
+    to: str | None = Field(None, description="another point of the link")
+    fraction: float = Field(0.0, description="share of the way from → to")
+    across: float = Field(0.0, description="shift along the left normal of from → to [m]")
+    distance: NonNeg | None = Field(None, description="distance from `from` [m]")
+    angle_deg: float = Field(0.0, description="angle to the link's direction [deg]")
+
+    @model_validator(mode="after")
+    def _one_way(self):
+        if (self.to is None) == (self.distance is None):
+            raise ValueError("give either `to` (with fraction) or `distance` (with angle_deg)")
+        return self
+
+
+class LinkSpec(_Model):
+    """Mass data of a link."""
+
+    mass: NonNeg = Field(0.0, description="mass [kg]")
+    J_S: NonNeg = Field(0.0, description="moment of inertia about the centroid [kg·m²]")
+    centroid: str | None = Field(None, description="point where the mass sits")
+
+    @model_validator(mode="after")
+    def _centroid(self):
+        if self.mass > 0 and self.centroid is None:
+            raise ValueError("a link with mass needs `centroid`")
+        return self
+
+
+class CylinderSpec(_Model):
+    """A cylinder with its indicator diagram (relative pressure against relative travel)."""
+
+    name: Name
+    piston: Name = Field(description="slider link of an RRP dyad")
+    bore: Pos = Field(description="bore d [m]")
+    p_max: Pos = Field(description="maximum (gauge) pressure [Pa]")
+    head: Literal["outer", "inner"] = Field(
+        "outer", description="the dead centre at the cylinder head: farther from (outer) or "
+                             "nearer to (inner) the crank axis")
+    interpolation: Literal["linear", "pchip", "natural-spline"] = "linear"
+    s: list[float] = Field(description="relative travel from the head dead centre, 0 … 1")
+    towards_head: list[float] = Field(description="p/p_max while the piston moves towards the head")
+    away_from_head: list[float] = Field(description="p/p_max while it moves away from the head")
+
+    @model_validator(mode="after")
+    def _tables(self):
+        s = self.s
+        if len(s) < 2:
+            raise ValueError("s needs at least 2 values")
+        if any(b <= a for a, b in zip(s, s[1:])):
+            raise ValueError("s must be strictly increasing")
+        if abs(s[0]) > 1e-12 or abs(s[-1] - 1) > 1e-12:
+            raise ValueError(f"s must span [0, 1] (got {s[0]} … {s[-1]})")
+        for key in ("towards_head", "away_from_head"):
+            if len(getattr(self, key)) != len(s):
+                raise ValueError(f"{key} needs {len(s)} values, one per s (got {len(getattr(self, key))})")
+        return self
+
+
+class ForceSpec(_Model):
+    """A technological (resistance) force on a slider over part of its stroke; it acts against
+    the slider's motion."""
+
+    name: Name
+    slider: Name = Field(description="slider link of an RRP dyad")
+    magnitude: float = Field(description="force [N] (> 0 resists the motion)")
+    reference: Literal["outer", "inner"] = Field("outer", description="dead centre s is measured from")
+    s_range: XY = Field((0.0, 1.0), description="relative travel where the force acts, 0 … 1")
+    stroke: Literal["towards", "away", "both"] = Field(
+        "both", description="acts while the slider moves towards / away from the reference")
+
+
+class CoupleSpec(_Model):
+    """A constant couple on a link [N·m], counter-clockwise positive."""
+
+    name: Name
+    link: Name
+    moment: float
+
+
+class FlywheelSpec(_Model):
+    """Flywheel make (design.md §2)."""
+
+    density: Pos = Field(7800.0, description="material density ρ [kg/m³]")
+    width_ratio: Pos = Field(0.2, description="b/D")
+    inner_ratio: float = Field(0.8, gt=0, lt=1, description="rim: D_inner/D")
+
+
+class OutputSpec(_Model):
+    """What to report."""
+
+    at_deg: list[float] = Field(default_factory=lambda: [120.0],
+                                description="report angles [deg]")
+
+
+class Case(_Model):
+    """A whole case file."""
+
+    title: str = ""
+    source: str = ""
+    machine: Machine
+    design: Design = Field(default_factory=Design)
+    crank: CrankSpec
+    ground: dict[str, XY] = Field(default_factory=dict, description="fixed points [m]")
+    dyads: list[DyadSpec] = Field(default_factory=list)
+    points: dict[str, PointSpec] = Field(default_factory=dict)
+    links: dict[str, LinkSpec] = Field(default_factory=dict)
+    cylinders: list[CylinderSpec] = Field(default_factory=list)
+    forces: list[ForceSpec] = Field(default_factory=list)
+    couples: list[CoupleSpec] = Field(default_factory=list)
+    flywheel: FlywheelSpec = Field(default_factory=FlywheelSpec)
+    output: OutputSpec = Field(default_factory=OutputSpec)
+
+    # -- derived -------------------------------------------------------------------------
+    @property
+    def crank_length(self) -> float:
+        """l1 [m]: given, or V_ср/(4·n1) (seed 000, §1.1: l1 := V_ср/(n1·4))."""
+        if self.crank.length is not None:
+            return self.crank.length
+        n1 = self.machine.omega_mean / (2 * math.pi)
+        return self.design.mean_piston_speed / (4 * n1)
+
+    def rod_length(self, dyad: RRPSpec) -> float:
+        """Rod length [m]: given, or k·l1 (seed 000: l2 := l1·k)."""
+        return dyad.rod_length if dyad.rod_length is not None else self.design.rod_to_crank * self.crank_length
+
+    @model_validator(mode="after")
+    def _references(self):
+        _check_references(self)
+        return self
+
+
+class _RefError(ValueError):
+    def __init__(self, loc: tuple, msg: str):
+        super().__init__(msg)
+        self.loc = loc
+
+
+def _check_references(case: Case) -> None:
+    """Names are unique and defined before use; lengths can be derived."""
+    if case.crank.length is None and case.design.mean_piston_speed is None:
+        raise _RefError(("crank", "length"), "missing: give crank.length or design.mean_piston_speed")
+    points: set[str] = set()
+    links: set[str] = set()
+
+    def new_point(name: str, loc: tuple) -> None:
+        if name in points:
+            raise _RefError(loc, f"point name {name!r} is already defined")
+        points.add(name)
+
+    def new_link(name: str, loc: tuple) -> None:
+        if name in links:
+            raise _RefError(loc, f"link name {name!r} is already defined")
+        links.add(name)
+
+    def known(name: str, loc: tuple) -> None:
+        if name not in points:
+            raise _RefError(loc, f"point {name!r} is used before it is defined "
+                                 f"(defined so far: {', '.join(sorted(points))})")
+
+    for name in case.ground:
+        new_point(name, ("ground", name))
+    new_point(case.crank.pivot, ("crank", "pivot"))
+    new_point(case.crank.tip, ("crank", "tip"))
+    new_link(case.crank.name, ("crank", "name"))
+    pending = dict(case.points)
+    sliders: set[str] = set()
+
+    def place_points() -> None:
+        progress = True
+        while progress:
+            progress = False
+            for name, p in list(pending.items()):
+                if p.link in links and p.from_ in points and (p.to is None or p.to in points):
+                    new_point(name, ("points", name))
+                    del pending[name]
+                    progress = True
+
+    place_points()
+    for i, d in enumerate(case.dyads):
+        place_points()
+        known(d.from_, ("dyads", i, "from"))
+        if isinstance(d, RRPSpec):
+            if d.rod_length is None and case.design.rod_to_crank is None:
+                raise _RefError(("dyads", i, "rod_length"), "missing: give rod_length or design.rod_to_crank")
+            new_link(d.rod, ("dyads", i, "rod"))
+            new_link(d.slider, ("dyads", i, "slider"))
+            new_point(d.joint, ("dyads", i, "joint"))
+            sliders.add(d.slider)
+        elif isinstance(d, RRRSpec):
+            known(d.to, ("dyads", i, "to"))
+            new_link(d.link_from, ("dyads", i, "link_from"))
+            new_link(d.link_to, ("dyads", i, "link_to"))
+            new_point(d.joint, ("dyads", i, "joint"))
+        else:
+            known(d.pivot, ("dyads", i, "pivot"))
+            new_link(d.rocker, ("dyads", i, "rocker"))
+            new_link(d.slider, ("dyads", i, "slider"))
+    place_points()
+    for name, p in pending.items():
+        if p.link not in links:
+            raise _RefError(("points", name, "link"), f"link {p.link!r} is not defined "
+                                                      f"(links: {', '.join(sorted(links))})")
+        missing = p.from_ if p.from_ not in points else p.to
+        raise _RefError(("points", name), f"point {missing!r} is never defined")
+    for name, link in case.links.items():
+        if name not in links:
+            raise _RefError(("links", name), f"no link named {name!r} (links: {', '.join(sorted(links))})")
+        if link.centroid is not None and link.centroid not in points:
+            raise _RefError(("links", name, "centroid"), f"point {link.centroid!r} is not defined")
+    for i, c in enumerate(case.cylinders):
+        if c.piston not in sliders:
+            raise _RefError(("cylinders", i, "piston"), f"{c.piston!r} is not the slider of an RRP dyad "
+                                                        f"(sliders: {', '.join(sorted(sliders)) or 'none'})")
+    for i, f in enumerate(case.forces):
+        if f.slider not in sliders:
+            raise _RefError(("forces", i, "slider"), f"{f.slider!r} is not the slider of an RRP dyad")
+        lo, hi = f.s_range
+        if not 0 <= lo < hi <= 1:
+            raise _RefError(("forces", i, "s_range"), f"must satisfy 0 ≤ from < to ≤ 1 (got {lo}, {hi})")
+    for i, c in enumerate(case.couples):
+        if c.link not in links:
+            raise _RefError(("couples", i, "link"), f"no link named {c.link!r}")
+    names = [c.name for c in case.cylinders] + [f.name for f in case.forces] + [c.name for c in case.couples]
+    for n in names:
+        if names.count(n) > 1:
+            raise _RefError(("cylinders",), f"load name {n!r} is used twice")
+
+
+# -- errors ---------------------------------------------------------------------------------
+
+def _loc_str(loc: tuple) -> str:
+    out = ""
+    for part in loc:
+        if isinstance(part, int):
+            out += f"[{part}]"
+        else:
+            out += ("." if out else "") + str(part)
+    return out or "(top level)"
+
+
+def _fields_at(loc: tuple) -> list[str]:
+    """Valid keys of the table at ``loc`` (for 'did you mean')."""
+    kinds = {"RRP": RRPSpec, "RRR": RRRSpec, "RPR": RPRSpec}
+    tp: object = Case
+    for part in loc:
+        if isinstance(tp, type) and issubclass(tp, BaseModel):
+            f = tp.model_fields.get(part) or next(
+                (v for v in tp.model_fields.values() if v.alias == part), None)
+            if f is None:
+                return []
+            tp = f.annotation
+        else:
+            origin = typing.get_origin(tp)
+            args = typing.get_args(tp)
+            if origin in (list, dict):
+                tp = args[-1]
+            else:
+                return []
+        # unwrap Optional / Annotated unions
+        while typing.get_origin(tp) in (Union, Annotated, getattr(__import__("types"), "UnionType")):
+            args = [a for a in typing.get_args(tp) if a is not type(None)]
+            if typing.get_origin(tp) is Annotated:
+                tp = args[0]
+            elif all(isinstance(a, type) and issubclass(a, BaseModel) for a in args) and len(args) > 1:
+                tp = kinds  # a dyad: resolved by the caller
+                break
+            else:
+                tp = args[0]
+    if tp is kinds:
+        return sorted({(f.alias or n) for m in kinds.values() for n, f in m.model_fields.items()})
+    if isinstance(tp, type) and issubclass(tp, BaseModel):
+        return [(f.alias or n) for n, f in tp.model_fields.items()]
+    return []
+
+
+def _describe(err: dict) -> str:
+    loc = tuple(p for p in err["loc"] if p not in ("RRP", "RRR", "RPR"))
+    kind, msg = err["type"], err["msg"]
+    where = _loc_str(loc)
+    if kind == "extra_forbidden":
+        key = str(loc[-1])
+        allowed = _fields_at(loc[:-1])
+        near = difflib.get_close_matches(key, allowed, n=1)
+        hint = f"; did you mean {near[0]!r}?" if near else ""
+        return f"{where}: unknown key{hint} (allowed: {', '.join(allowed)})"
+    if kind == "missing":
+        return f"{where}: missing required field"
+    if kind == "union_tag_invalid" or kind == "union_tag_not_found":
+        return f"{where}: kind must be one of RRP, RRR, RPR"
+    if kind == "finite_number":
+        return f"{where}: must be a finite number (got {err.get('input')!r})"
+    if kind == "value_error":
+        msg = msg.removeprefix("Value error, ")
+        return f"{where}: {msg}"
+    got = err.get("input")
+    got_s = f" (got {got!r})" if not isinstance(got, (dict, list)) else ""
+    return f"{where}: {msg[0].lower() + msg[1:]}{got_s}"
+
+
+def parse_case(data: dict, source: str = "<case>") -> Case:
+    """Validate a parsed TOML document into a :class:`Case` or raise one CaseFileError line."""
+    try:
+        return Case.model_validate(data)
+    except ValidationError as exc:
+        errs = exc.errors()
+        for e in errs:  # a reference error raised inside a model validator carries its own loc
+            ctx = e.get("ctx", {}).get("error")
+            if isinstance(ctx, _RefError):
+                raise CaseFileError(f"{source}: {_loc_str(e['loc'] + ctx.loc)}: {ctx}") from None
+        raise CaseFileError(f"{source}: {_describe(errs[0])}") from None
+
+
+def load_case(path) -> Case:
+    """Read a TOML case file and validate it (one CaseFileError line on any problem)."""
+    path = Path(path)
+    try:
+        text = path.read_bytes().decode("utf-8")
+    except FileNotFoundError:
+        raise CaseFileError(f"{path}: no such file") from None
+    except IsADirectoryError:
+        raise CaseFileError(f"{path}: is a folder, expected a TOML case file") from None
+    except UnicodeDecodeError as exc:
+        raise CaseFileError(f"{path}: not UTF-8 text ({exc.reason} at byte {exc.start})") from None
+    except OSError as exc:
+        raise CaseFileError(f"{path}: cannot be read ({exc.strerror})") from None
+    try:
+        data = tomllib.loads(text)
+    except tomllib.TOMLDecodeError as exc:
+        raise CaseFileError(f"{path}: TOML syntax error: {exc}") from None
+    return parse_case(data, str(path))
+
+
+def case_json_schema() -> dict:
+    """The JSON Schema of case files (``flywheel schema``)."""
+    schema = Case.model_json_schema(by_alias=True)
+    schema["title"] = "flywheel case file"
+    return schema
+
+
+# -- to the computation's own types ------------------------------------------------------------
+
+def to_mechanism(case: Case):
+    """Build the kinematics description (:class:`flywheel.kinematics.Mechanism`) of a case."""
+    from flywheel.kinematics import RPR, RRP, RRR, Crank, Guide, LinkPoint, Mechanism
+
+    c = case.crank
+    crank = Crank(c.name, c.pivot, tuple(c.pivot_at), c.tip, case.crank_length,
+                  math.radians(c.start_angle_deg), -1 if c.rotation == "cw" else 1)
+    dyads = []
+    for d in case.dyads:
+        br = 1 if d.branch == "+" else -1
+        if isinstance(d, RRPSpec):
+            g = Guide(tuple(d.guide.through), math.radians(d.guide.angle_deg), d.guide.offset)
+            dyads.append(RRP(d.name or d.joint, d.from_, d.joint, d.rod, case.rod_length(d),
+                             d.slider, g, br))
+        elif isinstance(d, RRRSpec):
+            dyads.append(RRR(d.name or d.joint, d.from_, d.link_from, d.length_from, d.to,
+                             d.link_to, d.length_to, d.joint, br))
+        else:
+            dyads.append(RPR(d.name or d.rocker, d.from_, d.pivot, d.rocker, d.slider, d.offset, br))
+    points = tuple(
+        LinkPoint(name, p.link, p.from_, p.to, p.fraction, p.across,
+                  p.distance or 0.0, math.radians(p.angle_deg))
+        for name, p in case.points.items()
+    )
+    ground = {k: tuple(v) for k, v in case.ground.items()}
+    return Mechanism(crank, tuple(dyads), points, ground)

@@ -1,0 +1,21 @@
+"""Planar-linkage kinematics by Assur groups (design.md §3).
+
+A mechanism is a driving crank followed by two-link groups (dyads), each placed by points
+already known. Positions are closed-form; velocity and acceleration analogues (d/dφ, d²/dφ²)
+come from the differentiated closure equations, exactly, vectorized over the φ grid.
+"""
+from flywheel.kinematics.mechanism import (
+    Crank,
+    Guide,
+    LinkPoint,
+    Mechanism,
+    RPR,
+    RRP,
+    RRR,
+)
+from flywheel.kinematics.solve import Kinematics, LinkMotion, PointMotion, solve
+
+__all__ = [
+    "Crank", "Guide", "LinkPoint", "Mechanism", "RPR", "RRP", "RRR",
+    "Kinematics", "LinkMotion", "PointMotion", "solve",
+]

@@ -1,0 +1,96 @@
+"""`flywheel check`: print what a case describes (rich), with the dead-centre kinematics."""
+from __future__ import annotations
+
+import math
+
+
+def _g(x: float) -> str:
+    """6 significant digits; round-off below 1e-12 shown as 0."""
+    return f"{0.0 if abs(x) < 1e-12 else x:.6g}"
+
+
+def print_check(case, console=None) -> None:
+    """Print the mechanism, links, cylinders and the kinematics at each slider's dead centres.
+
+    Raises AssemblyError (from the kinematics) if the mechanism cannot be assembled.
+    """
+    import numpy as np
+    from rich.console import Console
+    from rich.table import Table
+
+    from flywheel.case import RPRSpec, RRPSpec, to_mechanism
+    from flywheel.kinematics import solve
+    from flywheel.kinematics.deadcentres import dead_centres
+
+    console = console or Console()
+    mech = to_mechanism(case)
+    solve(mech, np.linspace(0, 2 * np.pi, 721))   # assembles over the whole cycle, or raises
+    m = case.machine
+    console.print(f"[bold]{case.title or 'case'}[/bold]  ({case.source})" if case.source
+                  else f"[bold]{case.title or 'case'}[/bold]")
+    console.print(f"crank speed n1 = {m.omega_mean / (2 * math.pi):.6g} rev/s, "
+                  f"ω_m = {m.omega_mean:.6g} rad/s, δ = {m.delta:g}, "
+                  f"balance: constant {m.balance} moment")
+    c = mech.crank
+    t = Table(title="Mechanism", show_lines=False)
+    for col in ("group", "links", "points", "data"):
+        t.add_column(col)
+    t.add_row("crank", c.name, f"{c.pivot} → {c.tip}",
+              f"l = {c.length:.6g} m, θ0 = {math.degrees(c.start_angle):g}°, "
+              f"{'cw' if c.direction < 0 else 'ccw'}")
+    for spec, d in zip(case.dyads, mech.dyads):
+        if isinstance(spec, RRPSpec):
+            t.add_row(f"RRP {d.name}", f"{d.rod}, {d.slider}", f"{d.origin} → {d.joint}",
+                      f"rod {d.rod_length:.6g} m; guide through {d.guide.through} at "
+                      f"{math.degrees(d.guide.angle):g}°, offset {d.guide.offset:g} m; branch {spec.branch}")
+        elif isinstance(spec, RPRSpec):
+            t.add_row(f"RPR {d.name}", f"{d.rocker}, {d.slider}", f"{d.origin} on rocker about {d.pivot}",
+                      f"offset {d.offset:g} m; branch {spec.branch}")
+        else:
+            t.add_row(f"RRR {d.name}", f"{d.link_a}, {d.link_b}",
+                      f"{d.point_a} → {d.joint} ← {d.point_b}",
+                      f"{d.length_a:.6g} m, {d.length_b:.6g} m; branch {spec.branch}")
+    for p in mech.points:
+        how = (f"{p.fraction:g} of {p.origin}→{p.toward}" + (f", {p.across:g} m across" if p.across else "")
+               if p.toward else f"{p.distance:g} m from {p.origin} at {math.degrees(p.angle):g}°")
+        t.add_row("point", p.link, p.name, how)
+    console.print(t)
+
+    if case.links:
+        t = Table(title="Links")
+        for col in ("link", "mass [kg]", "J_S [kg·m²]", "centroid"):
+            t.add_column(col)
+        for name, lk in case.links.items():
+            t.add_row(name, f"{lk.mass:g}", f"{lk.J_S:g}", lk.centroid or "—")
+        console.print(t)
+    if m.first_group:
+        console.print("first group (on the crank shaft): " + ", ".join(
+            f"{k} = {v:g} kg·m²" for k, v in m.first_group.items()))
+    if case.cylinders:
+        t = Table(title="Cylinders")
+        for col in ("name", "piston", "bore [m]", "p_max [MPa]", "head", "interpolation", "points"):
+            t.add_column(col)
+        for cy in case.cylinders:
+            t.add_row(cy.name, cy.piston, f"{cy.bore:g}", f"{cy.p_max / 1e6:g}", cy.head,
+                      cy.interpolation, str(len(cy.s)))
+        console.print(t)
+
+    sliders = [d.slider for d in mech.dyads if hasattr(d, "guide")]
+    if sliders:
+        t = Table(title="Kinematics at the dead centres")
+        for col in ("slider", "dead centre", "φ [deg]", "x along guide [m]", "point", "|v_q| [m]",
+                    "|a_q| [m]"):
+            t.add_column(col)
+        for s in sliders:
+            d = next(dd for dd in mech.dyads if getattr(dd, "slider", None) == s and hasattr(dd, "guide"))
+            dcs = dead_centres(mech, s)
+            k = solve(mech, np.array([dc.phi for dc in dcs]))
+            for i, dc in enumerate(dcs):
+                for pname in (c.tip, d.joint):
+                    pm = k.points[pname]
+                    t.add_row(s, dc.kind, f"{math.degrees(dc.phi):.4f}", f"{dc.x:.6g}", pname,
+                              _g(np.linalg.norm(pm.v_q[i])), _g(np.linalg.norm(pm.a_q[i])))
+            stroke = abs(dcs[0].x - dcs[-1].x) if len(dcs) > 1 else 0.0
+            t.add_row(s, "stroke", "", f"{stroke:.6g}", "", "", "")
+        console.print(t)
+    console.print("[green]case is valid[/green]")
