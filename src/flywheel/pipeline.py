@@ -1,0 +1,311 @@
+"""The pipeline: case → kinematics → loads → reduction → energy → sizing → motion → Results.
+
+Reads the validated case and calls the pure stage functions in order (design.md §1); the
+stages themselves know nothing of case files. Report angles, the 12 standard positions and
+the dead centres are inserted into the φ grid, so their values are computed, not interpolated.
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from flywheel import energy, loads, motion, reduction, sizing
+from flywheel.errors import InputError
+from flywheel.kinematics import solve
+from flywheel.kinematics.deadcentres import dead_centres, guide_frame, slider_dyad
+from flywheel.results import Column, CylinderResult, Results
+
+DEFAULT_POINTS = 3600
+
+
+def _grid(n_points: int, extra: list[float]) -> np.ndarray:
+    """Closed grid over [0, 2π]: n_points uniform intervals plus the extra angles [rad]."""
+    base = np.linspace(0.0, 2 * np.pi, n_points + 1)
+    extra = np.mod(np.asarray(extra, float), 2 * np.pi)
+    phi = np.union1d(base, extra)
+    # merge nodes closer than 1e-9 rad (an extra angle that is already a node)
+    keep = np.concatenate([[True], np.diff(phi) > 1e-9])
+    phi = phi[keep]
+    phi[-1] = 2 * np.pi
+    return phi
+
+
+def _extremes(x: np.ndarray) -> tuple[float, float]:
+    return float(np.min(x)), float(np.max(x))
+
+
+def analyze(case, n_points: int = DEFAULT_POINTS, at_deg: list[float] | None = None) -> Results:
+    """Run the whole dynamic analysis of a validated case (:class:`flywheel.case.Case`).
+
+    n_points: uniform intervals over the cycle (the report angles, standard positions and dead
+    centres are added as nodes); at_deg: report angles [deg] (default: the case's
+    output.at_deg). Raises FlywheelError subclasses for input that cannot be analysed.
+    """
+    from flywheel.case import to_mechanism
+
+    if n_points < 36:
+        raise InputError(f"--points: {n_points} is too few (allowed: 36 or more)")
+    at_deg = list(case.output.at_deg if at_deg is None else at_deg)
+    for a in at_deg:
+        if not math.isfinite(a):
+            raise InputError(f"--at: {a} is not a finite angle in degrees")
+    mech = to_mechanism(case)
+    machine = case.machine
+    omega_m = machine.omega_mean
+    warnings: list[str] = []
+
+    # -- standard positions: every 30° and the dead centres of every slider ---------------------
+    sliders = [d.slider for d in mech.dyads if hasattr(d, "guide")]
+    dcs = {s: dead_centres(mech, s) for s in sliders}
+    positions = [(f"{k * 30}°", math.radians(k * 30)) for k in range(12)]
+    for s, lst in dcs.items():
+        for dc in lst:
+            positions.append((f"{s} {dc.kind} d.c.", dc.phi))
+    positions.sort(key=lambda p: p[1])
+    phi = _grid(n_points, [p[1] for p in positions] + [math.radians(a) for a in at_deg])
+    kin = solve(mech, phi)
+    P, L = kin.points, kin.links
+
+    # -- loads --------------------------------------------------------------------------------
+    M_parts: dict[str, np.ndarray] = {}
+    cyl_results: list[CylinderResult] = []
+    columns: dict[str, Column] = {}
+    for cy in case.cylinders:
+        d = slider_dyad(mech, cy.piston)
+        u, base = guide_frame(d)
+        x = (P[d.joint].r - base) @ u
+        x_dot = P[d.joint].v_q @ u
+        kinds = {dc.kind: dc for dc in dcs[cy.piston]}
+        if set(kinds) != {"outer", "inner"}:
+            raise InputError(f"cylinders {cy.name}: piston {cy.piston} has no pair of dead centres")
+        head, far = (kinds["outer"], kinds["inner"]) if cy.head == "outer" else (kinds["inner"], kinds["outer"])
+        s_tab = np.asarray(cy.s, float)
+        up, down = np.asarray(cy.towards_head, float), np.asarray(cy.away_from_head, float)
+        p, F, s = loads.gas_force(x, x_dot, head.x, far.x, s_tab, up, down, cy.p_max, cy.bore,
+                                  cy.interpolation)
+        M = loads.gas_moment(F, x_dot, head.x, far.x)
+        if np.min(p) < 0:
+            i = int(np.argmin(p))
+            warnings.append(f"cylinder {cy.name}: the {cy.interpolation} interpolation of its "
+                            f"indicator table gives negative pressure, down to {p[i] / 1e6:.4g} MPa "
+                            f"at φ = {math.degrees(phi[i]):.1f}° (use 'pchip' to avoid overshoot)")
+        M_parts[f"gas {cy.name}"] = M
+        towards = x_dot * (head.x - far.x) > 0
+        cyl_results.append(CylinderResult(cy.name, cy.piston, s, towards, p, F, M, s_tab, up, down,
+                                          cy.p_max, head.phi))
+        columns[f"s_{cy.name}"] = Column(s, "-", f"relative piston travel from the head, {cy.name}",
+                                         f"относительное перемещение поршня {cy.name}")
+        columns[f"p_{cy.name}"] = Column(p, "Pa", f"gas pressure, {cy.name}", f"давление {cy.name}")
+        columns[f"F_{cy.name}"] = Column(F, "N", f"gas force on piston {cy.piston}",
+                                         f"сила давления газа на поршень {cy.piston}")
+    for f in case.forces:
+        d = slider_dyad(mech, f.slider)
+        u, base = guide_frame(d)
+        x = (P[d.joint].r - base) @ u
+        x_dot = P[d.joint].v_q @ u
+        kinds = {dc.kind: dc for dc in dcs[f.slider]}
+        ref, other = (kinds["outer"], kinds["inner"]) if f.reference == "outer" else (kinds["inner"], kinds["outer"])
+        F, M = loads.technological_moment(x, x_dot, ref.x, other.x, f.magnitude, tuple(f.s_range), f.stroke)
+        M_parts[f"force {f.name}"] = M
+        columns[f"F_{f.name}"] = Column(F, "N", f"technological force {f.name}", f"сила {f.name}")
+    g = np.asarray(machine.gravity, float)
+    for name, lk in case.links.items():
+        if lk.mass > 0 and np.any(g != 0):
+            M_parts[f"gravity {name}"] = loads.gravity_moment(lk.mass, g, P[lk.centroid].v_q)
+    for c in case.couples:
+        M_parts[f"couple {c.name}"] = c.moment * L[c.link].omega_q
+
+    # -- reduction of masses ---------------------------------------------------------------------
+    J_parts, dJ_parts = {}, {}
+    zero = np.zeros_like(phi)
+    for name, lk in case.links.items():
+        if lk.mass == 0 and lk.J_S == 0:
+            continue
+        c = P[lk.centroid] if lk.centroid else None
+        v = c.v_q if c is not None else np.zeros((phi.size, 2))
+        a = c.a_q if c is not None else np.zeros((phi.size, 2))
+        lm = L[name]
+        J, dJ = reduction.link_inertia(lk.mass, lk.J_S, v, a, lm.omega_q, lm.eps_q)
+        J_parts[name], dJ_parts[name] = J, dJ
+    if J_parts:
+        J_II, dJ_II = reduction.reduced_inertia({k: (J_parts[k], dJ_parts[k]) for k in J_parts})
+    else:
+        J_II, dJ_II = zero.copy(), zero.copy()
+
+    # -- energy --------------------------------------------------------------------------------------
+    M_known = sum(M_parts.values()) if M_parts else zero.copy()
+    work_known = float(energy.cumulative_work(M_known, phi)[-1])
+    M_const = energy.balancing_moment(M_known, phi)
+    if machine.balance == "driving" and not M_const > 0:
+        raise InputError(
+            f"the loads do {work_known:+.6g} J of work over a cycle: a constant driving moment "
+            f"would have to be {M_const:.6g} N·m ≤ 0 (allowed: resistance must absorb work; "
+            f"for an engine set machine.balance = \"resistance\")")
+    if machine.balance == "resistance" and not M_const < 0:
+        raise InputError(
+            f"the loads do {work_known:+.6g} J of work over a cycle: a constant resistance moment "
+            f"would have to be {-M_const:.6g} N·m ≤ 0 (allowed: driving forces must supply work; "
+            f"for a compressor or press set machine.balance = \"driving\")")
+    M_sum = M_known + M_const
+    A = energy.cumulative_work(M_sum, phi)
+    A_const = M_const * phi
+    A_known = energy.cumulative_work(M_known, phi)
+    if machine.balance == "driving":
+        A_D, A_C = A_const, A_known
+        cycle_work_resistance = work_known
+        driving_moment = M_const
+    else:
+        A_D, A_C = A_known, A_const
+        cycle_work_resistance = M_const * 2 * np.pi
+        driving_moment = work_known / (2 * np.pi)
+    T_II, dT_I = energy.first_group_energy_change(A, J_II, omega_m)
+    phi_max, dT_max = energy.extreme(dT_I, phi, "max")
+    phi_min, dT_min = energy.extreme(dT_I, phi, "min")
+    delta_T_max = dT_max - dT_min
+
+    # -- sizing ----------------------------------------------------------------------------------------
+    delta = machine.delta
+    J_req = sizing.J_required_merzalov(delta_T_max, omega_m, delta)
+    J_first = float(sum(machine.first_group.values()))
+    J_fly = J_req - J_first
+    if J_fly <= 0:
+        warnings.append(f"the first group already has {J_first:.6g} kg·m² ≥ J_required = {J_req:.6g} "
+                        f"kg·m²: no flywheel is needed")
+    J_exact, T0_exact = sizing.J_required_exact(A, J_II, omega_m, delta)
+    fw = case.flywheel
+    disk = sizing.disk(max(J_fly, 0.0), fw.density, fw.width_ratio)
+    rim = sizing.rim(max(J_fly, 0.0), fw.density, fw.width_ratio, fw.inner_ratio)
+
+    # -- motion ----------------------------------------------------------------------------------------
+    J_I = max(J_req, J_first)            # what is really on the crank shaft
+    T0 = motion.T0_for_mean_speed(A, J_I, J_II, omega_m)
+    omega = motion.omega_from_energy(T0, A, J_I, J_II)
+    w_max, w_min, w_mean, delta_ach = motion.speed_fluctuation(omega)
+    eps = motion.angular_acceleration(M_sum, omega, J_I + J_II, dJ_II)
+    t = motion.time_law(omega, phi)
+    omega_exact = motion.omega_from_energy(T0_exact, A, J_exact, J_II)
+    delta_ach_exact = motion.speed_fluctuation(omega_exact)[3]
+    i_wmax, i_wmin = int(np.argmax(omega)), int(np.argmin(omega))
+
+    # -- table columns -----------------------------------------------------------------------------------
+    cols: dict[str, Column] = {"phi_deg": Column(np.degrees(phi), "deg", "crank angle φ", "угол φ")}
+    for name, pm in P.items():
+        if np.all(pm.v_q == 0) and np.all(pm.a_q == 0):
+            continue
+        cols[f"x_{name}"] = Column(pm.r[:, 0], "m", f"x of {name}", f"x точки {name}")
+        cols[f"y_{name}"] = Column(pm.r[:, 1], "m", f"y of {name}", f"y точки {name}")
+        cols[f"vq_{name}"] = Column(np.hypot(*pm.v_q.T), "m", f"|v_q| of {name}",
+                                    f"аналог скорости {name}")
+        cols[f"vqx_{name}"] = Column(pm.v_q[:, 0], "m", f"v_qx of {name}", f"v_qx {name}")
+        cols[f"vqy_{name}"] = Column(pm.v_q[:, 1], "m", f"v_qy of {name}", f"v_qy {name}")
+        cols[f"aq_{name}"] = Column(np.hypot(*pm.a_q.T), "m", f"|a_q| of {name}",
+                                    f"аналог ускорения {name}")
+        cols[f"aqx_{name}"] = Column(pm.a_q[:, 0], "m", f"a_qx of {name}", f"a_qx {name}")
+        cols[f"aqy_{name}"] = Column(pm.a_q[:, 1], "m", f"a_qy of {name}", f"a_qy {name}")
+    for name, lm in L.items():
+        if name == mech.crank.name or (np.all(lm.omega_q == 0) and np.all(lm.eps_q == 0)):
+            continue
+        cols[f"theta_{name}"] = Column(np.degrees(lm.theta), "deg", f"angle of link {name}",
+                                       f"угол звена {name}")
+        cols[f"omega_q_{name}"] = Column(lm.omega_q, "-", f"ω_q of link {name}", f"аналог угл. скорости {name}")
+        cols[f"eps_q_{name}"] = Column(lm.eps_q, "1/rad", f"ε_q of link {name}",
+                                       f"аналог угл. ускорения {name}")
+    cols.update(columns)
+    for name, J in J_parts.items():
+        cols[f"J_{name}"] = Column(J, "kg·m²", f"link {name}'s share of J_II", f"вклад звена {name} в J_II")
+    cols["J_II"] = Column(J_II, "kg·m²", "reduced inertia of the second group J_II",
+                          "приведённый момент инерции II группы")
+    cols["dJ_II"] = Column(dJ_II, "kg·m²/rad", "dJ_II/dφ", "производная J_II")
+    for name, M in M_parts.items():
+        cols[f"M {name}"] = Column(M, "N·m", f"reduced moment: {name}", f"приведённый момент: {name}")
+    cols["M_known"] = Column(M_known, "N·m", "sum of the given loads' reduced moments",
+                             "суммарный приведённый момент заданных сил")
+    cols["M_sum"] = Column(M_sum, "N·m", "total reduced moment M_Σ", "суммарный приведённый момент")
+    cols["A_D"] = Column(A_D, "J", "work of the driving moment A_D", "работа движущих сил")
+    cols["A_C"] = Column(A_C, "J", "work of the resistance A_C", "работа сил сопротивления")
+    cols["A"] = Column(A, "J", "total work A", "суммарная работа")
+    cols["T_II"] = Column(T_II, "J", "kinetic energy of the second group T_II", "кин. энергия II группы")
+    cols["dT_I"] = Column(dT_I, "J", "change of kinetic energy of the first group ΔT_I",
+                          "изменение кин. энергии I группы")
+    cols["omega"] = Column(omega, "rad/s", "crank angular velocity ω", "угловая скорость звена приведения")
+    cols["epsilon"] = Column(eps, "rad/s²", "crank angular acceleration ε", "угловое ускорение")
+    cols["omega_exact"] = Column(omega_exact, "rad/s", "ω with the exact flywheel size",
+                                 "ω при точном моменте инерции маховика")
+    cols["t"] = Column(t, "s", "time t(φ)", "время")
+
+    # -- report angles -----------------------------------------------------------------------------------------
+    at_list = []
+    for a in at_deg:
+        i = int(np.argmin(np.abs(phi - math.radians(a) % (2 * np.pi))))
+        w, e = float(omega[i]), float(eps[i])
+        pts = {}
+        for name, pm in P.items():
+            v_vec = pm.v_q[i] * w
+            a_vec = pm.a_q[i] * w**2 + pm.v_q[i] * e
+            pts[name] = {
+                "x": float(pm.r[i, 0]), "y": float(pm.r[i, 1]),
+                "v_q": float(np.hypot(*pm.v_q[i])), "a_q": float(np.hypot(*pm.a_q[i])),
+                "v": float(np.hypot(*v_vec)), "a": float(np.hypot(*a_vec)),
+                "v_x": float(v_vec[0]), "v_y": float(v_vec[1]),
+                "a_x": float(a_vec[0]), "a_y": float(a_vec[1]),
+            }
+        lks = {}
+        for name, lm in L.items():
+            lks[name] = {
+                "omega_q": float(lm.omega_q[i]), "epsilon_q": float(lm.eps_q[i]),
+                "omega": float(lm.omega_q[i] * w),
+                "epsilon": float(lm.eps_q[i] * w**2 + lm.omega_q[i] * e),
+            }
+        at_list.append({
+            "phi_deg": float(a), "omega": w, "epsilon": e,
+            "J_II": float(J_II[i]), "dJ_II": float(dJ_II[i]), "M_sum": float(M_sum[i]),
+            "moments": {k: float(v[i]) for k, v in M_parts.items()},
+            "forces": {c.name: float(c.F[i]) for c in cyl_results},
+            "points": pts, "links": lks,
+        })
+
+    scalars = {
+        "crank_length": float(mech.crank.length),
+        "omega_mean": float(omega_m),
+        "n_points": int(phi.size),
+        "cycle_work_resistance": float(cycle_work_resistance),
+        "driving_moment": float(driving_moment),
+        "balancing_moment": float(M_const),
+        "balance": machine.balance,
+        "delta": float(delta),
+        "delta_T_max": float(delta_T_max),
+        "delta_T_I_max": float(dT_max), "phi_delta_T_I_max_deg": math.degrees(phi_max),
+        "delta_T_I_min": float(dT_min), "phi_delta_T_I_min_deg": math.degrees(phi_min),
+        "J_II_mean": float(energy.cumulative_work(J_II, phi)[-1] / (2 * np.pi)),
+        "J_II_min": _extremes(J_II)[0], "J_II_max": _extremes(J_II)[1],
+        "J_first_group": J_first,
+        "J_required": float(J_req),
+        "J_required_exact": float(J_exact),
+        "J_flywheel": float(J_fly),
+        "J_flywheel_exact": float(J_exact - J_first),
+        "delta_achieved": float(delta_ach),
+        "delta_achieved_exact": float(delta_ach_exact),
+        "omega_max": w_max, "phi_omega_max_deg": math.degrees(phi[i_wmax]),
+        "omega_min": w_min, "phi_omega_min_deg": math.degrees(phi[i_wmin]),
+        "T0": float(T0),
+        "cycle_time": float(t[-1]),
+        "flywheel_disk": disk,
+        "flywheel_rim": rim,
+        "flywheel_material_density": float(fw.density),
+    }
+    links_drawn = [(mech.crank.name, [mech.crank.pivot, mech.crank.tip])]
+    for d in mech.dyads:
+        if hasattr(d, "guide"):
+            links_drawn.append((d.rod, [d.origin, d.joint]))
+        elif hasattr(d, "rocker"):
+            links_drawn.append((d.rocker, [d.pivot, d.origin]))
+        else:
+            links_drawn.append((d.link_a, [d.point_a, d.joint]))
+            links_drawn.append((d.link_b, [d.point_b, d.joint]))
+    return Results(
+        title=case.title, source=case.source, phi=phi, kinematics=kin, columns=cols,
+        scalars=scalars, at=at_list, position_angles=positions, J_parts=J_parts,
+        dJ_parts=dJ_parts, M_parts=M_parts, cylinders=cyl_results, links_drawn=links_drawn,
+        warnings=warnings,
+    )

@@ -1,0 +1,64 @@
+"""Flywheel sizing for a coefficient of speed fluctuation δ, and its dimensions."""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+
+def J_required_merzalov(delta_T_max: float, omega_mean: float, delta: float) -> float:
+    """J_I = ΔT_нб/(ω_m²·δ) [kg·m²] (seed 000 §4: J_PRI := ΔT_нб/(ω_1ср²·δ1); Merzalov)."""
+    return delta_T_max / (omega_mean**2 * delta)
+
+
+def J_required_exact(A: np.ndarray, J_II: np.ndarray, omega_mean: float, delta: float) -> tuple[float, float]:
+    """Exact J_I [kg·m²] and the initial total kinetic energy T0 [J] (Wittenbauer's energy–mass
+    diagram, done numerically; design.md §2).
+
+    With T(φ) = T0 + A(φ) = ½(J_I + J_II(φ))·ω², ω_max = ω_m(1 + δ/2) and ω_min = ω_m(1 − δ/2)
+    require T0 + A ≤ k₊(J_I + J_II) and T0 + A ≥ k₋(J_I + J_II), k± = ω_m²(1 ± δ/2)²/2, with
+    equality somewhere: J_I = [max(A − k₊J_II) − min(A − k₋J_II)]/(k₊ − k₋),
+    T0 = k₊·J_I − max(A − k₊J_II).
+
+    >>> A = np.array([0.0, 10.0, 0.0]); J = np.zeros(3)   # constant inertia: J = ΔT/(δ·ω_m²)
+    >>> round(J_required_exact(A, J, 10.0, 0.1)[0], 12)
+    10.0
+    """
+    k_plus = omega_mean**2 * (1 + delta / 2) ** 2 / 2
+    k_minus = omega_mean**2 * (1 - delta / 2) ** 2 / 2
+    top = np.max(A - k_plus * J_II)
+    bottom = np.min(A - k_minus * J_II)
+    J_I = (top - bottom) / (k_plus - k_minus)
+    return float(J_I), float(k_plus * J_I - top)
+
+
+def disk(J: float, density: float = 7800.0, width_ratio: float = 0.2) -> dict:
+    """Solid disk of diameter D, width b = w·D: J = π·ρ·b·D⁴/32, so
+    D = (32·J/(π·ρ·w))^(1/5), mass = ρ·π·D²·b/4 = 8·J/D².
+    Steel ρ = 7800, w = 0.2 gives the seed's D = 0.366·J^(1/5) (seed 000, last block).
+
+    >>> round((32 / (math.pi * 7800 * 0.2)) ** 0.2, 3)
+    0.366
+    """
+    if J <= 0:
+        return {"D": 0.0, "b": 0.0, "mass": 0.0}
+    D = (32 * J / (math.pi * density * width_ratio)) ** 0.2
+    b = width_ratio * D
+    return {"D": D, "b": b, "mass": density * math.pi * D**2 * b / 4}
+
+
+def rim(J: float, density: float = 7800.0, width_ratio: float = 0.2, inner_ratio: float = 0.8) -> dict:
+    """Rim (hub and spokes neglected) of outer diameter D, inner D1 = c·D, width b = w·D:
+    J = π·ρ·b·(D⁴ − D1⁴)/32, so D = (32·J/(π·ρ·w·(1 − c⁴)))^(1/5), mass = ρ·π·(D² − D1²)·b/4.
+    Steel with w = 0.2, c = 0.8 gives the seed's D = 0.406·J^(1/5) and its mass constant
+    6123 ≈ ρπ/4 = 6126.1 (seed 000, last block).
+
+    >>> round((32 / (math.pi * 7800 * 0.2 * (1 - 0.8**4))) ** 0.2, 3)
+    0.406
+    """
+    if J <= 0:
+        return {"D": 0.0, "D_inner": 0.0, "b": 0.0, "mass": 0.0}
+    D = (32 * J / (math.pi * density * width_ratio * (1 - inner_ratio**4))) ** 0.2
+    D1 = inner_ratio * D
+    b = width_ratio * D
+    return {"D": D, "D_inner": D1, "b": b, "mass": density * math.pi * (D**2 - D1**2) * b / 4}
