@@ -222,6 +222,11 @@ class FlywheelSpec(_Model):
     density: Pos = Field(7800.0, description="material density ρ [kg/m³]")
     width_ratio: Pos = Field(0.2, description="b/D")
     inner_ratio: float = Field(0.8, gt=0, lt=1, description="rim: D_inner/D")
+    formulas: Literal["first-principles", "course"] = Field(
+        "first-principles",
+        description="'first-principles': J = πρbD⁴/32 with the density and ratios above; "
+                    "'course': the seed's rounded empirical constants 0.366, 0.406, 6123 "
+                    "(steel, b = 0.2·D, D1 = 0.8·D)")
 
 
 class OutputSpec(_Model):

@@ -54,6 +54,54 @@ def check(case: Path = typer.Argument(..., help="Case file (TOML).")) -> None:
     _guard(print_check, c)
 
 
+@app.command()
+def run(
+    case: Path = typer.Argument(..., help="Case file (TOML)."),
+    out: Optional[Path] = typer.Option(None, "--out", "-o",
+                                       help="Output folder (default: out/<case name>)."),
+    points: int = typer.Option(3600, "--points", help="Intervals of the φ grid over the cycle."),
+    at: Optional[list[float]] = typer.Option(None, "--at", help="Report angle [deg]; repeatable "
+                                             "(default: the case's output.at_deg, else 120)."),
+    no_plots: bool = typer.Option(False, "--no-plots", help="Skip the PNG plots (faster)."),
+    as_json: bool = typer.Option(False, "--json", help="Print summary.json to stdout instead of "
+                                                       "the rich summary."),
+    lang: str = typer.Option("en", "--lang", help="Language of the summary and plots: en | ru."),
+) -> None:
+    """Run the whole dynamic analysis of a case; write summary.json, table.csv, positions.csv
+    and plots/*.png to the output folder."""
+    if lang not in ("en", "ru"):
+        fail(f"--lang: {lang!r} is not a language (allowed: en, ru)")
+    from flywheel.case import load_case
+    from flywheel.pipeline import analyze
+    from flywheel.render.output import write_folder
+    from flywheel.render.tables import positions_csv, summary_json, table_csv
+
+    c = _guard(load_case, case)
+    results = _guard(analyze, c, n_points=points, at_deg=at)
+    out = out if out is not None else Path("out") / case.stem
+    text_json = summary_json(results)
+
+    def build(folder: Path) -> None:
+        (folder / "summary.json").write_text(text_json, encoding="utf-8")
+        (folder / "table.csv").write_text(table_csv(results), encoding="utf-8")
+        (folder / "positions.csv").write_text(positions_csv(results), encoding="utf-8")
+        if not no_plots:
+            from flywheel.render.plots import write_plots
+
+            (folder / "plots").mkdir()
+            write_plots(results, folder / "plots", lang=lang)
+
+    _guard(write_folder, out, build)
+    if as_json:
+        sys.stdout.write(text_json)
+    else:
+        from flywheel.render.summary import print_summary
+
+        print_summary(results, lang=lang)
+        typer.echo(f"written: {out}/ (summary.json, table.csv, positions.csv"
+                   + ("" if no_plots else ", plots/*.png") + ")")
+
+
 def main() -> None:
     """Console-script entry point."""
     app()

@@ -174,8 +174,11 @@ def analyze(case, n_points: int = DEFAULT_POINTS, at_deg: list[float] | None = N
                         f"kg·m²: no flywheel is needed")
     J_exact, T0_exact = sizing.J_required_exact(A, J_II, omega_m, delta)
     fw = case.flywheel
-    disk = sizing.disk(max(J_fly, 0.0), fw.density, fw.width_ratio)
-    rim = sizing.rim(max(J_fly, 0.0), fw.density, fw.width_ratio, fw.inner_ratio)
+    if fw.formulas == "course":
+        disk, rim = sizing.disk_course(max(J_fly, 0.0)), sizing.rim_course(max(J_fly, 0.0))
+    else:
+        disk = sizing.disk(max(J_fly, 0.0), fw.density, fw.width_ratio)
+        rim = sizing.rim(max(J_fly, 0.0), fw.density, fw.width_ratio, fw.inner_ratio)
 
     # -- motion ----------------------------------------------------------------------------------------
     J_I = max(J_req, J_first)            # what is really on the crank shaft
@@ -293,6 +296,7 @@ def analyze(case, n_points: int = DEFAULT_POINTS, at_deg: list[float] | None = N
         "flywheel_disk": disk,
         "flywheel_rim": rim,
         "flywheel_material_density": float(fw.density),
+        "flywheel_formulas": fw.formulas,
     }
     links_drawn = [(mech.crank.name, [mech.crank.pivot, mech.crank.tip])]
     for d in mech.dyads:

@@ -62,3 +62,22 @@ def rim(J: float, density: float = 7800.0, width_ratio: float = 0.2, inner_ratio
     D1 = inner_ratio * D
     b = width_ratio * D
     return {"D": D, "D_inner": D1, "b": b, "mass": density * math.pi * (D**2 - D1**2) * b / 4}
+
+
+def disk_course(J: float) -> dict:
+    """The course's empirical disk rule (seed 000, last block): D = 0.366·J^(1/5),
+    m = 8·J/D², b = 0.2·D (steel; the constant is (32/(π·7800·0.2))^(1/5) rounded)."""
+    if J <= 0:
+        return {"D": 0.0, "b": 0.0, "mass": 0.0}
+    D = 0.366 * J**0.2
+    return {"D": D, "b": 0.2 * D, "mass": 8 * J / D**2}
+
+
+def rim_course(J: float) -> dict:
+    """The course's empirical rim rule (seed 000, last block): D = 0.406·J^(1/5), b = 0.2·D,
+    D1 = 0.8·D, m = 6123·(D² − D1²)·b (6123 ≈ ρπ/4 for steel, rounded)."""
+    if J <= 0:
+        return {"D": 0.0, "D_inner": 0.0, "b": 0.0, "mass": 0.0}
+    D = 0.406 * J**0.2
+    D1, b = 0.8 * D, 0.2 * D
+    return {"D": D, "D_inner": D1, "b": b, "mass": 6123 * (D**2 - D1**2) * b}

@@ -1,0 +1,55 @@
+"""CSV tables and the JSON summary (text only: no physics here).
+
+Numbers are written with 12 significant digits (``%.12g``), so the same input gives
+byte-identical files.
+"""
+from __future__ import annotations
+
+import json
+import math
+
+import numpy as np
+
+
+def _fmt(x: float) -> str:
+    return "%.12g" % (0.0 if x == 0 else x)
+
+
+def table_csv(results) -> str:
+    """Every column on the grid; the header names each quantity with its unit: ``name [unit]``."""
+    cols = results.columns
+    header = ",".join(f"{name} [{c.unit}]" for name, c in cols.items())
+    data = np.column_stack([c.values for c in cols.values()])
+    lines = [header]
+    lines += [",".join(_fmt(v) for v in row) for row in data]
+    return "\n".join(lines) + "\n"
+
+
+def positions_csv(results) -> str:
+    """The standard positions (every 30° and the sliders' dead centres): every column there."""
+    cols = results.columns
+    header = "position," + ",".join(f"{name} [{c.unit}]" for name, c in cols.items())
+    lines = [header]
+    for label, phi in results.position_angles:
+        i = results.index_of(phi)
+        lines.append(label + "," + ",".join(_fmt(c.values[i]) for c in cols.values()))
+    return "\n".join(lines) + "\n"
+
+
+def _clean(obj):
+    """JSON-ready: floats finite (NaN/inf → null), numpy scalars → Python."""
+    if isinstance(obj, dict):
+        return {str(k): _clean(v) for k, v in obj.items()}
+    if isinstance(obj, (list, tuple)):
+        return [_clean(v) for v in obj]
+    if isinstance(obj, (np.floating, float)):
+        f = float(obj)
+        return f if math.isfinite(f) else None
+    if isinstance(obj, np.integer):
+        return int(obj)
+    return obj
+
+
+def summary_json(results) -> str:
+    """summary.json: {"title", "source", "units", "results": {...scalars, "at": [...]}, "warnings"}."""
+    return json.dumps(_clean(results.summary()), indent=2, ensure_ascii=False) + "\n"
