@@ -1,0 +1,144 @@
+"""`flywheel run` through the CLI: outputs, the results contract (design.md §5), bad input."""
+from __future__ import annotations
+
+import json
+import math
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+from typer.testing import CliRunner
+
+from flywheel.case import parse_case
+from flywheel.cli import app
+from flywheel.pipeline import analyze
+
+CASES = Path(__file__).resolve().parents[1] / "cases"
+runner = CliRunner()
+
+
+def run(*args):
+    return runner.invoke(app, [str(a) for a in args])
+
+
+def test_run_writes_every_output(tmp_path):
+    out = tmp_path / "out"
+    res = run("run", CASES / "compressor.toml", "--out", out, "--no-plots", "--points", "720")
+    assert res.exit_code == 0, res.output
+    assert {p.name for p in out.iterdir()} == {"summary.json", "table.csv", "positions.csv"}
+    assert "J_I" in res.output and "written" in res.output
+    header = (out / "table.csv").read_text(encoding="utf-8").splitlines()[0]
+    assert header.startswith("phi_deg [deg],") and "J_II [kg·m²]" in header and "omega [rad/s]" in header
+    rows = (out / "positions.csv").read_text(encoding="utf-8").splitlines()
+    labels = [r.split(",")[0] for r in rows[1:]]
+    # 12 positions every 30°, plus the dead centres (which fall on 0, 90, 180, 270° here)
+    assert labels[:3] == ["0°", "3 outer d.c.", "30°"]
+    assert len(labels) == 16
+    assert not list(tmp_path.glob(".out.tmp-*"))
+
+
+def test_json_contract(tmp_path):
+    res = run("run", CASES / "compressor.toml", "--out", tmp_path / "o", "--no-plots", "--json",
+              "--at", "120", "--at", "75")
+    assert res.exit_code == 0, res.output
+    doc = json.loads(res.stdout)
+    r = doc["results"]
+    for key in ("crank_length", "omega_mean", "cycle_work_resistance", "driving_moment", "delta_T_max",
+                "J_II_mean", "J_required", "J_required_exact", "J_flywheel", "delta_achieved"):
+        assert isinstance(r[key], float), key
+    assert set(r["flywheel_disk"]) == {"D", "b", "mass"}
+    assert set(r["flywheel_rim"]) == {"D", "D_inner", "b", "mass"}
+    assert [a["phi_deg"] for a in r["at"]] == [120.0, 75.0]
+    a75 = r["at"][1]
+    assert set(a75["points"]) == {"O", "A", "B", "C", "S2", "S4"}
+    assert set(a75["links"]) == {"1", "2", "3", "4", "5"}
+    assert set(a75["points"]["B"]) >= {"x", "y", "v_q", "a_q", "v", "a"}
+    assert set(a75["links"]["2"]) >= {"omega_q", "epsilon_q", "omega", "epsilon"}
+    assert a75["points"]["B"]["v_q"] == pytest.approx(0.103, abs=5e-4)   # seed: V_qB(75°)
+    assert a75["links"]["2"]["epsilon_q"] == pytest.approx(-0.248, abs=5e-4)
+    assert json.loads((tmp_path / "o" / "summary.json").read_text(encoding="utf-8")) == doc
+
+
+def test_same_input_gives_identical_files(tmp_path):
+    for name in ("a", "b"):
+        assert run("run", CASES / "compressor.toml", "--out", tmp_path / name, "--no-plots",
+                   "--points", "360").exit_code == 0
+    for f in ("summary.json", "table.csv", "positions.csv"):
+        assert (tmp_path / "a" / f).read_bytes() == (tmp_path / "b" / f).read_bytes()
+
+
+def test_rerun_replaces_the_folder_whole(tmp_path):
+    out = tmp_path / "o"
+    out.mkdir()
+    (out / "stale.txt").write_text("old")
+    assert run("run", CASES / "compressor.toml", "--out", out, "--no-plots", "--points", "360").exit_code == 0
+    assert not (out / "stale.txt").exists()
+
+
+def _one_error_line(res, *fragments):
+    assert res.exit_code == 2, res.output
+    lines = res.stderr.strip().splitlines()
+    assert len(lines) == 1 and lines[0].startswith("error: "), res.stderr
+    for f in fragments:
+        assert f in lines[0], lines[0]
+    assert "Traceback" not in res.output
+
+
+def test_output_folder_that_cannot_be_written(tmp_path):
+    blocker = tmp_path / "file"
+    blocker.write_text("x")
+    _one_error_line(run("run", CASES / "compressor.toml", "--out", blocker, "--no-plots"), "--out", "not a folder")
+    _one_error_line(run("run", CASES / "compressor.toml", "--out", blocker / "sub", "--no-plots"),
+                    "--out", "cannot be written")
+
+
+def test_bad_options(tmp_path):
+    _one_error_line(run("run", CASES / "compressor.toml", "--points", "3", "--out", tmp_path / "o"), "--points")
+    _one_error_line(run("run", CASES / "compressor.toml", "--lang", "de", "--out", tmp_path / "o"), "--lang")
+    assert not (tmp_path / "o").exists()
+
+
+def test_wrong_balance_leaves_nothing_behind(tmp_path):
+    text = (CASES / "compressor.toml").read_text(encoding="utf-8").replace(
+        'balance   = "driving"', 'balance   = "resistance"')
+    bad = tmp_path / "engine.toml"
+    bad.write_text(text, encoding="utf-8")
+    _one_error_line(run("run", bad, "--out", tmp_path / "o", "--no-plots"), "balance")
+    assert not (tmp_path / "o").exists()
+
+
+def test_bad_case_file(tmp_path):
+    bad = tmp_path / "bad.toml"
+    bad.write_text((CASES / "compressor.toml").read_text(encoding="utf-8").replace(
+        "s              = [0, 0.1, 0.2", "s              = [0.05, 0.1, 0.2", 1), encoding="utf-8")
+    _one_error_line(run("run", bad, "--out", tmp_path / "o"), str(bad), "cylinders[0]", "span")
+
+
+def test_technological_force_and_couple():
+    """A press-like slider with a constant 1 kN resistance over the second half of its travel away
+    from the outer dead centre, and a constant couple on the rod: A_C = −F·stroke/2 (the couple on
+    a link that swings back does no net work)."""
+    data = {
+        "machine": {"speed_rpm": 120.0, "delta": 0.1, "gravity": [0.0, 0.0]},
+        "crank": {"length": 0.1},
+        "dyads": [{"kind": "RRP", "from": "A", "joint": "B", "rod": "2", "rod_length": 0.5,
+                   "slider": "3", "guide": {"angle_deg": 0.0}}],
+        "forces": [{"name": "punch", "slider": "3", "magnitude": 1000.0, "s_range": [0.5, 1.0],
+                    "stroke": "away"}],
+        "couples": [{"name": "friction", "link": "2", "moment": 5.0}],
+    }
+    r = analyze(parse_case(data), n_points=7200)
+    # the force switches on between grid nodes: the trapezoid rule converges as O(h) there
+    # (2.5·10⁻⁴ relative on 7200 intervals)
+    assert r.scalars["cycle_work_resistance"] == pytest.approx(-1000 * 0.2 / 2, rel=5e-4)
+    F = r.columns["F_punch"].values
+    assert F.max() == 1000.0 and F.min() == 0.0
+
+
+def test_python_dash_m(tmp_path):
+    res = subprocess.run([sys.executable, "-m", "flywheel", "run", str(CASES / "compressor.toml"),
+                          "--json", "--no-plots", "--points", "360", "--out", str(tmp_path / "o")],
+                         capture_output=True, text=True, check=True)
+    assert json.loads(res.stdout)["results"]["omega_mean"] == pytest.approx(2 * math.pi * 10)
