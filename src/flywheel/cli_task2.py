@@ -1,0 +1,108 @@
+"""`flywheel task2`: steady motion under given moment graphs (seed 002 and the textbook family).
+
+Thin: parse the options, call :mod:`flywheel.task2` (or :mod:`flywheel.task2_case` for
+``--case``), hand the result to :mod:`flywheel.render.task2`. Heavy imports live inside the
+function so that ``flywheel task2 --json`` starts fast.
+"""
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Optional
+
+import typer
+
+PROFILES = ("triangle", "rectangle")
+
+
+def task2_command(
+    profile: str = typer.Option(
+        "triangle", "--profile",
+        help="Seed 002 resistance graph: triangle (π/2…3π/2, peak in the middle) or rectangle "
+             "(π/2…π)."),
+    md: Optional[float] = typer.Option(None, "--md", help="Constant driving moment M_D [N·m] "
+                                       "(default 15)."),
+    j: Optional[float] = typer.Option(None, "--j", help="Reduced moment of inertia J [kg·m²] "
+                                      "(default 12)."),
+    omega0: Optional[float] = typer.Option(None, "--omega0", help="ω at φ = 0 [rad/s] "
+                                           "(default 200)."),
+    start: Optional[float] = typer.Option(None, "--from", help="Start of the resistance "
+                                          "graph [deg] (default 90)."),
+    end: Optional[float] = typer.Option(None, "--to", help="End of the resistance graph [deg] "
+                                        "(default 270 triangle, 180 rectangle)."),
+    mc: Optional[float] = typer.Option(None, "--mc", help="Peak of the resistance [N·m] instead "
+                                       "of the balance (the motion may not be steady)."),
+    delta: Optional[float] = typer.Option(None, "--delta", help="Ask for the J that gives this "
+                                          "δ at the same mean speed."),
+    case: Optional[Path] = typer.Option(None, "--case", help="A task-2 case file (TOML), "
+                                        "see docs/task2.md.", dir_okay=False),
+    plot: Optional[Path] = typer.Option(None, "--plot", help="Write a plot of M_D, M_C, A and "
+                                        "ω(φ) to this image file (.png, .svg, .pdf).",
+                                        dir_okay=False),
+    as_json: bool = typer.Option(False, "--json", help="Print the results as JSON."),
+) -> None:
+    """Task 2: ω_max, ω_min, ω_ср and δ of a machine with constant J under given M_D(φ), M_C(φ)."""
+    import math
+
+    from flywheel.cli import fail
+    from flywheel.errors import FlywheelError, InputError
+
+    title = source = ""
+    try:
+        if case is not None:
+            used = [name for name, v in (("--md", md), ("--j", j), ("--omega0", omega0),
+                                         ("--from", start), ("--to", end), ("--mc", mc),
+                                         ("--delta", delta)) if v is not None]
+            if used:
+                raise InputError(f"--case takes its data from the file; drop {', '.join(used)}")
+            from flywheel.task2_case import load_task2_case, solve_case
+
+            c = load_task2_case(case)
+            result = solve_case(c, str(case))
+            title, source = c.title, c.source
+        else:
+            from flywheel.task2 import SEED_DEFAULTS, seed_task
+
+            if profile not in PROFILES:
+                raise InputError(f"--profile must be triangle or rectangle (got {profile!r})")
+            for name, v in (("--md", md), ("--j", j), ("--omega0", omega0), ("--mc", mc),
+                            ("--from", start), ("--to", end), ("--delta", delta)):
+                if v is not None and not math.isfinite(v):
+                    raise InputError(f"{name} must be a finite number (got {v})")
+            for name, v, unit in (("--md", md, "N·m"), ("--j", j, "kg·m²"),
+                                  ("--omega0", omega0, "rad/s"), ("--mc", mc, "N·m")):
+                if v is not None and v <= 0:
+                    raise InputError(f"{name} must be positive (got {v:g} {unit})")
+            if delta is not None and not 0 < delta < 2:
+                raise InputError(f"--delta must lie between 0 and 2 (got {delta:g})")
+            if start is not None and end is not None and start >= end:
+                raise InputError(f"--from ({start:g}°) must be less than --to ({end:g}°)")
+            result = seed_task(
+                profile,
+                M_D=SEED_DEFAULTS["M_D"] if md is None else md,
+                J=SEED_DEFAULTS["J"] if j is None else j,
+                omega0=SEED_DEFAULTS["omega0"] if omega0 is None else omega0,
+                start=None if start is None else math.radians(start),
+                end=None if end is None else math.radians(end),
+                M_C=mc, delta=delta)
+            title = f"Seed 002, {profile} resistance moment"
+            source = "seed 002_10afb132413d2537.txt"
+        if plot is not None:
+            from flywheel.render.task2 import plot as draw
+
+            try:
+                draw(result, plot, title)
+            except (OSError, ValueError) as exc:
+                raise InputError(f"--plot {plot}: cannot write the image ({exc})") from None
+    except FlywheelError as exc:
+        fail(str(exc))
+        return
+    if as_json:
+        from flywheel.render.task2 import to_json
+
+        typer.echo(to_json(result, title, source))
+    else:
+        from flywheel.render.task2 import print_summary
+
+        print_summary(result, title, source)
+        if plot is not None:
+            typer.echo(f"plot written to {plot}")

@@ -1,0 +1,452 @@
+"""The TOML case format of ``flywheel task2`` (documented field by field in docs/task2.md).
+
+A case gives the cycle, the speed, the flywheel, and either two moment graphs (``[driving]``
+and ``[resistance]``) or a turning-moment diagram by its areas (``[diagram]``). Angles are in
+degrees in the file and radians inside; moments in N·m; J in kg·m². One value of one graph may
+be the string ``"balance"``: the unknown found from the cycle balance.
+
+Every problem becomes one :class:`~flywheel.errors.CaseFileError` line:
+``file: field.path: what is wrong (what is allowed)``.
+"""
+from __future__ import annotations
+
+import difflib
+import math
+import tomllib
+from pathlib import Path
+from typing import Annotated, ClassVar, Literal, Union
+
+from pydantic import BaseModel, ConfigDict, Field, ValidationError, field_validator
+
+from flywheel import task2 as t2
+from flywheel.errors import CaseFileError, InputError
+
+BALANCE = "balance"
+
+
+class _Model(BaseModel):
+    model_config = ConfigDict(extra="forbid", allow_inf_nan=False)
+
+
+def _amount(v):
+    """A number, or the string "balance" (the unknown of the cycle balance)."""
+    if isinstance(v, str) and v != BALANCE:
+        raise ValueError(f'must be a number or "balance" (got {v!r})')
+    return v
+
+
+Amount = Union[float, str]
+
+
+class _Graph(_Model):
+    _AMOUNTS: ClassVar[tuple[str, ...]] = ()
+
+    @field_validator("value", "scale", "peak", "a0", check_fields=False)
+    @classmethod
+    def _balance_or_number(cls, v):
+        return _amount(v)
+
+    def unknown_field(self) -> str | None:
+        for name in self._AMOUNTS:
+            if getattr(self, name) == BALANCE:
+                return name
+        return None
+
+
+class ConstantGraph(_Graph):
+    """M = value over the whole cycle."""
+
+    _AMOUNTS: ClassVar[tuple[str, ...]] = ("value",)
+    kind: Literal["constant"]
+    value: Amount = Field(description='the moment [N·m], or "balance"')
+
+
+class PointsGraph(_Graph):
+    """Piecewise-linear through [angle, moment] points spanning the cycle."""
+
+    _AMOUNTS: ClassVar[tuple[str, ...]] = ("scale",)
+    kind: Literal["points"]
+    points: list[tuple[float, float]] = Field(
+        description="[[φ (deg), M (N·m)], …] from 0 to cycle_deg, angles never decreasing; "
+                    "a repeated angle is a jump")
+    scale: Amount = Field(1.0, description='multiplier of every ordinate, or "balance"')
+
+
+class TriangleGraph(_Graph):
+    """base outside [from, to]; linear up to peak at apex and down again."""
+
+    _AMOUNTS: ClassVar[tuple[str, ...]] = ("peak",)
+    kind: Literal["triangle"]
+    from_deg: float = Field(description="start of the triangle [deg]")
+    to_deg: float = Field(description="end of the triangle [deg]")
+    apex_deg: float | None = Field(None, description="angle of the peak [deg]; default middle")
+    peak: Amount = Field(description='the peak [N·m], or "balance"')
+    base: float = Field(0.0, description="the level outside the triangle [N·m]")
+
+
+class RectangleGraph(_Graph):
+    """peak on [from, to], base elsewhere."""
+
+    _AMOUNTS: ClassVar[tuple[str, ...]] = ("peak",)
+    kind: Literal["rectangle"]
+    from_deg: float = Field(description="start [deg]")
+    to_deg: float = Field(description="end [deg]")
+    peak: Amount = Field(description='the height [N·m], or "balance"')
+    base: float = Field(0.0, description="the level outside [N·m]")
+
+
+class TrapezoidGraph(_Graph):
+    """base → peak on [from, top_from], peak to top_to, back to base at to."""
+
+    _AMOUNTS: ClassVar[tuple[str, ...]] = ("peak",)
+    kind: Literal["trapezoid"]
+    from_deg: float = Field(description="start of the rise [deg]")
+    top_from_deg: float = Field(description="start of the top [deg]")
+    top_to_deg: float = Field(description="end of the top [deg]")
+    to_deg: float = Field(description="end of the fall [deg]")
+    peak: Amount = Field(description='the top [N·m], or "balance"')
+    base: float = Field(0.0, description="the level outside [N·m]")
+
+
+class HarmonicGraph(_Graph):
+    """M = a0 + Σ (a_k·sin kφ + b_k·cos kφ), φ in radians."""
+
+    _AMOUNTS: ClassVar[tuple[str, ...]] = ("a0",)
+    kind: Literal["harmonic"]
+    a0: Amount = Field(0.0, description='the mean term [N·m], or "balance"')
+    a: list[float] = Field(default_factory=list, description="sine amplitudes a_k [N·m]")
+    b: list[float] = Field(default_factory=list, description="cosine amplitudes b_k [N·m]")
+    orders: list[float] | None = Field(
+        None, description="the orders k of the terms; default 1, 2, …")
+
+
+KINDS = {"constant": ConstantGraph, "points": PointsGraph, "triangle": TriangleGraph,
+         "rectangle": RectangleGraph, "trapezoid": TrapezoidGraph, "harmonic": HarmonicGraph}
+Graph = Annotated[Union[tuple(KINDS.values())], Field(discriminator="kind")]
+
+
+class Speed(_Model):
+    """Exactly one of the four."""
+
+    omega0: float | None = Field(None, description="ω at φ = 0 [rad/s]")
+    omega0_rpm: float | None = Field(None, description="speed at φ = 0 [rev/min]")
+    mean: float | None = Field(None, description="mean speed ω_ср [rad/s]")
+    mean_rpm: float | None = Field(None, description="mean speed [rev/min]")
+
+
+class Flywheel(_Model):
+    """The reduced inertia, or what it must achieve."""
+
+    J: float | None = Field(None, description="reduced moment of inertia [kg·m²]")
+    mass: float | None = Field(None, description="mass of the rotating parts [kg]")
+    radius_of_gyration: float | None = Field(None, description="k: J = m·k² [m]")
+    delta: float | None = Field(None, description="asked δ = (ω_max − ω_min)/ω_ср")
+    fluctuation_percent: float | None = Field(
+        None, description="asked '±x % of the mean speed': δ = 2x/100")
+    rim_radius: float | None = Field(None, description="mean radius of a rim: m = J/R² [m]")
+
+
+class Diagram(_Model):
+    """A turning-moment diagram by its areas between crossings with the mean line."""
+
+    areas: list[float] | None = Field(None, description="signed areas in order [mm²]")
+    moment_scale: float | None = Field(None, description="moment per mm of drawing [N·m/mm]")
+    angle_scale_deg: float | None = Field(None, description="angle per mm of drawing [deg/mm]")
+    energies: list[float] | None = Field(None, description="signed energies instead [J]")
+    crossings_deg: list[float] | None = Field(
+        None, description="angles of the crossings, one more than the areas [deg]")
+
+
+class Task2Case(_Model):
+    """A task-2 problem."""
+
+    title: str = Field("", description="what the case is")
+    source: str = Field("", description="where it comes from (book, problem)")
+    notes: str = Field("", description="anything else")
+    cycle_deg: float = Field(360.0, description="length of the cycle [deg]: 360, 720, 1080 …")
+    speed: Speed
+    flywheel: Flywheel
+    driving: Graph | None = None
+    resistance: Graph | None = None
+    diagram: Diagram | None = None
+
+
+TOP = {"speed": Speed, "flywheel": Flywheel, "diagram": Diagram}
+
+
+# -- errors ---------------------------------------------------------------------------------------
+
+def _loc_str(loc) -> str:
+    out = ""
+    for part in loc:
+        if isinstance(part, int):
+            out += f"[{part}]"
+        else:
+            out += ("." if out else "") + str(part)
+    return out or "(top level)"
+
+
+def _model_at(loc: tuple, data: dict):
+    if not loc:
+        return Task2Case
+    head = loc[0]
+    if head in TOP and len(loc) == 1:
+        return TOP[head]
+    if head in ("driving", "resistance") and len(loc) == 1:
+        kind = (data.get(head) or {}).get("kind") if isinstance(data.get(head), dict) else None
+        return KINDS.get(kind)
+    return None
+
+
+def _describe(err: dict, data: dict) -> str:
+    loc = list(err["loc"])
+    if len(loc) >= 2 and loc[0] in ("driving", "resistance") and loc[1] in KINDS:
+        del loc[1]
+    loc = [p for p in loc if p not in ("float", "str")]
+    kind, msg = err["type"], err["msg"]
+    where = _loc_str(loc)
+    if kind == "extra_forbidden":
+        key = str(loc[-1])
+        model = _model_at(tuple(loc[:-1]), data)
+        allowed = list(model.model_fields) if model else []
+        lower = {a.lower(): a for a in allowed}
+        near = difflib.get_close_matches(key.lower(), list(lower), n=1)
+        hint = f"; did you mean {lower[near[0]]!r}?" if near else ""
+        return f"{where}: unknown key{hint} (allowed: {', '.join(allowed)})"
+    if kind == "missing":
+        return f"{where}: missing required field"
+    if kind in ("union_tag_invalid", "union_tag_not_found"):
+        tag = err.get("ctx", {}).get("tag", "")
+        near = difflib.get_close_matches(str(tag), list(KINDS), n=1)
+        hint = f"; did you mean {near[0]!r}?" if near and tag else ""
+        what = f"unknown kind {tag!r}" if tag else "missing kind"
+        return f"{where}.kind: {what}{hint} (allowed: {', '.join(KINDS)})"
+    if kind == "finite_number":
+        return f"{where}: must be a finite number (got {err.get('input')!r})"
+    if kind == "value_error":
+        return f"{where}: {msg.removeprefix('Value error, ')}"
+    got = err.get("input")
+    got_s = f" (got {got!r})" if not isinstance(got, (dict, list)) else ""
+    return f"{where}: {msg[0].lower() + msg[1:]}{got_s}"
+
+
+class _Err(Exception):
+    def __init__(self, field: str, msg: str):
+        super().__init__(msg)
+        self.field = field
+
+
+def _pos(field: str, v: float | None, unit: str) -> None:
+    if v is not None and not v > 0:
+        raise _Err(field, f"must be positive (got {v:g} {unit})")
+
+
+def _check(case: Task2Case) -> None:
+    """Checks that pydantic's types do not express; each raises with its field path."""
+    if not case.cycle_deg > 0:
+        raise _Err("cycle_deg", f"must be positive (got {case.cycle_deg:g}°)")
+    s = case.speed
+    given = [k for k in ("omega0", "omega0_rpm", "mean", "mean_rpm") if getattr(s, k) is not None]
+    if len(given) != 1:
+        raise _Err("speed", "give exactly one of omega0, omega0_rpm, mean, mean_rpm"
+                   + (f" (got {', '.join(given)})" if given else ""))
+    _pos(f"speed.{given[0]}", getattr(s, given[0]), "rad/s" if "rpm" not in given[0] else "rpm")
+    f = case.flywheel
+    for name, unit in (("J", "kg·m²"), ("mass", "kg"), ("radius_of_gyration", "m"),
+                       ("rim_radius", "m"), ("fluctuation_percent", "%")):
+        _pos(f"flywheel.{name}", getattr(f, name), unit)
+    if f.delta is not None and not 0 < f.delta < 2:
+        raise _Err("flywheel.delta", f"must lie between 0 and 2 (got {f.delta:g})")
+    if f.J is not None and (f.mass is not None or f.radius_of_gyration is not None):
+        raise _Err("flywheel", "give J or mass with radius_of_gyration, not both")
+    if (f.mass is None) != (f.radius_of_gyration is None):
+        raise _Err("flywheel", "mass and radius_of_gyration go together (J = m·k²)")
+    if f.delta is not None and f.fluctuation_percent is not None:
+        raise _Err("flywheel", "give delta or fluctuation_percent, not both")
+    if f.J is None and f.mass is None and f.delta is None and f.fluctuation_percent is None:
+        raise _Err("flywheel", "give J, or mass and radius_of_gyration, or the asked delta "
+                   "(or fluctuation_percent)")
+    if case.diagram is not None:
+        if case.driving is not None or case.resistance is not None:
+            raise _Err("diagram", "give either [diagram] or [driving] and [resistance], not both")
+        _check_diagram(case.diagram, case.cycle_deg)
+        return
+    for name in ("driving", "resistance"):
+        if getattr(case, name) is None:
+            raise _Err(name, "missing: give [driving] and [resistance] graphs, or a [diagram]")
+    unknowns = [(n, g.unknown_field()) for n, g in (("driving", case.driving),
+                                                    ("resistance", case.resistance))
+                if g.unknown_field()]
+    if len(unknowns) > 1:
+        raise _Err(f"{unknowns[1][0]}.{unknowns[1][1]}",
+                   '"balance" may stand for one value only (the other is '
+                   f"{unknowns[0][0]}.{unknowns[0][1]})")
+    for name in ("driving", "resistance"):
+        _check_graph(name, getattr(case, name), case.cycle_deg)
+
+
+def _check_graph(name: str, g, cycle: float) -> None:
+    if isinstance(g, PointsGraph):
+        if len(g.points) < 2:
+            raise _Err(f"{name}.points", "needs at least two [angle, moment] points")
+        for i in range(1, len(g.points)):
+            if g.points[i][0] < g.points[i - 1][0]:
+                raise _Err(f"{name}.points[{i}]",
+                           f"angle {g.points[i][0]:g}° comes after {g.points[i - 1][0]:g}°: "
+                           "angles must not decrease")
+        if g.points[0][0] != 0 or g.points[-1][0] != cycle:
+            raise _Err(f"{name}.points",
+                       f"must span the cycle 0…{cycle:g}° (spans "
+                       f"{g.points[0][0]:g}…{g.points[-1][0]:g}°)")
+    elif isinstance(g, (TriangleGraph, RectangleGraph, TrapezoidGraph)):
+        if not 0 <= g.from_deg < g.to_deg <= cycle:
+            raise _Err(f"{name}.from_deg", f"need 0 ≤ from_deg < to_deg ≤ {cycle:g} "
+                       f"(got {g.from_deg:g}, {g.to_deg:g})")
+        if isinstance(g, TriangleGraph) and g.apex_deg is not None \
+                and not g.from_deg <= g.apex_deg <= g.to_deg:
+            raise _Err(f"{name}.apex_deg", f"must lie within {g.from_deg:g}…{g.to_deg:g}° "
+                       f"(got {g.apex_deg:g})")
+        if isinstance(g, TrapezoidGraph) and not (
+                g.from_deg <= g.top_from_deg <= g.top_to_deg <= g.to_deg):
+            raise _Err(f"{name}.top_from_deg",
+                       "need from_deg ≤ top_from_deg ≤ top_to_deg ≤ to_deg")
+    elif isinstance(g, HarmonicGraph):
+        n = max(len(g.a), len(g.b))
+        if g.orders is not None:
+            if len(g.orders) != n:
+                raise _Err(f"{name}.orders", f"{len(g.orders)} orders for {n} terms")
+            if any(not k > 0 for k in g.orders):
+                raise _Err(f"{name}.orders", "orders must be positive")
+
+
+def _check_diagram(d: Diagram, cycle: float) -> None:
+    if (d.areas is None) == (d.energies is None):
+        raise _Err("diagram", "give areas (with moment_scale and angle_scale_deg) or energies")
+    vals, key = (d.areas, "areas") if d.areas is not None else (d.energies, "energies")
+    if d.areas is not None:
+        for k in ("moment_scale", "angle_scale_deg"):
+            if getattr(d, k) is None:
+                raise _Err(f"diagram.{k}", "missing: areas need the drawing's scales")
+            _pos(f"diagram.{k}", getattr(d, k), "")
+    if len(vals) < 2:
+        raise _Err(f"diagram.{key}", "needs at least two areas")
+    total, size = math.fsum(vals), math.fsum(abs(v) for v in vals)
+    if abs(total) > t2.BALANCE_RTOL * size:
+        raise _Err(f"diagram.{key}", f"sum to {total:.6g}, not 0: over a cycle the areas above "
+                   "and below the mean line must be equal")
+    if d.crossings_deg is not None:
+        c = d.crossings_deg
+        if len(c) != len(vals) + 1:
+            raise _Err("diagram.crossings_deg",
+                       f"needs {len(vals) + 1} angles for {len(vals)} areas (got {len(c)})")
+        for i in range(1, len(c)):
+            if not c[i] > c[i - 1]:
+                raise _Err(f"diagram.crossings_deg[{i}]", "angles must increase")
+        if c[0] < 0 or c[-1] > cycle:
+            raise _Err("diagram.crossings_deg", f"must lie within 0…{cycle:g}°")
+
+
+# -- loading and solving --------------------------------------------------------------------------
+
+def parse_task2_case(data: dict, source: str = "<case>") -> Task2Case:
+    """Validate a parsed TOML document or raise one CaseFileError line."""
+    try:
+        case = Task2Case.model_validate(data)
+    except ValidationError as exc:
+        raise CaseFileError(f"{source}: {_describe(exc.errors()[0], data)}") from None
+    try:
+        _check(case)
+    except _Err as exc:
+        raise CaseFileError(f"{source}: {exc.field}: {exc}") from None
+    return case
+
+
+def load_task2_case(path) -> Task2Case:
+    """Read a TOML task-2 case file and validate it."""
+    path = Path(path)
+    try:
+        text = path.read_bytes().decode("utf-8")
+    except FileNotFoundError:
+        raise CaseFileError(f"{path}: no such file") from None
+    except IsADirectoryError:
+        raise CaseFileError(f"{path}: is a folder, expected a TOML case file") from None
+    except UnicodeDecodeError as exc:
+        raise CaseFileError(f"{path}: not UTF-8 text ({exc.reason} at byte {exc.start})") from None
+    except OSError as exc:
+        raise CaseFileError(f"{path}: cannot be read ({exc.strerror})") from None
+    try:
+        data = tomllib.loads(text)
+    except tomllib.TOMLDecodeError as exc:
+        raise CaseFileError(f"{path}: TOML syntax error: {exc}") from None
+    return parse_task2_case(data, str(path))
+
+
+def _maker(g, cycle: float):
+    """x ↦ Moment, with x standing for the graph's "balance" value (if any)."""
+    r = math.radians
+
+    def num(v, x):
+        return x if v == BALANCE else float(v)
+
+    if isinstance(g, ConstantGraph):
+        return lambda x: t2.constant(num(g.value, x), cycle)
+    if isinstance(g, PointsGraph):
+        def make(x):
+            s = num(g.scale, x)
+            return t2.piecewise_linear([(r(p), s * m) for p, m in g.points], cycle,
+                                       nominal=s * max(m for _, m in g.points))
+        return make
+    if isinstance(g, TriangleGraph):
+        return lambda x: t2.triangle(num(g.peak, x), r(g.from_deg), r(g.to_deg), cycle,
+                                     None if g.apex_deg is None else r(g.apex_deg), g.base)
+    if isinstance(g, RectangleGraph):
+        return lambda x: t2.rectangle(num(g.peak, x), r(g.from_deg), r(g.to_deg), cycle, g.base)
+    if isinstance(g, TrapezoidGraph):
+        return lambda x: t2.trapezoid(num(g.peak, x), r(g.from_deg), r(g.top_from_deg),
+                                      r(g.top_to_deg), r(g.to_deg), cycle, g.base)
+    return lambda x: t2.harmonic(num(g.a0, x), g.a, g.b, g.orders, cycle)
+
+
+def _speeds(case: Task2Case) -> dict:
+    s = case.speed
+    rpm = math.pi / 30
+    if s.omega0 is not None:
+        return {"omega0": s.omega0}
+    if s.omega0_rpm is not None:
+        return {"omega0": s.omega0_rpm * rpm}
+    if s.mean is not None:
+        return {"omega_mean": s.mean}
+    return {"omega_mean": s.mean_rpm * rpm}
+
+
+def solve_case(case: Task2Case, source: str = "<case>") -> t2.Task2Result:
+    """Solve a validated case; a physical impossibility becomes one CaseFileError line."""
+    f = case.flywheel
+    J = f.J if f.J is not None else (f.mass * f.radius_of_gyration ** 2 if f.mass else None)
+    delta = f.delta if f.delta is not None else (
+        2 * f.fluctuation_percent / 100 if f.fluctuation_percent is not None else None)
+    cycle = math.radians(case.cycle_deg)
+    kw = dict(delta=delta, rim_radius=f.rim_radius, **_speeds(case))
+    field = "flywheel"
+    try:
+        if case.diagram is not None:
+            d = case.diagram
+            if d.areas is not None:
+                k = d.moment_scale * math.radians(d.angle_scale_deg)   # J per mm²
+                energies = [a * k for a in d.areas]
+            else:
+                energies = list(d.energies)
+            at = None if d.crossings_deg is None else [math.radians(c) for c in d.crossings_deg]
+            return t2.solve_areas(energies, J, cycle=cycle, crossings_at=at, **kw)
+        make_D, make_C = _maker(case.driving, cycle), _maker(case.resistance, cycle)
+        unknown = ("driving" if case.driving.unknown_field() else
+                   "resistance" if case.resistance.unknown_field() else None)
+        if unknown:
+            field = f"{unknown}.{getattr(case, unknown).unknown_field()}"
+            x = t2.balance(make_D, make_C, unknown)
+            field = "flywheel"
+        else:
+            x = 1.0
+        return t2.solve(make_D(x), make_C(x), J, unknown=unknown, **kw)
+    except InputError as exc:
+        raise CaseFileError(f"{source}: {field}: {exc}") from None

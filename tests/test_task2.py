@@ -1,0 +1,372 @@
+"""flywheel.task2 and its case format: seed 002, closed forms, textbook problems.
+
+Reference values: the seed's printed numbers sit in comments next to the exact values asserted;
+where the seed is wrong (its crossings, ω4 = ω5 = 199.91, δ printed as 0) the test says so.
+"""
+import math
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from flywheel import task2 as t2
+from flywheel.errors import CaseFileError, InputError
+from flywheel.task2_case import load_task2_case, parse_task2_case, solve_case
+
+CASES = Path(__file__).resolve().parent.parent / "cases"
+PI = math.pi
+
+
+def solve_file(name):
+    path = CASES / name
+    return solve_case(load_task2_case(path), str(path))
+
+
+def numeric_A(m_d, m_c, phi, n=400_001):
+    """Independent work A(φ) = ∫₀^φ (M_D − M_C) dφ: trapezoid rule on a fine grid."""
+    x = np.linspace(0.0, phi, n)
+    f = m_d(x) - m_c(x)
+    return float(np.sum(0.5 * (f[1:] + f[:-1]) * np.diff(x)))
+
+
+def omega_numeric(A, J=12.0, w0=200.0):
+    return math.sqrt(w0 * w0 + 2 * A / J)
+
+
+# -- seed 002 -------------------------------------------------------------------------------------
+
+@pytest.mark.parametrize("profile", ["triangle", "rectangle"])
+def test_seed_balance_gives_60(profile):
+    # seed: M_C := 4·M_D = 60 Н·м in both tasks (M_D·2π = M_C·π/2)
+    r = t2.seed_task(profile)
+    assert r.M_C == pytest.approx(60.0, rel=1e-15)
+    assert r.unknown == "resistance"
+    assert r.steady
+    assert r.work_driving == pytest.approx(r.work_resistance, rel=1e-14)
+
+
+def _triangle_mc(x):
+    return np.interp(x, [0, PI / 2, PI, 3 * PI / 2, 2 * PI], [0, 0, 60, 0, 0])
+
+
+def test_seed_triangle_crossings_are_5pi_8_and_11pi_8():
+    r = t2.seed_task("triangle")
+    phis = [row.phi for row in r.rows]
+    assert phis == pytest.approx([0, PI / 2, 5 * PI / 8, PI, 11 * PI / 8, 3 * PI / 2, 2 * PI],
+                                 abs=1e-14)
+    assert [row.kind for row in r.rows] == ["bound", "bound", "crossing", "bound", "crossing",
+                                            "bound", "bound"]
+    # the seed puts them at π/2 + (2/π)·M_D/M_C = 1.73 rad and 4.55 rad: wrong
+    assert abs(r.rows[2].phi - 1.73) > 0.2
+    assert r.rows[2].M_C == pytest.approx(15.0, abs=1e-12)   # M_C = M_D there
+    assert r.rows[4].M_C == pytest.approx(15.0, abs=1e-12)
+
+
+@pytest.mark.parametrize("profile,mc", [("triangle", _triangle_mc),
+                                        ("rectangle", lambda x: np.where(
+                                            (x >= PI / 2) & (x < PI), 60.0, 0.0))])
+def test_seed_omega_at_every_row_matches_numerical_integration(profile, mc):
+    r = t2.seed_task(profile)
+    for row in r.rows:
+        n = 400_001 if profile == "triangle" else 4_000_001  # jumps: first order in h
+        A = numeric_A(lambda x: np.full_like(x, 15.0), mc, row.phi, n)
+        assert row.A == pytest.approx(A, abs=2e-5 if profile == "rectangle" else 1e-8)
+        assert row.omega == pytest.approx(omega_numeric(A), abs=1e-7)
+
+
+def test_seed_triangle_numbers():
+    r = t2.seed_task("triangle")
+    w = [row.omega for row in r.rows]
+    # seed: ω1 = 200.01, ω2 = 200.01 (at its wrong φ2), ω3 = 200
+    assert w[1] == pytest.approx(math.sqrt(200 ** 2 + 2 * 15 * (PI / 2) / 12), rel=1e-15)
+    assert w[3] == pytest.approx(200.0, rel=1e-14)
+    # ω_max at 5π/8: A = 15·5π/8 − 15·(π/8)/2 = 135π/16
+    assert r.omega_max == pytest.approx(math.sqrt(40000 + 2 * 135 * PI / 16 / 12), rel=1e-15)
+    assert r.omega_max == pytest.approx(200.0110444, abs=1e-7)
+    # seed: ω4 = ω5 = 199.91 -- wrong; the minimum is at 11π/8: A = −135π/16
+    assert r.omega_min == pytest.approx(math.sqrt(40000 - 2 * 135 * PI / 16 / 12), rel=1e-15)
+    assert r.omega_min == pytest.approx(199.9889550, abs=1e-7)
+    assert w[5] == pytest.approx(199.9901823, abs=1e-7)      # not 199.91 either
+    assert r.phi_omega_max == pytest.approx(5 * PI / 8, abs=1e-14)
+    assert r.phi_omega_min == pytest.approx(11 * PI / 8, abs=1e-14)
+    # seed: ω_ср = 199.96 (from its wrong ω_min), δ printed as 0 (rounding)
+    assert r.omega_mean == pytest.approx(199.9999997, abs=1e-7)
+    assert r.delta == pytest.approx(1.10446617e-4, rel=1e-8)
+    assert r.delta_T_max == pytest.approx(135 * PI / 8, rel=1e-14)
+
+
+def test_seed_rectangle_numbers():
+    r = t2.seed_task("rectangle")
+    assert [row.phi for row in r.rows] == pytest.approx([0, PI / 2, PI, 2 * PI], abs=1e-15)
+    # seed: ω1 = 200.01, ω2 = 199.98, ω_ср := ω0 = 200 (it should be (ω_max + ω_min)/2)
+    assert r.omega_max == pytest.approx(math.sqrt(40000 + 2 * 7.5 * PI / 12), rel=1e-15)
+    assert r.omega_min == pytest.approx(math.sqrt(40000 - 2 * 15 * PI / 12), rel=1e-15)
+    assert r.omega_min == pytest.approx(199.98, abs=5e-3)
+    assert r.phi_omega_max == PI / 2 and r.phi_omega_min == PI
+    assert r.delta == pytest.approx((r.omega_max - r.omega_min) / r.omega_mean, rel=1e-9)
+    assert r.delta == pytest.approx(1.47269e-4, rel=1e-5)
+
+
+def test_seed_given_peak_is_not_steady():
+    r = t2.seed_task("triangle", M_C=50.0)
+    assert not r.steady
+    # A(2π) = 15·2π − 50·π/2 = 5π
+    assert r.work_end == pytest.approx(5 * PI, rel=1e-14)
+    assert r.omega_end == pytest.approx(math.sqrt(40000 + 2 * 5 * PI / 12), rel=1e-15)
+
+
+def test_seed_machine_that_stops():
+    with pytest.raises(InputError, match="stops at φ = "):
+        t2.seed_task("rectangle", M_C=200000.0, omega0=1.0)
+
+
+def test_seed_delta_asks_for_J():
+    r = t2.seed_task("triangle", delta=1e-5)
+    assert r.J_required == pytest.approx(r.delta_T_max / (1e-5 * r.omega_mean ** 2), rel=1e-15)
+    # with that J at the same mean speed the motion has exactly that δ
+    again = t2.solve(r.driving, r.resistance, r.J_required, omega_mean=r.omega_mean)
+    assert again.delta == pytest.approx(1e-5, rel=1e-12)
+
+
+@pytest.mark.parametrize("kw,match", [
+    (dict(J=0.0), "J must be positive"),
+    (dict(J=-3.0), "J must be positive"),
+    (dict(omega0=0.0), "ω0 must be positive"),
+    (dict(M_D=-1.0), "M_D must be positive"),
+    (dict(start=PI, end=PI / 2), "must be less than"),
+    (dict(start=PI, end=3 * PI), "within 0…360°"),
+])
+def test_seed_bad_input(kw, match):
+    with pytest.raises(InputError, match=match):
+        t2.seed_task("triangle", **kw)
+
+
+# -- closed forms -------------------------------------------------------------------------------
+
+def test_constant_moments_closed_form():
+    # M_D − M_C = 10 N·m throughout: ω² = ω0² + 2·10·φ/J
+    r = t2.solve(t2.constant(30.0), t2.constant(20.0), 2.0, omega0=10.0)
+    assert not r.steady
+    assert r.omega_end == pytest.approx(math.sqrt(100 + 20 * PI), rel=1e-15)
+    assert r.omega_max == r.omega_end and r.omega_min == 10.0
+    r = t2.solve(t2.constant(20.0), t2.constant(20.0), 2.0, omega0=10.0)
+    assert r.steady and r.delta == 0.0 and r.delta_T_max == 0.0
+
+
+@pytest.mark.parametrize("a", [7.0, -7.0])
+def test_single_harmonic_closed_form(a):
+    # M_D − M_C = a·sin φ  →  ω² = ω0² + 2a(1 − cos φ)/J
+    J, w0 = 3.0, 5.0
+    r = t2.solve(t2.harmonic(100.0, [a]), t2.constant(100.0), J, omega0=w0)
+    assert r.steady
+    for row in r.rows:
+        assert row.omega == pytest.approx(math.sqrt(w0 ** 2 + 2 * a * (1 - math.cos(row.phi)) / J),
+                                          rel=1e-14)
+    s = t2.sample(r, 181)
+    for phi, w in zip(s["phi"], s["omega"]):
+        assert w == pytest.approx(math.sqrt(w0 ** 2 + 2 * a * (1 - math.cos(phi)) / J), rel=1e-14)
+    assert [row.kind for row in r.rows] == ["bound", "crossing", "bound"]
+    extreme = r.phi_omega_max if a > 0 else r.phi_omega_min
+    assert extreme == pytest.approx(PI, abs=1e-14)
+    assert r.delta_T_max == pytest.approx(2 * abs(a), rel=1e-14)   # A = a(1 − cos φ)
+
+
+def test_harmonic_crossings_found_robustly():
+    # 1500·sin 3φ: crossings at every 60°
+    r = t2.solve(t2.harmonic(5000.0, [1500.0], orders=[3]), t2.constant(5000.0), 1000.0,
+                 omega0=31.4)
+    inner = [math.degrees(row.phi) for row in r.rows if row.kind == "crossing"]
+    assert inner == pytest.approx([60, 120, 180, 240, 300], abs=1e-10)
+    # a pair of close roots: sin φ·(cos φ − 0.999) crosses at ±2.56°
+    p = t2.Piece(0.0, 2 * PI, 0.0, 0.0, ((1, -0.999, 0.0), (2, 0.5, 0.0)))
+    roots = t2.crossings(p)
+    c = math.degrees(math.acos(0.999))
+    assert [math.degrees(x) for x in roots] == pytest.approx([c, 180, 360 - c], abs=1e-9)
+
+
+def test_mean_speed_is_exact():
+    r = t2.solve(t2.constant(15.0), t2.triangle(60.0, PI / 2, 3 * PI / 2), 12.0,
+                 omega_mean=50.0)
+    assert r.omega_mean == 50.0
+    assert 0.5 * (r.omega_max + r.omega_min) == pytest.approx(50.0, rel=1e-15)
+    assert r.delta * r.J * r.omega_mean ** 2 == pytest.approx(r.delta_T_max, rel=1e-14)
+
+
+def test_library_errors():
+    with pytest.raises(InputError, match="must not decrease"):
+        t2.piecewise_linear([(0, 0), (2, 1), (1, 1), (2 * PI, 0)])
+    with pytest.raises(InputError, match="must span the cycle"):
+        t2.piecewise_linear([(0, 0), (PI, 1)])
+    with pytest.raises(InputError, match="negative resistance"):
+        t2.balance(lambda x: t2.constant(100.0),
+                   lambda x: t2.triangle(x, 1.0, 2.0, base=200.0), "resistance")
+    with pytest.raises(InputError, match="sum to"):
+        t2.solve_areas([1.0, -2.0], J=1.0, omega0=1.0)
+    with pytest.raises(InputError, match="mean speed needs steady"):
+        t2.solve(t2.constant(2.0), t2.constant(1.0), 1.0, omega_mean=10.0)
+
+
+# -- the case files -------------------------------------------------------------------------------
+
+@pytest.mark.parametrize("name,profile", [("task2_seed_triangle.toml", "triangle"),
+                                          ("task2_seed_rectangle.toml", "rectangle")])
+def test_seed_case_files_equal_the_command_defaults(name, profile):
+    a, b = solve_file(name), t2.seed_task(profile)
+    assert a.M_C == 60.0
+    assert [r.omega for r in a.rows] == [r.omega for r in b.rows]
+    assert a.delta == b.delta
+
+
+def test_khurmi_16_4_areas():
+    # Khurmi & Gupta, Theory of Machines, ch. 16, Example 16.4 (petrol engine, areas 295 … 270
+    # mm², 1 mm = 5 N·m, 1 mm = 1°, 36 kg at k = 150 mm, 1800 rpm)
+    r = solve_file("task2_khurmi_16_4.toml")
+    # ΔE = (295 + 690) mm² · 5·π/180 J/mm²
+    assert r.delta_T_max == pytest.approx(985 * 5 * PI / 180, rel=1e-14)
+    # book: C_s = 0.003 (0.3 %)
+    assert r.delta == pytest.approx(0.003, abs=5e-5)
+    assert r.delta == pytest.approx(985 * 5 * PI / 180 / (36 * 0.15 ** 2 * (60 * PI) ** 2),
+                                    rel=1e-13)
+    assert r.phi_omega_max is None
+
+
+def test_khurmi_16_5_rim_mass():
+    # Khurmi & Gupta, ch. 16, Example 16.5 (areas +52 … +107 mm², 1 mm = 600 N·m, 1 mm = 3°,
+    # 600 rpm, ±1.5 %, rim radius 0.5 m)
+    r = solve_file("task2_khurmi_16_5.toml")
+    assert r.delta_T_max == pytest.approx(172 * 600 * 3 * PI / 180, rel=1e-14)
+    # book: m = 182 kg
+    assert r.rim_mass == pytest.approx(182, abs=1)
+    assert r.rim_mass == pytest.approx(182.4977, abs=1e-4)
+    assert r.delta == pytest.approx(0.03, rel=1e-14)
+
+
+def test_khurmi_16_6_three_revolutions():
+    # Khurmi & Gupta, ch. 16, Example 16.6 (750 → 3000 N·m over 3 revolutions, 250 rpm,
+    # 500 kg at k = 0.6 m)
+    r = solve_file("task2_khurmi_16_6.toml")
+    assert r.M_D == pytest.approx(1875.0, rel=1e-14)          # mean torque
+    # book: P = 49.1 kW
+    assert r.power / 1000 == pytest.approx(49.1, abs=0.05)
+    # book: C_s = 0.072
+    assert r.delta == pytest.approx(0.072, abs=5e-4)
+    assert r.delta_T_max == pytest.approx(2812.5 * PI, rel=1e-13)
+    assert r.rows[-1].phi == pytest.approx(6 * PI)
+
+
+def test_khurmi_16_9_four_stroke():
+    # Khurmi & Gupta, ch. 16, Example 16.9 (20 kW at 300 rpm, four-stroke, triangles, ±2 %)
+    r = solve_file("task2_khurmi_16_9.toml")
+    assert r.power == pytest.approx(20e3, rel=1e-12)
+    # book: I = 255.4 kg·m²
+    assert r.J_required == pytest.approx(255.4, abs=0.05)
+    assert math.degrees(r.cycle) == 720.0
+
+
+def test_khurmi_16_11_harmonic():
+    # Khurmi & Gupta, ch. 16, Example 16.11 (T = 20 000 + 9500 sin 2θ − 5700 cos 2θ, 180 rpm,
+    # 1 % of the mean speed)
+    r = solve_file("task2_khurmi_16_11.toml")
+    # book: P = 377 kW
+    assert r.power / 1000 == pytest.approx(377, abs=0.5)
+    # book: ΔE = 11 078 N·m (the amplitude √(9500² + 5700²))
+    assert r.delta_T_max == pytest.approx(math.hypot(9500, 5700), rel=1e-13)
+    assert r.delta_T_max == pytest.approx(11078, abs=1)
+    # book: I = 3121 kg·m² (it rounds ω²·C_s to 3.55); exactly 3118.1
+    assert r.J_required == pytest.approx(3121, rel=1e-3)
+    assert r.J_required == pytest.approx(math.hypot(9500, 5700) / (0.01 * (6 * PI) ** 2),
+                                         rel=1e-13)
+
+
+def test_khurmi_16_12_two_harmonics():
+    # Khurmi & Gupta, ch. 16, Example 16.12 (engine 5000 + 600 sin 2θ, machine 5000 + 500 sin θ,
+    # 500 kg at k = 0.4 m, 150 rpm)
+    r = solve_file("task2_khurmi_16_12.toml")
+    # book: ΔE = 1204 N·m; exactly 600·119/144 − 500·7/12 + 1000 = 1204.1667
+    assert r.delta_T_max == pytest.approx(1204, abs=0.5)
+    assert r.delta_T_max == pytest.approx(1204 + 1 / 6, rel=1e-13)
+    # book: C_s = 6.1 %
+    assert 100 * r.delta == pytest.approx(6.1, abs=0.05)
+    # crossings at θ = 0, 65.38°, 180°, 294.62° (cos θ = 5/12)
+    inner = [math.degrees(row.phi) for row in r.rows if row.kind == "crossing"]
+    c = math.degrees(math.acos(5 / 12))
+    assert inner == pytest.approx([c, 180, 360 - c], abs=1e-9)
+
+
+def test_every_case_file_is_valid():
+    files = sorted(CASES.glob("task2_*.toml"))
+    assert len(files) >= 8
+    for f in files:
+        text = f.read_text(encoding="utf-8")
+        assert text.startswith("#"), f"{f.name} needs a comment header citing its source"
+        solve_file(f.name)
+
+
+# -- the case format's errors ----------------------------------------------------------------
+
+BASE = {"speed": {"omega0": 200.0}, "flywheel": {"J": 12.0},
+        "driving": {"kind": "constant", "value": 15.0},
+        "resistance": {"kind": "triangle", "from_deg": 90, "to_deg": 270, "peak": "balance"}}
+
+
+def _with(**changes):
+    import copy
+
+    d = copy.deepcopy(BASE)
+    for path, value in changes.items():
+        keys = path.split("__")
+        t = d
+        for k in keys[:-1]:
+            t = t.setdefault(k, {})
+        if value is None:
+            t.pop(keys[-1], None)
+        else:
+            t[keys[-1]] = value
+    return d
+
+
+@pytest.mark.parametrize("changes,match", [
+    (dict(flywheel__J=0.0), r"x.toml: flywheel.J: must be positive"),
+    (dict(speed__omega0=-5.0), r"speed.omega0: must be positive"),
+    (dict(speed__mean=3.0), r"speed: give exactly one of"),
+    (dict(resistance__from_deg=300), r"resistance.from_deg: need 0 ≤ from_deg < to_deg"),
+    (dict(resistance__peak="balanse"), r'resistance.peak: must be a number or "balance"'),
+    (dict(resistance__kind="triangel"), r"resistance.kind: unknown kind 'triangel'; did you "
+                                        r"mean 'triangle'\?"),
+    (dict(resistance__peek=3.0), r"resistance.peek: unknown key; did you mean 'peak'\?"),
+    (dict(flywheel__j=1.0), r"flywheel.j: unknown key; did you mean 'J'\?"),
+    (dict(driving__value="balance"), r'"balance" may stand for one value only'),
+    (dict(resistance={"kind": "points", "points": [[0, 0], [200, 5], [100, 5], [360, 0]]}),
+     r"resistance.points\[2\]: angle 100° comes after 200°"),
+    (dict(resistance={"kind": "points", "points": [[0, 0], [200, 5]]}),
+     r"resistance.points: must span the cycle 0…360°"),
+    (dict(resistance={"kind": "triangle", "from_deg": 90, "to_deg": 270, "peak": "balance",
+                      "base": 100.0}),
+     r"resistance.peak: the cycle balance needs a negative resistance moment"),
+    (dict(driving=None, resistance=None,
+          diagram={"areas": [10, -5, -4], "moment_scale": 1, "angle_scale_deg": 1}),
+     r"diagram.areas: sum to 1, not 0"),
+    (dict(driving=None, resistance=None, diagram={"areas": [10, -10]}),
+     r"diagram.moment_scale: missing"),
+    (dict(flywheel={"J": 1.0, "mass": 2.0, "radius_of_gyration": 1.0}), r"not both"),
+    (dict(flywheel={}), r"flywheel: give J"),
+    (dict(cycle_deg=720), r"resistance.from_deg|must span|"),
+])
+def test_case_errors_are_one_line(changes, match):
+    data = _with(**changes)
+    if "cycle_deg" in changes:   # a 720° cycle with the 360° graphs is fine: no error
+        assert solve_case(parse_task2_case(data, "x.toml"), "x.toml").steady
+        return
+    with pytest.raises(CaseFileError, match=match) as exc:
+        solve_case(parse_task2_case(data, "x.toml"), "x.toml")
+    assert "\n" not in str(exc.value)
+    assert str(exc.value).startswith("x.toml: ")
+
+
+def test_case_file_errors(tmp_path):
+    with pytest.raises(CaseFileError, match="no such file"):
+        load_task2_case(tmp_path / "nope.toml")
+    bad = tmp_path / "bad.toml"
+    bad.write_text("speed = [", encoding="utf-8")
+    with pytest.raises(CaseFileError, match="TOML syntax error"):
+        load_task2_case(bad)
