@@ -48,8 +48,8 @@ def test_json_contract(tmp_path):
     for key in ("crank_length", "omega_mean", "cycle_work_resistance", "driving_moment", "delta_T_max",
                 "J_II_mean", "J_required", "J_required_exact", "J_flywheel", "delta_achieved"):
         assert isinstance(r[key], float), key
-    assert set(r["flywheel_disk"]) == {"D", "b", "mass"}
-    assert set(r["flywheel_rim"]) == {"D", "D_inner", "b", "mass"}
+    assert set(r["flywheel_disk"]) >= {"D", "b", "mass"}
+    assert set(r["flywheel_rim"]) >= {"D", "D_inner", "b", "mass"}
     assert [a["phi_deg"] for a in r["at"]] == [120.0, 75.0]
     a75 = r["at"][1]
     assert set(a75["points"]) == {"O", "A", "B", "C", "S2", "S4"}

@@ -216,17 +216,51 @@ class CoupleSpec(_Model):
     moment: float
 
 
-class FlywheelSpec(_Model):
-    """Flywheel make (design.md §2)."""
+MATERIALS = {  # density [kg/m³], allowable hoop stress of a rotating rim [Pa]
+    "steel": (7800.0, 20e6),
+    "cast-iron": (7200.0, 7e6),
+}
 
-    density: Pos = Field(7800.0, description="material density ρ [kg/m³]")
+
+class FlywheelSpec(_Model):
+    """Flywheel make and placement (design.md §2; seed 003, eqs. 9.21–9.23 for the ratio)."""
+
+    material: Literal["steel", "cast-iron"] = Field(
+        "steel", description="sets density (7800 / 7200 kg/m³) and allowable rim stress "
+                             "(20 / 7 MPa) unless given")
+    density: Pos | None = Field(None, description="material density ρ [kg/m³]")
+    allowable_stress: Pos | None = Field(
+        None, description="allowable hoop stress of the rim [Pa]: rim speed limit √(σ/ρ)")
+    speed_ratio: Pos = Field(
+        1.0, description="i = flywheel shaft speed / crank speed: the flywheel needs J_M/i²")
     width_ratio: Pos = Field(0.2, description="b/D")
     inner_ratio: float = Field(0.8, gt=0, lt=1, description="rim: D_inner/D")
+    rim_share: float = Field(1.0, gt=0, le=1, description="share of J_M carried by the rim "
+                                                          "(hub and spokes carry the rest)")
     formulas: Literal["first-principles", "course"] = Field(
         "first-principles",
         description="'first-principles': J = πρbD⁴/32 with the density and ratios above; "
                     "'course': the seed's rounded empirical constants 0.366, 0.406, 6123 "
                     "(steel, b = 0.2·D, D1 = 0.8·D)")
+
+    @property
+    def rho(self) -> float:
+        return self.density if self.density is not None else MATERIALS[self.material][0]
+
+    @property
+    def sigma(self) -> float:
+        return self.allowable_stress if self.allowable_stress is not None else MATERIALS[self.material][1]
+
+
+class MotorSpec(_Model):
+    """Linear static characteristic of the motor, reduced to the crank: M_Д = M_п·(1 − ω/ω_x)
+    (the course's model of an asynchronous motor). Used by `flywheel run --transients`."""
+
+    no_load_speed_rpm: Pos = Field(description="ω_x: synchronous (no-load) speed reduced to the "
+                                               "crank [rev/min]; must exceed the mean speed")
+    starting_torque: Pos | None = Field(
+        None, description="M_п reduced to the crank [N·m]; default: the value whose mean torque "
+                          "at the mean speed equals the driving moment, M_п = M_D/(1 − ω_m/ω_x)")
 
 
 class OutputSpec(_Model):
@@ -252,6 +286,7 @@ class Case(_Model):
     forces: list[ForceSpec] = Field(default_factory=list)
     couples: list[CoupleSpec] = Field(default_factory=list)
     flywheel: FlywheelSpec = Field(default_factory=FlywheelSpec)
+    motor: MotorSpec | None = None
     output: OutputSpec = Field(default_factory=OutputSpec)
 
     # -- derived -------------------------------------------------------------------------
@@ -361,6 +396,10 @@ def _check_references(case: Case) -> None:
         lo, hi = f.s_range
         if not 0 <= lo < hi <= 1:
             raise _RefError(("forces", i, "s_range"), f"must satisfy 0 ≤ from < to ≤ 1 (got {lo}, {hi})")
+    if case.motor is not None and case.motor.no_load_speed_rpm * 2 * math.pi / 60 <= case.machine.omega_mean:
+        raise _RefError(("motor", "no_load_speed_rpm"),
+                        f"{case.motor.no_load_speed_rpm:g} rpm is not above the mean speed "
+                        f"{case.machine.omega_mean * 30 / math.pi:g} rpm")
     for i, c in enumerate(case.couples):
         if c.link not in links:
             raise _RefError(("couples", i, "link"), f"no link named {c.link!r}")

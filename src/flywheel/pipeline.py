@@ -35,12 +35,14 @@ def _extremes(x: np.ndarray) -> tuple[float, float]:
     return float(np.min(x)), float(np.max(x))
 
 
-def analyze(case, n_points: int = DEFAULT_POINTS, at_deg: list[float] | None = None) -> Results:
+def analyze(case, n_points: int = DEFAULT_POINTS, at_deg: list[float] | None = None,
+            transients: bool = False) -> Results:
     """Run the whole dynamic analysis of a validated case (:class:`flywheel.case.Case`).
 
     n_points: uniform intervals over the cycle (the report angles, standard positions and dead
     centres are added as nodes); at_deg: report angles [deg] (default: the case's
-    output.at_deg). Raises FlywheelError subclasses for input that cannot be analysed.
+    output.at_deg); transients: also integrate the equation of motion in time (a check of
+    ω(φ), start-up with the case's motor, run-down; imports scipy). Raises FlywheelError subclasses for input that cannot be analysed.
     """
     from flywheel.case import to_mechanism
 
@@ -174,11 +176,12 @@ def analyze(case, n_points: int = DEFAULT_POINTS, at_deg: list[float] | None = N
                         f"kg·m²: no flywheel is needed")
     J_exact, T0_exact = sizing.J_required_exact(A, J_II, omega_m, delta)
     fw = case.flywheel
+    J_shaft = max(J_fly, 0.0) / fw.speed_ratio**2          # seed 003, eqs. 9.21–9.23
     if fw.formulas == "course":
-        disk, rim = sizing.disk_course(max(J_fly, 0.0)), sizing.rim_course(max(J_fly, 0.0))
+        disk, rim = sizing.disk_course(J_shaft), sizing.rim_course(J_shaft * fw.rim_share)
     else:
-        disk = sizing.disk(max(J_fly, 0.0), fw.density, fw.width_ratio)
-        rim = sizing.rim(max(J_fly, 0.0), fw.density, fw.width_ratio, fw.inner_ratio)
+        disk = sizing.disk(J_shaft, fw.rho, fw.width_ratio)
+        rim = sizing.rim(J_shaft * fw.rim_share, fw.rho, fw.width_ratio, fw.inner_ratio)
 
     # -- motion ----------------------------------------------------------------------------------------
     J_I = max(J_req, J_first)            # what is really on the crank shaft
@@ -190,6 +193,14 @@ def analyze(case, n_points: int = DEFAULT_POINTS, at_deg: list[float] | None = N
     omega_exact = motion.omega_from_energy(T0_exact, A, J_exact, J_II)
     delta_ach_exact = motion.speed_fluctuation(omega_exact)[3]
     i_wmax, i_wmin = int(np.argmax(omega)), int(np.argmin(omega))
+
+    v_limit = sizing.rim_speed_limit(fw.sigma, fw.rho)
+    for shape, dims in (("disk", disk), ("rim", rim)):
+        dims["rim_speed"] = w_max * fw.speed_ratio * dims["D"] / 2
+        if dims["rim_speed"] > v_limit:
+            warnings.append(f"flywheel as a {shape}: rim speed {dims['rim_speed']:.1f} m/s exceeds "
+                            f"{v_limit:.1f} m/s = √(σ/ρ) for {fw.material} (σ = {fw.sigma / 1e6:g} MPa, "
+                            f"ρ = {fw.rho:g} kg/m³)")
 
     # -- table columns -----------------------------------------------------------------------------------
     cols: dict[str, Column] = {"phi_deg": Column(np.degrees(phi), "deg", "crank angle φ", "угол φ")}
@@ -295,7 +306,11 @@ def analyze(case, n_points: int = DEFAULT_POINTS, at_deg: list[float] | None = N
         "cycle_time": float(t[-1]),
         "flywheel_disk": disk,
         "flywheel_rim": rim,
-        "flywheel_material_density": float(fw.density),
+        "flywheel_material": fw.material,
+        "flywheel_material_density": float(fw.rho),
+        "flywheel_speed_ratio": float(fw.speed_ratio),
+        "flywheel_J_on_its_shaft": float(J_shaft),
+        "flywheel_rim_speed_limit": float(v_limit),
         "flywheel_formulas": fw.formulas,
     }
     links_drawn = [(mech.crank.name, [mech.crank.pivot, mech.crank.tip])]
@@ -307,9 +322,43 @@ def analyze(case, n_points: int = DEFAULT_POINTS, at_deg: list[float] | None = N
         else:
             links_drawn.append((d.link_a, [d.point_a, d.joint]))
             links_drawn.append((d.link_b, [d.point_b, d.joint]))
+    time_domain = None
+    if transients:
+        time_domain = _transients(case, phi, J_I + J_II, dJ_II, M_sum, M_known, omega, driving_moment)
+        scalars["time_domain"] = {k: v for k, v in time_domain.items() if k != "histories"}
     return Results(
+        time_domain=time_domain,
         title=case.title, source=case.source, phi=phi, kinematics=kin, columns=cols,
         scalars=scalars, at=at_list, position_angles=positions, J_parts=J_parts,
         dJ_parts=dJ_parts, M_parts=M_parts, cylinders=cyl_results, links_drawn=links_drawn,
         warnings=warnings,
     )
+
+
+def _transients(case, phi, J, dJ, M_sum, M_known, omega, driving_moment) -> dict:
+    """Time-domain stage: verification of ω(φ), start-up (with a motor), run-down."""
+    from flywheel import timedomain
+
+    machine = case.machine
+    out: dict = {"verification": timedomain.verify_steady(phi, J, dJ, M_sum, omega)}
+    histories = {}
+    if case.motor is not None:
+        w_x = case.motor.no_load_speed_rpm * 2 * math.pi / 60
+        M_p = case.motor.starting_torque or driving_moment / (1 - machine.omega_mean / w_x)
+        st = timedomain.startup(phi, J, dJ, M_known, timedomain.linear_motor(M_p, w_x),
+                                machine.omega_mean, machine.delta)
+        out["startup"] = {k: v for k, v in st.items() if not isinstance(v, np.ndarray)}
+        out["startup"]["starting_torque"] = float(M_p)
+        out["startup"]["no_load_speed"] = float(w_x)
+        if "t" in st:
+            histories["startup"] = (st["t"], st["omega"])
+    else:
+        out["startup"] = {"computed": False,
+                          "reason": "no [motor] in the case: under a constant driving moment the work "
+                                    "over a cycle is zero at any speed, so there is no start-up to a "
+                                    "steady state"}
+    rd = timedomain.rundown(phi, J, dJ, M_known, float(omega[0]))
+    out["rundown"] = {k: v for k, v in rd.items() if not isinstance(v, np.ndarray)}
+    histories["rundown"] = (rd["t"], rd["omega"])
+    out["histories"] = histories
+    return out

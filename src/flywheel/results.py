@@ -57,6 +57,7 @@ class Results:
     cylinders: list[CylinderResult]
     links_drawn: list[tuple[str, list[str]]]  # (link, its points) for the kinematic scheme
     warnings: list[str] = field(default_factory=list)
+    time_domain: dict | None = None           # --transients: checks and histories (t, ω)
 
     def index_of(self, phi: float) -> int:
         """Grid index of the node at angle ``phi`` [rad] (report angles are grid nodes)."""

@@ -81,3 +81,11 @@ def rim_course(J: float) -> dict:
     D = 0.406 * J**0.2
     D1, b = 0.8 * D, 0.2 * D
     return {"D": D, "D_inner": D1, "b": b, "mass": 6123 * (D**2 - D1**2) * b}
+
+
+def rim_speed_limit(allowable_stress: float, density: float) -> float:
+    """Largest peripheral speed of a rotating rim [m/s]: the hoop stress of a thin ring is
+    σ = ρ·v², so v_max = √(σ_allow/ρ) (the thin rotating ring; e.g. Timoshenko, Strength of
+    Materials, part II, rotating rings). σ_allow = 7 MPa for cast iron and 20 MPa for steel give
+    the customary limits of about 30 and 50 m/s."""
+    return math.sqrt(allowable_stress / density)
