@@ -66,6 +66,8 @@ def run(
     as_json: bool = typer.Option(False, "--json", help="Print summary.json to stdout instead of "
                                                        "the rich summary."),
     lang: str = typer.Option("en", "--lang", help="Language of the summary and plots: en | ru."),
+    transients: bool = typer.Option(False, "--transients", help="Also integrate the equation of "
+                                    "motion in time: check ω(φ), start-up (needs [motor]), run-down."),
 ) -> None:
     """Run the whole dynamic analysis of a case; write summary.json, table.csv, positions.csv
     and plots/*.png to the output folder."""
@@ -77,7 +79,7 @@ def run(
     from flywheel.render.tables import positions_csv, summary_json, table_csv
 
     c = _guard(load_case, case)
-    results = _guard(analyze, c, n_points=points, at_deg=at)
+    results = _guard(analyze, c, n_points=points, at_deg=at, transients=transients)
     out = out if out is not None else Path("out") / case.stem
     text_json = summary_json(results)
 
@@ -90,6 +92,9 @@ def run(
 
             (folder / "plots").mkdir()
             write_plots(results, folder / "plots", lang=lang)
+            from flywheel.render.plots_extra import write_extra_plots
+
+            write_extra_plots(results, folder / "plots", lang=lang)
 
     _guard(write_folder, out, build)
     if as_json:
@@ -100,6 +105,10 @@ def run(
         print_summary(results, lang=lang)
         typer.echo(f"written: {out}/ (summary.json, table.csv, positions.csv"
                    + ("" if no_plots else ", plots/*.png") + ")")
+
+
+from flywheel.cli_task2 import task2_command  # noqa: E402
+app.command("task2")(task2_command)
 
 
 def main() -> None:

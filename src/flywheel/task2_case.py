@@ -353,7 +353,10 @@ def parse_task2_case(data: dict, source: str = "<case>") -> Task2Case:
     try:
         case = Task2Case.model_validate(data)
     except ValidationError as exc:
-        raise CaseFileError(f"{source}: {_describe(exc.errors()[0], data)}") from None
+        errs = exc.errors()
+        # a misspelt key also makes the right one missing: report the misspelling
+        first = next((e for e in errs if e["type"] == "extra_forbidden"), errs[0])
+        raise CaseFileError(f"{source}: {_describe(first, data)}") from None
     try:
         _check(case)
     except _Err as exc:

@@ -1,0 +1,216 @@
+"""`flywheel task2` through the CLI: JSON contract, determinism, plots, one-line errors."""
+import json
+import math
+from pathlib import Path
+
+import pytest
+from typer.testing import CliRunner
+
+from flywheel.cli import app
+
+CASES = Path(__file__).resolve().parent.parent / "cases"
+KEYS = {"omega_max", "omega_min", "omega_mean", "delta", "phi_omega_max_deg",
+        "phi_omega_min_deg", "delta_T_max", "M_C", "segments"}
+
+runner = CliRunner()
+
+
+def run(*args):
+    return runner.invoke(app, ["task2", *map(str, args)])
+
+
+def err_text(res):
+    try:
+        return res.stderr
+    except (ValueError, AttributeError):  # older click mixes the streams
+        return res.output
+
+
+def test_json_contract_triangle():
+    res = run("--json")
+    assert res.exit_code == 0, res.output
+    d = json.loads(res.stdout)
+    assert KEYS <= set(d)
+    assert "J_required" not in d
+    assert d["M_C"] == 60.0
+    assert d["phi_omega_max_deg"] == 112.5 and d["phi_omega_min_deg"] == 247.5
+    assert d["delta"] == pytest.approx(1.10446617e-4, rel=1e-8)
+    assert [s["phi_deg"] for s in d["segments"]] == pytest.approx(
+        [0, 90, 112.5, 180, 247.5, 270, 360])
+    assert d["segments"][2]["kind"] == "crossing"
+
+
+def test_json_is_byte_identical():
+    a, b = run("--json", "--profile", "rectangle"), run("--json", "--profile", "rectangle")
+    assert a.exit_code == 0 and a.stdout == b.stdout
+
+
+def test_options_and_delta():
+    res = run("--json", "--profile", "rectangle", "--md", 30, "--j", 6, "--omega0", 100,
+              "--from", 0, "--to", 180, "--delta", 0.001)
+    assert res.exit_code == 0, res.output
+    d = json.loads(res.stdout)
+    assert d["M_C"] == pytest.approx(60.0)           # 30·2π = M_C·π
+    assert d["J_required"] == pytest.approx(d["delta_T_max"] / (0.001 * d["omega_mean"] ** 2))
+
+
+def test_given_peak_says_not_steady():
+    res = run("--mc", 50)
+    assert res.exit_code == 0, res.output
+    assert "not steady" in res.stdout
+    d = json.loads(run("--mc", 50, "--json").stdout)
+    assert d["steady"] is False
+    assert d["omega_end"] == pytest.approx(math.sqrt(40000 + 2 * 5 * math.pi / 12))
+
+
+def test_summary_shows_the_table():
+    res = run("--profile", "triangle")
+    assert res.exit_code == 0
+    for text in ("M_D = M_C", "112.5", "247.5", "199.988955", "0.000110447", "ΔT_нб"):
+        assert text in res.stdout
+
+
+@pytest.mark.parametrize("name", sorted(p.name for p in CASES.glob("task2_*.toml")))
+def test_every_case_runs(name):
+    res = run("--case", CASES / name, "--json")
+    assert res.exit_code == 0, res.output
+    assert KEYS <= set(json.loads(res.stdout))
+
+
+def test_plot(tmp_path):
+    out = tmp_path / "t2.png"
+    res = run("--plot", out)
+    assert res.exit_code == 0, res.output
+    assert out.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    out2 = tmp_path / "areas.png"
+    res = run("--case", CASES / "task2_khurmi_16_4.toml", "--plot", out2)
+    assert res.exit_code == 0, res.output
+    assert out2.stat().st_size > 1000
+
+
+def test_plot_structure():
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    from flywheel import task2 as t2
+    from flywheel.render.task2 import plot
+
+    r = t2.seed_task("triangle")
+    seen = {}
+    orig = plt.close
+
+    def keep(fig):
+        seen["fig"] = fig
+        orig(fig)
+
+    plt.close = keep
+    try:
+        import io
+        plot(r, io.BytesIO())
+    finally:
+        plt.close = orig
+    axes = seen["fig"].axes
+    assert len(axes) == 3
+    labels = [line.get_label() for ax in axes for line in ax.get_lines()]
+    assert "M_D (driving)" in labels and "M_C (resistance)" in labels and "ω(φ)" in labels
+    assert axes[2].get_xlabel() == "φ [deg]" and axes[2].get_ylabel() == "ω [rad/s]"
+
+
+def _case(tmp_path, text):
+    p = tmp_path / "c.toml"
+    p.write_text(text, encoding="utf-8")
+    return p
+
+
+GOOD = """
+[speed]
+omega0 = 200
+[flywheel]
+J = 12
+[driving]
+kind = "constant"
+value = 15
+"""
+
+
+@pytest.mark.parametrize("args,match", [
+    (["--j", 0], "--j must be positive"),
+    (["--j", -12], "--j must be positive"),
+    (["--omega0", 0], "--omega0 must be positive"),
+    (["--omega0", -200], "--omega0 must be positive"),
+    (["--md", 0], "--md must be positive"),
+    (["--from", 200, "--to", 100], "--from (200°) must be less than --to (100°)"),
+    (["--from", 90, "--to", 90], "must be less than"),
+    (["--from", 300], "must be less than"),             # triangle's default --to is 270
+    (["--to", 400], "within 0…360°"),
+    (["--profile", "circle"], "--profile must be triangle or rectangle"),
+    (["--delta", 0], "--delta must lie between 0 and 2"),
+    (["--mc", 1e6, "--omega0", 1], "the machine stops at φ = "),
+    (["--case", "nope.toml"], "nope.toml: no such file"),
+    (["--case", "x.toml", "--md", 3], "--case takes its data from the file; drop --md"),
+])
+def test_bad_options_exit_2_with_one_line(args, match):
+    res = run(*args)
+    assert res.exit_code == 2, res.output
+    err = err_text(res)
+    assert match in err
+    assert err.startswith("error: ") and err.count("\n") == 1
+    assert "Traceback" not in res.output
+
+
+@pytest.mark.parametrize("extra,match", [
+    ("""[resistance]
+kind = "points"
+points = [[0, 0], [180, 60], [90, 0], [360, 0]]
+scale = "balance"
+""", "resistance.points[2]: angle 90° comes after 180°: angles must not decrease"),
+    ("""[resistance]
+kind = "points"
+points = [[0, 0], [180, 60], [300, 0]]
+""", "resistance.points: must span the cycle 0…360° (spans 0…300°)"),
+    ("""[resistance]
+kind = "triangle"
+from_deg = 90
+to_deg = 270
+base = 30
+peak = "balance"
+""", "resistance.peak: the cycle balance needs a negative resistance moment"),
+    ("""[resistance]
+kind = "rectangle"
+from_deg = 90
+to_deg = 180
+peek = 60
+""", "resistance.peek: unknown key; did you mean 'peak'?"),
+])
+def test_bad_case_files_exit_2_with_one_line(tmp_path, extra, match):
+    res = run("--case", _case(tmp_path, GOOD + extra))
+    assert res.exit_code == 2, res.output
+    err = err_text(res)
+    assert match in err, err
+    assert err.count("\n") == 1 and "c.toml: " in err
+
+
+def test_areas_not_summing_to_zero(tmp_path):
+    text = """[speed]
+mean_rpm = 600
+[flywheel]
+J = 10
+[diagram]
+areas = [52, -124, 92, -140, 85, -72, 100]
+moment_scale = 600
+angle_scale_deg = 3
+"""
+    res = run("--case", _case(tmp_path, text))
+    assert res.exit_code == 2
+    assert "diagram.areas: sum to -7, not 0" in err_text(res)
+
+
+def test_negative_J_in_case(tmp_path):
+    res = run("--case", _case(tmp_path, GOOD.replace("J = 12", "J = -1") + """[resistance]
+kind = "constant"
+value = "balance"
+"""))
+    assert res.exit_code == 2
+    assert "flywheel.J: must be positive (got -1 kg·m²)" in err_text(res)
