@@ -370,3 +370,36 @@ def test_case_file_errors(tmp_path):
     bad.write_text("speed = [", encoding="utf-8")
     with pytest.raises(CaseFileError, match="TOML syntax error"):
         load_task2_case(bad)
+
+
+def test_half_orders_over_720_with_driving_balance_match_numerical_integration():
+    data = {"cycle_deg": 720, "speed": {"omega0_rpm": 1500}, "flywheel": {"J": 2.0},
+            "driving": {"kind": "harmonic", "a0": "balance", "a": [300.0, 100.0],
+                        "b": [50.0, 0.0], "orders": [0.5, 1.5]},
+            "resistance": {"kind": "points",
+                           "points": [[0, 100], [360, 100], [360, 50], [720, 50]]}}
+    r = solve_case(parse_task2_case(data, "h.toml"), "h.toml")
+    assert r.unknown == "driving" and r.M_D == pytest.approx(75.0, rel=1e-13)
+    assert r.steady
+
+    def md(x):
+        return 75 + 300 * np.sin(0.5 * x) + 50 * np.cos(0.5 * x) + 100 * np.sin(1.5 * x)
+
+    def mc(x):
+        return np.where(x < 2 * PI, 100.0, 50.0)
+
+    w0 = 1500 * PI / 30
+    for row in r.rows:
+        A = numeric_A(md, mc, row.phi, 2_000_001)
+        assert row.A == pytest.approx(A, abs=1e-5)
+        assert row.omega == pytest.approx(math.sqrt(w0 ** 2 + A), rel=1e-9)   # J = 2
+        if row.kind == "crossing":
+            assert md(row.phi) - mc(row.phi) == pytest.approx(0.0, abs=1e-9)
+
+
+def test_mean_speed_with_unsteady_moments_names_the_speed():
+    data = {"speed": {"mean": 100.0}, "flywheel": {"J": 2.0},
+            "driving": {"kind": "constant", "value": 10.0},
+            "resistance": {"kind": "constant", "value": 5.0}}
+    with pytest.raises(CaseFileError, match=r"^n.toml: speed: a mean speed needs steady motion"):
+        solve_case(parse_task2_case(data, "n.toml"), "n.toml")

@@ -452,4 +452,7 @@ def solve_case(case: Task2Case, source: str = "<case>") -> t2.Task2Result:
             x = 1.0
         return t2.solve(make_D(x), make_C(x), J, unknown=unknown, **kw)
     except InputError as exc:
-        raise CaseFileError(f"{source}: {field}: {exc}") from None
+        msg = str(exc)
+        if msg.startswith(("a mean speed needs", "to find J from δ", "the machine stops")):
+            field = "speed"
+        raise CaseFileError(f"{source}: {field}: {msg}") from None
