@@ -54,7 +54,6 @@ def analyze(case, n_points: int = DEFAULT_POINTS, at_deg: list[float] | None = N
             raise InputError(f"--at: {a} is not a finite angle in degrees")
     mech = to_mechanism(case)
     machine = case.machine
-    omega_m = machine.omega_mean
     warnings: list[str] = []
 
     # -- standard positions: every 30° and the dead centres of every slider ---------------------
@@ -120,7 +119,6 @@ def analyze(case, n_points: int = DEFAULT_POINTS, at_deg: list[float] | None = N
 
     # -- reduction of masses ---------------------------------------------------------------------
     J_parts, dJ_parts = {}, {}
-    zero = np.zeros_like(phi)
     for name, lk in case.links.items():
         if lk.mass == 0 and lk.J_S == 0:
             continue
@@ -130,6 +128,104 @@ def analyze(case, n_points: int = DEFAULT_POINTS, at_deg: list[float] | None = N
         lm = L[name]
         J, dJ = reduction.link_inertia(lk.mass, lk.J_S, v, a, lm.omega_q, lm.eps_q)
         J_parts[name], dJ_parts[name] = J, dJ
+
+    d = dynamics(phi, J_parts, dJ_parts, M_parts, case.machine, case.flywheel, warnings)
+    J_II, dJ_II, M_sum, M_known, omega, eps = (d[k] for k in ("J_II", "dJ_II", "M_sum", "M_known",
+                                                             "omega", "epsilon"))
+    J_I, driving_moment = d["J_I"], d["scalars"]["driving_moment"]
+
+    # -- table columns -----------------------------------------------------------------------------------
+    cols: dict[str, Column] = {"phi_deg": Column(np.degrees(phi), "deg", "crank angle φ", "угол φ")}
+    for name, pm in P.items():
+        if np.all(pm.v_q == 0) and np.all(pm.a_q == 0):
+            continue
+        cols[f"x_{name}"] = Column(pm.r[:, 0], "m", f"x of {name}", f"x точки {name}")
+        cols[f"y_{name}"] = Column(pm.r[:, 1], "m", f"y of {name}", f"y точки {name}")
+        cols[f"vq_{name}"] = Column(np.hypot(*pm.v_q.T), "m", f"|v_q| of {name}",
+                                    f"аналог скорости {name}")
+        cols[f"vqx_{name}"] = Column(pm.v_q[:, 0], "m", f"v_qx of {name}", f"v_qx {name}")
+        cols[f"vqy_{name}"] = Column(pm.v_q[:, 1], "m", f"v_qy of {name}", f"v_qy {name}")
+        cols[f"aq_{name}"] = Column(np.hypot(*pm.a_q.T), "m", f"|a_q| of {name}",
+                                    f"аналог ускорения {name}")
+        cols[f"aqx_{name}"] = Column(pm.a_q[:, 0], "m", f"a_qx of {name}", f"a_qx {name}")
+        cols[f"aqy_{name}"] = Column(pm.a_q[:, 1], "m", f"a_qy of {name}", f"a_qy {name}")
+    for name, lm in L.items():
+        if name == mech.crank.name or (np.all(lm.omega_q == 0) and np.all(lm.eps_q == 0)):
+            continue
+        cols[f"theta_{name}"] = Column(np.degrees(lm.theta), "deg", f"angle of link {name}",
+                                       f"угол звена {name}")
+        cols[f"omega_q_{name}"] = Column(lm.omega_q, "-", f"ω_q of link {name}", f"аналог угл. скорости {name}")
+        cols[f"eps_q_{name}"] = Column(lm.eps_q, "1/rad", f"ε_q of link {name}",
+                                       f"аналог угл. ускорения {name}")
+    cols.update(columns)
+    cols.update(d["columns"])
+
+    # -- report angles -----------------------------------------------------------------------------------------
+    at_list = []
+    for a in at_deg:
+        i = int(np.argmin(np.abs(phi - math.radians(a) % (2 * np.pi))))
+        w, e = float(omega[i]), float(eps[i])
+        pts = {}
+        for name, pm in P.items():
+            v_vec = pm.v_q[i] * w
+            a_vec = pm.a_q[i] * w**2 + pm.v_q[i] * e
+            pts[name] = {
+                "x": float(pm.r[i, 0]), "y": float(pm.r[i, 1]),
+                "v_q": float(np.hypot(*pm.v_q[i])), "a_q": float(np.hypot(*pm.a_q[i])),
+                "v": float(np.hypot(*v_vec)), "a": float(np.hypot(*a_vec)),
+                "v_x": float(v_vec[0]), "v_y": float(v_vec[1]),
+                "a_x": float(a_vec[0]), "a_y": float(a_vec[1]),
+            }
+        lks = {}
+        for name, lm in L.items():
+            lks[name] = {
+                "omega_q": float(lm.omega_q[i]), "epsilon_q": float(lm.eps_q[i]),
+                "omega": float(lm.omega_q[i] * w),
+                "epsilon": float(lm.eps_q[i] * w**2 + lm.omega_q[i] * e),
+            }
+        at_list.append({
+            "phi_deg": float(a), "omega": w, "epsilon": e,
+            "J_II": float(J_II[i]), "dJ_II": float(dJ_II[i]), "M_sum": float(M_sum[i]),
+            "moments": {k: float(v[i]) for k, v in M_parts.items()},
+            "forces": {c.name: float(c.F[i]) for c in cyl_results},
+            "points": pts, "links": lks,
+        })
+
+    scalars = {"crank_length": float(mech.crank.length), **d["scalars"]}
+    links_drawn = [(mech.crank.name, [mech.crank.pivot, mech.crank.tip])]
+    for d in mech.dyads:
+        if hasattr(d, "guide"):
+            links_drawn.append((d.rod, [d.origin, d.joint]))
+        elif hasattr(d, "rocker"):
+            links_drawn.append((d.rocker, [d.pivot, d.origin]))
+        else:
+            links_drawn.append((d.link_a, [d.point_a, d.joint]))
+            links_drawn.append((d.link_b, [d.point_b, d.joint]))
+    time_domain = None
+    if transients:
+        time_domain = _transients(case, phi, J_I + J_II, dJ_II, M_sum, M_known, omega, driving_moment)
+        scalars["time_domain"] = {k: v for k, v in time_domain.items() if k != "histories"}
+    return Results(
+        time_domain=time_domain,
+        title=case.title, source=case.source, phi=phi, kinematics=kin, columns=cols,
+        scalars=scalars, at=at_list, position_angles=positions, J_parts=J_parts,
+        dJ_parts=dJ_parts, M_parts=M_parts, cylinders=cyl_results, links_drawn=links_drawn,
+        warnings=warnings,
+    )
+
+
+def dynamics(phi: np.ndarray, J_parts: dict, dJ_parts: dict, M_parts: dict, machine, fw,
+             warnings: list[str]) -> dict:
+    """Energy → sizing → motion, shared by every route that yields J_II's parts and the reduced
+    moments on a closed φ grid (linkage kinematics, tabulated kinematics).
+
+    J_parts, dJ_parts: link name → J share [kg·m²], dJ/dφ share; M_parts: load name → reduced
+    moment [N·m]; machine, fw: the case's [machine] and [flywheel]. Returns a dict with the
+    arrays (J_II, dJ_II, M_known, M_sum, A, omega, epsilon, …), "J_I", "columns" (for
+    table.csv) and "scalars" (for summary.json). Appends warnings.
+    """
+    omega_m = machine.omega_mean
+    zero = np.zeros_like(phi)
     if J_parts:
         J_II, dJ_II = reduction.reduced_inertia({k: (J_parts[k], dJ_parts[k]) for k in J_parts})
     else:
@@ -175,7 +271,6 @@ def analyze(case, n_points: int = DEFAULT_POINTS, at_deg: list[float] | None = N
         warnings.append(f"the first group already has {J_first:.6g} kg·m² ≥ J_required = {J_req:.6g} "
                         f"kg·m²: no flywheel is needed")
     J_exact, T0_exact = sizing.J_required_exact(A, J_II, omega_m, delta)
-    fw = case.flywheel
     J_shaft = max(J_fly, 0.0) / fw.speed_ratio**2          # seed 003, eqs. 9.21–9.23
     if fw.formulas == "course":
         disk, rim = sizing.disk_course(J_shaft), sizing.rim_course(J_shaft * fw.rim_share)
@@ -202,30 +297,7 @@ def analyze(case, n_points: int = DEFAULT_POINTS, at_deg: list[float] | None = N
                             f"{v_limit:.1f} m/s = √(σ/ρ) for {fw.material} (σ = {fw.sigma / 1e6:g} MPa, "
                             f"ρ = {fw.rho:g} kg/m³)")
 
-    # -- table columns -----------------------------------------------------------------------------------
-    cols: dict[str, Column] = {"phi_deg": Column(np.degrees(phi), "deg", "crank angle φ", "угол φ")}
-    for name, pm in P.items():
-        if np.all(pm.v_q == 0) and np.all(pm.a_q == 0):
-            continue
-        cols[f"x_{name}"] = Column(pm.r[:, 0], "m", f"x of {name}", f"x точки {name}")
-        cols[f"y_{name}"] = Column(pm.r[:, 1], "m", f"y of {name}", f"y точки {name}")
-        cols[f"vq_{name}"] = Column(np.hypot(*pm.v_q.T), "m", f"|v_q| of {name}",
-                                    f"аналог скорости {name}")
-        cols[f"vqx_{name}"] = Column(pm.v_q[:, 0], "m", f"v_qx of {name}", f"v_qx {name}")
-        cols[f"vqy_{name}"] = Column(pm.v_q[:, 1], "m", f"v_qy of {name}", f"v_qy {name}")
-        cols[f"aq_{name}"] = Column(np.hypot(*pm.a_q.T), "m", f"|a_q| of {name}",
-                                    f"аналог ускорения {name}")
-        cols[f"aqx_{name}"] = Column(pm.a_q[:, 0], "m", f"a_qx of {name}", f"a_qx {name}")
-        cols[f"aqy_{name}"] = Column(pm.a_q[:, 1], "m", f"a_qy of {name}", f"a_qy {name}")
-    for name, lm in L.items():
-        if name == mech.crank.name or (np.all(lm.omega_q == 0) and np.all(lm.eps_q == 0)):
-            continue
-        cols[f"theta_{name}"] = Column(np.degrees(lm.theta), "deg", f"angle of link {name}",
-                                       f"угол звена {name}")
-        cols[f"omega_q_{name}"] = Column(lm.omega_q, "-", f"ω_q of link {name}", f"аналог угл. скорости {name}")
-        cols[f"eps_q_{name}"] = Column(lm.eps_q, "1/rad", f"ε_q of link {name}",
-                                       f"аналог угл. ускорения {name}")
-    cols.update(columns)
+    cols: dict[str, Column] = {}
     for name, J in J_parts.items():
         cols[f"J_{name}"] = Column(J, "kg·m²", f"link {name}'s share of J_II", f"вклад звена {name} в J_II")
     cols["J_II"] = Column(J_II, "kg·m²", "reduced inertia of the second group J_II",
@@ -248,39 +320,7 @@ def analyze(case, n_points: int = DEFAULT_POINTS, at_deg: list[float] | None = N
                                  "ω при точном моменте инерции маховика")
     cols["t"] = Column(t, "s", "time t(φ)", "время")
 
-    # -- report angles -----------------------------------------------------------------------------------------
-    at_list = []
-    for a in at_deg:
-        i = int(np.argmin(np.abs(phi - math.radians(a) % (2 * np.pi))))
-        w, e = float(omega[i]), float(eps[i])
-        pts = {}
-        for name, pm in P.items():
-            v_vec = pm.v_q[i] * w
-            a_vec = pm.a_q[i] * w**2 + pm.v_q[i] * e
-            pts[name] = {
-                "x": float(pm.r[i, 0]), "y": float(pm.r[i, 1]),
-                "v_q": float(np.hypot(*pm.v_q[i])), "a_q": float(np.hypot(*pm.a_q[i])),
-                "v": float(np.hypot(*v_vec)), "a": float(np.hypot(*a_vec)),
-                "v_x": float(v_vec[0]), "v_y": float(v_vec[1]),
-                "a_x": float(a_vec[0]), "a_y": float(a_vec[1]),
-            }
-        lks = {}
-        for name, lm in L.items():
-            lks[name] = {
-                "omega_q": float(lm.omega_q[i]), "epsilon_q": float(lm.eps_q[i]),
-                "omega": float(lm.omega_q[i] * w),
-                "epsilon": float(lm.eps_q[i] * w**2 + lm.omega_q[i] * e),
-            }
-        at_list.append({
-            "phi_deg": float(a), "omega": w, "epsilon": e,
-            "J_II": float(J_II[i]), "dJ_II": float(dJ_II[i]), "M_sum": float(M_sum[i]),
-            "moments": {k: float(v[i]) for k, v in M_parts.items()},
-            "forces": {c.name: float(c.F[i]) for c in cyl_results},
-            "points": pts, "links": lks,
-        })
-
     scalars = {
-        "crank_length": float(mech.crank.length),
         "omega_mean": float(omega_m),
         "n_points": int(phi.size),
         "cycle_work_resistance": float(cycle_work_resistance),
@@ -313,26 +353,8 @@ def analyze(case, n_points: int = DEFAULT_POINTS, at_deg: list[float] | None = N
         "flywheel_rim_speed_limit": float(v_limit),
         "flywheel_formulas": fw.formulas,
     }
-    links_drawn = [(mech.crank.name, [mech.crank.pivot, mech.crank.tip])]
-    for d in mech.dyads:
-        if hasattr(d, "guide"):
-            links_drawn.append((d.rod, [d.origin, d.joint]))
-        elif hasattr(d, "rocker"):
-            links_drawn.append((d.rocker, [d.pivot, d.origin]))
-        else:
-            links_drawn.append((d.link_a, [d.point_a, d.joint]))
-            links_drawn.append((d.link_b, [d.point_b, d.joint]))
-    time_domain = None
-    if transients:
-        time_domain = _transients(case, phi, J_I + J_II, dJ_II, M_sum, M_known, omega, driving_moment)
-        scalars["time_domain"] = {k: v for k, v in time_domain.items() if k != "histories"}
-    return Results(
-        time_domain=time_domain,
-        title=case.title, source=case.source, phi=phi, kinematics=kin, columns=cols,
-        scalars=scalars, at=at_list, position_angles=positions, J_parts=J_parts,
-        dJ_parts=dJ_parts, M_parts=M_parts, cylinders=cyl_results, links_drawn=links_drawn,
-        warnings=warnings,
-    )
+    return {"J_II": J_II, "dJ_II": dJ_II, "M_known": M_known, "M_sum": M_sum, "A": A,
+            "omega": omega, "epsilon": eps, "J_I": J_I, "columns": cols, "scalars": scalars}
 
 
 def _transients(case, phi, J, dJ, M_sum, M_known, omega, driving_moment) -> dict:
