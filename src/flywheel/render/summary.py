@@ -45,6 +45,7 @@ def _g(x: float, digits: int = 6) -> str:
 def print_summary(results, console=None, lang: str = "en") -> None:
     """Print the headline results, the flywheel, and the motion at each report angle."""
     from rich.console import Console
+    from rich.markup import escape
     from rich.table import Table
 
     t = L10N[lang]
@@ -87,5 +88,22 @@ def print_summary(results, console=None, lang: str = "en") -> None:
         for name, lk in a["links"].items():
             lt.add_row(name, *(_g(lk[k], 5) for k in ("omega_q", "epsilon_q", "omega", "epsilon")))
         console.print(lt)
+    td = s.get("time_domain")
+    if td:
+        v = td["verification"]
+        console.print(f"time integration (solve_ivp, {v['cycles']} cycles): repeats to "
+                      f"{v['repeat_error']:.1e}, follows ω(φ) to {v['max_deviation']:.1e}, "
+                      f"period {_g(v['period'])} s")
+        st = td["startup"]
+        if st.get("computed") is False:
+            console.print(f"start-up: not computed ({st['reason']})", markup=False)
+        elif st.get("stalled"):
+            console.print(f"start-up: the motor stalls at φ = {st['stall_angle_deg']:.1f}°")
+        else:
+            console.print(f"start-up from rest: steady within δ/10 after {_g(st['time_to_steady'], 4)} s "
+                          f"({st['cycles_to_steady']} cycles), mean speed {_g(st['omega_mean_steady'])} rad/s")
+        rd = td["rundown"]
+        console.print(f"run-down after the drive is cut: {_g(rd['time'], 4)} s, "
+                      f"{rd['angle_deg'] / 360:.2f} revolutions" + ("" if rd["stopped"] else " (not stopped)"))
     for w in results.warnings:
-        console.print(f"[yellow]{t['warning']}:[/yellow] {w}")
+        console.print(f"[yellow]{t['warning']}:[/yellow] {escape(w)}")
