@@ -463,9 +463,11 @@ def _motion(bounds: list[float], kinds: list[str], A: list[float], J: float | No
             delta: float | None, angles_known: bool = True,
             stop: Callable[[float, float], float] | None = None) -> dict:
     """ω at each row and the summary numbers (shared by graphs and area diagrams)."""
-    i_max = max(range(len(A)), key=lambda i: (A[i], -i))
-    i_min = min(range(len(A)), key=lambda i: (A[i], i))
-    A_max, A_min = A[i_max], A[i_min]
+    # the first of equal extremes (equal to 1e-12 of the swing: round-off must not choose)
+    tol = 1e-12 * (max(A) - min(A))
+    i_max = next(i for i, a in enumerate(A) if a >= max(A) - tol)
+    i_min = next(i for i, a in enumerate(A) if a <= min(A) + tol)
+    A_max, A_min = max(A), min(A)
     dT = A_max - A_min
     if J is None:
         if delta is None:
