@@ -21,8 +21,8 @@ def J_required_exact(A: np.ndarray, J_II: np.ndarray, omega_mean: float, delta: 
     T0 = k₊·J_I − max(A − k₊J_II).
 
     >>> A = np.array([0.0, 10.0, 0.0]); J = np.zeros(3)   # constant inertia: J = ΔT/(δ·ω_m²)
-    >>> round(J_required_exact(A, J, 10.0, 0.1)[0], 12)
-    10.0
+    >>> round(J_required_exact(A, J, 10.0, 0.1)[0], 12)   # ΔT/(δ·ω_m²) = 10/(0.1·100)
+    1.0
     """
     k_plus = omega_mean**2 * (1 + delta / 2) ** 2 / 2
     k_minus = omega_mean**2 * (1 - delta / 2) ** 2 / 2
