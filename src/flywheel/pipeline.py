@@ -141,14 +141,14 @@ def analyze(case, n_points: int = DEFAULT_POINTS, at_deg: list[float] | None = N
             continue
         cols[f"x_{name}"] = Column(pm.r[:, 0], "m", f"x of {name}", f"x точки {name}")
         cols[f"y_{name}"] = Column(pm.r[:, 1], "m", f"y of {name}", f"y точки {name}")
-        cols[f"vq_{name}"] = Column(np.hypot(*pm.v_q.T), "m", f"|v_q| of {name}",
+        cols[f"vq_{name}"] = Column(np.hypot(*pm.v_q.T), "m/rad", f"|v_q| of {name}",
                                     f"аналог скорости {name}")
-        cols[f"vqx_{name}"] = Column(pm.v_q[:, 0], "m", f"v_qx of {name}", f"v_qx {name}")
-        cols[f"vqy_{name}"] = Column(pm.v_q[:, 1], "m", f"v_qy of {name}", f"v_qy {name}")
-        cols[f"aq_{name}"] = Column(np.hypot(*pm.a_q.T), "m", f"|a_q| of {name}",
+        cols[f"vqx_{name}"] = Column(pm.v_q[:, 0], "m/rad", f"v_qx of {name}", f"v_qx {name}")
+        cols[f"vqy_{name}"] = Column(pm.v_q[:, 1], "m/rad", f"v_qy of {name}", f"v_qy {name}")
+        cols[f"aq_{name}"] = Column(np.hypot(*pm.a_q.T), "m/rad²", f"|a_q| of {name}",
                                     f"аналог ускорения {name}")
-        cols[f"aqx_{name}"] = Column(pm.a_q[:, 0], "m", f"a_qx of {name}", f"a_qx {name}")
-        cols[f"aqy_{name}"] = Column(pm.a_q[:, 1], "m", f"a_qy of {name}", f"a_qy {name}")
+        cols[f"aqx_{name}"] = Column(pm.a_q[:, 0], "m/rad²", f"a_qx of {name}", f"a_qx {name}")
+        cols[f"aqy_{name}"] = Column(pm.a_q[:, 1], "m/rad²", f"a_qy of {name}", f"a_qy {name}")
     for name, lm in L.items():
         if name == mech.crank.name or (np.all(lm.omega_q == 0) and np.all(lm.eps_q == 0)):
             continue
@@ -205,6 +205,10 @@ def analyze(case, n_points: int = DEFAULT_POINTS, at_deg: list[float] | None = N
     if transients:
         time_domain = _transients(case, phi, J_I + J_II, dJ_II, M_sum, M_known, omega, driving_moment)
         scalars["time_domain"] = {k: v for k, v in time_domain.items() if k != "histories"}
+    for p in mech.points:               # centroids and other points drawn on their links
+        for link, pts in links_drawn:
+            if link == p.link and p.name not in pts:
+                pts.append(p.name)
     return Results(
         time_domain=time_domain,
         title=case.title, source=case.source, phi=phi, kinematics=kin, columns=cols,
