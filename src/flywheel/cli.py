@@ -4,6 +4,7 @@ Every user mistake becomes one line on stderr and exit code 2 (design.md §6).
 """
 from __future__ import annotations
 
+import os
 import sys
 from pathlib import Path
 from typing import Optional
@@ -91,7 +92,7 @@ def run(
             from flywheel.render.plots import write_plots
 
             (folder / "plots").mkdir()
-            write_plots(results, folder / "plots", lang=lang)
+            write_plots(results, folder / "plots", lang=lang, jobs=min(2, os.cpu_count() or 1))
             from flywheel.render.plots_extra import write_extra_plots
 
             write_extra_plots(results, folder / "plots", lang=lang)
