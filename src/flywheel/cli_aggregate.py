@@ -1,0 +1,61 @@
+"""`flywheel aggregate`: the machine aggregate with elastic couplings (seed 003) and rotor chains.
+
+Thin: load the case (:mod:`flywheel.aggregate_case`), analyse (:mod:`flywheel.aggregate`), hand
+the result to :mod:`flywheel.render.aggregate`. Heavy imports live inside the function.
+"""
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Optional
+
+import typer
+
+
+def aggregate_command(
+    case: Path = typer.Argument(..., help="Aggregate case file (TOML), see docs/aggregate.md."),
+    json: bool = typer.Option(False, "--json", help="Print the results as JSON."),
+    plot: Optional[Path] = typer.Option(None, "--plot", help="Write speeds and the elastic "
+                                        "moment against time (start-up, steady state) to this "
+                                        "image file (.png, .svg, .pdf).", dir_okay=False),
+    t_end: Optional[float] = typer.Option(None, "--t-end", help="Duration of the start-up "
+                                          "integration [s] (default: from the motor's time "
+                                          "constant)."),
+) -> None:
+    """Two-mass machine aggregate (seed 003) or a chain of rotors: coefficients a_ij, c_ij,
+    natural frequencies, steady forced vibration, start-up."""
+    import math
+
+    from flywheel.cli import fail
+    from flywheel.errors import FlywheelError, InputError
+
+    try:
+        if t_end is not None and not (math.isfinite(t_end) and t_end > 0):
+            raise InputError(f"--t-end must be a positive number of seconds (got {t_end:g})")
+        from flywheel.aggregate import analyze
+        from flywheel.aggregate_case import load_aggregate_case, to_model
+
+        c = load_aggregate_case(case)
+        ch, drive = to_model(c, str(case))
+        if plot is not None and drive is None:
+            raise InputError("--plot needs a [motor]: a chain without one has no motion in time")
+        result = analyze(ch, drive, t_end=t_end)
+        if plot is not None:
+            from flywheel.render.aggregate import plot as draw
+
+            try:
+                draw(result, plot, c.title)
+            except (OSError, ValueError) as exc:
+                raise InputError(f"--plot {plot}: cannot write the image ({exc})") from None
+    except FlywheelError as exc:
+        fail(str(exc))
+        return
+    if json:
+        from flywheel.render.aggregate import to_json
+
+        typer.echo(to_json(result, c.title, c.source))
+    else:
+        from flywheel.render.aggregate import print_summary
+
+        print_summary(result, c.title, c.source)
+        if plot is not None:
+            typer.echo(f"plot written to {plot}")

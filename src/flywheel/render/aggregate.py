@@ -1,0 +1,205 @@
+"""`flywheel aggregate` output: the JSON document, the rich summary and the plots against time.
+
+Renderers compute no physics: they format a :class:`flywheel.aggregate.AggregateResult`.
+rich and matplotlib are imported inside the functions that use them.
+"""
+from __future__ import annotations
+
+import math
+
+TWO_PI = 2.0 * math.pi
+RPM = 30.0 / math.pi  # rad/s → rev/min
+
+
+def _f(x):
+    return None if x is None else float(x)
+
+
+def to_dict(r, title: str = "", source: str = "") -> dict:
+    """The JSON document, SI units, reduced to shaft I.
+
+    Keys of the contract: natural_frequencies_hz (ascending, the rigid-body 0 excluded),
+    twist_amplitude [rad] (the first coupling, q2 of seed 003), elastic_moment_amplitude
+    [N·m] (c·q2), delta_motor, delta_machine; the last four are null without a motor.
+    """
+    ch, st = r.chain, r.steady
+    d: dict = {}
+    if title:
+        d["title"] = title
+    if source:
+        d["source"] = source
+    d.update({
+        "natural_frequencies_hz": [float(w) / TWO_PI for w in r.modes.elastic],
+        "twist_amplitude": _f(st.twist_amplitude[0]) if st else None,
+        "elastic_moment_amplitude": _f(st.moment_amplitude[0]) if st else None,
+        "delta_motor": _f(st.delta[0]) if st else None,
+        "delta_machine": _f(st.delta[-1]) if st else None,
+        "natural_frequencies_rad_s": [float(w) for w in r.modes.elastic],
+        "rotors": [{"name": n, "J_reduced": float(j), "speed_ratio": float(u)}
+                   for n, j, u in zip(ch.names, ch.J, ch.ratio)],
+        "connections": [{"c_reduced": float(c), "damping_reduced": float(b)}
+                        for c, b in zip(ch.c, ch.damping)],
+        "a": r.a.tolist(),
+        "c": r.c.tolist(),
+        "mode_shapes": r.modes.shapes[:, 1:].T.tolist(),
+    })
+    if st is not None:
+        dr = r.drive
+        d["motor"] = {"characteristic": dr.kind, "starting_torque": dr.M_start,
+                      "synchronous_speed": dr.omega_x, "M0_reduced": dr.M0,
+                      "amplitude_reduced": dr.amplitude}
+        d["steady"] = {
+            "omega_motor": st.omega_mean,
+            "omega_machine": st.omega_mean * float(ch.ratio[-1]),
+            "omega_forcing": st.omega_forcing,
+            "forcing_hz": st.omega_forcing / TWO_PI,
+            "omega_motor_max": st.omega_mean + float(st.omega_amplitude[0]),
+            "omega_motor_min": st.omega_mean - float(st.omega_amplitude[0]),
+            "omega_machine_max": (st.omega_mean + float(st.omega_amplitude[-1])) * float(ch.ratio[-1]),
+            "omega_machine_min": (st.omega_mean - float(st.omega_amplitude[-1])) * float(ch.ratio[-1]),
+            "twist_mean": [float(x) for x in st.twist_mean],
+            "twist_amplitudes": [float(x) for x in st.twist_amplitude],
+            "elastic_moment_mean": [float(x) for x in st.moment_mean],
+            "elastic_moment_amplitudes": [float(x) for x in st.moment_amplitude],
+            "delta": [float(x) for x in st.delta],
+        }
+        d["resonance"] = [{"natural_hz": x.omega_n / TWO_PI, "ratio": x.ratio, "margin": x.margin}
+                          for x in r.resonance]
+        if r.check is not None:
+            d["time_domain"] = {
+                "twist_amplitude": r.check_twist_amplitude,
+                "delta_motor": r.check_delta[0],
+                "delta_machine": r.check_delta[1],
+                "start_up_duration": float(r.startup.t[-1]),
+                "start_up_peak_elastic_moment": r.startup_peak_moment,
+                "start_up_time_to_95_percent": r.startup_time,
+            }
+    return d
+
+
+def to_json(r, title: str = "", source: str = "") -> str:
+    import json
+
+    return json.dumps(to_dict(r, title, source), indent=2, ensure_ascii=False)
+
+
+def _g(x, fmt: str = ".6g") -> str:
+    if x is None:
+        return "—"
+    return format(0.0 if abs(x) < 1e-300 else float(x), fmt)
+
+
+def _matrix(name: str, m, unit: str):
+    from rich.table import Table
+
+    n = m.shape[0]
+    t = Table(title=f"{name} \\[{unit}]")
+    t.add_column("")
+    for j in range(n):
+        t.add_column(f"j = {j + 1}", justify="right")
+    for i in range(n):
+        t.add_row(f"i = {i + 1}", *(_g(m[i, j]) for j in range(n)))
+    return t
+
+
+def print_summary(r, title: str = "", source: str = "", console=None) -> None:
+    """Coefficients, natural frequencies, resonance margins and the steady state."""
+    from rich.console import Console
+    from rich.markup import escape
+    from rich.table import Table
+
+    console = console or Console()
+    if title:
+        console.print(f"[bold]{escape(title)}[/bold]" + (f"  ({escape(source)})" if source else ""))
+    ch = r.chain
+    t = Table(title="Rotors reduced to shaft I (J·u², u = ω/ω_I)")
+    for col in ("#", "rotor", "J_reduced [kg·m²]", "u"):
+        t.add_column(col)
+    for k, (n, j, u) in enumerate(zip(ch.names, ch.J, ch.ratio)):
+        t.add_row(str(k + 1), escape(n), _g(j), _g(u))
+    console.print(t)
+    t = Table(title="Connections reduced to shaft I (c·u²)")
+    for col in ("#", "between", "c [N·m/rad]", "damping [N·m·s/rad]"):
+        t.add_column(col)
+    for k, (c, b) in enumerate(zip(ch.c, ch.damping)):
+        t.add_row(str(k + 1), escape(f"{ch.names[k]} – {ch.names[k + 1]}"), _g(c), _g(b))
+    console.print(t)
+    console.print("Equations (9.24): Σ_j a_ij·q̈_j + Σ_j c_ij·q_j = Q_i, "
+                  "q1 = φ1, q_(k+1) = φ_(k+1) − φ_k")
+    console.print(_matrix("inertia coefficients a_ij", r.a, "kg·m²"))
+    console.print(_matrix("stiffness coefficients c_ij", r.c, "N·m/rad"))
+
+    t = Table(title="Natural frequencies (K·x = ω²·M·x)")
+    for col in ("mode", "ω [rad/s]", "f [Hz]", "shape (φ, largest = 1)"):
+        t.add_column(col)
+    for k, w in enumerate(r.modes.omega):
+        shape = ", ".join(_g(x, ".4g") for x in r.modes.shapes[:, k])
+        t.add_row("rigid body" if k == 0 else str(k), _g(w), _g(w / TWO_PI), shape)
+    console.print(t)
+    st = r.steady
+    if st is None:
+        console.print("no [motor]: natural frequencies only")
+        return
+    console.print(f"forcing ω_III = {_g(st.omega_forcing)} rad/s ({_g(st.omega_forcing / TWO_PI)} "
+                  f"Hz) at the steady speed ω_I = {_g(st.omega_mean)} rad/s "
+                  f"({_g(st.omega_mean * RPM)} rev/min)")
+    t = Table(title="Resonance margins")
+    for col in ("mode", "f_n [Hz]", "ω_forcing/ω_n", "margin |1 − ω_f/ω_n|"):
+        t.add_column(col)
+    for k, x in enumerate(r.resonance):
+        t.add_row(str(k + 1), _g(x.omega_n / TWO_PI), _g(x.ratio, ".4f"), _g(x.margin, ".4f"))
+    console.print(t)
+    t = Table(title="Steady state (closed form; solve_ivp check on the periodic orbit)")
+    for col in ("quantity", "value", "unit", "solve_ivp"):
+        t.add_column(col)
+    u_last = float(ch.ratio[-1])
+    t.add_row("twist q2, mean", _g(st.twist_mean[0]), "rad", "")
+    t.add_row("twist q2, amplitude", _g(st.twist_amplitude[0]), "rad", _g(r.check_twist_amplitude))
+    t.add_row("elastic moment c·q2, mean", _g(st.moment_mean[0]), "N·m", "")
+    t.add_row("elastic moment c·q2, amplitude", _g(st.moment_amplitude[0]), "N·m", "")
+    t.add_row("ω1 (motor) min … max", f"{_g(st.omega_mean - st.omega_amplitude[0])} … "
+              f"{_g(st.omega_mean + st.omega_amplitude[0])}", "rad/s", "")
+    t.add_row("δ motor", _g(st.delta[0]), "", _g(r.check_delta[0] if r.check_delta else None))
+    t.add_row("ω2 (machine, own shaft) min … max",
+              f"{_g((st.omega_mean - st.omega_amplitude[-1]) * u_last)} … "
+              f"{_g((st.omega_mean + st.omega_amplitude[-1]) * u_last)}", "rad/s", "")
+    t.add_row("δ machine", _g(st.delta[-1]), "", _g(r.check_delta[1] if r.check_delta else None))
+    if r.startup is not None:
+        t.add_row("start-up: peak elastic moment", _g(r.startup_peak_moment), "N·m",
+                  f"over {_g(r.startup.t[-1], '.4g')} s")
+        if r.startup_time is not None:
+            t.add_row("start-up: time to 95 % of ω1", _g(r.startup_time), "s", "")
+    console.print(t)
+
+
+def plot(r, path, title: str = "") -> None:
+    """Speeds and the elastic moment against time: start-up and steady state (2×2 panels)."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    ch = r.chain
+    fig, axes = plt.subplots(2, 2, figsize=(11, 7))
+    for col, (h, name) in enumerate(((r.startup, "start-up"), (r.check, "steady state"))):
+        ax = axes[0, col]
+        ax.plot(h.t, h.omega[0], label=f"ω1, {ch.names[0]}")
+        ax.plot(h.t, h.omega[-1], label=f"ω{ch.n}, {ch.names[-1]} (reduced to shaft I)")
+        ax.set_ylabel("ω [rad/s]")
+        ax.set_title(name)
+        ax.legend(fontsize=8)
+        ax = axes[1, col]
+        ax.plot(h.t, ch.c[0] * (h.phi[0] - h.phi[1]), color="tab:red",
+                label="elastic moment c·(φ1 − φ2) = −c·q2")
+        ax.set_ylabel("moment [N·m]")
+        ax.set_xlabel("t [s]")
+        ax.legend(fontsize=8)
+    for ax in axes.flat:
+        ax.grid(True, alpha=0.3)
+    fig.suptitle(title or "machine aggregate")
+    fig.tight_layout()
+    from pathlib import Path
+
+    png = Path(path).suffix.lower() == ".png"
+    fig.savefig(path, dpi=100, **({"metadata": {"Software": None}} if png else {}))
+    plt.close(fig)
