@@ -18,6 +18,7 @@ from typing import Annotated, Literal, Union
 from pydantic import BaseModel, ConfigDict, Field, ValidationError, model_validator
 
 from flywheel.errors import CaseFileError
+from flywheel.tabulated import TabulatedSpec
 
 Pos = Annotated[float, Field(gt=0)]
 NonNeg = Annotated[float, Field(ge=0)]
@@ -277,7 +278,9 @@ class Case(_Model):
     source: str = ""
     machine: Machine
     design: Design = Field(default_factory=Design)
-    crank: CrankSpec
+    crank: CrankSpec | None = Field(None, description="the driving link of a linkage")
+    tabulated: TabulatedSpec | None = Field(
+        None, description="kinematics as a table instead of a linkage (docs/tabulated.md)")
     ground: dict[str, XY] = Field(default_factory=dict, description="fixed points [m]")
     dyads: list[DyadSpec] = Field(default_factory=list)
     points: dict[str, PointSpec] = Field(default_factory=dict)
@@ -316,6 +319,19 @@ class _RefError(ValueError):
 
 def _check_references(case: Case) -> None:
     """Names are unique and defined before use; lengths can be derived."""
+    if (case.crank is None) == (case.tabulated is None):
+        raise _RefError((), "give exactly one of [crank] (a linkage) and [tabulated] "
+                            "(kinematics from a table)")
+    if case.motor is not None and case.motor.no_load_speed_rpm * 2 * math.pi / 60 <= case.machine.omega_mean:
+        raise _RefError(("motor", "no_load_speed_rpm"),
+                        f"{case.motor.no_load_speed_rpm:g} rpm is not above the mean speed "
+                        f"{case.machine.omega_mean * 30 / math.pi:g} rpm")
+    if case.tabulated is not None:   # no linkage: masses and loads live in [tabulated]
+        for key in ("ground", "dyads", "points", "links", "cylinders", "forces", "couples"):
+            if getattr(case, key):
+                raise _RefError((key,), "not allowed with [tabulated]: give masses and loads in "
+                                        "[tabulated] (docs/tabulated.md)")
+        return
     if case.crank.length is None and case.design.mean_piston_speed is None:
         raise _RefError(("crank", "length"), "missing: give crank.length or design.mean_piston_speed")
     points: set[str] = set()
@@ -396,10 +412,6 @@ def _check_references(case: Case) -> None:
         lo, hi = f.s_range
         if not 0 <= lo < hi <= 1:
             raise _RefError(("forces", i, "s_range"), f"must satisfy 0 ≤ from < to ≤ 1 (got {lo}, {hi})")
-    if case.motor is not None and case.motor.no_load_speed_rpm * 2 * math.pi / 60 <= case.machine.omega_mean:
-        raise _RefError(("motor", "no_load_speed_rpm"),
-                        f"{case.motor.no_load_speed_rpm:g} rpm is not above the mean speed "
-                        f"{case.machine.omega_mean * 30 / math.pi:g} rpm")
     for i, c in enumerate(case.couples):
         if c.link not in links:
             raise _RefError(("couples", i, "link"), f"no link named {c.link!r}")
@@ -488,7 +500,7 @@ def parse_case(data: dict, source: str = "<case>") -> Case:
         errs = exc.errors()
         for e in errs:  # a reference error raised inside a model validator carries its own loc
             ctx = e.get("ctx", {}).get("error")
-            if isinstance(ctx, _RefError):
+            if isinstance(ctx, ValueError) and isinstance(getattr(ctx, "loc", None), tuple):
                 raise CaseFileError(f"{source}: {_loc_str(e['loc'] + ctx.loc)}: {ctx}") from None
         raise CaseFileError(f"{source}: {_describe(errs[0])}") from None
 

@@ -44,6 +44,10 @@ def analyze(case, n_points: int = DEFAULT_POINTS, at_deg: list[float] | None = N
     output.at_deg); transients: also integrate the equation of motion in time (a check of
     ω(φ), start-up with the case's motor, run-down; imports scipy). Raises FlywheelError subclasses for input that cannot be analysed.
     """
+    if case.tabulated is not None:
+        from flywheel.tabulated import analyze_tabulated
+
+        return analyze_tabulated(case, n_points, at_deg, transients)
     from flywheel.case import to_mechanism
 
     if n_points < 36:

@@ -23,6 +23,8 @@ def print_check(case, console=None) -> None:
     from flywheel.kinematics.deadcentres import dead_centres
 
     console = console or Console()
+    if case.tabulated is not None:
+        return _print_tabulated(case, console)
     mech = to_mechanism(case)
     solve(mech, np.linspace(0, 2 * np.pi, 721))   # assembles over the whole cycle, or raises
     m = case.machine
@@ -93,4 +95,39 @@ def print_check(case, console=None) -> None:
             stroke = abs(dcs[0].x - dcs[-1].x) if len(dcs) > 1 else 0.0
             t.add_row(s, "stroke", "", f"{stroke:.6g}", "", "", "")
         console.print(t)
+    console.print("[green]case is valid[/green]")
+
+
+def _print_tabulated(case, console) -> None:
+    """A case with tabulated kinematics: its table, one row per position, with Мст and J_II."""
+    from rich.table import Table
+
+    from flywheel.tabulated import reduced_inertia_at_positions, static_moments
+
+    tab, m = case.tabulated, case.machine
+    console.print(f"[bold]{case.title or 'case'}[/bold]" + (f"  ({case.source})" if case.source else ""))
+    console.print(f"crank speed n1 = {m.omega_mean / (2 * math.pi):.6g} rev/s, ω_m = {m.omega_mean:.6g} "
+                  f"rad/s, δ = {m.delta:g}, balance: constant {m.balance} moment; J_II by "
+                  f"{tab.interpolation}", markup=False)
+    t = Table(title="Tabulated kinematics (one row per position)")
+    cols = [("φ [deg]", tab.positions_deg)]
+    cols += [(f"|V_q| {k} [m]", v) for k, v in tab.points.items()]
+    cols += [(f"ω_q {k}", v) for k, v in tab.omega_q.items()]
+    cols += [("Мст [N·m]", static_moments(tab)), ("J_II [kg·m²]", reduced_inertia_at_positions(tab))]
+    t.add_column("#", justify="right")
+    for label, _ in cols:
+        t.add_column(label, justify="right")
+    for k in range(len(tab.positions_deg)):
+        t.add_row(str(k + 1), *(_g(float(v[k])) for _, v in cols))
+    console.print(t)
+    if tab.forces or tab.moments:
+        console.print("loads: " + ", ".join(
+            [f"{f.name} at {f.point} ({f.interpolation})" for f in tab.forces]
+            + [f"moment {mo.name} ({mo.interpolation})" for mo in tab.moments]), markup=False)
+    t = Table(title="Links")
+    for col in ("link", "mass [kg]", "at", "J [kg·m²]", "ω_q row"):
+        t.add_column(col)
+    for name, lk in tab.links.items():
+        t.add_row(name, f"{lk.mass:g}", lk.point or "—", f"{lk.J:g}", (lk.omega_q or name) if lk.J else "—")
+    console.print(t)
     console.print("[green]case is valid[/green]")

@@ -80,13 +80,13 @@ def print_summary(results, console=None, lang: str = "en") -> None:
         for col in (t["point"], "x [m]", "y [m]", "v_q [m]", "a_q [m]", "v [m/s]", "a [m/s²]"):
             pt.add_column(col, justify="right")
         for name, p in a["points"].items():
-            pt.add_row(name, *(_g(p[k], 5) for k in ("x", "y", "v_q", "a_q", "v", "a")))
+            pt.add_row(name, *(_g(p[k], 5) if k in p else "—" for k in ("x", "y", "v_q", "a_q", "v", "a")))
         console.print(pt)
         lt = Table()
         for col in (t["link"], "ω_q", "ε_q [1/rad]", "ω [rad/s]", "ε [rad/s²]"):
             lt.add_column(col, justify="right")
         for name, lk in a["links"].items():
-            lt.add_row(name, *(_g(lk[k], 5) for k in ("omega_q", "epsilon_q", "omega", "epsilon")))
+            lt.add_row(name, *(_g(lk[k], 5) if k in lk else "—" for k in ("omega_q", "epsilon_q", "omega", "epsilon")))
         console.print(lt)
     td = s.get("time_domain")
     if td:

@@ -1,0 +1,426 @@
+"""Tabulated kinematics (design.md §3 end; issue 5; seed 004_112cd67daf63ceba.txt).
+
+The graphical-analytical way of the course: the kinematics come as a table read off velocity
+plans at a few crank positions instead of a mechanism. A case gives, per position,
+
+* the velocity analogues |V_q| = V/ω1 [m] of the points that carry mass or force,
+* the angular-velocity analogues ω_q = ω_i/ω1 [-] of the links that turn,
+* the loads: forces F [N] at those points with the angle α [deg] between each force and its
+  point's velocity, and reduced moments given outright [N·m],
+
+and the links' masses and moments of inertia with the point / ω_q row each one uses. From these
+
+    J_II,i = Σ m·V_q,i² + J·ω_q,i²                     (seed 004, eq. 7: Iпр)
+    M_i    = F_i·V_q,i·cos α_i                          (reduced moment, positive when it drives)
+    Мст_i  = −Σ M_i                                     (seed 004: the static moment, resisting
+                                                         positive: Мст = −Σ G·V·cos(G, V))
+    Мдин_i = ω1²/2·dJ_II/dφ                             (seed 004, eq. 6)
+
+are interpolated periodically onto the φ grid (J_II by a periodic cubic spline by default,
+or piecewise linearly with the seed's forward differences (I_{i+1} − I_i)/(φ_{i+1} − φ_i) as
+its derivative) and handed to :func:`flywheel.pipeline.dynamics`: energy, sizing and motion
+are exactly those of the linkage route.
+
+This module imports only pydantic and numpy at module level (case.py imports it); scipy and
+the pipeline are imported inside the functions that need them.
+"""
+from __future__ import annotations
+
+import math
+from typing import Annotated, Literal
+
+import numpy as np
+from pydantic import BaseModel, ConfigDict, Field, model_validator
+
+MIN_POSITIONS = 6
+MAX_GAP_DEG = 360.0 / MIN_POSITIONS      # the widest allowed gap between neighbouring positions
+_TOL = 1e-9
+
+Row = list[float]
+Name = Annotated[str, Field(min_length=1)]
+
+
+class TableError(ValueError):
+    """An error in the [tabulated] section; ``loc`` is the field path inside it (case.py puts
+    ``tabulated.`` in front and the file name before it)."""
+
+    def __init__(self, loc: tuple, msg: str):
+        super().__init__(msg)
+        self.loc = loc
+
+
+class _Model(BaseModel):
+    model_config = ConfigDict(extra="forbid", allow_inf_nan=False, populate_by_name=True)
+
+
+class TabLink(_Model):
+    """Mass data of one link and the table rows it uses: J share = mass·V_q² + J·ω_q²."""
+
+    mass: float = Field(0.0, ge=0, description="mass m [kg], at `point`")
+    point: str | None = Field(None, description="row of [tabulated.points] whose |V_q| the mass "
+                                                "moves with (its centroid, or the point the "
+                                                "course uses for it)")
+    J: float = Field(0.0, ge=0, description="moment of inertia [kg·m²] multiplied by ω_q²: about "
+                                            "the centroid for a link in plane motion (with its "
+                                            "mass at the centroid), about the fixed pivot for a "
+                                            "link that only turns (then no mass)")
+    omega_q: str | None = Field(None, description="row of [tabulated.omega_q] (default: the link's "
+                                                  "own name)")
+
+
+class TabForce(_Model):
+    """A force at a tabulated point: its reduced moment is M = F·|V_q|·cos α (positive when it
+    drives the crank)."""
+
+    name: Name
+    point: Name = Field(description="row of [tabulated.points] where the force acts")
+    magnitude: float | Row = Field(description="F [N]: one number, or one per position")
+    angle_deg: float | Row = Field(description="α [deg] between the force and the point's "
+                                               "velocity: one number, or one per position "
+                                               "(180 for a resistance opposing the motion)")
+    interpolation: Literal["linear", "periodic-spline"] = Field(
+        "linear", description="how the per-position reduced moments are joined: 'linear' (the "
+                              "trapezoidal rule of graphical integration; safe for a force that "
+                              "switches on and off) or 'periodic-spline' (smooth loads)")
+
+
+class TabMoment(_Model):
+    """A reduced moment given outright per position (e.g. read off another calculation)."""
+
+    name: Name
+    values: Row = Field(description="reduced moment [N·m] per position, positive when it drives")
+    interpolation: Literal["linear", "periodic-spline"] = Field(
+        "linear", description="'linear' or 'periodic-spline' (see forces)")
+
+
+class TabulatedSpec(_Model):
+    """The kinematics and loads as tables aligned with ``positions_deg`` (docs/tabulated.md)."""
+
+    positions_deg: Row = Field(description="crank positions φ [deg], increasing, within [0, 360]; "
+                                           "a last position 360 repeats the first (0) and its "
+                                           "values must equal those at 0")
+    interpolation: Literal["periodic-spline", "finite-differences"] = Field(
+        "periodic-spline",
+        description="J_II(φ) and dJ_II/dφ: 'periodic-spline' (scipy CubicSpline, periodic; "
+                    "dJ from the spline's derivative) or 'finite-differences' (J_II linear "
+                    "between positions, dJ = (I_{i+1} − I_i)/(φ_{i+1} − φ_i) as in seed 004)")
+    crank_length: float | None = Field(None, gt=0, description="l1 [m], reported only")
+    points: dict[str, Row] = Field(default_factory=dict,
+                                   description="point → |V_q| = V/ω1 per position [m]")
+    omega_q: dict[str, Row] = Field(default_factory=dict,
+                                    description="link → ω_q = ω_i/ω1 per position [-]")
+    links: dict[str, TabLink] = Field(default_factory=dict)
+    forces: list[TabForce] = Field(default_factory=list)
+    moments: list[TabMoment] = Field(default_factory=list)
+
+    @model_validator(mode="after")
+    def _check(self):
+        _validate(self)
+        return self
+
+    # -- derived ------------------------------------------------------------------------------
+    @property
+    def closed(self) -> bool:
+        """True if the last position (360°) repeats the first (0°)."""
+        p = self.positions_deg
+        return abs(p[-1] - p[0] - 360.0) < _TOL
+
+    @property
+    def nodes_deg(self) -> np.ndarray:
+        """The distinct positions [deg] (without a closing 360°)."""
+        p = np.asarray(self.positions_deg, float)
+        return p[:-1] if self.closed else p
+
+
+def _validate(t: TabulatedSpec) -> None:
+    p = t.positions_deg
+    n = len(p)
+    for i, a in enumerate(p):
+        if not 0.0 <= a <= 360.0:
+            raise TableError(("positions_deg", i), f"{a:g}° is outside the cycle (allowed: 0 … 360)")
+    for i in range(1, n):
+        if abs(p[i] - p[i - 1]) < _TOL:
+            raise TableError(("positions_deg", i), f"duplicated angle {p[i]:g}° (positions {i} and "
+                                                   f"{i + 1})")
+        if p[i] < p[i - 1]:
+            raise TableError(("positions_deg", i), f"{p[i]:g}° after {p[i - 1]:g}°: positions must "
+                                                   f"increase")
+    distinct = n - 1 if t.closed else n
+    if distinct < MIN_POSITIONS:
+        raise TableError(("positions_deg",), f"{distinct} distinct positions are too few "
+                                             f"(allowed: {MIN_POSITIONS} or more)")
+    nodes = np.asarray(p[:distinct], float)
+    gaps = np.diff(np.append(nodes, nodes[0] + 360.0))
+    k = int(np.argmax(gaps))
+    if gaps[k] > MAX_GAP_DEG + _TOL:
+        end = nodes[(k + 1) % distinct]
+        raise TableError(("positions_deg",), f"the positions do not cover the cycle: nothing between "
+                                             f"{nodes[k]:g}° and {end:g}° ({gaps[k]:g}° gap; allowed: "
+                                             f"{MAX_GAP_DEG:g}° or less between neighbours, 0 … 360)")
+
+    def row(values, loc: tuple, nonneg: bool = False) -> None:
+        if len(values) != n:
+            raise TableError(loc, f"needs {n} values, one per position in positions_deg "
+                                  f"(got {len(values)})")
+        if nonneg and min(values) < 0:
+            i = int(np.argmin(values))
+            raise TableError(loc + (i,), f"{values[i]:g} < 0: velocity analogues are magnitudes "
+                                         f"|V_q| ≥ 0 (the direction is in a force's angle_deg)")
+        if t.closed and abs(values[-1] - values[0]) > _TOL * max(1.0, abs(values[0])):
+            raise TableError(loc + (n - 1,), f"the value at 360° ({values[-1]:g}) must repeat the "
+                                             f"value at 0° ({values[0]:g}): the cycle closes")
+
+    for name, v in t.points.items():
+        row(v, ("points", name), nonneg=True)
+    for name, v in t.omega_q.items():
+        row(v, ("omega_q", name))
+    known_points = ", ".join(sorted(t.points)) or "none"
+    for name, lk in t.links.items():
+        if lk.mass > 0:
+            if lk.point is None:
+                raise TableError(("links", name, "point"), f"link {name} has mass {lk.mass:g} kg "
+                                 f"but no velocity analogues: give point = a row of "
+                                 f"[tabulated.points] (rows: {known_points})")
+        if lk.point is not None and lk.point not in t.points:
+            raise TableError(("links", name, "point"), f"velocity analogues of {lk.point!r} are "
+                             f"missing from [tabulated.points] (rows: {known_points})")
+        if lk.J > 0:
+            key = lk.omega_q or name
+            if key not in t.omega_q:
+                raise TableError(("links", name, "omega_q"), f"link {name} has J = {lk.J:g} kg·m² "
+                                 f"but [tabulated.omega_q] has no row {key!r} (rows: "
+                                 f"{', '.join(sorted(t.omega_q)) or 'none'})")
+    names: set[str] = set()
+    for i, f in enumerate(t.forces):
+        if f.point not in t.points:
+            raise TableError(("forces", i, "point"), f"velocity analogues of {f.point!r} are missing "
+                             f"from [tabulated.points] (rows: {known_points})")
+        for key in ("magnitude", "angle_deg"):
+            v = getattr(f, key)
+            if isinstance(v, list):
+                row(v, ("forces", i, key))
+        if f.name in names:
+            raise TableError(("forces", i, "name"), f"load name {f.name!r} is used twice")
+        names.add(f.name)
+    for i, m in enumerate(t.moments):
+        row(m.values, ("moments", i, "values"))
+        if m.name in names:
+            raise TableError(("moments", i, "name"), f"load name {m.name!r} is used twice")
+        names.add(m.name)
+
+
+# -- per-position values (pure functions of the table; the tests check the seed with them) ------
+
+def _per_position(value, n: int) -> np.ndarray:
+    return np.full(n, float(value)) if not isinstance(value, list) else np.asarray(value, float)
+
+
+def link_inertia_at_positions(spec: TabulatedSpec) -> dict[str, np.ndarray]:
+    """Each link's share of J_II at every row of the table [kg·m²]: m·V_q² + J·ω_q².
+
+    >>> s = TabulatedSpec(positions_deg=[0, 60, 120, 180, 240, 300],
+    ...                   points={"B": [0, 1, 2, 0, 1, 2]}, links={"3": {"mass": 2.0, "point": "B"}})
+    >>> link_inertia_at_positions(s)["3"]
+    array([0., 2., 8., 0., 2., 8.])
+    """
+    n = len(spec.positions_deg)
+    out = {}
+    for name, lk in spec.links.items():
+        J = np.zeros(n)
+        if lk.mass > 0:
+            J += lk.mass * np.asarray(spec.points[lk.point], float) ** 2
+        if lk.J > 0:
+            J += lk.J * np.asarray(spec.omega_q[lk.omega_q or name], float) ** 2
+        out[name] = J
+    return out
+
+
+def reduced_inertia_at_positions(spec: TabulatedSpec) -> np.ndarray:
+    """J_II (the seed's Iпр) at every row of the table [kg·m²]."""
+    parts = link_inertia_at_positions(spec)
+    return sum(parts.values()) if parts else np.zeros(len(spec.positions_deg))
+
+
+def load_moments_at_positions(spec: TabulatedSpec) -> dict[str, np.ndarray]:
+    """Reduced moment of each load at every row [N·m], positive when it drives the crank:
+    a force F·|V_q|·cos α ("force NAME"), a moment as given ("moment NAME")."""
+    n = len(spec.positions_deg)
+    out = {}
+    for f in spec.forces:
+        F = _per_position(f.magnitude, n)
+        alpha = np.radians(_per_position(f.angle_deg, n))
+        out[f"force {f.name}"] = F * np.asarray(spec.points[f.point], float) * np.cos(alpha)
+    for m in spec.moments:
+        out[f"moment {m.name}"] = np.asarray(m.values, float)
+    return out
+
+
+def static_moments(spec: TabulatedSpec) -> np.ndarray:
+    """The seed's static moment Мст at every row [N·m]: −Σ of the loads' reduced moments, so a
+    resisting load counts positive (seed 004: Мст = −(Σ G·V·cos(G, V) − F·V_B4)).
+
+    >>> s = TabulatedSpec(positions_deg=[0, 60, 120, 180, 240, 300],
+    ...                   points={"B": [0.1] * 6},
+    ...                   forces=[{"name": "G", "point": "B", "magnitude": 100.0,
+    ...                            "angle_deg": [180, 180, 0, 0, 0, 180]}])
+    >>> static_moments(s)
+    array([ 10.,  10., -10., -10., -10.,  10.])
+    """
+    parts = load_moments_at_positions(spec)
+    return -sum(parts.values()) if parts else np.zeros(len(spec.positions_deg))
+
+
+# -- periodic interpolation ---------------------------------------------------------------------
+
+def periodic_interpolate(nodes: np.ndarray, values: np.ndarray, phi: np.ndarray, kind: str,
+                         derivative: bool = False) -> np.ndarray:
+    """Interpolate values given at the distinct ``nodes`` [rad] (increasing, within one cycle)
+    onto ``phi`` [rad], periodically over 2π.
+
+    kind: 'periodic-spline' (scipy CubicSpline, bc_type='periodic'), or 'linear' /
+    'finite-differences' (piecewise linear; its derivative on [φ_i, φ_{i+1}) is the forward
+    difference (y_{i+1} − y_i)/(φ_{i+1} − φ_i), seed 004 eq. 10). ``derivative``: d/dφ instead.
+
+    >>> x = np.radians(np.arange(0, 360, 30)); y = np.sin(x)
+    >>> float(periodic_interpolate(x, y, np.array([0.0]), "finite-differences", True)[0])
+    0.954929658551372
+    """
+    nodes = np.asarray(nodes, float)
+    values = np.asarray(values, float)
+    period = 2 * np.pi
+    xe = np.append(nodes, nodes[0] + period)
+    ye = np.append(values, values[0])
+    t = nodes[0] + np.mod(np.asarray(phi, float) - nodes[0], period)
+    if kind == "periodic-spline":
+        from scipy.interpolate import CubicSpline
+
+        cs = CubicSpline(xe, ye, bc_type="periodic")
+        return cs(t, 1 if derivative else 0)
+    # a grid node within 1e-9 rad of a position belongs to the interval that starts there
+    k = np.clip(np.searchsorted(xe, t + 1e-9, side="right") - 1, 0, nodes.size - 1)
+    slope = (ye[k + 1] - ye[k]) / (xe[k + 1] - xe[k])
+    return slope if derivative else ye[k] + slope * (t - xe[k])
+
+
+def _nodes_rad(spec: TabulatedSpec) -> np.ndarray:
+    return np.radians(spec.nodes_deg)
+
+
+def _distinct(spec: TabulatedSpec, values) -> np.ndarray:
+    return np.asarray(values, float)[: spec.nodes_deg.size]
+
+
+def inertia_derivative_at_positions(spec: TabulatedSpec) -> np.ndarray:
+    """dJ_II/dφ [kg·m²/rad] at every row, by the spec's interpolation (the spline's derivative,
+    or the seed's forward difference (I_{i+1} − I_i)/(φ_{i+1} − φ_i))."""
+    J = _distinct(spec, reduced_inertia_at_positions(spec))
+    phi = np.radians(np.asarray(spec.positions_deg, float))
+    return periodic_interpolate(_nodes_rad(spec), J, phi, spec.interpolation, derivative=True)
+
+
+def dynamic_moments(spec: TabulatedSpec, omega: float) -> np.ndarray:
+    """The seed's dynamic moment Мдин = ω1²/2·dIпр/dφ [N·m] at every row (seed 004, eq. 6;
+    ω1 [rad/s] constant, so the ε1·Iпр term of eq. 5 vanishes)."""
+    return omega**2 / 2 * inertia_derivative_at_positions(spec)
+
+
+# -- the analysis ------------------------------------------------------------------------------
+
+def analyze_tabulated(case, n_points: int = 3600, at_deg: list[float] | None = None,
+                      transients: bool = False):
+    """The dynamic analysis of a case whose kinematics are a table (``case.tabulated``).
+
+    Same stages and Results as :func:`flywheel.pipeline.analyze`, with ``kinematics=None``
+    (no positions: nothing to draw) and the table's positions as ``position_angles``.
+    """
+    from flywheel.errors import InputError
+    from flywheel.pipeline import _grid, _transients, dynamics
+    from flywheel.results import Column, Results
+
+    spec: TabulatedSpec = case.tabulated
+    if n_points < 36:
+        raise InputError(f"--points: {n_points} is too few (allowed: 36 or more)")
+    at_deg = list(case.output.at_deg if at_deg is None else at_deg)
+    for a in at_deg:
+        if not math.isfinite(a):
+            raise InputError(f"--at: {a} is not a finite angle in degrees")
+    nodes = _nodes_rad(spec)
+    phi = _grid(n_points, list(nodes) + [math.radians(a) for a in at_deg])
+    kind_J = spec.interpolation
+    kind_kin = "periodic-spline" if kind_J == "periodic-spline" else "linear"
+    warnings: list[str] = []
+
+    # -- reduction of masses: each link's share interpolated, its derivative from the interpolant
+    J_parts, dJ_parts = {}, {}
+    for name, J in link_inertia_at_positions(spec).items():
+        Jd = _distinct(spec, J)
+        J_parts[name] = periodic_interpolate(nodes, Jd, phi, kind_J)
+        dJ_parts[name] = periodic_interpolate(nodes, Jd, phi, kind_J, derivative=True)
+        if J_parts[name].min() < -0.01 * Jd.max():      # more than 1 % of its largest value
+            i = int(np.argmin(J_parts[name]))
+            warnings.append(f"tabulated: the {kind_J} interpolation of link {name}'s share of J_II "
+                            f"dips below zero ({J_parts[name][i]:.3g} kg·m² at φ = "
+                            f"{math.degrees(phi[i]):.1f}°): give more positions near there")
+
+    # -- loads ------------------------------------------------------------------------------------
+    M_parts: dict[str, np.ndarray] = {}
+    kinds = {f"force {f.name}": f.interpolation for f in spec.forces}
+    kinds.update({f"moment {m.name}": m.interpolation for m in spec.moments})
+    for key, M in load_moments_at_positions(spec).items():
+        M_parts[key] = periodic_interpolate(nodes, _distinct(spec, M), phi, kinds[key])
+
+    d = dynamics(phi, J_parts, dJ_parts, M_parts, case.machine, case.flywheel, warnings)
+    omega, eps = d["omega"], d["epsilon"]
+    w_m = case.machine.omega_mean
+
+    # -- columns: the interpolated table, then the shared stages, then the seed's Мст and Мдин ----
+    cols: dict[str, Column] = {"phi_deg": Column(np.degrees(phi), "deg", "crank angle φ", "угол φ")}
+    vq, wq = {}, {}
+    for name, v in spec.points.items():      # |V_q| from the interpolated V_q² (smooth through 0)
+        sq = periodic_interpolate(nodes, _distinct(spec, v) ** 2, phi, kind_kin)
+        vq[name] = np.sqrt(np.maximum(sq, 0.0))
+        cols[f"vq_{name}"] = Column(vq[name], "m", f"|v_q| of {name} (tabulated)",
+                                    f"аналог скорости {name} (по таблице)")
+    for name, w in spec.omega_q.items():
+        sq = periodic_interpolate(nodes, _distinct(spec, w) ** 2, phi, kind_kin)
+        wq[name] = np.sqrt(np.maximum(sq, 0.0))
+        cols[f"omega_q_{name}"] = Column(wq[name], "-", f"|ω_q| of link {name} (tabulated)",
+                                         f"аналог угл. скорости {name} (по таблице)")
+    cols.update(d["columns"])
+    M_st = -d["M_known"]
+    M_dyn = w_m**2 / 2 * d["dJ_II"]
+    cols["M_st"] = Column(M_st, "N·m", "static moment Мст = −Σ reduced moments of the loads "
+                                       "(resisting positive)", "приведённый момент сил статического "
+                                       "сопротивления Мст")
+    cols["M_dyn"] = Column(M_dyn, "N·m", "dynamic moment Мдин = ω_m²/2·dJ_II/dφ",
+                           "динамический момент Мдин")
+
+    at_list = []
+    for a in at_deg:
+        i = int(np.argmin(np.abs(phi - math.radians(a) % (2 * np.pi))))
+        w, e = float(omega[i]), float(eps[i])
+        at_list.append({
+            "phi_deg": float(a), "omega": w, "epsilon": e,
+            "J_II": float(d["J_II"][i]), "dJ_II": float(d["dJ_II"][i]),
+            "M_sum": float(d["M_sum"][i]), "M_st": float(M_st[i]), "M_dyn": float(M_dyn[i]),
+            "moments": {k: float(v[i]) for k, v in M_parts.items()},
+            "points": {k: {"v_q": float(v[i]), "v": float(v[i] * w)} for k, v in vq.items()},
+            "links": {k: {"omega_q": float(v[i]), "omega": float(v[i] * w)} for k, v in wq.items()},
+        })
+
+    scalars = {"crank_length": float(spec.crank_length) if spec.crank_length else float("nan"),
+               "kinematics": "tabulated", "tabulated_interpolation": kind_J,
+               "tabulated_positions_deg": [float(p) for p in spec.positions_deg],
+               **d["scalars"]}
+    positions = [(f"{k + 1} ({p:g}°)", math.radians(p)) for k, p in enumerate(spec.positions_deg)]
+    time_domain = None
+    if transients:
+        time_domain = _transients(case, phi, d["J_I"] + d["J_II"], d["dJ_II"], d["M_sum"],
+                                  d["M_known"], omega, scalars["driving_moment"])
+        scalars["time_domain"] = {k: v for k, v in time_domain.items() if k != "histories"}
+    return Results(
+        title=case.title, source=case.source, phi=phi, kinematics=None, columns=cols,
+        scalars=scalars, at=at_list, position_angles=positions, J_parts=J_parts,
+        dJ_parts=dJ_parts, M_parts=M_parts, cylinders=[], links_drawn=[], warnings=warnings,
+        time_domain=time_domain,
+    )
