@@ -777,6 +777,8 @@ def figures(results, lang: str = "en"):
         ("acceleration_analogues.png", lambda: figure_acceleration_analogues(results, lang)),
         ("J_II.png", lambda: figure_J_II(results, lang)),
     ]
+    if results.kinematics is None:   # tabulated kinematics (issue 5): no positions to draw
+        out = out[-1:]
     for c in results.cylinders:
         out.append((f"indicator_{_safe(c.name)}.png", lambda c=c: figure_indicator(results, c, lang)))
     if results.cylinders or any(k.startswith("F_") for k in results.columns):
@@ -786,8 +788,9 @@ def figures(results, lang: str = "en"):
         ("works.png", lambda: figure_works(results, lang)),
         ("omega.png", lambda: figure_omega(results, lang)),
         ("epsilon.png", lambda: figure_epsilon(results, lang)),
-        ("scheme.png", lambda: figure_scheme(results, lang)),
     ]
+    if results.kinematics is not None:
+        out.append(("scheme.png", lambda: figure_scheme(results, lang)))
     return out
 
 
