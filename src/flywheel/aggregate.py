@@ -332,13 +332,16 @@ def steady_state(ch: Chain, drive: Drive, modes: Modes | None = None) -> Steady:
     F = np.zeros(ch.n, dtype=complex)
     F[-1] = -drive.amplitude
     modes = modes or natural_frequencies(ch)
-    if np.linalg.cond(Z) > 1e12:
+    if drive.amplitude == 0:
+        X = np.zeros(ch.n, dtype=complex)
+    elif np.linalg.cond(Z) > 1e12:
         near = modes.elastic[np.argmin(np.abs(modes.elastic - w))] if len(modes.elastic) else 0.0
         raise InputError(
             f"the forcing frequency {w:.6g} rad/s ({w / (2 * math.pi):.6g} Hz) equals the natural "
             f"frequency {near:.6g} rad/s and nothing damps it: the steady amplitude is unbounded "
             f"(give a coupling damping, a linear motor characteristic, or change the speed)")
-    X = np.linalg.solve(Z, F)
+    else:
+        X = np.linalg.solve(Z, F)
     twist_mean = -drive.M0 / ch.c
     theta = np.concatenate([[0.0], np.cumsum(twist_mean)])
     twist_amp = np.abs(np.diff(X))

@@ -110,6 +110,8 @@ def run(
 
 from flywheel.cli_task2 import task2_command  # noqa: E402
 app.command("task2")(task2_command)
+from flywheel.cli_aggregate import aggregate_command  # noqa: E402
+app.command("aggregate")(aggregate_command)
 
 
 def main() -> None:

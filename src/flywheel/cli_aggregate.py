@@ -38,7 +38,10 @@ def aggregate_command(
         ch, drive = to_model(c, str(case))
         if plot is not None and drive is None:
             raise InputError("--plot needs a [motor]: a chain without one has no motion in time")
-        result = analyze(ch, drive, t_end=t_end)
+        try:
+            result = analyze(ch, drive, t_end=t_end)
+        except InputError as exc:
+            raise InputError(f"{case}: {exc}") from None
         if plot is not None:
             from flywheel.render.aggregate import plot as draw
 

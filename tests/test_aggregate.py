@@ -1,0 +1,370 @@
+"""`flywheel aggregate`: the two-mass aggregate of seed 003 (Ефанов, ch. 9, eqs. 9.20–9.25), rotor
+chains with gears, the steady forced vibration, start-up, the textbook problem and the CLI."""
+import json
+import math
+from pathlib import Path
+
+import numpy as np
+import pytest
+from typer.testing import CliRunner
+
+from flywheel import aggregate as ag
+from flywheel.aggregate_case import load_aggregate_case, parse_aggregate_case, to_model
+from flywheel.errors import CaseFileError, InputError
+
+CASES = Path(__file__).resolve().parent.parent / "cases"
+KEYS = {"natural_frequencies_hz", "twist_amplitude", "elastic_moment_amplitude", "delta_motor",
+        "delta_machine"}
+
+
+# -- coefficients and natural frequencies --------------------------------------------------------
+
+@pytest.mark.parametrize("J1, J2, c", [(0.1, 0.787, 3000.0), (2.0, 5.0, 1.0e5), (1e-3, 40.0, 7.5)])
+def test_two_mass_natural_frequency(J1, J2, c):
+    modes = ag.natural_frequencies(ag.chain([J1, J2], [c]))
+    assert modes.omega[0] == 0.0                                  # the rigid-body mode
+    assert modes.elastic[0] == pytest.approx(math.sqrt(c * (J1 + J2) / (J1 * J2)), rel=1e-12)
+    assert ag.two_mass_frequency(J1, J2, c) == pytest.approx(modes.elastic[0], rel=1e-12)
+
+
+def test_coefficients_of_the_seed():
+    # (9.25): T = ½[J_Д q̇1² + J_пр.I (q̇1 + q̇2)²] -> a11 = J_Д + J_пр.I, a12 = a21 = a22 = J_пр.I;
+    # Π = ½ c q2² -> c22 = c, the rest 0
+    a, c = ag.coefficients(ag.chain([0.4, 2.5], [800.0]))
+    assert a.tolist() == [[2.9, 2.5], [2.5, 2.5]]
+    assert c.tolist() == [[0.0, 0.0], [0.0, 800.0]]
+
+
+def test_coefficients_give_the_same_frequencies_in_q():
+    from scipy.linalg import eigh
+
+    ch = ag.chain([1.0, 2.0, 0.5, 3.0], [100.0, 250.0, 80.0])
+    a, c = ag.coefficients(ch)
+    lam = eigh(c, a, eigvals_only=True)
+    assert np.sqrt(np.clip(lam, 0, None)) == pytest.approx(ag.natural_frequencies(ch).omega,
+                                                             rel=1e-10, abs=1e-6)
+
+
+def test_flywheel_reduction_9_21_to_9_23():
+    J_III, J_M, i21, i31 = 0.7, 4.0, 0.6, 0.25
+    assert ag.reduced_inertia_I(J_III, i31, J_M, "III") == pytest.approx(J_M * i31**2 + J_III * i31**2)
+    assert ag.reduced_inertia_I(J_III, i31, J_M, "II", i21) == pytest.approx(J_M * i21**2 + J_III * i31**2)
+    assert ag.reduced_inertia_I(J_III, i31, J_M, "I") == pytest.approx(J_M + J_III * i31**2)
+    # J_пр.III = J_пр.0 + ΣJ̃_i/12 over the 12 positions
+    assert ag.mean_reduced_inertia(0.5, [0.12] * 6 + [0.0] * 6) == pytest.approx(0.56)
+
+
+def test_three_rotor_chain_against_its_matrices():
+    ch = ag.chain([0.8, 2.0, 0.3], [1.2e4, 3.0e4])
+    M, K = ag.mass_matrix(ch), ag.stiffness_matrix(ch)
+    ref = np.sort(np.sqrt(np.clip(np.linalg.eigvals(np.linalg.solve(M, K)).real, 0, None)))
+    got = ag.natural_frequencies(ch).omega
+    assert got == pytest.approx(ref, rel=1e-10, abs=1e-6)
+    # the closed form of the free three-rotor system: ω⁴ − ω²·[c1(1/J1 + 1/J2) + c2(1/J2 + 1/J3)]
+    # + c1·c2·(J1 + J2 + J3)/(J1·J2·J3) = 0
+    J1, J2, J3, c1, c2 = 0.8, 2.0, 0.3, 1.2e4, 3.0e4
+    b = c1 * (1 / J1 + 1 / J2) + c2 * (1 / J2 + 1 / J3)
+    p = c1 * c2 * (J1 + J2 + J3) / (J1 * J2 * J3)
+    roots = sorted([(b - math.sqrt(b * b - 4 * p)) / 2, (b + math.sqrt(b * b - 4 * p)) / 2])
+    assert got[1:] ** 2 == pytest.approx(roots, rel=1e-10)
+
+
+def test_mode_shapes_are_m_orthogonal():
+    ch = ag.chain([0.8, 2.0, 0.3, 1.1], [1.2e4, 3.0e4, 5e3])
+    X = ag.natural_frequencies(ch).shapes
+    G = X.T @ ag.mass_matrix(ch) @ X
+    assert np.abs(G - np.diag(np.diag(G))).max() < 1e-10 * np.abs(G).max()
+
+
+# -- the case format: shafts, gears, segments -----------------------------------------------------
+
+def _chain_case(rotors, shafts, **extra):
+    data = {"rotors": [{"J": j} for j in rotors], "shafts": shafts, **extra}
+    return to_model(parse_aggregate_case(data))
+
+
+def test_shaft_stiffness_and_stepped_shaft():
+    c = ag.shaft_stiffness(80e9, 0.05, 0.8)
+    assert c == pytest.approx(80e9 * math.pi * 0.05**4 / 32 / 0.8)
+    ch, _ = _chain_case([1.0, 2.0], [{"G": 80e9, "segments": [{"d": 0.05, "L": 0.8},
+                                                              {"d": 0.08, "L": 0.3},
+                                                              {"c": 2.0e5}]}])
+    expected = 1 / (1 / c + 1 / ag.shaft_stiffness(80e9, 0.08, 0.3) + 1 / 2.0e5)
+    assert ch.c[0] == pytest.approx(expected, rel=1e-12)
+
+
+def test_geared_branch_reduced_by_the_square_of_the_ratio():
+    # motor J1 — shaft c1 (motor speed) — gears, pump turns at i = 1/3 — shaft c2 — pump J2:
+    # reduced to the motor's speed J2·i², c2·i², in series with c1 (Khurmi & Gupta ch. 24,
+    # "torsionally equivalent shaft" of a geared system)
+    J1, J2, c1, c2, i = 400.0, 1500.0, 3.5e5, 1.4e6, 1 / 3
+    ch, _ = _chain_case([J1, J2], [{"i": i, "segments": [{"c": c1}, {"c": c2, "side": "out"}]}])
+    c_eq = 1 / (1 / c1 + 1 / (c2 * i * i))
+    assert ch.J[1] == pytest.approx(J2 * i * i)
+    assert ch.ratio.tolist() == pytest.approx([1.0, i])
+    assert ag.natural_frequencies(ch).elastic[0] == pytest.approx(
+        ag.two_mass_frequency(J1, J2 * i * i, c_eq), rel=1e-12)
+
+
+def test_gear_between_three_rotors():
+    # the ratio of the first connection also reduces the second shaft and the third rotor
+    ch, _ = _chain_case([1.0, 2.0, 3.0], [{"c": 100.0, "i": 2.0}, {"c": 50.0}])
+    assert ch.J.tolist() == pytest.approx([1.0, 8.0, 12.0])
+    assert ch.c.tolist() == pytest.approx([100.0, 200.0])
+
+
+# -- the textbook problem -------------------------------------------------------------------------
+
+def test_khurmi_three_rotor_oil_engine_and_pump():
+    # R.S. Khurmi & J.K. Gupta, Theory of Machines, ch. 24 "Torsional Vibrations": three-rotor
+    # system, I_A = 0.15, I_B = 0.3, I_C = 0.09 kg·m², 70 mm shaft, A–B 1.5 m, B–C 1 m,
+    # C = 84 kN/mm². Book: two-node frequency 277 Hz, nodes 0.4356 m from A and 0.726 m from C.
+    case = load_aggregate_case(CASES / "aggregate_khurmi_three_rotor.toml")
+    ch, drive = to_model(case)
+    assert drive is None
+    f = ag.natural_frequencies(ch).elastic / (2 * math.pi)
+    assert round(f[1]) == 277                       # book lists 277 Hz
+    assert f[1] == pytest.approx(277.034007, rel=1e-8)
+    assert f[0] == pytest.approx(170.687713, rel=1e-8)   # the single-node mode (not cited)
+    # the node of a disc at the end of the shaft: a cantilever of length l with the same frequency
+    GIp = 84e9 * math.pi * 0.07**4 / 32
+    w2 = (2 * math.pi * f[1]) ** 2
+    assert round(GIp / (w2 * 0.15), 4) == 0.4357     # book (node method, rounded): 0.4356 m
+    assert round(GIp / (w2 * 0.09), 3) == 0.726      # book: 0.726 m
+
+
+# -- steady forced vibration ----------------------------------------------------------------------
+
+def _constant_drive(M0=0.0, amplitude=10.0, ratio=1.0, omega=30.0):
+    return ag.Drive("constant", M0, amplitude, ratio, omega_nominal=omega)
+
+
+def test_undamped_forced_amplitude_closed_form():
+    J1, J2, c, A = 0.5, 2.0, 1.0e3, 40.0
+    wn = math.sqrt(c * (J1 + J2) / (J1 * J2))
+    for w in (0.3 * wn, 0.8 * wn, 1.7 * wn):         # away from resonance, both sides
+        ch = ag.chain([J1, J2], [c])
+        st = ag.steady_state(ch, _constant_drive(M0=15.0, amplitude=A, omega=w))
+        expected = A / (J2 * abs(w * w - wn * wn))   # derived by Cramer's rule in the docstring
+        assert st.twist_amplitude[0] == pytest.approx(expected, rel=1e-12)
+        assert ag.forced_twist_two_mass(J1, J2, c, A, w) == pytest.approx(expected, rel=1e-15)
+        assert st.moment_amplitude[0] == pytest.approx(c * expected, rel=1e-12)
+        assert st.twist_mean[0] == pytest.approx(-15.0 / c)
+        assert st.moment_mean[0] == pytest.approx(15.0)
+
+
+def test_solve_ivp_stays_on_the_closed_form_orbit():
+    J1, J2, c = 0.5, 2.0, 1.0e3
+    ch = ag.chain([J1, J2], [c])
+    drive = _constant_drive(M0=15.0, amplitude=40.0, omega=25.0)
+    st = ag.steady_state(ch, drive)
+    h = ag.steady_run(ch, drive, st, periods=3, per_period=400)
+    q = h.phi[1] - h.phi[0]
+    assert (q.max() - q.min()) / 2 == pytest.approx(st.twist_amplitude[0], rel=1e-4)
+    assert q.mean() == pytest.approx(st.twist_mean[0], abs=2e-3 * st.twist_amplitude[0])
+
+
+def test_damped_linear_motor_steady_state_matches_solve_ivp():
+    ch = ag.chain([0.3, 1.5], [2.0e3], [3.0])
+    drive = ag.Drive("linear", 40.0, 25.0, 0.5, M_start=400.0, omega_x=157.0)
+    st = ag.steady_state(ch, drive)
+    assert st.omega_mean == pytest.approx(157.0 * (1 - 40.0 / 400.0))
+    h = ag.steady_run(ch, drive, st, periods=3, per_period=400)
+    for k in (0, 1):
+        amp = (h.omega[k].max() - h.omega[k].min()) / 2
+        assert amp == pytest.approx(st.omega_amplitude[k], rel=1e-4)
+
+
+def test_exact_resonance_without_damping_is_an_error():
+    J1, J2, c = 1.0, 1.0, 2.0e3
+    wn = math.sqrt(c * (J1 + J2) / (J1 * J2))
+    with pytest.raises(InputError, match="unbounded"):
+        ag.steady_state(ag.chain([J1, J2], [c]), _constant_drive(omega=wn))
+    # with damping the amplitude at resonance is finite: M̃/(ω·b) for equal masses, since the
+    # relative coordinate obeys (J/2)·q̈ + b·q̇ + c·q = −M̃/2·sin ωt
+    st = ag.steady_state(ag.chain([J1, J2], [c], [0.5]), _constant_drive(amplitude=10.0, omega=wn))
+    assert st.twist_amplitude[0] == pytest.approx(10.0 / 2 / (wn * 0.5), rel=1e-9)
+
+
+def test_energy_is_conserved_without_load_and_damping():
+    ch = ag.chain([0.4, 1.0, 0.7], [900.0, 1500.0])
+    h = ag.simulate(ch, None, np.array([0.0, 0.01, -0.02]), np.array([50.0, 48.0, 53.0]),
+                    t_end=1.0, n_samples=501)
+    E = ag.energy(ch, h)
+    assert np.abs(E - E[0]).max() < 1e-8 * E[0]
+    # and the angular momentum too (no external moments)
+    L = (ch.J[:, None] * h.omega).sum(axis=0)
+    assert np.abs(L - L[0]).max() < 1e-9 * abs(L[0])
+
+
+def test_motor_from_rated_point_and_stall():
+    assert ag.starting_torque_from_rated(97.78, 0.02) == pytest.approx(4889.0)
+    d = ag.Drive("linear", 500.0, 0.0, 1.0, M_start=400.0, omega_x=157.0)
+    with pytest.raises(InputError, match="cannot drive"):
+        d.steady_speed()
+
+
+def test_start_up_from_rest_reaches_the_steady_speed():
+    ch = ag.chain([0.3, 1.5], [2.0e3], [3.0])
+    drive = ag.Drive("linear", 40.0, 0.0, 0.5, M_start=400.0, omega_x=157.0)
+    tau = 1.8 * 157.0 / 400.0          # ΣJ·ω_x/M_п, the mechanical time constant
+    h = ag.start_up(ch, drive, t_end=10 * tau, n_samples=1001)
+    assert h.omega[:, 0].tolist() == [0.0, 0.0]
+    # without forcing the mean motion follows ω_s·(1 − e^(−t/τ)); the twist's vibration decays
+    mean = (ch.J[:, None] * h.omega).sum(axis=0) / ch.J.sum()
+    late = h.t > 3 * tau
+    ref = 157.0 * 0.9 * (1 - np.exp(-h.t[late] / tau))
+    assert np.abs(mean[late] - ref).max() < 1e-3 * 157.0
+    assert h.omega[0, -1] == pytest.approx(157.0 * 0.9, rel=1e-4)
+
+
+# -- the seed's example case ----------------------------------------------------------------------
+
+def test_example_case():
+    case = load_aggregate_case(CASES / "aggregate.toml")
+    ch, drive = to_model(case)
+    # J_пр.I = (J_M + J_пр.III)·i31² (9.21); M_C.I = M_0·i31 (9.20)
+    assert ch.J[1] == pytest.approx((3.975 + 0.7074) * 0.41**2)
+    assert drive.M0 == pytest.approx(196.94 * 0.41)
+    assert drive.M_start == pytest.approx(97.78 / 0.02333)
+    r = ag.analyze(ch, drive, t_end=0.3)
+    assert r.steady.twist_amplitude[0] == pytest.approx(r.check_twist_amplitude, rel=1e-3)
+    assert r.steady.delta[0] == pytest.approx(r.check_delta[0], rel=1e-3)
+    assert r.steady.delta[1] == pytest.approx(r.check_delta[1], rel=1e-3)
+    assert all(x.margin > 0.5 for x in r.resonance)
+
+
+@pytest.mark.parametrize("patch, where", [
+    ({"motor": {"J": 0.0}}, "motor.J: must be positive"),
+    ({"coupling": {"c": -5.0}}, "coupling.c: must be positive"),
+    ({"machine": {"i31": 0.0}}, "machine.i31: must be positive"),
+    ({"machine": {"flywheel": {"J": 1.0, "shaft": "II"}}}, "machine.i21: missing"),
+    ({"machine": {"M0": 1e6}}, "motor.starting_torque: the motor cannot drive"),
+    ({"coupling": {"cc": 1.0}}, "coupling.cc: unknown key; did you mean 'c'?"),
+    ({"motor": {"characteristic": "constant"}}, "motor.synchronous_rpm: only for"),
+])
+def test_case_errors_name_the_field(patch, where):
+    base = {"motor": {"J": 0.1, "synchronous_rpm": 1500.0, "starting_torque": 500.0},
+            "coupling": {"c": 3000.0}, "machine": {"J_III": 0.7, "i31": 0.4, "M0": 100.0}}
+    for k, v in patch.items():
+        base[k] = {**base[k], **v}
+    with pytest.raises(CaseFileError) as e:
+        parse_aggregate_case(base, "x.toml")
+    assert str(e.value).startswith("x.toml: ")
+    assert where in str(e.value)
+    assert "\n" not in str(e.value)
+
+
+# -- CLI ------------------------------------------------------------------------------------------
+
+runner = CliRunner()
+
+
+def cli(*args):
+    from flywheel.cli import app
+
+    return runner.invoke(app, ["aggregate", *map(str, args)])
+
+
+def err_text(res):
+    try:
+        return res.stderr
+    except (ValueError, AttributeError):
+        return res.output
+
+
+def test_cli_json_contract():
+    res = cli(CASES / "aggregate.toml", "--json", "--t-end", "0.2")
+    assert res.exit_code == 0, res.output
+    d = json.loads(res.stdout)
+    assert KEYS <= set(d)
+    assert d["natural_frequencies_hz"] == sorted(d["natural_frequencies_hz"])
+    assert len(d["natural_frequencies_hz"]) == 1 and d["natural_frequencies_hz"][0] > 0
+    assert d["elastic_moment_amplitude"] == pytest.approx(3000.0 * d["twist_amplitude"])
+    assert 0 < d["delta_motor"] < 1 and 0 < d["delta_machine"] < 1
+
+
+def test_cli_textbook_chain_json():
+    res = cli(CASES / "aggregate_khurmi_three_rotor.toml", "--json")
+    assert res.exit_code == 0, res.output
+    d = json.loads(res.stdout)
+    assert [round(f) for f in d["natural_frequencies_hz"]] == [171, 277]
+    assert d["twist_amplitude"] is None and d["delta_machine"] is None
+
+
+def test_cli_summary_and_plot(tmp_path):
+    png = tmp_path / "agg.png"
+    res = cli(CASES / "aggregate.toml", "--plot", png, "--t-end", "0.2")
+    assert res.exit_code == 0, res.output
+    assert "a_ij" in res.stdout and "Resonance margins" in res.stdout
+    assert png.stat().st_size > 10000
+    assert b"Software" not in png.read_bytes()[:4000]
+
+
+def _write(tmp_path, text):
+    p = tmp_path / "case.toml"
+    p.write_text(text, encoding="utf-8")
+    return p
+
+
+TWO_MASS = """
+[motor]
+J = {J1}
+characteristic = "constant"
+speed_rpm = 300.0
+[coupling]
+c = {c}
+[machine]
+J_III = {J2}
+i31 = {i31}
+M0 = 10.0
+M_amplitude = 5.0
+"""
+
+
+@pytest.mark.parametrize("values, message", [
+    (dict(J1=0.0, J2=1.0, c=100.0, i31=1.0), "motor.J: must be positive"),
+    (dict(J1=1.0, J2=-1.0, c=100.0, i31=1.0), "machine.J_III: must be positive"),
+    (dict(J1=1.0, J2=1.0, c=0.0, i31=1.0), "coupling.c: must be positive"),
+    (dict(J1=1.0, J2=1.0, c=100.0, i31=0.0), "machine.i31: must be positive"),
+    # ω_III = 300 rev/min = 10π rad/s and √(c·(J1 + J2)/(J1·J2)) = √(2c): c = (10π)²/2
+    (dict(J1=1.0, J2=1.0, c=repr((10 * math.pi) ** 2 / 2), i31=1.0), "unbounded"),
+])
+def test_cli_bad_input_one_line(tmp_path, values, message):
+    res = cli(_write(tmp_path, TWO_MASS.format(**values)), "--json")
+    assert res.exit_code == 2
+    err = err_text(res)
+    assert err.startswith("error: ") and message in err
+    assert err.count("\n") == 1 and "Traceback" not in err
+
+
+def test_cli_other_errors(tmp_path):
+    res = cli(tmp_path / "nope.toml")
+    assert res.exit_code == 2 and "no such file" in err_text(res)
+    res = cli(CASES / "aggregate_khurmi_three_rotor.toml", "--plot", tmp_path / "x.png")
+    assert res.exit_code == 2 and "--plot needs a [motor]" in err_text(res)
+    res = cli(CASES / "aggregate.toml", "--t-end", "-1")
+    assert res.exit_code == 2 and "--t-end" in err_text(res)
+    gear0 = '[[rotors]]\nJ = 1.0\n[[rotors]]\nJ = 2.0\n[[shafts]]\nc = 10.0\ni = 0.0\n'
+    res = cli(_write(tmp_path, gear0))
+    assert res.exit_code == 2 and "shafts[0].i: must be positive" in err_text(res)
+
+
+def test_driven_chain_load_reduced_to_the_motor_shaft():
+    # motor – shaft – gear 1/2 – shaft – pump – shaft – fan; load on the fan's own shaft
+    ch, drive = _chain_case(
+        [0.2, 1.0, 0.6], [{"c": 4.0e3, "i": 0.5}, {"c": 9.0e3, "damping": 2.0}],
+        motor={"synchronous_rpm": 1000.0, "starting_torque": 300.0},
+        load={"M0": 80.0, "M_amplitude": 30.0, "order": 2.0})
+    assert drive.M0 == pytest.approx(40.0) and drive.amplitude == pytest.approx(15.0)
+    assert drive.forcing_ratio == pytest.approx(1.0)      # order 2 × u = 0.5
+    assert ch.damping.tolist() == pytest.approx([0.0, 0.5])
+    r = ag.analyze(ch, drive, t_end=0.2)
+    assert len(r.resonance) == 2
+    assert r.steady.twist_amplitude[0] == pytest.approx(r.check_twist_amplitude, rel=1e-3)
+    # no harmonic part: no vibration, no resonance check
+    _, quiet = _chain_case([0.2, 1.0], [{"c": 4.0e3}], motor={"synchronous_rpm": 1000.0,
+                                                              "starting_torque": 300.0},
+                           load={"M0": 80.0})
+    st = ag.steady_state(ag.chain([0.2, 1.0], [4.0e3]), quiet)
+    assert st.twist_amplitude.tolist() == [0.0] and st.moment_mean.tolist() == [80.0]
