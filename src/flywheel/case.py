@@ -185,14 +185,14 @@ class CylinderSpec(_Model):
     def _tables(self):
         s = self.s
         if len(s) < 2:
-            raise ValueError("s needs at least 2 values")
+            raise _RefError(("s",), "needs at least 2 values")
         if any(b <= a for a, b in zip(s, s[1:])):
-            raise ValueError("s must be strictly increasing")
+            raise _RefError(("s",), "must be strictly increasing")
         if abs(s[0]) > 1e-12 or abs(s[-1] - 1) > 1e-12:
-            raise ValueError(f"s must span [0, 1] (got {s[0]} … {s[-1]})")
+            raise _RefError(("s",), f"must span [0, 1] (got {s[0]} … {s[-1]})")
         for key in ("towards_head", "away_from_head"):
             if len(getattr(self, key)) != len(s):
-                raise ValueError(f"{key} needs {len(s)} values, one per s (got {len(getattr(self, key))})")
+                raise _RefError((key,), f"needs {len(s)} values, one per s (got {len(getattr(self, key))})")
         return self
 
 
@@ -415,10 +415,14 @@ def _check_references(case: Case) -> None:
     for i, c in enumerate(case.couples):
         if c.link not in links:
             raise _RefError(("couples", i, "link"), f"no link named {c.link!r}")
-    names = [c.name for c in case.cylinders] + [f.name for f in case.forces] + [c.name for c in case.couples]
-    for n in names:
-        if names.count(n) > 1:
-            raise _RefError(("cylinders",), f"load name {n!r} is used twice")
+    names = ([(("cylinders", i, "name"), c.name) for i, c in enumerate(case.cylinders)]
+             + [(("forces", i, "name"), f.name) for i, f in enumerate(case.forces)]
+             + [(("couples", i, "name"), c.name) for i, c in enumerate(case.couples)])
+    seen: set[str] = set()
+    for loc, n in names:
+        if n in seen:
+            raise _RefError(loc, f"load name {n!r} is used twice")
+        seen.add(n)
 
 
 # -- errors ---------------------------------------------------------------------------------
@@ -502,7 +506,9 @@ def parse_case(data: dict, source: str = "<case>") -> Case:
             ctx = e.get("ctx", {}).get("error")
             if isinstance(ctx, ValueError) and isinstance(getattr(ctx, "loc", None), tuple):
                 raise CaseFileError(f"{source}: {_loc_str(e['loc'] + ctx.loc)}: {ctx}") from None
-        raise CaseFileError(f"{source}: {_describe(errs[0])}") from None
+        # a misspelled key also leaves its field missing: the unknown key is the cause to report
+        first = next((e for e in errs if e["type"] == "extra_forbidden"), errs[0])
+        raise CaseFileError(f"{source}: {_describe(first)}") from None
 
 
 def load_case(path) -> Case:
