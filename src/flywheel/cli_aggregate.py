@@ -18,7 +18,7 @@ def aggregate_command(
                                         "moment against time (start-up, steady state) to this "
                                         "image file (.png, .svg, .pdf).", dir_okay=False),
     t_end: Optional[float] = typer.Option(None, "--t-end", help="Duration of the start-up "
-                                          "integration [s] (default: from the motor's time "
+                                          "integration, seconds (default: from the motor's time "
                                           "constant)."),
 ) -> None:
     """Two-mass machine aggregate (seed 003) or a chain of rotors: coefficients a_ij, c_ij,
