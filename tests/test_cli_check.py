@@ -1,0 +1,141 @@
+"""`flywheel check` and `flywheel schema` through the CLI (typer's CliRunner), and
+`python -m flywheel` in a subprocess.
+
+Bad input: exit 2, one `error:` line on stderr naming file and field, no traceback.
+"""
+from __future__ import annotations
+
+import json
+import re
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+from typer.testing import CliRunner
+
+from flywheel.cli import app
+
+CASES = Path(__file__).resolve().parents[1] / "cases"
+BASE = (CASES / "compressor.toml").read_text(encoding="utf-8")
+runner = CliRunner()
+
+
+def invoke(*args):
+    # a fixed width, so that rich lays the tables out alike on every terminal and in CI
+    return runner.invoke(app, [str(a) for a in args], env={"COLUMNS": "160"})
+
+
+def rows(text: str) -> list[list[str]]:
+    """Cells of the rich table rows in ``text`` (split on the box-drawing bar)."""
+    return [[c.strip() for c in line.rstrip().split("│")[1:-1]] for line in text.splitlines()
+            if line.startswith("│")]
+
+
+def test_check_compressor_prints_the_case_and_its_dead_centres():
+    res = invoke("check", CASES / "compressor.toml")
+    assert res.exit_code == 0, res.output
+    out = res.stdout
+    assert "Two-stage V-type air compressor" in out
+    assert "case is valid" in out
+    for title in ("Mechanism", "Links", "Cylinders", "Kinematics at the dead centres"):
+        assert title in out
+    assert res.stderr == ""
+    dead = {(r[0], r[1], r[2], r[4]): r for r in rows(out) if len(r) == 7 and r[1] in ("outer", "inner")}
+    # piston 3 (B, vertical) at its top at φ = 0 and bottom at 180°; piston 5 (C) at 90° and 270°
+    assert set(dead) == {
+        ("3", "outer", "0.0000", "A"), ("3", "outer", "0.0000", "B"),
+        ("3", "inner", "180.0000", "A"), ("3", "inner", "180.0000", "B"),
+        ("5", "outer", "90.0000", "A"), ("5", "outer", "90.0000", "C"),
+        ("5", "inner", "270.0000", "A"), ("5", "inner", "270.0000", "C"),
+    }
+    # x = l2 ± l1 = 0.5 / 0.3 m; the piston's |v_q| = 0 there, |a_q| = l1·(1 ± l1/l2) = 0.125 / 0.075
+    assert dead[("3", "outer", "0.0000", "B")][3:] == ["0.5", "B", "0", "0.125"]
+    assert dead[("3", "inner", "180.0000", "B")][3:] == ["0.3", "B", "0", "0.075"]
+    assert dead[("5", "outer", "90.0000", "C")][3:] == ["0.5", "C", "0", "0.125"]
+    strokes = [r for r in rows(out) if len(r) == 7 and r[1] == "stroke"]
+    assert [(r[0], r[3]) for r in strokes] == [("3", "0.2"), ("5", "0.2")]   # 2·l1
+
+
+@pytest.mark.parametrize("name, expected", [
+    ("fourbar.toml", "Crank-rocker four-bar"),
+    ("slotted_link.toml", "Shaper: slotted-link mechanism"),
+])
+def test_check_example_cases(name, expected):
+    res = invoke("check", CASES / name)
+    assert res.exit_code == 0, res.output
+    assert expected in res.stdout and "case is valid" in res.stdout
+
+
+def one_error_line(res, *fragments: str) -> str:
+    assert res.exit_code == 2, res.output
+    assert res.stdout == ""
+    err = res.stderr
+    assert err.count("\n") == 1 and err.startswith("error: "), err
+    assert "Traceback" not in err and "Traceback" not in res.stdout
+    assert res.exception is None or isinstance(res.exception, SystemExit)
+    for f in fragments:
+        assert f in err, err
+    return err
+
+
+@pytest.mark.parametrize("old, new, fragments", [
+    ("speed_rps = 10.0", "speed_rps = = 10.0", ["TOML syntax error", "line 10, column 13"]),
+    ("speed_rps = 10.0", "speed_rsp = 10.0", ["machine.speed_rsp: unknown key; did you mean 'speed_rps'?"]),
+    ("bore = 0.12                      # d2 [m]", "", ["cylinders[0].bore: missing required field"]),
+    ("bore = 0.12 ", 'bore = "wide" ', ["cylinders[0].bore: input should be a valid number"]),
+    ("bore = 0.12 ", "bore = nan ", ["cylinders[0].bore: must be a finite number (got nan)"]),
+    ("[crank]\n", "[crank]\nlength = -0.1\n", ["crank.length: input should be greater than 0"]),
+    ('"3" = { mass = 0.6,', '"3" = { mass = -0.6,', ["links.3.mass: input should be greater than or equal to 0"]),
+    ('from = "A"\njoint = "B"', 'from = "C"\njoint = "B"', ["dyads[0].from: point 'C' is used before it is defined"]),
+    ('joint = "C"', 'joint = "B"', ["dyads[1].joint: point name 'B' is already defined"]),
+    ("delta     = 0.05", "delta     = 1.0", ["machine.delta: input should be less than 1"]),
+    ('piston = "3"', 'piston = "4"', ["cylinders[0].piston: '4' is not the slider of an RRP dyad"]),
+    ("rod_to_crank      = 4.0", "rod_to_crank      = 0.5",     # l2 = 0.05 m < l1: no assembly
+     ["dyad B (RRP, rod 2) cannot be assembled at crank angle φ = "]),
+], ids=["syntax", "unknown-key", "missing", "wrong-type", "nan", "negative-length", "negative-mass",
+        "used-before-defined", "duplicate-name", "delta", "piston", "cannot-assemble"])
+def test_check_bad_file_exits_2_with_one_line(tmp_path, old, new, fragments):
+    assert old in BASE
+    path = tmp_path / "bad.toml"
+    path.write_text(BASE.replace(old, new, 1), encoding="utf-8")
+    err = one_error_line(invoke("check", path), *fragments)
+    if "cannot be assembled" not in err:
+        assert err.startswith(f"error: {path}: ")
+
+
+def test_check_missing_file_exits_2(tmp_path):
+    one_error_line(invoke("check", tmp_path / "nope.toml"), "nope.toml: no such file")
+
+
+def test_check_without_argument_is_a_usage_error():
+    res = invoke("check")
+    assert res.exit_code == 2
+    assert "Traceback" not in res.output
+
+
+def test_schema_prints_json():
+    res = invoke("schema")
+    assert res.exit_code == 0, res.output
+    schema = json.loads(res.stdout)
+    assert schema["title"] == "flywheel case file"
+    assert {"machine", "crank", "dyads", "points", "links", "cylinders"} <= set(schema["properties"])
+    assert "RRPSpec" in schema["$defs"]
+
+
+def test_python_m_flywheel_help():
+    proc = subprocess.run([sys.executable, "-m", "flywheel", "--help"], capture_output=True,
+                          text=True, timeout=120, cwd=CASES.parent)
+    assert proc.returncode == 0, proc.stderr
+    for command in ("check", "schema", "run"):
+        assert re.search(rf"\b{command}\b", proc.stdout)
+
+
+def test_python_m_flywheel_check_bad_file(tmp_path):
+    path = tmp_path / "bad.toml"
+    path.write_text(BASE.replace("delta     = 0.05", "delta     = 0"), encoding="utf-8")
+    proc = subprocess.run([sys.executable, "-m", "flywheel", "check", str(path)],
+                          capture_output=True, text=True, timeout=120, cwd=CASES.parent)
+    assert proc.returncode == 2
+    assert proc.stderr == f"error: {path}: machine.delta: input should be greater than 0 (got 0)\n"
+    assert proc.stdout == ""
