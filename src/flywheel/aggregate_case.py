@@ -251,8 +251,8 @@ def build(case: AggregateCase):
     two_mass = [k for k in ("coupling", "machine") if getattr(case, k) is not None]
     chain_keys = [k for k in ("rotors", "shafts", "load") if getattr(case, k) is not None]
     if two_mass and chain_keys:
-        raise _Err(chain_keys[0], f"a case is either the two-mass aggregate ([coupling], "
-                                  f"[machine]) or a chain ([[rotors]], [[shafts]]), not both")
+        raise _Err(chain_keys[0], "a case is either the two-mass aggregate ([coupling], "
+                                  "[machine]) or a chain ([[rotors]], [[shafts]]), not both")
     if two_mass:
         for k in ("coupling", "machine"):
             if getattr(case, k) is None:

@@ -133,10 +133,10 @@ def analyze(case, n_points: int = DEFAULT_POINTS, at_deg: list[float] | None = N
         J, dJ = reduction.link_inertia(lk.mass, lk.J_S, v, a, lm.omega_q, lm.eps_q)
         J_parts[name], dJ_parts[name] = J, dJ
 
-    d = dynamics(phi, J_parts, dJ_parts, M_parts, case.machine, case.flywheel, warnings)
-    J_II, dJ_II, M_sum, M_known, omega, eps = (d[k] for k in ("J_II", "dJ_II", "M_sum", "M_known",
+    dyn = dynamics(phi, J_parts, dJ_parts, M_parts, case.machine, case.flywheel, warnings)
+    J_II, dJ_II, M_sum, M_known, omega, eps = (dyn[k] for k in ("J_II", "dJ_II", "M_sum", "M_known",
                                                              "omega", "epsilon"))
-    J_I, driving_moment = d["J_I"], d["scalars"]["driving_moment"]
+    J_I, driving_moment = dyn["J_I"], dyn["scalars"]["driving_moment"]
 
     # -- table columns -----------------------------------------------------------------------------------
     cols: dict[str, Column] = {"phi_deg": Column(np.degrees(phi), "deg", "crank angle φ", "угол φ")}
@@ -162,7 +162,7 @@ def analyze(case, n_points: int = DEFAULT_POINTS, at_deg: list[float] | None = N
         cols[f"eps_q_{name}"] = Column(lm.eps_q, "1/rad", f"ε_q of link {name}",
                                        f"аналог угл. ускорения {name}")
     cols.update(columns)
-    cols.update(d["columns"])
+    cols.update(dyn["columns"])
 
     # -- report angles -----------------------------------------------------------------------------------------
     at_list = []
@@ -195,7 +195,7 @@ def analyze(case, n_points: int = DEFAULT_POINTS, at_deg: list[float] | None = N
             "points": pts, "links": lks,
         })
 
-    scalars = {"crank_length": float(mech.crank.length), **d["scalars"]}
+    scalars = {"crank_length": float(mech.crank.length), **dyn["scalars"]}
     links_drawn = [(mech.crank.name, [mech.crank.pivot, mech.crank.tip])]
     for d in mech.dyads:
         if hasattr(d, "guide"):
