@@ -141,3 +141,14 @@ def test_python_dash_m(tmp_path):
                           "--json", "--no-plots", "--points", "360", "--out", str(tmp_path / "o")],
                          capture_output=True, text=True, check=True)
     assert json.loads(res.stdout)["results"]["omega_mean"] == pytest.approx(2 * math.pi * 10)
+
+
+def test_conservative_loads_need_no_balancing_moment():
+    """Gravity alone does no work over a cycle: the balancing moment is exactly 0, with a
+    warning, rather than a round-off sign deciding between 'driving' and an error."""
+    from flywheel.case import load_case
+
+    r = analyze(load_case(CASES / "fourbar.toml"), n_points=720)
+    assert r.scalars["balancing_moment"] == 0.0
+    assert any("no net work" in w for w in r.warnings)
+    assert r.scalars["delta_T_max"] > 0

@@ -243,7 +243,12 @@ def dynamics(phi: np.ndarray, J_parts: dict, dJ_parts: dict, M_parts: dict, mach
     M_known = sum(M_parts.values()) if M_parts else zero.copy()
     work_known = float(energy.cumulative_work(M_known, phi)[-1])
     M_const = energy.balancing_moment(M_known, phi)
-    if machine.balance == "driving" and not M_const > 0:
+    if abs(work_known) <= 1e-9 * float(energy.cumulative_work(np.abs(M_known), phi)[-1]):
+        # only conservative loads (gravity, say): nothing to balance, round-off aside
+        M_const, work_known = 0.0, 0.0
+        warnings.append("the loads do no net work over a cycle: the balancing moment is 0 "
+                        "(the flywheel only smooths the loads' periodic part)")
+    elif machine.balance == "driving" and not M_const > 0:
         raise InputError(
             f"the loads do {work_known:+.6g} J of work over a cycle: a constant driving moment "
             f"would have to be {M_const:.6g} N·m ≤ 0 (allowed: resistance must absorb work; "
