@@ -238,3 +238,35 @@ def test_json_schema_is_valid_json_with_the_tables():
     assert "mapping" in schema["properties"]["dyads"]["items"]["discriminator"]
     # units are in the descriptions
     assert "[m]" in defs["CylinderSpec"]["properties"]["bore"]["description"]
+
+
+# -- docs/case-format.md stays in step with the models ---------------------------------------
+
+DOC = Path(__file__).resolve().parents[1] / "docs" / "case-format.md"
+
+
+def test_every_field_is_documented():
+    from flywheel import case as models
+
+    text = DOC.read_text(encoding="utf-8")
+    tables = [models.Machine, models.Design, models.CrankSpec, models.GuideSpec, models.RRPSpec,
+              models.RRRSpec, models.RPRSpec, models.PointSpec, models.LinkSpec,
+              models.CylinderSpec, models.ForceSpec, models.CoupleSpec, models.FlywheelSpec,
+              models.MotorSpec, models.OutputSpec, models.Case]
+    missing = [f"{m.__name__}.{f.alias or n}" for m in tables for n, f in m.model_fields.items()
+               if f"`{f.alias or n}`" not in text and f"[{f.alias or n}]" not in text]
+    assert not missing, f"not in docs/case-format.md: {missing}"
+
+
+def test_annotated_example_loads_and_matches_its_closed_forms(tmp_path):
+    from flywheel.kinematics.deadcentres import dead_centres
+
+    example = re.findall(r"```toml\n(.*?)```", DOC.read_text(encoding="utf-8"), re.S)[-1]
+    path = tmp_path / "pump.toml"
+    path.write_text(example, encoding="utf-8")
+    case = load_case(path)
+    # the doc's numbers: outer at asin(e/(l + r)), inner at 180° + asin(e/(l − r)), the stroke
+    dcs = {d.kind: d for d in dead_centres(to_mechanism(case), "3")}
+    assert math.degrees(dcs["outer"].phi) == pytest.approx(2.29, abs=5e-3)
+    assert math.degrees(dcs["inner"].phi) == pytest.approx(183.82, abs=5e-3)
+    assert dcs["outer"].x - dcs["inner"].x == pytest.approx(0.10013, abs=5e-6)
