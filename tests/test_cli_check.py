@@ -139,3 +139,28 @@ def test_python_m_flywheel_check_bad_file(tmp_path):
     assert proc.returncode == 2
     assert proc.stderr == f"error: {path}: machine.delta: input should be greater than 0 (got 0)\n"
     assert proc.stdout == ""
+
+
+def test_check_a_slider_that_never_moves(tmp_path):
+    # a rod hung from a fixed point: valid, if useless; it used to end in a traceback
+    path = tmp_path / "still.toml"
+    path.write_text("""
+[machine]
+speed_rps = 1.0
+delta = 0.1
+[crank]
+length = 0.1
+[ground]
+G = [0.0, 0.1]
+[[dyads]]
+kind = "RRP"
+from = "G"
+joint = "B"
+rod = "2"
+rod_length = 0.4
+slider = "3"
+guide = { angle_deg = 0.0 }
+""", encoding="utf-8")
+    res = invoke("check", path)
+    assert res.exit_code == 0, res.output
+    assert "case is valid" in res.stdout

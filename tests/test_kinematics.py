@@ -225,6 +225,16 @@ def test_six_bar_with_two_moving_ends():
     assert assert_analogues_match(mech, SAMPLE, scale=0.1) == 2 * (10 + 7)
 
 
+def test_rpr_about_a_moving_pivot():
+    """A slotted link whose rocker turns about a moving joint (B of a four-bar), offset slide."""
+    base = four_bar()
+    mech = Mechanism(base.crank,
+                     base.dyads + (RPR("R", "P", "B", "6", "7", 0.02, 1),),
+                     base.points + (LinkPoint("Z", "6", "B", None, distance=0.3, angle=0.2),),
+                     base.ground)
+    assert assert_analogues_match(mech, SAMPLE, scale=0.1) == 2 * (9 + 5)
+
+
 def test_compressor_analogues_match_numerical_derivatives():
     mech = to_mechanism(load_case(CASES / "compressor.toml"))
     assert assert_analogues_match(mech, SAMPLE, scale=0.1) > 0
@@ -504,6 +514,23 @@ def test_case_file_with_short_rod_fails_on_assembly(tmp_path):
     with pytest.raises(AssemblyError, match=r"dyad B \(RRP, rod 2\).*φ = \d+\.\d\d°") as exc:
         solve(mech, np.linspace(0, 2 * np.pi, 361))
     assert "\n" not in str(exc.value)
+
+
+def test_a_single_angle_is_a_grid_of_one():
+    k = solve(slider_crank(), 0.0)
+    assert k.points["B"].r.shape == (1, 2)
+    assert k.points["B"].r[0, 0] == pytest.approx(0.5, abs=1e-15)
+    with pytest.raises(ValueError, match="1-D grid"):
+        solve(slider_crank(), np.zeros((2, 2)))
+
+
+def test_a_slider_that_never_moves_has_no_dead_centres():
+    # the rod hangs from a fixed point, so the slider stands still: no dead centres (this used
+    # to end `flywheel check` in a traceback, argmax of an empty sequence)
+    mech = Mechanism(Crank("1", "O", (0.0, 0.0), "A", 0.1, 0.0, 1),
+                     (RRP("B", "G", "B", "2", 0.4, "3", Guide((0.0, 0.0), 0.0)),), (),
+                     {"G": (0.0, 0.1)})
+    assert dead_centres(mech, "3") == []
 
 
 # -- (f) loop closure ---------------------------------------------------------------------------

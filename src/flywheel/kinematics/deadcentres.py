@@ -54,6 +54,8 @@ def dead_centres(mech: Mechanism, slider: str, n_grid: int = 721) -> list[DeadCe
     k = solve(mech, phi)
     v = k.points[d.joint].v_q @ u
     idx = np.nonzero(np.sign(v[:-1]) != np.sign(v[1:]))[0]
+    if idx.size == 0:   # a slider that never moves (driven from a fixed point) has none
+        return []
     guesses = phi[idx] - v[idx] * (phi[idx + 1] - phi[idx]) / (v[idx + 1] - v[idx])
     roots = np.array(guesses, float)
     for _ in range(30):

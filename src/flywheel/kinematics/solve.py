@@ -240,7 +240,9 @@ def solve(mech: Mechanism, phi: np.ndarray) -> Kinematics:
     >>> k.points["B"].r[:, 1].round(6).tolist()   # top and bottom dead centres: l2 ± l1
     [0.5, 0.3]
     """
-    phi = np.asarray(phi, dtype=float)
+    phi = np.atleast_1d(np.asarray(phi, dtype=float))   # a single angle is a grid of one
+    if phi.ndim != 1:
+        raise ValueError(f"phi must be a 1-D grid of crank angles, got shape {phi.shape}")
     points: dict[str, PointMotion] = {}
     links: dict[str, LinkMotion] = {}
     for name, xy in mech.ground.items():
