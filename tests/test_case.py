@@ -51,6 +51,11 @@ BAD = [
      r"crank\.start_angle: unknown key; did you mean 'start_angle_deg'\?"),
     ("unknown-key-in-dyad", 'joint = "C"', 'joint = "C"\nrod_lenght = 0.4',
      r"dyads\[1\]\.rod_lenght: unknown key; did you mean 'rod_length'\?"),
+    ("unknown-key-of-another-dyad-kind", 'slider = "5"', 'slider = "5"\nrocker = "9"',
+     r"dyads\[1\]\.rocker: unknown key \(allowed: kind, name, from, joint, rod, rod_length, slider, "
+     r"guide, branch\)$"),   # an RRP's own keys, not every dyad kind's
+    ("unknown-key-in-guide", "angle_deg = 0.0 }", "angle_deg = 0.0, ofset = 0.1 }",
+     r"dyads\[1\]\.guide\.ofset: unknown key; did you mean 'offset'\? \(allowed: through, angle_deg, offset\)"),
     ("unknown-top-level-key", "title  =", "titel  =",
      r"titel: unknown key; did you mean 'title'\?"),
     ("missing-field", "bore = 0.12                      # d2 [m]", "",

@@ -442,6 +442,11 @@ def _fields_at(loc: tuple) -> list[str]:
     kinds = {"RRP": RRPSpec, "RRR": RRRSpec, "RPR": RPRSpec}
     tp: object = Case
     for part in loc:
+        if tp is kinds:  # a dyad's tag (pydantic puts the kind into the loc): its own fields
+            if part not in kinds:
+                break
+            tp = kinds[part]
+            continue
         if isinstance(tp, type) and issubclass(tp, BaseModel):
             f = tp.model_fields.get(part) or next(
                 (v for v in tp.model_fields.values() if v.alias == part), None)
@@ -478,7 +483,7 @@ def _describe(err: dict) -> str:
     where = _loc_str(loc)
     if kind == "extra_forbidden":
         key = str(loc[-1])
-        allowed = _fields_at(loc[:-1])
+        allowed = _fields_at(tuple(err["loc"][:-1]))   # with the dyad's tag, if any
         near = difflib.get_close_matches(key, allowed, n=1)
         hint = f"; did you mean {near[0]!r}?" if near else ""
         return f"{where}: unknown key{hint} (allowed: {', '.join(allowed)})"
