@@ -275,3 +275,19 @@ def test_annotated_example_loads_and_matches_its_closed_forms(tmp_path):
     assert math.degrees(dcs["outer"].phi) == pytest.approx(2.29, abs=5e-3)
     assert math.degrees(dcs["inner"].phi) == pytest.approx(183.82, abs=5e-3)
     assert dcs["outer"].x - dcs["inner"].x == pytest.approx(0.10013, abs=5e-6)
+
+
+def test_point_fields_that_do_not_go_together():
+    from flywheel.case import parse_case
+    from flywheel.errors import CaseFileError
+
+    base = {
+        "machine": {"speed_rps": 1.0, "delta": 0.1},
+        "crank": {"length": 0.1},
+        "dyads": [{"kind": "RRP", "from": "A", "joint": "B", "rod": "2", "rod_length": 0.4,
+                   "slider": "3", "guide": {"angle_deg": 0.0}}],
+    }
+    for bad, msg in (({"link": "2", "from": "A", "distance": 0.1, "fraction": 0.3}, "fraction"),
+                     ({"link": "2", "from": "A", "to": "B", "fraction": 0.3, "angle_deg": 10}, "angle_deg")):
+        with pytest.raises(CaseFileError, match=rf"points\.S: .*{msg}"):
+            parse_case({**base, "points": {"S": bad}}, "x.toml")

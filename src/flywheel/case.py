@@ -149,6 +149,10 @@ class PointSpec(_Model):
     def _one_way(self):
         if (self.to is None) == (self.distance is None):
             raise ValueError("give either `to` (with fraction) or `distance` (with angle_deg)")
+        if self.distance is not None and (self.fraction or self.across):
+            raise ValueError("`fraction` and `across` go with `to`, not with `distance`")
+        if self.to is not None and self.angle_deg:
+            raise ValueError("`angle_deg` goes with `distance`, not with `to`")
         return self
 
 

@@ -92,7 +92,7 @@ def print_check(case, console=None) -> None:
                     pm = k.points[pname]
                     t.add_row(s, dc.kind, f"{math.degrees(dc.phi):.4f}", f"{dc.x:.6g}", pname,
                               _g(np.linalg.norm(pm.v_q[i])), _g(np.linalg.norm(pm.a_q[i])))
-            stroke = abs(dcs[0].x - dcs[-1].x) if len(dcs) > 1 else 0.0
+            stroke = (max(dc.x for dc in dcs) - min(dc.x for dc in dcs)) if len(dcs) > 1 else 0.0
             t.add_row(s, "stroke", "", f"{stroke:.6g}", "", "", "")
         console.print(t)
     console.print("[green]case is valid[/green]")
