@@ -26,15 +26,19 @@ def test_run_writes_every_output(tmp_path):
     out = tmp_path / "out"
     res = run("run", CASES / "compressor.toml", "--out", out, "--no-plots", "--points", "720")
     assert res.exit_code == 0, res.output
-    assert {p.name for p in out.iterdir()} == {"summary.json", "table.csv", "positions.csv"}
+    assert {p.name for p in out.iterdir()} == {"summary.json", "table.csv", "positions.csv", "report.md"}
+    report = (out / "report.md").read_text(encoding="utf-8")
+    assert report.startswith("# Dynamic analysis: Two-stage V-type air compressor")
+    assert "ΔT_нб = " in report and "## 5. Flywheel" in report and "## 6. True velocities" in report
     assert "J_I" in res.output and "written" in res.output
     header = (out / "table.csv").read_text(encoding="utf-8").splitlines()[0]
     assert header.startswith("phi_deg [deg],") and "J_II [kg·m²]" in header and "omega [rad/s]" in header
     rows = (out / "positions.csv").read_text(encoding="utf-8").splitlines()
     labels = [r.split(",")[0] for r in rows[1:]]
-    # 12 positions every 30°, plus the dead centres (which fall on 0, 90, 180, 270° here)
-    assert labels[:3] == ["0°", "3 outer d.c.", "30°"]
-    assert len(labels) == 16
+    # 12 positions every 30°; the dead centres fall on 0, 90, 180, 270° here and share their rows
+    assert labels[:3] == ["0° = 3 outer d.c.", "30°", "60°"]
+    assert labels[3] == "90° = 5 outer d.c."
+    assert len(labels) == 12
     assert not list(tmp_path.glob(".out.tmp-*"))
 
 
@@ -64,7 +68,7 @@ def test_same_input_gives_identical_files(tmp_path):
     for name in ("a", "b"):
         assert run("run", CASES / "compressor.toml", "--out", tmp_path / name, "--no-plots",
                    "--points", "360").exit_code == 0
-    for f in ("summary.json", "table.csv", "positions.csv"):
+    for f in ("summary.json", "table.csv", "positions.csv", "report.md"):
         assert (tmp_path / "a" / f).read_bytes() == (tmp_path / "b" / f).read_bytes()
 
 

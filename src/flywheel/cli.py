@@ -88,14 +88,19 @@ def run(
         (folder / "summary.json").write_text(text_json, encoding="utf-8")
         (folder / "table.csv").write_text(table_csv(results), encoding="utf-8")
         (folder / "positions.csv").write_text(positions_csv(results), encoding="utf-8")
+        pngs: list[str] = []
         if not no_plots:
             from flywheel.render.plots import write_plots
 
             (folder / "plots").mkdir()
-            write_plots(results, folder / "plots", lang=lang, jobs=min(2, os.cpu_count() or 1))
+            pngs += [p.name for p in write_plots(results, folder / "plots", lang=lang,
+                                                 jobs=min(2, os.cpu_count() or 1))]
             from flywheel.render.plots_extra import write_extra_plots
 
-            write_extra_plots(results, folder / "plots", lang=lang)
+            pngs += [p.name for p in write_extra_plots(results, folder / "plots", lang=lang)]
+        from flywheel.render.report import report_markdown
+
+        (folder / "report.md").write_text(report_markdown(results, lang, pngs), encoding="utf-8")
 
     _guard(write_folder, out, build)
     if as_json:
@@ -104,7 +109,7 @@ def run(
         from flywheel.render.summary import print_summary
 
         print_summary(results, lang=lang)
-        typer.echo(f"written: {out}/ (summary.json, table.csv, positions.csv"
+        typer.echo(f"written: {out}/ (summary.json, table.csv, positions.csv, report.md"
                    + ("" if no_plots else ", plots/*.png") + ")")
 
 

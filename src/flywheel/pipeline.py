@@ -66,7 +66,13 @@ def analyze(case, n_points: int = DEFAULT_POINTS, at_deg: list[float] | None = N
     positions = [(f"{k * 30}°", math.radians(k * 30)) for k in range(12)]
     for s, lst in dcs.items():
         for dc in lst:
-            positions.append((f"{s} {dc.kind} d.c.", dc.phi))
+            label = f"{s} {dc.kind} d.c."
+            same = [i for i, (_, ph) in enumerate(positions) if abs(ph - dc.phi) < 1e-9]
+            if same:     # a dead centre on a standard position: one row, both names
+                i = same[0]
+                positions[i] = (f"{positions[i][0]} = {label}", positions[i][1])
+            else:
+                positions.append((label, dc.phi))
     positions.sort(key=lambda p: p[1])
     phi = _grid(n_points, [p[1] for p in positions] + [math.radians(a) for a in at_deg])
     kin = solve(mech, phi)
