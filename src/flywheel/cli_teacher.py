@@ -1,0 +1,115 @@
+"""`flywheel variants` and `flywheel grade`: a teacher's variants with an answer key, and the
+batch grading of the students' answers (docs/teacher.md).
+
+Thin: parse the options, call :mod:`flywheel.variants` / :mod:`flywheel.grading`, hand the
+results to :mod:`flywheel.render.grading`. Heavy imports live inside the functions.
+"""
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Optional
+
+import typer
+
+
+def variants_command(
+    template: Path = typer.Argument(..., help="Template: a run or task2 case file plus a "
+                                    "[variants] table (see docs/teacher.md).", dir_okay=False),
+    count: int = typer.Option(..., "--count", "-n", help="How many variants."),
+    out: Path = typer.Option(..., "--out", "-o", help="Output folder (written whole or not at "
+                             "all; an earlier variants folder there is replaced)."),
+    seed: Optional[int] = typer.Option(None, "--seed", help="Seed of numpy's default_rng: the "
+                                       "same seed gives the same files (default: a random "
+                                       "one, printed and written into every file)."),
+    points: int = typer.Option(1440, "--points", help="Intervals of the φ grid for the "
+                               "answers of a run case."),
+) -> None:
+    """Individual variants of a task from a template, with the answer key (answers.json,
+    answers.csv) and a blank answer sheet (students.csv)."""
+    from flywheel.cli import _guard, fail
+
+    if not 1 <= count <= 9999:
+        fail(f"--count: {count} is not allowed (allowed: 1…9999)")
+    if seed is not None and not 0 <= seed < 2 ** 63:
+        fail(f"--seed: {seed} is not allowed (allowed: 0 … 2^63 − 1)")
+    if points < 36:
+        fail(f"--points: {points} is too few (allowed: 36 or more)")
+    import secrets
+
+    from rich.console import Console
+    from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn
+
+    from flywheel.render.grading import print_variants
+    from flywheel.variants import generate, load_template, write_variants
+
+    if seed is None:
+        seed = secrets.randbelow(2 ** 32)
+    t = _guard(load_template, template, points)
+    console = Console(stderr=True)
+    with Progress(TextColumn("variants"), BarColumn(), MofNCompleteColumn(), console=console,
+                  transient=True, disable=not console.is_terminal) as bar:
+        task = bar.add_task("variants", total=count)
+        vs = _guard(generate, t, count, seed, points,
+                    lambda i: bar.update(task, completed=i))
+    _guard(write_variants, vs, out)
+    print_variants(vs, out)
+
+
+def grade_command(
+    key: Path = typer.Argument(..., help="The answers.json written by flywheel variants."),
+    answers: list[Path] = typer.Argument(..., help="Filled-in answer sheets (CSV: student,"
+                                         "variant,<answers…>) or folders of them."),
+    tolerance: Optional[float] = typer.Option(None, "--tolerance", help="Relative tolerance "
+                                              "(default: the key's, else 0.01); a per-answer "
+                                              "tolerance in the key still applies."),
+    out: Optional[Path] = typer.Option(None, "--out", "-o", help="Write one CSV line per "
+                                       "student and answer to this file.", dir_okay=False),
+    as_json: bool = typer.Option(False, "--json", help="Print the report as JSON."),
+) -> None:
+    """Grade students' answers against an answer key: per student each answer's error and
+    pass/fail, the score, group statistics; broken files and rows are reported and skipped."""
+    import sys
+
+    from flywheel.cli import _guard, fail
+    from flywheel.grading import grade, load_key, report_csv, report_dict
+
+    k = _guard(load_key, key)
+    report = _guard(grade, k, answers, tolerance)
+    if out is not None:
+        _write(out, report_csv(report))
+    if as_json:
+        import json
+
+        sys.stdout.write(json.dumps(report_dict(report), indent=2, ensure_ascii=False) + "\n")
+    else:
+        from flywheel.render.grading import print_report
+
+        print_report(report)
+        if out is not None and report.students:
+            typer.echo(f"written: {out}")
+    if not report.students:
+        fail(f"nothing could be graded ({len(report.problems)} problem(s)"
+             + (f"; the first: {report.problems[0]}" if report.problems else "") + ")")
+
+
+def _write(path: Path, text: str) -> None:
+    """Write a file whole or not at all (a temporary file renamed into place)."""
+    import os
+    import tempfile
+
+    from flywheel.cli import fail
+
+    if path.is_dir():
+        fail(f"--out {path}: is a folder, expected a CSV file name")
+    tmp = None
+    try:
+        path.parent.mkdir(parents=True, exist_ok=True)
+        fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", dir=path.parent)
+        with os.fdopen(fd, "w", encoding="utf-8", newline="") as f:
+            f.write(text)
+        os.chmod(tmp, 0o644)
+        os.replace(tmp, path)
+    except OSError as exc:
+        if tmp is not None and os.path.exists(tmp):
+            os.unlink(tmp)
+        fail(f"--out {path}: cannot be written ({exc.strerror})")

@@ -1,0 +1,453 @@
+"""Batch grading of students' answers against an answer key (``flywheel grade``).
+
+The key is the answers.json that ``flywheel variants`` writes — ``{"variants": {id: {answer:
+value}}, "tolerance": t, "tolerances": {answer: t}, …}`` — or a plain ``{id: {answer: value}}``.
+An answer sheet is a CSV file with the columns ``student``, ``variant`` and one column per
+answer (the students.csv of ``flywheel variants``, filled in); ``,``, ``;`` and tab delimiters,
+UTF-8 (with or without BOM) or Windows-1251, and a decimal comma are accepted.
+
+Each answer is compared by its relative error |given − key|/|key| (the absolute error
+|given| when the key is 0); it passes when that error is at most its tolerance. The score of a
+student is passed/total. A broken file or row (unreadable, no student/variant column, an
+unknown variant, a value that is not a number) is recorded as a :class:`Problem` and skipped;
+the batch goes on.
+
+Computation only: no typer, no rich.
+
+>>> rel_error(101.0, 100.0)
+(0.01, 'relative')
+>>> rel_error(0.002, 0.0)
+(0.002, 'absolute')
+>>> parse_number("4,65"), parse_number("−1 204.5")
+(4.65, -1204.5)
+"""
+from __future__ import annotations
+
+import csv
+import io
+import json
+import math
+import re
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from flywheel.errors import CaseFileError, InputError
+
+DEFAULT_TOLERANCE = 0.01
+#: round-off allowance: an error of tolerance·(1 + SLACK) still passes (0.01 typed for 1 %)
+SLACK = 1e-9
+
+
+# -- the key ------------------------------------------------------------------------------------
+
+@dataclass(frozen=True)
+class Key:
+    """An answer key: {variant id: {answer: value}} and the tolerances."""
+
+    source: str
+    variants: dict[str, dict[str, float]]
+    tolerance: float = DEFAULT_TOLERANCE
+    tolerances: dict[str, float] = field(default_factory=dict)
+    answers: tuple[str, ...] = ()
+
+    def tolerance_of(self, answer: str, default: float | None = None) -> float:
+        """The per-answer tolerance of the key file, else ``default`` (e.g. ``--tolerance``),
+        else the key's own default."""
+        if answer in self.tolerances:
+            return self.tolerances[answer]
+        return self.tolerance if default is None else default
+
+    def find(self, variant: str) -> str | None:
+        """The key's id for a sheet's variant cell ("3", "03", "variant_03.toml" → "03")."""
+        v = variant.strip()
+        if v in self.variants:
+            return v
+        m = re.fullmatch(r"(?:variant[_ -]?)?0*(\d+)(?:\.toml)?", v, flags=re.IGNORECASE)
+        if m is None:
+            return None
+        for vid in self.variants:
+            if vid.isdigit() and int(vid) == int(m.group(1)):
+                return vid
+        return None
+
+
+def _number(v) -> bool:
+    return isinstance(v, (int, float)) and not isinstance(v, bool) and math.isfinite(v)
+
+
+def _positive(v) -> bool:
+    return _number(v) and v > 0
+
+
+def parse_key(doc, source: str = "<key>") -> Key:
+    """Check a parsed answers.json document (one CaseFileError line if it is not a key)."""
+    if not isinstance(doc, dict):
+        raise CaseFileError(f"{source}: must be a JSON object {{variant: {{answer: value}}}} "
+                            f"(got {type(doc).__name__})")
+    if "variants" in doc:
+        table = doc["variants"]
+        where = "variants"
+        tol = doc.get("tolerance", DEFAULT_TOLERANCE)
+        tols = doc.get("tolerances", {})
+        answers = doc.get("answers")
+    else:
+        table, where, tol, tols, answers = doc, "", DEFAULT_TOLERANCE, {}, None
+    if not isinstance(table, dict) or not table:
+        raise CaseFileError(f"{source}: {where or 'the key'}: must be a non-empty object "
+                            "{variant: {answer: value}}")
+    if not _positive(tol):
+        raise CaseFileError(f"{source}: tolerance: must be a positive number (got {tol!r})")
+    if not isinstance(tols, dict) or not all(_positive(v) for v in tols.values()):
+        raise CaseFileError(f"{source}: tolerances: must be an object {{answer: positive "
+                            f"number}} (got {tols!r})")
+    variants: dict[str, dict[str, float]] = {}
+    for vid, ans in table.items():
+        at = f"{where}.{vid}" if where else str(vid)
+        if not isinstance(ans, dict) or not ans:
+            raise CaseFileError(f"{source}: {at}: must be an object {{answer: value}} "
+                                f"(got {ans!r})")
+        for name, value in ans.items():
+            if not _number(value):
+                raise CaseFileError(f"{source}: {at}.{name}: must be a finite number "
+                                    f"(got {value!r})")
+        variants[str(vid)] = {str(k): float(v) for k, v in ans.items()}
+    if answers is None:
+        seen: dict[str, None] = {}
+        for ans in variants.values():
+            seen.update(dict.fromkeys(ans))
+        answers = list(seen)
+    if not isinstance(answers, list) or not all(isinstance(a, str) for a in answers):
+        raise CaseFileError(f"{source}: answers: must be a list of answer names "
+                            f"(got {answers!r})")
+    return Key(source, variants, float(tol), {str(k): float(v) for k, v in tols.items()},
+               tuple(answers))
+
+
+def load_key(path) -> Key:
+    """Read an answers.json (see :func:`parse_key`)."""
+    path = Path(path)
+    try:
+        text = path.read_text(encoding="utf-8-sig")
+    except FileNotFoundError:
+        raise CaseFileError(f"{path}: no such file") from None
+    except IsADirectoryError:
+        raise CaseFileError(f"{path}: is a folder, expected the answers.json of "
+                            "flywheel variants") from None
+    except UnicodeDecodeError as exc:
+        raise CaseFileError(f"{path}: not UTF-8 text ({exc.reason} at byte {exc.start})") from None
+    except OSError as exc:
+        raise CaseFileError(f"{path}: cannot be read ({exc.strerror})") from None
+    try:
+        doc = json.loads(text)
+    except json.JSONDecodeError as exc:
+        raise CaseFileError(f"{path}: not JSON: {exc.msg} at line {exc.lineno} column "
+                            f"{exc.colno}") from None
+    return parse_key(doc, str(path))
+
+
+# -- numbers ------------------------------------------------------------------------------------
+
+_SPACES = str.maketrans("", "", " \u00a0\u202f\u2009_")
+
+
+def parse_number(text: str) -> float:
+    """A student's number: spaces and thin spaces dropped, a decimal comma accepted, the minus
+    sign − accepted. ValueError if it is not a finite number."""
+    t = text.strip().translate(_SPACES).replace("\u2212", "-").replace("\u2013", "-")
+    if t.count(",") == 1 and "." not in t:
+        t = t.replace(",", ".")
+    x = float(t)
+    if not math.isfinite(x):
+        raise ValueError(f"{text!r} is not finite")
+    return x
+
+
+def rel_error(given: float, key: float) -> tuple[float, str]:
+    """(error, kind): |given − key|/|key|, or |given − key| when the key is 0."""
+    if key == 0:
+        return abs(given), "absolute"
+    return abs(given - key) / abs(key), "relative"
+
+
+# -- grading ------------------------------------------------------------------------------------
+
+@dataclass(frozen=True)
+class Problem:
+    """Something that could not be graded: file, row (1 = the header; None: the whole file)."""
+
+    file: str
+    row: int | None
+    message: str
+
+    def __str__(self) -> str:
+        where = self.file if self.row is None else f"{self.file}, row {self.row}"
+        return f"{where}: {self.message}"
+
+
+@dataclass(frozen=True)
+class AnswerGrade:
+    answer: str
+    given: float | None          # None: no answer
+    key: float
+    error: float | None          # relative (absolute for a key of 0); None: no answer
+    error_kind: str              # "relative" | "absolute"
+    tolerance: float
+    passed: bool
+
+
+@dataclass(frozen=True)
+class StudentGrade:
+    student: str
+    variant: str                 # the key's id
+    file: str
+    row: int
+    answers: tuple[AnswerGrade, ...]
+
+    @property
+    def passed(self) -> int:
+        return sum(a.passed for a in self.answers)
+
+    @property
+    def total(self) -> int:
+        return len(self.answers)
+
+    @property
+    def score(self) -> float:
+        return self.passed / self.total if self.total else 0.0
+
+    @property
+    def wrong(self) -> list[str]:
+        return [a.answer for a in self.answers if not a.passed]
+
+
+@dataclass(frozen=True)
+class Report:
+    key: Key
+    tolerance: float             # the default in force (--tolerance or the key's)
+    students: tuple[StudentGrade, ...]
+    problems: tuple[Problem, ...]
+    files: tuple[str, ...]
+
+    @property
+    def mean_score(self) -> float | None:
+        if not self.students:
+            return None
+        return sum(s.score for s in self.students) / len(self.students)
+
+    def wrong_counts(self) -> dict[str, tuple[int, int]]:
+        """{answer: (wrong, graded)} in the key's order."""
+        out: dict[str, list[int]] = {}
+        for a in self.key.answers:
+            out[a] = [0, 0]
+        for s in self.students:
+            for a in s.answers:
+                c = out.setdefault(a.answer, [0, 0])
+                c[0] += not a.passed
+                c[1] += 1
+        return {k: (w, n) for k, (w, n) in out.items() if n}
+
+    def most_often_wrong(self) -> tuple[list[str], int] | None:
+        """([answers], wrong) of the answer(s) wrong most often (all of a tie, in the key's
+        order), or None if no answer was ever wrong."""
+        counts = self.wrong_counts()
+        most = max((w for w, _ in counts.values()), default=0)
+        if not most:
+            return None
+        return [a for a, (w, _) in counts.items() if w == most], most
+
+
+def _read_text(path: Path) -> str:
+    data = path.read_bytes()
+    try:
+        return data.decode("utf-8-sig")
+    except UnicodeDecodeError:
+        return data.decode("cp1251")   # a Russian Excel's "CSV" (never fails: every byte maps)
+
+
+def _delimiter(header: str) -> str:
+    counts = {d: header.count(d) for d in (",", ";", "\t")}
+    return max(counts, key=lambda d: (counts[d], d == ","))
+
+
+def _short(text: str, n: int = 60) -> str:
+    text = "".join(c if c.isprintable() else "?" for c in text)
+    return text if len(text) <= n else text[:n] + "…"
+
+
+def sheet_files(paths) -> tuple[list[Path], list[Problem]]:
+    """The CSV files named by ``paths``: files as given, folders by their ``*.csv`` (sorted).
+    A path that does not exist or a folder without CSV files is a Problem."""
+    files, problems = [], []
+    for p in map(Path, paths):
+        if p.is_dir():
+            found = sorted(q for q in p.iterdir() if q.suffix.lower() == ".csv" and q.is_file())
+            if not found:
+                problems.append(Problem(str(p), None, "folder without *.csv files"))
+            files += found
+        elif p.exists():
+            files.append(p)
+        else:
+            problems.append(Problem(str(p), None, "no such file or folder"))
+    return files, problems
+
+
+def grade_sheet(key: Key, path, tolerance: float | None = None
+                ) -> tuple[list[StudentGrade], list[Problem]]:
+    """Grade every student row of one CSV file; broken rows become Problems."""
+    path = Path(path)
+    name = str(path)
+    try:
+        text = _read_text(path)
+    except OSError as exc:
+        return [], [Problem(name, None, f"cannot be read ({exc.strerror})")]
+    if "\x00" in text:
+        return [], [Problem(name, None, "binary data, not a CSV text file")]
+    lines = text.splitlines()
+    if not lines or not lines[0].strip():
+        return [], [Problem(name, None, "empty file (expected a header student,variant,…)")]
+    try:
+        rows = list(csv.reader(io.StringIO(text), delimiter=_delimiter(lines[0])))
+    except csv.Error as exc:
+        return [], [Problem(name, None, f"not a readable CSV file ({exc})")]
+    header = [h.strip() for h in rows[0]]
+    lower = [h.lower() for h in header]
+    missing = [c for c in ("student", "variant") if c not in lower]
+    if missing:
+        return [], [Problem(name, 1, f"no {' and no '.join(repr(c) for c in missing)} column "
+                                     f"(the header must be student,variant,<answers…>; got "
+                                     f"{_short(','.join(header))})")]
+    col_student, col_variant = lower.index("student"), lower.index("variant")
+    columns = {h: i for i, h in enumerate(header) if i not in (col_student, col_variant) and h}
+    problems: list[Problem] = []
+    known = set(key.answers) | {a for v in key.variants.values() for a in v}
+    unknown = [h for h in columns if h not in known]
+    if unknown:
+        problems.append(Problem(name, 1, f"column(s) {', '.join(map(repr, unknown))} are not "
+                                         f"answers of the key (ignored; answers: "
+                                         f"{', '.join(key.answers)})"))
+    absent = [a for a in key.answers if a not in columns]
+    if absent:
+        problems.append(Problem(name, 1, f"no column for {', '.join(map(repr, absent))}: "
+                                         "those answers count as not given"))
+    graded: list[StudentGrade] = []
+    for n, row in enumerate(rows[1:], start=2):
+        cells = [c.strip() for c in row]
+        if not any(cells):
+            continue
+        cells += [""] * (len(header) - len(cells))
+        student, variant = cells[col_student], cells[col_variant]
+        given = {h: cells[i] for h, i in columns.items() if h in known}
+        if not student and not any(given.values()):
+            continue  # a row of the blank sheet nobody filled in
+        if not student:
+            problems.append(Problem(name, n, "no student name; row skipped"))
+            continue
+        who = f"{student!r}: "
+        vid = key.find(variant)
+        if vid is None:
+            ids = list(key.variants)
+            allowed = f"{ids[0]}…{ids[-1]}" if len(ids) > 3 else ", ".join(ids)
+            what = "no variant" if not variant else f"variant {variant!r} is not in the key"
+            problems.append(Problem(name, n, f"{who}{what} (allowed: {allowed}); row skipped"))
+            continue
+        values: dict[str, float | None] = {}
+        bad = []
+        for a in key.variants[vid]:
+            t = given.get(a, "")
+            if not t:
+                values[a] = None
+                continue
+            try:
+                values[a] = parse_number(t)
+            except ValueError:
+                bad.append(f"{a} = {t!r}")
+        if bad:
+            problems.append(Problem(name, n, f"{who}not a number: {'; '.join(bad)}; "
+                                             "row skipped"))
+            continue
+        grades = []
+        for a, k in key.variants[vid].items():
+            tol = key.tolerance_of(a, tolerance)
+            g = values[a]
+            if g is None:
+                grades.append(AnswerGrade(a, None, k, None, "relative" if k else "absolute",
+                                          tol, False))
+                continue
+            err, kind = rel_error(g, k)
+            grades.append(AnswerGrade(a, g, k, err, kind, tol, err <= tol * (1 + SLACK)))
+        graded.append(StudentGrade(student, vid, name, n, tuple(grades)))
+    return graded, problems
+
+
+def grade(key: Key, paths, tolerance: float | None = None) -> Report:
+    """Grade every CSV file (or folder of them) in ``paths``; never stops at a broken one.
+
+    ``tolerance`` replaces the key's default tolerance (a per-answer one of the key stays).
+    """
+    if tolerance is not None and not _positive(tolerance):
+        raise InputError(f"--tolerance: must be a positive number (got {tolerance!r})")
+    files, problems = sheet_files(paths)
+    students: list[StudentGrade] = []
+    for f in files:
+        s, p = grade_sheet(key, f, tolerance)
+        students += s
+        problems += p
+    seen: dict[str, StudentGrade] = {}
+    for s in students:
+        if s.student in seen:
+            first = seen[s.student]
+            problems.append(Problem(s.file, s.row, f"{s.student!r} was graded before "
+                                                   f"({first.file}, row {first.row}); both "
+                                                   "rows are kept"))
+        else:
+            seen[s.student] = s
+    return Report(key, key.tolerance if tolerance is None else tolerance, tuple(students),
+                  tuple(problems), tuple(map(str, files)))
+
+
+# -- the report as data -------------------------------------------------------------------------
+
+def report_dict(r: Report) -> dict:
+    """The report as a JSON-ready document (``flywheel grade --json``)."""
+    worst = r.most_often_wrong()
+    return {
+        "key": r.key.source,
+        "tolerance": r.tolerance,
+        "tolerances": {a: r.key.tolerance_of(a, r.tolerance) for a in r.key.answers},
+        "files": list(r.files),
+        "students": [{
+            "student": s.student, "variant": s.variant, "file": s.file, "row": s.row,
+            "score": s.score, "passed": s.passed, "total": s.total, "wrong": s.wrong,
+            "answers": [{"answer": a.answer, "given": a.given, "key": a.key, "error": a.error,
+                         "error_kind": a.error_kind, "tolerance": a.tolerance,
+                         "pass": a.passed} for a in s.answers],
+        } for s in r.students],
+        "summary": {
+            "graded": len(r.students),
+            "mean_score": r.mean_score,
+            "min_score": min((s.score for s in r.students), default=None),
+            "max_score": max((s.score for s in r.students), default=None),
+            "full_marks": sum(s.passed == s.total for s in r.students),
+            "wrong_by_answer": {a: {"wrong": w, "graded": n}
+                                for a, (w, n) in r.wrong_counts().items()},
+            "most_often_wrong": None if worst is None else
+            {"answers": worst[0], "wrong": worst[1]},
+        },
+        "problems": [{"file": p.file, "row": p.row, "message": p.message} for p in r.problems],
+    }
+
+
+def report_csv(r: Report) -> str:
+    """One line per student and answer: student, variant, file, row, answer, given, key,
+    error, error_kind, tolerance, pass (1/0), score."""
+    buf = io.StringIO()
+    w = csv.writer(buf, lineterminator="\n")
+    w.writerow(["student", "variant", "file", "row", "answer", "given", "key", "error",
+                "error_kind", "tolerance", "pass", "score"])
+    for s in r.students:
+        for a in s.answers:
+            w.writerow([s.student, s.variant, s.file, s.row, a.answer,
+                        "" if a.given is None else repr(a.given), repr(a.key),
+                        "" if a.error is None else f"{a.error:.6g}", a.error_kind,
+                        repr(a.tolerance), int(a.passed), f"{s.score:.4f}"])
+    return buf.getvalue()

@@ -1,0 +1,555 @@
+"""Individual variants of a course task and their answer key (``flywheel variants``).
+
+A *template* is a normal case file — a ``flywheel run`` case or a ``flywheel task2`` case —
+plus a ``[variants]`` table that says what to vary and which results are the answers::
+
+    [variants]
+    "machine.speed_rps" = { values = [8, 10, 12] }            # one of these
+    "links.2.mass"      = { min = 0.6, max = 1.2, step = 0.1 } # one of 0.6, 0.7, …, 1.2
+    answers   = ["J_required", "delta_T_max"]                  # keys of the answer key
+    tolerance = 0.01                                           # relative, for grading
+    tolerances = { delta_T_max = 0.02 }                        # per answer (optional)
+
+A path is dotted into the TOML document; a number in it indexes an array of tables
+(``cylinders.0.p_max``). Every variant draws one value per path with
+``numpy.random.default_rng(seed)`` (in the order the paths are written), is validated as its
+kind of case and analysed; a draw that fails either is drawn again (up to
+:data:`MAX_FAILED_DRAWS` times in a row). Variants are distinct while the grid of possible
+draws allows it.
+
+The kind of a template is found by validating it: first as a ``flywheel run`` case, then as a
+``flywheel task2`` case; the first that validates wins. If neither does, the error reported is
+that of a run case when the template has a ``[machine]`` table, else that of a task2 case.
+
+Computation only: no typer, no rich. Every mistake is one :class:`CaseFileError` or
+:class:`InputError` line.
+"""
+from __future__ import annotations
+
+import copy
+import csv
+import difflib
+import io
+import json
+import math
+import tomllib
+from collections.abc import Callable
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+from flywheel.errors import CaseFileError, FlywheelError, InputError
+
+#: intervals of the φ grid for the answers of a run case (4 per degree; the answers differ from
+#: the default 3600-point grid by well under 1e-4 relative — tests/test_variants.py checks it)
+RUN_POINTS = 1440
+#: a variant whose draws fail validation or analysis this many times in a row is an error
+MAX_FAILED_DRAWS = 50
+#: draws spent looking for a variant unlike the ones before, per variant
+MAX_DUPLICATE_DRAWS = 2000
+MAX_COUNT = 9999
+DEFAULT_TOLERANCE = 0.01
+SPEC_KEYS = ("values", "min", "max", "step")
+RESERVED = ("answers", "tolerance", "tolerances")
+
+
+# -- the [variants] table -----------------------------------------------------------------------
+
+@dataclass(frozen=True)
+class Varied:
+    """One path of the document and the values a variant may take there."""
+
+    path: str
+    parts: tuple[str | int, ...]
+    choices: tuple[Any, ...]
+
+
+@dataclass(frozen=True)
+class Template:
+    """A parsed template: the case document without [variants], its kind and what to vary."""
+
+    source: str
+    name: str
+    kind: str                    # "run" | "task2"
+    document: dict
+    varied: tuple[Varied, ...]
+    answers: tuple[str, ...]
+    tolerance: float
+    tolerances: dict[str, float]
+
+    @property
+    def combinations(self) -> int:
+        return math.prod(len(v.choices) for v in self.varied)
+
+
+def read_toml(path) -> dict:
+    """The TOML document at ``path``, or one CaseFileError line naming the file."""
+    path = Path(path)
+    try:
+        text = path.read_bytes().decode("utf-8")
+    except FileNotFoundError:
+        raise CaseFileError(f"{path}: no such file") from None
+    except IsADirectoryError:
+        raise CaseFileError(f"{path}: is a folder, expected a TOML template") from None
+    except UnicodeDecodeError as exc:
+        raise CaseFileError(f"{path}: not UTF-8 text ({exc.reason} at byte {exc.start})") from None
+    except OSError as exc:
+        raise CaseFileError(f"{path}: cannot be read ({exc.strerror})") from None
+    try:
+        return tomllib.loads(text)
+    except tomllib.TOMLDecodeError as exc:
+        raise CaseFileError(f"{path}: TOML syntax error: {exc}") from None
+
+
+def _is_number(v) -> bool:
+    return isinstance(v, (int, float)) and not isinstance(v, bool) and math.isfinite(v)
+
+
+def _flatten(table: dict, doc, prefix: str = "") -> list[tuple[str, Any]]:
+    """(path, spec) pairs: a quoted key "a.b" and nested tables a.b both name the path a.b (a
+    nested table is followed while the document has a table or an array there)."""
+    out = []
+    for k, v in table.items():
+        path = f"{prefix}{k}"
+        if not prefix and k in RESERVED:
+            continue
+        node = _peek(doc, path)
+        if (isinstance(v, dict) and v and not (set(v) & set(SPEC_KEYS))
+                and isinstance(node, (dict, list))):
+            out += _flatten(v, doc, path + ".")
+        else:
+            out.append((path, v))
+    return out
+
+
+def _peek(doc, path: str):
+    node = doc
+    for name in path.split("."):
+        if isinstance(node, dict) and name in node:
+            node = node[name]
+        elif isinstance(node, list) and name.isdigit() and int(name) < len(node):
+            node = node[int(name)]
+        else:
+            return None
+    return node
+
+
+def _q(path: str) -> str:
+    return f'variants."{path}"'
+
+
+def _resolve(doc, path: str, where: str) -> tuple[tuple[str | int, ...], Any]:
+    """Walk ``path`` (dotted; integers index arrays) in ``doc``: (parts, value there)."""
+    parts: list[str | int] = []
+    node = doc
+    walked = ""
+    for name in path.split("."):
+        here = f"[{walked}]" if walked else "the top level"
+        if isinstance(node, dict):
+            if name not in node:
+                near = difflib.get_close_matches(name, [str(k) for k in node], n=1)
+                hint = f"; did you mean {near[0]!r}?" if near else ""
+                keys = ", ".join(map(str, node)) or "nothing"
+                raise CaseFileError(f"{where}: {name!r} is not in {here} (it has: {keys}){hint}"
+                                    " — a varied field must have a value in the template")
+            parts.append(name)
+            node = node[name]
+        elif isinstance(node, list):
+            if not name.isdigit():
+                raise CaseFileError(f"{where}: {walked} is an array; {name!r} is not an index "
+                                    f"(allowed: 0…{len(node) - 1})")
+            i = int(name)
+            if i >= len(node):
+                raise CaseFileError(f"{where}: {walked} has {len(node)} entries; index {i} is "
+                                    f"out of range (allowed: 0…{len(node) - 1})")
+            parts.append(i)
+            node = node[i]
+        else:
+            raise CaseFileError(f"{where}: {walked} is a value, not a table; nothing inside it "
+                                f"is called {name!r}")
+        walked = f"{walked}.{name}" if walked else name
+    return tuple(parts), node
+
+
+def _grid(spec: dict, where: str) -> tuple:
+    """The values min, min + step, …, ≤ max (rounded to 12 decimals; integers stay integers)."""
+    for k in ("min", "max", "step"):
+        if k not in spec:
+            raise CaseFileError(f"{where}: {k} is missing (give min, max and step, or values)")
+        if not _is_number(spec[k]):
+            raise CaseFileError(f"{where}.{k}: must be a finite number (got {spec[k]!r})")
+    lo, hi, step = spec["min"], spec["max"], spec["step"]
+    if step <= 0:
+        raise CaseFileError(f"{where}.step: must be positive (got {step!r})")
+    if hi < lo:
+        raise CaseFileError(f"{where}: max ({hi!r}) is less than min ({lo!r})")
+    n = math.floor((hi - lo) / step * (1 + 1e-12) + 1e-9) + 1
+    if n > 100_000:
+        raise CaseFileError(f"{where}: {n} grid values are too many (allowed: up to 100000; "
+                            "use a larger step)")
+    if all(isinstance(spec[k], int) for k in ("min", "max", "step")):
+        return tuple(lo + k * step for k in range(n))
+    return tuple(round(lo + k * step, 12) + 0.0 for k in range(n))
+
+
+def _choices(spec, where: str, current) -> tuple:
+    if not isinstance(spec, dict):
+        raise CaseFileError(f"{where}: must be a table {{ values = [...] }} or "
+                            f"{{ min = …, max = …, step = … }} (got {spec!r})")
+    unknown = [k for k in spec if k not in SPEC_KEYS]
+    if unknown:
+        raise CaseFileError(f"{where}: unknown key {unknown[0]!r} (allowed: values, or min, max, "
+                            "step)")
+    if "values" in spec:
+        if set(spec) - {"values"}:
+            raise CaseFileError(f"{where}: give either values or min, max, step, not both")
+        vals = spec["values"]
+        if not isinstance(vals, list) or not vals:
+            raise CaseFileError(f"{where}.values: must be a non-empty array (got {vals!r})")
+        if any(isinstance(v, dict) for v in vals):
+            raise CaseFileError(f"{where}.values: tables cannot be drawn (vary their fields)")
+        return tuple(vals)
+    if not _is_number(current):
+        raise CaseFileError(f"{where}: min/max/step need a number in the template "
+                            f"(it has {current!r}); use values = [...]")
+    return _grid(spec, where)
+
+
+def _answers(table: dict, where: str) -> tuple[tuple[str, ...], float, dict[str, float]]:
+    if "answers" not in table:
+        raise CaseFileError(f"{where}.answers: missing (the result keys of the answer key, e.g. "
+                            'answers = ["J_required", "delta_T_max"])')
+    ans = table["answers"]
+    if (not isinstance(ans, list) or not ans
+            or not all(isinstance(a, str) and a.strip() for a in ans)):
+        raise CaseFileError(f"{where}.answers: must be a non-empty array of result names "
+                            f"(got {ans!r})")
+    for a in ans:
+        if ans.count(a) > 1:
+            raise CaseFileError(f"{where}.answers: {a!r} is listed twice")
+        if any(c in a for c in ',;"\n'):
+            raise CaseFileError(f"{where}.answers: {a!r} has a character not allowed in a CSV "
+                                "column name (, ; \" or a line break)")
+    tol = table.get("tolerance", DEFAULT_TOLERANCE)
+    if not _is_number(tol) or tol <= 0:
+        raise CaseFileError(f"{where}.tolerance: must be a positive number, relative "
+                            f"(got {tol!r})")
+    tols = table.get("tolerances", {})
+    if not isinstance(tols, dict):
+        raise CaseFileError(f"{where}.tolerances: must be a table {{ answer = tolerance }} "
+                            f"(got {tols!r})")
+    for k, v in tols.items():
+        if k not in ans:
+            raise CaseFileError(f"{where}.tolerances.{k}: not one of the answers "
+                                f"(allowed: {', '.join(ans)})")
+        if not _is_number(v) or v <= 0:
+            raise CaseFileError(f"{where}.tolerances.{k}: must be a positive number "
+                                f"(got {v!r})")
+    return tuple(ans), float(tol), {k: float(v) for k, v in tols.items()}
+
+
+# -- validation and analysis of one case document -----------------------------------------------
+
+def _validate(kind: str, doc: dict, source: str):
+    if kind == "run":
+        from flywheel.case import parse_case
+
+        return parse_case(doc, source)
+    from flywheel.task2_case import parse_task2_case
+
+    return parse_task2_case(doc, source)
+
+
+def detect_kind(doc: dict, source: str) -> str:
+    """"run" if ``doc`` validates as a ``flywheel run`` case, else "task2" if it validates as a
+    task2 case; else the CaseFileError of the likelier kind ([machine] present → run)."""
+    errors = {}
+    for kind in ("run", "task2"):
+        try:
+            _validate(kind, doc, source)
+            return kind
+        except CaseFileError as exc:
+            errors[kind] = exc
+    likely = "run" if "machine" in doc else "task2"
+    what = "a flywheel run case" if likely == "run" else "a flywheel task2 case"
+    raise CaseFileError(f"{errors[likely]} [checked as {what}]")
+
+
+def results_of(kind: str, doc: dict, source: str, n_points: int = RUN_POINTS) -> dict:
+    """The results document of one case: summary.json "results" for a run case, the JSON of
+    ``flywheel task2 --json`` for a task2 case (SI units)."""
+    case = _validate(kind, doc, source)
+    if kind == "run":
+        from flywheel.pipeline import analyze
+        from flywheel.render.tables import _clean
+
+        return _clean(analyze(case, n_points=n_points).summary()["results"])
+    from flywheel.render.task2 import to_dict
+    from flywheel.task2_case import solve_case
+
+    return to_dict(solve_case(case, source))
+
+
+def answer_value(results: dict, name: str):
+    """The result ``name`` (dotted: ``flywheel_disk.mass``, ``at.0.omega``), or None."""
+    node: Any = results
+    for part in name.split("."):
+        if isinstance(node, dict) and part in node:
+            node = node[part]
+        elif isinstance(node, list) and part.isdigit() and int(part) < len(node):
+            node = node[int(part)]
+        else:
+            return None
+    return node
+
+
+def _numeric_names(results: dict, prefix: str = "") -> list[str]:
+    out = []
+    for k, v in results.items():
+        if isinstance(v, dict):
+            out += _numeric_names(v, f"{prefix}{k}.")
+        elif _is_number(v):
+            out.append(f"{prefix}{k}")
+    return out
+
+
+def pick_answers(results: dict, answers, where: str) -> dict[str, float]:
+    """{answer: float} from a results document; a missing or non-numeric one is an error."""
+    out = {}
+    for a in answers:
+        v = answer_value(results, a)
+        if not _is_number(v):
+            names = _numeric_names(results)
+            near = difflib.get_close_matches(a, names, n=1)
+            hint = f"; did you mean {near[0]!r}?" if near else ""
+            what = "is not a result" if v is None else f"is not a finite number (it is {v!r})"
+            raise CaseFileError(f"{where}: {a!r} {what} (numbers available: {', '.join(names)})"
+                                f"{hint}")
+        out[a] = float(v)
+    return out
+
+
+# -- the template -------------------------------------------------------------------------------
+
+def parse_template(data: dict, source: str = "<template>", n_points: int = RUN_POINTS) -> Template:
+    """Check a template document: its case validates and solves, [variants] is well formed,
+    every path exists and every answer is a numeric result of the template itself."""
+    if "variants" not in data:
+        raise CaseFileError(f"{source}: no [variants] table (it says what to vary and which "
+                            "results are the answers; see docs/teacher.md)")
+    table = data["variants"]
+    if not isinstance(table, dict):
+        raise CaseFileError(f"{source}: variants: must be a table (got {table!r})")
+    doc = {k: v for k, v in data.items() if k != "variants"}
+    kind = detect_kind(doc, source)
+    answers, tol, tols = _answers(table, f"{source}: variants")
+    varied = []
+    for path, spec in _flatten(table, doc):
+        where = f"{source}: {_q(path)}"
+        if path.split(".")[0] == "variants":
+            raise CaseFileError(f"{where}: cannot vary the [variants] table itself")
+        parts, current = _resolve(doc, path, where)
+        if isinstance(current, dict):
+            raise CaseFileError(f"{where}: is a table; vary its fields one by one")
+        varied.append(Varied(path, parts, _choices(spec, where, current)))
+    if not varied:
+        raise CaseFileError(f"{source}: variants: nothing to vary (add e.g. "
+                            '"machine.speed_rps" = { values = [8, 10, 12] })')
+    for i, v in enumerate(varied):
+        for w in varied[:i]:
+            short, long_ = sorted((v.parts, w.parts), key=len)
+            if long_[:len(short)] == short:
+                raise CaseFileError(f"{source}: {_q(v.path)}: overlaps {_q(w.path)}")
+    try:
+        base = results_of(kind, doc, source, n_points)
+    except FlywheelError as exc:
+        raise CaseFileError(f"{source}: the template itself cannot be analysed: {exc}") from None
+    pick_answers(base, answers, f"{source}: variants.answers")
+    return Template(source, Path(source).name, kind, doc, tuple(varied), answers, tol, tols)
+
+
+def load_template(path, n_points: int = RUN_POINTS) -> Template:
+    """Read and check a template file (see :func:`parse_template`)."""
+    return parse_template(read_toml(path), str(path), n_points)
+
+
+# -- drawing variants ---------------------------------------------------------------------------
+
+@dataclass(frozen=True)
+class Variant:
+    """One generated variant: its id ("01"), file name, drawn values, file text and answers."""
+
+    id: str
+    filename: str
+    drawn: dict[str, Any]
+    text: str
+    answers: dict[str, float]
+
+
+@dataclass(frozen=True)
+class VariantSet:
+    template: Template
+    seed: int
+    n_points: int
+    variants: tuple[Variant, ...]
+    failed_draws: int = 0
+    warnings: tuple[str, ...] = field(default=())
+
+
+def _set(doc: dict, parts, value) -> None:
+    node = doc
+    for p in parts[:-1]:
+        node = node[p]
+    node[parts[-1]] = value
+
+
+def header(number: int, count: int, template_name: str, seed: int, kind: str) -> str:
+    """The comment on top of a variant file (tomli_w writes no comments: prepended text)."""
+    how = "flywheel run" if kind == "run" else "flywheel task2 --case"
+    return (f"# variant {number} of {count}, generated from {template_name} with seed {seed}\n"
+            f"# solve with: {how} <this file>\n\n")
+
+
+def generate(template: Template, count: int, seed: int, n_points: int = RUN_POINTS,
+             progress: Callable[[int], None] | None = None) -> VariantSet:
+    """Draw ``count`` variants with ``numpy.random.default_rng(seed)`` and solve each.
+
+    The same template, count, seed and n_points give the same variants, byte for byte.
+    ``progress(i)`` is called after variant i (1-based) is done.
+    """
+    import numpy as np
+    import tomli_w
+
+    if not 1 <= count <= MAX_COUNT:
+        raise InputError(f"--count: {count} is not allowed (allowed: 1…{MAX_COUNT})")
+    if not 0 <= seed < 2 ** 63:
+        raise InputError(f"--seed: {seed} is not allowed (allowed: 0 … 2^63 − 1)")
+    rng = np.random.default_rng(seed)
+    width = max(2, len(str(count)))
+    distinct = count <= template.combinations
+    warnings = []
+    if not distinct:
+        warnings.append(f"only {template.combinations} different variants are possible; "
+                        f"{count} asked, so some repeat")
+    seen: set[str] = set()
+    variants = []
+    failed_total = 0
+    for number in range(1, count + 1):
+        failed = dupes = 0
+        last_error = ""
+        while True:
+            idx = [int(rng.integers(len(v.choices))) for v in template.varied]
+            drawn = {v.path: v.choices[i] for v, i in zip(template.varied, idx)}
+            signature = json.dumps(idx)
+            if distinct and signature in seen:
+                dupes += 1
+                if dupes > MAX_DUPLICATE_DRAWS:
+                    raise InputError(f"variant {number}: no new combination found in "
+                                     f"{MAX_DUPLICATE_DRAWS} draws; widen the ranges or ask "
+                                     "for fewer variants")
+                continue
+            doc = copy.deepcopy(template.document)
+            for v, i in zip(template.varied, idx):
+                _set(doc, v.parts, copy.deepcopy(v.choices[i]))
+            vid = str(number).zfill(width)
+            filename = f"variant_{vid}.toml"
+            text = header(number, count, template.name, seed, template.kind) + tomli_w.dumps(doc)
+            try:
+                # solve the file as written, so the key is what a student's run gives
+                res = results_of(template.kind, tomllib.loads(text), filename, n_points)
+                answers = pick_answers(res, template.answers, filename)
+            except FlywheelError as exc:
+                failed += 1
+                failed_total += 1
+                last_error = str(exc)
+                if failed >= MAX_FAILED_DRAWS:
+                    raise InputError(
+                        f"{template.source}: variant {number}: {failed} draws in a row failed "
+                        f"validation or analysis; narrow the ranges in [variants] (the last: "
+                        f"{last_error})") from None
+                continue
+            seen.add(signature)
+            variants.append(Variant(vid, filename, drawn, text, answers))
+            break
+        if progress is not None:
+            progress(number)
+    return VariantSet(template, seed, n_points, tuple(variants), failed_total, tuple(warnings))
+
+
+# -- the files of the answer key ----------------------------------------------------------------
+
+def tolerances(template: Template) -> dict[str, float]:
+    """The tolerance of every answer (the per-answer one, else the default)."""
+    return {a: template.tolerances.get(a, template.tolerance) for a in template.answers}
+
+
+def answers_json(vs: VariantSet) -> str:
+    """answers.json: the answer key ``variants`` {id: {answer: value}} with what grading needs
+    (tolerances) and what made it (template, kind, seed, grid, the drawn values)."""
+    t = vs.template
+    doc = {
+        "template": t.name,
+        "kind": t.kind,
+        "seed": vs.seed,
+        "count": len(vs.variants),
+        "n_points": vs.n_points if t.kind == "run" else None,
+        "units": "SI (m, kg, s, rad, N, N·m, J, kg·m²); angles *_deg in degrees",
+        "answers": list(t.answers),
+        "tolerance": t.tolerance,
+        "tolerances": tolerances(t),
+        "variants": {v.id: v.answers for v in vs.variants},
+        "drawn": {v.id: v.drawn for v in vs.variants},
+    }
+    return json.dumps(doc, indent=2, ensure_ascii=False) + "\n"
+
+
+def _cell(v) -> str:
+    if isinstance(v, float):
+        return repr(v)
+    if isinstance(v, (list, dict)):
+        return json.dumps(v, ensure_ascii=False)
+    return str(v)
+
+
+def answers_csv(vs: VariantSet) -> str:
+    """answers.csv: one row per variant: variant, file, the answers, the drawn values."""
+    t = vs.template
+    buf = io.StringIO()
+    w = csv.writer(buf, lineterminator="\n")
+    w.writerow(["variant", "file", *t.answers, *(v.path for v in t.varied)])
+    for v in vs.variants:
+        w.writerow([v.id, v.filename, *(_cell(v.answers[a]) for a in t.answers),
+                    *(_cell(v.drawn[p.path]) for p in t.varied)])
+    return buf.getvalue()
+
+
+def students_csv(vs: VariantSet) -> str:
+    """students.csv: the blank answer sheet ``student,variant,<answers…>``, one row per variant
+    with only the variant filled in."""
+    t = vs.template
+    buf = io.StringIO()
+    w = csv.writer(buf, lineterminator="\n")
+    w.writerow(["student", "variant", *t.answers])
+    for v in vs.variants:
+        w.writerow(["", v.id, *("" for _ in t.answers)])
+    return buf.getvalue()
+
+
+def write_variants(vs: VariantSet, out) -> Path:
+    """Write the variant files, answers.json, answers.csv and students.csv to ``out``, whole or
+    not at all. Refuses a non-empty folder that is not an earlier variants folder."""
+    from flywheel.render.output import write_folder
+
+    out = Path(out)
+    if out.is_dir() and any(out.iterdir()) and not (out / "answers.json").is_file():
+        raise InputError(f"--out {out}: exists and is not a variants folder (no answers.json); "
+                         "give a new folder (it would be replaced)")
+
+    def build(folder: Path) -> None:
+        for v in vs.variants:
+            (folder / v.filename).write_text(v.text, encoding="utf-8")
+        (folder / "answers.json").write_text(answers_json(vs), encoding="utf-8")
+        (folder / "answers.csv").write_text(answers_csv(vs), encoding="utf-8")
+        (folder / "students.csv").write_text(students_csv(vs), encoding="utf-8")
+
+    return write_folder(out, build)
