@@ -117,6 +117,9 @@ from flywheel.cli_task2 import task2_command  # noqa: E402
 app.command("task2")(task2_command)
 from flywheel.cli_aggregate import aggregate_command  # noqa: E402
 app.command("aggregate")(aggregate_command)
+from flywheel.cli_teacher import grade_command, variants_command  # noqa: E402
+app.command("variants")(variants_command)
+app.command("grade")(grade_command)
 
 
 def main() -> None:

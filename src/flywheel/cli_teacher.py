@@ -14,7 +14,7 @@ import typer
 
 def variants_command(
     template: Path = typer.Argument(..., help="Template: a run or task2 case file plus a "
-                                    "[variants] table (see docs/teacher.md).", dir_okay=False),
+                                    "[variants] table (see docs/teacher.md).",),
     count: int = typer.Option(..., "--count", "-n", help="How many variants."),
     out: Path = typer.Option(..., "--out", "-o", help="Output folder (written whole or not at "
                              "all; an earlier variants folder there is replaced)."),
@@ -63,7 +63,7 @@ def grade_command(
                                               "(default: the key's, else 0.01); a per-answer "
                                               "tolerance in the key still applies."),
     out: Optional[Path] = typer.Option(None, "--out", "-o", help="Write one CSV line per "
-                                       "student and answer to this file.", dir_okay=False),
+                                       "student and answer to this file.",),
     as_json: bool = typer.Option(False, "--json", help="Print the report as JSON."),
 ) -> None:
     """Grade students' answers against an answer key: per student each answer's error and
@@ -88,8 +88,11 @@ def grade_command(
         if out is not None and report.students:
             typer.echo(f"written: {out}")
     if not report.students:
-        fail(f"nothing could be graded ({len(report.problems)} problem(s)"
-             + (f"; the first: {report.problems[0]}" if report.problems else "") + ")")
+        if report.problems:
+            fail(f"nothing could be graded ({len(report.problems)} problem(s); the first: "
+                 f"{report.problems[0]})")
+        fail("nothing could be graded: no filled-in student rows (a row needs a student name "
+             "and a variant)")
 
 
 def _write(path: Path, text: str) -> None:

@@ -478,14 +478,10 @@ def generate(template: Template, count: int, seed: int, n_points: int = RUN_POIN
 
 # -- the files of the answer key ----------------------------------------------------------------
 
-def tolerances(template: Template) -> dict[str, float]:
-    """The tolerance of every answer (the per-answer one, else the default)."""
-    return {a: template.tolerances.get(a, template.tolerance) for a in template.answers}
-
-
 def answers_json(vs: VariantSet) -> str:
     """answers.json: the answer key ``variants`` {id: {answer: value}} with what grading needs
-    (tolerances) and what made it (template, kind, seed, grid, the drawn values)."""
+    (the default ``tolerance`` and the per-answer ``tolerances`` of the template) and what made
+    it (template, kind, seed, grid, the drawn values)."""
     t = vs.template
     doc = {
         "template": t.name,
@@ -496,7 +492,7 @@ def answers_json(vs: VariantSet) -> str:
         "units": "SI (m, kg, s, rad, N, N·m, J, kg·m²); angles *_deg in degrees",
         "answers": list(t.answers),
         "tolerance": t.tolerance,
-        "tolerances": tolerances(t),
+        "tolerances": dict(t.tolerances),
         "variants": {v.id: v.answers for v in vs.variants},
         "drawn": {v.id: v.drawn for v in vs.variants},
     }

@@ -1,0 +1,220 @@
+"""`flywheel grade`: scores against the key of `flywheel variants`, tolerances, the group
+statistics, and a batch that goes on past broken files and rows."""
+import csv
+import json
+from pathlib import Path
+
+import pytest
+from typer.testing import CliRunner
+
+from flywheel.cli import app
+from flywheel.errors import CaseFileError
+from flywheel.grading import grade, parse_key, parse_number, rel_error
+
+CASES = Path(__file__).resolve().parent.parent / "cases"
+runner = CliRunner()
+
+
+def invoke(*args):
+    return runner.invoke(app, ["grade", *map(str, args)])
+
+
+def err_text(res):
+    try:
+        return res.stderr
+    except (ValueError, AttributeError):  # older click mixes the streams
+        return res.output
+
+
+def one_line_error(res, *fragments):
+    assert res.exit_code == 2, res.output
+    assert "Traceback" not in res.output
+    lines = [ln for ln in err_text(res).splitlines() if ln.strip()]
+    assert len(lines) == 1 and lines[0].startswith("error: "), lines
+    for f in fragments:
+        assert f in lines[0], lines[0]
+
+
+@pytest.fixture(scope="module")
+def key_dir(tmp_path_factory):
+    out = tmp_path_factory.mktemp("g") / "variants"
+    res = runner.invoke(app, ["variants", str(CASES / "variants_task2.toml"), "--count", "4",
+                              "--seed", "9", "--out", str(out)])
+    assert res.exit_code == 0, res.output
+    return out
+
+
+@pytest.fixture(scope="module")
+def key(key_dir):
+    return json.loads((key_dir / "answers.json").read_text())
+
+
+def sheet(path: Path, key: dict, change=None, names=("ivanov", "petrova", "sidorov", "kim"),
+          delimiter=",", encoding="utf-8", fmt=repr) -> Path:
+    """The key's own answers as a filled sheet; change(row_index, answers) edits a row."""
+    rows = [["student", "variant", *key["answers"]]]
+    for i, (vid, ans) in enumerate(key["variants"].items()):
+        ans = dict(ans)
+        if change:
+            change(i, ans)
+        rows.append([names[i], vid, *(fmt(ans[a]) if isinstance(ans[a], float) else ans[a]
+                                      for a in key["answers"])])
+    with open(path, "w", newline="", encoding=encoding) as f:
+        csv.writer(f, delimiter=delimiter).writerows(rows)
+    return path
+
+
+def as_json(*args):
+    res = invoke(*args, "--json")
+    return res, (json.loads(res.stdout) if res.stdout.strip() else None)
+
+
+def test_perfect_sheet_scores_100(tmp_path, key_dir, key):
+    res, rep = as_json(key_dir / "answers.json", sheet(tmp_path / "a.csv", key))
+    assert res.exit_code == 0, res.output
+    assert [s["score"] for s in rep["students"]] == [1.0] * 4
+    assert rep["summary"]["mean_score"] == 1.0 and rep["summary"]["full_marks"] == 4
+    assert rep["summary"]["most_often_wrong"] is None and rep["problems"] == []
+    assert all(a["error"] == 0 for s in rep["students"] for a in s["answers"])
+
+
+def test_one_wrong_answer_is_named(tmp_path, key_dir, key):
+    def wrong(i, ans):
+        if i == 1:
+            ans["J_required"] *= 1.5
+    res, rep = as_json(key_dir / "answers.json", sheet(tmp_path / "a.csv", key, wrong))
+    assert res.exit_code == 0
+    petrova = rep["students"][1]
+    assert petrova["student"] == "petrova" and petrova["wrong"] == ["J_required"]
+    assert petrova["passed"] == 5 and petrova["total"] == 6
+    assert petrova["score"] == pytest.approx(5 / 6)
+    bad = next(a for a in petrova["answers"] if a["answer"] == "J_required")
+    assert bad["error"] == pytest.approx(0.5) and bad["pass"] is False
+    assert rep["summary"]["mean_score"] == pytest.approx((3 + 5 / 6) / 4)
+    assert rep["summary"]["most_often_wrong"] == {"answers": ["J_required"], "wrong": 1}
+    # the rich report says the same
+    res = invoke(key_dir / "answers.json", tmp_path / "a.csv")
+    assert res.exit_code == 0
+    assert "petrova — variant 02 — 5/6" in res.output
+    assert "most often wrong: J_required (1 of 4)" in res.output
+    assert "FAIL" in res.output
+
+
+def test_tolerances_default_option_and_per_answer(tmp_path, key_dir, key):
+    def off(i, ans):   # 0.5 % off: within the key's 1 %
+        ans["delta_T_max"] *= 1.005
+        ans["omega_max"] *= 1 + 5e-6   # per-answer tolerance 1e-5 in the template
+    path = sheet(tmp_path / "a.csv", key, off)
+    res, rep = as_json(key_dir / "answers.json", path)
+    assert rep["summary"]["mean_score"] == 1.0
+    _, rep = as_json(key_dir / "answers.json", path, "--tolerance", 0.001)
+    assert all(s["wrong"] == ["delta_T_max"] for s in rep["students"])   # omega_max keeps 1e-5
+    assert rep["tolerances"]["omega_max"] == 1e-5 and rep["tolerances"]["delta"] == 0.001
+
+
+def test_missing_answer_fails_that_answer_only(tmp_path, key_dir, key):
+    def blank(i, ans):
+        if i == 0:
+            ans["M_C"] = ""
+    _, rep = as_json(key_dir / "answers.json", sheet(tmp_path / "a.csv", key, blank))
+    ivanov = rep["students"][0]
+    assert ivanov["wrong"] == ["M_C"] and ivanov["answers"][0]["given"] is None
+
+
+def test_broken_files_and_rows_are_reported_and_skipped(tmp_path, key_dir, key):
+    good = sheet(tmp_path / "good.csv", key)
+    rows = good.read_text().splitlines()
+    rows[2] = rows[2].replace(",02,", ",77,")            # petrova: unknown variant
+    rows[3] = "sidorov,03,abc" + rows[3][rows[3].index(",", len("sidorov,03,")):]
+    (tmp_path / "rows.csv").write_text("\n".join(rows) + "\n")
+    (tmp_path / "binary.csv").write_bytes(b"\x00\x01\x02garbage")
+    (tmp_path / "header.csv").write_text("name,var,J\nx,1,2\n")
+    res, rep = as_json(key_dir / "answers.json", tmp_path / "rows.csv", tmp_path / "binary.csv",
+                       tmp_path / "header.csv", tmp_path / "missing.csv")
+    assert res.exit_code == 0, res.output
+    assert [s["student"] for s in rep["students"]] == ["ivanov", "kim"]
+    problems = [(Path(p["file"]).name, p["row"], p["message"]) for p in rep["problems"]]
+    text = "\n".join(map(str, problems))
+    assert ("rows.csv", 3) in [(f, r) for f, r, _ in problems]
+    assert "variant '77' is not in the key" in text
+    assert "'sidorov': not a number: M_C = 'abc'" in text
+    assert "binary data" in text and "no 'student' and no 'variant' column" in text
+    assert "no such file or folder" in text
+    # the rich report lists them too
+    res = invoke(key_dir / "answers.json", tmp_path / "rows.csv", tmp_path / "binary.csv")
+    assert res.exit_code == 0 and "3 problem(s)" in res.output
+
+
+def test_nothing_graded_exits_2(tmp_path, key_dir):
+    (tmp_path / "binary.csv").write_bytes(b"\x00\x01")
+    res = invoke(key_dir / "answers.json", tmp_path / "binary.csv")
+    one_line_error(res, "nothing could be graded", "binary data")
+    # the blank sheet of flywheel variants: every row unfilled, silently skipped
+    res = invoke(key_dir / "answers.json", key_dir / "students.csv")
+    one_line_error(res, "nothing could be graded: no filled-in student rows")
+
+
+def test_folders_excel_style_sheets_and_variant_spellings(tmp_path, key_dir, key):
+    folder = tmp_path / "sheets"
+    folder.mkdir()
+    # a Russian Excel's CSV: semicolons, decimal commas, Windows-1251, variant "3" for "03"
+    sheet(folder / "group_a.csv", key, names=("Иванов", "Петрова", "Сидоров", "Ким"),
+          delimiter=";", encoding="cp1251", fmt=lambda x: repr(x).replace(".", ","))
+    text = (folder / "group_a.csv").read_bytes().decode("cp1251").replace(";03;", ";3;")
+    (folder / "group_a.csv").write_bytes(text.encode("cp1251"))
+    sheet(folder / "group_b.csv", key, names=("a", "b", "c", "d"), encoding="utf-8-sig")
+    (folder / "notes.txt").write_text("not a sheet")
+    res, rep = as_json(key_dir / "answers.json", folder)
+    assert res.exit_code == 0, res.output
+    assert [s["student"] for s in rep["students"]] == ["Иванов", "Петрова", "Сидоров", "Ким",
+                                                       "a", "b", "c", "d"]
+    assert rep["students"][2]["variant"] == "03"
+    assert rep["summary"]["mean_score"] == 1.0
+
+
+def test_out_writes_one_line_per_answer(tmp_path, key_dir, key):
+    out = tmp_path / "report" / "grades.csv"
+    res = invoke(key_dir / "answers.json", sheet(tmp_path / "a.csv", key), "--out", out)
+    assert res.exit_code == 0, res.output
+    with open(out, newline="") as f:
+        rows = list(csv.DictReader(f))
+    assert len(rows) == 4 * len(key["answers"])
+    assert rows[0]["student"] == "ivanov" and rows[0]["answer"] == key["answers"][0]
+    assert {r["pass"] for r in rows} == {"1"}
+    one_line_error(invoke(key_dir / "answers.json", tmp_path / "a.csv", "--out", tmp_path),
+                   "--out", "is a folder")
+
+
+def test_bad_key_and_options(tmp_path, key_dir, key):
+    sheet_path = sheet(tmp_path / "a.csv", key)
+    one_line_error(invoke(tmp_path / "nope.json", sheet_path), "nope.json: no such file")
+    (tmp_path / "k.json").write_text("{not json")
+    one_line_error(invoke(tmp_path / "k.json", sheet_path), "k.json: not JSON")
+    (tmp_path / "k.json").write_text(json.dumps({"variants": {"01": {"J": "big"}}}))
+    one_line_error(invoke(tmp_path / "k.json", sheet_path), "variants.01.J: must be a finite")
+    one_line_error(invoke(key_dir / "answers.json", sheet_path, "--tolerance", 0),
+                   "--tolerance: must be a positive number")
+
+
+def test_library_plain_key_and_zero_key(tmp_path):
+    """A hand-written key {variant: {answer: value}}; a key of 0 is graded by absolute error."""
+    k = parse_key({"1": {"A": 0.0, "B": 2.0}, "2": {"A": 1.0, "B": -2.0}})
+    assert k.answers == ("A", "B") and k.tolerance == 0.01
+    (tmp_path / "s.csv").write_text("student,variant,A,B\nx,1,0.005,2.01\ny,02,1,2\n")
+    r = grade(k, [tmp_path / "s.csv"])
+    x, y = r.students
+    assert x.answers[0].error_kind == "absolute" and x.answers[0].error == pytest.approx(0.005)
+    assert x.score == 1.0
+    assert y.wrong == ["B"] and y.answers[1].error == pytest.approx(2.0)   # sign matters
+    with pytest.raises(CaseFileError, match="must be an object"):
+        parse_key({"1": 5})
+
+
+def test_numbers_and_errors():
+    assert parse_number(" 1\u00a0204,5 ") == 1204.5
+    assert parse_number("\u22123.5e-2") == -0.035
+    with pytest.raises(ValueError):
+        parse_number("1,2,3")
+    with pytest.raises(ValueError):
+        parse_number("nan")
+    assert rel_error(99.0, 100.0) == (pytest.approx(0.01), "relative")
