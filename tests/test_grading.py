@@ -106,7 +106,7 @@ def test_tolerances_default_option_and_per_answer(tmp_path, key_dir, key):
         ans["omega_max"] *= 1 + 5e-6   # per-answer tolerance 1e-5 in the template
     path = sheet(tmp_path / "a.csv", key, off)
     res, rep = as_json(key_dir / "answers.json", path)
-    assert rep["summary"]["mean_score"] == 1.0
+    assert res.exit_code == 0 and rep["summary"]["mean_score"] == 1.0
     _, rep = as_json(key_dir / "answers.json", path, "--tolerance", 0.001)
     assert all(s["wrong"] == ["delta_T_max"] for s in rep["students"])   # omega_max keeps 1e-5
     assert rep["tolerances"]["omega_max"] == 1e-5 and rep["tolerances"]["delta"] == 0.001

@@ -95,4 +95,4 @@ def print_report(r, console=None) -> None:
     if r.problems:
         console.print(f"[yellow]{len(r.problems)} problem(s)[/] (skipped or not graded):")
         for p in r.problems:
-            console.print(f"  {p}", highlight=False, markup=False)
+            console.print(f"  {p}", highlight=False, markup=False, soft_wrap=True)
