@@ -12,8 +12,6 @@ from __future__ import annotations
 
 import difflib
 import math
-import tomllib
-from pathlib import Path
 from typing import Annotated, ClassVar, Literal, Union
 
 from pydantic import BaseModel, ConfigDict, Field, ValidationError, field_validator
@@ -366,21 +364,9 @@ def parse_task2_case(data: dict, source: str = "<case>") -> Task2Case:
 
 def load_task2_case(path) -> Task2Case:
     """Read a TOML task-2 case file and validate it."""
-    path = Path(path)
-    try:
-        text = path.read_bytes().decode("utf-8")
-    except FileNotFoundError:
-        raise CaseFileError(f"{path}: no such file") from None
-    except IsADirectoryError:
-        raise CaseFileError(f"{path}: is a folder, expected a TOML case file") from None
-    except UnicodeDecodeError as exc:
-        raise CaseFileError(f"{path}: not UTF-8 text ({exc.reason} at byte {exc.start})") from None
-    except OSError as exc:
-        raise CaseFileError(f"{path}: cannot be read ({exc.strerror})") from None
-    try:
-        data = tomllib.loads(text)
-    except tomllib.TOMLDecodeError as exc:
-        raise CaseFileError(f"{path}: TOML syntax error: {exc}") from None
+    from flywheel.tomlfile import read_toml
+
+    data = read_toml(path)
     return parse_task2_case(data, str(path))
 
 

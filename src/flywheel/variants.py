@@ -39,6 +39,7 @@ from pathlib import Path
 from typing import Any
 
 from flywheel.errors import CaseFileError, FlywheelError, InputError
+from flywheel.tomlfile import read_toml
 
 #: intervals of the φ grid for the answers of a run case (4 per degree; the answers differ from
 #: the default 3600-point grid by well under 1e-4 relative — tests/test_variants.py checks it)
@@ -80,25 +81,6 @@ class Template:
     @property
     def combinations(self) -> int:
         return math.prod(len(v.choices) for v in self.varied)
-
-
-def read_toml(path) -> dict:
-    """The TOML document at ``path``, or one CaseFileError line naming the file."""
-    path = Path(path)
-    try:
-        text = path.read_bytes().decode("utf-8")
-    except FileNotFoundError:
-        raise CaseFileError(f"{path}: no such file") from None
-    except IsADirectoryError:
-        raise CaseFileError(f"{path}: is a folder, expected a TOML template") from None
-    except UnicodeDecodeError as exc:
-        raise CaseFileError(f"{path}: not UTF-8 text ({exc.reason} at byte {exc.start})") from None
-    except OSError as exc:
-        raise CaseFileError(f"{path}: cannot be read ({exc.strerror})") from None
-    try:
-        return tomllib.loads(text)
-    except tomllib.TOMLDecodeError as exc:
-        raise CaseFileError(f"{path}: TOML syntax error: {exc}") from None
 
 
 def _is_number(v) -> bool:
@@ -370,7 +352,7 @@ def parse_template(data: dict, source: str = "<template>", n_points: int = RUN_P
 
 def load_template(path, n_points: int = RUN_POINTS) -> Template:
     """Read and check a template file (see :func:`parse_template`)."""
-    return parse_template(read_toml(path), str(path), n_points)
+    return parse_template(read_toml(path, "a TOML template"), str(path), n_points)
 
 
 # -- drawing variants ---------------------------------------------------------------------------
