@@ -14,13 +14,13 @@ SI units; speeds in rev/min where the key says ``_rpm``. Every problem becomes o
 """
 from __future__ import annotations
 
-import difflib
 import math
 from typing import Annotated, Literal
 
 from pydantic import BaseModel, ConfigDict, Field, ValidationError
 
 from flywheel.errors import CaseFileError, FlywheelError
+from flywheel.schema_errors import clean_loc, describe, pick
 
 Pos = Annotated[float, Field(gt=0)]
 NonNeg = Annotated[float, Field(ge=0)]
@@ -28,7 +28,7 @@ RPM = math.pi / 30.0  # rev/min → rad/s
 
 
 class _Model(BaseModel):
-    model_config = ConfigDict(extra="forbid", allow_inf_nan=False)
+    model_config = ConfigDict(extra="forbid", allow_inf_nan=False, strict=True)
 
 
 class Motor(_Model):
@@ -126,41 +126,14 @@ FIELDS = {"(top level)": AggregateCase, "motor": Motor, "coupling": Shaft, "mach
 
 # -- errors ---------------------------------------------------------------------------------------
 
-def _loc_str(loc) -> str:
-    out = ""
-    for part in loc:
-        if isinstance(part, int):
-            out += f"[{part}]"
-        else:
-            out += ("." if out else "") + str(part)
-    return out or "(top level)"
-
-
 def _describe(err: dict) -> str:
-    loc = list(err["loc"])
-    kind, msg = err["type"], err["msg"]
-    where = _loc_str(loc)
-    if kind == "extra_forbidden":
-        key = str(loc[-1])
-        parent = ".".join(str(p) for p in loc[:-1] if not isinstance(p, int)) or "(top level)"
-        model = FIELDS.get(parent)
-        allowed = list(model.model_fields) if model else []
-        near = difflib.get_close_matches(key, allowed, n=1)
-        hint = f"; did you mean {near[0]!r}?" if near else ""
-        return f"{where}: unknown key{hint} (allowed: {', '.join(allowed)})"
-    if kind == "missing":
-        return f"{where}: missing required field"
-    if kind == "finite_number":
-        return f"{where}: must be a finite number (got {err.get('input')!r})"
-    if kind == "greater_than":
-        return f"{where}: must be positive (got {err.get('input')!r})"
-    if kind == "greater_than_equal":
-        return f"{where}: must not be negative (got {err.get('input')!r})"
-    if kind == "value_error":
-        return f"{where}: {msg.removeprefix('Value error, ')}"
-    got = err.get("input")
-    got_s = f" (got {got!r})" if not isinstance(got, (dict, list)) else ""
-    return f"{where}: {msg[0].lower() + msg[1:]}{got_s}"
+    def allowed(parent: tuple) -> list[str]:
+        key = ".".join(str(p) for p in clean_loc(parent) if not isinstance(p, int)) or "(top level)"
+        model = FIELDS.get(key)
+        return list(model.model_fields) if model else []
+
+    return describe(err, allowed, messages={"greater_than": "must be positive",
+                                            "greater_than_equal": "must not be negative"})
 
 
 class _Err(Exception):
@@ -323,9 +296,7 @@ def parse_aggregate_case(data: dict, source: str = "<case>") -> AggregateCase:
     try:
         case = AggregateCase.model_validate(data)
     except ValidationError as exc:
-        errs = exc.errors()
-        first = next((e for e in errs if e["type"] == "extra_forbidden"), errs[0])
-        raise CaseFileError(f"{source}: {_describe(first)}") from None
+        raise CaseFileError(f"{source}: {_describe(pick(exc.errors()))}") from None
     try:
         build(case)
     except _Err as exc:

@@ -8,24 +8,25 @@ The format is documented field by field in docs/case-format.md.
 """
 from __future__ import annotations
 
-import difflib
 import math
 import typing
 from typing import Annotated, Literal, Union
 
-from pydantic import BaseModel, ConfigDict, Field, ValidationError, model_validator
+from pydantic import BaseModel, ConfigDict, Field, Strict, ValidationError, model_validator
 
 from flywheel.errors import CaseFileError
+from flywheel.schema_errors import clean_loc, describe, loc_str, pick
 from flywheel.tabulated import TabulatedSpec
 
 Pos = Annotated[float, Field(gt=0)]
 NonNeg = Annotated[float, Field(ge=0)]
 Name = Annotated[str, Field(min_length=1)]
-XY = tuple[float, float]
+# strict numbers (no true, no "0.1"), but a TOML array is a fine tuple
+XY = Annotated[tuple[float, float], Strict(False)]
 
 
 class _Model(BaseModel):
-    model_config = ConfigDict(extra="forbid", allow_inf_nan=False, populate_by_name=True)
+    model_config = ConfigDict(extra="forbid", allow_inf_nan=False, strict=True, populate_by_name=True)
 
 
 class Machine(_Model):
@@ -429,15 +430,7 @@ def _check_references(case: Case) -> None:
 
 # -- errors ---------------------------------------------------------------------------------
 
-def _loc_str(loc: tuple) -> str:
-    out = ""
-    for part in loc:
-        if isinstance(part, int):
-            out += f"[{part}]"
-        else:
-            out += ("." if out else "") + str(part)
-    return out or "(top level)"
-
+_DYAD_TAGS = ("RRP", "RRR", "RPR")   # pydantic puts a dyad's kind into the error location
 
 def _fields_at(loc: tuple) -> list[str]:
     """Valid keys of the table at ``loc`` (for 'did you mean')."""
@@ -480,27 +473,9 @@ def _fields_at(loc: tuple) -> list[str]:
 
 
 def _describe(err: dict) -> str:
-    loc = tuple(p for p in err["loc"] if p not in ("RRP", "RRR", "RPR"))
-    kind, msg = err["type"], err["msg"]
-    where = _loc_str(loc)
-    if kind == "extra_forbidden":
-        key = str(loc[-1])
-        allowed = _fields_at(tuple(err["loc"][:-1]))   # with the dyad's tag, if any
-        near = difflib.get_close_matches(key, allowed, n=1)
-        hint = f"; did you mean {near[0]!r}?" if near else ""
-        return f"{where}: unknown key{hint} (allowed: {', '.join(allowed)})"
-    if kind == "missing":
-        return f"{where}: missing required field"
-    if kind == "union_tag_invalid" or kind == "union_tag_not_found":
-        return f"{where}: kind must be one of RRP, RRR, RPR"
-    if kind == "finite_number":
-        return f"{where}: must be a finite number (got {err.get('input')!r})"
-    if kind == "value_error":
-        msg = msg.removeprefix("Value error, ")
-        return f"{where}: {msg}"
-    got = err.get("input")
-    got_s = f" (got {got!r})" if not isinstance(got, (dict, list)) else ""
-    return f"{where}: {msg[0].lower() + msg[1:]}{got_s}"
+    if err["type"] in ("union_tag_invalid", "union_tag_not_found"):
+        return f"{loc_str(clean_loc(err['loc'], _DYAD_TAGS))}: kind must be one of RRP, RRR, RPR"
+    return describe(err, _fields_at, _DYAD_TAGS)
 
 
 def parse_case(data: dict, source: str = "<case>") -> Case:
@@ -512,10 +487,8 @@ def parse_case(data: dict, source: str = "<case>") -> Case:
         for e in errs:  # a reference error raised inside a model validator carries its own loc
             ctx = e.get("ctx", {}).get("error")
             if isinstance(ctx, ValueError) and isinstance(getattr(ctx, "loc", None), tuple):
-                raise CaseFileError(f"{source}: {_loc_str(e['loc'] + ctx.loc)}: {ctx}") from None
-        # a misspelled key also leaves its field missing: the unknown key is the cause to report
-        first = next((e for e in errs if e["type"] == "extra_forbidden"), errs[0])
-        raise CaseFileError(f"{source}: {_describe(first)}") from None
+                raise CaseFileError(f"{source}: {loc_str(e['loc'] + ctx.loc)}: {ctx}") from None
+        raise CaseFileError(f"{source}: {_describe(pick(errs, _DYAD_TAGS))}") from None
 
 
 def load_case(path) -> Case:

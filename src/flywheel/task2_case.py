@@ -14,16 +14,17 @@ import difflib
 import math
 from typing import Annotated, ClassVar, Literal, Union
 
-from pydantic import BaseModel, ConfigDict, Field, ValidationError, field_validator
+from pydantic import BaseModel, ConfigDict, Field, Strict, ValidationError, field_validator
 
 from flywheel import task2 as t2
 from flywheel.errors import CaseFileError, InputError
+from flywheel.schema_errors import clean_loc, describe, loc_str, pick
 
 BALANCE = "balance"
 
 
 class _Model(BaseModel):
-    model_config = ConfigDict(extra="forbid", allow_inf_nan=False)
+    model_config = ConfigDict(extra="forbid", allow_inf_nan=False, strict=True)
 
 
 def _amount(v):
@@ -64,7 +65,7 @@ class PointsGraph(_Graph):
 
     _AMOUNTS: ClassVar[tuple[str, ...]] = ("scale",)
     kind: Literal["points"]
-    points: list[tuple[float, float]] = Field(
+    points: list[Annotated[tuple[float, float], Strict(False)]] = Field(
         description="[[φ (deg), M (N·m)], …] from 0 to cycle_deg, angles never decreasing; "
                     "a repeated angle is a jump")
     scale: Amount = Field(1.0, description='multiplier of every ordinate, or "balance"')
@@ -174,16 +175,6 @@ TOP = {"speed": Speed, "flywheel": Flywheel, "diagram": Diagram}
 
 # -- errors ---------------------------------------------------------------------------------------
 
-def _loc_str(loc) -> str:
-    out = ""
-    for part in loc:
-        if isinstance(part, int):
-            out += f"[{part}]"
-        else:
-            out += ("." if out else "") + str(part)
-    return out or "(top level)"
-
-
 def _model_at(loc: tuple, data: dict):
     if not loc:
         return Task2Case
@@ -200,32 +191,19 @@ def _describe(err: dict, data: dict) -> str:
     loc = list(err["loc"])
     if len(loc) >= 2 and loc[0] in ("driving", "resistance") and loc[1] in KINDS:
         del loc[1]
-    loc = [p for p in loc if p not in ("float", "str")]
-    kind, msg = err["type"], err["msg"]
-    where = _loc_str(loc)
-    if kind == "extra_forbidden":
-        key = str(loc[-1])
-        model = _model_at(tuple(loc[:-1]), data)
-        allowed = list(model.model_fields) if model else []
-        lower = {a.lower(): a for a in allowed}
-        near = difflib.get_close_matches(key.lower(), list(lower), n=1)
-        hint = f"; did you mean {lower[near[0]]!r}?" if near else ""
-        return f"{where}: unknown key{hint} (allowed: {', '.join(allowed)})"
-    if kind == "missing":
-        return f"{where}: missing required field"
-    if kind in ("union_tag_invalid", "union_tag_not_found"):
+    err = {**err, "loc": tuple(loc)}
+    if err["type"] in ("union_tag_invalid", "union_tag_not_found"):
         tag = err.get("ctx", {}).get("tag", "")
         near = difflib.get_close_matches(str(tag), list(KINDS), n=1)
         hint = f"; did you mean {near[0]!r}?" if near and tag else ""
         what = f"unknown kind {tag!r}" if tag else "missing kind"
-        return f"{where}.kind: {what}{hint} (allowed: {', '.join(KINDS)})"
-    if kind == "finite_number":
-        return f"{where}: must be a finite number (got {err.get('input')!r})"
-    if kind == "value_error":
-        return f"{where}: {msg.removeprefix('Value error, ')}"
-    got = err.get("input")
-    got_s = f" (got {got!r})" if not isinstance(got, (dict, list)) else ""
-    return f"{where}: {msg[0].lower() + msg[1:]}{got_s}"
+        return f"{loc_str(clean_loc(loc))}.kind: {what}{hint} (allowed: {', '.join(KINDS)})"
+
+    def allowed(parent: tuple) -> list[str]:
+        model = _model_at(clean_loc(parent), data)
+        return list(model.model_fields) if model else []
+
+    return describe(err, allowed)
 
 
 class _Err(Exception):
@@ -351,10 +329,7 @@ def parse_task2_case(data: dict, source: str = "<case>") -> Task2Case:
     try:
         case = Task2Case.model_validate(data)
     except ValidationError as exc:
-        errs = exc.errors()
-        # a misspelt key also makes the right one missing: report the misspelling
-        first = next((e for e in errs if e["type"] == "extra_forbidden"), errs[0])
-        raise CaseFileError(f"{source}: {_describe(first, data)}") from None
+        raise CaseFileError(f"{source}: {_describe(pick(exc.errors()), data)}") from None
     try:
         _check(case)
     except _Err as exc:
