@@ -142,6 +142,24 @@ def test_flywheel_on_a_faster_shaft_and_its_rim_speed():
     assert s["flywheel_rim_speed_limit"] == pytest.approx(math.sqrt(7e6 / 7200), rel=1e-12)  # 31.2 m/s
 
 
+def test_rim_speed_warning_states_the_limit_its_source_and_the_material():
+    import tomllib
+
+    data = tomllib.loads((CASES / "compressor.toml").read_text(encoding="utf-8"))
+    data["flywheel"] = {"speed_ratio": 4.0, "material": "cast-iron"}
+    r = analyze(parse_case(data), n_points=720)
+    rim = [w for w in r.warnings if w.startswith("flywheel as a rim: rim speed")]
+    assert len(rim) == 1, r.warnings
+    assert "exceeds the safe 31.2 m/s = √(σ/ρ) of a thin rotating ring" in rim[0]
+    assert "Timoshenko" in rim[0] and "for cast-iron: σ = 7 MPa, ρ = 7200 kg/m³" in rim[0]
+    data["flywheel"] = {"speed_ratio": 4.0, "density": 7000.0, "allowable_stress": 1e6}
+    r = analyze(parse_case(data), n_points=720)
+    rim = [w for w in r.warnings if w.startswith("flywheel as a rim: rim speed")]
+    assert "for the given material: σ = 1 MPa, ρ = 7000 kg/m³" in rim[0]      # not "steel"
+    data["flywheel"] = {}                                                     # the seed's: safe
+    assert not [w for w in analyze(parse_case(data), n_points=720).warnings if "rim speed" in w]
+
+
 # -- values the defects do touch: the seed's number, the program's, the defect ------------------
 
 def _seed_projection(v_q, phi):

@@ -372,6 +372,36 @@ def test_fewer_than_six_positions(tmp_path):
         parse_case(data, "x.toml")
 
 
+def test_no_positions_at_all(tmp_path):
+    _bad(tmp_path, POS, "positions_deg = []", "tabulated.positions_deg: no positions",
+         "allowed: 6 or more")
+
+
+def test_values_that_overflow_are_named(tmp_path):
+    # finite in the file, but 255.1·(1e200)² is not a number any more
+    _bad(tmp_path, "B2 = [0.025, 0.032,", "B2 = [0.025, 1e200,", "tabulated.links.2:",
+         "overflows at position 2 (30°)")
+
+
+def test_a_machine_without_inertia_is_refused(tmp_path):
+    # every analogue 0: no J_II, no load fluctuation, so no flywheel and nothing to turn
+    import re
+
+    head, links = BASE.split("[tabulated.links]")
+    zero = re.sub(r"^(\s*(?!positions_deg)\"?\w+\"?\s*=\s*)\[([-\d.,\s]*)\]",
+                  lambda m: m.group(1) + "[" + ", ".join("0" for _ in m.group(2).split(",")) + "]",
+                  head, flags=re.M)
+    assert POS in zero and "B2 = [0, 0," in zero
+    text = zero + "[tabulated.links]" + links
+    path = tmp_path / "still.toml"
+    path.write_text(text, encoding="utf-8")
+    res = runner.invoke(app, ["run", str(path), "--no-plots", "--out", str(tmp_path / "o")])
+    assert res.exit_code == 2, res.output
+    assert res.stderr.startswith(f"error: {path}: the machine has no inertia"), res.stderr
+    assert len(res.stderr.strip().splitlines()) == 1
+    assert not (tmp_path / "o").exists()
+
+
 def test_mass_without_velocity_analogues(tmp_path):
     _bad(tmp_path, '"4" = { mass = 102.0, point = "B4" }', '"4" = { mass = 102.0 }',
          "tabulated.links.4.point", "no velocity analogues")

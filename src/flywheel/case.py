@@ -158,7 +158,7 @@ class PointSpec(_Model):
 class LinkSpec(_Model):
     """Mass data of a link."""
 
-    mass: NonNeg = Field(0.0, description="mass [kg]")
+    mass: float = Field(0.0, gt=0, description="mass [kg], > 0 (leave it out for a massless link)")
     J_S: NonNeg = Field(0.0, description="moment of inertia about the centroid [kg·m²]")
     centroid: str | None = Field(None, description="point where the mass sits")
 
@@ -360,6 +360,7 @@ def _check_references(case: Case) -> None:
     new_point(case.crank.pivot, ("crank", "pivot"))
     new_point(case.crank.tip, ("crank", "tip"))
     new_link(case.crank.name, ("crank", "name"))
+    on: dict[str, set[str]] = {case.crank.name: {case.crank.pivot, case.crank.tip}}  # link → its points
     pending = dict(case.points)
     sliders: set[str] = set()
 
@@ -369,7 +370,14 @@ def _check_references(case: Case) -> None:
             progress = False
             for name, p in list(pending.items()):
                 if p.link in links and p.from_ in points and (p.to is None or p.to in points):
+                    for key, q in (("from", p.from_), ("to", p.to)):
+                        if q is not None and q not in on[p.link]:
+                            raise _RefError(("points", name, key), f"point {q!r} is not on link "
+                                            f"{p.link} (its points: {', '.join(sorted(on[p.link]))}): "
+                                            f"a point fixed on a link is placed from that link's "
+                                            f"own points")
                     new_point(name, ("points", name))
+                    on[p.link].add(name)
                     del pending[name]
                     progress = True
 
@@ -384,15 +392,18 @@ def _check_references(case: Case) -> None:
             new_link(d.slider, ("dyads", i, "slider"))
             new_point(d.joint, ("dyads", i, "joint"))
             sliders.add(d.slider)
+            on[d.rod], on[d.slider] = {d.from_, d.joint}, {d.joint}
         elif isinstance(d, RRRSpec):
             known(d.to, ("dyads", i, "to"))
             new_link(d.link_from, ("dyads", i, "link_from"))
             new_link(d.link_to, ("dyads", i, "link_to"))
             new_point(d.joint, ("dyads", i, "joint"))
+            on[d.link_from], on[d.link_to] = {d.from_, d.joint}, {d.to, d.joint}
         else:
             known(d.pivot, ("dyads", i, "pivot"))
             new_link(d.rocker, ("dyads", i, "rocker"))
             new_link(d.slider, ("dyads", i, "slider"))
+            on[d.rocker], on[d.slider] = {d.pivot}, {d.from_}
     place_points()
     for name, p in pending.items():
         if p.link not in links:
@@ -405,6 +416,9 @@ def _check_references(case: Case) -> None:
             raise _RefError(("links", name), f"no link named {name!r} (links: {', '.join(sorted(links))})")
         if link.centroid is not None and link.centroid not in points:
             raise _RefError(("links", name, "centroid"), f"point {link.centroid!r} is not defined")
+        if link.centroid is not None and link.centroid not in on[name]:
+            raise _RefError(("links", name, "centroid"), f"point {link.centroid!r} is not on link "
+                            f"{name} (its points: {', '.join(sorted(on[name]))})")
     for i, c in enumerate(case.cylinders):
         if c.piston not in sliders:
             raise _RefError(("cylinders", i, "piston"), f"{c.piston!r} is not the slider of an RRP dyad "

@@ -25,14 +25,31 @@ def fail(message: str) -> None:
     raise typer.Exit(code=2)
 
 
-def _guard(func, *args, **kwargs):
-    """Call func; turn a FlywheelError into one clear line and exit 2."""
-    from flywheel.errors import FlywheelError
+def _guard(func, *args, source: Path | None = None, case=None, **kwargs):
+    """Call func; turn a FlywheelError into one clear line and exit 2. An error found while
+    computing a valid ``case`` (a dyad that cannot be assembled, loads whose work has the wrong
+    sign) is prefixed with the case file ``source`` and, where known, the field path."""
+    from flywheel.errors import CaseFileError, FlywheelError
 
     try:
         return func(*args, **kwargs)
     except FlywheelError as exc:
-        fail(str(exc))
+        msg = str(exc)
+        if source is not None and not isinstance(exc, CaseFileError) and not msg.startswith("--"):
+            where = _field_of(exc, case)
+            msg = f"{source}: {where}: {msg}" if where else f"{source}: {msg}"
+        fail(msg)
+
+
+def _field_of(exc: Exception, case) -> str:
+    """The case-file path of the dyad an AssemblyError names ('dyads[1]'), else ''."""
+    dyad = getattr(exc, "dyad", None)
+    if dyad is None or case is None:
+        return ""
+    for i, d in enumerate(case.dyads):   # named as case.to_mechanism names them
+        if dyad == (d.name or getattr(d, "joint", None) or d.rocker):
+            return f"dyads[{i}]"
+    return ""
 
 
 @app.command()
@@ -52,7 +69,7 @@ def check(case: Path = typer.Argument(..., help="Case file (TOML).")) -> None:
     from flywheel.render.check import print_check
 
     c = _guard(load_case, case)
-    _guard(print_check, c)
+    _guard(print_check, c, source=case, case=c)
 
 
 @app.command()
@@ -80,7 +97,8 @@ def run(
     from flywheel.render.tables import positions_csv, summary_json, table_csv
 
     c = _guard(load_case, case)
-    results = _guard(analyze, c, n_points=points, at_deg=at, transients=transients)
+    results = _guard(analyze, c, n_points=points, at_deg=at, transients=transients,
+                     source=case, case=c)
     out = out if out is not None else Path("out") / case.stem
     text_json = summary_json(results)
 

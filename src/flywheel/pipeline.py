@@ -299,6 +299,15 @@ def dynamics(phi: np.ndarray, J_parts: dict, dJ_parts: dict, M_parts: dict, mach
 
     # -- motion ----------------------------------------------------------------------------------------
     J_I = max(J_req, J_first)            # what is really on the crank shaft
+    if not J_I + float(J_II.min()) > 0:
+        raise InputError("the machine has no inertia: the loads cause no fluctuation of energy "
+                         "(ΔT_нб = 0, so no flywheel is sized), no link carries mass and nothing "
+                         "is on the crank shaft, so ω(φ) is undefined (allowed: masses in [links] "
+                         "or machine.first_group)")
+    if not all(np.isfinite(x) for x in (J_I, delta_T_max, float(np.max(np.abs(J_II))),
+                                          float(np.max(np.abs(A))))):
+        raise InputError("the results overflow: the case's values are out of range (allowed: SI "
+                         "units, m, kg, N, Pa)")
     T0 = motion.T0_for_mean_speed(A, J_I, J_II, omega_m)
     omega = motion.omega_from_energy(T0, A, J_I, J_II)
     w_max, w_min, w_mean, delta_ach = motion.speed_fluctuation(omega)
@@ -312,9 +321,13 @@ def dynamics(phi: np.ndarray, J_parts: dict, dJ_parts: dict, M_parts: dict, mach
     for shape, dims in (("disk", disk), ("rim", rim)):
         dims["rim_speed"] = w_max * fw.speed_ratio * dims["D"] / 2
         if dims["rim_speed"] > v_limit:
+            material = fw.material if fw.density is None and fw.allowable_stress is None \
+                else "the given material"
             warnings.append(f"flywheel as a {shape}: rim speed {dims['rim_speed']:.1f} m/s exceeds "
-                            f"{v_limit:.1f} m/s = √(σ/ρ) for {fw.material} (σ = {fw.sigma / 1e6:g} MPa, "
-                            f"ρ = {fw.rho:g} kg/m³)")
+                            f"the safe {v_limit:.1f} m/s = √(σ/ρ) of a thin rotating ring (hoop "
+                            f"stress σ = ρ·v², Timoshenko, Strength of Materials, part II) for "
+                            f"{material}: σ = {fw.sigma / 1e6:g} MPa, ρ = {fw.rho:g} kg/m³ (set "
+                            f"flywheel.allowable_stress, or a wider flywheel: width_ratio)")
 
     cols: dict[str, Column] = {}
     for name, J in J_parts.items():

@@ -56,7 +56,8 @@ class _Model(BaseModel):
 class TabLink(_Model):
     """Mass data of one link and the table rows it uses: J share = mass·V_q² + J·ω_q²."""
 
-    mass: float = Field(0.0, ge=0, description="mass m [kg], at `point`")
+    mass: float = Field(0.0, gt=0, description="mass m [kg], > 0, at `point` (leave it out for "
+                                               "a link that only turns)")
     point: str | None = Field(None, description="row of [tabulated.points] whose |V_q| the mass "
                                                 "moves with (its centroid, or the point the "
                                                 "course uses for it)")
@@ -135,6 +136,9 @@ class TabulatedSpec(_Model):
 def _validate(t: TabulatedSpec) -> None:
     p = t.positions_deg
     n = len(p)
+    if n == 0:
+        raise TableError(("positions_deg",), f"no positions (allowed: {MIN_POSITIONS} or more "
+                                             f"distinct angles within 0 … 360)")
     for i, a in enumerate(p):
         if not 0.0 <= a <= 360.0:
             raise TableError(("positions_deg", i), f"{a:g}° is outside the cycle (allowed: 0 … 360)")
@@ -207,6 +211,24 @@ def _validate(t: TabulatedSpec) -> None:
         if m.name in names:
             raise TableError(("moments", i, "name"), f"load name {m.name!r} is used twice")
         names.add(m.name)
+    _check_finite(t)
+
+
+def _check_finite(t: TabulatedSpec) -> None:
+    """Finite inputs can still overflow (m·V_q² with V_q = 1e200): name the row and position."""
+    with np.errstate(over="ignore", invalid="ignore"):
+        for name, J in link_inertia_at_positions(t).items():
+            if not np.all(np.isfinite(J)):
+                i = int(np.argmin(np.isfinite(J)))
+                raise TableError(("links", name), f"m·V_q² + J·ω_q² overflows at position {i + 1} "
+                                                  f"({t.positions_deg[i]:g}°): the values are out "
+                                                  f"of range (allowed: SI values, m and kg·m²)")
+        for name, M in load_moments_at_positions(t).items():
+            if not np.all(np.isfinite(M)):
+                i = int(np.argmin(np.isfinite(M)))
+                raise TableError((), f"the reduced moment of {name} overflows at position {i + 1} "
+                                     f"({t.positions_deg[i]:g}°): the values are out of range "
+                                     f"(allowed: SI values, N and m)")
 
 
 # -- per-position values (pure functions of the table; the tests check the seed with them) ------

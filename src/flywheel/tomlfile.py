@@ -13,7 +13,7 @@ def read_toml(path, what: str = "a TOML case file") -> dict:
     expected kind of file in the folder message."""
     path = Path(path)
     try:
-        text = path.read_bytes().decode("utf-8")
+        text = path.read_bytes().decode("utf-8-sig")   # a BOM (Windows editors) is no error
     except FileNotFoundError:
         raise CaseFileError(f"{path}: no such file") from None
     except IsADirectoryError:

@@ -61,10 +61,17 @@ def _rotation_of(r: np.ndarray, v: np.ndarray, a: np.ndarray) -> tuple:
     return np.arctan2(r[:, 1], r[:, 0]), _cross(r, v) / rr, _cross(r, a) / rr
 
 
-def _fail_where(bad: np.ndarray, phi: np.ndarray, what: str) -> None:
+def _fail_where(bad: np.ndarray, phi: np.ndarray, what: str, dyad: str | None = None,
+                need=None) -> None:
+    """Raise AssemblyError naming the group and the first crank angle where ``bad`` holds;
+    ``need()`` says what would assemble it (a length, a reach)."""
     if np.any(bad):
         deg = np.degrees(phi[np.argmax(bad)])
-        raise AssemblyError(f"{what} cannot be assembled at crank angle φ = {deg:.2f}°")
+        need = need() if need is not None else ""
+        err = AssemblyError(f"{what} cannot be assembled at crank angle φ = {deg:.2f}°"
+                            + (f": {need}" if need else ""))
+        err.dyad = dyad
+        raise err
 
 
 def _crank(mech: Mechanism, phi: np.ndarray, points: dict, links: dict) -> None:
@@ -96,13 +103,18 @@ def _rrp(d: RRP, phi: np.ndarray, points: dict, links: dict) -> None:
     q = A.r - base
     qu, qn = q @ u, q @ nrm
     disc = d.rod_length**2 - qn**2
-    _fail_where(disc < 0, phi, f"dyad {d.name} (RRP, rod {d.rod})")
+    _fail_where(disc < 0, phi, f"dyad {d.name} (RRP, rod {d.rod})", d.name,
+                lambda: f"the rod ({d.rod_length:.6g} m) must be at least "
+                        f"{np.max(np.abs(qn)):.6g} m, the largest distance of {d.origin} from "
+                        f"the guide over the cycle")
     x = qu + d.branch * np.sqrt(disc)
     B = base + x[:, None] * u
     rel = B - A.r
     denom = rel @ u
     _fail_where(np.abs(denom) < 1e-12 * d.rod_length, phi,
-                f"dyad {d.name} (RRP, rod {d.rod} perpendicular to the guide)")
+                f"dyad {d.name} (RRP, rod {d.rod} perpendicular to the guide)", d.name,
+                lambda: "a dead position: make the rod longer than the largest distance of "
+                        f"{d.origin} from the guide")
     x1 = _dot(rel, A.v_q) / denom
     B1 = x1[:, None] * u
     rel1 = B1 - A.v_q
@@ -134,16 +146,21 @@ def _rrr(d: RRR, phi: np.ndarray, points: dict, links: dict) -> None:
     g = C.r - A.r
     D = np.sqrt(_dot(g, g))
     what = f"dyad {d.name} (RRR, links {d.link_a}–{d.link_b})"
-    _fail_where(D == 0, phi, what)
-    p = (d.length_a**2 - d.length_b**2 + D**2) / (2 * D)
-    h2 = d.length_a**2 - p**2
-    _fail_where(h2 < 0, phi, what)
+    a, b = d.length_a, d.length_b
+    def need():
+        return (f"the distance {d.point_a}–{d.point_b} ranges over {D.min():.6g} … {D.max():.6g} "
+                f"m, the links ({a:.6g} and {b:.6g} m) reach only {abs(a - b):.6g} … {a + b:.6g} m")
+
+    _fail_where(D == 0, phi, what, d.name, need)
+    p = (a**2 - b**2 + D**2) / (2 * D)
+    h2 = a**2 - p**2
+    _fail_where(h2 < 0, phi, what, d.name, need)
     gu = g / D[:, None]
     perp = np.stack([-gu[:, 1], gu[:, 0]], axis=1)
     B = A.r + p[:, None] * gu + d.branch * np.sqrt(h2)[:, None] * perp
     ra, rc = B - A.r, B - C.r
     _fail_where(np.abs(_cross(ra, rc)) < 1e-12 * d.length_a * d.length_b, phi,
-                f"{what} (links in line: a dead position)")
+                f"{what} (links in line: a dead position)", d.name, need)
     B1 = _solve2(ra, rc, _dot(ra, A.v_q), _dot(rc, C.v_q))
     va, vc = B1 - A.v_q, B1 - C.v_q
     B2 = _solve2(ra, rc, _dot(ra, A.a_q) - _dot(va, va), _dot(rc, C.a_q) - _dot(vc, vc))
@@ -165,7 +182,10 @@ def _rpr(d: RPR, phi: np.ndarray, points: dict, links: dict) -> None:
     rho2 = _dot(dr, dr)
     disc = rho2 - d.offset**2
     what = f"dyad {d.name} (RPR, rocker {d.rocker})"
-    _fail_where(disc <= 0, phi, what)
+    _fail_where(disc <= 0, phi, what, d.name,
+                lambda: f"the slide line's offset ({abs(d.offset):.6g} m) must be smaller than "
+                        f"the distance {d.pivot}–{d.origin}, which falls to "
+                        f"{np.sqrt(rho2.min()):.6g} m")
     s = d.branch * np.sqrt(disc)
     theta = np.arctan2(dr[:, 1], dr[:, 0]) - np.arctan2(d.offset, s)
     u = np.stack([np.cos(theta), np.sin(theta)], axis=1)
