@@ -38,23 +38,28 @@ def test_check_compressor_prints_the_case_and_its_dead_centres():
     out = res.stdout
     assert "Two-stage V-type air compressor" in out
     assert "case is valid" in out
-    for title in ("Mechanism", "Links", "Cylinders", "Kinematics at the dead centres"):
+    for title in ("Mechanism", "Links", "Cylinders", "Dead centres", "Points at the dead centres",
+                  "Links at the dead centres"):
         assert title in out
     assert res.stderr == ""
-    dead = {(r[0], r[1], r[2], r[4]): r for r in rows(out) if len(r) == 7 and r[1] in ("outer", "inner")}
-    # piston 3 (B, vertical) at its top at φ = 0 and bottom at 180°; piston 5 (C) at 90° and 270°
-    assert set(dead) == {
-        ("3", "outer", "0.0000", "A"), ("3", "outer", "0.0000", "B"),
-        ("3", "inner", "180.0000", "A"), ("3", "inner", "180.0000", "B"),
-        ("5", "outer", "90.0000", "A"), ("5", "outer", "90.0000", "C"),
-        ("5", "inner", "270.0000", "A"), ("5", "inner", "270.0000", "C"),
-    }
-    # x = l2 ± l1 = 0.5 / 0.3 m; the piston's |v_q| = 0 there, |a_q| = l1·(1 ± l1/l2) = 0.125 / 0.075
-    assert dead[("3", "outer", "0.0000", "B")][3:] == ["0.5", "B", "0", "0.125"]
-    assert dead[("3", "inner", "180.0000", "B")][3:] == ["0.3", "B", "0", "0.075"]
-    assert dead[("5", "outer", "90.0000", "C")][3:] == ["0.5", "C", "0", "0.125"]
-    strokes = [r for r in rows(out) if len(r) == 7 and r[1] == "stroke"]
+    for unit in ("mass [kg]", "J_S [kg·m²]", "bore [m]", "x along guide [m]", "|v_q| [m/rad]"):
+        assert unit in out                      # headers keep their units (not eaten as markup)
+    dead = {(r[0], r[1]): r[2:] for r in rows(out) if len(r) == 4 and r[1] in ("outer", "inner")}
+    # piston 3 (B, vertical) at its top at φ = 0 and bottom at 180°; piston 5 (C) at 90° and 270°;
+    # x = l2 ± l1 = 0.5 / 0.3 m
+    assert dead == {("3", "outer"): ["0.0000", "0.5"], ("3", "inner"): ["180.0000", "0.3"],
+                    ("5", "outer"): ["90.0000", "0.5"], ("5", "inner"): ["270.0000", "0.3"]}
+    strokes = [r for r in rows(out) if len(r) == 4 and r[1] == "stroke"]
     assert [(r[0], r[3]) for r in strokes] == [("3", "0.2"), ("5", "0.2")]   # 2·l1
+    points = {r[0]: r[1:] for r in rows(out) if len(r) == 7 and r[0].endswith(".0000")}
+    # columns O, A, B, S2, C, S4: the pistons stand still at their dead centres with
+    # |a_q| = l1·(1 ± l1/l2) = 0.125 / 0.075; the crank pin: |v_q| = |a_q| = l1
+    assert points["0.0000"][1:3] == ["0.1 / 0.1", "0 / 0.125"]
+    assert points["180.0000"][2] == "0 / 0.075"
+    assert points["90.0000"][4] == "0 / 0.125"
+    links = {r[0]: r[1:] for r in rows(out) if len(r) == 6 and r[0].endswith(".0000")}
+    # rod 2 at φ = 0: ω_q2 = λ = l1/l2 = 0.25, ε_q2 = 0 (the crank turns clockwise: ω_q1 = −1)
+    assert links["0.0000"][:2] == ["-1 / 0", "0.25 / 0"]
 
 
 @pytest.mark.parametrize("name, expected", [

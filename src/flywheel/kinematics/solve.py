@@ -4,6 +4,14 @@ For every named point: position r, velocity analogue v_q = dr/dφ [m/rad] and ac
 analogue a_q = d²r/dφ² [m/rad²], each an (N, 2) array. For every link: angle θ [rad],
 ω_q = dθ/dφ and ε_q = d²θ/dφ² (design.md §2–3). Closed-form positions; analogues from the
 closure equations differentiated once and twice (exact, no finite differences).
+
+Sources: the mechanism as a crank plus Assur groups of the second class (RRR, RRP, RPR) and
+their analytical kinematics by vector closure — И. И. Артоболевский, «Теория механизмов и
+машин», 4-е изд., М.: Наука, 1988, гл. 3 (structure) and гл. 4 (kinematics of the groups);
+the analogues of velocity and acceleration (передаточные функции) as seed 000 computes them
+(V_q = d/dφ, a_q = d²/dφ² of the position functions); the slider-crank's closed forms that
+the tests use — R. L. Norton, «Design of Machinery», 5th ed., ch. 4 and 7 (offset slider-crank
+position and acceleration).
 """
 from __future__ import annotations
 

@@ -9,6 +9,17 @@ def _g(x: float) -> str:
     return f"{0.0 if abs(x) < 1e-12 else x:.6g}"
 
 
+def _table(title: str, columns):
+    """A rich table whose title and headers are plain text (units in brackets stay)."""
+    from rich.markup import escape
+    from rich.table import Table
+
+    t = Table(title=escape(title))
+    for col in columns:
+        t.add_column(escape(col), justify="right" if col != columns[0] else "left")
+    return t
+
+
 def print_check(case, console=None) -> None:
     """Print the mechanism, links, cylinders and the kinematics at each slider's dead centres.
 
@@ -59,19 +70,16 @@ def print_check(case, console=None) -> None:
     console.print(t)
 
     if case.links:
-        t = Table(title="Links")
-        for col in ("link", "mass [kg]", "J_S [kg·m²]", "centroid"):
-            t.add_column(col)
+        t = _table("Links", ("link", "mass [kg]", "J_S [kg·m²]", "centroid"))
         for name, lk in case.links.items():
-            t.add_row(name, f"{lk.mass:g}", f"{lk.J_S:g}", lk.centroid or "—")
+            t.add_row(name, f"{lk.mass:g}" if lk.mass else "—", f"{lk.J_S:g}", lk.centroid or "—")
         console.print(t)
     if m.first_group:
         console.print("first group (on the crank shaft): " + ", ".join(
             f"{k} = {v:g} kg·m²" for k, v in m.first_group.items()))
     if case.cylinders:
-        t = Table(title="Cylinders")
-        for col in ("name", "piston", "bore [m]", "p_max [MPa]", "head", "interpolation", "points"):
-            t.add_column(col)
+        t = _table("Cylinders", ("name", "piston", "bore [m]", "p_max [MPa]", "head",
+                                 "interpolation", "points"))
         for cy in case.cylinders:
             t.add_row(cy.name, cy.piston, f"{cy.bore:g}", f"{cy.p_max / 1e6:g}", cy.head,
                       cy.interpolation, str(len(cy.s)))
@@ -79,55 +87,67 @@ def print_check(case, console=None) -> None:
 
     sliders = [d.slider for d in mech.dyads if hasattr(d, "guide")]
     if sliders:
-        t = Table(title="Kinematics at the dead centres")
-        for col in ("slider", "dead centre", "φ [deg]", "x along guide [m]", "point", "|v_q| [m]",
-                    "|a_q| [m]"):
-            t.add_column(col)
+        t = _table("Dead centres", ("slider", "dead centre", "φ [deg]", "x along guide [m]"))
+        angles: list[float] = []
         for s in sliders:
-            d = next(dd for dd in mech.dyads if getattr(dd, "slider", None) == s and hasattr(dd, "guide"))
             dcs = dead_centres(mech, s)
-            k = solve(mech, np.array([dc.phi for dc in dcs]))
-            for i, dc in enumerate(dcs):
-                for pname in (c.tip, d.joint):
-                    pm = k.points[pname]
-                    t.add_row(s, dc.kind, f"{math.degrees(dc.phi):.4f}", f"{dc.x:.6g}", pname,
-                              _g(np.linalg.norm(pm.v_q[i])), _g(np.linalg.norm(pm.a_q[i])))
+            for dc in dcs:
+                t.add_row(s, dc.kind, f"{math.degrees(dc.phi):.4f}", f"{dc.x:.6g}")
+                if not any(abs(dc.phi - a) < 1e-9 for a in angles):
+                    angles.append(dc.phi)
             stroke = (max(dc.x for dc in dcs) - min(dc.x for dc in dcs)) if len(dcs) > 1 else 0.0
-            t.add_row(s, "stroke", "", f"{stroke:.6g}", "", "", "")
+            t.add_row(s, "stroke", "", f"{stroke:.6g}")
         console.print(t)
+        if angles:
+            angles.sort()
+            k = solve(mech, np.array(angles))
+            t = _table("Points at the dead centres: |v_q| [m/rad] / |a_q| [m/rad²]",
+                       ("φ [deg]", *k.points))
+            for i, a in enumerate(angles):
+                t.add_row(f"{math.degrees(a):.4f}", *(
+                    f"{_g(np.linalg.norm(pm.v_q[i]))} / {_g(np.linalg.norm(pm.a_q[i]))}"
+                    for pm in k.points.values()))
+            console.print(t)
+            t = _table("Links at the dead centres: ω_q [-] / ε_q [1/rad]", ("φ [deg]", *k.links))
+            for i, a in enumerate(angles):
+                t.add_row(f"{math.degrees(a):.4f}", *(
+                    f"{_g(lm.omega_q[i])} / {_g(lm.eps_q[i])}" for lm in k.links.values()))
+            console.print(t)
     console.print("[green]case is valid[/green]")
 
 
 def _print_tabulated(case, console) -> None:
     """A case with tabulated kinematics: its table, one row per position, with Мст and J_II."""
-    from rich.table import Table
 
-    from flywheel.tabulated import reduced_inertia_at_positions, static_moments
+    from flywheel.tabulated import (dynamic_moments, inertia_derivative_at_positions,
+                                    reduced_inertia_at_positions, static_moments)
 
     tab, m = case.tabulated, case.machine
     console.print(f"[bold]{case.title or 'case'}[/bold]" + (f"  ({case.source})" if case.source else ""))
     console.print(f"crank speed n1 = {m.omega_mean / (2 * math.pi):.6g} rev/s, ω_m = {m.omega_mean:.6g} "
                   f"rad/s, δ = {m.delta:g}, balance: constant {m.balance} moment; J_II by "
                   f"{tab.interpolation}", markup=False)
-    t = Table(title="Tabulated kinematics (one row per position)")
-    cols = [("φ [deg]", tab.positions_deg)]
-    cols += [(f"|V_q| {k} [m]", v) for k, v in tab.points.items()]
-    cols += [(f"ω_q {k}", v) for k, v in tab.omega_q.items()]
-    cols += [("Мст [N·m]", static_moments(tab)), ("J_II [kg·m²]", reduced_inertia_at_positions(tab))]
-    t.add_column("#", justify="right")
-    for label, _ in cols:
-        t.add_column(label, justify="right")
-    for k in range(len(tab.positions_deg)):
-        t.add_row(str(k + 1), *(_g(float(v[k])) for _, v in cols))
-    console.print(t)
+    kin = [("φ [deg]", tab.positions_deg)]
+    kin += [(f"|V_q| {k} [m]", v) for k, v in tab.points.items()]
+    kin += [(f"ω_q {k}", v) for k, v in tab.omega_q.items()]
+    red = [("φ [deg]", tab.positions_deg), ("Мст [N·m]", static_moments(tab)),
+           ("J_II [kg·m²]", reduced_inertia_at_positions(tab)),
+           ("dJ_II/dφ [kg·m²]", inertia_derivative_at_positions(tab)),
+           ("Мдин [N·m]", dynamic_moments(tab, m.omega_mean))]
+    for title, cols in (("Tabulated kinematics (one row per position)", kin),
+                        (f"Reduced to the crank (Мдин = ω_m²/2·dJ_II/dφ, dJ_II/dφ by "
+                         f"{tab.interpolation})", red)):
+        t = _table(title, ("#", *(c[0] for c in cols)))
+        for k in range(len(tab.positions_deg)):
+            t.add_row(str(k + 1), *(_g(float(v[k])) for _, v in cols))
+        console.print(t)
     if tab.forces or tab.moments:
         console.print("loads: " + ", ".join(
             [f"{f.name} at {f.point} ({f.interpolation})" for f in tab.forces]
             + [f"moment {mo.name} ({mo.interpolation})" for mo in tab.moments]), markup=False)
-    t = Table(title="Links")
-    for col in ("link", "mass [kg]", "at", "J [kg·m²]", "ω_q row"):
-        t.add_column(col)
+    t = _table("Links", ("link", "mass [kg]", "at", "J [kg·m²]", "ω_q row"))
     for name, lk in tab.links.items():
-        t.add_row(name, f"{lk.mass:g}", lk.point or "—", f"{lk.J:g}", (lk.omega_q or name) if lk.J else "—")
+        t.add_row(name, f"{lk.mass:g}" if lk.mass else "—", lk.point or "—", f"{lk.J:g}",
+                  (lk.omega_q or name) if lk.J else "—")
     console.print(t)
     console.print("[green]case is valid[/green]")
