@@ -74,10 +74,25 @@ def test_same_input_gives_identical_files(tmp_path):
 
 def test_rerun_replaces_the_folder_whole(tmp_path):
     out = tmp_path / "o"
-    out.mkdir()
-    (out / "stale.txt").write_text("old")
+    assert run("run", CASES / "compressor.toml", "--out", out, "--points", "360").exit_code == 0
+    assert (out / "plots").is_dir()
+    (out / "stale.txt").write_text("old")           # an earlier output folder: replaced whole
     assert run("run", CASES / "compressor.toml", "--out", out, "--no-plots", "--points", "360").exit_code == 0
-    assert not (out / "stale.txt").exists()
+    assert not (out / "stale.txt").exists() and not (out / "plots").exists()
+
+
+def test_out_never_deletes_a_folder_it_did_not_write(tmp_path):
+    thesis = tmp_path / "thesis"
+    thesis.mkdir()
+    (thesis / "notes.txt").write_text("precious")
+    _one_error_line(run("run", CASES / "compressor.toml", "--out", thesis, "--no-plots"),
+                    f"--out {thesis}: the folder exists, is not empty and is not an earlier "
+                    "output folder (no summary.json)")
+    assert (thesis / "notes.txt").read_text() == "precious"
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["thesis"]   # no temporary left
+    empty = tmp_path / "empty"
+    empty.mkdir()
+    assert run("run", CASES / "compressor.toml", "--out", empty, "--no-plots", "--points", "360").exit_code == 0
 
 
 def _one_error_line(res, *fragments):
@@ -94,7 +109,9 @@ def test_output_folder_that_cannot_be_written(tmp_path):
     blocker.write_text("x")
     _one_error_line(run("run", CASES / "compressor.toml", "--out", blocker, "--no-plots"), "--out", "not a folder")
     _one_error_line(run("run", CASES / "compressor.toml", "--out", blocker / "sub", "--no-plots"),
-                    "--out", "cannot be written")
+                    f"--out {blocker / 'sub'}: {blocker} is a file, not a folder")
+    _one_error_line(run("run", CASES / "compressor.toml", "--out", "/proc/flywheel-out", "--no-plots"),
+                    "--out /proc/flywheel-out: cannot be written")
 
 
 def test_bad_options(tmp_path):

@@ -275,7 +275,7 @@ def test_out_refuses_a_folder_that_is_not_a_variants_folder(tmp_path, task2_dir)
     busy.mkdir()
     (busy / "thesis.tex").write_text("keep me")
     one_line_error(invoke(TASK2, "--count", 1, "--seed", 1, "--out", busy),
-                   "is not a variants folder")
+                   "is not an earlier variants folder (no answers.json)")
     assert (busy / "thesis.tex").read_text() == "keep me"
     # an earlier variants folder is replaced whole
     old = tmp_path / "old"

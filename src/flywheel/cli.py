@@ -76,7 +76,9 @@ def check(case: Path = typer.Argument(..., help="Case file (TOML).")) -> None:
 def run(
     case: Path = typer.Argument(..., help="Case file (TOML)."),
     out: Optional[Path] = typer.Option(None, "--out", "-o",
-                                       help="Output folder (default: out/<case name>)."),
+                                       help="Output folder (default: out/<case name>); "
+                                       "replaced whole if it is an earlier output folder, "
+                                       "refused if it holds anything else."),
     points: int = typer.Option(3600, "--points", help="Intervals of the φ grid over the cycle."),
     at: Optional[list[float]] = typer.Option(None, "--at", help="Report angle [deg]; repeatable "
                                              "(default: the case's output.at_deg, else 120)."),
@@ -120,7 +122,7 @@ def run(
 
         (folder / "report.md").write_text(report_markdown(results, lang, pngs), encoding="utf-8")
 
-    _guard(write_folder, out, build)
+    _guard(write_folder, out, build, "summary.json")
     if as_json:
         sys.stdout.write(text_json)
     else:

@@ -519,9 +519,6 @@ def write_variants(vs: VariantSet, out) -> Path:
     from flywheel.render.output import write_folder
 
     out = Path(out)
-    if out.is_dir() and any(out.iterdir()) and not (out / "answers.json").is_file():
-        raise InputError(f"--out {out}: exists and is not a variants folder (no answers.json); "
-                         "give a new folder (it would be replaced)")
 
     def build(folder: Path) -> None:
         for v in vs.variants:
@@ -530,4 +527,4 @@ def write_variants(vs: VariantSet, out) -> Path:
         (folder / "answers.csv").write_text(answers_csv(vs), encoding="utf-8")
         (folder / "students.csv").write_text(students_csv(vs), encoding="utf-8")
 
-    return write_folder(out, build)
+    return write_folder(out, build, "answers.json", "variants")

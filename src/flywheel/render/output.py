@@ -10,15 +10,23 @@ from pathlib import Path
 from flywheel.errors import InputError
 
 
-def write_folder(target: Path, build) -> Path:
+def write_folder(target: Path, build, marker: str, kind: str = "output") -> Path:
     """Call ``build(tmp_folder)`` to fill a fresh folder, then move it to ``target``.
 
-    Raises InputError (one line) if the parent cannot be written or ``target`` is a file.
+    An existing ``target`` is replaced whole, so it must be empty or an earlier folder of the
+    same kind, recognised by its ``marker`` file (summary.json, answers.json): a user's folder
+    given by mistake is never deleted. Raises InputError (one line) if the parent cannot be
+    written, a part of the path is a file, or ``target`` is someone else's folder.
     """
     target = Path(target)
+    for p in (target, *target.parents):
+        if p.exists() and not p.is_dir():
+            raise InputError(f"--out {target}: {p} is a file, not a folder")
+    if target.is_dir() and any(target.iterdir()) and not (target / marker).is_file():
+        raise InputError(f"--out {target}: the folder exists, is not empty and is not an earlier "
+                         f"{kind} folder (no {marker}); give a new or empty folder (an {kind} "
+                         f"folder is replaced whole)")
     parent = target.resolve().parent
-    if target.exists() and not target.is_dir():
-        raise InputError(f"--out {target}: exists and is not a folder")
     try:
         parent.mkdir(parents=True, exist_ok=True)
         tmp = Path(tempfile.mkdtemp(prefix=f".{target.name}.tmp-", dir=parent))
