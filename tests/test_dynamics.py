@@ -247,6 +247,31 @@ def test_seed_energy_extremes_reproduced_with_its_defects_and_corrected(fine_wor
     assert s["J_required"] / 4.223 - 1 == pytest.approx(0.083, abs=1e-3)
 
 
+def test_what_follows_from_the_seeds_J_PRI(worksheet):
+    """The seed's numbers downstream of J_PRI, against the program's on the same inputs
+    (worksheet column). Defect 6 (local ΔT_I minimum) makes J_PRI 8.3 % small, and with it the
+    flywheel; defect 8 (ω(φ) from a hard-coded J_I = 2.68, ε with J_II in place of J_PRI)
+    moves ω and ε at 120°."""
+    s, a = worksheet.scalars, worksheet.at[0]
+    # J_доп = J_PRI − J_10 − J_ред: seed 3.548, program 3.8986 (+9.9 %, defect 6)
+    assert s["J_flywheel"] == pytest.approx(3.8986, abs=5e-4)
+    assert s["J_flywheel"] / 3.548 - 1 == pytest.approx(0.099, abs=1e-3)
+    # the course's disk for it: seed D = 0.471 m, m = 127.67 kg; program 0.4805 m, 135.10 kg
+    disk = sizing.disk_course(s["J_flywheel"])
+    assert (disk["D"], disk["mass"]) == (pytest.approx(0.4805, abs=5e-5), pytest.approx(135.10, abs=5e-3))
+    # the rim: seed D = 0.523 m, m = 63.072 kg; program 0.5330 m, 66.745 kg
+    rim = sizing.rim_course(s["J_flywheel"])
+    assert (rim["D"], rim["mass"]) == (pytest.approx(0.5330, abs=5e-5), pytest.approx(66.745, abs=5e-4))
+    # at 120°: seed ω1 = −62.732, ε = 152.592 (defect 8); program −62.9015, 140.04 from the
+    # energy equation with the sized flywheel
+    assert a["phi_deg"] == 120.0
+    assert a["links"]["1"]["omega"] == pytest.approx(-62.9015, abs=5e-4)
+    assert a["epsilon"] == pytest.approx(140.04, abs=5e-3)
+    # the rods: seed ω2 = −8.032, ω4 = 13.689; program −8.0537, 13.7262 (only ω differs)
+    assert a["links"]["2"]["omega"] == pytest.approx(-8.0537, abs=5e-4)
+    assert a["links"]["4"]["omega"] == pytest.approx(13.7262, abs=5e-4)
+
+
 def test_seed_flywheel_gives_more_than_its_delta(fine_worksheet):
     """Defect 6 in physical terms: with the seed's J_PRI = 4.223 on the true loads the speed
     fluctuates by δ = 0.054 > 0.05."""
@@ -290,8 +315,25 @@ def test_true_velocities_from_the_seeds_omega_and_epsilon(printed):
 
 # -- independent checks ------------------------------------------------------------------------
 
-def test_work_over_a_cycle_is_zero_after_balancing(printed):
-    A = printed.columns["A"].values
+@pytest.mark.parametrize("name", ["compressor.toml", "compressor_worksheet.toml"])
+def test_cycle_work_is_the_area_of_the_indicator_diagrams(name):
+    """The gas forces' work over a cycle is the area of each indicator diagram, independent of
+    the linkage and of the φ integration: −p_max·(πd²/4)·stroke·∫₀¹(p_towards − p_away) ds, with
+    the tables' natural splines integrated by scipy (gravity does no net work). The balancing
+    moment then makes A(Φ) = 0."""
+    from scipy.interpolate import CubicSpline
+
+    case = load_case(CASES / name)
+    r = analyze(case)
+    stroke = 2 * case.crank_length                    # both guides pass through the crank axis
+    area = 0.0
+    for cy in case.cylinders:
+        up = CubicSpline(cy.s, cy.towards_head, bc_type="natural").integrate(0, 1)
+        down = CubicSpline(cy.s, cy.away_from_head, bc_type="natural").integrate(0, 1)
+        area += -cy.p_max * math.pi * cy.bore**2 / 4 * stroke * (up - down)
+    assert r.scalars["cycle_work_resistance"] == pytest.approx(area, rel=1e-6)
+    assert r.scalars["driving_moment"] == pytest.approx(-area / (2 * math.pi), rel=1e-6)
+    A = r.columns["A"].values
     assert abs(A[-1]) < 1e-9 * np.max(np.abs(A))
 
 
@@ -328,10 +370,11 @@ def test_delta_achieved(printed):
     assert 0.5 * (s["omega_max"] + s["omega_min"]) == pytest.approx(s["omega_mean"], rel=1e-9)
 
 
-def test_convergence_with_a_finer_grid():
+@pytest.mark.parametrize("name", ["compressor.toml", "slotted_link.toml", "fourbar.toml"])
+def test_convergence_with_a_finer_grid(name):
     """Headline results change by less than 1e-4 relative between the default grid and one
-    four times finer."""
-    case = load_case(CASES / "compressor.toml")
+    four times finer (the slotted link has a cutting force over part of the ram's stroke)."""
+    case = load_case(CASES / name)
     a, b = analyze(case).scalars, analyze(case, n_points=4 * 3600).scalars
     for key in ("cycle_work_resistance", "driving_moment", "delta_T_max", "J_II_mean", "J_required",
                 "J_required_exact", "J_flywheel", "delta_achieved", "delta_achieved_exact"):
@@ -339,6 +382,20 @@ def test_convergence_with_a_finer_grid():
 
 
 # -- closed forms ------------------------------------------------------------------------------
+
+def test_cutting_force_work_is_force_times_travel():
+    """cases/slotted_link.toml: 1500 N over s = 0.05 … 0.95 of the ram's stroke on one stroke:
+    A_C = −1500·0.9·stroke, the stroke from the dead centres the program finds."""
+    case = load_case(CASES / "slotted_link.toml")
+    r = analyze(case, n_points=720)
+    from flywheel.case import to_mechanism
+    from flywheel.kinematics.deadcentres import dead_centres
+
+    xs = [dc.x for dc in dead_centres(to_mechanism(case), "5")]
+    stroke = max(xs) - min(xs)
+    assert stroke == pytest.approx(0.541667, abs=5e-7)        # the case's comment: 0.541667 m
+    # exact up to the dead centres' own precision (6·10⁻¹⁰ relative)
+    assert r.scalars["cycle_work_resistance"] == pytest.approx(-1500 * 0.9 * stroke, rel=1e-8)
 
 def _slider_crank_case(balance="driving", masses=False, towards=1.0, away=0.0):
     """A centric horizontal slider-crank r = 0.05, l = 0.2, one cylinder with constant p/p_max

@@ -107,6 +107,41 @@ def technological_moment(x: np.ndarray, x_dot: np.ndarray, x_ref: float, x_other
     return F, -F * np.abs(x_dot)
 
 
+def technological_work(x: np.ndarray, x_ref: float, x_other: float, magnitude: float,
+                       s_range: tuple[float, float], stroke: str) -> np.ndarray:
+    """Cumulative work A(φ) [J] of the force of :func:`technological_moment`, exact on the grid:
+    in each interval the slider moves one way (the dead centres are grid nodes), so the force
+    does −F·(travel inside s_range) there, with the travel from the clipped ends
+    s0, s1 ∈ [s_lo, s_hi]: −F·|x_other − x_ref|·|clip(s1) − clip(s0)|. The trapezoid rule on
+    M = −F·|x_dot| is only first-order where the force switches on and off inside an interval.
+
+    >>> x = np.array([0.0, 0.5, 1.0, 0.5, 0.0])        # a stroke out and back, stroke 1 m
+    >>> technological_work(x, 0.0, 1.0, 100.0, (0.2, 0.6), "away")
+    array([  0., -30., -40., -40., -40.])
+    """
+    s = relative_travel(x, x_ref, x_other)
+    lo, hi = s_range
+    sc = np.clip(s, lo, hi)
+    moving_away = np.diff(s) > 0
+    active = np.ones(moving_away.size, bool)
+    if stroke == "towards":
+        active = ~moving_away
+    elif stroke == "away":
+        active = moving_away
+    dW = -magnitude * abs(x_other - x_ref) * np.abs(np.diff(sc)) * active
+    return np.concatenate([[0.0], np.cumsum(dW)])
+
+
+def travel_crossings(x: np.ndarray, x_bounds) -> np.ndarray:
+    """Indices i of the intervals [i, i+1] inside which x crosses one of ``x_bounds`` (the
+    positions where a technological force switches on or off), for refining the grid."""
+    out = []
+    for xb in x_bounds:
+        d = x - xb
+        out.append(np.nonzero(d[:-1] * d[1:] < 0)[0])
+    return np.unique(np.concatenate(out)) if out else np.array([], int)
+
+
 def gravity_moment(mass: float, gravity: np.ndarray, v_q: np.ndarray) -> np.ndarray:
     """Reduced moment of a link's weight [N·m]: M = m·g⃗·v_qS (design.md §2). The seed projects
     v_qS on a direction that turns with the crank instead (seeds README, defect 5)."""

@@ -31,6 +31,49 @@ def _grid(n_points: int, extra: list[float]) -> np.ndarray:
     return phi
 
 
+MAX_POINTS = 100_000      # ≈ 0.5 GB of arrays; far past convergence (tests/test_dynamics.py)
+
+
+def grid_options(case, n_points: int, at_deg: list[float] | None) -> list[float]:
+    """Check --points and --at; the report angles [deg] (default: the case's output.at_deg)."""
+    if not 36 <= n_points <= MAX_POINTS:
+        raise InputError(f"--points: {n_points} is out of range (allowed: 36 … {MAX_POINTS}; "
+                         f"results converge well before: the default {DEFAULT_POINTS} is within "
+                         f"1e-4 of a 4× finer grid)")
+    at_deg = list(case.output.at_deg if at_deg is None else at_deg)
+    for a in at_deg:
+        if not math.isfinite(a):
+            raise InputError(f"--at: {a} is not a finite angle in degrees")
+    return at_deg
+
+
+def _force_switch_angles(case, mech, dcs, phi: np.ndarray, kin) -> list[float]:
+    """Crank angles [rad] where a technological force's slider reaches the ends of its s_range
+    (the force switches on or off): found in the grid's intervals, refined by Newton's method
+    on x(φ) with the exact analogue x' (4 steps: quadratic convergence from h ≤ 2π/36)."""
+    out: list[float] = []
+    for f in case.forces:
+        d = slider_dyad(mech, f.slider)
+        u, base = guide_frame(d)
+        kinds = {dc.kind: dc for dc in dcs[f.slider]}
+        ref, other = (kinds["outer"], kinds["inner"]) if f.reference == "outer" else (kinds["inner"], kinds["outer"])
+        x = (kin.points[d.joint].r - base) @ u
+        for s_b in f.s_range:
+            if not 0.0 < s_b < 1.0:
+                continue                    # the dead centres are nodes already
+            x_b = ref.x + s_b * (other.x - ref.x)
+            i = loads.travel_crossings(x, [x_b])
+            if i.size == 0:
+                continue
+            a = 0.5 * (phi[i] + phi[i + 1])
+            for _ in range(4):
+                k = solve(mech, a)
+                xa = (k.points[d.joint].r - base) @ u
+                a = np.clip(a - (xa - x_b) / (k.points[d.joint].v_q @ u), phi[i], phi[i + 1])
+            out += [float(v) for v in a]
+    return out
+
+
 def _extremes(x: np.ndarray) -> tuple[float, float]:
     return float(np.min(x)), float(np.max(x))
 
@@ -50,12 +93,7 @@ def analyze(case, n_points: int = DEFAULT_POINTS, at_deg: list[float] | None = N
         return analyze_tabulated(case, n_points, at_deg, transients)
     from flywheel.case import to_mechanism
 
-    if n_points < 36:
-        raise InputError(f"--points: {n_points} is too few (allowed: 36 or more)")
-    at_deg = list(case.output.at_deg if at_deg is None else at_deg)
-    for a in at_deg:
-        if not math.isfinite(a):
-            raise InputError(f"--at: {a} is not a finite angle in degrees")
+    at_deg = grid_options(case, n_points, at_deg)
     mech = to_mechanism(case)
     machine = case.machine
     warnings: list[str] = []
@@ -74,12 +112,19 @@ def analyze(case, n_points: int = DEFAULT_POINTS, at_deg: list[float] | None = N
             else:
                 positions.append((label, dc.phi))
     positions.sort(key=lambda p: p[1])
-    phi = _grid(n_points, [p[1] for p in positions] + [math.radians(a) for a in at_deg])
+    extra = [p[1] for p in positions] + [math.radians(a) for a in at_deg]
+    phi = _grid(n_points, extra)
     kin = solve(mech, phi)
+    if case.forces:     # where a technological force switches on or off: nodes of the grid
+        switch = _force_switch_angles(case, mech, dcs, phi, kin)
+        if switch:
+            phi = _grid(n_points, extra + switch)
+            kin = solve(mech, phi)
     P, L = kin.points, kin.links
 
     # -- loads --------------------------------------------------------------------------------
     M_parts: dict[str, np.ndarray] = {}
+    W_parts: dict[str, np.ndarray] = {}      # exact cumulative works, where the trapezoid is not
     cyl_results: list[CylinderResult] = []
     columns: dict[str, Column] = {}
     for cy in case.cylinders:
@@ -119,6 +164,8 @@ def analyze(case, n_points: int = DEFAULT_POINTS, at_deg: list[float] | None = N
         ref, other = (kinds["outer"], kinds["inner"]) if f.reference == "outer" else (kinds["inner"], kinds["outer"])
         F, M = loads.technological_moment(x, x_dot, ref.x, other.x, f.magnitude, tuple(f.s_range), f.stroke)
         M_parts[f"force {f.name}"] = M
+        W_parts[f"force {f.name}"] = loads.technological_work(x, ref.x, other.x, f.magnitude,
+                                                              tuple(f.s_range), f.stroke)
         columns[f"F_{f.name}"] = Column(F, "N", f"technological force {f.name}", f"сила {f.name}")
     g = np.asarray(machine.gravity, float)
     for name, lk in case.links.items():
@@ -139,7 +186,7 @@ def analyze(case, n_points: int = DEFAULT_POINTS, at_deg: list[float] | None = N
         J, dJ = reduction.link_inertia(lk.mass, lk.J_S, v, a, lm.omega_q, lm.eps_q)
         J_parts[name], dJ_parts[name] = J, dJ
 
-    dyn = dynamics(phi, J_parts, dJ_parts, M_parts, case.machine, case.flywheel, warnings)
+    dyn = dynamics(phi, J_parts, dJ_parts, M_parts, case.machine, case.flywheel, warnings, W_parts)
     J_II, dJ_II, M_sum, M_known, omega, eps = (dyn[k] for k in ("J_II", "dJ_II", "M_sum", "M_known",
                                                              "omega", "epsilon"))
     J_I, driving_moment = dyn["J_I"], dyn["scalars"]["driving_moment"]
@@ -229,7 +276,7 @@ def analyze(case, n_points: int = DEFAULT_POINTS, at_deg: list[float] | None = N
 
 
 def dynamics(phi: np.ndarray, J_parts: dict, dJ_parts: dict, M_parts: dict, machine, fw,
-             warnings: list[str]) -> dict:
+             warnings: list[str], W_parts: dict | None = None) -> dict:
     """Energy → sizing → motion, shared by every route that yields J_II's parts and the reduced
     moments on a closed φ grid (linkage kinematics, tabulated kinematics).
 
@@ -247,8 +294,11 @@ def dynamics(phi: np.ndarray, J_parts: dict, dJ_parts: dict, M_parts: dict, mach
 
     # -- energy --------------------------------------------------------------------------------------
     M_known = sum(M_parts.values()) if M_parts else zero.copy()
-    work_known = float(energy.cumulative_work(M_known, phi)[-1])
-    M_const = energy.balancing_moment(M_known, phi)
+    W_parts = W_parts or {}
+    A_known = energy.cumulative_work(sum((M for k, M in M_parts.items() if k not in W_parts),
+                                         zero.copy()), phi) + sum(W_parts.values(), zero.copy())
+    work_known = float(A_known[-1])
+    M_const = -work_known / (phi[-1] - phi[0])          # the cycle balance (energy.balancing_moment)
     if abs(work_known) <= 1e-9 * float(energy.cumulative_work(np.abs(M_known), phi)[-1]):
         # only conservative loads (gravity, say): nothing to balance, round-off aside
         M_const, work_known = 0.0, 0.0
@@ -265,9 +315,8 @@ def dynamics(phi: np.ndarray, J_parts: dict, dJ_parts: dict, M_parts: dict, mach
             f"would have to be {-M_const:.6g} N·m ≤ 0 (allowed: driving forces must supply work; "
             f"for a compressor or press set machine.balance = \"driving\")")
     M_sum = M_known + M_const
-    A = energy.cumulative_work(M_sum, phi)
     A_const = M_const * phi
-    A_known = energy.cumulative_work(M_known, phi)
+    A = A_known + A_const
     if machine.balance == "driving":
         A_D, A_C = A_const, A_known
         cycle_work_resistance = work_known

@@ -355,17 +355,11 @@ def analyze_tabulated(case, n_points: int = 3600, at_deg: list[float] | None = N
     Same stages and Results as :func:`flywheel.pipeline.analyze`, with ``kinematics=None``
     (no positions: nothing to draw) and the table's positions as ``position_angles``.
     """
-    from flywheel.errors import InputError
-    from flywheel.pipeline import _grid, _transients, dynamics
+    from flywheel.pipeline import _grid, _transients, dynamics, grid_options
     from flywheel.results import Column, Results
 
     spec: TabulatedSpec = case.tabulated
-    if n_points < 36:
-        raise InputError(f"--points: {n_points} is too few (allowed: 36 or more)")
-    at_deg = list(case.output.at_deg if at_deg is None else at_deg)
-    for a in at_deg:
-        if not math.isfinite(a):
-            raise InputError(f"--at: {a} is not a finite angle in degrees")
+    at_deg = grid_options(case, n_points, at_deg)
     nodes = _nodes_rad(spec)
     phi = _grid(n_points, list(nodes) + [math.radians(a) for a in at_deg])
     kind_J = spec.interpolation
