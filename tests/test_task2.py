@@ -408,3 +408,121 @@ def test_mean_speed_with_unsteady_moments_names_the_speed():
             "resistance": {"kind": "constant", "value": 5.0}}
     with pytest.raises(CaseFileError, match=r"^n.toml: speed: a mean speed needs steady motion"):
         solve_case(parse_task2_case(data, "n.toml"), "n.toml")
+
+
+# -- zero-mean moments: steadiness judged against the size of the moments ----------------------
+
+ZERO_MEAN = {"speed": {"mean_rpm": 250.0}, "flywheel": {"J": 10.0},
+             "driving": {"kind": "harmonic", "a": [300.0], "b": [-500.0], "orders": [2]},
+             "resistance": {"kind": "constant", "value": 0.0}}
+
+
+@pytest.mark.parametrize("speed", [{"mean_rpm": 250.0}, {"omega0_rpm": 250.0}])
+def test_zero_mean_moments_are_steady(speed):
+    # M_D − M_C = 300 sin 2φ − 500 cos 2φ: ∮ = 0 exactly (its closed form gives 1.2e-13 J of
+    # round-off); A = 150(1 − cos 2φ) − 250 sin 2φ, so ΔT_нб = 2·√(150² + 250²)
+    r = solve_case(parse_task2_case({**ZERO_MEAN, "speed": speed}, "z.toml"), "z.toml")
+    assert r.steady and r.work_end == 0.0
+    assert r.omega_end == r.omega0
+    assert r.delta_T_max == pytest.approx(2 * math.hypot(150, 250), rel=1e-13)
+    if "mean_rpm" in speed:
+        assert r.omega_mean == pytest.approx(250 * PI / 30, rel=1e-15)
+
+
+@pytest.mark.parametrize("a,b", [(3e6, 5e6), (3e6, -5e6), (-300.0, 500.0)])
+def test_balance_of_a_zero_mean_moment_is_zero(a, b):
+    # ∮ (a sin 2φ + b cos 2φ) dφ = 0: the constant that balances it is 0, not a negative
+    # round-off (−1.95e-10 N·m for a = 3e6, b = 5e6) nor −0.0
+    x = t2.balance(lambda x: t2.harmonic(0.0, [a], [b], orders=[2]), lambda x: t2.constant(x),
+                   "resistance")
+    assert x == 0.0 and math.copysign(1.0, x) == 1.0
+    r = t2.solve(t2.harmonic(0.0, [a], [b], orders=[2]), t2.constant(x), 1e6, omega_mean=50.0)
+    assert r.steady
+
+
+def test_small_but_real_cycle_work_is_not_steady():
+    # the tolerance scales with the moments, not with the absolute size of the work
+    r = t2.solve(t2.harmonic(1e-6, [1e-3], orders=[2]), t2.constant(0.0), 1.0, omega0=1.0)
+    assert not r.steady
+    assert r.work_end == pytest.approx(2e-6 * PI, rel=1e-9)
+
+
+# -- crossings: clusters of close roots, tangencies, linear + harmonic ------------------------------
+
+@pytest.mark.parametrize("a1,a2", [(0.999, 0.5), (-0.999, -0.5), (0.999, -0.5), (-0.999, 0.5)])
+def test_close_harmonic_crossings(a1, a2):
+    # a1 sin φ + a2 sin 2φ = sin φ·(a1 + 2a2 cos φ): roots at 180° and at cos φ = −a1/(2a2),
+    # three roots within 5.2° (old sampling found one of them for a1 = a2·2·0.999 > 0)
+    p = t2.Piece(0.0, 2 * PI, 0.0, 0.0, ((1, a1, 0.0), (2, a2, 0.0)))
+    c = math.degrees(math.acos(-a1 / (2 * a2)))
+    want = sorted([c, 180.0, 360.0 - c])
+    assert [math.degrees(x) for x in t2.crossings(p)] == pytest.approx(want, abs=1e-9)
+    for x in t2.crossings(p):
+        assert p.value(x) == pytest.approx(0.0, abs=1e-14)
+
+
+def test_close_crossings_are_extremes_of_the_motion():
+    # the repro: M_D − M_C = 0.999 sin φ + 0.5 sin 2φ; A = 0.999(1 − cos φ) + 0.25(1 − cos 2φ)
+    # is largest at 177.437° and 182.563° (equal) and has a local minimum at 180°
+    r = t2.solve(t2.harmonic(10.0, [0.999, 0.5]), t2.constant(10.0), 1.0, omega0=10.0)
+    inner = [math.degrees(row.phi) for row in r.rows if row.kind == "crossing"]
+    c = math.degrees(math.acos(-0.999))
+    assert inner == pytest.approx([c, 180, 360 - c], abs=1e-9)
+    assert math.degrees(r.phi_omega_max) == pytest.approx(c, abs=1e-9)
+    assert r.delta_T_max == pytest.approx(0.999 * (1 - math.cos(math.radians(c)))
+                                          + 0.25 * (1 - math.cos(2 * math.radians(c))),
+                                          rel=1e-13)
+
+
+def test_tangent_zeros_are_not_crossings():
+    # 1 − cos 2φ touches 0 at 180° without changing sign: no crossing
+    assert t2.crossings(t2.Piece(0.0, 2 * PI, 1.0, 0.0, ((2, 0.0, -1.0),))) == []
+    # sin φ + ½ sin 2φ = sin φ·(1 + cos φ): a triple zero at 180° that changes sign once
+    roots = t2.crossings(t2.Piece(0.0, 2 * PI, 0.0, 0.0, ((1, 1.0, 0.0), (2, 0.5, 0.0))))
+    assert len(roots) == 1 and roots[0] == pytest.approx(PI, abs=1e-4)
+
+
+def test_linear_plus_harmonic_close_crossings_match_dense_sampling():
+    # a sloped piece (a line against a harmonic) with three roots 0.014 rad apart:
+    # compared with the sign changes on a grid 1e-6 rad apart
+    p = t2.Piece(2.0, 4.5, -1e-6 * (PI - 2.0), 1e-6, ((1, 0.9999, 0.0), (2, 0.5, 0.0)))
+    x = np.linspace(p.phi0, p.phi1, 2_500_001)
+    f = p.m0 + p.slope * (x - p.phi0) + 0.9999 * np.sin(x) + 0.5 * np.sin(2 * x)
+    i = np.nonzero(np.sign(f[1:]) != np.sign(f[:-1]))[0]
+    want = x[i] - f[i] * (x[i + 1] - x[i]) / (f[i + 1] - f[i])
+    assert len(want) == 3
+    assert t2.crossings(p) == pytest.approx(list(want), abs=1e-9)
+
+
+def test_crossings_of_many_orders():
+    # sin 7φ over 720°: a root every 180°/7 inside (27 of them), all simple
+    p = t2.Piece(0.0, 4 * PI, 0.0, 0.0, ((7, 1.0, 0.0),))
+    got = t2.crossings(p)
+    assert got == pytest.approx([i * PI / 7 for i in range(1, 28)], abs=1e-12)
+
+
+# -- non-finite results ----------------------------------------------------------------------------
+
+def test_nonfinite_names_the_first_quantity():
+    r = t2.seed_task("triangle")
+    assert t2.nonfinite(r) is None
+    import dataclasses
+
+    bad = dataclasses.replace(r, omega_max=math.inf)
+    assert t2.nonfinite(bad) == "omega_max = inf"
+    rows = list(r.rows)
+    rows[3] = dataclasses.replace(rows[3], A=math.nan)
+    assert t2.nonfinite(dataclasses.replace(r, rows=tuple(rows))) == "segments[3].A = nan"
+    # an area diagram without crossing angles has NaN angles by design: not an overflow
+    assert t2.nonfinite(t2.solve_areas([1.0, -1.0], J=1.0, omega0=1.0)) is None
+
+
+def test_readme_example_press():
+    # the README's example case: M_D = 1500·90/360 N·m; A falls by (1500 − 375)·π/2 over the
+    # punch and ΔT_нб = 1125·π/2 J; J = ΔT_нб/(δ·ω_ср²) with ω_ср = 120 rpm = 4π rad/s
+    r = solve_file("task2_readme_press.toml")
+    assert r.unknown == "driving" and r.M_D == pytest.approx(375.0, rel=1e-14)
+    assert r.delta_T_max == pytest.approx(1125 * PI / 2, rel=1e-14)
+    assert r.J_required == pytest.approx(1125 * PI / 2 / (0.05 * (4 * PI) ** 2), rel=1e-13)
+    assert math.degrees(r.phi_omega_max) == pytest.approx(90.0)
+    assert math.degrees(r.phi_omega_min) == pytest.approx(180.0)

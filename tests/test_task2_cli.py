@@ -214,3 +214,119 @@ value = "balance"
 """))
     assert res.exit_code == 2
     assert "flywheel.J: must be positive (got -1 kg·m²)" in err_text(res)
+
+
+# -- audit fixes -----------------------------------------------------------------------------------
+
+ZERO_MEAN = """
+[flywheel]
+J = 10
+[driving]
+kind = "harmonic"
+a = [300]
+b = [-500]
+orders = [2]
+[resistance]
+kind = "constant"
+value = 0
+"""
+
+
+def test_zero_mean_moments_with_a_mean_speed(tmp_path):
+    res = run("--case", _case(tmp_path, "[speed]\nmean_rpm = 250\n" + ZERO_MEAN), "--json")
+    assert res.exit_code == 0, res.output
+    d = json.loads(res.stdout)
+    assert d["steady"] is True and d["work_end"] == 0.0
+    assert d["rpm"]["omega_mean"] == pytest.approx(250.0, rel=1e-14)
+
+
+def test_zero_mean_moments_with_omega0_are_steady(tmp_path):
+    res = run("--case", _case(tmp_path, "[speed]\nomega0_rpm = 250\n" + ZERO_MEAN))
+    assert res.exit_code == 0, res.output
+    assert "not steady" not in res.stdout
+    assert "ω_max" in res.stdout
+
+
+def test_help_shows_the_units():
+    res = runner.invoke(app, ["task2", "--help"], env={"COLUMNS": "200"})
+    assert res.exit_code == 0, res.output
+    text = " ".join(res.stdout.split())
+    for unit in ("J [kg·m²]", "φ = 0 [rad/s]", "resistance graph [deg] (default 90)",
+                 "End of the resistance graph [deg]", "M_D [N·m]"):
+        assert unit in text, unit
+
+
+OVERFLOW = "the values overflow"
+
+
+@pytest.mark.parametrize("args,match", [
+    (["--md", 1e308], (f"error: --md 1e+308: {OVERFLOW} (the cycle balance gives a "
+                       "resistance moment of inf N·m)")),
+    (["--md", 1e308, "--profile", "rectangle"], f"error: --md 1e+308: {OVERFLOW} ("),
+    (["--omega0", 1e200], f"error: --omega0 1e+200: {OVERFLOW} (omega_max = inf)"),
+    (["--delta", 1e-320], f"error: --delta 9.99989e-321: {OVERFLOW} (J_required = inf)"),
+    (["--from", 1e-300, "--to", 1e-299], f"error: --from 1e-300, --to 1e-299: {OVERFLOW} ("),
+    (["--mc", 1e308, "--omega0", 1e308],
+     f"error: --omega0 1e+308, --mc 1e+308: {OVERFLOW} (omega_max = inf)"),
+])
+def test_overflow_is_one_line(args, match):
+    for extra in ([], ["--json"]):
+        res = run(*args, *extra)
+        assert res.exit_code == 2, res.output
+        err = err_text(res)
+        assert err.startswith(match), err
+        assert err.count("\n") == 1 and "Infinity" not in res.output and "NaN" not in res.output
+
+
+def test_overflow_in_a_case_names_the_field(tmp_path):
+    res = run("--case", _case(tmp_path, GOOD.replace("value = 15", "value = 1e308") + """
+[resistance]
+kind = "triangle"
+from_deg = 90
+to_deg = 270
+peak = "balance"
+"""), "--json")
+    assert res.exit_code == 2, res.output
+    err = err_text(res)
+    assert err.startswith("error: ") and err.count("\n") == 1
+    assert "c.toml: driving.value: the values overflow (" in err, err
+
+
+@pytest.mark.parametrize("args", [["--profile", "rectangle"], ["--profile", "triangle"],
+                                  ["--profile", "rectangle", "--md", 3]])
+def test_case_rejects_profile(tmp_path, args):
+    res = run("--case", _case(tmp_path, GOOD + "[resistance]\nkind = \"constant\"\n"
+                                               "value = \"balance\"\n"), *args)
+    assert res.exit_code == 2, res.output
+    err = err_text(res)
+    assert err.startswith("error: --case takes its data from the file; drop --profile"), err
+    assert err.count("\n") == 1
+
+
+def test_case_that_is_a_folder(tmp_path):
+    res = run("--case", tmp_path)
+    assert res.exit_code == 2, res.output
+    assert err_text(res) == f"error: {tmp_path}: is a folder, expected a TOML case file\n"
+
+
+def test_plot_into_a_folder(tmp_path):
+    res = run("--plot", tmp_path)
+    assert res.exit_code == 2, res.output
+    err = err_text(res)
+    assert err == f"error: --plot {tmp_path}: is a folder, expected an image file\n"
+
+
+def test_unsteady_summary_prints_a_tiny_work_as_it_is():
+    # a real but tiny net work must not read "the work over the cycle is 0 J"
+    import io
+
+    from rich.console import Console
+
+    from flywheel import task2 as t2
+    from flywheel.render.task2 import print_summary
+
+    r = t2.solve(t2.constant(1e-13), t2.constant(0.0), 1.0, omega0=1.0)
+    assert not r.steady
+    out = io.StringIO()
+    print_summary(r, console=Console(file=out, width=200))
+    assert "the work over the cycle is 6.28319e-13 J" in out.getvalue()

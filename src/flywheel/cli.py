@@ -80,14 +80,14 @@ def run(
                                        "replaced whole if it is an earlier output folder, "
                                        "refused if it holds anything else."),
     points: int = typer.Option(3600, "--points", help="Intervals of the φ grid over the cycle."),
-    at: Optional[list[float]] = typer.Option(None, "--at", help="Report angle [deg]; repeatable "
+    at: Optional[list[float]] = typer.Option(None, "--at", help="Report angle \\[deg]; repeatable "
                                              "(default: the case's output.at_deg, else 120)."),
     no_plots: bool = typer.Option(False, "--no-plots", help="Skip the PNG plots (faster)."),
     as_json: bool = typer.Option(False, "--json", help="Print summary.json to stdout instead of "
                                                        "the rich summary."),
     lang: str = typer.Option("en", "--lang", help="Language of the summary and plots: en | ru."),
     transients: bool = typer.Option(False, "--transients", help="Also integrate the equation of "
-                                    "motion in time: check ω(φ), start-up (needs [motor]), run-down."),
+                                    "motion in time: check ω(φ), start-up (needs \\[motor]), run-down."),
 ) -> None:
     """Run the whole dynamic analysis of a case; write summary.json, table.csv, positions.csv
     and plots/*.png to the output folder."""

@@ -3,6 +3,10 @@
 Thin: parse the options, call :mod:`flywheel.task2` (or :mod:`flywheel.task2_case` for
 ``--case``), hand the result to :mod:`flywheel.render.task2`. Heavy imports live inside the
 function so that ``flywheel task2 --json`` starts fast.
+
+Help texts escape their units (``\\[deg]``): typer renders help through rich, which would read
+``[deg]``, ``[rad/s]`` or ``[kg·m²]`` as markup tags and drop them. ``[N·m]`` starts with a
+capital and is no tag, so it stays as it is.
 """
 from __future__ import annotations
 
@@ -13,31 +17,53 @@ import typer
 
 PROFILES = ("triangle", "rectangle")
 
+# |x| outside this range is a suspect when the results overflow double precision
+_SANE = (1e-100, 1e100)
+
+
+def _extreme(numbers: list[tuple[str, float]]) -> list[tuple[str, float]]:
+    """The (name, value) pairs of extreme magnitude: the likely cause of an overflow."""
+    return [(n, v) for n, v in numbers if v != 0 and not _SANE[0] <= abs(v) <= _SANE[1]]
+
+
+def _case_numbers(data, path: str = "") -> list[tuple[str, float]]:
+    """(field path, number) of every number in a case's fields, e.g. ("driving.value", 1e308)."""
+    out: list[tuple[str, float]] = []
+    if isinstance(data, dict):
+        for k, v in data.items():
+            out += _case_numbers(v, f"{path}.{k}" if path else str(k))
+    elif isinstance(data, (list, tuple)):
+        for i, v in enumerate(data):
+            out += _case_numbers(v, f"{path}[{i}]")
+    elif isinstance(data, (int, float)) and not isinstance(data, bool):
+        out.append((path, float(data)))
+    return out
+
 
 def task2_command(
-    profile: str = typer.Option(
-        "triangle", "--profile",
+    profile: Optional[str] = typer.Option(
+        None, "--profile",
         help="Seed 002 resistance graph: triangle (π/2…3π/2, peak in the middle) or rectangle "
-             "(π/2…π)."),
+             "(π/2…π) (default triangle)."),
     md: Optional[float] = typer.Option(None, "--md", help="Constant driving moment M_D [N·m] "
                                        "(default 15)."),
-    j: Optional[float] = typer.Option(None, "--j", help="Reduced moment of inertia J [kg·m²] "
-                                      "(default 12)."),
-    omega0: Optional[float] = typer.Option(None, "--omega0", help="ω at φ = 0 [rad/s] "
+    j: Optional[float] = typer.Option(None, "--j", help="Reduced moment of inertia J "
+                                      "\\[kg·m²] (default 12)."),
+    omega0: Optional[float] = typer.Option(None, "--omega0", help="ω at φ = 0 \\[rad/s] "
                                            "(default 200)."),
     start: Optional[float] = typer.Option(None, "--from", help="Start of the resistance "
-                                          "graph [deg] (default 90)."),
-    end: Optional[float] = typer.Option(None, "--to", help="End of the resistance graph [deg] "
+                                          "graph \\[deg] (default 90)."),
+    end: Optional[float] = typer.Option(None, "--to", help="End of the resistance graph \\[deg] "
                                         "(default 270 triangle, 180 rectangle)."),
     mc: Optional[float] = typer.Option(None, "--mc", help="Peak of the resistance [N·m] instead "
                                        "of the balance (the motion may not be steady)."),
     delta: Optional[float] = typer.Option(None, "--delta", help="Ask for the J that gives this "
                                           "δ at the same mean speed."),
     case: Optional[Path] = typer.Option(None, "--case", help="A task-2 case file (TOML), "
-                                        "see docs/task2.md.", dir_okay=False),
+                                        "see docs/task2.md; it gives all the data, so it takes "
+                                        "none of the options above."),
     plot: Optional[Path] = typer.Option(None, "--plot", help="Write a plot of M_D, M_C, A and "
-                                        "ω(φ) to this image file (.png, .svg, .pdf).",
-                                        dir_okay=False),
+                                        "ω(φ) to this image file (.png, .svg, .pdf)."),
     as_json: bool = typer.Option(False, "--json", help="Print the results as JSON."),
 ) -> None:
     """Task 2: ω_max, ω_min, ω_ср and δ of a machine with constant J under given M_D(φ), M_C(φ)."""
@@ -47,26 +73,33 @@ def task2_command(
     from flywheel.errors import FlywheelError, InputError
 
     title = source = ""
+    given = [(name, v) for name, v in (("--md", md), ("--j", j), ("--omega0", omega0),
+                                       ("--from", start), ("--to", end), ("--mc", mc),
+                                       ("--delta", delta)) if v is not None]
     try:
+        if plot is not None and plot.is_dir():
+            raise InputError(f"--plot {plot}: is a folder, expected an image file")
         if case is not None:
-            used = [name for name, v in (("--md", md), ("--j", j), ("--omega0", omega0),
-                                         ("--from", start), ("--to", end), ("--mc", mc),
-                                         ("--delta", delta)) if v is not None]
+            used = (["--profile"] if profile is not None else []) + [n for n, _ in given]
             if used:
                 raise InputError(f"--case takes its data from the file; drop {', '.join(used)}")
             from flywheel.task2_case import load_task2_case, solve_case
 
             c = load_task2_case(case)
-            result = solve_case(c, str(case))
+            blame = _case_numbers(c.model_dump())
+
+            def run():
+                return solve_case(c, str(case))
+
             title, source = c.title, c.source
         else:
             from flywheel.task2 import SEED_DEFAULTS, seed_task
 
+            profile = "triangle" if profile is None else profile
             if profile not in PROFILES:
                 raise InputError(f"--profile must be triangle or rectangle (got {profile!r})")
-            for name, v in (("--md", md), ("--j", j), ("--omega0", omega0), ("--mc", mc),
-                            ("--from", start), ("--to", end), ("--delta", delta)):
-                if v is not None and not math.isfinite(v):
+            for name, v in given:
+                if not math.isfinite(v):
                     raise InputError(f"{name} must be a finite number (got {v})")
             for name, v, unit in (("--md", md, "N·m"), ("--j", j, "kg·m²"),
                                   ("--omega0", omega0, "rad/s"), ("--mc", mc, "N·m")):
@@ -76,16 +109,39 @@ def task2_command(
                 raise InputError(f"--delta must lie between 0 and 2 (got {delta:g})")
             if start is not None and end is not None and start >= end:
                 raise InputError(f"--from ({start:g}°) must be less than --to ({end:g}°)")
-            result = seed_task(
-                profile,
-                M_D=SEED_DEFAULTS["M_D"] if md is None else md,
-                J=SEED_DEFAULTS["J"] if j is None else j,
-                omega0=SEED_DEFAULTS["omega0"] if omega0 is None else omega0,
-                start=None if start is None else math.radians(start),
-                end=None if end is None else math.radians(end),
-                M_C=mc, delta=delta)
+            blame = given
+
+            def run():
+                return seed_task(
+                    profile,
+                    M_D=SEED_DEFAULTS["M_D"] if md is None else md,
+                    J=SEED_DEFAULTS["J"] if j is None else j,
+                    omega0=SEED_DEFAULTS["omega0"] if omega0 is None else omega0,
+                    start=None if start is None else math.radians(start),
+                    end=None if end is None else math.radians(end),
+                    M_C=mc, delta=delta)
+
             title = f"Seed 002, {profile} resistance moment"
             source = "seed 002_10afb132413d2537.txt"
+        from flywheel.task2 import nonfinite
+
+        # inputs near the limits of double precision: no Infinity/NaN in the output (it is not
+        # JSON), and no traceback from inf − inf inside the formulas
+        try:
+            result = run()
+            why = nonfinite(result)
+        except FlywheelError:
+            raise
+        except (ArithmeticError, ValueError) as exc:
+            why = f"{exc.args[-1] if exc.args else type(exc).__name__}"
+        if why is not None:
+            if case is not None:     # "file: field, field: …" (the file alone if none stands out)
+                fields = [n for n, _ in _extreme(blame)]
+                who = f"{case}: {', '.join(fields)}" if fields else str(case)
+            else:                    # "--md 1e+308: …" (every given option if none stands out)
+                who = ", ".join(f"{n} {v:g}" for n, v in (_extreme(blame) or blame))
+            raise InputError(f"{who + ': ' if who else ''}the values overflow ({why}): the "
+                             "numbers are too large or too small for double precision")
         if plot is not None:
             from flywheel.render.task2 import plot as draw
 

@@ -14,7 +14,7 @@ import typer
 
 def variants_command(
     template: Path = typer.Argument(..., help="Template: a run or task2 case file plus a "
-                                    "[variants] table (see docs/teacher.md).",),
+                                    "\\[variants] table (see docs/teacher.md).",),
     count: int = typer.Option(..., "--count", "-n", help="How many variants."),
     out: Path = typer.Option(..., "--out", "-o", help="Output folder (written whole or not at "
                              "all; an earlier variants folder there is replaced)."),

@@ -12,7 +12,8 @@ gives the speed ``ω(φ)`` [rad/s]. Every piece is integrated in closed form (li
 harmonic series ``a0 + Σ (a_k·sin kφ + b_k·cos kφ)``); there is no numerical quadrature.
 ``ω`` is extreme where ``A`` is, i.e. at the sign changes of ``M_D − M_C``: at the breakpoints of
 the graphs (jumps) and at the crossings inside a piece, which are found exactly (linear pieces)
-or by bracketing and bisection to machine precision (harmonic pieces).
+or by a certified subdivision (Taylor bounds on the moment and its derivative, so no cluster
+of close roots is missed) and bisection to machine precision (harmonic pieces).
 
 Results (all SI): ``ω_max``, ``ω_min`` and their angles; ``ω_ср = (ω_max + ω_min)/2``;
 ``δ = (ω_max − ω_min)/ω_ср``; ``ΔT_нб = A_max − A_min`` [J]. Because
@@ -117,6 +118,28 @@ class Moment:
 
     def breakpoints(self) -> list[float]:
         return [p.phi0 for p in self.pieces] + [self.pieces[-1].phi1]
+
+
+def size(m: Moment) -> float:
+    """A bound on ∮|M| dφ [J] that also covers the round-off of the closed-form works.
+
+    Triangle inequality: on a piece, ``|M| ≤ max(|M(φ0)|, |M(φ1)|)`` for the linear part and
+    ``|a·sin kφ + b·cos kφ| ≤ R = √(a² + b²)``, so ∫|M| ≤ Σ [max(|m0|, |m1|) + Σ R]·h. The closed
+    form of ``Piece.work`` adds terms of size R/k (at most 2R/k per term) whose round-off is
+    what a zero-mean series leaves in ∮M dφ (1.2e-13 J for 300 sin 2φ − 500 cos 2φ), so they
+    are counted too. Steadiness and the cycle balance are judged relative to this size, never
+    relative to the net works, which vanish for zero-mean moments.
+
+    >>> round(size(harmonic(0.0, [3.0], [4.0], orders=[2])), 12) == round(5 * (TWO_PI + 1), 12)
+    True
+    """
+    total = 0.0
+    for p in m.pieces:
+        h = p.phi1 - p.phi0
+        total += max(abs(p.m0), abs(p.linear_at(p.phi1))) * h
+        for k, a, b in p.harmonics:
+            total += math.hypot(a, b) * (h + 2.0 / k)
+    return total
 
 
 def _check_cycle(cycle: float) -> None:
@@ -297,49 +320,118 @@ def _bisect(f: Callable[[float], float], lo: float, hi: float, flo: float) -> fl
     return 0.5 * (lo + hi)
 
 
+def _derivative(p: Piece, phi: float) -> float:
+    """dM/dφ of the piece's formula [N·m/rad]: slope + Σ k·(a·cos kφ − b·sin kφ)."""
+    d = p.slope
+    for k, a, b in p.harmonics:
+        d += k * (a * math.cos(k * phi) - b * math.sin(k * phi))
+    return d
+
+
+def _harmonic_crossings(p: Piece) -> list[float]:
+    """Sign changes of ``f = m0 + slope·(φ − φ0) + Σ (a·sin kφ + b·cos kφ)`` on the piece.
+
+    Certified subdivision: with ``R = √(a² + b²)`` each term has ``|d/dφ| ≤ k·R`` and
+    ``|d²/dφ²| ≤ k²·R`` (Cauchy–Schwarz), so ``L₂ = Σ k²·R`` bounds ``|f″|`` and Taylor's
+    theorem with the Lagrange remainder about the midpoint m of [m − r, m + r] gives::
+
+        |f(φ)|  ≥ |f(m)| − |f′(m)|·r − ½·L₂·r²    (> 0: no zero in the interval)
+        |f′(φ)| ≥ |f′(m)| − L₂·r                  (> 0: f monotone, one bisection finds the root)
+
+    An interval that passes neither test is halved. Each test keeps a margin for the round-off
+    of evaluating f and f′ (16 ulp of the sizes of their terms; the argument k·φ is rounded, so
+    a term's error grows with k·|φ|). Where f stays within that round-off of zero over a whole
+    interval (a tangency, or roots closer than round-off can separate) its sign is unknown; a
+    crossing is reported there only if the known signs on both sides differ: what makes ω
+    extreme is a sign change of M_D − M_C, and a touching zero is none.
+
+    Unlike sampling, this cannot step over a cluster of roots, and it also serves the pieces
+    where a sloped line meets a harmonic series (no polynomial substitution applies there).
+    """
+    eps = 2.220446049250313e-16
+    x_abs = max(abs(p.phi0), abs(p.phi1))
+    h = p.phi1 - p.phi0
+    L2 = err = err1 = 0.0
+    for k, a, b in p.harmonics:
+        R = math.hypot(a, b)
+        L2 += k * k * R
+        err += R * (1.0 + k * x_abs)
+        err1 += k * R * (1.0 + k * x_abs)
+    err = 16 * eps * (err + abs(p.m0) + abs(p.slope) * h)
+    err1 = 16 * eps * (err1 + abs(p.slope))
+    f = p.value
+
+    def sign(v: float) -> int:
+        return 0 if abs(v) <= err else (1 if v > 0.0 else -1)
+
+    # (lo, hi, sign at lo, sign at hi, root inside or None), left to right
+    segs: list[tuple[float, float, int, int, float | None]] = []
+
+    def visit(lo: float, hi: float, flo: float, fhi: float, depth: int) -> None:
+        m, r = 0.5 * (lo + hi), 0.5 * (hi - lo)
+        fm, dm = f(m), _derivative(p, m)
+        if abs(fm) - abs(dm) * r - 0.5 * L2 * r * r > err:          # no zero here
+            s = 1 if fm > 0.0 else -1
+            segs.append((lo, hi, s, s, None))
+            return
+        if abs(dm) - L2 * r > err1:                                  # monotone
+            s0, s1 = sign(flo), sign(fhi)
+            root = _bisect(f, lo, hi, flo) if s0 * s1 < 0 else None
+            segs.append((lo, hi, s0, s1, root))
+            return
+        if (abs(fm) + abs(dm) * r + 0.5 * L2 * r * r <= err or depth >= 64
+                or not lo < m < hi):                                 # f ≈ 0 to round-off
+            segs.append((lo, hi, 0, 0, None))
+            return
+        visit(lo, m, flo, fm, depth + 1)
+        visit(m, hi, fm, fhi, depth + 1)
+
+    visit(p.phi0, p.phi1, f(p.phi0), f(p.phi1), 0)
+
+    roots: list[float] = []
+    last = 0                                   # the last known sign
+    unknown: list[float] = []                  # [first, last] angle of unknown sign since then
+
+    def see(x: float, s: int) -> None:
+        nonlocal last, unknown
+        if s == 0:
+            unknown = [unknown[0] if unknown else x, x]
+            return
+        if last and s != last:                 # the sign changed across the unknown stretch
+            lo, hi = unknown or [x, x]
+            flo, fhi = f(lo), f(hi)
+            roots.append(_bisect(f, lo, hi, flo) if flo * fhi < 0.0 else 0.5 * (lo + hi))
+        last, unknown = s, []
+
+    for lo, hi, s0, s1, root in segs:
+        see(lo, s0)
+        if root is not None:
+            roots.append(root)
+            last, unknown = s1, []
+        see(hi, s1)
+    return [r for r in roots if p.phi0 < r < p.phi1]
+
+
 def crossings(p: Piece) -> list[float]:
     """Angles inside (phi0, phi1) where the piece's moment changes sign [rad].
 
-    Linear: the exact root. Harmonic: samples at most 1/64 of the shortest period apart,
-    then bisection of every bracket (a touching zero without a sign change is no extremum).
+    Linear: the exact root of m0 + slope·(φ − φ0) = 0. With harmonics: certified subdivision
+    by Taylor bounds on f and f′, then bisection to machine precision (see
+    ``_harmonic_crossings``); close clusters of roots are all found, and a touching zero
+    without a sign change is no extremum, so it is not reported.
 
     >>> crossings(Piece(math.pi / 2, math.pi, 15.0, -120.0 / math.pi))[0] / math.pi   # 5π/8
     0.625
+    >>> [round(math.degrees(x), 3) for x in crossings(Piece(0, 2 * math.pi, 0, 0,
+    ...                                                      ((1, 0.999, 0), (2, 0.5, 0))))]
+    [177.437, 180.0, 182.563]
     """
-    h = p.phi1 - p.phi0
     if not p.harmonics:
-        m1 = p.m0 + p.slope * h
+        m1 = p.m0 + p.slope * (p.phi1 - p.phi0)
         if (p.m0 < 0.0 < m1) or (m1 < 0.0 < p.m0):
             return [p.phi0 - p.m0 / p.slope]
         return []
-    kmax = max(k for k, _, _ in p.harmonics)
-    n = max(16, math.ceil(h * kmax * 64 / TWO_PI))
-    xs = [p.phi0 + h * i / n for i in range(n + 1)]
-    fs = [p.value(x) for x in xs]
-    # a zero at an end of the piece (a crossing at a bound) says nothing about the sign just
-    # inside: look a little further in, so a crossing close to the bound is not lost
-    eps = h * 1e-7
-    if fs[0] == 0.0:
-        fs[0] = p.value(p.phi0 + eps)
-        xs[0] = p.phi0 + eps
-    if fs[-1] == 0.0:
-        fs[-1] = p.value(p.phi1 - eps)
-        xs[-1] = p.phi1 - eps
-    roots: list[float] = []
-    last = 0  # index of the last sample with a nonzero value
-    while last <= n and fs[last] == 0.0:
-        last += 1
-    for i in range(last + 1, n + 1):
-        if fs[i] == 0.0:
-            continue
-        if (fs[i] < 0.0) != (fs[last] < 0.0):
-            if i == last + 1:
-                roots.append(_bisect(p.value, xs[last], xs[i], fs[last]))
-            else:  # exact zeros at samples in between: take the middle one
-                roots.append(xs[(last + i) // 2] if (i - last) % 2 == 0
-                             else _bisect(p.value, xs[last], xs[i], fs[last]))
-        last = i
-    return [r for r in roots if p.phi0 < r < p.phi1]
+    return _harmonic_crossings(p)
 
 
 # -- the motion ---------------------------------------------------------------------------------
@@ -397,25 +489,35 @@ def balance(make_D: Callable[[float], Moment], make_C: Callable[[float], Moment]
     """The unknown parameter x of one graph (a constant, a peak, a scale) from the cycle
     balance ∮ M_D dφ = ∮ M_C dφ (steady motion; seed 002: M_D·2π = M_C·π/2).
 
-    The work of a graph is affine in x, so x = (W_other − W(0))/(W(1) − W(0)). Raises
-    InputError when no positive x balances the cycle.
+    The work of a graph is affine in x, so x = (W_other − W(0))/(W(1) − W(0)); x = 0 when
+    W_other − W(0) is round-off (within 1e-9 of the graphs' ``size``). Raises InputError when
+    no positive x balances the cycle.
 
     >>> balance(lambda x: constant(15.0), lambda x: triangle(x, math.pi/2, 3*math.pi/2),
     ...         "resistance")
     60.0
     """
     if unknown == "resistance":
-        other, make = make_D(1.0).work(), make_C
+        known, make = make_D(1.0), make_C
     elif unknown == "driving":
-        other, make = make_C(1.0).work(), make_D
+        known, make = make_C(1.0), make_D
     else:
         raise InputError(f"unknown moment must be 'driving' or 'resistance' (got {unknown!r})")
+    other = known.work()
     w0, w1 = make(0.0).work(), make(1.0).work()
     if w1 == w0:
         raise InputError(f"the {unknown} moment's unknown value does not change its work: "
                          "the cycle balance cannot find it")
+    # a net work within round-off of zero (zero-mean harmonics leave 1e-13 J) balances with
+    # x = 0; the same tolerance as the steadiness test of ``solve``
+    if math.isfinite(other - w0) and \
+            abs(other - w0) <= BALANCE_RTOL * (size(known) + size(make(0.0))):
+        return 0.0
     x = (other - w0) / (w1 - w0)
     x = float(round(x, 12)) if abs(x - round(x, 12)) < 1e-12 * max(1.0, abs(x)) else x
+    x += 0.0    # no −0.0
+    if not math.isfinite(x):
+        raise OverflowError(f"the cycle balance gives a {unknown} moment of {x!r} N·m")
     if x < 0.0:
         raise InputError(
             f"the cycle balance needs a negative {unknown} moment ({x:.6g} N·m): "
@@ -462,7 +564,13 @@ def _motion(bounds: list[float], kinds: list[str], A: list[float], J: float | No
             omega0: float | None, omega_mean: float | None, steady: bool,
             delta: float | None, angles_known: bool = True,
             stop: Callable[[float, float], float] | None = None) -> dict:
-    """ω at each row and the summary numbers (shared by graphs and area diagrams)."""
+    """ω at each row and the summary numbers (shared by graphs and area diagrams).
+
+    Raises OverflowError when a work is not finite (moments near the limit of double
+    precision): no extreme can be chosen among infinities.
+    """
+    if not all(math.isfinite(a) for a in A):
+        raise OverflowError("the work A(φ) is not finite")
     # the first of equal extremes (equal to 1e-12 of the swing: round-off must not choose)
     tol = 1e-12 * (max(A) - min(A))
     i_max = next(i for i, a in enumerate(A) if a >= max(A) - tol)
@@ -530,8 +638,8 @@ def solve(M_D: Moment, M_C: Moment, J: float | None = None, *, omega0: float | N
     (ω_ср, steady motion only) [rad/s]; ``delta`` asks for the J giving that δ at the same
     ω_ср; ``rim_radius`` [m] asks for the rim mass m = J/R².
 
-    The motion is steady when ∮ (M_D − M_C) dφ = 0 (to 1e-9 of the work); otherwise ω_end
-    after one cycle differs from ω0.
+    The motion is steady when ∮ (M_D − M_C) dφ = 0 (to 1e-9 of ∮(|M_D| + |M_C|) dφ, see
+    ``size``); otherwise ω_end after one cycle differs from ω0.
 
     >>> r = solve(constant(15.0), triangle(60.0, math.pi/2, 3*math.pi/2), 12.0, omega0=200.0)
     >>> [round(math.degrees(x.phi), 6) for x in r.rows]
@@ -566,7 +674,9 @@ def solve(M_D: Moment, M_C: Moment, J: float | None = None, *, omega0: float | N
     bounds.append(pieces[-1].phi1)
     kinds.append("bound")
     W_D, W_C = M_D.work(), M_C.work()
-    scale = max(abs(W_D), abs(W_C), sum(abs(p.work(p.phi1)) for p in pieces), 1e-300)
+    # relative to the size of the moments (``size``), not to W_D, W_C: zero-mean moments
+    # have works of pure round-off and are steady all the same
+    scale = max(abs(W_D), abs(W_C), size(M_D) + size(M_C), 1e-300)
     steady = abs(acc) <= BALANCE_RTOL * scale
     if steady:
         acc = 0.0
@@ -634,6 +744,44 @@ def solve_areas(energies: Sequence[float], J: float | None = None, *, cycle: flo
                  for x, a, w in zip(bounds, A, omega))
     res = _finish(res, delta, rim_radius)
     return Task2Result(rows=rows, cycle=cycle, **res)
+
+
+# the reported numbers, in the order of the JSON document (flywheel.render.task2.to_dict)
+_REPORTED = ("omega_max", "omega_min", "omega_mean", "delta", "phi_omega_max", "phi_omega_min",
+             "delta_T_max", "M_C", "J_required", "M_D", "J", "omega0", "omega_end", "work_end",
+             "work_driving", "work_resistance", "power", "delta_target", "rim_radius",
+             "rim_mass")
+
+
+def nonfinite(result: Task2Result) -> str | None:
+    """``"name = inf"`` for the first reported number that is inf or NaN, else None.
+
+    Inputs near the limits of double precision (a moment of 1e308 N·m, ω0 = 1e200 rad/s) make
+    the formulas overflow; the caller turns this into one error line instead of printing
+    Infinity/NaN (which is not JSON). The rpm equivalents n = 30·ω/π are checked too. A row's
+    angle may be NaN by design (an area diagram without crossing angles), so only an infinite
+    angle counts.
+
+    >>> nonfinite(seed_task("triangle")) is None
+    True
+    """
+    def bad(x) -> bool:
+        return isinstance(x, float) and not math.isfinite(x)
+
+    for name in _REPORTED:
+        v = getattr(result, name)
+        if bad(v) and not (name.startswith("phi_") and math.isnan(v)):
+            return f"{name} = {v!r}"
+    for name in ("omega0", "omega_max", "omega_min", "omega_mean"):
+        if bad(getattr(result, name) * (30.0 / math.pi)):
+            return f"rpm.{name} = inf"
+    for i, row in enumerate(result.rows):
+        if math.isinf(row.phi):
+            return f"segments[{i}].phi = {row.phi!r}"
+        for name in ("M_D", "M_C", "A", "omega"):
+            if bad(getattr(row, name)):
+                return f"segments[{i}].{name} = {getattr(row, name)!r}"
+    return None
 
 
 # -- seed 002 -----------------------------------------------------------------------------------
@@ -709,4 +857,4 @@ def sample(result: Task2Result, n: int = 1441) -> dict[str, list[float]]:
 
 __all__ = ["Piece", "Moment", "Row", "Task2Result", "constant", "piecewise_linear", "triangle",
            "rectangle", "trapezoid", "harmonic", "net_pieces", "crossings", "balance", "solve",
-           "solve_areas", "seed_task", "sample"]
+           "solve_areas", "seed_task", "sample", "size", "nonfinite"]

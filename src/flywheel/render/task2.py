@@ -103,7 +103,7 @@ def print_summary(r, title: str = "", source: str = "", console=None) -> None:
         console.print(f"M_D = {_g(r.M_D)} N·m, M_C = {_g(r.M_C)} N·m (given)")
     if not r.steady:
         console.print(f"[yellow]the motion is not steady:[/yellow] the work over the cycle is "
-                      f"{_g(r.work_end)} J, so ω after one cycle is {_g(r.omega_end, '.6f')} "
+                      f"{r.work_end:.6g} J, so ω after one cycle is {_g(r.omega_end, '.6f')} "
                       f"rad/s (ω0 = {_g(r.omega0, '.6f')} rad/s)")
 
     t = Table(title="Segments: ½·J·(ω² − ω0²) = A(φ) = ∫(M_D − M_C) dφ\n"
