@@ -244,7 +244,8 @@ def analyze(case, n_points: int = DEFAULT_POINTS, at_deg: list[float] | None = N
             "phi_deg": float(a), "omega": w, "epsilon": e,
             "J_II": float(J_II[i]), "dJ_II": float(dJ_II[i]), "M_sum": float(M_sum[i]),
             "moments": {k: float(v[i]) for k, v in M_parts.items()},
-            "forces": {c.name: float(c.F[i]) for c in cyl_results},
+            "forces": {**{c.name: float(c.F[i]) for c in cyl_results},     # gas, then technological
+                       **{f.name: float(columns[f"F_{f.name}"].values[i]) for f in case.forces}},
             "points": pts, "links": lks,
         })
 
