@@ -29,6 +29,11 @@ motor M_Д = M_п·(1 − ω/ω_x). Both are linear in ω, and the forcing is a 
 system is linear: its steady state is found in closed form (a constant mean speed, a static twist
 that carries the mean torque, and a harmonic response from the dynamic stiffness
 K − ω²·M + i·ω·C) and checked by scipy's solve_ivp, which also integrates the start-up from rest.
+The integrations are bounded: the explicit method (DOP853) needs about ten steps per period of
+the highest natural frequency, so the start-up runs at most MAX_FAST_PERIODS of them, and a
+steady check that would need more than CHECK_FAST_PERIODS (a slow machine on a stiff coupling)
+uses the implicit Radau method with the system's constant Jacobian; the result says so in its
+notes.
 
 Units: SI; angles in radians; J in kg·m²; c in N·m/rad; damping in N·m·s/rad. numpy only at
 import; scipy is imported inside the functions that use it.
@@ -44,6 +49,13 @@ from flywheel.errors import InputError
 
 #: relative tolerance under which an eigenvalue counts as the rigid-body mode
 RIGID_TOL = 1e-9
+#: resonance: |ω − ω_n|/ω_n below this for a mode whose damping ratio is below it too (the
+#: dynamic magnification would exceed about 1/(2·√2·RESONANCE_TOL) ≈ 3.5·10⁵)
+RESONANCE_TOL = 1e-6
+#: the explicit start-up runs at most this many periods of the highest natural frequency
+MAX_FAST_PERIODS = 2000
+#: the steady check is explicit up to this many periods of it, implicit (Radau) beyond
+CHECK_FAST_PERIODS = 500
 
 
 # -- building blocks ---------------------------------------------------------------------------
@@ -141,6 +153,16 @@ class Chain:
             raise InputError("a chain needs at least two rotors")
         if len(self.c) != len(self.J) - 1 or len(self.damping) != len(self.c):
             raise InputError("a chain of N rotors needs N − 1 connections")
+        for what, vals, unit, rotor in (("moment of inertia", self.J, " kg·m²", True),
+                                        ("speed ratio", self.ratio, "", True),
+                                        ("stiffness", self.c, " N·m/rad", False),
+                                        ("damping", self.damping, " N·m·s/rad", False)):
+            for k, v in enumerate(vals):
+                if not math.isfinite(v):
+                    where = f"rotor {self.names[k]}" if rotor else f"connection {k + 1}"
+                    why = ": it overflows double precision" if math.isinf(v) else ""
+                    raise InputError(f"{where}: the {what} reduced to shaft I is not finite "
+                                     f"(got {v:g}{unit}){why}")
         for k, v in enumerate(self.J):
             if not v > 0:
                 raise InputError(f"rotor {self.names[k]}: moment of inertia must be positive "
@@ -203,14 +225,24 @@ def twist_transform(n: int) -> np.ndarray:
 
 def coefficients(ch: Chain) -> tuple[np.ndarray, np.ndarray]:
     """The inertia and stiffness coefficients a_ij, c_ij of eqs. (9.24) in the coordinates q
-    (9.25): a = Tᵀ·M·T, c = Tᵀ·K·T.
+    (9.25): a = Tᵀ·M·T, c = Tᵀ·K·T, built term by term so that the zeros are exact.
+
+    With φ_k = q1 + … + q_k the kinetic energy ½·Σ J_k·φ̇_k² gives a_ij = Σ_{k ≥ max(i, j)} J_k
+    (the inertia of everything beyond both coordinates) and the potential energy
+    ½·Σ c_k·(φ_{k+1} − φ_k)² = ½·Σ c_k·q_{k+1}² gives c = diag(0, c_1, …, c_{N−1}): the shafts
+    are uncoupled in the twists, and q1 (the rigid rotation) stores no energy.
 
     >>> a, c = coefficients(chain([3.0, 2.0], [100.0]))
     >>> a.tolist(), c.tolist()
     ([[5.0, 2.0], [2.0, 2.0]], [[0.0, 0.0], [0.0, 100.0]])
+    >>> coefficients(chain([0.15, 0.3, 0.09], [132001.9, 198002.9]))[1].tolist()
+    [[0.0, 0.0, 0.0], [0.0, 132001.9, 0.0], [0.0, 0.0, 198002.9]]
     """
-    T = twist_transform(ch.n)
-    return T.T @ mass_matrix(ch) @ T, T.T @ stiffness_matrix(ch) @ T
+    tail = np.cumsum(ch.J[::-1])[::-1]            # tail[k] = J_k + … + J_N
+    idx = np.arange(ch.n)
+    a = tail[np.maximum.outer(idx, idx)]
+    c = np.diag(np.concatenate([[0.0], ch.c]))
+    return a, c
 
 
 @dataclass(frozen=True)
@@ -237,7 +269,15 @@ def natural_frequencies(ch: Chain) -> Modes:
     """
     from scipy.linalg import eigh
 
-    lam, vec = eigh(stiffness_matrix(ch), mass_matrix(ch))
+    with np.errstate(all="ignore"):
+        lam, vec = eigh(stiffness_matrix(ch), mass_matrix(ch))
+    if not (np.all(np.isfinite(lam)) and np.all(np.isfinite(vec))):
+        with np.errstate(all="ignore"):
+            ratio = float(np.max(ch.c)) / float(np.min(ch.J))
+        raise InputError(
+            f"the natural frequencies are not finite: the eigenproblem K·x = ω²·M·x overflows "
+            f"double precision (stiffness up to {np.max(ch.c):g} N·m/rad against inertia down to "
+            f"{np.min(ch.J):g} kg·m², c/J = {ratio:g} 1/s²)")
     scale = max(abs(lam[-1]), 1e-300)
     lam = np.where(np.abs(lam) < RIGID_TOL * scale, 0.0, lam)
     omega = np.sqrt(np.clip(lam, 0.0, None))
@@ -298,9 +338,11 @@ class Steady:
 
     omega_mean : mean speed of shaft I [rad/s]; omega_forcing : forcing frequency [rad/s];
     X : complex amplitudes of φ_k about ω·t + θ_k (response Im(X·e^{iωt})) [rad];
-    theta : static offsets [rad] (θ_1 = 0); twist_mean, twist_amplitude : of each connection
-    [rad]; moment_mean, moment_amplitude : elastic moments c·q of each connection [N·m] (reduced
-    to shaft I); omega_amplitude : speed amplitude of each rotor (reduced) [rad/s];
+    theta : static offsets [rad] (θ_1 = 0); twist_mean, twist_amplitude : of each connection's
+    twist q = φ_{k+1} − φ_k [rad] (the mean is negative: the machine lags); moment_mean : the
+    elastic moment each connection transmits, c·(φ_k − φ_{k+1}) = −c·q, mean (= M_0·i31 > 0)
+    [N·m]; moment_amplitude : c·|q| amplitude [N·m] (both reduced to shaft I);
+    omega_amplitude : speed amplitude of each rotor (reduced) [rad/s];
     delta : (ω_max − ω_min)/ω_mean of each rotor.
     """
 
@@ -316,38 +358,116 @@ class Steady:
     delta: np.ndarray
 
 
+def _harmonic(ch: Chain, drive: Drive, w: float) -> tuple[np.ndarray, np.ndarray]:
+    """Solve (K − ω²·M + i·ω·C)·X = F for the complex amplitudes, in the unknowns X1 (the first
+    rotor) and the twists t_k = X_{k+1} − X_k, so that a small twist is not the difference of two
+    large angles (a slow forcing swings the whole machine by far more than it twists a shaft).
+
+    With X = X1·1 + L·t (L[k, j] = 1 for the rotors beyond connection j) the columns of Z·[1 L]
+    are exact: Z·1 = −ω²·J + i·ω·s·e1 (K·1 = 0, the couplings' C·1 = 0, s the motor's slope) and
+    Z·L_j = (c_j + i·ω·b_j)·(e_{j+1} − e_j) − ω²·(J on the rotors beyond j). Each column is scaled
+    to unit size before the solve. Returns (X, t).
+    """
+    n = ch.n
+    A = np.zeros((n, n), dtype=complex)
+    A[:, 0] = -w * w * ch.J
+    A[0, 0] += 1j * w * drive.slope
+    for j in range(n - 1):
+        k = ch.c[j] + 1j * w * ch.damping[j]
+        A[j, j + 1] -= k
+        A[j + 1, j + 1] += k
+        A[j + 1:, j + 1] -= w * w * ch.J[j + 1:]
+    F = np.zeros(n, dtype=complex)
+    F[-1] = -drive.amplitude
+    scale = np.abs(A).max(axis=0)
+    scale[scale == 0] = 1.0
+    with np.errstate(all="ignore"):
+        y = np.linalg.solve(A / scale, F) / scale
+    t = y[1:]
+    X = y[0] + np.concatenate([[0.0], np.cumsum(t)])
+    return X, t
+
+
+def resonant_mode(ch: Chain, drive: Drive, modes: Modes, w: float) -> int | None:
+    """Index (into modes.elastic) of a torsional mode the forcing ω sits on with nothing to damp
+    it: |ω − ω_n|/ω_n < RESONANCE_TOL and the mode's damping ratio
+    ζ = xᵀ·C·x/(2·ω_n·xᵀ·M·x) < RESONANCE_TOL (C: the couplings and the motor's slope). None if
+    there is no such mode. The rigid-body mode (ω_n = 0) is never a resonance: ω > 0.
+
+    >>> ch = chain([1.0, 1.0], [2.0])
+    >>> d = Drive("constant", 0.0, 1.0, 1.0, omega_nominal=2.0)
+    >>> resonant_mode(ch, d, natural_frequencies(ch), 2.0), resonant_mode(ch, d, natural_frequencies(ch), 1.9)
+    (0, None)
+    """
+    M, C = mass_matrix(ch), damping_matrix(ch, drive.slope)
+    for k, wn in enumerate(modes.elastic):
+        if not wn > 0:
+            continue
+        x = modes.shapes[:, k + 1]
+        zeta = float(x @ C @ x) / (2.0 * wn * float(x @ M @ x))
+        if abs(w - wn) / wn < RESONANCE_TOL and zeta < RESONANCE_TOL:
+            return k
+    return None
+
+
 def steady_state(ch: Chain, drive: Drive, modes: Modes | None = None) -> Steady:
     """The exact periodic solution of the linear model.
 
     Mean part: every rotor turns at ω_s; each connection carries the mean torque M_0·i31, so its
-    twist is q = −M_0·i31/c. Harmonic part: (K − ω²·M + i·ω·C)·X = F with F = −M̃·i31 on the last
-    rotor and C including the motor's slope M_п/ω_x. Without damping, at a natural frequency the
-    matrix is singular: that is an InputError (an unbounded amplitude), never infinity.
+    twist is q = −M_0·i31/c (the elastic moment c·(φ_k − φ_{k+1}) = −c·q = M_0·i31 drives the
+    machine). Harmonic part: (K − ω²·M + i·ω·C)·X = F with F = −M̃·i31 on the last rotor and C
+    including the motor's slope M_п/ω_x (see :func:`_harmonic`).
+
+    Refused (InputError), never infinity: the forcing on an undamped torsional mode
+    (:func:`resonant_mode`); a swing of any rotor's speed as large as the mean speed (the machine
+    would stop and turn backwards, which the model — a resistance that does not depend on the
+    direction of motion — cannot follow; with a forcing far below the torsional modes it is the
+    rigid-body mode ω = 0 that takes the load); amplitudes that overflow.
     """
     omega_s = drive.steady_speed()
     w = drive.forcing_ratio * omega_s
-    M, K = mass_matrix(ch), stiffness_matrix(ch)
-    C = damping_matrix(ch, drive.slope)
-    Z = K - w * w * M + 1j * w * C
-    F = np.zeros(ch.n, dtype=complex)
-    F[-1] = -drive.amplitude
     modes = modes or natural_frequencies(ch)
     if drive.amplitude == 0:
         X = np.zeros(ch.n, dtype=complex)
-    elif np.linalg.cond(Z) > 1e12:
-        near = modes.elastic[np.argmin(np.abs(modes.elastic - w))] if len(modes.elastic) else 0.0
-        raise InputError(
-            f"the forcing frequency {w:.6g} rad/s ({w / (2 * math.pi):.6g} Hz) equals the natural "
-            f"frequency {near:.6g} rad/s and nothing damps it: the steady amplitude is unbounded "
-            f"(give a coupling damping, a linear motor characteristic, or change the speed)")
+        t = np.zeros(ch.n - 1, dtype=complex)
     else:
-        X = np.linalg.solve(Z, F)
+        k = resonant_mode(ch, drive, modes, w)
+        if k is not None:
+            wn = float(modes.elastic[k])
+            raise InputError(
+                f"the forcing frequency {w:.6g} rad/s ({w / (2 * math.pi):.6g} Hz) equals the "
+                f"natural frequency {wn:.6g} rad/s of torsional mode {k + 1} (within "
+                f"{RESONANCE_TOL:g}) and nothing damps it: the steady amplitude is unbounded (give "
+                f"a coupling damping, a linear motor characteristic, or change the speed)")
+        X, t = _harmonic(ch, drive, w)
+        if not (np.all(np.isfinite(X)) and np.all(np.isfinite(t))):
+            raise InputError(f"the steady amplitudes are not finite at the forcing frequency "
+                             f"{w:.6g} rad/s: the harmonic solution overflows double precision")
     twist_mean = -drive.M0 / ch.c
     theta = np.concatenate([[0.0], np.cumsum(twist_mean)])
-    twist_amp = np.abs(np.diff(X))
+    twist_amp = np.abs(t)
     omega_amp = w * np.abs(X)
+    swing = int(np.argmax(omega_amp))
+    if omega_amp[swing] >= omega_s:
+        raise InputError(_reversal_message(ch, drive, modes, w, omega_s, X, swing))
     return Steady(omega_s, w, X, theta, twist_mean, twist_amp, np.full(len(ch.c), drive.M0),
                   ch.c * twist_amp, omega_amp, 2.0 * omega_amp / omega_s)
+
+
+def _reversal_message(ch, drive, modes, w, omega_s, X, k) -> str:
+    amp = float(w * abs(X[k]))
+    rigid = float(w * abs(ch.J @ X) / ch.J.sum())   # speed swing of the centre of inertia
+    tail = ("so it would stop and turn backwards every period: there is no steady run of this "
+            "model (raise the speed, add inertia or a flywheel, or lower M_amplitude)")
+    if rigid >= 0.5 * amp and len(modes.elastic) and w < modes.elastic[0]:
+        held = ("which a constant-torque motor does not hold" if drive.slope == 0
+                else "which the motor characteristic hardly holds")
+        return (f"the forcing frequency {w:.6g} rad/s is far below the lowest natural frequency "
+                f"{float(modes.elastic[0]):.6g} rad/s, so the load swings the whole machine as a "
+                f"rigid body (the ω = 0 mode, {held}): the speed would vary by ±{amp:.6g} rad/s "
+                f"about the mean {omega_s:.6g} rad/s, " + tail)
+    return (f"the speed of rotor {ch.names[k]} would vary by ±{amp:.6g} rad/s about the mean "
+            f"{omega_s:.6g} rad/s (δ = {2 * amp / omega_s:.4g}), " + tail)
 
 
 def forced_twist_two_mass(J1: float, J2: float, c: float, amplitude: float, w: float) -> float:
@@ -366,74 +486,144 @@ def forced_twist_two_mass(J1: float, J2: float, c: float, amplitude: float, w: f
 
 @dataclass(frozen=True)
 class History:
-    """t [s]; phi [rad] and omega [rad/s] of every rotor (rows), reduced to shaft I."""
+    """t [s]; phi [rad] and omega [rad/s] of every rotor (rows), reduced to shaft I; twist [rad]
+    of every connection, q_{k+1} = φ_{k+1} − φ_k (rows; integrated as such, not a difference of
+    two large angles); method: the solve_ivp method used."""
 
     t: np.ndarray
     phi: np.ndarray
     omega: np.ndarray
+    twist: np.ndarray
+    method: str = "DOP853"
+
+
+def state_space(ch: Chain, drive: Drive | None) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The equations as ẏ = A·y + b0 + b1·sin(ω·t) in the seed's coordinates, the state
+    y = (q1 = φ1, the twists q_2 … q_N, the speeds ω_1 … ω_N), all reduced to shaft I.
+
+    q̇1 = ω1, q̇_{k+1} = ω_{k+1} − ω_k; J_k·ω̇_k = the elastic and damping moments of the
+    connections on either side (connection j pulls its left rotor by c_j·q_{j+1} + b_j·q̇_{j+1}
+    and its right rotor back by as much) + M_Д(ω1) on the first rotor
+    (M_п − (M_п/ω_x)·ω1, or the constant M_0·i31) − (M_0·i31 + M̃·i31·sin ω_III·t) on the last
+    (9.20). The system is linear: A is also its (constant) Jacobian. drive None: free, b = 0.
+    """
+    n = ch.n
+    A = np.zeros((2 * n, 2 * n))
+    b0 = np.zeros(2 * n)
+    b1 = np.zeros(2 * n)
+    A[0, n] = 1.0
+    for j in range(n - 1):
+        A[1 + j, n + j], A[1 + j, n + j + 1] = -1.0, 1.0
+        for k, sign in ((j, 1.0), (j + 1, -1.0)):         # left rotor pulled, right held back
+            A[n + k, 1 + j] += sign * ch.c[j] / ch.J[k]
+            A[n + k, n + j + 1] += sign * ch.damping[j] / ch.J[k]
+            A[n + k, n + j] -= sign * ch.damping[j] / ch.J[k]
+    if drive is not None:
+        if drive.kind == "linear":
+            A[n, n] -= drive.slope / ch.J[0]
+            b0[n] += drive.M_start / ch.J[0]
+        else:
+            b0[n] += drive.M0 / ch.J[0]
+        b0[-1] -= drive.M0 / ch.J[-1]
+        b1[-1] -= drive.amplitude / ch.J[-1]
+    return A, b0, b1
 
 
 def simulate(ch: Chain, drive: Drive | None, phi0, omega0, t_end: float, n_samples: int = 2001,
-             rtol: float = 1e-9, atol: float = 1e-12) -> History:
-    """Integrate M·φ̈ + C·φ̇ + K·φ = F(t, φ̇) with scipy's solve_ivp (DOP853) from φ0, ω0.
+             rtol: float = 1e-9, atol: float = 1e-12, method: str = "DOP853") -> History:
+    """Integrate M·φ̈ + C·φ̇ + K·φ = F(t, φ̇) with scipy's solve_ivp from φ0, ω0, in the
+    coordinates of :func:`state_space`.
 
     F: the motor torque M_Д(φ̇_1) on the first rotor, −(M_0·i31 + M̃·i31·sin(ω_III·t)) on the last
     (9.20), ω_III = forcing_ratio × the steady speed (the seed's linear model); drive None: free.
+    method "DOP853" (explicit) takes steps of at most 1/8 of the shortest period, the highest
+    natural frequency's or the forcing's; "Radau" (implicit, for a stiff system: a torsional mode
+    far faster than the forcing) gets the constant Jacobian and steps of at most 1/8 of the forcing
+    period — it follows the forced motion but damps a mode's own oscillation it does not resolve.
     """
     from scipy.integrate import solve_ivp
 
     n = ch.n
-    Jinv = 1.0 / ch.J
-    K = stiffness_matrix(ch)
-    C = damping_matrix(ch)
+    A, b0, b1 = state_space(ch, drive)
     w = drive.forcing_ratio * drive.steady_speed() if drive is not None else 0.0
+    phi0 = np.asarray(phi0, dtype=float)
+    y0 = np.concatenate([[phi0[0]], np.diff(phi0), np.asarray(omega0, dtype=float)])
 
     def rhs(t, y):
-        phi, om = y[:n], y[n:]
-        f = -K @ phi - C @ om
-        if drive is not None:
-            f[0] += drive.torque(om[0])
-            f[-1] -= drive.M0 + drive.amplitude * math.sin(w * t)
-        return np.concatenate([om, f * Jinv])
+        return A @ y + b0 + b1 * math.sin(w * t)
 
-    modes = natural_frequencies(ch)
-    fastest = max(float(modes.omega[-1]), w, 1e-12)
+    fastest = max(float(natural_frequencies(ch).omega[-1]), w, 1e-300)
     t_eval = np.linspace(0.0, t_end, n_samples)
-    sol = solve_ivp(rhs, (0.0, t_end), np.concatenate([phi0, omega0]), method="DOP853",
-                    t_eval=t_eval, rtol=rtol, atol=atol, max_step=2 * math.pi / fastest / 8)
-    return History(sol.t, sol.y[:n], sol.y[n:])
+    if method == "Radau":
+        opts = {"jac": A, "max_step": 2 * math.pi / max(w, 1e-300) / 8}
+    else:
+        opts = {"max_step": 2 * math.pi / fastest / 8}
+    with np.errstate(all="ignore"):
+        sol = solve_ivp(rhs, (0.0, t_end), y0, method=method, t_eval=t_eval, rtol=rtol,
+                        atol=atol, **opts)
+    if not sol.success or not np.all(np.isfinite(sol.y)):
+        raise InputError(f"solve_ivp ({method}) failed over 0 … {t_end:.4g} s: "
+                         f"{sol.message if not sol.success else 'the solution is not finite'}")
+    q1, twist, om = sol.y[0], sol.y[1:n], sol.y[n:]
+    phi = q1 + np.vstack([np.zeros_like(q1), np.cumsum(twist, axis=0)])
+    return History(sol.t, phi, om, twist, method)
 
 
 def energy(ch: Chain, h: History) -> np.ndarray:
     """Kinetic plus potential energy along a history [J]: ½·Σ J·ω² + ½·Σ c·q²."""
-    q = np.diff(h.phi, axis=0)
-    return 0.5 * (ch.J[:, None] * h.omega ** 2).sum(axis=0) + 0.5 * (ch.c[:, None] * q ** 2).sum(axis=0)
+    return (0.5 * (ch.J[:, None] * h.omega ** 2).sum(axis=0)
+            + 0.5 * (ch.c[:, None] * h.twist ** 2).sum(axis=0))
+
+
+def steady_method(ch: Chain, w: float, periods: float = 5.0) -> tuple[str, float]:
+    """("DOP853" or "Radau", the periods of the highest natural frequency in ``periods`` forcing
+    periods): explicit while that is at most CHECK_FAST_PERIODS, implicit beyond.
+
+    >>> steady_method(chain([1.0, 1.0], [2.0]), 1.0)
+    ('DOP853', 10.0)
+    >>> steady_method(chain([1.0, 1.0], [2.0e6]), 1.0)
+    ('Radau', 10000.0)
+    """
+    fast = periods * float(natural_frequencies(ch).omega[-1]) / w
+    return ("DOP853" if fast <= CHECK_FAST_PERIODS else "Radau"), fast
 
 
 def steady_run(ch: Chain, drive: Drive, st: Steady, periods: float = 5.0,
                per_period: int = 200) -> History:
     """solve_ivp started on the closed-form periodic orbit (φ = θ + Im X, ω = ω_s + ω·Re X) over a
-    few forcing periods: it must stay there (a check of the closed form)."""
+    few forcing periods: it must stay there (a check of the closed form). Explicit (DOP853) when
+    that is at most CHECK_FAST_PERIODS periods of the highest natural frequency, else the implicit
+    Radau method with the constant Jacobian (:func:`steady_method`): the cost is bounded either
+    way."""
     w = st.omega_forcing
     phi0 = st.theta + st.X.imag
     omega0 = st.omega_mean + w * st.X.real
     t_end = periods * 2 * math.pi / w
-    return simulate(ch, drive, phi0, omega0, t_end, n_samples=int(periods * per_period) + 1)
+    method, _ = steady_method(ch, w, periods)
+    return simulate(ch, drive, phi0, omega0, t_end, n_samples=int(periods * per_period) + 1,
+                    method=method)
+
+
+def start_up_duration(ch: Chain, drive: Drive) -> tuple[float, float]:
+    """(the default start-up duration, the duration wanted before the cap) [s]: five mechanical
+    time constants τ = ΣJ·ω_x/M_п of the linear characteristic or 20 forcing periods, whichever is
+    longer, at most MAX_FAST_PERIODS periods of the highest natural frequency."""
+    w = drive.forcing_ratio * drive.steady_speed()
+    wanted = 20 * 2 * math.pi / w
+    if drive.kind == "linear":
+        wanted = max(wanted, 5 * ch.J.sum() * drive.omega_x / drive.M_start)
+    fastest = float(natural_frequencies(ch).omega[-1])
+    return min(wanted, MAX_FAST_PERIODS * 2 * math.pi / fastest), wanted
 
 
 def start_up(ch: Chain, drive: Drive, t_end: float | None = None, n_samples: int = 4001) -> History:
     """From rest, all twists zero (linear motor), or from the nominal speed with the load applied
-    at t = 0 (constant torque, which has no start-up of its own). Default duration: five
-    mechanical time constants τ = ΣJ·ω_x/M_п of the linear characteristic (or 20 forcing
-    periods), at most 2000 periods of the highest natural frequency."""
+    at t = 0 (constant torque, which has no start-up of its own). Default duration:
+    :func:`start_up_duration`. Explicit (DOP853): the start-up excites the torsional modes, and
+    their peak moment is what it is for."""
     omega_s = drive.steady_speed()
-    w = drive.forcing_ratio * omega_s
     if t_end is None:
-        t_end = 20 * 2 * math.pi / w
-        if drive.kind == "linear":
-            t_end = max(t_end, 5 * ch.J.sum() * drive.omega_x / drive.M_start)
-        fastest = float(natural_frequencies(ch).omega[-1])
-        t_end = min(t_end, 2000 * 2 * math.pi / fastest)
+        t_end, _ = start_up_duration(ch, drive)
     v0 = 0.0 if drive.kind == "linear" else omega_s
     return simulate(ch, drive, np.zeros(ch.n), np.full(ch.n, v0), t_end, n_samples=n_samples)
 
@@ -451,7 +641,8 @@ class Resonance:
 
 @dataclass(frozen=True)
 class AggregateResult:
-    """Everything :func:`analyze` finds. ``drive`` None: natural frequencies only."""
+    """Everything :func:`analyze` finds. ``drive`` None: natural frequencies only. notes: what
+    the reader should know about how the time-domain runs were bounded."""
 
     chain: Chain
     a: np.ndarray
@@ -466,6 +657,7 @@ class AggregateResult:
     startup: History | None = None
     startup_peak_moment: float | None = None
     startup_time: float | None = None
+    notes: list = field(default_factory=list)
 
 
 def _amplitude(x: np.ndarray) -> float:
@@ -485,12 +677,30 @@ def analyze(ch: Chain, drive: Drive | None = None, t_end: float | None = None,
            for wn in modes.elastic]
     if not time_domain:
         return AggregateResult(ch, a, c, modes, drive, st, res)
+    notes = []
+    f_top = float(modes.omega[-1]) / (2 * math.pi)
+    method, fast = steady_method(ch, st.omega_forcing)
+    if method != "DOP853":
+        notes.append(
+            f"solve_ivp check: 5 forcing periods are {fast:.4g} periods of the highest natural "
+            f"frequency {f_top:.6g} Hz, more than the explicit method's {CHECK_FAST_PERIODS}: "
+            f"integrated with the implicit Radau method and the constant Jacobian, which follows "
+            f"the forced motion but damps that mode's own oscillation")
     chk = steady_run(ch, drive, st)
-    q = np.diff(chk.phi[:2], axis=0)[0]
-    ch_twist = _amplitude(q)
+    ch_twist = _amplitude(chk.twist[0])
     ch_delta = tuple(float(2 * _amplitude(chk.omega[k]) / st.omega_mean) for k in (0, -1))
+    if t_end is None:
+        t_end, wanted = start_up_duration(ch, drive)
+        if t_end < wanted:
+            why = ("the longer of five time constants and 20 forcing periods"
+                   if drive.kind == "linear" else "20 forcing periods")
+            notes.append(
+                f"start-up: integrated over {t_end:.4g} s = {MAX_FAST_PERIODS} periods of the "
+                f"highest natural frequency {f_top:.6g} Hz (the cap), not the default "
+                f"{wanted:.4g} s ({why}); --t-end sets the duration")
     su = start_up(ch, drive, t_end)
-    peak = float(np.max(np.abs(ch.c[0] * np.diff(su.phi[:2], axis=0)[0])))
+    peak = float(np.max(np.abs(ch.c[0] * su.twist[0])))
     reached = np.nonzero(su.omega[0] >= 0.95 * st.omega_mean)[0]
     t95 = float(su.t[reached[0]]) if drive.kind == "linear" and len(reached) else None
-    return AggregateResult(ch, a, c, modes, drive, st, res, chk, ch_twist, ch_delta, su, peak, t95)
+    return AggregateResult(ch, a, c, modes, drive, st, res, chk, ch_twist, ch_delta, su, peak, t95,
+                           notes)

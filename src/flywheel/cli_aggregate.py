@@ -18,8 +18,10 @@ def aggregate_command(
                                         "moment against time (start-up, steady state) to this "
                                         "image file (.png, .svg, .pdf).", dir_okay=False),
     t_end: Optional[float] = typer.Option(None, "--t-end", help="Duration of the start-up "
-                                          "integration, seconds (default: from the motor's time "
-                                          "constant)."),
+                                          "integration, seconds (default: five time constants of "
+                                          "the motor or 20 forcing periods, whichever is longer, "
+                                          "at most 2000 periods of the highest natural "
+                                          "frequency)."),
 ) -> None:
     """Two-mass machine aggregate (seed 003) or a chain of rotors: coefficients a_ij, c_ij,
     natural frequencies, steady forced vibration, start-up."""
@@ -55,7 +57,12 @@ def aggregate_command(
     if json:
         from flywheel.render.aggregate import to_json
 
-        typer.echo(to_json(result, c.title, c.source))
+        try:
+            text = to_json(result, c.title, c.source)
+        except ValueError as exc:          # a NaN or infinity: JSON has none
+            fail(f"{case}: a result is not finite, no JSON written ({exc})")
+            return
+        typer.echo(text)
     else:
         from flywheel.render.aggregate import print_summary
 

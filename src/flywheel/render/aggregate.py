@@ -1,7 +1,13 @@
 """`flywheel aggregate` output: the JSON document, the rich summary and the plots against time.
 
 Renderers compute no physics: they format a :class:`flywheel.aggregate.AggregateResult`.
-rich and matplotlib are imported inside the functions that use them.
+rich and matplotlib are imported inside the functions that use them. Every text handed to rich
+goes through :func:`rich.markup.escape`: units in square brackets ("[kg·m²]", "[rad/s]") and
+"[motor]" would otherwise be taken for markup tags and vanish.
+
+Sign convention of the elastic moment: the twist is q2 = φ2 − φ1 (seed 003), negative while the
+motor drives the machine; the moment the coupling transmits is c·(φ1 − φ2) = −c·q2, positive
+(its mean is M_0·i31). Amplitudes are the same for c·q2 and −c·q2.
 """
 from __future__ import annotations
 
@@ -20,7 +26,10 @@ def to_dict(r, title: str = "", source: str = "") -> dict:
 
     Keys of the contract: natural_frequencies_hz (ascending, the rigid-body 0 excluded),
     twist_amplitude [rad] (the first coupling, q2 of seed 003), elastic_moment_amplitude
-    [N·m] (c·q2), delta_motor, delta_machine; the last four are null without a motor.
+    [N·m] (the amplitude of c·q2, the same as of the transmitted moment −c·q2), delta_motor,
+    delta_machine; the last four are null without a motor. steady.elastic_moment_mean is the mean
+    transmitted moment c·(φ_k − φ_(k+1)) = −c·q (positive, M_0·i31); steady.twist_mean is the mean
+    of q (negative). notes: how the time-domain runs were bounded (empty if nothing to say).
     """
     ch, st = r.chain, r.steady
     d: dict = {}
@@ -57,9 +66,9 @@ def to_dict(r, title: str = "", source: str = "") -> dict:
             "omega_motor_min": st.omega_mean - float(st.omega_amplitude[0]),
             "omega_machine_max": (st.omega_mean + float(st.omega_amplitude[-1])) * float(ch.ratio[-1]),
             "omega_machine_min": (st.omega_mean - float(st.omega_amplitude[-1])) * float(ch.ratio[-1]),
-            "twist_mean": [float(x) for x in st.twist_mean],
+            "twist_mean": [float(x) for x in st.twist_mean],       # q = φ_(k+1) − φ_k
             "twist_amplitudes": [float(x) for x in st.twist_amplitude],
-            "elastic_moment_mean": [float(x) for x in st.moment_mean],
+            "elastic_moment_mean": [float(x) for x in st.moment_mean],  # −c·q, transmitted
             "elastic_moment_amplitudes": [float(x) for x in st.moment_amplitude],
             "delta": [float(x) for x in st.delta],
         }
@@ -73,14 +82,17 @@ def to_dict(r, title: str = "", source: str = "") -> dict:
                 "start_up_duration": float(r.startup.t[-1]),
                 "start_up_peak_elastic_moment": r.startup_peak_moment,
                 "start_up_time_to_95_percent": r.startup_time,
+                "steady_check_method": r.check.method,
             }
+        d["notes"] = list(r.notes)
     return d
 
 
 def to_json(r, title: str = "", source: str = "") -> str:
+    """The JSON text; a non-finite number is a ValueError (JSON has no NaN or Infinity)."""
     import json
 
-    return json.dumps(to_dict(r, title, source), indent=2, ensure_ascii=False)
+    return json.dumps(to_dict(r, title, source), indent=2, ensure_ascii=False, allow_nan=False)
 
 
 def _g(x, fmt: str = ".6g") -> str:
@@ -90,10 +102,11 @@ def _g(x, fmt: str = ".6g") -> str:
 
 
 def _matrix(name: str, m, unit: str):
+    from rich.markup import escape
     from rich.table import Table
 
     n = m.shape[0]
-    t = Table(title=f"{name} \\[{unit}]")
+    t = Table(title=escape(f"{name} [{unit}]"))
     t.add_column("")
     for j in range(n):
         t.add_column(f"j = {j + 1}", justify="right")
@@ -105,71 +118,75 @@ def _matrix(name: str, m, unit: str):
 def print_summary(r, title: str = "", source: str = "", console=None) -> None:
     """Coefficients, natural frequencies, resonance margins and the steady state."""
     from rich.console import Console
-    from rich.markup import escape
+    from rich.markup import escape as e
     from rich.table import Table
+
+    def table(title, columns):
+        t = Table(title=e(title))
+        for col in columns:
+            t.add_column(e(col))
+        return t
+
+    def row(t, *cells):
+        t.add_row(*(e(str(x)) for x in cells))
 
     console = console or Console()
     if title:
-        console.print(f"[bold]{escape(title)}[/bold]" + (f"  ({escape(source)})" if source else ""))
+        console.print(f"[bold]{e(title)}[/bold]" + (f"  ({e(source)})" if source else ""))
     ch = r.chain
-    t = Table(title="Rotors reduced to shaft I (J·u², u = ω/ω_I)")
-    for col in ("#", "rotor", "J_reduced [kg·m²]", "u"):
-        t.add_column(col)
+    t = table("Rotors reduced to shaft I (J·u², u = ω/ω_I)", ("#", "rotor", "J_reduced [kg·m²]", "u"))
     for k, (n, j, u) in enumerate(zip(ch.names, ch.J, ch.ratio)):
-        t.add_row(str(k + 1), escape(n), _g(j), _g(u))
+        row(t, k + 1, n, _g(j), _g(u))
     console.print(t)
-    t = Table(title="Connections reduced to shaft I (c·u²)")
-    for col in ("#", "between", "c [N·m/rad]", "damping [N·m·s/rad]"):
-        t.add_column(col)
+    t = table("Connections reduced to shaft I (c·u²)",
+              ("#", "between", "c [N·m/rad]", "damping [N·m·s/rad]"))
     for k, (c, b) in enumerate(zip(ch.c, ch.damping)):
-        t.add_row(str(k + 1), escape(f"{ch.names[k]} – {ch.names[k + 1]}"), _g(c), _g(b))
+        row(t, k + 1, f"{ch.names[k]} – {ch.names[k + 1]}", _g(c), _g(b))
     console.print(t)
-    console.print("Equations (9.24): Σ_j a_ij·q̈_j + Σ_j c_ij·q_j = Q_i, "
-                  "q1 = φ1, q_(k+1) = φ_(k+1) − φ_k")
+    console.print(e("Equations (9.24): Σ_j a_ij·q̈_j + Σ_j c_ij·q_j = Q_i, "
+                    "q1 = φ1, q_(k+1) = φ_(k+1) − φ_k"))
     console.print(_matrix("inertia coefficients a_ij", r.a, "kg·m²"))
     console.print(_matrix("stiffness coefficients c_ij", r.c, "N·m/rad"))
 
-    t = Table(title="Natural frequencies (K·x = ω²·M·x)")
-    for col in ("mode", "ω [rad/s]", "f [Hz]", "shape (φ, largest = 1)"):
-        t.add_column(col)
+    t = table("Natural frequencies (K·x = ω²·M·x)", ("mode", "ω [rad/s]", "f [Hz]",
+                                                    "shape (φ, largest = 1)"))
     for k, w in enumerate(r.modes.omega):
         shape = ", ".join(_g(x, ".4g") for x in r.modes.shapes[:, k])
-        t.add_row("rigid body" if k == 0 else str(k), _g(w), _g(w / TWO_PI), shape)
+        row(t, "rigid body" if k == 0 else k, _g(w), _g(w / TWO_PI), shape)
     console.print(t)
     st = r.steady
     if st is None:
-        console.print("no [motor]: natural frequencies only")
+        console.print(e("no [motor]: natural frequencies only"))
         return
-    console.print(f"forcing ω_III = {_g(st.omega_forcing)} rad/s ({_g(st.omega_forcing / TWO_PI)} "
-                  f"Hz) at the steady speed ω_I = {_g(st.omega_mean)} rad/s "
-                  f"({_g(st.omega_mean * RPM)} rev/min)")
-    t = Table(title="Resonance margins")
-    for col in ("mode", "f_n [Hz]", "ω_forcing/ω_n", "margin |1 − ω_f/ω_n|"):
-        t.add_column(col)
+    console.print(e(f"forcing ω_III = {_g(st.omega_forcing)} rad/s ({_g(st.omega_forcing / TWO_PI)} "
+                    f"Hz) at the steady speed ω_I = {_g(st.omega_mean)} rad/s "
+                    f"({_g(st.omega_mean * RPM)} rev/min)"))
+    t = table("Resonance margins", ("mode", "f_n [Hz]", "ω_forcing/ω_n", "margin |1 − ω_f/ω_n|"))
     for k, x in enumerate(r.resonance):
-        t.add_row(str(k + 1), _g(x.omega_n / TWO_PI), _g(x.ratio, ".4f"), _g(x.margin, ".4f"))
+        row(t, k + 1, _g(x.omega_n / TWO_PI), _g(x.ratio, ".4f"), _g(x.margin, ".4f"))
     console.print(t)
-    t = Table(title="Steady state (closed form; solve_ivp check on the periodic orbit)")
-    for col in ("quantity", "value", "unit", "solve_ivp"):
-        t.add_column(col)
+    t = table("Steady state (closed form; solve_ivp check on the periodic orbit)",
+              ("quantity", "value", "unit", "solve_ivp"))
     u_last = float(ch.ratio[-1])
-    t.add_row("twist q2, mean", _g(st.twist_mean[0]), "rad", "")
-    t.add_row("twist q2, amplitude", _g(st.twist_amplitude[0]), "rad", _g(r.check_twist_amplitude))
-    t.add_row("elastic moment c·q2, mean", _g(st.moment_mean[0]), "N·m", "")
-    t.add_row("elastic moment c·q2, amplitude", _g(st.moment_amplitude[0]), "N·m", "")
-    t.add_row("ω1 (motor) min … max", f"{_g(st.omega_mean - st.omega_amplitude[0])} … "
-              f"{_g(st.omega_mean + st.omega_amplitude[0])}", "rad/s", "")
-    t.add_row("δ motor", _g(st.delta[0]), "", _g(r.check_delta[0] if r.check_delta else None))
-    t.add_row("ω2 (machine, own shaft) min … max",
-              f"{_g((st.omega_mean - st.omega_amplitude[-1]) * u_last)} … "
-              f"{_g((st.omega_mean + st.omega_amplitude[-1]) * u_last)}", "rad/s", "")
-    t.add_row("δ machine", _g(st.delta[-1]), "", _g(r.check_delta[1] if r.check_delta else None))
+    row(t, "twist q2 = φ2 − φ1, mean", _g(st.twist_mean[0]), "rad", "")
+    row(t, "twist q2, amplitude", _g(st.twist_amplitude[0]), "rad", _g(r.check_twist_amplitude))
+    row(t, "elastic moment c·(φ1 − φ2) = −c·q2, mean", _g(st.moment_mean[0]), "N·m", "")
+    row(t, "elastic moment −c·q2, amplitude", _g(st.moment_amplitude[0]), "N·m", "")
+    row(t, "ω1 (motor) min … max", f"{_g(st.omega_mean - st.omega_amplitude[0])} … "
+        f"{_g(st.omega_mean + st.omega_amplitude[0])}", "rad/s", "")
+    row(t, "δ motor", _g(st.delta[0]), "", _g(r.check_delta[0] if r.check_delta else None))
+    row(t, "ω2 (machine, own shaft) min … max",
+        f"{_g((st.omega_mean - st.omega_amplitude[-1]) * u_last)} … "
+        f"{_g((st.omega_mean + st.omega_amplitude[-1]) * u_last)}", "rad/s", "")
+    row(t, "δ machine", _g(st.delta[-1]), "", _g(r.check_delta[1] if r.check_delta else None))
     if r.startup is not None:
-        t.add_row("start-up: peak elastic moment", _g(r.startup_peak_moment), "N·m",
-                  f"over {_g(r.startup.t[-1], '.4g')} s")
+        row(t, "start-up: peak elastic moment", _g(r.startup_peak_moment), "N·m",
+            f"over {_g(r.startup.t[-1], '.4g')} s")
         if r.startup_time is not None:
-            t.add_row("start-up: time to 95 % of ω1", _g(r.startup_time), "s", "")
+            row(t, "start-up: time to 95 % of ω1", _g(r.startup_time), "s", "")
     console.print(t)
+    for note in r.notes:
+        console.print(e(f"note: {note}"))
 
 
 def plot(r, path, title: str = "") -> None:
@@ -189,7 +206,7 @@ def plot(r, path, title: str = "") -> None:
         ax.set_title(name)
         ax.legend(fontsize=8)
         ax = axes[1, col]
-        ax.plot(h.t, ch.c[0] * (h.phi[0] - h.phi[1]), color="tab:red",
+        ax.plot(h.t, -ch.c[0] * h.twist[0], color="tab:red",
                 label="elastic moment c·(φ1 − φ2) = −c·q2")
         ax.set_ylabel("moment [N·m]")
         ax.set_xlabel("t [s]")
