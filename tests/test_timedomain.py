@@ -38,8 +38,23 @@ def test_rundown_energy(compressor):
     assert cycles == pytest.approx(T_cut / -s["cycle_work_resistance"], abs=1.0)
 
 
-def test_startup_needs_a_motor(compressor):
-    assert compressor.scalars["time_domain"]["startup"]["computed"] is False
+def test_startup_needs_a_motor():
+    r = analyze(_constant_inertia_case(), n_points=360, transients=True)
+    assert r.scalars["time_domain"]["startup"]["computed"] is False
+
+
+def test_compressor_case_starts_up_with_its_motor(compressor):
+    """cases/compressor.toml has an assumed motor: ω_x = 625 rpm reduced to the crank, so the
+    mean speed 600 rpm is at 4 % slip and M_п = M_D/0.04 balances the cycle at ω_m."""
+    s = compressor.scalars
+    st = s["time_domain"]["startup"]
+    assert st["converged"] and not st["stalled"]
+    assert 1 - s["omega_mean"] / st["no_load_speed"] == pytest.approx(0.04, rel=1e-12)
+    assert st["omega_final_predicted"] == pytest.approx(s["omega_mean"], rel=1e-9)
+    assert st["omega_mean_steady"] == pytest.approx(s["omega_mean"], abs=s["delta"] / 50 * s["omega_mean"])
+    # a fast motor (τ ≈ 0.06 s, less than a cycle of 0.1 s): steady within a few cycles
+    assert st["time_constant"] < s["cycle_time"]
+    assert 0 < st["time_to_steady"] < 1.0 and 1 <= st["cycles_to_steady"] <= 10
 
 
 def _constant_inertia_case(motor=None):
@@ -80,13 +95,76 @@ def test_startup_with_a_linear_motor_reaches_the_steady_state():
     case = _constant_inertia_case(motor={"no_load_speed_rpm": 630.0})
     r = analyze(case, n_points=1440, transients=True)
     st = r.scalars["time_domain"]["startup"]
-    assert not st["stalled"]
+    assert not st["stalled"] and st["converged"]
     w_m = 2 * math.pi * 10
     assert st["omega_mean_steady"] == pytest.approx(w_m, rel=2e-3)
     assert st["time_to_steady"] > 0 and st["cycles_to_steady"] >= 1
     # M_п from the balance: M_п·(1 − ω_m/ω_x) = M_D
     assert st["starting_torque"] * (1 - w_m / st["no_load_speed"]) == pytest.approx(
         r.scalars["driving_moment"], rel=1e-12)
+
+
+@pytest.mark.parametrize("starting_torque, expected_cycles", [(2000.0, (2, 6)), (50.0, (70, 120))],
+                         ids=["fast motor, tau = 0.05 s", "slow motor, tau = 2 s"])
+def test_startup_closed_form_constant_inertia_linear_motor(starting_torque, expected_cycles):
+    """Constant J, a constant resisting moment M_L and the motor M_Д = M_п·(1 − ω/ω_x):
+
+        J·dω/dt = M_п·(1 − ω/ω_x) − M_L = (M_п/ω_x)·(ω_s − ω),  ω_s = ω_x·(1 − M_L/M_п),
+
+    a linear first-order equation; with τ = J·ω_x/M_п and ω(0) = 0 its solution is
+    ω(t) = ω_s·(1 − e^(−t/τ)). The speed is within δ/10 of ω_s once e^(−t/τ) ≤ δ/10, i.e. after
+    t* = τ·ln(10/δ). (The J′ term vanishes: J is constant.) Here J = 1 kg·m², ω_x = 100 rad/s,
+    M_L = M_п/2, so ω_s = 50 rad/s for both motors: M_п = 2000 N·m gives τ = 0.05 s (under
+    half a cycle of 0.126 s), M_п = 50 N·m gives τ = 2 s (16 cycles)."""
+    phi = np.linspace(0.0, 2 * np.pi, 361)
+    J, w_x, delta = 1.0, 100.0, 0.04
+    M_L = starting_torque / 2
+    w_s, tau = w_x * (1 - M_L / starting_torque), J * w_x / starting_torque
+    st = timedomain.startup(phi, np.full_like(phi, J), np.zeros_like(phi), np.full_like(phi, -M_L),
+                            timedomain.linear_motor(starting_torque, w_x), w_s, delta)
+    assert not st["stalled"] and st["converged"]
+    assert st["omega_final_predicted"] == pytest.approx(w_s, rel=1e-12)
+    assert st["time_constant"] == pytest.approx(tau, rel=1e-12)
+    # the history is the exponential (it starts at 1e-6·ω_s, not 0: hence the 2e-6)
+    t, w = st["t"], st["omega"]
+    assert np.max(np.abs(w - w_s * (1 - np.exp(-t / tau)))) < 2e-6 * w_s
+    # the steady speed, and the time to it to a fraction of one steady cycle (the cycle means)
+    assert st["omega_mean_steady"] == pytest.approx(w_s, rel=1e-4)
+    period = 2 * np.pi / w_s
+    assert st["time_to_steady"] == pytest.approx(tau * math.log(10 / delta), abs=0.5 * period)
+    assert expected_cycles[0] <= st["cycles_to_steady"] <= expected_cycles[1]
+
+
+def test_startup_not_reached_within_the_cap_says_so():
+    """The slow motor above (τ = 2 s, ~90 cycles to steady state) stopped after 20 cycles: no
+    number that looks like a result, a flag and a warning instead."""
+    phi = np.linspace(0.0, 2 * np.pi, 361)
+    st = timedomain.startup(phi, np.ones_like(phi), np.zeros_like(phi), np.full_like(phi, -25.0),
+                            timedomain.linear_motor(50.0, 100.0), 50.0, 0.04, max_cycles=20)
+    assert st["converged"] is False and not st["stalled"]
+    assert st["time_to_steady"] is None and st["cycles_to_steady"] is None
+    assert st["omega_mean_steady"] is None
+    assert st["cycles_run"] == 20 and 0 < st["omega_mean_last"] < 0.9 * 50.0
+    assert "no steady state after 20 cycles" in st["warning"]
+
+
+def test_slow_motor_on_a_pulsating_load_reaches_the_motor_line_speed():
+    """The audit's case (constant J, a one-stroke cylinder load) with a slow motor: ω_x = 1200 rpm
+    = 2·ω_m, so M_п = 2·M_D and τ = J·ω_x/M_п ≈ 1.39 s (14 cycles). The run must go on until the
+    steady state (it used to stop at a cap and report the last cycle as steady): the steady
+    cycle mean is ω_m, where the motor line balances the loads' mean moment, and the time is
+    close to τ·ln(10/δ) of the closed form above — 3 % shorter, because with the pulsating load
+    the speed fluctuates strongly while slow and the motor's work ∮M_Д dφ = M_п·(Φ − ∮ω dφ/ω_x)
+    exceeds that at a steady speed of the same kinetic energy."""
+    r = analyze(_constant_inertia_case(motor={"no_load_speed_rpm": 1200.0}), n_points=720,
+                transients=True)
+    s = r.scalars
+    st = s["time_domain"]["startup"]
+    assert st["converged"]
+    assert st["omega_mean_steady"] == pytest.approx(s["omega_mean"], abs=s["delta"] / 50 * s["omega_mean"])
+    tau = s["J_required"] * st["no_load_speed"] / st["starting_torque"]
+    assert st["time_constant"] == pytest.approx(tau, rel=1e-9)
+    assert st["time_to_steady"] == pytest.approx(tau * math.log(10 / s["delta"]), rel=0.05)
 
 
 def test_rundown_closed_form_for_constant_resistance():
@@ -105,3 +183,74 @@ def test_motor_speed_must_exceed_the_mean_speed():
 
     with pytest.raises(CaseFileError, match=r"motor\.no_load_speed_rpm"):
         _constant_inertia_case(motor={"no_load_speed_rpm": 500.0})
+
+
+def test_rundown_without_net_resistance_is_reported_as_none():
+    """Loads that do no net work over a cycle (a weight, say) never stop the machine: no 1000-cycle
+    integration to a cap, a reason instead."""
+    phi = np.linspace(0, 2 * np.pi, 361)
+    rd = timedomain.rundown(phi, np.full_like(phi, 2.0), np.zeros_like(phi), 30.0 * np.sin(phi), 20.0)
+    assert not rd["stopped"] and "no net work" in rd["reason"]
+    assert math.radians(rd["angle_deg"]) == pytest.approx(3 * 2 * np.pi, rel=1e-9)
+
+
+# -- the time-domain results as text: report.md and the terminal summary, in both languages ------
+
+def test_report_has_the_motion_in_time_section(compressor):
+    from flywheel.render.report import report_markdown
+
+    st = compressor.scalars["time_domain"]["startup"]
+    en = report_markdown(compressor, "en")
+    sec = en[en.index("## 7. Motion in time"):en.index("## Warnings")]
+    assert "repeats from cycle to cycle to" in sec and "follows ω(φ)" in sec and "cycle time:" in sec
+    assert f"after **{st['time_to_steady']:.4g} s** ({st['cycles_to_steady']} cycles)" in sec
+    assert "run-down after the drive is cut" in sec and "revolutions" in sec
+    ru = report_markdown(compressor, "ru")
+    sec = ru[ru.index("## 7. Движение во времени"):ru.index("## Предупреждения")]
+    assert f"через **{st['time_to_steady']:.4g} с** (циклов: {st['cycles_to_steady']})" in sec
+    assert "выбег после отключения привода" in sec
+    assert "start-up" not in sec and "run-down" not in sec
+    # without --transients: no such section
+    plain = analyze(load_case(CASES / "compressor.toml"), n_points=360)
+    assert "Motion in time" not in report_markdown(plain, "en")
+
+
+def test_report_and_summary_say_when_the_steady_state_is_not_reached():
+    from flywheel.render.report import report_markdown
+    from flywheel.render.summary import time_domain_lines
+
+    r = analyze(_constant_inertia_case(motor={"no_load_speed_rpm": 630.0}), n_points=360, transients=True)
+    st = r.scalars["time_domain"]["startup"]
+    st.update(converged=False, time_to_steady=None, cycles_to_steady=None, omega_mean_steady=None,
+              cycles_run=2000, time_run=150.0, omega_mean_last=60.0,
+              warning="start-up: no steady state after 2000 cycles")
+    assert "not reached** within 2000 cycles (150 s)" in report_markdown(r, "en")
+    assert "не достигнут** за 2000 циклов" in report_markdown(r, "ru")
+    (line,) = [x for x in time_domain_lines(r.scalars["time_domain"], "en") if x.startswith("start-up")]
+    assert "NOT reached" in line and "2000 cycles" in line
+
+
+def test_summary_shows_the_flywheel_placement_and_translates_the_time_domain(tmp_path):
+    import io
+    import tomllib
+
+    from rich.console import Console
+
+    from flywheel.render.summary import print_summary
+
+    data = tomllib.loads((CASES / "compressor.toml").read_text(encoding="utf-8"))
+    data["flywheel"] = {"speed_ratio": 4.0, "material": "cast-iron", "rim_share": 0.85}
+    r = analyze(parse_case(data), n_points=360, transients=True)
+    s = r.scalars
+    out = {}
+    for lang in ("en", "ru"):
+        buf = io.StringIO()
+        print_summary(r, console=Console(file=buf, width=250), lang=lang)
+        out[lang] = buf.getvalue()
+    assert f"i = 4, {s['J_flywheel'] / 16:.6g}" in out["en"]             # J_M/i² on its shaft
+    assert "cast iron, ρ = 7200" in out["en"] and "чугун, ρ = 7200" in out["ru"]
+    assert "rim share of J_M" in out["en"] and "0.85" in out["en"]
+    assert "start-up from rest" in out["en"] and "run-down after the drive is cut" in out["en"]
+    assert "разгон из состояния покоя" in out["ru"] and "выбег после отключения привода" in out["ru"]
+    assert "start-up" not in out["ru"] and "run-down" not in out["ru"]
+    assert "time integration" not in out["ru"] and "интегрирование во времени" in out["ru"]

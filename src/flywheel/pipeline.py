@@ -261,7 +261,8 @@ def analyze(case, n_points: int = DEFAULT_POINTS, at_deg: list[float] | None = N
             links_drawn.append((d.link_b, [d.point_b, d.joint]))
     time_domain = None
     if transients:
-        time_domain = _transients(case, phi, J_I + J_II, dJ_II, M_sum, M_known, omega, driving_moment)
+        time_domain = _transients(case, phi, J_I + J_II, dJ_II, M_sum, M_known, omega, driving_moment,
+                                  warnings)
         scalars["time_domain"] = {k: v for k, v in time_domain.items() if k != "histories"}
     for p in mech.points:               # centroids and other points drawn on their links
         for link, pts in links_drawn:
@@ -432,6 +433,7 @@ def dynamics(phi: np.ndarray, J_parts: dict, dJ_parts: dict, M_parts: dict, mach
         "flywheel_material_density": float(fw.rho),
         "flywheel_speed_ratio": float(fw.speed_ratio),
         "flywheel_J_on_its_shaft": float(J_shaft),
+        "flywheel_rim_share": float(fw.rim_share),
         "flywheel_rim_speed_limit": float(v_limit),
         "flywheel_formulas": fw.formulas,
     }
@@ -439,8 +441,10 @@ def dynamics(phi: np.ndarray, J_parts: dict, dJ_parts: dict, M_parts: dict, mach
             "omega": omega, "epsilon": eps, "J_I": J_I, "columns": cols, "scalars": scalars}
 
 
-def _transients(case, phi, J, dJ, M_sum, M_known, omega, driving_moment) -> dict:
-    """Time-domain stage: verification of ω(φ), start-up (with a motor), run-down."""
+def _transients(case, phi, J, dJ, M_sum, M_known, omega, driving_moment,
+                warnings: list[str]) -> dict:
+    """Time-domain stage: verification of ω(φ), start-up (with a motor), run-down. Appends a
+    start-up that does not reach the steady state within its cap to ``warnings``."""
     from flywheel import timedomain
 
     machine = case.machine
@@ -454,6 +458,8 @@ def _transients(case, phi, J, dJ, M_sum, M_known, omega, driving_moment) -> dict
         out["startup"] = {k: v for k, v in st.items() if not isinstance(v, np.ndarray)}
         out["startup"]["starting_torque"] = float(M_p)
         out["startup"]["no_load_speed"] = float(w_x)
+        if st.get("warning"):
+            warnings.append(st["warning"])
         if "t" in st:
             histories["startup"] = (st["t"], st["omega"])
     else:

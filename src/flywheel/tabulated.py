@@ -432,7 +432,7 @@ def analyze_tabulated(case, n_points: int = 3600, at_deg: list[float] | None = N
     time_domain = None
     if transients:
         time_domain = _transients(case, phi, d["J_I"] + d["J_II"], d["dJ_II"], d["M_sum"],
-                                  d["M_known"], omega, scalars["driving_moment"])
+                                  d["M_known"], omega, scalars["driving_moment"], warnings)
         scalars["time_domain"] = {k: v for k, v in time_domain.items() if k != "histories"}
     return Results(
         title=case.title, source=case.source, phi=phi, kinematics=None, columns=cols,

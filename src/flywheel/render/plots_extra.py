@@ -15,6 +15,10 @@ TEXT = {
            "J": "J_II [kg·m²]", "T": "ΔT = A(φ) [J]", "phi": "φ [deg]", "dT": "ΔT_I [J]",
            "curve": "ΔT(J_II) over the cycle", "tan_max": "tangent at ψ_max", "tan_min": "tangent at ψ_min",
            "origin": "origin of the full-energy axes (−J_I, −T0)", "dTI": "ΔT_I(φ)",
+           "full": "the whole construction: the tangents meet at O′ (−J_I, −T0)",
+           "zoom": "the curve enlarged: points of tangency", "merz": "Merzalov: ΔT_I(φ)",
+           "exact": "exact", "uJ": "J", "us": "s", "uw": "rad/s",
+           "steady": "steady within δ/10 after", "means": "cycle-mean speed (1/Φ)∮ω dφ", "band": "for the cycle mean", "not_reached": "steady state not reached (see summary)", "uI": "kg·m²", "axT": "T = T0 + ΔT", "axJ": "J = J_I + J_II",
            "span": "ΔT_нб", "time": "Time law over one cycle", "t": "t [s]", "w": "ω [rad/s]",
            "e": "ε [rad/s²]", "tr": "Start-up and run-down", "start": "start-up (motor)",
            "run": "run-down (drive cut)"},
@@ -22,6 +26,10 @@ TEXT = {
            "J": "J_II [кг·м²]", "T": "ΔT = A(φ) [Дж]", "phi": "φ [град]", "dT": "ΔT_I [Дж]",
            "curve": "ΔT(J_II) за цикл", "tan_max": "касательная под ψ_max", "tan_min": "касательная под ψ_min",
            "origin": "начало осей полной энергии (−J_I, −T0)", "dTI": "ΔT_I(φ)",
+           "full": "построение целиком: касательные пересекаются в O′ (−J_I, −T0)",
+           "zoom": "кривая в крупном масштабе: точки касания", "merz": "Мерцалов: ΔT_I(φ)",
+           "exact": "точно", "uJ": "Дж", "us": "с", "uw": "рад/с",
+           "steady": "установившийся режим (δ/10) через", "means": "средняя за цикл скорость (1/Φ)∮ω dφ", "band": "для средней за цикл", "not_reached": "установившийся режим не достигнут", "uI": "кг·м²", "axT": "T = T0 + ΔT", "axJ": "J = J_I + J_II",
            "span": "ΔT_нб", "time": "Закон движения за цикл", "t": "t [с]", "w": "ω [рад/с]",
            "e": "ε [рад/с²]", "tr": "Разгон и выбег", "start": "разгон (двигатель)",
            "run": "выбег (привод отключён)"},
@@ -38,9 +46,21 @@ def _plt():
 
 
 def figure_energy_mass(results, lang: str = "en"):
-    """Left: ΔT = A(φ) against J_II(φ) with the two tangents whose slopes are
-    ω_max²/2 = k₊ and ω_min²/2 = k₋ (δ target); they meet at (−J_I, −T0), the exact J_I
-    (design.md §2). Right: Merzalov's ΔT_I(φ) with ΔT_нб."""
+    """Wittenbauer's energy–mass diagram as course projects draw it, and Merzalov's ΔT_I beside it.
+
+    (a) the whole construction: ΔT = A(φ) against J_II(φ) and the two tangents of slopes
+    k± = ω_m²(1 ± δ/2)²/2 = ω_max²/2, ω_min²/2, extended leftwards until they meet at
+    (−J_I, −T0), the origin of the full-energy axes (J = J_I + J_II, T = T0 + ΔT) — the exact
+    J_I is the horizontal distance from that point to J_II = 0 (a dimension arrow). The tangents
+    cut the ΔT axis (J_II = 0) at k and l: since k₊ − k₋ = δ·ω_m², J_I = kl/(δ·ω_m²)
+    (design.md §2). (b) the curve enlarged, with the tangency points. (c) Merzalov's ΔT_I(φ)
+    with ΔT_нб. Axes and key lines carry ``gid``/labels for tests: axes labels "full", "zoom",
+    "merzalov"; lines "curve", "tangent_max", "tangent_min", "origin".
+    """
+    from matplotlib.patches import Rectangle
+
+    from flywheel.sizing import J_required_exact
+
     plt = _plt()
     t = TEXT[lang]
     s = results.scalars
@@ -49,20 +69,93 @@ def figure_energy_mass(results, lang: str = "en"):
     w_m, delta = s["omega_mean"], s["delta"]
     k_p = w_m**2 * (1 + delta / 2) ** 2 / 2
     k_m = w_m**2 * (1 - delta / 2) ** 2 / 2
-    J_I = s["J_required_exact"]
-    top = np.max(A - k_p * J_II)
-    bottom = np.min(A - k_m * J_II)
-    fig, (ax, bx) = plt.subplots(1, 2, figsize=(12, 5), constrained_layout=True)
-    ax.plot(J_II, A, lw=1.2, label=t["curve"])
-    j = np.linspace(J_II.min(), J_II.max(), 2)
-    ax.plot(j, top + k_p * j, "--", color="tab:red", label=f"{t['tan_max']}: ω_max²/2 = {k_p:.5g}")
-    ax.plot(j, bottom + k_m * j, "--", color="tab:green", label=f"{t['tan_min']}: ω_min²/2 = {k_m:.5g}")
+    J_I, T0 = J_required_exact(A, J_II, w_m, delta)
+    top = k_p * J_I - T0                      # = max(A − k₊·J_II): the upper tangent at J_II = 0
+    bottom = k_m * J_I - T0                   # = min(A − k₋·J_II): the lower one
+    i_max = int(np.argmax(A - k_p * J_II))    # tangency points (ψ_max, ψ_min)
+    i_min = int(np.argmin(A - k_m * J_II))
+    kl = top - bottom
+
+    fig, axd = plt.subplot_mosaic([["full", "full"], ["zoom", "merzalov"]], figsize=(12, 9.5),
+                                  constrained_layout=True, height_ratios=[1.1, 1])
+    ax, zx, bx = axd["full"], axd["zoom"], axd["merzalov"]
+    for name, a in axd.items():
+        a.set_label(name)
+    fig.suptitle(f"{results.title}\n{t['em']}; J_I ({t['exact']}) = {J_I:.5g} {t['uI']}", fontsize=11)
+
+    # -- (a) the whole construction -----------------------------------------------------------
+    x_hi = max(J_II.max(), 0.0)
+    span_x = x_hi + J_I
+    ax.plot(J_II, A, lw=1.2, color="tab:blue", gid="curve", label=t["curve"])
+    j = np.array([-J_I, x_hi + 0.04 * span_x])
+    ax.plot(j, top + k_p * j, "--", color="tab:red", gid="tangent_max",
+            label=f"{t['tan_max']}: ω_max²/2 = {k_p:.5g} {t['uJ']}/({t['uI']})")
+    ax.plot(j, bottom + k_m * j, "--", color="tab:green", gid="tangent_min",
+            label=f"{t['tan_min']}: ω_min²/2 = {k_m:.5g} {t['uJ']}/({t['uI']})")
+    ax.plot([-J_I], [-T0], "o", color="black", ms=6, gid="origin", label=t["origin"])
+    y_lo, y_hi = -T0, max(A.max(), top + k_p * j[1])
+    H = y_hi - y_lo
+    # full-energy axes through O' (thin), and the ΔT axis J_II = 0
+    ax.axvline(0.0, color="0.3", lw=0.8)
+    ax.axhline(0.0, color="0.3", lw=0.8)
+    ax.annotate("", xy=(-J_I, y_hi + 0.06 * H), xytext=(-J_I, -T0),
+                arrowprops={"arrowstyle": "->", "color": "0.45", "lw": 0.8})
+    ax.annotate("", xy=(x_hi + 0.06 * span_x, -T0), xytext=(-J_I, -T0),
+                arrowprops={"arrowstyle": "->", "color": "0.45", "lw": 0.8})
+    ax.text(-J_I + 0.01 * span_x, y_hi + 0.05 * H, t["axT"], fontsize=8, color="0.3", va="top")
+    ax.text(x_hi + 0.05 * span_x, -T0 + 0.015 * H, t["axJ"], fontsize=8, color="0.3", ha="right")
+    ax.annotate("O′", xy=(-J_I, -T0), xytext=(-8, 6), textcoords="offset points", ha="right",
+                fontsize=10, fontweight="bold")
+    # dimension: J_I from O′ to J_II = 0
+    y_dim = -T0 - 0.07 * H
+    ax.plot([-J_I, -J_I], [-T0, y_dim - 0.02 * H], color="black", lw=0.6)
+    ax.plot([0.0, 0.0], [y_dim - 0.02 * H, -T0], color="black", lw=0.6)
+    ax.annotate("", xy=(0.0, y_dim), xytext=(-J_I, y_dim), arrowprops={"arrowstyle": "<|-|>", "lw": 1.0})
+    ax.text(-J_I / 2, y_dim + 0.012 * H, f"J_I = {J_I:.5g} {t['uI']} ({t['exact']})", ha="center",
+            va="bottom", fontsize=9, bbox={"fc": "white", "ec": "none", "pad": 1})
+    # k and l on the ΔT axis, and the segment kl
+    ax.plot([0.0, 0.0], [bottom, top], "s", color="black", ms=4)
+    ax.annotate("k", xy=(0.0, top), xytext=(-6, 4), textcoords="offset points", ha="right", fontsize=9)
+    ax.annotate("l", xy=(0.0, bottom), xytext=(-6, -10), textcoords="offset points", ha="right",
+                fontsize=9)
+    ax.annotate(f"kl = {kl:.5g} {t['uJ']},  J_I = kl/(δ·ω_m²)", xy=(0.0, (top + bottom) / 2),
+                xytext=(-0.03 * span_x, top + 0.05 * H), ha="right", va="bottom", fontsize=8,
+                bbox={"fc": "white", "ec": "none", "pad": 1},
+                arrowprops={"arrowstyle": "-", "lw": 0.6, "color": "0.3"})
+    # where the curve is (enlarged in b)
+    x0, x1 = J_II.min(), J_II.max()
+    ax.add_patch(Rectangle((x0, A.min()), max(x1 - x0, 0.002 * span_x), A.max() - A.min(),
+                           fill=False, ec="tab:blue", lw=0.8, ls=":"))
+    ax.annotate("(b)", xy=(x1, A.max()), xytext=(3, 3), textcoords="offset points", fontsize=8,
+                color="tab:blue")
+    ax.set_xlim(-J_I - 0.05 * span_x, x_hi + 0.08 * span_x)
+    ax.set_ylim(y_dim - 0.06 * H, y_hi + 0.12 * H)
     ax.set_xlabel(t["J"])
     ax.set_ylabel(t["T"])
-    ax.set_title(f"{results.title}\n{t['em']}; J_I exact = {J_I:.5g} kg·m²", fontsize=10)
+    ax.set_title(f"(a) {t['full']}", fontsize=10)
     ax.grid(True, alpha=0.3)
-    ax.legend(fontsize=8, loc="best")
+    ax.legend(fontsize=8, loc="upper left", bbox_to_anchor=(0.0, 0.9))
+
+    # -- (b) the curve enlarged ----------------------------------------------------------------
+    pad = 0.08 * (x1 - x0) if x1 > x0 else 0.02 * J_I
+    z = np.array([x0 - pad, x1 + pad])
+    zx.plot(J_II, A, lw=1.2, color="tab:blue", label=t["curve"])
+    zx.plot(z, top + k_p * z, "--", color="tab:red", label=t["tan_max"])
+    zx.plot(z, bottom + k_m * z, "--", color="tab:green", label=t["tan_min"])
+    zx.plot(J_II[i_max], A[i_max], "o", color="tab:red", ms=5)
+    zx.plot(J_II[i_min], A[i_min], "o", color="tab:green", ms=5)
     phi_deg = np.degrees(results.phi)
+    for i, dy in ((i_max, 8), (i_min, -14)):
+        zx.annotate(f"φ = {phi_deg[i]:.1f}°", xy=(J_II[i], A[i]), xytext=(4, dy),
+                    textcoords="offset points", fontsize=8)
+    zx.set_xlim(*z)
+    zx.set_xlabel(t["J"])
+    zx.set_ylabel(t["T"])
+    zx.set_title(f"(b) {t['zoom']}", fontsize=10)
+    zx.grid(True, alpha=0.3)
+    zx.legend(fontsize=8, loc="best")
+
+    # -- (c) Merzalov --------------------------------------------------------------------------
     dT = results.columns["dT_I"].values
     bx.plot(phi_deg, dT, label=t["dTI"])
     bx.axhline(s["delta_T_I_max"], color="tab:red", lw=0.8, ls=":")
@@ -70,14 +163,15 @@ def figure_energy_mass(results, lang: str = "en"):
     bx.annotate("", xy=(s["phi_delta_T_I_max_deg"], s["delta_T_I_max"]),
                 xytext=(s["phi_delta_T_I_max_deg"], s["delta_T_I_min"]),
                 arrowprops={"arrowstyle": "<->"})
-    bx.plot([], [], " ", label=f"{t['span']} = {s['delta_T_max']:.5g} J; J_I = {s['J_required']:.5g} kg·m²")
+    bx.plot([], [], " ", label=f"{t['span']} = {s['delta_T_max']:.5g} {t['uJ']}\n"
+                              f"J_I = {t['span']}/(δ·ω_m²) = {s['J_required']:.5g} {t['uI']}")
     bx.set_xlabel(t["phi"])
     bx.set_ylabel(t["dT"])
     bx.set_xlim(0, 360)
     bx.set_xticks(np.arange(0, 361, 30))
     bx.grid(True, alpha=0.3)
     bx.legend(fontsize=8, loc="best")
-    bx.set_title("Merzalov" if lang == "en" else "Мерцалов", fontsize=10)
+    bx.set_title(f"(c) {t['merz']}", fontsize=10)
     return fig
 
 
@@ -95,19 +189,52 @@ def figure_time_law(results, lang: str = "en"):
     for a in (a1, a2):
         a.grid(True, alpha=0.3)
         a.legend(fontsize=8, loc="upper right")
-    a1.set_title(f"{results.title}\n{t['time']}: T = {results.scalars['cycle_time']:.5g} s", fontsize=10)
+    a1.set_title(f"{results.title}\n{t['time']}: T = {results.scalars['cycle_time']:.5g} {t['us']}",
+                 fontsize=10)
     return fig
 
 
+def _cycle_means(t: np.ndarray, w: np.ndarray, period: float) -> tuple[np.ndarray, np.ndarray]:
+    """Cycle means (1/Φ)∮ω dφ of a start-up history, at the middle of each whole cycle
+    (φ(t) and ∫ω² dt by the trapezoid rule; for the plot only)."""
+    dt = np.diff(t)
+    phi = np.concatenate([[0.0], np.cumsum(0.5 * (w[1:] + w[:-1]) * dt)])
+    q = np.concatenate([[0.0], np.cumsum(0.5 * (w[1:] ** 2 + w[:-1] ** 2) * dt)])
+    n = int(phi[-1] // period + 1e-9)
+    if n < 1:
+        return np.zeros(0), np.zeros(0)
+    edges = period * np.arange(n + 1)
+    t_edges = np.interp(edges, phi, t)
+    q_edges = np.interp(t_edges, t, q)
+    return 0.5 * (t_edges[1:] + t_edges[:-1]), np.diff(q_edges) / period
+
+
 def figure_transients(results, lang: str = "en"):
-    """ω(t) during start-up (if the case has a motor) and run-down."""
+    """ω(t) during start-up (if the case has a motor) and run-down; the start-up with the steady
+    speed ω_s of the motor line, its band ±δ/10 and the time to steady state (or a note that
+    the steady state was not reached)."""
     plt = _plt()
     t = TEXT[lang]
     hist = results.time_domain["histories"]
+    st = results.scalars.get("time_domain", {}).get("startup", {})
     fig, ax = plt.subplots(figsize=(9, 5), constrained_layout=True)
     if "startup" in hist:
-        ax.plot(*hist["startup"], label=t["start"])
-    ax.plot(*hist["rundown"], label=t["run"])
+        ts, ws_ = hist["startup"]
+        ax.plot(ts, ws_, lw=0.8, label=t["start"])
+        mids, means = _cycle_means(ts, ws_, float(results.phi[-1] - results.phi[0]))
+        if len(means):
+            ax.plot(mids, means, ".", color="tab:blue", ms=4, label=t["means"])
+        ws = st.get("omega_final_predicted")
+        if ws:
+            band = results.scalars["delta"] / 10
+            ax.axhspan(ws * (1 - band), ws * (1 + band), color="tab:blue", alpha=0.12,
+                       label=f"ω_s = {ws:.5g} {t['uw']} ± δ/10 ({t['band']})")
+        if st.get("time_to_steady") is not None:
+            ax.axvline(st["time_to_steady"], color="tab:blue", ls=":", lw=1.0,
+                       label=f"{t['steady']} {st['time_to_steady']:.4g} {t['us']}")
+        elif not st.get("stalled"):
+            ax.plot([], [], " ", label=t["not_reached"])
+    ax.plot(*hist["rundown"], lw=0.8, label=t["run"])
     ax.set_xlabel(t["t"])
     ax.set_ylabel(t["w"])
     ax.grid(True, alpha=0.3)

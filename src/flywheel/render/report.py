@@ -19,6 +19,27 @@ T = {
         "sizing": "5. Flywheel", "motion": "6. True velocities and accelerations",
         "warn": "Warnings", "plots": "Plots", "pos": "position", "qty": "quantity",
         "val": "value", "unit": "unit", "point": "point", "link": "link",
+        "time": "7. Motion in time",
+        "time_note": ("The equation of motion J(φ)·φ̈ + ½·J′(φ)·φ̇² = M(φ, φ̇), J = J_I + J_II(φ), "
+                      "integrated in time with scipy's solve_ivp; J, J′ and M are the tables of §3–4, "
+                      "so the integration is independent of the energy solution of §5."),
+        "verify": ("steady motion from the energy solution's state at φ = 0 over {n} cycles: ω repeats "
+                   "from cycle to cycle to {rep} (relative), and follows ω(φ) of the energy equation to "
+                   "{dev} (relative to ω_m)"),
+        "period": "cycle time: {T} s from the integration, {Te} s from t(φ) = ∫dφ/ω",
+        "motor": ("motor M_Д = M_п·(1 − ω/ω_x), reduced to the crank: M_п = {Mp} N·m, ω_x = {wx} rad/s; "
+                  "the steady cycle-mean speed that the motor line balances against the loads "
+                  "ω_s = {ws} rad/s; time constant τ = J/(M_п/ω_x) ≈ {tau} s"),
+        "st_ok": ("start-up from rest: the cycle-mean speed is within δ/10 of ω_s after **{t} s** "
+                  "({n} cycles); steady cycle-mean speed {w} rad/s"),
+        "st_no": ("start-up from rest: the steady state was **not reached** within {n} cycles ({t} s); "
+                  "the last cycle-mean speed is {w} rad/s"),
+        "st_stall": "start-up from rest: the motor cannot start the machine — it stops at φ = {a}°",
+        "st_none": "start-up: not computed ({reason})",
+        "rd": "run-down after the drive is cut at φ = 0: {t} s, {rev} revolutions of the crank",
+        "rd_not": " (not stopped within the integration limit)",
+        "rd_never": ("run-down: none — the loads do no net work over a cycle, so without the drive "
+                     "the machine keeps turning"),
     },
     "ru": {
         "title": "Динамический анализ", "source": "Источник", "input": "1. Исходные данные",
@@ -31,6 +52,30 @@ T = {
         "sizing": "5. Маховик", "motion": "6. Истинные скорости и ускорения",
         "warn": "Предупреждения", "plots": "Графики", "pos": "положение", "qty": "величина",
         "val": "значение", "unit": "ед.", "point": "точка", "link": "звено",
+        "time": "7. Движение во времени",
+        "time_note": ("Уравнение движения J(φ)·φ̈ + ½·J′(φ)·φ̇² = M(φ, φ̇), J = J_I + J_II(φ), "
+                      "проинтегрировано во времени (solve_ivp из scipy); J, J′ и M взяты из таблиц "
+                      "§3–4, поэтому интегрирование не зависит от энергетического решения §5."),
+        "verify": ("установившееся движение из состояния энергетического решения при φ = 0, циклов: "
+                   "{n}: ω повторяется от цикла к циклу с точностью {rep} (относительно) и совпадает "
+                   "с ω(φ) уравнения энергии до {dev} (относительно ω_ср)"),
+        "period": "время цикла: {T} с по интегрированию, {Te} с по t(φ) = ∫dφ/ω",
+        "motor": ("двигатель M_Д = M_п·(1 − ω/ω_x), приведённый к кривошипу: M_п = {Mp} Н·м, "
+                  "ω_x = {wx} рад/с; средняя за цикл скорость, при которой характеристика "
+                  "уравновешивает нагрузку, ω_s = {ws} рад/с; постоянная времени τ = J/(M_п/ω_x) ≈ "
+                  "{tau} с"),
+        "st_ok": ("разгон из состояния покоя: средняя за цикл скорость отличается от ω_s меньше "
+                  "чем на δ/10 через **{t} с** (циклов: {n}); установившаяся средняя скорость {w} рад/с"),
+        "st_no": ("разгон из состояния покоя: установившийся режим **не достигнут** за {n} циклов "
+                  "({t} с); средняя скорость последнего цикла {w} рад/с"),
+        "st_stall": "разгон из состояния покоя: двигатель не может разогнать машину — остановка при φ = {a}°",
+        "st_none": "разгон: не рассчитан ({reason})",
+        "st_none_motor": ("в задании нет раздела [motor]: при постоянном движущем моменте работа за "
+                          "цикл равна нулю при любой скорости, установившегося режима разгона нет"),
+        "rd": "выбег после отключения привода при φ = 0: {t} с, оборотов кривошипа: {rev}",
+        "rd_not": " (не остановился в пределах интегрирования)",
+        "rd_never": ("выбега нет: работа нагрузок за цикл равна нулю, без привода машина продолжает "
+                     "вращаться"),
     },
 }
 
@@ -45,6 +90,42 @@ def _table(header: list[str], rows: list[list[str]]) -> str:
     out = ["| " + " | ".join(header) + " |", "|" + "---|" * len(header)]
     out += ["| " + " | ".join(r) + " |" for r in rows]
     return "\n".join(out) + "\n"
+
+
+def _time_lines(td: dict, s: dict, t: dict) -> list[str]:
+    """The bullet lines of the "Motion in time" section (--transients)."""
+    v, st, rd = td["verification"], td["startup"], td["rundown"]
+    lines = [
+        "- " + t["verify"].format(n=v["cycles"], rep=f"{v['repeat_error']:.1e}", dev=f"{v['max_deviation']:.1e}"),
+        "- " + t["period"].format(T=_g(v["period"], 6), Te=_g(s["cycle_time"], 6)),
+    ]
+    if st.get("computed") is False:
+        reason = st["reason"]
+        if "st_none_motor" in t and reason.startswith("no [motor]"):
+            reason = t["st_none_motor"]
+        return lines + ["- " + t["st_none"].format(reason=reason), _rundown_line(rd, t)]
+    if "starting_torque" in st:
+        lines.append("- " + t["motor"].format(Mp=_g(st["starting_torque"], 5), wx=_g(st["no_load_speed"], 5),
+                                              ws=_g(st.get("omega_final_predicted"), 6),
+                                              tau=_g(st.get("time_constant"), 3)))
+    if st.get("stalled"):
+        lines.append("- " + t["st_stall"].format(a=f"{st['stall_angle_deg']:.1f}"))
+    elif st.get("converged", True) and st.get("time_to_steady") is not None:
+        lines.append("- " + t["st_ok"].format(t=_g(st["time_to_steady"], 4), n=st["cycles_to_steady"],
+                                              w=_g(st["omega_mean_steady"], 6)))
+    else:
+        lines.append("- " + t["st_no"].format(n=st.get("cycles_run"), t=_g(st.get("time_run"), 4),
+                                              w=_g(st.get("omega_mean_last"), 6)))
+        if st.get("warning"):
+            lines.append(f"- **{st['warning']}**")
+    return lines + [_rundown_line(rd, t)]
+
+
+def _rundown_line(rd: dict, t: dict) -> str:
+    if rd.get("reason"):
+        return "- " + t["rd_never"]
+    return "- " + t["rd"].format(t=_g(rd["time"], 4), rev=f"{rd['angle_deg'] / 360:.2f}") + (
+        "" if rd["stopped"] else t["rd_not"])
 
 
 def report_markdown(results, lang: str = "en", plots: list[str] | None = None) -> str:
@@ -122,6 +203,10 @@ def report_markdown(results, lang: str = "en", plots: list[str] | None = None) -
         body = [[n, _g(lk.get("omega_q"), 5), _g(lk.get("omega"), 5), _g(lk.get("epsilon_q"), 5),
                  _g(lk.get("epsilon"), 5)] for n, lk in a["links"].items()]
         parts.append("\n" + _table([t["link"], "ω_q", "ω [rad/s]", "ε_q [1/rad]", "ε [rad/s²]"], body))
+
+    td = s.get("time_domain")
+    if td:
+        parts.append(f"\n## {t['time']}\n\n{t['time_note']}\n\n" + "\n".join(_time_lines(td, s, t)) + "\n")
 
     if results.warnings:
         parts.append(f"\n## {t['warn']}\n\n" + "\n".join(f"- {w}" for w in results.warnings) + "\n")

@@ -1,6 +1,8 @@
 """The rich summary on the terminal (`flywheel run`): the same numbers as summary.json."""
 from __future__ import annotations
 
+import math
+
 L10N = {
     "en": {
         "crank_length": "crank length l1", "omega_mean": "mean angular velocity ω_m",
@@ -17,6 +19,21 @@ L10N = {
         "title_main": "Results", "title_at": "At φ = {phi}°: ω = {w} rad/s, ε = {e} rad/s²",
         "point": "point", "link": "link", "quantity": "quantity", "value": "value", "unit": "unit",
         "warning": "warning",
+        "fw_shaft": "flywheel shaft: speed ratio i, J_M/i²", "fw_material": "flywheel material",
+        "fw_rim_share": "rim share of J_M (hub and spokes the rest)",
+        "at": "at", "steel": "steel", "cast-iron": "cast iron", "limit": "rim speed ≤",
+        "td_verify": "time integration (solve_ivp, {n} cycles): repeats to {rep}, follows ω(φ) to "
+                     "{dev}, period {T} s",
+        "st_none": "start-up: not computed ({reason})",
+        "st_stall": "start-up: the motor stalls at φ = {a}°",
+        "st_ok": "start-up from rest: steady within δ/10 after {t} s ({n} cycles), mean speed "
+                 "{w} rad/s",
+        "st_no": "start-up from rest: steady state NOT reached within {n} cycles ({t} s); last "
+                 "cycle-mean speed {w} rad/s, the motor line predicts {wp} rad/s",
+        "rd": "run-down after the drive is cut: {t} s, {rev} revolutions",
+        "rd_not": " (not stopped)",
+        "rd_never": "run-down: none — the loads do no net work over a cycle, so without the drive "
+                    "the machine keeps turning",
     },
     "ru": {
         "crank_length": "длина кривошипа l1", "omega_mean": "средняя угловая скорость ω_ср",
@@ -34,12 +51,86 @@ L10N = {
         "title_main": "Результаты", "title_at": "При φ = {phi}°: ω = {w} рад/с, ε = {e} рад/с²",
         "point": "точка", "link": "звено", "quantity": "величина", "value": "значение",
         "unit": "ед.", "warning": "предупреждение",
+        "fw_shaft": "вал маховика: передаточное отношение i, J_M/i²", "fw_material": "материал маховика",
+        "fw_rim_share": "доля J_M на ободе (остальное — ступица и спицы)",
+        "at": "при", "steel": "сталь", "cast-iron": "чугун", "limit": "окружная скорость ≤",
+        "td_verify": "интегрирование во времени (solve_ivp, циклов: {n}): движение повторяется с "
+                     "точностью {rep}, совпадает с ω(φ) до {dev}, период {T} с",
+        "st_none": "разгон: не рассчитан ({reason})",
+        "st_none_motor": "нет раздела [motor]: при постоянном движущем моменте работа за цикл равна "
+                         "нулю при любой скорости, установившегося режима разгона нет",
+        "st_stall": "разгон: двигатель останавливается при φ = {a}°",
+        "st_ok": "разгон из состояния покоя: установившийся режим (в пределах δ/10) через {t} с "
+                 "(циклов: {n}), средняя скорость {w} рад/с",
+        "st_no": "разгон из состояния покоя: установившийся режим НЕ достигнут за {n} циклов ({t} с); "
+                 "средняя скорость последнего цикла {w} рад/с, по характеристике двигателя {wp} рад/с",
+        "rd": "выбег после отключения привода: {t} с, оборотов: {rev}",
+        "rd_not": " (не остановился)",
+        "rd_never": "выбега нет: работа нагрузок за цикл равна нулю, без привода машина "
+                    "продолжает вращаться",
     },
 }
 
 
 def _g(x: float, digits: int = 6) -> str:
     return f"{0.0 if abs(x) < 1e-13 else x:.{digits}g}"
+
+
+def _rim_share(s: dict) -> float | None:
+    """The share of J_M carried by the rim: ``flywheel_rim_share`` if the results give it, else
+    recovered from the rim's dimensions (first-principles formulas: J = πρb(D⁴ − D1⁴)/32)."""
+    if "flywheel_rim_share" in s:
+        return float(s["flywheel_rim_share"])
+    r, J = s.get("flywheel_rim") or {}, s.get("flywheel_J_on_its_shaft")
+    if s.get("flywheel_formulas", "first-principles") != "first-principles" or not J or not r.get("D"):
+        return None
+    rho = s.get("flywheel_material_density", 7800.0)
+    return math.pi * rho * r["b"] * (r["D"] ** 4 - r["D_inner"] ** 4) / 32 / J
+
+
+def time_domain_lines(td: dict | None, lang: str = "en") -> list[str]:
+    """The --transients results as lines of text (verification, start-up, run-down).
+
+    >>> td = {"verification": {"cycles": 3, "repeat_error": 1e-9, "max_deviation": 2e-9, "period": 0.1},
+    ...       "startup": {"stalled": False, "converged": False, "cycles_run": 2000, "time_run": 150.0,
+    ...                   "omega_mean_last": 60.0, "omega_final_predicted": 62.8},
+    ...       "rundown": {"time": 2.5, "angle_deg": 720.0, "stopped": True}}
+    >>> print("\\n".join(time_domain_lines(td, "ru")))  # doctest: +NORMALIZE_WHITESPACE
+    интегрирование во времени (solve_ivp, циклов: 3): движение повторяется с точностью 1.0e-09,
+    совпадает с ω(φ) до 2.0e-09, период 0.1 с
+    разгон из состояния покоя: установившийся режим НЕ достигнут за 2000 циклов (150 с); средняя
+    скорость последнего цикла 60 рад/с, по характеристике двигателя 62.8 рад/с
+    выбег после отключения привода: 2.5 с, оборотов: 2.00
+    """
+    if not td:
+        return []
+    t = L10N[lang]
+    v = td["verification"]
+    out = [t["td_verify"].format(n=v["cycles"], rep=f"{v['repeat_error']:.1e}",
+                                 dev=f"{v['max_deviation']:.1e}", T=_g(v["period"]))]
+    st = td["startup"]
+    if st.get("computed") is False:
+        reason = st["reason"]
+        if lang == "ru" and reason.startswith("no [motor]"):
+            reason = t["st_none_motor"]
+        out.append(t["st_none"].format(reason=reason))
+    elif st.get("stalled"):
+        out.append(t["st_stall"].format(a=f"{st['stall_angle_deg']:.1f}"))
+    elif st.get("converged", True) and st.get("time_to_steady") is not None:
+        out.append(t["st_ok"].format(t=_g(st["time_to_steady"], 4), n=st["cycles_to_steady"],
+                                     w=_g(st["omega_mean_steady"])))
+    else:
+        wp = st.get("omega_final_predicted")
+        out.append(t["st_no"].format(n=st.get("cycles_run"), t=_g(st.get("time_run", 0.0), 4),
+                                     w=_g(st.get("omega_mean_last", 0.0)),
+                                     wp=_g(wp) if wp is not None else "—"))
+    rd = td["rundown"]
+    if rd.get("reason"):
+        out.append(t["rd_never"])
+        return out
+    out.append(t["rd"].format(t=_g(rd["time"], 4), rev=f"{rd['angle_deg'] / 360:.2f}")
+               + ("" if rd["stopped"] else t["rd_not"]))
+    return out
 
 
 def print_summary(results, console=None, lang: str = "en") -> None:
@@ -62,14 +153,25 @@ def print_summary(results, console=None, lang: str = "en") -> None:
     ]
     for key, unit in rows:
         tab.add_row(t[key], _g(s[key]), unit)
-    tab.add_row(t["dT"], f"{_g(s['delta_T_I_max'])} J at {s['phi_delta_T_I_max_deg']:.2f}° / "
-                         f"{_g(s['delta_T_I_min'])} J at {s['phi_delta_T_I_min_deg']:.2f}°", "")
+    tab.add_row(t["dT"], f"{_g(s['delta_T_I_max'])} {t['at']} {s['phi_delta_T_I_max_deg']:.2f}° / "
+                         f"{_g(s['delta_T_I_min'])} {t['at']} {s['phi_delta_T_I_min_deg']:.2f}°", "J")
     for key, unit in [("J_required", "kg·m²"), ("J_required_exact", "kg·m²"),
                       ("J_first_group", "kg·m²"), ("J_flywheel", "kg·m²"), ("delta", ""),
                       ("delta_achieved", ""), ("delta_achieved_exact", "")]:
         tab.add_row(t[key], _g(s[key]), unit)
-    tab.add_row(t["omega_max"], f"{_g(s['omega_max'])} at {s['phi_omega_max_deg']:.2f}°", "rad/s")
-    tab.add_row(t["omega_min"], f"{_g(s['omega_min'])} at {s['phi_omega_min_deg']:.2f}°", "rad/s")
+    tab.add_row(t["omega_max"], f"{_g(s['omega_max'])} {t['at']} {s['phi_omega_max_deg']:.2f}°", "rad/s")
+    tab.add_row(t["omega_min"], f"{_g(s['omega_min'])} {t['at']} {s['phi_omega_min_deg']:.2f}°", "rad/s")
+    if "flywheel_speed_ratio" in s:
+        tab.add_row(t["fw_shaft"], f"i = {_g(s['flywheel_speed_ratio'])}, {_g(s['flywheel_J_on_its_shaft'])}",
+                    "–, kg·m²")
+    if "flywheel_material" in s:
+        mat = t.get(s["flywheel_material"], s["flywheel_material"])
+        lim = s.get("flywheel_rim_speed_limit")
+        tab.add_row(t["fw_material"], f"{mat}, ρ = {_g(s['flywheel_material_density'], 5)}"
+                    + (f"; {t['limit']} {_g(lim, 3)}" if lim else ""), "kg/m³" + (", m/s" if lim else ""))
+    share = _rim_share(s)
+    if share is not None and share < 1 - 1e-9:
+        tab.add_row(t["fw_rim_share"], _g(share, 4), "")
     d, r = s["flywheel_disk"], s["flywheel_rim"]
     tab.add_row(t["disk"], f"D = {_g(d['D'], 4)}, b = {_g(d['b'], 4)}, m = {_g(d['mass'], 5)}", "m, m, kg")
     tab.add_row(t["rim"], f"D = {_g(r['D'], 4)}, D1 = {_g(r['D_inner'], 4)}, b = {_g(r['b'], 4)}, "
@@ -88,22 +190,7 @@ def print_summary(results, console=None, lang: str = "en") -> None:
         for name, lk in a["links"].items():
             lt.add_row(name, *(_g(lk[k], 5) if k in lk else "—" for k in ("omega_q", "epsilon_q", "omega", "epsilon")))
         console.print(lt)
-    td = s.get("time_domain")
-    if td:
-        v = td["verification"]
-        console.print(f"time integration (solve_ivp, {v['cycles']} cycles): repeats to "
-                      f"{v['repeat_error']:.1e}, follows ω(φ) to {v['max_deviation']:.1e}, "
-                      f"period {_g(v['period'])} s")
-        st = td["startup"]
-        if st.get("computed") is False:
-            console.print(f"start-up: not computed ({st['reason']})", markup=False)
-        elif st.get("stalled"):
-            console.print(f"start-up: the motor stalls at φ = {st['stall_angle_deg']:.1f}°")
-        else:
-            console.print(f"start-up from rest: steady within δ/10 after {_g(st['time_to_steady'], 4)} s "
-                          f"({st['cycles_to_steady']} cycles), mean speed {_g(st['omega_mean_steady'])} rad/s")
-        rd = td["rundown"]
-        console.print(f"run-down after the drive is cut: {_g(rd['time'], 4)} s, "
-                      f"{rd['angle_deg'] / 360:.2f} revolutions" + ("" if rd["stopped"] else " (not stopped)"))
+    for line in time_domain_lines(s.get("time_domain"), lang):
+        console.print(line, markup=False)
     for w in results.warnings:
         console.print(f"[yellow]{t['warning']}:[/yellow] {escape(w)}")
