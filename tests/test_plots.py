@@ -16,7 +16,7 @@ CASE = Path(__file__).resolve().parents[1] / "cases" / "compressor.toml"
 EXPECTED = {
     "positions.png", "velocity_analogues.png", "acceleration_analogues.png", "J_II.png",
     "indicator_HP.png", "indicator_LP.png", "piston_forces.png", "reduced_moments.png",
-    "works.png", "omega.png", "epsilon.png", "scheme.png",
+    "works.png", "omega.png", "epsilon.png", "scheme.png", "energy_mass.png", "time_law.png",
 }
 
 

@@ -115,9 +115,6 @@ def run(
             (folder / "plots").mkdir()
             pngs += [p.name for p in write_plots(results, folder / "plots", lang=lang,
                                                  jobs=min(2, os.cpu_count() or 1))]
-            from flywheel.render.plots_extra import write_extra_plots
-
-            pngs += [p.name for p in write_extra_plots(results, folder / "plots", lang=lang)]
         from flywheel.render.report import report_markdown
 
         (folder / "report.md").write_text(report_markdown(results, lang, pngs), encoding="utf-8")

@@ -794,8 +794,21 @@ def figures(results, lang: str = "en"):
     return out
 
 
+def all_figures(results, lang: str = "en"):
+    """:func:`figures` and those beyond the worksheet (plots_extra: the energy–mass diagram,
+    the time law, and with --transients the start-up and run-down), for one pool of workers."""
+    from flywheel.render import plots_extra as px
+
+    out = figures(results, lang)
+    out += [("energy_mass.png", lambda: px.figure_energy_mass(results, lang)),
+            ("time_law.png", lambda: px.figure_time_law(results, lang))]
+    if results.time_domain is not None:
+        out.append(("transients.png", lambda: px.figure_transients(results, lang)))
+    return out
+
+
 def _save_some(results, folder: Path, lang: str, indices: list[int]) -> None:
-    specs = figures(results, lang)
+    specs = all_figures(results, lang)
     with _style():
         for i in indices:
             name, build = specs[i]
@@ -808,9 +821,23 @@ def _save_some(results, folder: Path, lang: str, indices: list[int]) -> None:
                 fig.clear()
 
 
+_HEAVY = ("energy_mass.png", "positions.png")
+
+
+def _save_next(results, folder: Path, lang: str, order: list[int], counter) -> None:
+    """Draw figures ``order[k]`` for k taken one at a time from the shared ``counter``."""
+    while True:
+        with counter.get_lock():
+            k = counter.value
+            counter.value += 1
+        if k >= len(order):
+            return
+        _save_some(results, folder, lang, [order[k]])
+
+
 def write_plots(results, folder: Path, lang: str = "en", jobs: int = 1) -> list[Path]:
-    """Write every plot of ``results`` as PNG into ``folder`` (created if missing); return the
-    paths in a fixed order. ``lang``: "en" or "ru" for the labels and titles. ``jobs`` > 1
+    """Write every plot of ``results`` (:func:`all_figures`) as PNG into ``folder`` (created if
+    missing); return the paths in a fixed order. ``lang``: "en" or "ru" for the labels and titles. ``jobs`` > 1
     renders in that many forked processes (Linux/macOS; each file is drawn whole by one).
 
     The files are byte-identical for the same input (fixed size and dpi, no metadata).
@@ -821,21 +848,25 @@ def write_plots(results, folder: Path, lang: str = "en", jobs: int = 1) -> list[
         raise ValueError(f"lang {lang!r}: allowed 'en' or 'ru'")
     folder = Path(folder)
     folder.mkdir(parents=True, exist_ok=True)
-    names = [name for name, _ in figures(results, lang)]
+    names = [name for name, _ in all_figures(results, lang)]
     jobs = max(1, min(jobs, len(names)))
+    # the heaviest figures first (energy_mass has three panels), then the rest in order: each
+    # process takes the next one from a shared counter, so neither waits while the other draws
+    order = sorted(range(len(names)), key=lambda i: names[i] not in _HEAVY)
     if jobs > 1 and "fork" in mp.get_all_start_methods():
         ctx = mp.get_context("fork")
-        groups = [list(range(k, len(names), jobs)) for k in range(jobs)]
-        children = [ctx.Process(target=_save_some, args=(results, folder, lang, g)) for g in groups[1:]]
+        counter = ctx.Value("i", 0)
+        children = [ctx.Process(target=_save_next, args=(results, folder, lang, order, counter))
+                    for _ in range(jobs - 1)]
         for c in children:
             c.start()
         try:
-            _save_some(results, folder, lang, groups[0])
+            _save_next(results, folder, lang, order, counter)
         finally:
             for c in children:
                 c.join()
         if any(c.exitcode != 0 for c in children):
             raise RuntimeError("a plotting process failed")
     else:
-        _save_some(results, folder, lang, list(range(len(names))))
+        _save_some(results, folder, lang, order)
     return [folder / n for n in names]
