@@ -79,7 +79,7 @@ BAD = [
     ("wrong-type-list", "delta     = 0.05", "delta     = [0.05]",
      r"machine\.delta: input should be a valid number"),
     ("wrong-type-table", "guide = { through = [0.0, 0.0], angle_deg = 0.0 }", "guide = 5",
-     r"dyads\[1\]\.guide: input should be a valid dictionary.*\(got 5\)"),
+     r"dyads\[1\]\.guide: must be a table of keys, e\.g\. \{ key = value, … \} \(got 5\)"),
     ("wrong-kind", 'kind = "RRP"\nfrom = "A"\njoint = "C"', 'kind = "RPP"\nfrom = "A"\njoint = "C"',
      r"dyads\[1\]: kind must be one of RRP, RRR, RPR"),
     ("wrong-branch", "branch = \"+\"                     # B above A", 'branch = "up"',

@@ -383,6 +383,9 @@ def dynamics(phi: np.ndarray, J_parts: dict, dJ_parts: dict, M_parts: dict, mach
     cols: dict[str, Column] = {}
     for name, J in J_parts.items():
         cols[f"J_{name}"] = Column(J, "kg·m²", f"link {name}'s share of J_II", f"вклад звена {name} в J_II")
+    for name, dJ in dJ_parts.items():
+        cols[f"dJ_{name}"] = Column(dJ, "kg·m²/rad", f"link {name}'s share of dJ_II/dφ",
+                                    f"вклад звена {name} в dJ_II/dφ")
     cols["J_II"] = Column(J_II, "kg·m²", "reduced inertia of the second group J_II",
                           "приведённый момент инерции II группы")
     cols["dJ_II"] = Column(dJ_II, "kg·m²/rad", "dJ_II/dφ", "производная J_II")

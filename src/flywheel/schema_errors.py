@@ -61,6 +61,8 @@ def describe(err: dict, allowed: Callable[[tuple], list[str]], drop: Iterable[st
         return f"{where}: missing required field"
     if kind == "finite_number":
         return f"{where}: must be a finite number{got_s}"
+    if kind in ("model_type", "model_attributes_type", "dict_type"):
+        return f"{where}: must be a table of keys, e.g. {{ key = value, … }}{got_s}"
     if kind == "value_error":
         return f"{where}: {msg.removeprefix('Value error, ')}"
     if messages and kind in messages:
