@@ -20,10 +20,11 @@ def cumulative_work(M: np.ndarray, phi: np.ndarray) -> np.ndarray:
     return out
 
 
-def balancing_moment(M_known: np.ndarray, phi: np.ndarray) -> float:
+def balancing_moment(A_known: np.ndarray, phi: np.ndarray) -> float:
     """The constant moment that makes the work over the cycle zero [N·m]:
-    M = −(1/Φ)·∮ M_known dφ (seed 000: M_PRD = −A_C/2π)."""
-    return -cumulative_work(M_known, phi)[-1] / (phi[-1] - phi[0])
+    M = −A_known(Φ)/Φ = −(1/Φ)·∮ M_known dφ (seed 000: M_PRD = −A_C/2π), from the known loads'
+    cumulative work A_known(φ) (:func:`cumulative_work`, or exact where a load's work is)."""
+    return -float(A_known[-1]) / (phi[-1] - phi[0])
 
 
 def extreme(y: np.ndarray, phi: np.ndarray, kind: str) -> tuple[float, float]:

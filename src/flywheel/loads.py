@@ -132,14 +132,11 @@ def technological_work(x: np.ndarray, x_ref: float, x_other: float, magnitude: f
     return np.concatenate([[0.0], np.cumsum(dW)])
 
 
-def travel_crossings(x: np.ndarray, x_bounds) -> np.ndarray:
-    """Indices i of the intervals [i, i+1] inside which x crosses one of ``x_bounds`` (the
-    positions where a technological force switches on or off), for refining the grid."""
-    out = []
-    for xb in x_bounds:
-        d = x - xb
-        out.append(np.nonzero(d[:-1] * d[1:] < 0)[0])
-    return np.unique(np.concatenate(out)) if out else np.array([], int)
+def travel_crossings(x: np.ndarray, x_bound: float) -> np.ndarray:
+    """Indices i of the intervals [i, i+1] inside which x crosses ``x_bound`` (a position where
+    a technological force switches on or off), for refining the grid."""
+    d = x - x_bound
+    return np.nonzero(d[:-1] * d[1:] < 0)[0]
 
 
 def gravity_moment(mass: float, gravity: np.ndarray, v_q: np.ndarray) -> np.ndarray:

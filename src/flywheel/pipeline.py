@@ -47,22 +47,32 @@ def grid_options(case, n_points: int, at_deg: list[float] | None) -> list[float]
     return at_deg
 
 
+def _slider_frame(mech, dcs: dict, slider: str, near: str, what: str) -> tuple:
+    """(dyad, guide unit vector u, guide base point, near dead centre, far dead centre) of a
+    slider: ``near`` ('outer' or 'inner') names the dead centre that s is measured from (a
+    cylinder's head, a force's reference). ``what`` names the load in the error."""
+    d = slider_dyad(mech, slider)
+    u, base = guide_frame(d)
+    kinds = {dc.kind: dc for dc in dcs[slider]}
+    if set(kinds) != {"outer", "inner"}:
+        raise InputError(f"{what} {slider} has no pair of dead centres")
+    a, b = kinds["outer"], kinds["inner"]
+    return (d, u, base, a, b) if near == "outer" else (d, u, base, b, a)
+
+
 def _force_switch_angles(case, mech, dcs, phi: np.ndarray, kin) -> list[float]:
     """Crank angles [rad] where a technological force's slider reaches the ends of its s_range
     (the force switches on or off): found in the grid's intervals, refined by Newton's method
     on x(φ) with the exact analogue x' (4 steps: quadratic convergence from h ≤ 2π/36)."""
     out: list[float] = []
     for f in case.forces:
-        d = slider_dyad(mech, f.slider)
-        u, base = guide_frame(d)
-        kinds = {dc.kind: dc for dc in dcs[f.slider]}
-        ref, other = (kinds["outer"], kinds["inner"]) if f.reference == "outer" else (kinds["inner"], kinds["outer"])
+        d, u, base, ref, other = _slider_frame(mech, dcs, f.slider, f.reference, f"forces {f.name}: slider")
         x = (kin.points[d.joint].r - base) @ u
         for s_b in f.s_range:
             if not 0.0 < s_b < 1.0:
                 continue                    # the dead centres are nodes already
             x_b = ref.x + s_b * (other.x - ref.x)
-            i = loads.travel_crossings(x, [x_b])
+            i = loads.travel_crossings(x, x_b)
             if i.size == 0:
                 continue
             a = 0.5 * (phi[i] + phi[i + 1])
@@ -128,14 +138,9 @@ def analyze(case, n_points: int = DEFAULT_POINTS, at_deg: list[float] | None = N
     cyl_results: list[CylinderResult] = []
     columns: dict[str, Column] = {}
     for cy in case.cylinders:
-        d = slider_dyad(mech, cy.piston)
-        u, base = guide_frame(d)
+        d, u, base, head, far = _slider_frame(mech, dcs, cy.piston, cy.head, f"cylinders {cy.name}: piston")
         x = (P[d.joint].r - base) @ u
         x_dot = P[d.joint].v_q @ u
-        kinds = {dc.kind: dc for dc in dcs[cy.piston]}
-        if set(kinds) != {"outer", "inner"}:
-            raise InputError(f"cylinders {cy.name}: piston {cy.piston} has no pair of dead centres")
-        head, far = (kinds["outer"], kinds["inner"]) if cy.head == "outer" else (kinds["inner"], kinds["outer"])
         s_tab = np.asarray(cy.s, float)
         up, down = np.asarray(cy.towards_head, float), np.asarray(cy.away_from_head, float)
         p, F, s = loads.gas_force(x, x_dot, head.x, far.x, s_tab, up, down, cy.p_max, cy.bore,
@@ -156,12 +161,9 @@ def analyze(case, n_points: int = DEFAULT_POINTS, at_deg: list[float] | None = N
         columns[f"F_{cy.name}"] = Column(F, "N", f"gas force on piston {cy.piston}",
                                          f"сила давления газа на поршень {cy.piston}")
     for f in case.forces:
-        d = slider_dyad(mech, f.slider)
-        u, base = guide_frame(d)
+        d, u, base, ref, other = _slider_frame(mech, dcs, f.slider, f.reference, f"forces {f.name}: slider")
         x = (P[d.joint].r - base) @ u
         x_dot = P[d.joint].v_q @ u
-        kinds = {dc.kind: dc for dc in dcs[f.slider]}
-        ref, other = (kinds["outer"], kinds["inner"]) if f.reference == "outer" else (kinds["inner"], kinds["outer"])
         F, M = loads.technological_moment(x, x_dot, ref.x, other.x, f.magnitude, tuple(f.s_range), f.stroke)
         M_parts[f"force {f.name}"] = M
         W_parts[f"force {f.name}"] = loads.technological_work(x, ref.x, other.x, f.magnitude,
@@ -300,7 +302,7 @@ def dynamics(phi: np.ndarray, J_parts: dict, dJ_parts: dict, M_parts: dict, mach
     A_known = energy.cumulative_work(sum((M for k, M in M_parts.items() if k not in W_parts),
                                          zero.copy()), phi) + sum(W_parts.values(), zero.copy())
     work_known = float(A_known[-1])
-    M_const = -work_known / (phi[-1] - phi[0])          # the cycle balance (energy.balancing_moment)
+    M_const = energy.balancing_moment(A_known, phi)
     if abs(work_known) <= 1e-9 * float(energy.cumulative_work(np.abs(M_known), phi)[-1]):
         # only conservative loads (gravity, say): nothing to balance, round-off aside
         M_const, work_known = 0.0, 0.0
