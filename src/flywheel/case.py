@@ -522,6 +522,12 @@ def case_json_schema() -> dict:
 
 # -- to the computation's own types ------------------------------------------------------------
 
+def dyad_name(d) -> str:
+    """The name a dyad goes by in the kinematics and its messages: ``name``, else its joint
+    (RRR, RRP) or its rocker (RPR)."""
+    return d.name or (d.rocker if isinstance(d, RPRSpec) else d.joint)
+
+
 def to_mechanism(case: Case):
     """Build the kinematics description (:class:`flywheel.kinematics.Mechanism`) of a case."""
     from flywheel.kinematics import RPR, RRP, RRR, Crank, Guide, LinkPoint, Mechanism
@@ -534,13 +540,13 @@ def to_mechanism(case: Case):
         br = 1 if d.branch == "+" else -1
         if isinstance(d, RRPSpec):
             g = Guide(tuple(d.guide.through), math.radians(d.guide.angle_deg), d.guide.offset)
-            dyads.append(RRP(d.name or d.joint, d.from_, d.joint, d.rod, case.rod_length(d),
+            dyads.append(RRP(dyad_name(d), d.from_, d.joint, d.rod, case.rod_length(d),
                              d.slider, g, br))
         elif isinstance(d, RRRSpec):
-            dyads.append(RRR(d.name or d.joint, d.from_, d.link_from, d.length_from, d.to,
+            dyads.append(RRR(dyad_name(d), d.from_, d.link_from, d.length_from, d.to,
                              d.link_to, d.length_to, d.joint, br))
         else:
-            dyads.append(RPR(d.name or d.rocker, d.from_, d.pivot, d.rocker, d.slider, d.offset, br))
+            dyads.append(RPR(dyad_name(d), d.from_, d.pivot, d.rocker, d.slider, d.offset, br))
     points = tuple(
         LinkPoint(name, p.link, p.from_, p.to, p.fraction, p.across,
                   p.distance or 0.0, math.radians(p.angle_deg))

@@ -43,13 +43,12 @@ def _guard(func, *args, source: Path | None = None, case=None, **kwargs):
 
 def _field_of(exc: Exception, case) -> str:
     """The case-file path of the dyad an AssemblyError names ('dyads[1]'), else ''."""
+    from flywheel.case import dyad_name
+
     dyad = getattr(exc, "dyad", None)
     if dyad is None or case is None:
         return ""
-    for i, d in enumerate(case.dyads):   # named as case.to_mechanism names them
-        if dyad == (d.name or getattr(d, "joint", None) or d.rocker):
-            return f"dyads[{i}]"
-    return ""
+    return next((f"dyads[{i}]" for i, d in enumerate(case.dyads) if dyad_name(d) == dyad), "")
 
 
 @app.command()
