@@ -112,6 +112,8 @@ def test_time_law_and_transients(results, tmp_path):
         assert fig.axes[1].get_xlabel() == "t [с]"
     finally:
         plots_extra._plt().close(fig)
-    paths = plots_extra.write_extra_plots(results, tmp_path)
-    assert [p.name for p in paths] == ["energy_mass.png", "time_law.png", "transients.png"]
+    from flywheel.render import plots
+
+    paths = plots.write_plots(results, tmp_path)          # with the worksheet's plots
+    assert [p.name for p in paths][-3:] == ["energy_mass.png", "time_law.png", "transients.png"]
     assert all(p.read_bytes().startswith(b"\x89PNG") for p in paths)

@@ -1,12 +1,12 @@
 """Plots beyond the worksheet (issue 6): Wittenbauer's energy–mass diagram beside Merzalov's
 ΔT_I construction, the time law ω(t), ε(t), and the start-up / run-down histories.
 
-Figures are built by functions that return them (tests check structure); ``write_extra_plots``
-saves them. matplotlib is imported inside the functions (0.7 s to import).
+Figures are built by functions that return them (tests check structure);
+:func:`flywheel.render.plots.write_plots` saves them with the worksheet's plots, in the same
+worker processes. matplotlib is imported inside the functions (0.7 s to import).
 """
 from __future__ import annotations
 
-from pathlib import Path
 
 import numpy as np
 
@@ -242,18 +242,3 @@ def figure_transients(results, lang: str = "en"):
     ax.set_title(f"{results.title}\n{t['tr']}", fontsize=10)
     return fig
 
-
-def write_extra_plots(results, folder: Path, lang: str = "en") -> list[Path]:
-    """Write energy_mass.png, time_law.png and (with --transients) transients.png."""
-    plt = _plt()
-    figs = {"energy_mass.png": figure_energy_mass, "time_law.png": figure_time_law}
-    if results.time_domain is not None:
-        figs["transients.png"] = figure_transients
-    out = []
-    for name, make in figs.items():
-        fig = make(results, lang)
-        path = Path(folder) / name
-        fig.savefig(path, dpi=120, metadata={"Software": None})
-        plt.close(fig)
-        out.append(path)
-    return out
