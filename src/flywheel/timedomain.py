@@ -122,7 +122,6 @@ def verify_steady(phi_grid: np.ndarray, J: np.ndarray, dJ: np.ndarray, M: np.nda
     interpolation, whose error, ~h²·ω″/8 with steps of Φ/90, is some 1e-5 of ω)."""
     tables = _PeriodicTables(phi_grid, J, dJ, M)
     period = tables.period
-    w_energy_f = _PeriodicTables(phi_grid, omega, omega, omega)
     starts, periods, dev = [float(omega[0])], [], 0.0
     for k in range(cycles):
         sol = _solve(tables, starts[-1], 1.0, None, 1e-10, 1e-10, None, k * period)
@@ -130,7 +129,7 @@ def verify_steady(phi_grid: np.ndarray, J: np.ndarray, dJ: np.ndarray, M: np.nda
             raise RuntimeError("verify_steady: the machine stopped inside a cycle")
         periods.append(float(sol.t[-1]))
         starts.append(float(sol.y[1][-1]))
-        w_e = np.array([w_energy_f(p)[0] for p in sol.y[0]])
+        w_e = np.interp(np.mod(sol.y[0] - phi_grid[0], period) + phi_grid[0], phi_grid, omega)
         dev = max(dev, float(np.max(np.abs(w_e - sol.y[1]))))
     return {
         "cycles": cycles,
@@ -148,14 +147,23 @@ def predicted_steady_speed(phi_grid: np.ndarray, M_loads: np.ndarray, motor, ome
     ω̄ = (M_п + M̄_L)/(M_п/ω_x) with M̄_L = (1/Φ)∮M_L dφ — exact for any J(φ) and M_L(φ).
     The line is taken through ``motor(0)`` and ``motor(omega_ref)``. None if the motor's moment
     does not fall with speed or cannot carry the mean load (ω̄ ≤ 0)."""
-    period = phi_grid[-1] - phi_grid[0]
-    M_mean = float(np.sum(0.5 * (M_loads[1:] + M_loads[:-1]) * np.diff(phi_grid)) / period)
-    m0, m1 = float(motor(0.0)), float(motor(omega_ref))
-    slope = (m0 - m1) / omega_ref
+    slope = _motor_slope(motor, omega_ref)
     if not slope > 0:
         return None
-    w = (m0 + M_mean) / slope
+    w = (float(motor(0.0)) + _cycle_mean(M_loads, phi_grid)) / slope
     return w if w > 0 else None
+
+
+def _motor_slope(motor, omega_ref: float) -> float:
+    """M_п/ω_x of a linear characteristic: its fall per rad/s between 0 and ``omega_ref``."""
+    return (float(motor(0.0)) - float(motor(omega_ref))) / omega_ref
+
+
+def _cycle_mean(y: np.ndarray, phi_grid: np.ndarray) -> float:
+    """(1/Φ)∮y dφ by the trapezoid rule, as :func:`flywheel.energy.cumulative_work`."""
+    from flywheel.energy import cumulative_work
+
+    return float(cumulative_work(np.asarray(y, float), phi_grid)[-1] / (phi_grid[-1] - phi_grid[0]))
 
 
 def startup(phi_grid: np.ndarray, J: np.ndarray, dJ: np.ndarray, M_loads: np.ndarray, motor,
@@ -187,9 +195,8 @@ def startup(phi_grid: np.ndarray, J: np.ndarray, dJ: np.ndarray, M_loads: np.nda
     tables = _PeriodicTables(phi_grid, J, dJ, M_loads)
     period = tables.period
     w_pred = predicted_steady_speed(phi_grid, np.asarray(M_loads, float), motor, omega_steady)
-    slope = (float(motor(0.0)) - float(motor(omega_steady))) / omega_steady
-    J_mean = float(np.sum(0.5 * (J[1:] + J[:-1]) * np.diff(phi_grid)) / period)
-    tau = J_mean / slope if slope > 0 else None
+    slope = _motor_slope(motor, omega_steady)
+    tau = _cycle_mean(J, phi_grid) / slope if slope > 0 else None
     band, tol, tol_step = delta / 10, delta / 50, delta / 500
     phi0, t0 = 0.0, 0.0
     # a tiny initial speed avoids the singular start of the period-based step
