@@ -55,8 +55,8 @@ def main() -> int:
     ap.add_argument("--repeat", type=int, default=15, help="timeit repeats (default 15)")
     args = ap.parse_args()
 
-    from flywheel.case import load_case, to_mechanism
-    from flywheel.kinematics import solve
+    from flywheel.cases.run import load_case, to_mechanism
+    from flywheel.linkage import solve
 
     phi = np.linspace(0.0, 2 * np.pi, args.points, endpoint=False)
     mech = to_mechanism(load_case(CASE))

@@ -35,10 +35,10 @@ def best(stmt, number=20, repeat=5) -> float:
 def in_process() -> None:
     import numpy as np
 
-    from flywheel.case import load_case, to_mechanism
-    from flywheel.kinematics import solve
-    from flywheel.kinematics.deadcentres import dead_centres
-    from flywheel.pipeline import analyze
+    from flywheel.cases.run import load_case, to_mechanism
+    from flywheel.linkage import solve
+    from flywheel.linkage.deadcentres import dead_centres
+    from flywheel.dynamics.pipeline import analyze
 
     case = load_case(CASE)
     mech = to_mechanism(case)

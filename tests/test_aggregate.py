@@ -8,8 +8,8 @@ import numpy as np
 import pytest
 from typer.testing import CliRunner
 
-from flywheel import aggregate as ag
-from flywheel.aggregate_case import load_aggregate_case, parse_aggregate_case, to_model
+from flywheel.elastic import model as ag
+from flywheel.cases.aggregate import load_aggregate_case, parse_aggregate_case, to_model
 from flywheel.errors import CaseFileError, InputError
 
 CASES = Path(__file__).resolve().parent.parent / "cases"

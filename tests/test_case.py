@@ -13,7 +13,7 @@ from pathlib import Path
 
 import pytest
 
-from flywheel.case import case_json_schema, load_case, parse_case, to_mechanism
+from flywheel.cases.run import case_json_schema, load_case, parse_case, to_mechanism
 from flywheel.errors import CaseFileError
 
 CASES = Path(__file__).resolve().parents[1] / "cases"
@@ -264,7 +264,7 @@ DOC = Path(__file__).resolve().parents[1] / "docs" / "case-format.md"
 
 
 def test_every_field_is_documented():
-    from flywheel import case as models
+    from flywheel.cases import run as models
 
     text = DOC.read_text(encoding="utf-8")
     tables = [models.Machine, models.Design, models.CrankSpec, models.GuideSpec, models.RRPSpec,
@@ -277,7 +277,7 @@ def test_every_field_is_documented():
 
 
 def test_annotated_example_loads_and_matches_its_closed_forms(tmp_path):
-    from flywheel.kinematics.deadcentres import dead_centres
+    from flywheel.linkage.deadcentres import dead_centres
 
     example = re.findall(r"```toml\n(.*?)```", DOC.read_text(encoding="utf-8"), re.S)[-1]
     path = tmp_path / "pump.toml"
@@ -291,7 +291,7 @@ def test_annotated_example_loads_and_matches_its_closed_forms(tmp_path):
 
 
 def test_point_fields_that_do_not_go_together():
-    from flywheel.case import parse_case
+    from flywheel.cases.run import parse_case
     from flywheel.errors import CaseFileError
 
     base = {

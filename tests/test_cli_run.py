@@ -11,9 +11,9 @@ import numpy as np
 import pytest
 from typer.testing import CliRunner
 
-from flywheel.case import parse_case
+from flywheel.cases.run import parse_case
 from flywheel.cli import app
-from flywheel.pipeline import analyze
+from flywheel.dynamics.pipeline import analyze
 
 CASES = Path(__file__).resolve().parents[1] / "cases"
 runner = CliRunner()
@@ -182,7 +182,7 @@ def test_python_dash_m(tmp_path):
 def test_conservative_loads_need_no_balancing_moment():
     """Gravity alone does no work over a cycle: the balancing moment is exactly 0, with a
     warning, rather than a round-off sign deciding between 'driving' and an error."""
-    from flywheel.case import load_case
+    from flywheel.cases.run import load_case
 
     r = analyze(load_case(CASES / "fourbar.toml"), n_points=720)
     assert r.scalars["balancing_moment"] == 0.0

@@ -13,10 +13,10 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from flywheel import energy, loads, sizing
-from flywheel.case import load_case, parse_case
+from flywheel.dynamics import energy, loads, sizing
+from flywheel.cases.run import load_case, parse_case
 from flywheel.errors import InputError
-from flywheel.pipeline import analyze
+from flywheel.dynamics.pipeline import analyze
 
 CASES = Path(__file__).resolve().parents[1] / "cases"
 SEED_OMEGA = 2 * math.pi * 10          # ω_1ср = 62.832 rad/s
@@ -275,7 +275,7 @@ def test_what_follows_from_the_seeds_J_PRI(worksheet):
 def test_seed_flywheel_gives_more_than_its_delta(fine_worksheet):
     """Defect 6 in physical terms: with the seed's J_PRI = 4.223 on the true loads the speed
     fluctuates by δ = 0.054 > 0.05."""
-    from flywheel import motion
+    from flywheel.dynamics import motion
 
     r = fine_worksheet
     A, J_II = r.columns["A"].values, r.columns["J_II"].values
@@ -388,8 +388,8 @@ def test_cutting_force_work_is_force_times_travel():
     A_C = −1500·0.9·stroke, the stroke from the dead centres the program finds."""
     case = load_case(CASES / "slotted_link.toml")
     r = analyze(case, n_points=720)
-    from flywheel.case import to_mechanism
-    from flywheel.kinematics.deadcentres import dead_centres
+    from flywheel.cases.run import to_mechanism
+    from flywheel.linkage.deadcentres import dead_centres
 
     xs = [dc.x for dc in dead_centres(to_mechanism(case), "5")]
     stroke = max(xs) - min(xs)

@@ -9,7 +9,7 @@ from typer.testing import CliRunner
 
 from flywheel.cli import app
 from flywheel.errors import CaseFileError
-from flywheel.grading import grade, parse_key, parse_number, rel_error
+from flywheel.teaching.grading import grade, parse_key, parse_number, rel_error
 
 CASES = Path(__file__).resolve().parent.parent / "cases"
 runner = CliRunner()

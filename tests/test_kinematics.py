@@ -21,10 +21,10 @@ import pytest
 from hypothesis import HealthCheck, assume, given, settings
 from hypothesis import strategies as st
 
-from flywheel.case import load_case, to_mechanism
+from flywheel.cases.run import load_case, to_mechanism
 from flywheel.errors import AssemblyError
-from flywheel.kinematics import RPR, RRP, RRR, Crank, Guide, LinkPoint, Mechanism, solve
-from flywheel.kinematics.deadcentres import dead_centres
+from flywheel.linkage import RPR, RRP, RRR, Crank, Guide, LinkPoint, Mechanism, solve
+from flywheel.linkage.deadcentres import dead_centres
 
 CASES = Path(__file__).resolve().parents[1] / "cases"
 DEG = math.pi / 180

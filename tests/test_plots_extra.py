@@ -6,8 +6,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from flywheel.case import load_case
-from flywheel.pipeline import analyze
+from flywheel.cases.run import load_case
+from flywheel.dynamics.pipeline import analyze
 from flywheel.render import plots_extra
 
 CASES = Path(__file__).resolve().parents[1] / "cases"
@@ -81,7 +81,7 @@ def test_energy_mass_diagram_other_cases(name):
 
 def test_energy_mass_diagram_constant_inertia():
     """No second-group masses: J_II ≡ 0, the curve is a segment on the ΔT axis."""
-    from flywheel.case import parse_case
+    from flywheel.cases.run import parse_case
 
     case = parse_case({
         "title": "constant inertia", "machine": {"speed_rpm": 600.0, "delta": 0.04, "gravity": [0.0, 0.0]},

@@ -17,11 +17,11 @@ import numpy as np
 import pytest
 from typer.testing import CliRunner
 
-from flywheel import tabulated
-from flywheel.case import load_case, parse_case
+from flywheel.dynamics import tabulated
+from flywheel.cases.run import load_case, parse_case
 from flywheel.cli import app
 from flywheel.errors import CaseFileError
-from flywheel.pipeline import analyze
+from flywheel.dynamics.pipeline import analyze
 
 CASES = Path(__file__).resolve().parents[1] / "cases"
 runner = CliRunner()
@@ -469,8 +469,8 @@ def _compressor_as_table(case, exact, n: int, loads: str = "linear") -> dict:
     """The compressor's exact kinematics sampled at n positions (|V_q| of S2, B, S4, C; ω_q of
     links 2, 4) and its reduced moments (gas HP, gas LP, gravity) sampled as moments per position:
     the table a student would draw, without drawing errors."""
-    from flywheel.case import to_mechanism
-    from flywheel.kinematics import solve
+    from flywheel.cases.run import to_mechanism
+    from flywheel.linkage import solve
 
     pos = [k * 360.0 / n for k in range(n)]
     kin = solve(to_mechanism(case), np.radians(pos))

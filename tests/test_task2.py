@@ -1,4 +1,4 @@
-"""flywheel.task2 and its case format: seed 002, closed forms, textbook problems.
+"""flywheel.constant_inertia.solve and its case format: seed 002, closed forms, textbook problems.
 
 Reference values: the seed's printed numbers sit in comments next to the exact values asserted;
 where the seed is wrong (its crossings, ω4 = ω5 = 199.91, δ printed as 0) the test says so.
@@ -9,9 +9,9 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from flywheel import task2 as t2
+from flywheel.constant_inertia import solve as t2
 from flywheel.errors import CaseFileError, InputError
-from flywheel.task2_case import load_task2_case, parse_task2_case, solve_case
+from flywheel.cases.task2 import load_task2_case, parse_task2_case, solve_case
 
 CASES = Path(__file__).resolve().parent.parent / "cases"
 PI = math.pi

@@ -94,7 +94,7 @@ def test_plot_structure():
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    from flywheel import task2 as t2
+    from flywheel.constant_inertia import solve as t2
     from flywheel.render.task2 import plot
 
     r = t2.seed_task("triangle")
@@ -322,7 +322,7 @@ def test_unsteady_summary_prints_a_tiny_work_as_it_is():
 
     from rich.console import Console
 
-    from flywheel import task2 as t2
+    from flywheel.constant_inertia import solve as t2
     from flywheel.render.task2 import print_summary
 
     r = t2.solve(t2.constant(1e-13), t2.constant(0.0), 1.0, omega0=1.0)

@@ -8,9 +8,9 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from flywheel import timedomain
-from flywheel.case import load_case, parse_case
-from flywheel.pipeline import analyze
+from flywheel.dynamics import timedomain
+from flywheel.cases.run import load_case, parse_case
+from flywheel.dynamics.pipeline import analyze
 
 CASES = Path(__file__).resolve().parents[1] / "cases"
 

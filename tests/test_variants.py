@@ -8,12 +8,12 @@ from pathlib import Path
 import pytest
 from typer.testing import CliRunner
 
-from flywheel.case import load_case
+from flywheel.cases.run import load_case
 from flywheel.cli import app
-from flywheel.pipeline import analyze
+from flywheel.dynamics.pipeline import analyze
 from flywheel.render.task2 import to_dict
-from flywheel.task2_case import load_task2_case, solve_case
-from flywheel.variants import RUN_POINTS, answer_value, load_template
+from flywheel.cases.task2 import load_task2_case, solve_case
+from flywheel.teaching.variants import RUN_POINTS, answer_value, load_template
 
 CASES = Path(__file__).resolve().parent.parent / "cases"
 COMPRESSOR = CASES / "variants_compressor.toml"

@@ -12,14 +12,14 @@ __version__ = "0.1.0"
 
 
 def load_case(path):
-    """Read and validate a case file (TOML) into a :class:`flywheel.case.Case`."""
-    from flywheel.case import load_case as _load
+    """Read and validate a case file (TOML) into a :class:`flywheel.cases.run.Case`."""
+    from flywheel.cases.run import load_case as _load
 
     return _load(path)
 
 
 def analyze(case, **kwargs):
-    """Run the whole pipeline on a validated case; returns :class:`flywheel.results.Results`."""
-    from flywheel.pipeline import analyze as _analyze
+    """Run the whole pipeline on a validated case; returns :class:`flywheel.dynamics.results.Results`."""
+    from flywheel.dynamics.pipeline import analyze as _analyze
 
     return _analyze(case, **kwargs)

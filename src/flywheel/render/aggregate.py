@@ -1,6 +1,6 @@
 """`flywheel aggregate` output: the JSON document, the rich summary and the plots against time.
 
-Renderers compute no physics: they format a :class:`flywheel.aggregate.AggregateResult`.
+Renderers compute no physics: they format a :class:`flywheel.elastic.model.AggregateResult`.
 rich and matplotlib are imported inside the functions that use them. Every text handed to rich
 goes through :func:`rich.markup.escape`: units in square brackets ("[kg·m²]", "[rad/s]") and
 "[motor]" would otherwise be taken for markup tags and vanish.

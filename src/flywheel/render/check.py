@@ -29,9 +29,9 @@ def print_check(case, console=None) -> None:
     from rich.console import Console
     from rich.table import Table
 
-    from flywheel.case import RPRSpec, RRPSpec, to_mechanism
-    from flywheel.kinematics import solve
-    from flywheel.kinematics.deadcentres import dead_centres
+    from flywheel.cases.run import RPRSpec, RRPSpec, to_mechanism
+    from flywheel.linkage import solve
+    from flywheel.linkage.deadcentres import dead_centres
 
     console = console or Console()
     if case.tabulated is not None:
@@ -119,7 +119,7 @@ def print_check(case, console=None) -> None:
 def _print_tabulated(case, console) -> None:
     """A case with tabulated kinematics: its table, one row per position, with Мст and J_II."""
 
-    from flywheel.tabulated import (dynamic_moments, inertia_derivative_at_positions,
+    from flywheel.dynamics.tabulated import (dynamic_moments, inertia_derivative_at_positions,
                                     reduced_inertia_at_positions, static_moments)
 
     tab, m = case.tabulated, case.machine

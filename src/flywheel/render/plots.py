@@ -2,7 +2,7 @@
 
 The only module that imports matplotlib, and only inside its functions, so ``import flywheel``
 stays fast and headless. Each ``figure_*`` function draws one figure from a
-:class:`~flywheel.results.Results` and returns it; :func:`write_plots` saves them all.
+:class:`~flywheel.dynamics.results.Results` and returns it; :func:`write_plots` saves them all.
 
 The figures are plain :class:`matplotlib.figure.Figure` objects rendered by the Agg canvas:
 they never go through pyplot, so they need no display, register no global state (nothing to

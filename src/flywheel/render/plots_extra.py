@@ -59,7 +59,7 @@ def figure_energy_mass(results, lang: str = "en"):
     """
     from matplotlib.patches import Rectangle
 
-    from flywheel.sizing import J_required_exact
+    from flywheel.dynamics.sizing import J_required_exact
 
     plt = _plt()
     t = TEXT[lang]

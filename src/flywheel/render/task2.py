@@ -1,6 +1,6 @@
 """`flywheel task2` output: the JSON document, the rich summary and the plot.
 
-Renderers compute no physics: they format a :class:`flywheel.task2.Task2Result`. Degrees appear
+Renderers compute no physics: they format a :class:`flywheel.constant_inertia.solve.Task2Result`. Degrees appear
 here only. rich and matplotlib are imported inside the functions that use them.
 """
 from __future__ import annotations
@@ -150,7 +150,7 @@ def plot(r, path, title: str = "") -> None:
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    from flywheel.task2 import sample
+    from flywheel.constant_inertia.solve import sample
 
     if r.driving is not None:
         s = sample(r)

@@ -15,8 +15,8 @@ from typing import Annotated, Literal, Union
 from pydantic import BaseModel, ConfigDict, Field, Strict, ValidationError, model_validator
 
 from flywheel.errors import CaseFileError
-from flywheel.schema_errors import clean_loc, describe, loc_str, pick
-from flywheel.tabulated import TabulatedSpec
+from flywheel.io.schema import clean_loc, describe, loc_str, pick
+from flywheel.dynamics.tabulated import TabulatedSpec
 
 Pos = Annotated[float, Field(gt=0)]
 NonNeg = Annotated[float, Field(ge=0)]
@@ -507,7 +507,7 @@ def parse_case(data: dict, source: str = "<case>") -> Case:
 
 def load_case(path) -> Case:
     """Read a TOML case file and validate it (one CaseFileError line on any problem)."""
-    from flywheel.tomlfile import read_toml
+    from flywheel.io.toml import read_toml
 
     data = read_toml(path)
     return parse_case(data, str(path))
@@ -529,8 +529,8 @@ def dyad_name(d) -> str:
 
 
 def to_mechanism(case: Case):
-    """Build the kinematics description (:class:`flywheel.kinematics.Mechanism`) of a case."""
-    from flywheel.kinematics import RPR, RRP, RRR, Crank, Guide, LinkPoint, Mechanism
+    """Build the kinematics description (:class:`flywheel.linkage.Mechanism`) of a case."""
+    from flywheel.linkage import RPR, RRP, RRR, Crank, Guide, LinkPoint, Mechanism
 
     c = case.crank
     crank = Crank(c.name, c.pivot, tuple(c.pivot_at), c.tip, case.crank_length,

@@ -1,6 +1,6 @@
 """`flywheel aggregate`: the machine aggregate with elastic couplings (seed 003) and rotor chains.
 
-Thin: load the case (:mod:`flywheel.aggregate_case`), analyse (:mod:`flywheel.aggregate`), hand
+Thin: load the case (:mod:`flywheel.cases.aggregate`), analyse (:mod:`flywheel.elastic.model`), hand
 the result to :mod:`flywheel.render.aggregate`. Heavy imports live inside the function.
 """
 from __future__ import annotations
@@ -27,14 +27,14 @@ def aggregate_command(
     natural frequencies, steady forced vibration, start-up."""
     import math
 
-    from flywheel.cli import fail
+    from flywheel.cli.guard import fail
     from flywheel.errors import FlywheelError, InputError
 
     try:
         if t_end is not None and not (math.isfinite(t_end) and t_end > 0):
             raise InputError(f"--t-end must be a positive number of seconds (got {t_end:g})")
-        from flywheel.aggregate import analyze
-        from flywheel.aggregate_case import load_aggregate_case, to_model
+        from flywheel.elastic.model import analyze
+        from flywheel.cases.aggregate import load_aggregate_case, to_model
 
         c = load_aggregate_case(case)
         ch, drive = to_model(c, str(case))

@@ -160,8 +160,8 @@ def _motor_slope(motor, omega_ref: float) -> float:
 
 
 def _cycle_mean(y: np.ndarray, phi_grid: np.ndarray) -> float:
-    """(1/Φ)∮y dφ by the trapezoid rule, as :func:`flywheel.energy.cumulative_work`."""
-    from flywheel.energy import cumulative_work
+    """(1/Φ)∮y dφ by the trapezoid rule, as :func:`flywheel.dynamics.energy.cumulative_work`."""
+    from flywheel.dynamics.energy import cumulative_work
 
     return float(cumulative_work(np.asarray(y, float), phi_grid)[-1] / (phi_grid[-1] - phi_grid[0]))
 

@@ -1,6 +1,7 @@
-"""The command line: thin wrappers that parse options, call the library, hand results to renderers.
+"""`flywheel run`, `flywheel check`, `flywheel schema`: the linkage (and tabulated) route.
 
-Every user mistake becomes one line on stderr and exit code 2 (design.md §6).
+Thin: parse the options, call the library, hand results to renderers. Heavy imports live
+inside the functions.
 """
 from __future__ import annotations
 
@@ -11,68 +12,28 @@ from typing import Optional
 
 import typer
 
-app = typer.Typer(
-    add_completion=False,
-    no_args_is_help=True,
-    help="Dynamic analysis of machines: kinematics, reduction, flywheel sizing, true motion.",
-    pretty_exceptions_enable=False,
-)
+from flywheel.cli.guard import _guard, fail
 
 
-def fail(message: str) -> None:
-    """Print one line to stderr and exit 2 (bad input)."""
-    sys.stderr.write(f"error: {message}\n")
-    raise typer.Exit(code=2)
-
-
-def _guard(func, *args, source: Path | None = None, case=None, **kwargs):
-    """Call func; turn a FlywheelError into one clear line and exit 2. An error found while
-    computing a valid ``case`` (a dyad that cannot be assembled, loads whose work has the wrong
-    sign) is prefixed with the case file ``source`` and, where known, the field path."""
-    from flywheel.errors import CaseFileError, FlywheelError
-
-    try:
-        return func(*args, **kwargs)
-    except FlywheelError as exc:
-        msg = str(exc)
-        if source is not None and not isinstance(exc, CaseFileError) and not msg.startswith("--"):
-            where = _field_of(exc, case)
-            msg = f"{source}: {where}: {msg}" if where else f"{source}: {msg}"
-        fail(msg)
-
-
-def _field_of(exc: Exception, case) -> str:
-    """The case-file path of the dyad an AssemblyError names ('dyads[1]'), else ''."""
-    from flywheel.case import dyad_name
-
-    dyad = getattr(exc, "dyad", None)
-    if dyad is None or case is None:
-        return ""
-    return next((f"dyads[{i}]" for i, d in enumerate(case.dyads) if dyad_name(d) == dyad), "")
-
-
-@app.command()
-def schema() -> None:
+def schema_command() -> None:
     """Print the JSON Schema of case files (for editors: completion and checking)."""
     import json
 
-    from flywheel.case import case_json_schema
+    from flywheel.cases.run import case_json_schema
 
     typer.echo(json.dumps(case_json_schema(), indent=2, ensure_ascii=False))
 
 
-@app.command()
-def check(case: Path = typer.Argument(..., help="Case file (TOML).")) -> None:
+def check_command(case: Path = typer.Argument(..., help="Case file (TOML).")) -> None:
     """Validate a case file and print what it describes; exit 0 if valid, 2 if not."""
-    from flywheel.case import load_case
+    from flywheel.cases.run import load_case
     from flywheel.render.check import print_check
 
     c = _guard(load_case, case)
     _guard(print_check, c, source=case, case=c)
 
 
-@app.command()
-def run(
+def run_command(
     case: Path = typer.Argument(..., help="Case file (TOML)."),
     out: Optional[Path] = typer.Option(None, "--out", "-o",
                                        help="Output folder (default: out/<case name>); "
@@ -92,9 +53,9 @@ def run(
     and plots/*.png to the output folder."""
     if lang not in ("en", "ru"):
         fail(f"--lang: {lang!r} is not a language (allowed: en, ru)")
-    from flywheel.case import load_case
-    from flywheel.pipeline import analyze
-    from flywheel.render.output import write_folder
+    from flywheel.cases.run import load_case
+    from flywheel.dynamics.pipeline import analyze
+    from flywheel.io.output import write_folder
     from flywheel.render.tables import positions_csv, summary_json, table_csv
 
     c = _guard(load_case, case)
@@ -127,21 +88,3 @@ def run(
         print_summary(results, lang=lang)
         typer.echo(f"written: {out}/ (summary.json, table.csv, positions.csv, report.md"
                    + ("" if no_plots else ", plots/*.png") + ")")
-
-
-from flywheel.cli_task2 import task2_command  # noqa: E402
-app.command("task2")(task2_command)
-from flywheel.cli_aggregate import aggregate_command  # noqa: E402
-app.command("aggregate")(aggregate_command)
-from flywheel.cli_teacher import grade_command, variants_command  # noqa: E402
-app.command("variants")(variants_command)
-app.command("grade")(grade_command)
-
-
-def main() -> None:
-    """Console-script entry point."""
-    app()
-
-
-if __name__ == "__main__":  # pragma: no cover
-    main()

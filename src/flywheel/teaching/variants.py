@@ -39,7 +39,7 @@ from pathlib import Path
 from typing import Any
 
 from flywheel.errors import CaseFileError, FlywheelError, InputError
-from flywheel.tomlfile import read_toml
+from flywheel.io.toml import read_toml
 
 #: intervals of the φ grid for the answers of a run case (4 per degree; the answers differ from
 #: the default 3600-point grid by well under 1e-4 relative — tests/test_variants.py checks it)
@@ -234,10 +234,10 @@ def _answers(table: dict, where: str) -> tuple[tuple[str, ...], float, dict[str,
 
 def _validate(kind: str, doc: dict, source: str):
     if kind == "run":
-        from flywheel.case import parse_case
+        from flywheel.cases.run import parse_case
 
         return parse_case(doc, source)
-    from flywheel.task2_case import parse_task2_case
+    from flywheel.cases.task2 import parse_task2_case
 
     return parse_task2_case(doc, source)
 
@@ -262,12 +262,12 @@ def results_of(kind: str, doc: dict, source: str, n_points: int = RUN_POINTS) ->
     ``flywheel task2 --json`` for a task2 case (SI units)."""
     case = _validate(kind, doc, source)
     if kind == "run":
-        from flywheel.pipeline import analyze
+        from flywheel.dynamics.pipeline import analyze
         from flywheel.render.tables import _clean
 
         return _clean(analyze(case, n_points=n_points).summary()["results"])
     from flywheel.render.task2 import to_dict
-    from flywheel.task2_case import solve_case
+    from flywheel.cases.task2 import solve_case
 
     return to_dict(solve_case(case, source))
 
@@ -516,7 +516,7 @@ def students_csv(vs: VariantSet) -> str:
 def write_variants(vs: VariantSet, out) -> Path:
     """Write the variant files, answers.json, answers.csv and students.csv to ``out``, whole or
     not at all. Refuses a non-empty folder that is not an earlier variants folder."""
-    from flywheel.render.output import write_folder
+    from flywheel.io.output import write_folder
 
     out = Path(out)
 

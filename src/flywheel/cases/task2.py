@@ -16,9 +16,9 @@ from typing import Annotated, ClassVar, Literal, Union
 
 from pydantic import BaseModel, ConfigDict, Field, Strict, ValidationError, field_validator
 
-from flywheel import task2 as t2
+from flywheel.constant_inertia import solve as t2
 from flywheel.errors import CaseFileError, InputError
-from flywheel.schema_errors import clean_loc, describe, loc_str, pick
+from flywheel.io.schema import clean_loc, describe, loc_str, pick
 
 BALANCE = "balance"
 
@@ -339,7 +339,7 @@ def parse_task2_case(data: dict, source: str = "<case>") -> Task2Case:
 
 def load_task2_case(path) -> Task2Case:
     """Read a TOML task-2 case file and validate it."""
-    from flywheel.tomlfile import read_toml
+    from flywheel.io.toml import read_toml
 
     data = read_toml(path)
     return parse_task2_case(data, str(path))

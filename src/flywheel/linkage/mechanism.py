@@ -1,6 +1,6 @@
 """Plain descriptions of a mechanism: a crank, dyads and points on links (SI, radians).
 
-These carry no behaviour; :mod:`flywheel.kinematics.solve` places them on a φ grid.
+These carry no behaviour; :mod:`flywheel.linkage.solve` places them on a φ grid.
 The case loader builds them from a case file; tests and notebooks build them directly.
 """
 from __future__ import annotations

@@ -1,6 +1,6 @@
 """`flywheel task2`: steady motion under given moment graphs (seed 002 and the textbook family).
 
-Thin: parse the options, call :mod:`flywheel.task2` (or :mod:`flywheel.task2_case` for
+Thin: parse the options, call :mod:`flywheel.constant_inertia.solve` (or :mod:`flywheel.cases.task2` for
 ``--case``), hand the result to :mod:`flywheel.render.task2`. Heavy imports live inside the
 function so that ``flywheel task2 --json`` starts fast.
 
@@ -69,7 +69,7 @@ def task2_command(
     """Task 2: ω_max, ω_min, ω_ср and δ of a machine with constant J under given M_D(φ), M_C(φ)."""
     import math
 
-    from flywheel.cli import fail
+    from flywheel.cli.guard import fail
     from flywheel.errors import FlywheelError, InputError
 
     title = source = ""
@@ -83,7 +83,7 @@ def task2_command(
             used = (["--profile"] if profile is not None else []) + [n for n, _ in given]
             if used:
                 raise InputError(f"--case takes its data from the file; drop {', '.join(used)}")
-            from flywheel.task2_case import load_task2_case, solve_case
+            from flywheel.cases.task2 import load_task2_case, solve_case
 
             c = load_task2_case(case)
             blame = _case_numbers(c.model_dump())
@@ -93,7 +93,7 @@ def task2_command(
 
             title, source = c.title, c.source
         else:
-            from flywheel.task2 import SEED_DEFAULTS, seed_task
+            from flywheel.constant_inertia.solve import SEED_DEFAULTS, seed_task
 
             profile = "triangle" if profile is None else profile
             if profile not in PROFILES:
@@ -123,7 +123,7 @@ def task2_command(
 
             title = f"Seed 002, {profile} resistance moment"
             source = "seed 002_10afb132413d2537.txt"
-        from flywheel.task2 import nonfinite
+        from flywheel.constant_inertia.solve import nonfinite
 
         # inputs near the limits of double precision: no Infinity/NaN in the output (it is not
         # JSON), and no traceback from inf − inf inside the formulas

@@ -1,4 +1,4 @@
-"""Place a :class:`~flywheel.kinematics.mechanism.Mechanism` on a φ grid.
+"""Place a :class:`~flywheel.linkage.mechanism.Mechanism` on a φ grid.
 
 For every named point: position r, velocity analogue v_q = dr/dφ [m/rad] and acceleration
 analogue a_q = d²r/dφ² [m/rad²], each an (N, 2) array. For every link: angle θ [rad],
@@ -20,7 +20,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from flywheel.errors import AssemblyError
-from flywheel.kinematics.mechanism import RPR, RRP, RRR, LinkPoint, Mechanism
+from flywheel.linkage.mechanism import RPR, RRP, RRR, LinkPoint, Mechanism
 
 
 @dataclass(frozen=True)
@@ -261,7 +261,7 @@ def solve(mech: Mechanism, phi: np.ndarray) -> Kinematics:
     it cannot be assembled.
 
     >>> import math
-    >>> from flywheel.kinematics.mechanism import Crank, Guide
+    >>> from flywheel.linkage.mechanism import Crank, Guide
     >>> m = Mechanism(Crank("1", "O", (0.0, 0.0), "A", 0.1, math.pi / 2, -1),
     ...               (RRP("B", "A", "B", "2", 0.4, "3", Guide((0.0, 0.0), math.pi / 2)),))
     >>> k = solve(m, np.radians([0.0, 180.0]))

@@ -4,7 +4,7 @@ A mechanism is a driving crank followed by two-link groups (dyads), each placed 
 already known. Positions are closed-form; velocity and acceleration analogues (d/dφ, d²/dφ²)
 come from the differentiated closure equations, exactly, vectorized over the φ grid.
 """
-from flywheel.kinematics.mechanism import (
+from flywheel.linkage.mechanism import (
     Crank,
     Guide,
     LinkPoint,
@@ -13,7 +13,7 @@ from flywheel.kinematics.mechanism import (
     RRP,
     RRR,
 )
-from flywheel.kinematics.solve import Kinematics, LinkMotion, PointMotion, solve
+from flywheel.linkage.solve import Kinematics, LinkMotion, PointMotion, solve
 
 __all__ = [
     "Crank", "Guide", "LinkPoint", "Mechanism", "RPR", "RRP", "RRR",

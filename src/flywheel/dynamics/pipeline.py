@@ -10,11 +10,11 @@ import math
 
 import numpy as np
 
-from flywheel import energy, loads, motion, reduction, sizing
+from flywheel.dynamics import energy, loads, motion, reduction, sizing
 from flywheel.errors import InputError
-from flywheel.kinematics import solve
-from flywheel.kinematics.deadcentres import dead_centres, guide_frame, slider_dyad
-from flywheel.results import Column, CylinderResult, Results
+from flywheel.linkage import solve
+from flywheel.linkage.deadcentres import dead_centres, guide_frame, slider_dyad
+from flywheel.dynamics.results import Column, CylinderResult, Results
 
 DEFAULT_POINTS = 3600
 
@@ -90,7 +90,7 @@ def _extremes(x: np.ndarray) -> tuple[float, float]:
 
 def analyze(case, n_points: int = DEFAULT_POINTS, at_deg: list[float] | None = None,
             transients: bool = False) -> Results:
-    """Run the whole dynamic analysis of a validated case (:class:`flywheel.case.Case`).
+    """Run the whole dynamic analysis of a validated case (:class:`flywheel.cases.run.Case`).
 
     n_points: uniform intervals over the cycle (the report angles, standard positions and dead
     centres are added as nodes); at_deg: report angles [deg] (default: the case's
@@ -98,10 +98,10 @@ def analyze(case, n_points: int = DEFAULT_POINTS, at_deg: list[float] | None = N
     ω(φ), start-up with the case's motor, run-down; imports scipy). Raises FlywheelError subclasses for input that cannot be analysed.
     """
     if case.tabulated is not None:
-        from flywheel.tabulated import analyze_tabulated
+        from flywheel.dynamics.tabulated import analyze_tabulated
 
         return analyze_tabulated(case, n_points, at_deg, transients)
-    from flywheel.case import to_mechanism
+    from flywheel.cases.run import to_mechanism
 
     at_deg = grid_options(case, n_points, at_deg)
     mech = to_mechanism(case)
@@ -450,7 +450,7 @@ def _transients(case, phi, J, dJ, M_sum, M_known, omega, driving_moment,
                 warnings: list[str]) -> dict:
     """Time-domain stage: verification of ω(φ), start-up (with a motor), run-down. Appends a
     start-up that does not reach the steady state within its cap to ``warnings``."""
-    from flywheel import timedomain
+    from flywheel.dynamics import timedomain
 
     machine = case.machine
     out: dict = {"verification": timedomain.verify_steady(phi, J, dJ, M_sum, omega)}

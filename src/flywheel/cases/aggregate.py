@@ -20,7 +20,7 @@ from typing import Annotated, Literal
 from pydantic import BaseModel, ConfigDict, Field, ValidationError
 
 from flywheel.errors import CaseFileError, FlywheelError
-from flywheel.schema_errors import clean_loc, describe, pick
+from flywheel.io.schema import clean_loc, describe, pick
 
 Pos = Annotated[float, Field(gt=0)]
 NonNeg = Annotated[float, Field(ge=0)]
@@ -146,7 +146,7 @@ class _Err(Exception):
 
 def _stiffness(s: Shaft, where: str) -> tuple[float, float]:
     """(stiffness reduced to the shaft's input speed, gear ratio)."""
-    from flywheel.aggregate import series_stiffness, shaft_stiffness
+    from flywheel.elastic.model import series_stiffness, shaft_stiffness
 
     direct = [k for k in ("c", "d", "L") if getattr(s, k) is not None]
     if s.segments is not None and direct:
@@ -177,7 +177,7 @@ def _stiffness(s: Shaft, where: str) -> tuple[float, float]:
 
 
 def _motor(m: Motor, M0: float, forcing_ratio: float, amplitude: float, chain_form: bool):
-    from flywheel.aggregate import Drive, starting_torque_from_rated
+    from flywheel.elastic.model import Drive, starting_torque_from_rated
 
     if chain_form and m.J is not None:
         raise _Err("motor.J", "in a chain the first rotor is the motor: give its J in rotors[0]")
@@ -217,7 +217,7 @@ def _motor(m: Motor, M0: float, forcing_ratio: float, amplitude: float, chain_fo
 
 def build(case: AggregateCase):
     """(Chain, Drive or None) from a validated case; raises _Err with the field path."""
-    from flywheel.aggregate import chain, mean_reduced_inertia, reduced_inertia_I
+    from flywheel.elastic.model import chain, mean_reduced_inertia, reduced_inertia_I
 
     two_mass = [k for k in ("coupling", "machine") if getattr(case, k) is not None]
     chain_keys = [k for k in ("rotors", "shafts", "load") if getattr(case, k) is not None]
@@ -308,14 +308,14 @@ def parse_aggregate_case(data: dict, source: str = "<case>") -> AggregateCase:
 
 def load_aggregate_case(path) -> AggregateCase:
     """Read a TOML aggregate case file and validate it."""
-    from flywheel.tomlfile import read_toml
+    from flywheel.io.toml import read_toml
 
     data = read_toml(path)
     return parse_aggregate_case(data, str(path))
 
 
 def to_model(case: AggregateCase, source: str = "<case>"):
-    """(Chain, Drive or None) for :func:`flywheel.aggregate.analyze`."""
+    """(Chain, Drive or None) for :func:`flywheel.elastic.model.analyze`."""
     try:
         return build(case)
     except _Err as exc:

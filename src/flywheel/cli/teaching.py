@@ -1,7 +1,7 @@
 """`flywheel variants` and `flywheel grade`: a teacher's variants with an answer key, and the
 batch grading of the students' answers (docs/teacher.md).
 
-Thin: parse the options, call :mod:`flywheel.variants` / :mod:`flywheel.grading`, hand the
+Thin: parse the options, call :mod:`flywheel.teaching.variants` / :mod:`flywheel.teaching.grading`, hand the
 results to :mod:`flywheel.render.grading`. Heavy imports live inside the functions.
 """
 from __future__ import annotations
@@ -26,7 +26,7 @@ def variants_command(
 ) -> None:
     """Individual variants of a task from a template, with the answer key (answers.json,
     answers.csv) and a blank answer sheet (students.csv)."""
-    from flywheel.cli import _guard, fail
+    from flywheel.cli.guard import _guard, fail
 
     if not 1 <= count <= 9999:
         fail(f"--count: {count} is not allowed (allowed: 1…9999)")
@@ -40,7 +40,7 @@ def variants_command(
     from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn
 
     from flywheel.render.grading import print_variants
-    from flywheel.variants import generate, load_template, write_variants
+    from flywheel.teaching.variants import generate, load_template, write_variants
 
     if seed is None:
         seed = secrets.randbelow(2 ** 32)
@@ -70,8 +70,8 @@ def grade_command(
     pass/fail, the score, group statistics; broken files and rows are reported and skipped."""
     import sys
 
-    from flywheel.cli import _guard, fail
-    from flywheel.grading import grade, load_key, report_csv, report_dict
+    from flywheel.cli.guard import _guard, fail
+    from flywheel.teaching.grading import grade, load_key, report_csv, report_dict
 
     k = _guard(load_key, key)
     report = _guard(grade, k, answers, tolerance)
@@ -100,7 +100,7 @@ def _write(path: Path, text: str) -> None:
     import os
     import tempfile
 
-    from flywheel.cli import fail
+    from flywheel.cli.guard import fail
 
     if path.is_dir():
         fail(f"--out {path}: is a folder, expected a CSV file name")

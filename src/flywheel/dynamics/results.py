@@ -46,7 +46,7 @@ class Results:
     title: str
     source: str
     phi: np.ndarray
-    kinematics: object                      # flywheel.kinematics.Kinematics
+    kinematics: object                      # flywheel.linkage.Kinematics
     columns: dict[str, Column]              # table.csv, in order
     scalars: dict                           # summary.json "results" (JSON-ready)
     at: list[dict]                          # summary.json "results.at"

@@ -9,8 +9,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from flywheel.kinematics.mechanism import RRP, Mechanism
-from flywheel.kinematics.solve import solve
+from flywheel.linkage.mechanism import RRP, Mechanism
+from flywheel.linkage.solve import solve
 
 
 @dataclass(frozen=True)
@@ -42,7 +42,7 @@ def dead_centres(mech: Mechanism, slider: str, n_grid: int = 721) -> list[DeadCe
     """Dead centres of the slider link ``slider`` over one crank revolution, by angle.
 
     >>> import math
-    >>> from flywheel.kinematics.mechanism import Crank, Guide
+    >>> from flywheel.linkage.mechanism import Crank, Guide
     >>> m = Mechanism(Crank("1", "O", (0.0, 0.0), "A", 0.1, 0.0, 1),
     ...               (RRP("B", "A", "B", "2", 0.4, "3", Guide((0.0, 0.0), 0.0)),))
     >>> [(round(math.degrees(c.phi), 6), round(c.x, 6), c.kind) for c in dead_centres(m, "3")]
