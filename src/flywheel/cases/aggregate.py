@@ -17,21 +17,19 @@ from __future__ import annotations
 import math
 from typing import Annotated, Literal
 
-from pydantic import BaseModel, ConfigDict, Field, ValidationError
+from pydantic import Field
 
 from flywheel.errors import CaseFileError, FlywheelError
-from flywheel.io.schema import clean_loc, describe, pick
+from flywheel.io.schema import FieldError, StrictModel, load, validate, clean_loc, describe, pick
 
 Pos = Annotated[float, Field(gt=0)]
 NonNeg = Annotated[float, Field(ge=0)]
 RPM = math.pi / 30.0  # rev/min → rad/s
 
 
-class _Model(BaseModel):
-    model_config = ConfigDict(extra="forbid", allow_inf_nan=False, strict=True)
 
 
-class Motor(_Model):
+class Motor(StrictModel):
     """The driving motor on shaft I."""
 
     J: Pos | None = Field(None, description="J_Д, the rotor's moment of inertia [kg·m²] (two-mass "
@@ -47,7 +45,7 @@ class Motor(_Model):
     speed_rpm: Pos | None = Field(None, description="steady speed of shaft I [rev/min] (constant)")
 
 
-class Segment(_Model):
+class Segment(StrictModel):
     """One elastic piece of a shaft: c, or d and L (with G here or on the shaft)."""
 
     c: Pos | None = Field(None, description="torsional stiffness [N·m/rad]")
@@ -57,7 +55,7 @@ class Segment(_Model):
     side: Literal["in", "out"] = Field("in", description="before (in) or after (out) the gear pair")
 
 
-class Shaft(_Model):
+class Shaft(StrictModel):
     """An elastic connection: one piece (c, or G with d and L) or segments in series, an optional
     gear pair, an optional viscous damping."""
 
@@ -72,12 +70,12 @@ class Shaft(_Model):
                                              "input speed")
 
 
-class Flywheel(_Model):
+class Flywheel(StrictModel):
     J: Pos = Field(description="J_M, the flywheel's moment of inertia [kg·m²]")
     shaft: Literal["I", "II", "III"] = Field(description="the shaft it sits on")
 
 
-class Machine(_Model):
+class Machine(StrictModel):
     """The machine behind the coupling (seed 003)."""
 
     J_III: Pos | None = Field(None, description="J_пр.III, the mechanism reduced to shaft III "
@@ -95,12 +93,12 @@ class Machine(_Model):
     order: Pos = Field(1.0, description="forcing frequency / ω_III (1: sin ω_III·t as in 9.20)")
 
 
-class Rotor(_Model):
+class Rotor(StrictModel):
     name: str | None = None
     J: Pos = Field(description="moment of inertia [kg·m²]")
 
 
-class Load(_Model):
+class Load(StrictModel):
     """Resistance on the last rotor of a chain, on its own shaft."""
 
     M0: NonNeg = Field(0.0, description="mean resistance moment [N·m]")
@@ -108,7 +106,7 @@ class Load(_Model):
     order: Pos = Field(1.0, description="forcing frequency / the last rotor's speed")
 
 
-class AggregateCase(_Model):
+class AggregateCase(StrictModel):
     title: str = ""
     source: str = ""
     motor: Motor | None = None
@@ -136,10 +134,6 @@ def _describe(err: dict) -> str:
                                             "greater_than_equal": "must not be negative"})
 
 
-class _Err(Exception):
-    def __init__(self, field: str, msg: str):
-        super().__init__(msg)
-        self.field = field
 
 
 # -- checks that span fields ----------------------------------------------------------------------
@@ -150,25 +144,25 @@ def _stiffness(s: Shaft, where: str) -> tuple[float, float]:
 
     direct = [k for k in ("c", "d", "L") if getattr(s, k) is not None]
     if s.segments is not None and direct:
-        raise _Err(f"{where}.{direct[0]}", "give the stiffness either directly or as segments, "
+        raise FieldError(f"{where}.{direct[0]}", "give the stiffness either directly or as segments, "
                                            "not both")
     pieces = s.segments if s.segments is not None else [Segment(c=s.c, d=s.d, L=s.L)]
     if not pieces:
-        raise _Err(f"{where}.segments", "needs at least one segment")
+        raise FieldError(f"{where}.segments", "needs at least one segment")
     cs = []
     for k, p in enumerate(pieces):
         at = f"{where}.segments[{k}]" if s.segments is not None else where
         if p.c is not None:
             if p.d is not None or p.L is not None:
-                raise _Err(f"{at}.c", "give c, or d and L (with G), not both")
+                raise FieldError(f"{at}.c", "give c, or d and L (with G), not both")
             c = p.c
         else:
             if p.d is None or p.L is None:
                 missing = "d" if p.d is None else "L"
-                raise _Err(f"{at}.{missing}", "missing: give c, or d and L with G")
+                raise FieldError(f"{at}.{missing}", "missing: give c, or d and L with G")
             G = p.G if p.G is not None else s.G
             if G is None:
-                raise _Err(f"{at}.G", "missing: the shear modulus is needed with d and L "
+                raise FieldError(f"{at}.G", "missing: the shear modulus is needed with d and L "
                                       "(e.g. 8.0e10 Pa for steel)")
             c = shaft_stiffness(G, p.d, p.L)
         u = s.i if p.side == "out" else 1.0   # speed of the piece over the input speed
@@ -180,91 +174,91 @@ def _motor(m: Motor, M0: float, forcing_ratio: float, amplitude: float, chain_fo
     from flywheel.elastic.model import Drive, starting_torque_from_rated
 
     if chain_form and m.J is not None:
-        raise _Err("motor.J", "in a chain the first rotor is the motor: give its J in rotors[0]")
+        raise FieldError("motor.J", "in a chain the first rotor is the motor: give its J in rotors[0]")
     if not chain_form and m.J is None:
-        raise _Err("motor.J", "missing required field (J_Д, the motor's rotor [kg·m²])")
+        raise FieldError("motor.J", "missing required field (J_Д, the motor's rotor [kg·m²])")
     if m.characteristic == "linear":
         for k in ("speed_rpm",):
             if getattr(m, k) is not None:
-                raise _Err(f"motor.{k}", "only for characteristic = \"constant\" (a linear motor "
+                raise FieldError(f"motor.{k}", "only for characteristic = \"constant\" (a linear motor "
                                          "finds its own speed)")
         if m.synchronous_rpm is None:
-            raise _Err("motor.synchronous_rpm", "missing: the linear characteristic needs ω_x")
+            raise FieldError("motor.synchronous_rpm", "missing: the linear characteristic needs ω_x")
         given = [k for k in ("starting_torque", "rated_torque") if getattr(m, k) is not None]
         if len(given) != 1:
-            raise _Err("motor.starting_torque", "give exactly one of starting_torque, or "
+            raise FieldError("motor.starting_torque", "give exactly one of starting_torque, or "
                                                 "rated_torque with rated_slip")
         if m.rated_torque is not None and m.rated_slip is None:
-            raise _Err("motor.rated_slip", "missing: needed with rated_torque (M_п = M_н/s_н)")
+            raise FieldError("motor.rated_slip", "missing: needed with rated_torque (M_п = M_н/s_н)")
         if m.starting_torque is not None and m.rated_slip is not None:
-            raise _Err("motor.rated_slip", "only with rated_torque")
+            raise FieldError("motor.rated_slip", "only with rated_torque")
         M_start = (m.starting_torque if m.starting_torque is not None
                    else starting_torque_from_rated(m.rated_torque, m.rated_slip))
         if not M0 < M_start:
-            raise _Err("motor.starting_torque",
+            raise FieldError("motor.starting_torque",
                        f"the motor cannot drive the machine: M_п = {M_start:g} N·m is not above "
                        f"the mean resistance reduced to shaft I, {M0:g} N·m")
         return Drive("linear", M0, amplitude, forcing_ratio, M_start=M_start,
                      omega_x=m.synchronous_rpm * RPM)
     for k in ("synchronous_rpm", "starting_torque", "rated_torque", "rated_slip"):
         if getattr(m, k) is not None:
-            raise _Err(f"motor.{k}", "only for characteristic = \"linear\"")
+            raise FieldError(f"motor.{k}", "only for characteristic = \"linear\"")
     if m.speed_rpm is None:
-        raise _Err("motor.speed_rpm", "missing: a constant-torque motor needs the steady speed "
+        raise FieldError("motor.speed_rpm", "missing: a constant-torque motor needs the steady speed "
                                       "of shaft I")
     return Drive("constant", M0, amplitude, forcing_ratio, omega_nominal=m.speed_rpm * RPM)
 
 
 def build(case: AggregateCase):
-    """(Chain, Drive or None) from a validated case; raises _Err with the field path."""
+    """(Chain, Drive or None) from a validated case; raises FieldError with the field path."""
     from flywheel.elastic.model import chain, mean_reduced_inertia, reduced_inertia_I
 
     two_mass = [k for k in ("coupling", "machine") if getattr(case, k) is not None]
     chain_keys = [k for k in ("rotors", "shafts", "load") if getattr(case, k) is not None]
     if two_mass and chain_keys:
-        raise _Err(chain_keys[0], "a case is either the two-mass aggregate ([coupling], "
+        raise FieldError(chain_keys[0], "a case is either the two-mass aggregate ([coupling], "
                                   "[machine]) or a chain ([[rotors]], [[shafts]]), not both")
     if two_mass:
         for k in ("coupling", "machine"):
             if getattr(case, k) is None:
-                raise _Err(k, "missing: the two-mass aggregate needs [motor], [coupling] and "
+                raise FieldError(k, "missing: the two-mass aggregate needs [motor], [coupling] and "
                               "[machine]")
         if case.motor is None:
-            raise _Err("motor", "missing: the two-mass aggregate needs [motor] with J (J_Д)")
+            raise FieldError("motor", "missing: the two-mass aggregate needs [motor] with J (J_Д)")
         m = case.machine
         if m.J_III is not None and (m.J_III_0 is not None or m.J_III_positions is not None):
-            raise _Err("machine.J_III", "give J_III, or J_III_0 with J_III_positions, not both")
+            raise FieldError("machine.J_III", "give J_III, or J_III_0 with J_III_positions, not both")
         if m.J_III is None:
             if m.J_III_positions is None:
-                raise _Err("machine.J_III", "missing: give J_III (J_пр.III [kg·m²]), or J_III_0 "
+                raise FieldError("machine.J_III", "missing: give J_III (J_пр.III [kg·m²]), or J_III_0 "
                                             "with J_III_positions")
             if not m.J_III_positions:
-                raise _Err("machine.J_III_positions", "needs at least one value")
+                raise FieldError("machine.J_III_positions", "needs at least one value")
             J_III = mean_reduced_inertia(m.J_III_0 or 0.0, m.J_III_positions)
             if not J_III > 0:
-                raise _Err("machine.J_III_positions", "J_пр.III comes out zero: must be positive")
+                raise FieldError("machine.J_III_positions", "J_пр.III comes out zero: must be positive")
         else:
             J_III = m.J_III
         if m.flywheel is not None and m.flywheel.shaft == "II" and m.i21 is None:
-            raise _Err("machine.i21", "missing: a flywheel on shaft II needs i21 = ω_II/ω_I")
+            raise FieldError("machine.i21", "missing: a flywheel on shaft II needs i21 = ω_II/ω_I")
         J_I = reduced_inertia_I(J_III, m.i31, m.flywheel.J if m.flywheel else 0.0,
                                 m.flywheel.shaft if m.flywheel else "I", m.i21)
         c, i = _stiffness(case.coupling, "coupling")
         if case.coupling.i != 1.0:
-            raise _Err("coupling.i", "the coupling joins the motor to shaft I: no gear pair "
+            raise FieldError("coupling.i", "the coupling joins the motor to shaft I: no gear pair "
                                      "(the machine's gears are i21, i31)")
         ch = chain([case.motor.J, J_I], [c], [case.coupling.damping], [1.0, m.i31],
                    ["motor J_Д", "machine J_пр.I"])
         drive = _motor(case.motor, m.M0 * m.i31, m.i31 * m.order, m.M_amplitude * m.i31, False)
         return ch, drive
     if case.rotors is None or case.shafts is None:
-        raise _Err("rotors" if case.rotors is None else "shafts",
+        raise FieldError("rotors" if case.rotors is None else "shafts",
                    "missing: give the two-mass aggregate ([motor], [coupling], [machine]) or a "
                    "chain ([[rotors]] and [[shafts]])")
     if len(case.rotors) < 2:
-        raise _Err("rotors", f"a chain needs at least two rotors (got {len(case.rotors)})")
+        raise FieldError("rotors", f"a chain needs at least two rotors (got {len(case.rotors)})")
     if len(case.shafts) != len(case.rotors) - 1:
-        raise _Err("shafts", f"{len(case.rotors)} rotors need {len(case.rotors) - 1} shafts "
+        raise FieldError("shafts", f"{len(case.rotors)} rotors need {len(case.rotors) - 1} shafts "
                              f"between them (got {len(case.shafts)})")
     u = 1.0
     J, cs, bs, us, names = [], [], [], [], []
@@ -278,10 +272,10 @@ def build(case: AggregateCase):
             bs.append(case.shafts[k].damping * u * u)
             u *= i
     if len(set(names)) != len(names):
-        raise _Err("rotors", "rotor names must differ")
+        raise FieldError("rotors", "rotor names must differ")
     ch = chain(J, cs, bs, us, names)
     if case.load is not None and case.motor is None:
-        raise _Err("motor", "missing: a [load] needs a [motor] on the first rotor")
+        raise FieldError("motor", "missing: a [load] needs a [motor] on the first rotor")
     if case.motor is None:
         return ch, None
     ld = case.load or Load()
@@ -293,30 +287,24 @@ def build(case: AggregateCase):
 
 def parse_aggregate_case(data: dict, source: str = "<case>") -> AggregateCase:
     """Validate a parsed TOML document or raise one CaseFileError line."""
-    try:
-        case = AggregateCase.model_validate(data)
-    except ValidationError as exc:
-        raise CaseFileError(f"{source}: {_describe(pick(exc.errors()))}") from None
-    try:
-        build(case)
-    except _Err as exc:
-        raise CaseFileError(f"{source}: {exc.field}: {exc}") from None
-    except FlywheelError as exc:
-        raise CaseFileError(f"{source}: {exc}") from None
-    return case
+
+    def check(case: AggregateCase) -> None:
+        try:
+            build(case)
+        except FlywheelError as exc:
+            raise CaseFileError(f"{source}: {exc}") from None
+
+    return validate(data, AggregateCase, source, lambda errs: _describe(pick(errs)), check)
 
 
 def load_aggregate_case(path) -> AggregateCase:
     """Read a TOML aggregate case file and validate it."""
-    from flywheel.io.toml import read_toml
-
-    data = read_toml(path)
-    return parse_aggregate_case(data, str(path))
+    return load(path, parse_aggregate_case)
 
 
 def to_model(case: AggregateCase, source: str = "<case>"):
     """(Chain, Drive or None) for :func:`flywheel.elastic.model.analyze`."""
     try:
         return build(case)
-    except _Err as exc:
-        raise CaseFileError(f"{source}: {exc.field}: {exc}") from None
+    except FieldError as exc:
+        raise CaseFileError(f"{source}: {exc.where}: {exc}") from None

@@ -12,11 +12,10 @@ import math
 import typing
 from typing import Annotated, Literal, Union
 
-from pydantic import BaseModel, ConfigDict, Field, Strict, ValidationError, model_validator
+from pydantic import BaseModel, Field, Strict, model_validator
 
-from flywheel.errors import CaseFileError
-from flywheel.io.schema import clean_loc, describe, loc_str, pick
-from flywheel.dynamics.tabulated import TabulatedSpec
+from flywheel.io.schema import FieldError, StrictModel, clean_loc, describe, load, loc_str, pick, validate
+from flywheel.cases.tabulated import TabulatedSpec
 
 Pos = Annotated[float, Field(gt=0)]
 NonNeg = Annotated[float, Field(ge=0)]
@@ -25,11 +24,9 @@ Name = Annotated[str, Field(min_length=1)]
 XY = Annotated[tuple[float, float], Strict(False)]
 
 
-class _Model(BaseModel):
-    model_config = ConfigDict(extra="forbid", allow_inf_nan=False, strict=True, populate_by_name=True)
 
 
-class Machine(_Model):
+class Machine(StrictModel):
     """Operating data of the machine."""
 
     speed_rps: Pos | None = Field(None, description="crank speed n1 [rev/s]")
@@ -55,7 +52,7 @@ class Machine(_Model):
         return 2 * math.pi * n
 
 
-class Design(_Model):
+class Design(StrictModel):
     """Optional design rules that derive lengths as seed 000 does."""
 
     mean_piston_speed: Pos | None = Field(
@@ -64,7 +61,7 @@ class Design(_Model):
         None, description="k: rod length = k·l1 for every RRP dyad whose rod_length is omitted")
 
 
-class CrankSpec(_Model):
+class CrankSpec(StrictModel):
     """The driving link (link 1)."""
 
     name: Name = Field("1", description="link name")
@@ -76,7 +73,7 @@ class CrankSpec(_Model):
     rotation: Literal["cw", "ccw"] = Field("ccw", description="direction of rotation")
 
 
-class GuideSpec(_Model):
+class GuideSpec(StrictModel):
     """A fixed straight guide."""
 
     through: XY = Field((0.0, 0.0), description="a point of the guide line [m]")
@@ -87,7 +84,7 @@ class GuideSpec(_Model):
 Branch = Literal["+", "-"]
 
 
-class RRPSpec(_Model):
+class RRPSpec(StrictModel):
     """Connecting rod + slider on a fixed guide."""
 
     kind: Literal["RRP"]
@@ -102,7 +99,7 @@ class RRPSpec(_Model):
                                             "rod's foot along the guide direction")
 
 
-class RRRSpec(_Model):
+class RRRSpec(StrictModel):
     """Two links, three revolute joints."""
 
     kind: Literal["RRR"]
@@ -117,7 +114,7 @@ class RRRSpec(_Model):
     branch: Branch = Field("+", description="joint left (+) or right (−) of the line from → to")
 
 
-class RPRSpec(_Model):
+class RPRSpec(StrictModel):
     """Slotted link (кулиса): a block at a known point slides on a rocker about a pivot."""
 
     kind: Literal["RPR"]
@@ -133,7 +130,7 @@ class RPRSpec(_Model):
 DyadSpec = Annotated[Union[RRPSpec, RRRSpec, RPRSpec], Field(discriminator="kind")]
 
 
-class PointSpec(_Model):
+class PointSpec(StrictModel):
     """A point fixed on a link: by fraction from→to (+ across) or by distance and angle."""
 
     link: Name
@@ -155,7 +152,7 @@ class PointSpec(_Model):
         return self
 
 
-class LinkSpec(_Model):
+class LinkSpec(StrictModel):
     """Mass data of a link."""
 
     mass: float = Field(0.0, gt=0, description="mass [kg], > 0 (leave it out for a massless link)")
@@ -169,7 +166,7 @@ class LinkSpec(_Model):
         return self
 
 
-class CylinderSpec(_Model):
+class CylinderSpec(StrictModel):
     """A cylinder with its indicator diagram (relative pressure against relative travel)."""
 
     name: Name
@@ -188,18 +185,18 @@ class CylinderSpec(_Model):
     def _tables(self):
         s = self.s
         if len(s) < 2:
-            raise _RefError(("s",), "needs at least 2 values")
+            raise FieldError(("s",), "needs at least 2 values")
         if any(b <= a for a, b in zip(s, s[1:])):
-            raise _RefError(("s",), "must be strictly increasing")
+            raise FieldError(("s",), "must be strictly increasing")
         if abs(s[0]) > 1e-12 or abs(s[-1] - 1) > 1e-12:
-            raise _RefError(("s",), f"must span [0, 1] (got {s[0]} … {s[-1]})")
+            raise FieldError(("s",), f"must span [0, 1] (got {s[0]} … {s[-1]})")
         for key in ("towards_head", "away_from_head"):
             if len(getattr(self, key)) != len(s):
-                raise _RefError((key,), f"needs {len(s)} values, one per s (got {len(getattr(self, key))})")
+                raise FieldError((key,), f"needs {len(s)} values, one per s (got {len(getattr(self, key))})")
         return self
 
 
-class ForceSpec(_Model):
+class ForceSpec(StrictModel):
     """A technological (resistance) force on a slider over part of its stroke; it acts against
     the slider's motion."""
 
@@ -212,7 +209,7 @@ class ForceSpec(_Model):
         "both", description="acts while the slider moves towards / away from the reference")
 
 
-class CoupleSpec(_Model):
+class CoupleSpec(StrictModel):
     """A constant couple on a link [N·m], counter-clockwise positive."""
 
     name: Name
@@ -226,7 +223,7 @@ MATERIALS = {  # density [kg/m³], allowable hoop stress of a rotating rim [Pa]
 }
 
 
-class FlywheelSpec(_Model):
+class FlywheelSpec(StrictModel):
     """Flywheel make and placement (design.md §2; seed 003, eqs. 9.21–9.23 for the ratio)."""
 
     material: Literal["steel", "cast-iron"] = Field(
@@ -256,7 +253,7 @@ class FlywheelSpec(_Model):
         return self.allowable_stress if self.allowable_stress is not None else MATERIALS[self.material][1]
 
 
-class MotorSpec(_Model):
+class MotorSpec(StrictModel):
     """Linear static characteristic of the motor, reduced to the crank: M_Д = M_п·(1 − ω/ω_x)
     (the course's model of an asynchronous motor). Used by `flywheel run --transients`."""
 
@@ -267,14 +264,14 @@ class MotorSpec(_Model):
                           "at the mean speed equals the driving moment, M_п = M_D/(1 − ω_m/ω_x)")
 
 
-class OutputSpec(_Model):
+class OutputSpec(StrictModel):
     """What to report."""
 
     at_deg: list[float] = Field(default_factory=lambda: [120.0],
                                 description="report angles [deg]")
 
 
-class Case(_Model):
+class Case(StrictModel):
     """A whole case file."""
 
     title: str = ""
@@ -314,45 +311,41 @@ class Case(_Model):
         return self
 
 
-class _RefError(ValueError):
-    def __init__(self, loc: tuple, msg: str):
-        super().__init__(msg)
-        self.loc = loc
 
 
 def _check_references(case: Case) -> None:
     """Names are unique and defined before use; lengths can be derived."""
     if (case.crank is None) == (case.tabulated is None):
-        raise _RefError((), "give exactly one of [crank] (a linkage) and [tabulated] "
+        raise FieldError((), "give exactly one of [crank] (a linkage) and [tabulated] "
                             "(kinematics from a table)")
     if case.motor is not None and case.motor.no_load_speed_rpm * 2 * math.pi / 60 <= case.machine.omega_mean:
-        raise _RefError(("motor", "no_load_speed_rpm"),
+        raise FieldError(("motor", "no_load_speed_rpm"),
                         f"{case.motor.no_load_speed_rpm:g} rpm is not above the mean speed "
                         f"{case.machine.omega_mean * 30 / math.pi:g} rpm")
     if case.tabulated is not None:   # no linkage: masses and loads live in [tabulated]
         for key in ("ground", "dyads", "points", "links", "cylinders", "forces", "couples"):
             if getattr(case, key):
-                raise _RefError((key,), "not allowed with [tabulated]: give masses and loads in "
+                raise FieldError((key,), "not allowed with [tabulated]: give masses and loads in "
                                         "[tabulated] (docs/tabulated.md)")
         return
     if case.crank.length is None and case.design.mean_piston_speed is None:
-        raise _RefError(("crank", "length"), "missing: give crank.length or design.mean_piston_speed")
+        raise FieldError(("crank", "length"), "missing: give crank.length or design.mean_piston_speed")
     points: set[str] = set()
     links: set[str] = set()
 
     def new_point(name: str, loc: tuple) -> None:
         if name in points:
-            raise _RefError(loc, f"point name {name!r} is already defined")
+            raise FieldError(loc, f"point name {name!r} is already defined")
         points.add(name)
 
     def new_link(name: str, loc: tuple) -> None:
         if name in links:
-            raise _RefError(loc, f"link name {name!r} is already defined")
+            raise FieldError(loc, f"link name {name!r} is already defined")
         links.add(name)
 
     def known(name: str, loc: tuple) -> None:
         if name not in points:
-            raise _RefError(loc, f"point {name!r} is used before it is defined "
+            raise FieldError(loc, f"point {name!r} is used before it is defined "
                                  f"(defined so far: {', '.join(sorted(points))})")
 
     for name in case.ground:
@@ -372,7 +365,7 @@ def _check_references(case: Case) -> None:
                 if p.link in links and p.from_ in points and (p.to is None or p.to in points):
                     for key, q in (("from", p.from_), ("to", p.to)):
                         if q is not None and q not in on[p.link]:
-                            raise _RefError(("points", name, key), f"point {q!r} is not on link "
+                            raise FieldError(("points", name, key), f"point {q!r} is not on link "
                                             f"{p.link} (its points: {', '.join(sorted(on[p.link]))}): "
                                             f"a point fixed on a link is placed from that link's "
                                             f"own points")
@@ -387,7 +380,7 @@ def _check_references(case: Case) -> None:
         known(d.from_, ("dyads", i, "from"))
         if isinstance(d, RRPSpec):
             if d.rod_length is None and case.design.rod_to_crank is None:
-                raise _RefError(("dyads", i, "rod_length"), "missing: give rod_length or design.rod_to_crank")
+                raise FieldError(("dyads", i, "rod_length"), "missing: give rod_length or design.rod_to_crank")
             new_link(d.rod, ("dyads", i, "rod"))
             new_link(d.slider, ("dyads", i, "slider"))
             new_point(d.joint, ("dyads", i, "joint"))
@@ -407,38 +400,38 @@ def _check_references(case: Case) -> None:
     place_points()
     for name, p in pending.items():
         if p.link not in links:
-            raise _RefError(("points", name, "link"), f"link {p.link!r} is not defined "
+            raise FieldError(("points", name, "link"), f"link {p.link!r} is not defined "
                                                       f"(links: {', '.join(sorted(links))})")
         missing = p.from_ if p.from_ not in points else p.to
-        raise _RefError(("points", name), f"point {missing!r} is never defined")
+        raise FieldError(("points", name), f"point {missing!r} is never defined")
     for name, link in case.links.items():
         if name not in links:
-            raise _RefError(("links", name), f"no link named {name!r} (links: {', '.join(sorted(links))})")
+            raise FieldError(("links", name), f"no link named {name!r} (links: {', '.join(sorted(links))})")
         if link.centroid is not None and link.centroid not in points:
-            raise _RefError(("links", name, "centroid"), f"point {link.centroid!r} is not defined")
+            raise FieldError(("links", name, "centroid"), f"point {link.centroid!r} is not defined")
         if link.centroid is not None and link.centroid not in on[name]:
-            raise _RefError(("links", name, "centroid"), f"point {link.centroid!r} is not on link "
+            raise FieldError(("links", name, "centroid"), f"point {link.centroid!r} is not on link "
                             f"{name} (its points: {', '.join(sorted(on[name]))})")
     for i, c in enumerate(case.cylinders):
         if c.piston not in sliders:
-            raise _RefError(("cylinders", i, "piston"), f"{c.piston!r} is not the slider of an RRP dyad "
+            raise FieldError(("cylinders", i, "piston"), f"{c.piston!r} is not the slider of an RRP dyad "
                                                         f"(sliders: {', '.join(sorted(sliders)) or 'none'})")
     for i, f in enumerate(case.forces):
         if f.slider not in sliders:
-            raise _RefError(("forces", i, "slider"), f"{f.slider!r} is not the slider of an RRP dyad")
+            raise FieldError(("forces", i, "slider"), f"{f.slider!r} is not the slider of an RRP dyad")
         lo, hi = f.s_range
         if not 0 <= lo < hi <= 1:
-            raise _RefError(("forces", i, "s_range"), f"must satisfy 0 ≤ from < to ≤ 1 (got {lo}, {hi})")
+            raise FieldError(("forces", i, "s_range"), f"must satisfy 0 ≤ from < to ≤ 1 (got {lo}, {hi})")
     for i, c in enumerate(case.couples):
         if c.link not in links:
-            raise _RefError(("couples", i, "link"), f"no link named {c.link!r}")
+            raise FieldError(("couples", i, "link"), f"no link named {c.link!r}")
     names = ([(("cylinders", i, "name"), c.name) for i, c in enumerate(case.cylinders)]
              + [(("forces", i, "name"), f.name) for i, f in enumerate(case.forces)]
              + [(("couples", i, "name"), c.name) for i, c in enumerate(case.couples)])
     seen: set[str] = set()
     for loc, n in names:
         if n in seen:
-            raise _RefError(loc, f"load name {n!r} is used twice")
+            raise FieldError(loc, f"load name {n!r} is used twice")
         seen.add(n)
 
 
@@ -494,23 +487,12 @@ def _describe(err: dict) -> str:
 
 def parse_case(data: dict, source: str = "<case>") -> Case:
     """Validate a parsed TOML document into a :class:`Case` or raise one CaseFileError line."""
-    try:
-        return Case.model_validate(data)
-    except ValidationError as exc:
-        errs = exc.errors()
-        for e in errs:  # a reference error raised inside a model validator carries its own loc
-            ctx = e.get("ctx", {}).get("error")
-            if isinstance(ctx, ValueError) and isinstance(getattr(ctx, "loc", None), tuple):
-                raise CaseFileError(f"{source}: {loc_str(e['loc'] + ctx.loc)}: {ctx}") from None
-        raise CaseFileError(f"{source}: {_describe(pick(errs, _DYAD_TAGS))}") from None
+    return validate(data, Case, source, lambda errs: _describe(pick(errs, _DYAD_TAGS)))
 
 
 def load_case(path) -> Case:
     """Read a TOML case file and validate it (one CaseFileError line on any problem)."""
-    from flywheel.io.toml import read_toml
-
-    data = read_toml(path)
-    return parse_case(data, str(path))
+    return load(path, parse_case)
 
 
 def case_json_schema() -> dict:

@@ -5,11 +5,12 @@ The analysis of such a case is :mod:`flywheel.dynamics.tabulated`.
 """
 from __future__ import annotations
 
-import math
 from typing import Annotated, Literal
 
 import numpy as np
-from pydantic import BaseModel, ConfigDict, Field, model_validator
+from pydantic import Field, model_validator
+
+from flywheel.io.schema import FieldError, StrictModel
 
 MIN_POSITIONS = 6
 MAX_GAP_DEG = 360.0 / MIN_POSITIONS      # the widest allowed gap between neighbouring positions
@@ -19,20 +20,16 @@ Row = list[float]
 Name = Annotated[str, Field(min_length=1)]
 
 
-class TableError(ValueError):
-    """An error in the [tabulated] section; ``loc`` is the field path inside it (case.py puts
-    ``tabulated.`` in front and the file name before it)."""
-
-    def __init__(self, loc: tuple, msg: str):
-        super().__init__(msg)
-        self.loc = loc
 
 
-class _Model(BaseModel):
-    model_config = ConfigDict(extra="forbid", allow_inf_nan=False, strict=True, populate_by_name=True)
+class TableError(FieldError):
+    """An error in the [tabulated] section; ``loc`` is the field path inside it (the run case's
+    loader puts ``tabulated.`` in front and the file name before it)."""
 
 
-class TabLink(_Model):
+
+
+class TabLink(StrictModel):
     """Mass data of one link and the table rows it uses: J share = mass·V_q² + J·ω_q²."""
 
     mass: float = Field(0.0, gt=0, description="mass m [kg], > 0, at `point` (leave it out for "
@@ -48,7 +45,7 @@ class TabLink(_Model):
                                                   "own name)")
 
 
-class TabForce(_Model):
+class TabForce(StrictModel):
     """A force at a tabulated point: its reduced moment is M = F·|V_q|·cos α (positive when it
     drives the crank)."""
 
@@ -64,7 +61,7 @@ class TabForce(_Model):
                               "switches on and off) or 'periodic-spline' (smooth loads)")
 
 
-class TabMoment(_Model):
+class TabMoment(StrictModel):
     """A reduced moment given outright per position (e.g. read off another calculation)."""
 
     name: Name
@@ -73,7 +70,7 @@ class TabMoment(_Model):
         "linear", description="'linear' or 'periodic-spline' (see forces)")
 
 
-class TabulatedSpec(_Model):
+class TabulatedSpec(StrictModel):
     """The kinematics and loads as tables aligned with ``positions_deg`` (docs/tabulated.md)."""
 
     positions_deg: Row = Field(description="crank positions φ [deg], increasing, within [0, 360]; "

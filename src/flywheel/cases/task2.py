@@ -14,17 +14,15 @@ import difflib
 import math
 from typing import Annotated, ClassVar, Literal, Union
 
-from pydantic import BaseModel, ConfigDict, Field, Strict, ValidationError, field_validator
+from pydantic import Field, Strict, field_validator
 
 from flywheel.constant_inertia import solve as t2
 from flywheel.errors import CaseFileError, InputError
-from flywheel.io.schema import clean_loc, describe, loc_str, pick
+from flywheel.io.schema import FieldError, StrictModel, load, validate, clean_loc, describe, loc_str, pick
 
 BALANCE = "balance"
 
 
-class _Model(BaseModel):
-    model_config = ConfigDict(extra="forbid", allow_inf_nan=False, strict=True)
 
 
 def _amount(v):
@@ -37,7 +35,7 @@ def _amount(v):
 Amount = Union[float, str]
 
 
-class _Graph(_Model):
+class _Graph(StrictModel):
     _AMOUNTS: ClassVar[tuple[str, ...]] = ()
 
     @field_validator("value", "scale", "peak", "a0", check_fields=False)
@@ -124,7 +122,7 @@ KINDS = {"constant": ConstantGraph, "points": PointsGraph, "triangle": TriangleG
 Graph = Annotated[Union[tuple(KINDS.values())], Field(discriminator="kind")]
 
 
-class Speed(_Model):
+class Speed(StrictModel):
     """Exactly one of the four."""
 
     omega0: float | None = Field(None, description="ω at φ = 0 [rad/s]")
@@ -133,7 +131,7 @@ class Speed(_Model):
     mean_rpm: float | None = Field(None, description="mean speed [rev/min]")
 
 
-class Flywheel(_Model):
+class Flywheel(StrictModel):
     """The reduced inertia, or what it must achieve."""
 
     J: float | None = Field(None, description="reduced moment of inertia [kg·m²]")
@@ -145,7 +143,7 @@ class Flywheel(_Model):
     rim_radius: float | None = Field(None, description="mean radius of a rim: m = J/R² [m]")
 
 
-class Diagram(_Model):
+class Diagram(StrictModel):
     """A turning-moment diagram by its areas between crossings with the mean line."""
 
     areas: list[float] | None = Field(None, description="signed areas in order [mm²]")
@@ -156,7 +154,7 @@ class Diagram(_Model):
         None, description="angles of the crossings, one more than the areas [deg]")
 
 
-class Task2Case(_Model):
+class Task2Case(StrictModel):
     """A task-2 problem."""
 
     title: str = Field("", description="what the case is")
@@ -206,25 +204,21 @@ def _describe(err: dict, data: dict) -> str:
     return describe(err, allowed)
 
 
-class _Err(Exception):
-    def __init__(self, field: str, msg: str):
-        super().__init__(msg)
-        self.field = field
 
 
 def _pos(field: str, v: float | None, unit: str) -> None:
     if v is not None and not v > 0:
-        raise _Err(field, f"must be positive (got {v:g} {unit})")
+        raise FieldError(field, f"must be positive (got {v:g} {unit})")
 
 
 def _check(case: Task2Case) -> None:
     """Checks that pydantic's types do not express; each raises with its field path."""
     if not case.cycle_deg > 0:
-        raise _Err("cycle_deg", f"must be positive (got {case.cycle_deg:g}°)")
+        raise FieldError("cycle_deg", f"must be positive (got {case.cycle_deg:g}°)")
     s = case.speed
     given = [k for k in ("omega0", "omega0_rpm", "mean", "mean_rpm") if getattr(s, k) is not None]
     if len(given) != 1:
-        raise _Err("speed", "give exactly one of omega0, omega0_rpm, mean, mean_rpm"
+        raise FieldError("speed", "give exactly one of omega0, omega0_rpm, mean, mean_rpm"
                    + (f" (got {', '.join(given)})" if given else ""))
     _pos(f"speed.{given[0]}", getattr(s, given[0]), "rad/s" if "rpm" not in given[0] else "rpm")
     f = case.flywheel
@@ -232,29 +226,29 @@ def _check(case: Task2Case) -> None:
                        ("rim_radius", "m"), ("fluctuation_percent", "%")):
         _pos(f"flywheel.{name}", getattr(f, name), unit)
     if f.delta is not None and not 0 < f.delta < 2:
-        raise _Err("flywheel.delta", f"must lie between 0 and 2 (got {f.delta:g})")
+        raise FieldError("flywheel.delta", f"must lie between 0 and 2 (got {f.delta:g})")
     if f.J is not None and (f.mass is not None or f.radius_of_gyration is not None):
-        raise _Err("flywheel", "give J or mass with radius_of_gyration, not both")
+        raise FieldError("flywheel", "give J or mass with radius_of_gyration, not both")
     if (f.mass is None) != (f.radius_of_gyration is None):
-        raise _Err("flywheel", "mass and radius_of_gyration go together (J = m·k²)")
+        raise FieldError("flywheel", "mass and radius_of_gyration go together (J = m·k²)")
     if f.delta is not None and f.fluctuation_percent is not None:
-        raise _Err("flywheel", "give delta or fluctuation_percent, not both")
+        raise FieldError("flywheel", "give delta or fluctuation_percent, not both")
     if f.J is None and f.mass is None and f.delta is None and f.fluctuation_percent is None:
-        raise _Err("flywheel", "give J, or mass and radius_of_gyration, or the asked delta "
+        raise FieldError("flywheel", "give J, or mass and radius_of_gyration, or the asked delta "
                    "(or fluctuation_percent)")
     if case.diagram is not None:
         if case.driving is not None or case.resistance is not None:
-            raise _Err("diagram", "give either [diagram] or [driving] and [resistance], not both")
+            raise FieldError("diagram", "give either [diagram] or [driving] and [resistance], not both")
         _check_diagram(case.diagram, case.cycle_deg)
         return
     for name in ("driving", "resistance"):
         if getattr(case, name) is None:
-            raise _Err(name, "missing: give [driving] and [resistance] graphs, or a [diagram]")
+            raise FieldError(name, "missing: give [driving] and [resistance] graphs, or a [diagram]")
     unknowns = [(n, g.unknown_field()) for n, g in (("driving", case.driving),
                                                     ("resistance", case.resistance))
                 if g.unknown_field()]
     if len(unknowns) > 1:
-        raise _Err(f"{unknowns[1][0]}.{unknowns[1][1]}",
+        raise FieldError(f"{unknowns[1][0]}.{unknowns[1][1]}",
                    '"balance" may stand for one value only (the other is '
                    f"{unknowns[0][0]}.{unknowns[0][1]})")
     for name in ("driving", "resistance"):
@@ -264,85 +258,74 @@ def _check(case: Task2Case) -> None:
 def _check_graph(name: str, g, cycle: float) -> None:
     if isinstance(g, PointsGraph):
         if len(g.points) < 2:
-            raise _Err(f"{name}.points", "needs at least two [angle, moment] points")
+            raise FieldError(f"{name}.points", "needs at least two [angle, moment] points")
         for i in range(1, len(g.points)):
             if g.points[i][0] < g.points[i - 1][0]:
-                raise _Err(f"{name}.points[{i}]",
+                raise FieldError(f"{name}.points[{i}]",
                            f"angle {g.points[i][0]:g}° comes after {g.points[i - 1][0]:g}°: "
                            "angles must not decrease")
         if g.points[0][0] != 0 or g.points[-1][0] != cycle:
-            raise _Err(f"{name}.points",
+            raise FieldError(f"{name}.points",
                        f"must span the cycle 0…{cycle:g}° (spans "
                        f"{g.points[0][0]:g}…{g.points[-1][0]:g}°)")
     elif isinstance(g, (TriangleGraph, RectangleGraph, TrapezoidGraph)):
         if not 0 <= g.from_deg < g.to_deg <= cycle:
-            raise _Err(f"{name}.from_deg", f"need 0 ≤ from_deg < to_deg ≤ {cycle:g} "
+            raise FieldError(f"{name}.from_deg", f"need 0 ≤ from_deg < to_deg ≤ {cycle:g} "
                        f"(got {g.from_deg:g}, {g.to_deg:g})")
         if isinstance(g, TriangleGraph) and g.apex_deg is not None \
                 and not g.from_deg <= g.apex_deg <= g.to_deg:
-            raise _Err(f"{name}.apex_deg", f"must lie within {g.from_deg:g}…{g.to_deg:g}° "
+            raise FieldError(f"{name}.apex_deg", f"must lie within {g.from_deg:g}…{g.to_deg:g}° "
                        f"(got {g.apex_deg:g})")
         if isinstance(g, TrapezoidGraph) and not (
                 g.from_deg <= g.top_from_deg <= g.top_to_deg <= g.to_deg):
-            raise _Err(f"{name}.top_from_deg",
+            raise FieldError(f"{name}.top_from_deg",
                        "need from_deg ≤ top_from_deg ≤ top_to_deg ≤ to_deg")
     elif isinstance(g, HarmonicGraph):
         n = max(len(g.a), len(g.b))
         if g.orders is not None:
             if len(g.orders) != n:
-                raise _Err(f"{name}.orders", f"{len(g.orders)} orders for {n} terms")
+                raise FieldError(f"{name}.orders", f"{len(g.orders)} orders for {n} terms")
             if any(not k > 0 for k in g.orders):
-                raise _Err(f"{name}.orders", "orders must be positive")
+                raise FieldError(f"{name}.orders", "orders must be positive")
 
 
 def _check_diagram(d: Diagram, cycle: float) -> None:
     if (d.areas is None) == (d.energies is None):
-        raise _Err("diagram", "give areas (with moment_scale and angle_scale_deg) or energies")
+        raise FieldError("diagram", "give areas (with moment_scale and angle_scale_deg) or energies")
     vals, key = (d.areas, "areas") if d.areas is not None else (d.energies, "energies")
     if d.areas is not None:
         for k in ("moment_scale", "angle_scale_deg"):
             if getattr(d, k) is None:
-                raise _Err(f"diagram.{k}", "missing: areas need the drawing's scales")
+                raise FieldError(f"diagram.{k}", "missing: areas need the drawing's scales")
             _pos(f"diagram.{k}", getattr(d, k), "")
     if len(vals) < 2:
-        raise _Err(f"diagram.{key}", "needs at least two areas")
+        raise FieldError(f"diagram.{key}", "needs at least two areas")
     total, size = math.fsum(vals), math.fsum(abs(v) for v in vals)
     if abs(total) > t2.BALANCE_RTOL * size:
-        raise _Err(f"diagram.{key}", f"sum to {total:.6g}, not 0: over a cycle the areas above "
+        raise FieldError(f"diagram.{key}", f"sum to {total:.6g}, not 0: over a cycle the areas above "
                    "and below the mean line must be equal")
     if d.crossings_deg is not None:
         c = d.crossings_deg
         if len(c) != len(vals) + 1:
-            raise _Err("diagram.crossings_deg",
+            raise FieldError("diagram.crossings_deg",
                        f"needs {len(vals) + 1} angles for {len(vals)} areas (got {len(c)})")
         for i in range(1, len(c)):
             if not c[i] > c[i - 1]:
-                raise _Err(f"diagram.crossings_deg[{i}]", "angles must increase")
+                raise FieldError(f"diagram.crossings_deg[{i}]", "angles must increase")
         if c[0] < 0 or c[-1] > cycle:
-            raise _Err("diagram.crossings_deg", f"must lie within 0…{cycle:g}°")
+            raise FieldError("diagram.crossings_deg", f"must lie within 0…{cycle:g}°")
 
 
 # -- loading and solving --------------------------------------------------------------------------
 
 def parse_task2_case(data: dict, source: str = "<case>") -> Task2Case:
     """Validate a parsed TOML document or raise one CaseFileError line."""
-    try:
-        case = Task2Case.model_validate(data)
-    except ValidationError as exc:
-        raise CaseFileError(f"{source}: {_describe(pick(exc.errors()), data)}") from None
-    try:
-        _check(case)
-    except _Err as exc:
-        raise CaseFileError(f"{source}: {exc.field}: {exc}") from None
-    return case
+    return validate(data, Task2Case, source, lambda errs: _describe(pick(errs), data), _check)
 
 
 def load_task2_case(path) -> Task2Case:
     """Read a TOML task-2 case file and validate it."""
-    from flywheel.io.toml import read_toml
-
-    data = read_toml(path)
-    return parse_task2_case(data, str(path))
+    return load(path, parse_task2_case)
 
 
 def _maker(g, cycle: float):

@@ -71,12 +71,13 @@ def grade_command(
     import sys
 
     from flywheel.cli.guard import _guard, fail
+    from flywheel.io.output import write_file
     from flywheel.teaching.grading import grade, load_key, report_csv, report_dict
 
     k = _guard(load_key, key)
     report = _guard(grade, k, answers, tolerance)
     if out is not None:
-        _write(out, report_csv(report))
+        _guard(write_file, out, report_csv(report), expected="a CSV file name")
     if as_json:
         import json
 
@@ -93,26 +94,3 @@ def grade_command(
                  f"{report.problems[0]})")
         fail("nothing could be graded: no filled-in student rows (a row needs a student name "
              "and a variant)")
-
-
-def _write(path: Path, text: str) -> None:
-    """Write a file whole or not at all (a temporary file renamed into place)."""
-    import os
-    import tempfile
-
-    from flywheel.cli.guard import fail
-
-    if path.is_dir():
-        fail(f"--out {path}: is a folder, expected a CSV file name")
-    tmp = None
-    try:
-        path.parent.mkdir(parents=True, exist_ok=True)
-        fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", dir=path.parent)
-        with os.fdopen(fd, "w", encoding="utf-8", newline="") as f:
-            f.write(text)
-        os.chmod(tmp, 0o644)
-        os.replace(tmp, path)
-    except OSError as exc:
-        if tmp is not None and os.path.exists(tmp):
-            os.unlink(tmp)
-        fail(f"--out {path}: cannot be written ({exc.strerror})")

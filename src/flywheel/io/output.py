@@ -1,5 +1,6 @@
-"""Write an output folder whole or not at all: build it in a temporary folder beside the
-target, then rename it into place (an existing folder is replaced only after success)."""
+"""Atomic writers: an output folder or a file is written whole or not at all (built in a
+temporary beside the target, then renamed into place; what was there is replaced only after
+success)."""
 from __future__ import annotations
 
 import os
@@ -50,3 +51,25 @@ def write_folder(target: Path, build, marker: str, kind: str = "output") -> Path
         shutil.rmtree(tmp, ignore_errors=True)
         raise
     return target
+
+
+def write_file(path: Path, text: str, option: str = "--out", expected: str = "a file name") -> Path:
+    """Write ``text`` (UTF-8) to ``path`` whole or not at all: a temporary file beside it,
+    renamed into place. Raises InputError naming ``option`` if ``path`` is a folder or cannot
+    be written."""
+    path = Path(path)
+    if path.is_dir():
+        raise InputError(f"{option} {path}: is a folder, expected {expected}")
+    tmp = None
+    try:
+        path.parent.mkdir(parents=True, exist_ok=True)
+        fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", dir=path.parent)
+        with os.fdopen(fd, "w", encoding="utf-8", newline="") as f:
+            f.write(text)
+        os.chmod(tmp, 0o644)
+        os.replace(tmp, path)
+    except OSError as exc:
+        if tmp is not None and os.path.exists(tmp):
+            os.unlink(tmp)
+        raise InputError(f"{option} {path}: cannot be written ({exc.strerror})") from None
+    return path

@@ -1,11 +1,77 @@
-"""One line from a pydantic ValidationError: the field path as a case file spells it, what is
-wrong, what is allowed. Shared by the case loaders (case.py, task2_case.py, aggregate_case.py).
+"""Case files' schemas: one strict pydantic base model, one field-path error, one loader and one
+error formatter, shared by every case kind (flywheel.cases.run, .tabulated, .task2, .aggregate).
+
+A problem becomes one line: ``file: field.path: what is wrong (what is allowed)``.
 """
 from __future__ import annotations
 
 import difflib
 import re
 from collections.abc import Callable, Iterable
+from typing import TypeVar
+
+from pydantic import BaseModel, ConfigDict, ValidationError
+
+from flywheel.errors import CaseFileError
+
+
+class StrictModel(BaseModel):
+    """The base of every case-file table: unknown keys, NaN, infinity, quoted numbers and
+    ``true`` for a number are errors; a field with an alias (``from``) also takes its name."""
+
+    model_config = ConfigDict(extra="forbid", allow_inf_nan=False, strict=True,
+                              populate_by_name=True)
+
+
+class FieldError(ValueError):
+    """A problem found by a check that spans fields: ``loc`` is the field path, as a tuple
+    (``("cylinders", 0, "piston")``) or a dotted string (``"motor.J"``)."""
+
+    def __init__(self, loc: tuple | str, msg: str):
+        super().__init__(msg)
+        self.loc = loc
+
+    @property
+    def where(self) -> str:
+        """The field path as the file spells it ('' at the top level)."""
+        if isinstance(self.loc, str):
+            return self.loc
+        return loc_str(self.loc) if self.loc else ""
+
+
+M = TypeVar("M", bound=BaseModel)
+
+
+def validate(data, model: type[M], source: str, describe_error: Callable[[list[dict]], str],
+             check: Callable[[M], object] | None = None) -> M:
+    """``model`` validated from a parsed document, else one CaseFileError line naming ``source``.
+
+    ``describe_error(errors)`` words pydantic's errors (the case kind knows its tags and keys);
+    a FieldError raised inside a model validator keeps its own path below the model's; a
+    FieldError from ``check(model)`` (checks that span tables) names its path."""
+    try:
+        obj = model.model_validate(data)
+    except ValidationError as exc:
+        errs = exc.errors()
+        for e in errs:
+            ctx = e.get("ctx", {}).get("error")
+            if isinstance(ctx, FieldError) and isinstance(ctx.loc, tuple):
+                raise CaseFileError(f"{source}: {loc_str(e['loc'] + ctx.loc)}: {ctx}") from None
+        raise CaseFileError(f"{source}: {describe_error(errs)}") from None
+    if check is not None:
+        try:
+            check(obj)
+        except FieldError as exc:
+            raise CaseFileError(f"{source}: {exc.where + ': ' if exc.where else ''}{exc}") from None
+    return obj
+
+
+def load(path, parse: Callable[[dict, str], M], what: str = "a TOML case file") -> M:
+    """Read the TOML file at ``path`` and hand it to ``parse(data, source)`` (a case kind's
+    ``parse_*``): the one way every case file is loaded."""
+    from flywheel.io.toml import read_toml
+
+    return parse(read_toml(path, what), str(path))
 
 # pydantic puts the member of a union it tried into the location ('float', 'list[float]', …):
 # not a key of the file
