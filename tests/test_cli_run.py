@@ -27,7 +27,8 @@ def test_run_writes_every_output(tmp_path):
     out = tmp_path / "out"
     res = run("run", CASES / "compressor.toml", "--out", out, "--no-plots", "--points", "720")
     assert res.exit_code == 0, res.output
-    assert {p.name for p in out.iterdir()} == {"summary.json", "table.csv", "positions.csv", "report.md"}
+    assert {p.name for p in out.iterdir()} == {"summary.json", "table.csv", "positions.csv", "report.md",
+                                              ".flywheel-manifest.json"}
     report = (out / "report.md").read_text(encoding="utf-8")
     assert report.startswith("# Dynamic analysis: Two-stage V-type air compressor")
     assert "ΔT_нб = " in report and "## 5. Flywheel" in report and "## 6. True velocities" in report
@@ -73,13 +74,16 @@ def test_same_input_gives_identical_files(tmp_path):
         assert (tmp_path / "a" / f).read_bytes() == (tmp_path / "b" / f).read_bytes()
 
 
-def test_rerun_replaces_the_folder_whole(tmp_path):
+def test_rerun_replaces_its_own_files_only(tmp_path):
     out = tmp_path / "o"
     assert run("run", CASES / "compressor.toml", "--out", out, "--points", "360").exit_code == 0
     assert (out / "plots").is_dir()
-    (out / "stale.txt").write_text("old")           # an earlier output folder: replaced whole
-    assert run("run", CASES / "compressor.toml", "--out", out, "--no-plots", "--points", "360").exit_code == 0
-    assert not (out / "stale.txt").exists() and not (out / "plots").exists()
+    (out / "notes.txt").write_text("mine")          # the user's file in an output folder: kept
+    res = run("run", CASES / "compressor.toml", "--out", out, "--no-plots", "--points", "360")
+    assert res.exit_code == 0
+    assert (out / "notes.txt").read_text() == "mine"
+    assert not (out / "plots").exists()             # the earlier run's plots: removed, and said
+    assert "plots/" in res.stderr and "removed" in res.stderr
 
 
 def test_out_never_deletes_a_folder_it_did_not_write(tmp_path):
@@ -88,7 +92,7 @@ def test_out_never_deletes_a_folder_it_did_not_write(tmp_path):
     (thesis / "notes.txt").write_text("precious")
     _one_error_line(run("run", CASES / "compressor.toml", "--out", thesis, "--no-plots"),
                     f"--out {thesis}: the folder exists, is not empty and is not an earlier "
-                    "output folder (no summary.json)")
+                    "output folder of flywheel (no .flywheel-manifest.json)")
     assert (thesis / "notes.txt").read_text() == "precious"
     assert sorted(p.name for p in tmp_path.iterdir()) == ["thesis"]   # no temporary left
     empty = tmp_path / "empty"

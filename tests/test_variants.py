@@ -62,7 +62,7 @@ def task2_dir(tmp_path_factory):
 
 def test_writes_the_files(compressor_dir):
     names = sorted(p.name for p in compressor_dir.iterdir())
-    assert names == ["answers.csv", "answers.json", "students.csv",
+    assert names == [".flywheel-manifest.json", "answers.csv", "answers.json", "students.csv",
                      "variant_01.toml", "variant_02.toml", "variant_03.toml"]
     key = json.loads((compressor_dir / "answers.json").read_text())
     assert key["kind"] == "run" and key["seed"] == 11 and key["n_points"] == RUN_POINTS
@@ -275,9 +275,9 @@ def test_out_refuses_a_folder_that_is_not_a_variants_folder(tmp_path, task2_dir)
     busy.mkdir()
     (busy / "thesis.tex").write_text("keep me")
     one_line_error(invoke(TASK2, "--count", 1, "--seed", 1, "--out", busy),
-                   "is not an earlier variants folder (no answers.json)")
+                   "is not an earlier variants folder of flywheel (no .flywheel-manifest.json)")
     assert (busy / "thesis.tex").read_text() == "keep me"
-    # an earlier variants folder is replaced whole
+    # in an earlier variants folder the variants of the earlier run are replaced
     old = tmp_path / "old"
     assert invoke(TASK2, "--count", 3, "--seed", 1, "--out", old).exit_code == 0
     assert invoke(TASK2, "--count", 2, "--seed", 1, "--out", old).exit_code == 0

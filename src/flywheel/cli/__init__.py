@@ -27,9 +27,34 @@ app.command("variants")(variants_command)
 app.command("grade")(grade_command)
 
 
+class Stopped(BaseException):
+    """Ctrl-C (SIGINT) or SIGTERM, raised in the main thread so that every ``finally`` and
+    ``except BaseException`` on the way out runs (an output folder's temporary is removed).
+    Not a KeyboardInterrupt: click would turn that into "Aborted!" and exit 1."""
+
+    def __init__(self, signum: int):
+        super().__init__(signum)
+        self.signum = signum
+
+
+def _stop(signum, frame) -> None:
+    raise Stopped(signum)
+
+
 def main() -> None:
-    """Console-script entry point."""
-    app()
+    """Console-script entry point: exit 130 on Ctrl-C, 143 on SIGTERM, with one line."""
+    import signal
+    import sys
+
+    signal.signal(signal.SIGINT, _stop)
+    signal.signal(signal.SIGTERM, _stop)
+    try:
+        app()
+    except Stopped as exc:
+        signal.signal(signal.SIGINT, signal.SIG_IGN)     # a second Ctrl-C: no traceback
+        name = "interrupted (Ctrl-C)" if exc.signum == signal.SIGINT else "terminated (SIGTERM)"
+        sys.stderr.write(f"error: {name}\n")
+        sys.exit(128 + exc.signum)
 
 
 if __name__ == "__main__":  # pragma: no cover

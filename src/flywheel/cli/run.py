@@ -36,9 +36,9 @@ def check_command(case: Path = typer.Argument(..., help="Case file (TOML).")) ->
 def run_command(
     case: Path = typer.Argument(..., help="Case file (TOML)."),
     out: Optional[Path] = typer.Option(None, "--out", "-o",
-                                       help="Output folder (default: out/<case name>); "
-                                       "replaced whole if it is an earlier output folder, "
-                                       "refused if it holds anything else."),
+                                       help="Output folder (default: out/<case name>); in an "
+                                       "earlier output folder only flywheel's own files are "
+                                       "replaced, any other non-empty folder is refused."),
     points: int = typer.Option(3600, "--points", help="Intervals of the φ grid over the cycle."),
     at: Optional[list[float]] = typer.Option(None, "--at", help="Report angle \\[deg]; repeatable "
                                              "(default: the case's output.at_deg, else 120)."),
@@ -79,7 +79,10 @@ def run_command(
 
         (folder / "report.md").write_text(report_markdown(results, lang, pngs), encoding="utf-8")
 
-    _guard(write_folder, out, build, "summary.json")
+    notes: list[str] = []
+    _guard(write_folder, out, build, "summary.json", notes=notes)
+    for n in notes:
+        sys.stderr.write(f"note: {n}\n")
     if as_json:
         sys.stdout.write(text_json)
     else:

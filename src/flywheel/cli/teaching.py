@@ -17,7 +17,8 @@ def variants_command(
                                     "\\[variants] table (see docs/teacher.md).",),
     count: int = typer.Option(..., "--count", "-n", help="How many variants."),
     out: Path = typer.Option(..., "--out", "-o", help="Output folder (written whole or not at "
-                             "all; an earlier variants folder there is replaced)."),
+                             "all; in an earlier variants folder only flywheel's own files "
+                             "are replaced)."),
     seed: Optional[int] = typer.Option(None, "--seed", help="Seed of numpy's default_rng: the "
                                        "same seed gives the same files (default: a random "
                                        "one, printed and written into every file)."),
@@ -35,6 +36,7 @@ def variants_command(
     if points < 36:
         fail(f"--points: {points} is too few (allowed: 36 or more)")
     import secrets
+    import sys
 
     from rich.console import Console
     from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn
@@ -51,7 +53,10 @@ def variants_command(
         task = bar.add_task("variants", total=count)
         vs = _guard(generate, t, count, seed, points,
                     lambda i: bar.update(task, completed=i))
-    _guard(write_variants, vs, out)
+    notes: list[str] = []
+    _guard(write_variants, vs, out, notes)
+    for n in notes:
+        sys.stderr.write(f"note: {n}\n")
     print_variants(vs, out)
 
 

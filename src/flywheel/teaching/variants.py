@@ -513,9 +513,10 @@ def students_csv(vs: VariantSet) -> str:
     return buf.getvalue()
 
 
-def write_variants(vs: VariantSet, out) -> Path:
+def write_variants(vs: VariantSet, out, notes: list[str] | None = None) -> Path:
     """Write the variant files, answers.json, answers.csv and students.csv to ``out``, whole or
-    not at all. Refuses a non-empty folder that is not an earlier variants folder."""
+    not at all. Refuses a non-empty folder that is not an earlier variants folder; in an
+    earlier one only the files flywheel wrote change (what was removed goes to ``notes``)."""
     from flywheel.io.output import write_folder
 
     out = Path(out)
@@ -527,4 +528,4 @@ def write_variants(vs: VariantSet, out) -> Path:
         (folder / "answers.csv").write_text(answers_csv(vs), encoding="utf-8")
         (folder / "students.csv").write_text(students_csv(vs), encoding="utf-8")
 
-    return write_folder(out, build, "answers.json", "variants")
+    return write_folder(out, build, "answers.json", "variants", notes)

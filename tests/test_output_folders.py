@@ -1,0 +1,164 @@
+"""Output folders: written whole or not at all, and nothing of the user's is ever lost
+(flywheel.io.output; issue 17: the manifest, user files, edited files, killed runs)."""
+from __future__ import annotations
+
+import json
+import os
+import signal
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import pytest
+
+from flywheel.errors import InputError
+from flywheel.io.output import MANIFEST, remove_stale_temporaries, write_folder
+
+CASES = Path(__file__).resolve().parents[1] / "cases"
+
+
+def _builder(files: dict[str, str]):
+    def build(folder: Path) -> None:
+        for rel, text in files.items():
+            p = folder / rel
+            p.parent.mkdir(parents=True, exist_ok=True)
+            p.write_text(text, encoding="utf-8")
+    return build
+
+
+RUN1 = {"summary.json": '{"results": {}, "units": "SI"}\n', "table.csv": "a\n1\n",
+        "plots/J_II.png": "png1", "plots/omega.png": "png2"}
+RUN2 = {"summary.json": '{"results": {"x": 1}, "units": "SI"}\n', "table.csv": "a\n2\n"}
+
+
+def test_new_folder_gets_a_manifest_of_its_files(tmp_path):
+    out = write_folder(tmp_path / "o", _builder(RUN1), "summary.json")
+    doc = json.loads((out / MANIFEST).read_text())
+    assert doc["written_by"] == "flywheel" and doc["kind"] == "output"
+    assert sorted(doc["files"]) == sorted(RUN1)
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["o"]      # no temporary left
+
+
+def test_rerun_replaces_only_its_own_files_and_keeps_the_users(tmp_path):
+    out = tmp_path / "o"
+    write_folder(out, _builder(RUN1), "summary.json")
+    (out / "notes.txt").write_text("my notes")                     # the user's own file
+    (out / "plots" / "sketch.png").write_text("mine")              # … even among the plots
+    notes: list[str] = []
+    write_folder(out, _builder(RUN2), "summary.json", notes=notes)
+    assert (out / "notes.txt").read_text() == "my notes"
+    assert (out / "plots" / "sketch.png").read_text() == "mine"
+    assert (out / "table.csv").read_text() == "a\n2\n"
+    assert not (out / "plots" / "J_II.png").exists()               # stale output: removed …
+    assert any("removed 2 file(s)" in n and "plots/J_II.png" in n for n in notes)   # … and said
+    assert sorted(json.loads((out / MANIFEST).read_text())["files"]) == sorted(RUN2)
+
+
+def test_a_file_the_user_edited_is_kept_aside(tmp_path):
+    out = tmp_path / "o"
+    write_folder(out, _builder(RUN1), "summary.json")
+    (out / "table.csv").write_text("edited by hand")
+    notes: list[str] = []
+    write_folder(out, _builder(RUN1), "summary.json", notes=notes)
+    assert (out / "table.csv.edited").read_text() == "edited by hand"
+    assert (out / "table.csv").read_text() == RUN1["table.csv"]
+    assert any("table.csv → table.csv.edited" in n for n in notes)
+    (out / "table.csv").write_text("edited again")
+    write_folder(out, _builder(RUN1), "summary.json")
+    assert (out / "table.csv.edited-2").read_text() == "edited again"
+
+
+def test_a_file_named_like_an_output_does_not_make_a_folder_ours(tmp_path):
+    p = tmp_path / "p"
+    p.mkdir()
+    (p / "summary.json").write_text("{}")
+    (p / "thesis.docx").write_text("x")
+    with pytest.raises(InputError, match="not an earlier output folder"):
+        write_folder(p, _builder(RUN1), "summary.json")
+    assert (p / "thesis.docx").read_text() == "x" and (p / "summary.json").read_text() == "{}"
+    # nor does a forged manifest of another kind
+    (p / MANIFEST).write_text(json.dumps({"written_by": "flywheel", "kind": "variants",
+                                          "files": {"thesis.docx": "0"}}))
+    with pytest.raises(InputError):
+        write_folder(p, _builder(RUN1), "summary.json")
+    assert (p / "thesis.docx").read_text() == "x"
+
+
+def test_a_manifest_cannot_reach_outside_its_folder(tmp_path):
+    out = tmp_path / "o"
+    write_folder(out, _builder(RUN1), "summary.json")
+    victim = tmp_path / "victim.txt"
+    victim.write_text("keep")
+    doc = json.loads((out / MANIFEST).read_text())
+    doc["files"]["../victim.txt"] = doc["files"]["table.csv"]
+    (out / MANIFEST).write_text(json.dumps(doc))
+    write_folder(out, _builder(RUN2), "summary.json")
+    assert victim.read_text() == "keep"
+
+
+def test_folder_of_the_version_before_manifests_is_recognised_by_its_content(tmp_path):
+    old = tmp_path / "old"
+    old.mkdir()
+    (old / "summary.json").write_text('{"results": {}, "units": "SI"}')
+    (old / "mine.txt").write_text("keep")
+    write_folder(old, _builder(RUN2), "summary.json")
+    assert (old / "mine.txt").read_text() == "keep"
+    assert (old / "table.csv").read_text() == RUN2["table.csv"]
+
+
+def test_a_failed_build_leaves_everything_as_it_was(tmp_path):
+    out = tmp_path / "o"
+    write_folder(out, _builder(RUN1), "summary.json")
+    before = {p: p.read_bytes() for p in out.rglob("*") if p.is_file()}
+
+    def broken(folder: Path) -> None:
+        (folder / "summary.json").write_text("half")
+        raise KeyboardInterrupt
+
+    with pytest.raises(KeyboardInterrupt):
+        write_folder(out, broken, "summary.json")
+    assert {p: p.read_bytes() for p in out.rglob("*") if p.is_file()} == before
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["o"]
+
+
+def test_a_temporary_of_a_killed_run_is_removed_by_the_next(tmp_path):
+    dead = subprocess.run([sys.executable, "-c", "import os; print(os.getpid())"],
+                          capture_output=True, text=True, check=True)
+    stale = tmp_path / ".o.tmp-abc123"
+    stale.mkdir()
+    (stale / ".flywheel-writer-pid").write_text(dead.stdout.strip())
+    (stale / "table.csv").write_text("half-written")
+    foreign = tmp_path / ".o.tmp-notours"          # no pid file: not flywheel's, left alone
+    foreign.mkdir()
+    write_folder(tmp_path / "o", _builder(RUN1), "summary.json")
+    assert not stale.exists() and foreign.exists()
+    live = tmp_path / ".o.tmp-live"                # its writer still runs: left alone
+    live.mkdir()
+    (live / ".flywheel-writer-pid").write_text(str(os.getppid()))
+    assert remove_stale_temporaries(tmp_path, "o") == [] and live.exists()
+
+
+@pytest.mark.parametrize("sig", [signal.SIGINT, signal.SIGTERM])
+def test_an_interrupted_run_leaves_the_output_folder_as_it_was(tmp_path, sig):
+    """Ctrl-C or SIGTERM while a run writes: exit 130 / 143 with one line, no temporary
+    folder left, the earlier output untouched."""
+    out = tmp_path / "o"
+    env = {**os.environ, "PYTHONUNBUFFERED": "1"}
+    first = subprocess.run([sys.executable, "-m", "flywheel", "run", str(CASES / "compressor.toml"),
+                            "--out", str(out), "--no-plots", "--points", "360"],
+                           capture_output=True, text=True, env=env)
+    assert first.returncode == 0, first.stderr
+    before = {p: p.read_bytes() for p in out.rglob("*") if p.is_file()}
+    proc = subprocess.Popen([sys.executable, "-m", "flywheel", "run", str(CASES / "compressor.toml"),
+                             "--out", str(out), "--points", "3600", "--transients"],
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=env)
+    deadline = time.monotonic() + 30
+    while not any(tmp_path.glob(".o.tmp-*")) and time.monotonic() < deadline:
+        time.sleep(0.01)                           # wait until it is writing
+    proc.send_signal(sig)
+    _, err = proc.communicate(timeout=60)
+    assert proc.returncode == (130 if sig == signal.SIGINT else 143), err
+    assert "Traceback" not in err and len(err.strip().splitlines()) == 1, err
+    assert {p: p.read_bytes() for p in out.rglob("*") if p.is_file()} == before
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["o"]
