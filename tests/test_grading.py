@@ -218,3 +218,63 @@ def test_numbers_and_errors():
     with pytest.raises(ValueError):
         parse_number("nan")
     assert rel_error(99.0, 100.0) == (pytest.approx(0.01), "relative")
+
+
+NAMES_RU = ("Иванов Пётр", "Петрова Анна", "Сидоров Илья", "Ким Юлия")
+
+
+@pytest.mark.parametrize("encoding, delimiter", [
+    ("utf-8", ","), ("utf-8-sig", ";"), ("utf-16", "\t"),      # Excel's "Unicode text" is UTF-16
+    ("cp1251", ";"), ("cp866", ","), ("koi8_r", ";")])
+def test_sheets_in_every_common_encoding_are_read(tmp_path, key_dir, key, encoding, delimiter):
+    path = sheet(tmp_path / f"{encoding}.csv", key, names=NAMES_RU, delimiter=delimiter,
+                 encoding=encoding)
+    res, rep = as_json(key_dir / "answers.json", path)
+    assert res.exit_code == 0, res.output
+    assert [s["student"] for s in rep["students"]] == list(NAMES_RU)
+    assert rep["summary"]["mean_score"] == 1.0
+
+
+def test_binary_and_undecodable_sheets_are_one_problem_each(tmp_path, key_dir, key):
+    png = tmp_path / "photo.csv"                        # an image renamed .csv
+    png.write_bytes(b"\x89PNG\r\n\x1a\n\x00\x00\x00\rIHDR" + bytes(range(256)) * 4)
+    good = sheet(tmp_path / "good.csv", key)
+    res, rep = as_json(key_dir / "answers.json", png, good)
+    assert res.exit_code == 0, res.output               # the batch goes on past it
+    assert len(rep["students"]) == 4
+    bad = [p for p in rep["problems"] if p["file"] == str(png)]
+    assert len(bad) == 1 and "binary data" in bad[0]["message"], rep["problems"]
+    # a UTF-8 BOM followed by bytes that are not UTF-8: refused, not guessed
+    broken = tmp_path / "broken.csv"
+    broken.write_bytes(b"\xef\xbb\xbfstudent,variant\n\xff\xfe\x98,01\n")
+    res = invoke(key_dir / "answers.json", broken)
+    one_line_error(res, "nothing could be graded", "byte-order mark")
+
+
+def test_a_huge_variant_cell_is_just_an_unknown_variant(tmp_path, key_dir, key):
+    path = sheet(tmp_path / "a.csv", key)
+    text = path.read_text().replace(",01,", "," + "7" * 5000 + ",", 1)
+    path.write_text(text)
+    res, rep = as_json(key_dir / "answers.json", path)
+    assert res.exit_code == 0, res.output
+    assert len(rep["students"]) == 3
+    assert any("is not in the key" in p["message"] for p in rep["problems"])
+
+
+def test_a_large_sheet_grades_in_linear_time_and_prints_a_page(tmp_path, key_dir, key):
+    """10⁵ rows: graded (the library is linear in the rows: no per-row search of the key), and
+    the terminal gets the group table cut at a few hundred rows, not a table per student."""
+    ids = list(key["variants"])
+    rows = [["student", "variant", *key["answers"]]]
+    for i in range(100_000):
+        v = ids[i % len(ids)]
+        rows.append([f"s{i}", v, *(repr(key["variants"][v][a]) for a in key["answers"])])
+    big = tmp_path / "big.csv"
+    with open(big, "w", newline="", encoding="utf-8") as f:
+        csv.writer(f).writerows(rows)
+    rep = grade(parse_key(key), [big])
+    assert len(rep.students) == 100_000 and not [p for p in rep.problems
+                                                 if "graded before" not in p.message]
+    res = invoke(key_dir / "answers.json", big)
+    assert res.exit_code == 0
+    assert len(res.stdout.splitlines()) < 1500 and "… and 99500 more students" in res.stdout

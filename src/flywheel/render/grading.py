@@ -42,13 +42,19 @@ def _pct(x: float | None) -> str:
     return "—" if x is None else f"{100 * x:.0f} %"
 
 
+DETAIL_STUDENTS = 60      # a class: per student a table of the answers; more: the group table only
+GROUP_ROWS = 500          # rows of the group table and problem lines shown on the terminal
+
+
 def print_report(r, console=None) -> None:
-    """Per student a table of the answers; then the group table, statistics and problems."""
+    """Per student a table of the answers (for a class of up to DETAIL_STUDENTS); then the
+    group table, statistics and problems, each cut at GROUP_ROWS lines with a note where the
+    whole report is (--out, --json): the terminal gets a readable page, not megabytes."""
     from rich.console import Console
     from rich.table import Table
 
     console = console or Console()
-    for s in r.students:
+    for s in (r.students if len(r.students) <= DETAIL_STUDENTS else ()):
         table = Table(title=f"{s.student} — variant {s.variant} — {s.passed}/{s.total} "
                             f"({_pct(s.score)})", title_justify="left")
         table.add_column("answer")
@@ -73,10 +79,13 @@ def print_report(r, console=None) -> None:
         group.add_column("variant")
         group.add_column("score", justify="right")
         group.add_column("wrong")
-        for s in r.students:
+        for s in r.students[:GROUP_ROWS]:
             group.add_row(s.student, s.variant, f"{s.passed}/{s.total} ({_pct(s.score)})",
                           ", ".join(s.wrong) or "—")
         console.print(group)
+        if len(r.students) > GROUP_ROWS:
+            console.print(f"… and {len(r.students) - GROUP_ROWS} more students (the whole report: "
+                          "--out REPORT.csv or --json)", highlight=False)
         per = Table(title="By answer", title_justify="left")
         per.add_column("answer")
         per.add_column("wrong", justify="right")
@@ -94,5 +103,8 @@ def print_report(r, console=None) -> None:
                       highlight=False)
     if r.problems:
         console.print(f"[yellow]{len(r.problems)} problem(s)[/] (skipped or not graded):")
-        for p in r.problems:
+        for p in r.problems[:GROUP_ROWS]:
             console.print(f"  {p}", highlight=False, markup=False, soft_wrap=True)
+        if len(r.problems) > GROUP_ROWS:
+            console.print(f"  … and {len(r.problems) - GROUP_ROWS} more (all of them: --json)",
+                          highlight=False)

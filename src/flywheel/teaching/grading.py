@@ -65,10 +65,19 @@ class Key:
         m = re.fullmatch(r"(?:variant[_ -]?)?0*(\d+)(?:\.toml)?", v, flags=re.IGNORECASE)
         if m is None:
             return None
-        for vid in self.variants:
-            if vid.isdigit() and int(vid) == int(m.group(1)):
-                return vid
-        return None
+        return self._by_number().get(m.group(1))
+
+    def _by_number(self) -> dict[str, str]:
+        """Variant number without leading zeros → the key's id (one dict per key: a sheet's
+        rows are looked up in constant time, and a cell of 5 000 digits is only a string)."""
+        cache = self.__dict__.get("_numbers")
+        if cache is None:
+            cache = {}
+            for vid in self.variants:
+                if vid.isdigit():
+                    cache.setdefault(vid.lstrip("0") or "0", vid)
+            object.__setattr__(self, "_numbers", cache)
+        return cache
 
 
 def _number(v) -> bool:
@@ -256,12 +265,61 @@ class Report:
         return [a for a, (w, _) in counts.items() if w == most], most
 
 
-def _read_text(path: Path) -> str:
-    data = path.read_bytes()
+MAX_SHEET_BYTES = 50_000_000       # a class's sheet is a few kB; 10⁵ rows of answers ≈ 8 MB
+MAX_ROWS = 200_000                 # per grading run, over all sheets
+# the encodings a student's spreadsheet or editor writes: Unicode, Russian Windows, DOS, Unix
+ENCODINGS = ("utf_8", "utf_16", "utf_32", "cp1251", "cp866", "koi8_r", "cp1252")
+_BOMS = ((b"\xef\xbb\xbf", "utf-8-sig"), (b"\xff\xfe\x00\x00", "utf-32"),
+         (b"\x00\x00\xfe\xff", "utf-32"), (b"\xff\xfe", "utf-16"), (b"\xfe\xff", "utf-16"))
+
+
+class SheetError(ValueError):
+    """A sheet that cannot be read as text: one problem row for the whole file."""
+
+
+def decode_sheet(data: bytes) -> tuple[str, str]:
+    """(text, encoding) of a sheet's bytes: a byte-order mark decides (UTF-8, UTF-16, UTF-32:
+    Excel's "Unicode text"), else strict UTF-8, else the most plausible of :data:`ENCODINGS`
+    by charset-normalizer (cp1251 of a Russian Excel, cp866 of DOS, koi8-r). Raises
+    SheetError for binary data (an image renamed .csv) or text in none of those encodings.
+
+    >>> decode_sheet("student;вариант".encode("cp1251"))
+    ('student;вариант', 'cp1251')
+    """
+    for bom, enc in _BOMS:
+        if data.startswith(bom):
+            try:
+                return data.decode(enc), enc.replace("-sig", "")
+            except UnicodeDecodeError:
+                raise SheetError(f"starts with a {enc} byte-order mark but is not {enc} text") \
+                    from None
     try:
-        return data.decode("utf-8-sig")
+        text = data.decode("utf-8")
     except UnicodeDecodeError:
-        return data.decode("cp1251")   # a Russian Excel's "CSV" (never fails: every byte maps)
+        pass
+    else:
+        if "\x00" in text:
+            raise SheetError("binary data, not a CSV text file")
+        return text, "utf-8"
+    from charset_normalizer import from_bytes
+
+    best = from_bytes(data, cp_isolation=list(ENCODINGS)).best()
+    if best is None:
+        raise SheetError("binary data, not a CSV text file (no text encoding fits: UTF-8, "
+                         "UTF-16, cp1251, cp866, koi8-r)")
+    text = str(best)
+    if "\x00" in text:
+        raise SheetError("binary data, not a CSV text file")
+    return text, best.encoding
+
+
+def _read_text(path: Path) -> str:
+    """The text of a sheet (see :func:`decode_sheet`); SheetError if too large or not text."""
+    size = path.stat().st_size
+    if size > MAX_SHEET_BYTES:
+        raise SheetError(f"{size / 1e6:.0f} MB is too large for an answer sheet (allowed: up to "
+                         f"{MAX_SHEET_BYTES / 1e6:.0f} MB)")
+    return decode_sheet(path.read_bytes())[0]
 
 
 def _delimiter(header: str) -> str:
@@ -300,8 +358,8 @@ def grade_sheet(key: Key, path, tolerance: float | None = None
         text = _read_text(path)
     except OSError as exc:
         return [], [Problem(name, None, f"cannot be read ({exc.strerror})")]
-    if "\x00" in text:
-        return [], [Problem(name, None, "binary data, not a CSV text file")]
+    except SheetError as exc:
+        return [], [Problem(name, None, str(exc))]
     lines = text.splitlines()
     if not lines or not lines[0].strip():
         return [], [Problem(name, None, "empty file (expected a header student,variant,…)")]
@@ -388,8 +446,19 @@ def grade(key: Key, paths, tolerance: float | None = None) -> Report:
         raise InputError(f"--tolerance: must be a positive number (got {tolerance!r})")
     files, problems = sheet_files(paths)
     students: list[StudentGrade] = []
-    for f in files:
+    for i, f in enumerate(files):
+        if len(students) >= MAX_ROWS:
+            problems += [Problem(str(g), None, f"not graded: the run has reached {MAX_ROWS} "
+                                               "student rows (grade the sheets in parts)")
+                         for g in files[i:]]
+            break
         s, p = grade_sheet(key, f, tolerance)
+        if len(students) + len(s) > MAX_ROWS:
+            keep = MAX_ROWS - len(students)
+            p.append(Problem(str(f), s[keep].row, f"this row and the {len(s) - keep - 1} after "
+                                                  f"it not graded: at most {MAX_ROWS} student "
+                                                  "rows per run (grade the sheets in parts)"))
+            s = s[:keep]
         students += s
         problems += p
     seen: dict[str, StudentGrade] = {}
