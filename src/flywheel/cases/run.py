@@ -14,6 +14,7 @@ from typing import Annotated, Literal, Union
 
 from pydantic import BaseModel, Field, Strict, model_validator
 
+from flywheel.errors import CaseFileError
 from flywheel.io.schema import FieldError, StrictModel, clean_loc, describe, load, loc_str, pick, validate
 from flywheel.cases.tabulated import TabulatedSpec
 
@@ -486,7 +487,13 @@ def _describe(err: dict) -> str:
 
 
 def parse_case(data: dict, source: str = "<case>") -> Case:
-    """Validate a parsed TOML document into a :class:`Case` or raise one CaseFileError line."""
+    """Validate a parsed TOML document into a :class:`Case` or raise one CaseFileError line
+    (a task-2 or aggregate case, or a variants template, is named as such)."""
+    from flywheel.cases import wrong_kind
+
+    other = wrong_kind(data, "run", source)
+    if other is not None:
+        raise CaseFileError(other)
     return validate(data, Case, source, lambda errs: _describe(pick(errs, _DYAD_TAGS)))
 
 
