@@ -7,11 +7,73 @@ from __future__ import annotations
 import typer
 
 app = typer.Typer(
-    add_completion=False,
+    add_completion=True,
     no_args_is_help=True,
     help="Dynamic analysis of machines: kinematics, reduction, flywheel sizing, true motion.",
     pretty_exceptions_enable=False,
 )
+
+
+class _Options:
+    """The global options, set by the root callback before a command runs."""
+
+    debug = False
+    quiet = False
+
+
+def _version(value: bool) -> None:
+    if value:
+        from flywheel import __version__
+
+        typer.echo(f"flywheel {__version__}")
+        raise typer.Exit()
+
+
+@app.callback()
+def _root(
+    version: bool = typer.Option(False, "--version", is_eager=True, callback=_version,
+                                 help="Print the version and exit."),
+    debug: bool = typer.Option(False, "--debug", help="On an internal error (a bug), print "
+                               "the Python traceback too."),
+    quiet: bool = typer.Option(False, "--quiet", "-q", help="Print nothing but errors (files "
+                               "are written as usual; --json still prints its JSON)."),
+) -> None:
+    """Dynamic analysis of machines: kinematics, reduction, flywheel sizing, true motion."""
+    _Options.debug = debug
+    _Options.quiet = quiet
+    if quiet:
+        import os
+        import sys
+
+        if "--json" not in sys.argv[1:]:
+            sys.stdout = open(os.devnull, "w", encoding="utf-8")
+        sys.stderr = _ErrorsOnly(sys.stderr)
+
+
+class _ErrorsOnly:
+    """stderr under --quiet: only lines that start with "error:" get through."""
+
+    def __init__(self, stream):
+        self._stream = stream
+        self._line = ""
+
+    def write(self, text: str) -> int:
+        self._line += text
+        *done, self._line = self._line.split("\n")
+        for ln in done:
+            if ln.startswith("error:"):
+                self._stream.write(ln + "\n")
+        return len(text)
+
+    def flush(self) -> None:
+        self._stream.flush()
+
+    def isatty(self) -> bool:
+        return False
+
+    def __getattr__(self, name):
+        return getattr(self._stream, name)
+
 
 from flywheel.cli.aggregate import aggregate_command  # noqa: E402
 from flywheel.cli.run import check_command, run_command, schema_command  # noqa: E402
@@ -50,11 +112,28 @@ def main() -> None:
     signal.signal(signal.SIGTERM, _stop)
     try:
         app()
+    except BrokenPipeError:                   # `flywheel grade … | head`: quiet
+        import os
+
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+        sys.exit(141)
     except Stopped as exc:
         signal.signal(signal.SIGINT, signal.SIG_IGN)     # a second Ctrl-C: no traceback
         name = "interrupted (Ctrl-C)" if exc.signum == signal.SIGINT else "terminated (SIGTERM)"
         sys.stderr.write(f"error: {name}\n")
         sys.exit(128 + exc.signum)
+    except Exception as exc:                  # not the user's input: a bug of flywheel
+        from flywheel import __version__
+
+        if _Options.debug:
+            import traceback
+
+            traceback.print_exc()
+        what = f"{type(exc).__name__}: {exc}".splitlines()[0][:300]
+        sys.stderr.write(f"error: internal error in flywheel {__version__} (a bug, not your "
+                         f"input): {what}; please report it with the command and its input "
+                         f"files{'' if _Options.debug else ' (--debug shows the traceback)'}\n")
+        sys.exit(1)
 
 
 if __name__ == "__main__":  # pragma: no cover
