@@ -156,10 +156,24 @@ def _rrr(d: RRR, phi: np.ndarray, points: dict, links: dict) -> None:
     what = f"dyad {d.name} (RRR, links {d.link_a}–{d.link_b})"
     a, b = d.length_a, d.length_b
     def need():
+        lo, hi = abs(a - b), a + b
+        tol = 1e-9 * hi
+        if D.max() == 0:
+            return (f"{d.point_a} and {d.point_b} coincide: the group has no base (move the "
+                    f"pivot)")
+        if abs(D.min() - lo) <= tol or abs(D.max() - hi) <= tol:
+            edge = f"|{a:.6g} − {b:.6g}| = {lo:.6g}" if abs(D.min() - lo) <= tol else \
+                f"{a:.6g} + {b:.6g} = {hi:.6g}"
+            return (f"the distance {d.point_a}–{d.point_b} reaches {edge} m: the links lie in "
+                    f"line (a dead position; change a length so that the distance stays "
+                    f"strictly between {lo:.6g} and {hi:.6g} m)")
         return (f"the distance {d.point_a}–{d.point_b} ranges over {D.min():.6g} … {D.max():.6g} "
-                f"m, the links ({a:.6g} and {b:.6g} m) reach only {abs(a - b):.6g} … {a + b:.6g} m")
+                f"m, the links ({a:.6g} and {b:.6g} m) reach only {lo:.6g} … {hi:.6g} m")
 
     _fail_where(D == 0, phi, what, d.name, need)
+    edge = 1e-9 * (a + b)                   # in line within round-off: a dead position
+    _fail_where((np.abs(D - abs(a - b)) <= edge) | (np.abs(D - (a + b)) <= edge), phi,
+                f"{what} (links in line: a dead position)", d.name, need)
     p = (a**2 - b**2 + D**2) / (2 * D)
     h2 = a**2 - p**2
     _fail_where(h2 < 0, phi, what, d.name, need)
@@ -194,6 +208,15 @@ def _rpr(d: RPR, phi: np.ndarray, points: dict, links: dict) -> None:
                 lambda: f"the slide line's offset ({abs(d.offset):.6g} m) must be smaller than "
                         f"the distance {d.pivot}–{d.origin}, which falls to "
                         f"{np.sqrt(rho2.min()):.6g} m")
+    through = _passes_through(dr, d1, d2, phi, d.offset)
+    if np.any(through):
+        deg = np.degrees(phi[np.argmax(through)])
+        err = AssemblyError(f"{what} has a singular position near crank angle φ = {deg:.2f}°: "
+                            f"{d.origin} passes through the rocker's pivot {d.pivot}, where the "
+                            f"rocker's direction is undefined (move {d.pivot} off the path of "
+                            f"{d.origin}, or change the slide line's offset)")
+        err.dyad = d.name
+        raise err
     s = d.branch * np.sqrt(disc)
     theta = np.arctan2(dr[:, 1], dr[:, 0]) - np.arctan2(d.offset, s)
     u = np.stack([np.cos(theta), np.sin(theta)], axis=1)
@@ -203,6 +226,28 @@ def _rpr(d: RPR, phi: np.ndarray, points: dict, links: dict) -> None:
     e = (_dot(d2, nrm) - 2 * s1 * w + d.offset * w**2) / s
     links[d.rocker] = LinkMotion(theta, w, e, d.pivot)
     links[d.slider] = LinkMotion(theta, w, e, d.origin)
+
+
+def _passes_through(dr: np.ndarray, d1: np.ndarray, d2: np.ndarray, phi: np.ndarray,
+                    offset: float, rtol: float = 1e-6) -> np.ndarray:
+    """Where a slotted link's block passes (within ``rtol`` of the largest distance) through
+    the line's closest approach to the pivot between grid nodes: the distance |A − P| at its
+    nearest, estimated from each node by the second-order Taylor expansion A + t·A′ + t²/2·A″
+    over half a step either side (t from the tangent's closest approach), comes
+    within rtol of |offset| (the slide line then sweeps through the pivot and θ jumps by
+    180° while the analogues stay finite: a singular position, not a motion)."""
+    if phi.size < 2:
+        return np.zeros(phi.size, bool)
+    h = np.abs(np.diff(phi))
+    half = 0.5 * np.maximum(np.concatenate([h, h[-1:]]), np.concatenate([h[:1], h]))
+    vv = _dot(d1, d1)
+    with np.errstate(invalid="ignore", divide="ignore"):
+        t = np.where(vv > 0, -_dot(dr, d1) / vv, 0.0)
+    t = np.clip(t, -half, half)
+    near = dr + t[:, None] * d1 + 0.5 * (t**2)[:, None] * d2
+    closest = np.sqrt(_dot(near, near))
+    scale = float(np.sqrt(_dot(dr, dr)).max()) or 1.0
+    return closest - abs(offset) <= rtol * scale
 
 
 def _link_point(p: LinkPoint, points: dict, links: dict) -> None:
