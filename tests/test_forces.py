@@ -19,6 +19,7 @@ Layers:
 """
 from __future__ import annotations
 
+import functools
 import math
 from dataclasses import replace
 from pathlib import Path
@@ -303,12 +304,18 @@ def case_setup(name: str) -> dict:
             "M_D": s["balancing_moment"], "J_I": J_I}
 
 
-@pytest.fixture(scope="module", params=["compressor", "fourbar", "slotted_link"])
-def bundled(request):
-    st = case_setup(request.param)
-    st["name"] = request.param
+@functools.cache
+def analysed(name: str) -> dict:
+    """case_setup with the force analysis of the true motion, once per case."""
+    st = case_setup(name)
+    st["name"] = name
     st["fa"] = fo.kinetostatics(st["mech"], st["kin"], st["omega"], st["eps"], st["loads"])
     return st
+
+
+@pytest.fixture(params=["compressor", "fourbar", "slotted_link"])
+def bundled(request):
+    return analysed(request.param)
 
 
 PAIRS = {   # each bundled mechanism's pairs, written out by hand from its case file
@@ -382,6 +389,48 @@ def test_four_bar_with_a_couple_and_a_coupler_force_against_newton_euler():
                                    rtol=0, atol=1e-12 * 100)
 
 
+def test_six_bar_with_a_group_on_a_shared_pin_against_newton_euler():
+    """The four-bar with a slider-crank group hung on its joint B (a rod 4 from B to a slider
+    5 on the horizontal y = 0.45 m): B is shared by the coupler 2, the rocker 3 and the rod 4;
+    the rod's reaction goes to the coupler (carriers: an RRR's joint is carried by link_a).
+    Every reaction and M_y against the Newton–Euler matrix, true-looking motion (ω and ε
+    varying), and the three balancing moments."""
+    case = load_case(CASES / "fourbar.toml")
+    base = to_mechanism(case)
+    mech = replace(base,
+                   dyads=base.dyads + (RRP("E", "B", "E", "4", 0.3, "5", Guide((0.0, 0.45), 0.0)),),
+                   points=base.points + (LinkPoint("S4", "4", "B", "E", 0.5),))
+    assert fo.carriers(mech)["B"] == "2"
+    phi = np.radians([0.0, 50.0, 140.0, 260.0])
+    kin = solve(mech, phi)
+    w = 12.0 + np.sin(phi)
+    e = 5.0 * np.cos(phi)
+    masses = dict(case.links, **{"4": fo.LinkMass(1.0, 0.01, "S4"), "5": fo.LinkMass(2.0, 0.0, "E")})
+    F = np.array([-40.0, 0.0])
+    loads = fo.Loads(masses, (fo.PointForce("work", "5", "E", F),), (fo.Couple("c", "4", 2.5),),
+                     (0.0, -G), 0.05)
+    fa = fo.kinetostatics(mech, kin, w, e, loads)
+    pairs = PAIRS["fourbar"] + [("R", "B", "2", "4"), ("R", "E", "4", "5"),
+                                ("P", "E", "0", "5", (0.0, 1.0))]
+    assert len(fa.joints) == len(pairs)
+    for i in range(phi.size):
+        applied = applied_loads(kin, i, w[i], e[i], masses, [("5", "E", F)], (0.0, -G), 0.05, "1", 1)
+        applied["4"][2] += 2.5
+        sol, My = newton_euler(kin, i, ["1", "2", "3", "4", "5"], pairs, applied, "1")
+        scale = max(np.abs(v).max() for v in sol.values())
+        assert fa.balancing_moment[i] == pytest.approx(My, abs=1e-10 * scale)
+        for p in pairs:
+            if p[0] == "R":
+                assert fa.reaction(p[2], p[3]).vector[i] == pytest.approx(sol[(p[2], p[3])],
+                                                                          abs=1e-10 * scale), p
+            else:
+                sl = fa.slides["E:0->5"]
+                assert [sl.normal[i], sl.couple[i]] == pytest.approx(sol[("0", "5")], abs=1e-10 * scale)
+    for other in (fo.zhukovsky_moment, fo.power_balance_moment):
+        np.testing.assert_allclose(other(mech, kin, w, e, loads), fa.balancing_moment, rtol=0,
+                                   atol=1e-12 * float(np.max(np.abs(fa.balancing_moment))))
+
+
 # -- (d) three balancing moments, and the closure with the dynamics --------------------------
 
 def test_three_balancing_moments_agree_at_every_node(bundled):
@@ -427,9 +476,9 @@ def test_closure_fails_without_the_first_group_couple(bundled):
 def test_cw_crank_moment_is_in_the_direction_of_rotation():
     """The compressor's crank turns clockwise: M_y = +M_D > 0 drives it, so its ccw value is
     negative."""
-    st = case_setup("compressor")
+    st = analysed("compressor")
     assert st["mech"].crank.direction == -1
-    fa = fo.kinetostatics(st["mech"], st["kin"], st["omega"], st["eps"], st["loads"])
+    fa = st["fa"]
     assert st["M_D"] > 0
     assert np.all(fa.balancing_moment > 0) and np.all(fa.balancing_moment_ccw < 0)
 
@@ -486,12 +535,11 @@ def test_reaction_keys_and_reversal(bundled):
         fa.reaction("1", "nonexistent")
 
 
-def test_slotted_link_block_force_is_normal_to_the_rocker(bundled):
+def test_slotted_link_block_force_is_normal_to_the_rocker():
     """The rocker's force on the block is normal to the slot and its line of action passes
     where the block's moment balance puts it: Q·h = C."""
-    if bundled["name"] != "slotted_link":
-        pytest.skip("slotted link only")
-    fa, kin = bundled["fa"], bundled["kin"]
+    st = analysed("slotted_link")
+    fa, kin = st["fa"], st["kin"]
     s = fa.slides["A:3->2"]
     th = kin.links["3"].theta
     np.testing.assert_allclose(s.n[:, 0] * np.cos(th) + s.n[:, 1] * np.sin(th), 0, atol=1e-15)
@@ -499,12 +547,10 @@ def test_slotted_link_block_force_is_normal_to_the_rocker(bundled):
     np.testing.assert_allclose(s.offset[ok] * s.normal[ok], s.couple[ok], rtol=1e-12)
 
 
-def test_compressor_textbook_quantities_are_consistent(bundled):
+def test_compressor_textbook_quantities_are_consistent():
     """For each slider-crank group of the compressor (rods with mass): the turning moments of
     the two rods plus the crank's own loads give M_y, and the side thrust is the guide force."""
-    if bundled["name"] != "compressor":
-        pytest.skip("compressor only")
-    fa = bundled["fa"]
+    fa = analysed("compressor")["fa"]
     assert set(fa.slider_crank) == {"3", "5"}
     T = sum(sc.turning_moment for sc in fa.slider_crank.values())
     # the crank carries only the first-group couple: M_y·dir + T·dir + couple = 0 (ccw)
@@ -571,6 +617,9 @@ def test_bad_names_and_shapes():
                          fo.Loads(forces=(fo.PointForce("P", "3", "Z", np.zeros(2)),)))
     with pytest.raises(InputError, match="omega has shape"):
         fo.kinetostatics(mech, kin, np.ones(3), 0.0, fo.Loads(masses))
+    zero = replace(mech, crank=replace(mech.crank, name="0"))
+    with pytest.raises(InputError, match="a link is named '0', the name of the frame"):
+        fo.kinetostatics(zero, solve(zero, np.radians([10.0])), 1.0, 0.0, fo.Loads())
 
 
 def test_case_without_masses_gives_reactions_of_the_given_forces_alone():

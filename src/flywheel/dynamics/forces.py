@@ -397,6 +397,9 @@ def _load_list(mech: Mechanism, kin: Kinematics, w: np.ndarray, e: np.ndarray, l
     (link, M, on_frame): given forces and couples, weights, inertia forces and couples, the
     first-group couple. Weights and inertia loads have no reaction on the frame."""
     _check_names(kin, loads)
+    if FRAME in kin.links:
+        raise InputError(f"force analysis: a link is named {FRAME!r}, the name of the frame in "
+                         f"the reactions (allowed: any other name)")
     n = kin.phi.size
     inertia = _inertia(mech, kin, w, e, loads)
     g = np.asarray(loads.gravity, float)
@@ -456,18 +459,16 @@ class _Solver:
         r = Reaction(point, by, on, Rx, Ry)
         self.joints[r.key] = r
 
-    def hand_back(self, point: str, on: str, Rx, Ry, couple=None) -> None:
-        """The carrier of ``point`` exerted (Rx, Ry) [+ couple] on link ``on``: record it and
-        load the carrier with the reverse."""
+    def hand_back(self, point: str, on: str, Rx, Ry) -> None:
+        """The carrier of ``point`` exerted (Rx, Ry) on link ``on`` at the point (a revolute
+        pair): record it and load the carrier with the reverse."""
         by = self.carrier[point]
         self.joint(point, by, on, Rx, Ry)
         x, y = _xy(self.kin, point)
         if by == FRAME:
-            self.frame_forces.append((x, y, Rx, Ry, couple))
+            self.frame_forces.append((x, y, Rx, Ry, None))
         else:
             self._link(by).force(-Rx, -Ry, x, y)
-            if couple is not None:
-                self._link(by).couple(-couple)
 
     # RRR ----------------------------------------------------------------------------------
     def rrr(self, d: RRR) -> None:
