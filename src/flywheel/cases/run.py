@@ -12,7 +12,7 @@ import math
 import typing
 from typing import Annotated, Literal, Union
 
-from pydantic import BaseModel, Field, Strict, model_validator
+from pydantic import AfterValidator, BaseModel, Field, Strict, model_validator
 
 from flywheel.errors import CaseFileError
 from flywheel.io.schema import FieldError, StrictModel, clean_loc, describe, load, loc_str, pick, validate
@@ -21,8 +21,33 @@ from flywheel.cases.tabulated import TabulatedSpec
 Pos = Annotated[float, Field(gt=0)]
 NonNeg = Annotated[float, Field(ge=0)]
 Name = Annotated[str, Field(min_length=1)]
+
+
+def _within(lo: float, hi: float, unit: str):
+    """A validator refusing values outside [lo, hi] with the range and unit in the message:
+    numbers are checked where they enter, in a physically meaningful range, so nothing
+    overflows later in the arithmetic (issue 17)."""
+    def check(v):
+        vals = v if isinstance(v, tuple) else (v,)
+        for x in vals:
+            if not lo <= x <= hi:
+                u = f" {unit}" if unit else ""
+                raise ValueError(f"{x:g}{u} is out of range (allowed: {lo:g} … {hi:g}{u})")
+        return v
+    return AfterValidator(check)
+
+
+# the physically meaningful ranges (SI): far wider than any machine, narrow enough that no
+# product of them overflows double precision
+Length = Annotated[float, Field(gt=0), _within(1e-6, 1e3, "m")]
+Coord = Annotated[float, _within(-1e3, 1e3, "m")]
+Angle = Annotated[float, _within(-36000.0, 36000.0, "deg")]
+Mass = Annotated[float, Field(gt=0), _within(0.0, 1e6, "kg")]
+Inertia = Annotated[float, Field(ge=0), _within(0.0, 1e6, "kg·m²")]
+Force = Annotated[float, _within(-1e9, 1e9, "N")]
+Moment = Annotated[float, _within(-1e9, 1e9, "N·m")]
 # strict numbers (no true, no "0.1"), but a TOML array is a fine tuple
-XY = Annotated[tuple[float, float], Strict(False)]
+XY = Annotated[tuple[float, float], Strict(False), _within(-1e3, 1e3, "m")]
 
 
 
@@ -30,13 +55,16 @@ XY = Annotated[tuple[float, float], Strict(False)]
 class Machine(StrictModel):
     """Operating data of the machine."""
 
-    speed_rps: Pos | None = Field(None, description="crank speed n1 [rev/s]")
-    speed_rpm: Pos | None = Field(None, description="crank speed [rev/min] (instead of speed_rps)")
+    speed_rps: Annotated[float, Field(gt=0), _within(1e-3, 1e4, "rev/s")] | None = Field(
+        None, description="crank speed n1 [rev/s]")
+    speed_rpm: Annotated[float, Field(gt=0), _within(0.06, 6e5, "rpm")] | None = Field(
+        None, description="crank speed [rev/min] (instead of speed_rps)")
     delta: float = Field(gt=0, lt=1, description="coefficient of speed fluctuation δ, 0 < δ < 1")
     balance: Literal["driving", "resistance"] = Field(
         "driving", description="the unknown constant moment found from the cycle balance")
-    gravity: XY = Field((0.0, -9.81), description="gravity vector g [m/s²]")
-    first_group: dict[str, NonNeg] = Field(
+    gravity: Annotated[tuple[float, float], Strict(False), _within(-1e3, 1e3, "m/s²")] = Field(
+        (0.0, -9.81), description="gravity vector g [m/s²]")
+    first_group: dict[str, Annotated[float, Field(ge=0), _within(0.0, 1e9, "kg·m²")]] = Field(
         default_factory=dict,
         description="moments of inertia already on the crank shaft, reduced to it [kg·m²]")
 
@@ -56,9 +84,9 @@ class Machine(StrictModel):
 class Design(StrictModel):
     """Optional design rules that derive lengths as seed 000 does."""
 
-    mean_piston_speed: Pos | None = Field(
+    mean_piston_speed: Annotated[float, Field(gt=0), _within(1e-4, 1e3, "m/s")] | None = Field(
         None, description="V_ср [m/s]: crank length l1 = V_ср/(4·n1) where crank.length is omitted")
-    rod_to_crank: Pos | None = Field(
+    rod_to_crank: Annotated[float, Field(gt=0), _within(1e-3, 1e3, "")] | None = Field(
         None, description="k: rod length = k·l1 for every RRP dyad whose rod_length is omitted")
 
 
@@ -69,8 +97,8 @@ class CrankSpec(StrictModel):
     pivot: Name = Field("O", description="name of the fixed pivot")
     pivot_at: XY = Field((0.0, 0.0), description="pivot position [m]")
     tip: Name = Field("A", description="name of the crank pin")
-    length: Pos | None = Field(None, description="crank length l1 [m]")
-    start_angle_deg: float = Field(0.0, description="crank angle from +x at φ = 0 [deg]")
+    length: Length | None = Field(None, description="crank length l1 [m]")
+    start_angle_deg: Angle = Field(0.0, description="crank angle from +x at φ = 0 [deg]")
     rotation: Literal["cw", "ccw"] = Field("ccw", description="direction of rotation")
 
 
@@ -78,8 +106,8 @@ class GuideSpec(StrictModel):
     """A fixed straight guide."""
 
     through: XY = Field((0.0, 0.0), description="a point of the guide line [m]")
-    angle_deg: float = Field(description="direction of the guide from +x [deg]")
-    offset: float = Field(0.0, description="shift along the guide's left normal [m]")
+    angle_deg: Angle = Field(description="direction of the guide from +x [deg]")
+    offset: Coord = Field(0.0, description="shift along the guide's left normal [m]")
 
 
 Branch = Literal["+", "-"]
@@ -93,7 +121,7 @@ class RRPSpec(StrictModel):
     from_: Name = Field(alias="from", description="known point the rod starts from")
     joint: Name = Field(description="name of the rod–slider joint (new point)")
     rod: Name = Field(description="link name of the rod")
-    rod_length: Pos | None = Field(None, description="rod length [m]")
+    rod_length: Length | None = Field(None, description="rod length [m]")
     slider: Name = Field(description="link name of the slider")
     guide: GuideSpec
     branch: Branch = Field("+", description="assembly: joint ahead (+) of or behind (−) the "
@@ -107,10 +135,10 @@ class RRRSpec(StrictModel):
     name: str | None = None
     from_: Name = Field(alias="from", description="known point of the first link")
     link_from: Name = Field(description="link name from `from` to the joint")
-    length_from: Pos = Field(description="its length [m]")
+    length_from: Length = Field(description="its length [m]")
     to: Name = Field(description="known point of the second link")
     link_to: Name = Field(description="link name from `to` to the joint")
-    length_to: Pos = Field(description="its length [m]")
+    length_to: Length = Field(description="its length [m]")
     joint: Name = Field(description="name of the middle joint (new point)")
     branch: Branch = Field("+", description="joint left (+) or right (−) of the line from → to")
 
@@ -124,7 +152,7 @@ class RPRSpec(StrictModel):
     pivot: Name = Field(description="known point the rocker turns about")
     rocker: Name = Field(description="link name of the rocker")
     slider: Name = Field(description="link name of the block")
-    offset: float = Field(0.0, description="slide line offset from the pivot [m]")
+    offset: Coord = Field(0.0, description="slide line offset from the pivot [m]")
     branch: Branch = Field("+", description="block on the rocker's positive (+) side of the pivot")
 
 
@@ -137,10 +165,10 @@ class PointSpec(StrictModel):
     link: Name
     from_: Name = Field(alias="from", description="a point of the link")
     to: str | None = Field(None, description="another point of the link")
-    fraction: float = Field(0.0, description="share of the way from → to")
-    across: float = Field(0.0, description="shift along the left normal of from → to [m]")
-    distance: NonNeg | None = Field(None, description="distance from `from` [m]")
-    angle_deg: float = Field(0.0, description="angle to the link's direction [deg]")
+    fraction: Annotated[float, _within(-1e3, 1e3, "")] = Field(0.0, description="share of the way from → to")
+    across: Coord = Field(0.0, description="shift along the left normal of from → to [m]")
+    distance: Annotated[float, Field(ge=0), _within(0.0, 1e3, "m")] | None = Field(None, description="distance from `from` [m]")
+    angle_deg: Angle = Field(0.0, description="angle to the link's direction [deg]")
 
     @model_validator(mode="after")
     def _one_way(self):
@@ -156,8 +184,8 @@ class PointSpec(StrictModel):
 class LinkSpec(StrictModel):
     """Mass data of a link."""
 
-    mass: float = Field(0.0, gt=0, description="mass [kg], > 0 (leave it out for a massless link)")
-    J_S: NonNeg = Field(0.0, description="moment of inertia about the centroid [kg·m²]")
+    mass: Mass = Field(0.0, description="mass [kg], > 0 (leave it out for a massless link)")
+    J_S: Inertia = Field(0.0, description="moment of inertia about the centroid [kg·m²]")
     centroid: str | None = Field(None, description="point where the mass sits")
 
     @model_validator(mode="after")
@@ -172,8 +200,8 @@ class CylinderSpec(StrictModel):
 
     name: Name
     piston: Name = Field(description="slider link of an RRP dyad")
-    bore: Pos = Field(description="bore d [m]")
-    p_max: Pos = Field(description="maximum (gauge) pressure [Pa]")
+    bore: Annotated[float, Field(gt=0), _within(1e-4, 10.0, "m")] = Field(description="bore d [m]")
+    p_max: Annotated[float, Field(gt=0), _within(1.0, 1e10, "Pa")] = Field(description="maximum (gauge) pressure [Pa]")
     head: Literal["outer", "inner"] = Field(
         "outer", description="the dead centre at the cylinder head: farther from (outer) or "
                              "nearer to (inner) the crank axis")
@@ -203,7 +231,7 @@ class ForceSpec(StrictModel):
 
     name: Name
     slider: Name = Field(description="slider link of an RRP dyad")
-    magnitude: float = Field(description="force [N] (> 0 resists the motion)")
+    magnitude: Force = Field(description="force [N] (> 0 resists the motion)")
     reference: Literal["outer", "inner"] = Field("outer", description="dead centre s is measured from")
     s_range: XY = Field((0.0, 1.0), description="relative travel where the force acts, 0 … 1")
     stroke: Literal["towards", "away", "both"] = Field(
@@ -215,7 +243,7 @@ class CoupleSpec(StrictModel):
 
     name: Name
     link: Name
-    moment: float
+    moment: Moment
 
 
 MATERIALS = {  # density [kg/m³], allowable hoop stress of a rotating rim [Pa]
@@ -230,12 +258,12 @@ class FlywheelSpec(StrictModel):
     material: Literal["steel", "cast-iron"] = Field(
         "steel", description="sets density (7800 / 7200 kg/m³) and allowable rim stress "
                              "(20 / 7 MPa) unless given")
-    density: Pos | None = Field(None, description="material density ρ [kg/m³]")
-    allowable_stress: Pos | None = Field(
+    density: Annotated[float, Field(gt=0), _within(1.0, 1e5, "kg/m³")] | None = Field(None, description="material density ρ [kg/m³]")
+    allowable_stress: Annotated[float, Field(gt=0), _within(1e3, 1e11, "Pa")] | None = Field(
         None, description="allowable hoop stress of the rim [Pa]: rim speed limit √(σ/ρ)")
-    speed_ratio: Pos = Field(
+    speed_ratio: Annotated[float, Field(gt=0), _within(1e-3, 1e3, "")] = Field(
         1.0, description="i = flywheel shaft speed / crank speed: the flywheel needs J_M/i²")
-    width_ratio: Pos = Field(0.2, description="b/D")
+    width_ratio: Annotated[float, Field(gt=0), _within(1e-3, 10.0, "")] = Field(0.2, description="b/D")
     inner_ratio: float = Field(0.8, gt=0, lt=1, description="rim: D_inner/D")
     rim_share: float = Field(1.0, gt=0, le=1, description="share of J_M carried by the rim "
                                                           "(hub and spokes carry the rest)")
@@ -258,9 +286,9 @@ class MotorSpec(StrictModel):
     """Linear static characteristic of the motor, reduced to the crank: M_Д = M_п·(1 − ω/ω_x)
     (the course's model of an asynchronous motor). Used by `flywheel run --transients`."""
 
-    no_load_speed_rpm: Pos = Field(description="ω_x: synchronous (no-load) speed reduced to the "
+    no_load_speed_rpm: Annotated[float, Field(gt=0), _within(0.06, 6e5, "rpm")] = Field(description="ω_x: synchronous (no-load) speed reduced to the "
                                                "crank [rev/min]; must exceed the mean speed")
-    starting_torque: Pos | None = Field(
+    starting_torque: Annotated[float, Field(gt=0), _within(0.0, 1e9, "N·m")] | None = Field(
         None, description="M_п reduced to the crank [N·m]; default: the value whose mean torque "
                           "at the mean speed equals the driving moment, M_п = M_D/(1 − ω_m/ω_x)")
 
@@ -417,6 +445,13 @@ def _check_references(case: Case) -> None:
         if c.piston not in sliders:
             raise FieldError(("cylinders", i, "piston"), f"{c.piston!r} is not the slider of an RRP dyad "
                                                         f"(sliders: {', '.join(sorted(sliders)) or 'none'})")
+    for i, c in enumerate(case.cylinders):
+        for key in ("towards_head", "away_from_head"):
+            low = min(getattr(c, key))
+            if low * c.p_max < -ATM:
+                raise FieldError(("cylinders", i, key), f"p/p_max = {low:g} gives "
+                                 f"{low * c.p_max / 1e6:.4g} MPa gauge, below absolute vacuum "
+                                 f"(allowed: p ≥ −0.101325 MPa gauge)")
     for i, f in enumerate(case.forces):
         if f.slider not in sliders:
             raise FieldError(("forces", i, "slider"), f"{f.slider!r} is not the slider of an RRP dyad")
@@ -434,6 +469,42 @@ def _check_references(case: Case) -> None:
         if n in seen:
             raise FieldError(loc, f"load name {n!r} is used twice")
         seen.add(n)
+
+
+# -- plausibility: allowed, but a careful engineer would look twice --------------------------------
+
+ATM = 101_325.0          # Pa: a gauge pressure below −1 atm is below absolute vacuum
+# δ of real machines (Артоболевский, «Теория механизмов и машин», table of δ: crushers and
+# presses 1/5 … 1/20, pumps 1/5 … 1/30, machine tools 1/20 … 1/50, engines 1/80 … 1/150,
+# generators 1/200 … 1/300)
+DELTA_USUAL = (1 / 300, 1 / 5)
+
+
+def plausibility_warnings(case: Case) -> list[str]:
+    """Warnings (one line each, with the value and the usual range) for values that are
+    allowed but unusual enough to suspect a slip: a crank of less than 5 mm (units?), δ outside
+    1/300 … 1/5, a speed outside 1 … 20 000 rpm, negative (vacuum) gauge pressures in an
+    indicator table. Values that cannot be right are refused by the schema instead."""
+    out = []
+    if case.crank is not None and case.crank_length < 5e-3:
+        out.append(f"crank.length: {case.crank_length:g} m is unusually short (cranks: 5 mm … "
+                   "2 m); lengths are in metres")
+    d = case.machine.delta
+    if not DELTA_USUAL[0] <= d <= DELTA_USUAL[1]:
+        out.append(f"machine.delta: δ = {d:g} is outside the usual 1/300 … 1/5 "
+                   f"({DELTA_USUAL[0]:.4f} … {DELTA_USUAL[1]:.1f}; Артоболевский's table: "
+                   "presses 1/5 … 1/20, engines 1/80 … 1/150, generators 1/200 … 1/300)")
+    rpm = case.machine.omega_mean * 30 / math.pi
+    if not 1.0 <= rpm <= 20_000.0:
+        out.append(f"machine: the crank speed {rpm:.6g} rpm is outside the usual 1 … 20 000 rpm")
+    for i, c in enumerate(case.cylinders):
+        for key in ("towards_head", "away_from_head"):
+            low = min(getattr(c, key))
+            if low < 0:
+                out.append(f"cylinders[{i}].{key}: p/p_max down to {low:g} "
+                           f"({low * c.p_max / 1e6:.4g} MPa gauge, a vacuum): the tables are "
+                           "gauge pressures relative to p_max; check the sign")
+    return out
 
 
 # -- errors ---------------------------------------------------------------------------------
