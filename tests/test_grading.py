@@ -278,3 +278,71 @@ def test_a_large_sheet_grades_in_linear_time_and_prints_a_page(tmp_path, key_dir
     res = invoke(key_dir / "answers.json", big)
     assert res.exit_code == 0
     assert len(res.stdout.splitlines()) < 1500 and "… and 99500 more students" in res.stdout
+
+
+def test_gradebook_one_row_per_student_in_sheet_order(tmp_path, key_dir, key):
+    def wrong_first(i, ans):
+        if i == 1:
+            ans[key["answers"][0]] *= 1.5
+    path = sheet(tmp_path / "a.csv", key, change=wrong_first)
+    book = tmp_path / "book.csv"
+    res = invoke(key_dir / "answers.json", path, "--gradebook", book)
+    assert res.exit_code == 0, res.output
+    rows = list(csv.reader(book.open(encoding="utf-8")))
+    first = key["answers"][0]
+    assert rows[0][:4] == ["student", "variant", f"{first} verdict", f"{first} error"]
+    assert rows[0][-3:] == ["answers passed", "total", "score"]
+    assert [r[0] for r in rows[1:]] == ["ivanov", "petrova", "sidorov", "kim"]
+    assert rows[2][2] == "FAIL" and float(rows[2][3]) == pytest.approx(0.5)
+    assert rows[1][2] == "pass" and float(rows[1][-1]) == 1.0
+    n = len(key["answers"])
+    assert rows[2][-3:] == [str(n - 1), str(n), f"{(n - 1) / n:.4g}"]
+
+
+def test_excel_ru_gradebook_and_report_open_in_a_russian_excel(tmp_path, key_dir, key):
+    path = sheet(tmp_path / "a.csv", key, names=NAMES_RU,
+                 change=lambda i, ans: ans.update({key["answers"][0]: ans[key["answers"][0]] * 1.25}))
+    book, out = tmp_path / "book.csv", tmp_path / "out.csv"
+    res = invoke(key_dir / "answers.json", path, "--gradebook", book, "--out", out,
+                 "--csv", "excel-ru", "--lang", "ru")
+    assert res.exit_code == 0, res.output
+    for f in (book, out):
+        raw = f.read_bytes()
+        assert raw.startswith(b"\xef\xbb\xbf")                     # UTF-8 BOM
+        rows = list(csv.reader(raw.decode("utf-8-sig").splitlines(), delimiter=";"))
+        assert len({len(r) for r in rows}) == 1                    # every row splits alike
+    rows = list(csv.reader(book.read_bytes().decode("utf-8-sig").splitlines(), delimiter=";"))
+    assert rows[0][:2] == ["студент", "вариант"] and rows[1][0] == NAMES_RU[0]
+    assert rows[1][2] == "НЕВЕРНО" and rows[1][3] == "0,25"       # a decimal comma
+    one_line_error(invoke(key_dir / "answers.json", "--csv", "excel", path),
+                   "--csv: 'excel' is not a CSV dialect (allowed: plain, excel-ru)")
+
+
+def test_summary_prints_the_class_summary_only(tmp_path, key_dir, key):
+    path = sheet(tmp_path / "a.csv", key)
+    with open(path, "a", encoding="utf-8") as f:                  # one who handed in nothing
+        f.write("nobody," + list(key["variants"])[0] + "," * len(key["answers"]) + "\n")
+    res = invoke(key_dir / "answers.json", path, "--summary")
+    assert res.exit_code == 0, res.output
+    assert "Class summary: 5 graded" in res.stdout
+    assert "Handed in nothing (1): nobody" in res.stdout
+    assert "ivanov" not in res.stdout                              # no per-student tables
+    res = invoke(key_dir / "answers.json", path, "--summary", "--lang", "ru")
+    assert "Итоги группы: проверено 5" in res.stdout and "Не сдали ответов (1): nobody" in res.stdout
+    _, rep = as_json(key_dir / "answers.json", path)
+    assert rep["summary"]["handed_in_nothing"] == ["nobody"]
+    assert sum(rep["summary"]["score_distribution"].values()) == 5
+
+
+def test_a_student_twice_the_later_row_counts(tmp_path, key_dir, key):
+    a = sheet(tmp_path / "a.csv", key)
+    b = sheet(tmp_path / "b.csv", key, names=("ivanov", "x1", "x2", "x3"),
+              change=lambda i, ans: ans.update({k: v * 2 for k, v in ans.items()
+                                                if isinstance(v, float)}) if i == 0 else None)
+    res, rep = as_json(key_dir / "answers.json", a, b)
+    names = [s["student"] for s in rep["students"]]
+    assert names.count("ivanov") == 1 and names[0] == "ivanov"     # in the first's place …
+    iv = rep["students"][0]
+    assert iv["file"] == str(b) and iv["score"] < 1                # … with the later row
+    assert any("'ivanov' appears again" in p["message"] and "the later row counts" in p["message"]
+               for p in rep["problems"])

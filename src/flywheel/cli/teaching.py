@@ -69,33 +69,76 @@ def grade_command(
                                               "tolerance in the key still applies."),
     out: Optional[Path] = typer.Option(None, "--out", "-o", help="Write one CSV line per "
                                        "student and answer to this file.",),
+    gradebook: Optional[Path] = typer.Option(None, "--gradebook", help="Write the gradebook: one "
+                                             "row per student (each answer's verdict and "
+                                             "error, score, total) to this CSV file."),
+    summary: bool = typer.Option(False, "--summary", help="Print only the class summary (score "
+                                 "distribution, answers most often wrong, who handed in "
+                                 "nothing)."),
+    csv_style: str = typer.Option("plain", "--csv", help="CSV dialect of --out and "
+                                  "--gradebook: plain, or excel-ru (';', decimal commas, BOM: "
+                                  "opens in a Russian Excel)."),
+    lang: str = typer.Option("en", "--lang", help="Language of the summary and the gradebook's "
+                             "headers: en | ru."),
     as_json: bool = typer.Option(False, "--json", help="Print the report as JSON."),
 ) -> None:
     """Grade students' answers against an answer key: per student each answer's error and
-    pass/fail, the score, group statistics; broken files and rows are reported and skipped."""
+    pass/fail, the score, group statistics; broken files and rows are reported and skipped.
+    A student who appears twice: the later row counts (the earlier is reported)."""
     import sys
 
     from flywheel.cli.guard import _guard, fail
     from flywheel.io.output import write_file
     from flywheel.teaching.grading import grade, load_key, report_csv, report_dict
 
+    if lang not in ("en", "ru"):
+        fail(f"--lang: {lang!r} is not a language (allowed: en, ru)")
+    if csv_style not in ("plain", "excel-ru"):
+        fail(f"--csv: {csv_style!r} is not a CSV dialect (allowed: plain, excel-ru)")
     k = _guard(load_key, key)
     report = _guard(grade, k, answers, tolerance)
     if out is not None:
-        _guard(write_file, out, report_csv(report), expected="a CSV file name")
+        text = report_csv(report)
+        if csv_style == "excel-ru":
+            import csv
+            import io
+
+            from flywheel.render.csvfmt import csv_text
+
+            rows = list(csv.reader(io.StringIO(text)))
+            text = csv_text([[_number_or_text(c) for c in row] for row in rows], csv_style,
+                            fmt=lambda x: f"{x!r}")
+        _guard(write_file, out, text, expected="a CSV file name")
+    if gradebook is not None:
+        from flywheel.render.grading import gradebook_csv
+
+        _guard(write_file, gradebook, gradebook_csv(report, csv_style, lang), "--gradebook",
+               expected="a CSV file name")
     if as_json:
         import json
 
         sys.stdout.write(json.dumps(report_dict(report), indent=2, ensure_ascii=False) + "\n")
     else:
-        from flywheel.render.grading import print_report
+        from flywheel.render.grading import print_class_summary, print_report
 
-        print_report(report)
-        if out is not None and report.students:
-            typer.echo(f"written: {out}")
+        if summary:
+            print_class_summary(report, lang)
+        else:
+            print_report(report)
+        for path in (out, gradebook):
+            if path is not None and report.students:
+                typer.echo(f"written: {path}")
     if not report.students:
         if report.problems:
             fail(f"nothing could be graded ({len(report.problems)} problem(s); the first: "
                  f"{report.problems[0]})")
         fail("nothing could be graded: no filled-in student rows (a row needs a student name "
              "and a variant)")
+
+
+def _number_or_text(cell: str):
+    """A CSV cell back as a float if it is one (for the decimal commas of excel-ru)."""
+    try:
+        return float(cell) if cell.strip() and cell.strip()[0] in "-0123456789" else cell
+    except ValueError:
+        return cell

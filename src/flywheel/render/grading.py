@@ -1,5 +1,91 @@
-"""Rich output of `flywheel variants` and `flywheel grade` (formatting only, no computation)."""
+"""Rich output of `flywheel variants` and `flywheel grade`, and the gradebook CSV (formatting
+only, no computation)."""
 from __future__ import annotations
+
+# sentence templates of the class summary and the gradebook (the quantities' names are
+# answers' keys, which stay as the key spells them)
+TEXT = {
+    "en": {"summary": "Class summary: {n} graded, mean score {mean}", "dist": "Score distribution",
+           "passed": "answers passed", "students": "students", "wrong": "Most often wrong",
+           "none": "none", "nothing": "Handed in nothing ({n})", "unassigned":
+           "Variants nobody was graded on ({n})", "problems": "{n} problem(s) (skipped or not "
+           "graded); --json lists them", "verdict": "verdict", "error": "error", "score": "score",
+           "total": "total", "pass": "pass", "fail": "FAIL", "no_answer": "no answer",
+           "student": "student", "variant": "variant", "full": "full marks: {k} of {n}",
+           "each": "each", "of": "of"},
+    "ru": {"summary": "Итоги группы: проверено {n}, средний балл {mean}",
+           "dist": "Распределение баллов", "passed": "верных ответов", "students": "студентов",
+           "wrong": "Чаще всего ошибались в", "none": "нет", "nothing": "Не сдали ответов ({n})",
+           "unassigned": "Варианты без проверенных студентов ({n})",
+           "problems": "Замечаний: {n} (пропущено или не проверено); полный список: --json",
+           "verdict": "оценка", "error": "погрешность", "score": "балл", "total": "всего",
+           "pass": "верно", "fail": "НЕВЕРНО", "no_answer": "нет ответа", "student": "студент",
+           "variant": "вариант", "full": "все ответы верны: {k} из {n}", "each": "каждый",
+           "of": "из"},
+}
+
+
+def gradebook_rows(r, lang: str = "en") -> list[list]:
+    """The gradebook: one row per student in the order of the sheets — student, variant, per
+    answer its verdict and relative (or absolute) error, passed, total, score."""
+    t = TEXT[lang]
+    answers = list(r.key.answers) or sorted({a.answer for s in r.students for a in s.answers})
+    head = [t["student"], t["variant"]]
+    for a in answers:
+        head += [f"{a} {t['verdict']}", f"{a} {t['error']}"]
+    rows = [head + [t["passed"], t["total"], t["score"]]]
+    for s in r.students:
+        by = {a.answer: a for a in s.answers}
+        row = [s.student, s.variant]
+        for a in answers:
+            g = by.get(a)
+            if g is None:
+                row += ["", None]
+                continue
+            row += [t["pass"] if g.passed else (t["fail"] if g.given is not None
+                                                 else t["no_answer"]), g.error]
+        rows.append(row + [s.passed, s.total, round(s.score, 4)])
+    return rows
+
+
+def gradebook_csv(r, style: str = "plain", lang: str = "en") -> str:
+    """The gradebook as CSV text (``plain`` or ``excel-ru``: see render/csvfmt.py)."""
+    from flywheel.render.csvfmt import csv_text
+
+    return csv_text(gradebook_rows(r, lang), style, fmt=lambda x: f"{x:.6g}")
+
+
+def print_class_summary(r, lang: str = "en", console=None) -> None:
+    """Only the class summary: the score distribution, the answers most often wrong, who
+    handed in nothing, the variants nobody was graded on, the number of problems."""
+    from rich.console import Console
+    from rich.table import Table
+
+    t = TEXT[lang]
+    console = console or Console()
+    mean = "—" if r.mean_score is None else f"{100 * r.mean_score:.0f} %"
+    dist = Table(title=t["summary"].format(n=len(r.students), mean=mean), title_justify="left")
+    dist.add_column(t["passed"], justify="right")
+    dist.add_column(t["students"], justify="right")
+    dist.add_column("")
+    most = max(r.score_distribution().values(), default=0) or 1
+    for k, n in r.score_distribution().items():
+        dist.add_row(str(k), str(n), "█" * round(30 * n / most))
+    console.print(dist)
+    full = sum(s.passed == s.total for s in r.students)
+    console.print(t["full"].format(k=full, n=len(r.students)), highlight=False)
+    worst = r.most_often_wrong()
+    console.print(f"{t['wrong']}: " + (t["none"] if worst is None else
+                  f"{', '.join(worst[0])} ({worst[1]} {t['of']} {len(r.students)}"
+                  + (f" {t['each']})" if len(worst[0]) > 1 else ")")), highlight=False)
+    for key, names in (("nothing", [s.student for s in r.handed_in_nothing]),
+                       ("unassigned", r.unassigned_variants())):
+        if names:
+            console.print(t[key].format(n=len(names)) + ": " + ", ".join(names[:50])
+                          + (" …" if len(names) > 50 else ""), highlight=False, markup=False,
+                          soft_wrap=True)
+    if r.problems:
+        console.print(t["problems"].format(n=len(r.problems)), highlight=False)
 
 
 def _g(x, fmt: str = ".6g") -> str:

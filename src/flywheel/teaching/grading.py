@@ -255,6 +255,24 @@ class Report:
                 c[1] += 1
         return {k: (w, n) for k, (w, n) in out.items() if n}
 
+    @property
+    def handed_in_nothing(self) -> list[StudentGrade]:
+        """Students on a sheet whose answers are all empty (missing work)."""
+        return [s for s in self.students if all(a.given is None for a in s.answers)]
+
+    def score_distribution(self) -> dict[int, int]:
+        """{answers passed: students} from 0 to the most answers any variant asks."""
+        top = max((s.total for s in self.students), default=0)
+        out = {k: 0 for k in range(top + 1)}
+        for s in self.students:
+            out[s.passed] += 1
+        return out
+
+    def unassigned_variants(self) -> list[str]:
+        """The key's variants nobody was graded on (in the key's order)."""
+        taken = {s.variant for s in self.students}
+        return [v for v in self.key.variants if v not in taken]
+
     def most_often_wrong(self) -> tuple[list[str], int] | None:
         """([answers], wrong) of the answer(s) wrong most often (all of a tie, in the key's
         order), or None if no answer was ever wrong."""
@@ -461,15 +479,18 @@ def grade(key: Key, paths, tolerance: float | None = None) -> Report:
             s = s[:keep]
         students += s
         problems += p
-    seen: dict[str, StudentGrade] = {}
+    # a student graded twice: the later row counts (a corrected resubmission), in the place
+    # of the first; the earlier row is named as not counted
+    latest: dict[str, StudentGrade] = {}
     for s in students:
-        if s.student in seen:
-            first = seen[s.student]
-            problems.append(Problem(s.file, s.row, f"{s.student!r} was graded before "
-                                                   f"({first.file}, row {first.row}); both "
-                                                   "rows are kept"))
-        else:
-            seen[s.student] = s
+        if s.student in latest:
+            first = latest[s.student]
+            problems.append(Problem(s.file, s.row, f"{s.student!r} appears again (first at "
+                                                   f"{first.file}, row {first.row}): the later "
+                                                   "row counts, the earlier is not graded"))
+        latest[s.student] = s
+    order = list(dict.fromkeys(s.student for s in students))
+    students = [latest[name] for name in order]
     return Report(key, key.tolerance if tolerance is None else tolerance, tuple(students),
                   tuple(problems), tuple(map(str, files)))
 
@@ -501,6 +522,9 @@ def report_dict(r: Report) -> dict:
                                 for a, (w, n) in r.wrong_counts().items()},
             "most_often_wrong": None if worst is None else
             {"answers": worst[0], "wrong": worst[1]},
+            "score_distribution": {str(k): n for k, n in r.score_distribution().items()},
+            "handed_in_nothing": [s.student for s in r.handed_in_nothing],
+            "unassigned_variants": r.unassigned_variants(),
         },
         "problems": [{"file": p.file, "row": p.row, "message": p.message} for p in r.problems],
     }

@@ -1,0 +1,43 @@
+"""CSV text in two dialects, written with the csv module:
+
+* ``plain`` — comma separators, decimal points, no byte-order mark (the default: what
+  scripts and most spreadsheets read);
+* ``excel-ru`` — semicolon separators, decimal commas and a UTF-8 byte-order mark, so a
+  Russian Excel opens the file with the columns split and the numbers as numbers.
+
+Numbers are passed as ``float``/``int`` and formatted here (``fmt``); strings stay as they are.
+
+>>> csv_text([["student", "J"], ["Иванов", 0.5]], "excel-ru")
+'\\ufeffstudent;J\\r\\nИванов;0,5\\r\\n'
+>>> csv_text([["a", "b"], [1, 2.5]])
+'a,b\\n1,2.5\\n'
+"""
+from __future__ import annotations
+
+import csv
+import io
+from collections.abc import Callable, Iterable, Sequence
+
+STYLES = ("plain", "excel-ru")
+
+
+def csv_text(rows: Iterable[Sequence], style: str = "plain",
+             fmt: Callable[[float], str] = repr) -> str:
+    """The rows as CSV text in ``style`` (see the module's docstring)."""
+    if style not in STYLES:
+        raise ValueError(f"unknown CSV style {style!r} (allowed: {', '.join(STYLES)})")
+    ru = style == "excel-ru"
+    buf = io.StringIO()
+    w = csv.writer(buf, delimiter=";" if ru else ",", lineterminator="\r\n" if ru else "\n")
+    for row in rows:
+        out = []
+        for v in row:
+            if isinstance(v, bool) or v is None:
+                out.append("" if v is None else str(int(v)))
+            elif isinstance(v, (int, float)):
+                t = str(v) if isinstance(v, int) else fmt(v)
+                out.append(t.replace(".", ",") if ru else t)
+            else:
+                out.append(str(v))
+        w.writerow(out)
+    return ("\ufeff" if ru else "") + buf.getvalue()
