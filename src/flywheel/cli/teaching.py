@@ -96,7 +96,15 @@ def grade_command(
     if csv_style not in ("plain", "excel-ru"):
         fail(f"--csv: {csv_style!r} is not a CSV dialect (allowed: plain, excel-ru)")
     k = _guard(load_key, key)
-    report = _guard(grade, k, answers, tolerance)
+    from rich.console import Console
+    from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn
+
+    console = Console(stderr=True)
+    with Progress(TextColumn("sheets"), BarColumn(), MofNCompleteColumn(), console=console,
+                  transient=True, disable=not console.is_terminal) as bar:
+        task = bar.add_task("sheets", total=None)
+        report = _guard(grade, k, answers, tolerance,
+                        lambda done, total: bar.update(task, completed=done, total=total))
     if out is not None:
         text = report_csv(report)
         if csv_style == "excel-ru":

@@ -455,10 +455,11 @@ def grade_sheet(key: Key, path, tolerance: float | None = None
     return graded, problems
 
 
-def grade(key: Key, paths, tolerance: float | None = None) -> Report:
+def grade(key: Key, paths, tolerance: float | None = None, progress=None) -> Report:
     """Grade every CSV file (or folder of them) in ``paths``; never stops at a broken one.
 
-    ``tolerance`` replaces the key's default tolerance (a per-answer one of the key stays).
+    ``tolerance`` replaces the key's default tolerance (a per-answer one of the key stays);
+    ``progress(done, total)`` is called after each sheet (a progress bar).
     """
     if tolerance is not None and not _positive(tolerance):
         raise InputError(f"--tolerance: must be a positive number (got {tolerance!r})")
@@ -479,6 +480,8 @@ def grade(key: Key, paths, tolerance: float | None = None) -> Report:
             s = s[:keep]
         students += s
         problems += p
+        if progress is not None:
+            progress(i + 1, len(files))
     # a student graded twice: the later row counts (a corrected resubmission), in the place
     # of the first; the earlier row is named as not counted
     latest: dict[str, StudentGrade] = {}
