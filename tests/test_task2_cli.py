@@ -94,10 +94,10 @@ def test_plot_structure():
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    from flywheel.constant_inertia import solve as t2
+    from flywheel.constant_inertia.preset import seed_task
     from flywheel.render.task2 import plot
 
-    r = t2.seed_task("triangle")
+    r = seed_task("triangle")
     seen = {}
     orig = plt.close
 
@@ -322,10 +322,11 @@ def test_unsteady_summary_prints_a_tiny_work_as_it_is():
 
     from rich.console import Console
 
-    from flywheel.constant_inertia import solve as t2
+    from flywheel.constant_inertia.graphs import constant
+    from flywheel.constant_inertia.solve import solve
     from flywheel.render.task2 import print_summary
 
-    r = t2.solve(t2.constant(1e-13), t2.constant(0.0), 1.0, omega0=1.0)
+    r = solve(constant(1e-13), constant(0.0), 1.0, omega0=1.0)
     assert not r.steady
     out = io.StringIO()
     print_summary(r, console=Console(file=out, width=200))

@@ -1,6 +1,6 @@
 """`flywheel task2`: steady motion under given moment graphs (seed 002 and the textbook family).
 
-Thin: parse the options, call :mod:`flywheel.constant_inertia.solve` (or :mod:`flywheel.cases.task2` for
+Thin: parse the options, call :mod:`flywheel.constant_inertia.preset` (or :mod:`flywheel.cases.task2` for
 ``--case``), hand the result to :mod:`flywheel.render.task2`. Heavy imports live inside the
 function so that ``flywheel task2 --json`` starts fast.
 
@@ -93,7 +93,7 @@ def task2_command(
 
             title, source = c.title, c.source
         else:
-            from flywheel.constant_inertia.solve import SEED_DEFAULTS, seed_task
+            from flywheel.constant_inertia.preset import SEED_DEFAULTS, seed_task
 
             profile = "triangle" if profile is None else profile
             if profile not in PROFILES:
