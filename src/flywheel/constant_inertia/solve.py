@@ -62,19 +62,42 @@ class Row:
     omega: float
 
 
+#: rad/s → rev/min
+RPM = 30.0 / math.pi
+
+
+def _deg(x: float | None) -> float | None:
+    """Degrees, rounded to 1e-10° so that 247.49999999999997 reads 247.5; None for no angle."""
+    return None if x is None or math.isnan(x) else round(math.degrees(x), 10) + 0.0
+
+
 @dataclass(frozen=True)
 class Task2Result:
-    """Everything task 2 reports; SI units (angles in rad, speeds in rad/s, energies in J)."""
+    """Everything task 2 reports; SI units (angles in rad, speeds in rad/s, energies in J).
 
-    cycle: float
+    cycle : length Φ of the cycle [rad]; J : reduced moment of inertia used for the motion
+    [kg·m²]; omega0 : ω at φ = 0 [rad/s]; omega_max, omega_min : extreme speeds [rad/s];
+    omega_mean : ω_ср = (ω_max + ω_min)/2 [rad/s]; delta : δ = (ω_max − ω_min)/ω_ср [1];
+    phi_omega_max, phi_omega_min : their angles [rad] (None when an area diagram gives none);
+    delta_T_max : ΔT_нб = A_max − A_min [J]; rows : the segment table; steady : ∮(M_D − M_C)dφ = 0;
+    omega_end : ω after one cycle [rad/s]; work_end : A(Φ) [J] (0 for steady motion);
+    M_D, M_C : nominal driving and resistance moments (constant, peak, a0) [N·m]; unknown : the
+    moment the cycle balance found, "driving" | "resistance" | None; work_driving, work_resistance :
+    ∮M_D dφ, ∮M_C dφ [J]; power : mean driving moment × ω_ср [W] (steady motion only);
+    J_required : J giving delta_target at the same ω_ср [kg·m²]; delta_target : the asked δ [1];
+    rim_radius : mean radius of a rim [m]; rim_mass : m = J/R² [kg]; driving, resistance : the
+    graphs (None for an area diagram).
+    """
+
+    cycle: float                 # Φ [rad]
     J: float                     # reduced moment of inertia used for the motion [kg·m²]
     omega0: float                # ω at φ = 0 [rad/s]
-    omega_max: float
-    omega_min: float
-    omega_mean: float            # (ω_max + ω_min)/2
-    delta: float                 # (ω_max − ω_min)/ω_ср
+    omega_max: float             # [rad/s]
+    omega_min: float             # [rad/s]
+    omega_mean: float            # (ω_max + ω_min)/2 [rad/s]
+    delta: float                 # (ω_max − ω_min)/ω_ср [1]
     phi_omega_max: float | None  # [rad]; None if the diagram gives no angles
-    phi_omega_min: float | None
+    phi_omega_min: float | None  # [rad]
     delta_T_max: float           # ΔT_нб = A_max − A_min [J]
     rows: tuple[Row, ...]
     steady: bool = True
@@ -87,11 +110,62 @@ class Task2Result:
     work_resistance: float | None = None  # ∮ M_C dφ [J]
     power: float | None = None   # mean driving moment × ω_ср [W]
     J_required: float | None = None       # J for delta_target at the same ω_ср [kg·m²]
-    delta_target: float | None = None
+    delta_target: float | None = None     # the asked δ [1]
     rim_radius: float | None = None       # mean radius of a rim [m]
     rim_mass: float | None = None         # m = J/R² [kg]
     driving: Moment | None = field(default=None, repr=False)
     resistance: Moment | None = field(default=None, repr=False)
+
+    def to_document(self, title: str = "", source: str = "") -> dict:
+        """The results document, the JSON of ``flywheel task2 --json`` (SI units; angles in
+        degrees where the key says ``_deg``; speeds in rev/min under ``rpm``).
+
+        Keys of the contract: omega_max, omega_min, omega_mean, delta, phi_omega_max_deg,
+        phi_omega_min_deg, delta_T_max, M_C, J_required (only when asked), segments. An angle
+        that is not known (an area diagram without crossing angles) is None.
+        """
+        d: dict = {}
+        if title:
+            d["title"] = title
+        if source:
+            d["source"] = source
+        d.update({
+            "omega_max": self.omega_max,
+            "omega_min": self.omega_min,
+            "omega_mean": self.omega_mean,
+            "delta": self.delta,
+            "phi_omega_max_deg": _deg(self.phi_omega_max),
+            "phi_omega_min_deg": _deg(self.phi_omega_min),
+            "delta_T_max": self.delta_T_max,
+            "M_C": self.M_C,
+        })
+        if self.J_required is not None:
+            d["J_required"] = self.J_required
+        d.update({
+            "M_D": self.M_D,
+            "balance_found": self.unknown,
+            "J": self.J,
+            "omega0": self.omega0,
+            "steady": self.steady,
+            "omega_end": self.omega_end,
+            "work_end": self.work_end,
+            "cycle_deg": math.degrees(self.cycle),
+            "rpm": {"omega0": self.omega0 * RPM, "omega_max": self.omega_max * RPM,
+                    "omega_min": self.omega_min * RPM, "omega_mean": self.omega_mean * RPM},
+            "work_driving": self.work_driving,
+            "work_resistance": self.work_resistance,
+            "power": self.power,
+        })
+        if self.delta_target is not None:
+            d["delta_target"] = self.delta_target
+        if self.rim_mass is not None:
+            d["rim_radius"] = self.rim_radius
+            d["rim_mass"] = self.rim_mass
+        d["segments"] = [
+            {"phi_deg": _deg(row.phi), "phi": None if math.isnan(row.phi) else row.phi,
+             "kind": row.kind, "M_D": row.M_D, "M_C": row.M_C, "A": row.A, "omega": row.omega}
+            for row in self.rows]
+        return d
 
 
 def balance(make_D: Callable[[float], Moment], make_C: Callable[[float], Moment],

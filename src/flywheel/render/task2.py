@@ -1,75 +1,26 @@
-"""`flywheel task2` output: the JSON document, the rich summary and the plot.
+"""`flywheel task2` output: the JSON text, the rich summary and the plot.
 
-Renderers compute no physics: they format a :class:`flywheel.constant_inertia.solve.Task2Result`. Degrees appear
-here only. rich and matplotlib are imported inside the functions that use them.
+Renderers compute no physics: they format a :class:`flywheel.constant_inertia.solve.Task2Result`
+(its JSON document is the result's own :meth:`~flywheel.constant_inertia.solve.Task2Result.to_document`).
+rich and matplotlib are imported inside the functions that use them.
 """
 from __future__ import annotations
 
 import math
 
-RPM = 30.0 / math.pi  # rad/s → rev/min
-
-
-def _deg(x: float | None) -> float | None:
-    """Degrees, rounded to 1e-10° so that 247.49999999999997 reads 247.5."""
-    return None if x is None or math.isnan(x) else round(math.degrees(x), 10) + 0.0
+from flywheel.constant_inertia.solve import RPM
 
 
 def to_dict(r, title: str = "", source: str = "") -> dict:
-    """The JSON document (SI units; angles in degrees where the key says ``_deg``).
-
-    Keys of the contract: omega_max, omega_min, omega_mean, delta, phi_omega_max_deg,
-    phi_omega_min_deg, delta_T_max, M_C, J_required (only when asked), segments.
-    """
-    d: dict = {}
-    if title:
-        d["title"] = title
-    if source:
-        d["source"] = source
-    d.update({
-        "omega_max": r.omega_max,
-        "omega_min": r.omega_min,
-        "omega_mean": r.omega_mean,
-        "delta": r.delta,
-        "phi_omega_max_deg": _deg(r.phi_omega_max),
-        "phi_omega_min_deg": _deg(r.phi_omega_min),
-        "delta_T_max": r.delta_T_max,
-        "M_C": r.M_C,
-    })
-    if r.J_required is not None:
-        d["J_required"] = r.J_required
-    d.update({
-        "M_D": r.M_D,
-        "balance_found": r.unknown,
-        "J": r.J,
-        "omega0": r.omega0,
-        "steady": r.steady,
-        "omega_end": r.omega_end,
-        "work_end": r.work_end,
-        "cycle_deg": math.degrees(r.cycle),
-        "rpm": {"omega0": r.omega0 * RPM, "omega_max": r.omega_max * RPM,
-                "omega_min": r.omega_min * RPM, "omega_mean": r.omega_mean * RPM},
-        "work_driving": r.work_driving,
-        "work_resistance": r.work_resistance,
-        "power": r.power,
-    })
-    if r.delta_target is not None:
-        d["delta_target"] = r.delta_target
-    if r.rim_mass is not None:
-        d["rim_radius"] = r.rim_radius
-        d["rim_mass"] = r.rim_mass
-    d["segments"] = [
-        {"phi_deg": _deg(row.phi), "phi": None if math.isnan(row.phi) else row.phi,
-         "kind": row.kind, "M_D": row.M_D, "M_C": row.M_C, "A": row.A, "omega": row.omega}
-        for row in r.rows]
-    return d
+    """The result's JSON document, :meth:`~flywheel.constant_inertia.solve.Task2Result.to_document`."""
+    return r.to_document(title, source)
 
 
 def to_json(r, title: str = "", source: str = "") -> str:
-    """``to_dict`` as indented JSON text (byte-identical for the same input)."""
+    """The result's document as indented JSON text (byte-identical for the same input)."""
     import json
 
-    return json.dumps(to_dict(r, title, source), indent=2, ensure_ascii=False)
+    return json.dumps(r.to_document(title, source), indent=2, ensure_ascii=False)
 
 
 def _g(x: float | None, fmt: str = ".6g") -> str:
