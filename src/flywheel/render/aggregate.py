@@ -1,6 +1,7 @@
 """`flywheel aggregate` output: the JSON document, the rich summary and the plots against time.
 
-Renderers compute no physics: they format a :class:`flywheel.elastic.model.AggregateResult`.
+Renderers compute no physics: they format a :class:`flywheel.elastic.model.AggregateResult` (its
+JSON document is the result's own :meth:`~flywheel.elastic.model.AggregateResult.to_document`).
 rich and matplotlib are imported inside the functions that use them. Every text handed to rich
 goes through :func:`rich.markup.escape`: units in square brackets ("[kg·m²]", "[rad/s]") and
 "[motor]" would otherwise be taken for markup tags and vanish.
@@ -17,82 +18,12 @@ TWO_PI = 2.0 * math.pi
 RPM = 30.0 / math.pi  # rad/s → rev/min
 
 
-def _f(x):
-    return None if x is None else float(x)
-
-
-def to_dict(r, title: str = "", source: str = "") -> dict:
-    """The JSON document, SI units, reduced to shaft I.
-
-    Keys of the contract: natural_frequencies_hz (ascending, the rigid-body 0 excluded),
-    twist_amplitude [rad] (the first coupling, q2 of seed 003), elastic_moment_amplitude
-    [N·m] (the amplitude of c·q2, the same as of the transmitted moment −c·q2), delta_motor,
-    delta_machine; the last four are null without a motor. steady.elastic_moment_mean is the mean
-    transmitted moment c·(φ_k − φ_(k+1)) = −c·q (positive, M_0·i31); steady.twist_mean is the mean
-    of q (negative). notes: how the time-domain runs were bounded (empty if nothing to say).
-    """
-    ch, st = r.chain, r.steady
-    d: dict = {}
-    if title:
-        d["title"] = title
-    if source:
-        d["source"] = source
-    d.update({
-        "natural_frequencies_hz": [float(w) / TWO_PI for w in r.modes.elastic],
-        "twist_amplitude": _f(st.twist_amplitude[0]) if st else None,
-        "elastic_moment_amplitude": _f(st.moment_amplitude[0]) if st else None,
-        "delta_motor": _f(st.delta[0]) if st else None,
-        "delta_machine": _f(st.delta[-1]) if st else None,
-        "natural_frequencies_rad_s": [float(w) for w in r.modes.elastic],
-        "rotors": [{"name": n, "J_reduced": float(j), "speed_ratio": float(u)}
-                   for n, j, u in zip(ch.names, ch.J, ch.ratio)],
-        "connections": [{"c_reduced": float(c), "damping_reduced": float(b)}
-                        for c, b in zip(ch.c, ch.damping)],
-        "a": r.a.tolist(),
-        "c": r.c.tolist(),
-        "mode_shapes": r.modes.shapes[:, 1:].T.tolist(),
-    })
-    if st is not None:
-        dr = r.drive
-        d["motor"] = {"characteristic": dr.kind, "starting_torque": dr.M_start,
-                      "synchronous_speed": dr.omega_x, "M0_reduced": dr.M0,
-                      "amplitude_reduced": dr.amplitude}
-        d["steady"] = {
-            "omega_motor": st.omega_mean,
-            "omega_machine": st.omega_mean * float(ch.ratio[-1]),
-            "omega_forcing": st.omega_forcing,
-            "forcing_hz": st.omega_forcing / TWO_PI,
-            "omega_motor_max": st.omega_mean + float(st.omega_amplitude[0]),
-            "omega_motor_min": st.omega_mean - float(st.omega_amplitude[0]),
-            "omega_machine_max": (st.omega_mean + float(st.omega_amplitude[-1])) * float(ch.ratio[-1]),
-            "omega_machine_min": (st.omega_mean - float(st.omega_amplitude[-1])) * float(ch.ratio[-1]),
-            "twist_mean": [float(x) for x in st.twist_mean],       # q = φ_(k+1) − φ_k
-            "twist_amplitudes": [float(x) for x in st.twist_amplitude],
-            "elastic_moment_mean": [float(x) for x in st.moment_mean],  # −c·q, transmitted
-            "elastic_moment_amplitudes": [float(x) for x in st.moment_amplitude],
-            "delta": [float(x) for x in st.delta],
-        }
-        d["resonance"] = [{"natural_hz": x.omega_n / TWO_PI, "ratio": x.ratio, "margin": x.margin}
-                          for x in r.resonance]
-        if r.check is not None:
-            d["time_domain"] = {
-                "twist_amplitude": r.check_twist_amplitude,
-                "delta_motor": r.check_delta[0],
-                "delta_machine": r.check_delta[1],
-                "start_up_duration": float(r.startup.t[-1]),
-                "start_up_peak_elastic_moment": r.startup_peak_moment,
-                "start_up_time_to_95_percent": r.startup_time,
-                "steady_check_method": r.check.method,
-            }
-        d["notes"] = list(r.notes)
-    return d
-
-
 def to_json(r, title: str = "", source: str = "") -> str:
-    """The JSON text; a non-finite number is a ValueError (JSON has no NaN or Infinity)."""
+    """The result's document as JSON text; a non-finite number is a ValueError (JSON has no NaN
+    or Infinity; the command refuses such a result before it gets here)."""
     import json
 
-    return json.dumps(to_dict(r, title, source), indent=2, ensure_ascii=False, allow_nan=False)
+    return json.dumps(r.to_document(title, source), indent=2, ensure_ascii=False, allow_nan=False)
 
 
 def _g(x, fmt: str = ".6g") -> str:
