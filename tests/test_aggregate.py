@@ -571,3 +571,25 @@ def test_analyze_solves_the_eigenproblem_once(monkeypatch):
     assert r.check is not None and r.startup is not None
     # and the same frequencies as computed afresh
     assert np.array_equal(r.modes.omega, natural_frequencies(r.chain).omega)
+
+
+def test_non_finite_result_is_refused_by_the_one_policy(tmp_path, monkeypatch):
+    # a result that would print inf (here forced into the start-up peak) is refused in the
+    # summary as in the JSON, with one line naming the quantity as the JSON names it
+    import dataclasses
+
+    import flywheel.elastic.model as model
+
+    real = model.analyze
+
+    def overflowing(*args, **kwargs):
+        return dataclasses.replace(real(*args, **kwargs), startup_peak_moment=math.inf)
+
+    monkeypatch.setattr(model, "analyze", overflowing)
+    for args in (("--json",), ()):
+        res = cli(CASES / "aggregate.toml", "--t-end", "0.2", *args)
+        err = err_text(res)
+        assert res.exit_code == 2, res.output
+        assert err.startswith(f"error: {CASES / 'aggregate.toml'}: time_domain."
+                              "start_up_peak_elastic_moment is not finite (inf): "), err
+        assert err.count("\n") == 1 and "Infinity" not in res.output

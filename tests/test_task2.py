@@ -12,7 +12,8 @@ import pytest
 from flywheel.constant_inertia.crossings import crossings
 from flywheel.constant_inertia.graphs import Piece, constant, harmonic, piecewise_linear, triangle
 from flywheel.constant_inertia.preset import seed_task
-from flywheel.constant_inertia.solve import balance, nonfinite, sample, solve, solve_areas
+from flywheel.constant_inertia.solve import (NotFiniteError, balance, sample, solve,
+                                            solve_areas)
 from flywheel.errors import CaseFileError, InputError
 from flywheel.cases.task2 import load_task2_case, parse_task2_case, solve_case
 
@@ -507,17 +508,35 @@ def test_crossings_of_many_orders():
 # -- non-finite results ----------------------------------------------------------------------------
 
 def test_nonfinite_names_the_first_quantity():
+    # the one non-finite policy looks at the results document, which is what gets printed
+    from flywheel.cli.guard import first_nonfinite
+
     r = seed_task("triangle")
-    assert nonfinite(r) is None
+    assert first_nonfinite(r.to_document()) is None
     import dataclasses
 
     bad = dataclasses.replace(r, omega_max=math.inf)
-    assert nonfinite(bad) == "omega_max = inf"
+    assert first_nonfinite(bad.to_document()) == ("omega_max", math.inf)
     rows = list(r.rows)
     rows[3] = dataclasses.replace(rows[3], A=math.nan)
-    assert nonfinite(dataclasses.replace(r, rows=tuple(rows))) == "segments[3].A = nan"
+    hit = first_nonfinite(dataclasses.replace(r, rows=tuple(rows)).to_document())
+    assert hit[0] == "segments[3].A" and math.isnan(hit[1])
+    # rev/min too: ω0 = 1e308 rad/s is finite, 30·ω0/π is not
+    hit = first_nonfinite(dataclasses.replace(r, omega0=1e308).to_document())
+    assert hit == ("rpm.omega0", math.inf)
     # an area diagram without crossing angles has NaN angles by design: not an overflow
-    assert nonfinite(solve_areas([1.0, -1.0], J=1.0, omega0=1.0)) is None
+    assert first_nonfinite(solve_areas([1.0, -1.0], J=1.0, omega0=1.0).to_document()) is None
+
+
+def test_overflow_inside_the_computation_names_the_quantity():
+    # moments near the limit of double precision: the cycle balance and the works cannot be
+    # stated; the error names the quantity as the document would
+    with pytest.raises(NotFiniteError) as e:
+        seed_task("triangle", M_D=1e308)
+    assert e.value.quantity == "M_C" and "inf N·m" in e.value.detail
+    with pytest.raises(NotFiniteError) as e:
+        solve(constant(1e308), triangle(1e308, 0.0, 1e-300), 1.0, omega0=1.0)
+    assert e.value.quantity == "work_resistance"         # a slope of 1e308/5e-301 = inf
 
 
 def test_readme_example_press():

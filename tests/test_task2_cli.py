@@ -256,18 +256,21 @@ def test_help_shows_the_units():
         assert unit in text, unit
 
 
-OVERFLOW = "the values overflow"
+OVERFLOW = ("is not finite", "the values overflow double precision")
 
 
+# one non-finite policy (cli.guard.not_finite): "who: <quantity> is not finite (…): the values
+# overflow …" — the options or fields to blame, the quantity as the JSON names it, what happened
 @pytest.mark.parametrize("args,match", [
-    (["--md", 1e308], (f"error: --md 1e+308: {OVERFLOW} (the cycle balance gives a "
-                       "resistance moment of inf N·m)")),
-    (["--md", 1e308, "--profile", "rectangle"], f"error: --md 1e+308: {OVERFLOW} ("),
-    (["--omega0", 1e200], f"error: --omega0 1e+200: {OVERFLOW} (omega_max = inf)"),
-    (["--delta", 1e-320], f"error: --delta 9.99989e-321: {OVERFLOW} (J_required = inf)"),
-    (["--from", 1e-300, "--to", 1e-299], f"error: --from 1e-300, --to 1e-299: {OVERFLOW} ("),
+    (["--md", 1e308], ("error: --md 1e+308: M_C is not finite (the cycle balance gives a "
+                       "resistance moment of inf N·m): ")),
+    (["--md", 1e308, "--profile", "rectangle"], "error: --md 1e+308: M_C is not finite ("),
+    (["--omega0", 1e200], "error: --omega0 1e+200: omega_max is not finite (inf): "),
+    (["--delta", 1e-320], "error: --delta 9.99989e-321: J_required is not finite (inf): "),
+    (["--from", 1e-300, "--to", 1e-299], "error: --from 1e-300, --to 1e-299: work_resistance is "
+                                         "not finite ("),
     (["--mc", 1e308, "--omega0", 1e308],
-     f"error: --omega0 1e+308, --mc 1e+308: {OVERFLOW} (omega_max = inf)"),
+     "error: --omega0 1e+308, --mc 1e+308: omega_max is not finite (inf): "),
 ])
 def test_overflow_is_one_line(args, match):
     for extra in ([], ["--json"]):
@@ -275,6 +278,7 @@ def test_overflow_is_one_line(args, match):
         assert res.exit_code == 2, res.output
         err = err_text(res)
         assert err.startswith(match), err
+        assert OVERFLOW[1] in err
         assert err.count("\n") == 1 and "Infinity" not in res.output and "NaN" not in res.output
 
 
@@ -289,7 +293,7 @@ peak = "balance"
     assert res.exit_code == 2, res.output
     err = err_text(res)
     assert err.startswith("error: ") and err.count("\n") == 1
-    assert "c.toml: driving.value: the values overflow (" in err, err
+    assert "c.toml: driving.value: M_C is not finite (" in err and OVERFLOW[1] in err, err
 
 
 @pytest.mark.parametrize("args", [["--profile", "rectangle"], ["--profile", "triangle"],

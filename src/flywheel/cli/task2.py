@@ -69,14 +69,14 @@ def task2_command(
     """Task 2: ω_max, ω_min, ω_ср and δ of a machine with constant J under given M_D(φ), M_C(φ)."""
     import math
 
-    from flywheel.cli.guard import fail
+    from flywheel.cli.guard import first_nonfinite, guarded, not_finite
     from flywheel.errors import FlywheelError, InputError
 
     title = source = ""
     given = [(name, v) for name, v in (("--md", md), ("--j", j), ("--omega0", omega0),
                                        ("--from", start), ("--to", end), ("--mc", mc),
                                        ("--delta", delta)) if v is not None]
-    try:
+    with guarded():
         if plot is not None and plot.is_dir():
             raise InputError(f"--plot {plot}: is a folder, expected an image file")
         if case is not None:
@@ -123,25 +123,29 @@ def task2_command(
 
             title = f"Seed 002, {profile} resistance moment"
             source = "seed 002_10afb132413d2537.txt"
-        from flywheel.constant_inertia.solve import nonfinite
+        from flywheel.constant_inertia.solve import NotFiniteError
 
         # inputs near the limits of double precision: no Infinity/NaN in the output (it is not
-        # JSON), and no traceback from inf − inf inside the formulas
+        # JSON), and no traceback from inf − inf inside the formulas (guard.not_finite)
+        hit = None
         try:
             result = run()
-            why = nonfinite(result)
+            found = first_nonfinite(result.to_document())
+            if found is not None:
+                hit = (found[0], repr(found[1]))
+        except NotFiniteError as exc:
+            hit = (exc.quantity, exc.detail)
         except FlywheelError:
             raise
         except (ArithmeticError, ValueError) as exc:
-            why = f"{exc.args[-1] if exc.args else type(exc).__name__}"
-        if why is not None:
-            if case is not None:     # "file: field, field: …" (the file alone if none stands out)
+            hit = ("a result", f"{exc.args[-1] if exc.args else type(exc).__name__}")
+        if hit is not None:
+            if case is not None:     # "file: field, field" (the file alone if none stands out)
                 fields = [n for n, _ in _extreme(blame)]
                 who = f"{case}: {', '.join(fields)}" if fields else str(case)
-            else:                    # "--md 1e+308: …" (every given option if none stands out)
+            else:                    # "--md 1e+308" (every given option if none stands out)
                 who = ", ".join(f"{n} {v:g}" for n, v in (_extreme(blame) or blame))
-            raise InputError(f"{who + ': ' if who else ''}the values overflow ({why}): the "
-                             "numbers are too large or too small for double precision")
+            not_finite(*hit, who=who)
         if plot is not None:
             from flywheel.render.task2 import plot as draw
 
@@ -149,9 +153,6 @@ def task2_command(
                 draw(result, plot, title)
             except (OSError, ValueError) as exc:
                 raise InputError(f"--plot {plot}: cannot write the image ({exc})") from None
-    except FlywheelError as exc:
-        fail(str(exc))
-        return
     if as_json:
         from flywheel.render.task2 import to_json
 

@@ -38,6 +38,25 @@ from flywheel.errors import InputError
 BALANCE_RTOL = 1e-9
 
 
+class NotFiniteError(OverflowError):
+    """A quantity came out inf or NaN (inputs near the limits of double precision), so no
+    extreme can be chosen and no result stated. ``quantity`` names it as the results document
+    does (``M_C``, ``work_driving``, ``segments[3].A``); ``detail`` says what happened."""
+
+    def __init__(self, quantity: str, detail: str):
+        super().__init__(f"{quantity} is not finite ({detail})")
+        self.quantity = quantity
+        self.detail = detail
+
+
+def _cycle_work(m: Moment, quantity: str) -> float:
+    """∮ M dφ [J]; NotFiniteError when the sum overflows (fsum raises on inf − inf)."""
+    try:
+        return m.work()
+    except (OverflowError, ValueError) as exc:
+        raise NotFiniteError(quantity, str(exc)) from None
+
+
 def _J_for(delta_T_max: float, omega_mean: float, delta: float) -> float:
     """J = ΔT_нб/(δ·ω_ср²) [kg·m²]: :func:`flywheel.dynamics.sizing.J_required_merzalov`
     (imported here: its module loads numpy)."""
@@ -188,8 +207,10 @@ def balance(make_D: Callable[[float], Moment], make_C: Callable[[float], Moment]
         known, make = make_C(1.0), make_D
     else:
         raise InputError(f"unknown moment must be 'driving' or 'resistance' (got {unknown!r})")
-    other = known.work()
-    w0, w1 = make(0.0).work(), make(1.0).work()
+    mine, theirs = (("work_resistance", "work_driving") if unknown == "resistance"
+                    else ("work_driving", "work_resistance"))
+    other = _cycle_work(known, theirs)
+    w0, w1 = _cycle_work(make(0.0), mine), _cycle_work(make(1.0), mine)
     if w1 == w0:
         raise InputError(f"the {unknown} moment's unknown value does not change its work: "
                          "the cycle balance cannot find it")
@@ -202,7 +223,8 @@ def balance(make_D: Callable[[float], Moment], make_C: Callable[[float], Moment]
     x = float(round(x, 12)) if abs(x - round(x, 12)) < 1e-12 * max(1.0, abs(x)) else x
     x += 0.0    # no −0.0
     if not math.isfinite(x):
-        raise OverflowError(f"the cycle balance gives a {unknown} moment of {x!r} N·m")
+        raise NotFiniteError("M_C" if unknown == "resistance" else "M_D",
+                             f"the cycle balance gives a {unknown} moment of {x!r} N·m")
     if x < 0.0:
         raise InputError(
             f"the cycle balance needs a negative {unknown} moment ({x:.6g} N·m): "
@@ -251,11 +273,12 @@ def _motion(bounds: list[float], kinds: list[str], A: list[float], J: float | No
             stop: Callable[[float, float], float] | None = None) -> dict:
     """ω at each row and the summary numbers (shared by graphs and area diagrams).
 
-    Raises OverflowError when a work is not finite (moments near the limit of double
+    Raises NotFiniteError when a work is not finite (moments near the limit of double
     precision): no extreme can be chosen among infinities.
     """
-    if not all(math.isfinite(a) for a in A):
-        raise OverflowError("the work A(φ) is not finite")
+    bad = next((i for i, a in enumerate(A) if not math.isfinite(a)), None)
+    if bad is not None:
+        raise NotFiniteError(f"segments[{bad}].A", f"the work A(φ) = {A[bad]!r} J")
     # the first of equal extremes (equal to 1e-12 of the swing: round-off must not choose)
     tol = 1e-12 * (max(A) - min(A))
     i_max = next(i for i, a in enumerate(A) if a >= max(A) - tol)
@@ -359,7 +382,7 @@ def solve(M_D: Moment, M_C: Moment, J: float | None = None, *, omega0: float | N
         acc += p.work(p.phi1)
     bounds.append(pieces[-1].phi1)
     kinds.append("bound")
-    W_D, W_C = M_D.work(), M_C.work()
+    W_D, W_C = _cycle_work(M_D, "work_driving"), _cycle_work(M_C, "work_resistance")
     # relative to the size of the moments (``size``), not to W_D, W_C: zero-mean moments
     # have works of pure round-off and are steady all the same
     scale = max(abs(W_D), abs(W_C), size(M_D) + size(M_C), 1e-300)
@@ -432,47 +455,6 @@ def solve_areas(energies: Sequence[float], J: float | None = None, *, cycle: flo
     return Task2Result(rows=rows, cycle=cycle, **res)
 
 
-# the reported numbers, in the order of the JSON document (flywheel.render.task2.to_dict)
-_REPORTED = ("omega_max", "omega_min", "omega_mean", "delta", "phi_omega_max", "phi_omega_min",
-             "delta_T_max", "M_C", "J_required", "M_D", "J", "omega0", "omega_end", "work_end",
-             "work_driving", "work_resistance", "power", "delta_target", "rim_radius",
-             "rim_mass")
-
-
-def nonfinite(result: Task2Result) -> str | None:
-    """``"name = inf"`` for the first reported number that is inf or NaN, else None.
-
-    Inputs near the limits of double precision (a moment of 1e308 N·m, ω0 = 1e200 rad/s) make
-    the formulas overflow; the caller turns this into one error line instead of printing
-    Infinity/NaN (which is not JSON). The rpm equivalents n = 30·ω/π are checked too. A row's
-    angle may be NaN by design (an area diagram without crossing angles), so only an infinite
-    angle counts.
-
-    >>> from flywheel.constant_inertia.graphs import constant, triangle
-    >>> nonfinite(solve(constant(15.0), triangle(60.0, math.pi/2, 3*math.pi/2), 12.0,
-    ...                 omega0=200.0)) is None
-    True
-    """
-    def bad(x) -> bool:
-        return isinstance(x, float) and not math.isfinite(x)
-
-    for name in _REPORTED:
-        v = getattr(result, name)
-        if bad(v) and not (name.startswith("phi_") and math.isnan(v)):
-            return f"{name} = {v!r}"
-    for name in ("omega0", "omega_max", "omega_min", "omega_mean"):
-        if bad(getattr(result, name) * (30.0 / math.pi)):
-            return f"rpm.{name} = inf"
-    for i, row in enumerate(result.rows):
-        if math.isinf(row.phi):
-            return f"segments[{i}].phi = {row.phi!r}"
-        for name in ("M_D", "M_C", "A", "omega"):
-            if bad(getattr(row, name)):
-                return f"segments[{i}].{name} = {getattr(row, name)!r}"
-    return None
-
-
-
 def sample(result: Task2Result, n: int = 1441) -> dict[str, list[float]]:
     """Curves for plotting: φ [rad], M_D, M_C [N·m], A [J], ω [rad/s] on n + the table's points.
 
@@ -502,5 +484,5 @@ def sample(result: Task2Result, n: int = 1441) -> dict[str, list[float]]:
 
 
 
-__all__ = ["BALANCE_RTOL", "Row", "Task2Result", "balance", "solve", "solve_areas", "nonfinite",
-           "sample", "check_positive"]
+__all__ = ["BALANCE_RTOL", "NotFiniteError", "Row", "Task2Result", "balance", "solve",
+           "solve_areas", "sample", "check_positive"]
