@@ -328,7 +328,9 @@ def test_stiff_slow_machine_is_checked_with_an_implicit_method(tmp_path):
     assert r.check_delta[1] == pytest.approx(r.steady.delta[1], rel=1e-3)
     assert r.startup.t[-1] == pytest.approx(MAX_FAST_PERIODS * 2 * math.pi / r.modes.omega[-1])
     assert len(r.notes) == 2
-    assert "Radau" in r.notes[0] and "start-up" in r.notes[1] and "(the cap)" in r.notes[1]
+    assert [n.kind for n in r.notes] == ["radau", "cap_linear"]
+    assert "Radau" in r.notes[0].text and "start-up" in r.notes[1].text
+    assert "(the cap)" in r.notes[1].text
     res = cli(_write(tmp_path, MIXER), "--json")
     assert res.exit_code == 0
     d = json.loads(res.stdout)
@@ -593,3 +595,81 @@ def test_non_finite_result_is_refused_by_the_one_policy(tmp_path, monkeypatch):
         assert err.startswith(f"error: {CASES / 'aggregate.toml'}: time_domain."
                               "start_up_peak_elastic_moment is not finite (inf): "), err
         assert err.count("\n") == 1 and "Infinity" not in res.output
+
+
+# -- --lang ru ---------------------------------------------------------------------------------
+
+def wide(*args, columns=250):
+    """`flywheel aggregate …` on a console wide enough that no cell wraps."""
+    from flywheel.cli import app
+
+    return runner.invoke(app, ["aggregate", *map(str, args)], env={"COLUMNS": str(columns)})
+
+
+def _numbers(text):
+    import re
+
+    return re.findall(r"-?\d+(?:\.\d+)?(?:e[+-]?\d+)?", text)
+
+
+@pytest.mark.parametrize("name", ["aggregate.toml", "aggregate_khurmi_three_rotor.toml"])
+def test_lang_ru_same_numbers_russian_labels(name):
+    args = [CASES / name, "--t-end", "0.2"]
+    en, ru = wide(*args), wide(*args, "--lang", "ru")
+    assert en.exit_code == 0 and ru.exit_code == 0, ru.output
+    for heading in ("Массы, приведённые к валу I", "Упругие связи, приведённые к валу I",
+                    "инерционные коэффициенты a_ij [кг·м²]", "коэффициенты жёсткости c_ij [Н·м/рад]",
+                    "Собственные частоты (K·x = ω²·M·x)", "твёрдое тело", "ω [рад/с]", "f [Гц]",
+                    "форма колебаний"):
+        assert heading in " ".join(ru.stdout.split()), heading      # titles may wrap
+    assert "Rotors reduced" not in ru.stdout and "Natural frequencies" not in ru.stdout
+    assert _numbers(ru.stdout) == _numbers(en.stdout) and len(_numbers(en.stdout)) > 20
+    assert cli(*args, "--json", "--lang", "ru").stdout == cli(*args, "--json").stdout
+
+
+def test_lang_ru_steady_state_and_start_up(tmp_path):
+    res = wide(CASES / "aggregate.toml", "--t-end", "0.2", "--lang", "ru", "--plot",
+               tmp_path / "ru.png")
+    assert res.exit_code == 0, res.output
+    out = " ".join(res.stdout.replace("│", " ").split())
+    for text in ("двигатель J_Д", "машина J_пр.I", "вынуждающая частота ω_III = ",
+                 "Отстройка от резонанса", "Установившийся режим",
+                 "упругий момент c·(φ1 − φ2) = −c·q2, среднее 80.7454 Н·м",
+                 "угол закручивания q2 = φ2 − φ1, среднее -0.0269151 рад",
+                 "пуск: наибольший упругий момент", "пуск: время до 95 % ω1", "δ двигателя",
+                 "график записан в"):
+        assert text in out, text
+    assert (tmp_path / "ru.png").stat().st_size > 10000
+
+
+def test_lang_ru_notes(tmp_path):
+    # the mixer's notes (Radau check, capped start-up) in Russian, with the English numbers
+    p = _write(tmp_path, MIXER)
+    en, ru = wide(p, columns=400), wide(p, "--lang", "ru", columns=400)
+    assert en.exit_code == 0 and ru.exit_code == 0
+    notes_en = [line for line in en.stdout.splitlines() if line.startswith("note: ")]
+    notes_ru = [line for line in ru.stdout.splitlines() if line.startswith("примечание: ")]
+    assert len(notes_en) == len(notes_ru) == 2
+    assert "неявным методом Radau" in notes_ru[0] and "пуск: проинтегрирован" in notes_ru[1]
+    assert [_numbers(x) for x in notes_ru] == [_numbers(x) for x in notes_en]
+
+
+def test_nomenclature_table_is_complete_and_consistent():
+    # every entry has both languages, the same template fields in each, and the notes print
+    # exactly the text the results document states
+    import string
+
+    from flywheel.elastic.model import NOTE_TEXT
+    from flywheel.render.nomenclature_ci import TERMS, UNITS_RU, text
+
+    def fields(template):
+        return sorted(f for _, f, _, _ in string.Formatter().parse(template) if f)
+
+    for key, term in TERMS.items():
+        assert term.en and term.ru, key
+        assert fields(term.en) == fields(term.ru), key
+        assert term.unit in UNITS_RU, key
+    for kind, template in NOTE_TEXT.items():
+        assert TERMS[f"note_{kind}"].en == template
+    assert text("note_radau", fast=12345.678, f_top=0.5, limit=500) == \
+        NOTE_TEXT["radau"].format(fast=12345.678, f_top=0.5, limit=500)

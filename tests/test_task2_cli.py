@@ -335,3 +335,87 @@ def test_unsteady_summary_prints_a_tiny_work_as_it_is():
     out = io.StringIO()
     print_summary(r, console=Console(file=out, width=200))
     assert "the work over the cycle is 6.28319e-13 J" in out.getvalue()
+
+
+# -- --lang ru ---------------------------------------------------------------------------------
+
+NUMBER = r"-?\d+(?:\.\d+)?(?:e[+-]?\d+)?"
+
+
+def _numbers(text, skip_title=True):
+    """Every number printed, in order; the title line (which names the seed in each language)
+    left out."""
+    import re
+
+    lines = text.splitlines()[1 if skip_title else 0:]
+    return re.findall(NUMBER, "\n".join(lines))
+
+
+@pytest.mark.parametrize("args", [[], ["--profile", "rectangle", "--delta", 0.05, "--mc", 50],
+                                  ["--case", CASES / "task2_khurmi_16_12.toml"],
+                                  ["--case", CASES / "task2_khurmi_16_4.toml"]])
+def test_lang_ru_same_numbers_russian_labels(args):
+    env = {"COLUMNS": "250"}
+    en = runner.invoke(app, ["task2", *map(str, args)], env=env)
+    ru = runner.invoke(app, ["task2", *map(str, args), "--lang", "ru"], env=env)
+    assert en.exit_code == 0 and ru.exit_code == 0, ru.output
+    for heading in ("Участки: ½·J_пр·(ω² − ω0²) = A(φ) = ∫(M_Д − M_С) dφ", "Результаты",
+                    "величина", "значение", "рад/с", "ω_ср = (ω_max + ω_min)/2", "ΔT_нб",
+                    "J_пр (приведённый момент инерции)"):
+        assert heading in ru.stdout, heading
+    for english in ("Segments", "Results", "quantity", "rad/s", "rpm", "reduced inertia"):
+        assert english not in ru.stdout, english
+    assert _numbers(ru.stdout) == _numbers(en.stdout)
+    assert len(_numbers(en.stdout)) > 30
+    # the JSON document is the same in every language
+    assert run(*args, "--json", "--lang", "ru").stdout == run(*args, "--json").stdout
+
+
+def test_lang_ru_seed_words():
+    res = run("--lang", "ru", "--profile", "rectangle", "--delta", 0.05)
+    assert res.exit_code == 0, res.output
+    out = " ".join(res.stdout.split())
+    for text in ("Задача 2 (seed 002), момент сопротивления — прямоугольник",
+                 "баланс работ за цикл ∮M_Д dφ = ∮M_С dφ даёт M_С = 60 Н·м",
+                 "граница", "об/мин при φ =", "мощность", "J_пр для δ = 0.05"):
+        assert text in out, text
+    res = run("--lang", "ru", "--mc", 50)
+    out = " ".join(res.stdout.split())
+    assert "движение не установившееся" in out and "M_Д = 15 Н·м, M_С = 50 Н·м (заданы)" in out
+    assert "│ M_Д = M_С │" in out and "треугольник" in out
+
+
+def test_lang_ru_plot_labels(tmp_path):
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    from flywheel.constant_inertia.preset import seed_task
+    from flywheel.render.task2 import plot
+
+    seen = {}
+    orig = plt.close
+
+    def keep(fig):
+        seen["fig"] = fig
+        orig(fig)
+
+    plt.close = keep
+    try:
+        plot(seed_task("triangle"), tmp_path / "ru.png", lang="ru")
+    finally:
+        plt.close = orig
+    axes = seen["fig"].axes
+    labels = [line.get_label() for ax in axes for line in ax.get_lines()]
+    assert "M_Д (движущий)" in labels and "M_С (сопротивления)" in labels
+    assert axes[2].get_xlabel() == "φ [град]" and axes[2].get_ylabel() == "ω [рад/с]"
+    res = run("--lang", "ru", "--plot", tmp_path / "cli.png")
+    assert res.exit_code == 0 and "график записан в" in res.stdout
+    assert (tmp_path / "cli.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+
+
+def test_lang_unknown_is_one_line():
+    res = run("--lang", "de")
+    assert res.exit_code == 2
+    assert err_text(res) == "error: --lang: 'de' is not a language (allowed: en, ru)\n"

@@ -22,6 +22,8 @@ def aggregate_command(
                                           "the motor or 20 forcing periods, whichever is longer, "
                                           "at most 2000 periods of the highest natural "
                                           "frequency)."),
+    lang: str = typer.Option("en", "--lang", help="Language of the summary and the plot: en | ru "
+                             "(the JSON is the same in every language)."),
 ) -> None:
     """Two-mass machine aggregate (seed 003) or a chain of rotors: coefficients a_ij, c_ij,
     natural frequencies, steady forced vibration, start-up."""
@@ -31,6 +33,10 @@ def aggregate_command(
     from flywheel.errors import InputError
 
     with guarded(source=case):      # an error of the analysis is prefixed with the case file
+        from flywheel.render.nomenclature_ci import LANGS, text
+
+        if lang not in LANGS:
+            raise InputError(f"--lang: {lang!r} is not a language (allowed: {', '.join(LANGS)})")
         if t_end is not None and not (math.isfinite(t_end) and t_end > 0):
             raise InputError(f"--t-end must be a positive number of seconds (got {t_end:g})")
         from flywheel.cases.aggregate import load_aggregate_case, to_model
@@ -47,7 +53,7 @@ def aggregate_command(
             from flywheel.render.aggregate import plot as draw
 
             try:
-                draw(result, plot, c.title)
+                draw(result, plot, c.title, lang)
             except (OSError, ValueError) as exc:
                 raise InputError(f"--plot {plot}: cannot write the image ({exc})") from None
     if json:
@@ -57,6 +63,6 @@ def aggregate_command(
     else:
         from flywheel.render.aggregate import print_summary
 
-        print_summary(result, c.title, c.source)
+        print_summary(result, c.title, c.source, lang=lang)
         if plot is not None:
-            typer.echo(f"plot written to {plot}")
+            typer.echo(text("plot_written", lang, path=plot))

@@ -64,7 +64,9 @@ def task2_command(
                                         "none of the options above."),
     plot: Optional[Path] = typer.Option(None, "--plot", help="Write a plot of M_D, M_C, A and "
                                         "ω(φ) to this image file (.png, .svg, .pdf)."),
-    as_json: bool = typer.Option(False, "--json", help="Print the results as JSON."),
+    as_json: bool = typer.Option(False, "--json", help="Print the results as JSON (the same "
+                                 "document in every language)."),
+    lang: str = typer.Option("en", "--lang", help="Language of the summary and the plot: en | ru."),
 ) -> None:
     """Task 2: ω_max, ω_min, ω_ср and δ of a machine with constant J under given M_D(φ), M_C(φ)."""
     import math
@@ -77,6 +79,10 @@ def task2_command(
                                        ("--from", start), ("--to", end), ("--mc", mc),
                                        ("--delta", delta)) if v is not None]
     with guarded():
+        from flywheel.render.nomenclature_ci import LANGS, text
+
+        if lang not in LANGS:
+            raise InputError(f"--lang: {lang!r} is not a language (allowed: {', '.join(LANGS)})")
         if plot is not None and plot.is_dir():
             raise InputError(f"--plot {plot}: is a folder, expected an image file")
         if case is not None:
@@ -92,6 +98,7 @@ def task2_command(
                 return solve_case(c, str(case))
 
             title, source = c.title, c.source
+            doc_title, doc_source = title, source
         else:
             from flywheel.constant_inertia.preset import SEED_DEFAULTS, seed_task
 
@@ -121,8 +128,11 @@ def task2_command(
                     end=None if end is None else math.radians(end),
                     M_C=mc, delta=delta)
 
-            title = f"Seed 002, {profile} resistance moment"
-            source = "seed 002_10afb132413d2537.txt"
+            # the JSON document is the same in every language; the summary and plot speak lang
+            doc_title = text("t2_seed_title", profile=profile)
+            doc_source = text("t2_seed_source")
+            title = text("t2_seed_title", lang, profile=text(profile, lang))
+            source = text("t2_seed_source", lang)
         from flywheel.constant_inertia.solve import NotFiniteError
 
         # inputs near the limits of double precision: no Infinity/NaN in the output (it is not
@@ -150,16 +160,16 @@ def task2_command(
             from flywheel.render.task2 import plot as draw
 
             try:
-                draw(result, plot, title)
+                draw(result, plot, title, lang)
             except (OSError, ValueError) as exc:
                 raise InputError(f"--plot {plot}: cannot write the image ({exc})") from None
     if as_json:
         from flywheel.render.task2 import to_json
 
-        typer.echo(to_json(result, title, source))
+        typer.echo(to_json(result, doc_title, doc_source))
     else:
         from flywheel.render.task2 import print_summary
 
-        print_summary(result, title, source)
+        print_summary(result, title, source, lang=lang)
         if plot is not None:
-            typer.echo(f"plot written to {plot}")
+            typer.echo(text("plot_written", lang, path=plot))

@@ -70,6 +70,39 @@ class Resonance:
     margin: float
 
 
+#: the notes' English text, as the results document states it (``AggregateResult.notes``)
+NOTE_TEXT = {
+    "radau": ("solve_ivp check: 5 forcing periods are {fast:.4g} periods of the highest natural "
+              "frequency {f_top:.6g} Hz, more than the explicit method's {limit}: integrated with "
+              "the implicit Radau method and the constant Jacobian, which follows the forced "
+              "motion but damps that mode's own oscillation"),
+    "cap_linear": ("start-up: integrated over {t_end:.4g} s = {limit} periods of the highest "
+                   "natural frequency {f_top:.6g} Hz (the cap), not the default {wanted:.4g} s "
+                   "(the longer of five time constants and 20 forcing periods); --t-end sets the "
+                   "duration"),
+    "cap_constant": ("start-up: integrated over {t_end:.4g} s = {limit} periods of the highest "
+                     "natural frequency {f_top:.6g} Hz (the cap), not the default {wanted:.4g} s "
+                     "(20 forcing periods); --t-end sets the duration"),
+}
+
+
+@dataclass(frozen=True)
+class Note:
+    """What the reader should know about how a time-domain run was bounded. kind : "radau" (the
+    steady check integrated implicitly), "cap_linear" or "cap_constant" (the start-up capped at
+    MAX_FAST_PERIODS periods of the highest natural frequency; by the motor's kind); values :
+    the numbers it states, (name, value) pairs: fast [periods], f_top [Hz], limit [periods],
+    t_end and wanted [s]."""
+
+    kind: str
+    values: tuple[tuple[str, float], ...]
+
+    @property
+    def text(self) -> str:
+        """The note in English, as the results document has it."""
+        return NOTE_TEXT[self.kind].format(**dict(self.values))
+
+
 def _f(x):
     return None if x is None else float(x)
 
@@ -86,7 +119,7 @@ class AggregateResult:
     check_delta : its δ of the motor and of the machine [1]; startup : the start-up run;
     startup_peak_moment : the largest |c·q2| during it [N·m]; startup_time : time to 95 % of the
     steady ω1 [s] (linear motor only, None if not reached); notes : what the reader should know
-    about how the time-domain runs were bounded.
+    about how the time-domain runs were bounded (:class:`Note`).
     """
 
     chain: Chain
@@ -102,7 +135,7 @@ class AggregateResult:
     startup: History | None = None
     startup_peak_moment: float | None = None     # [N·m]
     startup_time: float | None = None            # [s]
-    notes: tuple[str, ...] = ()
+    notes: tuple[Note, ...] = ()
 
     def to_document(self, title: str = "", source: str = "") -> dict:
         """The results document, the JSON of ``flywheel aggregate --json``: SI units, reduced to
@@ -170,7 +203,7 @@ class AggregateResult:
                     "start_up_time_to_95_percent": self.startup_time,
                     "steady_check_method": self.check.method,
                 }
-            d["notes"] = list(self.notes)
+            d["notes"] = [note.text for note in self.notes]
         return d
 
 
@@ -196,23 +229,17 @@ def analyze(ch: Chain, drive: Drive | None = None, t_end: float | None = None,
     f_top = modes.highest / (2 * math.pi)
     method, fast = steady_method(ch, st.omega_forcing, modes=modes)
     if method != "DOP853":
-        notes.append(
-            f"solve_ivp check: 5 forcing periods are {fast:.4g} periods of the highest natural "
-            f"frequency {f_top:.6g} Hz, more than the explicit method's {CHECK_FAST_PERIODS}: "
-            f"integrated with the implicit Radau method and the constant Jacobian, which follows "
-            f"the forced motion but damps that mode's own oscillation")
+        notes.append(Note("radau", (("fast", fast), ("f_top", f_top),
+                                    ("limit", CHECK_FAST_PERIODS))))
     chk = steady_run(ch, drive, st, modes=modes)
     ch_twist = _amplitude(chk.twist[0])
     ch_delta = tuple(float(2 * _amplitude(chk.omega[k]) / st.omega_mean) for k in (0, -1))
     if t_end is None:
         t_end, wanted = start_up_duration(ch, drive, modes)
         if t_end < wanted:
-            why = ("the longer of five time constants and 20 forcing periods"
-                   if drive.kind == "linear" else "20 forcing periods")
-            notes.append(
-                f"start-up: integrated over {t_end:.4g} s = {MAX_FAST_PERIODS} periods of the "
-                f"highest natural frequency {f_top:.6g} Hz (the cap), not the default "
-                f"{wanted:.4g} s ({why}); --t-end sets the duration")
+            notes.append(Note("cap_linear" if drive.kind == "linear" else "cap_constant",
+                              (("t_end", t_end), ("limit", MAX_FAST_PERIODS), ("f_top", f_top),
+                               ("wanted", wanted))))
     su = start_up(ch, drive, t_end, modes=modes)
     peak = float(np.max(np.abs(ch.c[0] * su.twist[0])))
     reached = np.nonzero(su.omega[0] >= 0.95 * st.omega_mean)[0]
@@ -221,4 +248,4 @@ def analyze(ch: Chain, drive: Drive | None = None, t_end: float | None = None,
                            tuple(notes))
 
 
-__all__ = ["Resonance", "AggregateResult", "analyze"]
+__all__ = ["Resonance", "Note", "AggregateResult", "analyze"]
