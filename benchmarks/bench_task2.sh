@@ -1,5 +1,7 @@
 #!/usr/bin/env bash
-# Whole-process time of `flywheel task2 --json` (issue 4: under 0.4 s).
+# Whole-process time of `flywheel task2 --json` (issue 4: under 0.4 s), also with --delta (the
+# J for δ comes from flywheel.dynamics.sizing, whose module loads numpy: only then) and of the
+# Russian summary (rich's table on top).
 # Run by hand or in CI from the repository root with the venv active:
 #     bash benchmarks/bench_task2.sh [runs]
 # Prints the machine (nproc, uname -m, python version), every run's wall time and the median.
@@ -7,7 +9,8 @@ set -euo pipefail
 runs=${1:-10}
 echo "machine: $(nproc) CPUs, $(uname -m), $(python --version 2>&1)"
 for args in "task2 --json" "task2 --profile rectangle --json" \
-            "task2 --case cases/task2_khurmi_16_12.toml --json"; do
+            "task2 --case cases/task2_khurmi_16_12.toml --json" "task2 --delta 0.05 --json" \
+            "task2 --lang ru"; do
   times=()
   flywheel $args > /dev/null   # warm the file cache
   for _ in $(seq "$runs"); do

@@ -1,4 +1,4 @@
-"""flywheel.constant_inertia.solve and its case format: seed 002, closed forms, textbook problems.
+"""flywheel.constant_inertia (graphs, crossings, solve, the seed preset) and its case format: seed 002, closed forms, textbook problems.
 
 Reference values: the seed's printed numbers sit in comments next to the exact values asserted;
 where the seed is wrong (its crossings, ω4 = ω5 = 199.91, δ printed as 0) the test says so.
@@ -9,7 +9,11 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from flywheel.constant_inertia import solve as t2
+from flywheel.constant_inertia.crossings import crossings
+from flywheel.constant_inertia.graphs import Piece, constant, harmonic, piecewise_linear, triangle
+from flywheel.constant_inertia.preset import seed_task
+from flywheel.constant_inertia.solve import (NotFiniteError, balance, sample, solve,
+                                            solve_areas)
 from flywheel.errors import CaseFileError, InputError
 from flywheel.cases.task2 import load_task2_case, parse_task2_case, solve_case
 
@@ -46,7 +50,7 @@ def omega_numeric(A, J=12.0, w0=200.0):
 @pytest.mark.parametrize("profile", ["triangle", "rectangle"])
 def test_seed_balance_gives_60(profile):
     # seed: M_C := 4·M_D = 60 Н·м in both tasks (M_D·2π = M_C·π/2)
-    r = t2.seed_task(profile)
+    r = seed_task(profile)
     assert r.M_C == pytest.approx(60.0, rel=1e-15)
     assert r.unknown == "resistance"
     assert r.steady
@@ -58,7 +62,7 @@ def _triangle_mc(x):
 
 
 def test_seed_triangle_crossings_are_5pi_8_and_11pi_8():
-    r = t2.seed_task("triangle")
+    r = seed_task("triangle")
     phis = [row.phi for row in r.rows]
     assert phis == pytest.approx([0, PI / 2, 5 * PI / 8, PI, 11 * PI / 8, 3 * PI / 2, 2 * PI],
                                  abs=1e-14)
@@ -74,7 +78,7 @@ def test_seed_triangle_crossings_are_5pi_8_and_11pi_8():
                                         ("rectangle", lambda x: np.where(
                                             (x >= PI / 2) & (x < PI), 60.0, 0.0))])
 def test_seed_omega_at_every_row_matches_numerical_integration(profile, mc):
-    r = t2.seed_task(profile)
+    r = seed_task(profile)
     for row in r.rows:
         A = numeric_A(lambda x: np.full_like(x, 15.0), mc, row.phi,
                       jumps=(PI / 2, PI, 3 * PI / 2))
@@ -83,7 +87,7 @@ def test_seed_omega_at_every_row_matches_numerical_integration(profile, mc):
 
 
 def test_seed_triangle_numbers():
-    r = t2.seed_task("triangle")
+    r = seed_task("triangle")
     w = [row.omega for row in r.rows]
     # seed: ω1 = 200.01, ω2 = 200.01 (at its wrong φ2), ω3 = 200
     assert w[1] == pytest.approx(math.sqrt(200 ** 2 + 2 * 15 * (PI / 2) / 12), rel=1e-15)
@@ -104,7 +108,7 @@ def test_seed_triangle_numbers():
 
 
 def test_seed_rectangle_numbers():
-    r = t2.seed_task("rectangle")
+    r = seed_task("rectangle")
     assert [row.phi for row in r.rows] == pytest.approx([0, PI / 2, PI, 2 * PI], abs=1e-15)
     # seed: ω1 = 200.01, ω2 = 199.98, ω_ср := ω0 = 200 (it should be (ω_max + ω_min)/2)
     assert r.omega_max == pytest.approx(math.sqrt(40000 + 2 * 7.5 * PI / 12), rel=1e-15)
@@ -116,7 +120,7 @@ def test_seed_rectangle_numbers():
 
 
 def test_seed_given_peak_is_not_steady():
-    r = t2.seed_task("triangle", M_C=50.0)
+    r = seed_task("triangle", M_C=50.0)
     assert not r.steady
     # A(2π) = 15·2π − 50·π/2 = 5π
     assert r.work_end == pytest.approx(5 * PI, rel=1e-14)
@@ -125,14 +129,14 @@ def test_seed_given_peak_is_not_steady():
 
 def test_seed_machine_that_stops():
     with pytest.raises(InputError, match="stops at φ = "):
-        t2.seed_task("rectangle", M_C=200000.0, omega0=1.0)
+        seed_task("rectangle", M_C=200000.0, omega0=1.0)
 
 
 def test_seed_delta_asks_for_J():
-    r = t2.seed_task("triangle", delta=1e-5)
+    r = seed_task("triangle", delta=1e-5)
     assert r.J_required == pytest.approx(r.delta_T_max / (1e-5 * r.omega_mean ** 2), rel=1e-15)
     # with that J at the same mean speed the motion has exactly that δ
-    again = t2.solve(r.driving, r.resistance, r.J_required, omega_mean=r.omega_mean)
+    again = solve(r.driving, r.resistance, r.J_required, omega_mean=r.omega_mean)
     assert again.delta == pytest.approx(1e-5, rel=1e-12)
 
 
@@ -146,18 +150,18 @@ def test_seed_delta_asks_for_J():
 ])
 def test_seed_bad_input(kw, match):
     with pytest.raises(InputError, match=match):
-        t2.seed_task("triangle", **kw)
+        seed_task("triangle", **kw)
 
 
 # -- closed forms -------------------------------------------------------------------------------
 
 def test_constant_moments_closed_form():
     # M_D − M_C = 10 N·m throughout: ω² = ω0² + 2·10·φ/J
-    r = t2.solve(t2.constant(30.0), t2.constant(20.0), 2.0, omega0=10.0)
+    r = solve(constant(30.0), constant(20.0), 2.0, omega0=10.0)
     assert not r.steady
     assert r.omega_end == pytest.approx(math.sqrt(100 + 20 * PI), rel=1e-15)
     assert r.omega_max == r.omega_end and r.omega_min == 10.0
-    r = t2.solve(t2.constant(20.0), t2.constant(20.0), 2.0, omega0=10.0)
+    r = solve(constant(20.0), constant(20.0), 2.0, omega0=10.0)
     assert r.steady and r.delta == 0.0 and r.delta_T_max == 0.0
 
 
@@ -165,12 +169,12 @@ def test_constant_moments_closed_form():
 def test_single_harmonic_closed_form(a):
     # M_D − M_C = a·sin φ  →  ω² = ω0² + 2a(1 − cos φ)/J
     J, w0 = 3.0, 5.0
-    r = t2.solve(t2.harmonic(100.0, [a]), t2.constant(100.0), J, omega0=w0)
+    r = solve(harmonic(100.0, [a]), constant(100.0), J, omega0=w0)
     assert r.steady
     for row in r.rows:
         assert row.omega == pytest.approx(math.sqrt(w0 ** 2 + 2 * a * (1 - math.cos(row.phi)) / J),
                                           rel=1e-14)
-    s = t2.sample(r, 181)
+    s = sample(r, 181)
     for phi, w in zip(s["phi"], s["omega"]):
         assert w == pytest.approx(math.sqrt(w0 ** 2 + 2 * a * (1 - math.cos(phi)) / J), rel=1e-14)
     assert [row.kind for row in r.rows] == ["bound", "crossing", "bound"]
@@ -181,19 +185,19 @@ def test_single_harmonic_closed_form(a):
 
 def test_harmonic_crossings_found_robustly():
     # 1500·sin 3φ: crossings at every 60°
-    r = t2.solve(t2.harmonic(5000.0, [1500.0], orders=[3]), t2.constant(5000.0), 1000.0,
+    r = solve(harmonic(5000.0, [1500.0], orders=[3]), constant(5000.0), 1000.0,
                  omega0=31.4)
     inner = [math.degrees(row.phi) for row in r.rows if row.kind == "crossing"]
     assert inner == pytest.approx([60, 120, 180, 240, 300], abs=1e-10)
     # a pair of close roots: sin φ·(cos φ − 0.999) crosses at ±2.56°
-    p = t2.Piece(0.0, 2 * PI, 0.0, 0.0, ((1, -0.999, 0.0), (2, 0.5, 0.0)))
-    roots = t2.crossings(p)
+    p = Piece(0.0, 2 * PI, 0.0, 0.0, ((1, -0.999, 0.0), (2, 0.5, 0.0)))
+    roots = crossings(p)
     c = math.degrees(math.acos(0.999))
     assert [math.degrees(x) for x in roots] == pytest.approx([c, 180, 360 - c], abs=1e-9)
 
 
 def test_mean_speed_is_exact():
-    r = t2.solve(t2.constant(15.0), t2.triangle(60.0, PI / 2, 3 * PI / 2), 12.0,
+    r = solve(constant(15.0), triangle(60.0, PI / 2, 3 * PI / 2), 12.0,
                  omega_mean=50.0)
     assert r.omega_mean == 50.0
     assert 0.5 * (r.omega_max + r.omega_min) == pytest.approx(50.0, rel=1e-15)
@@ -202,16 +206,16 @@ def test_mean_speed_is_exact():
 
 def test_library_errors():
     with pytest.raises(InputError, match="must not decrease"):
-        t2.piecewise_linear([(0, 0), (2, 1), (1, 1), (2 * PI, 0)])
+        piecewise_linear([(0, 0), (2, 1), (1, 1), (2 * PI, 0)])
     with pytest.raises(InputError, match="must span the cycle"):
-        t2.piecewise_linear([(0, 0), (PI, 1)])
+        piecewise_linear([(0, 0), (PI, 1)])
     with pytest.raises(InputError, match="negative resistance"):
-        t2.balance(lambda x: t2.constant(100.0),
-                   lambda x: t2.triangle(x, 1.0, 2.0, base=200.0), "resistance")
+        balance(lambda x: constant(100.0),
+                   lambda x: triangle(x, 1.0, 2.0, base=200.0), "resistance")
     with pytest.raises(InputError, match="sum to"):
-        t2.solve_areas([1.0, -2.0], J=1.0, omega0=1.0)
+        solve_areas([1.0, -2.0], J=1.0, omega0=1.0)
     with pytest.raises(InputError, match="mean speed needs steady"):
-        t2.solve(t2.constant(2.0), t2.constant(1.0), 1.0, omega_mean=10.0)
+        solve(constant(2.0), constant(1.0), 1.0, omega_mean=10.0)
 
 
 # -- the case files -------------------------------------------------------------------------------
@@ -219,7 +223,7 @@ def test_library_errors():
 @pytest.mark.parametrize("name,profile", [("task2_seed_triangle.toml", "triangle"),
                                           ("task2_seed_rectangle.toml", "rectangle")])
 def test_seed_case_files_equal_the_command_defaults(name, profile):
-    a, b = solve_file(name), t2.seed_task(profile)
+    a, b = solve_file(name), seed_task(profile)
     assert a.M_C == 60.0
     assert [r.omega for r in a.rows] == [r.omega for r in b.rows]
     assert a.delta == b.delta
@@ -433,16 +437,16 @@ def test_zero_mean_moments_are_steady(speed):
 def test_balance_of_a_zero_mean_moment_is_zero(a, b):
     # ∮ (a sin 2φ + b cos 2φ) dφ = 0: the constant that balances it is 0, not a negative
     # round-off (−1.95e-10 N·m for a = 3e6, b = 5e6) nor −0.0
-    x = t2.balance(lambda x: t2.harmonic(0.0, [a], [b], orders=[2]), lambda x: t2.constant(x),
+    x = balance(lambda x: harmonic(0.0, [a], [b], orders=[2]), lambda x: constant(x),
                    "resistance")
     assert x == 0.0 and math.copysign(1.0, x) == 1.0
-    r = t2.solve(t2.harmonic(0.0, [a], [b], orders=[2]), t2.constant(x), 1e6, omega_mean=50.0)
+    r = solve(harmonic(0.0, [a], [b], orders=[2]), constant(x), 1e6, omega_mean=50.0)
     assert r.steady
 
 
 def test_small_but_real_cycle_work_is_not_steady():
     # the tolerance scales with the moments, not with the absolute size of the work
-    r = t2.solve(t2.harmonic(1e-6, [1e-3], orders=[2]), t2.constant(0.0), 1.0, omega0=1.0)
+    r = solve(harmonic(1e-6, [1e-3], orders=[2]), constant(0.0), 1.0, omega0=1.0)
     assert not r.steady
     assert r.work_end == pytest.approx(2e-6 * PI, rel=1e-9)
 
@@ -453,18 +457,18 @@ def test_small_but_real_cycle_work_is_not_steady():
 def test_close_harmonic_crossings(a1, a2):
     # a1 sin φ + a2 sin 2φ = sin φ·(a1 + 2a2 cos φ): roots at 180° and at cos φ = −a1/(2a2),
     # three roots within 5.2° (old sampling found one of them for a1 = a2·2·0.999 > 0)
-    p = t2.Piece(0.0, 2 * PI, 0.0, 0.0, ((1, a1, 0.0), (2, a2, 0.0)))
+    p = Piece(0.0, 2 * PI, 0.0, 0.0, ((1, a1, 0.0), (2, a2, 0.0)))
     c = math.degrees(math.acos(-a1 / (2 * a2)))
     want = sorted([c, 180.0, 360.0 - c])
-    assert [math.degrees(x) for x in t2.crossings(p)] == pytest.approx(want, abs=1e-9)
-    for x in t2.crossings(p):
+    assert [math.degrees(x) for x in crossings(p)] == pytest.approx(want, abs=1e-9)
+    for x in crossings(p):
         assert p.value(x) == pytest.approx(0.0, abs=1e-14)
 
 
 def test_close_crossings_are_extremes_of_the_motion():
     # the repro: M_D − M_C = 0.999 sin φ + 0.5 sin 2φ; A = 0.999(1 − cos φ) + 0.25(1 − cos 2φ)
     # is largest at 177.437° and 182.563° (equal) and has a local minimum at 180°
-    r = t2.solve(t2.harmonic(10.0, [0.999, 0.5]), t2.constant(10.0), 1.0, omega0=10.0)
+    r = solve(harmonic(10.0, [0.999, 0.5]), constant(10.0), 1.0, omega0=10.0)
     inner = [math.degrees(row.phi) for row in r.rows if row.kind == "crossing"]
     c = math.degrees(math.acos(-0.999))
     assert inner == pytest.approx([c, 180, 360 - c], abs=1e-9)
@@ -476,45 +480,63 @@ def test_close_crossings_are_extremes_of_the_motion():
 
 def test_tangent_zeros_are_not_crossings():
     # 1 − cos 2φ touches 0 at 180° without changing sign: no crossing
-    assert t2.crossings(t2.Piece(0.0, 2 * PI, 1.0, 0.0, ((2, 0.0, -1.0),))) == []
+    assert crossings(Piece(0.0, 2 * PI, 1.0, 0.0, ((2, 0.0, -1.0),))) == []
     # sin φ + ½ sin 2φ = sin φ·(1 + cos φ): a triple zero at 180° that changes sign once
-    roots = t2.crossings(t2.Piece(0.0, 2 * PI, 0.0, 0.0, ((1, 1.0, 0.0), (2, 0.5, 0.0))))
+    roots = crossings(Piece(0.0, 2 * PI, 0.0, 0.0, ((1, 1.0, 0.0), (2, 0.5, 0.0))))
     assert len(roots) == 1 and roots[0] == pytest.approx(PI, abs=1e-4)
 
 
 def test_linear_plus_harmonic_close_crossings_match_dense_sampling():
     # a sloped piece (a line against a harmonic) with three roots 0.014 rad apart:
     # compared with the sign changes on a grid 1e-6 rad apart
-    p = t2.Piece(2.0, 4.5, -1e-6 * (PI - 2.0), 1e-6, ((1, 0.9999, 0.0), (2, 0.5, 0.0)))
+    p = Piece(2.0, 4.5, -1e-6 * (PI - 2.0), 1e-6, ((1, 0.9999, 0.0), (2, 0.5, 0.0)))
     x = np.linspace(p.phi0, p.phi1, 2_500_001)
     f = p.m0 + p.slope * (x - p.phi0) + 0.9999 * np.sin(x) + 0.5 * np.sin(2 * x)
     i = np.nonzero(np.sign(f[1:]) != np.sign(f[:-1]))[0]
     want = x[i] - f[i] * (x[i + 1] - x[i]) / (f[i + 1] - f[i])
     assert len(want) == 3
-    assert t2.crossings(p) == pytest.approx(list(want), abs=1e-9)
+    assert crossings(p) == pytest.approx(list(want), abs=1e-9)
 
 
 def test_crossings_of_many_orders():
     # sin 7φ over 720°: a root every 180°/7 inside (27 of them), all simple
-    p = t2.Piece(0.0, 4 * PI, 0.0, 0.0, ((7, 1.0, 0.0),))
-    got = t2.crossings(p)
+    p = Piece(0.0, 4 * PI, 0.0, 0.0, ((7, 1.0, 0.0),))
+    got = crossings(p)
     assert got == pytest.approx([i * PI / 7 for i in range(1, 28)], abs=1e-12)
 
 
 # -- non-finite results ----------------------------------------------------------------------------
 
 def test_nonfinite_names_the_first_quantity():
-    r = t2.seed_task("triangle")
-    assert t2.nonfinite(r) is None
+    # the one non-finite policy looks at the results document, which is what gets printed
+    from flywheel.cli.guard import first_nonfinite
+
+    r = seed_task("triangle")
+    assert first_nonfinite(r.to_document()) is None
     import dataclasses
 
     bad = dataclasses.replace(r, omega_max=math.inf)
-    assert t2.nonfinite(bad) == "omega_max = inf"
+    assert first_nonfinite(bad.to_document()) == ("omega_max", math.inf)
     rows = list(r.rows)
     rows[3] = dataclasses.replace(rows[3], A=math.nan)
-    assert t2.nonfinite(dataclasses.replace(r, rows=tuple(rows))) == "segments[3].A = nan"
+    hit = first_nonfinite(dataclasses.replace(r, rows=tuple(rows)).to_document())
+    assert hit[0] == "segments[3].A" and math.isnan(hit[1])
+    # rev/min too: ω0 = 1e308 rad/s is finite, 30·ω0/π is not
+    hit = first_nonfinite(dataclasses.replace(r, omega0=1e308).to_document())
+    assert hit == ("rpm.omega0", math.inf)
     # an area diagram without crossing angles has NaN angles by design: not an overflow
-    assert t2.nonfinite(t2.solve_areas([1.0, -1.0], J=1.0, omega0=1.0)) is None
+    assert first_nonfinite(solve_areas([1.0, -1.0], J=1.0, omega0=1.0).to_document()) is None
+
+
+def test_overflow_inside_the_computation_names_the_quantity():
+    # moments near the limit of double precision: the cycle balance and the works cannot be
+    # stated; the error names the quantity as the document would
+    with pytest.raises(NotFiniteError) as e:
+        seed_task("triangle", M_D=1e308)
+    assert e.value.quantity == "M_C" and "inf N·m" in e.value.detail
+    with pytest.raises(NotFiniteError) as e:
+        solve(constant(1e308), triangle(1e308, 0.0, 1e-300), 1.0, omega0=1.0)
+    assert e.value.quantity == "work_resistance"         # a slope of 1e308/5e-301 = inf
 
 
 def test_readme_example_press():

@@ -94,10 +94,10 @@ def test_plot_structure():
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    from flywheel.constant_inertia import solve as t2
+    from flywheel.constant_inertia.preset import seed_task
     from flywheel.render.task2 import plot
 
-    r = t2.seed_task("triangle")
+    r = seed_task("triangle")
     seen = {}
     orig = plt.close
 
@@ -256,18 +256,21 @@ def test_help_shows_the_units():
         assert unit in text, unit
 
 
-OVERFLOW = "the values overflow"
+OVERFLOW = ("is not finite", "the values overflow double precision")
 
 
+# one non-finite policy (cli.guard.not_finite): "who: <quantity> is not finite (…): the values
+# overflow …" — the options or fields to blame, the quantity as the JSON names it, what happened
 @pytest.mark.parametrize("args,match", [
-    (["--md", 1e308], (f"error: --md 1e+308: {OVERFLOW} (the cycle balance gives a "
-                       "resistance moment of inf N·m)")),
-    (["--md", 1e308, "--profile", "rectangle"], f"error: --md 1e+308: {OVERFLOW} ("),
-    (["--omega0", 1e200], f"error: --omega0 1e+200: {OVERFLOW} (omega_max = inf)"),
-    (["--delta", 1e-320], f"error: --delta 9.99989e-321: {OVERFLOW} (J_required = inf)"),
-    (["--from", 1e-300, "--to", 1e-299], f"error: --from 1e-300, --to 1e-299: {OVERFLOW} ("),
+    (["--md", 1e308], ("error: --md 1e+308: M_C is not finite (the cycle balance gives a "
+                       "resistance moment of inf N·m): ")),
+    (["--md", 1e308, "--profile", "rectangle"], "error: --md 1e+308: M_C is not finite ("),
+    (["--omega0", 1e200], "error: --omega0 1e+200: omega_max is not finite (inf): "),
+    (["--delta", 1e-320], "error: --delta 9.99989e-321: J_required is not finite (inf): "),
+    (["--from", 1e-300, "--to", 1e-299], "error: --from 1e-300, --to 1e-299: work_resistance is "
+                                         "not finite ("),
     (["--mc", 1e308, "--omega0", 1e308],
-     f"error: --omega0 1e+308, --mc 1e+308: {OVERFLOW} (omega_max = inf)"),
+     "error: --omega0 1e+308, --mc 1e+308: omega_max is not finite (inf): "),
 ])
 def test_overflow_is_one_line(args, match):
     for extra in ([], ["--json"]):
@@ -275,6 +278,7 @@ def test_overflow_is_one_line(args, match):
         assert res.exit_code == 2, res.output
         err = err_text(res)
         assert err.startswith(match), err
+        assert OVERFLOW[1] in err
         assert err.count("\n") == 1 and "Infinity" not in res.output and "NaN" not in res.output
 
 
@@ -289,7 +293,7 @@ peak = "balance"
     assert res.exit_code == 2, res.output
     err = err_text(res)
     assert err.startswith("error: ") and err.count("\n") == 1
-    assert "c.toml: driving.value: the values overflow (" in err, err
+    assert "c.toml: driving.value: M_C is not finite (" in err and OVERFLOW[1] in err, err
 
 
 @pytest.mark.parametrize("args", [["--profile", "rectangle"], ["--profile", "triangle"],
@@ -322,11 +326,96 @@ def test_unsteady_summary_prints_a_tiny_work_as_it_is():
 
     from rich.console import Console
 
-    from flywheel.constant_inertia import solve as t2
+    from flywheel.constant_inertia.graphs import constant
+    from flywheel.constant_inertia.solve import solve
     from flywheel.render.task2 import print_summary
 
-    r = t2.solve(t2.constant(1e-13), t2.constant(0.0), 1.0, omega0=1.0)
+    r = solve(constant(1e-13), constant(0.0), 1.0, omega0=1.0)
     assert not r.steady
     out = io.StringIO()
     print_summary(r, console=Console(file=out, width=200))
     assert "the work over the cycle is 6.28319e-13 J" in out.getvalue()
+
+
+# -- --lang ru ---------------------------------------------------------------------------------
+
+NUMBER = r"-?\d+(?:\.\d+)?(?:e[+-]?\d+)?"
+
+
+def _numbers(text, skip_title=True):
+    """Every number printed, in order; the title line (which names the seed in each language)
+    left out."""
+    import re
+
+    lines = text.splitlines()[1 if skip_title else 0:]
+    return re.findall(NUMBER, "\n".join(lines))
+
+
+@pytest.mark.parametrize("args", [[], ["--profile", "rectangle", "--delta", 0.05, "--mc", 50],
+                                  ["--case", CASES / "task2_khurmi_16_12.toml"],
+                                  ["--case", CASES / "task2_khurmi_16_4.toml"]])
+def test_lang_ru_same_numbers_russian_labels(args):
+    env = {"COLUMNS": "250"}
+    en = runner.invoke(app, ["task2", *map(str, args)], env=env)
+    ru = runner.invoke(app, ["task2", *map(str, args), "--lang", "ru"], env=env)
+    assert en.exit_code == 0 and ru.exit_code == 0, ru.output
+    for heading in ("Участки: ½·J_пр·(ω² − ω0²) = A(φ) = ∫(M_Д − M_С) dφ", "Результаты",
+                    "величина", "значение", "рад/с", "ω_ср = (ω_max + ω_min)/2", "ΔT_нб",
+                    "J_пр (приведённый момент инерции)"):
+        assert heading in ru.stdout, heading
+    for english in ("Segments", "Results", "quantity", "rad/s", "rpm", "reduced inertia"):
+        assert english not in ru.stdout, english
+    assert _numbers(ru.stdout) == _numbers(en.stdout)
+    assert len(_numbers(en.stdout)) > 30
+    # the JSON document is the same in every language
+    assert run(*args, "--json", "--lang", "ru").stdout == run(*args, "--json").stdout
+
+
+def test_lang_ru_seed_words():
+    res = run("--lang", "ru", "--profile", "rectangle", "--delta", 0.05)
+    assert res.exit_code == 0, res.output
+    out = " ".join(res.stdout.split())
+    for text in ("Задача 2 (seed 002), момент сопротивления — прямоугольник",
+                 "баланс работ за цикл ∮M_Д dφ = ∮M_С dφ даёт M_С = 60 Н·м",
+                 "граница", "об/мин при φ =", "мощность", "J_пр для δ = 0.05"):
+        assert text in out, text
+    res = run("--lang", "ru", "--mc", 50)
+    out = " ".join(res.stdout.split())
+    assert "движение не установившееся" in out and "M_Д = 15 Н·м, M_С = 50 Н·м (заданы)" in out
+    assert "│ M_Д = M_С │" in out and "треугольник" in out
+
+
+def test_lang_ru_plot_labels(tmp_path):
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    from flywheel.constant_inertia.preset import seed_task
+    from flywheel.render.task2 import plot
+
+    seen = {}
+    orig = plt.close
+
+    def keep(fig):
+        seen["fig"] = fig
+        orig(fig)
+
+    plt.close = keep
+    try:
+        plot(seed_task("triangle"), tmp_path / "ru.png", lang="ru")
+    finally:
+        plt.close = orig
+    axes = seen["fig"].axes
+    labels = [line.get_label() for ax in axes for line in ax.get_lines()]
+    assert "M_Д (движущий)" in labels and "M_С (сопротивления)" in labels
+    assert axes[2].get_xlabel() == "φ [град]" and axes[2].get_ylabel() == "ω [рад/с]"
+    res = run("--lang", "ru", "--plot", tmp_path / "cli.png")
+    assert res.exit_code == 0 and "график записан в" in res.stdout
+    assert (tmp_path / "cli.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+
+
+def test_lang_unknown_is_one_line():
+    res = run("--lang", "de")
+    assert res.exit_code == 2
+    assert err_text(res) == "error: --lang: 'de' is not a language (allowed: en, ru)\n"

@@ -140,7 +140,7 @@ def _describe(err: dict) -> str:
 
 def _stiffness(s: Shaft, where: str) -> tuple[float, float]:
     """(stiffness reduced to the shaft's input speed, gear ratio)."""
-    from flywheel.elastic.model import series_stiffness, shaft_stiffness
+    from flywheel.elastic.chain import series_stiffness, shaft_stiffness
 
     direct = [k for k in ("c", "d", "L") if getattr(s, k) is not None]
     if s.segments is not None and direct:
@@ -171,7 +171,7 @@ def _stiffness(s: Shaft, where: str) -> tuple[float, float]:
 
 
 def _motor(m: Motor, M0: float, forcing_ratio: float, amplitude: float, chain_form: bool):
-    from flywheel.elastic.model import Drive, starting_torque_from_rated
+    from flywheel.elastic.chain import Drive, starting_torque_from_rated
 
     if chain_form and m.J is not None:
         raise FieldError("motor.J", "in a chain the first rotor is the motor: give its J in rotors[0]")
@@ -211,7 +211,7 @@ def _motor(m: Motor, M0: float, forcing_ratio: float, amplitude: float, chain_fo
 
 def build(case: AggregateCase):
     """(Chain, Drive or None) from a validated case; raises FieldError with the field path."""
-    from flywheel.elastic.model import chain, mean_reduced_inertia, reduced_inertia_I
+    from flywheel.elastic.chain import chain, mean_reduced_inertia, reduced_inertia_I
 
     two_mass = [k for k in ("coupling", "machine") if getattr(case, k) is not None]
     chain_keys = [k for k in ("rotors", "shafts", "load") if getattr(case, k) is not None]

@@ -16,7 +16,8 @@ from typing import Annotated, ClassVar, Literal, Union
 
 from pydantic import Field, Strict, field_validator
 
-from flywheel.constant_inertia import solve as t2
+from flywheel.constant_inertia import graphs
+from flywheel.constant_inertia.solve import BALANCE_RTOL, Task2Result, balance, solve, solve_areas
 from flywheel.errors import CaseFileError, InputError
 from flywheel.io.schema import FieldError, StrictModel, load, validate, clean_loc, describe, loc_str, pick
 
@@ -301,7 +302,7 @@ def _check_diagram(d: Diagram, cycle: float) -> None:
     if len(vals) < 2:
         raise FieldError(f"diagram.{key}", "needs at least two areas")
     total, size = math.fsum(vals), math.fsum(abs(v) for v in vals)
-    if abs(total) > t2.BALANCE_RTOL * size:
+    if abs(total) > BALANCE_RTOL * size:
         raise FieldError(f"diagram.{key}", f"sum to {total:.6g}, not 0: over a cycle the areas above "
                    "and below the mean line must be equal")
     if d.crossings_deg is not None:
@@ -336,22 +337,22 @@ def _maker(g, cycle: float):
         return x if v == BALANCE else float(v)
 
     if isinstance(g, ConstantGraph):
-        return lambda x: t2.constant(num(g.value, x), cycle)
+        return lambda x: graphs.constant(num(g.value, x), cycle)
     if isinstance(g, PointsGraph):
         def make(x):
             s = num(g.scale, x)
-            return t2.piecewise_linear([(r(p), s * m) for p, m in g.points], cycle,
+            return graphs.piecewise_linear([(r(p), s * m) for p, m in g.points], cycle,
                                        nominal=s * max(m for _, m in g.points))
         return make
     if isinstance(g, TriangleGraph):
-        return lambda x: t2.triangle(num(g.peak, x), r(g.from_deg), r(g.to_deg), cycle,
+        return lambda x: graphs.triangle(num(g.peak, x), r(g.from_deg), r(g.to_deg), cycle,
                                      None if g.apex_deg is None else r(g.apex_deg), g.base)
     if isinstance(g, RectangleGraph):
-        return lambda x: t2.rectangle(num(g.peak, x), r(g.from_deg), r(g.to_deg), cycle, g.base)
+        return lambda x: graphs.rectangle(num(g.peak, x), r(g.from_deg), r(g.to_deg), cycle, g.base)
     if isinstance(g, TrapezoidGraph):
-        return lambda x: t2.trapezoid(num(g.peak, x), r(g.from_deg), r(g.top_from_deg),
+        return lambda x: graphs.trapezoid(num(g.peak, x), r(g.from_deg), r(g.top_from_deg),
                                       r(g.top_to_deg), r(g.to_deg), cycle, g.base)
-    return lambda x: t2.harmonic(num(g.a0, x), g.a, g.b, g.orders, cycle)
+    return lambda x: graphs.harmonic(num(g.a0, x), g.a, g.b, g.orders, cycle)
 
 
 def _speeds(case: Task2Case) -> dict:
@@ -366,7 +367,7 @@ def _speeds(case: Task2Case) -> dict:
     return {"omega_mean": s.mean_rpm * rpm}
 
 
-def solve_case(case: Task2Case, source: str = "<case>") -> t2.Task2Result:
+def solve_case(case: Task2Case, source: str = "<case>") -> Task2Result:
     """Solve a validated case; a physical impossibility becomes one CaseFileError line."""
     f = case.flywheel
     J = f.J if f.J is not None else (f.mass * f.radius_of_gyration ** 2 if f.mass else None)
@@ -384,17 +385,17 @@ def solve_case(case: Task2Case, source: str = "<case>") -> t2.Task2Result:
             else:
                 energies = list(d.energies)
             at = None if d.crossings_deg is None else [math.radians(c) for c in d.crossings_deg]
-            return t2.solve_areas(energies, J, cycle=cycle, crossings_at=at, **kw)
+            return solve_areas(energies, J, cycle=cycle, crossings_at=at, **kw)
         make_D, make_C = _maker(case.driving, cycle), _maker(case.resistance, cycle)
         unknown = ("driving" if case.driving.unknown_field() else
                    "resistance" if case.resistance.unknown_field() else None)
         if unknown:
             field = f"{unknown}.{getattr(case, unknown).unknown_field()}"
-            x = t2.balance(make_D, make_C, unknown)
+            x = balance(make_D, make_C, unknown)
             field = "flywheel"
         else:
             x = 1.0
-        return t2.solve(make_D(x), make_C(x), J, unknown=unknown, **kw)
+        return solve(make_D(x), make_C(x), J, unknown=unknown, **kw)
     except InputError as exc:
         msg = str(exc)
         if msg.startswith(("a mean speed needs", "to find J from δ", "the machine stops")):

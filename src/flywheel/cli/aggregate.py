@@ -22,50 +22,47 @@ def aggregate_command(
                                           "the motor or 20 forcing periods, whichever is longer, "
                                           "at most 2000 periods of the highest natural "
                                           "frequency)."),
+    lang: str = typer.Option("en", "--lang", help="Language of the summary and the plot: en | ru "
+                             "(the JSON is the same in every language)."),
 ) -> None:
     """Two-mass machine aggregate (seed 003) or a chain of rotors: coefficients a_ij, c_ij,
     natural frequencies, steady forced vibration, start-up."""
     import math
 
-    from flywheel.cli.guard import fail
-    from flywheel.errors import FlywheelError, InputError
+    from flywheel.cli.guard import guarded, refuse_nonfinite
+    from flywheel.errors import InputError
 
-    try:
+    with guarded(source=case):      # an error of the analysis is prefixed with the case file
+        from flywheel.render.nomenclature_ci import LANGS, text
+
+        if lang not in LANGS:
+            raise InputError(f"--lang: {lang!r} is not a language (allowed: {', '.join(LANGS)})")
         if t_end is not None and not (math.isfinite(t_end) and t_end > 0):
             raise InputError(f"--t-end must be a positive number of seconds (got {t_end:g})")
-        from flywheel.elastic.model import analyze
         from flywheel.cases.aggregate import load_aggregate_case, to_model
+        from flywheel.elastic.model import analyze
 
         c = load_aggregate_case(case)
         ch, drive = to_model(c, str(case))
         if plot is not None and drive is None:
             raise InputError("--plot needs a [motor]: a chain without one has no motion in time")
-        try:
-            result = analyze(ch, drive, t_end=t_end)
-        except InputError as exc:
-            raise InputError(f"{case}: {exc}") from None
+        result = analyze(ch, drive, t_end=t_end)
+        # no Infinity/NaN printed, in the summary or the JSON (which has none): guard.not_finite
+        refuse_nonfinite(result.to_document(), who=str(case))
         if plot is not None:
             from flywheel.render.aggregate import plot as draw
 
             try:
-                draw(result, plot, c.title)
+                draw(result, plot, c.title, lang)
             except (OSError, ValueError) as exc:
                 raise InputError(f"--plot {plot}: cannot write the image ({exc})") from None
-    except FlywheelError as exc:
-        fail(str(exc))
-        return
     if json:
         from flywheel.render.aggregate import to_json
 
-        try:
-            text = to_json(result, c.title, c.source)
-        except ValueError as exc:          # a NaN or infinity: JSON has none
-            fail(f"{case}: a result is not finite, no JSON written ({exc})")
-            return
-        typer.echo(text)
+        typer.echo(to_json(result, c.title, c.source))
     else:
         from flywheel.render.aggregate import print_summary
 
-        print_summary(result, c.title, c.source)
+        print_summary(result, c.title, c.source, lang=lang)
         if plot is not None:
-            typer.echo(f"plot written to {plot}")
+            typer.echo(text("plot_written", lang, path=plot))

@@ -1,9 +1,20 @@
 """The one error guard of the command line: a user's mistake becomes one `error:` line on
-stderr and exit code 2 (design.md §6). Every command module imports it from here."""
+stderr and exit code 2 (design.md §6). Every command module imports it from here.
+
+Two forms of the same guard: :func:`guard` calls a function, :func:`guarded` wraps a block
+(``with guarded(source=path): ...``). One non-finite policy: a result that holds inf or NaN (inputs
+near the limits of double precision) is refused by :func:`not_finite` with one line naming the
+quantity, ``who: <quantity> is not finite (…): …``, exit 2; :func:`first_nonfinite` finds that
+quantity in a results document (a result's ``to_document()``), which is exactly what would be
+printed.
+"""
 from __future__ import annotations
 
+import math
 import sys
+from contextlib import contextmanager
 from pathlib import Path
+from typing import Iterator, NoReturn
 
 import typer
 
@@ -30,6 +41,22 @@ def guard(func, *args, source: Path | None = None, case=None, **kwargs):
         fail(msg)
 
 
+@contextmanager
+def guarded(source: Path | str | None = None, case=None) -> Iterator[None]:
+    """:func:`guard` for a block: ``with guarded(source=path): ...`` turns a FlywheelError raised
+    inside into one line and exit 2, prefixed with ``source`` the same way."""
+    from flywheel.errors import FlywheelError
+
+    try:
+        yield
+    except FlywheelError as exc:
+        guard(_reraise, exc, source=source, case=case)
+
+
+def _reraise(exc: Exception) -> NoReturn:
+    raise exc
+
+
 def _field_of(exc: Exception, case) -> str:
     """The case-file path of the dyad an AssemblyError names ('dyads[1]'), else ''."""
     from flywheel.cases.run import dyad_name
@@ -41,3 +68,43 @@ def _field_of(exc: Exception, case) -> str:
 
 
 _guard = guard   # the name the command modules used before the package split
+
+
+def first_nonfinite(document, path: str = "") -> tuple[str, float] | None:
+    """(path, value) of the first inf or NaN number in a results document, in the document's
+    order, e.g. ``("omega_max", inf)``, ``("rpm.omega0", inf)``, ``("segments[3].A", nan)``;
+    None when every number is finite (None, strings and booleans are no numbers).
+
+    >>> first_nonfinite({"a": 1.0, "b": [{"c": 2.0}, {"c": float("inf")}], "d": float("nan")})
+    ('b[1].c', inf)
+    >>> first_nonfinite({"a": None, "b": "text", "c": True}) is None
+    True
+    """
+    if isinstance(document, dict):
+        items = ((f"{path}.{k}" if path else str(k), v) for k, v in document.items())
+    elif isinstance(document, (list, tuple)):
+        items = ((f"{path}[{i}]", v) for i, v in enumerate(document))
+    else:
+        if isinstance(document, float) and not math.isfinite(document):
+            return path, document
+        return None
+    for where, v in items:
+        hit = first_nonfinite(v, where)
+        if hit is not None:
+            return hit
+    return None
+
+
+def not_finite(quantity: str, detail: str, who: str = "") -> NoReturn:
+    """The one non-finite policy: ``error: who: <quantity> is not finite (detail): …``, exit 2.
+
+    ``who`` names the inputs to blame (the case file and its fields, or the options given)."""
+    fail(f"{who + ': ' if who else ''}{quantity} is not finite ({detail}): the values overflow "
+         "double precision (the numbers are too large or too small)")
+
+
+def refuse_nonfinite(document, who: str = "") -> None:
+    """:func:`not_finite` for the first inf or NaN in a results document; nothing if none."""
+    hit = first_nonfinite(document)
+    if hit is not None:
+        not_finite(hit[0], repr(hit[1]), who)

@@ -1,6 +1,6 @@
 """`flywheel task2`: steady motion under given moment graphs (seed 002 and the textbook family).
 
-Thin: parse the options, call :mod:`flywheel.constant_inertia.solve` (or :mod:`flywheel.cases.task2` for
+Thin: parse the options, call :mod:`flywheel.constant_inertia.preset` (or :mod:`flywheel.cases.task2` for
 ``--case``), hand the result to :mod:`flywheel.render.task2`. Heavy imports live inside the
 function so that ``flywheel task2 --json`` starts fast.
 
@@ -64,19 +64,25 @@ def task2_command(
                                         "none of the options above."),
     plot: Optional[Path] = typer.Option(None, "--plot", help="Write a plot of M_D, M_C, A and "
                                         "ω(φ) to this image file (.png, .svg, .pdf)."),
-    as_json: bool = typer.Option(False, "--json", help="Print the results as JSON."),
+    as_json: bool = typer.Option(False, "--json", help="Print the results as JSON (the same "
+                                 "document in every language)."),
+    lang: str = typer.Option("en", "--lang", help="Language of the summary and the plot: en | ru."),
 ) -> None:
     """Task 2: ω_max, ω_min, ω_ср and δ of a machine with constant J under given M_D(φ), M_C(φ)."""
     import math
 
-    from flywheel.cli.guard import fail
+    from flywheel.cli.guard import first_nonfinite, guarded, not_finite
     from flywheel.errors import FlywheelError, InputError
 
     title = source = ""
     given = [(name, v) for name, v in (("--md", md), ("--j", j), ("--omega0", omega0),
                                        ("--from", start), ("--to", end), ("--mc", mc),
                                        ("--delta", delta)) if v is not None]
-    try:
+    with guarded():
+        from flywheel.render.nomenclature_ci import LANGS, text
+
+        if lang not in LANGS:
+            raise InputError(f"--lang: {lang!r} is not a language (allowed: {', '.join(LANGS)})")
         if plot is not None and plot.is_dir():
             raise InputError(f"--plot {plot}: is a folder, expected an image file")
         if case is not None:
@@ -92,8 +98,9 @@ def task2_command(
                 return solve_case(c, str(case))
 
             title, source = c.title, c.source
+            doc_title, doc_source = title, source
         else:
-            from flywheel.constant_inertia.solve import SEED_DEFAULTS, seed_task
+            from flywheel.constant_inertia.preset import SEED_DEFAULTS, seed_task
 
             profile = "triangle" if profile is None else profile
             if profile not in PROFILES:
@@ -121,44 +128,48 @@ def task2_command(
                     end=None if end is None else math.radians(end),
                     M_C=mc, delta=delta)
 
-            title = f"Seed 002, {profile} resistance moment"
-            source = "seed 002_10afb132413d2537.txt"
-        from flywheel.constant_inertia.solve import nonfinite
+            # the JSON document is the same in every language; the summary and plot speak lang
+            doc_title = text("t2_seed_title", profile=profile)
+            doc_source = text("t2_seed_source")
+            title = text("t2_seed_title", lang, profile=text(profile, lang))
+            source = text("t2_seed_source", lang)
+        from flywheel.constant_inertia.solve import NotFiniteError
 
         # inputs near the limits of double precision: no Infinity/NaN in the output (it is not
-        # JSON), and no traceback from inf − inf inside the formulas
+        # JSON), and no traceback from inf − inf inside the formulas (guard.not_finite)
+        hit = None
         try:
             result = run()
-            why = nonfinite(result)
+            found = first_nonfinite(result.to_document())
+            if found is not None:
+                hit = (found[0], repr(found[1]))
+        except NotFiniteError as exc:
+            hit = (exc.quantity, exc.detail)
         except FlywheelError:
             raise
         except (ArithmeticError, ValueError) as exc:
-            why = f"{exc.args[-1] if exc.args else type(exc).__name__}"
-        if why is not None:
-            if case is not None:     # "file: field, field: …" (the file alone if none stands out)
+            hit = ("a result", f"{exc.args[-1] if exc.args else type(exc).__name__}")
+        if hit is not None:
+            if case is not None:     # "file: field, field" (the file alone if none stands out)
                 fields = [n for n, _ in _extreme(blame)]
                 who = f"{case}: {', '.join(fields)}" if fields else str(case)
-            else:                    # "--md 1e+308: …" (every given option if none stands out)
+            else:                    # "--md 1e+308" (every given option if none stands out)
                 who = ", ".join(f"{n} {v:g}" for n, v in (_extreme(blame) or blame))
-            raise InputError(f"{who + ': ' if who else ''}the values overflow ({why}): the "
-                             "numbers are too large or too small for double precision")
+            not_finite(*hit, who=who)
         if plot is not None:
             from flywheel.render.task2 import plot as draw
 
             try:
-                draw(result, plot, title)
+                draw(result, plot, title, lang)
             except (OSError, ValueError) as exc:
                 raise InputError(f"--plot {plot}: cannot write the image ({exc})") from None
-    except FlywheelError as exc:
-        fail(str(exc))
-        return
     if as_json:
         from flywheel.render.task2 import to_json
 
-        typer.echo(to_json(result, title, source))
+        typer.echo(to_json(result, doc_title, doc_source))
     else:
         from flywheel.render.task2 import print_summary
 
-        print_summary(result, title, source)
+        print_summary(result, title, source, lang=lang)
         if plot is not None:
-            typer.echo(f"plot written to {plot}")
+            typer.echo(text("plot_written", lang, path=plot))

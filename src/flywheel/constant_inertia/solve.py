@@ -4,27 +4,25 @@ The problem (seed ``002_10afb132413d2537.txt``, «Задача 2»; R.S. Khurmi 
 *Theory of Machines*, ch. 16 "Turning Moment Diagrams and Flywheel"): the forces and masses of a
 machine are reduced to one link with constant moment of inertia ``J`` [kg·m²]; the driving moment
 ``M_D(φ)`` and the resistance moment ``M_C(φ)`` [N·m] are given as graphs over one cycle of
-length ``Φ`` [rad]. The kinetic-energy theorem on ``[0, φ]``::
+length ``Φ`` [rad] (:mod:`flywheel.constant_inertia.graphs`). The kinetic-energy theorem on
+``[0, φ]``::
 
     ½·J·(ω(φ)² − ω0²) = A(φ) = ∫₀^φ (M_D − M_C) dφ
 
-gives the speed ``ω(φ)`` [rad/s]. Every piece is integrated in closed form (linear pieces and
-harmonic series ``a0 + Σ (a_k·sin kφ + b_k·cos kφ)``); there is no numerical quadrature.
-``ω`` is extreme where ``A`` is, i.e. at the sign changes of ``M_D − M_C``: at the breakpoints of
-the graphs (jumps) and at the crossings inside a piece, which are found exactly (linear pieces)
-or by a certified subdivision (Taylor bounds on the moment and its derivative, so no cluster
-of close roots is missed) and bisection to machine precision (harmonic pieces).
+gives the speed ``ω(φ)`` [rad/s]. Every piece is integrated in closed form; ``ω`` is extreme at
+the sign changes of ``M_D − M_C`` (:mod:`flywheel.constant_inertia.crossings`).
 
 Results (all SI): ``ω_max``, ``ω_min`` and their angles; ``ω_ср = (ω_max + ω_min)/2``;
 ``δ = (ω_max − ω_min)/ω_ср``; ``ΔT_нб = A_max − A_min`` [J]. Because
 ``ω_max² − ω_min² = 2·ΔT_нб/J``, the exact relations ``δ = ΔT_нб/(J·ω_ср²)`` and
-``J = ΔT_нб/(δ·ω_ср²)`` hold (the textbook's ``ΔE = I·ω²·C_s`` is exact with ``ω = ω_ср``).
+``J = ΔT_нб/(δ·ω_ср²)`` hold (the textbook's ``ΔE = I·ω²·C_s`` is exact with ``ω = ω_ср``); the
+latter is :func:`flywheel.dynamics.sizing.J_required_merzalov`.
 
-The seed divides by ω0 instead of ω_ср, places the crossings of its triangle at
-``π/2 + (2/π)·M_D/M_C`` (they are at 5π/8 and 11π/8) and prints ``ω4 = ω5 = 199.91``
-(the true minimum is 199.98896 rad/s at 11π/8); its ``M_C = 60 N·m`` is right.
+The seed divides by ω0 instead of ω_ср and prints ``ω4 = ω5 = 199.91`` (the true minimum is
+199.98896 rad/s at 11π/8); its ``M_C = 60 N·m`` is right.
 
-Pure functions on plain floats (``math`` only): importing this module is cheap.
+Pure functions on plain floats (``math`` only at import; the sizing formula's module, which
+imports numpy, only where a J is asked for): importing this module is cheap.
 """
 from __future__ import annotations
 
@@ -32,409 +30,40 @@ import math
 from dataclasses import dataclass, field
 from typing import Callable, Sequence
 
+from flywheel.constant_inertia.crossings import bisect_root, crossings
+from flywheel.constant_inertia.graphs import TWO_PI, Moment, Piece, net_pieces, size
 from flywheel.errors import InputError
-
-TWO_PI = 2.0 * math.pi
 
 # relative tolerance of the cycle balance (steady motion) and of the sum of areas
 BALANCE_RTOL = 1e-9
 
 
-# -- graphs -------------------------------------------------------------------------------------
+class NotFiniteError(OverflowError):
+    """A quantity came out inf or NaN (inputs near the limits of double precision), so no
+    extreme can be chosen and no result stated. ``quantity`` names it as the results document
+    does (``M_C``, ``work_driving``, ``segments[3].A``); ``detail`` says what happened."""
 
-@dataclass(frozen=True)
-class Piece:
-    """One piece of a moment graph on ``[phi0, phi1]`` [rad]::
+    def __init__(self, quantity: str, detail: str):
+        super().__init__(f"{quantity} is not finite ({detail})")
+        self.quantity = quantity
+        self.detail = detail
 
-        M(φ) = m0 + slope·(φ − phi0) + Σ (a·sin kφ + b·cos kφ)      [N·m]
 
-    ``harmonics`` holds ``(k, a, b)`` triples (k > 0, dimensionless order; a, b in N·m).
-    """
+def _cycle_work(m: Moment, quantity: str) -> float:
+    """∮ M dφ [J]; NotFiniteError when the sum overflows (fsum raises on inf − inf)."""
+    try:
+        return m.work()
+    except (OverflowError, ValueError) as exc:
+        raise NotFiniteError(quantity, str(exc)) from None
 
-    phi0: float
-    phi1: float
-    m0: float
-    slope: float = 0.0
-    harmonics: tuple[tuple[float, float, float], ...] = ()
 
-    def value(self, phi: float) -> float:
-        """M(φ) [N·m] (the formula of this piece, also outside its interval)."""
-        m = self.m0 + self.slope * (phi - self.phi0)
-        for k, a, b in self.harmonics:
-            m += a * math.sin(k * phi) + b * math.cos(k * phi)
-        return m
+def _J_for(delta_T_max: float, omega_mean: float, delta: float) -> float:
+    """J = ΔT_нб/(δ·ω_ср²) [kg·m²]: :func:`flywheel.dynamics.sizing.J_required_merzalov`
+    (imported here: its module loads numpy)."""
+    from flywheel.dynamics.sizing import J_required_merzalov
 
-    def work(self, phi: float) -> float:
-        """∫_{phi0}^{φ} M dφ [J], in closed form::
+    return J_required_merzalov(delta_T_max, omega_mean, delta)
 
-            m0·h + slope·h²/2 + Σ [a·(cos k·φ0 − cos k·φ) + b·(sin k·φ − sin k·φ0)]/k,  h = φ − φ0
-
-        >>> round(Piece(0.0, math.pi, 15.0).work(math.pi / 2), 9)    # 15 N·m over π/2
-        23.561944902
-        >>> round(Piece(0.0, math.pi, 0.0, harmonics=((1, 2.0, 0.0),)).work(math.pi), 12)
-        4.0
-        """
-        h = phi - self.phi0
-        w = self.m0 * h + 0.5 * self.slope * h * h
-        for k, a, b in self.harmonics:
-            w += (a * (math.cos(k * self.phi0) - math.cos(k * phi))
-                  + b * (math.sin(k * phi) - math.sin(k * self.phi0))) / k
-        return w
-
-    def linear_at(self, phi: float) -> float:
-        """The linear part m0 + slope·(φ − phi0) [N·m]."""
-        return self.m0 + self.slope * (phi - self.phi0)
-
-
-@dataclass(frozen=True)
-class Moment:
-    """A moment graph over one cycle ``[0, cycle]``: contiguous pieces, in order.
-
-    ``nominal`` is the number that names the graph [N·m]: the constant, the peak of a preset,
-    the largest ordinate of a piecewise-linear graph (times its scale), ``a0`` of a series.
-    """
-
-    pieces: tuple[Piece, ...]
-    cycle: float
-    nominal: float
-    kind: str = "points"
-
-    def value(self, phi: float, side: int = +1) -> float:
-        """M(φ) [N·m]; at a jump the value just after (``side=+1``) or before (``-1``)."""
-        pcs = self.pieces
-        if side > 0:
-            for p in pcs:
-                if phi < p.phi1:
-                    return p.value(phi)
-            return pcs[-1].value(phi)
-        for p in reversed(pcs):
-            if phi > p.phi0:
-                return p.value(phi)
-        return pcs[0].value(phi)
-
-    def work(self) -> float:
-        """Work over the cycle ∮ M dφ [J]."""
-        return math.fsum(p.work(p.phi1) for p in self.pieces)
-
-    def breakpoints(self) -> list[float]:
-        return [p.phi0 for p in self.pieces] + [self.pieces[-1].phi1]
-
-
-def size(m: Moment) -> float:
-    """A bound on ∮|M| dφ [J] that also covers the round-off of the closed-form works.
-
-    Triangle inequality: on a piece, ``|M| ≤ max(|M(φ0)|, |M(φ1)|)`` for the linear part and
-    ``|a·sin kφ + b·cos kφ| ≤ R = √(a² + b²)``, so ∫|M| ≤ Σ [max(|m0|, |m1|) + Σ R]·h. The closed
-    form of ``Piece.work`` adds terms of size R/k (at most 2R/k per term) whose round-off is
-    what a zero-mean series leaves in ∮M dφ (1.2e-13 J for 300 sin 2φ − 500 cos 2φ), so they
-    are counted too. Steadiness and the cycle balance are judged relative to this size, never
-    relative to the net works, which vanish for zero-mean moments.
-
-    >>> round(size(harmonic(0.0, [3.0], [4.0], orders=[2])), 12) == round(5 * (TWO_PI + 1), 12)
-    True
-    """
-    total = 0.0
-    for p in m.pieces:
-        h = p.phi1 - p.phi0
-        total += max(abs(p.m0), abs(p.linear_at(p.phi1))) * h
-        for k, a, b in p.harmonics:
-            total += math.hypot(a, b) * (h + 2.0 / k)
-    return total
-
-
-def _check_cycle(cycle: float) -> None:
-    if not (math.isfinite(cycle) and cycle > 0):
-        raise InputError(f"the cycle must be a positive angle (got {cycle!r} rad)")
-
-
-def constant(value: float, cycle: float = TWO_PI) -> Moment:
-    """A constant moment ``value`` [N·m] over the cycle [rad]."""
-    _check_cycle(cycle)
-    return Moment((Piece(0.0, cycle, float(value)),), cycle, float(value), "constant")
-
-
-def piecewise_linear(points: Sequence[tuple[float, float]], cycle: float = TWO_PI,
-                     nominal: float | None = None, kind: str = "points") -> Moment:
-    """A graph through ``points`` = [(φ [rad], M [N·m]), …], straight between them.
-
-    The angles must start at 0, end at ``cycle`` and never decrease; a repeated angle is a
-    jump (the rectangle's vertical sides).
-
-    >>> m = piecewise_linear([(0, 0), (1, 10), (2, 0)], cycle=2)
-    >>> m.value(0.5), m.work()
-    (5.0, 10.0)
-    """
-    _check_cycle(cycle)
-    pts = [(float(p), float(m)) for p, m in points]
-    if len(pts) < 2:
-        raise InputError("a graph needs at least two points")
-    for i in range(1, len(pts)):
-        if pts[i][0] < pts[i - 1][0]:
-            raise InputError(
-                f"graph angles must not decrease: point {i} at {math.degrees(pts[i][0]):g}° "
-                f"comes after {math.degrees(pts[i - 1][0]):g}°")
-    scale = max(cycle, 1.0) * 1e-12
-    if abs(pts[0][0]) > scale or abs(pts[-1][0] - cycle) > scale:
-        raise InputError(
-            f"the graph must span the cycle 0…{math.degrees(cycle):g}° "
-            f"(it spans {math.degrees(pts[0][0]):g}…{math.degrees(pts[-1][0]):g}°)")
-    pts[0] = (0.0, pts[0][1])
-    pts[-1] = (cycle, pts[-1][1])
-    pieces = []
-    for (p0, m0), (p1, m1) in zip(pts, pts[1:]):
-        if p1 > p0:
-            pieces.append(Piece(p0, p1, m0, (m1 - m0) / (p1 - p0)))
-    if not pieces:
-        raise InputError("the graph has no length")
-    if nominal is None:
-        nominal = max(m for _, m in pts)
-    return Moment(tuple(pieces), cycle, float(nominal), kind)
-
-
-def _check_span(start: float, end: float, cycle: float) -> None:
-    if not (0.0 <= start < end <= cycle * (1 + 1e-12)):
-        raise InputError(
-            f"the graph's interval {math.degrees(start):g}…{math.degrees(end):g}° must satisfy "
-            f"0 ≤ from < to ≤ {math.degrees(cycle):g}°")
-
-
-def _frame(start: float, inner: list[tuple[float, float]], end: float, cycle: float,
-           base: float) -> list[tuple[float, float]]:
-    """Points of a preset: ``base`` outside [start, end], ``inner`` inside."""
-    return [(0.0, base), (start, base), *inner, (end, base), (cycle, base)]
-
-
-def triangle(peak: float, start: float, end: float, cycle: float = TWO_PI,
-             apex: float | None = None, base: float = 0.0) -> Moment:
-    """``base`` outside [start, end]; rises linearly to ``peak`` at ``apex`` (default the middle)
-    and falls back to ``base`` at ``end``. Angles [rad], moments [N·m] (seed 002, task 1).
-
-    >>> triangle(60.0, math.pi / 2, 3 * math.pi / 2).work() / math.pi   # M_C·(π/2)/π
-    30.0
-    """
-    _check_cycle(cycle)
-    _check_span(start, end, cycle)
-    apex = 0.5 * (start + end) if apex is None else apex
-    if not start <= apex <= end:
-        raise InputError(f"the triangle's apex {math.degrees(apex):g}° lies outside "
-                         f"{math.degrees(start):g}…{math.degrees(end):g}°")
-    return piecewise_linear(_frame(start, [(apex, peak)], end, cycle, base), cycle,
-                            nominal=peak, kind="triangle")
-
-
-def rectangle(peak: float, start: float, end: float, cycle: float = TWO_PI,
-              base: float = 0.0) -> Moment:
-    """``peak`` on [start, end], ``base`` elsewhere (seed 002, task 2). Angles [rad].
-
-    >>> rectangle(60.0, math.pi / 2, math.pi).work() / math.pi
-    30.0
-    """
-    _check_cycle(cycle)
-    _check_span(start, end, cycle)
-    return piecewise_linear(_frame(start, [(start, peak), (end, peak)], end, cycle, base),
-                            cycle, nominal=peak, kind="rectangle")
-
-
-def trapezoid(peak: float, start: float, top_start: float, top_end: float, end: float,
-              cycle: float = TWO_PI, base: float = 0.0) -> Moment:
-    """``base`` → ``peak`` linearly on [start, top_start], ``peak`` on [top_start, top_end],
-    back to ``base`` on [top_end, end]. Angles [rad] (Khurmi & Gupta, Example 16.6).
-    """
-    _check_cycle(cycle)
-    _check_span(start, end, cycle)
-    if not start <= top_start <= top_end <= end:
-        raise InputError("a trapezoid needs from ≤ top_from ≤ top_to ≤ to")
-    return piecewise_linear(_frame(start, [(top_start, peak), (top_end, peak)], end, cycle,
-                                   base), cycle, nominal=peak, kind="trapezoid")
-
-
-def harmonic(a0: float, a: Sequence[float] = (), b: Sequence[float] = (),
-             orders: Sequence[float] | None = None, cycle: float = TWO_PI) -> Moment:
-    """``M = a0 + Σ (a_k·sin kφ + b_k·cos kφ)`` [N·m]; orders k = 1, 2, … unless given
-    (half orders such as 0.5 suit a four-stroke cycle of 4π).
-
-    >>> round(harmonic(5000.0, [1500.0], orders=[3]).work() / TWO_PI, 9)
-    5000.0
-    """
-    _check_cycle(cycle)
-    n = max(len(a), len(b))
-    a = list(a) + [0.0] * (n - len(a))
-    b = list(b) + [0.0] * (n - len(b))
-    ks = list(orders) if orders is not None else list(range(1, n + 1))
-    if len(ks) != n:
-        raise InputError(f"{len(ks)} orders given for {n} harmonic terms")
-    if any(not (k > 0) for k in ks):
-        raise InputError("harmonic orders must be positive")
-    terms = tuple((float(k), float(ak), float(bk)) for k, ak, bk in zip(ks, a, b)
-                  if ak != 0.0 or bk != 0.0)
-    return Moment((Piece(0.0, cycle, float(a0), 0.0, terms),), cycle, float(a0), "harmonic")
-
-
-# -- the net moment and its crossings -------------------------------------------------------------
-
-def _sub_piece(p: Piece, x0: float, x1: float) -> Piece:
-    return Piece(x0, x1, p.linear_at(x0), p.slope, p.harmonics)
-
-
-def net_pieces(M_D: Moment, M_C: Moment) -> list[Piece]:
-    """``M_D − M_C`` as pieces on the merged breakpoints of both graphs."""
-    if abs(M_D.cycle - M_C.cycle) > 1e-12 * M_D.cycle:
-        raise InputError("the driving and resistance graphs span different cycles")
-    cuts = sorted(set(M_D.breakpoints()) | set(M_C.breakpoints()))
-    out = []
-    i = j = 0
-    dp, cp = M_D.pieces, M_C.pieces
-    for x0, x1 in zip(cuts, cuts[1:]):
-        while dp[i].phi1 <= x0:
-            i += 1
-        while cp[j].phi1 <= x0:
-            j += 1
-        d, c = _sub_piece(dp[i], x0, x1), _sub_piece(cp[j], x0, x1)
-        harm: dict[float, list[float]] = {}
-        for k, a, b in d.harmonics:
-            s = harm.setdefault(k, [0.0, 0.0])
-            s[0] += a
-            s[1] += b
-        for k, a, b in c.harmonics:
-            s = harm.setdefault(k, [0.0, 0.0])
-            s[0] -= a
-            s[1] -= b
-        terms = tuple((k, a, b) for k, (a, b) in sorted(harm.items()) if a != 0.0 or b != 0.0)
-        out.append(Piece(x0, x1, d.m0 - c.m0, d.slope - c.slope, terms))
-    return out
-
-
-def _bisect(f: Callable[[float], float], lo: float, hi: float, flo: float) -> float:
-    """A root of f in [lo, hi] with f(lo)·f(hi) < 0, to machine precision."""
-    for _ in range(200):
-        mid = 0.5 * (lo + hi)
-        if mid <= lo or mid >= hi:
-            break
-        fm = f(mid)
-        if fm == 0.0:
-            return mid
-        if (fm < 0.0) == (flo < 0.0):
-            lo, flo = mid, fm
-        else:
-            hi = mid
-    return 0.5 * (lo + hi)
-
-
-def _derivative(p: Piece, phi: float) -> float:
-    """dM/dφ of the piece's formula [N·m/rad]: slope + Σ k·(a·cos kφ − b·sin kφ)."""
-    d = p.slope
-    for k, a, b in p.harmonics:
-        d += k * (a * math.cos(k * phi) - b * math.sin(k * phi))
-    return d
-
-
-def _harmonic_crossings(p: Piece) -> list[float]:
-    """Sign changes of ``f = m0 + slope·(φ − φ0) + Σ (a·sin kφ + b·cos kφ)`` on the piece.
-
-    Certified subdivision: with ``R = √(a² + b²)`` each term has ``|d/dφ| ≤ k·R`` and
-    ``|d²/dφ²| ≤ k²·R`` (Cauchy–Schwarz), so ``L₂ = Σ k²·R`` bounds ``|f″|`` and Taylor's
-    theorem with the Lagrange remainder about the midpoint m of [m − r, m + r] gives::
-
-        |f(φ)|  ≥ |f(m)| − |f′(m)|·r − ½·L₂·r²    (> 0: no zero in the interval)
-        |f′(φ)| ≥ |f′(m)| − L₂·r                  (> 0: f monotone, one bisection finds the root)
-
-    An interval that passes neither test is halved. Each test keeps a margin for the round-off
-    of evaluating f and f′ (16 ulp of the sizes of their terms; the argument k·φ is rounded, so
-    a term's error grows with k·|φ|). Where f stays within that round-off of zero over a whole
-    interval (a tangency, or roots closer than round-off can separate) its sign is unknown; a
-    crossing is reported there only if the known signs on both sides differ: what makes ω
-    extreme is a sign change of M_D − M_C, and a touching zero is none.
-
-    Unlike sampling, this cannot step over a cluster of roots, and it also serves the pieces
-    where a sloped line meets a harmonic series (no polynomial substitution applies there).
-    """
-    eps = 2.220446049250313e-16
-    x_abs = max(abs(p.phi0), abs(p.phi1))
-    h = p.phi1 - p.phi0
-    L2 = err = err1 = 0.0
-    for k, a, b in p.harmonics:
-        R = math.hypot(a, b)
-        L2 += k * k * R
-        err += R * (1.0 + k * x_abs)
-        err1 += k * R * (1.0 + k * x_abs)
-    err = 16 * eps * (err + abs(p.m0) + abs(p.slope) * h)
-    err1 = 16 * eps * (err1 + abs(p.slope))
-    f = p.value
-
-    def sign(v: float) -> int:
-        return 0 if abs(v) <= err else (1 if v > 0.0 else -1)
-
-    # (lo, hi, sign at lo, sign at hi, root inside or None), left to right
-    segs: list[tuple[float, float, int, int, float | None]] = []
-
-    def visit(lo: float, hi: float, flo: float, fhi: float, depth: int) -> None:
-        m, r = 0.5 * (lo + hi), 0.5 * (hi - lo)
-        fm, dm = f(m), _derivative(p, m)
-        if abs(fm) - abs(dm) * r - 0.5 * L2 * r * r > err:          # no zero here
-            s = 1 if fm > 0.0 else -1
-            segs.append((lo, hi, s, s, None))
-            return
-        if abs(dm) - L2 * r > err1:                                  # monotone
-            s0, s1 = sign(flo), sign(fhi)
-            root = _bisect(f, lo, hi, flo) if s0 * s1 < 0 else None
-            segs.append((lo, hi, s0, s1, root))
-            return
-        if (abs(fm) + abs(dm) * r + 0.5 * L2 * r * r <= err or depth >= 64
-                or not lo < m < hi):                                 # f ≈ 0 to round-off
-            segs.append((lo, hi, 0, 0, None))
-            return
-        visit(lo, m, flo, fm, depth + 1)
-        visit(m, hi, fm, fhi, depth + 1)
-
-    visit(p.phi0, p.phi1, f(p.phi0), f(p.phi1), 0)
-
-    roots: list[float] = []
-    last = 0                                   # the last known sign
-    unknown: list[float] = []                  # [first, last] angle of unknown sign since then
-
-    def see(x: float, s: int) -> None:
-        nonlocal last, unknown
-        if s == 0:
-            unknown = [unknown[0] if unknown else x, x]
-            return
-        if last and s != last:                 # the sign changed across the unknown stretch
-            lo, hi = unknown or [x, x]
-            flo, fhi = f(lo), f(hi)
-            roots.append(_bisect(f, lo, hi, flo) if flo * fhi < 0.0 else 0.5 * (lo + hi))
-        last, unknown = s, []
-
-    for lo, hi, s0, s1, root in segs:
-        see(lo, s0)
-        if root is not None:
-            roots.append(root)
-            last, unknown = s1, []
-        see(hi, s1)
-    return [r for r in roots if p.phi0 < r < p.phi1]
-
-
-def crossings(p: Piece) -> list[float]:
-    """Angles inside (phi0, phi1) where the piece's moment changes sign [rad].
-
-    Linear: the exact root of m0 + slope·(φ − φ0) = 0. With harmonics: certified subdivision
-    by Taylor bounds on f and f′, then bisection to machine precision (see
-    ``_harmonic_crossings``); close clusters of roots are all found, and a touching zero
-    without a sign change is no extremum, so it is not reported.
-
-    >>> crossings(Piece(math.pi / 2, math.pi, 15.0, -120.0 / math.pi))[0] / math.pi   # 5π/8
-    0.625
-    >>> [round(math.degrees(x), 3) for x in crossings(Piece(0, 2 * math.pi, 0, 0,
-    ...                                                      ((1, 0.999, 0), (2, 0.5, 0))))]
-    [177.437, 180.0, 182.563]
-    """
-    if not p.harmonics:
-        m1 = p.m0 + p.slope * (p.phi1 - p.phi0)
-        if (p.m0 < 0.0 < m1) or (m1 < 0.0 < p.m0):
-            return [p.phi0 - p.m0 / p.slope]
-        return []
-    return _harmonic_crossings(p)
-
-
-# -- the motion ---------------------------------------------------------------------------------
 
 @dataclass(frozen=True)
 class Row:
@@ -452,19 +81,42 @@ class Row:
     omega: float
 
 
+#: rad/s → rev/min
+RPM = 30.0 / math.pi
+
+
+def _deg(x: float | None) -> float | None:
+    """Degrees, rounded to 1e-10° so that 247.49999999999997 reads 247.5; None for no angle."""
+    return None if x is None or math.isnan(x) else round(math.degrees(x), 10) + 0.0
+
+
 @dataclass(frozen=True)
 class Task2Result:
-    """Everything task 2 reports; SI units (angles in rad, speeds in rad/s, energies in J)."""
+    """Everything task 2 reports; SI units (angles in rad, speeds in rad/s, energies in J).
 
-    cycle: float
+    cycle : length Φ of the cycle [rad]; J : reduced moment of inertia used for the motion
+    [kg·m²]; omega0 : ω at φ = 0 [rad/s]; omega_max, omega_min : extreme speeds [rad/s];
+    omega_mean : ω_ср = (ω_max + ω_min)/2 [rad/s]; delta : δ = (ω_max − ω_min)/ω_ср [1];
+    phi_omega_max, phi_omega_min : their angles [rad] (None when an area diagram gives none);
+    delta_T_max : ΔT_нб = A_max − A_min [J]; rows : the segment table; steady : ∮(M_D − M_C)dφ = 0;
+    omega_end : ω after one cycle [rad/s]; work_end : A(Φ) [J] (0 for steady motion);
+    M_D, M_C : nominal driving and resistance moments (constant, peak, a0) [N·m]; unknown : the
+    moment the cycle balance found, "driving" | "resistance" | None; work_driving, work_resistance :
+    ∮M_D dφ, ∮M_C dφ [J]; power : mean driving moment × ω_ср [W] (steady motion only);
+    J_required : J giving delta_target at the same ω_ср [kg·m²]; delta_target : the asked δ [1];
+    rim_radius : mean radius of a rim [m]; rim_mass : m = J/R² [kg]; driving, resistance : the
+    graphs (None for an area diagram).
+    """
+
+    cycle: float                 # Φ [rad]
     J: float                     # reduced moment of inertia used for the motion [kg·m²]
     omega0: float                # ω at φ = 0 [rad/s]
-    omega_max: float
-    omega_min: float
-    omega_mean: float            # (ω_max + ω_min)/2
-    delta: float                 # (ω_max − ω_min)/ω_ср
+    omega_max: float             # [rad/s]
+    omega_min: float             # [rad/s]
+    omega_mean: float            # (ω_max + ω_min)/2 [rad/s]
+    delta: float                 # (ω_max − ω_min)/ω_ср [1]
     phi_omega_max: float | None  # [rad]; None if the diagram gives no angles
-    phi_omega_min: float | None
+    phi_omega_min: float | None  # [rad]
     delta_T_max: float           # ΔT_нб = A_max − A_min [J]
     rows: tuple[Row, ...]
     steady: bool = True
@@ -477,11 +129,62 @@ class Task2Result:
     work_resistance: float | None = None  # ∮ M_C dφ [J]
     power: float | None = None   # mean driving moment × ω_ср [W]
     J_required: float | None = None       # J for delta_target at the same ω_ср [kg·m²]
-    delta_target: float | None = None
+    delta_target: float | None = None     # the asked δ [1]
     rim_radius: float | None = None       # mean radius of a rim [m]
     rim_mass: float | None = None         # m = J/R² [kg]
     driving: Moment | None = field(default=None, repr=False)
     resistance: Moment | None = field(default=None, repr=False)
+
+    def to_document(self, title: str = "", source: str = "") -> dict:
+        """The results document, the JSON of ``flywheel task2 --json`` (SI units; angles in
+        degrees where the key says ``_deg``; speeds in rev/min under ``rpm``).
+
+        Keys of the contract: omega_max, omega_min, omega_mean, delta, phi_omega_max_deg,
+        phi_omega_min_deg, delta_T_max, M_C, J_required (only when asked), segments. An angle
+        that is not known (an area diagram without crossing angles) is None.
+        """
+        d: dict = {}
+        if title:
+            d["title"] = title
+        if source:
+            d["source"] = source
+        d.update({
+            "omega_max": self.omega_max,
+            "omega_min": self.omega_min,
+            "omega_mean": self.omega_mean,
+            "delta": self.delta,
+            "phi_omega_max_deg": _deg(self.phi_omega_max),
+            "phi_omega_min_deg": _deg(self.phi_omega_min),
+            "delta_T_max": self.delta_T_max,
+            "M_C": self.M_C,
+        })
+        if self.J_required is not None:
+            d["J_required"] = self.J_required
+        d.update({
+            "M_D": self.M_D,
+            "balance_found": self.unknown,
+            "J": self.J,
+            "omega0": self.omega0,
+            "steady": self.steady,
+            "omega_end": self.omega_end,
+            "work_end": self.work_end,
+            "cycle_deg": math.degrees(self.cycle),
+            "rpm": {"omega0": self.omega0 * RPM, "omega_max": self.omega_max * RPM,
+                    "omega_min": self.omega_min * RPM, "omega_mean": self.omega_mean * RPM},
+            "work_driving": self.work_driving,
+            "work_resistance": self.work_resistance,
+            "power": self.power,
+        })
+        if self.delta_target is not None:
+            d["delta_target"] = self.delta_target
+        if self.rim_mass is not None:
+            d["rim_radius"] = self.rim_radius
+            d["rim_mass"] = self.rim_mass
+        d["segments"] = [
+            {"phi_deg": _deg(row.phi), "phi": None if math.isnan(row.phi) else row.phi,
+             "kind": row.kind, "M_D": row.M_D, "M_C": row.M_C, "A": row.A, "omega": row.omega}
+            for row in self.rows]
+        return d
 
 
 def balance(make_D: Callable[[float], Moment], make_C: Callable[[float], Moment],
@@ -493,6 +196,7 @@ def balance(make_D: Callable[[float], Moment], make_C: Callable[[float], Moment]
     W_other − W(0) is round-off (within 1e-9 of the graphs' ``size``). Raises InputError when
     no positive x balances the cycle.
 
+    >>> from flywheel.constant_inertia.graphs import constant, triangle
     >>> balance(lambda x: constant(15.0), lambda x: triangle(x, math.pi/2, 3*math.pi/2),
     ...         "resistance")
     60.0
@@ -503,8 +207,10 @@ def balance(make_D: Callable[[float], Moment], make_C: Callable[[float], Moment]
         known, make = make_C(1.0), make_D
     else:
         raise InputError(f"unknown moment must be 'driving' or 'resistance' (got {unknown!r})")
-    other = known.work()
-    w0, w1 = make(0.0).work(), make(1.0).work()
+    mine, theirs = (("work_resistance", "work_driving") if unknown == "resistance"
+                    else ("work_driving", "work_resistance"))
+    other = _cycle_work(known, theirs)
+    w0, w1 = _cycle_work(make(0.0), mine), _cycle_work(make(1.0), mine)
     if w1 == w0:
         raise InputError(f"the {unknown} moment's unknown value does not change its work: "
                          "the cycle balance cannot find it")
@@ -517,7 +223,8 @@ def balance(make_D: Callable[[float], Moment], make_C: Callable[[float], Moment]
     x = float(round(x, 12)) if abs(x - round(x, 12)) < 1e-12 * max(1.0, abs(x)) else x
     x += 0.0    # no −0.0
     if not math.isfinite(x):
-        raise OverflowError(f"the cycle balance gives a {unknown} moment of {x!r} N·m")
+        raise NotFiniteError("M_C" if unknown == "resistance" else "M_D",
+                             f"the cycle balance gives a {unknown} moment of {x!r} N·m")
     if x < 0.0:
         raise InputError(
             f"the cycle balance needs a negative {unknown} moment ({x:.6g} N·m): "
@@ -540,7 +247,7 @@ def _speed_from_mean(A_max: float, A_min: float, J: float, omega_mean: float) ->
     return w_max * w_max - 2 * A_max / J
 
 
-def _check_positive(name: str, value: float | None, unit: str) -> None:
+def check_positive(name: str, value: float | None, unit: str) -> None:
     if value is not None and not (math.isfinite(value) and value > 0):
         raise InputError(f"{name} must be positive (got {value:g} {unit})")
 
@@ -556,7 +263,7 @@ def _stop_angle(pieces: list[Piece], A_start: list[float], J: float, w0sq: float
             if f1 <= 0.0:
                 if f0 <= 0.0:
                     return x0
-                return _bisect(lambda x: a0 + p.work(x) - target, x0, x1, f0)
+                return bisect_root(lambda x: a0 + p.work(x) - target, x0, x1, f0)
     return pieces[-1].phi1
 
 
@@ -566,11 +273,12 @@ def _motion(bounds: list[float], kinds: list[str], A: list[float], J: float | No
             stop: Callable[[float, float], float] | None = None) -> dict:
     """ω at each row and the summary numbers (shared by graphs and area diagrams).
 
-    Raises OverflowError when a work is not finite (moments near the limit of double
+    Raises NotFiniteError when a work is not finite (moments near the limit of double
     precision): no extreme can be chosen among infinities.
     """
-    if not all(math.isfinite(a) for a in A):
-        raise OverflowError("the work A(φ) is not finite")
+    bad = next((i for i, a in enumerate(A) if not math.isfinite(a)), None)
+    if bad is not None:
+        raise NotFiniteError(f"segments[{bad}].A", f"the work A(φ) = {A[bad]!r} J")
     # the first of equal extremes (equal to 1e-12 of the swing: round-off must not choose)
     tol = 1e-12 * (max(A) - min(A))
     i_max = next(i for i, a in enumerate(A) if a >= max(A) - tol)
@@ -584,7 +292,7 @@ def _motion(bounds: list[float], kinds: list[str], A: list[float], J: float | No
             raise InputError("to find J from δ give the mean speed, not ω0")
         if dT <= 0.0:
             raise InputError("the energy does not fluctuate: any J gives δ = 0")
-        J = dT / (delta * omega_mean ** 2)
+        J = _J_for(dT, omega_mean, delta)
     if omega_mean is not None:
         if not steady:
             raise InputError("a mean speed needs steady motion (the work over the cycle "
@@ -620,7 +328,7 @@ def _motion(bounds: list[float], kinds: list[str], A: list[float], J: float | No
 def _finish(res: dict, delta: float | None, rim_radius: float | None) -> dict:
     if delta is not None:
         res["delta_target"] = delta
-        res["J_required"] = res["delta_T_max"] / (delta * res["omega_mean"] ** 2)
+        res["J_required"] = _J_for(res["delta_T_max"], res["omega_mean"], delta)
     if rim_radius is not None:
         J_rim = res.get("J_required") or res["J"]
         res["rim_radius"] = rim_radius
@@ -641,6 +349,7 @@ def solve(M_D: Moment, M_C: Moment, J: float | None = None, *, omega0: float | N
     The motion is steady when ∮ (M_D − M_C) dφ = 0 (to 1e-9 of ∮(|M_D| + |M_C|) dφ, see
     ``size``); otherwise ω_end after one cycle differs from ω0.
 
+    >>> from flywheel.constant_inertia.graphs import constant, triangle
     >>> r = solve(constant(15.0), triangle(60.0, math.pi/2, 3*math.pi/2), 12.0, omega0=200.0)
     >>> [round(math.degrees(x.phi), 6) for x in r.rows]
     [0.0, 90.0, 112.5, 180.0, 247.5, 270.0, 360.0]
@@ -649,10 +358,10 @@ def solve(M_D: Moment, M_C: Moment, J: float | None = None, *, omega0: float | N
     """
     if (omega0 is None) == (omega_mean is None):
         raise InputError("give exactly one speed: ω0 or the mean speed")
-    _check_positive("J", J, "kg·m²")
-    _check_positive("ω0", omega0, "rad/s")
-    _check_positive("the mean speed", omega_mean, "rad/s")
-    _check_positive("the rim radius", rim_radius, "m")
+    check_positive("J", J, "kg·m²")
+    check_positive("ω0", omega0, "rad/s")
+    check_positive("the mean speed", omega_mean, "rad/s")
+    check_positive("the rim radius", rim_radius, "m")
     if delta is not None and not (0.0 < delta < 2.0):
         raise InputError(f"δ must lie between 0 and 2 (got {delta:g})")
     pieces = net_pieces(M_D, M_C)
@@ -673,7 +382,7 @@ def solve(M_D: Moment, M_C: Moment, J: float | None = None, *, omega0: float | N
         acc += p.work(p.phi1)
     bounds.append(pieces[-1].phi1)
     kinds.append("bound")
-    W_D, W_C = M_D.work(), M_C.work()
+    W_D, W_C = _cycle_work(M_D, "work_driving"), _cycle_work(M_C, "work_resistance")
     # relative to the size of the moments (``size``), not to W_D, W_C: zero-mean moments
     # have works of pure round-off and are steady all the same
     scale = max(abs(W_D), abs(W_C), size(M_D) + size(M_C), 1e-300)
@@ -710,9 +419,9 @@ def solve_areas(energies: Sequence[float], J: float | None = None, *, cycle: flo
     >>> r.delta_T_max
     985.0
     """
-    _check_positive("J", J, "kg·m²")
-    _check_positive("ω0", omega0, "rad/s")
-    _check_positive("the mean speed", omega_mean, "rad/s")
+    check_positive("J", J, "kg·m²")
+    check_positive("ω0", omega0, "rad/s")
+    check_positive("the mean speed", omega_mean, "rad/s")
     if (omega0 is None) == (omega_mean is None):
         raise InputError("give exactly one speed: ω0 or the mean speed")
     if delta is not None and not (0.0 < delta < 2.0):
@@ -746,87 +455,6 @@ def solve_areas(energies: Sequence[float], J: float | None = None, *, cycle: flo
     return Task2Result(rows=rows, cycle=cycle, **res)
 
 
-# the reported numbers, in the order of the JSON document (flywheel.render.task2.to_dict)
-_REPORTED = ("omega_max", "omega_min", "omega_mean", "delta", "phi_omega_max", "phi_omega_min",
-             "delta_T_max", "M_C", "J_required", "M_D", "J", "omega0", "omega_end", "work_end",
-             "work_driving", "work_resistance", "power", "delta_target", "rim_radius",
-             "rim_mass")
-
-
-def nonfinite(result: Task2Result) -> str | None:
-    """``"name = inf"`` for the first reported number that is inf or NaN, else None.
-
-    Inputs near the limits of double precision (a moment of 1e308 N·m, ω0 = 1e200 rad/s) make
-    the formulas overflow; the caller turns this into one error line instead of printing
-    Infinity/NaN (which is not JSON). The rpm equivalents n = 30·ω/π are checked too. A row's
-    angle may be NaN by design (an area diagram without crossing angles), so only an infinite
-    angle counts.
-
-    >>> nonfinite(seed_task("triangle")) is None
-    True
-    """
-    def bad(x) -> bool:
-        return isinstance(x, float) and not math.isfinite(x)
-
-    for name in _REPORTED:
-        v = getattr(result, name)
-        if bad(v) and not (name.startswith("phi_") and math.isnan(v)):
-            return f"{name} = {v!r}"
-    for name in ("omega0", "omega_max", "omega_min", "omega_mean"):
-        if bad(getattr(result, name) * (30.0 / math.pi)):
-            return f"rpm.{name} = inf"
-    for i, row in enumerate(result.rows):
-        if math.isinf(row.phi):
-            return f"segments[{i}].phi = {row.phi!r}"
-        for name in ("M_D", "M_C", "A", "omega"):
-            if bad(getattr(row, name)):
-                return f"segments[{i}].{name} = {getattr(row, name)!r}"
-    return None
-
-
-# -- seed 002 -----------------------------------------------------------------------------------
-
-SEED_DEFAULTS = {"M_D": 15.0, "J": 12.0, "omega0": 200.0}
-SEED_SPANS_DEG = {"triangle": (90.0, 270.0), "rectangle": (90.0, 180.0)}
-
-
-def seed_task(profile: str = "triangle", *, M_D: float = 15.0, J: float = 12.0,
-              omega0: float = 200.0, start: float | None = None, end: float | None = None,
-              M_C: float | None = None, delta: float | None = None) -> Task2Result:
-    """Seed 002 («Задача 2»): constant driving moment ``M_D`` [N·m], resistance a triangle
-    (peak in the middle) or a rectangle on [start, end] [rad] (defaults π/2…3π/2 and
-    π/2…π); J [kg·m²]; ω0 [rad/s] at φ = 0. Without ``M_C`` its peak comes from the balance
-    (60 N·m in both seed tasks); with it the motion need not be steady.
-
-    >>> round(seed_task("rectangle").omega_min, 6)   # seed: 199.98
-    199.980363
-    """
-    if profile not in SEED_SPANS_DEG:
-        raise InputError(f"profile must be triangle or rectangle (got {profile!r})")
-    d0, d1 = SEED_SPANS_DEG[profile]
-    start = math.radians(d0) if start is None else start
-    end = math.radians(d1) if end is None else end
-    if not start < end:
-        raise InputError(f"from ({math.degrees(start):g}°) must be less than to "
-                         f"({math.degrees(end):g}°)")
-    if start < 0 or end > TWO_PI * (1 + 1e-12):
-        raise InputError(f"from and to must lie within 0…360° (got {math.degrees(start):g}°, "
-                         f"{math.degrees(end):g}°)")
-    _check_positive("M_D", M_D, "N·m")
-    _check_positive("J", J, "kg·m²")
-    _check_positive("ω0", omega0, "rad/s")
-    shape = triangle if profile == "triangle" else rectangle
-    drive = constant(M_D)
-    unknown = None
-    if M_C is None:
-        M_C = balance(lambda x: drive, lambda x: shape(x, start, end), "resistance")
-        unknown = "resistance"
-    else:
-        _check_positive("M_C", M_C, "N·m")
-    return solve(drive, shape(M_C, start, end), J, omega0=omega0, delta=delta,
-                 unknown=unknown)
-
-
 def sample(result: Task2Result, n: int = 1441) -> dict[str, list[float]]:
     """Curves for plotting: φ [rad], M_D, M_C [N·m], A [J], ω [rad/s] on n + the table's points.
 
@@ -855,6 +483,6 @@ def sample(result: Task2Result, n: int = 1441) -> dict[str, list[float]]:
     return out
 
 
-__all__ = ["Piece", "Moment", "Row", "Task2Result", "constant", "piecewise_linear", "triangle",
-           "rectangle", "trapezoid", "harmonic", "net_pieces", "crossings", "balance", "solve",
-           "solve_areas", "seed_task", "sample", "size", "nonfinite"]
+
+__all__ = ["BALANCE_RTOL", "NotFiniteError", "Row", "Task2Result", "balance", "solve",
+           "solve_areas", "sample", "check_positive"]

@@ -1,6 +1,7 @@
 """`flywheel aggregate` output: the JSON document, the rich summary and the plots against time.
 
-Renderers compute no physics: they format a :class:`flywheel.elastic.model.AggregateResult`.
+Renderers compute no physics: they format a :class:`flywheel.elastic.model.AggregateResult` (its
+JSON document is the result's own :meth:`~flywheel.elastic.model.AggregateResult.to_document`).
 rich and matplotlib are imported inside the functions that use them. Every text handed to rich
 goes through :func:`rich.markup.escape`: units in square brackets ("[kg·m²]", "[rad/s]") and
 "[motor]" would otherwise be taken for markup tags and vanish.
@@ -13,86 +14,18 @@ from __future__ import annotations
 
 import math
 
+from flywheel.render.nomenclature_ci import rotor_name, text, unit
+
 TWO_PI = 2.0 * math.pi
 RPM = 30.0 / math.pi  # rad/s → rev/min
 
 
-def _f(x):
-    return None if x is None else float(x)
-
-
-def to_dict(r, title: str = "", source: str = "") -> dict:
-    """The JSON document, SI units, reduced to shaft I.
-
-    Keys of the contract: natural_frequencies_hz (ascending, the rigid-body 0 excluded),
-    twist_amplitude [rad] (the first coupling, q2 of seed 003), elastic_moment_amplitude
-    [N·m] (the amplitude of c·q2, the same as of the transmitted moment −c·q2), delta_motor,
-    delta_machine; the last four are null without a motor. steady.elastic_moment_mean is the mean
-    transmitted moment c·(φ_k − φ_(k+1)) = −c·q (positive, M_0·i31); steady.twist_mean is the mean
-    of q (negative). notes: how the time-domain runs were bounded (empty if nothing to say).
-    """
-    ch, st = r.chain, r.steady
-    d: dict = {}
-    if title:
-        d["title"] = title
-    if source:
-        d["source"] = source
-    d.update({
-        "natural_frequencies_hz": [float(w) / TWO_PI for w in r.modes.elastic],
-        "twist_amplitude": _f(st.twist_amplitude[0]) if st else None,
-        "elastic_moment_amplitude": _f(st.moment_amplitude[0]) if st else None,
-        "delta_motor": _f(st.delta[0]) if st else None,
-        "delta_machine": _f(st.delta[-1]) if st else None,
-        "natural_frequencies_rad_s": [float(w) for w in r.modes.elastic],
-        "rotors": [{"name": n, "J_reduced": float(j), "speed_ratio": float(u)}
-                   for n, j, u in zip(ch.names, ch.J, ch.ratio)],
-        "connections": [{"c_reduced": float(c), "damping_reduced": float(b)}
-                        for c, b in zip(ch.c, ch.damping)],
-        "a": r.a.tolist(),
-        "c": r.c.tolist(),
-        "mode_shapes": r.modes.shapes[:, 1:].T.tolist(),
-    })
-    if st is not None:
-        dr = r.drive
-        d["motor"] = {"characteristic": dr.kind, "starting_torque": dr.M_start,
-                      "synchronous_speed": dr.omega_x, "M0_reduced": dr.M0,
-                      "amplitude_reduced": dr.amplitude}
-        d["steady"] = {
-            "omega_motor": st.omega_mean,
-            "omega_machine": st.omega_mean * float(ch.ratio[-1]),
-            "omega_forcing": st.omega_forcing,
-            "forcing_hz": st.omega_forcing / TWO_PI,
-            "omega_motor_max": st.omega_mean + float(st.omega_amplitude[0]),
-            "omega_motor_min": st.omega_mean - float(st.omega_amplitude[0]),
-            "omega_machine_max": (st.omega_mean + float(st.omega_amplitude[-1])) * float(ch.ratio[-1]),
-            "omega_machine_min": (st.omega_mean - float(st.omega_amplitude[-1])) * float(ch.ratio[-1]),
-            "twist_mean": [float(x) for x in st.twist_mean],       # q = φ_(k+1) − φ_k
-            "twist_amplitudes": [float(x) for x in st.twist_amplitude],
-            "elastic_moment_mean": [float(x) for x in st.moment_mean],  # −c·q, transmitted
-            "elastic_moment_amplitudes": [float(x) for x in st.moment_amplitude],
-            "delta": [float(x) for x in st.delta],
-        }
-        d["resonance"] = [{"natural_hz": x.omega_n / TWO_PI, "ratio": x.ratio, "margin": x.margin}
-                          for x in r.resonance]
-        if r.check is not None:
-            d["time_domain"] = {
-                "twist_amplitude": r.check_twist_amplitude,
-                "delta_motor": r.check_delta[0],
-                "delta_machine": r.check_delta[1],
-                "start_up_duration": float(r.startup.t[-1]),
-                "start_up_peak_elastic_moment": r.startup_peak_moment,
-                "start_up_time_to_95_percent": r.startup_time,
-                "steady_check_method": r.check.method,
-            }
-        d["notes"] = list(r.notes)
-    return d
-
-
 def to_json(r, title: str = "", source: str = "") -> str:
-    """The JSON text; a non-finite number is a ValueError (JSON has no NaN or Infinity)."""
+    """The result's document as JSON text; a non-finite number is a ValueError (JSON has no NaN
+    or Infinity; the command refuses such a result before it gets here)."""
     import json
 
-    return json.dumps(to_dict(r, title, source), indent=2, ensure_ascii=False, allow_nan=False)
+    return json.dumps(r.to_document(title, source), indent=2, ensure_ascii=False, allow_nan=False)
 
 
 def _g(x, fmt: str = ".6g") -> str:
@@ -101,7 +34,7 @@ def _g(x, fmt: str = ".6g") -> str:
     return format(0.0 if abs(x) < 1e-300 else float(x), fmt)
 
 
-def _matrix(name: str, m, unit: str):
+def _matrix(name: str, m, unit: str, lang: str = "en"):
     from rich.markup import escape
     from rich.table import Table
 
@@ -109,17 +42,24 @@ def _matrix(name: str, m, unit: str):
     t = Table(title=escape(f"{name} [{unit}]"))
     t.add_column("")
     for j in range(n):
-        t.add_column(f"j = {j + 1}", justify="right")
+        t.add_column(text("matrix_j", lang, j=j + 1), justify="right")
     for i in range(n):
-        t.add_row(f"i = {i + 1}", *(_g(m[i, j]) for j in range(n)))
+        t.add_row(text("matrix_i", lang, i=i + 1), *(_g(m[i, j]) for j in range(n)))
     return t
 
 
-def print_summary(r, title: str = "", source: str = "", console=None) -> None:
-    """Coefficients, natural frequencies, resonance margins and the steady state."""
+def print_summary(r, title: str = "", source: str = "", console=None, lang: str = "en") -> None:
+    """Coefficients, natural frequencies, resonance margins and the steady state; labels,
+    symbols and units in ``lang`` (en, ru: :mod:`flywheel.render.nomenclature_ci`)."""
     from rich.console import Console
     from rich.markup import escape as e
     from rich.table import Table
+
+    def L(key: str, **fields) -> str:
+        return text(key, lang, **fields)
+
+    def U(u: str) -> str:
+        return unit(u, lang)
 
     def table(title, columns):
         t = Table(title=e(title))
@@ -134,86 +74,88 @@ def print_summary(r, title: str = "", source: str = "", console=None) -> None:
     if title:
         console.print(f"[bold]{e(title)}[/bold]" + (f"  ({e(source)})" if source else ""))
     ch = r.chain
-    t = table("Rotors reduced to shaft I (J·u², u = ω/ω_I)", ("#", "rotor", "J_reduced [kg·m²]", "u"))
-    for k, (n, j, u) in enumerate(zip(ch.names, ch.J, ch.ratio)):
+    names = [rotor_name(n, lang) for n in ch.names]
+    t = table(L("ag_rotors"), ("#", L("rotor"), L("J_reduced"), L("u")))
+    for k, (n, j, u) in enumerate(zip(names, ch.J, ch.ratio)):
         row(t, k + 1, n, _g(j), _g(u))
     console.print(t)
-    t = table("Connections reduced to shaft I (c·u²)",
-              ("#", "between", "c [N·m/rad]", "damping [N·m·s/rad]"))
+    t = table(L("ag_connections"), ("#", L("between"), L("c"), L("damping")))
     for k, (c, b) in enumerate(zip(ch.c, ch.damping)):
-        row(t, k + 1, f"{ch.names[k]} – {ch.names[k + 1]}", _g(c), _g(b))
+        row(t, k + 1, f"{names[k]} – {names[k + 1]}", _g(c), _g(b))
     console.print(t)
-    console.print(e("Equations (9.24): Σ_j a_ij·q̈_j + Σ_j c_ij·q_j = Q_i, "
-                    "q1 = φ1, q_(k+1) = φ_(k+1) − φ_k"))
-    console.print(_matrix("inertia coefficients a_ij", r.a, "kg·m²"))
-    console.print(_matrix("stiffness coefficients c_ij", r.c, "N·m/rad"))
+    console.print(e(L("ag_equations")))
+    console.print(_matrix(L("a_ij"), r.a, U("kg·m²"), lang))
+    console.print(_matrix(L("c_ij"), r.c, U("N·m/rad"), lang))
 
-    t = table("Natural frequencies (K·x = ω²·M·x)", ("mode", "ω [rad/s]", "f [Hz]",
-                                                    "shape (φ, largest = 1)"))
+    t = table(L("ag_modes"), (L("mode"), L("omega_n"), L("f_n"), L("shape")))
     for k, w in enumerate(r.modes.omega):
         shape = ", ".join(_g(x, ".4g") for x in r.modes.shapes[:, k])
-        row(t, "rigid body" if k == 0 else k, _g(w), _g(w / TWO_PI), shape)
+        row(t, L("rigid_body") if k == 0 else k, _g(w), _g(w / TWO_PI), shape)
     console.print(t)
     st = r.steady
     if st is None:
-        console.print(e("no [motor]: natural frequencies only"))
+        console.print(e(L("ag_no_motor")))
         return
-    console.print(e(f"forcing ω_III = {_g(st.omega_forcing)} rad/s ({_g(st.omega_forcing / TWO_PI)} "
-                    f"Hz) at the steady speed ω_I = {_g(st.omega_mean)} rad/s "
-                    f"({_g(st.omega_mean * RPM)} rev/min)"))
-    t = table("Resonance margins", ("mode", "f_n [Hz]", "ω_forcing/ω_n", "margin |1 − ω_f/ω_n|"))
+    console.print(e(L("ag_forcing", w=_g(st.omega_forcing), f=_g(st.omega_forcing / TWO_PI),
+                      omega=_g(st.omega_mean), n=_g(st.omega_mean * RPM))))
+    t = table(L("ag_resonance"), (L("mode"), L("f_n_col"), L("ratio"), L("margin")))
     for k, x in enumerate(r.resonance):
         row(t, k + 1, _g(x.omega_n / TWO_PI), _g(x.ratio, ".4f"), _g(x.margin, ".4f"))
     console.print(t)
-    t = table("Steady state (closed form; solve_ivp check on the periodic orbit)",
-              ("quantity", "value", "unit", "solve_ivp"))
+    t = table(L("ag_steady"), (L("quantity"), L("value"), L("unit"), L("solve_ivp")))
     u_last = float(ch.ratio[-1])
-    row(t, "twist q2 = φ2 − φ1, mean", _g(st.twist_mean[0]), "rad", "")
-    row(t, "twist q2, amplitude", _g(st.twist_amplitude[0]), "rad", _g(r.check_twist_amplitude))
-    row(t, "elastic moment c·(φ1 − φ2) = −c·q2, mean", _g(st.moment_mean[0]), "N·m", "")
-    row(t, "elastic moment −c·q2, amplitude", _g(st.moment_amplitude[0]), "N·m", "")
-    row(t, "ω1 (motor) min … max", f"{_g(st.omega_mean - st.omega_amplitude[0])} … "
-        f"{_g(st.omega_mean + st.omega_amplitude[0])}", "rad/s", "")
-    row(t, "δ motor", _g(st.delta[0]), "", _g(r.check_delta[0] if r.check_delta else None))
-    row(t, "ω2 (machine, own shaft) min … max",
+    row(t, L("twist_mean"), _g(st.twist_mean[0]), U("rad"), "")
+    row(t, L("twist_amp"), _g(st.twist_amplitude[0]), U("rad"), _g(r.check_twist_amplitude))
+    row(t, L("moment_mean"), _g(st.moment_mean[0]), U("N·m"), "")
+    row(t, L("moment_amp"), _g(st.moment_amplitude[0]), U("N·m"), "")
+    row(t, L("omega_motor"), f"{_g(st.omega_mean - st.omega_amplitude[0])} … "
+        f"{_g(st.omega_mean + st.omega_amplitude[0])}", U("rad/s"), "")
+    row(t, L("delta_motor"), _g(st.delta[0]), "", _g(r.check_delta[0] if r.check_delta else None))
+    row(t, L("omega_machine"),
         f"{_g((st.omega_mean - st.omega_amplitude[-1]) * u_last)} … "
-        f"{_g((st.omega_mean + st.omega_amplitude[-1]) * u_last)}", "rad/s", "")
-    row(t, "δ machine", _g(st.delta[-1]), "", _g(r.check_delta[1] if r.check_delta else None))
+        f"{_g((st.omega_mean + st.omega_amplitude[-1]) * u_last)}", U("rad/s"), "")
+    row(t, L("delta_machine"), _g(st.delta[-1]), "",
+        _g(r.check_delta[1] if r.check_delta else None))
     if r.startup is not None:
-        row(t, "start-up: peak elastic moment", _g(r.startup_peak_moment), "N·m",
-            f"over {_g(r.startup.t[-1], '.4g')} s")
+        row(t, L("startup_peak"), _g(r.startup_peak_moment), U("N·m"),
+            L("startup_over", t=_g(r.startup.t[-1], '.4g')))
         if r.startup_time is not None:
-            row(t, "start-up: time to 95 % of ω1", _g(r.startup_time), "s", "")
+            row(t, L("startup_time"), _g(r.startup_time), U("s"), "")
     console.print(t)
     for note in r.notes:
-        console.print(e(f"note: {note}"))
+        console.print(e(L("note", note=L(f"note_{note.kind}", **dict(note.values)))))
 
 
-def plot(r, path, title: str = "") -> None:
-    """Speeds and the elastic moment against time: start-up and steady state (2×2 panels)."""
+def plot(r, path, title: str = "", lang: str = "en") -> None:
+    """Speeds and the elastic moment against time: start-up and steady state (2×2 panels);
+    labels in ``lang``."""
     import matplotlib
 
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
+    def L(key: str, **fields) -> str:
+        return text(key, lang, **fields)
+
     ch = r.chain
+    names = [rotor_name(n, lang) for n in ch.names]
     fig, axes = plt.subplots(2, 2, figsize=(11, 7))
-    for col, (h, name) in enumerate(((r.startup, "start-up"), (r.check, "steady state"))):
+    for col, (h, name) in enumerate(((r.startup, L("ag_plot_startup")),
+                                     (r.check, L("ag_plot_steady")))):
         ax = axes[0, col]
-        ax.plot(h.t, h.omega[0], label=f"ω1, {ch.names[0]}")
-        ax.plot(h.t, h.omega[-1], label=f"ω{ch.n}, {ch.names[-1]} (reduced to shaft I)")
-        ax.set_ylabel("ω [rad/s]")
+        ax.plot(h.t, h.omega[0], label=L("ag_plot_omega1", name=names[0]))
+        ax.plot(h.t, h.omega[-1], label=L("ag_plot_omegaN", n=ch.n, name=names[-1]))
+        ax.set_ylabel(L("ag_plot_omega_axis"))
         ax.set_title(name)
         ax.legend(fontsize=8)
         ax = axes[1, col]
-        ax.plot(h.t, -ch.c[0] * h.twist[0], color="tab:red",
-                label="elastic moment c·(φ1 − φ2) = −c·q2")
-        ax.set_ylabel("moment [N·m]")
-        ax.set_xlabel("t [s]")
+        ax.plot(h.t, -ch.c[0] * h.twist[0], color="tab:red", label=L("ag_plot_moment"))
+        ax.set_ylabel(L("ag_plot_moment_axis"))
+        ax.set_xlabel(L("ag_plot_t_axis"))
         ax.legend(fontsize=8)
     for ax in axes.flat:
         ax.grid(True, alpha=0.3)
-    fig.suptitle(title or "machine aggregate")
+    fig.suptitle(title or L("ag_plot_title"))
     fig.tight_layout()
     from pathlib import Path
 

@@ -1,75 +1,27 @@
-"""`flywheel task2` output: the JSON document, the rich summary and the plot.
+"""`flywheel task2` output: the JSON text, the rich summary and the plot.
 
-Renderers compute no physics: they format a :class:`flywheel.constant_inertia.solve.Task2Result`. Degrees appear
-here only. rich and matplotlib are imported inside the functions that use them.
+Renderers compute no physics: they format a :class:`flywheel.constant_inertia.solve.Task2Result`
+(its JSON document is the result's own :meth:`~flywheel.constant_inertia.solve.Task2Result.to_document`).
+rich and matplotlib are imported inside the functions that use them.
 """
 from __future__ import annotations
 
 import math
 
-RPM = 30.0 / math.pi  # rad/s → rev/min
-
-
-def _deg(x: float | None) -> float | None:
-    """Degrees, rounded to 1e-10° so that 247.49999999999997 reads 247.5."""
-    return None if x is None or math.isnan(x) else round(math.degrees(x), 10) + 0.0
+from flywheel.constant_inertia.solve import RPM
+from flywheel.render.nomenclature_ci import symbol, text, unit
 
 
 def to_dict(r, title: str = "", source: str = "") -> dict:
-    """The JSON document (SI units; angles in degrees where the key says ``_deg``).
-
-    Keys of the contract: omega_max, omega_min, omega_mean, delta, phi_omega_max_deg,
-    phi_omega_min_deg, delta_T_max, M_C, J_required (only when asked), segments.
-    """
-    d: dict = {}
-    if title:
-        d["title"] = title
-    if source:
-        d["source"] = source
-    d.update({
-        "omega_max": r.omega_max,
-        "omega_min": r.omega_min,
-        "omega_mean": r.omega_mean,
-        "delta": r.delta,
-        "phi_omega_max_deg": _deg(r.phi_omega_max),
-        "phi_omega_min_deg": _deg(r.phi_omega_min),
-        "delta_T_max": r.delta_T_max,
-        "M_C": r.M_C,
-    })
-    if r.J_required is not None:
-        d["J_required"] = r.J_required
-    d.update({
-        "M_D": r.M_D,
-        "balance_found": r.unknown,
-        "J": r.J,
-        "omega0": r.omega0,
-        "steady": r.steady,
-        "omega_end": r.omega_end,
-        "work_end": r.work_end,
-        "cycle_deg": math.degrees(r.cycle),
-        "rpm": {"omega0": r.omega0 * RPM, "omega_max": r.omega_max * RPM,
-                "omega_min": r.omega_min * RPM, "omega_mean": r.omega_mean * RPM},
-        "work_driving": r.work_driving,
-        "work_resistance": r.work_resistance,
-        "power": r.power,
-    })
-    if r.delta_target is not None:
-        d["delta_target"] = r.delta_target
-    if r.rim_mass is not None:
-        d["rim_radius"] = r.rim_radius
-        d["rim_mass"] = r.rim_mass
-    d["segments"] = [
-        {"phi_deg": _deg(row.phi), "phi": None if math.isnan(row.phi) else row.phi,
-         "kind": row.kind, "M_D": row.M_D, "M_C": row.M_C, "A": row.A, "omega": row.omega}
-        for row in r.rows]
-    return d
+    """The result's JSON document, :meth:`~flywheel.constant_inertia.solve.Task2Result.to_document`."""
+    return r.to_document(title, source)
 
 
 def to_json(r, title: str = "", source: str = "") -> str:
-    """``to_dict`` as indented JSON text (byte-identical for the same input)."""
+    """The result's document as indented JSON text (byte-identical for the same input)."""
     import json
 
-    return json.dumps(to_dict(r, title, source), indent=2, ensure_ascii=False)
+    return json.dumps(r.to_document(title, source), indent=2, ensure_ascii=False)
 
 
 def _g(x: float | None, fmt: str = ".6g") -> str:
@@ -78,16 +30,23 @@ def _g(x: float | None, fmt: str = ".6g") -> str:
     return format(0.0 if abs(x) < 1e-12 else x, fmt)
 
 
-def _angle(phi: float | None) -> str:
+def _angle(phi: float | None, lang: str = "en") -> str:
     if phi is None or math.isnan(phi):
-        return "(angle not given)"
-    return f"φ = {_g(math.degrees(phi))}° ({_g(phi / math.pi)}π rad)"
+        return text("angle_unknown", lang)
+    return text("angle", lang, deg=_g(math.degrees(phi)), pi=_g(phi / math.pi))
 
 
-def print_summary(r, title: str = "", source: str = "", console=None) -> None:
-    """The segment table and the results, as the seed presents them, on a rich console."""
+def print_summary(r, title: str = "", source: str = "", console=None, lang: str = "en") -> None:
+    """The segment table and the results, as the seed presents them, on a rich console; labels,
+    symbols and units in ``lang`` (en, ru: :mod:`flywheel.render.nomenclature_ci`)."""
     from rich.console import Console
     from rich.table import Table
+
+    def L(key: str, **fields) -> str:
+        return text(key, lang, **fields)
+
+    def U(u: str) -> str:
+        return unit(u, lang)
 
     console = console or Console()
     if title:
@@ -95,56 +54,59 @@ def print_summary(r, title: str = "", source: str = "", console=None) -> None:
 
         console.print(f"[bold]{escape(title)}[/bold]" + (f"  ({escape(source)})" if source else ""))
     if r.unknown:
-        name = {"resistance": "M_C", "driving": "M_D"}[r.unknown]
+        name = symbol({"resistance": "M_C", "driving": "M_D"}[r.unknown], lang)
         val = r.M_C if r.unknown == "resistance" else r.M_D
-        console.print(f"cycle balance ∮M_D dφ = ∮M_C dφ gives {name} = {_g(val)} N·m "
-                      f"(work per cycle {_g(r.work_driving)} J)")
+        console.print(L("t2_balance", name=name, value=_g(val), work=_g(r.work_driving)))
     elif r.M_C is not None:
-        console.print(f"M_D = {_g(r.M_D)} N·m, M_C = {_g(r.M_C)} N·m (given)")
+        console.print(L("t2_given", M_D=_g(r.M_D), M_C=_g(r.M_C)))
     if not r.steady:
-        console.print(f"[yellow]the motion is not steady:[/yellow] the work over the cycle is "
-                      f"{r.work_end:.6g} J, so ω after one cycle is {_g(r.omega_end, '.6f')} "
-                      f"rad/s (ω0 = {_g(r.omega0, '.6f')} rad/s)")
+        console.print(L("t2_unsteady", work=f"{r.work_end:.6g}", omega_end=_g(r.omega_end, ".6f"),
+                        omega0=_g(r.omega0, ".6f")))
 
-    t = Table(title="Segments: ½·J·(ω² − ω0²) = A(φ) = ∫(M_D − M_C) dφ\n"
-                    "φ \\[deg], M \\[N·m], A \\[J], ω \\[rad/s]")
-    for col, just in (("#", "right"), ("φ°", "right"), ("φ/π", "right"),
-                      ("point", "left"), ("M_D", "right"), ("M_C", "right"),
-                      ("A", "right"), ("ω", "right")):
+    t = Table(title=L("t2_segments"))
+    for col, just in (("#", "right"), (L("phi_deg"), "right"), (L("phi_pi"), "right"),
+                      (L("point"), "left"), (symbol("M_D", lang), "right"),
+                      (symbol("M_C", lang), "right"), (L("A"), "right"), (L("omega"), "right")):
         t.add_column(col, justify=just, no_wrap=True)
     for i, row in enumerate(r.rows):
         deg = None if math.isnan(row.phi) else math.degrees(row.phi)
         t.add_row(str(i), _g(deg), _g(None if math.isnan(row.phi) else row.phi / math.pi),
-                  "M_D = M_C" if row.kind == "crossing" and row.M_D is not None else
-                  ("crossing" if row.kind == "crossing" else "bound"),
+                  L("crossing_MD_MC") if row.kind == "crossing" and row.M_D is not None else
+                  L("crossing" if row.kind == "crossing" else "bound"),
                   _g(row.M_D), _g(row.M_C), _g(row.A), _g(row.omega, ".6f"))
     console.print(t)
 
-    t = Table(title="Results")
-    for col in ("quantity", "value", "unit", ""):
+    def rpm(x: float) -> str:
+        return L("rpm", n=_g(x * RPM))
+
+    def rpm_at(x: float, phi: float | None) -> str:
+        return L("rpm_at", n=_g(x * RPM), angle=_angle(phi, lang))
+
+    t = Table(title=L("results"))
+    for col in (L("quantity"), L("value"), L("unit"), ""):
         t.add_column(col)
-    t.add_row("J (reduced inertia)", _g(r.J), "kg·m²", "")
-    t.add_row("ω0 (at φ = 0)", _g(r.omega0, ".6f"), "rad/s", f"{_g(r.omega0 * RPM)} rpm")
-    t.add_row("ω_max", _g(r.omega_max, ".6f"), "rad/s",
-              f"{_g(r.omega_max * RPM)} rpm at {_angle(r.phi_omega_max)}")
-    t.add_row("ω_min", _g(r.omega_min, ".6f"), "rad/s",
-              f"{_g(r.omega_min * RPM)} rpm at {_angle(r.phi_omega_min)}")
-    t.add_row("ω_ср = (ω_max + ω_min)/2", _g(r.omega_mean, ".6f"), "rad/s",
-              f"{_g(r.omega_mean * RPM)} rpm")
-    t.add_row("δ = (ω_max − ω_min)/ω_ср", _g(r.delta), "", "")
-    t.add_row("ΔT_нб = A_max − A_min", _g(r.delta_T_max), "J", "")
+    t.add_row(L("J"), _g(r.J), U("kg·m²"), "")
+    t.add_row(L("omega0"), _g(r.omega0, ".6f"), U("rad/s"), rpm(r.omega0))
+    t.add_row(L("omega_max"), _g(r.omega_max, ".6f"), U("rad/s"),
+              rpm_at(r.omega_max, r.phi_omega_max))
+    t.add_row(L("omega_min"), _g(r.omega_min, ".6f"), U("rad/s"),
+              rpm_at(r.omega_min, r.phi_omega_min))
+    t.add_row(L("omega_mean"), _g(r.omega_mean, ".6f"), U("rad/s"), rpm(r.omega_mean))
+    t.add_row(L("delta"), _g(r.delta), "", "")
+    t.add_row(L("delta_T_max"), _g(r.delta_T_max), U("J"), "")
     if r.power is not None:
-        t.add_row("power = mean M_D · ω_ср", _g(r.power), "W", "")
+        t.add_row(L("power"), _g(r.power), U("W"), "")
     if r.J_required is not None:
-        t.add_row(f"J for δ = {_g(r.delta_target)}", _g(r.J_required), "kg·m²",
-                  "ΔT_нб/(δ·ω_ср²)")
+        t.add_row(L("J_required", delta=_g(r.delta_target)), _g(r.J_required), U("kg·m²"),
+                  L("J_required_how"))
     if r.rim_mass is not None:
-        t.add_row(f"rim mass at R = {_g(r.rim_radius)} m", _g(r.rim_mass), "kg", "m = J/R²")
+        t.add_row(L("rim_mass", R=_g(r.rim_radius)), _g(r.rim_mass), U("kg"), L("rim_mass_how"))
     console.print(t)
 
 
-def plot(r, path, title: str = "") -> None:
-    """M_D, M_C, A and ω against φ [deg] into an image file (matplotlib, Agg backend)."""
+def plot(r, path, title: str = "", lang: str = "en") -> None:
+    """M_D, M_C, A and ω against φ [deg] into an image file (matplotlib, Agg backend); labels in
+    ``lang``."""
     import matplotlib
 
     matplotlib.use("Agg")
@@ -152,40 +114,44 @@ def plot(r, path, title: str = "") -> None:
 
     from flywheel.constant_inertia.solve import sample
 
+    def L(key: str, **fields) -> str:
+        return text(key, lang, **fields)
+
     if r.driving is not None:
         s = sample(r)
         x = [math.degrees(p) for p in s["phi"]]
         fig, axes = plt.subplots(3, 1, figsize=(8, 9), sharex=True)
         ax = axes[0]
-        ax.plot(x, s["M_D"], label="M_D (driving)")
-        ax.plot(x, s["M_C"], label="M_C (resistance)")
-        ax.set_ylabel("moment [N·m]")
+        ax.plot(x, s["M_D"], label=L("t2_plot_MD"))
+        ax.plot(x, s["M_C"], label=L("t2_plot_MC"))
+        ax.set_ylabel(L("t2_plot_moment"))
         ax.legend()
-        axes[1].plot(x, s["A"], color="tab:green", label="A(φ) = ∫(M_D − M_C) dφ")
-        axes[1].set_ylabel("A [J]")
+        axes[1].plot(x, s["A"], color="tab:green", label=L("t2_plot_A"))
+        axes[1].set_ylabel(L("t2_plot_A_axis"))
         axes[1].legend()
-        axes[2].plot(x, s["omega"], color="tab:red", label="ω(φ)")
+        axes[2].plot(x, s["omega"], color="tab:red", label=L("t2_plot_omega"))
     else:
         known = not math.isnan(r.rows[0].phi)
         x = [math.degrees(row.phi) if known else i for i, row in enumerate(r.rows)]
         fig, axes = plt.subplots(2, 1, figsize=(8, 6), sharex=True)
         axes = [None, *axes]
         axes[1].plot(x, [row.A for row in r.rows], "o-", color="tab:green",
-                     label="energy at the crossings")
-        axes[1].set_ylabel("A [J]")
+                     label=L("t2_plot_A_areas"))
+        axes[1].set_ylabel(L("t2_plot_A_axis"))
         axes[1].legend()
         axes[2].plot(x, [row.omega for row in r.rows], "o-", color="tab:red",
-                     label="ω at the crossings")
+                     label=L("t2_plot_omega_areas"))
     ax = axes[2]
-    ax.axhline(r.omega_mean, color="grey", linestyle="--", linewidth=0.8, label="ω_ср")
-    ax.set_ylabel("ω [rad/s]")
-    ax.set_xlabel("φ [deg]" if r.driving is not None or not math.isnan(r.rows[0].phi)
-                  else "crossing number")
+    ax.axhline(r.omega_mean, color="grey", linestyle="--", linewidth=0.8,
+               label=L("t2_plot_omega_mean"))
+    ax.set_ylabel(L("t2_plot_omega_axis"))
+    ax.set_xlabel(L("t2_plot_phi_axis") if r.driving is not None or not math.isnan(r.rows[0].phi)
+                  else L("t2_plot_crossing_no"))
     ax.legend()
     for a in axes:
         if a is not None:
             a.grid(True, alpha=0.3)
-    fig.suptitle(title or f"task 2: δ = {r.delta:.6g}, ΔT_нб = {r.delta_T_max:.6g} J")
+    fig.suptitle(title or L("t2_plot_title", delta=f"{r.delta:.6g}", dT=f"{r.delta_T_max:.6g}"))
     fig.tight_layout()
     fig.savefig(path, dpi=100)
     plt.close(fig)

@@ -266,10 +266,9 @@ def results_of(kind: str, doc: dict, source: str, n_points: int = RUN_POINTS) ->
         from flywheel.render.tables import _clean
 
         return _clean(analyze(case, n_points=n_points).summary()["results"])
-    from flywheel.render.task2 import to_dict
     from flywheel.cases.task2 import solve_case
 
-    return to_dict(solve_case(case, source))
+    return solve_case(case, source).to_document()
 
 
 def answer_value(results: dict, name: str):

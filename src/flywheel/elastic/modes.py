@@ -1,0 +1,107 @@
+"""Natural frequencies and mode shapes of the rotor chain, K·x = ω²·M·x, and the resonance test.
+
+A free chain has one rigid-body mode (ω = 0) and N − 1 torsional modes (W.T. Thomson, *Theory of
+Vibration with Applications*, ch. "Systems with two or more degrees of freedom"); the seed's
+two-mass model (seed 003, Ефанов ch. 9) has ω = √(c·(J1 + J2)/(J1·J2)). Computed once per chain
+(:func:`natural_frequencies`) and handed to everything that needs them. scipy is imported inside
+the function that uses it.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from flywheel.elastic.chain import Chain, Drive, damping_matrix, mass_matrix, stiffness_matrix
+from flywheel.errors import InputError
+
+#: relative tolerance under which an eigenvalue counts as the rigid-body mode
+RIGID_TOL = 1e-9
+#: resonance: |ω − ω_n|/ω_n below this for a mode whose damping ratio is below it too (the
+#: dynamic magnification would exceed about 1/(2·√2·RESONANCE_TOL) ≈ 3.5·10⁵)
+RESONANCE_TOL = 1e-6
+
+
+def two_mass_frequency(J1: float, J2: float, c: float) -> float:
+    """Natural frequency of the two-mass torsional system [rad/s]:
+    ω = √(c·(J1 + J2)/(J1·J2)) (the coupling's mode of the seed's model).
+
+    >>> round(two_mass_frequency(1.0, 1.0, 2.0), 12)
+    2.0
+    """
+    return math.sqrt(c * (J1 + J2) / (J1 * J2))
+
+
+@dataclass(frozen=True)
+class Modes:
+    """omega : natural frequencies [rad/s], ascending, the rigid-body 0 first; shapes : the
+    mode shapes in absolute angles (columns, largest component 1)."""
+
+    omega: np.ndarray
+    shapes: np.ndarray
+
+    @property
+    def elastic(self) -> np.ndarray:
+        """The natural frequencies without the rigid-body mode [rad/s]."""
+        return self.omega[1:]
+
+    @property
+    def highest(self) -> float:
+        """The highest natural frequency [rad/s]: it sets the explicit integrator's step."""
+        return float(self.omega[-1])
+
+
+def natural_frequencies(ch: Chain) -> Modes:
+    """Solve K·x = ω²·M·x (scipy.linalg.eigh). A free chain has exactly one rigid-body mode,
+    ω = 0 (round-off set to zero), and N − 1 torsional modes.
+
+    >>> from flywheel.elastic.chain import chain
+    >>> m = natural_frequencies(chain([1.0, 1.0], [2.0]))
+    >>> [round(float(w), 9) for w in m.omega]
+    [0.0, 2.0]
+    """
+    from scipy.linalg import eigh
+
+    with np.errstate(all="ignore"):
+        lam, vec = eigh(stiffness_matrix(ch), mass_matrix(ch))
+    if not (np.all(np.isfinite(lam)) and np.all(np.isfinite(vec))):
+        with np.errstate(all="ignore"):
+            ratio = float(np.max(ch.c)) / float(np.min(ch.J))
+        raise InputError(
+            f"the natural frequencies are not finite: the eigenproblem K·x = ω²·M·x overflows "
+            f"double precision (stiffness up to {np.max(ch.c):g} N·m/rad against inertia down to "
+            f"{np.min(ch.J):g} kg·m², c/J = {ratio:g} 1/s²)")
+    scale = max(abs(lam[-1]), 1e-300)
+    lam = np.where(np.abs(lam) < RIGID_TOL * scale, 0.0, lam)
+    omega = np.sqrt(np.clip(lam, 0.0, None))
+    idx = np.argmax(np.abs(vec), axis=0)
+    shapes = vec / vec[idx, np.arange(vec.shape[1])]
+    return Modes(omega, shapes)
+
+
+def resonant_mode(ch: Chain, drive: Drive, modes: Modes, w: float) -> int | None:
+    """Index (into modes.elastic) of a torsional mode the forcing ω sits on with nothing to damp
+    it: |ω − ω_n|/ω_n < RESONANCE_TOL and the mode's damping ratio
+    ζ = xᵀ·C·x/(2·ω_n·xᵀ·M·x) < RESONANCE_TOL (C: the couplings and the motor's slope). None if
+    there is no such mode. The rigid-body mode (ω_n = 0) is never a resonance: ω > 0.
+
+    >>> from flywheel.elastic.chain import chain
+    >>> ch = chain([1.0, 1.0], [2.0])
+    >>> d = Drive("constant", 0.0, 1.0, 1.0, omega_nominal=2.0)
+    >>> resonant_mode(ch, d, natural_frequencies(ch), 2.0), resonant_mode(ch, d, natural_frequencies(ch), 1.9)
+    (0, None)
+    """
+    M, C = mass_matrix(ch), damping_matrix(ch, drive.slope)
+    for k, wn in enumerate(modes.elastic):
+        if not wn > 0:
+            continue
+        x = modes.shapes[:, k + 1]
+        zeta = float(x @ C @ x) / (2.0 * wn * float(x @ M @ x))
+        if abs(w - wn) / wn < RESONANCE_TOL and zeta < RESONANCE_TOL:
+            return k
+    return None
+
+
+__all__ = ["RIGID_TOL", "RESONANCE_TOL", "Modes", "natural_frequencies", "two_mass_frequency",
+           "resonant_mode"]

@@ -1,0 +1,186 @@
+"""The aggregate in time: scipy's solve_ivp on the periodic orbit (a check of the closed form) and
+from rest (the start-up), in the seed's coordinates (seed 003, eqs. 9.20, 9.24).
+
+The integrations are bounded: the explicit method (DOP853) needs about ten steps per period of
+the highest natural frequency, so the start-up runs at most MAX_FAST_PERIODS of them, and a
+steady check that would need more than CHECK_FAST_PERIODS (a slow machine on a stiff coupling)
+uses the implicit Radau method with the system's constant Jacobian. The natural frequencies come
+from the caller (computed once, :func:`flywheel.elastic.modes.natural_frequencies`); without them
+each function computes them itself. scipy is imported inside the function that uses it.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from flywheel.elastic.chain import Chain, Drive
+from flywheel.elastic.forced import Steady
+from flywheel.elastic.modes import Modes, natural_frequencies
+from flywheel.errors import InputError
+
+#: the explicit start-up runs at most this many periods of the highest natural frequency
+MAX_FAST_PERIODS = 2000
+#: the steady check is explicit up to this many periods of it, implicit (Radau) beyond
+CHECK_FAST_PERIODS = 500
+
+
+def _highest(ch: Chain, modes: Modes | None) -> float:
+    """The highest natural frequency [rad/s], from ``modes`` when the caller has them."""
+    return (modes or natural_frequencies(ch)).highest
+
+
+@dataclass(frozen=True)
+class History:
+    """t [s]; phi [rad] and omega [rad/s] of every rotor (rows), reduced to shaft I; twist [rad]
+    of every connection, q_{k+1} = φ_{k+1} − φ_k (rows; integrated as such, not a difference of
+    two large angles); method: the solve_ivp method used."""
+
+    t: np.ndarray
+    phi: np.ndarray
+    omega: np.ndarray
+    twist: np.ndarray
+    method: str = "DOP853"
+
+
+def state_space(ch: Chain, drive: Drive | None) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The equations as ẏ = A·y + b0 + b1·sin(ω·t) in the seed's coordinates, the state
+    y = (q1 = φ1, the twists q_2 … q_N, the speeds ω_1 … ω_N), all reduced to shaft I.
+
+    q̇1 = ω1, q̇_{k+1} = ω_{k+1} − ω_k; J_k·ω̇_k = the elastic and damping moments of the
+    connections on either side (connection j pulls its left rotor by c_j·q_{j+1} + b_j·q̇_{j+1}
+    and its right rotor back by as much) + M_Д(ω1) on the first rotor
+    (M_п − (M_п/ω_x)·ω1, or the constant M_0·i31) − (M_0·i31 + M̃·i31·sin ω_III·t) on the last
+    (9.20). The system is linear: A is also its (constant) Jacobian. drive None: free, b = 0.
+    """
+    n = ch.n
+    A = np.zeros((2 * n, 2 * n))
+    b0 = np.zeros(2 * n)
+    b1 = np.zeros(2 * n)
+    A[0, n] = 1.0
+    for j in range(n - 1):
+        A[1 + j, n + j], A[1 + j, n + j + 1] = -1.0, 1.0
+        for k, sign in ((j, 1.0), (j + 1, -1.0)):         # left rotor pulled, right held back
+            A[n + k, 1 + j] += sign * ch.c[j] / ch.J[k]
+            A[n + k, n + j + 1] += sign * ch.damping[j] / ch.J[k]
+            A[n + k, n + j] -= sign * ch.damping[j] / ch.J[k]
+    if drive is not None:
+        if drive.kind == "linear":
+            A[n, n] -= drive.slope / ch.J[0]
+            b0[n] += drive.M_start / ch.J[0]
+        else:
+            b0[n] += drive.M0 / ch.J[0]
+        b0[-1] -= drive.M0 / ch.J[-1]
+        b1[-1] -= drive.amplitude / ch.J[-1]
+    return A, b0, b1
+
+
+def simulate(ch: Chain, drive: Drive | None, phi0, omega0, t_end: float, n_samples: int = 2001,
+             rtol: float = 1e-9, atol: float = 1e-12, method: str = "DOP853",
+             modes: Modes | None = None) -> History:
+    """Integrate M·φ̈ + C·φ̇ + K·φ = F(t, φ̇) with scipy's solve_ivp from φ0, ω0, in the
+    coordinates of :func:`state_space`.
+
+    F: the motor torque M_Д(φ̇_1) on the first rotor, −(M_0·i31 + M̃·i31·sin(ω_III·t)) on the last
+    (9.20), ω_III = forcing_ratio × the steady speed (the seed's linear model); drive None: free.
+    method "DOP853" (explicit) takes steps of at most 1/8 of the shortest period, the highest
+    natural frequency's or the forcing's; "Radau" (implicit, for a stiff system: a torsional mode
+    far faster than the forcing) gets the constant Jacobian and steps of at most 1/8 of the forcing
+    period — it follows the forced motion but damps a mode's own oscillation it does not resolve.
+    """
+    from scipy.integrate import solve_ivp
+
+    n = ch.n
+    A, b0, b1 = state_space(ch, drive)
+    w = drive.forcing_ratio * drive.steady_speed() if drive is not None else 0.0
+    phi0 = np.asarray(phi0, dtype=float)
+    y0 = np.concatenate([[phi0[0]], np.diff(phi0), np.asarray(omega0, dtype=float)])
+
+    def rhs(t, y):
+        return A @ y + b0 + b1 * math.sin(w * t)
+
+    fastest = max(_highest(ch, modes), w, 1e-300)
+    t_eval = np.linspace(0.0, t_end, n_samples)
+    if method == "Radau":
+        opts = {"jac": A, "max_step": 2 * math.pi / max(w, 1e-300) / 8}
+    else:
+        opts = {"max_step": 2 * math.pi / fastest / 8}
+    with np.errstate(all="ignore"):
+        sol = solve_ivp(rhs, (0.0, t_end), y0, method=method, t_eval=t_eval, rtol=rtol,
+                        atol=atol, **opts)
+    if not sol.success or not np.all(np.isfinite(sol.y)):
+        raise InputError(f"solve_ivp ({method}) failed over 0 … {t_end:.4g} s: "
+                         f"{sol.message if not sol.success else 'the solution is not finite'}")
+    q1, twist, om = sol.y[0], sol.y[1:n], sol.y[n:]
+    phi = q1 + np.vstack([np.zeros_like(q1), np.cumsum(twist, axis=0)])
+    return History(sol.t, phi, om, twist, method)
+
+
+def energy(ch: Chain, h: History) -> np.ndarray:
+    """Kinetic plus potential energy along a history [J]: ½·Σ J·ω² + ½·Σ c·q²."""
+    return (0.5 * (ch.J[:, None] * h.omega ** 2).sum(axis=0)
+            + 0.5 * (ch.c[:, None] * h.twist ** 2).sum(axis=0))
+
+
+def steady_method(ch: Chain, w: float, periods: float = 5.0,
+                  modes: Modes | None = None) -> tuple[str, float]:
+    """("DOP853" or "Radau", the periods of the highest natural frequency in ``periods`` forcing
+    periods): explicit while that is at most CHECK_FAST_PERIODS, implicit beyond.
+
+    >>> from flywheel.elastic.chain import chain
+    >>> steady_method(chain([1.0, 1.0], [2.0]), 1.0)
+    ('DOP853', 10.0)
+    >>> steady_method(chain([1.0, 1.0], [2.0e6]), 1.0)
+    ('Radau', 10000.0)
+    """
+    fast = periods * _highest(ch, modes) / w
+    return ("DOP853" if fast <= CHECK_FAST_PERIODS else "Radau"), fast
+
+
+def steady_run(ch: Chain, drive: Drive, st: Steady, periods: float = 5.0,
+               per_period: int = 200, modes: Modes | None = None) -> History:
+    """solve_ivp started on the closed-form periodic orbit (φ = θ + Im X, ω = ω_s + ω·Re X) over a
+    few forcing periods: it must stay there (a check of the closed form). Explicit (DOP853) when
+    that is at most CHECK_FAST_PERIODS periods of the highest natural frequency, else the implicit
+    Radau method with the constant Jacobian (:func:`steady_method`): the cost is bounded either
+    way."""
+    w = st.omega_forcing
+    phi0 = st.theta + st.X.imag
+    omega0 = st.omega_mean + w * st.X.real
+    t_end = periods * 2 * math.pi / w
+    modes = modes or natural_frequencies(ch)
+    method, _ = steady_method(ch, w, periods, modes)
+    return simulate(ch, drive, phi0, omega0, t_end, n_samples=int(periods * per_period) + 1,
+                    method=method, modes=modes)
+
+
+def start_up_duration(ch: Chain, drive: Drive, modes: Modes | None = None) -> tuple[float, float]:
+    """(the default start-up duration, the duration wanted before the cap) [s]: five mechanical
+    time constants τ = ΣJ·ω_x/M_п of the linear characteristic or 20 forcing periods, whichever is
+    longer, at most MAX_FAST_PERIODS periods of the highest natural frequency."""
+    w = drive.forcing_ratio * drive.steady_speed()
+    wanted = 20 * 2 * math.pi / w
+    if drive.kind == "linear":
+        wanted = max(wanted, 5 * ch.J.sum() * drive.omega_x / drive.M_start)
+    fastest = _highest(ch, modes)
+    return min(wanted, MAX_FAST_PERIODS * 2 * math.pi / fastest), wanted
+
+
+def start_up(ch: Chain, drive: Drive, t_end: float | None = None, n_samples: int = 4001,
+             modes: Modes | None = None) -> History:
+    """From rest, all twists zero (linear motor), or from the nominal speed with the load applied
+    at t = 0 (constant torque, which has no start-up of its own). Default duration:
+    :func:`start_up_duration`. Explicit (DOP853): the start-up excites the torsional modes, and
+    their peak moment is what it is for."""
+    omega_s = drive.steady_speed()
+    modes = modes or natural_frequencies(ch)
+    if t_end is None:
+        t_end, _ = start_up_duration(ch, drive, modes)
+    v0 = 0.0 if drive.kind == "linear" else omega_s
+    return simulate(ch, drive, np.zeros(ch.n), np.full(ch.n, v0), t_end, n_samples=n_samples,
+                    modes=modes)
+
+
+__all__ = ["MAX_FAST_PERIODS", "CHECK_FAST_PERIODS", "History", "state_space", "simulate",
+           "energy", "steady_method", "steady_run", "start_up_duration", "start_up"]
