@@ -33,6 +33,7 @@ import numpy as np
 from flywheel.cases.tabulated import (TabulatedSpec, link_inertia_at_positions,  # noqa: F401
                                       load_moments_at_positions, reduced_inertia_at_positions,
                                       static_moments)
+from flywheel.dynamics.periodic import periodic_linear
 
 # -- periodic interpolation ---------------------------------------------------------------------
 
@@ -54,16 +55,14 @@ def periodic_interpolate(nodes: np.ndarray, values: np.ndarray, phi: np.ndarray,
     period = 2 * np.pi
     xe = np.append(nodes, nodes[0] + period)
     ye = np.append(values, values[0])
-    t = nodes[0] + np.mod(np.asarray(phi, float) - nodes[0], period)
     if kind == "periodic-spline":
         from scipy.interpolate import CubicSpline
 
+        t = nodes[0] + np.mod(np.asarray(phi, float) - nodes[0], period)
         cs = CubicSpline(xe, ye, bc_type="periodic")
         return cs(t, 1 if derivative else 0)
     # a grid node within 1e-9 rad of a position belongs to the interval that starts there
-    k = np.clip(np.searchsorted(xe, t + 1e-9, side="right") - 1, 0, nodes.size - 1)
-    slope = (ye[k + 1] - ye[k]) / (xe[k + 1] - xe[k])
-    return slope if derivative else ye[k] + slope * (t - xe[k])
+    return periodic_linear(xe, ye, phi, period, derivative=derivative, snap=1e-9)
 
 
 def _nodes_rad(spec: TabulatedSpec) -> np.ndarray:
