@@ -144,6 +144,22 @@ def _cycle_mean(y: np.ndarray, phi_grid: np.ndarray) -> float:
     return float(cumulative_work(np.asarray(y, float), phi_grid)[-1] / (phi_grid[-1] - phi_grid[0]))
 
 
+def history_cycle_means(t: np.ndarray, omega: np.ndarray, period: float) -> tuple[np.ndarray, np.ndarray]:
+    """Cycle means (1/Φ)∮ω dφ of a history starting at φ = 0 (t [s], ω [rad/s]), one per whole
+    cycle, placed at the middle of its cycle in time: φ(t) = ∫ω dt and ∫ω² dt by the trapezoid
+    rule on the history's points (a picture of the approach for the plot; :func:`startup` takes
+    its own means from a quadrature carried in the integration)."""
+    phi = cumulative_work(omega, t)
+    q = cumulative_work(omega**2, t)
+    n = int(phi[-1] // period + 1e-9)
+    if n < 1:
+        return np.zeros(0), np.zeros(0)
+    edges = period * np.arange(n + 1)
+    t_edges = np.interp(edges, phi, t)
+    q_edges = np.interp(t_edges, t, q)
+    return 0.5 * (t_edges[1:] + t_edges[:-1]), np.diff(q_edges) / period
+
+
 def startup(phi_grid: np.ndarray, J: np.ndarray, dJ: np.ndarray, M_loads: np.ndarray, motor,
             omega_steady: float, delta: float, max_cycles: int = 2000,
             max_time: float | None = None, method: str = "RK45") -> dict:
