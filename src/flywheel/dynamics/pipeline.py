@@ -18,10 +18,10 @@ import numpy as np
 from flywheel.dynamics import loads as L
 from flywheel.dynamics import reduction, stages
 from flywheel.dynamics.columns import linkage_columns
-from flywheel.dynamics.grid import (DEFAULT_POINTS, MAX_POINTS, grid_options,  # noqa: F401
-                                    linkage_grid, report_index, slider_frame, standard_positions)
+from flywheel.dynamics.grid import (DEFAULT_POINTS, grid_options, linkage_grid, report_index,
+                                    slider_frame, standard_positions)
 from flywheel.dynamics.results import (CylinderResult, EnergyResult, LoadsResult, MotionResult,
-                                       ReductionResult, Results)
+                                       ReductionResult, Results, warnings_of)
 
 
 def analyze(case, n_points: int = DEFAULT_POINTS, at_deg: list[float] | None = None,
@@ -56,7 +56,7 @@ def analyze(case, n_points: int = DEFAULT_POINTS, at_deg: list[float] | None = N
         columns=linkage_columns(phi, kin, mech.crank.name, ld, red, en, mo), at=at,
         position_angles=tuple(positions), links_drawn=links_drawn(mech),
         crank_length=float(mech.crank.length), time_domain=td,
-        warnings=tuple(w for r in (ld, red, en, sz, mo, td) if r is not None for w in r.warnings))
+        warnings=warnings_of(ld, red, en, sz, mo, td))
 
 
 def linkage_loads(case, mech, dcs: dict, kin) -> LoadsResult:

@@ -193,6 +193,11 @@ class TabulatedResult:
     M_dyn: np.ndarray                 # dynamic moment Мдин = ω_m²/2·dJ_II/dφ [N·m]
 
 
+def warnings_of(*stages) -> tuple[str, ...]:
+    """The warnings of the stage results given (None for a stage not run), in stage order."""
+    return tuple(w for r in stages if r is not None for w in r.warnings)
+
+
 def json_ready(obj):
     """JSON-ready: floats finite (NaN/inf → None), numpy scalars → Python, tuples → lists."""
     if isinstance(obj, dict):

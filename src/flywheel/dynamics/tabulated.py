@@ -38,7 +38,7 @@ from flywheel.dynamics.columns import tabulated_columns
 from flywheel.dynamics.grid import DEFAULT_POINTS, closed_grid, grid_options, report_index
 from flywheel.dynamics.periodic import periodic_linear
 from flywheel.dynamics.results import (EnergyResult, LoadsResult, MotionResult, ReductionResult,
-                                       Results, TabulatedResult)
+                                       Results, TabulatedResult, warnings_of)
 
 # -- periodic interpolation ---------------------------------------------------------------------
 
@@ -120,7 +120,7 @@ def analyze_tabulated(case, n_points: int = DEFAULT_POINTS, at_deg: list[float] 
                                      for k, p in enumerate(spec.positions_deg)),
         links_drawn=(), crank_length=float(spec.crank_length) if spec.crank_length else float("nan"),
         tabulated=tab, time_domain=td,
-        warnings=tuple(w for r in (red, ld, en, sz, mo, td) if r is not None for w in r.warnings))
+        warnings=warnings_of(red, ld, en, sz, mo, td))
 
 
 def tabulated_reduction(spec: TabulatedSpec, phi: np.ndarray) -> ReductionResult:
