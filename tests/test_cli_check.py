@@ -177,3 +177,31 @@ guide = { angle_deg = 0.0 }
     res = invoke("check", path)
     assert res.exit_code == 0, res.output
     assert "case is valid" in res.stdout
+
+
+def test_check_case_is_a_library_call_with_typed_numbers():
+    """`flywheel check` prints a CheckReport that the library computes: the compressor's
+    pistons (l1 = 0.1, l2 = 0.4 m) have strokes 2·l1, dead centres every 90°, and stand still
+    there with |a_q| = l1·(1 ± l1/l2)."""
+    import math
+
+    import numpy as np
+
+    from flywheel.cases.run import load_case
+    from flywheel.dynamics.check import CheckReport, check_case
+
+    rep = check_case(load_case(CASES / "compressor.toml"))
+    assert isinstance(rep, CheckReport) and rep.tabulated is None
+    assert rep.crank_speed_rps == pytest.approx(10.0, rel=1e-12)
+    assert [(s.slider, s.stroke) for s in rep.sliders] == [("3", pytest.approx(0.2, abs=1e-12)),
+                                                          ("5", pytest.approx(0.2, abs=1e-12))]
+    assert np.degrees(rep.dead_centre_angles) == pytest.approx([0, 90, 180, 270], abs=1e-9)
+    v_B, a_B = rep.point_analogues["B"]
+    assert v_B[[0, 2]] == pytest.approx([0, 0], abs=1e-12)
+    assert a_B[[0, 2]] == pytest.approx([0.1 * 1.25, 0.1 * 0.75], rel=1e-9)
+    assert rep.link_analogues["2"][0][0] == pytest.approx(0.25, rel=1e-12)   # ω_q2 = λ at φ = 0
+    press = check_case(load_case(CASES / "press.toml"))
+    assert press.mechanism is None and press.tabulated.J_II.size == 13
+    # Мдин = ω_m²/2·dJ_II/dφ, ω_m = 2π·140/60
+    w = 2 * math.pi * 140 / 60
+    assert press.tabulated.dynamic_moments == pytest.approx(w**2 / 2 * press.tabulated.dJ_II, rel=1e-12)

@@ -474,3 +474,65 @@ def test_natural_spline_matches_scipy():
 
 def test_negative_pressure_warning(printed):
     assert any("negative pressure" in w for w in printed.warnings)
+
+
+# -- the grid and the shape of the results -------------------------------------------------------
+
+def _same_kinematics(a, b) -> bool:
+    return (np.array_equal(a.phi, b.phi) and list(a.points) == list(b.points)
+            and list(a.links) == list(b.links)
+            and all(np.array_equal(getattr(a.points[n], f), getattr(b.points[n], f))
+                    for n in a.points for f in ("r", "v_q", "a_q"))
+            and all(np.array_equal(getattr(a.links[n], f), getattr(b.links[n], f))
+                    for n in a.links for f in ("theta", "omega_q", "eps_q")))
+
+
+def test_switch_angle_nodes_are_solved_alone_yet_equal_a_whole_solve():
+    """The angles where the slotted link's cutting force switches on and off are added to the
+    grid and only they are solved (grid.refined); the kinematics equal solve() on the whole
+    grid bit for bit, so the results do not depend on how the grid was built."""
+    from flywheel.cases.run import to_mechanism
+    from flywheel.dynamics.grid import closed_grid, force_switch_angles, linkage_grid, refined, standard_positions
+    from flywheel.linkage import solve
+
+    case = load_case(CASES / "slotted_link.toml")
+    mech = to_mechanism(case)
+    positions, dcs = standard_positions(mech)
+    extra = [p for _, p in positions]
+    first = closed_grid(720, extra)
+    switch = force_switch_angles(case.forces, mech, dcs, first, solve(mech, first))
+    phi, kin = linkage_grid(case, mech, dcs, 720, extra)
+    assert len(switch) == 4 and phi.size == first.size + 4    # s = 0.05 and 0.95, both ways
+    assert all(np.min(np.abs(phi - a)) == 0 and np.min(np.abs(first - a)) > 1e-6 for a in switch)
+    assert _same_kinematics(kin, solve(mech, phi))
+    # an added angle a hair below a node takes its place (the smaller one stays): that node is
+    # dropped, the new one solved
+    coarse = closed_grid(72, [])
+    finer = closed_grid(72, [coarse[5] - 5e-10, 1.0])
+    assert finer.size == coarse.size + 1 and coarse[5] not in finer
+    assert _same_kinematics(refined(mech, solve(mech, coarse), finer), solve(mech, finer))
+
+
+def test_results_are_frozen_and_the_document_is_the_summary(printed, tmp_path):
+    """Every stage result is frozen; summary.json is the results' document, which the
+    stages' fields fill (the flywheel's tangents from the energy–mass diagram, the rim share)."""
+    import dataclasses
+    import json
+
+    from flywheel.render.tables import summary_json
+
+    for part in (printed, printed.loads, printed.reduction, printed.energy, printed.sizing,
+                 printed.motion):
+        with pytest.raises(dataclasses.FrozenInstanceError):
+            part.warnings = ()
+    doc = printed.to_document()
+    assert json.loads(summary_json(printed)) == doc
+    assert doc["results"]["J_required_exact"] == printed.sizing.J_required_exact
+    assert doc["results"]["flywheel_rim_share"] == printed.sizing.rim_share == 1.0
+    assert doc["warnings"] == list(printed.warnings)
+    sz, A, J = printed.sizing, printed.energy.A, printed.reduction.J_II
+    # the tangents cut J_II = 0 at max(A − k₊J_II) and min(A − k₋J_II), where they touch
+    assert sz.T_k == pytest.approx(np.max(A - sz.k_plus * J), rel=1e-12)
+    assert sz.T_l == pytest.approx(np.min(A - sz.k_minus * J), rel=1e-12)
+    assert A[sz.i_tangent_max] - sz.k_plus * J[sz.i_tangent_max] == np.max(A - sz.k_plus * J)
+    assert sz.T_k - sz.T_l == pytest.approx(sz.J_required_exact * (sz.k_plus - sz.k_minus), rel=1e-12)

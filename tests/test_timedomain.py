@@ -254,3 +254,43 @@ def test_summary_shows_the_flywheel_placement_and_translates_the_time_domain(tmp
     assert "разгон из состояния покоя" in out["ru"] and "выбег после отключения привода" in out["ru"]
     assert "start-up" not in out["ru"] and "run-down" not in out["ru"]
     assert "time integration" not in out["ru"] and "интегрирование во времени" in out["ru"]
+
+
+def test_one_periodic_linear_interpolation_in_two_forms():
+    """periodic_linear is np.interp on the angle wrapped into the cycle, bit for bit; the
+    scalar PeriodicTables of the integration gives the same interpolant to round-off; the
+    derivative is the interval's forward difference, and ``snap`` moves a point just below a
+    node into the interval that starts there."""
+    from flywheel.dynamics.periodic import PeriodicTables, periodic_linear
+
+    rng = np.random.default_rng(3)
+    xp = np.concatenate([[0.0], np.sort(rng.uniform(0, 2 * np.pi, 40)), [2 * np.pi]])
+    fp = rng.normal(size=xp.size)
+    fp[-1] = fp[0]
+    x = rng.uniform(-3 * np.pi, 7 * np.pi, 2000)
+    got = periodic_linear(xp, fp, x, 2 * np.pi)
+    assert np.array_equal(got, np.interp(np.mod(x, 2 * np.pi), xp, fp))
+    tab = PeriodicTables(xp, fp, 2 * fp, -fp)
+    scalar = np.array([tab(float(v)) for v in x])
+    assert np.allclose(scalar[:, 0], got, rtol=0, atol=1e-14)
+    assert np.allclose(scalar[:, 1], 2 * got, rtol=0, atol=1e-14)
+    k = 7
+    slope = (fp[k + 1] - fp[k]) / (xp[k + 1] - xp[k])
+    mid = 0.5 * (xp[k] + xp[k + 1])
+    assert periodic_linear(xp, fp, np.array([mid]), 2 * np.pi, derivative=True)[0] == slope
+    below = np.array([xp[k + 1] - 1e-12])
+    assert periodic_linear(xp, fp, below, 2 * np.pi, derivative=True)[0] == slope
+    assert periodic_linear(xp, fp, below, 2 * np.pi, derivative=True, snap=1e-9)[0] == pytest.approx(
+        (fp[k + 2] - fp[k + 1]) / (xp[k + 2] - xp[k + 1]), rel=1e-15)
+
+
+def test_history_cycle_means():
+    """A start-up history ω(t) = a·t: φ = a·t²/2, so cycle k (φ from kΦ to (k+1)Φ) spans
+    t_k = √(2kΦ/a) … t_{k+1}, and its mean (1/Φ)∫ω² dt = a²(t_{k+1}³ − t_k³)/(3Φ)."""
+    a, period = 50.0, 2 * np.pi
+    t = np.linspace(0.0, 2.0, 200001)
+    mids, means = timedomain.history_cycle_means(t, a * t, period)
+    n = int(a * 2.0**2 / 2 // period)
+    edges = np.sqrt(2 * period * np.arange(n + 1) / a)
+    assert mids == pytest.approx(0.5 * (edges[1:] + edges[:-1]), rel=1e-8)
+    assert means == pytest.approx(a**2 * (edges[1:]**3 - edges[:-1]**3) / (3 * period), rel=1e-8)

@@ -339,6 +339,14 @@ class Case(StrictModel):
         _check_references(self)
         return self
 
+    def mechanism(self):
+        """The linkage as the kinematics describe it (:class:`flywheel.linkage.Mechanism`)."""
+        return to_mechanism(self)
+
+    def plausibility_warnings(self) -> list[str]:
+        """Allowed but unusual values, one line each (see :func:`plausibility_warnings`)."""
+        return plausibility_warnings(self)
+
 
 
 

@@ -192,6 +192,8 @@ def _validate(t: TabulatedSpec) -> None:
 
 def _check_finite(t: TabulatedSpec) -> None:
     """Finite inputs can still overflow (m·V_q² with V_q = 1e200): name the row and position."""
+    from flywheel.dynamics.tabulated import link_inertia_at_positions, load_moments_at_positions
+
     with np.errstate(over="ignore", invalid="ignore"):
         for name, J in link_inertia_at_positions(t).items():
             if not np.all(np.isfinite(J)):
@@ -205,65 +207,3 @@ def _check_finite(t: TabulatedSpec) -> None:
                 raise TableError((), f"the reduced moment of {name} overflows at position {i + 1} "
                                      f"({t.positions_deg[i]:g}°): the values are out of range "
                                      f"(allowed: SI values, N and m)")
-
-
-# -- per-position values: the table's own arithmetic (seed 004, eq. 7 and Мст), used by the
-#    validation above (overflow) and by the analysis (flywheel.dynamics.tabulated) --------------
-
-def _per_position(value, n: int) -> np.ndarray:
-    return np.full(n, float(value)) if not isinstance(value, list) else np.asarray(value, float)
-
-
-def link_inertia_at_positions(spec: TabulatedSpec) -> dict[str, np.ndarray]:
-    """Each link's share of J_II at every row of the table [kg·m²]: m·V_q² + J·ω_q².
-
-    >>> s = TabulatedSpec(positions_deg=[0, 60, 120, 180, 240, 300],
-    ...                   points={"B": [0, 1, 2, 0, 1, 2]}, links={"3": {"mass": 2.0, "point": "B"}})
-    >>> link_inertia_at_positions(s)["3"]
-    array([0., 2., 8., 0., 2., 8.])
-    """
-    n = len(spec.positions_deg)
-    out = {}
-    for name, lk in spec.links.items():
-        J = np.zeros(n)
-        if lk.mass > 0:
-            J += lk.mass * np.asarray(spec.points[lk.point], float) ** 2
-        if lk.J > 0:
-            J += lk.J * np.asarray(spec.omega_q[lk.omega_q or name], float) ** 2
-        out[name] = J
-    return out
-
-
-def reduced_inertia_at_positions(spec: TabulatedSpec) -> np.ndarray:
-    """J_II (the seed's Iпр) at every row of the table [kg·m²]."""
-    parts = link_inertia_at_positions(spec)
-    return sum(parts.values()) if parts else np.zeros(len(spec.positions_deg))
-
-
-def load_moments_at_positions(spec: TabulatedSpec) -> dict[str, np.ndarray]:
-    """Reduced moment of each load at every row [N·m], positive when it drives the crank:
-    a force F·|V_q|·cos α ("force NAME"), a moment as given ("moment NAME")."""
-    n = len(spec.positions_deg)
-    out = {}
-    for f in spec.forces:
-        F = _per_position(f.magnitude, n)
-        alpha = np.radians(_per_position(f.angle_deg, n))
-        out[f"force {f.name}"] = F * np.asarray(spec.points[f.point], float) * np.cos(alpha)
-    for m in spec.moments:
-        out[f"moment {m.name}"] = np.asarray(m.values, float)
-    return out
-
-
-def static_moments(spec: TabulatedSpec) -> np.ndarray:
-    """The seed's static moment Мст at every row [N·m]: −Σ of the loads' reduced moments, so a
-    resisting load counts positive (seed 004: Мст = −(Σ G·V·cos(G, V) − F·V_B4)).
-
-    >>> s = TabulatedSpec(positions_deg=[0, 60, 120, 180, 240, 300],
-    ...                   points={"B": [0.1] * 6},
-    ...                   forces=[{"name": "G", "point": "B", "magnitude": 100.0,
-    ...                            "angle_deg": [180, 180, 0, 0, 0, 180]}])
-    >>> static_moments(s)
-    array([ 10.,  10., -10., -10., -10.,  10.])
-    """
-    parts = load_moments_at_positions(spec)
-    return -sum(parts.values()) if parts else np.zeros(len(spec.positions_deg))

@@ -27,10 +27,11 @@ def schema_command() -> None:
 def check_command(case: Path = typer.Argument(..., help="Case file (TOML).")) -> None:
     """Validate a case file and print what it describes; exit 0 if valid, 2 if not."""
     from flywheel.cases.run import load_case
+    from flywheel.dynamics.check import check_case
     from flywheel.render.check import print_check
 
     c = _guard(load_case, case)
-    _guard(print_check, c, source=case, case=c)
+    print_check(_guard(check_case, c, source=case, case=c))
 
 
 def run_command(

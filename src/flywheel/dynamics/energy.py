@@ -7,8 +7,16 @@ from __future__ import annotations
 import numpy as np
 
 
+def trapezoid_areas(y: np.ndarray, x: np.ndarray) -> np.ndarray:
+    """The trapezoid rule's strips ½·(y_i + y_{i+1})·(x_{i+1} − x_i), one per interval: the one
+    quadrature of the package (:func:`cumulative_work` sums them running; a cycle total may sum
+    them pairwise with np.sum, which is more accurate and differs in the last bits)."""
+    return 0.5 * (y[1:] + y[:-1]) * np.diff(x)
+
+
 def cumulative_work(M: np.ndarray, phi: np.ndarray) -> np.ndarray:
-    """A(φ) = ∫₀^φ M dφ [J] by the trapezoid rule (A[0] = 0).
+    """A(φ) = ∫₀^φ M dφ [J] by the trapezoid rule (A[0] = 0); any running integral ∫₀^x y dx
+    (time t(φ) = ∫dφ/ω, angle φ(t) = ∫ω dt) is the same call.
 
     >>> phi = np.linspace(0, np.pi, 5)
     >>> float(cumulative_work(np.ones(5), phi)[-1]) == float(np.pi)
@@ -16,7 +24,7 @@ def cumulative_work(M: np.ndarray, phi: np.ndarray) -> np.ndarray:
     """
     out = np.empty_like(phi)
     out[0] = 0.0
-    np.cumsum(0.5 * (M[1:] + M[:-1]) * np.diff(phi), out=out[1:])
+    np.cumsum(trapezoid_areas(M, phi), out=out[1:])
     return out
 
 

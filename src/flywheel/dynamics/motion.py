@@ -3,6 +3,8 @@ from __future__ import annotations
 
 import numpy as np
 
+from flywheel.dynamics.energy import cumulative_work
+
 
 def omega_from_energy(T0: float, A: np.ndarray, J_I: float, J_II: np.ndarray) -> np.ndarray:
     """ω(φ) [rad/s] from ½(J_I + J_II(φ))·ω² = T0 + A(φ) (the kinetic-energy theorem;
@@ -35,12 +37,8 @@ def angular_acceleration(M_sum: np.ndarray, omega: np.ndarray, J: np.ndarray, dJ
 
 
 def time_law(omega: np.ndarray, phi: np.ndarray) -> np.ndarray:
-    """t(φ) = ∫₀^φ dφ/ω [s] (trapezoid)."""
-    inv = 1.0 / omega
-    out = np.empty_like(phi)
-    out[0] = 0.0
-    np.cumsum(0.5 * (inv[1:] + inv[:-1]) * np.diff(phi), out=out[1:])
-    return out
+    """t(φ) = ∫₀^φ dφ/ω [s] (the trapezoid rule of :func:`~flywheel.dynamics.energy.cumulative_work`)."""
+    return cumulative_work(1.0 / omega, phi)
 
 
 def speed_fluctuation(omega: np.ndarray) -> tuple[float, float, float, float]:

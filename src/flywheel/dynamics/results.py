@@ -1,13 +1,18 @@
-"""The results of one analysis: arrays on the φ grid, scalars, and the report angles.
+"""The results of one analysis: one typed, frozen result per stage, and the run's Results.
 
-One object that renderers read; it computes nothing. Every column carries its unit and
-a description, so CSV headers, plot labels and the summary name a quantity the same way.
+The stages (:mod:`flywheel.dynamics.stages`, the linkage route :mod:`~flywheel.dynamics.pipeline`
+and the tabulated route :mod:`~flywheel.dynamics.tabulated`) fill them; renderers read them and
+compute nothing. SI units throughout; angles in radians unless a name ends in ``_deg``. Arrays
+are on the run's closed φ grid (``Results.phi``).
 """
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field
 
 import numpy as np
+
+UNITS = "SI (m, kg, s, rad, N, N·m, J, kg·m²); angles *_deg in degrees"
 
 
 @dataclass(frozen=True)
@@ -20,55 +25,287 @@ class Column:
     label_ru: str = ""
 
 
-@dataclass
+@dataclass(frozen=True)
 class CylinderResult:
-    """One cylinder on the grid: relative travel s, whether the piston moves towards the head,
-    pressure p [Pa], force F [N], reduced moment M [N·m], and its indicator tables."""
+    """One cylinder on the grid and its indicator tables."""
 
     name: str
-    piston: str
-    s: np.ndarray
-    towards_head: np.ndarray
-    p: np.ndarray
-    F: np.ndarray
-    M: np.ndarray
-    table_s: np.ndarray
-    table_towards: np.ndarray
-    table_away: np.ndarray
-    p_max: float
-    head_phi: float
+    piston: str                 # the piston's slider link
+    s: np.ndarray               # relative travel from the head dead centre [-], 0 … 1
+    towards_head: np.ndarray    # bool: the piston moves towards the head
+    p: np.ndarray               # gas pressure [Pa]
+    F: np.ndarray               # gas force on the piston [N]
+    M: np.ndarray               # its reduced moment [N·m]
+    table_s: np.ndarray         # indicator table: relative travel [-]
+    table_towards: np.ndarray   # p/p_max [-] while moving towards the head
+    table_away: np.ndarray      # p/p_max [-] while moving away from it
+    p_max: float                # [Pa]
+    head_phi: float             # crank angle of the head dead centre [rad]
 
 
-@dataclass
+@dataclass(frozen=True)
+class LoadsResult:
+    """The given loads reduced to the crank (design.md §2; seed 000 §3.2)."""
+
+    M_parts: dict[str, np.ndarray]   # load name ("gas HP", "force punch", "gravity 2",
+    #                                  "couple c", "moment m") → reduced moment [N·m]
+    W_parts: dict[str, np.ndarray]   # load name → its cumulative work A(φ) [J], exact, for the
+    #                                  loads whose work the trapezoid rule gets only to first
+    #                                  order (technological forces switching inside an interval)
+    cylinders: tuple[CylinderResult, ...] = ()
+    forces: dict[str, np.ndarray] = field(default_factory=dict)  # technological force → F(φ) [N]
+    warnings: tuple[str, ...] = ()
+
+
+@dataclass(frozen=True)
+class ReductionResult:
+    """Reduction of masses: J_II and its derivative, with each link's share (seed 000 §3.1)."""
+
+    J_parts: dict[str, np.ndarray]    # link → its share of J_II [kg·m²]
+    dJ_parts: dict[str, np.ndarray]   # link → its share of dJ_II/dφ [kg·m²/rad]
+    J_II: np.ndarray                  # reduced inertia of the second group [kg·m²]
+    dJ_II: np.ndarray                 # dJ_II/dφ [kg·m²/rad]
+    J_II_mean: float                  # cycle mean (1/2π)∮J_II dφ [kg·m²]
+    J_II_min: float                   # [kg·m²]
+    J_II_max: float                   # [kg·m²]
+    warnings: tuple[str, ...] = ()
+
+
+@dataclass(frozen=True)
+class EnergyResult:
+    """Works and kinetic energy over the cycle (Merzalov's method, seed 000 §3.2.7, §4)."""
+
+    balance: str                     # "driving" or "resistance": what the constant moment is
+    M_known: np.ndarray              # Σ reduced moments of the given loads [N·m]
+    balancing_moment: float          # the constant moment that closes the cycle's work [N·m]
+    M_sum: np.ndarray                # M_known + balancing_moment = M_Σ [N·m]
+    A_D: np.ndarray                  # work of the driving moment [J]
+    A_C: np.ndarray                  # work of the resistance [J]
+    A: np.ndarray                    # total work A = A_D + A_C [J]
+    cycle_work_resistance: float     # A_C over the cycle [J] (negative)
+    driving_moment: float            # cycle mean of the driving moment M_D [N·m]
+    T_II: np.ndarray                 # kinetic energy of the second group J_II·ω_m²/2 [J]
+    dT_I: np.ndarray                 # change of kinetic energy of the first group ΔT_I [J]
+    delta_T_I_max: float             # global maximum of ΔT_I [J] …
+    phi_delta_T_I_max: float         # … at this angle [rad]
+    delta_T_I_min: float             # global minimum of ΔT_I [J] …
+    phi_delta_T_I_min: float         # … at this angle [rad]
+    delta_T_max: float               # ΔT_нб = max − min [J]
+    warnings: tuple[str, ...] = ()
+
+
+@dataclass(frozen=True)
+class FlywheelShape:
+    """A flywheel as a solid disk (``D_inner`` None) or a rim."""
+
+    D: float                          # outer diameter [m]
+    b: float                          # width [m]
+    mass: float                       # [kg]
+    D_inner: float | None = None      # inner diameter of a rim [m]
+    rim_speed: float | None = None    # peripheral speed at ω_max [m/s] (after the motion)
+
+    def as_dict(self) -> dict:
+        """summary.json's flywheel_disk / flywheel_rim."""
+        out = {"D": self.D} if self.D_inner is None else {"D": self.D, "D_inner": self.D_inner}
+        out.update(b=self.b, mass=self.mass)
+        if self.rim_speed is not None:
+            out["rim_speed"] = self.rim_speed
+        return out
+
+
+@dataclass(frozen=True)
+class SizingResult:
+    """The flywheel for the coefficient of speed fluctuation δ (seed 000 §4; design.md §2)."""
+
+    omega_mean: float            # ω_m [rad/s]
+    delta: float                 # target δ [-]
+    J_required: float            # J_I by Merzalov: ΔT_нб/(ω_m²·δ) [kg·m²]
+    J_first_group: float         # inertia already on the crank shaft [kg·m²]
+    J_flywheel: float            # J_required − J_first_group [kg·m²] (≤ 0: none needed)
+    J_required_exact: float      # J_I of the energy–mass diagram (Wittenbauer) [kg·m²]
+    J_flywheel_exact: float      # J_required_exact − J_first_group [kg·m²]
+    T0_exact: float              # initial total kinetic energy with the exact J_I [J]
+    k_plus: float                # slope of the upper tangent ω_max²/2 = ω_m²(1 + δ/2)²/2 [J/(kg·m²)]
+    k_minus: float               # slope of the lower tangent ω_min²/2 [J/(kg·m²)]
+    T_k: float                   # where the upper tangent cuts J_II = 0 (point k) [J]
+    T_l: float                   # where the lower tangent cuts it (point l) [J]
+    i_tangent_max: int           # grid index of the upper tangency point (ψ_max)
+    i_tangent_min: int           # grid index of the lower one (ψ_min)
+    speed_ratio: float           # flywheel shaft speed / crank speed [-]
+    J_on_its_shaft: float        # max(J_flywheel, 0)/i² [kg·m²]
+    rim_share: float             # share of J on its shaft carried by the rim [-]
+    disk: FlywheelShape
+    rim: FlywheelShape
+    material: str
+    material_density: float      # ρ [kg/m³]
+    rim_speed_limit: float       # √(σ/ρ) [m/s]
+    formulas: str                # "first-principles" or "course"
+    warnings: tuple[str, ...] = ()
+
+
+@dataclass(frozen=True)
+class MotionResult:
+    """The true motion of the crank with the flywheel (the energy equation)."""
+
+    J_I: float                   # inertia on the crank shaft: max(J_required, J_first_group) [kg·m²]
+    T0: float                    # initial kinetic energy giving (ω_max + ω_min)/2 = ω_m [J]
+    omega: np.ndarray            # ω(φ) [rad/s]
+    epsilon: np.ndarray          # ε(φ) [rad/s²]
+    t: np.ndarray                # t(φ) [s]
+    omega_exact: np.ndarray      # ω(φ) with the exact flywheel [rad/s]
+    omega_max: float             # [rad/s] …
+    phi_omega_max: float         # … at [rad]
+    omega_min: float             # [rad/s] …
+    phi_omega_min: float         # … at [rad]
+    delta_achieved: float        # δ with J_I [-]
+    delta_achieved_exact: float  # δ with the exact J_I [-]
+    cycle_time: float            # t over the cycle [s]
+    warnings: tuple[str, ...] = ()
+
+
+@dataclass(frozen=True)
+class TimeDomainResult:
+    """--transients: the equation of motion integrated in time (JSON-ready dicts, see
+    :mod:`flywheel.dynamics.timedomain`) and the histories for the plots."""
+
+    verification: dict           # of verify_steady: cycles, repeat_error, max_deviation, period [s]
+    startup: dict                # of startup (or why not computed), with the motor's M_п, ω_x
+    rundown: dict                # of rundown: time [s], angle_deg, stopped
+    histories: dict              # "startup" / "rundown" → (t [s], ω [rad/s])
+    startup_cycle_means: tuple | None = None   # (t [s], cycle-mean ω [rad/s]) of the start-up
+    warnings: tuple[str, ...] = ()
+
+    def as_dict(self) -> dict:
+        """summary.json's results.time_domain."""
+        return {"verification": self.verification, "startup": self.startup, "rundown": self.rundown}
+
+
+@dataclass(frozen=True)
+class TabulatedResult:
+    """What the tabulated route adds: the table's kinematics on the grid and the seed's
+    static and dynamic moments (seed 004)."""
+
+    interpolation: str                # J_II's interpolation kind
+    positions_deg: tuple[float, ...]  # the table's crank positions [deg]
+    v_q: dict[str, np.ndarray]        # point → |V_q| [m], interpolated
+    omega_q: dict[str, np.ndarray]    # link → |ω_q| [-], interpolated
+    M_st: np.ndarray                  # static moment Мст = −M_known (resisting positive) [N·m]
+    M_dyn: np.ndarray                 # dynamic moment Мдин = ω_m²/2·dJ_II/dφ [N·m]
+
+
+def warnings_of(*stages) -> tuple[str, ...]:
+    """The warnings of the stage results given (None for a stage not run), in stage order."""
+    return tuple(w for r in stages if r is not None for w in r.warnings)
+
+
+def json_ready(obj):
+    """JSON-ready: floats finite (NaN/inf → None), numpy scalars → Python, tuples → lists."""
+    if isinstance(obj, dict):
+        return {str(k): json_ready(v) for k, v in obj.items()}
+    if isinstance(obj, (list, tuple)):
+        return [json_ready(v) for v in obj]
+    if isinstance(obj, (np.floating, float)):
+        f = float(obj)
+        return f if math.isfinite(f) else None
+    if isinstance(obj, np.integer):
+        return int(obj)
+    return obj
+
+
+@dataclass(frozen=True)
 class Results:
-    """Everything one run computed (SI units, angles in radians)."""
+    """Everything one run computed: the stage results, the table columns and the report angles."""
 
     title: str
     source: str
-    phi: np.ndarray
-    kinematics: object                      # flywheel.linkage.Kinematics
-    columns: dict[str, Column]              # table.csv, in order
-    scalars: dict                           # summary.json "results" (JSON-ready)
-    at: list[dict]                          # summary.json "results.at"
-    position_angles: list[tuple[str, float]]  # (label, φ) of the standard positions
-    J_parts: dict[str, np.ndarray]
-    dJ_parts: dict[str, np.ndarray]
-    M_parts: dict[str, np.ndarray]
-    cylinders: list[CylinderResult]
-    links_drawn: list[tuple[str, list[str]]]  # (link, its points) for the kinematic scheme
-    warnings: list[str] = field(default_factory=list)
-    time_domain: dict | None = None           # --transients: checks and histories (t, ω)
+    phi: np.ndarray                          # the closed grid [rad]
+    kinematics: object                       # flywheel.linkage.Kinematics; None if tabulated
+    loads: LoadsResult
+    reduction: ReductionResult
+    energy: EnergyResult
+    sizing: SizingResult
+    motion: MotionResult
+    columns: dict[str, Column]               # table.csv, in order
+    at: tuple[dict, ...]                     # summary.json "results.at" (JSON-ready)
+    position_angles: tuple[tuple[str, float], ...]   # (label, φ [rad]) of the standard positions
+    links_drawn: tuple[tuple[str, tuple[str, ...]], ...]  # (link, its points) for the scheme
+    crank_length: float                      # [m]; NaN if a table gives none
+    tabulated: TabulatedResult | None = None
+    time_domain: TimeDomainResult | None = None
+    warnings: tuple[str, ...] = ()
 
     def index_of(self, phi: float) -> int:
         """Grid index of the node at angle ``phi`` [rad] (report angles are grid nodes)."""
         return int(np.argmin(np.abs(self.phi - phi)))
 
-    def summary(self) -> dict:
-        """The summary.json document."""
-        return {
+    @property
+    def J_parts(self) -> dict[str, np.ndarray]:
+        return self.reduction.J_parts
+
+    @property
+    def dJ_parts(self) -> dict[str, np.ndarray]:
+        return self.reduction.dJ_parts
+
+    @property
+    def M_parts(self) -> dict[str, np.ndarray]:
+        return self.loads.M_parts
+
+    @property
+    def cylinders(self) -> tuple[CylinderResult, ...]:
+        return self.loads.cylinders
+
+    @property
+    def scalars(self) -> dict:
+        """summary.json's "results" without "at", by its names, before JSON cleaning (NaN kept)."""
+        e, r, s, m = self.energy, self.reduction, self.sizing, self.motion
+        out: dict = {"crank_length": self.crank_length}
+        if self.tabulated is not None:
+            out.update(kinematics="tabulated", tabulated_interpolation=self.tabulated.interpolation,
+                       tabulated_positions_deg=list(self.tabulated.positions_deg))
+        out.update({
+            "omega_mean": s.omega_mean,
+            "n_points": int(self.phi.size),
+            "cycle_work_resistance": e.cycle_work_resistance,
+            "driving_moment": e.driving_moment,
+            "balancing_moment": e.balancing_moment,
+            "balance": e.balance,
+            "delta": s.delta,
+            "delta_T_max": e.delta_T_max,
+            "delta_T_I_max": e.delta_T_I_max, "phi_delta_T_I_max_deg": math.degrees(e.phi_delta_T_I_max),
+            "delta_T_I_min": e.delta_T_I_min, "phi_delta_T_I_min_deg": math.degrees(e.phi_delta_T_I_min),
+            "J_II_mean": r.J_II_mean,
+            "J_II_min": r.J_II_min, "J_II_max": r.J_II_max,
+            "J_first_group": s.J_first_group,
+            "J_required": s.J_required,
+            "J_required_exact": s.J_required_exact,
+            "J_flywheel": s.J_flywheel,
+            "J_flywheel_exact": s.J_flywheel_exact,
+            "delta_achieved": m.delta_achieved,
+            "delta_achieved_exact": m.delta_achieved_exact,
+            "omega_max": m.omega_max, "phi_omega_max_deg": math.degrees(m.phi_omega_max),
+            "omega_min": m.omega_min, "phi_omega_min_deg": math.degrees(m.phi_omega_min),
+            "T0": m.T0,
+            "cycle_time": m.cycle_time,
+            "flywheel_disk": s.disk.as_dict(),
+            "flywheel_rim": s.rim.as_dict(),
+            "flywheel_material": s.material,
+            "flywheel_material_density": s.material_density,
+            "flywheel_speed_ratio": s.speed_ratio,
+            "flywheel_J_on_its_shaft": s.J_on_its_shaft,
+            "flywheel_rim_share": s.rim_share,
+            "flywheel_rim_speed_limit": s.rim_speed_limit,
+            "flywheel_formulas": s.formulas,
+        })
+        if self.time_domain is not None:
+            out["time_domain"] = self.time_domain.as_dict()
+        return out
+
+    def to_document(self) -> dict:
+        """The summary.json document, JSON-ready (:func:`json_ready`)."""
+        return json_ready({
             "title": self.title,
             "source": self.source,
-            "units": "SI (m, kg, s, rad, N, N·m, J, kg·m²); angles *_deg in degrees",
-            "results": {**self.scalars, "at": self.at},
+            "units": UNITS,
+            "results": {**self.scalars, "at": list(self.at)},
             "warnings": list(self.warnings),
-        }
+        })

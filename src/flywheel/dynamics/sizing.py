@@ -24,12 +24,29 @@ def J_required_exact(A: np.ndarray, J_II: np.ndarray, omega_mean: float, delta: 
     >>> round(J_required_exact(A, J, 10.0, 0.1)[0], 12)   # ΔT/(δ·ω_m²) = 10/(0.1·100)
     1.0
     """
-    k_plus = omega_mean**2 * (1 + delta / 2) ** 2 / 2
-    k_minus = omega_mean**2 * (1 - delta / 2) ** 2 / 2
+    k_plus, k_minus = tangent_slopes(omega_mean, delta)
     top = np.max(A - k_plus * J_II)
     bottom = np.min(A - k_minus * J_II)
     J_I = (top - bottom) / (k_plus - k_minus)
     return float(J_I), float(k_plus * J_I - top)
+
+
+def tangent_slopes(omega_mean: float, delta: float) -> tuple[float, float]:
+    """k± = ω_m²(1 ± δ/2)²/2 = ω_max²/2, ω_min²/2 [J/(kg·m²)]: the slopes of the two tangents
+    to the energy–mass curve (:func:`J_required_exact`).
+
+    >>> tangent_slopes(10.0, 0.2)
+    (60.50000000000001, 40.5)
+    """
+    return omega_mean**2 * (1 + delta / 2) ** 2 / 2, omega_mean**2 * (1 - delta / 2) ** 2 / 2
+
+
+def tangency_points(A: np.ndarray, J_II: np.ndarray, omega_mean: float, delta: float) -> tuple[int, int]:
+    """Grid indices of the points where the tangents of :func:`J_required_exact` touch the
+    energy–mass curve (A against J_II): the maximum of A − k₊·J_II (ψ_max) and the minimum of
+    A − k₋·J_II (ψ_min)."""
+    k_plus, k_minus = tangent_slopes(omega_mean, delta)
+    return int(np.argmax(A - k_plus * J_II)), int(np.argmin(A - k_minus * J_II))
 
 
 def disk(J: float, density: float = 7800.0, width_ratio: float = 0.2) -> dict:

@@ -18,8 +18,8 @@ and the links' masses and moments of inertia with the point / ω_q row each one 
 
 are interpolated periodically onto the φ grid (J_II by a periodic cubic spline by default,
 or piecewise linearly with the seed's forward differences (I_{i+1} − I_i)/(φ_{i+1} − φ_i) as
-its derivative) and handed to :func:`flywheel.dynamics.pipeline.dynamics`: energy, sizing and motion
-are exactly those of the linkage route.
+its derivative) and handed to the shared stages (:mod:`flywheel.dynamics.stages`): energy,
+sizing and motion are exactly those of the linkage route.
 
 The case's schema is :mod:`flywheel.cases.tabulated`; scipy is imported inside the functions
 that need it.
@@ -30,9 +30,76 @@ import math
 
 import numpy as np
 
-from flywheel.cases.tabulated import (TabulatedSpec, link_inertia_at_positions,  # noqa: F401
-                                      load_moments_at_positions, reduced_inertia_at_positions,
-                                      static_moments)
+from flywheel.dynamics import stages
+from flywheel.dynamics.columns import tabulated_columns
+from flywheel.dynamics.grid import DEFAULT_POINTS, closed_grid, grid_options, report_index
+from flywheel.dynamics.periodic import periodic_linear
+from flywheel.dynamics.results import (EnergyResult, LoadsResult, MotionResult, ReductionResult,
+                                       Results, TabulatedResult, warnings_of)
+
+# -- per-position values: the table's own arithmetic (seed 004, eq. 7 and Мст), used by the
+#    analysis below and by the case's validation (overflow, flywheel.cases.tabulated) ---------
+
+def _per_position(value, n: int) -> np.ndarray:
+    return np.full(n, float(value)) if not isinstance(value, list) else np.asarray(value, float)
+
+
+def link_inertia_at_positions(spec) -> dict[str, np.ndarray]:
+    """Each link's share of J_II at every row of the table [kg·m²]: m·V_q² + J·ω_q².
+
+    >>> from flywheel.cases.tabulated import TabulatedSpec
+    >>> s = TabulatedSpec(positions_deg=[0, 60, 120, 180, 240, 300],
+    ...                   points={"B": [0, 1, 2, 0, 1, 2]}, links={"3": {"mass": 2.0, "point": "B"}})
+    >>> link_inertia_at_positions(s)["3"]
+    array([0., 2., 8., 0., 2., 8.])
+    """
+    n = len(spec.positions_deg)
+    out = {}
+    for name, lk in spec.links.items():
+        J = np.zeros(n)
+        if lk.mass > 0:
+            J += lk.mass * np.asarray(spec.points[lk.point], float) ** 2
+        if lk.J > 0:
+            J += lk.J * np.asarray(spec.omega_q[lk.omega_q or name], float) ** 2
+        out[name] = J
+    return out
+
+
+def reduced_inertia_at_positions(spec) -> np.ndarray:
+    """J_II (the seed's Iпр) at every row of the table [kg·m²]."""
+    parts = link_inertia_at_positions(spec)
+    return sum(parts.values()) if parts else np.zeros(len(spec.positions_deg))
+
+
+def load_moments_at_positions(spec) -> dict[str, np.ndarray]:
+    """Reduced moment of each load at every row [N·m], positive when it drives the crank:
+    a force F·|V_q|·cos α ("force NAME"), a moment as given ("moment NAME")."""
+    n = len(spec.positions_deg)
+    out = {}
+    for f in spec.forces:
+        F = _per_position(f.magnitude, n)
+        alpha = np.radians(_per_position(f.angle_deg, n))
+        out[f"force {f.name}"] = F * np.asarray(spec.points[f.point], float) * np.cos(alpha)
+    for m in spec.moments:
+        out[f"moment {m.name}"] = np.asarray(m.values, float)
+    return out
+
+
+def static_moments(spec) -> np.ndarray:
+    """The seed's static moment Мст at every row [N·m]: −Σ of the loads' reduced moments, so a
+    resisting load counts positive (seed 004: Мст = −(Σ G·V·cos(G, V) − F·V_B4)).
+
+    >>> from flywheel.cases.tabulated import TabulatedSpec
+    >>> s = TabulatedSpec(positions_deg=[0, 60, 120, 180, 240, 300],
+    ...                   points={"B": [0.1] * 6},
+    ...                   forces=[{"name": "G", "point": "B", "magnitude": 100.0,
+    ...                            "angle_deg": [180, 180, 0, 0, 0, 180]}])
+    >>> static_moments(s)
+    array([ 10.,  10., -10., -10., -10.,  10.])
+    """
+    parts = load_moments_at_positions(spec)
+    return -sum(parts.values()) if parts else np.zeros(len(spec.positions_deg))
+
 
 # -- periodic interpolation ---------------------------------------------------------------------
 
@@ -54,27 +121,25 @@ def periodic_interpolate(nodes: np.ndarray, values: np.ndarray, phi: np.ndarray,
     period = 2 * np.pi
     xe = np.append(nodes, nodes[0] + period)
     ye = np.append(values, values[0])
-    t = nodes[0] + np.mod(np.asarray(phi, float) - nodes[0], period)
     if kind == "periodic-spline":
         from scipy.interpolate import CubicSpline
 
+        t = nodes[0] + np.mod(np.asarray(phi, float) - nodes[0], period)
         cs = CubicSpline(xe, ye, bc_type="periodic")
         return cs(t, 1 if derivative else 0)
     # a grid node within 1e-9 rad of a position belongs to the interval that starts there
-    k = np.clip(np.searchsorted(xe, t + 1e-9, side="right") - 1, 0, nodes.size - 1)
-    slope = (ye[k + 1] - ye[k]) / (xe[k + 1] - xe[k])
-    return slope if derivative else ye[k] + slope * (t - xe[k])
+    return periodic_linear(xe, ye, phi, period, derivative=derivative, snap=1e-9)
 
 
-def _nodes_rad(spec: TabulatedSpec) -> np.ndarray:
+def _nodes_rad(spec) -> np.ndarray:
     return np.radians(spec.nodes_deg)
 
 
-def _distinct(spec: TabulatedSpec, values) -> np.ndarray:
+def _distinct(spec, values) -> np.ndarray:
     return np.asarray(values, float)[: spec.nodes_deg.size]
 
 
-def inertia_derivative_at_positions(spec: TabulatedSpec) -> np.ndarray:
+def inertia_derivative_at_positions(spec) -> np.ndarray:
     """dJ_II/dφ [kg·m²/rad] at every row, by the spec's interpolation (the spline's derivative,
     or the seed's forward difference (I_{i+1} − I_i)/(φ_{i+1} − φ_i))."""
     J = _distinct(spec, reduced_inertia_at_positions(spec))
@@ -82,7 +147,7 @@ def inertia_derivative_at_positions(spec: TabulatedSpec) -> np.ndarray:
     return periodic_interpolate(_nodes_rad(spec), J, phi, spec.interpolation, derivative=True)
 
 
-def dynamic_moments(spec: TabulatedSpec, omega: float) -> np.ndarray:
+def dynamic_moments(spec, omega: float) -> np.ndarray:
     """The seed's dynamic moment Мдин = ω1²/2·dIпр/dφ [N·m] at every row (seed 004, eq. 6;
     ω1 [rad/s] constant, so the ε1·Iпр term of eq. 5 vanishes)."""
     return omega**2 / 2 * inertia_derivative_at_positions(spec)
@@ -90,95 +155,97 @@ def dynamic_moments(spec: TabulatedSpec, omega: float) -> np.ndarray:
 
 # -- the analysis ------------------------------------------------------------------------------
 
-def analyze_tabulated(case, n_points: int = 3600, at_deg: list[float] | None = None,
-                      transients: bool = False):
+def analyze_tabulated(case, n_points: int = DEFAULT_POINTS, at_deg: list[float] | None = None,
+                      transients: bool = False) -> Results:
     """The dynamic analysis of a case whose kinematics are a table (``case.tabulated``).
 
-    Same stages and Results as :func:`flywheel.dynamics.pipeline.analyze`, with ``kinematics=None``
-    (no positions: nothing to draw) and the table's positions as ``position_angles``.
+    The table is a second source of the loads and of J_II's parts, on the grid with its
+    positions and the report angles as nodes; from there the stages are those of
+    :func:`flywheel.dynamics.pipeline.analyze` (:mod:`flywheel.dynamics.stages`). Results have
+    ``kinematics=None`` (no positions: nothing to draw) and the table's positions as
+    ``position_angles``.
     """
-    from flywheel.dynamics.pipeline import _grid, _transients, dynamics, grid_options
-    from flywheel.dynamics.results import Column, Results
-
-    spec: TabulatedSpec = case.tabulated
+    spec = case.tabulated
     at_deg = grid_options(case, n_points, at_deg)
-    nodes = _nodes_rad(spec)
-    phi = _grid(n_points, list(nodes) + [math.radians(a) for a in at_deg])
-    kind_J = spec.interpolation
-    kind_kin = "periodic-spline" if kind_J == "periodic-spline" else "linear"
-    warnings: list[str] = []
+    phi = closed_grid(n_points, list(_nodes_rad(spec)) + [math.radians(a) for a in at_deg])
+    red = tabulated_reduction(spec, phi)
+    ld = tabulated_loads(spec, phi)
+    en, sz, mo = stages.dynamics(phi, ld, red, case.machine, case.flywheel)
+    tab = tabulated_kinematics(spec, phi, red, en, case.machine.omega_mean)
+    at = report_angles(at_deg, phi, tab, ld, red, en, mo)
+    td = stages.time_domain(case, phi, red, en, mo) if transients else None
+    return Results(
+        title=case.title, source=case.source, phi=phi, kinematics=None, loads=ld, reduction=red,
+        energy=en, sizing=sz, motion=mo, columns=tabulated_columns(phi, tab, ld, red, en, mo),
+        at=at, position_angles=tuple((f"{k + 1} ({p:g}°)", math.radians(p))
+                                     for k, p in enumerate(spec.positions_deg)),
+        links_drawn=(), crank_length=float(spec.crank_length) if spec.crank_length else float("nan"),
+        tabulated=tab, time_domain=td,
+        warnings=tuple(case.plausibility_warnings()) + warnings_of(red, ld, en, sz, mo, td))
 
-    # -- reduction of masses: each link's share interpolated, its derivative from the interpolant
-    J_parts, dJ_parts = {}, {}
+
+def tabulated_reduction(spec, phi: np.ndarray) -> ReductionResult:
+    """Each link's share of J_II (seed 004, eq. 7) interpolated onto ``phi`` by the spec's
+    interpolation, its derivative from the interpolant; a warning where a share dips below zero
+    by more than 1 % of its largest value (too few positions for the spline)."""
+    nodes, kind = _nodes_rad(spec), spec.interpolation
+    J_parts, dJ_parts, warnings = {}, {}, []
     for name, J in link_inertia_at_positions(spec).items():
         Jd = _distinct(spec, J)
-        J_parts[name] = periodic_interpolate(nodes, Jd, phi, kind_J)
-        dJ_parts[name] = periodic_interpolate(nodes, Jd, phi, kind_J, derivative=True)
-        if J_parts[name].min() < -0.01 * Jd.max():      # more than 1 % of its largest value
+        J_parts[name] = periodic_interpolate(nodes, Jd, phi, kind)
+        dJ_parts[name] = periodic_interpolate(nodes, Jd, phi, kind, derivative=True)
+        if J_parts[name].min() < -0.01 * Jd.max():
             i = int(np.argmin(J_parts[name]))
-            warnings.append(f"tabulated: the {kind_J} interpolation of link {name}'s share of J_II "
+            warnings.append(f"tabulated: the {kind} interpolation of link {name}'s share of J_II "
                             f"dips below zero ({J_parts[name][i]:.3g} kg·m² at φ = "
                             f"{math.degrees(phi[i]):.1f}°): give more positions near there")
+    return stages.reduced_inertia(phi, J_parts, dJ_parts, warnings)
 
-    # -- loads ------------------------------------------------------------------------------------
-    M_parts: dict[str, np.ndarray] = {}
+
+def tabulated_loads(spec, phi: np.ndarray) -> LoadsResult:
+    """The reduced moments of the table's forces (F·|V_q|·cos α) and given moments, per
+    position, interpolated onto ``phi`` each by its own interpolation."""
+    nodes = _nodes_rad(spec)
     kinds = {f"force {f.name}": f.interpolation for f in spec.forces}
     kinds.update({f"moment {m.name}": m.interpolation for m in spec.moments})
-    for key, M in load_moments_at_positions(spec).items():
-        M_parts[key] = periodic_interpolate(nodes, _distinct(spec, M), phi, kinds[key])
+    M_parts = {key: periodic_interpolate(nodes, _distinct(spec, M), phi, kinds[key])
+               for key, M in load_moments_at_positions(spec).items()}
+    return LoadsResult(M_parts=M_parts, W_parts={})
 
-    d = dynamics(phi, J_parts, dJ_parts, M_parts, case.machine, case.flywheel, warnings)
-    omega, eps = d["omega"], d["epsilon"]
-    w_m = case.machine.omega_mean
 
-    # -- columns: the interpolated table, then the shared stages, then the seed's Мст and Мдин ----
-    cols: dict[str, Column] = {"phi_deg": Column(np.degrees(phi), "deg", "crank angle φ", "угол φ")}
-    vq, wq = {}, {}
-    for name, v in spec.points.items():      # |V_q| from the interpolated V_q² (smooth through 0)
-        sq = periodic_interpolate(nodes, _distinct(spec, v) ** 2, phi, kind_kin)
-        vq[name] = np.sqrt(np.maximum(sq, 0.0))
-        cols[f"vq_{name}"] = Column(vq[name], "m", f"|v_q| of {name} (tabulated)",
-                                    f"аналог скорости {name} (по таблице)")
-    for name, w in spec.omega_q.items():
-        sq = periodic_interpolate(nodes, _distinct(spec, w) ** 2, phi, kind_kin)
-        wq[name] = np.sqrt(np.maximum(sq, 0.0))
-        cols[f"omega_q_{name}"] = Column(wq[name], "-", f"|ω_q| of link {name} (tabulated)",
-                                         f"аналог угл. скорости {name} (по таблице)")
-    cols.update(d["columns"])
-    M_st = -d["M_known"]
-    M_dyn = w_m**2 / 2 * d["dJ_II"]
-    cols["M_st"] = Column(M_st, "N·m", "static moment Мст = −Σ reduced moments of the loads "
-                                       "(resisting positive)", "приведённый момент сил статического "
-                                       "сопротивления Мст")
-    cols["M_dyn"] = Column(M_dyn, "N·m", "dynamic moment Мдин = ω_m²/2·dJ_II/dφ",
-                           "динамический момент Мдин")
+def tabulated_kinematics(spec, phi: np.ndarray, red: ReductionResult,
+                         en: EnergyResult, omega_mean: float) -> TabulatedResult:
+    """The table's |V_q| and |ω_q| on the grid (interpolated as squares, so smooth through 0;
+    linearly unless J_II is a periodic spline) and the seed's Мст = −M_known and
+    Мдин = ω_m²/2·dJ_II/dφ (seed 004, eq. 6)."""
+    nodes, kind_J = _nodes_rad(spec), spec.interpolation
+    kind_kin = "periodic-spline" if kind_J == "periodic-spline" else "linear"
 
-    at_list = []
+    def magnitude(values) -> np.ndarray:
+        sq = periodic_interpolate(nodes, _distinct(spec, values) ** 2, phi, kind_kin)
+        return np.sqrt(np.maximum(sq, 0.0))
+
+    return TabulatedResult(
+        interpolation=kind_J, positions_deg=tuple(float(p) for p in spec.positions_deg),
+        v_q={name: magnitude(v) for name, v in spec.points.items()},
+        omega_q={name: magnitude(w) for name, w in spec.omega_q.items()},
+        M_st=-en.M_known, M_dyn=omega_mean**2 / 2 * red.dJ_II)
+
+
+def report_angles(at_deg: list[float], phi: np.ndarray, tab: TabulatedResult, ld: LoadsResult,
+                  red: ReductionResult, en: EnergyResult, mo: MotionResult) -> tuple[dict, ...]:
+    """summary.json's "at" of the tabulated route: ω, ε, J_II, Мст, Мдин, the moments, and the
+    table's points and links with their true speeds (v = |V_q|·ω, ω_i = ω_q·ω)."""
+    out = []
     for a in at_deg:
-        i = int(np.argmin(np.abs(phi - math.radians(a) % (2 * np.pi))))
-        w, e = float(omega[i]), float(eps[i])
-        at_list.append({
+        i = report_index(phi, a)
+        w, e = float(mo.omega[i]), float(mo.epsilon[i])
+        out.append({
             "phi_deg": float(a), "omega": w, "epsilon": e,
-            "J_II": float(d["J_II"][i]), "dJ_II": float(d["dJ_II"][i]),
-            "M_sum": float(d["M_sum"][i]), "M_st": float(M_st[i]), "M_dyn": float(M_dyn[i]),
-            "moments": {k: float(v[i]) for k, v in M_parts.items()},
-            "points": {k: {"v_q": float(v[i]), "v": float(v[i] * w)} for k, v in vq.items()},
-            "links": {k: {"omega_q": float(v[i]), "omega": float(v[i] * w)} for k, v in wq.items()},
+            "J_II": float(red.J_II[i]), "dJ_II": float(red.dJ_II[i]),
+            "M_sum": float(en.M_sum[i]), "M_st": float(tab.M_st[i]), "M_dyn": float(tab.M_dyn[i]),
+            "moments": {k: float(v[i]) for k, v in ld.M_parts.items()},
+            "points": {k: {"v_q": float(v[i]), "v": float(v[i] * w)} for k, v in tab.v_q.items()},
+            "links": {k: {"omega_q": float(v[i]), "omega": float(v[i] * w)} for k, v in tab.omega_q.items()},
         })
-
-    scalars = {"crank_length": float(spec.crank_length) if spec.crank_length else float("nan"),
-               "kinematics": "tabulated", "tabulated_interpolation": kind_J,
-               "tabulated_positions_deg": [float(p) for p in spec.positions_deg],
-               **d["scalars"]}
-    positions = [(f"{k + 1} ({p:g}°)", math.radians(p)) for k, p in enumerate(spec.positions_deg)]
-    time_domain = None
-    if transients:
-        time_domain = _transients(case, phi, d["J_I"] + d["J_II"], d["dJ_II"], d["M_sum"],
-                                  d["M_known"], omega, scalars["driving_moment"], warnings)
-        scalars["time_domain"] = {k: v for k, v in time_domain.items() if k != "histories"}
-    return Results(
-        title=case.title, source=case.source, phi=phi, kinematics=None, columns=cols,
-        scalars=scalars, at=at_list, position_angles=positions, J_parts=J_parts,
-        dJ_parts=dJ_parts, M_parts=M_parts, cylinders=[], links_drawn=[], warnings=warnings,
-        time_domain=time_domain,
-    )
+    return tuple(out)

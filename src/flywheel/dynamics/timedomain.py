@@ -9,10 +9,12 @@ scipy.integrate is imported inside the functions (0.7 s to import).
 """
 from __future__ import annotations
 
-from bisect import bisect_right
 from dataclasses import dataclass
 
 import numpy as np
+
+from flywheel.dynamics.energy import cumulative_work, trapezoid_areas
+from flywheel.dynamics.periodic import PeriodicTables, periodic_linear
 
 
 @dataclass(frozen=True)
@@ -24,29 +26,7 @@ class TimeHistory:
     omega: np.ndarray
 
 
-class _PeriodicTables:
-    """J, J′, M on the closed grid ``phi_grid`` (one cycle Φ), linearly interpolated and
-    repeated with period Φ: the same values as ``np.interp`` on φ mod Φ, but in plain Python
-    floats (one bisection for the three tables; ~10× faster per call than three np.interp on a
-    scalar, which dominates the cost of the integration)."""
-
-    def __init__(self, phi_grid: np.ndarray, J: np.ndarray, dJ: np.ndarray, M: np.ndarray):
-        self.x = [float(v) for v in phi_grid]
-        self.J, self.dJ, self.M = (np.asarray(a, float).tolist() for a in (J, dJ, M))
-        self.x0 = self.x[0]
-        self.period = self.x[-1] - self.x0
-        self.last = len(self.x) - 2
-
-    def __call__(self, phi: float) -> tuple[float, float, float]:
-        x = (phi - self.x0) % self.period + self.x0
-        i = min(max(bisect_right(self.x, x) - 1, 0), self.last)
-        f = (x - self.x[i]) / (self.x[i + 1] - self.x[i])
-        J, dJ, M = self.J, self.dJ, self.M
-        return (J[i] + (J[i + 1] - J[i]) * f, dJ[i] + (dJ[i + 1] - dJ[i]) * f,
-                M[i] + (M[i + 1] - M[i]) * f)
-
-
-def _solve(tables: _PeriodicTables, omega0: float, cycles: float, motor, rtol: float, atol: float,
+def _solve(tables: PeriodicTables, omega0: float, cycles: float, motor, rtol: float, atol: float,
            t_max: float | None, phi0: float, method: str = "DOP853", quadrature: bool = False):
     """solve_ivp from (φ0, ω0) until φ = φ0 + cycles·Φ, ω falls to 0, or t = t_max.
     With ``quadrature`` a third state q′ = ω² (q = ∫ω dφ) is carried along."""
@@ -90,7 +70,7 @@ def integrate(phi_grid: np.ndarray, J: np.ndarray, dJ: np.ndarray, M: np.ndarray
     J, dJ, M: tables on the closed grid ``phi_grid`` (one cycle Φ); ``motor``: optional
     callable ω → additional driving moment [N·m] (a motor characteristic).
     """
-    sol = _solve(_PeriodicTables(phi_grid, J, dJ, M), omega0, cycles, motor, rtol, atol, t_max, phi0)
+    sol = _solve(PeriodicTables(phi_grid, J, dJ, M), omega0, cycles, motor, rtol, atol, t_max, phi0)
     return TimeHistory(sol.t, sol.y[0], sol.y[1])
 
 
@@ -120,7 +100,7 @@ def verify_steady(phi_grid: np.ndarray, J: np.ndarray, dJ: np.ndarray, M: np.nda
     Each cycle is one solve_ivp call that ends on the event φ = φ0 + Φ, so ω at the cycle starts
     and the period are the solver's own values there (not read off the step points by linear
     interpolation, whose error, ~h²·ω″/8 with steps of Φ/90, is some 1e-5 of ω)."""
-    tables = _PeriodicTables(phi_grid, J, dJ, M)
+    tables = PeriodicTables(phi_grid, J, dJ, M)
     period = tables.period
     starts, periods, dev = [float(omega[0])], [], 0.0
     for k in range(cycles):
@@ -129,7 +109,7 @@ def verify_steady(phi_grid: np.ndarray, J: np.ndarray, dJ: np.ndarray, M: np.nda
             raise RuntimeError("verify_steady: the machine stopped inside a cycle")
         periods.append(float(sol.t[-1]))
         starts.append(float(sol.y[1][-1]))
-        w_e = np.interp(np.mod(sol.y[0] - phi_grid[0], period) + phi_grid[0], phi_grid, omega)
+        w_e = periodic_linear(phi_grid, omega, sol.y[0], period)
         dev = max(dev, float(np.max(np.abs(w_e - sol.y[1]))))
     return {
         "cycles": cycles,
@@ -161,9 +141,23 @@ def _motor_slope(motor, omega_ref: float) -> float:
 
 def _cycle_mean(y: np.ndarray, phi_grid: np.ndarray) -> float:
     """(1/Φ)∮y dφ by the trapezoid rule, as :func:`flywheel.dynamics.energy.cumulative_work`."""
-    from flywheel.dynamics.energy import cumulative_work
-
     return float(cumulative_work(np.asarray(y, float), phi_grid)[-1] / (phi_grid[-1] - phi_grid[0]))
+
+
+def history_cycle_means(t: np.ndarray, omega: np.ndarray, period: float) -> tuple[np.ndarray, np.ndarray]:
+    """Cycle means (1/Φ)∮ω dφ of a history starting at φ = 0 (t [s], ω [rad/s]), one per whole
+    cycle, placed at the middle of its cycle in time: φ(t) = ∫ω dt and ∫ω² dt by the trapezoid
+    rule on the history's points (a picture of the approach for the plot; :func:`startup` takes
+    its own means from a quadrature carried in the integration)."""
+    phi = cumulative_work(omega, t)
+    q = cumulative_work(omega**2, t)
+    n = int(phi[-1] // period + 1e-9)
+    if n < 1:
+        return np.zeros(0), np.zeros(0)
+    edges = period * np.arange(n + 1)
+    t_edges = np.interp(edges, phi, t)
+    q_edges = np.interp(t_edges, t, q)
+    return 0.5 * (t_edges[1:] + t_edges[:-1]), np.diff(q_edges) / period
 
 
 def startup(phi_grid: np.ndarray, J: np.ndarray, dJ: np.ndarray, M_loads: np.ndarray, motor,
@@ -192,7 +186,7 @@ def startup(phi_grid: np.ndarray, J: np.ndarray, dJ: np.ndarray, M_loads: np.nda
     ``converged`` is False, the three numbers are None, and ``warning`` says how far it got
     (a slow motor: raise the cap or check M_п and ω_x). ``stalled`` is True if the machine stops
     (the motor cannot overcome the loads)."""
-    tables = _PeriodicTables(phi_grid, J, dJ, M_loads)
+    tables = PeriodicTables(phi_grid, J, dJ, M_loads)
     period = tables.period
     w_pred = predicted_steady_speed(phi_grid, np.asarray(M_loads, float), motor, omega_steady)
     slope = _motor_slope(motor, omega_steady)
@@ -271,9 +265,10 @@ def rundown(phi_grid: np.ndarray, J: np.ndarray, dJ: np.ndarray, M_loads: np.nda
     machine never runs down: three cycles are integrated for the history and ``reason`` says so
     (``stopped`` False)."""
     period = phi_grid[-1] - phi_grid[0]
-    dphi = np.diff(phi_grid)
-    work = float(np.sum(0.5 * (M_loads[1:] + M_loads[:-1]) * dphi))
-    scale = float(np.sum(0.5 * (np.abs(M_loads[1:]) + np.abs(M_loads[:-1])) * dphi))
+    # cycle totals summed pairwise (np.sum): the running sum's end differs in the last bits,
+    # which for loads that do no net work is the whole printed value
+    work = float(np.sum(trapezoid_areas(M_loads, phi_grid)))
+    scale = float(np.sum(trapezoid_areas(np.abs(M_loads), phi_grid)))
     conservative = not work < -1e-9 * scale
     cycles = 3 if conservative else max_cycles
     h = integrate(phi_grid, J, dJ, M_loads, omega0, cycles,

@@ -229,25 +229,47 @@ def _rpr(d: RPR, phi: np.ndarray, points: dict, links: dict) -> None:
 
 
 def _passes_through(dr: np.ndarray, d1: np.ndarray, d2: np.ndarray, phi: np.ndarray,
-                    offset: float, rtol: float = 1e-6) -> np.ndarray:
-    """Where a slotted link's block passes (within ``rtol`` of the largest distance) through
-    the line's closest approach to the pivot between grid nodes: the distance |A − P| at its
-    nearest, estimated from each node by the second-order Taylor expansion A + t·A′ + t²/2·A″
-    over half a step either side (t from the tangent's closest approach), comes
-    within rtol of |offset| (the slide line then sweeps through the pivot and θ jumps by
-    180° while the analogues stay finite: a singular position, not a motion)."""
+                    offset: float, rtol: float = 1e-5) -> np.ndarray:
+    """Where a slotted link's block passes through its singular position: the distance
+    ρ = |A − P| comes within ``rtol`` of the largest distance to |offset| (the slide line then
+    sweeps through the pivot and θ jumps by 180° while the analogues stay finite: not a motion).
+
+    At the nodes ρ is known; between neighbouring nodes at most 0.2 rad apart (any analysis
+    grid: 36 intervals or more) ρ's minimum is that of the cubic Hermite interpolant of A − P
+    from its values and exact derivatives A′ − P′ at both nodes (error O(h⁴): 2e-7 of the size
+    at h = 0.17 rad), found where d|H|²/dt = 0 — only in the intervals that come near.
+    Returns a boolean array on the nodes (the node that starts a singular interval)."""
+    rho = np.sqrt(_dot(dr, dr))
+    scale = float(rho.max()) or 1.0
+    tol = rtol * scale
+    bad = rho - abs(offset) <= tol
     if phi.size < 2:
-        return np.zeros(phi.size, bool)
-    h = np.abs(np.diff(phi))
-    half = 0.5 * np.maximum(np.concatenate([h, h[-1:]]), np.concatenate([h[:1], h]))
-    vv = _dot(d1, d1)
+        return bad
+    h = np.diff(phi)
+    vv = _dot(d1[:-1], d1[:-1])
     with np.errstate(invalid="ignore", divide="ignore"):
-        t = np.where(vv > 0, -_dot(dr, d1) / vv, 0.0)
-    t = np.clip(t, -half, half)
-    near = dr + t[:, None] * d1 + 0.5 * (t**2)[:, None] * d2
-    closest = np.sqrt(_dot(near, near))
-    scale = float(np.sqrt(_dot(dr, dr)).max()) or 1.0
-    return closest - abs(offset) <= rtol * scale
+        t = np.where(vv > 0, -_dot(dr[:-1], d1[:-1]) / vv, 0.0)
+    lo, hi = np.minimum(0.0, h), np.maximum(0.0, h)
+    t = np.clip(t, lo, hi)
+    near = dr[:-1] + t[:, None] * d1[:-1]
+    cand = np.flatnonzero((np.abs(h) <= 0.2) & (np.sqrt(_dot(near, near)) - abs(offset)
+                                                 < 0.05 * scale))
+    for i in cand:
+        hh = h[i]
+        p0, p1, m0, m1 = dr[i], dr[i + 1], d1[i], d1[i + 1]
+        # H(t) = c0 + c1 t + c2 t² + c3 t³ on [0, h] (cubic Hermite)
+        c0, c1 = p0, m0
+        c2 = (3 * (p1 - p0) / hh - 2 * m0 - m1) / hh
+        c3 = (2 * (p0 - p1) / hh + m0 + m1) / hh**2
+        cx, cy = np.array([c3[0], c2[0], c1[0], c0[0]]), np.array([c3[1], c2[1], c1[1], c0[1]])
+        f = np.polyadd(np.polymul(cx, cx), np.polymul(cy, cy))        # |H(t)|², degree 6
+        roots = np.roots(np.polyder(f))
+        ts = [0.0, hh] + [r.real for r in roots if abs(r.imag) <= 1e-9 * abs(hh)
+                          and min(0.0, hh) <= r.real <= max(0.0, hh)]
+        least = min(np.sqrt(max(np.polyval(f, x), 0.0)) for x in ts)
+        if least - abs(offset) <= tol:
+            bad[i] = True
+    return bad
 
 
 def _link_point(p: LinkPoint, points: dict, links: dict) -> None:

@@ -1,4 +1,5 @@
-"""`flywheel check`: print what a case describes (rich), with the dead-centre kinematics."""
+"""`flywheel check`: print a case's :class:`~flywheel.dynamics.check.CheckReport` (rich): what it
+describes, with the dead-centre kinematics. Formatting only."""
 from __future__ import annotations
 
 import math
@@ -20,28 +21,23 @@ def _table(title: str, columns):
     return t
 
 
-def print_check(case, console=None) -> None:
-    """Print the mechanism, links, cylinders and the kinematics at each slider's dead centres.
-
-    Raises AssemblyError (from the kinematics) if the mechanism cannot be assembled.
-    """
-    import numpy as np
+def print_check(report, console=None) -> None:
+    """Print a :class:`~flywheel.dynamics.check.CheckReport`: the mechanism, links, cylinders
+    and the kinematics at each slider's dead centres (or a tabulated case's table)."""
     from rich.console import Console
     from rich.table import Table
 
-    from flywheel.cases.run import RPRSpec, RRPSpec, to_mechanism
-    from flywheel.linkage import solve
-    from flywheel.linkage.deadcentres import dead_centres
+    from flywheel.cases.run import RPRSpec, RRPSpec
 
     console = console or Console()
-    if case.tabulated is not None:
-        return _print_tabulated(case, console)
-    mech = to_mechanism(case)
-    solve(mech, np.linspace(0, 2 * np.pi, 721))   # assembles over the whole cycle, or raises
+    case = report.case
+    if report.tabulated is not None:
+        return _print_tabulated(report, console)
+    mech = report.mechanism
     m = case.machine
     console.print(f"[bold]{case.title or 'case'}[/bold]  ({case.source})" if case.source
                   else f"[bold]{case.title or 'case'}[/bold]")
-    console.print(f"crank speed n1 = {m.omega_mean / (2 * math.pi):.6g} rev/s, "
+    console.print(f"crank speed n1 = {report.crank_speed_rps:.6g} rev/s, "
                   f"ω_m = {m.omega_mean:.6g} rad/s, δ = {m.delta:g}, "
                   f"balance: constant {m.balance} moment")
     c = mech.crank
@@ -85,58 +81,46 @@ def print_check(case, console=None) -> None:
                       cy.interpolation, str(len(cy.s)))
         console.print(t)
 
-    sliders = [d.slider for d in mech.dyads if hasattr(d, "guide")]
-    if sliders:
+    if report.sliders:
         t = _table("Dead centres", ("slider", "dead centre", "φ [deg]", "x along guide [m]"))
-        angles: list[float] = []
-        for s in sliders:
-            dcs = dead_centres(mech, s)
-            for dc in dcs:
-                t.add_row(s, dc.kind, f"{math.degrees(dc.phi):.4f}", f"{dc.x:.6g}")
-                if not any(abs(dc.phi - a) < 1e-9 for a in angles):
-                    angles.append(dc.phi)
-            stroke = (max(dc.x for dc in dcs) - min(dc.x for dc in dcs)) if len(dcs) > 1 else 0.0
-            t.add_row(s, "stroke", "", f"{stroke:.6g}")
+        for sl in report.sliders:
+            for dc in sl.dead_centres:
+                t.add_row(sl.slider, dc.kind, f"{math.degrees(dc.phi):.4f}", f"{dc.x:.6g}")
+            t.add_row(sl.slider, "stroke", "", f"{sl.stroke:.6g}")
         console.print(t)
+        angles = report.dead_centre_angles
         if angles:
-            angles.sort()
-            k = solve(mech, np.array(angles))
             t = _table("Points at the dead centres: |v_q| [m/rad] / |a_q| [m/rad²]",
-                       ("φ [deg]", *k.points))
+                       ("φ [deg]", *report.point_analogues))
             for i, a in enumerate(angles):
                 t.add_row(f"{math.degrees(a):.4f}", *(
-                    f"{_g(np.linalg.norm(pm.v_q[i]))} / {_g(np.linalg.norm(pm.a_q[i]))}"
-                    for pm in k.points.values()))
+                    f"{_g(v[i])} / {_g(acc[i])}" for v, acc in report.point_analogues.values()))
             console.print(t)
-            t = _table("Links at the dead centres: ω_q [-] / ε_q [1/rad]", ("φ [deg]", *k.links))
+            t = _table("Links at the dead centres: ω_q [-] / ε_q [1/rad]", ("φ [deg]", *report.link_analogues))
             for i, a in enumerate(angles):
                 t.add_row(f"{math.degrees(a):.4f}", *(
-                    f"{_g(lm.omega_q[i])} / {_g(lm.eps_q[i])}" for lm in k.links.values()))
+                    f"{_g(w[i])} / {_g(e[i])}" for w, e in report.link_analogues.values()))
             console.print(t)
     console.print("[green]case is valid[/green]")
 
 
-def _print_tabulated(case, console) -> None:
+def _print_tabulated(report, console) -> None:
     """A case with tabulated kinematics: its table, one row per position, with Мст and J_II."""
-
-    from flywheel.dynamics.tabulated import (dynamic_moments, inertia_derivative_at_positions,
-                                    reduced_inertia_at_positions, static_moments)
-
+    case, red = report.case, report.tabulated
     tab, m = case.tabulated, case.machine
     console.print(f"[bold]{case.title or 'case'}[/bold]" + (f"  ({case.source})" if case.source else ""))
-    console.print(f"crank speed n1 = {m.omega_mean / (2 * math.pi):.6g} rev/s, ω_m = {m.omega_mean:.6g} "
+    console.print(f"crank speed n1 = {report.crank_speed_rps:.6g} rev/s, ω_m = {m.omega_mean:.6g} "
                   f"rad/s, δ = {m.delta:g}, balance: constant {m.balance} moment; J_II by "
                   f"{tab.interpolation}", markup=False)
     kin = [("φ [deg]", tab.positions_deg)]
     kin += [(f"|V_q| {k} [m]", v) for k, v in tab.points.items()]
     kin += [(f"ω_q {k}", v) for k, v in tab.omega_q.items()]
-    red = [("φ [deg]", tab.positions_deg), ("Мст [N·m]", static_moments(tab)),
-           ("J_II [kg·m²]", reduced_inertia_at_positions(tab)),
-           ("dJ_II/dφ [kg·m²]", inertia_derivative_at_positions(tab)),
-           ("Мдин [N·m]", dynamic_moments(tab, m.omega_mean))]
+    reduced = [("φ [deg]", tab.positions_deg), ("Мст [N·m]", red.static_moments),
+               ("J_II [kg·m²]", red.J_II), ("dJ_II/dφ [kg·m²]", red.dJ_II),
+               ("Мдин [N·m]", red.dynamic_moments)]
     for title, cols in (("Tabulated kinematics (one row per position)", kin),
                         (f"Reduced to the crank (Мдин = ω_m²/2·dJ_II/dφ, dJ_II/dφ by "
-                         f"{tab.interpolation})", red)):
+                         f"{tab.interpolation})", reduced)):
         t = _table(title, ("#", *(c[0] for c in cols)))
         for k in range(len(tab.positions_deg)):
             t.add_row(str(k + 1), *(_g(float(v[k])) for _, v in cols))

@@ -59,21 +59,16 @@ def figure_energy_mass(results, lang: str = "en"):
     """
     from matplotlib.patches import Rectangle
 
-    from flywheel.dynamics.sizing import J_required_exact
-
     plt = _plt()
     t = TEXT[lang]
     s = results.scalars
-    J_II = results.columns["J_II"].values
-    A = results.columns["A"].values
-    w_m, delta = s["omega_mean"], s["delta"]
-    k_p = w_m**2 * (1 + delta / 2) ** 2 / 2
-    k_m = w_m**2 * (1 - delta / 2) ** 2 / 2
-    J_I, T0 = J_required_exact(A, J_II, w_m, delta)
-    top = k_p * J_I - T0                      # = max(A − k₊·J_II): the upper tangent at J_II = 0
-    bottom = k_m * J_I - T0                   # = min(A − k₋·J_II): the lower one
-    i_max = int(np.argmax(A - k_p * J_II))    # tangency points (ψ_max, ψ_min)
-    i_min = int(np.argmin(A - k_m * J_II))
+    sz = results.sizing
+    J_II = results.reduction.J_II
+    A = results.energy.A
+    k_p, k_m = sz.k_plus, sz.k_minus
+    J_I, T0 = sz.J_required_exact, sz.T0_exact
+    top, bottom = sz.T_k, sz.T_l              # the tangents at J_II = 0: points k and l
+    i_max, i_min = sz.i_tangent_max, sz.i_tangent_min    # tangency points (ψ_max, ψ_min)
     kl = top - bottom
 
     fig, axd = plt.subplot_mosaic([["full", "full"], ["zoom", "merzalov"]], figsize=(12, 9.5),
@@ -194,34 +189,19 @@ def figure_time_law(results, lang: str = "en"):
     return fig
 
 
-def _cycle_means(t: np.ndarray, w: np.ndarray, period: float) -> tuple[np.ndarray, np.ndarray]:
-    """Cycle means (1/Φ)∮ω dφ of a start-up history, at the middle of each whole cycle
-    (φ(t) and ∫ω² dt by the trapezoid rule; for the plot only)."""
-    dt = np.diff(t)
-    phi = np.concatenate([[0.0], np.cumsum(0.5 * (w[1:] + w[:-1]) * dt)])
-    q = np.concatenate([[0.0], np.cumsum(0.5 * (w[1:] ** 2 + w[:-1] ** 2) * dt)])
-    n = int(phi[-1] // period + 1e-9)
-    if n < 1:
-        return np.zeros(0), np.zeros(0)
-    edges = period * np.arange(n + 1)
-    t_edges = np.interp(edges, phi, t)
-    q_edges = np.interp(t_edges, t, q)
-    return 0.5 * (t_edges[1:] + t_edges[:-1]), np.diff(q_edges) / period
-
-
 def figure_transients(results, lang: str = "en"):
     """ω(t) during start-up (if the case has a motor) and run-down; the start-up with the steady
     speed ω_s of the motor line, its band ±δ/10 and the time to steady state (or a note that
     the steady state was not reached)."""
     plt = _plt()
     t = TEXT[lang]
-    hist = results.time_domain["histories"]
-    st = results.scalars.get("time_domain", {}).get("startup", {})
+    hist = results.time_domain.histories
+    st = results.time_domain.startup
     fig, ax = plt.subplots(figsize=(9, 5), constrained_layout=True)
     if "startup" in hist:
         ts, ws_ = hist["startup"]
         ax.plot(ts, ws_, lw=0.8, label=t["start"])
-        mids, means = _cycle_means(ts, ws_, float(results.phi[-1] - results.phi[0]))
+        mids, means = results.time_domain.startup_cycle_means
         if len(means):
             ax.plot(mids, means, ".", color="tab:blue", ms=4, label=t["means"])
         ws = st.get("omega_final_predicted")

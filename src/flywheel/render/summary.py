@@ -1,8 +1,6 @@
 """The rich summary on the terminal (`flywheel run`): the same numbers as summary.json."""
 from __future__ import annotations
 
-import math
-
 L10N = {
     "en": {
         "crank_length": "crank length l1", "omega_mean": "mean angular velocity ω_m",
@@ -74,18 +72,6 @@ L10N = {
 
 def _g(x: float, digits: int = 6) -> str:
     return f"{0.0 if abs(x) < 1e-13 else x:.{digits}g}"
-
-
-def _rim_share(s: dict) -> float | None:
-    """The share of J_M carried by the rim: ``flywheel_rim_share`` if the results give it, else
-    recovered from the rim's dimensions (first-principles formulas: J = πρb(D⁴ − D1⁴)/32)."""
-    if "flywheel_rim_share" in s:
-        return float(s["flywheel_rim_share"])
-    r, J = s.get("flywheel_rim") or {}, s.get("flywheel_J_on_its_shaft")
-    if s.get("flywheel_formulas", "first-principles") != "first-principles" or not J or not r.get("D"):
-        return None
-    rho = s.get("flywheel_material_density", 7800.0)
-    return math.pi * rho * r["b"] * (r["D"] ** 4 - r["D_inner"] ** 4) / 32 / J
 
 
 def time_domain_lines(td: dict | None, lang: str = "en") -> list[str]:
@@ -169,8 +155,8 @@ def print_summary(results, console=None, lang: str = "en") -> None:
         lim = s.get("flywheel_rim_speed_limit")
         tab.add_row(t["fw_material"], f"{mat}, ρ = {_g(s['flywheel_material_density'], 5)}"
                     + (f"; {t['limit']} {_g(lim, 3)}" if lim else ""), "kg/m³" + (", m/s" if lim else ""))
-    share = _rim_share(s)
-    if share is not None and share < 1 - 1e-9:
+    share = results.sizing.rim_share
+    if share < 1 - 1e-9:
         tab.add_row(t["fw_rim_share"], _g(share, 4), "")
     d, r = s["flywheel_disk"], s["flywheel_rim"]
     tab.add_row(t["disk"], f"D = {_g(d['D'], 4)}, b = {_g(d['b'], 4)}, m = {_g(d['mass'], 5)}", "m, m, kg")

@@ -6,7 +6,6 @@ byte-identical files.
 from __future__ import annotations
 
 import json
-import math
 
 import numpy as np
 
@@ -36,20 +35,7 @@ def positions_csv(results) -> str:
     return "\n".join(lines) + "\n"
 
 
-def _clean(obj):
-    """JSON-ready: floats finite (NaN/inf → null), numpy scalars → Python."""
-    if isinstance(obj, dict):
-        return {str(k): _clean(v) for k, v in obj.items()}
-    if isinstance(obj, (list, tuple)):
-        return [_clean(v) for v in obj]
-    if isinstance(obj, (np.floating, float)):
-        f = float(obj)
-        return f if math.isfinite(f) else None
-    if isinstance(obj, np.integer):
-        return int(obj)
-    return obj
-
-
 def summary_json(results) -> str:
-    """summary.json: {"title", "source", "units", "results": {...scalars, "at": [...]}, "warnings"}."""
-    return json.dumps(_clean(results.summary()), indent=2, ensure_ascii=False) + "\n"
+    """summary.json: the results' document ({"title", "source", "units", "results": {…, "at":
+    […]}, "warnings"}) as indented UTF-8 JSON text."""
+    return json.dumps(results.to_document(), indent=2, ensure_ascii=False) + "\n"

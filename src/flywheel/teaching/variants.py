@@ -263,9 +263,8 @@ def results_of(kind: str, doc: dict, source: str, n_points: int = RUN_POINTS) ->
     case = _validate(kind, doc, source)
     if kind == "run":
         from flywheel.dynamics.pipeline import analyze
-        from flywheel.render.tables import _clean
 
-        return _clean(analyze(case, n_points=n_points).summary()["results"])
+        return analyze(case, n_points=n_points).to_document()["results"]
     from flywheel.cases.task2 import solve_case
 
     return solve_case(case, source).to_document()

@@ -1,0 +1,217 @@
+"""The stages that every route shares: reduction sums → energy → sizing → motion → time domain.
+
+A route (the linkage :mod:`~flywheel.dynamics.pipeline`, the table
+:mod:`~flywheel.dynamics.tabulated`) supplies the loads (:class:`LoadsResult`) and the links'
+shares of J_II on a closed φ grid; these functions take it from there. They read only the
+case's [machine], [flywheel] and [motor] sections, never a case file. Each returns a typed,
+frozen result (:mod:`flywheel.dynamics.results`) whose ``warnings`` say what the user should
+know; input that cannot be analysed raises :class:`~flywheel.errors.InputError`.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import replace
+
+import numpy as np
+
+from flywheel.dynamics import energy, motion, reduction, sizing
+from flywheel.dynamics.results import (EnergyResult, FlywheelShape, LoadsResult, MotionResult,
+                                       ReductionResult, SizingResult, TimeDomainResult)
+from flywheel.errors import InputError
+
+
+def reduced_inertia(phi: np.ndarray, J_parts: dict[str, np.ndarray],
+                    dJ_parts: dict[str, np.ndarray], warnings=()) -> ReductionResult:
+    """J_II and dJ_II/dφ as the sums of the links' shares (seed 000 §3.1), with J_II's cycle
+    mean (trapezoid rule) and extremes. J_parts [kg·m²], dJ_parts [kg·m²/rad] by link."""
+    if J_parts:
+        J_II, dJ_II = reduction.reduced_inertia({k: (J_parts[k], dJ_parts[k]) for k in J_parts})
+    else:
+        J_II, dJ_II = np.zeros_like(phi), np.zeros_like(phi)
+    return ReductionResult(
+        J_parts=J_parts, dJ_parts=dJ_parts, J_II=J_II, dJ_II=dJ_II,
+        J_II_mean=float(energy.cumulative_work(J_II, phi)[-1] / (2 * np.pi)),
+        J_II_min=float(np.min(J_II)), J_II_max=float(np.max(J_II)), warnings=tuple(warnings))
+
+
+def work_and_energy(phi: np.ndarray, loads: LoadsResult, red: ReductionResult,
+                    machine) -> EnergyResult:
+    """The constant moment that balances the cycle, the works A_D, A_C, A, and ΔT_I(φ) with its
+    global extremes (Merzalov; seed 000 §3.2.7, §4). ``machine``: the case's [machine]
+    (ω_m, balance). Raises InputError if the loads' work has the wrong sign for the balance."""
+    omega_m = machine.omega_mean
+    zero = np.zeros_like(phi)
+    M_parts, W_parts = loads.M_parts, loads.W_parts
+    warnings: list[str] = []
+    M_known = sum(M_parts.values()) if M_parts else zero.copy()
+    A_known = energy.cumulative_work(sum((M for k, M in M_parts.items() if k not in W_parts),
+                                         zero.copy()), phi) + sum(W_parts.values(), zero.copy())
+    work_known = float(A_known[-1])
+    M_const = energy.balancing_moment(A_known, phi)
+    if abs(work_known) <= 1e-9 * float(energy.cumulative_work(np.abs(M_known), phi)[-1]):
+        # only conservative loads (gravity, say): nothing to balance, round-off aside
+        M_const, work_known = 0.0, 0.0
+        warnings.append("the loads do no net work over a cycle: the balancing moment is 0 "
+                        "(the flywheel only smooths the loads' periodic part)")
+    elif machine.balance == "driving" and not M_const > 0:
+        raise InputError(
+            f"the loads do {work_known:+.6g} J of work over a cycle: a constant driving moment "
+            f"would have to be {M_const:.6g} N·m ≤ 0 (allowed: resistance must absorb work; "
+            f"for an engine set machine.balance = \"resistance\")")
+    if machine.balance == "resistance" and not M_const < 0:
+        raise InputError(
+            f"the loads do {work_known:+.6g} J of work over a cycle: a constant resistance moment "
+            f"would have to be {-M_const:.6g} N·m ≤ 0 (allowed: driving forces must supply work; "
+            f"for a compressor or press set machine.balance = \"driving\")")
+    A_const = M_const * phi
+    A = A_known + A_const
+    if machine.balance == "driving":
+        A_D, A_C = A_const, A_known
+        cycle_work_resistance = work_known
+        driving_moment = M_const
+    else:
+        A_D, A_C = A_known, A_const
+        cycle_work_resistance = M_const * 2 * np.pi
+        driving_moment = work_known / (2 * np.pi)
+    T_II, dT_I = energy.first_group_energy_change(A, red.J_II, omega_m)
+    phi_max, dT_max = energy.extreme(dT_I, phi, "max")
+    phi_min, dT_min = energy.extreme(dT_I, phi, "min")
+    return EnergyResult(
+        balance=machine.balance, M_known=M_known, balancing_moment=float(M_const),
+        M_sum=M_known + M_const, A_D=A_D, A_C=A_C, A=A,
+        cycle_work_resistance=float(cycle_work_resistance), driving_moment=float(driving_moment),
+        T_II=T_II, dT_I=dT_I, delta_T_I_max=float(dT_max), phi_delta_T_I_max=phi_max,
+        delta_T_I_min=float(dT_min), phi_delta_T_I_min=phi_min,
+        delta_T_max=float(dT_max - dT_min), warnings=tuple(warnings))
+
+
+def size_flywheel(phi: np.ndarray, en: EnergyResult, red: ReductionResult, machine,
+                  fw) -> SizingResult:
+    """J_I for δ by Merzalov and exactly (the energy–mass diagram, with its tangents and
+    tangency points), the flywheel on its shaft (seed 003, eqs. 9.21–9.23) and its disk and rim
+    dimensions. ``machine``, ``fw``: the case's [machine] and [flywheel]. Rim speeds come after
+    the motion (:func:`with_rim_speeds`)."""
+    omega_m, delta = machine.omega_mean, machine.delta
+    warnings: list[str] = []
+    J_req = sizing.J_required_merzalov(en.delta_T_max, omega_m, delta)
+    J_first = float(sum(machine.first_group.values()))
+    J_fly = J_req - J_first
+    if J_fly <= 0:
+        warnings.append(f"the first group already has {J_first:.6g} kg·m² ≥ J_required = {J_req:.6g} "
+                        f"kg·m²: no flywheel is needed")
+    J_exact, T0_exact = sizing.J_required_exact(en.A, red.J_II, omega_m, delta)
+    k_plus, k_minus = sizing.tangent_slopes(omega_m, delta)
+    i_max, i_min = sizing.tangency_points(en.A, red.J_II, omega_m, delta)
+    J_shaft = max(J_fly, 0.0) / fw.speed_ratio**2          # seed 003, eqs. 9.21–9.23
+    if fw.formulas == "course":
+        disk, rim = sizing.disk_course(J_shaft), sizing.rim_course(J_shaft * fw.rim_share)
+    else:
+        disk = sizing.disk(J_shaft, fw.rho, fw.width_ratio)
+        rim = sizing.rim(J_shaft * fw.rim_share, fw.rho, fw.width_ratio, fw.inner_ratio)
+    return SizingResult(
+        omega_mean=float(omega_m), delta=float(delta), J_required=float(J_req),
+        J_first_group=J_first, J_flywheel=float(J_fly), J_required_exact=float(J_exact),
+        J_flywheel_exact=float(J_exact - J_first), T0_exact=T0_exact, k_plus=k_plus,
+        k_minus=k_minus, T_k=k_plus * J_exact - T0_exact, T_l=k_minus * J_exact - T0_exact,
+        i_tangent_max=i_max, i_tangent_min=i_min, speed_ratio=float(fw.speed_ratio),
+        J_on_its_shaft=float(J_shaft), rim_share=float(fw.rim_share),
+        disk=FlywheelShape(**disk), rim=FlywheelShape(**rim), material=fw.material,
+        material_density=float(fw.rho),
+        rim_speed_limit=float(sizing.rim_speed_limit(fw.sigma, fw.rho)), formulas=fw.formulas,
+        warnings=tuple(warnings))
+
+
+def true_motion(phi: np.ndarray, en: EnergyResult, red: ReductionResult,
+                sz: SizingResult) -> MotionResult:
+    """ω(φ), ε(φ), t(φ) with J_I = max(J_required, J_first_group) on the crank shaft, and ω(φ)
+    with the exact J_I (the energy equation; seed 000 §4). Raises InputError if there is no
+    inertia at all or the numbers overflow."""
+    A, J_II = en.A, red.J_II
+    J_I = max(sz.J_required, sz.J_first_group)            # what is really on the crank shaft
+    if not J_I + float(J_II.min()) > 0:
+        raise InputError("the machine has no inertia: the loads cause no fluctuation of energy "
+                         "(ΔT_нб = 0, so no flywheel is sized), no link carries mass and nothing "
+                         "is on the crank shaft, so ω(φ) is undefined (allowed: masses in [links] "
+                         "or machine.first_group)")
+    if not all(np.isfinite(x) for x in (J_I, en.delta_T_max, float(np.max(np.abs(J_II))),
+                                          float(np.max(np.abs(A))))):
+        raise InputError("the results overflow: the case's values are out of range (allowed: SI "
+                         "units, m, kg, N, Pa)")
+    T0 = motion.T0_for_mean_speed(A, J_I, J_II, sz.omega_mean)
+    omega = motion.omega_from_energy(T0, A, J_I, J_II)
+    w_max, w_min, _, delta_ach = motion.speed_fluctuation(omega)
+    eps = motion.angular_acceleration(en.M_sum, omega, J_I + J_II, red.dJ_II)
+    t = motion.time_law(omega, phi)
+    omega_exact = motion.omega_from_energy(sz.T0_exact, A, sz.J_required_exact, J_II)
+    i_wmax, i_wmin = int(np.argmax(omega)), int(np.argmin(omega))
+    return MotionResult(
+        J_I=J_I, T0=float(T0), omega=omega, epsilon=eps, t=t, omega_exact=omega_exact,
+        omega_max=w_max, phi_omega_max=float(phi[i_wmax]), omega_min=w_min,
+        phi_omega_min=float(phi[i_wmin]), delta_achieved=float(delta_ach),
+        delta_achieved_exact=float(motion.speed_fluctuation(omega_exact)[3]),
+        cycle_time=float(t[-1]))
+
+
+def with_rim_speeds(sz: SizingResult, mo: MotionResult, fw) -> SizingResult:
+    """The sizing with the disk's and the rim's peripheral speeds at ω_max, and a warning for
+    each above the limit √(σ/ρ) of a thin rotating ring (hoop stress σ = ρ·v²)."""
+    warnings = list(sz.warnings)
+    shapes = {}
+    for shape, dims in (("disk", sz.disk), ("rim", sz.rim)):
+        v = mo.omega_max * sz.speed_ratio * dims.D / 2
+        shapes[shape] = replace(dims, rim_speed=v)
+        if v > sz.rim_speed_limit:
+            material = fw.material if fw.density is None and fw.allowable_stress is None \
+                else "the given material"
+            warnings.append(f"flywheel as a {shape}: rim speed {v:.1f} m/s exceeds "
+                            f"the safe {sz.rim_speed_limit:.1f} m/s = √(σ/ρ) of a thin rotating ring (hoop "
+                            f"stress σ = ρ·v², Timoshenko, Strength of Materials, part II) for "
+                            f"{material}: σ = {fw.sigma / 1e6:g} MPa, ρ = {fw.rho:g} kg/m³ (set "
+                            f"flywheel.allowable_stress, or a wider flywheel: width_ratio)")
+    return replace(sz, disk=shapes["disk"], rim=shapes["rim"], warnings=tuple(warnings))
+
+
+def dynamics(phi: np.ndarray, loads: LoadsResult, red: ReductionResult, machine,
+             fw) -> tuple[EnergyResult, SizingResult, MotionResult]:
+    """Energy → sizing → motion → rim speeds: everything that follows from the loads and J_II."""
+    en = work_and_energy(phi, loads, red, machine)
+    sz = size_flywheel(phi, en, red, machine, fw)
+    mo = true_motion(phi, en, red, sz)
+    return en, with_rim_speeds(sz, mo, fw), mo
+
+
+def time_domain(case, phi: np.ndarray, red: ReductionResult, en: EnergyResult,
+                mo: MotionResult) -> TimeDomainResult:
+    """--transients: the steady motion checked by time integration, start-up with the case's
+    [motor] (if any), run-down (:mod:`flywheel.dynamics.timedomain`; imports scipy)."""
+    from flywheel.dynamics import timedomain
+
+    machine = case.machine
+    J, dJ = mo.J_I + red.J_II, red.dJ_II
+    warnings: list[str] = []
+    verification = timedomain.verify_steady(phi, J, dJ, en.M_sum, mo.omega)
+    histories, means = {}, None
+    if case.motor is not None:
+        w_x = case.motor.no_load_speed_rpm * 2 * math.pi / 60
+        M_p = case.motor.starting_torque or en.driving_moment / (1 - machine.omega_mean / w_x)
+        st = timedomain.startup(phi, J, dJ, en.M_known, timedomain.linear_motor(M_p, w_x),
+                                machine.omega_mean, machine.delta)
+        startup = {k: v for k, v in st.items() if not isinstance(v, np.ndarray)}
+        startup["starting_torque"] = float(M_p)
+        startup["no_load_speed"] = float(w_x)
+        if st.get("warning"):
+            warnings.append(st["warning"])
+        if "t" in st:
+            histories["startup"] = (st["t"], st["omega"])
+            means = timedomain.history_cycle_means(st["t"], st["omega"], float(phi[-1] - phi[0]))
+    else:
+        startup = {"computed": False,
+                   "reason": "no [motor] in the case: under a constant driving moment the work "
+                             "over a cycle is zero at any speed, so there is no start-up to a "
+                             "steady state"}
+    rd = timedomain.rundown(phi, J, dJ, en.M_known, float(mo.omega[0]))
+    histories["rundown"] = (rd["t"], rd["omega"])
+    return TimeDomainResult(
+        verification=verification, startup=startup,
+        rundown={k: v for k, v in rd.items() if not isinstance(v, np.ndarray)},
+        histories=histories, startup_cycle_means=means, warnings=tuple(warnings))

@@ -1,0 +1,126 @@
+"""The package's shape (docs/architecture.md): imports point one way, no cycles, and the
+computation never imports the command line, the terminal or the plotting library.
+
+Walks every module's imports with ``ast`` (module level and inside functions alike: a lazy
+import is still a dependency) and checks them against the layer table below.
+"""
+from __future__ import annotations
+
+import ast
+from pathlib import Path
+
+import pytest
+
+SRC = Path(__file__).resolve().parents[1] / "src" / "flywheel"
+
+# package → the packages it may import (besides itself and the standard library / third
+# parties). Top to bottom: cli → render → teaching → cases → domain → linkage → io → errors.
+ALLOWED: dict[str, set[str]] = {
+    "errors": set(),
+    "io": {"errors"},
+    "linkage": {"errors"},
+    "dynamics": {"errors", "io", "linkage"},
+    "constant_inertia": {"errors", "io", "dynamics"},
+    "elastic": {"errors", "io", "dynamics"},
+    "cases": {"errors", "io", "linkage", "dynamics", "constant_inertia", "elastic"},
+    "teaching": {"errors", "io", "linkage", "dynamics", "constant_inertia", "elastic", "cases"},
+    "render": {"errors", "io", "linkage", "dynamics", "constant_inertia", "elastic", "cases",
+               "teaching"},
+    "cli": {"errors", "io", "linkage", "dynamics", "constant_inertia", "elastic", "cases",
+            "teaching", "render"},
+    "__init__": {"cases", "dynamics"},     # the library's two front doors: load_case, analyze
+    "__main__": {"cli"},
+}
+# imports only the command line, the terminal and the plots may use
+PRESENTATION = {"typer": {"cli"}, "rich": {"cli", "render"}, "matplotlib": {"render"}}
+
+
+def _module_name(path: Path) -> str:
+    rel = path.relative_to(SRC.parent).with_suffix("")
+    parts = list(rel.parts)
+    if parts[-1] == "__init__":
+        parts.pop()
+    return ".".join(parts)
+
+
+def _imports(path: Path) -> list[str]:
+    """Absolute names of every module ``path`` imports (relative imports resolved)."""
+    tree = ast.parse(path.read_text(encoding="utf-8"))
+    me = _module_name(path)
+    package = me if path.name == "__init__.py" else me.rpartition(".")[0]
+    out = []
+    for node in ast.walk(tree):
+        if isinstance(node, ast.Import):
+            out += [a.name for a in node.names]
+        elif isinstance(node, ast.ImportFrom):
+            base = node.module or ""
+            if node.level:
+                up = package.split(".")
+                up = up[: len(up) - node.level + 1]
+                base = ".".join(up + ([base] if base else []))
+            out.append(base)
+            # `from flywheel.dynamics import energy` imports the module flywheel.dynamics.energy
+            out += [f"{base}.{a.name}" for a in node.names
+                    if (SRC.parent / Path(*f"{base}.{a.name}".split("."))).with_suffix(".py").exists()
+                    or (SRC.parent / Path(*f"{base}.{a.name}".split("."))).is_dir()]
+    return out
+
+
+MODULES = {_module_name(p): p for p in sorted(SRC.rglob("*.py"))}
+
+
+def _package(module: str) -> str:
+    parts = module.split(".")
+    return parts[1] if len(parts) > 1 else "__init__"
+
+
+def _graph() -> dict[str, set[str]]:
+    g = {}
+    for name, path in MODULES.items():
+        g[name] = {m for m in _imports(path) if m in MODULES and m != name}
+    return g
+
+
+@pytest.mark.parametrize("module", sorted(MODULES))
+def test_imports_follow_the_layers(module):
+    path = MODULES[module]
+    pkg = _package(module)
+    if module == "flywheel":
+        pkg = "__init__"
+    allowed = ALLOWED[pkg] | {pkg}
+    bad = sorted({m for m in _imports(path) if m.startswith("flywheel.")
+                  and _package(m) not in allowed})
+    assert not bad, f"{module} ({pkg}) imports {bad}: against the layers of docs/architecture.md"
+    third = {m.split(".")[0] for m in _imports(path)}
+    for lib, who in PRESENTATION.items():
+        assert lib not in third or pkg in who, f"{module} imports {lib} (only {sorted(who)} may)"
+
+
+def test_no_import_cycles():
+    g = _graph()
+    state: dict[str, int] = {}
+    stack: list[str] = []
+
+    def visit(n: str) -> None:
+        state[n] = 1
+        stack.append(n)
+        for m in sorted(g[n]):
+            # a package's __init__ importing its own modules is how packages work, not a cycle
+            if m.startswith(n + "."):
+                continue
+            if state.get(m) == 1:
+                cycle = stack[stack.index(m):] + [m]
+                pytest.fail("import cycle: " + " → ".join(cycle))
+            if m not in state:
+                visit(m)
+        stack.pop()
+        state[n] = 2
+
+    for n in sorted(g):
+        if n not in state:
+            visit(n)
+
+
+def test_every_package_is_in_the_layer_table():
+    pkgs = {_package(m) for m in MODULES if m != "flywheel"}
+    assert pkgs <= set(ALLOWED), f"add {sorted(pkgs - set(ALLOWED))} to ALLOWED and the docs"
