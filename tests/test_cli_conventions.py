@@ -72,3 +72,20 @@ def test_a_closed_pipe_ends_quietly(tmp_path):
 def test_completion_is_offered():
     res = flywheel("--help")
     assert "--install-completion" in res.stdout
+
+
+def test_a_usage_error_is_one_error_line():
+    """The parser's own errors (a value of the wrong type, an unknown option or command, a
+    missing argument) are one `error:` line with exit 2, not the parser's box."""
+    for args, fragment in ((["run", CASES / "compressor.toml", "--points", "many"],
+                            "flywheel run: Invalid value for '--points'"),
+                           (["run"], "flywheel run: Missing argument 'case'"),
+                           (["bogus"], "No such command 'bogus'"),
+                           (["task2", "--md", "abc"], "Invalid value for '--md'")):
+        res = flywheel(*args)
+        lines = [ln for ln in res.stderr.splitlines() if ln.strip()]
+        assert res.returncode == 2 and len(lines) == 1, res.stderr
+        assert lines[0].startswith("error: ") and fragment in lines[0], lines[0]
+        assert "--help)" in lines[0] and res.stdout == ""
+    res = flywheel()                                     # no arguments: the help, exit 0
+    assert res.returncode == 0 and "Commands" in res.stdout

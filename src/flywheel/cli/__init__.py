@@ -103,6 +103,13 @@ def _stop(signum, frame) -> None:
     raise Stopped(signum)
 
 
+def _is_usage_error(exc: Exception) -> bool:
+    """A command-line usage error of the parser (an unknown option, a value of the wrong
+    type, a missing argument): typer's vendored click raises these with exit code 2."""
+    return any(c.__name__ == "UsageError" for c in type(exc).__mro__) and \
+        getattr(exc, "exit_code", None) == 2
+
+
 def main() -> None:
     """Console-script entry point: exit 130 on Ctrl-C, 143 on SIGTERM, with one line."""
     import signal
@@ -111,7 +118,9 @@ def main() -> None:
     signal.signal(signal.SIGINT, _stop)
     signal.signal(signal.SIGTERM, _stop)
     try:
-        app()
+        code = app(standalone_mode=False)
+        if isinstance(code, int) and code:
+            sys.exit(code)
     except BrokenPipeError:                   # `flywheel grade … | head`: quiet
         import os
 
@@ -123,6 +132,15 @@ def main() -> None:
         sys.stderr.write(f"error: {name}\n")
         sys.exit(128 + exc.signum)
     except Exception as exc:                  # not the user's input: a bug of flywheel
+        if _is_usage_error(exc):
+            if type(exc).__name__ == "NoArgsIsHelpError":
+                sys.exit(0)                   # the help is printed already
+            ctx = getattr(exc, "ctx", None)
+            where = f"{ctx.command_path}: " if ctx is not None else ""
+            see = f" (see {ctx.command_path} --help)" if ctx is not None else ""
+            msg = " ".join(exc.format_message().split())
+            sys.stderr.write(f"error: {where}{msg}{see}\n")
+            sys.exit(2)
         from flywheel import __version__
 
         if _Options.debug:
