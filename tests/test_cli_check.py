@@ -155,7 +155,9 @@ def test_python_m_flywheel_check_bad_file(tmp_path):
 
 
 def test_check_a_slider_that_never_moves(tmp_path):
-    # a rod hung from a fixed point: valid, if useless; it used to end in a traceback
+    # a rod hung from a fixed point: it used to end in a traceback; its kinematics assemble,
+    # but nothing carries mass, so `run` refuses it — and `check` says the same (a case that
+    # check calls valid also runs)
     path = tmp_path / "still.toml"
     path.write_text("""
 [machine]
@@ -175,8 +177,9 @@ slider = "3"
 guide = { angle_deg = 0.0 }
 """, encoding="utf-8")
     res = invoke("check", path)
-    assert res.exit_code == 0, res.output
-    assert "case is valid" in res.stdout
+    assert res.exit_code == 2 and "Traceback" not in res.output
+    assert "the machine has no inertia" in res.stderr
+    assert invoke("run", path, "--no-plots", "--out", tmp_path / "o").stderr == res.stderr
 
 
 def test_check_case_is_a_library_call_with_typed_numbers():

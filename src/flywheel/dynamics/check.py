@@ -46,8 +46,14 @@ class CheckReport:
 
 def check_case(case) -> CheckReport:
     """The :class:`CheckReport` of a validated case. Raises AssemblyError (from the kinematics)
-    if the mechanism cannot be assembled at some angle of the cycle (checked on 721 angles)."""
+    if the mechanism cannot be assembled at some angle of the cycle (checked on 721 angles),
+    and whatever error ``flywheel run`` would raise (loads whose cycle work has the wrong sign
+    for the balance, a machine without inertia, …): the analysis is run on a coarse grid
+    (360 intervals), so a case that `check` calls valid also runs."""
+    from flywheel.dynamics.pipeline import analyze
+
     n1 = case.machine.omega_mean / (2 * math.pi)
+    analyze(case, n_points=360)
     if case.tabulated is not None:
         return CheckReport(case=case, crank_speed_rps=n1, tabulated=_tabulated(case))
 
