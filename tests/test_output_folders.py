@@ -162,3 +162,69 @@ def test_an_interrupted_run_leaves_the_output_folder_as_it_was(tmp_path, sig):
     assert "Traceback" not in err and len(err.strip().splitlines()) == 1, err
     assert {p: p.read_bytes() for p in out.rglob("*") if p.is_file()} == before
     assert sorted(p.name for p in tmp_path.iterdir()) == ["o"]
+
+
+def _alive(pid: int) -> bool:
+    """A process that runs (a zombie, dead but not yet reaped, does not count)."""
+    try:
+        state = (Path(f"/proc/{pid}") / "stat").read_text().rsplit(")", 1)[1].split()[0]
+    except OSError:
+        return False
+    return state != "Z"
+
+
+def _children_of(pid: int) -> list[int]:
+    out = []
+    for p in Path("/proc").iterdir():
+        if p.name.isdigit():
+            try:
+                stat = (p / "stat").read_text().rsplit(")", 1)[1].split()
+            except OSError:
+                continue
+            if int(stat[1]) == pid:
+                out.append(int(p.name))
+    return out
+
+
+@pytest.mark.skipif(not Path("/proc").is_dir(), reason="needs /proc (Linux)")
+def test_ctrl_c_to_the_process_group_stops_the_plot_workers_too(tmp_path):
+    """A terminal's Ctrl-C reaches the whole process group, the plot workers included: one
+    line, exit 130, no worker's traceback, no worker left running, nothing left behind."""
+    out = tmp_path / "o"
+    proc = subprocess.Popen([sys.executable, "-m", "flywheel", "run", str(CASES / "compressor.toml"),
+                             "--out", str(out)], stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                            text=True, start_new_session=True)
+    deadline = time.monotonic() + 30
+    while not list(tmp_path.glob(".o.tmp-*/plots/*.png")) and time.monotonic() < deadline:
+        time.sleep(0.01)                           # the workers are drawing
+    workers = _children_of(proc.pid)
+    os.killpg(proc.pid, signal.SIGINT)
+    _, err = proc.communicate(timeout=60)
+    assert proc.returncode == 130, err
+    assert len(err.strip().splitlines()) == 1 and "Traceback" not in err, err
+    time.sleep(0.2)
+    assert not [w for w in workers if _alive(w)]
+    assert sorted(p.name for p in tmp_path.iterdir()) == []
+
+
+@pytest.mark.skipif(not Path("/proc").is_dir(), reason="needs /proc (Linux)")
+def test_a_killed_run_takes_its_workers_along_and_the_next_run_cleans_up(tmp_path):
+    out = tmp_path / "o"
+    proc = subprocess.Popen([sys.executable, "-m", "flywheel", "run", str(CASES / "compressor.toml"),
+                             "--out", str(out)], stdout=subprocess.DEVNULL,
+                            stderr=subprocess.DEVNULL)
+    deadline = time.monotonic() + 30
+    while not list(tmp_path.glob(".o.tmp-*/plots/*.png")) and time.monotonic() < deadline:
+        time.sleep(0.01)
+    workers = _children_of(proc.pid)
+    assert workers, "the plots are drawn by a forked worker"
+    proc.kill()                                    # SIGKILL: no cleanup in the parent
+    proc.wait(timeout=30)
+    time.sleep(0.5)
+    assert not [w for w in workers if _alive(w)]                       # died with the parent
+    assert list(tmp_path.glob(".o.tmp-*"))         # the temporary is left behind …
+    res = subprocess.run([sys.executable, "-m", "flywheel", "run", str(CASES / "compressor.toml"),
+                          "--out", str(out), "--no-plots", "--points", "360"],
+                         capture_output=True, text=True)
+    assert res.returncode == 0, res.stderr
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["o"]       # … and the next run removes it

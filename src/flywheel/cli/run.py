@@ -49,6 +49,8 @@ def run_command(
     lang: str = typer.Option("en", "--lang", help="Language of the summary and plots: en | ru."),
     transients: bool = typer.Option(False, "--transients", help="Also integrate the equation of "
                                     "motion in time: check ω(φ), start-up (needs \\[motor]), run-down."),
+    animate: bool = typer.Option(False, "--animate", help="Also write mechanism.gif: the linkage "
+                                 "moving over one cycle with its points' trajectories (72 frames)."),
 ) -> None:
     """Run the whole dynamic analysis of a case; write summary.json, table.csv, positions.csv
     and plots/*.png to the output folder."""
@@ -60,6 +62,9 @@ def run_command(
     from flywheel.render.tables import positions_csv, summary_json, table_csv
 
     c = _guard(load_case, case)
+    if animate and c.tabulated is not None:
+        fail(f"--animate: {case} gives its kinematics as a table ([tabulated]): there is no "
+             "mechanism to animate (allowed: a case with [crank] and [[dyads]])")
     results = _guard(analyze, c, n_points=points, at_deg=at, transients=transients,
                      source=case, case=c)
     out = out if out is not None else Path("out") / case.stem
@@ -76,6 +81,10 @@ def run_command(
             (folder / "plots").mkdir()
             pngs += [p.name for p in write_plots(results, folder / "plots", lang=lang,
                                                  jobs=min(2, os.cpu_count() or 1))]
+        if animate:
+            from flywheel.render.animate import write_animation
+
+            write_animation(results, folder / "mechanism.gif", lang=lang)
         from flywheel.render.report import report_markdown
 
         (folder / "report.md").write_text(report_markdown(results, lang, pngs), encoding="utf-8")
@@ -91,4 +100,5 @@ def run_command(
 
         print_summary(results, lang=lang)
         typer.echo(f"written: {out}/ (summary.json, table.csv, positions.csv, report.md"
-                   + ("" if no_plots else ", plots/*.png") + ")")
+                   + ("" if no_plots else ", plots/*.png")
+                   + (", mechanism.gif" if animate else "") + ")")

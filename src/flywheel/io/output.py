@@ -131,6 +131,40 @@ def _backup_name(path: Path) -> Path:
     return cand
 
 
+class _signals_held:
+    """Ctrl-C and SIGTERM held off while a built folder is moved into place: one that came
+    before is acted on first (the old folder stays, the temporary is removed), one that comes
+    during the move is acted on right after it (the new folder is whole)."""
+
+    _SIGNALS = ("SIGINT", "SIGTERM")
+
+    def __enter__(self):
+        import signal
+
+        self._held = {getattr(signal, n) for n in self._SIGNALS if hasattr(signal, n)}
+        self._old = None
+        if hasattr(signal, "pthread_sigmask"):
+            self._old = signal.pthread_sigmask(signal.SIG_BLOCK, self._held)
+            if signal.sigpending() & self._held:    # it came while building: act on it now
+                signal.pthread_sigmask(signal.SIG_SETMASK, self._old)
+                self._old = None
+                _deliver_pending()
+        return self
+
+    def __exit__(self, *exc):
+        import signal
+
+        if self._old is not None:
+            signal.pthread_sigmask(signal.SIG_SETMASK, self._old)
+        return False
+
+
+def _deliver_pending() -> None:
+    """Give Python a bytecode boundary to run a signal handler that became due."""
+    for _ in range(3):
+        pass
+
+
 def write_folder(target: Path, build, marker: str, kind: str = "output",
                  notes: list[str] | None = None) -> Path:
     """Call ``build(tmp_folder)`` to fill a fresh folder, then put its files at ``target``.
@@ -170,15 +204,16 @@ def write_folder(target: Path, build, marker: str, kind: str = "output",
         new = {rel: _sha256(tmp / rel) for rel in _files(tmp)}
         manifest = json.dumps({"written_by": _WRITTEN_BY, "kind": kind,
                                "files": new}, indent=1, sort_keys=True) + "\n"
-        if earlier is None:
-            (tmp / MANIFEST).write_text(manifest, encoding="utf-8")
-            os.chmod(tmp, 0o755)
-            if target.is_dir():
-                os.rmdir(target)            # empty (checked above)
-            os.rename(tmp, target)
-        else:
-            _merge(tmp, target, earlier, new, manifest, notes)
-            shutil.rmtree(tmp, ignore_errors=True)
+        with _signals_held():               # Ctrl-C now: the old folder stays as it was
+            if earlier is None:
+                (tmp / MANIFEST).write_text(manifest, encoding="utf-8")
+                os.chmod(tmp, 0o755)
+                if target.is_dir():
+                    os.rmdir(target)        # empty (checked above)
+                os.rename(tmp, target)
+            else:
+                _merge(tmp, target, earlier, new, manifest, notes)
+                shutil.rmtree(tmp, ignore_errors=True)
     except OSError as exc:
         shutil.rmtree(tmp, ignore_errors=True)
         raise InputError(f"--out {target}: cannot be written ({exc.strerror})") from None

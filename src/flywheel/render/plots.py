@@ -606,16 +606,22 @@ def figure_epsilon(results, lang: str = "en"):
 
 
 def _draw_scheme(ax, results, i: int, size: float, lang: str) -> None:
-    """The mechanism at grid node i on ax; ``size`` [m] scales the symbols."""
-    from matplotlib.patches import Polygon, Rectangle
-    from matplotlib.transforms import Affine2D
+    """The mechanism at grid node i on ax; ``size`` [m] scales the symbols: what does not move
+    (trajectories, guides, fixed pivots), then what does."""
+    _draw_scheme_fixed(ax, results, size)
+    _draw_scheme_at(ax, results, i, size)
+    ax.set_aspect("equal", adjustable="datalim")
+    ax.set_xlabel(_t(lang, "x"))
+    ax.set_ylabel(_t(lang, "y"))
+
+
+def _draw_scheme_fixed(ax, results, size: float) -> None:
+    """The parts of the scheme that do not move: the trajectories of the moving points, the
+    guides with their hatching, the fixed pivots on their hatched bases."""
+    from matplotlib.patches import Polygon
 
     P = results.kinematics.points
     moving, fixed = _moving_points(results), _fixed_points(results)
-    centre = np.mean([P[n].r[i] for n in moving + fixed], axis=0)
-    joints = []
-    for _, pts in results.links_drawn:
-        joints += [p for p in pts if p not in joints]
     # trajectories
     for k, name in enumerate(moving):
         r = P[name].r
@@ -637,7 +643,33 @@ def _draw_scheme(ax, results, i: int, size: float, lang: str) -> None:
                 p0 = e + (t - a) * u
                 p1 = p0 + side * 0.35 * size * (nrm + u)
                 ax.plot([p0[0], p1[0]], [p0[1], p1[1]], color="k", linewidth=0.5, zorder=2)
-        c = r[i]
+    # fixed pivots: a triangle on a hatched base
+    for name in fixed:
+        c = P[name].r[0]
+        tri = Polygon([c, c + [-0.6 * size, -1.1 * size], c + [0.6 * size, -1.1 * size]],
+                      closed=True, facecolor="white", edgecolor="k", linewidth=1.0, zorder=2.5)
+        ax.add_patch(tri)
+        base_y = c[1] - 1.1 * size
+        ax.plot([c[0] - size, c[0] + size], [base_y, base_y], color="k", linewidth=1.0, zorder=2.5)
+        for t in np.linspace(-size, size, 5):
+            ax.plot([c[0] + t, c[0] + t - 0.35 * size], [base_y, base_y - 0.35 * size],
+                    color="k", linewidth=0.5, zorder=2.5)
+
+
+def _draw_scheme_at(ax, results, i: int, size: float) -> None:
+    """The parts of the scheme that move, at grid node i: sliders, links, joints, names."""
+    from matplotlib.patches import Polygon, Rectangle
+    from matplotlib.transforms import Affine2D
+
+    P = results.kinematics.points
+    moving, fixed = _moving_points(results), _fixed_points(results)
+    centre = np.mean([P[n].r[i] for n in moving + fixed], axis=0)
+    joints = []
+    for _, pts in results.links_drawn:
+        joints += [p for p in pts if p not in joints]
+    for link, joint, angle in _guided_sliders(results):
+        nrm = np.array([-math.sin(angle), math.cos(angle)])
+        c = P[joint].r[i]
         block = Rectangle((-0.9 * size, -0.45 * size), 1.8 * size, 0.9 * size, facecolor="0.85",
                           edgecolor="k", linewidth=1.2, zorder=4)
         block.set_transform(Affine2D().rotate(angle).translate(*c) + ax.transData)
@@ -673,17 +705,6 @@ def _draw_scheme(ax, results, i: int, size: float, lang: str) -> None:
             n = -n
         ax.annotate(link, mid, xytext=(7 * n[0], 7 * n[1]), textcoords="offset points",
                     ha="center", va="center", fontsize=8, style="italic", color="0.2", zorder=7)
-    # fixed pivots: a triangle on a hatched base
-    for name in fixed:
-        c = P[name].r[0]
-        tri = Polygon([c, c + [-0.6 * size, -1.1 * size], c + [0.6 * size, -1.1 * size]],
-                      closed=True, facecolor="white", edgecolor="k", linewidth=1.0, zorder=2.5)
-        ax.add_patch(tri)
-        base_y = c[1] - 1.1 * size
-        ax.plot([c[0] - size, c[0] + size], [base_y, base_y], color="k", linewidth=1.0, zorder=2.5)
-        for t in np.linspace(-size, size, 5):
-            ax.plot([c[0] + t, c[0] + t - 0.35 * size], [base_y, base_y - 0.35 * size],
-                    color="k", linewidth=0.5, zorder=2.5)
     # joints and other points
     for name in moving + fixed:
         c = P[name].r[i]
@@ -703,9 +724,6 @@ def _draw_scheme(ax, results, i: int, size: float, lang: str) -> None:
         ax.annotate(name, c, xytext=(12 * d[0] - 6 * d[1], 12 * d[1] + 6 * d[0]),
                     textcoords="offset points", ha="center", va="center", fontsize=10,
                     fontweight="bold", zorder=8)
-    ax.set_aspect("equal", adjustable="datalim")
-    ax.set_xlabel(_t(lang, "x"))
-    ax.set_ylabel(_t(lang, "y"))
 
 
 def _scheme_legend_handles(results, lang: str):
@@ -835,6 +853,22 @@ def _save_next(results, folder: Path, lang: str, order: list[int], counter) -> N
         _save_some(results, folder, lang, [order[k]])
 
 
+def _worker(results, folder: Path, lang: str, order: list[int], counter) -> None:
+    """A forked plotting process: it dies with its parent (Linux: PR_SET_PDEATHSIG), leaves
+    Ctrl-C to the parent (which stops it) and ends quietly on SIGTERM."""
+    import signal
+
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+    signal.signal(signal.SIGTERM, signal.SIG_DFL)
+    try:
+        import ctypes
+
+        ctypes.CDLL(None, use_errno=True).prctl(1, signal.SIGKILL)   # 1 = PR_SET_PDEATHSIG
+    except (OSError, AttributeError):
+        pass                              # not Linux: the parent still terminates it
+    _save_next(results, folder, lang, order, counter)
+
+
 def write_plots(results, folder: Path, lang: str = "en", jobs: int = 1) -> list[Path]:
     """Write every plot of ``results`` (:func:`all_figures`) as PNG into ``folder`` (created if
     missing); return the paths in a fixed order. ``lang``: "en" or "ru" for the labels and titles. ``jobs`` > 1
@@ -856,12 +890,16 @@ def write_plots(results, folder: Path, lang: str = "en", jobs: int = 1) -> list[
     if jobs > 1 and "fork" in mp.get_all_start_methods():
         ctx = mp.get_context("fork")
         counter = ctx.Value("i", 0)
-        children = [ctx.Process(target=_save_next, args=(results, folder, lang, order, counter))
+        children = [ctx.Process(target=_worker, args=(results, folder, lang, order, counter))
                     for _ in range(jobs - 1)]
         for c in children:
             c.start()
         try:
             _save_next(results, folder, lang, order, counter)
+        except BaseException:            # Ctrl-C, SIGTERM, an error: the workers stop now
+            for c in children:
+                c.terminate()
+            raise
         finally:
             for c in children:
                 c.join()
