@@ -283,8 +283,9 @@ def _check_speed_pair(sp: Flywheel, speeds: list[str], flucts: list[str]) -> Non
     if "mean" in level and "max" in level:
         (km, vm), (kx, vx) = level["mean"], level["max"]
         if not vm < vx < 2 * vm:
-            raise FieldError(f"flywheel.{kx}", f"{vx:g} with {km} = {vm:g} gives min = 2·mean − max "
-                             f"= {2 * vm - vx:g} (allowed: {vm:g} < {kx} < {2 * vm:g})")
+            raise FieldError(f"flywheel.{kx}", f"{vx:g} with {km} = {vm:g} gives min = "
+                             f"2·mean − max = {2 * vm - vx:g} "
+                             f"(allowed: {vm:g} < {kx} < {2 * vm:g})")
     if "mean" in level and "min" in level:
         (km, vm), (kn, vn) = level["mean"], level["min"]
         if not vn < vm:

@@ -2,8 +2,8 @@
 gives the energy of each operation and whose motor restores it before the next one.
 
 The model (Khurmi & Gupta, *Theory of Machines*, ch. 16 "Turning Moment Diagrams and Flywheel",
-§16.15 "Flywheel in Punching Press", Ex. 16.19–16.23; Артоболевский, «Теория механизмов и
-машин», §16 on machines with a periodic working load):
+the section "Flywheel in Punching Press", Ex. 16.19–16.23; Артоболевский, «Теория механизмов
+и машин», on the coefficient of unevenness δ of machines with a periodic load):
 
 - one operation takes the work ``E`` [J] in the time ``t_op`` [s] (the crank angle
   ``Δφ_op`` [rad]) of each cycle of ``T_c`` [s]; the rest of the cycle the machine runs idle;
@@ -22,9 +22,9 @@ time into angle and back exactly: ``Δφ = ω_ср·t``. The energy balances are
 - operation: ``ΔE = E − M_Д·Δφ_op = E − P·t_op`` — the energy the flywheel gives, the
   textbook's ``ΔE = E₁ − E₂`` with ``E₂ = P·t`` the motor's share (Ex. 16.19–16.22);
 - flywheel: ``ΔE = ½·J·(ω_max² − ω_min²) = J·ω_ср²·δ``, ``δ = (ω_max − ω_min)/ω_ср``
-  (Khurmi & Gupta §16.10, ``ΔE = I·ω²·C_s``, exact with ``ω = ω_ср``); with the mass at the
-  radius of gyration ``k``: ``J = m·k²``, and for a rim ``ΔE = m·v²·δ`` with the rim speed
-  ``v = ω_ср·k`` (§16.10: ``ΔE = m·v²·C_s``);
+  (Khurmi & Gupta, "Energy Stored in a Flywheel": ``ΔE = I·ω²·C_s``, exact with
+  ``ω = ω_ср``); with the mass at the radius of gyration ``k``: ``J = m·k²``, and for a rim
+  ``ΔE = m·v²·δ`` with the rim speed ``v = ω_ср·k`` (the same section: ``ΔE = m·v²·C_s``);
 - recovery: ``M_Д·Δφ_rec = ΔE``, ``t_rec = ΔE/P = J·(ω_max − ω_min)/M_Д``;
 - the cycle: ``P·(t_op + t_rec) = E`` (the motor works for ``E/P`` of each cycle) and
   ``t_op + t_rec + t_idle = T_c``; the mean power of the operations is ``E/T_c`` (Ex. 16.19:

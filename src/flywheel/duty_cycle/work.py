@@ -9,13 +9,13 @@ travel ``s`` = the plate's thickness ``t`` [m]. The books give it in one of thre
   ``E = e·A`` with the sheared area ``A = π·d·t`` of a hole of diameter ``d`` (the hole's
   cylindrical wall) or ``A = L·t`` of a straight cut of length ``L``;
 - as the largest force ``F_max = A·τ_u`` (the sheared area times the ultimate shear strength,
-  Khurmi & Gupta §16.15, Ex. 16.23) with a stated shape of the force over the travel, see
-  :data:`SHAPES`.
+  Khurmi & Gupta, "Flywheel in Punching Press", Ex. 16.23) with a stated shape of the force
+  over the travel, see :data:`SHAPES`.
 
 The speed limits: ``δ = (ω_max − ω_min)/ω_ср`` with ``ω_ср = (ω_max + ω_min)/2`` — the
-coefficient of fluctuation of speed ``C_s`` of Khurmi & Gupta §16.7 ("total fluctuation of
+coefficient of fluctuation of speed ``C_s`` of Khurmi & Gupta, ch. 16 ("total fluctuation of
 speed 3 % of the mean": δ = 0.03; "±1.5 %": δ = 0.03) and the coefficient of unevenness of
-Артоболевский, «Теория механизмов и машин», §16 (δ = (ω_max − ω_min)/ω_ср).
+Артоболевский, «Теория механизмов и машин» (δ = (ω_max − ω_min)/ω_ср).
 """
 from __future__ import annotations
 
@@ -24,8 +24,8 @@ import math
 # shape of the force over the travel → the share of F_max·t that is the work E
 SHAPES = {
     "constant": 1.0,   # F = F_max over the whole travel: E = F_max·t
-    "falling": 0.5,    # F falls linearly from F_max to 0 (the plate sheared through): E = F_max·t/2
-    "triangle": 0.5,   # F rises linearly from 0 to F_max at mid-travel and falls to 0: E = F_max·t/2
+    "falling": 0.5,    # F falls linearly from F_max to 0 (the plate sheared through): E = F·t/2
+    "triangle": 0.5,   # F rises linearly from 0 to F_max at mid-travel, falls to 0: E = F·t/2
 }
 
 
@@ -35,7 +35,7 @@ def work_of_stroke(force_max: float, travel: float, shape: str) -> float:
 
     - ``constant``: ``E = F_max·t``;
     - ``falling``: linear from ``F_max`` to 0, ``E = ½·F_max·t`` — the punching force of
-      Khurmi & Gupta, *Theory of Machines*, §16.15 and Ex. 16.23 ("energy required per stroke
+      Khurmi & Gupta, *Theory of Machines*, ch. 16, Ex. 16.23 ("energy required per stroke
       = ½ × maximum shearing force × thickness of plate");
     - ``triangle``: 0 → ``F_max`` at mid-travel → 0, ``E = ½·F_max·t``.
 
@@ -63,7 +63,8 @@ def sheared_area_cut(length: float, thickness: float) -> float:
 def share_from_stroke(thickness: float, stroke: float) -> float:
     """The share of the cycle the operation takes when the crank makes one revolution per
     operation and the punch is taken to move uniformly over its down-and-up travel ``2·s``:
-    ``(θ₂ − θ₁)/2π = t/(2·s)`` (Khurmi & Gupta, *Theory of Machines*, §16.15; used in Ex. 16.20).
+    ``(θ₂ − θ₁)/2π = t/(2·s)`` (Khurmi & Gupta, *Theory of Machines*, ch. 16,
+    "Flywheel in Punching Press"; used in Ex. 16.20).
 
     >>> share_from_stroke(0.032, 0.100)       # Ex. 16.20: 32 mm plate, 100 mm stroke
     0.16
@@ -76,7 +77,7 @@ def speed_limits(maximum: float | None = None, minimum: float | None = None,
     """``(ω_max, ω_min)`` from two of: ``maximum``, ``minimum``, ``mean`` (= (ω_max + ω_min)/2)
     and ``delta`` (δ = (ω_max − ω_min)/ω_ср). Any unit (rad/s, rev/min, m/s at a radius):
     the relations are linear. From ``δ``: ``ω_max = ω_ср·(1 + δ/2)``, ``ω_min = ω_ср·(1 − δ/2)``
-    (Khurmi & Gupta §16.7: ``C_s = (N₁ − N₂)/N = 2·(N₁ − N₂)/(N₁ + N₂)``).
+    (Khurmi & Gupta, ch. 16: ``C_s = (N₁ − N₂)/N = 2·(N₁ − N₂)/(N₁ + N₂)``).
 
     >>> speed_limits(mean=100.0, delta=0.04)
     (102.0, 98.0)
