@@ -319,7 +319,7 @@ def _with(**changes) -> dict:
 BAD = [
     # (changes, field path in the message, a phrase of it)
     (dict(flywheel={"mean_rpm": 200.0, "percent": 120.0}), "flywheel.percent",
-     "out of range (allowed: 0 < value < 100 %)"),
+     "out of range (allowed: 1e-06 ≤ value < 100 %)"),
     (dict(flywheel={"mean_rpm": 200.0, "total_percent": 250.0}), "flywheel.total_percent",
      "out of range"),
     (dict(flywheel={"mean_rpm": 200.0, "delta": 2.5}), "flywheel.delta", "out of range"),

@@ -119,13 +119,13 @@ class Flywheel(StrictModel):
     max_rim_speed: RimSpeed = Field(None, description="top speed at the flywheel's radius [m/s]")
     min_rim_speed: RimSpeed = Field(None, description="lowest speed at the radius [m/s]")
     mean_rim_speed: RimSpeed = Field(None, description="mean speed at the radius [m/s]")
-    percent: _num(0.0, 100.0, "%", lo_open=True, hi_open=True) = Field(
+    percent: _num(1e-6, 100.0, "%", hi_open=True) = Field(
         None, description="±x % of the mean speed: δ = 2x/100")
-    total_percent: _num(0.0, 200.0, "%", lo_open=True, hi_open=True) = Field(
+    total_percent: _num(1e-6, 200.0, "%", hi_open=True) = Field(
         None, description="total fluctuation x % of the mean: δ = x/100")
-    delta: _num(0.0, 2.0, "", lo_open=True, hi_open=True) = Field(
+    delta: _num(1e-8, 2.0, "", hi_open=True) = Field(
         None, description="coefficient of fluctuation of speed δ = C_s")
-    drop_percent: _num(0.0, 100.0, "%", lo_open=True, hi_open=True) = Field(
+    drop_percent: _num(1e-6, 100.0, "%", hi_open=True) = Field(
         None, description="the speed falls x % below the top: ω_min = (1 − x/100)·ω_max")
 
     J: _num(1e-9, 1e9, "kg·m²") = Field(None, description="moment of inertia, given [kg·m²]")
@@ -396,3 +396,6 @@ def solve_case(c: DutyCase, source: str = "<case>") -> DutyCycleResult:
         return solve(to_duty_cycle(c))
     except DutyCycleError as exc:
         raise CaseFileError(f"{source}: {exc.field}: {exc}") from None
+    except (ArithmeticError, ValueError) as exc:      # inputs near the limits of doubles
+        raise CaseFileError(f"{source}: the values are too large or too small for double "
+                            f"precision ({exc})") from None

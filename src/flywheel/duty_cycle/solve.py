@@ -361,6 +361,10 @@ def solve(d: DutyCycle) -> DutyCycleResult:
         tl = _speeds_from_flywheel(d, J)
     else:
         w1, w2 = _speed_pair(d)
+        if not w1 > w2 > 0:
+            raise DutyCycleError(d.field("speed", "flywheel"),
+                                 f"the speed limits {w1:.17g} and {w2:.17g} leave no drop "
+                                 f"(allowed: ω_max > ω_min > 0)")
         tl = _timeline(d, w1, w2)
         J = 2.0 * tl.dE / ((w1 - w2) * (w1 + w2))
     _check_timeline(d, tl)
@@ -471,7 +475,14 @@ def _result(d: DutyCycle, tl: _Timeline, J: float) -> DutyCycleResult:
 def nonfinite(r: DutyCycleResult) -> str | None:
     """The name of the first result that is not a finite number (inputs near the limits of
     double precision), else None."""
-    for name, v in r.to_document().items():
-        if isinstance(v, float) and not math.isfinite(v):
-            return name
-    return None
+    def walk(d: dict, prefix: str) -> str | None:
+        for name, v in d.items():
+            if isinstance(v, dict):
+                bad = walk(v, f"{prefix}{name}.")
+                if bad:
+                    return bad
+            elif isinstance(v, float) and not math.isfinite(v):
+                return prefix + name
+        return None
+
+    return walk(r.to_document(), "")
