@@ -16,7 +16,8 @@ from typing import Annotated, Literal
 from pydantic import AfterValidator, Field
 
 from flywheel.duty_cycle import work as wk
-from flywheel.duty_cycle.solve import DutyCycle, DutyCycleError, DutyCycleResult, Work, solve
+from flywheel.duty_cycle.solve import (DutyCycle, DutyCycleError, DutyCycleResult, Work,
+                                       nonfinite, solve)
 from flywheel.errors import CaseFileError
 from flywheel.io.schema import FieldError, StrictModel, describe, load, pick, validate
 
@@ -393,9 +394,14 @@ def to_duty_cycle(c: DutyCase) -> DutyCycle:
 def solve_case(c: DutyCase, source: str = "<case>") -> DutyCycleResult:
     """Solve a validated case; a problem that cannot be solved becomes one CaseFileError line."""
     try:
-        return solve(to_duty_cycle(c))
+        result = solve(to_duty_cycle(c))
     except DutyCycleError as exc:
         raise CaseFileError(f"{source}: {exc.field}: {exc}") from None
     except (ArithmeticError, ValueError) as exc:      # inputs near the limits of doubles
         raise CaseFileError(f"{source}: the values are too large or too small for double "
                             f"precision ({exc})") from None
+    bad = nonfinite(result)
+    if bad is not None:
+        raise CaseFileError(f"{source}: {bad} is not a finite number: the values are too large "
+                            "or too small for double precision")
+    return result
