@@ -295,7 +295,7 @@ def test_shapes_of_the_force_over_the_travel():
         assert work_of_stroke(F, t, shape) == pytest.approx(area, rel=1e-9), shape
 
 
-# -- bad input: one line, exit 2, file and field ----------------------------------------------------
+# -- bad input: one line, exit 2, file and field ------------------------------------------------
 
 BASE = {"operation": {"energy": 15000.0, "duration": 2.0}, "cycle": {"per_hour": 720},
         "flywheel": {"max_rpm": 225.0, "min_rpm": 200.0, "radius_of_gyration": 0.5}}
@@ -319,12 +319,13 @@ def _with(**changes) -> dict:
 BAD = [
     # (changes, field path in the message, a phrase of it)
     (dict(flywheel={"mean_rpm": 200.0, "percent": 120.0}), "flywheel.percent",
-     "out of range (allowed: 1e-06 ≤ value < 100 %)"),
+     "120 % is out of range: the speed would drop to zero or below (allowed: 1e-06 ≤ value "
+     "< 100 %)"),
     (dict(flywheel={"mean_rpm": 200.0, "total_percent": 250.0}), "flywheel.total_percent",
      "out of range"),
     (dict(flywheel={"mean_rpm": 200.0, "delta": 2.5}), "flywheel.delta", "out of range"),
     (dict(flywheel={"max_rpm": 200.0, "drop_percent": 100.0}), "flywheel.drop_percent",
-     "out of range"),
+     "the speed would drop to zero or below"),
     (dict(flywheel__min_rpm=230.0), "flywheel.min_rpm", "is not below max_rpm = 225"),
     (dict(flywheel={"mean_rpm": 100.0, "max_rpm": 225.0}), "flywheel.max_rpm",
      "gives min = 2·mean − max = -25"),
@@ -372,7 +373,8 @@ def _drop_none(data):
     return data
 
 
-@pytest.mark.parametrize("changes, field, phrase", BAD, ids=[b[1] + ":" + b[2][:25] for b in BAD])
+@pytest.mark.parametrize("changes, field, phrase", BAD,
+                         ids=[b[1] + ":" + b[2][:25] for b in BAD])
 def test_bad_input_is_one_line_naming_file_and_field(tmp_path, changes, field, phrase):
     path = _case(tmp_path, _drop_none(_with(**changes)))
     res = runner.invoke(app, ["duty-cycle", str(path)])

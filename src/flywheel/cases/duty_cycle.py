@@ -24,21 +24,27 @@ from flywheel.io.schema import FieldError, StrictModel, describe, load, pick, va
 RPM = math.pi / 30.0            # rev/min → rad/s
 
 
-def _within(lo: float, hi: float, unit: str, lo_open: bool = False, hi_open: bool = False):
-    """A validator refusing values outside the range with the range and unit in the message."""
+def _within(lo: float, hi: float, unit: str, lo_open: bool = False, hi_open: bool = False,
+            above: str = ""):
+    """A validator refusing values outside the range with the range and unit in the message;
+    ``above`` says what a value at or above ``hi`` would mean."""
     def check(v):
         ok = (lo < v if lo_open else lo <= v) and (v < hi if hi_open else v <= hi)
         if not ok:
             u = f" {unit}" if unit else ""
             left = f"{lo:g} <" if lo_open else f"{lo:g} ≤"
             right = f"< {hi:g}" if hi_open else f"≤ {hi:g}"
-            raise ValueError(f"{v:g}{u} is out of range (allowed: {left} value {right}{u})")
+            why = f": {above}" if above and v >= hi else ""
+            raise ValueError(f"{v:g}{u} is out of range{why} (allowed: {left} value {right}{u})")
         return v
     return AfterValidator(check)
 
 
 def _num(lo, hi, unit, **kw):
     return Annotated[float, _within(lo, hi, unit, **kw)] | None
+
+
+_BELOW_ZERO = "the speed would drop to zero or below"
 
 
 Energy = _num(1e-6, 1e12, "J")
@@ -120,13 +126,13 @@ class Flywheel(StrictModel):
     max_rim_speed: RimSpeed = Field(None, description="top speed at the flywheel's radius [m/s]")
     min_rim_speed: RimSpeed = Field(None, description="lowest speed at the radius [m/s]")
     mean_rim_speed: RimSpeed = Field(None, description="mean speed at the radius [m/s]")
-    percent: _num(1e-6, 100.0, "%", hi_open=True) = Field(
+    percent: _num(1e-6, 100.0, "%", hi_open=True, above=_BELOW_ZERO) = Field(
         None, description="±x % of the mean speed: δ = 2x/100")
-    total_percent: _num(1e-6, 200.0, "%", hi_open=True) = Field(
+    total_percent: _num(1e-6, 200.0, "%", hi_open=True, above=_BELOW_ZERO) = Field(
         None, description="total fluctuation x % of the mean: δ = x/100")
-    delta: _num(1e-8, 2.0, "", hi_open=True) = Field(
+    delta: _num(1e-8, 2.0, "", hi_open=True, above=_BELOW_ZERO) = Field(
         None, description="coefficient of fluctuation of speed δ = C_s")
-    drop_percent: _num(1e-6, 100.0, "%", hi_open=True) = Field(
+    drop_percent: _num(1e-6, 100.0, "%", hi_open=True, above=_BELOW_ZERO) = Field(
         None, description="the speed falls x % below the top: ω_min = (1 − x/100)·ω_max")
 
     J: _num(1e-9, 1e9, "kg·m²") = Field(None, description="moment of inertia, given [kg·m²]")
