@@ -17,7 +17,8 @@ runner = CliRunner()
 def test_every_bundled_case_is_recognised(path):
     expected = ("variants" if path.name.startswith("variants_") else
                 "task2" if path.name.startswith("task2_") else
-                "aggregate" if path.name.startswith("aggregate") else "run")
+                "aggregate" if path.name.startswith("aggregate") else
+                "duty_cycle" if path.name.startswith("duty_") else "run")
     assert kind_of(read_toml(path)) == expected
 
 

@@ -1,6 +1,7 @@
 """Case files, one schema module per kind: :mod:`.run` (a linkage or a table of kinematics:
 ``flywheel run``), :mod:`.tabulated` (its ``[tabulated]`` section), :mod:`.task2` (given moment
-graphs: ``flywheel task2 --case``), :mod:`.aggregate` (elastic couplings: ``flywheel aggregate``).
+graphs: ``flywheel task2 --case``), :mod:`.aggregate` (elastic couplings: ``flywheel aggregate``),
+:mod:`.duty_cycle` (presses: ``flywheel duty-cycle``).
 
 A file given to the wrong command is recognised by its tables (:func:`kind_of`) and the error
 names the command that reads it.
@@ -13,21 +14,25 @@ _OWN_TABLES = {
             "forces", "ground", "output"),
     "task2": ("driving", "resistance", "diagram", "speed", "cycle_deg"),
     "aggregate": ("coupling", "rotors", "shafts", "load"),
+    "duty_cycle": ("operation", "cycle"),
 }
 COMMANDS = {
     "run": "flywheel run {file}",
     "task2": "flywheel task2 --case {file}",
     "aggregate": "flywheel aggregate {file}",
     "variants": "flywheel variants {file} --count N --out DIR",
+    "duty_cycle": "flywheel duty-cycle {file}",
 }
 NAMES = {"run": "a flywheel run case", "task2": "a task-2 case (given moment graphs)",
          "aggregate": "an aggregate case (elastic couplings)",
-         "variants": "a variants template"}
+         "variants": "a variants template",
+         "duty_cycle": "a duty-cycle case (a press, riveter or shear)"}
 
 
 def kind_of(data) -> str | None:
     """The kind of case a parsed TOML document is, by its top-level tables: "variants" (it
-    has a [variants] table), "run", "task2", "aggregate", or None if its tables say nothing.
+    has a [variants] table), "run", "task2", "aggregate", "duty_cycle", or None if its tables say
+    nothing.
 
     >>> kind_of({"machine": {}, "crank": {}, "dyads": []})
     'run'

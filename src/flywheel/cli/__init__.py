@@ -76,6 +76,7 @@ class _ErrorsOnly:
 
 
 from flywheel.cli.aggregate import aggregate_command  # noqa: E402
+from flywheel.cli.duty_cycle import duty_cycle_command  # noqa: E402
 from flywheel.cli.run import check_command, run_command, schema_command  # noqa: E402
 from flywheel.cli.task2 import task2_command  # noqa: E402
 from flywheel.cli.teaching import grade_command, variants_command  # noqa: E402
@@ -85,6 +86,7 @@ app.command("check")(check_command)
 app.command("run")(run_command)
 app.command("task2")(task2_command)
 app.command("aggregate")(aggregate_command)
+app.command("duty-cycle")(duty_cycle_command)
 app.command("variants")(variants_command)
 app.command("grade")(grade_command)
 

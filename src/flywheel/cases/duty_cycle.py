@@ -1,0 +1,413 @@
+"""The TOML case format of ``flywheel duty-cycle`` (documented field by field in
+docs/duty-cycle.md): a press, riveter or shear whose flywheel gives the energy of each operation.
+
+A case gives ``[operation]`` (its work, and how long it takes), ``[cycle]`` (how often), an
+optional ``[motor]`` and ``[flywheel]``: its speed limits (or one speed when the flywheel itself
+is given) and its radius of gyration or rim. Units are SI; a non-SI
+value says so in its key (``_rpm``, ``_deg``, ``percent``). Every number is checked where it
+enters, in a physically meaningful range stated in the message, and every problem becomes one
+:class:`~flywheel.errors.CaseFileError` line ``file: field.path: what is wrong (allowed …)``.
+"""
+from __future__ import annotations
+
+import math
+from typing import Annotated, Literal
+
+from pydantic import AfterValidator, Field
+
+from flywheel.duty_cycle import work as wk
+from flywheel.duty_cycle.solve import (DutyCycle, DutyCycleError, DutyCycleResult, Work,
+                                       nonfinite, solve)
+from flywheel.errors import CaseFileError
+from flywheel.io.schema import FieldError, StrictModel, describe, load, pick, validate
+
+RPM = math.pi / 30.0            # rev/min → rad/s
+
+
+def _within(lo: float, hi: float, unit: str, lo_open: bool = False, hi_open: bool = False,
+            above: str = ""):
+    """A validator refusing values outside the range with the range and unit in the message;
+    ``above`` says what a value at or above ``hi`` would mean."""
+    def check(v):
+        ok = (lo < v if lo_open else lo <= v) and (v < hi if hi_open else v <= hi)
+        if not ok:
+            u = f" {unit}" if unit else ""
+            left = f"{lo:g} <" if lo_open else f"{lo:g} ≤"
+            right = f"< {hi:g}" if hi_open else f"≤ {hi:g}"
+            why = f": {above}" if above and v >= hi else ""
+            raise ValueError(f"{v:g}{u} is out of range{why} (allowed: {left} value {right}{u})")
+        return v
+    return AfterValidator(check)
+
+
+def _num(lo, hi, unit, **kw):
+    return Annotated[float, _within(lo, hi, unit, **kw)] | None
+
+
+_BELOW_ZERO = "the speed would drop to zero or below"
+
+
+Energy = _num(1e-6, 1e12, "J")
+Length = _num(1e-6, 1e3, "m")
+Share = _num(0.0, 1.0, "", lo_open=True)
+Seconds = _num(1e-6, 1e7, "s")
+Rpm = _num(0.06, 6e5, "rpm")
+Omega = _num(1e-3, 1e5, "rad/s")
+RimSpeed = _num(1e-3, 1e4, "m/s")
+
+SPEEDS = {  # key → (level, unit family)
+    "max_rpm": ("max", "rpm"), "min_rpm": ("min", "rpm"), "mean_rpm": ("mean", "rpm"),
+    "max_omega": ("max", "omega"), "min_omega": ("min", "omega"), "mean_omega": ("mean", "omega"),
+    "max_rim_speed": ("max", "rim"), "min_rim_speed": ("min", "rim"),
+    "mean_rim_speed": ("mean", "rim"),
+}
+FLUCTUATIONS = ("percent", "total_percent", "delta", "drop_percent")
+TIMINGS = ("duration", "cycle_share", "angle_deg", "stroke", "delta_E",
+           "energy_fluctuation_coefficient")
+CYCLES = ("per_hour", "per_minute", "period", "every_revolutions")
+
+
+class Operation(StrictModel):
+    """The work of one operation and how long it takes."""
+
+    energy: Energy = Field(None, description="work of one operation E [J]")
+    energy_per_area: _num(1e-3, 1e12, "J/m²") = Field(
+        None, description="work per unit of sheared area [J/m²] (7 N·m/mm² = 7e6 J/m²)")
+    sheared_area: _num(1e-12, 1e4, "m²") = Field(None, description="sheared area A [m²]")
+    hole_diameter: Length = Field(None, description="punched hole's diameter d: A = π·d·t [m]")
+    cut_length: Length = Field(None, description="length of a straight cut L: A = L·t [m]")
+    thickness: Length = Field(None, description="plate thickness t, the travel of the force [m]")
+    force: _num(1e-6, 1e12, "N") = Field(None, description="largest force F_max [N]")
+    shear_strength: _num(1.0, 1e11, "Pa") = Field(
+        None, description="ultimate shear strength τ_u: F_max = A·τ_u [Pa]")
+    shape: Literal["constant", "falling", "triangle"] | None = Field(
+        None, description="the force over the travel: constant (E = F·t), falling (linear "
+                          "F_max → 0, E = F·t/2), triangle (0 → F_max → 0, E = F·t/2)")
+    duration: Seconds = Field(None, description="time the operation takes t_op [s]")
+    cycle_share: Share = Field(None, description="share of the cycle time it takes, (0, 1]")
+    angle_deg: _num(1e-6, 1e6, "deg") = Field(
+        None, description="angle the flywheel shaft turns during it [deg]")
+    stroke: Length = Field(None, description="punch stroke s: share t/(2·s) of a cycle of one "
+                                             "crank revolution [m]")
+    delta_E: Energy = Field(None, description="energy the flywheel gives ΔE, given [J]")
+    energy_fluctuation_coefficient: Share = Field(
+        None, description="C_E = ΔE/E, given, (0, 1]")
+
+
+class Cycle(StrictModel):
+    """How often: one of the four."""
+
+    per_hour: _num(1e-3, 1e8, "1/h") = Field(None, description="operations per hour")
+    per_minute: _num(1e-5, 1e6, "1/min") = Field(None, description="operations per minute")
+    period: Seconds = Field(None, description="cycle time T_c [s]")
+    every_revolutions: _num(1e-3, 1e6, "rev") = Field(
+        None, description="one operation every k revolutions of the flywheel shaft")
+
+
+class Motor(StrictModel):
+    """The motor: its power or its constant torque."""
+
+    power: _num(1e-6, 1e10, "W") = Field(None, description="mean power while it works P [W]")
+    torque: _num(1e-6, 1e10, "N·m") = Field(None, description="constant torque M_Д [N·m]")
+    efficiency: Annotated[float, _within(0.0, 1.0, "", lo_open=True)] = Field(
+        1.0, description="the motor's (drive's) efficiency η: input P/η, (0, 1]")
+
+
+class Flywheel(StrictModel):
+    """The flywheel: its speeds (two values, or one and the fluctuation, to size it; one value
+    when the flywheel itself is given) and its radius (for the mass and the rim speed)."""
+
+    max_rpm: Rpm = Field(None, description="top speed, at the start of the operation [rpm]")
+    min_rpm: Rpm = Field(None, description="lowest speed, at its end [rpm]")
+    mean_rpm: Rpm = Field(None, description="mean speed (max + min)/2 [rpm]")
+    max_omega: Omega = Field(None, description="ω_max [rad/s]")
+    min_omega: Omega = Field(None, description="ω_min [rad/s]")
+    mean_omega: Omega = Field(None, description="ω_ср = (ω_max + ω_min)/2 [rad/s]")
+    max_rim_speed: RimSpeed = Field(None, description="top speed at the flywheel's radius [m/s]")
+    min_rim_speed: RimSpeed = Field(None, description="lowest speed at the radius [m/s]")
+    mean_rim_speed: RimSpeed = Field(None, description="mean speed at the radius [m/s]")
+    percent: _num(1e-6, 100.0, "%", hi_open=True, above=_BELOW_ZERO) = Field(
+        None, description="±x % of the mean speed: δ = 2x/100")
+    total_percent: _num(1e-6, 200.0, "%", hi_open=True, above=_BELOW_ZERO) = Field(
+        None, description="total fluctuation x % of the mean: δ = x/100")
+    delta: _num(1e-8, 2.0, "", hi_open=True, above=_BELOW_ZERO) = Field(
+        None, description="coefficient of fluctuation of speed δ = C_s")
+    drop_percent: _num(1e-6, 100.0, "%", hi_open=True, above=_BELOW_ZERO) = Field(
+        None, description="the speed falls x % below the top: ω_min = (1 − x/100)·ω_max")
+
+    J: _num(1e-9, 1e9, "kg·m²") = Field(None, description="moment of inertia, given [kg·m²]")
+    mass: _num(1e-6, 1e9, "kg") = Field(None, description="mass, given [kg]")
+    radius_of_gyration: Length = Field(None, description="k: J = m·k² [m]")
+    rim_radius: Length = Field(None, description="mean radius of a rim (k = R) [m]")
+    rim_diameter: Length = Field(None, description="mean diameter of a rim (k = D/2) [m]")
+
+
+class DutyCase(StrictModel):
+    """A duty-cycle problem."""
+
+    title: str = Field("", description="what the case is")
+    source: str = Field("", description="where it comes from (book, problem)")
+    notes: str = Field("", description="anything else")
+    operation: Operation
+    cycle: Cycle | None = None
+    motor: Motor | None = None
+    flywheel: Flywheel
+
+
+TABLES = {"operation": Operation, "cycle": Cycle, "motor": Motor, "flywheel": Flywheel}
+
+
+def _given(model, keys) -> list[str]:
+    return [k for k in keys if model is not None and getattr(model, k) is not None]
+
+
+def _one_of(table: str, model, keys, required: bool = True) -> str | None:
+    got = _given(model, keys)
+    if len(got) > 1 or (required and not got):
+        raise FieldError(table, f"give exactly one of {', '.join(keys)}"
+                         + (f" (got {', '.join(got)})" if got else ""))
+    return got[0] if got else None
+
+
+def _check(c: DutyCase) -> None:
+    """Checks that span fields; each raises with its field path."""
+    op, fw = c.operation, c.flywheel
+    sp = fw
+    # the work of the operation
+    routes = _given(op, ("energy", "energy_per_area", "force", "shear_strength"))
+    if len(routes) > 1:
+        raise FieldError("operation", "give the work one way: energy, or energy_per_area with "
+                         f"the sheared area, or force (or shear_strength) with thickness and "
+                         f"shape (got {', '.join(routes)})")
+    route = routes[0] if routes else None
+    if route is None and op.delta_E is None:
+        raise FieldError("operation", "missing: give the work of one operation (energy, "
+                         "energy_per_area with the sheared area, or force with thickness and "
+                         "shape), or delta_E")
+    area_keys = ("sheared_area", "hole_diameter", "cut_length")
+    if route in ("energy_per_area", "shear_strength"):
+        a = _one_of("operation", op, area_keys)
+        if a != "sheared_area" and op.thickness is None:
+            raise FieldError("operation.thickness", f"missing: {a} needs the plate's thickness "
+                             f"(A = {'π·d·t' if a == 'hole_diameter' else 'L·t'})")
+    else:
+        for k in area_keys:
+            if getattr(op, k) is not None:
+                raise FieldError(f"operation.{k}", "goes with energy_per_area or shear_strength")
+    if route in ("force", "shear_strength"):
+        if op.thickness is None:
+            raise FieldError("operation.thickness", "missing: the force's travel (the plate's "
+                             "thickness) sets the work")
+        if op.shape is None:
+            raise FieldError("operation.shape", "missing: state the force over the travel "
+                             "(allowed: constant, falling, triangle)")
+    elif op.shape is not None:
+        raise FieldError("operation.shape", "goes with force or shear_strength")
+    # the timing
+    timing = _one_of("operation", op, TIMINGS)
+    if timing == "energy_fluctuation_coefficient" and route is None:
+        raise FieldError("operation.energy_fluctuation_coefficient",
+                         "C_E = ΔE/E needs the work of one operation E")
+    if timing == "stroke":
+        if op.thickness is None:
+            raise FieldError("operation.thickness", "missing: the stroke gives the share t/(2·s) "
+                             "of the cycle, which needs the plate's thickness t")
+        if op.thickness > 2 * op.stroke:
+            raise FieldError("operation.stroke", f"{op.stroke:g} m is less than half the "
+                             f"thickness {op.thickness:g} m: the share t/(2·s) would exceed 1 "
+                             f"(allowed: stroke ≥ {op.thickness / 2:g} m)")
+    if timing == "delta_E" and route is not None:
+        E = _work(op).energy
+        if op.delta_E > E:
+            raise FieldError("operation.delta_E", f"{op.delta_E:g} J is more than the work of "
+                             f"the operation E = {E:.6g} J (allowed: ΔE ≤ E)")
+    # cycle and motor
+    if c.cycle is not None:
+        _one_of("cycle", c.cycle, CYCLES)
+    motor = None if c.motor is None else _one_of("motor", c.motor, ("power", "torque"),
+                                                  required=False)
+    if route is None:
+        for name in ("cycle", "motor"):
+            if getattr(c, name) is not None:
+                raise FieldError(name, "needs the work of one operation (operation.energy, "
+                                 "energy_per_area or force); with only delta_E the flywheel "
+                                 "alone is sized")
+    elif c.cycle is None and motor is None:
+        raise FieldError("cycle", "missing: give [cycle] (how often), or the motor's power or "
+                         "torque to find the largest rate it can keep")
+    # the flywheel
+    radius = _one_of("flywheel", fw, ("radius_of_gyration", "rim_radius", "rim_diameter"),
+                     required=False)
+    if fw.J is not None and fw.mass is not None:
+        raise FieldError("flywheel", "give J or mass, not both")
+    # the speeds
+    speeds = _given(sp, SPEEDS)
+    flucts = _given(sp, FLUCTUATIONS)
+    units = {SPEEDS[k][1] for k in speeds}
+    if len(units) > 1:
+        raise FieldError("flywheel", f"give the speeds in one unit (got {', '.join(speeds)})")
+    linear = units == {"rim"}
+    given = fw.J is not None or fw.mass is not None
+    if given:
+        if len(speeds) != 1 or flucts:
+            raise FieldError("flywheel", "with the flywheel given, give one speed (max, mean or "
+                             "min) and no fluctuation: the program finds the others"
+                             + (f" (got {', '.join(speeds + flucts)})" if speeds or flucts
+                                else ""))
+        if fw.mass is not None and radius is None and not linear:
+            raise FieldError("flywheel.mass", "needs the radius (radius_of_gyration, rim_radius "
+                             "or rim_diameter): J = m·k²")
+        if fw.J is not None and linear and radius is None:
+            raise FieldError("flywheel.J", "with speeds at the radius (m/s), give the radius too")
+    else:
+        if len(flucts) > 1:
+            raise FieldError("flywheel", f"give one of {', '.join(FLUCTUATIONS)} "
+                             f"(got {', '.join(flucts)})")
+        if len(speeds) + len(flucts) != 2 or len(speeds) == 0:
+            raise FieldError("flywheel", "give two speeds (two of max, min, mean) or one speed and "
+                             "the fluctuation (percent, total_percent, delta, drop_percent), or "
+                             "give the flywheel (J or mass) and one speed"
+                             + (f" (got {', '.join(speeds + flucts)})" if speeds or flucts
+                                else ""))
+        _check_speed_pair(sp, speeds, flucts)
+    if linear and radius is None:
+        for loc, bad in (("operation.angle_deg", op.angle_deg),
+                         ("cycle.every_revolutions", c.cycle and c.cycle.every_revolutions),
+                         ("motor.torque", c.motor and c.motor.torque)):
+            if bad is not None:
+                raise FieldError(loc, "needs the shaft's speed: with speeds at the radius (m/s) "
+                                 "give the flywheel's radius too, or the speeds in rpm")
+
+
+def _check_speed_pair(sp: Flywheel, speeds: list[str], flucts: list[str]) -> None:
+    """A speed drop larger than the speed, min above max and the like: one line each."""
+    level = {SPEEDS[k][0]: (k, getattr(sp, k)) for k in speeds}
+    if "max" in level and "min" in level:
+        (kx, vx), (kn, vn) = level["max"], level["min"]
+        if not vn < vx:
+            raise FieldError(f"flywheel.{kn}", f"{vn:g} is not below {kx} = {vx:g} "
+                             f"(allowed: 0 < {kn} < {kx})")
+    if "mean" in level and "max" in level:
+        (km, vm), (kx, vx) = level["mean"], level["max"]
+        if not vm < vx < 2 * vm:
+            raise FieldError(f"flywheel.{kx}", f"{vx:g} with {km} = {vm:g} gives min = "
+                             f"2·mean − max = {2 * vm - vx:g} "
+                             f"(allowed: {vm:g} < {kx} < {2 * vm:g})")
+    if "mean" in level and "min" in level:
+        (km, vm), (kn, vn) = level["mean"], level["min"]
+        if not vn < vm:
+            raise FieldError(f"flywheel.{kn}", f"{vn:g} is not below {km} = {vm:g} "
+                             f"(allowed: 0 < {kn} < {vm:g})")
+    if flucts == ["drop_percent"] and "max" not in level:
+        raise FieldError("flywheel.drop_percent", "is a drop from the top speed: give it with "
+                         "max_rpm, max_omega or max_rim_speed")
+
+
+def _describe(err: dict) -> str:
+    def allowed(parent: tuple) -> list[str]:
+        if not parent:
+            return list(DutyCase.model_fields)
+        model = TABLES.get(parent[0]) if len(parent) == 1 else None
+        return list(model.model_fields) if model else []
+
+    return describe(err, allowed)
+
+
+def parse_duty_case(data: dict, source: str = "<case>") -> DutyCase:
+    """Validate a parsed TOML document or raise one CaseFileError line."""
+    from flywheel.cases import wrong_kind
+
+    other = wrong_kind(data, "duty_cycle", source)
+    if other:
+        raise CaseFileError(other)
+    return validate(data, DutyCase, source, lambda errs: _describe(pick(errs)), _check)
+
+
+def load_duty_case(path) -> DutyCase:
+    """Read a TOML duty-cycle case file and validate it."""
+    return load(path, parse_duty_case)
+
+
+def _work(op: Operation) -> Work | None:
+    """The work of one operation from the fields (formulas in :mod:`flywheel.duty_cycle.work`)."""
+    if op.energy is not None:
+        return Work(op.energy)
+    area = op.sheared_area
+    if op.hole_diameter is not None:
+        area = wk.sheared_area_hole(op.hole_diameter, op.thickness)
+    elif op.cut_length is not None:
+        area = wk.sheared_area_cut(op.cut_length, op.thickness)
+    if op.energy_per_area is not None:
+        return Work(op.energy_per_area * area, sheared_area=area,
+                    energy_per_area=op.energy_per_area, thickness=op.thickness)
+    if op.force is not None or op.shear_strength is not None:
+        force = op.force if op.force is not None else area * op.shear_strength
+        return Work(wk.work_of_stroke(force, op.thickness, op.shape), sheared_area=area,
+                    force_max=force, thickness=op.thickness, shape=op.shape)
+    return None
+
+
+def to_duty_cycle(c: DutyCase) -> DutyCycle:
+    """The domain's problem from a validated case (rpm → rad/s, percent → δ, …)."""
+    op, fw, cy, mo = c.operation, c.flywheel, c.cycle, c.motor
+    sp = fw
+    work = _work(op)
+    radius = (fw.radius_of_gyration if fw.radius_of_gyration is not None else
+              fw.rim_radius if fw.rim_radius is not None else
+              None if fw.rim_diameter is None else fw.rim_diameter / 2)
+    speeds = {SPEEDS[k][0]: getattr(sp, k) for k in _given(sp, SPEEDS)}
+    unit = {SPEEDS[k][1] for k in _given(sp, SPEEDS)}.pop()
+    if unit == "rpm":
+        speeds = {k: v * RPM for k, v in speeds.items()}
+    linear = unit == "rim"
+    if linear and radius is not None:          # v = ω·k
+        speeds = {k: v / radius for k, v in speeds.items()}
+        linear = False
+    delta = (sp.delta if sp.delta is not None else
+             2 * sp.percent / 100 if sp.percent is not None else
+             sp.total_percent / 100 if sp.total_percent is not None else None)
+    if sp.drop_percent is not None:
+        speeds["min"] = speeds["max"] * (1 - sp.drop_percent / 100)
+    share = op.cycle_share
+    if op.stroke is not None:
+        share = wk.share_from_stroke(op.thickness, op.stroke)
+    delta_E = op.delta_E
+    if op.energy_fluctuation_coefficient is not None:
+        delta_E = op.energy_fluctuation_coefficient * work.energy
+    period = None
+    if cy is not None:
+        period = (cy.period if cy.period is not None else
+                  3600.0 / cy.per_hour if cy.per_hour is not None else
+                  60.0 / cy.per_minute if cy.per_minute is not None else None)
+    timing = _given(op, TIMINGS)[0]
+    return DutyCycle(
+        work=work, duration=op.duration, cycle_share=share,
+        angle=None if op.angle_deg is None else math.radians(op.angle_deg),
+        delta_E=delta_E, period=period,
+        revolutions=None if cy is None else cy.every_revolutions,
+        motor_power=None if mo is None else mo.power,
+        motor_torque=None if mo is None else mo.torque,
+        efficiency=1.0 if mo is None else mo.efficiency,
+        speed_max=speeds.get("max"), speed_min=speeds.get("min"), speed_mean=speeds.get("mean"),
+        delta=delta, J=fw.J, mass=fw.mass, radius=radius, linear_speeds=linear,
+        fields=(("operation", f"operation.{timing}"),
+                ("motor", "motor.power" if mo is not None and mo.power is not None else
+                 "motor.torque" if mo is not None and mo.torque is not None else "cycle"),
+                ("flywheel", "flywheel." + ("J" if fw.J is not None else "mass")),
+                ("speed", "flywheel")))
+
+
+def solve_case(c: DutyCase, source: str = "<case>") -> DutyCycleResult:
+    """Solve a validated case; a problem that cannot be solved becomes one CaseFileError line."""
+    try:
+        result = solve(to_duty_cycle(c))
+    except DutyCycleError as exc:
+        raise CaseFileError(f"{source}: {exc.field}: {exc}") from None
+    except (ArithmeticError, ValueError) as exc:      # inputs near the limits of doubles
+        raise CaseFileError(f"{source}: the values are too large or too small for double "
+                            f"precision ({exc})") from None
+    bad = nonfinite(result)
+    if bad is not None:
+        raise CaseFileError(f"{source}: {bad} is not a finite number: the values are too large "
+                            "or too small for double precision")
+    return result

@@ -1,0 +1,39 @@
+"""`flywheel duty-cycle`: a press, riveter or shear whose flywheel gives each operation's energy.
+
+Thin: load the case (:mod:`flywheel.cases.duty_cycle`), solve (:mod:`flywheel.duty_cycle.solve`),
+hand the result to :mod:`flywheel.render.duty_cycle`. Heavy imports live inside the function.
+"""
+from __future__ import annotations
+
+import sys
+from pathlib import Path
+
+import typer
+
+
+def duty_cycle_command(
+    case: Path = typer.Argument(..., help="Duty-cycle case file (TOML), see docs/duty-cycle.md."),
+    as_json: bool = typer.Option(False, "--json", help="Print the results as JSON."),
+    lang: str = typer.Option("en", "--lang", help="Language of the summary: en | ru."),
+) -> None:
+    """Duty-cycle machines (punching, riveting, shearing presses): the motor's power and torque,
+    the energy the flywheel gives, its J and mass, the speed at the end of the operation, the
+    time and angle to recover, the cycle."""
+    from flywheel.cli.guard import fail, guard
+
+    if lang not in ("en", "ru"):
+        fail(f"--lang: {lang!r} is not a language (allowed: en, ru)")
+    from flywheel.cases.duty_cycle import load_duty_case, solve_case
+
+    c = guard(load_duty_case, case)
+    result = guard(solve_case, c, str(case))
+    for w in result.warnings:
+        sys.stderr.write(f"warning: {w}\n")
+    if as_json:
+        from flywheel.render.duty_cycle import to_json
+
+        typer.echo(to_json(result, c.title, c.source))
+    else:
+        from flywheel.render.duty_cycle import print_summary
+
+        print_summary(result, c.title, c.source, lang=lang)

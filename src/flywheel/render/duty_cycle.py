@@ -1,0 +1,139 @@
+"""`flywheel duty-cycle` output: the JSON document and the rich summary.
+
+Renderers compute no physics: they format a :class:`flywheel.duty_cycle.solve.DutyCycleResult`
+(its ``to_document()``). Every label comes from :mod:`flywheel.render.nomenclature`; this module
+keeps only the sentence templates. rich is imported inside the function that prints; every text
+handed to rich goes through :func:`rich.markup.escape`.
+"""
+from __future__ import annotations
+
+import json
+
+from flywheel.render import nomenclature as nm
+
+L10N = {
+    "en": {
+        "operation": "Operation", "motor": "Motor", "speeds": "Speeds of the flywheel shaft",
+        "flywheel": "Flywheel", "timing": "Timing (the program converts time and angle at ω_m)",
+        "checks": "Checks (identities; residuals)", "quantity": "quantity", "symbol": "symbol",
+        "value": "value", "unit": "unit", "phase": "phase",
+        "no_radius": "the radius is not given: J, ω and angles are unknown (speeds at the radius)",
+        "shape": {"constant": "constant", "falling": "falling linearly to 0",
+                  "triangle": "triangle 0 → F_max → 0"},
+    },
+    "ru": {
+        "operation": "Операция", "motor": "Двигатель", "speeds": "Скорости вала маховика",
+        "flywheel": "Маховик", "timing": "Время и угол (программа переводит их при ω_ср)",
+        "checks": "Проверки (тождества; невязки)", "quantity": "величина", "symbol": "обозн.",
+        "value": "значение", "unit": "ед.", "phase": "этап",
+        "no_radius": "радиус не задан: J, ω и углы неизвестны (скорости на радиусе)",
+        "shape": {"constant": "постоянная", "falling": "линейно убывает до 0",
+                  "triangle": "треугольник 0 → F_max → 0"},
+    },
+}
+
+
+def to_dict(r, title: str = "", source: str = "") -> dict:
+    """The JSON document: ``title``, ``source`` and ``r.to_document()`` (SI units)."""
+    d: dict = {}
+    if title:
+        d["title"] = title
+    if source:
+        d["source"] = source
+    d.update(r.to_document())
+    return d
+
+
+def to_json(r, title: str = "", source: str = "") -> str:
+    """``to_dict`` as indented JSON text (byte-identical for the same input); a non-finite number
+    is a ValueError (JSON has no NaN or Infinity)."""
+    return json.dumps(to_dict(r, title, source), indent=2, ensure_ascii=False, allow_nan=False)
+
+
+def _g(x, digits: int = 6) -> str:
+    if x is None:
+        return "—"
+    if isinstance(x, str):
+        return x
+    return f"{0.0 if abs(x) < 1e-300 else x:.{digits}g}"
+
+
+def _rows(keys_values, lang: str) -> list[tuple[str, str, str, str]]:
+    """(name, symbol, value, unit) of each (nomenclature key, value) whose value is known."""
+    return [(nm.name(k, lang), nm.symbol(k, lang), _g(v), nm.unit_of(k, lang))
+            for k, v in keys_values if v is not None]
+
+
+def print_summary(r, title: str = "", source: str = "", lang: str = "en", console=None) -> None:
+    """The operation, motor, speeds, flywheel, timing and checks on a rich console."""
+    from rich.console import Console
+    from rich.markup import escape
+    from rich.table import Table
+
+    console = console or Console()
+    t = L10N[lang]
+    d = r.to_document()
+    if title:
+        console.print(f"[bold]{escape(title)}[/bold]" + (f"  ({escape(source)})" if source else ""))
+
+    def table(head: str, rows) -> None:
+        if not rows:
+            return
+        tab = Table(title=escape(head), title_justify="left")
+        for col, just in ((t["quantity"], "left"), (t["symbol"], "left"), (t["value"], "right"),
+                          (t["unit"], "left")):
+            tab.add_column(col, justify=just)
+        for row in rows:
+            tab.add_row(*(escape(x) for x in row))
+        console.print(tab)
+
+    w = d["work"] or {}
+    shape = w.get("shape")
+    table(t["operation"], _rows([
+        ("sheared_area", w.get("sheared_area")), ("energy_per_area", w.get("energy_per_area")),
+        ("force_max", w.get("force_max")), ("plate_thickness", w.get("thickness")),
+        ("energy_per_operation", d["energy"]), ("delta_E", d["delta_E"]),
+        ("energy_fluctuation_coefficient", d["energy_fluctuation_coefficient"]),
+        ("operation_moment", d["operation_moment"])], lang)
+        + ([(nm.name("force_shape", lang), nm.symbol("force_shape", lang),
+             t["shape"][shape], nm.unit_of("force_shape", lang))] if shape else []))
+    table(t["motor"], _rows([
+        ("motor_power", d["motor_power"]),
+        ("motor_efficiency", d["efficiency"] if d["efficiency"] != 1.0 else None),
+        ("motor_input_power", d["motor_input_power"] if d["efficiency"] != 1.0 else None),
+        ("motor_torque", d["motor_torque"]), ("mean_power", d["mean_power"]),
+        ("operations_per_hour", d["operations_per_hour"]),
+        ("operations_per_minute", d["operations_per_minute"]),
+        ("revolutions_per_operation", d["revolutions_per_operation"])], lang))
+    table(t["speeds"], _rows([
+        ("rpm_max", d["rpm_max"]), ("rpm_min", d["rpm_min"]), ("rpm_mean", d["rpm_mean"]),
+        ("omega_max", d["omega_max"]), ("omega_min", d["omega_min"]),
+        ("omega_mean", d["omega_mean"]),
+        ("rim_speed_max", d["rim_speed_max"]), ("rim_speed_min", d["rim_speed_min"]),
+        ("rim_speed_mean", d["rim_speed_mean"]), ("speed_fluctuation", d["delta"])], lang))
+    table(t["flywheel"], _rows([
+        ("flywheel_J", d["J"]), ("flywheel_radius", d["radius"]), ("flywheel_mass", d["mass"])],
+        lang))
+    if d["omega_max"] is None:
+        console.print(escape(t["no_radius"]))
+    if d["cycle_time"] is not None:
+        tab = Table(title=escape(t["timing"]), title_justify="left")
+        tab.add_column(t["phase"])
+        for k in ("phase_time", "phase_angle_deg"):
+            tab.add_column(escape(f"{nm.symbol(k, lang)}, {nm.unit_of(k, lang)}"), justify="right")
+        for k, time, angle in (("operation_time", d["operation_time"], d["operation_angle_deg"]),
+                               ("recovery_time", d["recovery_time"], d["recovery_angle_deg"]),
+                               ("idle_time", d["idle_time"], d["idle_angle_deg"]),
+                               ("cycle_phase", d["cycle_time"], d["cycle_angle_deg"])):
+            tab.add_row(escape(f"{nm.name(k, lang)} ({nm.symbol(k, lang)})"), _g(time), _g(angle))
+        console.print(tab)
+        console.print(escape(f"{nm.name('operation_share', lang)}: "
+                             f"{nm.symbol('operation_share', lang)} = {_g(d['operation_share'])}"))
+    if d["checks"]:
+        tab = Table(title=escape(t["checks"]), title_justify="left")
+        tab.add_column(t["quantity"])
+        tab.add_column(t["value"], justify="right")
+        tab.add_column(t["unit"])
+        for k, v in d["checks"].items():
+            tab.add_row(escape(nm.name(k, lang)), f"{v:.1e}", nm.unit_of(k, lang))
+        console.print(tab)
