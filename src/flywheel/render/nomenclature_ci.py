@@ -176,6 +176,34 @@ TERMS: dict[str, Term] = {
     "c_ij": T("c_ij", "N·m/rad", "stiffness coefficients c_ij", "коэффициенты жёсткости c_ij"),
     "matrix_j": T("", "", "j = {j}", "j = {j}"),
     "matrix_i": T("", "", "i = {i}", "i = {i}"),
+    "ag_equations_fixed": T("", "", "Equations: Σ_j a_ij·φ̈_j + Σ_j c_ij·φ_j = 0 in the rotors' "
+                                    "absolute angles (a shaft fixed to the frame: no rigid "
+                                    "rotation; a = M, c = K)",
+                            "Уравнения: Σ_j a_ij·φ̈_j + Σ_j c_ij·φ_j = 0 в абсолютных углах масс "
+                            "(вал заделан в стойку: вращения как твёрдого тела нет; a = M, c = K)"),
+    "ag_equations_tree": T("", "", "Equations (9.24): Σ_j a_ij·q̈_j + Σ_j c_ij·q_j = Q_i, "
+                                   "q1 = φ of the first rotor, q_(k+1) = φ_to − φ_from of shaft k",
+                           "Уравнения (9.24): Σ_j a_ij·q̈_j + Σ_j c_ij·q_j = Q_i, обобщённые "
+                           "координаты q1 = φ первой массы, q_(k+1) = φ_to − φ_from вала k"),
+    "frame": T("", "", "frame", "стойка"),
+    # -- aggregate: modes, nodes and shafts (shown with --modes) -------------------------------
+    "ag_mode_nodes": T("", "", "Modes: frequencies and nodes (points that stand still)",
+                       "Формы колебаний: частоты и узлы (неподвижные точки)"),
+    "rpm_col": T("n", "rpm", "n [vib/min]", "n [кол/мин]"),
+    "nodes": T("", "", "nodes", "узлы"),
+    "node_shaft": T("", "", "shaft {a}–{b}: {dist}{frac} % of its compliance from {a}",
+                    "вал {a}–{b}: {dist}{frac} % податливости от {a}"),
+    "node_dist": T("", "m", "{d} m from {a}, ", "{d} м от {a}, "),
+    "node_rotor": T("", "", "rotor {name} stands still", "масса {name} неподвижна"),
+    "node_frame": T("", "", "the fixed end {name}", "заделка {name}"),
+    "ag_shafts": T("", "", "Shafts: stiffness and equivalent length (uniform shaft of the first "
+                           "piece's diameter)",
+                   "Валы: жёсткость и приведённая длина (гладкий вал диаметра первого участка)"),
+    "gear_ratio": T("i", "", "gear i", "передача i"),
+    "c_input": T("c", "N·m/rad", "c (input side) [N·m/rad]", "c (со стороны входа) [Н·м/рад]"),
+    "length": T("L", "m", "length [m]", "длина [м]"),
+    "equivalent_length": T("L_eq", "m", "L_eq [m]", "L_прив [м]"),
+    "d_ref": T("d", "m", "at d [m]", "при d [м]"),
     # -- aggregate: natural frequencies, resonance -----------------------------------------------
     "ag_modes": T("", "", "Natural frequencies (K·x = ω²·M·x)",
                   "Собственные частоты (K·x = ω²·M·x)"),
