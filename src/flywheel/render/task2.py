@@ -61,10 +61,9 @@ def print_summary(r, title: str = "", source: str = "", console=None, lang: str 
         console.print(L("t2_balance", name=name, value=_g(val), work=_g(r.work_driving)))
     elif r.M_C is not None:
         console.print(L("t2_given", M_D=_g(r.M_D), M_C=_g(r.M_C)))
-    if r.power_found is not None:
+    if r.power_found is not None and r.power is not None:   # the mean power needs steady motion
         name = symbol("M_D" if r.power_found == "driving" else "M_C", lang)
-        console.print(L("t2_power", P=_g(r.power * 1.0 if r.power is not None else None),
-                        name=name, T=_g(r.power / r.omega_mean if r.power is not None else None)))
+        console.print(L("t2_power", P=_g(r.power), name=name, T=_g(r.power / r.omega_mean)))
     if not r.steady:
         console.print(L("t2_unsteady", work=f"{r.work_end:.6g}", omega_end=_g(r.omega_end, ".6f"),
                         omega0=_g(r.omega0, ".6f")))
