@@ -342,7 +342,7 @@ def _with(**changes):
     (dict(speed__omega0=-5.0), r"speed.omega0: must be positive"),
     (dict(speed__mean=3.0), r"speed: give exactly one of"),
     (dict(resistance__from_deg=300), r"resistance.from_deg: need 0 ≤ from_deg < to_deg"),
-    (dict(resistance__peak="balanse"), r'resistance.peak: must be a number or "balance"'),
+    (dict(resistance__peak="balanse"), r'resistance.peak: must be a number, "balance" or "power"'),
     (dict(resistance__kind="triangel"), r"resistance.kind: unknown kind 'triangel'; did you "
                                         r"mean 'triangle'\?"),
     (dict(resistance__peek=3.0), r"resistance.peek: unknown key; did you mean 'peak'\?"),

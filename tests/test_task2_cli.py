@@ -112,10 +112,20 @@ def test_plot_structure():
     finally:
         plt.close = orig
     axes = seen["fig"].axes
-    assert len(axes) == 3
+    assert len(axes) == 4                      # M, A, ω and ε beside ω (below it, same φ axis)
     labels = [line.get_label() for ax in axes for line in ax.get_lines()]
     assert "M_D (driving)" in labels and "M_C (resistance)" in labels and "ω(φ)" in labels
-    assert axes[2].get_xlabel() == "φ [deg]" and axes[2].get_ylabel() == "ω [rad/s]"
+    assert axes[2].get_ylabel() == "ω [rad/s]"
+    assert axes[3].get_xlabel() == "φ [deg]" and axes[3].get_ylabel() == "ε [rad/s²]"
+    # the ε curve is (M_D − M_C)/J: 15/12 outside the triangle, (15 − 60)/12 at its apex;
+    # its extremes are marked where the result puts them
+    eps = next(line for line in axes[3].get_lines() if line.get_label() == "ε(φ) = (M_D − M_C)/J")
+    x, y = eps.get_xdata(), eps.get_ydata()
+    assert max(y) == 15 / 12 and min(y) == (15 - 60) / 12 and y[list(x).index(180.0)] == -3.75
+    marks = {line.get_label(): (line.get_xdata()[0], line.get_ydata()[0])
+             for line in axes[3].get_lines() if line.get_label().startswith("ε_m")}
+    assert marks == {"ε_max = 1.25 rad/s² at 0°": (0.0, 1.25),
+                     "ε_min = -3.75 rad/s² at 180°": (180.0, -3.75)}
 
 
 def _case(tmp_path, text):
@@ -409,7 +419,9 @@ def test_lang_ru_plot_labels(tmp_path):
     axes = seen["fig"].axes
     labels = [line.get_label() for ax in axes for line in ax.get_lines()]
     assert "M_Д (движущий)" in labels and "M_С (сопротивления)" in labels
-    assert axes[2].get_xlabel() == "φ [град]" and axes[2].get_ylabel() == "ω [рад/с]"
+    assert "ε(φ) = (M_Д − M_С)/J_пр" in labels
+    assert axes[2].get_ylabel() == "ω [рад/с]"
+    assert axes[3].get_xlabel() == "φ [град]" and axes[3].get_ylabel() == "ε [рад/с²]"
     res = run("--lang", "ru", "--plot", tmp_path / "cli.png")
     assert res.exit_code == 0 and "график записан в" in res.stdout
     assert (tmp_path / "cli.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"

@@ -7,7 +7,10 @@ Two shapes, one per file:
 * a chain of rotors: ``[[rotors]]`` and ``[[shafts]]`` (N rotors, N − 1 shafts, each shaft an
   elastic element given by c or by G, d, L — stepped shafts as segments — with an optional gear
   pair of ratio i = ω_out/ω_in), optionally driven: ``[motor]`` on the first rotor (without J)
-  and ``[load]`` on the last.
+  and ``[load]`` on the last. A rotor with ``fixed = true`` is the frame: a shaft end built in
+  (a boundary condition). Shafts with ``between = ["A", "B"]`` join any two rotors, so one gear
+  may drive two shafts (a branched system, a tree). Fixed or branched systems give their
+  natural frequencies, mode shapes and nodes; a motor drives a free unbranched chain only.
 
 SI units; speeds in rev/min where the key says ``_rpm``. Every problem becomes one
 :class:`~flywheel.errors.CaseFileError` line: ``file: field.path: what is wrong (what is allowed)``.
@@ -57,8 +60,11 @@ class Segment(StrictModel):
 
 class Shaft(StrictModel):
     """An elastic connection: one piece (c, or G with d and L) or segments in series, an optional
-    gear pair, an optional viscous damping."""
+    gear pair, an optional viscous damping; in a chain, the rotors it joins."""
 
+    between: list[str] | None = Field(None, description="the names of the two rotors it joins, "
+                                                        "input side first (default: rotors k and "
+                                                        "k + 1)")
     c: Pos | None = Field(None, description="torsional stiffness [N·m/rad]")
     G: Pos | None = Field(None, description="shear modulus [Pa]")
     d: Pos | None = Field(None, description="diameter [m]")
@@ -95,7 +101,8 @@ class Machine(StrictModel):
 
 class Rotor(StrictModel):
     name: str | None = None
-    J: Pos = Field(description="moment of inertia [kg·m²]")
+    J: Pos | None = Field(None, description="moment of inertia [kg·m²] (not for a fixed end)")
+    fixed: bool = Field(False, description="true: the frame, a shaft end built in (no J)")
 
 
 class Load(StrictModel):
@@ -140,6 +147,14 @@ def _describe(err: dict) -> str:
 
 def _stiffness(s: Shaft, where: str) -> tuple[float, float]:
     """(stiffness reduced to the shaft's input speed, gear ratio)."""
+    c, i, _ = _stiffness_pieces(s, where)
+    return c, i
+
+
+def _stiffness_pieces(s: Shaft, where: str) -> tuple[float, float, list]:
+    """(stiffness reduced to the shaft's input speed, gear ratio, pieces): each piece
+    (its stiffness at the input speed, length or None, diameter or None, G or None), the pieces
+    before the gear pair ("in") first, then those after it ("out")."""
     from flywheel.elastic.chain import series_stiffness, shaft_stiffness
 
     direct = [k for k in ("c", "d", "L") if getattr(s, k) is not None]
@@ -150,12 +165,14 @@ def _stiffness(s: Shaft, where: str) -> tuple[float, float]:
     if not pieces:
         raise FieldError(f"{where}.segments", "needs at least one segment")
     cs = []
+    info = []
     for k, p in enumerate(pieces):
         at = f"{where}.segments[{k}]" if s.segments is not None else where
         if p.c is not None:
             if p.d is not None or p.L is not None:
                 raise FieldError(f"{at}.c", "give c, or d and L (with G), not both")
             c = p.c
+            G = None
         else:
             if p.d is None or p.L is None:
                 missing = "d" if p.d is None else "L"
@@ -167,7 +184,19 @@ def _stiffness(s: Shaft, where: str) -> tuple[float, float]:
             c = shaft_stiffness(G, p.d, p.L)
         u = s.i if p.side == "out" else 1.0   # speed of the piece over the input speed
         cs.append(c * u * u)
-    return series_stiffness(cs), s.i
+        info.append((p.side == "out", c * u * u, p.L, p.d, G))
+    info.sort(key=lambda x: x[0])             # stable: "in" pieces first, in order
+    return series_stiffness(cs), s.i, [x[1:] for x in info]
+
+
+def _line(s: Shaft, where: str, index: int, ends: tuple[int, int], names: tuple[str, str]):
+    """The shaft as a :class:`~flywheel.elastic.chain.ShaftLine` (nodes, equivalent length)."""
+    from flywheel.elastic.chain import ShaftLine
+
+    c, i, pieces = _stiffness_pieces(s, where)
+    ref = next(((d, G) for _, _, d, G in pieces if d is not None), (None, None))
+    return ShaftLine(index, ends, names, tuple(1.0 / ck for ck, *_ in pieces),
+                     tuple(L for _, L, _, _ in pieces), c, i, ref[0], ref[1])
 
 
 def _motor(m: Motor, M0: float, forcing_ratio: float, amplitude: float, chain_form: bool):
@@ -247,10 +276,19 @@ def build(case: AggregateCase):
         if case.coupling.i != 1.0:
             raise FieldError("coupling.i", "the coupling joins the motor to shaft I: no gear pair "
                                      "(the machine's gears are i21, i31)")
+        if case.coupling.between is not None:
+            raise FieldError("coupling.between", "the coupling joins the motor to the machine: "
+                                                 "between is for the shafts of a chain")
+        names = ("motor J_Д", "machine J_пр.I")
         ch = chain([case.motor.J, J_I], [c], [case.coupling.damping], [1.0, m.i31],
-                   ["motor J_Д", "machine J_пр.I"])
+                   list(names), lines=[_line(case.coupling, "coupling", 0, (0, 1), names)])
         drive = _motor(case.motor, m.M0 * m.i31, m.i31 * m.order, m.M_amplitude * m.i31, False)
         return ch, drive
+    frames = [k for k, r in enumerate(case.rotors or []) if r.fixed]
+    if frames and not case.shafts:
+        raise FieldError("shafts", f"missing: the fixed end rotors[{frames[0]}] holds a rotor "
+                                   "through a shaft to the frame; give [[shafts]] (N rotors need "
+                                   "N − 1 shafts)")
     if case.rotors is None or case.shafts is None:
         raise FieldError("rotors" if case.rotors is None else "shafts",
                    "missing: give the two-mass aggregate ([motor], [coupling], [machine]) or a "
@@ -260,27 +298,129 @@ def build(case: AggregateCase):
     if len(case.shafts) != len(case.rotors) - 1:
         raise FieldError("shafts", f"{len(case.rotors)} rotors need {len(case.rotors) - 1} shafts "
                              f"between them (got {len(case.shafts)})")
-    u = 1.0
-    J, cs, bs, us, names = [], [], [], [], []
     for k, r in enumerate(case.rotors):
-        J.append(r.J * u * u)
-        us.append(u)
-        names.append(r.name or str(k + 1))
-        if k < len(case.shafts):
-            c_in, i = _stiffness(case.shafts[k], f"shafts[{k}]")
-            cs.append(c_in * u * u)
-            bs.append(case.shafts[k].damping * u * u)
-            u *= i
+        if r.fixed and r.J is not None:
+            raise FieldError(f"rotors[{k}].J", "a fixed end (fixed = true) is the frame: it has no "
+                                               "moment of inertia")
+        if not r.fixed and r.J is None:
+            raise FieldError(f"rotors[{k}].J", "missing required field (moment of inertia "
+                                               "[kg·m²]; or fixed = true for the frame)")
+    names = [r.name or str(k + 1) for k, r in enumerate(case.rotors)]
     if len(set(names)) != len(names):
         raise FieldError("rotors", "rotor names must differ")
-    ch = chain(J, cs, bs, us, names)
+    given = [k for k, sh in enumerate(case.shafts) if sh.between is not None]
+    if frames or given:
+        ch = _tree(case, names, frames, given)
+    else:
+        u = 1.0
+        J, cs, bs, us, lines = [], [], [], [], []
+        for k, r in enumerate(case.rotors):
+            J.append(r.J * u * u)
+            us.append(u)
+            if k < len(case.shafts):
+                c_in, i = _stiffness(case.shafts[k], f"shafts[{k}]")
+                cs.append(c_in * u * u)
+                bs.append(case.shafts[k].damping * u * u)
+                lines.append(_line(case.shafts[k], f"shafts[{k}]", k, (k, k + 1),
+                                   (names[k], names[k + 1])))
+                u *= i
+        ch = chain(J, cs, bs, us, names, lines=lines)
     if case.load is not None and case.motor is None:
         raise FieldError("motor", "missing: a [load] needs a [motor] on the first rotor")
     if case.motor is None:
         return ch, None
+    if not ch.is_line:
+        what = ("a shaft fixed to the frame cannot turn continuously" if ch.fixed else
+                "the forced vibration and the start-up are computed for an unbranched chain")
+        raise FieldError("motor", f"{what}: a [motor] (and a [load]) need a free, unbranched "
+                                  "chain; this system gives its natural frequencies and modes only")
+    u = float(ch.ratio[-1])
     ld = case.load or Load()
     drive = _motor(case.motor, ld.M0 * u, u * ld.order, ld.M_amplitude * u, True)
     return ch, drive
+
+
+def _tree(case: AggregateCase, names: list[str], frames: list[int], given: list[int]):
+    """The Chain of a branched system or one with fixed ends: rotors joined by shafts
+    ``between`` two names (default: consecutive), forming a tree whose fixed ends (the frame)
+    are leaves. Speed ratios spread from the first free rotor along the shafts (u_to = u_from·i);
+    every J and c is reduced to it by u²; a shaft to the frame becomes the stiffness of its
+    rotor to the ground."""
+    from flywheel.elastic.chain import chain
+
+    n = len(case.rotors)
+    if given and len(given) != len(case.shafts):
+        k = next(k for k in range(len(case.shafts)) if k not in given)
+        raise FieldError(f"shafts[{k}].between", "missing: give between for every shaft or for "
+                                                 "none (then shaft k joins rotors k and k + 1)")
+    ends = []
+    for k, sh in enumerate(case.shafts):
+        if sh.between is None:
+            ends.append((k, k + 1))
+            continue
+        if len(sh.between) != 2:
+            raise FieldError(f"shafts[{k}].between", f"needs two rotor names, input side first "
+                                                     f"(got {len(sh.between)})")
+        idx = []
+        for name in sh.between:
+            if name not in names:
+                raise FieldError(f"shafts[{k}].between", f"unknown rotor {name!r} (rotors: "
+                                                         f"{', '.join(names)})")
+            idx.append(names.index(name))
+        if idx[0] == idx[1]:
+            raise FieldError(f"shafts[{k}].between", f"joins rotor {names[idx[0]]!r} to itself")
+        ends.append((idx[0], idx[1]))
+    adj: dict[int, list[tuple[int, int]]] = {r: [] for r in range(n)}
+    for k, (a, b) in enumerate(ends):
+        adj[a].append((b, k))
+        adj[b].append((a, k))
+    for f in frames:
+        if len(adj[f]) != 1:
+            raise FieldError(f"rotors[{f}]", f"a fixed end is an end of the system: one shaft to "
+                                             f"it (got {len(adj[f])})")
+    free = [r for r in range(n) if r not in frames]
+    if not free:
+        raise FieldError("rotors", "every rotor is fixed: at least one must turn")
+    # speed ratios from the first free rotor, through the tree (frames are leaves)
+    u: dict[int, float] = {free[0]: 1.0}
+    todo = [free[0]]
+    while todo:
+        r = todo.pop()
+        for nxt, k in adj[r]:
+            if nxt in u:
+                continue
+            i = case.shafts[k].i
+            u[nxt] = u[r] * i if ends[k][0] == r else u[r] / i
+            if nxt not in frames:
+                todo.append(nxt)
+    missing = [r for r in range(n) if r not in u]
+    if missing:
+        raise FieldError("shafts", f"the rotors and shafts must form one connected system "
+                                   f"without loops: {names[missing[0]]!r} is not joined to "
+                                   f"{names[free[0]]!r}")
+    pos = {r: j for j, r in enumerate(free)}
+    J = [case.rotors[r].J * u[r] ** 2 for r in free]
+    cs, bs, pairs, lines = [], [], [], []
+    ground = [0.0] * len(free)
+    for k, (a, b) in enumerate(ends):
+        where = f"shafts[{k}]"
+        c_in, _ = _stiffness(case.shafts[k], where)
+        c_red, b_red = c_in * u[a] ** 2, case.shafts[k].damping * u[a] ** 2
+        lines.append(_line(case.shafts[k], where, k, (pos.get(a, -1), pos.get(b, -1)),
+                           (names[a], names[b])))
+        if a in frames or b in frames:
+            if case.shafts[k].damping:
+                raise FieldError(f"{where}.damping", "a shaft to the frame: its damping is not "
+                                                     "modelled (natural frequencies only)")
+            ground[pos[b if a in frames else a]] += c_red
+            continue
+        cs.append(c_red)
+        bs.append(b_red)
+        pairs.append((pos[a], pos[b]))
+    line = not frames and all(p == (j, j + 1) for j, p in enumerate(pairs))
+    return chain(J, cs, bs, [u[r] for r in free], [names[r] for r in free],
+                 ends=None if line else pairs, ground=ground if frames else None, lines=lines,
+                 frames=[names[f] for f in frames])
 
 
 # -- loading --------------------------------------------------------------------------------------

@@ -3,7 +3,9 @@
 A case gives the cycle, the speed, the flywheel, and either two moment graphs (``[driving]``
 and ``[resistance]``) or a turning-moment diagram by its areas (``[diagram]``). Angles are in
 degrees in the file and radians inside; moments in N·m; J in kg·m². One value of one graph may
-be the string ``"balance"``: the unknown found from the cycle balance.
+be the string ``"balance"``: the unknown found from the cycle balance; one value may be
+``"power"``: found from the mean power ``power`` [W] at the mean speed (T_mean = P/ω_ср).
+``at_deg`` lists angles where ω, ε and t are reported.
 
 Every problem becomes one :class:`~flywheel.errors.CaseFileError` line:
 ``file: field.path: what is wrong (what is allowed)``.
@@ -17,19 +19,22 @@ from typing import Annotated, ClassVar, Literal, Union
 from pydantic import Field, Strict, field_validator
 
 from flywheel.constant_inertia import graphs
-from flywheel.constant_inertia.solve import BALANCE_RTOL, Task2Result, balance, solve, solve_areas
+from flywheel.constant_inertia.solve import (BALANCE_RTOL, Task2Result, balance, power_value, solve,
+                                            solve_areas)
 from flywheel.errors import CaseFileError, InputError
 from flywheel.io.schema import FieldError, StrictModel, load, validate, clean_loc, describe, loc_str, pick
 
 BALANCE = "balance"
+POWER = "power"
 
 
 
 
 def _amount(v):
-    """A number, or the string "balance" (the unknown of the cycle balance)."""
-    if isinstance(v, str) and v != BALANCE:
-        raise ValueError(f'must be a number or "balance" (got {v!r})')
+    """A number, or the string "balance" (the unknown of the cycle balance) or "power" (the
+    unknown of the mean power)."""
+    if isinstance(v, str) and v not in (BALANCE, POWER):
+        raise ValueError(f'must be a number, "balance" or "power" (got {v!r})')
     return v
 
 
@@ -45,8 +50,16 @@ class _Graph(StrictModel):
         return _amount(v)
 
     def unknown_field(self) -> str | None:
+        """The field that is "balance", if any."""
         for name in self._AMOUNTS:
             if getattr(self, name) == BALANCE:
+                return name
+        return None
+
+    def power_field(self) -> str | None:
+        """The field that is "power", if any."""
+        for name in self._AMOUNTS:
+            if getattr(self, name) == POWER:
                 return name
         return None
 
@@ -56,7 +69,7 @@ class ConstantGraph(_Graph):
 
     _AMOUNTS: ClassVar[tuple[str, ...]] = ("value",)
     kind: Literal["constant"]
-    value: Amount = Field(description='the moment [N·m], or "balance"')
+    value: Amount = Field(description='the moment [N·m], or "balance" or "power"')
 
 
 class PointsGraph(_Graph):
@@ -67,7 +80,8 @@ class PointsGraph(_Graph):
     points: list[Annotated[tuple[float, float], Strict(False)]] = Field(
         description="[[φ (deg), M (N·m)], …] from 0 to cycle_deg, angles never decreasing; "
                     "a repeated angle is a jump")
-    scale: Amount = Field(1.0, description='multiplier of every ordinate, or "balance"')
+    scale: Amount = Field(1.0, description='multiplier of every ordinate, or "balance" or '
+                                           '"power"')
 
 
 class TriangleGraph(_Graph):
@@ -78,7 +92,7 @@ class TriangleGraph(_Graph):
     from_deg: float = Field(description="start of the triangle [deg]")
     to_deg: float = Field(description="end of the triangle [deg]")
     apex_deg: float | None = Field(None, description="angle of the peak [deg]; default middle")
-    peak: Amount = Field(description='the peak [N·m], or "balance"')
+    peak: Amount = Field(description='the peak [N·m], or "balance" or "power"')
     base: float = Field(0.0, description="the level outside the triangle [N·m]")
 
 
@@ -89,7 +103,7 @@ class RectangleGraph(_Graph):
     kind: Literal["rectangle"]
     from_deg: float = Field(description="start [deg]")
     to_deg: float = Field(description="end [deg]")
-    peak: Amount = Field(description='the height [N·m], or "balance"')
+    peak: Amount = Field(description='the height [N·m], or "balance" or "power"')
     base: float = Field(0.0, description="the level outside [N·m]")
 
 
@@ -102,7 +116,7 @@ class TrapezoidGraph(_Graph):
     top_from_deg: float = Field(description="start of the top [deg]")
     top_to_deg: float = Field(description="end of the top [deg]")
     to_deg: float = Field(description="end of the fall [deg]")
-    peak: Amount = Field(description='the top [N·m], or "balance"')
+    peak: Amount = Field(description='the top [N·m], or "balance" or "power"')
     base: float = Field(0.0, description="the level outside [N·m]")
 
 
@@ -111,7 +125,7 @@ class HarmonicGraph(_Graph):
 
     _AMOUNTS: ClassVar[tuple[str, ...]] = ("a0",)
     kind: Literal["harmonic"]
-    a0: Amount = Field(0.0, description='the mean term [N·m], or "balance"')
+    a0: Amount = Field(0.0, description='the mean term [N·m], or "balance" or "power"')
     a: list[float] = Field(default_factory=list, description="sine amplitudes a_k [N·m]")
     b: list[float] = Field(default_factory=list, description="cosine amplitudes b_k [N·m]")
     orders: list[float] | None = Field(
@@ -124,12 +138,17 @@ Graph = Annotated[Union[tuple(KINDS.values())], Field(discriminator="kind")]
 
 
 class Speed(StrictModel):
-    """Exactly one of the four."""
+    """Exactly one of the four, or the limits max with min (max_rpm with min_rpm)."""
 
     omega0: float | None = Field(None, description="ω at φ = 0 [rad/s]")
     omega0_rpm: float | None = Field(None, description="speed at φ = 0 [rev/min]")
     mean: float | None = Field(None, description="mean speed ω_ср [rad/s]")
     mean_rpm: float | None = Field(None, description="mean speed [rev/min]")
+    max: float | None = Field(None, description="the largest speed allowed [rad/s] (with min): "
+                                                "ω_ср = (max + min)/2, δ = (max − min)/ω_ср")
+    min: float | None = Field(None, description="the smallest speed allowed [rad/s] (with max)")
+    max_rpm: float | None = Field(None, description="the largest speed allowed [rev/min]")
+    min_rpm: float | None = Field(None, description="the smallest speed allowed [rev/min]")
 
 
 class Flywheel(StrictModel):
@@ -137,7 +156,8 @@ class Flywheel(StrictModel):
 
     J: float | None = Field(None, description="reduced moment of inertia [kg·m²]")
     mass: float | None = Field(None, description="mass of the rotating parts [kg]")
-    radius_of_gyration: float | None = Field(None, description="k: J = m·k² [m]")
+    radius_of_gyration: float | None = Field(
+        None, description="k [m]: with mass, J = m·k²; without it, the mass m = J/k² is reported")
     delta: float | None = Field(None, description="asked δ = (ω_max − ω_min)/ω_ср")
     fluctuation_percent: float | None = Field(
         None, description="asked '±x % of the mean speed': δ = 2x/100")
@@ -153,6 +173,13 @@ class Diagram(StrictModel):
     energies: list[float] | None = Field(None, description="signed energies instead [J]")
     crossings_deg: list[float] | None = Field(
         None, description="angles of the crossings, one more than the areas [deg]")
+    delta_E: float | None = Field(None, description="the maximum fluctuation of energy ΔE "
+                                                    "itself [J] (the diagram [ΔE, −ΔE])")
+    energy_fluctuation_coefficient: float | None = Field(
+        None, description="C_E = ΔE / work done per cycle, with work_per_cycle or the top-level "
+                          "power")
+    work_per_cycle: float | None = Field(None, description="work done per cycle [J] (with "
+                                                           "energy_fluctuation_coefficient)")
 
 
 class Task2Case(StrictModel):
@@ -162,6 +189,11 @@ class Task2Case(StrictModel):
     source: str = Field("", description="where it comes from (book, problem)")
     notes: str = Field("", description="anything else")
     cycle_deg: float = Field(360.0, description="length of the cycle [deg]: 360, 720, 1080 …")
+    power: float | None = Field(None, description="mean power [W]: a graph value \"power\" is "
+                                                  "found from T_mean = P/ω_ср; with [diagram] "
+                                                  "energy_fluctuation_coefficient, W = P·Φ/ω_ср")
+    at_deg: list[float] = Field(default_factory=list,
+                                description="angles [deg] where ω, ε and t are reported")
     speed: Speed
     flywheel: Flywheel
     driving: Graph | None = None
@@ -170,6 +202,7 @@ class Task2Case(StrictModel):
 
 
 TOP = {"speed": Speed, "flywheel": Flywheel, "diagram": Diagram}
+SINGLE_SPEEDS = ("omega0", "omega0_rpm", "mean", "mean_rpm")
 
 
 # -- errors ---------------------------------------------------------------------------------------
@@ -217,30 +250,74 @@ def _check(case: Task2Case) -> None:
     if not case.cycle_deg > 0:
         raise FieldError("cycle_deg", f"must be positive (got {case.cycle_deg:g}°)")
     s = case.speed
-    given = [k for k in ("omega0", "omega0_rpm", "mean", "mean_rpm") if getattr(s, k) is not None]
-    if len(given) != 1:
-        raise FieldError("speed", "give exactly one of omega0, omega0_rpm, mean, mean_rpm"
-                   + (f" (got {', '.join(given)})" if given else ""))
-    _pos(f"speed.{given[0]}", getattr(s, given[0]), "rad/s" if "rpm" not in given[0] else "rpm")
+    given = [k for k in ("omega0", "omega0_rpm", "mean", "mean_rpm", "max", "min", "max_rpm",
+                         "min_rpm") if getattr(s, k) is not None]
+    pairs = {("max", "min"), ("max_rpm", "min_rpm")}
+    if not (len(given) == 1 and given[0] in SINGLE_SPEEDS or tuple(given) in pairs):
+        if len(given) == 1 and given[0] not in SINGLE_SPEEDS:
+            other = {"max": "min", "min": "max", "max_rpm": "min_rpm",
+                     "min_rpm": "max_rpm"}[given[0]]
+            raise FieldError(f"speed.{other}", f"missing: speed limits come in pairs "
+                                               f"({given[0]} with {other})")
+        raise FieldError("speed", "give exactly one of omega0, omega0_rpm, mean, mean_rpm, or the "
+                                  "limits max and min (or max_rpm and min_rpm)"
+                         + (f" (got {', '.join(given)})" if given else ""))
+    for k in given:
+        _pos(f"speed.{k}", getattr(s, k), "rad/s" if "rpm" not in k else "rpm")
+    if len(given) == 2 and not getattr(s, given[1]) < getattr(s, given[0]):
+        unit = "rpm" if "rpm" in given[0] else "rad/s"
+        raise FieldError(f"speed.{given[1]}", f"must be below {given[0]} "
+                         f"(got {getattr(s, given[1]):g} {unit} against "
+                         f"{getattr(s, given[0]):g} {unit})")
     f = case.flywheel
     for name, unit in (("J", "kg·m²"), ("mass", "kg"), ("radius_of_gyration", "m"),
                        ("rim_radius", "m"), ("fluctuation_percent", "%")):
         _pos(f"flywheel.{name}", getattr(f, name), unit)
     if f.delta is not None and not 0 < f.delta < 2:
         raise FieldError("flywheel.delta", f"must lie between 0 and 2 (got {f.delta:g})")
-    if f.J is not None and (f.mass is not None or f.radius_of_gyration is not None):
+    if f.J is not None and f.mass is not None:
         raise FieldError("flywheel", "give J or mass with radius_of_gyration, not both")
-    if (f.mass is None) != (f.radius_of_gyration is None):
+    if f.mass is not None and f.radius_of_gyration is None:
         raise FieldError("flywheel", "mass and radius_of_gyration go together (J = m·k²)")
     if f.delta is not None and f.fluctuation_percent is not None:
         raise FieldError("flywheel", "give delta or fluctuation_percent, not both")
-    if f.J is None and f.mass is None and f.delta is None and f.fluctuation_percent is None:
+    limits = len(given) == 2
+    if limits and (f.delta is not None or f.fluctuation_percent is not None):
+        which = "delta" if f.delta is not None else "fluctuation_percent"
+        raise FieldError(f"flywheel.{which}", "the speed limits already give δ = (max − min)/ω_ср: "
+                                              "give one or the other")
+    if f.J is None and f.mass is None and f.delta is None and f.fluctuation_percent is None \
+            and not limits:
         raise FieldError("flywheel", "give J, or mass and radius_of_gyration, or the asked delta "
-                   "(or fluctuation_percent)")
+                   "(or fluctuation_percent, or the speed limits)")
+    if case.power is not None:
+        _pos("power", case.power, "W")
+    mean_known = given[0] in ("mean", "mean_rpm") or limits
+    for i, x in enumerate(case.at_deg):
+        if not 0 <= x <= case.cycle_deg:
+            raise FieldError(f"at_deg[{i}]", f"must lie within the cycle 0…{case.cycle_deg:g}° "
+                                             f"(got {x:g})")
     if case.diagram is not None:
         if case.driving is not None or case.resistance is not None:
             raise FieldError("diagram", "give either [diagram] or [driving] and [resistance], not both")
+        if case.at_deg:
+            raise FieldError("at_deg", "a diagram given by areas has no moments between its "
+                                       "crossings: ε, ω and t at an angle need [driving] and "
+                                       "[resistance] graphs")
         _check_diagram(case.diagram, case.cycle_deg)
+        d = case.diagram
+        uses_power = d.energy_fluctuation_coefficient is not None and d.work_per_cycle is None
+        if uses_power and case.power is None:
+            raise FieldError("diagram.energy_fluctuation_coefficient",
+                             "needs the work done per cycle: give diagram.work_per_cycle [J], or "
+                             "the mean power (top-level power [W]) with a mean speed")
+        if uses_power and not mean_known:
+            raise FieldError("power", "the work per cycle P·Φ/ω_ср needs the mean speed: give "
+                                      "speed.mean, mean_rpm or the limits max/min")
+        if case.power is not None and not uses_power:
+            raise FieldError("power", "is used by a graph value \"power\" or by "
+                                      "[diagram] energy_fluctuation_coefficient without "
+                                      "work_per_cycle; nothing here uses it")
         return
     for name in ("driving", "resistance"):
         if getattr(case, name) is None:
@@ -252,6 +329,23 @@ def _check(case: Task2Case) -> None:
         raise FieldError(f"{unknowns[1][0]}.{unknowns[1][1]}",
                    '"balance" may stand for one value only (the other is '
                    f"{unknowns[0][0]}.{unknowns[0][1]})")
+    powered = [(n, g.power_field()) for n, g in (("driving", case.driving),
+                                                 ("resistance", case.resistance))
+               if g.power_field()]
+    if len(powered) > 1:
+        raise FieldError(f"{powered[1][0]}.{powered[1][1]}",
+                         '"power" may stand for one value only (the other is '
+                         f"{powered[0][0]}.{powered[0][1]})")
+    if powered and case.power is None:
+        raise FieldError(f"{powered[0][0]}.{powered[0][1]}",
+                         '"power" needs the mean power: give the top-level power [W]')
+    if powered and not mean_known:
+        raise FieldError(f"{powered[0][0]}.{powered[0][1]}",
+                         '"power" (T_mean = P/ω_ср) needs the mean speed: give speed.mean, '
+                         "mean_rpm or the limits max/min")
+    if case.power is not None and not powered:
+        raise FieldError("power", 'is used by a graph value "power" (T_mean = P/ω_ср); no graph '
+                                  "value is \"power\"")
     for name in ("driving", "resistance"):
         _check_graph(name, getattr(case, name), case.cycle_deg)
 
@@ -291,8 +385,23 @@ def _check_graph(name: str, g, cycle: float) -> None:
 
 
 def _check_diagram(d: Diagram, cycle: float) -> None:
-    if (d.areas is None) == (d.energies is None):
-        raise FieldError("diagram", "give areas (with moment_scale and angle_scale_deg) or energies")
+    forms = [k for k in ("areas", "energies", "delta_E", "energy_fluctuation_coefficient")
+             if getattr(d, k) is not None]
+    if len(forms) != 1:
+        raise FieldError("diagram", "give one of areas (with moment_scale and angle_scale_deg), "
+                                    "energies, delta_E, or energy_fluctuation_coefficient"
+                         + (f" (got {', '.join(forms)})" if forms else ""))
+    if d.work_per_cycle is not None and forms[0] != "energy_fluctuation_coefficient":
+        raise FieldError("diagram.work_per_cycle", "only with energy_fluctuation_coefficient")
+    if forms[0] in ("delta_E", "energy_fluctuation_coefficient"):
+        for k in ("delta_E", "energy_fluctuation_coefficient", "work_per_cycle"):
+            _pos(f"diagram.{k}", getattr(d, k), "J" if k != "energy_fluctuation_coefficient"
+                 else "")
+        for k in ("crossings_deg", "moment_scale", "angle_scale_deg"):
+            if getattr(d, k) is not None:
+                raise FieldError(f"diagram.{k}", f"only with areas or energies (not with "
+                                                 f"{forms[0]})")
+        return
     vals, key = (d.areas, "areas") if d.areas is not None else (d.energies, "energies")
     if d.areas is not None:
         for k in ("moment_scale", "angle_scale_deg"):
@@ -329,12 +438,16 @@ def load_task2_case(path) -> Task2Case:
     return load(path, parse_task2_case)
 
 
-def _maker(g, cycle: float):
-    """x ↦ Moment, with x standing for the graph's "balance" value (if any)."""
+def _maker(g, cycle: float, fixed: dict | None = None):
+    """x ↦ Moment, with x standing for the graph's "balance" or "power" value (if any);
+    ``fixed`` maps a marker already found ("power") to its value."""
     r = math.radians
+    fixed = fixed or {}
 
     def num(v, x):
-        return x if v == BALANCE else float(v)
+        if isinstance(v, str):
+            return fixed.get(v, x)
+        return float(v)
 
     if isinstance(g, ConstantGraph):
         return lambda x: graphs.constant(num(g.value, x), cycle)
@@ -364,29 +477,67 @@ def _speeds(case: Task2Case) -> dict:
         return {"omega0": s.omega0_rpm * rpm}
     if s.mean is not None:
         return {"omega_mean": s.mean}
-    return {"omega_mean": s.mean_rpm * rpm}
+    if s.mean_rpm is not None:
+        return {"omega_mean": s.mean_rpm * rpm}
+    hi, lo = (s.max, s.min) if s.max is not None else (s.max_rpm * rpm, s.min_rpm * rpm)
+    return {"omega_mean": 0.5 * (hi + lo)}
 
 
-def solve_case(case: Task2Case, source: str = "<case>") -> Task2Result:
-    """Solve a validated case; a physical impossibility becomes one CaseFileError line."""
+def speed_limits_delta(case: Task2Case) -> float | None:
+    """δ = (ω_max − ω_min)/ω_ср of the speed limits (rev/min cancel), None without limits
+    (Khurmi & Gupta §16.6: C_s = (N1 − N2)/N, N = (N1 + N2)/2)."""
+    s = case.speed
+    if s.max is not None:
+        hi, lo = s.max, s.min
+    elif s.max_rpm is not None:
+        hi, lo = s.max_rpm, s.min_rpm
+    else:
+        return None
+    return (hi - lo) / (0.5 * (hi + lo))
+
+
+def solve_case(case: Task2Case, source: str = "<case>", at_deg=()) -> Task2Result:
+    """Solve a validated case; a physical impossibility becomes one CaseFileError line.
+    ``at_deg``: angles [deg] asked besides the case's own ``at_deg``."""
     f = case.flywheel
     J = f.J if f.J is not None else (f.mass * f.radius_of_gyration ** 2 if f.mass else None)
     delta = f.delta if f.delta is not None else (
-        2 * f.fluctuation_percent / 100 if f.fluctuation_percent is not None else None)
+        2 * f.fluctuation_percent / 100 if f.fluctuation_percent is not None
+        else speed_limits_delta(case))
+    k_gyr = f.radius_of_gyration if f.mass is None else None
     cycle = math.radians(case.cycle_deg)
-    kw = dict(delta=delta, rim_radius=f.rim_radius, **_speeds(case))
+    speeds = _speeds(case)
+    kw = dict(delta=delta, rim_radius=f.rim_radius, radius_of_gyration=k_gyr, **speeds)
+    at = [math.radians(x) for x in (*case.at_deg, *at_deg)]
     field = "flywheel"
     try:
         if case.diagram is not None:
             d = case.diagram
+            work = None
             if d.areas is not None:
                 k = d.moment_scale * math.radians(d.angle_scale_deg)   # J per mm²
                 energies = [a * k for a in d.areas]
-            else:
+            elif d.energies is not None:
                 energies = list(d.energies)
-            at = None if d.crossings_deg is None else [math.radians(c) for c in d.crossings_deg]
-            return solve_areas(energies, J, cycle=cycle, crossings_at=at, **kw)
-        make_D, make_C = _maker(case.driving, cycle), _maker(case.resistance, cycle)
+            elif d.delta_E is not None:
+                energies = [d.delta_E, -d.delta_E]
+            else:   # ΔE = C_E·W, W = work per cycle or P·Φ/ω_ср (Khurmi & Gupta §16.4)
+                work = (d.work_per_cycle if d.work_per_cycle is not None
+                        else case.power * cycle / speeds["omega_mean"])
+                energies = [d.energy_fluctuation_coefficient * work,
+                            -d.energy_fluctuation_coefficient * work]
+            crossings_at = (None if d.crossings_deg is None
+                            else [math.radians(c) for c in d.crossings_deg])
+            return solve_areas(energies, J, cycle=cycle, crossings_at=crossings_at, at=at,
+                               work_per_cycle=work, **kw)
+        powered = ("driving" if case.driving.power_field() else
+                   "resistance" if case.resistance.power_field() else None)
+        fixed = {}
+        if powered:
+            field = f"{powered}.{getattr(case, powered).power_field()}"
+            fixed[POWER] = power_value(_maker(getattr(case, powered), cycle), case.power,
+                                       speeds["omega_mean"], powered)
+        make_D, make_C = _maker(case.driving, cycle, fixed), _maker(case.resistance, cycle, fixed)
         unknown = ("driving" if case.driving.unknown_field() else
                    "resistance" if case.resistance.unknown_field() else None)
         if unknown:
@@ -395,7 +546,8 @@ def solve_case(case: Task2Case, source: str = "<case>") -> Task2Result:
             field = "flywheel"
         else:
             x = 1.0
-        return solve(make_D(x), make_C(x), J, unknown=unknown, **kw)
+        field = "flywheel"
+        return solve(make_D(x), make_C(x), J, unknown=unknown, at=at, power_found=powered, **kw)
     except InputError as exc:
         msg = str(exc)
         if msg.startswith(("a mean speed needs", "to find J from δ", "the machine stops")):

@@ -24,6 +24,10 @@ def aggregate_command(
                                           "frequency)."),
     lang: str = typer.Option("en", "--lang", help="Language of the summary and the plot: en | ru "
                              "(the JSON is the same in every language)."),
+    modes: bool = typer.Option(False, "--modes", help="Also show every mode's frequency in Hz and "
+                               "vibrations per minute with its nodes (positions along the "
+                               "shafts), and each shaft's equivalent length (the JSON always "
+                               "has them)."),
 ) -> None:
     """Two-mass machine aggregate (seed 003) or a chain of rotors: coefficients a_ij, c_ij,
     natural frequencies, steady forced vibration, start-up."""
@@ -63,6 +67,6 @@ def aggregate_command(
     else:
         from flywheel.render.aggregate import print_summary
 
-        print_summary(result, c.title, c.source, lang=lang)
+        print_summary(result, c.title, c.source, lang=lang, modes=modes)
         if plot is not None:
             typer.echo(text("plot_written", lang, path=plot))

@@ -11,7 +11,7 @@ capital and is no tag, so it stays as it is.
 from __future__ import annotations
 
 from pathlib import Path
-from typing import Optional
+from typing import List, Optional
 
 import typer
 
@@ -40,6 +40,17 @@ def _case_numbers(data, path: str = "") -> list[tuple[str, float]]:
     return out
 
 
+def _check_at(at, cycle_deg: float) -> None:
+    """Each --at angle finite and within the cycle 0…cycle_deg [deg]."""
+    import math
+
+    from flywheel.errors import InputError
+
+    for x in at or ():
+        if not (math.isfinite(x) and 0.0 <= x <= cycle_deg):
+            raise InputError(f"--at {x:g}: must lie within the cycle 0…{cycle_deg:g}°")
+
+
 def task2_command(
     profile: Optional[str] = typer.Option(
         None, "--profile",
@@ -62,8 +73,14 @@ def task2_command(
     case: Optional[Path] = typer.Option(None, "--case", help="A task-2 case file (TOML), "
                                         "see docs/task2.md; it gives all the data, so it takes "
                                         "none of the options above."),
-    plot: Optional[Path] = typer.Option(None, "--plot", help="Write a plot of M_D, M_C, A and "
-                                        "ω(φ) to this image file (.png, .svg, .pdf)."),
+    at: Optional[List[float]] = typer.Option(
+        None, "--at", help="Report ω, ε and the time t at this crank angle \\[deg] (repeatable; "
+                           "added to a case's at_deg). Implies --epsilon."),
+    epsilon: bool = typer.Option(False, "--epsilon", help="Also show ε(φ) = (M_D − M_C)/J (its "
+                                 "extremes), the cycle time and the phases of rising and falling "
+                                 "speed in the summary (the JSON always has them)."),
+    plot: Optional[Path] = typer.Option(None, "--plot", help="Write a plot of M_D, M_C, A, "
+                                        "ω(φ) and ε(φ) to this image file (.png, .svg, .pdf)."),
     as_json: bool = typer.Option(False, "--json", help="Print the results as JSON (the same "
                                  "document in every language)."),
     lang: str = typer.Option("en", "--lang", help="Language of the summary and the plot: en | ru."),
@@ -93,9 +110,13 @@ def task2_command(
 
             c = load_task2_case(case)
             blame = _case_numbers(c.model_dump())
+            _check_at(at, c.cycle_deg)
+            if at and c.diagram is not None:
+                raise InputError(f"--at: {case} gives a diagram by areas, which has no moments "
+                                 "between its crossings: ε, ω and t at an angle need graphs")
 
             def run():
-                return solve_case(c, str(case))
+                return solve_case(c, str(case), at_deg=at or ())
 
             title, source = c.title, c.source
             doc_title, doc_source = title, source
@@ -116,6 +137,7 @@ def task2_command(
                 raise InputError(f"--delta must lie between 0 and 2 (got {delta:g})")
             if start is not None and end is not None and start >= end:
                 raise InputError(f"--from ({start:g}°) must be less than --to ({end:g}°)")
+            _check_at(at, 360.0)
             blame = given
 
             def run():
@@ -126,7 +148,7 @@ def task2_command(
                     omega0=SEED_DEFAULTS["omega0"] if omega0 is None else omega0,
                     start=None if start is None else math.radians(start),
                     end=None if end is None else math.radians(end),
-                    M_C=mc, delta=delta)
+                    M_C=mc, delta=delta, at=[math.radians(x) for x in at or ()])
 
             # the JSON document is the same in every language; the summary and plot speak lang
             doc_title = text("t2_seed_title", profile=profile)
@@ -170,6 +192,6 @@ def task2_command(
     else:
         from flywheel.render.task2 import print_summary
 
-        print_summary(result, title, source, lang=lang)
+        print_summary(result, title, source, lang=lang, motion=epsilon or bool(at))
         if plot is not None:
             typer.echo(text("plot_written", lang, path=plot))

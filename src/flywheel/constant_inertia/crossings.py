@@ -147,5 +147,35 @@ def crossings(p: Piece) -> list[float]:
     return _harmonic_crossings(p)
 
 
+def derivative_piece(p: Piece) -> Piece:
+    """dM/dφ of a piece as a piece of the same form [N·m/rad]::
 
-__all__ = ["bisect_root", "crossings"]
+        slope + Σ k·(a·cos kφ − b·sin kφ) = slope + Σ ((−k·b)·sin kφ + (k·a)·cos kφ)
+
+    >>> derivative_piece(Piece(0.0, 1.0, 5.0, 2.0, ((2.0, 3.0, 4.0),)))
+    Piece(phi0=0.0, phi1=1.0, m0=2.0, slope=0.0, harmonics=((2.0, -8.0, 6.0),))
+    """
+    return Piece(p.phi0, p.phi1, p.slope, 0.0,
+                 tuple((k, -k * b, k * a) for k, a, b in p.harmonics))
+
+
+def stationary_points(p: Piece) -> list[float]:
+    """Angles inside (phi0, phi1) where the piece's moment has a local extreme [rad]: the sign
+    changes of dM/dφ (:func:`derivative_piece`), found by the same certified subdivision and
+    bisection as :func:`crossings`. A linear piece has none (its extremes are its ends); a point
+    where dM/dφ only touches 0 (an inflection) is no extreme and is not reported.
+
+    Khurmi & Gupta, *Theory of Machines*, Example 16.12: 600·sin 2φ − 500·sin φ is stationary
+    where 24·cos²φ − 5·cos φ − 12 = 0, cos φ = (5 ± √1177)/48, i.e. at 35.03°, 127.63° and
+    their mirror images 232.37°, 324.97°:
+
+    >>> p = Piece(0.0, 2 * math.pi, 0.0, 0.0, ((1.0, -500.0, 0.0), (2.0, 600.0, 0.0)))
+    >>> [round(math.degrees(x), 2) for x in stationary_points(p)]
+    [35.03, 127.63, 232.37, 324.97]
+    """
+    if not p.harmonics:
+        return []
+    return crossings(derivative_piece(p))
+
+
+__all__ = ["bisect_root", "crossings", "derivative_piece", "stationary_points"]

@@ -7,6 +7,7 @@ Defaults are the seed's: M_D = 15 N·m, J = 12 kg·m², ω0 = 200 rad/s; the res
 from __future__ import annotations
 
 import math
+from typing import Sequence
 
 from flywheel.constant_inertia.graphs import TWO_PI, constant, rectangle, triangle
 from flywheel.constant_inertia.solve import Task2Result, balance, check_positive, solve
@@ -18,11 +19,13 @@ SEED_SPANS_DEG = {"triangle": (90.0, 270.0), "rectangle": (90.0, 180.0)}
 
 def seed_task(profile: str = "triangle", *, M_D: float = 15.0, J: float = 12.0,
               omega0: float = 200.0, start: float | None = None, end: float | None = None,
-              M_C: float | None = None, delta: float | None = None) -> Task2Result:
+              M_C: float | None = None, delta: float | None = None,
+              at: Sequence[float] = ()) -> Task2Result:
     """Seed 002 («Задача 2»): constant driving moment ``M_D`` [N·m], resistance a triangle
     (peak in the middle) or a rectangle on [start, end] [rad] (defaults π/2…3π/2 and
     π/2…π); J [kg·m²]; ω0 [rad/s] at φ = 0. Without ``M_C`` its peak comes from the balance
-    (60 N·m in both seed tasks); with it the motion need not be steady.
+    (60 N·m in both seed tasks); with it the motion need not be steady. ``at`` [rad]: angles
+    where ω, ε and t are reported.
 
     >>> round(seed_task("rectangle").omega_min, 6)   # seed: 199.98
     199.980363
@@ -50,7 +53,7 @@ def seed_task(profile: str = "triangle", *, M_D: float = 15.0, J: float = 12.0,
     else:
         check_positive("M_C", M_C, "N·m")
     return solve(drive, shape(M_C, start, end), J, omega0=omega0, delta=delta,
-                 unknown=unknown)
+                 unknown=unknown, at=at)
 
 
 

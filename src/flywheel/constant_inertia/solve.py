@@ -30,7 +30,7 @@ import math
 from dataclasses import dataclass, field
 from typing import Callable, Sequence
 
-from flywheel.constant_inertia.crossings import bisect_root, crossings
+from flywheel.constant_inertia.crossings import bisect_root, crossings, stationary_points
 from flywheel.constant_inertia.graphs import TWO_PI, Moment, Piece, net_pieces, size
 from flywheel.errors import InputError
 
@@ -70,7 +70,8 @@ class Row:
     """One line of the segment table: a bound of a segment or a crossing M_D = M_C.
 
     phi [rad]; M_D, M_C [N·m] on the segment that starts here (at the cycle end: before it),
-    None for a diagram given by areas; A = ∫₀^φ (M_D − M_C) dφ [J]; omega [rad/s].
+    None for a diagram given by areas; A = ∫₀^φ (M_D − M_C) dφ [J]; omega [rad/s];
+    t : the time since φ = 0, t(φ) = ∫₀^φ dφ/ω [s] (None for a diagram given by areas).
     """
 
     phi: float
@@ -79,6 +80,33 @@ class Row:
     M_C: float | None
     A: float
     omega: float
+    t: float | None = None
+
+
+@dataclass(frozen=True)
+class AtPoint:
+    """The motion at an asked angle: phi [rad]; omega [rad/s]; epsilon = (M_D − M_C)/J
+    [rad/s²] (at a jump of a graph: just after it; at the cycle's end: just before it);
+    t = ∫₀^φ dφ/ω [s]."""
+
+    phi: float
+    omega: float
+    epsilon: float
+    t: float
+
+
+@dataclass(frozen=True)
+class Phase:
+    """A stretch of the cycle where the speed only rises (trend "up", M_D > M_C), only falls
+    ("down", M_D < M_C) or stays ("steady", M_D = M_C): from phi_start to phi_end [rad],
+    entered at t_start [s], lasting duration [s]. Its ends are the extremes of ω (the sign
+    changes of M_D − M_C, crossings or jumps)."""
+
+    phi_start: float
+    phi_end: float
+    t_start: float
+    duration: float
+    trend: str   # "up" | "down" | "steady"
 
 
 #: rad/s → rev/min
@@ -105,7 +133,15 @@ class Task2Result:
     ∮M_D dφ, ∮M_C dφ [J]; power : mean driving moment × ω_ср [W] (steady motion only);
     J_required : J giving delta_target at the same ω_ср [kg·m²]; delta_target : the asked δ [1];
     rim_radius : mean radius of a rim [m]; rim_mass : m = J/R² [kg]; driving, resistance : the
-    graphs (None for an area diagram).
+    graphs (None for an area diagram); epsilon_max, epsilon_min : the global extremes of
+    ε(φ) = (M_D − M_C)/J over the cycle [rad/s²]; phi_epsilon_max, phi_epsilon_min : the first
+    angles where they occur [rad]; cycle_time : the time of one cycle ∫₀^Φ dφ/ω [s]; at : the
+    motion at the asked angles (:class:`AtPoint`); phases : the stretches of rising and falling
+    speed (:class:`Phase`); (all of these None or empty for an area diagram); work_per_cycle :
+    the work done per cycle, ∮M_D dφ or given [J]; energy_fluctuation_coefficient :
+    C_E = ΔT_нб/work per cycle [1]; power_found : which graph's value the mean power gave,
+    "driving" | "resistance" | None; radius_of_gyration : k [m] and flywheel_mass : m = J/k²
+    [kg] when a radius of gyration was given without the mass.
     """
 
     cycle: float                 # Φ [rad]
@@ -134,14 +170,28 @@ class Task2Result:
     rim_mass: float | None = None         # m = J/R² [kg]
     driving: Moment | None = field(default=None, repr=False)
     resistance: Moment | None = field(default=None, repr=False)
+    epsilon_max: float | None = None      # [rad/s²]
+    epsilon_min: float | None = None      # [rad/s²]
+    phi_epsilon_max: float | None = None  # [rad]
+    phi_epsilon_min: float | None = None  # [rad]
+    cycle_time: float | None = None       # ∫₀^Φ dφ/ω [s]
+    at: tuple[AtPoint, ...] = ()
+    phases: tuple[Phase, ...] = ()
+    work_per_cycle: float | None = None   # [J]
+    energy_fluctuation_coefficient: float | None = None   # ΔT_нб/work per cycle [1]
+    power_found: str | None = None        # which graph's value the mean power gave
+    radius_of_gyration: float | None = None   # k [m]
+    flywheel_mass: float | None = None        # m = J/k² [kg]
 
     def to_document(self, title: str = "", source: str = "") -> dict:
         """The results document, the JSON of ``flywheel task2 --json`` (SI units; angles in
         degrees where the key says ``_deg``; speeds in rev/min under ``rpm``).
 
         Keys of the contract: omega_max, omega_min, omega_mean, delta, phi_omega_max_deg,
-        phi_omega_min_deg, delta_T_max, M_C, J_required (only when asked), segments. An angle
-        that is not known (an area diagram without crossing angles) is None.
+        phi_omega_min_deg, delta_T_max, M_C, J_required (only when asked), segments;
+        epsilon_max, epsilon_min [rad/s²], phi_epsilon_max_deg, phi_epsilon_min_deg [deg],
+        cycle_time [s], at [{phi_deg, omega, epsilon, t}]. An angle that is not known (an area
+        diagram without crossing angles) is None; so are ε and the times of an area diagram.
         """
         d: dict = {}
         if title:
@@ -180,11 +230,255 @@ class Task2Result:
         if self.rim_mass is not None:
             d["rim_radius"] = self.rim_radius
             d["rim_mass"] = self.rim_mass
+        if self.flywheel_mass is not None:
+            d["radius_of_gyration"] = self.radius_of_gyration
+            d["flywheel_mass"] = self.flywheel_mass
+        d.update({
+            "epsilon_max": self.epsilon_max,
+            "epsilon_min": self.epsilon_min,
+            "phi_epsilon_max_deg": _deg(self.phi_epsilon_max),
+            "phi_epsilon_min_deg": _deg(self.phi_epsilon_min),
+            "cycle_time": self.cycle_time,
+            "at": [{"phi_deg": _deg(a.phi), "omega": a.omega, "epsilon": a.epsilon, "t": a.t}
+                   for a in self.at],
+            "phases": [{"from_deg": _deg(ph.phi_start), "to_deg": _deg(ph.phi_end),
+                        "t_start": ph.t_start, "duration": ph.duration, "trend": ph.trend}
+                       for ph in self.phases],
+            "work_per_cycle": self.work_per_cycle,
+            "energy_fluctuation_coefficient": self.energy_fluctuation_coefficient,
+            "power_found": self.power_found,
+        })
         d["segments"] = [
             {"phi_deg": _deg(row.phi), "phi": None if math.isnan(row.phi) else row.phi,
-             "kind": row.kind, "M_D": row.M_D, "M_C": row.M_C, "A": row.A, "omega": row.omega}
+             "kind": row.kind, "M_D": row.M_D, "M_C": row.M_C, "A": row.A, "omega": row.omega,
+             "t": row.t}
             for row in self.rows]
         return d
+
+
+# -- ε(φ) and the time law ---------------------------------------------------------------------
+
+def epsilon_extremes(pieces: Sequence[Piece], J: float) -> tuple[float, float, float, float]:
+    """(ε_max, φ of ε_max, ε_min, φ of ε_min) of ε(φ) = (M_D − M_C)/J over the cycle
+    [rad/s², rad]: the global extremes, exact, not sampled.
+
+    For constant J the equation of motion J·ε = M_D − M_C (the kinetic-energy theorem
+    ½·J·ω² = ∫(M_D − M_C) dφ differentiated: ω·dω/dφ = ε) makes ε proportional to the net
+    moment. Its candidates are the ends of every piece, each from its own side (a jump of a graph
+    has two values, both candidates), and the stationary points inside a harmonic piece
+    (:func:`~flywheel.constant_inertia.crossings.stationary_points`); a linear piece is extreme
+    at its ends. Of equal extremes (to 1e-12 of the swing) the first in φ is reported: a
+    plateau's start. A textbook that sets d(M_D − M_C)/dφ = 0 and takes a root finds a *local*
+    extreme: Khurmi & Gupta's Example 16.12 reports 3.46 rad/s² at 35° as the maximum, whereas
+    the global maximum is 12.2 rad/s² at 232.4° (the mirror image of its minimum).
+    """
+    cands: list[tuple[float, float]] = []
+    for p in pieces:
+        cands.append((p.value(p.phi0), p.phi0))
+        cands.extend((p.value(x), x) for x in stationary_points(p))
+        cands.append((p.value(p.phi1), p.phi1))
+    vals = [v for v, _ in cands]
+    hi, lo = max(vals), min(vals)
+    tol = 1e-12 * (hi - lo)
+    m_max, x_max = next(c for c in cands if c[0] >= hi - tol)
+    m_min, x_min = next(c for c in cands if c[0] <= lo + tol)
+    return m_max / J, x_max, m_min / J, x_min
+
+
+#: Gauss–Kronrod 7–15 nodes and weights on [−1, 1] (QUADPACK's qk15: R. Piessens et al.,
+#: *QUADPACK*, Springer 1983); the Gauss weights belong to the odd-indexed nodes and the centre
+_XGK = (0.991455371120812639206854697526329, 0.949107912342758524526189684047851,
+        0.864864423359769072789712788640926, 0.741531185599394439863864773280788,
+        0.586087235467691130294144845693013, 0.405845151377397166906606412076961,
+        0.207784955007898467600689403773245, 0.0)
+_WGK = (0.022935322010529224963732008058970, 0.063092092629978553290700663189204,
+        0.104790010322250183839876322541518, 0.140653259715525918745189590510238,
+        0.169004726639267902826583426598550, 0.190350578064785409913256402421014,
+        0.204432940075298892414161999234649, 0.209482141084727828012999174891714)
+_WG = (0.129484966168869693270611432679082, 0.279705391489276667901467771423780,
+       0.381830050505118944950369775488975, 0.417959183673469387755102040816327)
+
+#: the adaptive quadrature refines a subinterval until |K15 − G7| ≤ TIME_RTOL·|K15| (the
+#: estimate of the 7-point Gauss rule's error; the 15-point result is far more accurate)
+TIME_RTOL = 1e-12
+_MAX_INTERVALS = 10000
+
+
+def _gk15(f: Callable[[float], float], a: float, b: float) -> tuple[float, float]:
+    """(K15 ∫_a^b f, |K15 − G7|): one Gauss–Kronrod step."""
+    c, h = 0.5 * (a + b), 0.5 * (b - a)
+    fc = f(c)
+    k, g = fc * _WGK[7], fc * _WG[3]
+    for j in range(7):
+        x = h * _XGK[j]
+        pair = f(c - x) + f(c + x)
+        k += _WGK[j] * pair
+        if j % 2:
+            g += _WG[j // 2] * pair
+    return k * h, abs((k - g) * h)
+
+
+def integrate(f: Callable[[float], float], a: float, b: float,
+              rtol: float = TIME_RTOL) -> float:
+    """∫_a^b f dx of a smooth positive f by adaptive Gauss–Kronrod (7–15): a subinterval is
+    halved until |K15 − G7| ≤ rtol·|K15| on it, so the relative error of the sum is below rtol
+    (in practice far below: the estimate is that of the 7-point rule).
+
+    >>> round(integrate(math.exp, 0.0, 1.0), 15) == round(math.e - 1, 15)
+    True
+    """
+    if b <= a:
+        return 0.0
+    parts: list[float] = []
+    todo = [(a, b)]
+    while todo:
+        x0, x1 = todo.pop()
+        v, err = _gk15(f, x0, x1)
+        mid = 0.5 * (x0 + x1)
+        if err <= rtol * abs(v) or not x0 < mid < x1:
+            parts.append(v)
+            continue
+        if len(parts) + len(todo) > _MAX_INTERVALS:
+            raise InputError(f"the time law did not converge on {math.degrees(a):.6g}…"
+                             f"{math.degrees(b):.6g}° (the speed comes too close to zero)")
+        todo.append((mid, x1))
+        todo.append((x0, mid))
+    return math.fsum(parts)
+
+
+def time_linear(h: float, w0: float, w1: float, eps0: float, kappa: float, dw: float) -> float:
+    """∫ dφ/ω [s] over h [rad] of a piece whose net moment is linear, so that
+    ε = (M_D − M_C)/J is linear in φ with dε/dφ = κ [1/s²] and ω² is quadratic in φ; exact.
+
+    w0, w1 : ω at the ends [rad/s]; eps0 : ε at the start [rad/s²]; dw = w1 − w0, computed by
+    the caller as 2·ΔA/(J·(w0 + w1)) (no difference of two close speeds). The closed forms of
+    ∫dφ/√(aφ² + bφ + c) (e.g. Gradshteyn & Ryzhik 2.261) written in ε and ω, each arranged
+    without cancellation:
+
+    * κ = 0 (ε constant, ω² linear): t = 2h/(ω0 + ω1);
+    * κ > 0: ε² − κ·ω² is constant along the motion, d ln(√κ·ω + ε) = √κ·dt, so
+      t = ln((√κ·ω1 + ε1)/(√κ·ω0 + ε0))/√κ (for ε0 < 0 the equal ratio
+      (ε0 − √κ·ω0)/(ε1 − √κ·ω1), whose terms do not cancel), by log1p of the relative change;
+    * κ < 0, λ = √(−κ): ε² + λ²·ω² is constant, and the angle ψ of the vector (ε, λ·ω) turns
+      at dψ/dt = λ, so t = Δψ/λ, Δψ = atan2(u0 × u1, u0 · u1) with
+      u0 × u1 = λ·(ε0·Δω − ω0·κ·h).
+
+    >>> round(time_linear(2.0, 1.0, 3.0, 2.0, 0.0, 2.0), 12)     # ε = 2: ω² = 1 + 4φ, t = 1
+    1.0
+    """
+    if h == 0.0:
+        return 0.0
+    de = kappa * h
+    if kappa == 0.0:
+        return 2.0 * h / (w0 + w1)
+    if kappa > 0.0:
+        r = math.sqrt(kappa)
+        if eps0 >= 0.0:
+            return math.log1p((r * dw + de) / (r * w0 + eps0)) / r
+        return -math.log1p((de - r * dw) / (eps0 - r * w0)) / r
+    lam = math.sqrt(-kappa)
+    cross = lam * (eps0 * dw - w0 * de)
+    dot = eps0 * (eps0 + de) + lam * lam * w0 * w1
+    return math.atan2(cross, dot) / lam
+
+
+def _span_time(p: Piece, x0: float, x1: float, w0: float, w1: float, J: float) -> float:
+    """∫_{x0}^{x1} dφ/ω [s] inside piece p, ω(x0) = w0, ω(x1) = w1 [rad/s]: exact for a linear
+    net moment (:func:`time_linear`), adaptive Gauss–Kronrod with relative tolerance TIME_RTOL
+    where harmonics make ω² transcendental in φ (:func:`integrate`)."""
+    sub = Piece(x0, x1, p.linear_at(x0), p.slope, p.harmonics)
+    if not p.harmonics:
+        dw = 2.0 * sub.work(x1) / (J * (w0 + w1))
+        return time_linear(x1 - x0, w0, w1, sub.m0 / J, p.slope / J, dw)
+    w0sq = w0 * w0
+
+    def inv_omega(x: float) -> float:
+        return 1.0 / math.sqrt(max(w0sq + 2.0 * sub.work(x) / J, 1e-300))
+
+    return integrate(inv_omega, x0, x1)
+
+
+def _locate(bounds: Sequence[float], x: float) -> int:
+    """Index i of the table interval [bounds[i], bounds[i+1]] holding x (the last one at the
+    cycle's end)."""
+    i = 0
+    while i < len(bounds) - 2 and x >= bounds[i + 1]:
+        i += 1
+    return i
+
+
+def _time_law(pieces: Sequence[Piece], bounds: Sequence[float], owner: Sequence[int],
+              omega: Sequence[float], J: float, at: Sequence[float]) -> tuple:
+    """(t at every row [s], the AtPoints of ``at``, the phases): t(φ) = ∫₀^φ dφ/ω summed over
+    the table's intervals, each inside one piece and free of sign changes of M_D − M_C."""
+    t = [0.0]
+    trend = []
+    for i in range(len(bounds) - 1):
+        p = pieces[owner[i]]
+        t.append(t[-1] + _span_time(p, bounds[i], bounds[i + 1], omega[i], omega[i + 1], J))
+        dA = Piece(bounds[i], bounds[i + 1], p.linear_at(bounds[i]), p.slope,
+                   p.harmonics).work(bounds[i + 1])
+        trend.append("up" if dA > 0.0 else "down" if dA < 0.0 else "steady")
+    phases: list[Phase] = []
+    start = 0
+    for i in range(1, len(trend) + 1):
+        if i == len(trend) or trend[i] != trend[start]:
+            phases.append(Phase(bounds[start], bounds[i], t[start], t[i] - t[start],
+                                trend[start]))
+            start = i
+    points = []
+    for x in at:
+        i = _locate(bounds, x)
+        p = pieces[owner[i]]
+        sub = Piece(bounds[i], bounds[i + 1], p.linear_at(bounds[i]), p.slope, p.harmonics)
+        w = math.sqrt(max(omega[i] ** 2 + 2.0 * sub.work(x) / J, 0.0))
+        points.append(AtPoint(x, w, p.value(x) / J,
+                              t[i] + _span_time(p, bounds[i], x, omega[i], w, J)))
+    return t, tuple(points), tuple(phases)
+
+
+def check_angles(at: Sequence[float], cycle: float) -> list[float]:
+    """The asked angles [rad], each within the cycle 0…Φ (a hair beyond its ends, round-off of
+    a conversion from degrees, is its end); InputError naming the first outside."""
+    out = []
+    for x in at:
+        if not math.isfinite(x) or x < -1e-12 * cycle or x > cycle * (1 + 1e-12):
+            raise InputError(f"the angle {math.degrees(x):g}° lies outside the cycle "
+                             f"0…{math.degrees(cycle):g}°")
+        out.append(min(max(x, 0.0), cycle))
+    return out
+
+
+def power_value(make: Callable[[float], Moment], power: float, omega_mean: float,
+                which: str) -> float:
+    """The value x of a graph (constant, peak, scale, a0) that makes its mean moment over the
+    cycle equal to P/ω_ср: T_mean = P/ω (Khurmi & Gupta, §16: "the mean torque ... = power /
+    mean angular speed"), i.e. ∮M dφ = P·Φ/ω_ср. The work is affine in x, as in :func:`balance`.
+
+    >>> from flywheel.constant_inertia.graphs import constant
+    >>> power_value(lambda x: constant(x), 20000.0, 10 * math.pi, "driving") * math.pi
+    2000.0
+    """
+    check_positive("the power", power, "W")
+    check_positive("the mean speed", omega_mean, "rad/s")
+    quantity = "M_D" if which == "driving" else "M_C"
+    m0, m1 = make(0.0), make(1.0)
+    w0 = _cycle_work(m0, "work_driving" if which == "driving" else "work_resistance")
+    w1 = _cycle_work(m1, "work_driving" if which == "driving" else "work_resistance")
+    if w1 == w0:
+        raise InputError(f"the {which} moment's value does not change its work: the mean "
+                         "power cannot find it")
+    target = power * m0.cycle / omega_mean
+    x = (target - w0) / (w1 - w0)
+    x = float(round(x, 12)) if abs(x - round(x, 12)) < 1e-12 * max(1.0, abs(x)) else x
+    x += 0.0
+    if not math.isfinite(x):
+        raise NotFiniteError(quantity, f"the mean power gives a {which} moment of {x!r} N·m")
+    if x < 0.0:
+        raise InputError(f"the mean power {power:.6g} W needs a negative {which} moment value "
+                         f"({x:.6g}): the graph's fixed part alone does more work than "
+                         f"P·Φ/ω_ср = {target:.6g} J")
+    return x
 
 
 def balance(make_D: Callable[[float], Moment], make_C: Callable[[float], Moment],
@@ -325,7 +619,8 @@ def _motion(bounds: list[float], kinds: list[str], A: list[float], J: float | No
     return out
 
 
-def _finish(res: dict, delta: float | None, rim_radius: float | None) -> dict:
+def _finish(res: dict, delta: float | None, rim_radius: float | None,
+            radius_of_gyration: float | None = None, work_per_cycle: float | None = None) -> dict:
     if delta is not None:
         res["delta_target"] = delta
         res["J_required"] = _J_for(res["delta_T_max"], res["omega_mean"], delta)
@@ -333,18 +628,33 @@ def _finish(res: dict, delta: float | None, rim_radius: float | None) -> dict:
         J_rim = res.get("J_required") or res["J"]
         res["rim_radius"] = rim_radius
         res["rim_mass"] = J_rim / rim_radius ** 2
+    if radius_of_gyration is not None:     # m = J/k² (Khurmi & Gupta §16: I = m·k²)
+        res["radius_of_gyration"] = radius_of_gyration
+        res["flywheel_mass"] = (res.get("J_required") or res["J"]) / radius_of_gyration ** 2
+    if work_per_cycle is not None and work_per_cycle > 0.0:
+        # C_E = ΔE / work done per cycle (Khurmi & Gupta §16.4)
+        res["work_per_cycle"] = work_per_cycle
+        res["energy_fluctuation_coefficient"] = res["delta_T_max"] / work_per_cycle
     return res
 
 
 def solve(M_D: Moment, M_C: Moment, J: float | None = None, *, omega0: float | None = None,
           omega_mean: float | None = None, delta: float | None = None,
-          rim_radius: float | None = None, unknown: str | None = None) -> Task2Result:
+          rim_radius: float | None = None, unknown: str | None = None,
+          at: Sequence[float] = (), radius_of_gyration: float | None = None,
+          power_found: str | None = None) -> Task2Result:
     """Steady (or not) motion under M_D(φ), M_C(φ) with constant J.
 
     Parameters: ``M_D``, ``M_C`` graphs [N·m over rad]; ``J`` [kg·m²] (None: found from
     ``delta`` at ``omega_mean``); exactly one of ``omega0`` (ω at φ = 0) or ``omega_mean``
     (ω_ср, steady motion only) [rad/s]; ``delta`` asks for the J giving that δ at the same
-    ω_ср; ``rim_radius`` [m] asks for the rim mass m = J/R².
+    ω_ср; ``rim_radius`` [m] asks for the rim mass m = J/R²; ``at`` [rad]: angles where ω, ε
+    and t are reported; ``radius_of_gyration`` [m] asks for the mass m = J/k²; ``unknown``,
+    ``power_found``: which graph's value the balance or the mean power found (for the record).
+
+    Besides ω: ε(φ) = (M_D − M_C)/J and its global extremes (:func:`epsilon_extremes`), and
+    the time law t(φ) = ∫₀^φ dφ/ω (:func:`time_linear`, :func:`integrate`): the cycle time, the
+    time at every row, the phases of rising and falling speed.
 
     The motion is steady when ∮ (M_D − M_C) dφ = 0 (to 1e-9 of ∮(|M_D| + |M_C|) dφ, see
     ``size``); otherwise ω_end after one cycle differs from ω0.
@@ -362,26 +672,32 @@ def solve(M_D: Moment, M_C: Moment, J: float | None = None, *, omega0: float | N
     check_positive("ω0", omega0, "rad/s")
     check_positive("the mean speed", omega_mean, "rad/s")
     check_positive("the rim radius", rim_radius, "m")
+    check_positive("the radius of gyration", radius_of_gyration, "m")
     if delta is not None and not (0.0 < delta < 2.0):
         raise InputError(f"δ must lie between 0 and 2 (got {delta:g})")
+    at = check_angles(at, M_D.cycle)
     pieces = net_pieces(M_D, M_C)
     bounds: list[float] = []
     kinds: list[str] = []
+    owner: list[int] = []
     A: list[float] = []
     A_start: list[float] = []
     acc = 0.0
-    for p in pieces:
+    for j, p in enumerate(pieces):
         A_start.append(acc)
         bounds.append(p.phi0)
         kinds.append("bound")
+        owner.append(j)
         A.append(acc)
         for x in crossings(p):
             bounds.append(x)
             kinds.append("crossing")
+            owner.append(j)
             A.append(acc + p.work(x))
         acc += p.work(p.phi1)
     bounds.append(pieces[-1].phi1)
     kinds.append("bound")
+    owner.append(len(pieces) - 1)
     W_D, W_C = _cycle_work(M_D, "work_driving"), _cycle_work(M_C, "work_resistance")
     # relative to the size of the moments (``size``), not to W_D, W_C: zero-mean moments
     # have works of pure round-off and are steady all the same
@@ -393,27 +709,36 @@ def solve(M_D: Moment, M_C: Moment, J: float | None = None, *, omega0: float | N
     res = _motion(bounds, kinds, A, J, omega0, omega_mean, steady, delta,
                   stop=lambda J_, w0sq: _stop_angle(pieces, A_start, J_, w0sq))
     omega = res.pop("omega")
+    times, points, phases = _time_law(pieces, bounds, owner, omega, res["J"], at)
     rows = tuple(Row(x, k, M_D.value(x, +1 if i < len(bounds) - 1 else -1),
-                     M_C.value(x, +1 if i < len(bounds) - 1 else -1), a, w)
-                 for i, (x, k, a, w) in enumerate(zip(bounds, kinds, A, omega)))
-    res = _finish(res, delta, rim_radius)
+                     M_C.value(x, +1 if i < len(bounds) - 1 else -1), a, w, t)
+                 for i, (x, k, a, w, t) in enumerate(zip(bounds, kinds, A, omega, times)))
+    e_max, x_max, e_min, x_min = epsilon_extremes(pieces, res["J"])
+    res = _finish(res, delta, rim_radius, radius_of_gyration, W_D if steady else None)
     power = (W_D / M_D.cycle) * res["omega_mean"] if steady else None
     return Task2Result(rows=rows, cycle=M_D.cycle, M_D=M_D.nominal, M_C=M_C.nominal,
                        unknown=unknown, work_driving=W_D, work_resistance=W_C, power=power,
-                       driving=M_D, resistance=M_C, **res)
+                       driving=M_D, resistance=M_C, epsilon_max=e_max, epsilon_min=e_min,
+                       phi_epsilon_max=x_max, phi_epsilon_min=x_min, cycle_time=times[-1],
+                       at=points, phases=phases, power_found=power_found, **res)
 
 
 def solve_areas(energies: Sequence[float], J: float | None = None, *, cycle: float = TWO_PI,
                 omega0: float | None = None, omega_mean: float | None = None,
                 delta: float | None = None, rim_radius: float | None = None,
-                crossings_at: Sequence[float] | None = None) -> Task2Result:
+                crossings_at: Sequence[float] | None = None, at: Sequence[float] = (),
+                radius_of_gyration: float | None = None,
+                work_per_cycle: float | None = None) -> Task2Result:
     """A turning-moment diagram given by the signed areas between its crossings with the mean
     line (Khurmi & Gupta, §16.5): ``energies`` [J] in order, positive above the mean line.
 
     The energy at the n-th crossing is the running sum; ΔT_нб = max − min of the running sums
     (with the start). The areas of a cycle sum to zero. ``crossings_at`` [rad], n + 1 angles
     from the start of the first area to the end of the last, label the rows; without them
-    the angles of ω_max and ω_min are unknown (None).
+    the angles of ω_max and ω_min are unknown (None). A maximum fluctuation of energy ΔE given
+    directly is the diagram [ΔE, −ΔE]. The areas say nothing of the moments between the
+    crossings, so ε(φ) and the time law are unknown: ``at`` must be empty.
+    ``work_per_cycle`` [J] gives C_E = ΔT_нб/W; ``radius_of_gyration`` [m] the mass J/k².
 
     >>> r = solve_areas([295.0, -685.0, 40.0, -340.0, 960.0, -270.0], J=1.0, omega_mean=100.0)
     >>> r.delta_T_max
@@ -426,6 +751,10 @@ def solve_areas(energies: Sequence[float], J: float | None = None, *, cycle: flo
         raise InputError("give exactly one speed: ω0 or the mean speed")
     if delta is not None and not (0.0 < delta < 2.0):
         raise InputError(f"δ must lie between 0 and 2 (got {delta:g})")
+    check_positive("the radius of gyration", radius_of_gyration, "m")
+    if len(at):
+        raise InputError("a diagram given by areas has no moments between its crossings: "
+                         "ε(φ), ω(φ) and t(φ) at an angle are unknown (give the graphs)")
     e = [float(x) for x in energies]
     if len(e) < 2:
         raise InputError("a diagram needs at least two areas")
@@ -451,24 +780,27 @@ def solve_areas(energies: Sequence[float], J: float | None = None, *, cycle: flo
     omega = res.pop("omega")
     rows = tuple(Row(x if crossings_at is not None else math.nan, "crossing", None, None, a, w)
                  for x, a, w in zip(bounds, A, omega))
-    res = _finish(res, delta, rim_radius)
+    res = _finish(res, delta, rim_radius, radius_of_gyration, work_per_cycle)
     return Task2Result(rows=rows, cycle=cycle, **res)
 
 
 def sample(result: Task2Result, n: int = 1441) -> dict[str, list[float]]:
-    """Curves for plotting: φ [rad], M_D, M_C [N·m], A [J], ω [rad/s] on n + the table's points.
+    """Curves for plotting: φ [rad], M_D, M_C [N·m], A [J], ω [rad/s], ε = (M_D − M_C)/J
+    [rad/s²] on n + the table's points (+ the angles of ε's extremes).
 
     Only for results from graphs (``solve``); an area diagram has no curves between rows.
     """
     if result.driving is None or result.resistance is None:
         raise InputError("a diagram given by areas has no moment curves to sample")
     pieces = net_pieces(result.driving, result.resistance)
-    xs = sorted({result.cycle * i / (n - 1) for i in range(n)} | {r.phi for r in result.rows})
+    xs = sorted({result.cycle * i / (n - 1) for i in range(n)} | {r.phi for r in result.rows}
+                | {x for x in (result.phi_epsilon_max, result.phi_epsilon_min) if x is not None})
     A_start, acc = [], 0.0
     for p in pieces:
         A_start.append(acc)
         acc += p.work(p.phi1)
-    out: dict[str, list[float]] = {"phi": [], "M_D": [], "M_C": [], "A": [], "omega": []}
+    out: dict[str, list[float]] = {"phi": [], "M_D": [], "M_C": [], "A": [], "omega": [],
+                                   "epsilon": []}
     j = 0
     w0sq = result.omega0 ** 2
     for x in xs:
@@ -476,13 +808,16 @@ def sample(result: Task2Result, n: int = 1441) -> dict[str, list[float]]:
             j += 1
         a = A_start[j] + pieces[j].work(x)
         out["phi"].append(x)
-        out["M_D"].append(result.driving.value(x))
-        out["M_C"].append(result.resistance.value(x))
+        md, mc = result.driving.value(x), result.resistance.value(x)
+        out["M_D"].append(md)
+        out["M_C"].append(mc)
+        out["epsilon"].append((md - mc) / result.J)
         out["A"].append(a)
         out["omega"].append(math.sqrt(max(w0sq + 2 * a / result.J, 0.0)))
     return out
 
 
 
-__all__ = ["BALANCE_RTOL", "NotFiniteError", "Row", "Task2Result", "balance", "solve",
-           "solve_areas", "sample", "check_positive"]
+__all__ = ["BALANCE_RTOL", "TIME_RTOL", "NotFiniteError", "Row", "AtPoint", "Phase",
+           "Task2Result", "balance", "power_value", "solve", "solve_areas", "sample",
+           "check_positive", "check_angles", "epsilon_extremes", "time_linear", "integrate"]

@@ -89,15 +89,89 @@ def starting_torque_from_rated(rated_torque: float, rated_slip: float) -> float:
     return rated_torque / rated_slip
 
 
+def equivalent_length(c: float, d_ref: float, G_ref: float) -> float:
+    """The length of a uniform solid shaft of diameter d_ref and shear modulus G_ref with the
+    torsional stiffness c [m]: L = G·π·d⁴/(32·c). For a stepped shaft (pieces in series,
+    1/c = Σ L_k·32/(G_k·π·d_k⁴)) this is Khurmi & Gupta's torsionally equivalent shaft
+    (ch. 24: l = l1 + l2·(d1/d2)⁴ + l3·(d1/d3)⁴ for one material); a piece behind a gear pair of
+    ratio i counts at the input speed, L_k·(d_ref/d_k)⁴/i².
+
+    >>> round(equivalent_length(series_stiffness([shaft_stiffness(80e9, 0.075, 0.275),
+    ...     shaft_stiffness(80e9, 0.05, 0.5), shaft_stiffness(80e9, 0.0375, 0.475)]),
+    ...     0.075, 80e9), 10)                   # 0.275 + 0.5·1.5⁴ + 0.475·2⁴
+    10.40625
+    """
+    return G_ref * math.pi * d_ref ** 4 / (32.0 * c)
+
+
+@dataclass(frozen=True)
+class ShaftLine:
+    """One shaft of the case as a line, for the nodes along it and its equivalent length.
+
+    index : its position in the case; ends : (from, to) indices of the free rotors it joins, −1
+    for a fixed end (the frame); names : the rotors' (or the frame's) names; compliance : of each
+    piece in order from the ``from`` end, at the shaft's input speed (the ``from`` end's)
+    [rad/(N·m)]; length : each piece's length [m] or None (a piece given by its stiffness);
+    c_input : the shaft's stiffness at its input speed [N·m/rad]; gear : its gear ratio
+    ω_out/ω_in; d_ref, G_ref : the diameter [m] and shear modulus [Pa] of its first piece with a
+    diameter (None: no piece has one).
+    """
+
+    index: int
+    ends: tuple[int, int]
+    names: tuple[str, str]
+    compliance: tuple[float, ...]
+    length: tuple[float | None, ...]
+    c_input: float
+    gear: float = 1.0
+    d_ref: float | None = None
+    G_ref: float | None = None
+
+    @property
+    def total_length(self) -> float | None:
+        """Σ L_k [m], None if a piece has no length."""
+        return None if any(x is None for x in self.length) else math.fsum(self.length)
+
+    @property
+    def equivalent_length(self) -> float | None:
+        """:func:`equivalent_length` at (d_ref, G_ref) [m], None without a diameter."""
+        if self.d_ref is None or self.G_ref is None:
+            return None
+        return equivalent_length(self.c_input, self.d_ref, self.G_ref)
+
+    def position(self, fraction: float) -> float | None:
+        """The distance from the ``from`` end [m] of the point at ``fraction`` of the shaft's
+        compliance (the twist grows linearly along the compliance: a node of a mode lies where
+        the amplitude, linear in it between the two rotors, is zero); None without lengths."""
+        target = fraction * math.fsum(self.compliance)
+        done, dist = 0.0, 0.0
+        for k, (f, L) in enumerate(zip(self.compliance, self.length)):
+            last = k == len(self.compliance) - 1
+            if target <= done + f or last:
+                if L is None:
+                    return None
+                return dist + L * min(max((target - done) / f, 0.0), 1.0)
+            if L is None:
+                return None
+            done += f
+            dist += L
+        return dist
+
+
 # -- the chain ---------------------------------------------------------------------------------
 
 @dataclass(frozen=True)
 class Chain:
-    """Rotors in a line, reduced to the speed of the first (shaft I).
+    """Rotors in a line (or a tree: a gear driving two shafts), reduced to the speed of the
+    first (shaft I), free or with shafts fixed to the frame.
 
     names : rotor names; J : reduced inertias [kg·m²] (N); c : reduced stiffness of each
     connection [N·m/rad] (N − 1); damping : reduced viscous damping of each connection
-    [N·m·s/rad] (N − 1); ratio : speed of each rotor over the first's, u_k = ω_k/ω_I (N).
+    [N·m·s/rad] (N − 1); ratio : speed of each rotor over the first's, u_k = ω_k/ω_I (N);
+    ends : the (from, to) rotor indices of each connection, None for a line (k, k + 1);
+    ground : each rotor's stiffness to the frame through its fixed shafts [N·m/rad] (N), None
+    for a free system; lines : the case's shafts as lines (:class:`ShaftLine`), for the nodes
+    and equivalent lengths; frames : the names of the fixed ends.
     """
 
     names: tuple
@@ -105,12 +179,27 @@ class Chain:
     c: np.ndarray
     damping: np.ndarray
     ratio: np.ndarray
+    ends: tuple[tuple[int, int], ...] | None = None
+    ground: np.ndarray | None = None
+    lines: tuple[ShaftLine, ...] = ()
+    frames: tuple[str, ...] = ()
 
     def __post_init__(self):
-        if len(self.J) < 2:
+        if len(self.J) < 2 and (self.ground is None or len(self.J) < 1):
             raise InputError("a chain needs at least two rotors")
         if len(self.c) != len(self.J) - 1 or len(self.damping) != len(self.c):
             raise InputError("a chain of N rotors needs N − 1 connections")
+        if self.ends is not None and len(self.ends) != len(self.c):
+            raise InputError("every connection needs its two rotors")
+        if self.ground is not None:
+            if len(self.ground) != len(self.J):
+                raise InputError("the ground stiffness needs one value per rotor")
+            for k, v in enumerate(self.ground):
+                if not (math.isfinite(v) and v >= 0):
+                    raise InputError(f"rotor {self.names[k]}: the stiffness to the frame reduced to "
+                                     f"shaft I must be finite and not negative (got {v:g} N·m/rad)")
+            if not np.any(self.ground > 0):
+                raise InputError("a system fixed to the frame needs a shaft to it")
         for what, vals, unit, rotor in (("moment of inertia", self.J, " kg·m²", True),
                                         ("speed ratio", self.ratio, "", True),
                                         ("stiffness", self.c, " N·m/rad", False),
@@ -137,15 +226,34 @@ class Chain:
     def n(self) -> int:
         return len(self.J)
 
+    @property
+    def pairs(self) -> tuple[tuple[int, int], ...]:
+        """(from, to) rotor indices of every connection: ``ends``, or (k, k + 1) for a line."""
+        return self.ends if self.ends is not None else tuple((k, k + 1) for k in range(len(self.c)))
 
-def chain(J, c, damping=None, ratio=None, names=None) -> Chain:
-    """A :class:`Chain` from plain lists (already reduced to shaft I)."""
+    @property
+    def fixed(self) -> bool:
+        """True if a shaft holds the system to the frame (no rigid-body mode)."""
+        return self.ground is not None
+
+    @property
+    def is_line(self) -> bool:
+        """A free, unbranched chain: the seed's model, which a motor and a load can drive."""
+        return self.ground is None and all(e == (k, k + 1) for k, e in enumerate(self.pairs))
+
+
+def chain(J, c, damping=None, ratio=None, names=None, ends=None, ground=None, lines=(),
+          frames=()) -> Chain:
+    """A :class:`Chain` from plain lists (already reduced to shaft I); ``ends`` (from, to) per
+    connection for a tree, ``ground`` the stiffness of each rotor to the frame."""
     J = np.asarray(J, dtype=float)
     c = np.asarray(c, dtype=float)
     damping = np.zeros(len(c)) if damping is None else np.asarray(damping, dtype=float)
     ratio = np.ones(len(J)) if ratio is None else np.asarray(ratio, dtype=float)
     names = tuple(names) if names is not None else tuple(str(k + 1) for k in range(len(J)))
-    return Chain(names, J, c, damping, ratio)
+    ends = None if ends is None else tuple((int(a), int(b)) for a, b in ends)
+    ground = None if ground is None else np.asarray(ground, dtype=float)
+    return Chain(names, J, c, damping, ratio, ends, ground, tuple(lines), tuple(frames))
 
 
 def mass_matrix(ch: Chain) -> np.ndarray:
@@ -153,25 +261,31 @@ def mass_matrix(ch: Chain) -> np.ndarray:
     return np.diag(ch.J)
 
 
-def _tridiagonal(values: np.ndarray, n: int) -> np.ndarray:
+def _assemble(values: np.ndarray, pairs, n: int) -> np.ndarray:
+    """Σ over connections of v·(e_i − e_j)(e_i − e_j)ᵀ: tridiagonal for a line."""
     K = np.zeros((n, n))
-    for k, v in enumerate(values):
-        K[k, k] += v
-        K[k + 1, k + 1] += v
-        K[k, k + 1] -= v
-        K[k + 1, k] -= v
+    for v, (i, j) in zip(values, pairs):
+        K[i, i] += v
+        K[j, j] += v
+        K[i, j] -= v
+        K[j, i] -= v
     return K
 
 
 def stiffness_matrix(ch: Chain) -> np.ndarray:
-    """K in absolute angles: Π = ½·Σ c_k·(φ_{k+1} − φ_k)² [N·m/rad]."""
-    return _tridiagonal(ch.c, ch.n)
+    """K in absolute angles: Π = ½·Σ c_k·(φ_to − φ_from)² + ½·Σ g_r·φ_r² [N·m/rad], the second
+    sum over the rotors held by a shaft fixed to the frame (g_r its stiffness, the fixed end's
+    angle zero: a boundary condition, not a huge inertia)."""
+    K = _assemble(ch.c, ch.pairs, ch.n)
+    if ch.ground is not None:
+        K[np.diag_indices(ch.n)] += ch.ground
+    return K
 
 
 def damping_matrix(ch: Chain, motor_slope: float = 0.0) -> np.ndarray:
     """C in absolute angles: the connections' damping plus the motor's slope M_п/ω_x acting on
     the first rotor (a linear characteristic drops by M_п/ω_x per rad/s) [N·m·s/rad]."""
-    C = _tridiagonal(ch.damping, ch.n)
+    C = _assemble(ch.damping, ch.pairs, ch.n)
     C[0, 0] += motor_slope
     return C
 
@@ -195,12 +309,49 @@ def coefficients(ch: Chain) -> tuple[np.ndarray, np.ndarray]:
     ([[5.0, 2.0], [2.0, 2.0]], [[0.0, 0.0], [0.0, 100.0]])
     >>> coefficients(chain([0.15, 0.3, 0.09], [132001.9, 198002.9]))[1].tolist()
     [[0.0, 0.0, 0.0], [0.0, 132001.9, 0.0], [0.0, 0.0, 198002.9]]
+
+    A branched free system (a tree) keeps the coordinates q1 = φ of the first rotor and each
+    connection's twist q = φ_to − φ_from: a_ij = Σ J over the rotors that both coordinates move,
+    c = diag(0, c_1, …) still. A system fixed to the frame has no rigid rotation: its coordinates
+    are the rotors' absolute angles, a = M = diag(J), c = K.
     """
-    tail = np.cumsum(ch.J[::-1])[::-1]            # tail[k] = J_k + … + J_N
-    idx = np.arange(ch.n)
-    a = tail[np.maximum.outer(idx, idx)]
+    if ch.ground is not None:
+        return mass_matrix(ch), stiffness_matrix(ch)
     c = np.diag(np.concatenate([[0.0], ch.c]))
+    if ch.ends is None:
+        tail = np.cumsum(ch.J[::-1])[::-1]            # tail[k] = J_k + … + J_N
+        idx = np.arange(ch.n)
+        a = tail[np.maximum.outer(idx, idx)]
+        return a, c
+    T = tree_transform(ch)
+    a = np.zeros((ch.n, ch.n))
+    for i in range(ch.n):
+        for j in range(ch.n):
+            a[i, j] = math.fsum(ch.J[r] * T[r, i] * T[r, j] for r in range(ch.n))
     return a, c
+
+
+def tree_transform(ch: Chain) -> np.ndarray:
+    """T with φ = T·q for a free system: q1 = φ of rotor 0, q_(k+1) = φ_to − φ_from of
+    connection k; T[r, k + 1] = ±1 when connection k lies on the path from rotor 0 to r (+1
+    walked from → to). A line gives :func:`twist_transform`."""
+    n = ch.n
+    T = np.zeros((n, n))
+    T[:, 0] = 1.0
+    adj: dict[int, list[tuple[int, int, float]]] = {r: [] for r in range(n)}
+    for k, (i, j) in enumerate(ch.pairs):
+        adj[i].append((j, k, 1.0))
+        adj[j].append((i, k, -1.0))
+    seen, todo = {0}, [0]
+    while todo:
+        r = todo.pop()
+        for nxt, k, sign in adj[r]:
+            if nxt not in seen:
+                seen.add(nxt)
+                T[nxt] = T[r]
+                T[nxt, k + 1] = sign
+                todo.append(nxt)
+    return T
 
 
 # -- motor and load ----------------------------------------------------------------------------
@@ -247,6 +398,7 @@ class Drive:
         return self.M0
 
 
-__all__ = ["shaft_stiffness", "series_stiffness", "reduced_inertia_I", "mean_reduced_inertia",
-           "starting_torque_from_rated", "Chain", "chain", "mass_matrix", "stiffness_matrix",
-           "damping_matrix", "twist_transform", "coefficients", "Drive"]
+__all__ = ["shaft_stiffness", "series_stiffness", "equivalent_length", "reduced_inertia_I",
+           "mean_reduced_inertia", "starting_torque_from_rated", "ShaftLine", "Chain", "chain",
+           "mass_matrix", "stiffness_matrix", "damping_matrix", "twist_transform", "tree_transform",
+           "coefficients", "Drive"]

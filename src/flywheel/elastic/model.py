@@ -53,11 +53,13 @@ import numpy as np
 
 from flywheel.elastic.chain import Chain, Drive, coefficients
 from flywheel.elastic.forced import Steady, steady_state
-from flywheel.elastic.modes import Modes, natural_frequencies
+from flywheel.elastic.modes import Modes, Node, mode_nodes, natural_frequencies
 from flywheel.elastic.timedomain import (CHECK_FAST_PERIODS, MAX_FAST_PERIODS, History, start_up,
                                          start_up_duration, steady_method, steady_run)
+from flywheel.errors import InputError
 
 TWO_PI = 2.0 * math.pi
+RPM = 30.0 / math.pi  # rad/s → rev/min (vibrations per minute)
 
 
 @dataclass(frozen=True)
@@ -119,7 +121,8 @@ class AggregateResult:
     check_delta : its δ of the motor and of the machine [1]; startup : the start-up run;
     startup_peak_moment : the largest |c·q2| during it [N·m]; startup_time : time to 95 % of the
     steady ω1 [s] (linear motor only, None if not reached); notes : what the reader should know
-    about how the time-domain runs were bounded (:class:`Note`).
+    about how the time-domain runs were bounded (:class:`Note`); nodes : the nodes of every
+    torsional mode, in the order of modes.elastic (:class:`~flywheel.elastic.modes.Node`).
     """
 
     chain: Chain
@@ -136,6 +139,7 @@ class AggregateResult:
     startup_peak_moment: float | None = None     # [N·m]
     startup_time: float | None = None            # [s]
     notes: tuple[Note, ...] = ()
+    nodes: tuple[tuple[Node, ...], ...] = ()
 
     def to_document(self, title: str = "", source: str = "") -> dict:
         """The results document, the JSON of ``flywheel aggregate --json``: SI units, reduced to
@@ -147,7 +151,13 @@ class AggregateResult:
         delta_machine; the last four are null without a motor. steady.elastic_moment_mean is the
         mean transmitted moment c·(φ_k − φ_(k+1)) = −c·q (positive, M_0·i31); steady.twist_mean is
         the mean of q (negative). notes: how the time-domain runs were bounded (empty if nothing
-        to say).
+        to say). natural_frequencies_rpm: the same frequencies in vibrations per minute; modes:
+        per torsional mode natural_hz, natural_rpm, natural_rad_s, shape (per rotor, largest 1)
+        and nodes (shaft, between, fraction of its compliance, distance [m] from its first
+        rotor; or a rotor that stands still); shafts: per shaft of the case between, gear_ratio,
+        c (at its input speed) and c_reduced [N·m/rad], length and equivalent_length [m] at
+        reference_diameter [m] and shear_modulus [Pa] (null without a geometry); fixed_ends:
+        the names of the rotors fixed to the frame.
         """
         ch, st = self.chain, self.steady
         d: dict = {}
@@ -168,8 +178,25 @@ class AggregateResult:
                             for c, b in zip(ch.c, ch.damping)],
             "a": self.a.tolist(),
             "c": self.c.tolist(),
-            "mode_shapes": self.modes.shapes[:, 1:].T.tolist(),
+            "mode_shapes": self.modes.elastic_shapes.T.tolist(),
         })
+        d["natural_frequencies_rpm"] = [float(w) * RPM for w in self.modes.elastic]
+        d["modes"] = [
+            {"natural_hz": float(w) / TWO_PI, "natural_rpm": float(w) * RPM,
+             "natural_rad_s": float(w), "shape": [float(x) for x in shape],
+             "nodes": [{"shaft": n.shaft, "between": None if n.between is None else list(n.between),
+                        "fraction": n.fraction, "distance": n.distance, "rotor": n.rotor}
+                       for n in nodes]}
+            for w, shape, nodes in zip(self.modes.elastic, self.modes.elastic_shapes.T, self.nodes)]
+        u = {n: float(x) for n, x in zip(ch.names, ch.ratio)}
+        d["shafts"] = [
+            {"between": list(line.names), "gear_ratio": line.gear, "c": line.c_input,
+             "c_reduced": line.c_input * (u[line.names[0]] if line.ends[0] >= 0
+                                          else u[line.names[1]] / line.gear) ** 2,
+             "length": line.total_length, "equivalent_length": line.equivalent_length,
+             "reference_diameter": line.d_ref, "shear_modulus": line.G_ref}
+            for line in ch.lines]
+        d["fixed_ends"] = list(ch.frames)
         if st is not None:
             dr = self.drive
             u_last = float(ch.ratio[-1])
@@ -218,13 +245,17 @@ def analyze(ch: Chain, drive: Drive | None = None, t_end: float | None = None,
     natural frequencies are computed once here and handed to every step that needs them."""
     a, c = coefficients(ch)
     modes = natural_frequencies(ch)
+    nodes = tuple(mode_nodes(ch, x) for x in modes.elastic_shapes.T)
     if drive is None:
-        return AggregateResult(ch, a, c, modes)
+        return AggregateResult(ch, a, c, modes, nodes=nodes)
+    if not ch.is_line:
+        raise InputError("a motor and a load drive a free, unbranched chain; a branched system "
+                         "or one fixed to the frame gives its natural frequencies and modes only")
     st = steady_state(ch, drive, modes)
     res = tuple(Resonance(float(wn), st.omega_forcing / wn, abs(1 - st.omega_forcing / wn))
                 for wn in modes.elastic)
     if not time_domain:
-        return AggregateResult(ch, a, c, modes, drive, st, res)
+        return AggregateResult(ch, a, c, modes, drive, st, res, nodes=nodes)
     notes = []
     f_top = modes.highest / (2 * math.pi)
     method, fast = steady_method(ch, st.omega_forcing, modes=modes)
@@ -245,7 +276,7 @@ def analyze(ch: Chain, drive: Drive | None = None, t_end: float | None = None,
     reached = np.nonzero(su.omega[0] >= 0.95 * st.omega_mean)[0]
     t95 = float(su.t[reached[0]]) if drive.kind == "linear" and len(reached) else None
     return AggregateResult(ch, a, c, modes, drive, st, res, chk, ch_twist, ch_delta, su, peak, t95,
-                           tuple(notes))
+                           tuple(notes), nodes)
 
 
 __all__ = ["Resonance", "Note", "AggregateResult", "analyze"]

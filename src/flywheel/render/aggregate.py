@@ -48,9 +48,12 @@ def _matrix(name: str, m, unit: str, lang: str = "en"):
     return t
 
 
-def print_summary(r, title: str = "", source: str = "", console=None, lang: str = "en") -> None:
+def print_summary(r, title: str = "", source: str = "", console=None, lang: str = "en",
+                  modes: bool = False) -> None:
     """Coefficients, natural frequencies, resonance margins and the steady state; labels,
-    symbols and units in ``lang`` (en, ru: :mod:`flywheel.render.nomenclature_ci`)."""
+    symbols and units in ``lang`` (en, ru: :mod:`flywheel.render.nomenclature_ci`). ``modes``
+    adds every mode's frequency in Hz and rpm with its nodes, and the shafts' equivalent
+    lengths."""
     from rich.console import Console
     from rich.markup import escape as e
     from rich.table import Table
@@ -80,18 +83,30 @@ def print_summary(r, title: str = "", source: str = "", console=None, lang: str 
         row(t, k + 1, n, _g(j), _g(u))
     console.print(t)
     t = table(L("ag_connections"), ("#", L("between"), L("c"), L("damping")))
-    for k, (c, b) in enumerate(zip(ch.c, ch.damping)):
-        row(t, k + 1, f"{names[k]} – {names[k + 1]}", _g(c), _g(b))
+    for k, (c, b, (i, j)) in enumerate(zip(ch.c, ch.damping, ch.pairs)):
+        row(t, k + 1, f"{names[i]} – {names[j]}", _g(c), _g(b))
+    if ch.fixed:
+        k = len(ch.c)
+        for line in ch.lines:
+            if min(line.ends) < 0:
+                k += 1
+                a, b = (rotor_name(n, lang) for n in line.names)
+                row(t, k, f"{a} – {b} ({L('frame')})", _g(line.c_input * _u_in(ch, line) ** 2),
+                    _g(0.0))
     console.print(t)
-    console.print(e(L("ag_equations")))
+    console.print(e(L("ag_equations_fixed" if ch.fixed else
+                      "ag_equations" if ch.ends is None else "ag_equations_tree")))
     console.print(_matrix(L("a_ij"), r.a, U("kg·m²"), lang))
     console.print(_matrix(L("c_ij"), r.c, U("N·m/rad"), lang))
 
     t = table(L("ag_modes"), (L("mode"), L("omega_n"), L("f_n"), L("shape")))
+    rigid = r.modes.rigid
     for k, w in enumerate(r.modes.omega):
         shape = ", ".join(_g(x, ".4g") for x in r.modes.shapes[:, k])
-        row(t, L("rigid_body") if k == 0 else k, _g(w), _g(w / TWO_PI), shape)
+        row(t, L("rigid_body") if k < rigid else k - rigid + 1, _g(w), _g(w / TWO_PI), shape)
     console.print(t)
+    if modes:
+        _print_modes(r, console, lang)
     st = r.steady
     if st is None:
         console.print(e(L("ag_no_motor")))
@@ -124,6 +139,57 @@ def print_summary(r, title: str = "", source: str = "", console=None, lang: str 
     console.print(t)
     for note in r.notes:
         console.print(e(L("note", note=L(f"note_{note.kind}", **dict(note.values)))))
+
+
+def _u_in(ch, line) -> float:
+    """The speed ratio of a shaft's input (``from``) end: its rotor's, or for a fixed ``from``
+    end the other rotor's over the gear ratio."""
+    if line.ends[0] >= 0:
+        return float(ch.ratio[line.ends[0]])
+    return float(ch.ratio[line.ends[1]]) / line.gear
+
+
+def _node_text(node, lang: str) -> str:
+    if node.rotor is not None:
+        return text("node_rotor", lang, name=rotor_name(node.rotor, lang))
+    a, b = (rotor_name(n, lang) for n in node.between)
+    dist = "" if node.distance is None else text("node_dist", lang, d=_g(node.distance), a=a)
+    return text("node_shaft", lang, a=a, b=b, dist=dist, frac=_g(100 * node.fraction, ".4g"))
+
+
+def _print_modes(r, console, lang: str) -> None:
+    """Every torsional mode's frequency (Hz, vibrations per minute) and nodes; the shafts'
+    stiffness, length and equivalent length. All from the result."""
+    from rich.markup import escape as e
+    from rich.table import Table
+
+    def L(key: str, **fields) -> str:
+        return text(key, lang, **fields)
+
+    ch = r.chain
+    frames = set(ch.frames)
+    t = Table(title=e(L("ag_mode_nodes")))
+    for col in (L("mode"), L("f_n"), L("rpm_col"), L("nodes")):
+        t.add_column(e(col))
+    for k, (w, nodes) in enumerate(zip(r.modes.elastic, r.nodes)):
+        parts = []
+        for node in nodes:
+            if node.between is not None and (set(node.between) & frames):
+                name = next(n for n in node.between if n in frames)
+                parts.append(L("node_frame", name=rotor_name(name, lang)))
+            else:
+                parts.append(_node_text(node, lang))
+        t.add_row(str(k + 1), e(_g(w / TWO_PI)), e(_g(w * RPM)), e("; ".join(parts) or "—"))
+    console.print(t)
+    t = Table(title=e(L("ag_shafts")))
+    for col in ("#", L("between"), L("gear_ratio"), L("c_input"), L("length"),
+                L("equivalent_length"), L("d_ref")):
+        t.add_column(e(col))
+    for line in ch.lines:
+        a, b = (rotor_name(n, lang) for n in line.names)
+        t.add_row(str(line.index + 1), e(f"{a} – {b}"), e(_g(line.gear)), e(_g(line.c_input)),
+                  e(_g(line.total_length)), e(_g(line.equivalent_length)), e(_g(line.d_ref)))
+    console.print(t)
 
 
 def plot(r, path, title: str = "", lang: str = "en") -> None:

@@ -36,9 +36,11 @@ def _angle(phi: float | None, lang: str = "en") -> str:
     return text("angle", lang, deg=_g(math.degrees(phi)), pi=_g(phi / math.pi))
 
 
-def print_summary(r, title: str = "", source: str = "", console=None, lang: str = "en") -> None:
+def print_summary(r, title: str = "", source: str = "", console=None, lang: str = "en",
+                  motion: bool = False) -> None:
     """The segment table and the results, as the seed presents them, on a rich console; labels,
-    symbols and units in ``lang`` (en, ru: :mod:`flywheel.render.nomenclature_ci`)."""
+    symbols and units in ``lang`` (en, ru: :mod:`flywheel.render.nomenclature_ci`). ``motion``
+    (or angles asked in ``r.at``) adds ε(φ)'s extremes, the time law and the asked angles."""
     from rich.console import Console
     from rich.table import Table
 
@@ -59,6 +61,9 @@ def print_summary(r, title: str = "", source: str = "", console=None, lang: str 
         console.print(L("t2_balance", name=name, value=_g(val), work=_g(r.work_driving)))
     elif r.M_C is not None:
         console.print(L("t2_given", M_D=_g(r.M_D), M_C=_g(r.M_C)))
+    if r.power_found is not None and r.power is not None:   # the mean power needs steady motion
+        name = symbol("M_D" if r.power_found == "driving" else "M_C", lang)
+        console.print(L("t2_power", P=_g(r.power), name=name, T=_g(r.power / r.omega_mean)))
     if not r.steady:
         console.print(L("t2_unsteady", work=f"{r.work_end:.6g}", omega_end=_g(r.omega_end, ".6f"),
                         omega0=_g(r.omega0, ".6f")))
@@ -101,7 +106,51 @@ def print_summary(r, title: str = "", source: str = "", console=None, lang: str 
                   L("J_required_how"))
     if r.rim_mass is not None:
         t.add_row(L("rim_mass", R=_g(r.rim_radius)), _g(r.rim_mass), U("kg"), L("rim_mass_how"))
+    if r.flywheel_mass is not None:
+        t.add_row(L("flywheel_mass", k=_g(r.radius_of_gyration)), _g(r.flywheel_mass), U("kg"),
+                  L("flywheel_mass_how"))
+    if r.driving is None and r.energy_fluctuation_coefficient is not None:
+        t.add_row(L("energy_fluctuation_coefficient"), _g(r.energy_fluctuation_coefficient), "",
+                  "")
     console.print(t)
+    if (motion or r.at) and r.driving is not None:
+        _print_motion(r, console, lang)
+
+
+def _print_motion(r, console, lang: str) -> None:
+    """ε(φ)'s extremes, the cycle time, C_E, the phases and the asked angles (all from ``r``)."""
+    from rich.table import Table
+
+    def L(key: str, **fields) -> str:
+        return text(key, lang, **fields)
+
+    t = Table(title=L("t2_motion"))
+    for col in (L("quantity"), L("value"), L("unit"), ""):
+        t.add_column(col)
+    t.add_row(L("epsilon_max"), _g(r.epsilon_max), unit("rad/s²", lang),
+              L("at_angle", angle=_angle(r.phi_epsilon_max, lang)))
+    t.add_row(L("epsilon_min"), _g(r.epsilon_min), unit("rad/s²", lang),
+              L("at_angle", angle=_angle(r.phi_epsilon_min, lang)))
+    t.add_row(L("cycle_time"), _g(r.cycle_time), unit("s", lang), "")
+    if r.energy_fluctuation_coefficient is not None:
+        t.add_row(L("energy_fluctuation_coefficient"), _g(r.energy_fluctuation_coefficient), "",
+                  "")
+    console.print(t)
+    t = Table(title=L("t2_phases"))
+    for col, just in (("#", "right"), (L("phi_from"), "right"), (L("phi_to"), "right"),
+                      (L("trend"), "left"), (L("t_start"), "right"), (L("duration"), "right")):
+        t.add_column(col, justify=just, no_wrap=True)
+    for i, ph in enumerate(r.phases):
+        t.add_row(str(i), _g(math.degrees(ph.phi_start)), _g(math.degrees(ph.phi_end)),
+                  L(f"trend_{ph.trend}"), _g(ph.t_start), _g(ph.duration))
+    console.print(t)
+    if r.at:
+        t = Table(title=L("t2_at"))
+        for col in (L("phi_col"), L("omega_col"), L("epsilon_col"), L("t")):
+            t.add_column(col, justify="right", no_wrap=True)
+        for a in r.at:
+            t.add_row(_g(math.degrees(a.phi)), _g(a.omega, ".6f"), _g(a.epsilon), _g(a.t))
+        console.print(t)
 
 
 def plot(r, path, title: str = "", lang: str = "en") -> None:
@@ -120,7 +169,18 @@ def plot(r, path, title: str = "", lang: str = "en") -> None:
     if r.driving is not None:
         s = sample(r)
         x = [math.degrees(p) for p in s["phi"]]
-        fig, axes = plt.subplots(3, 1, figsize=(8, 9), sharex=True)
+        fig, axes = plt.subplots(4, 1, figsize=(8, 11.5), sharex=True)
+        ax = axes[3]
+        ax.plot(x, s["epsilon"], color="tab:purple", label=L("t2_plot_epsilon"))
+        ax.axhline(0.0, color="grey", linewidth=0.6)
+        for value, phi, key, marker in ((r.epsilon_max, r.phi_epsilon_max, "t2_plot_epsilon_max",
+                                         "^"),
+                                        (r.epsilon_min, r.phi_epsilon_min, "t2_plot_epsilon_min",
+                                         "v")):
+            ax.plot([math.degrees(phi)], [value], marker, color="tab:purple",
+                    label=L(key, value=f"{value:.6g}", deg=f"{math.degrees(phi):.6g}"))
+        ax.set_ylabel(L("t2_plot_epsilon_axis"))
+        ax.legend(fontsize=8)
         ax = axes[0]
         ax.plot(x, s["M_D"], label=L("t2_plot_MD"))
         ax.plot(x, s["M_C"], label=L("t2_plot_MC"))
@@ -145,8 +205,9 @@ def plot(r, path, title: str = "", lang: str = "en") -> None:
     ax.axhline(r.omega_mean, color="grey", linestyle="--", linewidth=0.8,
                label=L("t2_plot_omega_mean"))
     ax.set_ylabel(L("t2_plot_omega_axis"))
-    ax.set_xlabel(L("t2_plot_phi_axis") if r.driving is not None or not math.isnan(r.rows[0].phi)
-                  else L("t2_plot_crossing_no"))
+    axes[-1].set_xlabel(L("t2_plot_phi_axis")
+                        if r.driving is not None or not math.isnan(r.rows[0].phi)
+                        else L("t2_plot_crossing_no"))
     ax.legend()
     for a in axes:
         if a is not None:
