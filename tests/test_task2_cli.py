@@ -385,7 +385,7 @@ def test_lang_ru_seed_words():
     res = run("--lang", "ru", "--profile", "rectangle", "--delta", 0.05)
     assert res.exit_code == 0, res.output
     out = " ".join(res.stdout.split())
-    for text in ("Задача 2 (seed 002), момент сопротивления — прямоугольник",
+    for text in ("Задача 2, момент сопротивления — прямоугольник",
                  "баланс работ за цикл ∮M_Д dφ = ∮M_С dφ даёт M_С = 60 Н·м",
                  "граница", "об/мин при φ =", "мощность", "J_пр для δ = 0.05"):
         assert text in out, text

@@ -29,7 +29,7 @@ def aggregate_command(
                                "shafts), and each shaft's equivalent length (the JSON always "
                                "has them)."),
 ) -> None:
-    """Two-mass machine aggregate (seed 003) or a chain of rotors: coefficients a_ij, c_ij,
+    """Two-mass machine aggregate (Ефанов ch. 9) or a chain of rotors: coefficients a_ij, c_ij,
     natural frequencies, steady forced vibration, start-up."""
     import math
 

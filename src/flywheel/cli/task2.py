@@ -54,7 +54,7 @@ def _check_at(at, cycle_deg: float) -> None:
 def task2_command(
     profile: Optional[str] = typer.Option(
         None, "--profile",
-        help="Seed 002 resistance graph: triangle (π/2…3π/2, peak in the middle) or rectangle "
+        help="The resistance graph of the textbook task «Задача 2»: triangle (π/2…3π/2, peak in the middle) or rectangle "
              "(π/2…π) (default triangle)."),
     md: Optional[float] = typer.Option(None, "--md", help="Constant driving moment M_D [N·m] "
                                        "(default 15)."),

@@ -73,10 +73,11 @@ TERMS: dict[str, Term] = {
     "angle": T("φ", "deg", "φ = {deg}° ({pi}π rad)", "φ = {deg}° ({pi}π рад)"),
     "angle_unknown": T("", "", "(angle not given)", "(угол не задан)"),
     # -- task 2: headings and sentences -------------------------------------------------------
-    "t2_seed_title": T("", "", "Seed 002, {profile} resistance moment",
-                       "Задача 2 (seed 002), момент сопротивления — {profile}"),
-    "t2_seed_source": T("", "", "seed 002_10afb132413d2537.txt",
-                        "исходный документ 002_10afb132413d2537.txt"),
+    "t2_seed_title": T("", "", "«Задача 2», {profile} resistance moment",
+                       "Задача 2, момент сопротивления — {profile}"),
+    "t2_seed_source": T("", "", "textbook task «Задача 2» (steady motion under given moment "
+                        "graphs, table 27)", "задача «Задача 2» (установившееся движение "
+                        "при заданных графиках моментов, табл. 27)"),
     "triangle": T("", "", "triangle", "треугольник"),
     "rectangle": T("", "", "rectangle", "прямоугольник"),
     "t2_balance": T("", "", "cycle balance ∮M_D dφ = ∮M_C dφ gives {name} = {value} N·m "
