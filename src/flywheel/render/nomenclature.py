@@ -98,6 +98,13 @@ TERMS: dict[str, Term] = {
     "F_{load}": _t("F", "$F$", "N", "force {x}", "сила {x}"),
     "slider_travel": _t("S", "$S$", "m", "slider travel S from its outer dead centre",
                         "перемещение ползуна S от внешней мёртвой точки"),
+    # tabulated kinematics (summary.json of a [tabulated] case)
+    "kinematics": _t("", "", "", "how the kinematics are given (\"tabulated\")",
+                     "как заданы кинематические характеристики (по таблице)"),
+    "tabulated_interpolation": _t("", "", "", "interpolation of J_II between the positions",
+                                  "интерполяция J_II между положениями"),
+    "tabulated_positions_deg": _t("φ", r"$\varphi$", "deg", "crank angles of the table's positions",
+                                  "углы поворота кривошипа в положениях таблицы"),
     # what a case gives (flywheel check)
     "link_mass": _t("m", "$m$", "kg", "mass", "масса"),
     "J_S": _t("J_S", "$J_S$", "kg·m²", "moment of inertia about the centroid J_S",
