@@ -44,8 +44,7 @@ def test_every_summary_key_resolves(results):
                 nm.term(key)
         for p in a["points"].values():
             for key in p:
-                if key not in ("v_x", "v_y", "a_x", "a_y"):
-                    nm.term(key)
+                nm.term(key)
         for lk in a["links"].values():
             for key in lk:
                 nm.term(key)
@@ -108,3 +107,68 @@ def test_figure_text_has_no_literal_underscores_and_one_unit_style(lang):
                     assert not re.search(r"\b(rad|kg|deg|MPa|N·m)\b", plain), (name, text)
         finally:
             fig.clear()
+
+
+# -- docs/results.md against the table --------------------------------------------------------------
+def _doc_tables() -> list[list[dict[str, str]]]:
+    """The Markdown tables of docs/results.md whose first column is "key" or "column", as rows
+    {header: cell}."""
+    tables, rows, header = [], None, None
+    for line in (ROOT / "docs" / "results.md").read_text(encoding="utf-8").splitlines():
+        cells = [c.strip() for c in re.split(r"(?<!\\)\|", line.strip())[1:-1]] if line.startswith("|") else None
+        if cells is None:
+            rows = header = None
+            continue
+        if header is None:
+            header = cells
+            rows = [] if header[0] in ("key", "column") else None
+            if rows is not None:
+                tables.append(rows)
+        elif rows is not None and not set(cells[0]) <= set("-"):
+            rows.append(dict(zip(header, cells)))
+    return tables
+
+
+def _doc_keys(cell: str) -> list[str]:
+    """The keys of a row: its `backticked` names, a `*` standing for any part."""
+    import fnmatch
+
+    keys = []
+    for k in re.findall(r"`([^`]+)`", cell):
+        found = [t for t in nm.TERMS if fnmatch.fnmatchcase(t, k)] if "*" in k else [k]
+        assert found, f"docs/results.md: `{k}` matches nothing in the nomenclature"
+        keys += found
+    return keys
+
+
+def _printed(u: str) -> str:
+    return "–" if u == "-" else u
+
+
+def test_docs_results_tables_agree_with_the_nomenclature():
+    tables = _doc_tables()
+    assert len(tables) == 3                              # summary.json, its at entries, table.csv
+    for rows in tables:
+        for row in rows:
+            keys = _doc_keys(row.get("key", row.get("column", "")))
+            assert keys, row
+            for k in keys:
+                nm.term(k)                               # KeyError: not in the nomenclature
+            units = list(dict.fromkeys(_printed(nm.si_unit(k)) for k in keys if nm.si_unit(k)))
+            stated = [u for u in (x.strip() for x in row["unit"].split(",")) if u]
+            assert stated == units, (keys, row["unit"])
+            if row.get("symbol"):
+                symbols = {s for k in keys for s in (nm.symbol(k, "ru"), nm.symbol(k, "en"))}
+                assert set(x.strip() for x in row["symbol"].split(", ")) == symbols, (keys, row["symbol"])
+
+
+def test_docs_results_names_every_output(results):
+    """Every summary.json key and every table.csv column of the bundled cases is in the doc."""
+    summary, at, columns = _doc_tables()
+    documented = {nm.term(k)[0] for rows in (summary, at) for row in rows for k in _doc_keys(row["key"])}
+    doc = results.to_document()["results"]
+    for key in doc:
+        assert nm.term(key)[0] in documented, key
+    families = {nm.term(k)[0] for row in columns for k in _doc_keys(row["column"])}
+    for key in results.columns:
+        assert nm.term(key)[0] in families, key
