@@ -3,6 +3,7 @@ from __future__ import annotations
 
 import json
 import math
+import re
 import subprocess
 import sys
 from pathlib import Path
@@ -42,6 +43,34 @@ def test_run_writes_every_output(tmp_path):
     assert labels[3] == "90° = 5 outer d.c."
     assert len(labels) == 12
     assert not list(tmp_path.glob(".out.tmp-*"))
+
+
+@pytest.mark.parametrize("case", ["compressor.toml", "press.toml"])
+def test_russian_summary_and_report_are_russian(tmp_path, case):
+    """--lang ru: units, row labels, the standard positions and the closing line in Russian;
+    the numbers the same as in English."""
+    res = run("run", CASES / case, "--out", tmp_path / "o", "--no-plots", "--points", "360",
+              "--lang", "ru", "--at", "75")
+    assert res.exit_code == 0, res.output
+    report = (tmp_path / "o" / "report.md").read_text(encoding="utf-8")
+    summary = res.stdout.split("записано:")[0]
+    assert "записано:" in res.stdout and "written" not in res.stdout
+    for text in (summary, report):
+        assert "рад/с" in text and "кг·м²" in text and "Дж" in text
+        for english in ("rad/s", "kg·m²", "N·m", " d.c.", "[deg]", "M_PRD", "J_PRI", "Merzalov",
+                        "steel", "gravity ", "gas ", "at 2", "flywheel", "rim"):
+            assert english not in text.split("предупреждение:")[0].split("## Предупреждения")[0], english
+    assert "ω_ср" in summary and "M_Д" in report and "ΔT_нб" in report
+    en = run("run", CASES / case, "--out", tmp_path / "e", "--no-plots", "--points", "360", "--at", "75")
+    assert en.exit_code == 0
+
+    def numbers(md: str) -> list[str]:
+        """The numbers in the tables (the first cell of a row, a label, left out)."""
+        return [c.strip() for ln in md.splitlines() if ln.startswith("| ")
+                for c in ln.split("|")[2:] if re.fullmatch(r"-?[\d.e+-]+", c.strip())]
+
+    assert numbers(report) == numbers((tmp_path / "e" / "report.md").read_text(encoding="utf-8"))
+    assert len(numbers(report)) > 100
 
 
 def test_json_contract(tmp_path):

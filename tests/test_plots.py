@@ -144,8 +144,8 @@ def test_positions(results, made):
     assert _legend_texts(fig)[:4] == ["$x_{A}$", "$x_{S2}$", "$x_{C}$", "$x_{S4}$"]
     assert [t.get_text() for t in ax_y.get_legend().get_texts()] == [
         "$y_{A}$", "$y_{B}$", "$y_{S2}$", "$y_{S4}$"]
-    assert ax_s.get_ylabel() == "slider travel S, m"
-    assert ax_s.get_xlabel() == r"crank angle $\varphi$, °"
+    assert ax_s.get_ylabel() == "$S$, m"
+    assert ax_s.get_xlabel() == r"$\varphi$, °"
     assert len(ax_s.lines) == 2                       # sliders 3 and 5
     for line in ax_s.lines:                           # each travel spans the stroke 2·l1
         y = line.get_ydata()
@@ -185,7 +185,7 @@ def test_indicator(results, made):
     made(fig)
     ax = fig.axes[0]
     assert "cylinder LP" in ax.get_title()
-    assert ax.get_xlabel().endswith("s, –")
+    assert ax.get_xlabel() == "$s$, –"
     texts = _legend_texts(fig)
     assert texts == ["piston moving towards the head", "piston moving away from the head",
                      "table points: towards the head", "table points: away from the head"]
@@ -194,7 +194,7 @@ def test_indicator(results, made):
     # the curves are what the program used: the grid's p/p_max, every node once
     curves = [ln for ln in ax.lines if ln.get_linestyle() == "-" and len(ln.get_xdata()) > 20]
     assert sum(len(c.get_xdata()) for c in curves) == results.phi.size
-    assert [a.get_ylabel() for a in ax.child_axes] == ["p, MPa"]     # secondary axis
+    assert [a.get_ylabel() for a in ax.child_axes] == ["$p$, MPa"]     # secondary axis
 
 
 def test_piston_forces_mark_the_report_angle(results, made):
@@ -204,7 +204,7 @@ def test_piston_forces_mark_the_report_angle(results, made):
     # seed 000 prints F_B(120°) = 2993 N, F_C(120°) = 3957 N
     assert "HP at φ = 120°: 2993 N" in texts
     assert "LP at φ = 120°: 3957 N" in texts
-    assert fig.axes[0].get_ylabel() == "force, N"
+    assert fig.axes[0].get_ylabel() == "$F$, N"
 
 
 def test_reduced_moments(results, made):
@@ -227,8 +227,10 @@ def test_works_marks_the_extremes_of_delta_T_I(results, made):
     texts = _legend_texts(fig)
     assert len(texts) == 7                            # A_D, A_C, T_II, ΔT_I, A, max, min
     sc = results.scalars
-    assert rf"$\Delta T_I$ max = {sc['delta_T_I_max']:.5g} J at φ = {sc['phi_delta_T_I_max_deg']:.1f}°" in texts
-    assert rf"$\Delta T_I$ min = {sc['delta_T_I_min']:.5g} J at φ = {sc['phi_delta_T_I_min_deg']:.1f}°" in texts
+    assert (rf"$\Delta T_{{I\,max}}$ = {sc['delta_T_I_max']:.5g} J at φ = "
+            rf"{sc['phi_delta_T_I_max_deg']:.1f}°") in texts
+    assert (rf"$\Delta T_{{I\,min}}$ = {sc['delta_T_I_min']:.5g} J at φ = "
+            rf"{sc['phi_delta_T_I_min_deg']:.1f}°") in texts
     marker = next(ln for ln in ax.lines if ln.get_marker() == "^")
     assert marker.get_xdata()[0] == pytest.approx(sc["phi_delta_T_I_max_deg"])
     assert ax.get_ylabel() == "work, energy, J"
@@ -258,7 +260,7 @@ def test_scheme(results, made):
     made(fig)
     (ax,) = _data_axes(fig)
     assert ax.get_aspect() == 1.0
-    assert (ax.get_xlabel(), ax.get_ylabel()) == ("x, m", "y, m")
+    assert (ax.get_xlabel(), ax.get_ylabel()) == ("$x$, m", "$y$, m")
     labels = {t.get_text() for t in ax.texts}
     assert {"O", "A", "B", "C", "S2", "S4"} <= labels          # every named point
     assert {"1", "2", "3", "4", "5"} <= labels                  # every link

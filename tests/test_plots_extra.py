@@ -8,6 +8,7 @@ import pytest
 
 from flywheel.cases.run import load_case
 from flywheel.dynamics.pipeline import analyze
+from flywheel.render import nomenclature as nm
 from flywheel.render import plots_extra
 
 CASES = Path(__file__).resolve().parents[1] / "cases"
@@ -31,15 +32,16 @@ def _check_energy_mass(results, lang="en"):
     s = results.scalars
     fig = plots_extra.figure_energy_mass(results, lang)
     t = plots_extra.TEXT[lang]
+    J_axis, T_axis = nm.axis("J_II", lang), plots_extra._f(t, "T", u=nm.unit_of("A", lang))
     try:
         axes = {a.get_label(): a for a in fig.axes}
         assert set(axes) == {"full", "zoom", "merzalov"}
         full, zoom, merz = axes["full"], axes["zoom"], axes["merzalov"]
-        assert full.get_xlabel() == t["J"] and full.get_ylabel() == t["T"] == zoom.get_ylabel()
+        assert full.get_xlabel() == J_axis and full.get_ylabel() == T_axis == zoom.get_ylabel()
         curve, tmax, tmin, origin = (_by_gid(full, g) for g in ("curve", "tangent_max", "tangent_min", "origin"))
         labels = [x.get_text() for x in full.get_legend().get_texts()]
-        assert any("ψ_max" in x for x in labels) and any("ψ_min" in x for x in labels)
-        assert t["origin"] in labels
+        assert any(r"\psi_{max}" in x for x in labels) and any(r"\psi_{min}" in x for x in labels)
+        assert plots_extra._f(t, "origin", J="$J_I$", T="$T_0$") in labels
         J, A = curve.get_xdata(), curve.get_ydata()
         (x0, x1), (a0, a1) = tmax.get_xdata(), tmax.get_ydata()
         (y0, y1), (b0, b1) = tmin.get_xdata(), tmin.get_ydata()
@@ -61,10 +63,10 @@ def _check_energy_mass(results, lang="en"):
         dims = [a for a in full.texts if getattr(a, "arrow_patch", None) is not None
                 and a.xy[0] == 0.0 and a.xyann[0] == pytest.approx(x_meet, rel=1e-6)]
         assert len(dims) == 1
-        assert any(x.get_text().startswith(f"J_I = {s['J_required_exact']:.5g}") for x in full.texts)
-        assert zoom.get_xlabel() == t["J"]
-        assert merz.get_xlabel() == t["phi"]
-        assert "ΔT_нб" in " ".join(x.get_text() for x in merz.get_legend().get_texts())
+        assert any(x.get_text().startswith(f"$J_I$ = {s['J_required_exact']:.5g}") for x in full.texts)
+        assert zoom.get_xlabel() == J_axis
+        assert merz.get_xlabel() == nm.axis("phi_deg", lang) == r"$\varphi$, °"
+        assert r"$\Delta T_{нб}$" in " ".join(x.get_text() for x in merz.get_legend().get_texts())
     finally:
         plots_extra._plt().close(fig)
 
@@ -99,7 +101,7 @@ def test_transients_plot_marks_the_steady_state(results):
     try:
         (ax,) = fig.axes
         labels = " ".join(x.get_text() for x in ax.get_legend().get_texts())
-        assert f"ω_s = {st['omega_final_predicted']:.5g}" in labels
+        assert rf"$\omega_s$ = {st['omega_final_predicted']:.5g}" in labels
         assert f"{st['time_to_steady']:.4g}" in labels
     finally:
         plots_extra._plt().close(fig)
@@ -108,8 +110,8 @@ def test_transients_plot_marks_the_steady_state(results):
 def test_time_law_and_transients(results, tmp_path):
     fig = plots_extra.figure_time_law(results, lang="ru")
     try:
-        assert [a.get_ylabel() for a in fig.axes] == ["ω [рад/с]", "ε [рад/с²]"]
-        assert fig.axes[1].get_xlabel() == "t [с]"
+        assert [a.get_ylabel() for a in fig.axes] == [r"$\omega$, рад/с", r"$\varepsilon$, рад/с²"]
+        assert fig.axes[1].get_xlabel() == "$t$, с"
     finally:
         plots_extra._plt().close(fig)
     from flywheel.render import plots

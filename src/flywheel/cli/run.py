@@ -99,6 +99,6 @@ def run_command(
         from flywheel.render.summary import print_summary
 
         print_summary(results, lang=lang)
-        typer.echo(f"written: {out}/ (summary.json, table.csv, positions.csv, report.md"
-                   + ("" if no_plots else ", plots/*.png")
+        typer.echo(f"{'записано' if lang == 'ru' else 'written'}: {out}/ (summary.json, table.csv, "
+                   "positions.csv, report.md" + ("" if no_plots else ", plots/*.png")
                    + (", mechanism.gif" if animate else "") + ")")

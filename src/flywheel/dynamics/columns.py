@@ -1,5 +1,7 @@
-"""The columns of table.csv (and positions.csv): every array of a run with its unit and its
-English and Russian description — the one place where both routes name their quantities.
+"""The columns of table.csv (and positions.csv): every array of a run by its key, with its SI
+unit — the one place where both routes list their quantities. Their names and symbols are the
+nomenclature's (render/nomenclature.py, by key); tests/test_nomenclature.py checks that every
+key resolves there with the same unit.
 """
 from __future__ import annotations
 
@@ -10,7 +12,7 @@ from flywheel.dynamics.results import (Column, EnergyResult, LoadsResult, Motion
 
 
 def _phi(phi: np.ndarray) -> dict[str, Column]:
-    return {"phi_deg": Column(np.degrees(phi), "deg", "crank angle φ", "угол φ")}
+    return {"phi_deg": Column(np.degrees(phi), "deg")}
 
 
 def _kinematics(kin, crank: str) -> dict[str, Column]:
@@ -20,38 +22,33 @@ def _kinematics(kin, crank: str) -> dict[str, Column]:
     for name, pm in kin.points.items():
         if np.all(pm.v_q == 0) and np.all(pm.a_q == 0):
             continue
-        cols[f"x_{name}"] = Column(pm.r[:, 0], "m", f"x of {name}", f"x точки {name}")
-        cols[f"y_{name}"] = Column(pm.r[:, 1], "m", f"y of {name}", f"y точки {name}")
-        cols[f"vq_{name}"] = Column(np.hypot(*pm.v_q.T), "m/rad", f"|v_q| of {name}",
-                                    f"аналог скорости {name}")
-        cols[f"vqx_{name}"] = Column(pm.v_q[:, 0], "m/rad", f"v_qx of {name}", f"v_qx {name}")
-        cols[f"vqy_{name}"] = Column(pm.v_q[:, 1], "m/rad", f"v_qy of {name}", f"v_qy {name}")
-        cols[f"aq_{name}"] = Column(np.hypot(*pm.a_q.T), "m/rad²", f"|a_q| of {name}",
-                                    f"аналог ускорения {name}")
-        cols[f"aqx_{name}"] = Column(pm.a_q[:, 0], "m/rad²", f"a_qx of {name}", f"a_qx {name}")
-        cols[f"aqy_{name}"] = Column(pm.a_q[:, 1], "m/rad²", f"a_qy of {name}", f"a_qy {name}")
+        cols[f"x_{name}"] = Column(pm.r[:, 0], "m")
+        cols[f"y_{name}"] = Column(pm.r[:, 1], "m")
+        cols[f"vq_{name}"] = Column(np.hypot(*pm.v_q.T), "m/rad")
+        cols[f"vqx_{name}"] = Column(pm.v_q[:, 0], "m/rad")
+        cols[f"vqy_{name}"] = Column(pm.v_q[:, 1], "m/rad")
+        cols[f"aq_{name}"] = Column(np.hypot(*pm.a_q.T), "m/rad²")
+        cols[f"aqx_{name}"] = Column(pm.a_q[:, 0], "m/rad²")
+        cols[f"aqy_{name}"] = Column(pm.a_q[:, 1], "m/rad²")
     for name, lm in kin.links.items():
         if name == crank or (np.all(lm.omega_q == 0) and np.all(lm.eps_q == 0)):
             continue
-        cols[f"theta_{name}"] = Column(np.degrees(lm.theta), "deg", f"angle of link {name}",
-                                       f"угол звена {name}")
-        cols[f"omega_q_{name}"] = Column(lm.omega_q, "-", f"ω_q of link {name}", f"аналог угл. скорости {name}")
-        cols[f"eps_q_{name}"] = Column(lm.eps_q, "1/rad", f"ε_q of link {name}",
-                                       f"аналог угл. ускорения {name}")
+        cols[f"theta_{name}"] = Column(np.degrees(lm.theta), "deg")
+        cols[f"omega_q_{name}"] = Column(lm.omega_q, "-")
+        cols[f"eps_q_{name}"] = Column(lm.eps_q, "1/rad")
     return cols
 
 
 def _loads(ld: LoadsResult) -> dict[str, Column]:
-    """Each cylinder's travel, pressure and force; each technological force."""
+    """Each cylinder's relative travel from the head, gas pressure and the gas force on its
+    piston; each technological force."""
     cols: dict[str, Column] = {}
     for c in ld.cylinders:
-        cols[f"s_{c.name}"] = Column(c.s, "-", f"relative piston travel from the head, {c.name}",
-                                     f"относительное перемещение поршня {c.name}")
-        cols[f"p_{c.name}"] = Column(c.p, "Pa", f"gas pressure, {c.name}", f"давление {c.name}")
-        cols[f"F_{c.name}"] = Column(c.F, "N", f"gas force on piston {c.piston}",
-                                     f"сила давления газа на поршень {c.piston}")
+        cols[f"s_{c.name}"] = Column(c.s, "-")
+        cols[f"p_{c.name}"] = Column(c.p, "Pa")
+        cols[f"F_{c.name}"] = Column(c.F, "N")
     for name, F in ld.forces.items():
-        cols[f"F_{name}"] = Column(F, "N", f"technological force {name}", f"сила {name}")
+        cols[f"F_{name}"] = Column(F, "N")
     return cols
 
 
@@ -60,29 +57,24 @@ def _dynamics(ld: LoadsResult, red: ReductionResult, en: EnergyResult,
     """The stages both routes share: J_II and its parts, the moments, works, energies, motion."""
     cols: dict[str, Column] = {}
     for name, J in red.J_parts.items():
-        cols[f"J_{name}"] = Column(J, "kg·m²", f"link {name}'s share of J_II", f"вклад звена {name} в J_II")
+        cols[f"J_{name}"] = Column(J, "kg·m²")
     for name, dJ in red.dJ_parts.items():
-        cols[f"dJ_{name}"] = Column(dJ, "kg·m²/rad", f"link {name}'s share of dJ_II/dφ",
-                                    f"вклад звена {name} в dJ_II/dφ")
-    cols["J_II"] = Column(red.J_II, "kg·m²", "reduced inertia of the second group J_II",
-                          "приведённый момент инерции II группы")
-    cols["dJ_II"] = Column(red.dJ_II, "kg·m²/rad", "dJ_II/dφ", "производная J_II")
+        cols[f"dJ_{name}"] = Column(dJ, "kg·m²/rad")
+    cols["J_II"] = Column(red.J_II, "kg·m²")
+    cols["dJ_II"] = Column(red.dJ_II, "kg·m²/rad")
     for name, M in ld.M_parts.items():
-        cols[f"M {name}"] = Column(M, "N·m", f"reduced moment: {name}", f"приведённый момент: {name}")
-    cols["M_known"] = Column(en.M_known, "N·m", "sum of the given loads' reduced moments",
-                             "суммарный приведённый момент заданных сил")
-    cols["M_sum"] = Column(en.M_sum, "N·m", "total reduced moment M_Σ", "суммарный приведённый момент")
-    cols["A_D"] = Column(en.A_D, "J", "work of the driving moment A_D", "работа движущих сил")
-    cols["A_C"] = Column(en.A_C, "J", "work of the resistance A_C", "работа сил сопротивления")
-    cols["A"] = Column(en.A, "J", "total work A", "суммарная работа")
-    cols["T_II"] = Column(en.T_II, "J", "kinetic energy of the second group T_II", "кин. энергия II группы")
-    cols["dT_I"] = Column(en.dT_I, "J", "change of kinetic energy of the first group ΔT_I",
-                          "изменение кин. энергии I группы")
-    cols["omega"] = Column(mo.omega, "rad/s", "crank angular velocity ω", "угловая скорость звена приведения")
-    cols["epsilon"] = Column(mo.epsilon, "rad/s²", "crank angular acceleration ε", "угловое ускорение")
-    cols["omega_exact"] = Column(mo.omega_exact, "rad/s", "ω with the exact flywheel size",
-                                 "ω при точном моменте инерции маховика")
-    cols["t"] = Column(mo.t, "s", "time t(φ)", "время")
+        cols[f"M {name}"] = Column(M, "N·m")
+    cols["M_known"] = Column(en.M_known, "N·m")
+    cols["M_sum"] = Column(en.M_sum, "N·m")
+    cols["A_D"] = Column(en.A_D, "J")
+    cols["A_C"] = Column(en.A_C, "J")
+    cols["A"] = Column(en.A, "J")
+    cols["T_II"] = Column(en.T_II, "J")
+    cols["dT_I"] = Column(en.dT_I, "J")
+    cols["omega"] = Column(mo.omega, "rad/s")
+    cols["epsilon"] = Column(mo.epsilon, "rad/s²")
+    cols["omega_exact"] = Column(mo.omega_exact, "rad/s")
+    cols["t"] = Column(mo.t, "s")
     return cols
 
 
@@ -95,19 +87,14 @@ def linkage_columns(phi: np.ndarray, kin, crank: str, ld: LoadsResult, red: Redu
 
 def tabulated_columns(phi: np.ndarray, tab: TabulatedResult, ld: LoadsResult,
                       red: ReductionResult, en: EnergyResult, mo: MotionResult) -> dict[str, Column]:
-    """table.csv of the tabulated route: φ, the interpolated table, the shared stages, then the
-    seed's static and dynamic moments."""
+    """table.csv of the tabulated route: φ, the interpolated table (|v_q| of its points, ω_q of
+    its links), the shared stages, then the seed's static and dynamic moments."""
     cols = _phi(phi)
     for name, v in tab.v_q.items():
-        cols[f"vq_{name}"] = Column(v, "m", f"|v_q| of {name} (tabulated)",
-                                    f"аналог скорости {name} (по таблице)")
+        cols[f"vq_{name}"] = Column(v, "m/rad")
     for name, w in tab.omega_q.items():
-        cols[f"omega_q_{name}"] = Column(w, "-", f"|ω_q| of link {name} (tabulated)",
-                                         f"аналог угл. скорости {name} (по таблице)")
+        cols[f"omega_q_{name}"] = Column(w, "-")
     cols.update(_dynamics(ld, red, en, mo))
-    cols["M_st"] = Column(tab.M_st, "N·m", "static moment Мст = −Σ reduced moments of the loads "
-                                           "(resisting positive)", "приведённый момент сил статического "
-                                           "сопротивления Мст")
-    cols["M_dyn"] = Column(tab.M_dyn, "N·m", "dynamic moment Мдин = ω_m²/2·dJ_II/dφ",
-                           "динамический момент Мдин")
+    cols["M_st"] = Column(tab.M_st, "N·m")
+    cols["M_dyn"] = Column(tab.M_dyn, "N·m")
     return cols

@@ -17,12 +17,10 @@ UNITS = "SI (m, kg, s, rad, N, N·m, J, kg·m²); angles *_deg in degrees"
 
 @dataclass(frozen=True)
 class Column:
-    """An array on the grid with its unit and description (English, Russian)."""
+    """An array on the grid with its SI unit (its name: render/nomenclature.py, by key)."""
 
     values: np.ndarray
     unit: str
-    label: str
-    label_ru: str = ""
 
 
 @dataclass(frozen=True)

@@ -3,7 +3,7 @@
 The graphical-analytical way of the course: the kinematics come as a table read off velocity
 plans at a few crank positions instead of a mechanism. A case gives, per position,
 
-* the velocity analogues |V_q| = V/ω1 [m] of the points that carry mass or force,
+* the velocity analogues |V_q| = V/ω1 [m/rad] of the points that carry mass or force,
 * the angular-velocity analogues ω_q = ω_i/ω1 [-] of the links that turn,
 * the loads: forces F [N] at those points with the angle α [deg] between each force and its
   point's velocity, and reduced moments given outright [N·m],

@@ -53,8 +53,8 @@ def write_animation(results, path: Path, lang: str = "en", frames: int = FRAMES,
         ax.set_xlim(mid[0] - half, mid[0] + half)
         ax.set_ylim(mid[1] - half, mid[1] + half)
         ax.set_aspect("equal", adjustable="box")
-        ax.set_xlabel(plots._t(lang, "x"))
-        ax.set_ylabel(plots._t(lang, "y"))
+        ax.set_xlabel(plots.nm.axis("x", lang))
+        ax.set_ylabel(plots.nm.axis("y", lang))
         fixed = set(ax.get_children())
         title = _TITLE.get(lang, _TITLE["en"])
         from matplotlib.backends.backend_agg import FigureCanvasAgg

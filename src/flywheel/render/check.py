@@ -4,10 +4,19 @@ from __future__ import annotations
 
 import math
 
+from flywheel.render import nomenclature as nm
+
 
 def _g(x: float) -> str:
     """6 significant digits; round-off below 1e-12 shown as 0."""
     return f"{0.0 if abs(x) < 1e-12 else x:.6g}"
+
+
+def _crank_line(report, m) -> str:
+    """n1, ω_m, δ and which constant moment balances the cycle."""
+    return (f"{nm.name('crank_speed')} = {report.crank_speed_rps:.6g} {nm.unit_of('crank_speed')}, "
+            f"{nm.symbol('omega_mean')} = {m.omega_mean:.6g} {nm.unit_of('omega_mean')}, "
+            f"{nm.symbol('delta')} = {m.delta:g}, balance: constant {m.balance} moment")
 
 
 def _table(title: str, columns):
@@ -37,9 +46,7 @@ def print_check(report, console=None) -> None:
     m = case.machine
     console.print(f"[bold]{case.title or 'case'}[/bold]  ({case.source})" if case.source
                   else f"[bold]{case.title or 'case'}[/bold]")
-    console.print(f"crank speed n1 = {report.crank_speed_rps:.6g} rev/s, "
-                  f"ω_m = {m.omega_mean:.6g} rad/s, δ = {m.delta:g}, "
-                  f"balance: constant {m.balance} moment")
+    console.print(_crank_line(report, m))
     c = mech.crank
     t = Table(title="Mechanism", show_lines=False)
     for col in ("group", "links", "points", "data"):
@@ -66,23 +73,25 @@ def print_check(report, console=None) -> None:
     console.print(t)
 
     if case.links:
-        t = _table("Links", ("link", "mass [kg]", "J_S [kg·m²]", "centroid"))
+        t = _table("Links", ("link", nm.heading("link_mass", label=nm.name("link_mass")),
+                             nm.heading("J_S"), "centroid"))
         for name, lk in case.links.items():
             t.add_row(name, f"{lk.mass:g}" if lk.mass else "—", f"{lk.J_S:g}", lk.centroid or "—")
         console.print(t)
     if m.first_group:
         console.print("first group (on the crank shaft): " + ", ".join(
-            f"{k} = {v:g} kg·m²" for k, v in m.first_group.items()))
+            f"{k} = {v:g} {nm.unit_of('J_first_group')}" for k, v in m.first_group.items()))
     if case.cylinders:
-        t = _table("Cylinders", ("name", "piston", "bore [m]", "p_max [MPa]", "head",
-                                 "interpolation", "points"))
+        t = _table("Cylinders", ("name", "piston", nm.heading("bore", label=nm.name("bore")),
+                                 nm.heading("p_max", si="MPa"), "head", "interpolation", "points"))
         for cy in case.cylinders:
             t.add_row(cy.name, cy.piston, f"{cy.bore:g}", f"{cy.p_max / 1e6:g}", cy.head,
                       cy.interpolation, str(len(cy.s)))
         console.print(t)
 
     if report.sliders:
-        t = _table("Dead centres", ("slider", "dead centre", "φ [deg]", "x along guide [m]"))
+        t = _table("Dead centres", ("slider", "dead centre", nm.heading("phi_deg"),
+                                    nm.heading("x", label="x along guide")))
         for sl in report.sliders:
             for dc in sl.dead_centres:
                 t.add_row(sl.slider, dc.kind, f"{math.degrees(dc.phi):.4f}", f"{dc.x:.6g}")
@@ -90,13 +99,16 @@ def print_check(report, console=None) -> None:
         console.print(t)
         angles = report.dead_centre_angles
         if angles:
-            t = _table("Points at the dead centres: |v_q| [m/rad] / |a_q| [m/rad²]",
-                       ("φ [deg]", *report.point_analogues))
+            vq = nm.heading("v_q", label=f"|{nm.symbol('v_q')}|")
+            aq = nm.heading("a_q", label=f"|{nm.symbol('a_q')}|")
+            t = _table(f"Points at the dead centres: {vq} / {aq}",
+                       (nm.heading("phi_deg"), *report.point_analogues))
             for i, a in enumerate(angles):
                 t.add_row(f"{math.degrees(a):.4f}", *(
                     f"{_g(v[i])} / {_g(acc[i])}" for v, acc in report.point_analogues.values()))
             console.print(t)
-            t = _table("Links at the dead centres: ω_q [-] / ε_q [1/rad]", ("φ [deg]", *report.link_analogues))
+            t = _table(f"Links at the dead centres: {nm.heading('omega_q')} / {nm.heading('epsilon_q')}",
+                       (nm.heading("phi_deg"), *report.link_analogues))
             for i, a in enumerate(angles):
                 t.add_row(f"{math.degrees(a):.4f}", *(
                     f"{_g(w[i])} / {_g(e[i])}" for w, e in report.link_analogues.values()))
@@ -109,18 +121,20 @@ def _print_tabulated(report, console) -> None:
     case, red = report.case, report.tabulated
     tab, m = case.tabulated, case.machine
     console.print(f"[bold]{case.title or 'case'}[/bold]" + (f"  ({case.source})" if case.source else ""))
-    console.print(f"crank speed n1 = {report.crank_speed_rps:.6g} rev/s, ω_m = {m.omega_mean:.6g} "
-                  f"rad/s, δ = {m.delta:g}, balance: constant {m.balance} moment; J_II by "
-                  f"{tab.interpolation}", markup=False)
-    kin = [("φ [deg]", tab.positions_deg)]
-    kin += [(f"|V_q| {k} [m]", v) for k, v in tab.points.items()]
-    kin += [(f"ω_q {k}", v) for k, v in tab.omega_q.items()]
-    reduced = [("φ [deg]", tab.positions_deg), ("Мст [N·m]", red.static_moments),
-               ("J_II [kg·m²]", red.J_II), ("dJ_II/dφ [kg·m²]", red.dJ_II),
-               ("Мдин [N·m]", red.dynamic_moments)]
+    console.print(f"{_crank_line(report, m)}; {nm.symbol('J_II')} by {tab.interpolation}",
+                  markup=False)
+    phi = nm.heading("phi_deg")
+    kin = [(phi, tab.positions_deg)]
+    kin += [(nm.heading(f"vq_{k}", label=f"|{nm.symbol(f'vq_{k}')}| {k}"), v) for k, v in tab.points.items()]
+    kin += [(nm.heading(f"omega_q_{k}", label=f"{nm.symbol(f'omega_q_{k}')} {k}"), v)
+            for k, v in tab.omega_q.items()]
+    reduced = [(phi, tab.positions_deg), (nm.heading("M_st"), red.static_moments),
+               (nm.heading("J_II"), red.J_II), (nm.heading("dJ_II"), red.dJ_II),
+               (nm.heading("M_dyn"), red.dynamic_moments)]
+    dJ = nm.symbol("dJ_II")
     for title, cols in (("Tabulated kinematics (one row per position)", kin),
-                        (f"Reduced to the crank (Мдин = ω_m²/2·dJ_II/dφ, dJ_II/dφ by "
-                         f"{tab.interpolation})", reduced)):
+                        (f"Reduced to the crank ({nm.symbol('M_dyn')} = {nm.symbol('omega_mean')}²/2·{dJ}, "
+                         f"{dJ} by {tab.interpolation})", reduced)):
         t = _table(title, ("#", *(c[0] for c in cols)))
         for k in range(len(tab.positions_deg)):
             t.add_row(str(k + 1), *(_g(float(v[k])) for _, v in cols))
@@ -129,7 +143,8 @@ def _print_tabulated(report, console) -> None:
         console.print("loads: " + ", ".join(
             [f"{f.name} at {f.point} ({f.interpolation})" for f in tab.forces]
             + [f"moment {mo.name} ({mo.interpolation})" for mo in tab.moments]), markup=False)
-    t = _table("Links", ("link", "mass [kg]", "at", "J [kg·m²]", "ω_q row"))
+    t = _table("Links", ("link", nm.heading("link_mass", label=nm.name("link_mass")), "at",
+                         nm.heading("link_J"), f"{nm.symbol('omega_q')} row"))
     for name, lk in tab.links.items():
         t.add_row(name, f"{lk.mass:g}" if lk.mass else "—", lk.point or "—", f"{lk.J:g}",
                   (lk.omega_q or name) if lk.J else "—")

@@ -27,8 +27,9 @@ from dataclasses import dataclass
 @dataclass(frozen=True)
 class Term:
     """One quantity: ``symbol`` (plain text, the course's), ``math`` (mathtext, for plots),
-    ``unit`` (SI, English), ``en`` and ``ru`` (names; ``{x}`` stands for the family member),
-    ``symbol_en`` (the English text's symbol where the course's subscript is Cyrillic)."""
+    ``unit`` (SI, English; "-" dimensionless, "" a record or a text that has no unit), ``en``
+    and ``ru`` (names; ``{x}`` stands for the family member), ``symbol_en`` and ``math_en`` (the
+    English text's symbol where the course's subscript is Cyrillic: ω_m, M_D)."""
 
     symbol: str
     math: str
@@ -36,14 +37,19 @@ class Term:
     en: str
     ru: str
     symbol_en: str = ""
+    math_en: str = ""
 
     def sym(self, lang: str) -> str:
         """The plain-text symbol in ``lang``."""
         return self.symbol_en if (lang == "en" and self.symbol_en) else self.symbol
 
+    def tex(self, lang: str) -> str:
+        """The mathtext symbol in ``lang``."""
+        return self.math_en if (lang == "en" and self.math_en) else self.math
 
-def _t(symbol, math, unit, en, ru, symbol_en=""):
-    return Term(symbol, math, unit, en, ru, symbol_en)
+
+def _t(symbol, math, unit, en, ru, symbol_en="", math_en=""):
+    return Term(symbol, math, unit, en, ru, symbol_en, math_en)
 
 
 # -- the table ------------------------------------------------------------------------------------
@@ -51,39 +57,66 @@ TERMS: dict[str, Term] = {
     # crank, speed, cycle
     "phi_deg": _t("φ", r"$\varphi$", "deg", "crank angle φ", "угол поворота кривошипа φ"),
     "crank_length": _t("l₁", r"$l_1$", "m", "crank length l1", "длина кривошипа l₁", "l1"),
+    "crank_speed": _t("n₁", r"$n_1$", "rev/s", "crank speed n1", "частота вращения кривошипа n₁",
+                      "n1"),
     "omega_mean": _t("ω_ср", r"$\omega_{ср}$", "rad/s", "mean angular velocity ω_m",
-                     "средняя угловая скорость ω_ср", "ω_m"),
+                     "средняя угловая скорость ω_ср", "ω_m", r"$\omega_m$"),
     "n_points": _t("N", "$N$", "-", "grid nodes over the cycle", "число узлов сетки по φ"),
-    "cycle_time": _t("T_ц", r"$T_ц$", "s", "cycle time", "время цикла", "T_c"),
+    "balance": _t("", "", "", "which constant moment balances the cycle (driving, resistance)",
+                  "какой постоянный момент уравновешивает цикл (движущий, сопротивления)"),
+    "cycle_time": _t("T_ц", r"$T_ц$", "s", "cycle time", "время цикла", "T_c", r"$T_c$"),
     # loads and works
     "cycle_work_resistance": _t("A_С", r"$A_С$", "J", "work of the resistance over a cycle A_C",
-                                "работа сил сопротивления за цикл A_С", "A_C"),
+                                "работа сил сопротивления за цикл A_С", "A_C", "$A_C$"),
     "driving_moment": _t("M_Д", r"$M_Д$", "N·m", "driving moment M_D (cycle mean)",
-                         "приведённый движущий момент M_Д", "M_D"),
+                         "приведённый движущий момент M_Д", "M_D", "$M_D$"),
+    "M_C": _t("M_С", r"$M_С$", "N·m", "reduced moment of the resistance M_C",
+              "приведённый момент сил сопротивления M_С", "M_C", "$M_C$"),
     "balancing_moment": _t("M_const", r"$M_{const}$", "N·m",
                            "constant moment from the cycle balance",
                            "постоянный момент из условия цикла"),
     "M_known": _t("M_изв", r"$M_{изв}$", "N·m", "sum of the given loads' reduced moments",
-                  "суммарный приведённый момент заданных сил", "M_known"),
+                  "суммарный приведённый момент заданных сил", "M_known", r"$M_{known}$"),
     "M_sum": _t("M_Σ", r"$M_\Sigma$", "N·m", "total reduced moment M_Σ",
                 "суммарный приведённый момент M_Σ"),
     "M {load}": _t("M", "$M$", "N·m", "reduced moment: {x}", "приведённый момент: {x}"),
-    "M_st": _t("M_ст", r"$M_{ст}$", "N·m", "static moment Мст = −Σ reduced moments of the "
+    "M_st": _t("M_ст", r"$M_{ст}$", "N·m", "static moment M_ст = −Σ reduced moments of the "
                "loads (resisting positive)", "приведённый момент сил статического "
                "сопротивления M_ст"),
-    "M_dyn": _t("M_дин", r"$M_{дин}$", "N·m", "dynamic moment Мдин = ω_m²/2·dJ_II/dφ",
-                "динамический момент M_дин"),
-    "A_D": _t("A_Д", r"$A_Д$", "J", "work of the driving moment A_D", "работа движущих сил A_Д",
-              "A_D"),
+    "M_dyn": _t("M_дин", r"$M_{дин}$", "N·m", "dynamic moment M_дин = ω_m²/2·dJ_II/dφ",
+                "динамический момент M_дин = ω_ср²/2·dJ_II/dφ"),
+    "A_D": _t("A_Д", r"$A_Д$", "J", "work of the driving forces A_D", "работа движущих сил A_Д",
+              "A_D", "$A_D$"),
     "A_C": _t("A_С", r"$A_С$", "J", "work of the resistance A_C", "работа сил сопротивления A_С",
-              "A_C"),
+              "A_C", "$A_C$"),
     "A": _t("A", "$A$", "J", "total work A", "суммарная работа A"),
     "s_{cylinder}": _t("s", "$s$", "-", "relative piston travel from the head, {x}",
                        "относительное перемещение поршня от головки, {x}"),
     "p_{cylinder}": _t("p", "$p$", "Pa", "gas pressure, {x}", "давление газа, {x}"),
+    "p_rel": _t("p/p_max", r"$p/p_{max}$", "-", "relative gas pressure p/p_max",
+                "относительное давление газа p/p_max"),
     "F_{load}": _t("F", "$F$", "N", "force {x}", "сила {x}"),
+    "slider_travel": _t("S", "$S$", "m", "slider travel S from its outer dead centre",
+                        "перемещение ползуна S от внешней мёртвой точки"),
+    # tabulated kinematics (summary.json of a [tabulated] case)
+    "kinematics": _t("", "", "", "how the kinematics are given (\"tabulated\")",
+                     "как заданы кинематические характеристики (по таблице)"),
+    "tabulated_interpolation": _t("", "", "", "interpolation of J_II between the positions",
+                                  "интерполяция J_II между положениями"),
+    "tabulated_positions_deg": _t("φ", r"$\varphi$", "deg", "crank angles of the table's positions",
+                                  "углы поворота кривошипа в положениях таблицы"),
+    # what a case gives (flywheel check)
+    "link_mass": _t("m", "$m$", "kg", "mass", "масса"),
+    "J_S": _t("J_S", "$J_S$", "kg·m²", "moment of inertia about the centroid J_S",
+              "момент инерции относительно центра масс J_S"),
+    "link_J": _t("J", "$J$", "kg·m²", "moment of inertia of a link (about its centroid, or "
+                 "its fixed pivot if it only turns)", "момент инерции звена (относительно центра "
+                 "масс или неподвижной оси)"),
+    "bore": _t("d", "$d$", "m", "bore", "диаметр цилиндра"),
+    "p_max": _t("p_max", r"$p_{max}$", "Pa", "greatest gas pressure p_max",
+                "наибольшее давление газа p_max"),
     # reduction of masses, energy
-    "J_II": _t("J_II", r"$J_{II}$", "kg·m²", "reduced inertia of the second group J_II",
+    "J_II": _t("J_II", r"$J_{II}$", "kg·m²", "reduced moment of inertia of the second group J_II",
                "приведённый момент инерции второй группы звеньев J_II"),
     "dJ_II": _t("dJ_II/dφ", r"$dJ_{II}/d\varphi$", "kg·m²/rad", "dJ_II/dφ",
                 "производная dJ_II/dφ"),
@@ -95,9 +128,9 @@ TERMS: dict[str, Term] = {
     "J_II_min": _t("J_II min", r"$J_{II\,min}$", "kg·m²", "J_II, least", "J_II, наименьшее"),
     "J_II_max": _t("J_II max", r"$J_{II\,max}$", "kg·m²", "J_II, greatest", "J_II, наибольшее"),
     "T_II": _t("T_II", r"$T_{II}$", "J", "kinetic energy of the second group T_II",
-               "кинетическая энергия второй группы звеньев T_II"),
+               "кинетическая энергия второй группы T_II"),
     "dT_I": _t("ΔT_I", r"$\Delta T_I$", "J", "change of kinetic energy of the first group ΔT_I",
-               "изменение кинетической энергии первой группы звеньев ΔT_I"),
+               "изменение кинетической энергии первой группы ΔT_I"),
     "delta_T_max": _t("ΔT_нб", r"$\Delta T_{нб}$", "J", "largest energy fluctuation ΔT_нб",
                       "наибольшее изменение кинетической энергии ΔT_нб"),
     "delta_T_I_max": _t("ΔT_I max", r"$\Delta T_{I\,max}$", "J", "ΔT_I, greatest",
@@ -116,24 +149,31 @@ TERMS: dict[str, Term] = {
     "J_required_exact": _t("J_I", "$J_I$", "kg·m²", "required J_I, exact (energy–mass diagram)",
                            "необходимый J_I, точно (диаграмма Виттенбауэра)"),
     "J_flywheel": _t("J_М", "$J_М$", "kg·m²", "flywheel J_M = J_I − first group",
-                     "момент инерции маховика J_М = J_I − (J_10 + J_ред)", "J_M"),
+                     "момент инерции маховика J_М = J_I − (J_10 + J_ред)", "J_M", "$J_M$"),
     "J_flywheel_exact": _t("J_М", "$J_М$", "kg·m²", "flywheel J_M, exact",
-                           "момент инерции маховика J_М, точно", "J_M"),
+                           "момент инерции маховика J_М, точно", "J_M", "$J_M$"),
     "delta_achieved": _t("δ", r"$\delta$", "-", "δ achieved with J_I (Merzalov)",
                          "достигнутый δ (Мерцалов)"),
     "delta_achieved_exact": _t("δ", r"$\delta$", "-", "δ achieved with the exact J_I",
                                "достигнутый δ (точный J_I)"),
     "flywheel_J_on_its_shaft": _t("J_М/i²", r"$J_М/i^2$", "kg·m²",
                                   "flywheel J on its own shaft, J_M/i²",
-                                  "момент инерции маховика на его валу J_М/i²", "J_M/i²"),
+                                  "момент инерции маховика на его валу J_М/i²", "J_M/i²",
+                                  r"$J_M/i^2$"),
     "flywheel_speed_ratio": _t("i", "$i$", "-", "flywheel shaft speed ratio i",
                                "передаточное отношение к валу маховика i"),
     "flywheel_rim_share": _t("k_об", r"$k_{об}$", "-", "rim share of J_M (hub and spokes the rest)",
-                             "доля J_М на ободе (остальное — ступица и спицы)", "rim share"),
+                             "доля J_М на ободе (остальное — ступица и спицы)", "k_rim",
+                             r"$k_{rim}$"),
+    "flywheel_material": _t("", "", "", "flywheel material", "материал маховика"),
     "flywheel_material_density": _t("ρ", r"$\rho$", "kg/m³", "density of the flywheel material",
                                     "плотность материала маховика"),
     "flywheel_rim_speed_limit": _t("v_доп", r"$v_{доп}$", "m/s", "rim speed ≤",
-                                   "окружная скорость ≤", "v_max"),
+                                   "окружная скорость ≤", "v_max", r"$v_{max}$"),
+    "flywheel_formulas": _t("", "", "", "how the disk and the rim are sized",
+                            "как рассчитаны диск и обод"),
+    "flywheel_disk": _t("", "", "", "flywheel as a solid disk", "маховик — сплошной диск"),
+    "flywheel_rim": _t("", "", "", "flywheel as a rim", "маховик — обод"),
     "D": _t("D", "$D$", "m", "outer diameter", "наружный диаметр"),
     "D_inner": _t("D₁", "$D_1$", "m", "inner diameter of the rim", "внутренний диаметр обода",
                   "D1"),
@@ -152,13 +192,18 @@ TERMS: dict[str, Term] = {
     "phi_omega_max_deg": _t("φ", r"$\varphi$", "deg", "φ of ω_max", "φ при ω_max"),
     "phi_omega_min_deg": _t("φ", r"$\varphi$", "deg", "φ of ω_min", "φ при ω_min"),
     "t": _t("t", "$t$", "s", "time t(φ)", "время t(φ)"),
+    # --transients (summary.json results.time_domain)
+    "time_domain": _t("", "", "", "motion in time (--transients)", "движение во времени"),
+    "omega_final_predicted": _t("ω_s", r"$\omega_s$", "rad/s",
+                                "steady cycle-mean speed of the motor line ω_s",
+                                "установившаяся средняя скорость по характеристике двигателя ω_s"),
     # kinematics on the grid
     "x_{point}": _t("x", "$x$", "m", "x of {x}", "x точки {x}"),
     "y_{point}": _t("y", "$y$", "m", "y of {x}", "y точки {x}"),
-    "vq_{point}": _t("v_q", "$v_q$", "m/rad", "|v_q| of {x}", "аналог скорости точки {x}"),
+    "vq_{point}": _t("v_q", "$|v_q|$", "m/rad", "|v_q| of {x}", "аналог скорости точки {x}"),
     "vqx_{point}": _t("v_qx", "$v_{qx}$", "m/rad", "v_qx of {x}", "v_qx точки {x}"),
     "vqy_{point}": _t("v_qy", "$v_{qy}$", "m/rad", "v_qy of {x}", "v_qy точки {x}"),
-    "aq_{point}": _t("a_q", "$a_q$", "m/rad²", "|a_q| of {x}", "аналог ускорения точки {x}"),
+    "aq_{point}": _t("a_q", "$|a_q|$", "m/rad²", "|a_q| of {x}", "аналог ускорения точки {x}"),
     "aqx_{point}": _t("a_qx", "$a_{qx}$", "m/rad²", "a_qx of {x}", "a_qx точки {x}"),
     "aqy_{point}": _t("a_qy", "$a_{qy}$", "m/rad²", "a_qy of {x}", "a_qy точки {x}"),
     "theta_{link}": _t("θ", r"$\theta$", "deg", "angle of link {x}", "угол звена {x}"),
@@ -167,10 +212,19 @@ TERMS: dict[str, Term] = {
     "eps_q_{link}": _t("ε_q", r"$\varepsilon_q$", "1/rad", "ε_q of link {x}",
                        "аналог углового ускорения звена {x}"),
     # at a report angle (summary.json results.at[])
+    "at": _t("", "", "", "the motion at each report angle", "движение в расчётных положениях"),
+    "x": _t("x", "$x$", "m", "x of a point", "координата x точки"),
+    "y": _t("y", "$y$", "m", "y of a point", "координата y точки"),
     "v_q": _t("v_q", "$v_q$", "m/rad", "velocity analogue", "аналог скорости"),
     "a_q": _t("a_q", "$a_q$", "m/rad²", "acceleration analogue", "аналог ускорения"),
     "v": _t("v", "$v$", "m/s", "velocity", "скорость"),
     "a": _t("a", "$a$", "m/s²", "acceleration", "ускорение"),
+    "v_x": _t("v_x", "$v_x$", "m/s", "velocity, x component", "проекция скорости на ось x"),
+    "v_y": _t("v_y", "$v_y$", "m/s", "velocity, y component", "проекция скорости на ось y"),
+    "a_x": _t("a_x", "$a_x$", "m/s²", "acceleration, x component",
+              "проекция ускорения на ось x"),
+    "a_y": _t("a_y", "$a_y$", "m/s²", "acceleration, y component",
+              "проекция ускорения на ось y"),
     "epsilon_q": _t("ε_q", r"$\varepsilon_q$", "1/rad", "angular acceleration analogue",
                     "аналог углового ускорения"),
     "omega_q": _t("ω_q", r"$\omega_q$", "-", "angular velocity analogue",
@@ -262,17 +316,26 @@ LOAD_KINDS = {"gas": ("gas {x}", "газ {x}"), "gravity": ("gravity, link {x}",
               "force": ("force {x}", "сила {x}"), "couple": ("couple {x}", "пара сил {x}"),
               "moment": ("moment {x}", "момент {x}")}
 
+# the sliders' dead centres in the standard positions' labels ("90° = 5 outer d.c."), as
+# dynamics.grid.standard_positions writes them in English
+DEAD_CENTRES = {"outer": ("outer", "внешняя"), "inner": ("inner", "внутренняя")}
+DEAD_CENTRE_LABEL = ("{s} {kind} d.c.", "ползун {s}: {kind} мёртвая точка")
+_DEAD_CENTRE_RX = re.compile(r"^(?P<s>.+) (?P<kind>outer|inner) d\.c\.$")
+
+# the flywheel's materials (case [flywheel] material)
+MATERIALS = {"steel": ("steel", "сталь"), "cast-iron": ("cast iron", "чугун")}
+
 # -- units ----------------------------------------------------------------------------------------
 _UNIT_RU = {"m": "м", "kg": "кг", "s": "с", "rad": "рад", "N": "Н", "J": "Дж", "Pa": "Па",
             "MPa": "МПа", "W": "Вт", "kW": "кВт", "deg": "°", "rpm": "об/мин", "min": "мин",
-            "Hz": "Гц", "h": "ч"}
+            "Hz": "Гц", "h": "ч", "rev": "об"}
 _UNIT_EN_PRINT = {"deg": "°"}
 
 
 def unit(u: str, lang: str = "en") -> str:
     """The unit as printed in ``lang``: SI tokens translated ("kg·m²/rad" → "кг·м²/рад"),
-    "-" (dimensionless) as "–", degrees as "°"."""
-    if u in ("-", ""):
+    "-" (dimensionless) as "–", degrees as "°"; "" (a record, a text) stays ""."""
+    if u == "-":
         return "–"
     table = _UNIT_RU if lang == "ru" else _UNIT_EN_PRINT
     return re.sub(r"[A-Za-z]+", lambda m: table.get(m.group(0), m.group(0)), u)
@@ -297,23 +360,40 @@ def term(key: str) -> tuple[Term, str]:
     raise KeyError(f"{key!r} is not in the nomenclature (render/nomenclature.py)")
 
 
-def _member(x: str, lang: str) -> str:
-    """A load's name in ``lang``: "gas HP" → "газ HP"; other members as they are."""
+def load_name(x: str, lang: str = "en") -> str:
+    """A load's name in ``lang``: "gas HP" → "газ HP", "gravity 2" → "gravity, link 2"; a name
+    of no known kind as it is.
+
+    >>> load_name("gravity 2", "ru")
+    'сила тяжести звена 2'
+    """
     kind, _, rest = x.partition(" ")
     if kind in LOAD_KINDS and rest:
         return LOAD_KINDS[kind][lang == "ru"].format(x=rest)
     return x
 
 
+def member(key: str, lang: str = "en") -> str:
+    """The family member of ``key`` in ``lang`` ("M gas HP" → "газ HP", "x_B" → "B"; "" for a
+    key that is not a family's)."""
+    return load_name(term(key)[1], lang)
+
+
 def name(key: str, lang: str = "en") -> str:
     """The quantity's name in ``lang`` ("reduced moment: gas HP")."""
     t, x = term(key)
-    return (t.ru if lang == "ru" else t.en).format(x=_member(x, lang))
+    return (t.ru if lang == "ru" else t.en).format(x=load_name(x, lang))
 
 
 def symbol(key: str, lang: str = "en") -> str:
     """The plain-text symbol in ``lang`` (ω_m in English, ω_ср in Russian)."""
     return term(key)[0].sym(lang)
+
+
+def tex(key: str, lang: str = "en") -> str:
+    """The mathtext symbol in ``lang``, for plots ("$\\omega_m$" in English, "$\\omega_{ср}$" in
+    Russian)."""
+    return term(key)[0].tex(lang)
 
 
 def unit_of(key: str, lang: str = "en") -> str:
@@ -326,9 +406,72 @@ def si_unit(key: str) -> str:
     return term(key)[0].unit
 
 
-def axis(key: str, lang: str = "en") -> str:
-    """A plot axis label as the course writes it: mathtext symbol, comma, unit ("$J_{II}$, кг·м²")."""
-    return f"{term(key)[0].math}, {unit_of(key, lang)}"
+def axis(key: str, lang: str = "en", si: str | None = None) -> str:
+    """A plot axis label as the course writes it: mathtext symbol, comma, unit ("$J_{II}$, кг·м²");
+    ``si`` another unit of the same quantity ("MPa" for a pressure drawn in MPa)."""
+    return f"{tex(key, lang)}, {unit(si or si_unit(key), lang)}"
+
+
+def heading(key: str, lang: str = "en", si: str | None = None, label: str | None = None) -> str:
+    """A column heading of a text table (the summary, the report, `flywheel check`): the
+    symbol and its unit, "J_II [kg·m²]" in English (the unit as the CSV headers write it),
+    "J_II, кг·м²" in Russian (the course's style); a dimensionless quantity by its symbol
+    alone. ``si``: another unit of the same quantity; ``label``: another text than the symbol
+    (a load's name: "gas HP [N·m]").
+
+    >>> heading("omega", "en"), heading("omega", "ru"), heading("M gas HP", "ru", label="газ HP")
+    ('ω [rad/s]', 'ω, рад/с', 'газ HP, Н·м')
+    """
+    u = si or si_unit(key)
+    sym = symbol(key, lang) if label is None else label
+    if u in ("-", ""):
+        return sym
+    return f"{sym}, {unit(u, lang)}" if lang == "ru" else f"{sym} [{u}]"
+
+
+def legend(key: str, lang: str = "en") -> str:
+    """A legend entry: the mathtext symbol and the name without its trailing symbol
+    ("$A_D$: work of the driving forces")."""
+    t, _ = term(key)
+    nm = name(key, lang)
+    sym = t.sym(lang)
+    if sym and nm.endswith(" " + sym):
+        nm = nm[: -len(sym) - 1]
+    return f"{t.tex(lang)}: {nm}"
+
+
+def name_tex(key: str, lang: str = "en") -> str:
+    """The name with its trailing plain symbol typeset (a figure's title: "reduced moment of
+    inertia of the second group $J_{II}$")."""
+    t, _ = term(key)
+    nm = name(key, lang)
+    sym = t.sym(lang)
+    if sym and nm.endswith(" " + sym):
+        return nm[: -len(sym)] + t.tex(lang)
+    return nm
+
+
+def material(m: str, lang: str = "en") -> str:
+    """A flywheel material's name in ``lang`` ("cast-iron" → "cast iron", "чугун")."""
+    return MATERIALS[m][lang == "ru"] if m in MATERIALS else m
+
+
+def position_label(label: str, lang: str = "en") -> str:
+    """A standard position's label in ``lang``: "0° = 3 outer d.c." → "0° = ползун 3: внешняя
+    мёртвая точка"; other parts (angles, a table's "2 (30°)") as they are.
+
+    >>> position_label("90° = 5 inner d.c.", "ru")
+    '90° = ползун 5: внутренняя мёртвая точка'
+    """
+    if lang != "ru":
+        return label
+    out = []
+    for part in label.split(" = "):
+        m = _DEAD_CENTRE_RX.match(part)
+        if m:
+            part = DEAD_CENTRE_LABEL[1].format(s=m.group("s"), kind=DEAD_CENTRES[m.group("kind")][1])
+        out.append(part)
+    return " = ".join(out)
 
 
 def csv_header(key: str) -> str:

@@ -22,6 +22,8 @@ from pathlib import Path
 
 import numpy as np
 
+from flywheel.render import nomenclature as nm
+
 DPI = 120
 _LEGEND_W = 3.9            # room for a legend right of the axes [in]
 _SCHEME_LEGEND_W = 2.6     # room for the scheme's legend [in]
@@ -42,70 +44,41 @@ _RC = {
 }
 
 # -- words ----------------------------------------------------------------------------------------
+# Sentence templates only: every quantity's symbol, name and unit comes from the nomenclature
+# (render/nomenclature.py: axis, tex, legend, name_tex, unit_of), filled in where the
+# templates say {…}.
 _TEXT = {
     "en": {
-        "phi": r"crank angle $\varphi$, °",
         "positions": "position functions",
-        "coords_x": "x, m",
-        "coords_y": "y, m",
-        "travel": "slider travel S, m",
-        "travel_of": "S of slider {s} (point {p}) from its outer dead centre",
+        "travel_of": "{S} of slider {s} (point {p}) from its outer dead centre",
         "velocity": "velocity analogues",
         "acceleration": "acceleration analogues",
-        "vq": r"$|v_q|$ of the points, m/rad",
-        "aq": r"$|a_q|$ of the points, m/rad²",
-        "wq": r"$\omega_q$ of the links, –",
-        "eq": r"$\varepsilon_q$ of the links, 1/rad",
         "link": "link {n}",
-        "J_II": r"reduced moment of inertia of the second group $J_{II}$",
-        "J_axis": r"$J_{II}$ and its parts, kg·m²",
-        "dJ_axis": r"$dJ_{II}/d\varphi$, kg·m²/rad",
-        "J_total": r"$J_{II}$",
-        "J_mean": r"mean $J_{{II}}$ = {v:.5g} kg·m²",
-        "J_link": "link {n}",
-        "dJ_total": r"$dJ_{II}/d\varphi$",
+        "J_mean": "mean {J} = {v:.5g} {u}",
         "indicator": "indicator diagram of cylinder {c}",
-        "s_axis": "relative piston travel from the head s, –",
-        "p_axis": r"$p/p_{max}$, –",
-        "p_MPa": "p, MPa",
         "towards": "piston moving towards the head",
         "away": "piston moving away from the head",
         "table_towards": "table points: towards the head",
         "table_away": "table points: away from the head",
         "forces": "forces on the pistons",
-        "F_axis": "force, N",
         "F_gas": "gas force on piston {p}, cylinder {c}",
-        "F_at": "{c} at φ = {a:g}°: {v:.4g} N",
+        "F_tech": "technological force {n}",
+        "F_at": "{c} at φ = {a:g}°: {v:.4g} {u}",
         "moments": "reduced moments",
-        "M_axis": "reduced moment, N·m",
-        "M_small_axis": "gravity and couples, N·m",
-        "M_known": r"$M_{known}$: the given loads",
-        "M_const_driving": r"$M_D$ = {v:.5g} N·m (constant, balances the cycle)",
-        "M_const_resistance": r"$M_C$ = {v:.5g} N·m (constant, balances the cycle)",
-        "M_sum": r"$M_\Sigma$: total",
+        "M_known": "{M}: the given loads",
+        "M_const": "{M} = {v:.5g} {u} (constant, balances the cycle)",
+        "M_sum": "{M}: total",
         "works": "works and kinetic energies",
-        "W_axis": "work, energy, J",
-        "A_D": r"$A_D$: work of the driving forces",
-        "A_C": r"$A_C$: work of the resistance",
-        "A": r"$A$: total work",
-        "T_II": r"$T_{II}$: kinetic energy of the second group",
-        "dT_I": r"$\Delta T_I$: change of the first group's kinetic energy",
-        "dT_max": r"$\Delta T_I$ max = {v:.5g} J at φ = {a:.1f}°",
-        "dT_min": r"$\Delta T_I$ min = {v:.5g} J at φ = {a:.1f}°",
+        "W_axis": "work, energy, {u}",
+        "extreme": "{s} = {v:.5g} {u} at φ = {a:.1f}°",
         "omega": r"angular velocity of the crank $\omega(\varphi)$",
-        "w_axis": r"$\omega$, rad/s",
-        "w": r"$\omega(\varphi)$ with $J_I$ by Merzalov, δ = {d:.4g}",
-        "w_exact": r"$\omega(\varphi)$ with the exact $J_I$, δ = {d:.4g}",
-        "w_max": r"$\omega_{{max}}$ = {v:.5g} rad/s at φ = {a:.1f}°",
-        "w_min": r"$\omega_{{min}}$ = {v:.5g} rad/s at φ = {a:.1f}°",
-        "w_mean": r"$\omega_m$ = {v:.5g} rad/s",
+        "w": r"$\omega(\varphi)$ with {J} by Merzalov, δ = {d:.4g}",
+        "w_exact": r"$\omega(\varphi)$ with the exact {J}, δ = {d:.4g}",
+        "value": "{s} = {v:.5g} {u}",
         "epsilon": r"angular acceleration of the crank $\varepsilon(\varphi)$",
-        "e_axis": r"$\varepsilon$, rad/s²",
         "e": r"$\varepsilon(\varphi)$",
         "scheme": "kinematic scheme at φ = {a:g}°",
         "scheme_many": "kinematic scheme",
-        "x": "x, m",
-        "y": "y, m",
         "links": "links",
         "joints": "joints",
         "other_points": "other points (centroids)",
@@ -113,74 +86,38 @@ _TEXT = {
         "sliders": "sliders",
         "guides": "guides",
         "trajectory": "trajectory of {p}",
-        "gas": "gas {n}",
-        "gravity": "gravity, link {n}",
-        "force": "force {n}",
-        "couple": "couple {n}",
     },
     "ru": {
-        "phi": r"угол поворота кривошипа $\varphi$, °",
         "positions": "функции положения",
-        "coords_x": "x, м",
-        "coords_y": "y, м",
-        "travel": "перемещение ползуна S, м",
-        "travel_of": "S ползуна {s} (точка {p}) от внешней мёртвой точки",
+        "travel_of": "{S} ползуна {s} (точка {p}) от внешней мёртвой точки",
         "velocity": "аналоги скоростей",
         "acceleration": "аналоги ускорений",
-        "vq": r"$|v_q|$ точек, м/рад",
-        "aq": r"$|a_q|$ точек, м/рад²",
-        "wq": r"$\omega_q$ звеньев, –",
-        "eq": r"$\varepsilon_q$ звеньев, 1/рад",
         "link": "звено {n}",
-        "J_II": r"приведённый момент инерции второй группы звеньев $J_{II}$",
-        "J_axis": r"$J_{II}$ и вклады звеньев, кг·м²",
-        "dJ_axis": r"$dJ_{II}/d\varphi$, кг·м²/рад",
-        "J_total": r"$J_{II}$",
-        "J_mean": r"среднее $J_{{II}}$ = {v:.5g} кг·м²",
-        "J_link": "звено {n}",
-        "dJ_total": r"$dJ_{II}/d\varphi$",
+        "J_mean": "среднее {J} = {v:.5g} {u}",
         "indicator": "индикаторная диаграмма цилиндра {c}",
-        "s_axis": "относительное перемещение поршня от головки s, –",
-        "p_axis": r"$p/p_{max}$, –",
-        "p_MPa": "p, МПа",
         "towards": "поршень движется к головке",
         "away": "поршень движется от головки",
         "table_towards": "точки таблицы: к головке",
         "table_away": "точки таблицы: от головки",
         "forces": "силы, действующие на поршни",
-        "F_axis": "сила, Н",
         "F_gas": "сила давления газа на поршень {p}, цилиндр {c}",
-        "F_at": "{c} при φ = {a:g}°: {v:.4g} Н",
+        "F_tech": "технологическая сила {n}",
+        "F_at": "{c} при φ = {a:g}°: {v:.4g} {u}",
         "moments": "приведённые моменты",
-        "M_axis": "приведённый момент, Н·м",
-        "M_small_axis": "силы тяжести и пары сил, Н·м",
-        "M_known": r"$M_{изв}$: заданные силы",
-        "M_const_driving": r"$M_Д$ = {v:.5g} Н·м (постоянный, уравновешивает цикл)",
-        "M_const_resistance": r"$M_C$ = {v:.5g} Н·м (постоянный, уравновешивает цикл)",
-        "M_sum": r"$M_\Sigma$: суммарный",
+        "M_known": "{M}: заданные силы",
+        "M_const": "{M} = {v:.5g} {u} (постоянный, уравновешивает цикл)",
+        "M_sum": "{M}: суммарный",
         "works": "работы и кинетические энергии",
-        "W_axis": "работа, энергия, Дж",
-        "A_D": r"$A_Д$: работа движущих сил",
-        "A_C": r"$A_C$: работа сил сопротивления",
-        "A": r"$A$: суммарная работа",
-        "T_II": r"$T_{II}$: кинетическая энергия второй группы",
-        "dT_I": r"$\Delta T_I$: изменение кинетической энергии первой группы",
-        "dT_max": r"$\Delta T_I$ max = {v:.5g} Дж при φ = {a:.1f}°",
-        "dT_min": r"$\Delta T_I$ min = {v:.5g} Дж при φ = {a:.1f}°",
+        "W_axis": "работа, энергия, {u}",
+        "extreme": "{s} = {v:.5g} {u} при φ = {a:.1f}°",
         "omega": r"угловая скорость кривошипа $\omega(\varphi)$",
-        "w_axis": r"$\omega$, рад/с",
-        "w": r"$\omega(\varphi)$ при $J_I$ по Мерцалову, δ = {d:.4g}",
-        "w_exact": r"$\omega(\varphi)$ при точном $J_I$, δ = {d:.4g}",
-        "w_max": r"$\omega_{{max}}$ = {v:.5g} рад/с при φ = {a:.1f}°",
-        "w_min": r"$\omega_{{min}}$ = {v:.5g} рад/с при φ = {a:.1f}°",
-        "w_mean": r"$\omega_{{ср}}$ = {v:.5g} рад/с",
+        "w": r"$\omega(\varphi)$ при {J} по Мерцалову, δ = {d:.4g}",
+        "w_exact": r"$\omega(\varphi)$ при точном {J}, δ = {d:.4g}",
+        "value": "{s} = {v:.5g} {u}",
         "epsilon": r"угловое ускорение кривошипа $\varepsilon(\varphi)$",
-        "e_axis": r"$\varepsilon$, рад/с²",
         "e": r"$\varepsilon(\varphi)$",
         "scheme": "кинематическая схема при φ = {a:g}°",
         "scheme_many": "кинематическая схема",
-        "x": "x, м",
-        "y": "y, м",
         "links": "звенья",
         "joints": "шарниры",
         "other_points": "прочие точки (центры масс)",
@@ -188,10 +125,6 @@ _TEXT = {
         "sliders": "ползуны",
         "guides": "направляющие",
         "trajectory": "траектория точки {p}",
-        "gas": "газ {n}",
-        "gravity": "сила тяжести звена {n}",
-        "force": "сила {n}",
-        "couple": "пара сил {n}",
     },
 }
 
@@ -201,18 +134,11 @@ def _t(lang: str, key: str, **kw) -> str:
 
 
 def _sub(symbol: str, name: str, norm: bool = False) -> str:
-    """'$x_{B}$' or '$|v_{q B}|$' for a point name; plain text if the name is not simple."""
+    """'$x_{B}$' or '$|v_{q B}|$' for a point name; the name beside the symbol if it is not
+    simple."""
     if name.isascii() and name.isalnum():
         return f"$|{symbol}_{{q{name}}}|$" if norm else f"${symbol}_{{{name}}}$"
-    return f"|{symbol}_q| {name}" if norm else f"{symbol} {name}"
-
-
-def _part_label(name: str, lang: str) -> str:
-    """'gas HP' -> 'gas HP' / 'газ HP'; 'gravity 2' -> 'gravity, link 2' (M_parts keys)."""
-    kind, _, rest = name.partition(" ")
-    if kind in ("gas", "gravity", "force", "couple") and rest:
-        return _t(lang, kind, n=rest)
-    return name
+    return f"$|{symbol}_q|$ {name}" if norm else f"${symbol}$ {name}"
 
 
 # -- figure plumbing ------------------------------------------------------------------------------
@@ -271,7 +197,7 @@ def _phi_axis(ax, lang: str, label: bool = True) -> None:
     ax.set_xlim(0.0, 360.0)
     ax.set_xticks(np.arange(0, 361, 30))
     if label:
-        ax.set_xlabel(_t(lang, "phi"))
+        ax.set_xlabel(nm.axis("phi_deg", lang))
 
 
 def _legend(ax, **kw):
@@ -362,18 +288,19 @@ def figure_positions(results, lang: str = "en"):
         rows = 3 if sliders else 2
         fig, axes = _figure((11.0, 9.0 if sliders else 7.0), rows, 1, sharex=True, hspace=0.12)
         deg = _phi_deg(results)
-        for ax, k, key in ((axes[0], 0, "coords_x"), (axes[1], 1, "coords_y")):
+        for ax, k, key in ((axes[0], 0, "x"), (axes[1], 1, "y")):
             for name in _moving_points(results):
                 v = results.kinematics.points[name].r[:, k]
                 if np.ptp(v) > 1e-12 * max(1.0, np.max(np.abs(v))):
                     ax.plot(deg, v, label=_sub("xy"[k], name))
-            ax.set_ylabel(_t(lang, key))
+            ax.set_ylabel(nm.axis(key, lang))
             _legend(ax)
         if sliders:
             for link, joint, angle in sliders:
                 axes[2].plot(deg, _slider_travel(results, joint, angle),
-                             label=_t(lang, "travel_of", s=link, p=joint))
-            axes[2].set_ylabel(_t(lang, "travel"))
+                             label=_t(lang, "travel_of", S=nm.tex("slider_travel", lang), s=link,
+                                      p=joint))
+            axes[2].set_ylabel(nm.axis("slider_travel", lang))
             _legend(axes[2])
         for ax in axes:
             _phi_axis(ax, lang, label=ax is axes[-1])
@@ -391,14 +318,14 @@ def _analogue_figure(results, lang, which: str):
             vec = pm.v_q if which == "velocity" else pm.a_q
             ax1.plot(deg, np.hypot(vec[:, 0], vec[:, 1]),
                      label=_sub("v" if which == "velocity" else "a", name, norm=True))
-        ax1.set_ylabel(_t(lang, "vq" if which == "velocity" else "aq"))
+        ax1.set_ylabel(nm.axis("vq_{point}" if which == "velocity" else "aq_{point}", lang))
+        link_key = "omega_q_{link}" if which == "velocity" else "eps_q_{link}"
         for name in _turning_links(results):
             lm = results.kinematics.links[name]
-            sym = r"$\omega_q$" if which == "velocity" else r"$\varepsilon_q$"
             ax2.plot(deg, lm.omega_q if which == "velocity" else lm.eps_q,
-                     label=f"{sym} {_t(lang, 'link', n=name)}")
+                     label=f"{nm.tex(link_key, lang)} {_t(lang, 'link', n=name)}")
         ax2.axhline(0.0, color="0.3", linewidth=0.6)
-        ax2.set_ylabel(_t(lang, "wq" if which == "velocity" else "eq"))
+        ax2.set_ylabel(nm.axis(link_key, lang))
         for ax in (ax1, ax2):
             _legend(ax)
         _phi_axis(ax1, lang, label=False)
@@ -424,21 +351,22 @@ def figure_J_II(results, lang: str = "en"):
         fig, (ax1, ax2) = _figure(_TALL, 2, 1, sharex=True, hspace=0.12)
         deg = _phi_deg(results)
         ax1.plot(deg, results.columns["J_II"].values, color="k", linewidth=2.0,
-                 label=_t(lang, "J_total"))
+                 label=nm.tex("J_II", lang))
         for name, J in results.J_parts.items():
-            ax1.plot(deg, J, label=_t(lang, "J_link", n=name))
+            ax1.plot(deg, J, label=_t(lang, "link", n=name))
         if "J_II_mean" in results.scalars:
             ax1.axhline(results.scalars["J_II_mean"], color="k", linestyle=":", linewidth=1.0,
-                        label=_t(lang, "J_mean", v=results.scalars["J_II_mean"]))
-        ax1.set_ylabel(_t(lang, "J_axis"))
-        ax2.plot(deg, results.columns["dJ_II"].values, color="k", label=_t(lang, "dJ_total"))
+                        label=_t(lang, "J_mean", J=nm.tex("J_II", lang),
+                                 v=results.scalars["J_II_mean"], u=nm.unit_of("J_II_mean", lang)))
+        ax1.set_ylabel(nm.axis("J_II", lang))
+        ax2.plot(deg, results.columns["dJ_II"].values, color="k", label=nm.tex("dJ_II", lang))
         ax2.axhline(0.0, color="0.3", linewidth=0.6)
-        ax2.set_ylabel(_t(lang, "dJ_axis"))
+        ax2.set_ylabel(nm.axis("dJ_II", lang))
         for ax in (ax1, ax2):
             _legend(ax)
         _phi_axis(ax1, lang, label=False)
         _phi_axis(ax2, lang)
-        ax1.set_title(_title(results, _t(lang, "J_II")))
+        ax1.set_title(_title(results, nm.name_tex("J_II", lang)))
         return fig
     return _drawn(build)
 
@@ -460,12 +388,12 @@ def figure_indicator(results, cylinder, lang: str = "en"):
                 markerfacecolor="none", label=_t(lang, "table_away"))
         ax.axhline(0.0, color="0.3", linewidth=0.6)
         ax.set_xlim(0.0, 1.0)
-        ax.set_xlabel(_t(lang, "s_axis"))
-        ax.set_ylabel(_t(lang, "p_axis"))
+        ax.set_xlabel(nm.axis("s_{cylinder}", lang))
+        ax.set_ylabel(nm.axis("p_rel", lang))
         p_max = float(cylinder.p_max)
         sec = ax.secondary_yaxis("right", functions=(lambda r: r * p_max / 1e6,
                                                      lambda p: p * 1e6 / p_max))
-        sec.set_ylabel(_t(lang, "p_MPa"))
+        sec.set_ylabel(nm.axis("p_{cylinder}", lang, si="MPa"))
         ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.13), ncols=2)
         ax.set_title(_title(results, _t(lang, "indicator", c=cylinder.name)))
         return fig
@@ -486,13 +414,14 @@ def figure_piston_forces(results, lang: str = "en"):
             for a in results.at:
                 i = results.index_of(math.radians(a["phi_deg"]) % (2 * math.pi))
                 ax.plot(deg[i], c.F[i], "o", color=line.get_color(),
-                        label=_t(lang, "F_at", c=c.name, a=a["phi_deg"], v=float(c.F[i])))
+                        label=_t(lang, "F_at", c=c.name, a=a["phi_deg"], v=float(c.F[i]),
+                                 u=nm.unit_of(f"F_{c.name}", lang)))
         for key, col in results.columns.items():
             if key.startswith("F_") and key not in names:
                 ax.plot(deg, col.values, linestyle="--",
-                        label=(col.label_ru or col.label) if lang == "ru" else col.label)
+                        label=_t(lang, "F_tech", n=nm.member(key, lang)))
         ax.axhline(0.0, color="0.3", linewidth=0.6)
-        ax.set_ylabel(_t(lang, "F_axis"))
+        ax.set_ylabel(nm.axis("F_{load}", lang))
         _phi_axis(ax, lang)
         _legend(ax)
         ax.set_title(_title(results, _t(lang, "forces")))
@@ -513,23 +442,25 @@ def figure_reduced_moments(results, lang: str = "en"):
         deg = _phi_deg(results)
         ax = axes[0]
         for name in big:
-            ax.plot(deg, results.M_parts[name], label=_part_label(name, lang))
+            ax.plot(deg, results.M_parts[name], label=nm.load_name(name, lang))
         ax.plot(deg, results.columns["M_known"].values, color="0.4", linestyle="--",
-                label=_t(lang, "M_known"))
+                label=_t(lang, "M_known", M=nm.tex("M_known", lang)))
         m_const = results.scalars.get("balancing_moment")
         if m_const is not None:
-            key = "M_const_driving" if results.scalars.get("balance", "driving") == "driving" \
-                else "M_const_resistance"
-            ax.axhline(m_const, color="C3", linestyle="-.", label=_t(lang, key, v=m_const))
+            key = "driving_moment" if results.scalars.get("balance", "driving") == "driving" \
+                else "M_C"
+            ax.axhline(m_const, color="C3", linestyle="-.",
+                       label=_t(lang, "M_const", M=nm.tex(key, lang), v=m_const,
+                                u=nm.unit_of(key, lang)))
         ax.plot(deg, results.columns["M_sum"].values, color="k", linewidth=2.0,
-                label=_t(lang, "M_sum"))
+                label=_t(lang, "M_sum", M=nm.tex("M_sum", lang)))
         ax.axhline(0.0, color="0.3", linewidth=0.6)
-        ax.set_ylabel(_t(lang, "M_axis"))
+        ax.set_ylabel(nm.axis("M {load}", lang))
         if small:
             for name in small:
-                axes[1].plot(deg, results.M_parts[name], label=_part_label(name, lang))
+                axes[1].plot(deg, results.M_parts[name], label=nm.load_name(name, lang))
             axes[1].axhline(0.0, color="0.3", linewidth=0.6)
-            axes[1].set_ylabel(_t(lang, "M_small_axis"))
+            axes[1].set_ylabel(nm.axis("M {load}", lang))
         for a in axes:
             _legend(a)
             _phi_axis(a, lang, label=a is axes[-1])
@@ -548,15 +479,18 @@ def figure_works(results, lang: str = "en"):
         for key, style in (("A_D", {"color": "C0"}), ("A_C", {"color": "C1"}),
                            ("T_II", {"color": "C4"}), ("dT_I", {"color": "k", "linewidth": 2.0}),
                            ("A", {"color": "C2", "linestyle": "--", "linewidth": 1.6})):
-            ax.plot(deg, cols[key].values, label=_t(lang, key), **style)
+            ax.plot(deg, cols[key].values, label=nm.legend(key, lang), **style)
         sc = results.scalars
         for tag, marker in (("max", "^"), ("min", "v")):
-            v, a = sc.get(f"delta_T_I_{tag}"), sc.get(f"phi_delta_T_I_{tag}_deg")
+            key = f"delta_T_I_{tag}"
+            v, a = sc.get(key), sc.get(f"phi_delta_T_I_{tag}_deg")
             if v is not None and a is not None:
-                ax.plot(a, v, marker, color="C3", markersize=8, label=_t(lang, f"dT_{tag}", v=v, a=a))
+                ax.plot(a, v, marker, color="C3", markersize=8,
+                        label=_t(lang, "extreme", s=nm.tex(key, lang), v=v,
+                                 u=nm.unit_of(key, lang), a=a))
                 ax.axvline(a, color="C3", linestyle=":", linewidth=0.8)
         ax.axhline(0.0, color="0.3", linewidth=0.6)
-        ax.set_ylabel(_t(lang, "W_axis"))
+        ax.set_ylabel(_t(lang, "W_axis", u=nm.unit_of("A", lang)))
         _phi_axis(ax, lang)
         _legend(ax)
         ax.set_title(_title(results, _t(lang, "works")))
@@ -572,18 +506,21 @@ def figure_omega(results, lang: str = "en"):
         deg = _phi_deg(results)
         sc = results.scalars
         ax.plot(deg, results.columns["omega"].values, color="k", linewidth=1.8,
-                label=_t(lang, "w", d=sc.get("delta_achieved", float("nan"))))
+                label=_t(lang, "w", J=nm.tex("J_required", lang),
+                         d=sc.get("delta_achieved", float("nan"))))
         if "omega_exact" in results.columns:
             ax.plot(deg, results.columns["omega_exact"].values, color="C0", linestyle="--",
-                    label=_t(lang, "w_exact", d=sc.get("delta_achieved_exact", float("nan"))))
-        if "omega_max" in sc:
-            ax.axhline(sc["omega_max"], color="C3", linestyle=":",
-                       label=_t(lang, "w_max", v=sc["omega_max"], a=sc.get("phi_omega_max_deg", 0)))
-        if "omega_min" in sc:
-            ax.axhline(sc["omega_min"], color="C2", linestyle=":",
-                       label=_t(lang, "w_min", v=sc["omega_min"], a=sc.get("phi_omega_min_deg", 0)))
-        ax.axhline(sc["omega_mean"], color="0.4", linestyle="-.", label=_t(lang, "w_mean", v=sc["omega_mean"]))
-        ax.set_ylabel(_t(lang, "w_axis"))
+                    label=_t(lang, "w_exact", J=nm.tex("J_required_exact", lang),
+                             d=sc.get("delta_achieved_exact", float("nan"))))
+        for key, color in (("omega_max", "C3"), ("omega_min", "C2")):
+            if key in sc:
+                ax.axhline(sc[key], color=color, linestyle=":",
+                           label=_t(lang, "extreme", s=nm.tex(key, lang), v=sc[key],
+                                    u=nm.unit_of(key, lang), a=sc.get(f"phi_{key}_deg", 0)))
+        ax.axhline(sc["omega_mean"], color="0.4", linestyle="-.",
+                   label=_t(lang, "value", s=nm.tex("omega_mean", lang), v=sc["omega_mean"],
+                            u=nm.unit_of("omega_mean", lang)))
+        ax.set_ylabel(nm.axis("omega", lang))
         _phi_axis(ax, lang)
         _legend(ax)
         ax.set_title(_title(results, _t(lang, "omega")))
@@ -597,7 +534,7 @@ def figure_epsilon(results, lang: str = "en"):
         fig, ax = _figure(_WIDE)
         ax.plot(_phi_deg(results), results.columns["epsilon"].values, color="k", label=_t(lang, "e"))
         ax.axhline(0.0, color="0.3", linewidth=0.6)
-        ax.set_ylabel(_t(lang, "e_axis"))
+        ax.set_ylabel(nm.axis("epsilon", lang))
         _phi_axis(ax, lang)
         _legend(ax)
         ax.set_title(_title(results, _t(lang, "epsilon")))
@@ -611,8 +548,8 @@ def _draw_scheme(ax, results, i: int, size: float, lang: str) -> None:
     _draw_scheme_fixed(ax, results, size)
     _draw_scheme_at(ax, results, i, size)
     ax.set_aspect("equal", adjustable="datalim")
-    ax.set_xlabel(_t(lang, "x"))
-    ax.set_ylabel(_t(lang, "y"))
+    ax.set_xlabel(nm.axis("x", lang))
+    ax.set_ylabel(nm.axis("y", lang))
 
 
 def _draw_scheme_fixed(ax, results, size: float) -> None:

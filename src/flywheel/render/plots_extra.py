@@ -10,30 +10,52 @@ from __future__ import annotations
 
 import numpy as np
 
+from flywheel.render import nomenclature as nm
+
+# Sentence templates only; every quantity's symbol, name and unit comes from the nomenclature
+# (render/nomenclature.py), filled in where the templates say {…}.
 TEXT = {
-    "en": {"em": "Energy–mass diagram (Wittenbauer) and Merzalov's ΔT_I",
-           "J": "J_II [kg·m²]", "T": "ΔT = A(φ) [J]", "phi": "φ [deg]", "dT": "ΔT_I [J]",
-           "curve": "ΔT(J_II) over the cycle", "tan_max": "tangent at ψ_max", "tan_min": "tangent at ψ_min",
-           "origin": "origin of the full-energy axes (−J_I, −T0)", "dTI": "ΔT_I(φ)",
-           "full": "the whole construction: the tangents meet at O′ (−J_I, −T0)",
-           "zoom": "the curve enlarged: points of tangency", "merz": "Merzalov: ΔT_I(φ)",
-           "exact": "exact", "uJ": "J", "us": "s", "uw": "rad/s",
-           "steady": "steady within δ/10 after", "means": "cycle-mean speed (1/Φ)∮ω dφ", "band": "for the cycle mean", "not_reached": "steady state not reached (see summary)", "uI": "kg·m²", "axT": "T = T0 + ΔT", "axJ": "J = J_I + J_II",
-           "span": "ΔT_нб", "time": "Time law over one cycle", "t": "t [s]", "w": "ω [rad/s]",
-           "e": "ε [rad/s²]", "tr": "Start-up and run-down", "start": "start-up (motor)",
-           "run": "run-down (drive cut)"},
-    "ru": {"em": "Диаграмма энергомасс (Виттенбауэр) и ΔT_I по Мерцалову",
-           "J": "J_II [кг·м²]", "T": "ΔT = A(φ) [Дж]", "phi": "φ [град]", "dT": "ΔT_I [Дж]",
-           "curve": "ΔT(J_II) за цикл", "tan_max": "касательная под ψ_max", "tan_min": "касательная под ψ_min",
-           "origin": "начало осей полной энергии (−J_I, −T0)", "dTI": "ΔT_I(φ)",
-           "full": "построение целиком: касательные пересекаются в O′ (−J_I, −T0)",
-           "zoom": "кривая в крупном масштабе: точки касания", "merz": "Мерцалов: ΔT_I(φ)",
-           "exact": "точно", "uJ": "Дж", "us": "с", "uw": "рад/с",
-           "steady": "установившийся режим (δ/10) через", "means": "средняя за цикл скорость (1/Φ)∮ω dφ", "band": "для средней за цикл", "not_reached": "установившийся режим не достигнут", "uI": "кг·м²", "axT": "T = T0 + ΔT", "axJ": "J = J_I + J_II",
-           "span": "ΔT_нб", "time": "Закон движения за цикл", "t": "t [с]", "w": "ω [рад/с]",
-           "e": "ε [рад/с²]", "tr": "Разгон и выбег", "start": "разгон (двигатель)",
-           "run": "выбег (привод отключён)"},
+    "en": {"em": "Energy–mass diagram (Wittenbauer) and Merzalov's {dT}",
+           "T": r"$\Delta T = A(\varphi)$, {u}",
+           "curve": r"$\Delta T(J_{{II}})$ over the cycle", "tan_max": r"tangent at $\psi_{{max}}$",
+           "tan_min": r"tangent at $\psi_{{min}}$", "tan_slope": "{tan}: {w}²/2 = {k:.5g} {uJ}/({uI})",
+           "origin": "origin of the full-energy axes (−{J}, −{T})",
+           "full": "the whole construction: the tangents meet at O′ (−{J}, −{T})",
+           "zoom": "the curve enlarged: points of tangency", "merz": "Merzalov: {dT}(φ)",
+           "exact": "exact", "J_exact": "{J} ({exact}) = {v:.5g} {u}",
+           "J_dim": "{J} = {v:.5g} {u} ({exact})",
+           "kl": "kl = {kl:.5g} {uJ},  {J} = kl/(δ·{w}²)",
+           "span": "{span} = {v:.5g} {uJ}\n{J} = {span}/(δ·{w}²) = {J_v:.5g} {uI}",
+           "steady": "steady within δ/10 after {time:.4g} {u}",
+           "means": "cycle-mean speed (1/Φ)∮ω dφ", "band": "{w} = {v:.5g} {u} ± δ/10 (for the cycle mean)",
+           "not_reached": "steady state not reached (see summary)",
+           "axT": r"$T = T_0 + \Delta T$", "axJ": r"$J = J_I + J_{{II}}$",
+           "time": "Time law over one cycle: {T} = {v:.5g} {u}",
+           "tr": "Start-up and run-down", "start": "start-up (motor)", "run": "run-down (drive cut)"},
+    "ru": {"em": "Диаграмма энергомасс (Виттенбауэр) и {dT} по Мерцалову",
+           "T": r"$\Delta T = A(\varphi)$, {u}",
+           "curve": r"$\Delta T(J_{{II}})$ за цикл", "tan_max": r"касательная под $\psi_{{max}}$",
+           "tan_min": r"касательная под $\psi_{{min}}$", "tan_slope": "{tan}: {w}²/2 = {k:.5g} {uJ}/({uI})",
+           "origin": "начало осей полной энергии (−{J}, −{T})",
+           "full": "построение целиком: касательные пересекаются в O′ (−{J}, −{T})",
+           "zoom": "кривая в крупном масштабе: точки касания", "merz": "Мерцалов: {dT}(φ)",
+           "exact": "точно", "J_exact": "{J} ({exact}) = {v:.5g} {u}",
+           "J_dim": "{J} = {v:.5g} {u} ({exact})",
+           "kl": "kl = {kl:.5g} {uJ},  {J} = kl/(δ·{w}²)",
+           "span": "{span} = {v:.5g} {uJ}\n{J} = {span}/(δ·{w}²) = {J_v:.5g} {uI}",
+           "steady": "установившийся режим (δ/10) через {time:.4g} {u}",
+           "means": "средняя за цикл скорость (1/Φ)∮ω dφ",
+           "band": "{w} = {v:.5g} {u} ± δ/10 (для средней за цикл)",
+           "not_reached": "установившийся режим не достигнут",
+           "axT": r"$T = T_0 + \Delta T$", "axJ": r"$J = J_I + J_{{II}}$",
+           "time": "Закон движения за цикл: {T} = {v:.5g} {u}",
+           "tr": "Разгон и выбег", "start": "разгон (двигатель)", "run": "выбег (привод отключён)"},
 }
+
+
+def _f(t: dict, key: str, **kw) -> str:
+    """The template ``key`` of ``t`` with the symbols, numbers and units filled in."""
+    return t[key].format(**kw)
 
 
 def _plt():
@@ -63,6 +85,9 @@ def figure_energy_mass(results, lang: str = "en"):
     t = TEXT[lang]
     s = results.scalars
     sz = results.sizing
+    uJ, uI = nm.unit_of("A", lang), nm.unit_of("J_II", lang)
+    J_sym, T0_sym, dT_sym = nm.tex("J_required", lang), nm.tex("T0", lang), nm.tex("dT_I", lang)
+    w_m = nm.tex("omega_mean", lang)
     J_II = results.reduction.J_II
     A = results.energy.A
     k_p, k_m = sz.k_plus, sz.k_minus
@@ -76,18 +101,22 @@ def figure_energy_mass(results, lang: str = "en"):
     ax, zx, bx = axd["full"], axd["zoom"], axd["merzalov"]
     for name, a in axd.items():
         a.set_label(name)
-    fig.suptitle(f"{results.title}\n{t['em']}; J_I ({t['exact']}) = {J_I:.5g} {t['uI']}", fontsize=11)
+    fig.suptitle(f"{results.title}\n{_f(t, 'em', dT=dT_sym)}; "
+                 + _f(t, "J_exact", J=J_sym, exact=_f(t, "exact"), v=J_I, u=uI), fontsize=11)
 
     # -- (a) the whole construction -----------------------------------------------------------
     x_hi = max(J_II.max(), 0.0)
     span_x = x_hi + J_I
-    ax.plot(J_II, A, lw=1.2, color="tab:blue", gid="curve", label=t["curve"])
+    ax.plot(J_II, A, lw=1.2, color="tab:blue", gid="curve", label=_f(t, "curve"))
     j = np.array([-J_I, x_hi + 0.04 * span_x])
     ax.plot(j, top + k_p * j, "--", color="tab:red", gid="tangent_max",
-            label=f"{t['tan_max']}: ω_max²/2 = {k_p:.5g} {t['uJ']}/({t['uI']})")
+            label=_f(t, "tan_slope", tan=_f(t, "tan_max"), w=nm.tex("omega_max", lang), k=k_p, uJ=uJ,
+                     uI=uI))
     ax.plot(j, bottom + k_m * j, "--", color="tab:green", gid="tangent_min",
-            label=f"{t['tan_min']}: ω_min²/2 = {k_m:.5g} {t['uJ']}/({t['uI']})")
-    ax.plot([-J_I], [-T0], "o", color="black", ms=6, gid="origin", label=t["origin"])
+            label=_f(t, "tan_slope", tan=_f(t, "tan_min"), w=nm.tex("omega_min", lang), k=k_m, uJ=uJ,
+                     uI=uI))
+    ax.plot([-J_I], [-T0], "o", color="black", ms=6, gid="origin",
+            label=_f(t, "origin", J=J_sym, T=T0_sym))
     y_lo, y_hi = -T0, max(A.max(), top + k_p * j[1])
     H = y_hi - y_lo
     # full-energy axes through O' (thin), and the ΔT axis J_II = 0
@@ -97,8 +126,8 @@ def figure_energy_mass(results, lang: str = "en"):
                 arrowprops={"arrowstyle": "->", "color": "0.45", "lw": 0.8})
     ax.annotate("", xy=(x_hi + 0.06 * span_x, -T0), xytext=(-J_I, -T0),
                 arrowprops={"arrowstyle": "->", "color": "0.45", "lw": 0.8})
-    ax.text(-J_I + 0.01 * span_x, y_hi + 0.05 * H, t["axT"], fontsize=8, color="0.3", va="top")
-    ax.text(x_hi + 0.05 * span_x, -T0 + 0.015 * H, t["axJ"], fontsize=8, color="0.3", ha="right")
+    ax.text(-J_I + 0.01 * span_x, y_hi + 0.05 * H, _f(t, "axT"), fontsize=8, color="0.3", va="top")
+    ax.text(x_hi + 0.05 * span_x, -T0 + 0.015 * H, _f(t, "axJ"), fontsize=8, color="0.3", ha="right")
     ax.annotate("O′", xy=(-J_I, -T0), xytext=(-8, 6), textcoords="offset points", ha="right",
                 fontsize=10, fontweight="bold")
     # dimension: J_I from O′ to J_II = 0
@@ -106,14 +135,15 @@ def figure_energy_mass(results, lang: str = "en"):
     ax.plot([-J_I, -J_I], [-T0, y_dim - 0.02 * H], color="black", lw=0.6)
     ax.plot([0.0, 0.0], [y_dim - 0.02 * H, -T0], color="black", lw=0.6)
     ax.annotate("", xy=(0.0, y_dim), xytext=(-J_I, y_dim), arrowprops={"arrowstyle": "<|-|>", "lw": 1.0})
-    ax.text(-J_I / 2, y_dim + 0.012 * H, f"J_I = {J_I:.5g} {t['uI']} ({t['exact']})", ha="center",
+    ax.text(-J_I / 2, y_dim + 0.012 * H, _f(t, "J_dim", J=J_sym, exact=_f(t, "exact"), v=J_I, u=uI),
+            ha="center",
             va="bottom", fontsize=9, bbox={"fc": "white", "ec": "none", "pad": 1})
     # k and l on the ΔT axis, and the segment kl
     ax.plot([0.0, 0.0], [bottom, top], "s", color="black", ms=4)
     ax.annotate("k", xy=(0.0, top), xytext=(-6, 4), textcoords="offset points", ha="right", fontsize=9)
     ax.annotate("l", xy=(0.0, bottom), xytext=(-6, -10), textcoords="offset points", ha="right",
                 fontsize=9)
-    ax.annotate(f"kl = {kl:.5g} {t['uJ']},  J_I = kl/(δ·ω_m²)", xy=(0.0, (top + bottom) / 2),
+    ax.annotate(_f(t, "kl", kl=kl, uJ=uJ, J=J_sym, w=w_m), xy=(0.0, (top + bottom) / 2),
                 xytext=(-0.03 * span_x, top + 0.05 * H), ha="right", va="bottom", fontsize=8,
                 bbox={"fc": "white", "ec": "none", "pad": 1},
                 arrowprops={"arrowstyle": "-", "lw": 0.6, "color": "0.3"})
@@ -125,18 +155,18 @@ def figure_energy_mass(results, lang: str = "en"):
                 color="tab:blue")
     ax.set_xlim(-J_I - 0.05 * span_x, x_hi + 0.08 * span_x)
     ax.set_ylim(y_dim - 0.06 * H, y_hi + 0.12 * H)
-    ax.set_xlabel(t["J"])
-    ax.set_ylabel(t["T"])
-    ax.set_title(f"(a) {t['full']}", fontsize=10)
+    ax.set_xlabel(nm.axis("J_II", lang))
+    ax.set_ylabel(_f(t, "T", u=uJ))
+    ax.set_title(f"(a) {_f(t, 'full', J=J_sym, T=T0_sym)}", fontsize=10)
     ax.grid(True, alpha=0.3)
     ax.legend(fontsize=8, loc="upper left", bbox_to_anchor=(0.0, 0.9))
 
     # -- (b) the curve enlarged ----------------------------------------------------------------
     pad = 0.08 * (x1 - x0) if x1 > x0 else 0.02 * J_I
     z = np.array([x0 - pad, x1 + pad])
-    zx.plot(J_II, A, lw=1.2, color="tab:blue", label=t["curve"])
-    zx.plot(z, top + k_p * z, "--", color="tab:red", label=t["tan_max"])
-    zx.plot(z, bottom + k_m * z, "--", color="tab:green", label=t["tan_min"])
+    zx.plot(J_II, A, lw=1.2, color="tab:blue", label=_f(t, "curve"))
+    zx.plot(z, top + k_p * z, "--", color="tab:red", label=_f(t, "tan_max"))
+    zx.plot(z, bottom + k_m * z, "--", color="tab:green", label=_f(t, "tan_min"))
     zx.plot(J_II[i_max], A[i_max], "o", color="tab:red", ms=5)
     zx.plot(J_II[i_min], A[i_min], "o", color="tab:green", ms=5)
     phi_deg = np.degrees(results.phi)
@@ -144,29 +174,29 @@ def figure_energy_mass(results, lang: str = "en"):
         zx.annotate(f"φ = {phi_deg[i]:.1f}°", xy=(J_II[i], A[i]), xytext=(4, dy),
                     textcoords="offset points", fontsize=8)
     zx.set_xlim(*z)
-    zx.set_xlabel(t["J"])
-    zx.set_ylabel(t["T"])
-    zx.set_title(f"(b) {t['zoom']}", fontsize=10)
+    zx.set_xlabel(nm.axis("J_II", lang))
+    zx.set_ylabel(_f(t, "T", u=uJ))
+    zx.set_title(f"(b) {_f(t, 'zoom')}", fontsize=10)
     zx.grid(True, alpha=0.3)
     zx.legend(fontsize=8, loc="best")
 
     # -- (c) Merzalov --------------------------------------------------------------------------
     dT = results.columns["dT_I"].values
-    bx.plot(phi_deg, dT, label=t["dTI"])
+    bx.plot(phi_deg, dT, label=f"{dT_sym}(φ)")
     bx.axhline(s["delta_T_I_max"], color="tab:red", lw=0.8, ls=":")
     bx.axhline(s["delta_T_I_min"], color="tab:green", lw=0.8, ls=":")
     bx.annotate("", xy=(s["phi_delta_T_I_max_deg"], s["delta_T_I_max"]),
                 xytext=(s["phi_delta_T_I_max_deg"], s["delta_T_I_min"]),
                 arrowprops={"arrowstyle": "<->"})
-    bx.plot([], [], " ", label=f"{t['span']} = {s['delta_T_max']:.5g} {t['uJ']}\n"
-                              f"J_I = {t['span']}/(δ·ω_m²) = {s['J_required']:.5g} {t['uI']}")
-    bx.set_xlabel(t["phi"])
-    bx.set_ylabel(t["dT"])
+    bx.plot([], [], " ", label=_f(t, "span", span=nm.tex("delta_T_max", lang), v=s["delta_T_max"],
+                                  uJ=uJ, J=J_sym, w=w_m, J_v=s["J_required"], uI=uI))
+    bx.set_xlabel(nm.axis("phi_deg", lang))
+    bx.set_ylabel(nm.axis("dT_I", lang))
     bx.set_xlim(0, 360)
     bx.set_xticks(np.arange(0, 361, 30))
     bx.grid(True, alpha=0.3)
     bx.legend(fontsize=8, loc="best")
-    bx.set_title(f"(c) {t['merz']}", fontsize=10)
+    bx.set_title(f"(c) {_f(t, 'merz', dT=dT_sym)}", fontsize=10)
     return fig
 
 
@@ -177,14 +207,16 @@ def figure_time_law(results, lang: str = "en"):
     time = results.columns["t"].values
     fig, (a1, a2) = plt.subplots(2, 1, figsize=(9, 6), sharex=True, constrained_layout=True)
     a1.plot(time, results.columns["omega"].values, label="ω(t)")
-    a1.set_ylabel(t["w"])
+    a1.set_ylabel(nm.axis("omega", lang))
     a2.plot(time, results.columns["epsilon"].values, color="tab:orange", label="ε(t)")
-    a2.set_ylabel(t["e"])
-    a2.set_xlabel(t["t"])
+    a2.set_ylabel(nm.axis("epsilon", lang))
+    a2.set_xlabel(nm.axis("t", lang))
     for a in (a1, a2):
         a.grid(True, alpha=0.3)
         a.legend(fontsize=8, loc="upper right")
-    a1.set_title(f"{results.title}\n{t['time']}: T = {results.scalars['cycle_time']:.5g} {t['us']}",
+    a1.set_title(f"{results.title}\n" + _f(t, "time", T=nm.tex("cycle_time", lang),
+                                             v=results.scalars["cycle_time"],
+                                             u=nm.unit_of("cycle_time", lang)),
                  fontsize=10)
     return fig
 
@@ -200,25 +232,26 @@ def figure_transients(results, lang: str = "en"):
     fig, ax = plt.subplots(figsize=(9, 5), constrained_layout=True)
     if "startup" in hist:
         ts, ws_ = hist["startup"]
-        ax.plot(ts, ws_, lw=0.8, label=t["start"])
+        ax.plot(ts, ws_, lw=0.8, label=_f(t, "start"))
         mids, means = results.time_domain.startup_cycle_means
         if len(means):
-            ax.plot(mids, means, ".", color="tab:blue", ms=4, label=t["means"])
+            ax.plot(mids, means, ".", color="tab:blue", ms=4, label=_f(t, "means"))
         ws = st.get("omega_final_predicted")
         if ws:
             band = results.scalars["delta"] / 10
             ax.axhspan(ws * (1 - band), ws * (1 + band), color="tab:blue", alpha=0.12,
-                       label=f"ω_s = {ws:.5g} {t['uw']} ± δ/10 ({t['band']})")
+                       label=_f(t, "band", w=nm.tex("omega_final_predicted", lang), v=ws,
+                                u=nm.unit_of("omega_final_predicted", lang)))
         if st.get("time_to_steady") is not None:
             ax.axvline(st["time_to_steady"], color="tab:blue", ls=":", lw=1.0,
-                       label=f"{t['steady']} {st['time_to_steady']:.4g} {t['us']}")
+                       label=_f(t, "steady", time=st["time_to_steady"], u=nm.unit_of("t", lang)))
         elif not st.get("stalled"):
-            ax.plot([], [], " ", label=t["not_reached"])
-    ax.plot(*hist["rundown"], lw=0.8, label=t["run"])
-    ax.set_xlabel(t["t"])
-    ax.set_ylabel(t["w"])
+            ax.plot([], [], " ", label=_f(t, "not_reached"))
+    ax.plot(*hist["rundown"], lw=0.8, label=_f(t, "run"))
+    ax.set_xlabel(nm.axis("t", lang))
+    ax.set_ylabel(nm.axis("omega", lang))
     ax.grid(True, alpha=0.3)
     ax.legend(fontsize=8)
-    ax.set_title(f"{results.title}\n{t['tr']}", fontsize=10)
+    ax.set_title(f"{results.title}\n{_f(t, 'tr')}", fontsize=10)
     return fig
 

@@ -7,11 +7,16 @@ from __future__ import annotations
 
 import math
 
+from flywheel.render import nomenclature as nm
+
+# Section titles, table words and sentence templates only: every quantity's symbol, name and
+# unit comes from the nomenclature (render/nomenclature.py), filled in where the templates
+# say {…}.
 T = {
     "en": {
         "title": "Dynamic analysis", "source": "Source", "input": "1. Input data",
         "kin": "2. Kinematics at the standard positions",
-        "kin_note": "Velocity analogues v_q = dr/dφ [m/rad] of the points, ω_q = dθ/dφ of the links.",
+        "kin_note": "Velocity analogues {vq} = dr/dφ [{u}] of the points, {wq} = dθ/dφ of the links.",
         "red": "3. Reduction of masses and forces",
         "red_note": ("J_II = Σ m·v_qS² + J_S·ω_q² (the links' kinetic energy per ½ω²); the reduced "
                      "moment of a force is F·v_q, of a weight m·g⃗·v_qS."),
@@ -19,6 +24,18 @@ T = {
         "sizing": "5. Flywheel", "motion": "6. True velocities and accelerations",
         "warn": "Warnings", "plots": "Plots", "pos": "position", "qty": "quantity",
         "val": "value", "unit": "unit", "point": "point", "link": "link",
+        "first_group": "first group",
+        "balance": "- {A_C} = ∮ {M_C} dφ = {A} {uJ}; {M_D} = −{A_C}/2π = {M} {uM} (the cycle balance)",
+        "extremes": ("- {dT} max = {vmax} {uJ} at {amax}°, min = {vmin} {uJ} at {amin}° (global "
+                     "extremes); {span} = {v} {uJ}"),
+        "merzalov": "- Merzalov: {J} = {span}/(δ·{w}²) = {v} {uI}, δ achieved {d}",
+        "exact": "- exact (energy–mass diagram): {J} = {v} {uI}, δ achieved {d}",
+        "flywheel": "- flywheel {JM} = {J} − ({J1}) = {v} {uI}",
+        "shaft": "; on a shaft {i:g} times faster: {v} {uI}",
+        "disk": "- disk ({mat}): {dims}, {speed} {v} {u}",
+        "rim": "- rim: {dims}, {speed} {v} {u} (limit {lim} {u})",
+        "omega_extremes": "- {wmax} = {vmax} {uw} at {amax}°, {wmin} = {vmin} {uw} at {amin}°; {T} {v} {uT}",
+        "at": "ω = {w} {uw}, ε = {e} {ue}",
         "time": "7. Motion in time",
         "time_note": ("The equation of motion J(φ)·φ̈ + ½·J′(φ)·φ̇² = M(φ, φ̇), J = J_I + J_II(φ), "
                       "integrated in time with scipy's solve_ivp; J, J′ and M are the tables of §3–4, "
@@ -44,7 +61,7 @@ T = {
     "ru": {
         "title": "Динамический анализ", "source": "Источник", "input": "1. Исходные данные",
         "kin": "2. Кинематика в стандартных положениях",
-        "kin_note": "Аналоги скоростей точек v_q = dr/dφ [м/рад], звеньев ω_q = dθ/dφ.",
+        "kin_note": "Аналоги скоростей точек {vq} = dr/dφ [{u}], звеньев {wq} = dθ/dφ.",
         "red": "3. Приведение масс и сил",
         "red_note": ("J_II = Σ m·v_qS² + J_S·ω_q² (кинетическая энергия звеньев на ½ω²); "
                      "приведённый момент силы F·v_q, силы тяжести m·g⃗·v_qS."),
@@ -52,6 +69,18 @@ T = {
         "sizing": "5. Маховик", "motion": "6. Истинные скорости и ускорения",
         "warn": "Предупреждения", "plots": "Графики", "pos": "положение", "qty": "величина",
         "val": "значение", "unit": "ед.", "point": "точка", "link": "звено",
+        "first_group": "первая группа",
+        "balance": "- {A_C} = ∮ {M_C} dφ = {A} {uJ}; {M_D} = −{A_C}/2π = {M} {uM} (из условия цикла)",
+        "extremes": ("- {dT} max = {vmax} {uJ} при {amax}°, min = {vmin} {uJ} при {amin}° "
+                     "(глобальные экстремумы); {span} = {v} {uJ}"),
+        "merzalov": "- по Мерцалову: {J} = {span}/(δ·{w}²) = {v} {uI}, достигнутый δ {d}",
+        "exact": "- точно (диаграмма Виттенбауэра): {J} = {v} {uI}, достигнутый δ {d}",
+        "flywheel": "- маховик {JM} = {J} − ({J1}) = {v} {uI}",
+        "shaft": "; на валу, вращающемся в {i:g} раз быстрее: {v} {uI}",
+        "disk": "- диск ({mat}): {dims}, {speed} {v} {u}",
+        "rim": "- обод: {dims}, {speed} {v} {u} (допускаемая {lim} {u})",
+        "omega_extremes": "- {wmax} = {vmax} {uw} при {amax}°, {wmin} = {vmin} {uw} при {amin}°; {T} {v} {uT}",
+        "at": "ω = {w} {uw}, ε = {e} {ue}",
         "time": "7. Движение во времени",
         "time_note": ("Уравнение движения J(φ)·φ̈ + ½·J′(φ)·φ̇² = M(φ, φ̇), J = J_I + J_II(φ), "
                       "проинтегрировано во времени (solve_ivp из scipy); J, J′ и M взяты из таблиц "
@@ -133,76 +162,101 @@ def report_markdown(results, lang: str = "en", plots: list[str] | None = None) -
     t = T[lang]
     s = results.scalars
     cols = results.columns
+
+    def sym(key: str) -> str:
+        return nm.symbol(key, lang)
+
+    def u(key: str) -> str:
+        return nm.unit_of(key, lang)
+
+    def h(key: str, **kw) -> str:
+        return nm.heading(key, lang, **kw)
+
     parts = [f"# {t['title']}: {results.title}\n"]
     if results.source:
         parts.append(f"{t['source']}: {results.source}\n")
 
     rows = [[t["qty"], t["val"], t["unit"]]]
     inputs = [
-        ("ω_m = 2π·n1", s["omega_mean"], "rad/s"), ("n1", s["omega_mean"] / (2 * math.pi), "rev/s"),
-        ("δ", s["delta"], "–"), ("l1", s.get("crank_length"), "m"),
-        ("J_10 + J_ред (first group)", s["J_first_group"], "kg·m²"),
+        (f"{sym('omega_mean')} = 2π·{sym('crank_speed')}", s["omega_mean"], u("omega_mean")),
+        (sym("crank_speed"), s["omega_mean"] / (2 * math.pi), u("crank_speed")),
+        (sym("delta"), s["delta"], u("delta")), (sym("crank_length"), s.get("crank_length"), u("crank_length")),
+        (f"{sym('J_first_group')} ({t['first_group']})", s["J_first_group"], u("J_first_group")),
     ]
     parts.append(f"\n## {t['input']}\n\n" + _table(rows[0], [[a, _g(b, 6), c] for a, b, c in inputs]))
 
-    idx = [(label, results.index_of(phi)) for label, phi in results.position_angles]
+    idx = [(nm.position_label(label, lang), results.index_of(phi))
+           for label, phi in results.position_angles]
     vq = [k for k in cols if k.startswith("vq_") and not k.startswith(("vqx_", "vqy_"))]
     wq = [k for k in cols if k.startswith("omega_q_")]
     if vq or wq:
-        header = [t["pos"], "φ [deg]"] + [f"v_q{k[3:]}" for k in vq] + [f"ω_q{k[8:]}" for k in wq]
+        header = [t["pos"], h("phi_deg")] + [f"{sym(k)}{nm.member(k, lang)}" for k in vq + wq]
         body = [[lab, _g(cols["phi_deg"].values[i], 6)] + [_g(cols[k].values[i], 4) for k in vq + wq]
                 for lab, i in idx]
-        parts.append(f"\n## {t['kin']}\n\n{t['kin_note']}\n\n" + _table(header, body))
+        note = t["kin_note"].format(vq=sym("v_q"), u=u("v_q"), wq=sym("omega_q"))
+        parts.append(f"\n## {t['kin']}\n\n{note}\n\n" + _table(header, body))
 
     mk = [k for k in cols if k.startswith("M ")]
-    header = [t["pos"], "φ [deg]", "J_II [kg·m²]", "dJ_II/dφ"] + [f"{k[2:]} [N·m]" for k in mk] + ["M_Σ [N·m]"]
+    header = ([t["pos"], h("phi_deg"), h("J_II"), h("dJ_II")]
+              + [h(k, label=nm.member(k, lang)) for k in mk] + [h("M_sum")])
     body = [[lab, _g(cols["phi_deg"].values[i], 6), _g(cols["J_II"].values[i], 4), _g(cols["dJ_II"].values[i], 4)]
             + [_g(cols[k].values[i], 5) for k in mk] + [_g(cols["M_sum"].values[i], 5)] for lab, i in idx]
     parts.append(f"\n## {t['red']}\n\n{t['red_note']}\n\n" + _table(header, body))
 
-    header = [t["pos"], "φ [deg]", "A_D [J]", "A_C [J]", "A [J]", "T_II [J]", "ΔT_I [J]", "ω [rad/s]", "ε [rad/s²]"]
-    body = [[lab, _g(cols["phi_deg"].values[i], 6)] + [_g(cols[k].values[i], 6) for k in
-                                                        ("A_D", "A_C", "A", "T_II", "dT_I", "omega", "epsilon")]
+    energy = ("A_D", "A_C", "A", "T_II", "dT_I", "omega", "epsilon")
+    header = [t["pos"], h("phi_deg")] + [h(k) for k in energy]
+    body = [[lab, _g(cols["phi_deg"].values[i], 6)] + [_g(cols[k].values[i], 6) for k in energy]
             for lab, i in idx]
     energy_lines = [
-        f"- A_C = ∮ M_C dφ = {_g(s['cycle_work_resistance'], 6)} J; "
-        f"M_D = −A_C/2π = {_g(s['driving_moment'], 6)} N·m (the cycle balance)",
-        "- ΔT_I(φ) = A(φ) − (T_II(φ) − T_II(0)), T_II = J_II·ω_m²/2",
-        f"- ΔT_I max = {_g(s['delta_T_I_max'], 6)} J at {s['phi_delta_T_I_max_deg']:.2f}°, "
-        f"min = {_g(s['delta_T_I_min'], 6)} J at {s['phi_delta_T_I_min_deg']:.2f}° (global extremes); "
-        f"ΔT_нб = {_g(s['delta_T_max'], 6)} J",
+        t["balance"].format(A_C=sym("cycle_work_resistance"), M_C=sym("M_C"), M_D=sym("driving_moment"),
+                            A=_g(s["cycle_work_resistance"], 6), uJ=u("cycle_work_resistance"),
+                            M=_g(s["driving_moment"], 6), uM=u("driving_moment")),
+        f"- {sym('dT_I')}(φ) = A(φ) − ({sym('T_II')}(φ) − {sym('T_II')}(0)), "
+        f"{sym('T_II')} = {sym('J_II')}·{sym('omega_mean')}²/2",
+        t["extremes"].format(dT=sym("dT_I"), vmax=_g(s["delta_T_I_max"], 6), amax=f"{s['phi_delta_T_I_max_deg']:.2f}",
+                             vmin=_g(s["delta_T_I_min"], 6), amin=f"{s['phi_delta_T_I_min_deg']:.2f}",
+                             span=sym("delta_T_max"), v=_g(s["delta_T_max"], 6), uJ=u("delta_T_max")),
     ]
     parts.append(f"\n## {t['energy']}\n\n" + "\n".join(energy_lines) + "\n\n" + _table(header, body))
 
+    def dims(d: dict, keys: tuple[str, ...], digits: tuple[int, ...]) -> str:
+        return ", ".join(f"{sym(k)} = {_g(d[k], n)} {u(k)}" for k, n in zip(keys, digits))
+
     d, r = s["flywheel_disk"], s["flywheel_rim"]
+    uI = u("J_required")
+    fw = t["flywheel"].format(JM=sym("J_flywheel"), J=sym("J_required"), J1=sym("J_first_group"),
+                              v=_g(s["J_flywheel"], 6), uI=uI)
+    if s.get("flywheel_speed_ratio", 1) != 1:
+        fw += t["shaft"].format(i=s["flywheel_speed_ratio"], v=_g(s["flywheel_J_on_its_shaft"], 6), uI=uI)
     sizing_lines = [
-        f"- Merzalov: J_I = ΔT_нб/(δ·ω_m²) = {_g(s['J_required'], 6)} kg·m², "
-        f"δ achieved {_g(s['delta_achieved'], 6)}",
-        f"- exact (energy–mass diagram): J_I = {_g(s['J_required_exact'], 6)} kg·m², "
-        f"δ achieved {_g(s['delta_achieved_exact'], 6)}",
-        f"- flywheel J_M = J_I − J_first = {_g(s['J_flywheel'], 6)} kg·m²"
-        + (f"; on a shaft {s['flywheel_speed_ratio']:g} times faster: {_g(s['flywheel_J_on_its_shaft'], 6)} kg·m²"
-           if s.get("flywheel_speed_ratio", 1) != 1 else ""),
-        f"- disk ({s.get('flywheel_material', 'steel')}): D = {_g(d['D'], 4)} m, b = {_g(d['b'], 4)} m, "
-        f"m = {_g(d['mass'], 5)} kg, rim speed {_g(d.get('rim_speed'), 4)} m/s",
-        f"- rim: D = {_g(r['D'], 4)} m, D1 = {_g(r['D_inner'], 4)} m, b = {_g(r['b'], 4)} m, "
-        f"m = {_g(r['mass'], 5)} kg, rim speed {_g(r.get('rim_speed'), 4)} m/s "
-        f"(limit {_g(s.get('flywheel_rim_speed_limit'), 3)} m/s)",
-        f"- ω_max = {_g(s['omega_max'], 6)} rad/s at {s['phi_omega_max_deg']:.2f}°, "
-        f"ω_min = {_g(s['omega_min'], 6)} rad/s at {s['phi_omega_min_deg']:.2f}°; cycle time {_g(s['cycle_time'], 6)} s",
+        t["merzalov"].format(J=sym("J_required"), span=sym("delta_T_max"), w=sym("omega_mean"),
+                             v=_g(s["J_required"], 6), uI=uI, d=_g(s["delta_achieved"], 6)),
+        t["exact"].format(J=sym("J_required_exact"), v=_g(s["J_required_exact"], 6), uI=uI,
+                          d=_g(s["delta_achieved_exact"], 6)),
+        fw,
+        t["disk"].format(mat=nm.material(s.get("flywheel_material", "steel"), lang),
+                         dims=dims(d, ("D", "b", "mass"), (4, 4, 5)), speed=nm.name("rim_speed", lang),
+                         v=_g(d.get("rim_speed"), 4), u=u("rim_speed")),
+        t["rim"].format(dims=dims(r, ("D", "D_inner", "b", "mass"), (4, 4, 4, 5)),
+                        speed=nm.name("rim_speed", lang), v=_g(r.get("rim_speed"), 4), u=u("rim_speed"),
+                        lim=_g(s.get("flywheel_rim_speed_limit"), 3)),
+        t["omega_extremes"].format(wmax=sym("omega_max"), vmax=_g(s["omega_max"], 6),
+                                   amax=f"{s['phi_omega_max_deg']:.2f}", wmin=sym("omega_min"),
+                                   vmin=_g(s["omega_min"], 6), amin=f"{s['phi_omega_min_deg']:.2f}",
+                                   uw=u("omega_max"), T=nm.name("cycle_time", lang),
+                                   v=_g(s["cycle_time"], 6), uT=u("cycle_time")),
     ]
     parts.append(f"\n## {t['sizing']}\n\n" + "\n".join(sizing_lines) + "\n")
 
+    point_keys, link_keys = ("v_q", "v", "a_q", "a"), ("omega_q", "omega", "epsilon_q", "epsilon")
     for a in results.at:
-        parts.append(f"\n## {t['motion']}: φ = {_g(a['phi_deg'], 6)}°\n\n"
-                     f"ω = {_g(a['omega'], 6)} rad/s, ε = {_g(a['epsilon'], 6)} rad/s²; "
+        motion = t["at"].format(w=_g(a["omega"], 6), uw=u("omega"), e=_g(a["epsilon"], 6), ue=u("epsilon"))
+        parts.append(f"\n## {t['motion']}: φ = {_g(a['phi_deg'], 6)}°\n\n{motion}; "
                      "v = v_q·ω, a = |a_q·ω² + v_q·ε|, ω_i = ω_q·ω, ε_i = ε_q·ω² + ω_q·ε\n\n")
-        body = [[n, _g(p.get("v_q"), 5), _g(p.get("v"), 5), _g(p.get("a_q"), 5), _g(p.get("a"), 5)]
-                for n, p in a["points"].items()]
-        parts.append(_table([t["point"], "v_q [m/rad]", "v [m/s]", "a_q [m/rad²]", "a [m/s²]"], body))
-        body = [[n, _g(lk.get("omega_q"), 5), _g(lk.get("omega"), 5), _g(lk.get("epsilon_q"), 5),
-                 _g(lk.get("epsilon"), 5)] for n, lk in a["links"].items()]
-        parts.append("\n" + _table([t["link"], "ω_q", "ω [rad/s]", "ε_q [1/rad]", "ε [rad/s²]"], body))
+        body = [[n] + [_g(p.get(k), 5) for k in point_keys] for n, p in a["points"].items()]
+        parts.append(_table([t["point"], *(h(k) for k in point_keys)], body))
+        body = [[n] + [_g(lk.get(k), 5) for k in link_keys] for n, lk in a["links"].items()]
+        parts.append("\n" + _table([t["link"], *(h(k) for k in link_keys)], body))
 
     td = s.get("time_domain")
     if td:

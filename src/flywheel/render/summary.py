@@ -1,25 +1,16 @@
 """The rich summary on the terminal (`flywheel run`): the same numbers as summary.json."""
 from __future__ import annotations
 
+from flywheel.render import nomenclature as nm
+
+# Sentence templates and table words only: every quantity's name, symbol and unit comes from
+# the nomenclature (render/nomenclature.py), filled in where the templates say {…}.
 L10N = {
     "en": {
-        "crank_length": "crank length l1", "omega_mean": "mean angular velocity ω_m",
-        "cycle_work_resistance": "work of the resistance over a cycle A_C",
-        "driving_moment": "driving moment M_D (cycle mean)",
-        "delta_T_max": "largest energy fluctuation ΔT_нб", "J_II_mean": "J_II, cycle mean",
-        "J_required": "required inertia of the first group J_I (Merzalov)",
-        "J_required_exact": "required J_I, exact (energy–mass diagram)",
-        "J_first_group": "already on the crank shaft", "J_flywheel": "flywheel J_M = J_I − first group",
-        "delta": "target δ", "delta_achieved": "δ achieved with J_I (Merzalov)",
-        "delta_achieved_exact": "δ achieved with the exact J_I",
-        "omega_max": "ω_max", "omega_min": "ω_min",
-        "dT": "ΔT_I max / min", "disk": "flywheel as a solid disk", "rim": "flywheel as a rim",
-        "title_main": "Results", "title_at": "At φ = {phi}°: ω = {w} rad/s, ε = {e} rad/s²",
+        "title_main": "Results", "title_at": "At φ = {phi}°: ω = {w} {uw}, ε = {e} {ue}",
         "point": "point", "link": "link", "quantity": "quantity", "value": "value", "unit": "unit",
-        "warning": "warning",
-        "fw_shaft": "flywheel shaft: speed ratio i, J_M/i²", "fw_material": "flywheel material",
-        "fw_rim_share": "rim share of J_M (hub and spokes the rest)",
-        "at": "at", "steel": "steel", "cast-iron": "cast iron", "limit": "rim speed ≤",
+        "warning": "warning", "at": "at",
+        "fw_shaft": "flywheel shaft: speed ratio {i}, {J}",
         "td_verify": "time integration (solve_ivp, {n} cycles): repeats to {rep}, follows ω(φ) to "
                      "{dev}, period {T} s",
         "st_none": "start-up: not computed ({reason})",
@@ -34,24 +25,10 @@ L10N = {
                     "the machine keeps turning",
     },
     "ru": {
-        "crank_length": "длина кривошипа l1", "omega_mean": "средняя угловая скорость ω_ср",
-        "cycle_work_resistance": "работа сил сопротивления за цикл A_C",
-        "driving_moment": "приведённый движущий момент M_PRD",
-        "delta_T_max": "наибольшее изменение кин. энергии ΔT_нб", "J_II_mean": "J_II, среднее за цикл",
-        "J_required": "необходимый момент инерции I группы J_PRI (Мерцалов)",
-        "J_required_exact": "необходимый J_PRI, точно (диаграмма Виттенбауэра)",
-        "J_first_group": "уже на валу кривошипа (J_10 + J_ред)",
-        "J_flywheel": "момент инерции маховика J_доп",
-        "delta": "заданный δ", "delta_achieved": "достигнутый δ (Мерцалов)",
-        "delta_achieved_exact": "достигнутый δ (точный J)",
-        "omega_max": "ω_max", "omega_min": "ω_min",
-        "dT": "ΔT_I max / min", "disk": "маховик — сплошной диск", "rim": "маховик — обод",
-        "title_main": "Результаты", "title_at": "При φ = {phi}°: ω = {w} рад/с, ε = {e} рад/с²",
+        "title_main": "Результаты", "title_at": "При φ = {phi}°: ω = {w} {uw}, ε = {e} {ue}",
         "point": "точка", "link": "звено", "quantity": "величина", "value": "значение",
-        "unit": "ед.", "warning": "предупреждение",
-        "fw_shaft": "вал маховика: передаточное отношение i, J_M/i²", "fw_material": "материал маховика",
-        "fw_rim_share": "доля J_M на ободе (остальное — ступица и спицы)",
-        "at": "при", "steel": "сталь", "cast-iron": "чугун", "limit": "окружная скорость ≤",
+        "unit": "ед.", "warning": "предупреждение", "at": "при",
+        "fw_shaft": "вал маховика: передаточное отношение {i}, {J}",
         "td_verify": "интегрирование во времени (solve_ivp, циклов: {n}): движение повторяется с "
                      "точностью {rep}, совпадает с ω(φ) до {dev}, период {T} с",
         "st_none": "разгон: не рассчитан ({reason})",
@@ -128,53 +105,68 @@ def print_summary(results, console=None, lang: str = "en") -> None:
     t = L10N[lang]
     console = console or Console()
     s = results.scalars
+
+    def u(*keys: str) -> str:
+        return ", ".join(nm.unit_of(k, lang) for k in keys)
+
+    def at(key: str) -> str:
+        """The value of ``key`` and where (φ) it is."""
+        return f"{_g(s[key])} {t['at']} {s[f'phi_{key}_deg']:.2f}°"
+
     console.print(f"[bold]{results.title}[/bold]" + (f"  ({results.source})" if results.source else ""))
     tab = Table(title=t["title_main"])
     tab.add_column(t["quantity"])
     tab.add_column(t["value"], justify="right")
     tab.add_column(t["unit"])
-    rows = [
-        ("crank_length", "m"), ("omega_mean", "rad/s"), ("cycle_work_resistance", "J"),
-        ("driving_moment", "N·m"), ("J_II_mean", "kg·m²"), ("delta_T_max", "J"),
-    ]
-    for key, unit in rows:
-        tab.add_row(t[key], _g(s[key]), unit)
-    tab.add_row(t["dT"], f"{_g(s['delta_T_I_max'])} {t['at']} {s['phi_delta_T_I_max_deg']:.2f}° / "
-                         f"{_g(s['delta_T_I_min'])} {t['at']} {s['phi_delta_T_I_min_deg']:.2f}°", "J")
-    for key, unit in [("J_required", "kg·m²"), ("J_required_exact", "kg·m²"),
-                      ("J_first_group", "kg·m²"), ("J_flywheel", "kg·m²"), ("delta", ""),
-                      ("delta_achieved", ""), ("delta_achieved_exact", "")]:
-        tab.add_row(t[key], _g(s[key]), unit)
-    tab.add_row(t["omega_max"], f"{_g(s['omega_max'])} {t['at']} {s['phi_omega_max_deg']:.2f}°", "rad/s")
-    tab.add_row(t["omega_min"], f"{_g(s['omega_min'])} {t['at']} {s['phi_omega_min_deg']:.2f}°", "rad/s")
+    for key in ("crank_length", "omega_mean", "cycle_work_resistance", "driving_moment",
+                "J_II_mean", "delta_T_max"):
+        tab.add_row(nm.name(key, lang), _g(s[key]), u(key))
+    tab.add_row(f"{nm.symbol('dT_I', lang)} max / min", f"{at('delta_T_I_max')} / {at('delta_T_I_min')}",
+                u("dT_I"))
+    for key in ("J_required", "J_required_exact", "J_first_group", "J_flywheel", "delta",
+                "delta_achieved", "delta_achieved_exact"):
+        tab.add_row(nm.name(key, lang), _g(s[key]), u(key))
+    for key in ("omega_max", "omega_min"):
+        tab.add_row(nm.name(key, lang), at(key), u(key))
     if "flywheel_speed_ratio" in s:
-        tab.add_row(t["fw_shaft"], f"i = {_g(s['flywheel_speed_ratio'])}, {_g(s['flywheel_J_on_its_shaft'])}",
-                    "–, kg·m²")
+        tab.add_row(t["fw_shaft"].format(i=nm.symbol("flywheel_speed_ratio", lang),
+                                         J=nm.symbol("flywheel_J_on_its_shaft", lang)),
+                    f"{nm.symbol('flywheel_speed_ratio', lang)} = {_g(s['flywheel_speed_ratio'])}, "
+                    f"{_g(s['flywheel_J_on_its_shaft'])}",
+                    u("flywheel_speed_ratio", "flywheel_J_on_its_shaft"))
     if "flywheel_material" in s:
-        mat = t.get(s["flywheel_material"], s["flywheel_material"])
         lim = s.get("flywheel_rim_speed_limit")
-        tab.add_row(t["fw_material"], f"{mat}, ρ = {_g(s['flywheel_material_density'], 5)}"
-                    + (f"; {t['limit']} {_g(lim, 3)}" if lim else ""), "kg/m³" + (", m/s" if lim else ""))
+        tab.add_row(nm.name("flywheel_material", lang),
+                    f"{nm.material(s['flywheel_material'], lang)}, "
+                    f"{nm.symbol('flywheel_material_density', lang)} = "
+                    f"{_g(s['flywheel_material_density'], 5)}"
+                    + (f"; {nm.name('flywheel_rim_speed_limit', lang)} {_g(lim, 3)}" if lim else ""),
+                    u("flywheel_material_density", *(["flywheel_rim_speed_limit"] if lim else [])))
     share = results.sizing.rim_share
     if share < 1 - 1e-9:
-        tab.add_row(t["fw_rim_share"], _g(share, 4), "")
-    d, r = s["flywheel_disk"], s["flywheel_rim"]
-    tab.add_row(t["disk"], f"D = {_g(d['D'], 4)}, b = {_g(d['b'], 4)}, m = {_g(d['mass'], 5)}", "m, m, kg")
-    tab.add_row(t["rim"], f"D = {_g(r['D'], 4)}, D1 = {_g(r['D_inner'], 4)}, b = {_g(r['b'], 4)}, "
-                          f"m = {_g(r['mass'], 5)}", "m, m, m, kg")
+        tab.add_row(nm.name("flywheel_rim_share", lang), _g(share, 4), u("flywheel_rim_share"))
+    for key, fields, digits in (("flywheel_disk", ("D", "b", "mass"), (4, 4, 5)),
+                                ("flywheel_rim", ("D", "D_inner", "b", "mass"), (4, 4, 4, 5))):
+        d = s[key]
+        tab.add_row(nm.name(key, lang), ", ".join(f"{nm.symbol(f, lang)} = {_g(d[f], n)}"
+                                                  for f, n in zip(fields, digits)), u(*fields))
     console.print(tab)
     for a in results.at:
-        pt = Table(title=t["title_at"].format(phi=_g(a["phi_deg"]), w=_g(a["omega"]), e=_g(a["epsilon"])))
-        for col in (t["point"], "x [m]", "y [m]", "v_q [m]", "a_q [m]", "v [m/s]", "a [m/s²]"):
-            pt.add_column(col, justify="right")
+        pt = Table(title=t["title_at"].format(phi=_g(a["phi_deg"]), w=_g(a["omega"]), e=_g(a["epsilon"]),
+                                              uw=nm.unit_of("omega", lang),
+                                              ue=nm.unit_of("epsilon", lang)))
+        point_keys = ("x", "y", "v_q", "a_q", "v", "a")
+        for col in (t["point"], *(nm.heading(k, lang) for k in point_keys)):
+            pt.add_column(escape(col), justify="right")
         for name, p in a["points"].items():
-            pt.add_row(name, *(_g(p[k], 5) if k in p else "—" for k in ("x", "y", "v_q", "a_q", "v", "a")))
+            pt.add_row(name, *(_g(p[k], 5) if k in p else "—" for k in point_keys))
         console.print(pt)
         lt = Table()
-        for col in (t["link"], "ω_q", "ε_q [1/rad]", "ω [rad/s]", "ε [rad/s²]"):
-            lt.add_column(col, justify="right")
+        link_keys = ("omega_q", "epsilon_q", "omega", "epsilon")
+        for col in (t["link"], *(nm.heading(k, lang) for k in link_keys)):
+            lt.add_column(escape(col), justify="right")
         for name, lk in a["links"].items():
-            lt.add_row(name, *(_g(lk[k], 5) if k in lk else "—" for k in ("omega_q", "epsilon_q", "omega", "epsilon")))
+            lt.add_row(name, *(_g(lk[k], 5) if k in lk else "—" for k in link_keys))
         console.print(lt)
     for line in time_domain_lines(s.get("time_domain"), lang):
         console.print(line, markup=False)

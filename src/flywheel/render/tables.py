@@ -9,15 +9,18 @@ import json
 
 import numpy as np
 
+from flywheel.render.nomenclature import csv_header
+
 
 def _fmt(x: float) -> str:
     return "%.12g" % (0.0 if x == 0 else x)
 
 
 def table_csv(results) -> str:
-    """Every column on the grid; the header names each quantity with its unit: ``name [unit]``."""
+    """Every column on the grid; the header names each quantity with its unit: ``key [unit]``
+    (the nomenclature's SI unit)."""
     cols = results.columns
-    header = ",".join(f"{name} [{c.unit}]" for name, c in cols.items())
+    header = ",".join(csv_header(key) for key in cols)
     data = np.column_stack([c.values for c in cols.values()])
     lines = [header]
     lines += [",".join(_fmt(v) for v in row) for row in data]
@@ -27,7 +30,7 @@ def table_csv(results) -> str:
 def positions_csv(results) -> str:
     """The standard positions (every 30° and the sliders' dead centres): every column there."""
     cols = results.columns
-    header = "position," + ",".join(f"{name} [{c.unit}]" for name, c in cols.items())
+    header = "position," + ",".join(csv_header(key) for key in cols)
     lines = [header]
     for label, phi in results.position_angles:
         i = results.index_of(phi)
