@@ -231,13 +231,16 @@ class ForceResult:
 
     @property
     def joints(self) -> dict:
-        """Reactions (forces.Reaction) by key "<point>:<i>-><j>"; empty if tabulated."""
-        return self.analysis.joints if self.analysis is not None else {}
+        """Reactions (forces.Reaction) by key "<point>:<i>-><j>", from the crank outwards (the
+        reverse of the order the groups are solved in); empty if tabulated."""
+        return dict(reversed(self.analysis.joints.items())) if self.analysis is not None else {}
 
     @property
     def slider_crank(self) -> dict:
-        """forces.SliderCrank by slider; empty if tabulated."""
-        return self.analysis.slider_crank if self.analysis is not None else {}
+        """forces.SliderCrank by slider, in the mechanism's order; empty if tabulated."""
+        if self.analysis is None:
+            return {}
+        return dict(reversed(self.analysis.slider_crank.items()))
 
     def as_dict(self) -> dict:
         """summary.json's results.force_analysis."""
@@ -268,7 +271,7 @@ class ForceResult:
                                           "zhukovsky": float(self.M_y_zhukovsky[i]),
                                           "power": float(self.M_y_power[i])}}
         joints = {}
-        for key, r in fa.joints.items():
+        for key, r in self.joints.items():
             e = {"point": r.joint, "by": r.by, "on": r.on, **_vector_entry(float(r.x[i]), float(r.y[i]))}
             s = fa.slides.get(key)
             if s is not None:
@@ -282,7 +285,7 @@ class ForceResult:
                 "crank_pin_x": float(sc.crank_pin_x[i]), "crank_pin_y": float(sc.crank_pin_y[i]),
                 "crank_pin_tangential": float(sc.crank_pin_tangential[i]),
                 "crank_pin_radial": float(sc.crank_pin_radial[i]),
-                "turning_moment": float(sc.turning_moment[i])} for name, sc in fa.slider_crank.items()}
+                "turning_moment": float(sc.turning_moment[i])} for name, sc in self.slider_crank.items()}
         mb = fa.main_bearing_load
         out["main_bearing_load"] = _vector_entry(float(mb.x[i]), float(mb.y[i]))
         P = self.crank_pin_load[i]

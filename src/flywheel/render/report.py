@@ -7,6 +7,8 @@ from __future__ import annotations
 
 import math
 
+from flywheel.render.forces import report_section
+
 T = {
     "en": {
         "title": "Dynamic analysis", "source": "Source", "input": "1. Input data",
@@ -204,6 +206,7 @@ def report_markdown(results, lang: str = "en", plots: list[str] | None = None) -
                  _g(lk.get("epsilon"), 5)] for n, lk in a["links"].items()]
         parts.append("\n" + _table([t["link"], "ω_q", "ω [rad/s]", "ε_q [1/rad]", "ε [rad/s²]"], body))
 
+    parts.append(report_section(results, lang))     # the force analysis (render/forces.py)
     td = s.get("time_domain")
     if td:
         parts.append(f"\n## {t['time']}\n\n{t['time_note']}\n\n" + "\n".join(_time_lines(td, s, t)) + "\n")

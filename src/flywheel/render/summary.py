@@ -1,6 +1,8 @@
 """The rich summary on the terminal (`flywheel run`): the same numbers as summary.json."""
 from __future__ import annotations
 
+from flywheel.render.forces import print_forces
+
 L10N = {
     "en": {
         "crank_length": "crank length l1", "omega_mean": "mean angular velocity ω_m",
@@ -176,6 +178,7 @@ def print_summary(results, console=None, lang: str = "en") -> None:
         for name, lk in a["links"].items():
             lt.add_row(name, *(_g(lk[k], 5) if k in lk else "—" for k in ("omega_q", "epsilon_q", "omega", "epsilon")))
         console.print(lt)
+    print_forces(results, console, lang)            # the force analysis (render/forces.py)
     for line in time_domain_lines(s.get("time_domain"), lang):
         console.print(line, markup=False)
     for w in results.warnings:
