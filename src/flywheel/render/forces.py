@@ -46,7 +46,9 @@ T = {
         "at": "At φ = {a}°",
         "frame": ("crank-pin load {P} N (F_T = {T} N, F_R = {R} N); main bearing {B} N; "
                   "shaking force {S} N, shaking moment {M} N·m"),
-        "tab_positions": "M_y by the power balance at the table's positions [N·m]",
+        "tab_positions": ("M_y by the power balance at the table's positions [N·m], beside the "
+                          "seed's static and dynamic moments at ω_m (with the steady motion "
+                          "M_y = M_st + M_dyn)"),
     },
     "ru": {
         "title": "Силовой расчёт (кинетостатика)",
@@ -81,7 +83,9 @@ T = {
         "at": "При φ = {a}°",
         "frame": ("нагрузка на шатунную шейку {P} Н (F_T = {T} Н, F_R = {R} Н); на коренной "
                   "подшипник {B} Н; сила, действующая на стойку, {S} Н, момент {M} Н·м"),
-        "tab_positions": "M_у из баланса мощностей в положениях таблицы [Н·м]",
+        "tab_positions": ("M_у из баланса мощностей в положениях таблицы [Н·м] рядом с "
+                          "моментами статического и динамического сопротивления при ω_ср (при "
+                          "равномерном вращении M_у = M_ст + M_дин)"),
         "note": ("реакции в кинематических парах требуют схемы механизма: кинематика задана "
                  "таблицей, поэтому M_у найден только из баланса мощностей, "
                  "M_у = (J_I + J_II)·ε + ½·dJ_II/dφ·ω² − M_изв"),
@@ -274,9 +278,14 @@ def report_section(results, lang: str = "en") -> str:
     deg = "φ [" + unit("deg", lang) + "]"
     My = f"{symbol('M_y', lang)} [{unit_of('M_y', lang)}]"
     if fa is None:
-        header = [t["pos"], deg, My]
-        body = [[lab, _g(math.degrees(p), 6), _g(float(f.M_y_power[results.index_of(p)]), 6)]
-                for lab, p in results.position_angles]
+        parts_of = [k for k in ("M_st", "M_dyn") if k in results.columns]    # seed 004's Мст, Мдин
+        header = [t["pos"], deg] + [f"{symbol(k, lang)} [{unit_of(k, lang)}]" for k in parts_of] + [My]
+        body = []
+        for lab, p in results.position_angles:
+            i = results.index_of(p)
+            body.append([lab, _g(math.degrees(p), 6)]
+                        + [_g(float(results.columns[k].values[i]), 6) for k in parts_of]
+                        + [_g(float(f.M_y_power[i]), 6)])
         parts.append(f"\n{t['tab_positions']}\n\n" + _table(header, body))
         parts.append(f"\n{t['moments']}\n\n" + _table([deg, t["power"]], _moment_rows(results)))
         return "".join(parts)
