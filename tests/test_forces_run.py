@@ -376,3 +376,21 @@ def test_force_figures(lang):
     np.testing.assert_array_equal(fig.axes[0].lines[0].get_xdata(), res.forces.crank_pin_tangential)
     fig.clear()
     assert [n for n, _ in pf.figures(results_of("press"), lang)] == ["balancing_moment.png"]
+
+
+def test_round_off_is_not_magnified_on_the_balancing_moment_plot():
+    """The four-bar's loads do no net work: with the true motion M_y = M_D = 0 to 1e-15 N·m; the
+    axis spans a tenth of the first group's couple, not the round-off."""
+    from flywheel.render import plots_forces as pf
+
+    res = results_of("fourbar")
+    fig = pf.figure_balancing_moment(res)
+    lo, hi = fig.axes[0].get_ylim()
+    fig.clear()
+    couple = float(np.max(np.abs(res.forces.analysis.first_group_couple)))
+    assert hi - lo >= 0.2 * couple and lo < 0 < hi
+    steady = results_of("fourbar", "steady")
+    fig = pf.figure_balancing_moment(steady)
+    lo, hi = fig.axes[0].get_ylim()
+    fig.clear()
+    assert lo <= float(np.min(steady.forces.M_y)) and hi >= float(np.max(steady.forces.M_y))

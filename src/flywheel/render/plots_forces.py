@@ -114,9 +114,15 @@ def figure_balancing_moment(results, lang: str = "en"):
     key = "driving_moment" if results.energy.balance == "driving" else "balancing_moment"
     ax.axhline(f.M_const, color="C3", linewidth=0.9,
                label=_t(lang, "M_const", s=symbol(key, lang), v=f.M_const, u=unit_of(key, lang)))
+    # limits: 0, M_const and the curves; a span of round-off only (the true motion: M_y = M_D)
+    # is drawn as a line within ±10 % of the moments at stake, not magnified into noise
     lo = min(0.0, f.M_const, *(float(np.min(c)) for c in curves))
     hi = max(0.0, f.M_const, *(float(np.max(c)) for c in curves))
-    pad = 0.08 * (hi - lo) if hi > lo else 1.0
+    couple = f.analysis.first_group_couple if f.analysis is not None else results.motion.epsilon * results.motion.J_I
+    ref = max(abs(f.M_const), float(np.max(np.abs(couple))), 1e-12)
+    if hi - lo < 1e-6 * ref:
+        lo, hi = min(lo, f.M_const - 0.1 * ref), max(hi, f.M_const + 0.1 * ref)
+    pad = 0.08 * (hi - lo)
     ax.set_ylim(lo - pad, hi + pad)
     ax.set_ylabel(axis("M_y", lang))
     _phi_axis(ax, lang)
