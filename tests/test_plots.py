@@ -17,6 +17,7 @@ EXPECTED = {
     "positions.png", "velocity_analogues.png", "acceleration_analogues.png", "J_II.png",
     "indicator_HP.png", "indicator_LP.png", "piston_forces.png", "reduced_moments.png",
     "works.png", "omega.png", "epsilon.png", "scheme.png", "energy_mass.png", "time_law.png",
+    "reactions.png", "balancing_moment.png", "hodographs.png",      # the force analysis
 }
 
 

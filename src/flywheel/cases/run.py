@@ -300,6 +300,15 @@ class OutputSpec(StrictModel):
                                 description="report angles [deg]")
 
 
+class ForceAnalysisSpec(StrictModel):
+    """The force analysis (kinetostatics) of `flywheel run` (docs/forces.md)."""
+
+    motion: Literal["true", "steady"] = Field(
+        "true", description="the crank's motion for the inertia loads: 'true' = ω(φ), ε(φ) of "
+                            "the dynamics with the flywheel; 'steady' = ω_m constant, ε = 0 "
+                            "(`flywheel run --motion` overrides)")
+
+
 class Case(StrictModel):
     """A whole case file."""
 
@@ -320,6 +329,7 @@ class Case(StrictModel):
     flywheel: FlywheelSpec = Field(default_factory=FlywheelSpec)
     motor: MotorSpec | None = None
     output: OutputSpec = Field(default_factory=OutputSpec)
+    force_analysis: ForceAnalysisSpec = Field(default_factory=ForceAnalysisSpec)
 
     # -- derived -------------------------------------------------------------------------
     @property

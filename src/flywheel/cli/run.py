@@ -51,14 +51,19 @@ def run_command(
                                     "motion in time: check ω(φ), start-up (needs \\[motor]), run-down."),
     animate: bool = typer.Option(False, "--animate", help="Also write mechanism.gif: the linkage "
                                  "moving over one cycle with its points' trajectories (72 frames)."),
+    motion: Optional[str] = typer.Option(None, "--motion", help="Crank motion of the force "
+                                         "analysis: true (ω(φ), ε(φ) of the dynamics) | steady "
+                                         "(ω_m, ε = 0); default: the case's force_analysis.motion, "
+                                         "else true."),
 ) -> None:
-    """Run the whole dynamic analysis of a case; write summary.json, table.csv, positions.csv
-    and plots/*.png to the output folder."""
+    """Run the whole dynamic analysis of a case; write summary.json, table.csv, positions.csv,
+    forces.csv, forces_positions.csv, report.md and plots/*.png to the output folder."""
     if lang not in ("en", "ru"):
         fail(f"--lang: {lang!r} is not a language (allowed: en, ru)")
     from flywheel.cases.run import load_case
     from flywheel.dynamics.pipeline import analyze
     from flywheel.io.output import write_folder
+    from flywheel.render.forces import forces_csv, forces_positions_csv
     from flywheel.render.tables import positions_csv, summary_json, table_csv
 
     c = _guard(load_case, case)
@@ -66,7 +71,7 @@ def run_command(
         fail(f"--animate: {case} gives its kinematics as a table ([tabulated]): there is no "
              "mechanism to animate (allowed: a case with [crank] and [[dyads]])")
     results = _guard(analyze, c, n_points=points, at_deg=at, transients=transients,
-                     source=case, case=c)
+                     motion=motion, source=case, case=c)
     out = out if out is not None else Path("out") / case.stem
     text_json = summary_json(results)
 
@@ -74,6 +79,8 @@ def run_command(
         (folder / "summary.json").write_text(text_json, encoding="utf-8")
         (folder / "table.csv").write_text(table_csv(results), encoding="utf-8")
         (folder / "positions.csv").write_text(positions_csv(results), encoding="utf-8")
+        (folder / "forces.csv").write_text(forces_csv(results), encoding="utf-8")
+        (folder / "forces_positions.csv").write_text(forces_positions_csv(results), encoding="utf-8")
         pngs: list[str] = []
         if not no_plots:
             from flywheel.render.plots import write_plots
@@ -100,5 +107,6 @@ def run_command(
 
         print_summary(results, lang=lang)
         typer.echo(f"{'записано' if lang == 'ru' else 'written'}: {out}/ (summary.json, table.csv, "
-                   "positions.csv, report.md" + ("" if no_plots else ", plots/*.png")
+                   "positions.csv, forces.csv, forces_positions.csv, report.md"
+                   + ("" if no_plots else ", plots/*.png")
                    + (", mechanism.gif" if animate else "") + ")")

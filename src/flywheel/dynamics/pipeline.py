@@ -1,5 +1,5 @@
 """The analysis of a case: mechanism → grid → kinematics → loads → reduction → energy → sizing →
-motion → report angles → (time domain) → Results.
+motion → report angles → force analysis → (time domain) → Results.
 
 :func:`analyze` reads the validated case and calls the stages in order (design.md §1). This
 module is the linkage route: the case's mechanism gives the kinematics, and its cylinders,
@@ -22,22 +22,25 @@ from flywheel.dynamics.grid import (DEFAULT_POINTS, grid_options, linkage_grid, 
                                     slider_frame, standard_positions)
 from flywheel.dynamics.results import (CylinderResult, EnergyResult, LoadsResult, MotionResult,
                                        ReductionResult, Results, warnings_of)
+from flywheel.errors import InputError
 
 
 def analyze(case, n_points: int = DEFAULT_POINTS, at_deg: list[float] | None = None,
-            transients: bool = False) -> Results:
+            transients: bool = False, motion: str | None = None) -> Results:
     """Run the whole dynamic analysis of a validated case (:class:`flywheel.cases.run.Case`).
 
     n_points: uniform intervals over the cycle (the report angles, standard positions and dead
     centres are added as nodes); at_deg: report angles [deg] (default: the case's
     output.at_deg); transients: also integrate the equation of motion in time (a check of
-    ω(φ), start-up with the case's motor, run-down; imports scipy). Raises FlywheelError
-    subclasses for input that cannot be analysed.
+    ω(φ), start-up with the case's motor, run-down; imports scipy); motion: the crank's
+    motion in the force analysis, "true" or "steady" (default: the case's
+    force_analysis.motion). Raises FlywheelError subclasses for input that cannot be analysed.
     """
+    motion = force_motion(case, motion)
     if case.tabulated is not None:
         from flywheel.dynamics.tabulated import analyze_tabulated
 
-        return analyze_tabulated(case, n_points, at_deg, transients)
+        return analyze_tabulated(case, n_points, at_deg, transients, motion)
     at_deg = grid_options(case, n_points, at_deg)
     mech = case.mechanism()
     positions, dcs = standard_positions(mech)
@@ -47,14 +50,49 @@ def analyze(case, n_points: int = DEFAULT_POINTS, at_deg: list[float] | None = N
     red = linkage_reduction(case, kin)
     en, sz, mo = stages.dynamics(phi, ld, red, case.machine, case.flywheel)
     at = report_angles(at_deg, kin, ld, red, en, mo)
+    fo = stages.force_analysis(phi, red, en, mo, case.machine.omega_mean, motion, mech, kin,
+                               force_loads(case, mech, dcs, kin, ld, mo.J_I))
     td = stages.time_domain(case, phi, red, en, mo) if transients else None
     return Results(
         title=case.title, source=case.source, phi=phi, kinematics=kin, loads=ld, reduction=red,
         energy=en, sizing=sz, motion=mo,
         columns=linkage_columns(phi, kin, mech.crank.name, ld, red, en, mo), at=at,
         position_angles=tuple(positions), links_drawn=links_drawn(mech),
-        crank_length=float(mech.crank.length), time_domain=td,
-        warnings=tuple(case.plausibility_warnings()) + warnings_of(ld, red, en, sz, mo, td))
+        crank_length=float(mech.crank.length), time_domain=td, forces=fo,
+        warnings=tuple(case.plausibility_warnings()) + warnings_of(ld, red, en, sz, mo, fo, td))
+
+
+def force_motion(case, motion: str | None) -> str:
+    """The motion of the force analysis: ``motion`` if given (``run --motion``), else the
+    case's force_analysis.motion; "true" or "steady" (InputError otherwise)."""
+    motion = motion if motion is not None else case.force_analysis.motion
+    if motion not in stages.MOTIONS:
+        raise InputError(f"--motion: {motion!r} is not a motion (allowed: "
+                         f"{', '.join(stages.MOTIONS)})")
+    return motion
+
+
+def force_loads(case, mech, dcs: dict, kin, ld: LoadsResult, J_I: float):
+    """The case's loads as the force analysis takes them (:class:`forces.Loads`), the same
+    loads whose reduced moments :func:`linkage_loads` gives: each gas force F (ld.cylinders) pushes
+    its piston away from the cylinder head along the guide, (F·sign(x_far − x_head))·u, whose
+    moment F·v_q is L.gas_moment; each technological force opposes its slider's velocity,
+    −F·sign(x′)·u, moment −F·|x′| (L.technological_moment); weights m·g at the centroids;
+    the couples; the links' masses; J_I [kg·m²] on the crank shaft (the first group as the
+    dynamics sized it)."""
+    from flywheel.dynamics import forces
+
+    pf = []
+    for cy, cr in zip(case.cylinders, ld.cylinders):
+        d, u, _, head, far = slider_frame(mech, dcs, cy.piston, cy.head, f"cylinders {cy.name}: piston")
+        F = cr.F * np.sign(far.x - head.x)
+        pf.append(forces.PointForce(cy.name, cy.piston, d.joint, F[:, None] * u))
+    for f in case.forces:
+        d, u, _, _, _ = slider_frame(mech, dcs, f.slider, f.reference, f"forces {f.name}: slider")
+        F = -ld.forces[f.name] * np.sign(kin.points[d.joint].v_q @ u)
+        pf.append(forces.PointForce(f.name, f.slider, d.joint, F[:, None] * u))
+    couples = tuple(forces.Couple(c.name, c.link, c.moment) for c in case.couples)
+    return forces.Loads(dict(case.links), tuple(pf), couples, tuple(case.machine.gravity), J_I)
 
 
 def linkage_loads(case, mech, dcs: dict, kin) -> LoadsResult:

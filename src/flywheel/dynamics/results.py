@@ -191,6 +191,111 @@ class TabulatedResult:
     M_dyn: np.ndarray                 # dynamic moment Мдин = ω_m²/2·dJ_II/dφ [N·m]
 
 
+def _vector_entry(x: float, y: float) -> dict:
+    """{"F": |F|, "Fx", "Fy", "angle_deg"} of a force [N] (angle from +x, ccw, in (−180°, 180°])."""
+    return {"F": math.hypot(x, y), "Fx": x, "Fy": y, "angle_deg": math.degrees(math.atan2(y, x))}
+
+
+@dataclass(frozen=True)
+class ForceResult:
+    """The force analysis (кинетостатика) of the run on the grid: joint reactions, the balancing
+    moment M_y three ways, the slider-crank quantities, the loads on the crank pin, the main
+    bearing and the frame (design.md §9; conventions in docs/forces.md, keys in
+    docs/results.md). Forces [N], moments [N·m]; M_y in the crank's direction of rotation,
+    like the driving moment M_D. For a tabulated case (no geometry) only the power balance's
+    M_y: ``analysis`` is None and ``note`` says why."""
+
+    motion: str                      # "true": ω(φ), ε(φ) of the dynamics; "steady": ω_m, ε = 0
+    omega: np.ndarray                # the crank's ω used [rad/s]
+    epsilon: np.ndarray              # the crank's ε used [rad/s²]
+    analysis: object | None          # flywheel.dynamics.forces.ForceAnalysis of ``motion``
+    M_y_zhukovsky: np.ndarray | None  # M_y by Zhukovsky's lever [N·m]
+    M_y_power: np.ndarray            # M_y by the power balance [N·m]
+    M_const: float                   # the constant moment of the dynamics (M_D when it drives) [N·m]
+    closure: float                   # true motion: max|M_y − M_const|/|M_const| [-] (see closure_reference)
+    closure_reference: str           # "M_D": relative to |M_const|; "J_I·ε": to max|J_I·ε| (M_const = 0)
+    M_y_cycle_mean: float            # (1/2π)∮M_y dφ of ``motion`` (trapezoid rule) [N·m]
+    crank_pin_load: np.ndarray | None        # (N, 2) force of the links on the crank pin [N]
+    crank_pin_tangential: np.ndarray | None  # its part along the pin's velocity [N] (positive drives)
+    crank_pin_radial: np.ndarray | None      # its part along the crank towards the shaft axis [N]
+    note: str = ""                   # why there are no joint reactions (tabulated case)
+    warnings: tuple[str, ...] = ()
+
+    @property
+    def M_y(self) -> np.ndarray:
+        """M_y [N·m], in the direction of rotation: kinetostatic if there is a linkage, else
+        the power balance's."""
+        return self.analysis.balancing_moment if self.analysis is not None else self.M_y_power
+
+    @property
+    def joints(self) -> dict:
+        """Reactions (forces.Reaction) by key "<point>:<i>-><j>", from the crank outwards (the
+        reverse of the order the groups are solved in); empty if tabulated."""
+        return dict(reversed(self.analysis.joints.items())) if self.analysis is not None else {}
+
+    @property
+    def slider_crank(self) -> dict:
+        """forces.SliderCrank by slider, in the mechanism's order; empty if tabulated."""
+        if self.analysis is None:
+            return {}
+        return dict(reversed(self.analysis.slider_crank.items()))
+
+    def as_dict(self) -> dict:
+        """summary.json's results.force_analysis."""
+        M = self.M_y
+        out: dict = {"motion": self.motion}
+        if self.motion == "steady":
+            out["omega"] = float(self.omega[0])
+        out.update(closure_reference=self.closure_reference,
+                   balancing_moment_cycle_mean=self.M_y_cycle_mean,
+                   balancing_moment_max=float(np.max(M)), balancing_moment_min=float(np.min(M)))
+        fa = self.analysis
+        if fa is not None:
+            out.update(
+                main_bearing_load_max=float(np.max(fa.main_bearing_load.magnitude)),
+                crank_pin_load_max=float(np.max(np.hypot(*self.crank_pin_load.T))),
+                shaking_force_max=float(np.max(np.hypot(*fa.shaking_force.T))),
+                shaking_moment_max=float(np.max(np.abs(fa.shaking_moment))))
+        if self.note:
+            out["note"] = self.note
+        return out
+
+    def at_entry(self, i: int) -> dict:
+        """What summary.json's results.at[k] gains at grid node i (docs/results.md)."""
+        fa = self.analysis
+        if fa is None:
+            return {"balancing_moment": {"power": float(self.M_y_power[i])}}
+        out: dict = {"balancing_moment": {"kinetostatic": float(fa.balancing_moment[i]),
+                                          "zhukovsky": float(self.M_y_zhukovsky[i]),
+                                          "power": float(self.M_y_power[i])}}
+        joints = {}
+        for key, r in self.joints.items():
+            e = {"point": r.joint, "by": r.by, "on": r.on, **_vector_entry(float(r.x[i]), float(r.y[i]))}
+            s = fa.slides.get(key)
+            if s is not None:
+                e.update(normal=float(s.normal[i]), offset=float(s.offset[i]))
+            joints[key] = e
+        out["joints"] = joints
+        if fa.slider_crank:
+            out["slider_crank"] = {name: {
+                "rod": sc.rod, "piston_effort": float(sc.piston_effort[i]),
+                "side_thrust": float(sc.side_thrust[i]), "rod_thrust": float(sc.rod_thrust[i]),
+                "crank_pin_x": float(sc.crank_pin_x[i]), "crank_pin_y": float(sc.crank_pin_y[i]),
+                "crank_pin_tangential": float(sc.crank_pin_tangential[i]),
+                "crank_pin_radial": float(sc.crank_pin_radial[i]),
+                "turning_moment": float(sc.turning_moment[i])} for name, sc in self.slider_crank.items()}
+        mb = fa.main_bearing_load
+        out["main_bearing_load"] = _vector_entry(float(mb.x[i]), float(mb.y[i]))
+        P = self.crank_pin_load[i]
+        out["crank_pin_load"] = {**_vector_entry(float(P[0]), float(P[1])),
+                                 "tangential": float(self.crank_pin_tangential[i]),
+                                 "radial": float(self.crank_pin_radial[i])}
+        Sx, Sy = fa.shaking_force[i]
+        out["shaking_force"] = _vector_entry(float(Sx), float(Sy))
+        out["shaking_moment"] = float(fa.shaking_moment[i])
+        return out
+
+
 def warnings_of(*stages) -> tuple[str, ...]:
     """The warnings of the stage results given (None for a stage not run), in stage order."""
     return tuple(w for r in stages if r is not None for w in r.warnings)
@@ -230,6 +335,7 @@ class Results:
     crank_length: float                      # [m]; NaN if a table gives none
     tabulated: TabulatedResult | None = None
     time_domain: TimeDomainResult | None = None
+    forces: ForceResult | None = None        # the force analysis (kinetostatics)
     warnings: tuple[str, ...] = ()
 
     def index_of(self, phi: float) -> int:
@@ -296,7 +402,21 @@ class Results:
         })
         if self.time_domain is not None:
             out["time_domain"] = self.time_domain.as_dict()
+        if self.forces is not None:
+            out["balancing_moment_closure"] = self.forces.closure
+            out["force_analysis"] = self.forces.as_dict()
         return out
+
+    def at_document(self) -> list[dict]:
+        """summary.json's results.at: the report angles' entries, each with the force
+        analysis at its node (ForceResult.at_entry) when there is one."""
+        if self.forces is None:
+            return list(self.at)
+        return [{**a, **self.forces.at_entry(self.at_index(a["phi_deg"]))} for a in self.at]
+
+    def at_index(self, phi_deg: float) -> int:
+        """Grid index of the report angle ``phi_deg`` [deg] (a node, taken mod 360°)."""
+        return int(np.argmin(np.abs(self.phi - math.radians(phi_deg) % (2 * np.pi))))
 
     def to_document(self) -> dict:
         """The summary.json document, JSON-ready (:func:`json_ready`)."""
@@ -304,6 +424,6 @@ class Results:
             "title": self.title,
             "source": self.source,
             "units": UNITS,
-            "results": {**self.scalars, "at": list(self.at)},
+            "results": {**self.scalars, "at": self.at_document()},
             "warnings": list(self.warnings),
         })

@@ -15,8 +15,9 @@ from dataclasses import replace
 import numpy as np
 
 from flywheel.dynamics import energy, motion, reduction, sizing
-from flywheel.dynamics.results import (EnergyResult, FlywheelShape, LoadsResult, MotionResult,
-                                       ReductionResult, SizingResult, TimeDomainResult)
+from flywheel.dynamics.results import (EnergyResult, FlywheelShape, ForceResult, LoadsResult,
+                                       MotionResult, ReductionResult, SizingResult,
+                                       TimeDomainResult)
 from flywheel.errors import InputError
 
 
@@ -178,6 +179,119 @@ def dynamics(phi: np.ndarray, loads: LoadsResult, red: ReductionResult, machine,
     sz = size_flywheel(phi, en, red, machine, fw)
     mo = true_motion(phi, en, red, sz)
     return en, with_rim_speeds(sz, mo, fw), mo
+
+
+MOTIONS = ("true", "steady")
+"""The crank motions of the force analysis: ω(φ), ε(φ) of the dynamics, or ω_m with ε = 0."""
+
+
+def force_analysis(phi: np.ndarray, red: ReductionResult, en: EnergyResult, mo: MotionResult,
+                   omega_mean: float, motion: str = "true", mech=None, kin=None,
+                   loads=None) -> ForceResult:
+    """The force analysis (кинетостатика) of the run (design.md §9; docs/forces.md).
+
+    motion: "true" — the crank's ω(φ), ε(φ) of the dynamics (``mo``) — or "steady" — ω = ω_m,
+    ε = 0, "the crank turns uniformly" of textbook problems. With a linkage (``mech``, ``kin``
+    and ``loads``, a :class:`flywheel.dynamics.forces.Loads` whose J_first_group is mo.J_I):
+    :func:`~flywheel.dynamics.forces.kinetostatics` (every reaction, M_y), M_y again by
+    Zhukovsky's lever and by the power balance, the total load on the crank pin. Without one
+    (a tabulated case) only the power balance, from the reduced quantities:
+    M_y = (J_I + J_II)·ε + ½·J_II′·ω² − M_known (:func:`reduced_balancing_moment`).
+
+    The closure is always of the true motion: M_y = M_const (the constant moment of the
+    dynamics) at every node, the equation of motion read backwards; reported as
+    max|M_y − M_const|/|M_const| (relative to max|J_I·ε| if M_const = 0). A group singular at
+    some node raises InputError naming the group and the angle (forces.kinetostatics)."""
+    from flywheel.dynamics import forces as fo
+
+    if motion not in MOTIONS:
+        raise InputError(f"force analysis: motion {motion!r} (allowed: {', '.join(MOTIONS)})")
+    true_w, true_e = mo.omega, mo.epsilon
+    if motion == "true":
+        w, e = true_w, true_e
+    else:
+        w, e = np.full_like(phi, omega_mean), np.zeros_like(phi)
+    M_const = float(en.balancing_moment)
+    J_eps = mo.J_I * np.abs(true_e)
+
+    def closure(M_true: np.ndarray) -> tuple[float, str]:
+        dev = float(np.max(np.abs(M_true - M_const)))
+        if M_const != 0:
+            return dev / abs(M_const), "M_D"
+        scale = float(np.max(J_eps))
+        return (dev / scale, "J_I·ε") if scale > 0 else (dev, "absolute")
+
+    def mean(M: np.ndarray) -> float:
+        return float(np.sum(energy.trapezoid_areas(M, phi)) / (phi[-1] - phi[0]))
+
+    if mech is None:
+        J, dJ = mo.J_I + red.J_II, red.dJ_II
+        M_power = reduced_balancing_moment(J, dJ, en.M_known, w, e)
+        M_true = M_power if motion == "true" else reduced_balancing_moment(
+            J, dJ, en.M_known, true_w, true_e)
+        c, ref = closure(M_true)
+        return ForceResult(
+            motion=motion, omega=w, epsilon=e, analysis=None, M_y_zhukovsky=None,
+            M_y_power=M_power, M_const=M_const, closure=c, closure_reference=ref,
+            M_y_cycle_mean=mean(M_power), crank_pin_load=None, crank_pin_tangential=None,
+            crank_pin_radial=None,
+            note="joint reactions need a linkage: the kinematics are a table, so M_y is given by "
+                 "the power balance only, M_y = (J_I + J_II)·ε + ½·dJ_II/dφ·ω² − M_known")
+    fa = fo.kinetostatics(mech, kin, w, e, loads)
+    fa_true = fa if motion == "true" else fo.kinetostatics(mech, kin, true_w, true_e, loads)
+    warnings = []
+    if not any(getattr(m, "mass", 0) or getattr(m, "J_S", 0) for m in loads.masses.values()):
+        warnings.append("force analysis: no link has mass or J_S, so the reactions are those of "
+                        "the given forces alone (no inertia forces)")
+    P, Ft, Fr = crank_pin_load(mech, kin, fa)
+    c, ref = closure(fa_true.balancing_moment)
+    return ForceResult(
+        motion=motion, omega=w, epsilon=e, analysis=fa,
+        M_y_zhukovsky=fo.zhukovsky_moment(mech, kin, w, e, loads),
+        M_y_power=fo.power_balance_moment(mech, kin, w, e, loads), M_const=M_const, closure=c,
+        closure_reference=ref, M_y_cycle_mean=mean(fa.balancing_moment), crank_pin_load=P,
+        crank_pin_tangential=Ft, crank_pin_radial=Fr, warnings=tuple(warnings))
+
+
+def reduced_balancing_moment(J: np.ndarray, dJ: np.ndarray, M_known: np.ndarray, omega,
+                             epsilon) -> np.ndarray:
+    """M_y [N·m, in the direction of rotation] from the reduced quantities alone: the
+    kinetic-energy theorem for the machine reduced to the crank, d(½·J·ω²)/dt = (M_y + M_known)·ω
+    with J = J_I + J_II(φ) [kg·m²], J′ = dJ_II/dφ [kg·m²/rad] and dφ/dt = ω, gives
+    J·ω·ε + ½·J′·ω³ = (M_y + M_known)·ω, so
+
+        M_y = J·ε + ½·J′·ω² − M_known
+
+    (Артоболевский, «Теория механизмов и машин», уравнение движения машины в
+    дифференциальной форме; seed 004, eq. (5): Мдин = ω1²/2·dIпр/dφ + ε1·Iпр, with
+    Мст = −M_known: M_y = Мст + Мдин + J_I·ε — in steady motion, ε = 0, M_y = Мст + Мдин).
+    With the true motion, ε = (M_known + M_const − ½·J′·ω²)/J (motion.angular_acceleration),
+    so M_y = M_const at every node.
+
+    >>> float(reduced_balancing_moment(np.array([2.0]), np.array([0.5]), np.array([-3.0]), 4.0, 1.0)[0])
+    9.0
+    """
+    return J * epsilon + 0.5 * dJ * np.asarray(omega) ** 2 - M_known
+
+
+def crank_pin_load(mech, kin, fa) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The force [N] of every link on the crank pin, summed — (N, 2) in the case's frame — and
+    its parts along the pin's velocity (tangential, positive drives) and along the crank towards
+    the shaft axis (radial), as forces.SliderCrank has them for one rod (Khurmi & Gupta ch. 15):
+    the reverse of the crank's reactions at its tip."""
+    c = mech.crank
+    px = np.zeros(kin.phi.size)
+    py = np.zeros(kin.phi.size)
+    for r in fa.joints.values():
+        if r.joint == c.tip and r.by == c.name:
+            px, py = px - r.x, py - r.y
+        elif r.joint == c.tip and r.on == c.name:
+            px, py = px + r.x, py + r.y
+    A, O = kin.points[c.tip].r, kin.points[c.pivot].r
+    cx, cy = (A[:, 0] - O[:, 0]) / c.length, (A[:, 1] - O[:, 1]) / c.length
+    tangential = c.direction * (-px * cy + py * cx)
+    radial = -(px * cx + py * cy)
+    return np.stack([px, py], axis=1), tangential, radial
 
 
 def time_domain(case, phi: np.ndarray, red: ReductionResult, en: EnergyResult,

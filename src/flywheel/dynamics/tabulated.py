@@ -156,14 +156,15 @@ def dynamic_moments(spec, omega: float) -> np.ndarray:
 # -- the analysis ------------------------------------------------------------------------------
 
 def analyze_tabulated(case, n_points: int = DEFAULT_POINTS, at_deg: list[float] | None = None,
-                      transients: bool = False) -> Results:
+                      transients: bool = False, motion: str = "true") -> Results:
     """The dynamic analysis of a case whose kinematics are a table (``case.tabulated``).
 
     The table is a second source of the loads and of J_II's parts, on the grid with its
     positions and the report angles as nodes; from there the stages are those of
     :func:`flywheel.dynamics.pipeline.analyze` (:mod:`flywheel.dynamics.stages`). Results have
     ``kinematics=None`` (no positions: nothing to draw) and the table's positions as
-    ``position_angles``.
+    ``position_angles``. The force analysis has no joint reactions without a linkage: only
+    M_y by the power balance (``motion``: "true" or "steady", :func:`stages.force_analysis`).
     """
     spec = case.tabulated
     at_deg = grid_options(case, n_points, at_deg)
@@ -173,6 +174,7 @@ def analyze_tabulated(case, n_points: int = DEFAULT_POINTS, at_deg: list[float] 
     en, sz, mo = stages.dynamics(phi, ld, red, case.machine, case.flywheel)
     tab = tabulated_kinematics(spec, phi, red, en, case.machine.omega_mean)
     at = report_angles(at_deg, phi, tab, ld, red, en, mo)
+    fo = stages.force_analysis(phi, red, en, mo, case.machine.omega_mean, motion)
     td = stages.time_domain(case, phi, red, en, mo) if transients else None
     return Results(
         title=case.title, source=case.source, phi=phi, kinematics=None, loads=ld, reduction=red,
@@ -180,8 +182,8 @@ def analyze_tabulated(case, n_points: int = DEFAULT_POINTS, at_deg: list[float] 
         at=at, position_angles=tuple((f"{k + 1} ({p:g}°)", math.radians(p))
                                      for k, p in enumerate(spec.positions_deg)),
         links_drawn=(), crank_length=float(spec.crank_length) if spec.crank_length else float("nan"),
-        tabulated=tab, time_domain=td,
-        warnings=tuple(case.plausibility_warnings()) + warnings_of(red, ld, en, sz, mo, td))
+        tabulated=tab, time_domain=td, forces=fo,
+        warnings=tuple(case.plausibility_warnings()) + warnings_of(red, ld, en, sz, mo, fo, td))
 
 
 def tabulated_reduction(spec, phi: np.ndarray) -> ReductionResult:

@@ -8,6 +8,7 @@ from __future__ import annotations
 import math
 
 from flywheel.render import nomenclature as nm
+from flywheel.render.forces import report_section
 
 # Section titles, table words and sentence templates only: every quantity's symbol, name and
 # unit comes from the nomenclature (render/nomenclature.py), filled in where the templates
@@ -258,6 +259,7 @@ def report_markdown(results, lang: str = "en", plots: list[str] | None = None) -
         body = [[n] + [_g(lk.get(k), 5) for k in link_keys] for n, lk in a["links"].items()]
         parts.append("\n" + _table([t["link"], *(h(k) for k in link_keys)], body))
 
+    parts.append(report_section(results, lang))     # the force analysis (render/forces.py)
     td = s.get("time_domain")
     if td:
         parts.append(f"\n## {t['time']}\n\n{t['time_note']}\n\n" + "\n".join(_time_lines(td, s, t)) + "\n")

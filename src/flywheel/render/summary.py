@@ -2,6 +2,7 @@
 from __future__ import annotations
 
 from flywheel.render import nomenclature as nm
+from flywheel.render.forces import print_forces
 
 # Sentence templates and table words only: every quantity's name, symbol and unit comes from
 # the nomenclature (render/nomenclature.py), filled in where the templates say {…}.
@@ -168,6 +169,7 @@ def print_summary(results, console=None, lang: str = "en") -> None:
         for name, lk in a["links"].items():
             lt.add_row(name, *(_g(lk[k], 5) if k in lk else "—" for k in link_keys))
         console.print(lt)
+    print_forces(results, console, lang)            # the force analysis (render/forces.py)
     for line in time_domain_lines(s.get("time_domain"), lang):
         console.print(line, markup=False)
     for w in results.warnings:

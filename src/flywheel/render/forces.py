@@ -1,0 +1,325 @@
+"""The force analysis as people read it: forces.csv, forces_positions.csv, the rich summary's
+section and report.md's section (issue 12). Text only: every number comes from
+``Results.forces`` (:class:`~flywheel.dynamics.results.ForceResult`); every quantity's name,
+symbol and unit from :mod:`flywheel.render.nomenclature`; this module keeps the sentence
+templates. Numbers in the CSV files follow render/tables.py: 12 significant digits (``%.12g``),
+so the same input gives byte-identical files.
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from flywheel.render.nomenclature import csv_header, name, position_label, symbol, unit, unit_of
+
+T = {
+    "en": {
+        "title": "Force analysis (kinetostatics)",
+        "motion_true": "motion: true — ω(φ), ε(φ) of the dynamics with the flywheel "
+                       "(J_I = {J} kg·m² on the crank shaft)",
+        "motion_steady": "motion: steady — ω = ω_m = {w} rad/s, ε = 0 (the crank turns uniformly)",
+        "closure": "closure with the dynamics (true motion): max|M_y − {ref}|/|{ref}| = {c} "
+                   "over the cycle ({n} nodes){ok}",
+        "closure_J": "closure with the dynamics (true motion): M_D = 0, max|M_y|/max|J_I·ε| = {c} "
+                     "over the cycle ({n} nodes){ok}",
+        "ok": " — M_y = M_D at every φ, the equation of motion read backwards",
+        "bad": " — NOT round-off: check the loads",
+        "mean": "cycle mean of M_y: {m} N·m (M_D = {d} N·m)",
+        "moments": "Balancing moment M_y at the report angles [N·m]",
+        "kin": "kinetostatics", "zhuk": "Zhukovsky's lever", "power": "power balance",
+        "joints": "Joint reactions at φ = {a}° (R_ij: the force of link i on link j)",
+        "sc": "Slider-crank quantities at φ = {a}°",
+        "joint": "joint", "point": "point", "by": "by", "on": "on", "angle": "angle",
+        "slider": "slider", "pos": "position",
+        "intro": ("Loads on every moving link: the given forces (gas, technological, weights), "
+                  "the couples, d'Alembert's inertia force −m·a_S at the centroid and couple "
+                  "−J_S·ε_i, and −J_I·ε on the crank (the first group as the flywheel sizing left "
+                  "it). The Assur groups are solved from the last one back to the crank; R_ij is "
+                  "the force of link i on link j at their joint (the frame is 0), its angle from "
+                  "+x counter-clockwise. M_y is the moment the drive applies to the crank, "
+                  "positive in the direction of rotation, found three ways: kinetostatics, "
+                  "Zhukovsky's lever (Σ F·v_q + Σ M·ω_q with the inertia loads, M_y = −that "
+                  "sum) and the power balance (M_y = J·ε + ½·J′·ω² − Σ F·v_q − Σ M·ω_q). "
+                  "Conventions: docs/forces.md."),
+        "positions": "Reactions |R_ij| [N] and M_y [N·m] at the standard positions",
+        "at": "At φ = {a}°",
+        "frame": ("crank-pin load {P} N (F_T = {T} N, F_R = {R} N); main bearing {B} N; "
+                  "shaking force {S} N, shaking moment {M} N·m"),
+        "tab_positions": ("M_y by the power balance at the table's positions [N·m], beside the "
+                          "seed's static and dynamic moments at ω_m (with the steady motion "
+                          "M_y = M_st + M_dyn)"),
+    },
+    "ru": {
+        "title": "Силовой расчёт (кинетостатика)",
+        "motion_true": "движение: истинное — ω(φ), ε(φ) из динамического анализа с маховиком "
+                       "(J_I = {J} кг·м² на валу кривошипа)",
+        "motion_steady": "движение: установившееся равномерное — ω = ω_ср = {w} рад/с, ε = 0",
+        "closure": "сходимость с динамикой (истинное движение): max|M_у − {ref}|/|{ref}| = {c} "
+                   "за цикл (узлов: {n}){ok}",
+        "closure_J": "сходимость с динамикой (истинное движение): M_Д = 0, max|M_у|/max|J_I·ε| = "
+                     "{c} за цикл (узлов: {n}){ok}",
+        "ok": " — M_у = M_Д при каждом φ: уравнение движения, прочитанное в обратную сторону",
+        "bad": " — НЕ ошибка округления: проверьте нагрузки",
+        "mean": "среднее за цикл M_у: {m} Н·м (M_Д = {d} Н·м)",
+        "moments": "Уравновешивающий момент M_у в расчётных положениях [Н·м]",
+        "kin": "кинетостатика", "zhuk": "рычаг Жуковского", "power": "баланс мощностей",
+        "joints": "Реакции в кинематических парах при φ = {a}° (R_ij — сила действия звена i "
+                  "на звено j)",
+        "sc": "Силы в кривошипно-ползунном механизме при φ = {a}°",
+        "joint": "пара", "point": "точка", "by": "звено i", "on": "звено j", "angle": "угол",
+        "slider": "ползун", "pos": "положение",
+        "intro": ("Нагрузки на каждое подвижное звено: заданные силы (давления газа, полезного "
+                  "сопротивления, тяжести), пары сил, сила инерции −m·a_S в центре масс и момент "
+                  "сил инерции −J_S·ε_i (принцип Даламбера), на кривошипе −J_I·ε (первая группа "
+                  "с маховиком). Структурные группы Ассура рассчитываются от последней к "
+                  "кривошипу; R_ij — сила действия звена i на звено j в их паре (стойка — 0), "
+                  "угол отсчитывается от оси x против часовой стрелки. M_у — момент, "
+                  "приложенный к кривошипу со стороны привода, положительный по направлению "
+                  "вращения; найден тремя способами: кинетостатикой, рычагом Жуковского "
+                  "(Σ F·v_q + Σ M·ω_q с силами инерции, M_у = −сумма) и из баланса мощностей "
+                  "(M_у = J·ε + ½·J′·ω² − Σ F·v_q − Σ M·ω_q). Правила знаков: docs/forces.md."),
+        "positions": "Реакции |R_ij| [Н] и M_у [Н·м] в стандартных положениях",
+        "at": "При φ = {a}°",
+        "frame": ("нагрузка на шатунную шейку {P} Н (F_T = {T} Н, F_R = {R} Н); на коренной "
+                  "подшипник {B} Н; сила, действующая на стойку, {S} Н, момент {M} Н·м"),
+        "tab_positions": ("M_у из баланса мощностей в положениях таблицы [Н·м] рядом с "
+                          "моментами статического и динамического сопротивления при ω_ср (при "
+                          "равномерном вращении M_у = M_ст + M_дин)"),
+        "note": ("реакции в кинематических парах требуют схемы механизма: кинематика задана "
+                 "таблицей, поэтому M_у найден только из баланса мощностей, "
+                 "M_у = (J_I + J_II)·ε + ½·dJ_II/dφ·ω² − M_изв"),
+    },
+}
+
+SLIDER_CRANK = ("piston_effort", "side_thrust", "rod_thrust", "crank_pin_tangential",
+                "crank_pin_radial", "turning_moment")
+CLOSURE_OK = 1e-9           # a closure above this is not round-off
+
+
+def _fmt(x: float) -> str:
+    """A number as render/tables.py writes it: 12 significant digits, no negative zero."""
+    return "%.12g" % (0.0 if x == 0 else x)
+
+
+def _g(x, digits: int = 5) -> str:
+    if x is None or (isinstance(x, float) and not math.isfinite(x)):
+        return "—"
+    return f"{0.0 if abs(x) < 1e-13 else x:.{digits}g}"
+
+
+# -- the columns ------------------------------------------------------------------------------------
+
+def force_columns(results) -> dict[str, np.ndarray]:
+    """forces.csv's columns by nomenclature key, in order: φ, the crank's ω and ε used, M_y
+    (three ways), every reaction (x, y, magnitude), the slider-crank quantities, the loads on
+    the crank pin and the main bearing, the shaking force and moment. Arrays of the result,
+    selected — nothing computed here but degrees."""
+    f = results.forces
+    cols = {"phi_deg": np.degrees(results.phi), "omega": f.omega, "epsilon": f.epsilon}
+    fa = f.analysis
+    if fa is None:
+        cols["M_y_power"] = f.M_y_power
+        return cols
+    cols.update({"M_y": fa.balancing_moment, "M_y_zhukovsky": f.M_y_zhukovsky,
+                 "M_y_power": f.M_y_power})
+    for key, r in f.joints.items():
+        cols[f"Rx_{key}"], cols[f"Ry_{key}"], cols[f"R_{key}"] = r.x, r.y, r.magnitude
+    for s, sc in f.slider_crank.items():
+        for q in SLIDER_CRANK:
+            cols[f"{q}_{s}"] = getattr(sc, q)
+    P = f.crank_pin_load
+    cols.update({"crank_pin_Fx": P[:, 0], "crank_pin_Fy": P[:, 1],
+                 "crank_pin_F": np.hypot(P[:, 0], P[:, 1]),
+                 "crank_pin_tangential": f.crank_pin_tangential,
+                 "crank_pin_radial": f.crank_pin_radial})
+    mb = fa.main_bearing_load
+    cols.update({"main_bearing_Fx": mb.x, "main_bearing_Fy": mb.y, "main_bearing_F": mb.magnitude})
+    S = fa.shaking_force
+    cols.update({"shaking_Fx": S[:, 0], "shaking_Fy": S[:, 1],
+                 "shaking_F": np.hypot(S[:, 0], S[:, 1]), "shaking_M": fa.shaking_moment})
+    return cols
+
+
+def _rows(cols: dict[str, np.ndarray], index=None) -> list[str]:
+    data = np.column_stack(list(cols.values())) + 0.0        # + 0.0: no negative zero
+    if index is not None:
+        data = data[index]
+    fmt = ",".join(["%.12g"] * data.shape[1])
+    return [fmt % tuple(row) for row in data.tolist()]
+
+
+def forces_csv(results) -> str:
+    """forces.csv: every column of :func:`force_columns` on the grid; header ``name [unit]``.
+
+    Rows are formatted a row at a time (the same ``%.12g`` as render/tables.py's per value,
+    negative zero written as 0): 0.1 s less than per value on a 3601-row file."""
+    cols = force_columns(results)
+    return "\n".join([",".join(csv_header(k) for k in cols)] + _rows(cols)) + "\n"
+
+
+def forces_positions_csv(results) -> str:
+    """forces_positions.csv: the columns of forces.csv at the standard positions (every 30° and
+    the sliders' dead centres; the table's positions for a tabulated case), a ``position``
+    label first, as positions.csv."""
+    cols = force_columns(results)
+    idx = [results.index_of(phi) for _, phi in results.position_angles]
+    labels = [label for label, _ in results.position_angles]
+    rows = _rows(cols, idx)
+    header = "position," + ",".join(csv_header(k) for k in cols)
+    return "\n".join([header] + [f"{lab},{row}" for lab, row in zip(labels, rows)]) + "\n"
+
+
+# -- sentences ------------------------------------------------------------------------------------
+
+def note(results, lang: str) -> str:
+    """The one line of a tabulated case: no joint reactions without a linkage."""
+    f = results.forces
+    if not f.note:
+        return ""
+    return T["ru"]["note"] if lang == "ru" else f.note
+
+
+def summary_lines(results, lang: str = "en") -> list[str]:
+    """The motion, the closure check and the cycle mean of M_y, as lines of text.
+
+    The closure is round-off (≤ 1e-9) when the force analysis and the dynamics agree."""
+    t = T[lang]
+    f = results.forces
+    s = results.scalars
+    lines = [note(results, lang)] if f.note else []
+    if f.motion == "true":
+        lines.append(t["motion_true"].format(J=_g(results.motion.J_I, 6)))
+    else:
+        lines.append(t["motion_steady"].format(w=_g(float(f.omega[0]), 6)))
+    ok = t["ok"] if f.closure <= CLOSURE_OK else t["bad"]
+    n = results.phi.size
+    ref = symbol("driving_moment" if results.energy.balance == "driving" else "balancing_moment",
+                 lang)
+    if f.closure_reference == "M_D":
+        lines.append(t["closure"].format(ref=ref, c=f"{f.closure:.2e}", n=n, ok=ok))
+    else:
+        lines.append(t["closure_J"].format(c=f"{f.closure:.2e}", n=n, ok=ok))
+    lines.append(t["mean"].format(m=_g(f.M_y_cycle_mean, 8), d=_g(s["balancing_moment"], 8)))
+    return lines
+
+
+def _moment_rows(results) -> list[list[str]]:
+    """Rows of M_y at the report angles: φ, then kinetostatics, Zhukovsky, power balance (the
+    power balance alone for a tabulated case)."""
+    f = results.forces
+    rows = []
+    for a in results.at:
+        i = results.at_index(a["phi_deg"])
+        if f.analysis is None:
+            rows.append([_g(a["phi_deg"], 6), _g(float(f.M_y_power[i]), 8)])
+        else:
+            rows.append([_g(a["phi_deg"], 6), _g(float(f.analysis.balancing_moment[i]), 8),
+                         _g(float(f.M_y_zhukovsky[i]), 8), _g(float(f.M_y_power[i]), 8)])
+    return rows
+
+
+# -- the rich summary -----------------------------------------------------------------------------
+
+def print_forces(results, console, lang: str = "en") -> None:
+    """The rich summary's section: the motion, the closure check, M_y three ways at the report
+    angles, and at each the slider-crank quantities (or the tabulated case's one-line note)."""
+    if results.forces is None:
+        return
+    from rich.table import Table
+
+    t = T[lang]
+    f = results.forces
+    console.print(f"[bold]{t['title']}[/bold]")
+    for line in summary_lines(results, lang):
+        console.print(line, markup=False)
+    tab = Table(title=t["moments"])
+    tab.add_column("φ [" + unit("deg", lang) + "]", justify="right")
+    heads = [t["power"]] if f.analysis is None else [t["kin"], t["zhuk"], t["power"]]
+    for h in heads:
+        tab.add_column(h, justify="right")
+    for row in _moment_rows(results):
+        tab.add_row(*row)
+    console.print(tab)
+    if f.analysis is None:
+        return
+    for a in results.at:
+        i = results.at_index(a["phi_deg"])
+        if f.slider_crank:
+            st = Table(title=t["sc"].format(a=_g(a["phi_deg"], 6)))
+            st.add_column(t["slider"], justify="right")
+            for q in SLIDER_CRANK:
+                st.add_column(f"{symbol(q, lang)} [{unit_of(q, lang)}]", justify="right")
+            for s, sc in f.slider_crank.items():
+                st.add_row(s, *(_g(float(getattr(sc, q)[i]), 6) for q in SLIDER_CRANK))
+            console.print(st)
+
+
+# -- report.md ------------------------------------------------------------------------------------
+
+def _table(header: list[str], rows: list[list[str]]) -> str:
+    out = ["| " + " | ".join(header) + " |", "|" + "---|" * len(header)]
+    out += ["| " + " | ".join(r) + " |" for r in rows]
+    return "\n".join(out) + "\n"
+
+
+def report_section(results, lang: str = "en") -> str:
+    """report.md's section: method, closure, the reactions and M_y at the standard positions,
+    and at each report angle M_y three ways, every reaction and the slider-crank quantities."""
+    if results.forces is None:
+        return ""
+    t = T[lang]
+    f = results.forces
+    fa = f.analysis
+    parts = [f"\n## {t['title']}\n\n"]
+    if fa is not None:
+        parts.append(t["intro"] + "\n\n")
+    parts.append("\n".join(f"- {line}" for line in summary_lines(results, lang)) + "\n")
+    deg = "φ [" + unit("deg", lang) + "]"
+    My = f"{symbol('M_y', lang)} [{unit_of('M_y', lang)}]"
+    if fa is None:
+        parts_of = [k for k in ("M_st", "M_dyn") if k in results.columns]    # seed 004's Мст, Мдин
+        header = [t["pos"], deg] + [f"{symbol(k, lang)} [{unit_of(k, lang)}]" for k in parts_of] + [My]
+        body = []
+        for lab, p in results.position_angles:
+            i = results.index_of(p)
+            body.append([position_label(lab, lang), _g(math.degrees(p), 6)]
+                        + [_g(float(results.columns[k].values[i]), 6) for k in parts_of]
+                        + [_g(float(f.M_y_power[i]), 6)])
+        parts.append(f"\n{t['tab_positions']}\n\n" + _table(header, body))
+        parts.append(f"\n{t['moments']}\n\n" + _table([deg, t["power"]], _moment_rows(results)))
+        return "".join(parts)
+    keys = list(f.joints)
+    header = [t["pos"], deg, My] + [f"R {k}" for k in keys]
+    body = []
+    for lab, p in results.position_angles:
+        i = results.index_of(p)
+        body.append([position_label(lab, lang), _g(math.degrees(p), 6),
+                     _g(float(fa.balancing_moment[i]), 6)]
+                    + [_g(float(fa.joints[k].magnitude[i]), 5) for k in keys])
+    parts.append(f"\n{t['positions']}\n\n" + _table(header, body))
+    parts.append(f"\n{t['moments']}\n\n"
+                 + _table([deg, t["kin"], t["zhuk"], t["power"]], _moment_rows(results)))
+    N = unit("N", lang)
+    for a in results.at:
+        i = results.at_index(a["phi_deg"])
+        parts.append(f"\n### {t['at'].format(a=_g(a['phi_deg'], 6))}\n\n"
+                     f"{t['joints'].format(a=_g(a['phi_deg'], 6))}\n\n")
+        rows = [[k, r.joint, r.by, r.on, _g(float(r.x[i]), 6), _g(float(r.y[i]), 6),
+                 _g(float(r.magnitude[i]), 6), _g(math.degrees(float(r.angle[i])), 5)]
+                for k, r in f.joints.items()]
+        parts.append(_table([t["joint"], t["point"], t["by"], t["on"], f"R_x [{N}]", f"R_y [{N}]",
+                             f"R [{N}]", f"{t['angle']} [{unit('deg', lang)}]"], rows))
+        if f.slider_crank:
+            head = [t["slider"]] + [f"{symbol(q, lang)} [{unit_of(q, lang)}]" for q in SLIDER_CRANK]
+            rows = [[s] + [_g(float(getattr(sc, q)[i]), 6) for q in SLIDER_CRANK]
+                    for s, sc in f.slider_crank.items()]
+            parts.append(f"\n{t['sc'].format(a=_g(a['phi_deg'], 6))}: "
+                         + "; ".join(f"{symbol(q, lang)} — {name(q, lang)}" for q in SLIDER_CRANK)
+                         + "\n\n" + _table(head, rows))
+        P, S = f.crank_pin_load[i], fa.shaking_force[i]
+        parts.append("\n" + t["frame"].format(
+            P=_g(float(np.hypot(*P)), 6), T=_g(float(f.crank_pin_tangential[i]), 6),
+            R=_g(float(f.crank_pin_radial[i]), 6), B=_g(float(fa.main_bearing_load.magnitude[i]), 6),
+            S=_g(float(np.hypot(*S)), 6), M=_g(float(fa.shaking_moment[i]), 6)) + "\n")
+    return "".join(parts)

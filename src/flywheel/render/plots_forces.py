@@ -1,0 +1,187 @@
+"""PNG plots of the force analysis (issue 12): the joint reactions over φ, the balancing moment
+three ways with the constant moment of the dynamics, and the polar diagrams (hodographs) of
+the crank-pin load, the main-bearing load and the shaking force.
+
+Drawn as render/plots.py draws — pyplot-free :class:`matplotlib.figure.Figure` objects with
+fixed margins in inches and the legend outside the axes — and saved by its pool of workers in
+its fixed style (:func:`figures` is registered in ``plots.all_figures``; this module does not
+import render/plots.py, which imports it). Quantities are named by
+:mod:`flywheel.render.nomenclature`; this module keeps the titles. Nothing is computed here but
+degrees and the axis limits; matplotlib is imported inside the functions.
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from flywheel.render.nomenclature import axis, name, symbol, unit_of, tex
+
+_TEXT = {
+    "en": {
+        "reactions": r"reactions in the joints $|R_{ij}|(\varphi)$, $R_{ij}$: the force of link i on link j",
+        "moment": r"balancing moment on the crank $M_y(\varphi)$, three ways",
+        "moment_steady": r"balancing moment on the crank $M_y(\varphi)$, steady motion $\omega$ = {w:.5g} rad/s",
+        "M_const": "{s} = {v:.6g} {u} (constant, from the cycle balance)",
+        "hodographs": "polar diagrams (hodographs) of the loads over the cycle",
+        "pin": "load on the crank pin, in the crank's axes",
+        "bearing": r"load on the main bearing $R_{10}$",
+        "shaking": "shaking force on the frame",
+        "curve": "over the cycle, labels: φ, °",
+        "origin": "origin (zero force)",
+    },
+    "ru": {
+        "reactions": r"реакции в кинематических парах $|R_{ij}|(\varphi)$, $R_{ij}$ — сила действия звена i на звено j",
+        "moment": r"уравновешивающий момент на кривошипе $M_у(\varphi)$, три способа",
+        "moment_steady": r"уравновешивающий момент на кривошипе $M_у(\varphi)$, равномерное вращение "
+                         "ω = {w:.5g} рад/с",
+        "M_const": "{s} = {v:.6g} {u} (постоянный, из условия цикла)",
+        "hodographs": "полярные диаграммы (годографы) нагрузок за цикл",
+        "pin": "нагрузка на шатунную шейку в осях кривошипа",
+        "bearing": r"нагрузка на коренной подшипник $R_{10}$",
+        "shaking": "сила, действующая на стойку",
+        "curve": "за цикл, подписи: φ, °",
+        "origin": "начало координат (нулевая сила)",
+    },
+}
+
+
+def _typeset(key: str, lang: str) -> str:
+    """The quantity's name with its plain symbol typeset as mathtext (no literal underscore)."""
+    from flywheel.render.nomenclature import symbol, tex
+
+    return name(key, lang).replace(symbol(key, lang), tex(key, lang))
+
+
+def _t(lang: str, key: str, **kw) -> str:
+    text = _TEXT["ru" if lang == "ru" else "en"][key]
+    return text.format(**kw) if kw else text
+
+
+DPI = 120                  # as render/plots.py
+_LEGEND_W = 3.9            # room for a legend right of the axes [in]
+_WIDE = (11.0, 5.0)         # one φ plot and its legend [in]
+
+
+def _figure(size, nrows=1, ncols=1, *, left=0.85, right=_LEGEND_W, bottom=0.6, top=0.4,
+            wspace=0.45):
+    """A pyplot-free Figure and its axes with fixed margins [in] (render/plots.py's layout)."""
+    from matplotlib.figure import Figure
+
+    w, h = size
+    fig = Figure(figsize=size, dpi=DPI)
+    axes = fig.subplots(nrows, ncols)
+    fig.subplots_adjust(left=left / w, right=1 - right / w, bottom=bottom / h, top=1 - top / h,
+                        wspace=wspace)
+    return fig, axes
+
+
+def _legend(ax):
+    """Legend outside the axes, on the right: it never hides a curve."""
+    return ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), borderaxespad=0.0)
+
+
+def _title(results, what: str) -> str:
+    return f"{results.title}: {what}"
+
+
+def _phi_axis(ax, lang: str) -> None:
+    ax.set_xlim(0.0, 360.0)
+    ax.set_xticks(np.arange(0, 361, 30))
+    ax.set_xlabel(axis("phi_deg", lang))
+
+
+def figure_reactions(results, lang: str = "en"):
+    """|R_ij|(φ) of every joint, one curve each (linkage cases)."""
+    fig, ax = _figure(_WIDE)
+    deg = np.degrees(results.phi)
+    for key, r in results.forces.joints.items():
+        ax.plot(deg, r.magnitude, label=f"{tex(f'R_{key}', lang)} {key}")
+    ax.set_ylabel(axis("reaction", lang))
+    _phi_axis(ax, lang)
+    _legend(ax)
+    ax.set_title(_title(results, _t(lang, "reactions")))
+    return fig
+
+
+def figure_balancing_moment(results, lang: str = "en"):
+    """M_y(φ) by kinetostatics, Zhukovsky's lever and the power balance (the power balance
+    alone for a tabulated case), and the constant moment of the dynamics: with the true motion
+    the curves lie on that line."""
+    f = results.forces
+    fig, ax = _figure(_WIDE)
+    deg = np.degrees(results.phi)
+    curves = [f.M_y_power]
+    if f.analysis is not None:
+        ax.plot(deg, f.analysis.balancing_moment, color="k", linewidth=2.4, label=_typeset("M_y", lang))
+        ax.plot(deg, f.M_y_zhukovsky, color="C1", linestyle="--", linewidth=1.6,
+                label=_typeset("M_y_zhukovsky", lang))
+        curves += [f.analysis.balancing_moment, f.M_y_zhukovsky]
+    ax.plot(deg, f.M_y_power, color="C0", linestyle=":", linewidth=1.8, label=_typeset("M_y_power", lang))
+    key = "driving_moment" if results.energy.balance == "driving" else "balancing_moment"
+    ax.axhline(f.M_const, color="C3", linewidth=0.9,
+               label=_t(lang, "M_const", s=tex(key, lang), v=f.M_const, u=unit_of(key, lang)))
+    # limits: 0, M_const and the curves; a span of round-off only (the true motion: M_y = M_D)
+    # is drawn as a line within ±10 % of the moments at stake, not magnified into noise
+    lo = min(0.0, f.M_const, *(float(np.min(c)) for c in curves))
+    hi = max(0.0, f.M_const, *(float(np.max(c)) for c in curves))
+    couple = f.analysis.first_group_couple if f.analysis is not None else results.motion.epsilon * results.motion.J_I
+    ref = max(abs(f.M_const), float(np.max(np.abs(couple))), 1e-12)
+    if hi - lo < 1e-6 * ref:
+        lo, hi = min(lo, f.M_const - 0.1 * ref), max(hi, f.M_const + 0.1 * ref)
+    pad = 0.08 * (hi - lo)
+    ax.set_ylim(lo - pad, hi + pad)
+    ax.set_ylabel(axis("M_y", lang))
+    _phi_axis(ax, lang)
+    _legend(ax)
+    what = (_t(lang, "moment") if f.motion == "true"
+            else _t(lang, "moment_steady", w=float(f.omega[0])))
+    ax.set_title(_title(results, what))
+    return fig
+
+
+def _hodograph(ax, x: np.ndarray, y: np.ndarray, results, lang: str, color: str) -> None:
+    """A closed curve over the cycle with the 30° positions marked and labelled [deg]."""
+    ax.plot(x, y, color=color, linewidth=1.3, label=_t(lang, "curve"))
+    ax.plot([0.0], [0.0], "+", color="k", markersize=9, label=_t(lang, "origin"))
+    marks = [results.index_of(math.radians(a)) for a in range(0, 360, 30)]
+    ax.plot(x[marks], y[marks], "o", color=color, markersize=3.5)
+    for a, i in zip(range(0, 360, 30), marks):
+        ax.annotate(f"{a}", (x[i], y[i]), xytext=(3, 3), textcoords="offset points", fontsize=7)
+    ax.set_aspect("equal", adjustable="datalim")
+
+
+def figure_hodographs(results, lang: str = "en"):
+    """Polar diagrams over the cycle: (a) the load on the crank pin in the crank's axes
+    (F_T along the pin's velocity, F_R towards the shaft), as engine books draw it; (b) the
+    crank's load on the main bearing and (c) the shaking force, in the case's axes."""
+    f = results.forces
+    fa = f.analysis
+    fig, axes = _figure((15.0, 6.0), 1, 3, right=0.3, bottom=1.3, top=0.75, wspace=0.35)
+    mb, S = fa.main_bearing_load, fa.shaking_force
+    panels = [
+        (f.crank_pin_tangential, f.crank_pin_radial, "crank_pin_tangential", "crank_pin_radial",
+         "pin", "C0"),
+        (mb.x, mb.y, "main_bearing_Fx", "main_bearing_Fy", "bearing", "C3"),
+        (S[:, 0], S[:, 1], "shaking_Fx", "shaking_Fy", "shaking", "C2"),
+    ]
+    for ax, (x, y, kx, ky, title, color) in zip(axes, panels):
+        _hodograph(ax, x, y, results, lang, color)
+        ax.set_xlabel(axis(kx, lang))
+        ax.set_ylabel(axis(ky, lang))
+        ax.set_title(_t(lang, title))
+    axes[0].legend(loc="upper left", bbox_to_anchor=(0.0, -0.16))
+    fig.suptitle(_title(results, _t(lang, "hodographs")))
+    return fig
+
+
+def figures(results, lang: str = "en") -> list:
+    """(file name, figure-building function) of the force analysis's plots: the balancing
+    moment always; the reactions and the hodographs where there is a linkage."""
+    if results.forces is None:
+        return []
+    out = [("balancing_moment.png", lambda: figure_balancing_moment(results, lang))]
+    if results.forces.analysis is not None:
+        out = [("reactions.png", lambda: figure_reactions(results, lang))] + out
+        out.append(("hodographs.png", lambda: figure_hodographs(results, lang)))
+    return out
