@@ -264,7 +264,8 @@ def _figure_caption(file: str, lang: str) -> str:
     if stem.startswith("indicator_"):
         return t["indicator"].format(x=stem[len("indicator_"):])
     if stem in ("J_II", "omega", "epsilon"):
-        return f"{nm.name(stem, lang)}(φ)"
+        n = nm.name(stem, lang)
+        return f"{n[:1].upper()}{n[1:]}(φ)"
     return stem
 
 
