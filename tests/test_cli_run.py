@@ -29,7 +29,7 @@ def test_run_writes_every_output(tmp_path):
     res = run("run", CASES / "compressor.toml", "--out", out, "--no-plots", "--points", "720")
     assert res.exit_code == 0, res.output
     assert {p.name for p in out.iterdir()} == {"summary.json", "table.csv", "positions.csv", "report.md",
-                                              "forces.csv", "forces_positions.csv",
+                                              "report.html", "forces.csv", "forces_positions.csv",
                                               ".flywheel-manifest.json"}
     report = (out / "report.md").read_text(encoding="utf-8")
     assert report.startswith("# Dynamic analysis: Two-stage V-type air compressor")

@@ -15,7 +15,7 @@ from pathlib import Path
 import pytest
 
 from flywheel.cases.task2 import load_task2_case, parse_task2_case, solve_case
-from flywheel.constant_inertia.graphs import constant, harmonic, piecewise_linear, rectangle, triangle
+from flywheel.constant_inertia.graphs import constant, harmonic, piecewise_linear, rectangle
 from flywheel.constant_inertia.preset import seed_task
 from flywheel.constant_inertia.solve import solve, time_linear
 from flywheel.errors import CaseFileError, InputError

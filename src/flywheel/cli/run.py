@@ -55,11 +55,19 @@ def run_command(
                                          "analysis: true (ω(φ), ε(φ) of the dynamics) | steady "
                                          "(ω_m, ε = 0); default: the case's force_analysis.motion, "
                                          "else true."),
+    report: Optional[list[str]] = typer.Option(None, "--report", help="Report format: md, html, "
+                                               "pdf, docx; repeatable (default: md and html)."),
 ) -> None:
     """Run the whole dynamic analysis of a case; write summary.json, table.csv, positions.csv,
     forces.csv, forces_positions.csv, report.md and plots/*.png to the output folder."""
     if lang not in ("en", "ru"):
         fail(f"--lang: {lang!r} is not a language (allowed: en, ru)")
+    from flywheel.render.report_formats import FORMATS
+
+    formats = report or ["md", "html"]
+    for f in formats:
+        if f not in FORMATS:
+            fail(f"--report: {f!r} is not a report format (allowed: {', '.join(FORMATS)})")
     from flywheel.cases.run import load_case
     from flywheel.dynamics.pipeline import analyze
     from flywheel.io.output import write_folder
@@ -92,9 +100,11 @@ def run_command(
             from flywheel.render.animate import write_animation
 
             write_animation(results, folder / "mechanism.gif", lang=lang)
-        from flywheel.render.report import report_markdown
+        from flywheel.render.document import build_document
+        from flywheel.render.report_formats import write_reports
 
-        (folder / "report.md").write_text(report_markdown(results, lang, pngs), encoding="utf-8")
+        doc = build_document(results, lang, pngs, case=c)
+        write_reports(doc, folder, formats, folder / "plots" if pngs else None)
 
     notes: list[str] = []
     _guard(write_folder, out, build, "summary.json", notes=notes)
@@ -107,6 +117,7 @@ def run_command(
 
         print_summary(results, lang=lang)
         typer.echo(f"{'записано' if lang == 'ru' else 'written'}: {out}/ (summary.json, table.csv, "
-                   "positions.csv, forces.csv, forces_positions.csv, report.md"
+                   "positions.csv, forces.csv, forces_positions.csv, "
+                   + ", ".join(f"report.{f}" for f in dict.fromkeys(formats))
                    + ("" if no_plots else ", plots/*.png")
                    + (", mechanism.gif" if animate else "") + ")")

@@ -113,6 +113,12 @@ TERMS: dict[str, Term] = {
                  "its fixed pivot if it only turns)", "момент инерции звена (относительно центра "
                  "масс или неподвижной оси)"),
     "bore": _t("d", "$d$", "m", "bore", "диаметр цилиндра"),
+    "link_length": _t("l", "$l$", "m", "length of a link", "длина звена"),
+    "guide_angle": _t("α", r"$\alpha$", "deg", "direction of a guide", "направление направляющей"),
+    "guide_offset": _t("e", "$e$", "m", "offset of a guide", "смещение направляющей"),
+    "gravity": _t("g", "$g$", "m/s²", "gravity", "ускорение свободного падения"),
+    "force_magnitude": _t("F", "$F$", "N", "force", "сила"),
+    "couple_moment": _t("M", "$M$", "N·m", "moment of a couple", "момент пары сил"),
     "p_max": _t("p_max", r"$p_{max}$", "Pa", "greatest gas pressure p_max",
                 "наибольшее давление газа p_max"),
     # reduction of masses, energy

@@ -48,7 +48,6 @@ _TEXT = {
 
 def _typeset(key: str, lang: str) -> str:
     """The quantity's name with its plain symbol typeset as mathtext (no literal underscore)."""
-    from flywheel.render.nomenclature import symbol, tex
 
     return name(key, lang).replace(symbol(key, lang), tex(key, lang))
 

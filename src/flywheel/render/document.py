@@ -1,0 +1,654 @@
+"""The записка as a document model, built once from the results: a list of blocks (headings,
+paragraphs, bullet lists, formulas, numbered tables and figures with captions) that every
+format (report.md, .html, .pdf, .docx) writes out the same way.
+
+Every quantity's name, symbol and unit comes from the nomenclature (render/nomenclature.py);
+this module keeps only section titles and sentence templates. Nothing is computed here but
+formatting and counting (the degree of freedom counts the mechanism's links and pairs).
+Sources: Артоболевский И. И., «Теория механизмов и машин», ch. 2 (structure, Chebyshev's
+formula), ch. 16–17 (reduction, Merzalov's method, the energy–mass diagram).
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+from flywheel.render import nomenclature as nm
+
+
+# -- blocks ---------------------------------------------------------------------------------------
+@dataclass(frozen=True)
+class Heading:
+    level: int          # 1 the title, 2 a section, 3 a subsection
+    text: str           # with its number ("5. Flywheel")
+
+
+@dataclass(frozen=True)
+class Paragraph:
+    text: str           # may hold **bold** runs
+
+
+@dataclass(frozen=True)
+class Bullets:
+    items: tuple[str, ...]
+
+
+@dataclass(frozen=True)
+class Formula:
+    tex: str            # render/mathfmt.py notation
+
+
+@dataclass(frozen=True)
+class Table:
+    number: int
+    caption: str
+    header: tuple[str, ...]
+    rows: tuple[tuple[str, ...], ...]
+
+
+@dataclass(frozen=True)
+class Figure:
+    number: int
+    caption: str
+    file: str           # the PNG's name under plots/
+
+
+@dataclass
+class Document:
+    title: str
+    lang: str
+    blocks: list = field(default_factory=list)
+
+    @property
+    def tables(self) -> list[Table]:
+        return [b for b in self.blocks if isinstance(b, Table)]
+
+    @property
+    def figures(self) -> list[Figure]:
+        return [b for b in self.blocks if isinstance(b, Figure)]
+
+    @property
+    def headings(self) -> list[Heading]:
+        return [b for b in self.blocks if isinstance(b, Heading)]
+
+
+# -- words ----------------------------------------------------------------------------------------
+T = {
+    "en": {
+        "title": "Dynamic analysis", "source": "Source", "input": "1. Input data",
+        "machine": "Machine, crank and flywheel", "lengths": "Lengths and guides",
+        "masses": "Masses and moments of inertia of the links", "cyl": "Cylinders",
+        "indicator": "Indicator table of cylinder {c}", "forces": "Technological forces and couples",
+        "structure": "Structure of the mechanism",
+        "structure_note": ("The mechanism is the input mechanism (crank {c} on the frame) with "
+                           "Assur groups attached in order:"),
+        "group": "Assur group of class II, kind {kind}: links {links}",
+        "chebyshev": ("Degree of freedom by Chebyshev's formula: n = {n} moving links, "
+                      "p₅ = {p5} lower pairs, p₄ = {p4} higher pairs:"),
+        "tabulated": "The kinematics are given as a table (no linkage to describe).",
+        "kin": "2. Kinematics at the standard positions",
+        "kin_caption": "Velocity analogues at the standard positions",
+        "kin_note": "Velocity analogues {vq} = dr/dφ [{u}] of the points, {wq} = dθ/dφ of the links.",
+        "red": "3. Reduction of masses and forces",
+        "red_caption": "Reduced inertia and moments at the standard positions",
+        "red_note": ("J_II is the links' kinetic energy per ½ω²; the reduced moment of a force is "
+                     "F·v_q, of a weight m·g⃗·v_qS."),
+        "energy": "4. Works and kinetic energy",
+        "energy_caption": "Works and kinetic energy at the standard positions",
+        "sizing": "5. Flywheel", "sizing_caption": "The flywheel by both methods",
+        "dims_caption": "Flywheel dimensions", "method": "method",
+        "m_merzalov": "Merzalov", "m_exact": "energy–mass diagram (exact)",
+        "shape": "shape", "disk_word": "disk", "rim_word": "rim",
+        "motion": "6. True velocities and accelerations",
+        "points_caption": "Points at φ = {a}°", "links_caption": "Links at φ = {a}°",
+        "warn": "Warnings", "figures": "Figures", "sources": "Sources",
+        "no_plots": "The figures were not drawn (run with --no-plots).",
+        "pos": "position", "qty": "quantity", "val": "value", "unit": "unit", "point": "point",
+        "link": "link", "name": "name", "piston": "piston", "head": "head dead centre",
+        "first_group": "first group", "centroid": "centroid",
+        "balance_word": {"driving": "driving", "resistance": "resistance"},
+        "balance_row": "constant moment balancing the cycle",
+        "balance": "- {A_C} = ∮ {M_C} dφ = {A} {uJ}; {M_D} = −{A_C}/2π = {M} {uM} (the cycle balance)",
+        "extremes": ("- {dT} max = {vmax} {uJ} at {amax}°, min = {vmin} {uJ} at {amin}° (global "
+                     "extremes); {span} = {v} {uJ}"),
+        "merzalov": "- Merzalov: {J} = {span}/(δ·{w}²) = {v} {uI}, δ achieved {d}",
+        "exact": "- exact (energy–mass diagram): {J} = {v} {uI}, δ achieved {d}",
+        "flywheel": "- flywheel {JM} = {J} − ({J1}) = {v} {uI}",
+        "shaft": "; on a shaft {i:g} times faster: {v} {uI}",
+        "disk": "- disk ({mat}): {dims}, {speed} {v} {u}",
+        "rim": "- rim: {dims}, {speed} {v} {u} (limit {lim} {u})",
+        "omega_extremes": "- {wmax} = {vmax} {uw} at {amax}°, {wmin} = {vmin} {uw} at {amin}°; {T} {v} {uT}",
+        "at": "ω = {w} {uw}, ε = {e} {ue}",
+        "time": "7. Motion in time",
+        "time_note": ("The equation of motion J(φ)·φ̈ + ½·J′(φ)·φ̇² = M(φ, φ̇), J = J_I + J_II(φ), "
+                      "integrated in time with scipy's solve_ivp; J, J′ and M are the tables of §3–4, "
+                      "so the integration is independent of the energy solution of §5."),
+        "verify": ("steady motion from the energy solution's state at φ = 0 over {n} cycles: ω repeats "
+                   "from cycle to cycle to {rep} (relative), and follows ω(φ) of the energy equation to "
+                   "{dev} (relative to ω_m)"),
+        "period": "cycle time: {T} s from the integration, {Te} s from t(φ) = ∫dφ/ω",
+        "motor": ("motor M_Д = M_п·(1 − ω/ω_x), reduced to the crank: M_п = {Mp} N·m, ω_x = {wx} rad/s; "
+                  "the steady cycle-mean speed that the motor line balances against the loads "
+                  "ω_s = {ws} rad/s; time constant τ = J/(M_п/ω_x) ≈ {tau} s"),
+        "st_ok": ("start-up from rest: the cycle-mean speed is within δ/10 of ω_s after **{t} s** "
+                  "({n} cycles); steady cycle-mean speed {w} rad/s"),
+        "st_no": ("start-up from rest: the steady state was **not reached** within {n} cycles ({t} s); "
+                  "the last cycle-mean speed is {w} rad/s"),
+        "st_stall": "start-up from rest: the motor cannot start the machine — it stops at φ = {a}°",
+        "st_none": "start-up: not computed ({reason})",
+        "rd": "run-down after the drive is cut at φ = 0: {t} s, {rev} revolutions of the crank",
+        "rd_not": " (not stopped within the integration limit)",
+        "rd_never": ("run-down: none — the loads do no net work over a cycle, so without the drive "
+                     "the machine keeps turning"),
+        "book": ("Artobolevsky I. I. Teoriya mekhanizmov i mashin (Theory of Mechanisms and "
+                 "Machines). 4th ed. Moscow: Nauka, 1988: ch. 2 (structure), ch. 16–17 (reduction, "
+                 "Merzalov's method, the energy–mass diagram)."),
+        "case_source": "Input data: {s}.",
+        "fig": {
+            "positions": "Positions of the mechanism", "scheme": "Scheme of the mechanism",
+            "reactions": "Reactions in the kinematic pairs",
+            "balancing_moment": "Balancing moment on the crank, three ways",
+            "hodographs": "Polar diagrams of the crank-pin, main-bearing and shaking loads",
+            "velocity_analogues": "Velocity analogues of the points",
+            "acceleration_analogues": "Acceleration analogues of the points",
+            "indicator": "Indicator diagram, cylinder {x}", "piston_forces": "Gas forces on the pistons",
+            "reduced_moments": "Reduced moments of the loads", "works": "Works and kinetic energy",
+            "energy_mass": "Energy–mass diagram (Wittenbauer)", "time_law": "Time law t(φ)",
+            "transients": "Start-up and run-down",
+        },
+    },
+    "ru": {
+        "title": "Динамический анализ", "source": "Источник", "input": "1. Исходные данные",
+        "machine": "Машина, кривошип и маховик", "lengths": "Длины звеньев и направляющие",
+        "masses": "Массы и моменты инерции звеньев", "cyl": "Цилиндры",
+        "indicator": "Индикаторная диаграмма цилиндра {c}",
+        "forces": "Технологические силы и пары сил",
+        "structure": "Структура механизма",
+        "structure_note": ("Механизм образован начальным механизмом (кривошип {c} и стойка) и "
+                           "присоединёнными к нему группами Ассура:"),
+        "group": "группа Ассура II класса вида {kind}: звенья {links}",
+        "chebyshev": ("Степень подвижности по формуле Чебышева: подвижных звеньев n = {n}, "
+                      "низших пар p₅ = {p5}, высших пар p₄ = {p4}:"),
+        "tabulated": "Кинематические характеристики заданы таблицей (схема механизма не задана).",
+        "kin": "2. Кинематика в стандартных положениях",
+        "kin_caption": "Аналоги скоростей в стандартных положениях",
+        "kin_note": "Аналоги скоростей точек {vq} = dr/dφ [{u}], звеньев {wq} = dθ/dφ.",
+        "red": "3. Приведение масс и сил",
+        "red_caption": "Приведённый момент инерции и приведённые моменты в стандартных положениях",
+        "red_note": ("J_II — кинетическая энергия звеньев на ½ω²; приведённый момент силы F·v_q, "
+                     "силы тяжести m·g⃗·v_qS."),
+        "energy": "4. Работы и кинетическая энергия",
+        "energy_caption": "Работы и кинетическая энергия в стандартных положениях",
+        "sizing": "5. Маховик", "sizing_caption": "Маховик по двум методам",
+        "dims_caption": "Размеры маховика", "method": "метод",
+        "m_merzalov": "Мерцалова", "m_exact": "диаграмма Виттенбауэра (точно)",
+        "shape": "форма", "disk_word": "диск", "rim_word": "обод",
+        "motion": "6. Истинные скорости и ускорения",
+        "points_caption": "Точки при φ = {a}°", "links_caption": "Звенья при φ = {a}°",
+        "warn": "Предупреждения", "figures": "Рисунки", "sources": "Источники",
+        "no_plots": "Рисунки не построены (запуск с --no-plots).",
+        "pos": "положение", "qty": "величина", "val": "значение", "unit": "ед.", "point": "точка",
+        "link": "звено", "name": "имя", "piston": "поршень", "head": "мёртвая точка у головки",
+        "first_group": "первая группа", "centroid": "центр масс",
+        "balance_word": {"driving": "движущий", "resistance": "сопротивления"},
+        "balance_row": "постоянный момент из условия цикла",
+        "balance": "- {A_C} = ∮ {M_C} dφ = {A} {uJ}; {M_D} = −{A_C}/2π = {M} {uM} (из условия цикла)",
+        "extremes": ("- {dT} max = {vmax} {uJ} при {amax}°, min = {vmin} {uJ} при {amin}° "
+                     "(глобальные экстремумы); {span} = {v} {uJ}"),
+        "merzalov": "- по Мерцалову: {J} = {span}/(δ·{w}²) = {v} {uI}, достигнутый δ {d}",
+        "exact": "- точно (диаграмма Виттенбауэра): {J} = {v} {uI}, достигнутый δ {d}",
+        "flywheel": "- маховик {JM} = {J} − ({J1}) = {v} {uI}",
+        "shaft": "; на валу, вращающемся в {i:g} раз быстрее: {v} {uI}",
+        "disk": "- диск ({mat}): {dims}, {speed} {v} {u}",
+        "rim": "- обод: {dims}, {speed} {v} {u} (допускаемая {lim} {u})",
+        "omega_extremes": "- {wmax} = {vmax} {uw} при {amax}°, {wmin} = {vmin} {uw} при {amin}°; {T} {v} {uT}",
+        "at": "ω = {w} {uw}, ε = {e} {ue}",
+        "time": "7. Движение во времени",
+        "time_note": ("Уравнение движения J(φ)·φ̈ + ½·J′(φ)·φ̇² = M(φ, φ̇), J = J_I + J_II(φ), "
+                      "проинтегрировано во времени (solve_ivp из scipy); J, J′ и M взяты из таблиц "
+                      "§3–4, поэтому интегрирование не зависит от энергетического решения §5."),
+        "verify": ("установившееся движение из состояния энергетического решения при φ = 0, циклов: "
+                   "{n}: ω повторяется от цикла к циклу с точностью {rep} (относительно) и совпадает "
+                   "с ω(φ) уравнения энергии до {dev} (относительно ω_ср)"),
+        "period": "время цикла: {T} с по интегрированию, {Te} с по t(φ) = ∫dφ/ω",
+        "motor": ("двигатель M_Д = M_п·(1 − ω/ω_x), приведённый к кривошипу: M_п = {Mp} Н·м, "
+                  "ω_x = {wx} рад/с; средняя за цикл скорость, при которой характеристика "
+                  "уравновешивает нагрузку, ω_s = {ws} рад/с; постоянная времени τ = J/(M_п/ω_x) ≈ "
+                  "{tau} с"),
+        "st_ok": ("разгон из состояния покоя: средняя за цикл скорость отличается от ω_s меньше "
+                  "чем на δ/10 через **{t} с** (циклов: {n}); установившаяся средняя скорость {w} рад/с"),
+        "st_no": ("разгон из состояния покоя: установившийся режим **не достигнут** за {n} циклов "
+                  "({t} с); средняя скорость последнего цикла {w} рад/с"),
+        "st_stall": "разгон из состояния покоя: двигатель не может разогнать машину — остановка при φ = {a}°",
+        "st_none": "разгон: не рассчитан ({reason})",
+        "st_none_motor": ("в задании нет раздела [motor]: при постоянном движущем моменте работа за "
+                          "цикл равна нулю при любой скорости, установившегося режима разгона нет"),
+        "rd": "выбег после отключения привода при φ = 0: {t} с, оборотов кривошипа: {rev}",
+        "rd_not": " (не остановился в пределах интегрирования)",
+        "rd_never": ("выбега нет: работа нагрузок за цикл равна нулю, без привода машина продолжает "
+                     "вращаться"),
+        "book": ("Артоболевский И. И. Теория механизмов и машин. — 4-е изд. — М.: Наука, 1988: "
+                 "гл. 2 (структура), гл. 16–17 (приведение, метод Мерцалова, диаграмма "
+                 "Виттенбауэра)."),
+        "case_source": "Исходные данные: {s}.",
+        "fig": {
+            "positions": "Планы положений механизма", "scheme": "Схема механизма",
+            "reactions": "Реакции в кинематических парах",
+            "balancing_moment": "Уравновешивающий момент на кривошипе тремя способами",
+            "hodographs": "Полярные диаграммы нагрузок на шатунную шейку, коренной подшипник и стойку",
+            "velocity_analogues": "Аналоги скоростей точек",
+            "acceleration_analogues": "Аналоги ускорений точек",
+            "indicator": "Индикаторная диаграмма цилиндра {x}",
+            "piston_forces": "Силы давления газа на поршни",
+            "reduced_moments": "Приведённые моменты сил", "works": "Работы и кинетическая энергия",
+            "energy_mass": "Диаграмма энергия–масса (Виттенбауэра)", "time_law": "Закон движения t(φ)",
+            "transients": "Разгон и выбег",
+        },
+    },
+}
+
+# which section a figure belongs to (the stem of its file, or its prefix before "_<name>")
+_FIGURE_SECTION = {"positions": "kin", "scheme": "kin", "velocity_analogues": "kin",
+                   "acceleration_analogues": "kin", "J_II": "red", "indicator": "red",
+                   "piston_forces": "red", "reduced_moments": "red", "works": "energy",
+                   "energy_mass": "sizing", "omega": "motion", "epsilon": "motion",
+                   "time_law": "motion", "transients": "time", "reactions": "forces",
+                   "balancing_moment": "forces", "hodographs": "forces"}
+
+
+def g(x, digits: int = 5) -> str:
+    """A number as the report prints it (``digits`` significant; −0 → 0; None → "—")."""
+    if x is None or (isinstance(x, float) and not math.isfinite(x)):
+        return "—"
+    return f"{0.0 if abs(x) < 1e-13 else x:.{digits}g}"
+
+
+def _figure_caption(file: str, lang: str) -> str:
+    t = T[lang]["fig"]
+    stem = file.rsplit(".", 1)[0]
+    if stem in t:
+        return t[stem]
+    if stem.startswith("indicator_"):
+        return t["indicator"].format(x=stem[len("indicator_"):])
+    if stem in ("J_II", "omega", "epsilon"):
+        n = nm.name(stem, lang)
+        return f"{n[:1].upper()}{n[1:]}(φ)"
+    return stem
+
+
+def _section_of(file: str) -> str:
+    stem = file.rsplit(".", 1)[0]
+    return _FIGURE_SECTION.get(stem, _FIGURE_SECTION.get(stem.split("_")[0], "figures"))
+
+
+class _Builder:
+    def __init__(self, title: str, lang: str, plots: list[str] | None):
+        self.doc = Document(title, lang)
+        self.n_tables = 0
+        self.n_figures = 0
+        self.plots = list(plots or [])
+
+    def add(self, block) -> None:
+        self.doc.blocks.append(block)
+
+    def table(self, caption: str, header, rows) -> None:
+        self.n_tables += 1
+        self.add(Table(self.n_tables, caption, tuple(header), tuple(tuple(r) for r in rows)))
+
+    def figures_of(self, section: str) -> None:
+        for f in [p for p in self.plots if _section_of(p) == section]:
+            self.n_figures += 1
+            self.add(Figure(self.n_figures, _figure_caption(f, self.doc.lang), f))
+            self.plots.remove(f)
+
+
+def _add_markdown(b: _Builder, text: str) -> None:
+    """Blocks from a section written as simple Markdown (## and ### headings, "- " bullets,
+    pipe tables whose caption is the line before them, paragraphs): the force analysis's
+    section, which render/forces.py writes, joins every format's numbering."""
+    lines = text.splitlines()
+    i, pending = 0, None
+    while i < len(lines):
+        ln = lines[i].rstrip()
+        if not ln:
+            i += 1
+            continue
+        if ln.startswith("#"):
+            level = len(ln) - len(ln.lstrip("#"))
+            b.add(Heading(level, ln[level:].strip()))
+        elif ln.startswith("- "):
+            items = []
+            while i < len(lines) and lines[i].startswith("- "):
+                items.append(lines[i][2:].strip())
+                i += 1
+            b.add(Bullets(tuple(items)))
+            continue
+        elif ln.startswith("|"):
+            rows = []
+            while i < len(lines) and lines[i].startswith("|"):
+                cells = [c.strip() for c in lines[i].strip().strip("|").split("|")]
+                if not all(set(c) <= set("-:") for c in cells):
+                    rows.append(cells)
+                i += 1
+            if pending is not None and b.doc.blocks and b.doc.blocks[-1] is pending:
+                b.doc.blocks.pop()
+            b.table(pending.text if pending is not None else "", rows[0], rows[1:])
+            pending = None
+            continue
+        else:
+            pending = Paragraph(ln)
+            b.add(pending)
+        i += 1
+
+
+def _mt(key: str, lang: str) -> str:
+    """The nomenclature's mathtext symbol without its dollars (the formula notation)."""
+    return nm.tex(key, lang).strip("$")
+
+
+def build_document(results, lang: str = "en", plots: list[str] | None = None,
+                   case=None) -> Document:
+    """The записка of one run: ``plots`` the PNG names under plots/ (None or empty: no figures),
+    ``case`` the validated case (its full input data and structure; None: what the results hold)."""
+    t = T[lang]
+    s = results.scalars
+    cols = results.columns
+    b = _Builder(results.title, lang, plots)
+
+    def sym(key):
+        return nm.symbol(key, lang)
+
+    def u(key):
+        return nm.unit_of(key, lang)
+
+    def h(key, **kw):
+        return nm.heading(key, lang, **kw)
+
+    def row(key, value, digits=6, label=None):
+        return [label or f"{nm.name(key, lang)}", g(value, digits) if not isinstance(value, str) else value,
+                u(key)]
+
+    b.add(Heading(1, f"{t['title']}: {results.title}"))
+    if results.source:
+        b.add(Paragraph(f"{t['source']}: {results.source}"))
+    if not plots:
+        b.add(Paragraph(t["no_plots"]))
+
+    # 1. input data -------------------------------------------------------------------------
+    b.add(Heading(2, t["input"]))
+    head = [t["qty"], t["val"], t["unit"]]
+    rows = [
+        [f"{sym('omega_mean')} = 2π·{sym('crank_speed')}", g(s["omega_mean"], 6), u("omega_mean")],
+        [sym("crank_speed"), g(s["omega_mean"] / (2 * math.pi), 6), u("crank_speed")],
+        [sym("delta"), g(s["delta"], 6), u("delta")],
+        [sym("crank_length"), g(s.get("crank_length"), 6), u("crank_length")],
+        [f"{sym('J_first_group')} ({t['first_group']})", g(s["J_first_group"], 6), u("J_first_group")],
+    ]
+    if case is not None:
+        for k, v in case.machine.first_group.items():
+            rows.append([f"{sym('J_first_group')}: {k}", g(v, 6), u("J_first_group")])
+        rows.append([t["balance_row"], t["balance_word"][case.machine.balance], ""])
+        rows.append([f"{sym('gravity')} (x, y)", ", ".join(g(x, 4) for x in case.machine.gravity), u("gravity")])
+    rows += [
+        [nm.name("flywheel_material", lang), nm.material(s.get("flywheel_material", "steel"), lang), ""],
+        [f"{sym('flywheel_material_density')}", g(s["flywheel_material_density"], 6),
+         u("flywheel_material_density")],
+        [sym("flywheel_speed_ratio"), g(s["flywheel_speed_ratio"], 6), u("flywheel_speed_ratio")],
+    ]
+    b.add(Heading(3, f"1.1. {t['machine']}"))
+    b.table(t["machine"], head, rows)
+    if case is not None and case.crank is not None:
+        _input_of_case(b, case, t, lang)
+        _structure(b, case, t, lang)
+    elif case is not None:
+        b.add(Paragraph(t["tabulated"]))
+
+    # 2. kinematics ---------------------------------------------------------------------------
+    idx = [(nm.position_label(label, lang), results.index_of(phi))
+           for label, phi in results.position_angles]
+    vq = [k for k in cols if k.startswith("vq_") and not k.startswith(("vqx_", "vqy_"))]
+    wq = [k for k in cols if k.startswith("omega_q_")]
+    if vq or wq:
+        b.add(Heading(2, t["kin"]))
+        b.add(Paragraph(t["kin_note"].format(vq=sym("v_q"), u=u("v_q"), wq=sym("omega_q"))))
+        header = [t["pos"], h("phi_deg")] + [f"{sym(k)}{nm.member(k, lang)}" for k in vq + wq]
+        body = [[lab, g(cols["phi_deg"].values[i], 6)] + [g(cols[k].values[i], 4) for k in vq + wq]
+                for lab, i in idx]
+        b.table(t["kin_caption"], header, body)
+        b.figures_of("kin")
+
+    # 3. reduction ----------------------------------------------------------------------------
+    b.add(Heading(2, t["red"]))
+    b.add(Paragraph(t["red_note"]))
+    b.add(Formula(_mt("J_II", lang) + r" = \sum (m_{i} v_{qSi}^{2} + J_{Si} \omega_{qi}^{2})"))
+    b.add(Formula(r"M_{F} = F \cdot v_{q}"))
+    mk = [k for k in cols if k.startswith("M ")]
+    header = ([t["pos"], h("phi_deg"), h("J_II"), h("dJ_II")]
+              + [h(k, label=nm.member(k, lang)) for k in mk] + [h("M_sum")])
+    body = [[lab, g(cols["phi_deg"].values[i], 6), g(cols["J_II"].values[i], 4), g(cols["dJ_II"].values[i], 4)]
+            + [g(cols[k].values[i], 5) for k in mk] + [g(cols["M_sum"].values[i], 5)] for lab, i in idx]
+    b.table(t["red_caption"], header, body)
+    b.figures_of("red")
+
+    # 4. energy -------------------------------------------------------------------------------
+    b.add(Heading(2, t["energy"]))
+    AC, MC, MD = _mt("cycle_work_resistance", lang), _mt("M_C", lang), _mt("driving_moment", lang)
+    dTI, TII, wm = _mt("dT_I", lang), _mt("T_II", lang), _mt("omega_mean", lang)
+    b.add(Formula(rf"{AC} = \oint {MC} d\varphi = {g(s['cycle_work_resistance'], 6)}\,\text{{{u('cycle_work_resistance')}}}"))
+    b.add(Formula(rf"{MD} = -\frac{{{AC}}}{{2\pi}} = {g(s['driving_moment'], 6)}\,\text{{{u('driving_moment')}}}"))
+    b.add(Formula(rf"{dTI} = A - ({TII} - {TII}(0)), {TII} = \frac{{{_mt('J_II', lang)} {wm}^{{2}}}}{{2}}"))
+    b.add(Bullets((
+        t["balance"].format(A_C=sym("cycle_work_resistance"), M_C=sym("M_C"), M_D=sym("driving_moment"),
+                            A=g(s["cycle_work_resistance"], 6), uJ=u("cycle_work_resistance"),
+                            M=g(s["driving_moment"], 6), uM=u("driving_moment"))[2:],
+        t["extremes"].format(dT=sym("dT_I"), vmax=g(s["delta_T_I_max"], 6), amax=f"{s['phi_delta_T_I_max_deg']:.2f}",
+                             vmin=g(s["delta_T_I_min"], 6), amin=f"{s['phi_delta_T_I_min_deg']:.2f}",
+                             span=sym("delta_T_max"), v=g(s["delta_T_max"], 6), uJ=u("delta_T_max"))[2:],
+    )))
+    energy = ("A_D", "A_C", "A", "T_II", "dT_I", "omega", "epsilon")
+    header = [t["pos"], h("phi_deg")] + [h(k) for k in energy]
+    body = [[lab, g(cols["phi_deg"].values[i], 6)] + [g(cols[k].values[i], 6) for k in energy]
+            for lab, i in idx]
+    b.table(t["energy_caption"], header, body)
+    b.figures_of("energy")
+
+    # 5. flywheel -----------------------------------------------------------------------------
+    b.add(Heading(2, t["sizing"]))
+    JI, dT = _mt("J_required", lang), _mt("delta_T_max", lang)
+    b.add(Formula(rf"{JI} = \frac{{{dT}}}{{\delta \cdot {wm}^{{2}}}} = {g(s['J_required'], 6)}\,\text{{{u('J_required')}}}"))
+    b.add(Formula(rf"{_mt('J_flywheel', lang)} = {JI} - ({_mt('J_first_group', lang)}) = "
+                  rf"{g(s['J_flywheel'], 6)}\,\text{{{u('J_flywheel')}}}"))
+    b.add(Bullets(tuple(x[2:] for x in _sizing_lines(s, t, lang))))
+    b.table(t["sizing_caption"], [t["method"], nm.heading("J_required", lang), nm.heading("J_flywheel", lang),
+                                  nm.heading("delta_achieved", lang)],
+            [[t["m_merzalov"], g(s["J_required"], 6), g(s["J_flywheel"], 6), g(s["delta_achieved"], 6)],
+             [t["m_exact"], g(s["J_required_exact"], 6), g(s["J_flywheel_exact"], 6),
+              g(s["delta_achieved_exact"], 6)]])
+    d, r = s["flywheel_disk"], s["flywheel_rim"]
+    b.table(t["dims_caption"], [t["shape"], h("D"), h("D_inner"), h("b"), h("mass"), h("rim_speed")],
+            [[t["disk_word"], g(d["D"], 4), "—", g(d["b"], 4), g(d["mass"], 5), g(d.get("rim_speed"), 4)],
+             [t["rim_word"], g(r["D"], 4), g(r.get("D_inner"), 4), g(r["b"], 4), g(r["mass"], 5),
+              g(r.get("rim_speed"), 4)]])
+    b.figures_of("sizing")
+
+    # 6. motion at the report angles ----------------------------------------------------------
+    b.add(Heading(2, t["motion"]))
+    b.add(Formula(r"v = v_{q} \omega, a = |a_{q} \omega^{2} + v_{q} \varepsilon|, "
+                  r"\omega_{i} = \omega_{qi} \omega, \varepsilon_{i} = \varepsilon_{qi} \omega^{2} + \omega_{qi} \varepsilon"))
+    point_keys, link_keys = ("v_q", "v", "a_q", "a"), ("omega_q", "omega", "epsilon_q", "epsilon")
+    for k, a in enumerate(results.at, 1):
+        b.add(Heading(3, f"6.{k}. φ = {g(a['phi_deg'], 6)}°"))
+        b.add(Paragraph(t["at"].format(w=g(a["omega"], 6), uw=u("omega"), e=g(a["epsilon"], 6),
+                                       ue=u("epsilon"))))
+        if a.get("points"):
+            b.table(t["points_caption"].format(a=g(a["phi_deg"], 6)), [t["point"], *(h(x) for x in point_keys)],
+                    [[n] + [g(p.get(x), 5) for x in point_keys] for n, p in a["points"].items()])
+        if a.get("links"):
+            b.table(t["links_caption"].format(a=g(a["phi_deg"], 6)), [t["link"], *(h(x) for x in link_keys)],
+                    [[n] + [g(lk.get(x), 5) for x in link_keys] for n, lk in a["links"].items()])
+    b.figures_of("motion")
+
+    td = s.get("time_domain")
+    if td:
+        b.add(Heading(2, t["time"]))
+        b.add(Paragraph(t["time_note"]))
+        b.add(Bullets(tuple(x[2:] for x in _time_lines(td, s, t))))
+        b.figures_of("time")
+
+    if getattr(results, "forces", None) is not None:    # the force analysis (render/forces.py)
+        from flywheel.render.forces import report_section
+
+        _add_markdown(b, report_section(results, lang))
+        b.figures_of("forces")
+
+    if results.warnings:
+        b.add(Heading(2, t["warn"]))
+        b.add(Bullets(tuple(results.warnings)))
+    if b.plots:
+        b.add(Heading(2, t["figures"]))
+        b.figures_of("figures")
+    b.add(Heading(2, t["sources"]))
+    src = [t["book"]]
+    if results.source:
+        src.insert(0, t["case_source"].format(s=results.source))
+    b.add(Bullets(tuple(f"[{i}] {x}" for i, x in enumerate(src, 1))))
+    return b.doc
+
+
+def _sizing_lines(s: dict, t: dict, lang: str) -> list[str]:
+    def sym(key):
+        return nm.symbol(key, lang)
+
+    def u(key):
+        return nm.unit_of(key, lang)
+
+    def dims(d: dict, keys, digits) -> str:
+        return ", ".join(f"{sym(k)} = {g(d[k], n)} {u(k)}" for k, n in zip(keys, digits))
+
+    d, r = s["flywheel_disk"], s["flywheel_rim"]
+    uI = u("J_required")
+    fw = t["flywheel"].format(JM=sym("J_flywheel"), J=sym("J_required"), J1=sym("J_first_group"),
+                              v=g(s["J_flywheel"], 6), uI=uI)
+    if s.get("flywheel_speed_ratio", 1) != 1:
+        fw += t["shaft"].format(i=s["flywheel_speed_ratio"], v=g(s["flywheel_J_on_its_shaft"], 6), uI=uI)
+    return [
+        t["merzalov"].format(J=sym("J_required"), span=sym("delta_T_max"), w=sym("omega_mean"),
+                             v=g(s["J_required"], 6), uI=uI, d=g(s["delta_achieved"], 6)),
+        t["exact"].format(J=sym("J_required_exact"), v=g(s["J_required_exact"], 6), uI=uI,
+                          d=g(s["delta_achieved_exact"], 6)),
+        fw,
+        t["disk"].format(mat=nm.material(s.get("flywheel_material", "steel"), lang),
+                         dims=dims(d, ("D", "b", "mass"), (4, 4, 5)), speed=nm.name("rim_speed", lang),
+                         v=g(d.get("rim_speed"), 4), u=u("rim_speed")),
+        t["rim"].format(dims=dims(r, ("D", "D_inner", "b", "mass"), (4, 4, 4, 5)),
+                        speed=nm.name("rim_speed", lang), v=g(r.get("rim_speed"), 4), u=u("rim_speed"),
+                        lim=g(s.get("flywheel_rim_speed_limit"), 3)),
+        t["omega_extremes"].format(wmax=sym("omega_max"), vmax=g(s["omega_max"], 6),
+                                   amax=f"{s['phi_omega_max_deg']:.2f}", wmin=sym("omega_min"),
+                                   vmin=g(s["omega_min"], 6), amin=f"{s['phi_omega_min_deg']:.2f}",
+                                   uw=u("omega_max"), T=nm.name("cycle_time", lang),
+                                   v=g(s["cycle_time"], 6), uT=u("cycle_time")),
+    ]
+
+
+def _input_of_case(b: _Builder, case, t: dict, lang: str) -> None:
+    """The case's lengths, masses, cylinders and forces (§1.2–1.5)."""
+    from flywheel.cases.run import RPRSpec, RRPSpec, RRRSpec
+
+    def u(key):
+        return nm.unit_of(key, lang)
+
+    ll, ga, go = nm.symbol("link_length", lang), nm.symbol("guide_angle", lang), nm.symbol("guide_offset", lang)
+    rows = [[f"{nm.symbol('crank_length', lang)} ({t['link']} {case.crank.name})", g(case.crank_length, 6),
+             u("crank_length")]]
+    for d in case.dyads:
+        if isinstance(d, RRPSpec):
+            rows.append([f"{ll} ({t['link']} {d.rod})", g(case.rod_length(d), 6), u("link_length")])
+            rows.append([f"{ga} ({t['link']} {d.slider})", g(d.guide.angle_deg, 6), u("guide_angle")])
+            if d.guide.offset:
+                rows.append([f"{go} ({t['link']} {d.slider})", g(d.guide.offset, 6), u("guide_offset")])
+        elif isinstance(d, RRRSpec):
+            rows.append([f"{ll} ({t['link']} {d.link_from})", g(d.length_from, 6), u("link_length")])
+            rows.append([f"{ll} ({t['link']} {d.link_to})", g(d.length_to, 6), u("link_length")])
+        elif isinstance(d, RPRSpec) and d.offset:
+            rows.append([f"{go} ({t['link']} {d.rocker})", g(d.offset, 6), u("guide_offset")])
+    for name, (x, y) in case.ground.items():
+        rows.append([f"{name} (x, y)", f"{g(x, 6)}, {g(y, 6)}", u("x")])
+    b.add(Heading(3, f"1.2. {t['lengths']}"))
+    b.table(t["lengths"], [t["qty"], t["val"], t["unit"]], rows)
+
+    if case.links:
+        b.add(Heading(3, f"1.3. {t['masses']}"))
+        b.table(t["masses"], [t["link"], nm.heading("link_mass", lang), nm.heading("J_S", lang), t["centroid"]],
+                [[k, g(v.mass, 6), g(v.J_S, 6), v.centroid or "—"] for k, v in case.links.items()])
+    if case.cylinders:
+        b.add(Heading(3, f"1.4. {t['cyl']}"))
+        b.table(t["cyl"], [t["name"], t["piston"], nm.heading("bore", lang), nm.heading("p_max", lang), t["head"]],
+                [[c.name, c.piston, g(c.bore, 6), g(c.p_max, 6),
+                  nm.DEAD_CENTRES[c.head][lang == "ru"]] for c in case.cylinders])
+        for c in case.cylinders:
+            b.table(t["indicator"].format(c=c.name), [nm.symbol("s_{cylinder}", lang),
+                                                      f"{nm.symbol('p_rel', lang)} ↑", f"{nm.symbol('p_rel', lang)} ↓"],
+                    [[g(s_, 4), g(a, 4), g(w, 4)] for s_, a, w in zip(c.s, c.towards_head, c.away_from_head)])
+    if case.forces or case.couples:
+        b.add(Heading(3, f"1.5. {t['forces']}"))
+        rows = [[nm.load_name(f"force {f.name}", lang), f.slider, g(f.magnitude, 6), u("force_magnitude")]
+                for f in case.forces]
+        rows += [[nm.load_name(f"couple {c.name}", lang), c.link, g(c.moment, 6), u("couple_moment")]
+                 for c in case.couples]
+        b.table(t["forces"], [t["name"], t["link"], t["val"], t["unit"]], rows)
+
+
+def _structure(b: _Builder, case, t: dict, lang: str) -> None:
+    """The Assur groups and the degree of freedom W = 3n − 2p₅ − p₄ (Chebyshev; Артоболевский
+    ch. 2): a crank on the frame (one link, one revolute pair) and dyads of class II (two links,
+    three lower pairs each)."""
+    from flywheel.cases.run import RPRSpec, RRPSpec, RRRSpec
+
+    b.add(Heading(3, f"1.6. {t['structure']}"))
+    b.add(Paragraph(t["structure_note"].format(c=case.crank.name)))
+    groups = []
+    for d in case.dyads:
+        links = ((d.rod, d.slider) if isinstance(d, RRPSpec) else (d.link_from, d.link_to)
+                 if isinstance(d, RRRSpec) else (d.rocker, d.slider) if isinstance(d, RPRSpec) else ())
+        groups.append(t["group"].format(kind=d.kind, links=", ".join(links)))
+    b.add(Bullets(tuple(groups)))
+    n, p5, p4 = 1 + 2 * len(case.dyads), 1 + 3 * len(case.dyads), 0
+    b.add(Paragraph(t["chebyshev"].format(n=n, p5=p5, p4=p4)))
+    b.add(Formula(rf"W = 3n - 2p_{{5}} - p_{{4}} = 3 \cdot {n} - 2 \cdot {p5} - {p4} = {3 * n - 2 * p5 - p4}"))
+
+
+def _time_lines(td: dict, s: dict, t: dict) -> list[str]:
+    """The bullet lines of the "Motion in time" section (--transients)."""
+    v, st, rd = td["verification"], td["startup"], td["rundown"]
+    lines = [
+        "- " + t["verify"].format(n=v["cycles"], rep=f"{v['repeat_error']:.1e}", dev=f"{v['max_deviation']:.1e}"),
+        "- " + t["period"].format(T=g(v["period"], 6), Te=g(s["cycle_time"], 6)),
+    ]
+    if st.get("computed") is False:
+        reason = st["reason"]
+        if "st_none_motor" in t and reason.startswith("no [motor]"):
+            reason = t["st_none_motor"]
+        return lines + ["- " + t["st_none"].format(reason=reason), _rundown_line(rd, t)]
+    if "starting_torque" in st:
+        lines.append("- " + t["motor"].format(Mp=g(st["starting_torque"], 5), wx=g(st["no_load_speed"], 5),
+                                              ws=g(st.get("omega_final_predicted"), 6),
+                                              tau=g(st.get("time_constant"), 3)))
+    if st.get("stalled"):
+        lines.append("- " + t["st_stall"].format(a=f"{st['stall_angle_deg']:.1f}"))
+    elif st.get("converged", True) and st.get("time_to_steady") is not None:
+        lines.append("- " + t["st_ok"].format(t=g(st["time_to_steady"], 4), n=st["cycles_to_steady"],
+                                              w=g(st["omega_mean_steady"], 6)))
+    else:
+        lines.append("- " + t["st_no"].format(n=st.get("cycles_run"), t=g(st.get("time_run"), 4),
+                                              w=g(st.get("omega_mean_last"), 6)))
+        if st.get("warning"):
+            lines.append(f"- **{st['warning']}**")
+    return lines + [_rundown_line(rd, t)]
+
+
+def _rundown_line(rd: dict, t: dict) -> str:
+    if rd.get("reason"):
+        return "- " + t["rd_never"]
+    return "- " + t["rd"].format(t=g(rd["time"], 4), rev=f"{rd['angle_deg'] / 360:.2f}") + (
+        "" if rd["stopped"] else t["rd_not"])

@@ -1,0 +1,250 @@
+"""The report's formulas: a small LaTeX-like notation, parsed once, written as MathML (HTML),
+typst math (PDF) and plain Unicode text (Markdown alt text, Word).
+
+The notation is the subset the report writes: letters, digits, operators, Greek letters and
+a few symbols by name (``\\omega``, ``\\varphi``, ``\\Delta``, ``\\Sigma``, ``\\cdot``,
+``\\oint``, ``\\approx``, ``\\le``), ``_{…}`` and ``^{…}``, ``\\frac{…}{…}``, ``\\sqrt{…}``
+and ``\\text{…}`` (words, Cyrillic subscripts).
+
+>>> plain(r"J_{\\text{I}} = \\frac{\\Delta T_{\\text{нб}}}{\\delta \\cdot \\omega_{\\text{ср}}^{2}}")
+'J_I = ΔT_нб/(δ·ω_ср²)'
+>>> typst(r"\\omega_{\\text{ср}} = 2\\pi n_{1}")
+'ω_("ср") = 2 π n_(1)'
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+from html import escape
+
+SYMBOLS = {
+    "alpha": "α", "beta": "β", "gamma": "γ", "delta": "δ", "varepsilon": "ε", "epsilon": "ε",
+    "theta": "θ", "lambda": "λ", "mu": "μ", "pi": "π", "rho": "ρ", "sigma": "σ", "tau": "τ",
+    "varphi": "φ", "phi": "φ", "psi": "ψ", "omega": "ω", "Delta": "Δ", "Sigma": "Σ",
+    "Phi": "Φ", "Omega": "Ω",
+    "cdot": "·", "oint": "∮", "int": "∫", "sum": "Σ", "approx": "≈", "le": "≤", "ge": "≥",
+    "minus": "−", "times": "×", "infty": "∞", "prime": "′",
+}
+_OPERATORS = set("=+−-·×/(),;:≤≥≈∮∫Σ|′[]<>")
+_SUP = str.maketrans("0123456789+−-", "⁰¹²³⁴⁵⁶⁷⁸⁹⁺⁻⁻")
+
+
+@dataclass(frozen=True)
+class Node:
+    """``kind``: "i" (identifier), "n" (number), "o" (operator), "t" (text), "row", "sub",
+    "sup", "subsup", "frac", "sqrt"; ``text`` of a leaf, ``kids`` of the others."""
+
+    kind: str
+    text: str = ""
+    kids: tuple = ()
+
+
+def _tokens(src: str) -> list[str]:
+    out, i = [], 0
+    while i < len(src):
+        c = src[i]
+        if c == "\\":
+            j = i + 1
+            while j < len(src) and src[j].isalpha():
+                j += 1
+            out.append(src[i:j] if j > i + 1 else src[i:i + 2])
+            i = max(j, i + 2) if j == i + 1 else j
+        elif c.isdigit() or (c == "." and i + 1 < len(src) and src[i + 1].isdigit()):
+            j = i
+            while j < len(src) and (src[j].isdigit() or src[j] == "."):
+                j += 1
+            out.append(src[i:j])
+            i = j
+        elif c.isalpha():
+            j = i
+            while j < len(src) and src[j].isalpha():
+                j += 1
+            out.append(src[i:j])
+            i = j
+        else:
+            out.append(c)
+            i += 1
+    return out
+
+
+class _Parser:
+    def __init__(self, src: str):
+        self.src = src
+        self.tok = _tokens(src)
+        self.i = 0
+
+    def peek(self):
+        return self.tok[self.i] if self.i < len(self.tok) else None
+
+    def take(self):
+        t = self.peek()
+        self.i += 1
+        return t
+
+    def group(self) -> Node:
+        """``{…}`` or one atom."""
+        if self.peek() == "{":
+            self.take()
+            row = self.row("}")
+            self.take()
+            return row
+        return self.atom()
+
+    def text_group(self) -> str:
+        assert self.take() == "{", f"\\text needs {{…}} in {self.src!r}"
+        out, depth = [], 1
+        while True:
+            t = self.take()
+            if t is None:
+                raise ValueError(f"unclosed \\text in {self.src!r}")
+            depth += (t == "{") - (t == "}")
+            if depth == 0:
+                return "".join(out)
+            out.append(t)
+
+    def atom(self) -> Node:
+        t = self.take()
+        if t is None:
+            raise ValueError(f"formula ends too early: {self.src!r}")
+        if t.startswith("\\") and len(t) > 1:
+            name = t[1:]
+            if name == "frac":
+                return Node("frac", kids=(self.group(), self.group()))
+            if name == "sqrt":
+                return Node("sqrt", kids=(self.group(),))
+            if name in ("text", "mathrm"):
+                return Node("t", self.text_group())
+            if name in (",", " ", ";"):
+                return Node("o", " ")
+            if name in ("{", "}"):
+                return Node("o", name)
+            if name not in SYMBOLS:
+                raise ValueError(f"unknown command \\{name} in {self.src!r}")
+            s = SYMBOLS[name]
+            return Node("o" if s in _OPERATORS else "i", s)
+        if t[0].isdigit() or t[0] == ".":
+            return Node("n", t)
+        if t == "-":
+            return Node("o", "−")
+        return Node("o" if t in _OPERATORS else "i", t)
+
+    def row(self, end: str | None = None) -> Node:
+        kids = []
+        while self.peek() is not None and self.peek() != end:
+            if self.peek() == " ":
+                self.take()
+                continue
+            base = self.atom() if self.peek() != "{" else self.group()
+            sub = sup = None
+            while self.peek() in ("_", "^"):
+                if self.take() == "_":
+                    sub = self.group()
+                else:
+                    sup = self.group()
+            if sub is not None and sup is not None:
+                base = Node("subsup", kids=(base, sub, sup))
+            elif sub is not None:
+                base = Node("sub", kids=(base, sub))
+            elif sup is not None:
+                base = Node("sup", kids=(base, sup))
+            kids.append(base)
+        return Node("row", kids=tuple(kids))
+
+
+def parse(src: str) -> Node:
+    """The tree of a formula string (ValueError on what the notation does not have)."""
+    return _Parser(src).row()
+
+
+# -- MathML ---------------------------------------------------------------------------------------
+def _mml(n: Node) -> str:
+    k = n.kind
+    if k == "i":
+        return f'<mi>{escape(n.text)}</mi>'
+    if k == "n":
+        return f"<mn>{escape(n.text)}</mn>"
+    if k == "o":
+        return "<mspace width=\"0.2em\"/>" if n.text == " " else f"<mo>{escape(n.text)}</mo>"
+    if k == "t":
+        return f"<mtext>{escape(n.text)}</mtext>"
+    inner = "".join(_mml(c) for c in n.kids)
+    tag = {"row": "mrow", "sub": "msub", "sup": "msup", "subsup": "msubsup", "frac": "mfrac",
+           "sqrt": "msqrt"}[k]
+    if k in ("sub", "sup", "subsup", "frac"):
+        inner = "".join(f"<mrow>{_mml(c)}</mrow>" if c.kind != "row" else _mml(c) for c in n.kids)
+    return f"<{tag}>{inner}</{tag}>"
+
+
+def mathml(src: str, display: bool = True) -> str:
+    """The formula as presentation MathML (no namespace URL: HTML5 knows <math>)."""
+    return (f'<math display="{"block" if display else "inline"}">'
+            f"{_mml(parse(src))}</math>")
+
+
+# -- typst ----------------------------------------------------------------------------------------
+def _ty(n: Node) -> str:
+    k = n.kind
+    if k == "i":
+        return n.text if len(n.text) == 1 else f'"{n.text}"'
+    if k == "n":
+        return n.text
+    if k == "o":
+        return {"/": "\\/", " ": "thin", ",": "\\,", "(": "\\(", ")": "\\)", "[": "\\[",
+                "]": "\\]", ";": "\\;", "|": "|"}.get(n.text, n.text)
+    if k == "t":
+        return '"' + n.text.replace("\\", "\\\\").replace('"', '\\"') + '"'
+    if k == "row":
+        return " ".join(_ty(c) for c in n.kids)
+    a = [_ty(c) for c in n.kids]
+    if k == "sub":
+        return f"{a[0]}_({a[1]})"
+    if k == "sup":
+        return f"{a[0]}^({a[1]})"
+    if k == "subsup":
+        return f"{a[0]}_({a[1]})^({a[2]})"
+    if k == "frac":
+        return f"frac({a[0]}, {a[1]})".replace(", ,", ", \\,")
+    return f"sqrt({a[0]})"
+
+
+def typst(src: str) -> str:
+    """The formula as typst math (the inside of ``$ … $``)."""
+    return _ty(parse(src))
+
+
+# -- plain text -----------------------------------------------------------------------------------
+def _simple(n: Node) -> bool:
+    return n.kind != "row" or (len(n.kids) == 1 and _simple(n.kids[0])) or all(
+        c.kind in ("i", "n", "t", "sub", "sup", "subsup") for c in n.kids)
+
+
+def _pl(n: Node) -> str:
+    k = n.kind
+    if k in ("i", "n", "o", "t"):
+        return n.text
+    if k == "row":
+        out = ""
+        for c in n.kids:
+            s = _pl(c)
+            if c.kind == "o" and c.text in "=≈≤≥+−" and c.text:
+                out = out.rstrip() + f" {s} "
+            else:
+                out += s
+        return out.strip()
+    a = [_pl(c) for c in n.kids]
+    if k in ("sup", "subsup"):
+        sup = a[-1]
+        sup = sup.translate(_SUP) if all(ch in "0123456789+−-" for ch in sup) else f"^{sup}"
+        base = a[0] + (f"_{a[1]}" if k == "subsup" else "")
+        return base + sup
+    if k == "sub":
+        return f"{a[0]}_{a[1]}"
+    if k == "frac":
+        num = a[0] if _simple(n.kids[0]) else f"({a[0]})"
+        den = a[1] if _simple(n.kids[1]) else f"({a[1]})"
+        return f"{num}/{den}"
+    return f"√({a[0]})"
+
+
+def plain(src: str) -> str:
+    """The formula as one line of Unicode text (Word, the Markdown's alt text)."""
+    return _pl(parse(src))

@@ -1,0 +1,256 @@
+"""The записка (render/document.py) as HTML, PDF and DOCX (docs/report.md).
+
+- html: one self-contained file (Jinja2): styles inline with a print stylesheet for A4, the
+  figures inline as data: URIs of the PNGs, formulas as MathML; nothing fetched.
+- pdf: typst (its Python package; bundled fonts typeset Cyrillic), formulas in typst math.
+- docx: python-docx, formulas as Unicode text; the zip's dates fixed so reruns are identical.
+
+Heavy imports (jinja2, typst, docx) live inside the function of their format.
+"""
+from __future__ import annotations
+
+import base64
+import io
+import re
+import shutil
+import tempfile
+import zipfile
+from pathlib import Path
+
+from flywheel.render import mathfmt
+from flywheel.render.document import Bullets, Document, Figure, Formula, Heading, Paragraph, Table
+from flywheel.render.report import CAPTION
+
+FORMATS = ("md", "html", "pdf", "docx")
+
+_CSS = """
+body { font-family: "DejaVu Serif", "Times New Roman", serif; max-width: 190mm; margin: 1em auto;
+       padding: 0 1em; line-height: 1.4; color: #111; }
+h1 { font-size: 1.5em; } h2 { font-size: 1.25em; margin-top: 1.4em; } h3 { font-size: 1.05em; }
+table { border-collapse: collapse; margin: 0.3em 0 1em; font-size: 0.85em; }
+th, td { border: 1px solid #888; padding: 0.15em 0.45em; text-align: right; }
+th { background: #eee; text-align: center; } td:first-child { text-align: left; }
+.caption { font-size: 0.9em; margin: 0.8em 0 0.2em; }
+figure { margin: 1em 0; text-align: center; page-break-inside: avoid; break-inside: avoid; }
+figure img { max-width: 100%; height: auto; }
+figcaption { font-size: 0.9em; margin-top: 0.3em; }
+math[display="block"] { margin: 0.5em 0; }
+@page { size: A4; margin: 18mm 15mm; }
+@media print { body { max-width: none; margin: 0; padding: 0; font-size: 10.5pt; }
+  h2, h3 { page-break-after: avoid; break-after: avoid; }
+  table { page-break-inside: avoid; break-inside: avoid; } }
+"""
+
+_TEMPLATE = """<!DOCTYPE html>
+<html lang="{{ doc.lang }}">
+<head>
+<meta charset="utf-8">
+<title>{{ doc.title }}</title>
+<style>{{ css }}</style>
+</head>
+<body>
+{% for b in blocks -%}
+{% if b.kind == "h" %}<h{{ b.level }}>{{ b.text }}</h{{ b.level }}>
+{% elif b.kind == "p" %}<p>{{ b.html }}</p>
+{% elif b.kind == "ul" %}<ul>{% for i in b.entries %}<li>{{ i }}</li>{% endfor %}</ul>
+{% elif b.kind == "f" %}{{ b.mathml }}
+{% elif b.kind == "t" %}<p class="caption" id="table-{{ b.number }}">{{ b.label }}</p>
+<table>
+<thead><tr>{% for c in b.header %}<th>{{ c }}</th>{% endfor %}</tr></thead>
+<tbody>
+{% for r in b.rows %}<tr>{% for c in r %}<td>{{ c }}</td>{% endfor %}</tr>
+{% endfor %}</tbody>
+</table>
+{% elif b.kind == "img" %}<figure id="figure-{{ b.number }}">{% if b.src %}<img src="{{ b.src }}" alt="{{ b.label }}">{% endif %}
+<figcaption>{{ b.label }}</figcaption></figure>
+{% endif %}
+{%- endfor %}
+</body>
+</html>
+"""
+
+
+def _bold_html(text: str) -> str:
+    from markupsafe import Markup, escape
+
+    parts = text.split("**")
+    return Markup("".join(str(escape(p)) if i % 2 == 0 else f"<strong>{escape(p)}</strong>"
+                          for i, p in enumerate(parts)))
+
+
+def html(doc: Document, plots_dir: Path | None = None) -> str:
+    """The document as one self-contained HTML page; figures read from ``plots_dir``."""
+    import jinja2
+    from markupsafe import Markup
+
+    tab, fig = CAPTION[doc.lang]
+    blocks = []
+    for b in doc.blocks:
+        if isinstance(b, Heading):
+            blocks.append({"kind": "h", "level": b.level, "text": b.text})
+        elif isinstance(b, Paragraph):
+            blocks.append({"kind": "p", "html": _bold_html(b.text)})
+        elif isinstance(b, Bullets):
+            blocks.append({"kind": "ul", "entries": [_bold_html(i) for i in b.items]})
+        elif isinstance(b, Formula):
+            blocks.append({"kind": "f", "mathml": Markup(mathfmt.mathml(b.tex))})
+        elif isinstance(b, Table):
+            blocks.append({"kind": "t", "number": b.number, "label": f"{tab} {b.number} — {b.caption}",
+                           "header": b.header, "rows": b.rows})
+        elif isinstance(b, Figure):
+            src = None
+            if plots_dir is not None and (plots_dir / b.file).is_file():
+                src = "data:image/png;base64," + base64.b64encode((plots_dir / b.file).read_bytes()).decode()
+            blocks.append({"kind": "img", "number": b.number, "label": f"{fig} {b.number} — {b.caption}",
+                           "src": src})
+    env = jinja2.Environment(autoescape=True, keep_trailing_newline=True)
+    return env.from_string(_TEMPLATE).render(doc=doc, blocks=blocks, css=Markup(_CSS))
+
+
+# -- typst / PDF ----------------------------------------------------------------------------------
+def _ts(text: str) -> str:
+    """Text as typst markup: every run a string literal (nothing in it is markup); **bold**."""
+    def lit(s: str) -> str:
+        return '#"' + s.replace("\\", "\\\\").replace('"', '\\"') + '"' if s else ""
+
+    parts = text.split("**")
+    return "".join(lit(p) if i % 2 == 0 else f"#strong[{lit(p)}]" for i, p in enumerate(parts))
+
+
+def typst_source(doc: Document) -> str:
+    """The document as a typst file (figures referenced as plots/<name>)."""
+    tab, fig = CAPTION[doc.lang]
+    out = ['#set document(title: ' + _ts(doc.title)[1:] + ', date: none)',
+           '#set page(paper: "a4", margin: (x: 18mm, y: 18mm), numbering: "1")',
+           f'#set text(lang: "{doc.lang}", size: 10pt)',
+           '#set par(justify: false)',
+           '#show table.cell: set text(size: 8pt)', ""]
+    for b in doc.blocks:
+        if isinstance(b, Heading):
+            out.append("=" * b.level + " " + _ts(b.text))
+        elif isinstance(b, Paragraph):
+            out.append(_ts(b.text))
+        elif isinstance(b, Bullets):
+            out += ["- " + _ts(i) for i in b.items]
+        elif isinstance(b, Formula):
+            out.append(f"$ {mathfmt.typst(b.tex)} $")
+        elif isinstance(b, Table):
+            cells = ", ".join(f"[{_ts(c)}]" for r in (b.header, *b.rows) for c in r)
+            out.append(f"#block(breakable: true)[{_ts(f'{tab} {b.number} — {b.caption}')}]")
+            out.append(f"#table(columns: {len(b.header)}, inset: 3pt, align: right, {cells})")
+        elif isinstance(b, Figure):
+            out.append(f'#figure(image("plots/{b.file}", width: 100%), numbering: none, '
+                       f"caption: [{_ts(f'{fig} {b.number} — {b.caption}')}])")
+        out.append("")
+    return "\n".join(out)
+
+
+def pdf(doc: Document, plots_dir: Path | None = None) -> bytes:
+    """The document as PDF (typst)."""
+    import typst
+
+    with tempfile.TemporaryDirectory(prefix="flywheel-typst-") as tmp:
+        root = Path(tmp)
+        (root / "plots").mkdir()
+        for f in doc.figures:
+            if plots_dir is not None and (plots_dir / f.file).is_file():
+                shutil.copyfile(plots_dir / f.file, root / "plots" / f.file)
+        src = typst_source(doc)
+        if plots_dir is None:
+            src = re.sub(r'#figure\(image\("plots/[^"]*", width: 100%\), ', "#figure(", src)
+        (root / "main.typ").write_text(src, encoding="utf-8")
+        return typst.compile(str(root / "main.typ"), root=str(root), format="pdf",
+                             ignore_system_fonts=True, timestamp=0)
+
+
+# -- DOCX -----------------------------------------------------------------------------------------
+def _fixed_zip(data: bytes) -> bytes:
+    """The zip with every entry dated 1980-01-01 (python-docx stamps the current time)."""
+    src = zipfile.ZipFile(io.BytesIO(data))
+    buf = io.BytesIO()
+    with zipfile.ZipFile(buf, "w", zipfile.ZIP_DEFLATED) as dst:
+        for info in src.infolist():
+            dst.writestr(zipfile.ZipInfo(info.filename, date_time=(1980, 1, 1, 0, 0, 0)),
+                         src.read(info.filename), compress_type=zipfile.ZIP_DEFLATED)
+    return buf.getvalue()
+
+
+def docx(doc: Document, plots_dir: Path | None = None) -> bytes:
+    """The document as Word (python-docx); formulas as Unicode text lines."""
+    import datetime
+
+    import docx as pydocx
+    from docx.enum.text import WD_ALIGN_PARAGRAPH
+    from docx.shared import Mm, Pt
+
+    tab, fig = CAPTION[doc.lang]
+    d = pydocx.Document()
+    sec = d.sections[0]
+    sec.page_width, sec.page_height = Mm(210), Mm(297)
+    sec.left_margin = sec.right_margin = Mm(18)
+    fixed = datetime.datetime(2000, 1, 1)
+    d.core_properties.created = d.core_properties.modified = fixed
+    d.core_properties.last_printed = fixed
+    d.core_properties.title = doc.title
+    d.core_properties.author = d.core_properties.last_modified_by = "flywheel"
+    d.core_properties.revision = 1
+
+    def runs(p, text: str):
+        for i, part in enumerate(text.split("**")):
+            if part:
+                p.add_run(part).bold = i % 2 == 1
+
+    for b in doc.blocks:
+        if isinstance(b, Heading):
+            d.add_heading(b.text, level=b.level - 1 if b.level > 1 else 0)
+        elif isinstance(b, Paragraph):
+            runs(d.add_paragraph(), b.text)
+        elif isinstance(b, Bullets):
+            for i in b.items:
+                runs(d.add_paragraph(style="List Bullet"), i)
+        elif isinstance(b, Formula):
+            p = d.add_paragraph()
+            p.alignment = WD_ALIGN_PARAGRAPH.CENTER
+            p.add_run(mathfmt.plain(b.tex)).italic = True
+        elif isinstance(b, Table):
+            d.add_paragraph(f"{tab} {b.number} — {b.caption}")
+            t = d.add_table(rows=1 + len(b.rows), cols=len(b.header))
+            t.style = "Table Grid"
+            for r, cells in enumerate((b.header, *b.rows)):
+                for c, text in enumerate(cells):
+                    cell = t.cell(r, c)
+                    cell.text = text
+                    for p in cell.paragraphs:
+                        for run in p.runs:
+                            run.font.size = Pt(7 if len(b.header) > 7 else 8.5)
+                            run.bold = r == 0
+        elif isinstance(b, Figure):
+            if plots_dir is not None and (plots_dir / b.file).is_file():
+                d.add_picture(str(plots_dir / b.file), width=Mm(170))
+                d.paragraphs[-1].alignment = WD_ALIGN_PARAGRAPH.CENTER
+            p = d.add_paragraph(f"{fig} {b.number} — {b.caption}")
+            p.alignment = WD_ALIGN_PARAGRAPH.CENTER
+    buf = io.BytesIO()
+    d.save(buf)
+    return _fixed_zip(buf.getvalue())
+
+
+def write_reports(doc: Document, folder: Path, formats, plots_dir: Path | None) -> list[str]:
+    """Write report.<ext> for each format into ``folder``; the names written."""
+    from flywheel.render.report import markdown
+
+    names = []
+    for f in dict.fromkeys(formats):
+        name = f"report.{f}"
+        if f == "md":
+            (folder / name).write_text(markdown(doc), encoding="utf-8")
+        elif f == "html":
+            (folder / name).write_text(html(doc, plots_dir), encoding="utf-8")
+        elif f == "pdf":
+            (folder / name).write_bytes(pdf(doc, plots_dir))
+        elif f == "docx":
+            (folder / name).write_bytes(docx(doc, plots_dir))
+        else:
+            raise ValueError(f"report format {f!r} (allowed: {', '.join(FORMATS)})")
+        names.append(name)
+    return names
