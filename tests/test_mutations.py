@@ -296,9 +296,9 @@ def run_mutant(kind: str, text: str, time_limit: int = TIME_LIMIT) -> Outcome:
             resource.setrlimit(resource.RLIMIT_AS, (soft, old_limit[1]))
             signal.alarm(time_limit)
             res = CliRunner().invoke(app, args_for(kind, case_file, tmp))
-        except TooLong:
-            return Outcome(None, "", "", TooLong(f"still running after {time_limit} s"), None,
-                           time.perf_counter() - t0)
+        except TooLong as exc:             # (its traceback: where the command was)
+            return Outcome(None, "", "", TooLong(f"still running after {time_limit} s")
+                           .with_traceback(exc.__traceback__), None, time.perf_counter() - t0)
         finally:
             signal.alarm(0)
             resource.setrlimit(resource.RLIMIT_AS, old_limit)
