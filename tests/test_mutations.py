@@ -1,0 +1,537 @@
+"""Mutation test of the command line (issue 17, item 8): the bundled cases, broken at random.
+
+Every bundled case file (cases/*.toml: the run cases, the task-2 cases and the aggregate cases;
+not the variants templates) is parsed, mutated by one to three edits, written again and given
+to its command in-process (typer's CliRunner on ``flywheel.cli.app``):
+
+    run       CASE --no-plots --points 72 --out TMP/out
+    task2     --case CASE --json
+    aggregate CASE --json
+
+The edits (:data:`OPS`): delete a key, scale a number by a factor from {0, −1, 1e−300, 1e300,
+NaN, ∞, 1e6}, swap a value's type, rename a key (a typo), drop an array element, duplicate an
+array element, give an element the name of another (a duplicate name).
+
+Whatever the mutant, the command must end with exit code 0 or 2, never 1 and never an uncaught
+exception; on exit 2 stderr holds one ``error:`` line (other lines only ``warning:``/``note:``
+lines); on exit 0 the JSON it writes (summary.json of run, stdout of task2/aggregate) parses
+and holds no NaN or Infinity. A mutant that runs longer than :data:`TIME_LIMIT` s or needs more
+than :data:`MEMORY_LIMIT` bytes fails (a bounded failure instead of a hang of CI).
+
+Deterministic: hypothesis with ``derandomize=True`` and no example database. The number of
+examples over the three commands is ``FLYWHEEL_MUTATIONS`` (default 300), e.g.
+
+    FLYWHEEL_MUTATIONS=3000 pytest -q tests/test_mutations.py
+
+and ``FLYWHEEL_MUTATIONS_SURVEY=FILE`` makes it a survey instead of a test: every failing mutant
+is appended to FILE (JSON lines: command, case, edits, what happened, the known class if any)
+and the run goes on to the end instead of stopping and shrinking at the first failure.
+
+Known bugs are not skipped silently: :data:`KNOWN` lists each class of mutant that fails today,
+with the failure it gives. A mutant of a known class that fails *in the known way* is counted
+(hypothesis ``event``) and passes; any other failure fails the test. Each class also has an
+explicit ``xfail(strict=True)`` test with its minimal mutant (``test_known_bug``), so that the fix
+flips it and the entry in :data:`KNOWN` is then removed. A class marked slow (a mutant that runs
+without bound) is not run by the mutation tests (it would cost 20 s each), only counted; its
+xfail test gives its minimal mutant :data:`SLOW_LIMIT` s.
+"""
+from __future__ import annotations
+
+import copy
+import json
+import math
+import os
+import re
+import resource
+import signal
+import tempfile
+import time
+import tomllib
+from dataclasses import dataclass
+from pathlib import Path
+
+import pytest
+import tomli_w
+from hypothesis import HealthCheck, event, given, note, settings
+from hypothesis import strategies as st
+from typer.testing import CliRunner
+
+from flywheel.cli import app
+
+ROOT = Path(__file__).resolve().parents[1]
+CASES = ROOT / "cases"
+EXAMPLES = int(os.environ.get("FLYWHEEL_MUTATIONS", "300"))
+SURVEY = os.environ.get("FLYWHEEL_MUTATIONS_SURVEY", "")
+TIME_LIMIT = 20                      # s per mutant
+MEMORY_LIMIT = 3 * 2 ** 30           # bytes of address space a mutant may add
+FACTORS = (0.0, -1.0, 1e-300, 1e300, math.nan, math.inf, 1e6)
+KINDS = ("run", "task2", "aggregate")
+
+
+def kind_of(path: Path) -> str:
+    """The command that reads a bundled case, by its file name."""
+    if path.name.startswith("task2_"):
+        return "task2"
+    if path.name.startswith("aggregate"):
+        return "aggregate"
+    return "run"
+
+
+CASE_FILES = {k: sorted(p for p in CASES.glob("*.toml") if not p.name.startswith("variants")
+                        and kind_of(p) == k) for k in KINDS}
+DOCS = {p.stem: tomllib.loads(p.read_text(encoding="utf-8"))
+        for files in CASE_FILES.values() for p in files}
+
+
+def test_every_kind_has_cases():
+    assert {k: len(v) for k, v in CASE_FILES.items()} == {"run": 5, "task2": 9, "aggregate": 2}
+
+
+# -- the edits ---------------------------------------------------------------------------------
+
+def paths(node, prefix: tuple = ()):
+    """(path, value) of everything below node in the document's order; a path is a tuple of
+    table keys and array indices."""
+    items = node.items() if isinstance(node, dict) else enumerate(node)
+    for k, v in items:
+        p = (*prefix, k)
+        yield p, v
+        if isinstance(v, (dict, list)):
+            yield from paths(v, p)
+
+
+def dotted(path: tuple) -> str:
+    out = ""
+    for k in path:
+        out += f"[{k}]" if isinstance(k, int) else (f".{k}" if out else str(k))
+    return out
+
+
+def _parent(doc, path: tuple):
+    node = doc
+    for k in path[:-1]:
+        node = node[k]
+    return node
+
+
+def _number(v) -> bool:
+    return isinstance(v, (int, float)) and not isinstance(v, bool)
+
+
+def _type(v) -> str:
+    return "number" if _number(v) else type(v).__name__
+
+
+TYPOS = {
+    "drop-last": lambda k: k[:-1],
+    "double-last": lambda k: k + k[-1],
+    "upper": lambda k: k.upper(),
+    "swap-first": lambda k: k[1] + k[0] + k[2:],
+    "suffix": lambda k: k + "_1",
+}
+SWAPS = ("text", 1, 2.5, True, [], {}, [1.0, 2.0], {"x": 1.0})
+
+
+def _scaled(v, factor: float):
+    x = v * factor
+    if isinstance(v, int) and math.isfinite(x) and abs(x) < 2 ** 63 and x == int(x):
+        return int(x)                  # an integer stays one where TOML can hold it
+    return float(x)
+
+
+@dataclass(frozen=True)
+class Edit:
+    op: str
+    path: tuple
+    arg: object = None
+
+    def __str__(self) -> str:
+        where = dotted(self.path)
+        if self.op == "scale":
+            return f"{where} ×{self.arg!r}"
+        if self.op in ("swap", "rename"):
+            return f"{self.op} {where} -> {self.arg!r}"
+        if self.op == "duplicate-name":
+            return f"{where} = the same in element {self.arg}"
+        return f"{self.op} {where}"
+
+    def apply(self, doc) -> None:
+        parent, key = _parent(doc, self.path), self.path[-1]
+        if self.op in ("delete", "drop"):
+            del parent[key]
+        elif self.op == "scale":
+            parent[key] = _scaled(parent[key], self.arg)
+        elif self.op == "swap":
+            parent[key] = copy.deepcopy(self.arg)
+        elif self.op == "rename":
+            # keep the table's order: the renamed key stays where it was
+            items = list(parent.items())
+            parent.clear()
+            parent.update((self.arg if k == key else k, v) for k, v in items)
+        elif self.op == "duplicate":
+            parent.append(copy.deepcopy(parent[key]))
+        elif self.op == "duplicate-name":     # parent: the element; its array one level up
+            array = _parent(doc, self.path[:-1])
+            parent[key] = array[self.arg][key]
+        else:  # pragma: no cover
+            raise ValueError(self.op)
+
+
+def _candidates(doc, op: str) -> list[tuple]:
+    out = []
+    for p, v in paths(doc):
+        key, parent = p[-1], _parent(doc, p)
+        if op == "delete" and isinstance(key, str):
+            out.append(p)
+        elif op == "drop" and isinstance(key, int):
+            out.append(p)
+        elif op == "scale" and _number(v):
+            out.append(p)
+        elif op == "swap":
+            out.append(p)
+        elif op == "rename" and isinstance(key, str) and len(key) >= 2:
+            out.append(p)
+        elif op == "duplicate" and isinstance(key, int):
+            out.append(p)
+        elif (op == "duplicate-name" and len(p) >= 2 and isinstance(p[-2], int)
+              and isinstance(v, str) and isinstance(key, str)):
+            array = _parent(doc, p[:-1])
+            if any(isinstance(e, dict) and isinstance(e.get(key), str) and e[key] != v
+                   for e in array):
+                out.append(p)
+    return out
+
+
+OPS = ("delete", "scale", "swap", "rename", "drop", "duplicate", "duplicate-name")
+
+
+@st.composite
+def edits(draw, doc) -> list[Edit]:
+    """One to three edits of a copy of doc (each drawn on the document the previous made)."""
+    doc = copy.deepcopy(doc)
+    out: list[Edit] = []
+    for _ in range(draw(st.integers(1, 3))):
+        op = draw(st.sampled_from(OPS))
+        cands = _candidates(doc, op)
+        if not cands:
+            continue
+        path = draw(st.sampled_from(cands))
+        value = _parent(doc, path)[path[-1]]
+        arg = None
+        if op == "scale":
+            arg = draw(st.sampled_from(FACTORS))
+        elif op == "swap":
+            arg = draw(st.sampled_from([s for s in SWAPS if _type(s) != _type(value)]))
+        elif op == "rename":
+            parent = _parent(doc, path)
+            names = [f(path[-1]) for f in TYPOS.values()]
+            names = [n for n in dict.fromkeys(names) if n and n not in parent]
+            if not names:
+                continue
+            arg = draw(st.sampled_from(names))
+        elif op == "duplicate-name":
+            array, field = _parent(doc, path[:-1]), path[-1]
+            others = [i for i, e in enumerate(array) if isinstance(e, dict)
+                      and isinstance(e.get(field), str) and e[field] != value]
+            arg = draw(st.sampled_from(others))
+        e = Edit(op, path, arg)
+        e.apply(doc)
+        out.append(e)
+    return out
+
+
+def mutant(case: str, eds: list[Edit]) -> str:
+    """The text of the case file with the edits applied."""
+    doc = copy.deepcopy(DOCS[case])
+    for e in eds:
+        e.apply(doc)
+    return tomli_w.dumps(doc)
+
+
+# -- running a mutant --------------------------------------------------------------------------
+
+class TooLong(BaseException):
+    """Raised by the alarm inside a command (BaseException: no `except Exception` of the
+    command swallows it)."""
+
+
+def _alarm(signum, frame):
+    raise TooLong("still running after the time limit")
+
+
+@dataclass
+class Outcome:
+    code: int | None
+    stdout: str
+    stderr: str
+    exception: BaseException | None
+    document: str | None           # the JSON written: summary.json of run, else stdout
+    seconds: float
+
+
+def args_for(kind: str, case_file: Path, tmp: Path) -> list[str]:
+    if kind == "run":
+        return ["run", str(case_file), "--no-plots", "--points", "72", "--out", str(tmp / "out")]
+    if kind == "task2":
+        return ["task2", "--case", str(case_file), "--json"]
+    return ["aggregate", str(case_file), "--json"]
+
+
+def run_mutant(kind: str, text: str, time_limit: int = TIME_LIMIT) -> Outcome:
+    """Write the mutant into a fresh folder and run its command in-process, bounded in time
+    (``time_limit`` s) and memory."""
+    with tempfile.TemporaryDirectory(prefix="flywheel-mutant-") as d:
+        tmp = Path(d)
+        case_file = tmp / "case.toml"
+        case_file.write_text(text, encoding="utf-8")
+        old_handler = signal.signal(signal.SIGALRM, _alarm)
+        old_limit = resource.getrlimit(resource.RLIMIT_AS)
+        cwd = os.getcwd()
+        os.chdir(tmp)
+        t0 = time.perf_counter()
+        try:
+            soft = _address_space() + MEMORY_LIMIT
+            if old_limit[1] != resource.RLIM_INFINITY:
+                soft = min(soft, old_limit[1])
+            resource.setrlimit(resource.RLIMIT_AS, (soft, old_limit[1]))
+            signal.alarm(time_limit)
+            res = CliRunner().invoke(app, args_for(kind, case_file, tmp))
+        except TooLong as exc:             # (its traceback: where the command was)
+            return Outcome(None, "", "", TooLong(f"still running after {time_limit} s")
+                           .with_traceback(exc.__traceback__), None, time.perf_counter() - t0)
+        finally:
+            signal.alarm(0)
+            resource.setrlimit(resource.RLIMIT_AS, old_limit)
+            signal.signal(signal.SIGALRM, old_handler)
+            os.chdir(cwd)
+        seconds = time.perf_counter() - t0
+        exc = None if isinstance(res.exception, SystemExit) else res.exception
+        document = res.stdout
+        if kind == "run":
+            summary = tmp / "out" / "summary.json"
+            document = summary.read_text(encoding="utf-8") if summary.is_file() else None
+        return Outcome(res.exit_code, res.stdout, res.stderr, exc, document, seconds)
+
+
+def _address_space() -> int:
+    with open("/proc/self/status") as f:
+        kb = next(int(ln.split()[1]) for ln in f if ln.startswith("VmSize:"))
+    return kb * 1024
+
+
+def _no_constant(name: str):
+    raise ValueError(f"{name} in the JSON output")
+
+
+def problem_of(o: Outcome) -> str | None:
+    """What is wrong with an outcome, in one line (None: exit 2 with one error line, or exit 0
+    with finite JSON)."""
+    if isinstance(o.exception, TooLong):
+        return f"TooLong: {o.exception}"
+    if isinstance(o.exception, MemoryError):
+        return f"MemoryError: more than {MEMORY_LIMIT / 2 ** 30:.0f} GB"
+    if o.exception is not None:
+        return f"{type(o.exception).__name__}: {o.exception}".splitlines()[0][:300]
+    if "Traceback" in o.stdout + o.stderr:
+        return "a traceback in the output"
+    if o.code == 2:
+        lines = [ln for ln in o.stderr.splitlines() if ln.strip()]
+        errors = [ln for ln in lines if ln.startswith("error: ")]
+        other = [ln for ln in lines if not ln.startswith(("error: ", "warning: ", "note: "))]
+        if len(errors) != 1 or other:
+            return f"exit 2 without one error line: {o.stderr[:300]!r}"
+        return None
+    if o.code != 0:
+        return f"exit {o.code}: {o.stderr[:300]!r}"
+    if o.document is None:
+        return "exit 0 without its JSON"
+    try:
+        json.loads(o.document, parse_constant=_no_constant)
+    except ValueError as exc:
+        return f"exit 0 with bad JSON: {str(exc)[:200]}"
+    return None
+
+
+# -- known bugs --------------------------------------------------------------------------------
+
+@dataclass(frozen=True)
+class Known:
+    """A class of mutant that fails today: the command, an edit matching ``edit`` (a regular
+    expression searched in an edit's text, e.g. ``shafts\\[\\d+\\]\\.d ×1e\\+300``) and a
+    failure matching ``failure`` (searched in :func:`problem_of`'s line). ``minimal`` is the
+    smallest mutant of the class (case, edits), run by its xfail test; ``bug`` says it in a line.
+    A ``slow`` class (a mutant that runs without bound) is not run by the mutation tests at all
+    (20 s each); its xfail test gives it :data:`SLOW_LIMIT` s."""
+
+    id: str
+    command: str
+    edit: str
+    failure: str
+    bug: str
+    minimal: tuple
+    slow: bool = False
+
+    def covers(self, kind: str, eds: list[Edit]) -> bool:
+        return kind == self.command and any(re.search(self.edit, str(e)) for e in eds)
+
+    def matches(self, kind: str, eds: list[Edit], problem: str) -> bool:
+        return self.covers(kind, eds) and re.search(self.failure, problem) is not None
+
+
+SLOW_LIMIT = 4   # s: the minimal mutant of a slow class, in its xfail test
+
+
+def _scale(*path_and_factor) -> Edit:
+    *path, factor = path_and_factor
+    return Edit("scale", tuple(path), factor)
+
+
+KNOWN: tuple[Known, ...] = (
+    Known("run-delta-tiny", "run", r"^machine\.delta ×1e-300$", r"^RuntimeWarning: divide by zero",
+          "run: machine.delta scaled by 1e-300 is accepted (a plausibility warning only): numpy "
+          "'divide by zero' in dynamics/sizing.py, then J ≈ 1e299 kg·m², delta_achieved = 0, "
+          "exit 0",
+          ("fourbar", (_scale("machine", "delta", 1e-300),))),
+    Known("task2-harmonic-order-huge", "task2",
+          r"^(driving|resistance)\.orders\[\d+\] ×(1000000\.0|1e\+300)$", r"^(TooLong|MemoryError)",
+          "task2: a harmonic of order 2·10⁶ (or 2e300) is accepted and the φ grid follows it: runs "
+          "for minutes (no bound on orders)",
+          ("task2_khurmi_16_11", (_scale("driving", "orders", 0, 1e6),)), slow=True),
+    Known("aggregate-shaft-d-huge", "aggregate", r"^shafts\[\d+\]\.d ×1e\+300$", r"^OverflowError",
+          "aggregate: a shaft diameter d·1e300 is not range-checked: OverflowError (34, 'Numerical "
+          "result out of range') in the shaft's stiffness G·π·d⁴/32/L",
+          ("aggregate_khurmi_three_rotor", (_scale("shafts", 0, "d", 1e300),))),
+    Known("aggregate-shaft-d-tiny", "aggregate", r"^shafts\[\d+\]\.d ×1e-300$",
+          r"^ZeroDivisionError",
+          "aggregate: a shaft diameter d·1e-300 is not range-checked: d⁴ underflows to 0, "
+          "ZeroDivisionError 'float division by zero' in the shaft's compliance",
+          ("aggregate_khurmi_three_rotor", (_scale("shafts", 0, "d", 1e-300),))),
+    Known("aggregate-i31-huge", "aggregate", r"^machine\.i31 ×1e\+300$", r"^OverflowError",
+          "aggregate: machine.i31 = 0.41e300 is not range-checked: OverflowError (34, 'Numerical "
+          "result out of range') reducing the machine to shaft I",
+          ("aggregate", (_scale("machine", "i31", 1e300),))),
+    Known("aggregate-motor-J-tiny", "aggregate", r"^motor\.J ×1e-300$",
+          r"^ValueError: array must not contain infs or NaNs",
+          "aggregate: motor.J = 1e-301 is not range-checked: the start-up simulation stops on "
+          "ValueError 'array must not contain infs or NaNs' (scipy Radau)",
+          ("aggregate", (_scale("motor", "J", 1e-300),))),
+    Known("aggregate-motor-speed-tiny", "aggregate", r"^motor\.synchronous_rpm ×1e-300$",
+          r"^(ValueError: array must not contain infs or NaNs|RuntimeWarning: overflow)",
+          "aggregate: motor.synchronous_rpm = 1.5e-297 is not range-checked: ValueError 'array "
+          "must not contain infs or NaNs' in the start-up simulation (or a numpy overflow "
+          "RuntimeWarning before it)",
+          ("aggregate", (_scale("motor", "synchronous_rpm", 1e-300),))),
+    Known("aggregate-motor-speed-huge", "aggregate", r"^motor\.synchronous_rpm ×1000000\.0$",
+          r"^TooLong",
+          "aggregate: motor.synchronous_rpm = 1.5e9 is accepted and the start-up integration "
+          "runs without bound (no range, no limit on the work)",
+          ("aggregate", (_scale("motor", "synchronous_rpm", 1e6),)), slow=True),
+    Known("aggregate-motor-torque-huge", "aggregate", r"^motor\.rated_torque ×1000000\.0$",
+          r"^TooLong",
+          "aggregate: motor.rated_torque = 9.8e7 N·m is accepted and the start-up integration "
+          "runs without bound (no range, no limit on the work)",
+          ("aggregate", (_scale("motor", "rated_torque", 1e6),)), slow=True),
+)
+
+
+def _log(kind: str, case: str, eds: list[Edit], problem: str, known: Known | None) -> None:
+    if SURVEY:
+        with open(SURVEY, "a", encoding="utf-8") as f:
+            f.write(json.dumps({"command": kind, "case": case, "edits": [str(e) for e in eds],
+                                "problem": problem, "known": known.id if known else None},
+                               ensure_ascii=False) + "\n")
+
+
+# -- the tests ---------------------------------------------------------------------------------
+
+def _examples(kind: str) -> int:
+    """The examples of one command: FLYWHEEL_MUTATIONS shared by the three."""
+    return max(1, EXAMPLES // len(KINDS))
+
+
+@st.composite
+def cases_and_edits(draw, kind: str):
+    case = draw(st.sampled_from([p.stem for p in CASE_FILES[kind]]))
+    return case, draw(edits(DOCS[case]))
+
+
+def check(kind: str, case: str, eds: list[Edit]) -> None:
+    note(f"{kind} {case}.toml: " + "; ".join(map(str, eds)))
+    slow = next((k for k in KNOWN if k.slow and k.covers(kind, eds)), None)
+    if slow is not None and not SURVEY:
+        event(f"not run: known slow class {slow.id}")
+        return
+    o = run_mutant(kind, mutant(case, eds))
+    problem = problem_of(o)
+    if problem is None:
+        event(f"exit {o.code}")
+        return
+    known = next((k for k in KNOWN if k.matches(kind, eds, problem)), None)
+    _log(kind, case, eds, problem, known)
+    if SURVEY:
+        return
+    if known is not None:
+        event(f"known bug {known.id}")
+        return
+    if o.exception is not None and not isinstance(o.exception, (TooLong, MemoryError)):
+        raise o.exception            # hypothesis tells bugs apart by where they are raised
+    raise AssertionError(f"{problem}\nstdout: {o.stdout[:500]!r}\nstderr: {o.stderr[:800]!r}")
+
+
+def _mutation_test(kind: str):
+    @settings(max_examples=_examples(kind), derandomize=True, database=None, deadline=None,
+              suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large],
+              print_blob=False)
+    @given(cases_and_edits(kind))
+    def test(case_and_edits):
+        check(kind, *case_and_edits)
+
+    test.__name__ = f"test_mutants_of_{kind}_cases"
+    return test
+
+
+test_mutants_of_run_cases = _mutation_test("run")
+test_mutants_of_task2_cases = _mutation_test("task2")
+test_mutants_of_aggregate_cases = _mutation_test("aggregate")
+
+
+class KnownBugStill(Exception):
+    """The minimal mutant of a known class still fails, in the known way."""
+
+
+@pytest.mark.parametrize("known", [pytest.param(k, id=k.id, marks=pytest.mark.xfail(
+    strict=True, raises=KnownBugStill, reason=k.bug)) for k in KNOWN])
+def test_known_bug(known: Known):
+    """The minimal mutant of each known class must end with exit 0 or 2 as above: it fails
+    today in the stated way (xfail). Failing any other way is a plain failure (the class says
+    less than it tolerates); passing flips the xfail: remove the class from KNOWN."""
+    case, eds = known.minimal
+    o = run_mutant(known.command, mutant(case, list(eds)),
+                   SLOW_LIMIT if known.slow else TIME_LIMIT)
+    problem = problem_of(o)
+    if problem is None:
+        return
+    assert known.matches(known.command, list(eds), problem), f"fails otherwise: {problem}"
+    raise KnownBugStill(problem)
+
+
+def test_known_classes_are_narrow():
+    """A class names one field and one factor (a regular expression anchored at both ends),
+    so that it cannot tolerate a mutant it does not name."""
+    assert len({k.id for k in KNOWN}) == len(KNOWN)
+    for k in KNOWN:
+        assert k.edit.startswith("^") and k.edit.endswith("$") and k.failure.startswith("^"), k.id
+        case, eds = k.minimal
+        assert k.covers(k.command, list(eds)) and case in DOCS, k.id
+
+
+def test_a_mutant_is_checked():
+    """The judge itself: a clean case passes, a broken one gives exit 2 with one line, and a
+    NaN in the JSON or an uncaught exception is caught."""
+    assert problem_of(run_mutant("task2", mutant("task2_seed_triangle", []))) is None
+    o = run_mutant("task2", mutant("task2_seed_triangle", [Edit("delete", ("speed",))]))
+    assert o.code == 2 and problem_of(o) is None, o
+    assert problem_of(Outcome(0, "", "", None, '{"a": NaN}', 0.0)).startswith("exit 0 with bad")
+    assert problem_of(Outcome(1, "", "", ZeroDivisionError("x"), None, 0.0)).startswith("Zero")
+    assert problem_of(Outcome(2, "", "error: a\nerror: b\n", None, None, 0.0)) is not None
+    assert problem_of(Outcome(0, "", "", None, None, 0.0)) == "exit 0 without its JSON"
