@@ -475,13 +475,14 @@ def test_summary_moment_sign_matches_the_twist():
 
 
 def test_non_finite_results_are_refused(tmp_path):
-    # J = 1e-300, c = 1e300: c/J overflows; before: "natural_frequencies_hz": [NaN], exit 0
+    # J = 1e-300, c = 1e300: c/J overflowed; before: "natural_frequencies_hz": [NaN], exit 0;
+    # now the numbers are refused where they enter, with the range
     p = _write(tmp_path, "[[rotors]]\nJ = 1e-300\n[[rotors]]\nJ = 1.0\n[[shafts]]\nc = 1e300\n")
     for args in (("--json",), ()):
         res = cli(p, *args)
         err = err_text(res)
         assert res.exit_code == 2 and err.startswith("error: ") and err.count("\n") == 1
-        assert "natural frequencies are not finite" in err and "c/J = inf" in err
+        assert "rotors[0].J: 1e-300 kg·m² is out of range (allowed: 1e-09 … 1e+12 kg·m²)" in err
     with pytest.raises(InputError, match="not finite"):
         chain([1.0, float("inf")], [1.0])
 

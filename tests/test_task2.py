@@ -339,7 +339,7 @@ def _with(**changes):
 
 @pytest.mark.parametrize("changes,match", [
     (dict(flywheel__J=0.0), r"x.toml: flywheel.J: must be positive"),
-    (dict(speed__omega0=-5.0), r"speed.omega0: must be positive"),
+    (dict(speed__omega0=-5.0), r"speed.omega0: -5 rad/s is out of range \(allowed: 0.001 … 100000 rad/s\)"),
     (dict(speed__mean=3.0), r"speed: give exactly one of"),
     (dict(resistance__from_deg=300), r"resistance.from_deg: need 0 ≤ from_deg < to_deg"),
     (dict(resistance__peak="balanse"), r'resistance.peak: must be a number, "balance" or "power"'),

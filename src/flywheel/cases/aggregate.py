@@ -23,10 +23,20 @@ from typing import Annotated, Literal
 from pydantic import Field
 
 from flywheel.errors import CaseFileError, FlywheelError
-from flywheel.io.schema import FieldError, StrictModel, load, validate, clean_loc, describe, pick
+from flywheel.io.schema import FieldError, StrictModel, load, validate, within, clean_loc, describe, pick
 
 Pos = Annotated[float, Field(gt=0)]
 NonNeg = Annotated[float, Field(ge=0)]
+# physically meaningful ranges (checked where the numbers enter: nothing overflows later)
+Inertia = Annotated[float, Field(gt=0), within(1e-9, 1e12, "kg·m²")]
+Length = Annotated[float, Field(gt=0), within(1e-4, 100.0, "m")]
+Diameter = Annotated[float, Field(gt=0), within(1e-4, 10.0, "m")]
+Modulus = Annotated[float, Field(gt=0), within(1e6, 1e12, "Pa")]
+Stiffness = Annotated[float, Field(gt=0), within(1e-3, 1e12, "N·m/rad")]
+Torque = Annotated[float, Field(gt=0), within(1e-6, 1e9, "N·m")]
+Moment = Annotated[float, Field(ge=0), within(0.0, 1e9, "N·m")]
+Rpm = Annotated[float, Field(gt=0), within(10.0, 1e5, "rpm")]
+Ratio = Annotated[float, Field(gt=0), within(1e-3, 1e3, "")]
 RPM = math.pi / 30.0  # rev/min → rad/s
 
 
@@ -35,26 +45,26 @@ RPM = math.pi / 30.0  # rev/min → rad/s
 class Motor(StrictModel):
     """The driving motor on shaft I."""
 
-    J: Pos | None = Field(None, description="J_Д, the rotor's moment of inertia [kg·m²] (two-mass "
+    J: Inertia | None = Field(None, description="J_Д, the rotor's moment of inertia [kg·m²] (two-mass "
                                             "form only; in a chain the first rotor is the motor)")
     characteristic: Literal["linear", "constant"] = Field(
         "linear", description="linear: M_Д = M_п·(1 − ω/ω_x); constant: M_Д = M_0·i31")
-    synchronous_rpm: Pos | None = Field(None, description="ω_x, synchronous (no-load) speed "
+    synchronous_rpm: Rpm | None = Field(None, description="ω_x, synchronous (no-load) speed "
                                                           "[rev/min] (linear)")
-    starting_torque: Pos | None = Field(None, description="M_п [N·m] (linear)")
-    rated_torque: Pos | None = Field(None, description="M_н [N·m] (linear, with rated_slip, "
+    starting_torque: Torque | None = Field(None, description="M_п [N·m] (linear)")
+    rated_torque: Torque | None = Field(None, description="M_н [N·m] (linear, with rated_slip, "
                                                        "instead of starting_torque)")
     rated_slip: float | None = Field(None, gt=0, lt=1, description="s_н, 0 < s < 1: M_п = M_н/s_н")
-    speed_rpm: Pos | None = Field(None, description="steady speed of shaft I [rev/min] (constant)")
+    speed_rpm: Annotated[float, Field(gt=0), within(1e-6, 1e5, "rpm")] | None = Field(None, description="steady speed of shaft I [rev/min] (constant)")
 
 
 class Segment(StrictModel):
     """One elastic piece of a shaft: c, or d and L (with G here or on the shaft)."""
 
-    c: Pos | None = Field(None, description="torsional stiffness [N·m/rad]")
-    d: Pos | None = Field(None, description="diameter [m]")
-    L: Pos | None = Field(None, description="length [m]")
-    G: Pos | None = Field(None, description="shear modulus [Pa] (default: the shaft's)")
+    c: Stiffness | None = Field(None, description="torsional stiffness [N·m/rad]")
+    d: Diameter | None = Field(None, description="diameter [m]")
+    L: Length | None = Field(None, description="length [m]")
+    G: Modulus | None = Field(None, description="shear modulus [Pa] (default: the shaft's)")
     side: Literal["in", "out"] = Field("in", description="before (in) or after (out) the gear pair")
 
 
@@ -65,51 +75,51 @@ class Shaft(StrictModel):
     between: list[str] | None = Field(None, description="the names of the two rotors it joins, "
                                                         "input side first (default: rotors k and "
                                                         "k + 1)")
-    c: Pos | None = Field(None, description="torsional stiffness [N·m/rad]")
-    G: Pos | None = Field(None, description="shear modulus [Pa]")
-    d: Pos | None = Field(None, description="diameter [m]")
-    L: Pos | None = Field(None, description="length [m]")
+    c: Stiffness | None = Field(None, description="torsional stiffness [N·m/rad]")
+    G: Modulus | None = Field(None, description="shear modulus [Pa]")
+    d: Diameter | None = Field(None, description="diameter [m]")
+    L: Length | None = Field(None, description="length [m]")
     segments: list[Segment] | None = Field(None, description="pieces in series (stepped shaft, "
                                                              "or both sides of a gear pair)")
-    i: Pos = Field(1.0, description="gear ratio ω_out/ω_in of a gear pair in this connection")
+    i: Ratio = Field(1.0, description="gear ratio ω_out/ω_in of a gear pair in this connection")
     damping: NonNeg = Field(0.0, description="viscous damping of the twist [N·m·s/rad], at the "
                                              "input speed")
 
 
 class Flywheel(StrictModel):
-    J: Pos = Field(description="J_M, the flywheel's moment of inertia [kg·m²]")
+    J: Inertia = Field(description="J_M, the flywheel's moment of inertia [kg·m²]")
     shaft: Literal["I", "II", "III"] = Field(description="the shaft it sits on")
 
 
 class Machine(StrictModel):
     """The machine behind the coupling (seed 003)."""
 
-    J_III: Pos | None = Field(None, description="J_пр.III, the mechanism reduced to shaft III "
+    J_III: Inertia | None = Field(None, description="J_пр.III, the mechanism reduced to shaft III "
                                                 "[kg·m²]")
     J_III_0: NonNeg | None = Field(None, description="J_пр.0, its constant part [kg·m²] (with "
                                                      "J_III_positions)")
     J_III_positions: list[NonNeg] | None = Field(
         None, description="J̃_i, the variable part at the positions of a cycle [kg·m²]: "
                           "J_пр.III = J_пр.0 + ΣJ̃_i/n")
-    i21: Pos | None = Field(None, description="ω_II/ω_I (needed with a flywheel on shaft II)")
-    i31: Pos = Field(description="ω_III/ω_I")
+    i21: Ratio | None = Field(None, description="ω_II/ω_I (needed with a flywheel on shaft II)")
+    i31: Ratio = Field(description="ω_III/ω_I")
     flywheel: Flywheel | None = None
-    M0: NonNeg = Field(0.0, description="M_0, mean resistance moment on shaft III [N·m]")
-    M_amplitude: NonNeg = Field(0.0, description="M̃, amplitude of its harmonic part [N·m]")
+    M0: Moment = Field(0.0, description="M_0, mean resistance moment on shaft III [N·m]")
+    M_amplitude: Moment = Field(0.0, description="M̃, amplitude of its harmonic part [N·m]")
     order: Pos = Field(1.0, description="forcing frequency / ω_III (1: sin ω_III·t as in 9.20)")
 
 
 class Rotor(StrictModel):
     name: str | None = None
-    J: Pos | None = Field(None, description="moment of inertia [kg·m²] (not for a fixed end)")
+    J: Inertia | None = Field(None, description="moment of inertia [kg·m²] (not for a fixed end)")
     fixed: bool = Field(False, description="true: the frame, a shaft end built in (no J)")
 
 
 class Load(StrictModel):
     """Resistance on the last rotor of a chain, on its own shaft."""
 
-    M0: NonNeg = Field(0.0, description="mean resistance moment [N·m]")
-    M_amplitude: NonNeg = Field(0.0, description="amplitude of its harmonic part [N·m]")
+    M0: Moment = Field(0.0, description="mean resistance moment [N·m]")
+    M_amplitude: Moment = Field(0.0, description="amplitude of its harmonic part [N·m]")
     order: Pos = Field(1.0, description="forcing frequency / the last rotor's speed")
 
 
@@ -426,7 +436,13 @@ def _tree(case: AggregateCase, names: list[str], frames: list[int], given: list[
 # -- loading --------------------------------------------------------------------------------------
 
 def parse_aggregate_case(data: dict, source: str = "<case>") -> AggregateCase:
-    """Validate a parsed TOML document or raise one CaseFileError line."""
+    """Validate a parsed TOML document or raise one CaseFileError line (a case of another
+    kind is named as such, with its command)."""
+    from flywheel.cases import wrong_kind
+
+    other = wrong_kind(data, "aggregate", source)
+    if other is not None:
+        raise CaseFileError(other)
 
     def check(case: AggregateCase) -> None:
         try:

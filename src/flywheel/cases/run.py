@@ -12,10 +12,10 @@ import math
 import typing
 from typing import Annotated, Literal, Union
 
-from pydantic import AfterValidator, BaseModel, Field, Strict, model_validator
+from pydantic import BaseModel, Field, Strict, model_validator
 
 from flywheel.errors import CaseFileError
-from flywheel.io.schema import FieldError, StrictModel, clean_loc, describe, load, loc_str, pick, validate
+from flywheel.io.schema import FieldError, StrictModel, within, clean_loc, describe, load, loc_str, pick, validate
 from flywheel.cases.tabulated import TabulatedSpec
 
 Pos = Annotated[float, Field(gt=0)]
@@ -23,18 +23,7 @@ NonNeg = Annotated[float, Field(ge=0)]
 Name = Annotated[str, Field(min_length=1)]
 
 
-def _within(lo: float, hi: float, unit: str):
-    """A validator refusing values outside [lo, hi] with the range and unit in the message:
-    numbers are checked where they enter, in a physically meaningful range, so nothing
-    overflows later in the arithmetic (issue 17)."""
-    def check(v):
-        vals = v if isinstance(v, tuple) else (v,)
-        for x in vals:
-            if not lo <= x <= hi:
-                u = f" {unit}" if unit else ""
-                raise ValueError(f"{x:g}{u} is out of range (allowed: {lo:g} … {hi:g}{u})")
-        return v
-    return AfterValidator(check)
+_within = within
 
 
 # the physically meaningful ranges (SI): far wider than any machine, narrow enough that no
@@ -59,7 +48,8 @@ class Machine(StrictModel):
         None, description="crank speed n1 [rev/s]")
     speed_rpm: Annotated[float, Field(gt=0), _within(0.06, 6e5, "rpm")] | None = Field(
         None, description="crank speed [rev/min] (instead of speed_rps)")
-    delta: float = Field(gt=0, lt=1, description="coefficient of speed fluctuation δ, 0 < δ < 1")
+    delta: Annotated[float, Field(gt=0, lt=1), _within(1e-6, 1.0, "")] = Field(
+        description="coefficient of speed fluctuation δ, 1e-6 ≤ δ < 1")
     balance: Literal["driving", "resistance"] = Field(
         "driving", description="the unknown constant moment found from the cycle balance")
     gravity: Annotated[tuple[float, float], Strict(False), _within(-1e3, 1e3, "m/s²")] = Field(

@@ -22,7 +22,7 @@ from flywheel.constant_inertia import graphs
 from flywheel.constant_inertia.solve import (BALANCE_RTOL, Task2Result, balance, power_value, solve,
                                             solve_areas)
 from flywheel.errors import CaseFileError, InputError
-from flywheel.io.schema import FieldError, StrictModel, load, validate, clean_loc, describe, loc_str, pick
+from flywheel.io.schema import FieldError, StrictModel, load, validate, within, clean_loc, describe, loc_str, pick
 
 BALANCE = "balance"
 POWER = "power"
@@ -128,8 +128,8 @@ class HarmonicGraph(_Graph):
     a0: Amount = Field(0.0, description='the mean term [N·m], or "balance" or "power"')
     a: list[float] = Field(default_factory=list, description="sine amplitudes a_k [N·m]")
     b: list[float] = Field(default_factory=list, description="cosine amplitudes b_k [N·m]")
-    orders: list[float] | None = Field(
-        None, description="the orders k of the terms; default 1, 2, …")
+    orders: Annotated[list[float], within(1e-3, 1000.0, "")] | None = Field(
+        None, description="the orders k of the terms; default 1, 2, … (at most 1000)")
 
 
 KINDS = {"constant": ConstantGraph, "points": PointsGraph, "triangle": TriangleGraph,
@@ -140,15 +140,15 @@ Graph = Annotated[Union[tuple(KINDS.values())], Field(discriminator="kind")]
 class Speed(StrictModel):
     """Exactly one of the four, or the limits max with min (max_rpm with min_rpm)."""
 
-    omega0: float | None = Field(None, description="ω at φ = 0 [rad/s]")
-    omega0_rpm: float | None = Field(None, description="speed at φ = 0 [rev/min]")
-    mean: float | None = Field(None, description="mean speed ω_ср [rad/s]")
-    mean_rpm: float | None = Field(None, description="mean speed [rev/min]")
-    max: float | None = Field(None, description="the largest speed allowed [rad/s] (with min): "
+    omega0: Annotated[float, within(1e-3, 1e5, "rad/s")] | None = Field(None, description="ω at φ = 0 [rad/s]")
+    omega0_rpm: Annotated[float, within(1e-2, 1e6, "rpm")] | None = Field(None, description="speed at φ = 0 [rev/min]")
+    mean: Annotated[float, within(1e-3, 1e5, "rad/s")] | None = Field(None, description="mean speed ω_ср [rad/s]")
+    mean_rpm: Annotated[float, within(1e-2, 1e6, "rpm")] | None = Field(None, description="mean speed [rev/min]")
+    max: Annotated[float, within(1e-3, 1e5, "rad/s")] | None = Field(None, description="the largest speed allowed [rad/s] (with min): "
                                                 "ω_ср = (max + min)/2, δ = (max − min)/ω_ср")
-    min: float | None = Field(None, description="the smallest speed allowed [rad/s] (with max)")
-    max_rpm: float | None = Field(None, description="the largest speed allowed [rev/min]")
-    min_rpm: float | None = Field(None, description="the smallest speed allowed [rev/min]")
+    min: Annotated[float, within(1e-3, 1e5, "rad/s")] | None = Field(None, description="the smallest speed allowed [rad/s] (with max)")
+    max_rpm: Annotated[float, within(1e-2, 1e6, "rpm")] | None = Field(None, description="the largest speed allowed [rev/min]")
+    min_rpm: Annotated[float, within(1e-2, 1e6, "rpm")] | None = Field(None, description="the smallest speed allowed [rev/min]")
 
 
 class Flywheel(StrictModel):
@@ -188,7 +188,8 @@ class Task2Case(StrictModel):
     title: str = Field("", description="what the case is")
     source: str = Field("", description="where it comes from (book, problem)")
     notes: str = Field("", description="anything else")
-    cycle_deg: float = Field(360.0, description="length of the cycle [deg]: 360, 720, 1080 …")
+    cycle_deg: Annotated[float, within(1e-3, 36000.0, "deg")] = Field(
+        360.0, description="length of the cycle [deg]: 360, 720, 1080 … (at most 100 revolutions)")
     power: float | None = Field(None, description="mean power [W]: a graph value \"power\" is "
                                                   "found from T_mean = P/ω_ср; with [diagram] "
                                                   "energy_fluctuation_coefficient, W = P·Φ/ω_ср")
@@ -359,6 +360,10 @@ def _check_graph(name: str, g, cycle: float) -> None:
                 raise FieldError(f"{name}.points[{i}]",
                            f"angle {g.points[i][0]:g}° comes after {g.points[i - 1][0]:g}°: "
                            "angles must not decrease")
+            if i >= 2 and g.points[i][0] == g.points[i - 1][0] == g.points[i - 2][0]:
+                raise FieldError(f"{name}.points[{i}]",
+                           f"a third value at {g.points[i][0]:g}°: a jump has two (the value "
+                           "before and the value after it)")
         if g.points[0][0] != 0 or g.points[-1][0] != cycle:
             raise FieldError(f"{name}.points",
                        f"must span the cycle 0…{cycle:g}° (spans "
@@ -429,7 +434,13 @@ def _check_diagram(d: Diagram, cycle: float) -> None:
 # -- loading and solving --------------------------------------------------------------------------
 
 def parse_task2_case(data: dict, source: str = "<case>") -> Task2Case:
-    """Validate a parsed TOML document or raise one CaseFileError line."""
+    """Validate a parsed TOML document or raise one CaseFileError line (a case of another
+    kind is named as such, with its command)."""
+    from flywheel.cases import wrong_kind
+
+    other = wrong_kind(data, "task2", source)
+    if other is not None:
+        raise CaseFileError(other)
     return validate(data, Task2Case, source, lambda errs: _describe(pick(errs), data), _check)
 
 

@@ -39,6 +39,22 @@ class FieldError(ValueError):
         return loc_str(self.loc) if self.loc else ""
 
 
+def within(lo: float, hi: float, unit: str = ""):
+    """A pydantic validator refusing values outside [lo, hi] with the range and unit in the
+    message: numbers are checked where they enter, in a physically meaningful range, so nothing
+    overflows later in the arithmetic (issue 17)."""
+    from pydantic import AfterValidator
+
+    def check(v):
+        vals = v if isinstance(v, (tuple, list)) else (v,)
+        for x in vals:
+            if isinstance(x, (int, float)) and not lo <= x <= hi:
+                u = f" {unit}" if unit else ""
+                raise ValueError(f"{x:g}{u} is out of range (allowed: {lo:g} … {hi:g}{u})")
+        return v
+    return AfterValidator(check)
+
+
 M = TypeVar("M", bound=BaseModel)
 
 
