@@ -11,6 +11,9 @@ from typing import Optional
 import typer
 
 
+MAX_T_END = 600.0     # s: ten minutes of simulated start-up (about 15 s of computing)
+
+
 def aggregate_command(
     case: Path = typer.Argument(..., help="Aggregate case file (TOML), see docs/aggregate.md."),
     json: bool = typer.Option(False, "--json", help="Print the results as JSON."),
@@ -41,8 +44,10 @@ def aggregate_command(
 
         if lang not in LANGS:
             raise InputError(f"--lang: {lang!r} is not a language (allowed: {', '.join(LANGS)})")
-        if t_end is not None and not (math.isfinite(t_end) and t_end > 0):
-            raise InputError(f"--t-end must be a positive number of seconds (got {t_end:g})")
+        if t_end is not None and not (math.isfinite(t_end) and 0 < t_end <= MAX_T_END):
+            raise InputError(f"--t-end: {t_end:g} s is out of range (allowed: 0 … {MAX_T_END:g} s; "
+                             "a start-up is over in seconds to a minute, and the integration "
+                             "time grows with it)")
         from flywheel.cases.aggregate import load_aggregate_case, to_model
         from flywheel.elastic.model import analyze
 

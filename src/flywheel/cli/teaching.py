@@ -105,6 +105,13 @@ def grade_command(
         task = bar.add_task("sheets", total=None)
         report = _guard(grade, k, answers, tolerance,
                         lambda done, total: bar.update(task, completed=done, total=total))
+    if not report.students:                 # an error: one line, nothing else written
+        if report.problems:
+            fail(f"nothing could be graded ({len(report.problems)} problem(s); the first: "
+                 f"{report.problems[0]})")
+        files = ", ".join(report.files) or ", ".join(map(str, answers))
+        fail(f"{files}: nothing could be graded: no filled-in student rows (a row needs a "
+             "student name and a variant)")
     if out is not None:
         text = report_csv(report)
         if csv_style == "excel-ru":
@@ -136,12 +143,6 @@ def grade_command(
         for path in (out, gradebook):
             if path is not None and report.students:
                 typer.echo(f"written: {path}")
-    if not report.students:
-        if report.problems:
-            fail(f"nothing could be graded ({len(report.problems)} problem(s); the first: "
-                 f"{report.problems[0]})")
-        fail("nothing could be graded: no filled-in student rows (a row needs a student name "
-             "and a variant)")
 
 
 def _number_or_text(cell: str):
