@@ -48,6 +48,7 @@ Force = Annotated[float, _within(-1e9, 1e9, "N")]
 Moment = Annotated[float, _within(-1e9, 1e9, "N·m")]
 # strict numbers (no true, no "0.1"), but a TOML array is a fine tuple
 XY = Annotated[tuple[float, float], Strict(False), _within(-1e3, 1e3, "m")]
+CYCLE_REVS_MAX = 10      # a cycle of at most 10 revolutions (3600°)
 
 
 
@@ -67,12 +68,24 @@ class Machine(StrictModel):
     first_group: dict[str, Annotated[float, Field(ge=0), _within(0.0, 1e9, "kg·m²")]] = Field(
         default_factory=dict,
         description="moments of inertia already on the crank shaft, reduced to it [kg·m²]")
+    cycle_deg: float = Field(
+        360.0, description="length of the cycle Φ [deg]: a whole number of crank revolutions, "
+                           "360 … 3600 (720 for a four-stroke engine)")
 
     @model_validator(mode="after")
     def _check(self):
         if (self.speed_rps is None) == (self.speed_rpm is None):
             raise ValueError("give exactly one of speed_rps, speed_rpm")
+        revs = self.cycle_deg / 360.0
+        if not (1 <= revs <= CYCLE_REVS_MAX and revs == round(revs)):
+            raise FieldError(("cycle_deg",), f"{self.cycle_deg:g}° is not a whole number of "
+                             f"revolutions (allowed: 360, 720, 1080 … {360 * CYCLE_REVS_MAX}°)")
         return self
+
+    @property
+    def cycle(self) -> float:
+        """The cycle Φ [rad]: 2π·(number of revolutions); 4π for a four-stroke engine."""
+        return 2 * math.pi * round(self.cycle_deg / 360.0)
 
     @property
     def omega_mean(self) -> float:
@@ -359,6 +372,9 @@ def _check_references(case: Case) -> None:
         raise FieldError(("motor", "no_load_speed_rpm"),
                         f"{case.motor.no_load_speed_rpm:g} rpm is not above the mean speed "
                         f"{case.machine.omega_mean * 30 / math.pi:g} rpm")
+    if case.tabulated is not None and case.machine.cycle_deg != 360:
+        raise FieldError(("machine", "cycle_deg"), f"{case.machine.cycle_deg:g}° with [tabulated]: "
+                         "a table of positions covers one revolution (allowed: 360)")
     if case.tabulated is not None:   # no linkage: masses and loads live in [tabulated]
         for key in ("ground", "dyads", "points", "links", "cylinders", "forces", "couples"):
             if getattr(case, key):

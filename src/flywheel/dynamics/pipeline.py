@@ -40,7 +40,7 @@ def analyze(case, n_points: int = DEFAULT_POINTS, at_deg: list[float] | None = N
         return analyze_tabulated(case, n_points, at_deg, transients)
     at_deg = grid_options(case, n_points, at_deg)
     mech = case.mechanism()
-    positions, dcs = standard_positions(mech)
+    positions, dcs = standard_positions(mech, case.machine.cycle)
     phi, kin = linkage_grid(case, mech, dcs, n_points,
                             [p for _, p in positions] + [math.radians(a) for a in at_deg])
     ld = linkage_loads(case, mech, dcs, kin)

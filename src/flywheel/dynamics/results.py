@@ -65,7 +65,7 @@ class ReductionResult:
     dJ_parts: dict[str, np.ndarray]   # link → its share of dJ_II/dφ [kg·m²/rad]
     J_II: np.ndarray                  # reduced inertia of the second group [kg·m²]
     dJ_II: np.ndarray                 # dJ_II/dφ [kg·m²/rad]
-    J_II_mean: float                  # cycle mean (1/2π)∮J_II dφ [kg·m²]
+    J_II_mean: float                  # cycle mean (1/Φ)∮J_II dφ [kg·m²]
     J_II_min: float                   # [kg·m²]
     J_II_max: float                   # [kg·m²]
     warnings: tuple[str, ...] = ()
@@ -234,6 +234,16 @@ class Results:
     time_domain: TimeDomainResult | None = None
     warnings: tuple[str, ...] = ()
 
+    @property
+    def cycle(self) -> float:
+        """The cycle Φ [rad]: the closed grid's span, 2π (4π for a four-stroke engine)."""
+        return float(self.phi[-1] - self.phi[0])
+
+    @property
+    def cycle_deg(self) -> int:
+        """The cycle Φ [deg]: 360, 720 …"""
+        return int(round(math.degrees(self.cycle)))
+
     def index_of(self, phi: float) -> int:
         """Grid index of the node at angle ``phi`` [rad] (report angles are grid nodes)."""
         return int(np.argmin(np.abs(self.phi - phi)))
@@ -265,6 +275,7 @@ class Results:
         out.update({
             "omega_mean": s.omega_mean,
             "n_points": int(self.phi.size),
+            "cycle_deg": self.cycle_deg,
             "cycle_work_resistance": e.cycle_work_resistance,
             "driving_moment": e.driving_moment,
             "balancing_moment": e.balancing_moment,

@@ -267,9 +267,10 @@ def _phi_deg(results) -> np.ndarray:
     return np.degrees(results.phi)
 
 
-def _phi_axis(ax, lang: str, label: bool = True) -> None:
-    ax.set_xlim(0.0, 360.0)
-    ax.set_xticks(np.arange(0, 361, 30))
+def _phi_axis(ax, lang: str, label: bool = True, cycle_deg: int = 360) -> None:
+    """φ over the cycle (360°, 720° …), a tick every 30° per revolution."""
+    ax.set_xlim(0.0, float(cycle_deg))
+    ax.set_xticks(np.arange(0, cycle_deg + 1, 30 * cycle_deg // 360))
     if label:
         ax.set_xlabel(_t(lang, "phi"))
 
@@ -376,7 +377,7 @@ def figure_positions(results, lang: str = "en"):
             axes[2].set_ylabel(_t(lang, "travel"))
             _legend(axes[2])
         for ax in axes:
-            _phi_axis(ax, lang, label=ax is axes[-1])
+            _phi_axis(ax, lang, label=ax is axes[-1], cycle_deg=results.cycle_deg)
         axes[0].set_title(_title(results, _t(lang, "positions")))
         return fig
     return _drawn(build)
@@ -401,8 +402,8 @@ def _analogue_figure(results, lang, which: str):
         ax2.set_ylabel(_t(lang, "wq" if which == "velocity" else "eq"))
         for ax in (ax1, ax2):
             _legend(ax)
-        _phi_axis(ax1, lang, label=False)
-        _phi_axis(ax2, lang)
+        _phi_axis(ax1, lang, label=False, cycle_deg=results.cycle_deg)
+        _phi_axis(ax2, lang, cycle_deg=results.cycle_deg)
         ax1.set_title(_title(results, _t(lang, which)))
         return fig
     return _drawn(build)
@@ -436,8 +437,8 @@ def figure_J_II(results, lang: str = "en"):
         ax2.set_ylabel(_t(lang, "dJ_axis"))
         for ax in (ax1, ax2):
             _legend(ax)
-        _phi_axis(ax1, lang, label=False)
-        _phi_axis(ax2, lang)
+        _phi_axis(ax1, lang, label=False, cycle_deg=results.cycle_deg)
+        _phi_axis(ax2, lang, cycle_deg=results.cycle_deg)
         ax1.set_title(_title(results, _t(lang, "J_II")))
         return fig
     return _drawn(build)
@@ -484,7 +485,7 @@ def figure_piston_forces(results, lang: str = "en"):
             line, = ax.plot(deg, c.F, color=f"C{k}",
                             label=_t(lang, "F_gas", p=c.piston, c=c.name))
             for a in results.at:
-                i = results.index_of(math.radians(a["phi_deg"]) % (2 * math.pi))
+                i = results.index_of(math.radians(a["phi_deg"]) % results.cycle)
                 ax.plot(deg[i], c.F[i], "o", color=line.get_color(),
                         label=_t(lang, "F_at", c=c.name, a=a["phi_deg"], v=float(c.F[i])))
         for key, col in results.columns.items():
@@ -493,7 +494,7 @@ def figure_piston_forces(results, lang: str = "en"):
                         label=(col.label_ru or col.label) if lang == "ru" else col.label)
         ax.axhline(0.0, color="0.3", linewidth=0.6)
         ax.set_ylabel(_t(lang, "F_axis"))
-        _phi_axis(ax, lang)
+        _phi_axis(ax, lang, cycle_deg=results.cycle_deg)
         _legend(ax)
         ax.set_title(_title(results, _t(lang, "forces")))
         return fig
@@ -532,7 +533,7 @@ def figure_reduced_moments(results, lang: str = "en"):
             axes[1].set_ylabel(_t(lang, "M_small_axis"))
         for a in axes:
             _legend(a)
-            _phi_axis(a, lang, label=a is axes[-1])
+            _phi_axis(a, lang, label=a is axes[-1], cycle_deg=results.cycle_deg)
         ax.set_title(_title(results, _t(lang, "moments")))
         return fig
     return _drawn(build)
@@ -557,7 +558,7 @@ def figure_works(results, lang: str = "en"):
                 ax.axvline(a, color="C3", linestyle=":", linewidth=0.8)
         ax.axhline(0.0, color="0.3", linewidth=0.6)
         ax.set_ylabel(_t(lang, "W_axis"))
-        _phi_axis(ax, lang)
+        _phi_axis(ax, lang, cycle_deg=results.cycle_deg)
         _legend(ax)
         ax.set_title(_title(results, _t(lang, "works")))
         return fig
@@ -584,7 +585,7 @@ def figure_omega(results, lang: str = "en"):
                        label=_t(lang, "w_min", v=sc["omega_min"], a=sc.get("phi_omega_min_deg", 0)))
         ax.axhline(sc["omega_mean"], color="0.4", linestyle="-.", label=_t(lang, "w_mean", v=sc["omega_mean"]))
         ax.set_ylabel(_t(lang, "w_axis"))
-        _phi_axis(ax, lang)
+        _phi_axis(ax, lang, cycle_deg=results.cycle_deg)
         _legend(ax)
         ax.set_title(_title(results, _t(lang, "omega")))
         return fig
@@ -598,7 +599,7 @@ def figure_epsilon(results, lang: str = "en"):
         ax.plot(_phi_deg(results), results.columns["epsilon"].values, color="k", label=_t(lang, "e"))
         ax.axhline(0.0, color="0.3", linewidth=0.6)
         ax.set_ylabel(_t(lang, "e_axis"))
-        _phi_axis(ax, lang)
+        _phi_axis(ax, lang, cycle_deg=results.cycle_deg)
         _legend(ax)
         ax.set_title(_title(results, _t(lang, "epsilon")))
         return fig
@@ -768,7 +769,7 @@ def figure_scheme(results, lang: str = "en"):
             if k >= n:
                 ax.set_visible(False)
                 continue
-            i = results.index_of(math.radians(angles[k]) % (2 * math.pi))
+            i = results.index_of(math.radians(angles[k]) % results.cycle)
             _draw_scheme(ax, results, i, scale, lang)
             ax.set_title(_title(results, _t(lang, "scheme", a=angles[k])) if n == 1
                          else _t(lang, "scheme", a=angles[k]))

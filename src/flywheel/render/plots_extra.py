@@ -162,8 +162,9 @@ def figure_energy_mass(results, lang: str = "en"):
                               f"J_I = {t['span']}/(δ·ω_m²) = {s['J_required']:.5g} {t['uI']}")
     bx.set_xlabel(t["phi"])
     bx.set_ylabel(t["dT"])
-    bx.set_xlim(0, 360)
-    bx.set_xticks(np.arange(0, 361, 30))
+    cycle = results.cycle_deg
+    bx.set_xlim(0, cycle)
+    bx.set_xticks(np.arange(0, cycle + 1, 30 * cycle // 360))
     bx.grid(True, alpha=0.3)
     bx.legend(fontsize=8, loc="best")
     bx.set_title(f"(c) {t['merz']}", fontsize=10)

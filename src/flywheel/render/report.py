@@ -166,7 +166,7 @@ def report_markdown(results, lang: str = "en", plots: list[str] | None = None) -
             for lab, i in idx]
     energy_lines = [
         f"- A_C = ∮ M_C dφ = {_g(s['cycle_work_resistance'], 6)} J; "
-        f"M_D = −A_C/2π = {_g(s['driving_moment'], 6)} N·m (the cycle balance)",
+        f"M_D = −A_C/{s['cycle_deg'] // 180}π = {_g(s['driving_moment'], 6)} N·m (the cycle balance)",
         "- ΔT_I(φ) = A(φ) − (T_II(φ) − T_II(0)), T_II = J_II·ω_m²/2",
         f"- ΔT_I max = {_g(s['delta_T_I_max'], 6)} J at {s['phi_delta_T_I_max_deg']:.2f}°, "
         f"min = {_g(s['delta_T_I_min'], 6)} J at {s['phi_delta_T_I_min_deg']:.2f}° (global extremes); "
