@@ -71,6 +71,9 @@ class Machine(StrictModel):
     cycle_deg: float = Field(
         360.0, description="length of the cycle Φ [deg]: a whole number of crank revolutions, "
                            "360 … 3600 (720 for a four-stroke engine)")
+    firing_order: list[Name] | None = Field(
+        None, description="four-stroke cylinders by name in the order they fire; each fires at "
+                          "its first head dead centre after the one before")
 
     @model_validator(mode="after")
     def _check(self):
@@ -208,8 +211,21 @@ class LinkSpec(StrictModel):
         return self
 
 
+class StrokesSpec(StrictModel):
+    """A four-stroke cylinder's indicator diagram: p/p_max at each relative travel ``s`` of the
+    cylinder, one table per stroke (the piston moves away from the head on intake and
+    expansion, towards it on compression and exhaust)."""
+
+    intake: list[float] = Field(description="p/p_max on the intake stroke (head → far)")
+    compression: list[float] = Field(description="p/p_max on the compression stroke (far → head)")
+    expansion: list[float] = Field(description="p/p_max on the expansion (working) stroke (head → far)")
+    exhaust: list[float] = Field(description="p/p_max on the exhaust stroke (far → head)")
+
+
 class CylinderSpec(StrictModel):
-    """A cylinder with its indicator diagram (relative pressure against relative travel)."""
+    """A cylinder with its indicator diagram (relative pressure against relative travel): two
+    tables, one per direction of the piston (a compressor, a two-stroke engine), or four, one
+    per stroke of a four-stroke engine (``strokes``)."""
 
     name: Name
     piston: Name = Field(description="slider link of an RRP dyad")
@@ -220,8 +236,19 @@ class CylinderSpec(StrictModel):
                              "nearer to (inner) the crank axis")
     interpolation: Literal["linear", "pchip", "natural-spline"] = "linear"
     s: list[float] = Field(description="relative travel from the head dead centre, 0 … 1")
-    towards_head: list[float] = Field(description="p/p_max while the piston moves towards the head")
-    away_from_head: list[float] = Field(description="p/p_max while it moves away from the head")
+    towards_head: list[float] | None = Field(
+        None, description="p/p_max while the piston moves towards the head (with away_from_head)")
+    away_from_head: list[float] | None = Field(
+        None, description="p/p_max while it moves away from the head (with towards_head)")
+    strokes: StrokesSpec | None = Field(
+        None, description="a four-stroke diagram instead: p/p_max on intake, compression, "
+                          "expansion, exhaust (a cycle of 720°)")
+    fires_at_deg: Angle | None = Field(
+        None, description="four-stroke: about where the cylinder fires [deg]; it fires at its "
+                          "head dead centre nearest to this angle (within 90°)")
+    join_tolerance: Annotated[float, Field(ge=0), _within(0.0, 1.0, "")] = Field(
+        0.02, description="four-stroke: the largest jump of p/p_max allowed where two strokes "
+                          "meet at a dead centre")
 
     @model_validator(mode="after")
     def _tables(self):
@@ -232,10 +259,48 @@ class CylinderSpec(StrictModel):
             raise FieldError(("s",), "must be strictly increasing")
         if abs(s[0]) > 1e-12 or abs(s[-1] - 1) > 1e-12:
             raise FieldError(("s",), f"must span [0, 1] (got {s[0]} … {s[-1]})")
-        for key in ("towards_head", "away_from_head"):
-            if len(getattr(self, key)) != len(s):
-                raise FieldError((key,), f"needs {len(s)} values, one per s (got {len(getattr(self, key))})")
+        two = [k for k in ("towards_head", "away_from_head") if getattr(self, k) is not None]
+        if self.strokes is None:
+            for key in ("towards_head", "away_from_head"):
+                if key not in two:
+                    raise FieldError((key,), "missing: give towards_head and away_from_head, or "
+                                             "strokes (a four-stroke diagram)")
+            if self.fires_at_deg is not None:
+                raise FieldError(("fires_at_deg",), "goes with strokes (a four-stroke diagram); "
+                                                    "a two-table cylinder repeats every revolution")
+        elif two:
+            raise FieldError((two[0],), "give either towards_head and away_from_head (a "
+                                        "compressor, a two-stroke engine) or strokes (a "
+                                        "four-stroke engine), not both")
+        for key, values in self.tables().items():
+            if len(values) != len(s):
+                loc = ("strokes", key) if self.strokes is not None else (key,)
+                raise FieldError(loc, f"needs {len(s)} values, one per s (got {len(values)})")
+        if self.strokes is not None:
+            from flywheel.dynamics.loads import stroke_joins
+
+            tables = self.tables()
+            for end, begin, at, p_end, p_begin in stroke_joins(s, tables):
+                if abs(p_begin - p_end) > self.join_tolerance:
+                    raise FieldError(
+                        ("strokes", begin),
+                        f"begins at p/p_max = {p_begin:g} at s = {at:g}, where {end} ends at "
+                        f"{p_end:g}: the strokes do not meet (a jump of {abs(p_begin - p_end):.4g}; "
+                        f"allowed: at most join_tolerance = {self.join_tolerance:g}; a rise at "
+                        f"firing belongs inside the expansion table, just after s = 0)")
         return self
+
+    def tables(self) -> dict[str, list[float]]:
+        """The indicator tables by name: towards_head and away_from_head, or the four strokes."""
+        if self.strokes is not None:
+            return {k: getattr(self.strokes, k) for k in ("intake", "compression", "expansion",
+                                                          "exhaust")}
+        return {k: v for k in ("towards_head", "away_from_head")
+                if (v := getattr(self, k)) is not None}
+
+    @property
+    def four_stroke(self) -> bool:
+        return self.strokes is not None
 
 
 class ForceSpec(StrictModel):
@@ -470,12 +535,14 @@ def _check_references(case: Case) -> None:
             raise FieldError(("cylinders", i, "piston"), f"{c.piston!r} is not the slider of an RRP dyad "
                                                         f"(sliders: {', '.join(sorted(sliders)) or 'none'})")
     for i, c in enumerate(case.cylinders):
-        for key in ("towards_head", "away_from_head"):
-            low = min(getattr(c, key))
+        for key, values in c.tables().items():
+            low = min(values)
             if low * c.p_max < -ATM:
-                raise FieldError(("cylinders", i, key), f"p/p_max = {low:g} gives "
+                raise FieldError(("cylinders", i) + (("strokes",) if c.four_stroke else ()) + (key,),
+                                 f"p/p_max = {low:g} gives "
                                  f"{low * c.p_max / 1e6:.4g} MPa gauge, below absolute vacuum "
                                  f"(allowed: p ≥ −0.101325 MPa gauge)")
+    _check_engine(case)
     for i, f in enumerate(case.forces):
         if f.slider not in sliders:
             raise FieldError(("forces", i, "slider"), f"{f.slider!r} is not the slider of an RRP dyad")
@@ -493,6 +560,45 @@ def _check_references(case: Case) -> None:
         if n in seen:
             raise FieldError(loc, f"load name {n!r} is used twice")
         seen.add(n)
+
+
+def _check_engine(case: Case) -> None:
+    """A four-stroke diagram needs a cycle of 720° (or a multiple); a firing order names every
+    four-stroke cylinder once and nothing else, and then sets where each fires."""
+    cycle = case.machine.cycle_deg
+    four = [c.name for c in case.cylinders if c.four_stroke]
+    for i, c in enumerate(case.cylinders):
+        if c.four_stroke and round(cycle) % 720:
+            raise FieldError(("cylinders", i, "strokes"), f"a four-stroke diagram spans 720° of "
+                             f"crank angle, the machine's cycle is {cycle:g}° (allowed: "
+                             f"machine.cycle_deg = 720, or a multiple of 720)")
+    order = case.machine.firing_order
+    if order is None:
+        return
+    names = {c.name: c for c in case.cylinders}
+    seen: set[str] = set()
+    for k, name in enumerate(order):
+        loc = ("machine", "firing_order", k)
+        if name not in names:
+            raise FieldError(loc, f"no cylinder named {name!r} (four-stroke cylinders: "
+                                  f"{', '.join(four) or 'none'})")
+        if not names[name].four_stroke:
+            raise FieldError(loc, f"cylinder {name!r} has no four-stroke diagram (strokes): only "
+                                  f"four-stroke cylinders fire in an order (four-stroke "
+                                  f"cylinders: {', '.join(four) or 'none'})")
+        if name in seen:
+            raise FieldError(loc, f"cylinder {name!r} is already in the order (each fires once "
+                                  f"per cycle)")
+        seen.add(name)
+    missing = [n for n in four if n not in seen]
+    if missing:
+        raise FieldError(("machine", "firing_order"), f"cylinder {missing[0]!r} is missing (a "
+                         f"firing order lists every four-stroke cylinder once: {', '.join(four)})")
+    for i, c in enumerate(case.cylinders):
+        if c.fires_at_deg is not None and c.name != order[0]:
+            raise FieldError(("cylinders", i, "fires_at_deg"), f"machine.firing_order sets where "
+                             f"cylinder {c.name!r} fires (allowed: fires_at_deg on the first "
+                             f"cylinder of the order, {order[0]!r}, only)")
 
 
 # -- plausibility: allowed, but a careful engineer would look twice --------------------------------
@@ -522,10 +628,12 @@ def plausibility_warnings(case: Case) -> list[str]:
     if not 1.0 <= rpm <= 20_000.0:
         out.append(f"machine: the crank speed {rpm:.6g} rpm is outside the usual 1 … 20 000 rpm")
     for i, c in enumerate(case.cylinders):
-        for key in ("towards_head", "away_from_head"):
-            low = min(getattr(c, key))
-            if low < 0:
-                out.append(f"cylinders[{i}].{key}: p/p_max down to {low:g} "
+        for key, values in c.tables().items():
+            low = min(values)
+            if low < 0 and key not in ("intake", "compression"):   # an engine draws its
+                # charge below atmospheric pressure, and compresses it from there
+                where = f"strokes.{key}" if c.four_stroke else key
+                out.append(f"cylinders[{i}].{where}: p/p_max down to {low:g} "
                            f"({low * c.p_max / 1e6:.4g} MPa gauge, a vacuum): the tables are "
                            "gauge pressures relative to p_max; check the sign")
     return out

@@ -50,6 +50,10 @@ def _loads(ld: LoadsResult) -> dict[str, Column]:
         cols[f"p_{c.name}"] = Column(c.p, "Pa", f"gas pressure, {c.name}", f"давление {c.name}")
         cols[f"F_{c.name}"] = Column(c.F, "N", f"gas force on piston {c.piston}",
                                      f"сила давления газа на поршень {c.piston}")
+        if c.stroke is not None:      # a four-stroke cylinder: which stroke at each node
+            cols[f"stroke_{c.name}"] = Column(
+                c.stroke.astype(float), "-", f"stroke of {c.name}: 0 intake, 1 compression, "
+                "2 expansion, 3 exhaust", f"такт {c.name}: 0 впуск, 1 сжатие, 2 расширение, 3 выпуск")
     for name, F in ld.forces.items():
         cols[f"F_{name}"] = Column(F, "N", f"technological force {name}", f"сила {name}")
     return cols

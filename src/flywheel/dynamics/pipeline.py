@@ -18,6 +18,7 @@ import numpy as np
 from flywheel.dynamics import loads as L
 from flywheel.dynamics import reduction, stages
 from flywheel.dynamics.columns import linkage_columns
+from flywheel.dynamics.engine import firing_angles, four_stroke_cylinder
 from flywheel.dynamics.grid import (DEFAULT_POINTS, grid_options, linkage_grid, report_index,
                                     slider_frame, standard_positions)
 from flywheel.dynamics.results import (CylinderResult, EnergyResult, LoadsResult, MotionResult,
@@ -67,7 +68,12 @@ def linkage_loads(case, mech, dcs: dict, kin) -> LoadsResult:
     cylinders: list[CylinderResult] = []
     forces: dict[str, np.ndarray] = {}
     warnings: list[str] = []
+    fires_at = firing_angles(case, mech, dcs) if any(c.four_stroke for c in case.cylinders) else {}
     for cy in case.cylinders:
+        if cy.four_stroke:
+            cylinders.append(four_stroke_cylinder(cy, mech, dcs, kin, fires_at[cy.name]))
+            M_parts[f"gas {cy.name}"] = cylinders[-1].M
+            continue
         d, u, base, head, far = slider_frame(mech, dcs, cy.piston, cy.head, f"cylinders {cy.name}: piston")
         x = (P[d.joint].r - base) @ u
         x_dot = P[d.joint].v_q @ u

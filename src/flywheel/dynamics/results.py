@@ -41,6 +41,12 @@ class CylinderResult:
     table_away: np.ndarray      # p/p_max [-] while moving away from it
     p_max: float                # [Pa]
     head_phi: float             # crank angle of the head dead centre [rad]
+    # a four-stroke cylinder (None for two tables, one per direction): the stroke at each node,
+    # an index into flywheel.dynamics.loads.FOUR_STROKES (intake, compression, expansion,
+    # exhaust); each stroke's table p/p_max [-] at table_s; where it fires [rad, 0 … 4π)
+    stroke: np.ndarray | None = None
+    stroke_tables: dict[str, np.ndarray] | None = None
+    fires_at: float | None = None
 
 
 @dataclass(frozen=True)

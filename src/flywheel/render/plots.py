@@ -799,7 +799,8 @@ def figures(results, lang: str = "en"):
     if results.kinematics is None:   # tabulated kinematics (issue 5): no positions to draw
         out = out[-1:]
     for c in results.cylinders:
-        out.append((f"indicator_{_safe(c.name)}.png", lambda c=c: figure_indicator(results, c, lang)))
+        out.append((f"indicator_{_safe(c.name)}.png", lambda c=c: figure_indicator(results, c, lang)
+                    if c.stroke is None else _engine_plots().figure_indicator_strokes(results, c, lang)))
     if results.cylinders or any(k.startswith("F_") for k in results.columns):
         out.append(("piston_forces.png", lambda: figure_piston_forces(results, lang)))
     out += [
@@ -811,6 +812,12 @@ def figures(results, lang: str = "en"):
     if results.kinematics is not None:
         out.append(("scheme.png", lambda: figure_scheme(results, lang)))
     return out
+
+
+def _engine_plots():
+    from flywheel.render import plots_engine
+
+    return plots_engine
 
 
 def all_figures(results, lang: str = "en"):
