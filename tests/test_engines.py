@@ -184,3 +184,191 @@ def _write(data) -> Path:
     path = Path(tempfile.mkdtemp()) / "e.toml"
     path.write_bytes(tomli_w.dumps(data).encode())
     return path
+
+
+# -- item 3: multi-throw crankshafts --------------------------------------------------------------
+
+def inline4(keep=("1", "2", "3", "4"), order=None, **machine):
+    """cases/engine_inline4.toml with only the cylinders ``keep`` (their rods, pistons, points)
+    and the firing ``order`` (default: 1-3-4-2 restricted to them)."""
+    d = read_toml(CASES / "engine_inline4.toml")
+    d["dyads"] = [x for x in d["dyads"] if x["joint"][1:] in keep]
+    d["points"] = {k: v for k, v in d["points"].items() if k[1:] in keep}
+    d["links"] = {k: v for k, v in d["links"].items() if k[1:] in keep}
+    d["cylinders"] = [c for c in d["cylinders"] if c["name"] in keep]
+    d["machine"]["firing_order"] = order or [c for c in ("1", "3", "4", "2") if c in keep]
+    d["machine"].update(machine)
+    if all(x["from"] != "A2" for x in d["dyads"]):
+        d["crank"].pop("pins")
+    return d
+
+
+def test_firing_angles_of_the_inline_four():
+    """1-3-4-2 on throws 0°, 180°, 180°, 0°: 1 at 0°, 3 at 180°, 4 at 360°, 2 at 540°; 1-2-4-3
+    is an order of the same crankshaft too."""
+    for order, want in ((["1", "3", "4", "2"], {"1": 0, "3": 180, "4": 360, "2": 540}),
+                        (["1", "2", "4", "3"], {"1": 0, "2": 180, "4": 360, "3": 540})):
+        r = analyze(parsed(inline4(order=order)), n_points=720)
+        got = {c.name: math.degrees(c.fires_at) for c in r.cylinders}
+        assert got == pytest.approx(want, abs=1e-9), order
+
+
+def test_inline_four_reciprocating_inertia_torque_closed_form():
+    """The pistons' inertia torque at constant ω, −½ω²·dJ_II/dφ (only the pistons have mass),
+    against the closed forms. Exact: each piston on its throw α_k = φ − β_k (β = 0, π, π, 0)
+    has y = r cos α + √(l² − r² sin² α), and M = −m ω² Σ y′ y″. Series (Артоболевский;
+    λ = r/l): one cylinder's M = m r² ω² [(λ/4) sin α − ½ sin 2α − (3λ/4) sin 3α
+    − (λ²/4) sin 4α] + O(λ³); over the four the first-order terms (sin φ, sin 3φ) cancel and the
+    second-order ones add: M = m r² ω² (−2 sin 2φ − λ² sin 4φ) + O(λ³)."""
+    d = inline4()
+    d["links"] = {k: v for k, v in d["links"].items() if k.startswith("p")}   # pistons only
+    d["cylinders"], d["machine"]["gravity"] = [], [0.0, 0.0]
+    d["machine"].pop("firing_order")
+    d["machine"]["balance"] = "driving"       # no work to balance (a "resistance" would refuse it)
+    r = analyze(parsed(d), n_points=720)
+    phi, w = r.phi, r.scalars["omega_mean"]
+    m, rr, ll = 0.45, 0.04, 0.16
+    lam, unit = rr / ll, m * rr ** 2 * w ** 2
+    M = -0.5 * w ** 2 * r.reduction.dJ_II
+
+    def y1y2(a):
+        s, c = np.sin(a), np.cos(a)
+        q = np.sqrt(ll ** 2 - rr ** 2 * s ** 2)
+        y1 = -rr * s - rr ** 2 * s * c / q
+        y2 = -rr * c - rr ** 2 * (c ** 2 - s ** 2) / q - rr ** 4 * s ** 2 * c ** 2 / q ** 3
+        return y1, y2
+
+    exact = sum(-m * w ** 2 * np.prod(y1y2(phi - b), axis=0) for b in (0, np.pi, np.pi, 0))
+    assert np.allclose(M, exact, rtol=0, atol=1e-12 * unit)
+    series = unit * (-2 * np.sin(2 * phi) - lam ** 2 * np.sin(4 * phi))
+    assert np.max(np.abs(M - series)) < lam ** 3 * unit          # O(λ³) = 0.0156·m r² ω²
+
+    def b(k, f):                        # sine coefficient over the cycle (the trapezoid rule)
+        return 2 / r.cycle * np.trapezoid(f * np.sin(k * phi), phi) / unit
+
+    one = -m * w ** 2 * np.prod(y1y2(phi), axis=0)             # one cylinder, for comparison
+    assert b(1, one) == pytest.approx(lam / 4, abs=lam ** 3) and abs(b(1, M)) < 1e-12
+    assert b(3, one) == pytest.approx(-3 * lam / 4, abs=lam ** 3) and abs(b(3, M)) < 1e-12
+    assert b(2, M) == pytest.approx(4 * b(2, one), rel=1e-9) == pytest.approx(-2, abs=lam ** 3)
+    assert b(4, M) == pytest.approx(4 * b(4, one), rel=1e-9) == pytest.approx(-lam ** 2, abs=lam ** 3)
+
+
+def test_delta_T_falls_as_cylinders_are_added_in_a_balanced_firing_order():
+    """The same cylinder, one, two (1 and 4 on one throw: a firing every 360°) and four (1-3-4-2:
+    every 180°): the energy to be stored, ΔT_нб, falls while the work per cycle grows with the
+    cylinders; an uneven twin (1 and 2: firings 180° and 540° apart) is worse than the even one."""
+    dT, work = {}, {}
+    for keep in (("1",), ("1", "4"), ("1", "2", "3", "4")):
+        s = analyze(parsed(inline4(keep))).scalars
+        dT[len(keep)], work[len(keep)] = s["delta_T_max"], -s["cycle_work_resistance"]
+    assert dT[1] > dT[2] > dT[4] and dT[4] < 0.25 * dT[1]
+    assert work[2] == pytest.approx(2 * work[1], rel=1e-9)
+    assert work[4] == pytest.approx(4 * work[1], rel=1e-9)
+    uneven = analyze(parsed(inline4(("1", "2"), order=["1", "2"]))).scalars["delta_T_max"]
+    assert uneven > dT[2]
+
+
+def test_a_firing_order_that_does_not_fit_the_crankshaft():
+    data = inline4(order=["1", "2", "3", "4"])
+    with pytest.raises(InputError) as e:
+        analyze(parsed(data), n_points=360)
+    assert str(e.value).startswith(
+        "machine.firing_order: 1-2-3-4 does not fit in one 720° cycle: cylinder 4 (position 4) "
+        "would fire at 720°, not before cylinder 1 fires again at 720°")
+    res = runner.invoke(app, ["run", str(_write(data)), "--no-plots", "--out", str(_write(data).parent / "o")])
+    assert res.exit_code == 2
+    assert res.output.count("\n") == 1 and ": machine.firing_order: 1-2-3-4 does not fit" in res.output
+
+
+@pytest.mark.parametrize("order, words", [
+    (["1", "3", "4"], "machine.firing_order: cylinder '2' is missing"),
+    (["1", "3", "4", "2", "5"], "machine.firing_order[4]: no cylinder named '5' (four-stroke "
+                                "cylinders: 1, 2, 3, 4)"),
+    (["1", "3", "3", "2"], "machine.firing_order[2]: cylinder '3' is already in the order"),
+])
+def test_a_firing_order_that_does_not_match_the_cylinders(order, words):
+    assert words in _error(inline4(order=order))
+
+
+def test_fires_at_only_on_the_first_of_an_order():
+    data = inline4()
+    data["cylinders"][2]["fires_at_deg"] = 180.0
+    assert "cylinders[2].fires_at_deg: machine.firing_order sets where cylinder '3' fires" in _error(data)
+
+
+def test_pins_at_the_same_angle_with_different_names():
+    data = inline4()
+    data["crank"]["pins"].append({"name": "A4", "angle_deg": 0.0})
+    assert _error(data) == (
+        "e.toml: crank.pins[1].angle_deg: 0° puts pin 'A4' where the crank's tip 'A1' is (same "
+        "angle and throw): pins at the same angle are one pin with one name (allowed: attach the "
+        "rods to 'A1', or give another angle)")
+    data["crank"]["pins"][-1] = {"name": "A3", "angle_deg": -180.0}
+    assert "crank.pins[1].angle_deg: -180° puts pin 'A3' where pin (crank.pins[0]) 'A2' is" in _error(data)
+    data["crank"]["pins"][-1] = {"name": "A3", "angle_deg": 180.0, "length": 0.03}   # another throw
+    parsed(data)
+    data["crank"]["pins"][-1] = {"name": "A2", "angle_deg": 90.0}
+    assert "crank.pins[1].name: point name 'A2' is already defined" in _error(data)
+
+
+# numerical derivatives: 8th-order central differences (as tests/test_kinematics.py)
+_D1 = np.array([1 / 280, -4 / 105, 1 / 5, -4 / 5, 0.0, 4 / 5, -1 / 5, 4 / 105, -1 / 280])
+_D2 = np.array([-1 / 560, 8 / 315, -1 / 5, 8 / 5, -205 / 72, 8 / 5, -1 / 5, 8 / 315, -1 / 560])
+
+
+def _check_numerical(mech, phi0, scale):
+    from flywheel.linkage import solve
+
+    k = solve(mech, phi0)
+    offs = np.arange(-4, 5)
+    for h, w, order in ((1e-3, _D1, 1), (4e-3, _D2, 2)):
+        kk = solve(mech, (phi0[:, None] + h * offs[None, :]).ravel())
+        for name, pm in kk.points.items():
+            num = np.einsum("k,nkj->nj", w, pm.r.reshape(phi0.size, 9, 2)) / h ** order
+            exact = k.points[name].v_q if order == 1 else k.points[name].a_q
+            np.testing.assert_allclose(exact, num, rtol=1e-8, atol=1e-8 * scale, err_msg=name)
+        for name, lm in kk.links.items():
+            th = lm.theta.reshape(phi0.size, 9)
+            th = th[:, 4:5] + np.angle(np.exp(1j * (th - th[:, 4:5])))
+            exact = k.links[name].omega_q if order == 1 else k.links[name].eps_q
+            np.testing.assert_allclose(exact, (th @ w) / h ** order, rtol=1e-8, atol=1e-8,
+                                       err_msg=name)
+
+
+@pytest.mark.parametrize("layout", ["inline4", "boxer", "vtwin", "odd"])
+def test_multi_throw_kinematics_against_numerical_derivatives(layout):
+    """Pins at stated angles and throws, with slider dyads and a four-bar on them: every
+    analogue against central differences of the positions; each pin stays on its circle at its
+    angle to the tip."""
+    from flywheel.linkage import RRP, RRR, Crank, CrankPin, Guide, Mechanism, solve
+
+    r, l = 0.04, 0.16
+    if layout == "inline4":       # 0, 180, 180, 0: two pins, four vertical cylinders
+        crank = Crank("1", "O", (0.0, 0.0), "A1", r, math.pi / 2, -1, (CrankPin("A2", math.pi, r),))
+        dyads = tuple(RRP(f"B{c}", p, f"B{c}", f"r{c}", l, f"p{c}", Guide((0.0, 0.0), math.pi / 2))
+                      for c, p in ((1, "A1"), (2, "A2"), (3, "A2"), (4, "A1")))
+    elif layout == "boxer":       # opposed cylinders on throws 180° apart
+        crank = Crank("1", "O", (0.0, 0.0), "A1", r, 0.0, 1, (CrankPin("A2", math.pi, r),))
+        dyads = (RRP("B1", "A1", "B1", "r1", l, "p1", Guide((0.0, 0.0), 0.0)),
+                 RRP("B2", "A2", "B2", "r2", l, "p2", Guide((0.0, 0.0), math.pi)))
+    elif layout == "vtwin":       # a 90° V, both rods side by side on one pin
+        crank = Crank("1", "O", (0.0, 0.0), "A", r, math.pi / 2, -1)
+        dyads = (RRP("B1", "A", "B1", "r1", l, "p1", Guide((0.0, 0.0), math.radians(45))),
+                 RRP("B2", "A", "B2", "r2", l, "p2", Guide((0.0, 0.0), math.radians(135))))
+    else:                         # a throw of another length at 73°, a four-bar on it
+        crank = Crank("1", "O", (0.01, -0.02), "A", r, 0.3, 1,
+                      (CrankPin("P", math.radians(73), 0.03),))
+        dyads = (RRP("B", "A", "B", "2", l, "3", Guide((0.0, 0.0), 0.2, 0.01)),
+                 RRR("C", "P", "4", 0.2, "D", "5", 0.15, "C"))
+    mech = Mechanism(crank, dyads, (), {"D": (0.12, 0.13)} if layout == "odd" else {})
+    phi0 = np.radians(np.arange(7.0, 360.0, 23.0))
+    _check_numerical(mech, phi0, 0.2)
+    k = solve(mech, phi0)
+    for pin in crank.pins:
+        d = k.points[pin.name].r - np.asarray(crank.pivot_at)
+        assert np.allclose(np.hypot(*d.T), pin.length, rtol=1e-14)
+        tip = k.points[crank.tip].r - np.asarray(crank.pivot_at)
+        between = np.arctan2(tip[:, 0] * d[:, 1] - tip[:, 1] * d[:, 0], np.sum(tip * d, axis=1))
+        assert np.allclose(np.mod(between - pin.angle + np.pi, 2 * np.pi) - np.pi, 0, atol=1e-12)
+    if layout == "boxer":          # opposed pistons: mirror images through the crank axis
+        assert np.allclose(k.points["B1"].r, -k.points["B2"].r, atol=1e-15)

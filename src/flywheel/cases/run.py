@@ -106,6 +106,15 @@ class Design(StrictModel):
         None, description="k: rod length = k·l1 for every RRP dyad whose rod_length is omitted")
 
 
+class PinSpec(StrictModel):
+    """A further crank pin (throw) of a multi-throw crankshaft, on the crank's link."""
+
+    name: Name = Field(description="name of the pin (a new point)")
+    angle_deg: Angle = Field(description="its angle to the crank's tip (the crank pin `tip`), "
+                                         "counter-clockwise positive [deg]")
+    length: Length | None = Field(None, description="its throw [m] (default: the crank's length)")
+
+
 class CrankSpec(StrictModel):
     """The driving link (link 1)."""
 
@@ -116,6 +125,8 @@ class CrankSpec(StrictModel):
     length: Length | None = Field(None, description="crank length l1 [m]")
     start_angle_deg: Angle = Field(0.0, description="crank angle from +x at φ = 0 [deg]")
     rotation: Literal["cw", "ccw"] = Field("ccw", description="direction of rotation")
+    pins: list[PinSpec] = Field(default_factory=list,
+                                description="further crank pins of a multi-throw crankshaft")
 
 
 class GuideSpec(StrictModel):
@@ -470,8 +481,12 @@ def _check_references(case: Case) -> None:
         new_point(name, ("ground", name))
     new_point(case.crank.pivot, ("crank", "pivot"))
     new_point(case.crank.tip, ("crank", "tip"))
+    _check_pins(case)
+    for i, pin in enumerate(case.crank.pins):
+        new_point(pin.name, ("crank", "pins", i, "name"))
     new_link(case.crank.name, ("crank", "name"))
-    on: dict[str, set[str]] = {case.crank.name: {case.crank.pivot, case.crank.tip}}  # link → its points
+    on: dict[str, set[str]] = {case.crank.name: {case.crank.pivot, case.crank.tip}  # link → its points
+                               | {pin.name for pin in case.crank.pins}}
     pending = dict(case.points)
     sliders: set[str] = set()
 
@@ -560,6 +575,24 @@ def _check_references(case: Case) -> None:
         if n in seen:
             raise FieldError(loc, f"load name {n!r} is used twice")
         seen.add(n)
+
+
+def _check_pins(case: Case) -> None:
+    """Two pins of one crankshaft at the same angle and throw are one point of the plane
+    mechanism: they must have one name (rods of an in-line engine's cylinders 1 and 4 share a
+    pin), so a second name there is refused."""
+    seen = [((0.0, case.crank_length), case.crank.tip, "the crank's tip")]
+    for i, pin in enumerate(case.crank.pins):
+        where = (pin.angle_deg % 360.0, pin.length if pin.length is not None else case.crank_length)
+        for (angle, length), name, what in seen:
+            gap = abs((where[0] - angle + 180.0) % 360.0 - 180.0)
+            if gap < 1e-9 and abs(where[1] - length) <= 1e-12 * length:
+                raise FieldError(("crank", "pins", i, "angle_deg"),
+                                 f"{pin.angle_deg:g}° puts pin {pin.name!r} where {what} {name!r} "
+                                 f"is (same angle and throw): pins at the same angle are one pin "
+                                 f"with one name (allowed: attach the rods to {name!r}, or give "
+                                 f"another angle)")
+        seen.append((where, pin.name, f"pin (crank.pins[{i}])"))
 
 
 def _check_engine(case: Case) -> None:
@@ -722,11 +755,13 @@ def dyad_name(d) -> str:
 
 def to_mechanism(case: Case):
     """Build the kinematics description (:class:`flywheel.linkage.Mechanism`) of a case."""
-    from flywheel.linkage import RPR, RRP, RRR, Crank, Guide, LinkPoint, Mechanism
+    from flywheel.linkage import RPR, RRP, RRR, Crank, CrankPin, Guide, LinkPoint, Mechanism
 
     c = case.crank
+    pins = tuple(CrankPin(p.name, math.radians(p.angle_deg),
+                          p.length if p.length is not None else case.crank_length) for p in c.pins)
     crank = Crank(c.name, c.pivot, tuple(c.pivot_at), c.tip, case.crank_length,
-                  math.radians(c.start_angle_deg), -1 if c.rotation == "cw" else 1)
+                  math.radians(c.start_angle_deg), -1 if c.rotation == "cw" else 1, pins)
     dyads = []
     for d in case.dyads:
         br = 1 if d.branch == "+" else -1

@@ -167,7 +167,8 @@ def report_angles(at_deg: list[float], kin, ld: LoadsResult, red: ReductionResul
 def links_drawn(mech) -> tuple[tuple[str, tuple[str, ...]], ...]:
     """(link, its points) of every link of the kinematic scheme: the crank, each dyad's links,
     and the other points (centroids …) on the link that carries them."""
-    drawn = [(mech.crank.name, [mech.crank.pivot, mech.crank.tip])]
+    drawn = [(mech.crank.name, [mech.crank.pivot, mech.crank.tip]
+              + [pin.name for pin in mech.crank.pins])]
     for d in mech.dyads:
         if hasattr(d, "guide"):
             drawn.append((d.rod, [d.origin, d.joint]))

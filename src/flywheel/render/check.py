@@ -47,6 +47,9 @@ def print_check(report, console=None) -> None:
     t.add_row("crank", c.name, f"{c.pivot} → {c.tip}",
               f"l = {c.length:.6g} m, θ0 = {math.degrees(c.start_angle):g}°, "
               f"{'cw' if c.direction < 0 else 'ccw'}")
+    for pin in c.pins:
+        t.add_row("crank pin", c.name, f"{c.pivot} → {pin.name}",
+                  f"l = {pin.length:.6g} m, at {math.degrees(pin.angle):g}° to {c.tip}")
     for spec, d in zip(case.dyads, mech.dyads):
         if isinstance(spec, RRPSpec):
             t.add_row(f"RRP {d.name}", f"{d.rod}, {d.slider}", f"{d.origin} → {d.joint}",
