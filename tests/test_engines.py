@@ -71,6 +71,23 @@ def test_cycle_work_is_the_indicator_diagram_area(method):
     assert r.scalars["balance"] == "resistance" and r.scalars["cycle_deg"] == 720
 
 
+def test_two_stroke_engine_is_two_tables_over_one_revolution():
+    """A two-stroke engine: compression towards the head, expansion away from it, every
+    revolution (docs/case-format.md): W = p_max·∫(p_exp − p_comp) ds·(πd²/4)·stroke per 360°."""
+    data = single()
+    cy = data["cylinders"][0]
+    st = cy.pop("strokes")
+    cy.pop("fires_at_deg")
+    cy.update(towards_head=st["compression"], away_from_head=st["expansion"])
+    data["machine"]["cycle_deg"] = 360
+    r = analyze(parsed(data), n_points=3600)
+    s = np.asarray(cy["s"])
+    W = (cy["p_max"] * (np.trapezoid(st["expansion"], s) - np.trapezoid(st["compression"], s))
+         * math.pi * cy["bore"] ** 2 / 4 * 2 * data["crank"]["length"])
+    assert r.scalars["cycle_work_resistance"] == pytest.approx(-W, rel=2e-6)
+    assert r.scalars["driving_moment"] == pytest.approx(W / (2 * math.pi), rel=2e-6)
+
+
 def test_pressure_stroke_by_stroke_at_the_closed_form_travel():
     """At an angle inside each stroke the pressure is that stroke's table at the travel of the
     centric slider-crank, s = (r + l − x)/(2r), x = r·cos φ + √(l² − r² sin² φ): expansion from
@@ -372,3 +389,32 @@ def test_multi_throw_kinematics_against_numerical_derivatives(layout):
         assert np.allclose(np.mod(between - pin.angle + np.pi, 2 * np.pi) - np.pi, 0, atol=1e-12)
     if layout == "boxer":          # opposed pistons: mirror images through the crank axis
         assert np.allclose(k.points["B1"].r, -k.points["B2"].r, atol=1e-15)
+
+
+# -- item 4: the bundled engine cases ---------------------------------------------------------------
+
+def test_inline_four_case_runs_end_to_end(tmp_path):
+    """`flywheel run --no-plots --json` on cases/engine_inline4.toml: the 720° cycle, each
+    cylinder's firing, the work of four cylinders of cases/engine_4stroke.toml."""
+    import json
+
+    res = runner.invoke(app, ["run", str(CASES / "engine_inline4.toml"), "--no-plots", "--json",
+                              "--out", str(tmp_path / "o")])
+    assert res.exit_code == 0, res.output
+    r = json.loads(res.stdout)["results"]
+    one = analyze(load_case(CASES / "engine_4stroke.toml")).scalars
+    assert r["cycle_deg"] == 720 and r["balance"] == "resistance"
+    assert r["cycle_work_resistance"] == pytest.approx(4 * one["cycle_work_resistance"], rel=1e-9)
+    assert r["delta_T_max"] < 0.25 * one["delta_T_max"]
+    header = (tmp_path / "o" / "table.csv").read_text(encoding="utf-8").splitlines()[0]
+    assert all(f"stroke_{c} [-]" in header for c in "1234")
+    rows = (tmp_path / "o" / "positions.csv").read_text(encoding="utf-8").splitlines()[1:]
+    assert len(rows) == 24                  # every 30° over 720°; the dead centres fall on them
+
+
+@pytest.mark.parametrize("name", ["engine_4stroke.toml", "engine_inline4.toml"])
+def test_engine_cases_are_listed_in_the_readme_and_checked(name):
+    readme = (CASES.parent / "README.md").read_text(encoding="utf-8")
+    assert f"cases/{name}" in readme
+    res = runner.invoke(app, ["check", str(CASES / name)])
+    assert res.exit_code == 0, res.output
