@@ -418,3 +418,21 @@ def test_engine_cases_are_listed_in_the_readme_and_checked(name):
     assert f"cases/{name}" in readme
     res = runner.invoke(app, ["check", str(CASES / name)])
     assert res.exit_code == 0, res.output
+
+
+def test_double_acting_pump_case(tmp_path):
+    """cases/pump.toml end to end: both sides of the piston deliver once per revolution, so the
+    work per revolution is p_d·(π/4)(d² + d_eq²)·stroke (the liquid switches between suction
+    and delivery at the dead centres; d_eq² = d² − d_rod² for the rod side)."""
+    import json
+
+    res = runner.invoke(app, ["run", str(CASES / "pump.toml"), "--no-plots", "--json",
+                              "--out", str(tmp_path / "o")])
+    assert res.exit_code == 0, res.output
+    r = json.loads(res.stdout)["results"]
+    W = 1.2e6 * math.pi / 4 * (0.125 ** 2 + 0.118427 ** 2) * 0.2
+    # the trapezoid rule on F·dx/dφ at the default grid: 2.5e-7 (O(h²))
+    assert r["cycle_work_resistance"] == pytest.approx(-W, rel=1e-6)
+    assert r["driving_moment"] == pytest.approx(W / (2 * math.pi), rel=1e-6)
+    assert r["flywheel_J_on_its_shaft"] == pytest.approx(r["J_flywheel"] / 100, rel=1e-12)
+    assert "cases/pump.toml" in (CASES.parent / "README.md").read_text(encoding="utf-8")
