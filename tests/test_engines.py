@@ -436,3 +436,36 @@ def test_double_acting_pump_case(tmp_path):
     assert r["driving_moment"] == pytest.approx(W / (2 * math.pi), rel=1e-6)
     assert r["flywheel_J_on_its_shaft"] == pytest.approx(r["J_flywheel"] / 100, rel=1e-12)
     assert "cases/pump.toml" in (CASES.parent / "README.md").read_text(encoding="utf-8")
+
+
+@pytest.mark.parametrize("name", ["engine_4stroke.toml", "engine_inline4.toml"])
+def test_kinetostatics_closes_on_the_engines(name):
+    """The force analysis (flywheel.dynamics.forces) of the engines with the true motion:
+    the balancing moment on the crank, found group by group from the last rod back to the
+    pins, equals the constant moment of the cycle balance at every node (design.md §9: the
+    equation of motion read backwards), and Zhukovsky's lever agrees. An independent check of
+    the pins, the four-stroke gas forces and ω(φ), ε(φ) over the 720° cycle."""
+    from flywheel.dynamics import forces as fo
+    from flywheel.linkage import solve
+    from flywheel.linkage.deadcentres import dead_centres, guide_frame, slider_dyad
+
+    case = load_case(CASES / name)
+    res = analyze(case)
+    mech = case.mechanism()
+    kin = solve(mech, res.phi)
+    pf = []
+    for cy, cr in zip(case.cylinders, res.cylinders):
+        d = slider_dyad(mech, cy.piston)
+        u, _ = guide_frame(d)
+        dcs = {dc.kind: dc for dc in dead_centres(mech, cy.piston)}
+        head, far = dcs[cy.head], dcs["inner" if cy.head == "outer" else "outer"]
+        pf.append(fo.PointForce(cy.name, cy.piston, d.joint,
+                                (cr.F * np.sign(far.x - head.x))[:, None] * u))
+    s = res.scalars
+    J_I = max(s["J_required"], s["J_first_group"])
+    loads = fo.Loads(case.links, tuple(pf), (), tuple(case.machine.gravity), J_I)
+    w, e = res.columns["omega"].values, res.columns["epsilon"].values
+    fa = fo.kinetostatics(mech, kin, w, e, loads)
+    assert fo.closure(fa, s["balancing_moment"]) < 1e-10
+    lever = fo.zhukovsky_moment(mech, kin, w, e, loads)
+    assert np.max(np.abs(lever - fa.balancing_moment)) < 1e-10 * abs(s["balancing_moment"])

@@ -282,6 +282,7 @@ class Results:
             "omega_mean": s.omega_mean,
             "n_points": int(self.phi.size),
             "cycle_deg": self.cycle_deg,
+            **self._firing(),
             "cycle_work_resistance": e.cycle_work_resistance,
             "driving_moment": e.driving_moment,
             "balancing_moment": e.balancing_moment,
@@ -316,6 +317,12 @@ class Results:
         if self.time_domain is not None:
             out["time_domain"] = self.time_domain.as_dict()
         return out
+
+    def _firing(self) -> dict:
+        """{"firing_deg": {cylinder: where it fires [deg]}} of the four-stroke cylinders, in
+        firing order; {} if there are none."""
+        fires = sorted((c.fires_at, c.name) for c in self.cylinders if c.fires_at is not None)
+        return {"firing_deg": {n: math.degrees(a) for a, n in fires}} if fires else {}
 
     def to_document(self) -> dict:
         """The summary.json document, JSON-ready (:func:`json_ready`)."""

@@ -40,6 +40,9 @@ def print_check(report, console=None) -> None:
     console.print(f"crank speed n1 = {report.crank_speed_rps:.6g} rev/s, "
                   f"ω_m = {m.omega_mean:.6g} rad/s, δ = {m.delta:g}, "
                   f"balance: constant {m.balance} moment")
+    if m.cycle_deg != 360 or report.firing_deg:
+        console.print(f"cycle Φ = {m.cycle_deg:g}°" + ("; fires: " + ", ".join(
+            f"{n} at {a:.6g}°" for n, a in report.firing_deg.items()) if report.firing_deg else ""))
     c = mech.crank
     t = Table(title="Mechanism", show_lines=False)
     for col in ("group", "links", "points", "data"):
