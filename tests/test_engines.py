@@ -469,3 +469,41 @@ def test_kinetostatics_closes_on_the_engines(name):
     assert fo.closure(fa, s["balancing_moment"]) < 1e-10
     lever = fo.zhukovsky_moment(mech, kin, w, e, loads)
     assert np.max(np.abs(lever - fa.balancing_moment)) < 1e-10 * abs(s["balancing_moment"])
+
+
+def _twin(layout: str) -> dict:
+    """Two cylinders of cases/engine_4stroke.toml as a 90° V-twin (both rods side by side on
+    the one pin, guides at 45° and 135°) or a boxer (a pin at 180°, opposed guides at 0° and
+    180°); the crank clockwise from the upward vertical, firing order 1-2."""
+    d = single()
+    cyl = d["cylinders"][0]
+    cyl.pop("fires_at_deg")
+    rod, piston = dict(d["dyads"][0]), d["links"]["3"]
+    guides = {"vtwin": ((45.0, "A"), (135.0, "A")), "boxer": ((0.0, "A"), (180.0, "A2"))}[layout]
+    if layout == "boxer":
+        d["crank"]["pins"] = [{"name": "A2", "angle_deg": 180.0}]
+    d["dyads"], d["cylinders"], d["points"], d["links"] = [], [], {}, {}
+    for k, (angle, pin) in enumerate(guides, start=1):
+        d["dyads"].append({**rod, "from": pin, "joint": f"B{k}", "rod": f"r{k}", "slider": f"p{k}",
+                           "guide": {"through": [0.0, 0.0], "angle_deg": angle}})
+        d["points"][f"S{k}"] = {"link": f"r{k}", "from": pin, "to": f"B{k}", "fraction": 0.3}
+        d["links"][f"r{k}"] = {"mass": 0.55, "J_S": 0.0016, "centroid": f"S{k}"}
+        d["links"][f"p{k}"] = {**piston, "centroid": f"B{k}"}
+        d["cylinders"].append({**copy.deepcopy(cyl), "name": str(k), "piston": f"p{k}"})
+    d["machine"]["firing_order"] = ["1", "2"]
+    return d
+
+
+@pytest.mark.parametrize("layout, fires", [("vtwin", (45.0, 315.0)), ("boxer", (90.0, 450.0))])
+def test_v_twin_and_boxer_fire_where_their_cranks_point_up_their_cylinders(layout, fires):
+    """A centric cylinder's head dead centre is where its throw points along its guide towards
+    the head: θ1 = 90° − φ (+180° for the boxer's second throw) equal to the guide's angle.
+    90° V-twin: 1 at 45°, 2 at 315° (firing intervals 270° and 450°, the uneven V-twin beat);
+    boxer: both throws point to their heads at 90°, so 1 fires at 90° and 2 at 450° (evenly,
+    360° apart); the two cylinders' work is twice the single's."""
+    r = analyze(parsed(_twin(layout)), n_points=7200)
+    got = tuple(math.degrees(c.fires_at) for c in r.cylinders)
+    assert got == pytest.approx(fires, abs=1e-9)
+    one = analyze(parsed(single()), n_points=7200).scalars
+    assert r.scalars["cycle_work_resistance"] == pytest.approx(2 * one["cycle_work_resistance"],
+                                                               rel=1e-6)
