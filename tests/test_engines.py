@@ -507,3 +507,36 @@ def test_v_twin_and_boxer_fire_where_their_cranks_point_up_their_cylinders(layou
     one = analyze(parsed(single()), n_points=7200).scalars
     assert r.scalars["cycle_work_resistance"] == pytest.approx(2 * one["cycle_work_resistance"],
                                                                rel=1e-6)
+
+
+def test_offset_engine_and_a_cycle_of_four_revolutions():
+    """An offset (désaxé) engine, the dead centres not 180° apart: the strokes still change at
+    the exact dead centres, and the cycle work is the diagram's area times the bore area and
+    the stroke between them, √((l+r)² − e²) − √((l−r)² − e²). Over a cycle of 1440° the
+    four-stroke pattern runs twice: twice the work, the same balancing moment."""
+    data = single()
+    data["dyads"][0]["guide"]["offset"] = 0.012
+    cy = data["cylinders"][0]
+    r_, l_, e = 0.04, 0.16, 0.012
+    stroke = math.sqrt((l_ + r_) ** 2 - e ** 2) - math.sqrt((l_ - r_) ** 2 - e ** 2)
+    W = cy["p_max"] * diagram_area(cy) * math.pi * cy["bore"] ** 2 / 4 * stroke
+    res = analyze(parsed(data), n_points=7200)
+    assert res.scalars["cycle_work_resistance"] == pytest.approx(-W, rel=2e-6)
+    # the dead centres of this offset slider-crank (guide x = −e, crank clockwise from the
+    # vertical): outer at −asin(e/(l + r)), inner at 180° − asin(e/(l − r)); fires_at_deg = 0
+    # picks the outer one nearest to 0°, −3.44° ≡ 716.56°
+    outer = -math.degrees(math.asin(e / (l_ + r_)))
+    inner = 180.0 - math.degrees(math.asin(e / (l_ - r_)))
+    c = res.cylinders[0]
+    assert math.degrees(c.fires_at) == pytest.approx(720.0 + outer, abs=1e-9)
+    phis = np.degrees(res.phi)
+    first = {STROKES[k]: phis[np.argmax(c.stroke == k)] for k in range(4)}  # first node of each
+    assert first["expansion"] == 0.0
+    assert first["exhaust"] == pytest.approx(inner, abs=1e-9)
+    assert first["intake"] == pytest.approx(360.0 + outer, abs=1e-9)
+    assert first["compression"] == pytest.approx(360.0 + inner, abs=1e-9)
+    data["machine"]["cycle_deg"] = 1440
+    res4 = analyze(parsed(data), n_points=14400)
+    assert res4.scalars["cycle_work_resistance"] == pytest.approx(-2 * W, rel=2e-6)
+    assert res4.scalars["balancing_moment"] == pytest.approx(res.scalars["balancing_moment"], rel=1e-9)
+    assert res4.scalars["delta_T_max"] == pytest.approx(res.scalars["delta_T_max"], rel=1e-9)
