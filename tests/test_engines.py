@@ -540,3 +540,69 @@ def test_offset_engine_and_a_cycle_of_four_revolutions():
     assert res4.scalars["cycle_work_resistance"] == pytest.approx(-2 * W, rel=2e-6)
     assert res4.scalars["balancing_moment"] == pytest.approx(res.scalars["balancing_moment"], rel=1e-9)
     assert res4.scalars["delta_T_max"] == pytest.approx(res.scalars["delta_T_max"], rel=1e-9)
+
+
+# -- a four-stroke diagram as one table over the cycle --------------------------------------------
+
+def _as_loop(data: dict) -> dict:
+    """engine_4stroke.toml's strokes as one table over the cycle, from the firing: expansion
+    s 0 → 1, exhaust 1 → 0, intake 0 → 1, compression 1 → 0 (each dead centre once)."""
+    cy = data["cylinders"][0]
+    s, st = cy.pop("s"), cy.pop("strokes")
+    loop_s, loop_p = list(s), list(st["expansion"])
+    for name, up in (("exhaust", False), ("intake", True), ("compression", False)):
+        ss, pp = (s, st[name]) if up else (s[::-1], st[name][::-1])
+        loop_s += ss[1:]
+        loop_p += pp[1:]              # the dead centre is shared: the strokes meet (within 0.02)
+    cy["diagram"] = {"s": loop_s, "p": loop_p}
+    return data
+
+
+def test_one_table_over_the_cycle_equals_the_four_strokes():
+    """The same diagram as one table gives the same pressures bit for bit (split into the same
+    four strokes), and the cycle work is the area of the closed polygon by the shoelace
+    formula, p_max·πd²/4·stroke·|Σ (s_i p_{i+1} − s_{i+1} p_i)/2|, independent of how the
+    program splits it."""
+    a = analyze(parsed(single()), n_points=7200)
+    data = _as_loop(single())
+    b = analyze(parsed(data), n_points=7200)
+    cy = data["cylinders"][0]
+    s, p = np.asarray(cy["diagram"]["s"]), np.asarray(cy["diagram"]["p"])
+    area = 0.5 * abs(np.sum(s * np.roll(p, -1) - np.roll(s, -1) * p))
+    W = cy["p_max"] * area * math.pi * cy["bore"] ** 2 / 4 * 2 * data["crank"]["length"]
+    assert b.scalars["cycle_work_resistance"] == pytest.approx(-W, rel=2e-6)
+    assert np.array_equal(a.cylinders[0].p, b.cylinders[0].p)
+    assert b.scalars["delta_T_max"] == a.scalars["delta_T_max"]
+
+
+@pytest.mark.parametrize("change, words", [
+    (lambda d: d["s"].__setitem__(0, 0.1), "cylinders[0].diagram.s[0]: 0.1: the diagram begins at "
+                                           "the head dead centre where the cylinder fires"),
+    (lambda d: d["s"].__setitem__(3, 0.04), "cylinders[0].diagram.s[3]: 0.04 after 0.05: on the "
+                                            "expansion stroke s must grow to 1"),
+    (lambda d: d.update(s=d["s"][:20], p=d["p"][:20]), "cylinders[0].diagram.s: ends inside the "
+                                                       "exhaust stroke"),
+    (lambda d: d.update(s=d["s"] + [0.5], p=d["p"] + [0.0]), "cylinders[0].diagram.s[57]: goes on "
+                                                             "after compression closed the cycle"),
+    (lambda d: (d["s"].insert(15, 1.0), d["p"].insert(15, 0.3)),
+     "cylinders[0].diagram.p[15]: steps from p/p_max = 0.0734 to 0.3 at s = 1, where expansion "
+     "ends and exhaust begins: the strokes do not meet (a jump of 0.2266"),
+    (lambda d: d["p"].__setitem__(-1, 0.5), "cylinders[0].diagram.p[56]: steps from p/p_max = "
+                                            "0.2639 to 0.5 at s = 0, where compression ends and "
+                                            "expansion began"),
+    (lambda d: d["p"].pop(), "cylinders[0].diagram.p: needs 57 values, one per s (got 56)"),
+])
+def test_bad_tables_over_the_cycle(change, words):
+    data = _as_loop(single())
+    change(data["cylinders"][0]["diagram"])
+    assert words in _error(data)
+
+
+def test_a_diagram_and_stroke_tables_together():
+    data = _as_loop(single())
+    data["cylinders"][0]["s"] = [0.0, 1.0]
+    assert "cylinders[0].s: give either diagram (one table over the cycle) or s with its " \
+           "tables, not both" in _error(data)
+    data = _as_loop(single())
+    data["machine"]["cycle_deg"] = 360
+    assert "cylinders[0].diagram: a four-stroke diagram spans 720°" in _error(data)

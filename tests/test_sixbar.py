@@ -118,8 +118,8 @@ def test_toggle_press_kinematics_against_numerical_derivatives():
     assert np.allclose(k.points["C"].r[:, 0], 0.3, atol=1e-15)
     # near the straightened toggle the slide's speed ratio falls: the press's mechanical advantage
     vy = np.abs(k.points["C"].v_q[:, 1])
-    straight = np.argmin(np.abs(np.abs(np.cross(k.points["B"].r - k.points["D"].r,
-                                                 k.points["C"].r - k.points["B"].r)) / (0.25 * 0.3)))
+    u, w = k.points["B"].r - k.points["D"].r, k.points["C"].r - k.points["B"].r
+    straight = np.argmin(np.abs(u[:, 0] * w[:, 1] - u[:, 1] * w[:, 0]))   # the toggle in line
     assert vy[straight] < 0.15 * vy.max()
 
 

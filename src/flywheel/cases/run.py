@@ -12,7 +12,7 @@ import math
 import typing
 from typing import Annotated, Literal, Union
 
-from pydantic import AfterValidator, BaseModel, Field, Strict, model_validator
+from pydantic import AfterValidator, BaseModel, Field, PrivateAttr, Strict, model_validator
 
 from flywheel.errors import CaseFileError
 from flywheel.io.schema import FieldError, StrictModel, clean_loc, describe, load, loc_str, pick, validate
@@ -233,10 +233,81 @@ class StrokesSpec(StrictModel):
     exhaust: list[float] = Field(description="p/p_max on the exhaust stroke (far → head)")
 
 
+class DiagramSpec(StrictModel):
+    """A four-stroke indicator diagram as one table over the cycle: the points (s, p/p_max) in
+    the order the piston passes them, from the head dead centre where the cylinder fires."""
+
+    s: list[float] = Field(description="relative travel from the head, 0 → 1 → 0 → 1 → 0 over "
+                                        "expansion, exhaust, intake, compression")
+    p: list[float] = Field(description="p/p_max at each point")
+
+
+STROKE_ORDER = ("expansion", "exhaust", "intake", "compression")   # from the firing
+
+
+def _split_cycle(s: list[float], p: list[float], tol: float) -> dict[str, tuple[list, list]]:
+    """The strokes of a diagram given as one table over the cycle (:class:`DiagramSpec`):
+    {stroke: (s increasing, p/p_max)}. The travel grows to 1 on expansion, falls to 0 on
+    exhaust, grows on intake and falls on compression, back to where it began; a stroke ends
+    where s reaches its dead centre and the next begins there. A repeated s at a dead centre is
+    a vertical step of the diagram: allowed up to ``tol`` (the strokes must meet), as is the
+    step between the end and the start. Raises FieldError at diagram.s[i] / diagram.p[i]."""
+    n = len(s)
+    if len(p) != n:
+        raise FieldError(("diagram", "p"), f"needs {n} values, one per s (got {len(p)})")
+    if n < 5:
+        raise FieldError(("diagram", "s"), "needs at least 5 values (0, 1, 0, 1, 0: four strokes)")
+    for i, v in enumerate(s):
+        if not 0.0 <= v <= 1.0:
+            raise FieldError(("diagram", "s", i), f"{v:g} is outside the stroke (allowed: 0 … 1)")
+    if s[0] != 0.0:
+        raise FieldError(("diagram", "s", 0), f"{s[0]:g}: the diagram begins at the head dead "
+                                              f"centre where the cylinder fires (allowed: 0)")
+
+    def step(at: int, what: str, p0: float, p1: float) -> None:
+        if abs(p1 - p0) > tol:
+            raise FieldError(("diagram", "p", at), f"steps from p/p_max = {p0:g} to {p1:g} at "
+                             f"s = {s[at]:g}, {what}: the strokes do not meet (a jump of "
+                             f"{abs(p1 - p0):.4g}; allowed: at most join_tolerance = {tol:g})")
+
+    out: dict[str, tuple[list, list]] = {}
+    i = 0
+    for k, name in enumerate(STROKE_ORDER):
+        up = k % 2 == 0
+        target = 1.0 if up else 0.0
+        start = i
+        while k and start + 1 < n and s[start + 1] == s[i]:      # a vertical step
+            start += 1
+        if start > i:
+            step(start, f"where {STROKE_ORDER[k - 1]} ends and {name} begins", p[i], p[start])
+        m = start
+        while True:
+            if m + 1 >= n:
+                raise FieldError(("diagram", "s"), f"ends inside the {name} stroke (allowed: "
+                                 f"s runs 0 → 1 → 0 → 1 → 0 over expansion, exhaust, intake, "
+                                 f"compression)")
+            a, b = s[m], s[m + 1]
+            if (b <= a) if up else (b >= a):
+                raise FieldError(("diagram", "s", m + 1), f"{b:g} after {a:g}: on the {name} "
+                                 f"stroke s must {'grow' if up else 'fall'} to {target:g}")
+            m += 1
+            if s[m] == target:
+                break
+        seg_s, seg_p = list(s[start:m + 1]), list(p[start:m + 1])
+        out[name] = (seg_s, seg_p) if up else (seg_s[::-1], seg_p[::-1])
+        i = m
+    if i != n - 1:
+        raise FieldError(("diagram", "s", i + 1), "goes on after compression closed the cycle "
+                                                  "at s = 0 (allowed: four strokes)")
+    step(n - 1, "where compression ends and expansion began", p[0], p[-1])
+    return out
+
+
 class CylinderSpec(StrictModel):
     """A cylinder with its indicator diagram (relative pressure against relative travel): two
     tables, one per direction of the piston (a compressor, a two-stroke engine), or four, one
-    per stroke of a four-stroke engine (``strokes``)."""
+    per stroke of a four-stroke engine (``strokes``), or one table over the four-stroke cycle
+    (``diagram``)."""
 
     name: Name
     piston: Name = Field(description="slider link of an RRP dyad")
@@ -246,7 +317,8 @@ class CylinderSpec(StrictModel):
         "outer", description="the dead centre at the cylinder head: farther from (outer) or "
                              "nearer to (inner) the crank axis")
     interpolation: Literal["linear", "pchip", "natural-spline"] = "linear"
-    s: list[float] = Field(description="relative travel from the head dead centre, 0 … 1")
+    s: list[float] | None = Field(None, description="relative travel from the head dead "
+                                                    "centre, 0 … 1 (not with diagram)")
     towards_head: list[float] | None = Field(
         None, description="p/p_max while the piston moves towards the head (with away_from_head)")
     away_from_head: list[float] | None = Field(
@@ -254,6 +326,9 @@ class CylinderSpec(StrictModel):
     strokes: StrokesSpec | None = Field(
         None, description="a four-stroke diagram instead: p/p_max on intake, compression, "
                           "expansion, exhaust (a cycle of 720°)")
+    diagram: DiagramSpec | None = Field(
+        None, description="a four-stroke diagram as one table over the cycle instead (s and "
+                          "p/p_max from the firing dead centre)")
     fires_at_deg: Angle | None = Field(
         None, description="four-stroke: about where the cylinder fires [deg]; it fires at its "
                           "head dead centre nearest to this angle (within 90°)")
@@ -261,9 +336,22 @@ class CylinderSpec(StrictModel):
         0.02, description="four-stroke: the largest jump of p/p_max allowed where two strokes "
                           "meet at a dead centre")
 
+    _loop: dict | None = PrivateAttr(None)     # diagram's strokes: name → (s, p)
+
     @model_validator(mode="after")
     def _tables(self):
+        if self.diagram is not None:
+            given = [k for k in ("s", "towards_head", "away_from_head", "strokes")
+                     if getattr(self, k) is not None]
+            if given:
+                raise FieldError((given[0],), "give either diagram (one table over the cycle) "
+                                              "or s with its tables, not both")
+            self._loop = _split_cycle(self.diagram.s, self.diagram.p, self.join_tolerance)
+            return self
         s = self.s
+        if s is None:
+            raise FieldError(("s",), "missing required field (or give diagram: one table over "
+                                     "a four-stroke cycle)")
         if len(s) < 2:
             raise FieldError(("s",), "needs at least 2 values")
         if any(b <= a for a, b in zip(s, s[1:])):
@@ -302,16 +390,31 @@ class CylinderSpec(StrictModel):
         return self
 
     def tables(self) -> dict[str, list[float]]:
-        """The indicator tables by name: towards_head and away_from_head, or the four strokes."""
+        """The indicator tables by name: towards_head and away_from_head, or the four strokes
+        (p/p_max; each stroke at the cylinder's s, or of a diagram at its own travels)."""
+        if self._loop is not None:
+            return {k: self._loop[k][1] for k in ("intake", "compression", "expansion", "exhaust")}
         if self.strokes is not None:
             return {k: getattr(self.strokes, k) for k in ("intake", "compression", "expansion",
                                                           "exhaust")}
         return {k: v for k in ("towards_head", "away_from_head")
                 if (v := getattr(self, k)) is not None}
 
+    def stroke_tables(self) -> dict[str, tuple[list[float], list[float]]]:
+        """A four-stroke cylinder's strokes: name → (s increasing, p/p_max)."""
+        if self._loop is not None:
+            return {k: self._loop[k] for k in ("intake", "compression", "expansion", "exhaust")}
+        return {k: (self.s, v) for k, v in self.tables().items()}
+
+    def table_loc(self, key: str) -> tuple:
+        """The field path of the table ``key`` inside the cylinder."""
+        if self.diagram is not None:
+            return ("diagram", "p")
+        return ("strokes", key) if self.strokes is not None else (key,)
+
     @property
     def four_stroke(self) -> bool:
-        return self.strokes is not None
+        return self.strokes is not None or self.diagram is not None
 
 
 class ForceSpec(StrictModel):
@@ -553,7 +656,7 @@ def _check_references(case: Case) -> None:
         for key, values in c.tables().items():
             low = min(values)
             if low * c.p_max < -ATM:
-                raise FieldError(("cylinders", i) + (("strokes",) if c.four_stroke else ()) + (key,),
+                raise FieldError(("cylinders", i) + c.table_loc(key),
                                  f"p/p_max = {low:g} gives "
                                  f"{low * c.p_max / 1e6:.4g} MPa gauge, below absolute vacuum "
                                  f"(allowed: p ≥ −0.101325 MPa gauge)")
@@ -602,7 +705,8 @@ def _check_engine(case: Case) -> None:
     four = [c.name for c in case.cylinders if c.four_stroke]
     for i, c in enumerate(case.cylinders):
         if c.four_stroke and round(cycle) % 720:
-            raise FieldError(("cylinders", i, "strokes"), f"a four-stroke diagram spans 720° of "
+            raise FieldError(("cylinders", i, "diagram" if c.diagram is not None else "strokes"),
+                             f"a four-stroke diagram spans 720° of "
                              f"crank angle, the machine's cycle is {cycle:g}° (allowed: "
                              f"machine.cycle_deg = 720, or a multiple of 720)")
     order = case.machine.firing_order
@@ -665,7 +769,7 @@ def plausibility_warnings(case: Case) -> list[str]:
             low = min(values)
             if low < 0 and key not in ("intake", "compression"):   # an engine draws its
                 # charge below atmospheric pressure, and compresses it from there
-                where = f"strokes.{key}" if c.four_stroke else key
+                where = ".".join(c.table_loc(key))
                 out.append(f"cylinders[{i}].{where}: p/p_max down to {low:g} "
                            f"({low * c.p_max / 1e6:.4g} MPa gauge, a vacuum): the tables are "
                            "gauge pressures relative to p_max; check the sign")

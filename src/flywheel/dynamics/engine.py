@@ -97,14 +97,17 @@ def four_stroke_cylinder(cy, mech, dcs: dict, kin, fires_at: float) -> CylinderR
     d, u, base, head, far = slider_frame(mech, dcs, cy.piston, cy.head, f"cylinders {cy.name}: piston")
     P = kin.points[d.joint]
     x, x_dot = (P.r - base) @ u, P.v_q @ u
-    s_tab = np.asarray(cy.s, float)
-    tables = {k: np.asarray(v, float) for k, v in cy.tables().items()}
+    tables = {k: (np.asarray(a, float), np.asarray(b, float))
+              for k, (a, b) in cy.stroke_tables().items()}
     s = L.relative_travel(x, head.x, far.x)
     stroke = L.four_stroke_index(kin.phi, fires_at, (far.phi - head.phi) % (2 * np.pi))
-    p = L.four_stroke_pressure(s, stroke, s_tab, tables, cy.interpolation) * cy.p_max
+    p = L.four_stroke_pressure(s, stroke, tables, cy.interpolation) * cy.p_max
     F = p * np.pi * cy.bore**2 / 4
     M = L.gas_moment(F, x_dot, head.x, far.x)
     towards = (stroke == 1) | (stroke == 3)
-    return CylinderResult(cy.name, cy.piston, s, towards, p, F, M, s_tab, tables["compression"],
-                          tables["expansion"], cy.p_max, head.phi, stroke=stroke,
-                          stroke_tables=tables, fires_at=float(fires_at))
+    s_exp, p_exp = tables["expansion"]      # the two-table fields: compression and expansion
+    return CylinderResult(cy.name, cy.piston, s, towards, p, F, M, s_exp,  # at expansion's s
+                          np.interp(s_exp, *tables["compression"]), p_exp, cy.p_max, head.phi,
+                          stroke=stroke, stroke_tables={k: v[1] for k, v in tables.items()},
+                          fires_at=float(fires_at),
+                          stroke_s={k: v[0] for k, v in tables.items()})

@@ -172,13 +172,15 @@ def four_stroke_index(phi: np.ndarray, fires_at: float, far_after: float) -> np.
     return np.where(rev2, np.where(away, 0, 1), np.where(away, 2, 3))
 
 
-def four_stroke_pressure(s: np.ndarray, stroke: np.ndarray, s_table: np.ndarray,
-                         tables: dict[str, np.ndarray], method: str) -> np.ndarray:
+def four_stroke_pressure(s: np.ndarray, stroke: np.ndarray,
+                         tables: dict[str, tuple[np.ndarray, np.ndarray]], method: str) -> np.ndarray:
     """p/p_max [-] of a four-stroke cylinder at relative travel s ∈ [0, 1] from its head, each
     node read from the table of its stroke (``stroke``: index into :data:`FOUR_STROKES`, as
-    :func:`four_stroke_index` gives; ``tables``: stroke name → p/p_max at ``s_table``), with the
-    interpolation ``method`` of :func:`interpolate_table`. All four on the whole grid at once."""
-    values = np.stack([interpolate_table(s_table, np.asarray(tables[name], float), s, method)
+    :func:`four_stroke_index` gives; ``tables``: stroke name → (s, p/p_max) of that stroke,
+    s increasing from 0 to 1), with the interpolation ``method`` of :func:`interpolate_table`.
+    All four on the whole grid at once."""
+    values = np.stack([interpolate_table(np.asarray(tables[name][0], float),
+                                         np.asarray(tables[name][1], float), s, method)
                        for name in FOUR_STROKES])
     return np.take_along_axis(values, np.asarray(stroke)[None, :], axis=0)[0]
 

@@ -43,10 +43,13 @@ class CylinderResult:
     head_phi: float             # crank angle of the head dead centre [rad]
     # a four-stroke cylinder (None for two tables, one per direction): the stroke at each node,
     # an index into flywheel.dynamics.loads.FOUR_STROKES (intake, compression, expansion,
-    # exhaust); each stroke's table p/p_max [-] at table_s; where it fires [rad, 0 … 4π)
+    # exhaust); each stroke's table p/p_max [-] at its travels stroke_s [-]; where it fires
+    # [rad, 0 … 4π). table_s, table_towards, table_away then hold expansion's travels and the
+    # compression and expansion tables at them.
     stroke: np.ndarray | None = None
     stroke_tables: dict[str, np.ndarray] | None = None
     fires_at: float | None = None
+    stroke_s: dict[str, np.ndarray] | None = None
 
 
 @dataclass(frozen=True)

@@ -84,7 +84,7 @@ def print_check(report, console=None) -> None:
                                  "interpolation", "points"))
         for cy in case.cylinders:
             t.add_row(cy.name, cy.piston, f"{cy.bore:g}", f"{cy.p_max / 1e6:g}", cy.head,
-                      cy.interpolation, str(len(cy.s)))
+                      cy.interpolation, str(len(cy.s if cy.s is not None else cy.diagram.s)))
         console.print(t)
 
     if report.sliders:

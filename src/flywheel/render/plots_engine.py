@@ -51,7 +51,7 @@ def figure_indicator_strokes(results, cylinder, lang: str = "en"):
             mask = stroke == k
             order = np.argsort(s[mask], kind="stable")
             ax.plot(s[mask][order], rel[mask][order], color=_COLORS[k], label=t[name])
-            ax.plot(cylinder.table_s, cylinder.stroke_tables[name], "o", color=_COLORS[k],
+            ax.plot(cylinder.stroke_s[name], cylinder.stroke_tables[name], "o", color=_COLORS[k],
                     markersize=4, markerfacecolor="none", label=t["table"].format(k=t[name]))
             bx.plot(np.where(mask, deg, np.nan), np.where(mask, cylinder.p / 1e6, np.nan),
                     color=_COLORS[k], label=t[name])
