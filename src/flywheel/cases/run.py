@@ -12,7 +12,7 @@ import math
 import typing
 from typing import Annotated, Literal, Union
 
-from pydantic import BaseModel, Field, Strict, model_validator
+from pydantic import BaseModel, Field, PrivateAttr, Strict, model_validator
 
 from flywheel.errors import CaseFileError
 from flywheel.io.schema import FieldError, StrictModel, within, clean_loc, describe, load, loc_str, pick, validate
@@ -37,6 +37,7 @@ Force = Annotated[float, _within(-1e9, 1e9, "N")]
 Moment = Annotated[float, _within(-1e9, 1e9, "N·m")]
 # strict numbers (no true, no "0.1"), but a TOML array is a fine tuple
 XY = Annotated[tuple[float, float], Strict(False), _within(-1e3, 1e3, "m")]
+CYCLE_REVS_MAX = 10      # a cycle of at most 10 revolutions (3600°)
 
 
 
@@ -57,12 +58,27 @@ class Machine(StrictModel):
     first_group: dict[str, Annotated[float, Field(ge=0), _within(0.0, 1e9, "kg·m²")]] = Field(
         default_factory=dict,
         description="moments of inertia already on the crank shaft, reduced to it [kg·m²]")
+    cycle_deg: float = Field(
+        360.0, description="length of the cycle Φ [deg]: a whole number of crank revolutions, "
+                           "360 … 3600 (720 for a four-stroke engine)")
+    firing_order: list[Name] | None = Field(
+        None, description="four-stroke cylinders by name in the order they fire; each fires at "
+                          "its first head dead centre after the one before")
 
     @model_validator(mode="after")
     def _check(self):
         if (self.speed_rps is None) == (self.speed_rpm is None):
             raise ValueError("give exactly one of speed_rps, speed_rpm")
+        revs = self.cycle_deg / 360.0
+        if not (1 <= revs <= CYCLE_REVS_MAX and revs == round(revs)):
+            raise FieldError(("cycle_deg",), f"{self.cycle_deg:g}° is not a whole number of "
+                             f"revolutions (allowed: 360, 720, 1080 … {360 * CYCLE_REVS_MAX}°)")
         return self
+
+    @property
+    def cycle(self) -> float:
+        """The cycle Φ [rad]: 2π·(number of revolutions); 4π for a four-stroke engine."""
+        return 2 * math.pi * round(self.cycle_deg / 360.0)
 
     @property
     def omega_mean(self) -> float:
@@ -80,6 +96,15 @@ class Design(StrictModel):
         None, description="k: rod length = k·l1 for every RRP dyad whose rod_length is omitted")
 
 
+class PinSpec(StrictModel):
+    """A further crank pin (throw) of a multi-throw crankshaft, on the crank's link."""
+
+    name: Name = Field(description="name of the pin (a new point)")
+    angle_deg: Angle = Field(description="its angle to the crank's tip (the crank pin `tip`), "
+                                         "counter-clockwise positive [deg]")
+    length: Length | None = Field(None, description="its throw [m] (default: the crank's length)")
+
+
 class CrankSpec(StrictModel):
     """The driving link (link 1)."""
 
@@ -90,6 +115,8 @@ class CrankSpec(StrictModel):
     length: Length | None = Field(None, description="crank length l1 [m]")
     start_angle_deg: Angle = Field(0.0, description="crank angle from +x at φ = 0 [deg]")
     rotation: Literal["cw", "ccw"] = Field("ccw", description="direction of rotation")
+    pins: list[PinSpec] = Field(default_factory=list,
+                                description="further crank pins of a multi-throw crankshaft")
 
 
 class GuideSpec(StrictModel):
@@ -185,8 +212,92 @@ class LinkSpec(StrictModel):
         return self
 
 
+class StrokesSpec(StrictModel):
+    """A four-stroke cylinder's indicator diagram: p/p_max at each relative travel ``s`` of the
+    cylinder, one table per stroke (the piston moves away from the head on intake and
+    expansion, towards it on compression and exhaust)."""
+
+    intake: list[float] = Field(description="p/p_max on the intake stroke (head → far)")
+    compression: list[float] = Field(description="p/p_max on the compression stroke (far → head)")
+    expansion: list[float] = Field(description="p/p_max on the expansion (working) stroke (head → far)")
+    exhaust: list[float] = Field(description="p/p_max on the exhaust stroke (far → head)")
+
+
+class DiagramSpec(StrictModel):
+    """A four-stroke indicator diagram as one table over the cycle: the points (s, p/p_max) in
+    the order the piston passes them, from the head dead centre where the cylinder fires."""
+
+    s: list[float] = Field(description="relative travel from the head, 0 → 1 → 0 → 1 → 0 over "
+                                        "expansion, exhaust, intake, compression")
+    p: list[float] = Field(description="p/p_max at each point")
+
+
+STROKE_ORDER = ("expansion", "exhaust", "intake", "compression")   # from the firing
+
+
+def _split_cycle(s: list[float], p: list[float], tol: float) -> dict[str, tuple[list, list]]:
+    """The strokes of a diagram given as one table over the cycle (:class:`DiagramSpec`):
+    {stroke: (s increasing, p/p_max)}. The travel grows to 1 on expansion, falls to 0 on
+    exhaust, grows on intake and falls on compression, back to where it began; a stroke ends
+    where s reaches its dead centre and the next begins there. A repeated s at a dead centre is
+    a vertical step of the diagram: allowed up to ``tol`` (the strokes must meet), as is the
+    step between the end and the start. Raises FieldError at diagram.s[i] / diagram.p[i]."""
+    n = len(s)
+    if len(p) != n:
+        raise FieldError(("diagram", "p"), f"needs {n} values, one per s (got {len(p)})")
+    if n < 5:
+        raise FieldError(("diagram", "s"), "needs at least 5 values (0, 1, 0, 1, 0: four strokes)")
+    for i, v in enumerate(s):
+        if not 0.0 <= v <= 1.0:
+            raise FieldError(("diagram", "s", i), f"{v:g} is outside the stroke (allowed: 0 … 1)")
+    if s[0] != 0.0:
+        raise FieldError(("diagram", "s", 0), f"{s[0]:g}: the diagram begins at the head dead "
+                                              f"centre where the cylinder fires (allowed: 0)")
+
+    def step(at: int, what: str, p0: float, p1: float) -> None:
+        if abs(p1 - p0) > tol:
+            raise FieldError(("diagram", "p", at), f"steps from p/p_max = {p0:g} to {p1:g} at "
+                             f"s = {s[at]:g}, {what}: the strokes do not meet (a jump of "
+                             f"{abs(p1 - p0):.4g}; allowed: at most join_tolerance = {tol:g})")
+
+    out: dict[str, tuple[list, list]] = {}
+    i = 0
+    for k, name in enumerate(STROKE_ORDER):
+        up = k % 2 == 0
+        target = 1.0 if up else 0.0
+        start = i
+        while k and start + 1 < n and s[start + 1] == s[i]:      # a vertical step
+            start += 1
+        if start > i:
+            step(start, f"where {STROKE_ORDER[k - 1]} ends and {name} begins", p[i], p[start])
+        m = start
+        while True:
+            if m + 1 >= n:
+                raise FieldError(("diagram", "s"), f"ends inside the {name} stroke (allowed: "
+                                 f"s runs 0 → 1 → 0 → 1 → 0 over expansion, exhaust, intake, "
+                                 f"compression)")
+            a, b = s[m], s[m + 1]
+            if (b <= a) if up else (b >= a):
+                raise FieldError(("diagram", "s", m + 1), f"{b:g} after {a:g}: on the {name} "
+                                 f"stroke s must {'grow' if up else 'fall'} to {target:g}")
+            m += 1
+            if s[m] == target:
+                break
+        seg_s, seg_p = list(s[start:m + 1]), list(p[start:m + 1])
+        out[name] = (seg_s, seg_p) if up else (seg_s[::-1], seg_p[::-1])
+        i = m
+    if i != n - 1:
+        raise FieldError(("diagram", "s", i + 1), "goes on after compression closed the cycle "
+                                                  "at s = 0 (allowed: four strokes)")
+    step(n - 1, "where compression ends and expansion began", p[0], p[-1])
+    return out
+
+
 class CylinderSpec(StrictModel):
-    """A cylinder with its indicator diagram (relative pressure against relative travel)."""
+    """A cylinder with its indicator diagram (relative pressure against relative travel): two
+    tables, one per direction of the piston (a compressor, a two-stroke engine), or four, one
+    per stroke of a four-stroke engine (``strokes``), or one table over the four-stroke cycle
+    (``diagram``)."""
 
     name: Name
     piston: Name = Field(description="slider link of an RRP dyad")
@@ -196,23 +307,104 @@ class CylinderSpec(StrictModel):
         "outer", description="the dead centre at the cylinder head: farther from (outer) or "
                              "nearer to (inner) the crank axis")
     interpolation: Literal["linear", "pchip", "natural-spline"] = "linear"
-    s: list[float] = Field(description="relative travel from the head dead centre, 0 … 1")
-    towards_head: list[float] = Field(description="p/p_max while the piston moves towards the head")
-    away_from_head: list[float] = Field(description="p/p_max while it moves away from the head")
+    s: list[float] | None = Field(None, description="relative travel from the head dead "
+                                                    "centre, 0 … 1 (not with diagram)")
+    towards_head: list[float] | None = Field(
+        None, description="p/p_max while the piston moves towards the head (with away_from_head)")
+    away_from_head: list[float] | None = Field(
+        None, description="p/p_max while it moves away from the head (with towards_head)")
+    strokes: StrokesSpec | None = Field(
+        None, description="a four-stroke diagram instead: p/p_max on intake, compression, "
+                          "expansion, exhaust (a cycle of 720°)")
+    diagram: DiagramSpec | None = Field(
+        None, description="a four-stroke diagram as one table over the cycle instead (s and "
+                          "p/p_max from the firing dead centre)")
+    fires_at_deg: Angle | None = Field(
+        None, description="four-stroke: about where the cylinder fires [deg]; it fires at its "
+                          "head dead centre nearest to this angle (within 90°)")
+    join_tolerance: Annotated[float, Field(ge=0), _within(0.0, 1.0, "")] = Field(
+        0.02, description="four-stroke: the largest jump of p/p_max allowed where two strokes "
+                          "meet at a dead centre")
+
+    _loop: dict | None = PrivateAttr(None)     # diagram's strokes: name → (s, p)
 
     @model_validator(mode="after")
     def _tables(self):
+        if self.diagram is not None:
+            given = [k for k in ("s", "towards_head", "away_from_head", "strokes")
+                     if getattr(self, k) is not None]
+            if given:
+                raise FieldError((given[0],), "give either diagram (one table over the cycle) "
+                                              "or s with its tables, not both")
+            self._loop = _split_cycle(self.diagram.s, self.diagram.p, self.join_tolerance)
+            return self
         s = self.s
+        if s is None:
+            raise FieldError(("s",), "missing required field (or give diagram: one table over "
+                                     "a four-stroke cycle)")
         if len(s) < 2:
             raise FieldError(("s",), "needs at least 2 values")
         if any(b <= a for a, b in zip(s, s[1:])):
             raise FieldError(("s",), "must be strictly increasing")
         if abs(s[0]) > 1e-12 or abs(s[-1] - 1) > 1e-12:
             raise FieldError(("s",), f"must span [0, 1] (got {s[0]} … {s[-1]})")
-        for key in ("towards_head", "away_from_head"):
-            if len(getattr(self, key)) != len(s):
-                raise FieldError((key,), f"needs {len(s)} values, one per s (got {len(getattr(self, key))})")
+        two = [k for k in ("towards_head", "away_from_head") if getattr(self, k) is not None]
+        if self.strokes is None:
+            for key in ("towards_head", "away_from_head"):
+                if key not in two:
+                    raise FieldError((key,), "missing: give towards_head and away_from_head, or "
+                                             "strokes (a four-stroke diagram)")
+            if self.fires_at_deg is not None:
+                raise FieldError(("fires_at_deg",), "goes with strokes (a four-stroke diagram); "
+                                                    "a two-table cylinder repeats every revolution")
+        elif two:
+            raise FieldError((two[0],), "give either towards_head and away_from_head (a "
+                                        "compressor, a two-stroke engine) or strokes (a "
+                                        "four-stroke engine), not both")
+        for key, values in self.tables().items():
+            if len(values) != len(s):
+                loc = ("strokes", key) if self.strokes is not None else (key,)
+                raise FieldError(loc, f"needs {len(s)} values, one per s (got {len(values)})")
+        if self.strokes is not None:
+            from flywheel.dynamics.loads import stroke_joins
+
+            tables = self.tables()
+            for end, begin, at, p_end, p_begin in stroke_joins(s, tables):
+                if abs(p_begin - p_end) > self.join_tolerance:
+                    raise FieldError(
+                        ("strokes", begin),
+                        f"begins at p/p_max = {p_begin:g} at s = {at:g}, where {end} ends at "
+                        f"{p_end:g}: the strokes do not meet (a jump of {abs(p_begin - p_end):.4g}; "
+                        f"allowed: at most join_tolerance = {self.join_tolerance:g}; a rise at "
+                        f"firing belongs inside the expansion table, just after s = 0)")
         return self
+
+    def tables(self) -> dict[str, list[float]]:
+        """The indicator tables by name: towards_head and away_from_head, or the four strokes
+        (p/p_max; each stroke at the cylinder's s, or of a diagram at its own travels)."""
+        if self._loop is not None:
+            return {k: self._loop[k][1] for k in ("intake", "compression", "expansion", "exhaust")}
+        if self.strokes is not None:
+            return {k: getattr(self.strokes, k) for k in ("intake", "compression", "expansion",
+                                                          "exhaust")}
+        return {k: v for k in ("towards_head", "away_from_head")
+                if (v := getattr(self, k)) is not None}
+
+    def stroke_tables(self) -> dict[str, tuple[list[float], list[float]]]:
+        """A four-stroke cylinder's strokes: name → (s increasing, p/p_max)."""
+        if self._loop is not None:
+            return {k: self._loop[k] for k in ("intake", "compression", "expansion", "exhaust")}
+        return {k: (self.s, v) for k, v in self.tables().items()}
+
+    def table_loc(self, key: str) -> tuple:
+        """The field path of the table ``key`` inside the cylinder."""
+        if self.diagram is not None:
+            return ("diagram", "p")
+        return ("strokes", key) if self.strokes is not None else (key,)
+
+    @property
+    def four_stroke(self) -> bool:
+        return self.strokes is not None or self.diagram is not None
 
 
 class ForceSpec(StrictModel):
@@ -359,6 +551,9 @@ def _check_references(case: Case) -> None:
         raise FieldError(("motor", "no_load_speed_rpm"),
                         f"{case.motor.no_load_speed_rpm:g} rpm is not above the mean speed "
                         f"{case.machine.omega_mean * 30 / math.pi:g} rpm")
+    if case.tabulated is not None and case.machine.cycle_deg != 360:
+        raise FieldError(("machine", "cycle_deg"), f"{case.machine.cycle_deg:g}° with [tabulated]: "
+                         "a table of positions covers one revolution (allowed: 360)")
     if case.tabulated is not None:   # no linkage: masses and loads live in [tabulated]
         for key in ("ground", "dyads", "points", "links", "cylinders", "forces", "couples"):
             if getattr(case, key):
@@ -389,8 +584,12 @@ def _check_references(case: Case) -> None:
         new_point(name, ("ground", name))
     new_point(case.crank.pivot, ("crank", "pivot"))
     new_point(case.crank.tip, ("crank", "tip"))
+    _check_pins(case)
+    for i, pin in enumerate(case.crank.pins):
+        new_point(pin.name, ("crank", "pins", i, "name"))
     new_link(case.crank.name, ("crank", "name"))
-    on: dict[str, set[str]] = {case.crank.name: {case.crank.pivot, case.crank.tip}}  # link → its points
+    on: dict[str, set[str]] = {case.crank.name: {case.crank.pivot, case.crank.tip}  # link → its points
+                               | {pin.name for pin in case.crank.pins}}
     pending = dict(case.points)
     sliders: set[str] = set()
 
@@ -454,12 +653,14 @@ def _check_references(case: Case) -> None:
             raise FieldError(("cylinders", i, "piston"), f"{c.piston!r} is not the slider of an RRP dyad "
                                                         f"(sliders: {', '.join(sorted(sliders)) or 'none'})")
     for i, c in enumerate(case.cylinders):
-        for key in ("towards_head", "away_from_head"):
-            low = min(getattr(c, key))
+        for key, values in c.tables().items():
+            low = min(values)
             if low * c.p_max < -ATM:
-                raise FieldError(("cylinders", i, key), f"p/p_max = {low:g} gives "
+                raise FieldError(("cylinders", i) + c.table_loc(key),
+                                 f"p/p_max = {low:g} gives "
                                  f"{low * c.p_max / 1e6:.4g} MPa gauge, below absolute vacuum "
                                  f"(allowed: p ≥ −0.101325 MPa gauge)")
+    _check_engine(case)
     for i, f in enumerate(case.forces):
         if f.slider not in sliders:
             raise FieldError(("forces", i, "slider"), f"{f.slider!r} is not the slider of an RRP dyad")
@@ -477,6 +678,64 @@ def _check_references(case: Case) -> None:
         if n in seen:
             raise FieldError(loc, f"load name {n!r} is used twice")
         seen.add(n)
+
+
+def _check_pins(case: Case) -> None:
+    """Two pins of one crankshaft at the same angle and throw are one point of the plane
+    mechanism: they must have one name (rods of an in-line engine's cylinders 1 and 4 share a
+    pin), so a second name there is refused."""
+    seen = [((0.0, case.crank_length), case.crank.tip, "the crank's tip")]
+    for i, pin in enumerate(case.crank.pins):
+        where = (pin.angle_deg % 360.0, pin.length if pin.length is not None else case.crank_length)
+        for (angle, length), name, what in seen:
+            gap = abs((where[0] - angle + 180.0) % 360.0 - 180.0)
+            if gap < 1e-9 and abs(where[1] - length) <= 1e-12 * length:
+                raise FieldError(("crank", "pins", i, "angle_deg"),
+                                 f"{pin.angle_deg:g}° puts pin {pin.name!r} where {what} {name!r} "
+                                 f"is (same angle and throw): pins at the same angle are one pin "
+                                 f"with one name (allowed: attach the rods to {name!r}, or give "
+                                 f"another angle)")
+        seen.append((where, pin.name, f"pin (crank.pins[{i}])"))
+
+
+def _check_engine(case: Case) -> None:
+    """A four-stroke diagram needs a cycle of 720° (or a multiple); a firing order names every
+    four-stroke cylinder once and nothing else, and then sets where each fires."""
+    cycle = case.machine.cycle_deg
+    four = [c.name for c in case.cylinders if c.four_stroke]
+    for i, c in enumerate(case.cylinders):
+        if c.four_stroke and round(cycle) % 720:
+            raise FieldError(("cylinders", i, "diagram" if c.diagram is not None else "strokes"),
+                             f"a four-stroke diagram spans 720° of "
+                             f"crank angle, the machine's cycle is {cycle:g}° (allowed: "
+                             f"machine.cycle_deg = 720, or a multiple of 720)")
+    order = case.machine.firing_order
+    if order is None:
+        return
+    names = {c.name: c for c in case.cylinders}
+    seen: set[str] = set()
+    for k, name in enumerate(order):
+        loc = ("machine", "firing_order", k)
+        if name not in names:
+            raise FieldError(loc, f"no cylinder named {name!r} (four-stroke cylinders: "
+                                  f"{', '.join(four) or 'none'})")
+        if not names[name].four_stroke:
+            raise FieldError(loc, f"cylinder {name!r} has no four-stroke diagram (strokes): only "
+                                  f"four-stroke cylinders fire in an order (four-stroke "
+                                  f"cylinders: {', '.join(four) or 'none'})")
+        if name in seen:
+            raise FieldError(loc, f"cylinder {name!r} is already in the order (each fires once "
+                                  f"per cycle)")
+        seen.add(name)
+    missing = [n for n in four if n not in seen]
+    if missing:
+        raise FieldError(("machine", "firing_order"), f"cylinder {missing[0]!r} is missing (a "
+                         f"firing order lists every four-stroke cylinder once: {', '.join(four)})")
+    for i, c in enumerate(case.cylinders):
+        if c.fires_at_deg is not None and c.name != order[0]:
+            raise FieldError(("cylinders", i, "fires_at_deg"), f"machine.firing_order sets where "
+                             f"cylinder {c.name!r} fires (allowed: fires_at_deg on the first "
+                             f"cylinder of the order, {order[0]!r}, only)")
 
 
 # -- plausibility: allowed, but a careful engineer would look twice --------------------------------
@@ -506,10 +765,12 @@ def plausibility_warnings(case: Case) -> list[str]:
     if not 1.0 <= rpm <= 20_000.0:
         out.append(f"machine: the crank speed {rpm:.6g} rpm is outside the usual 1 … 20 000 rpm")
     for i, c in enumerate(case.cylinders):
-        for key in ("towards_head", "away_from_head"):
-            low = min(getattr(c, key))
-            if low < 0:
-                out.append(f"cylinders[{i}].{key}: p/p_max down to {low:g} "
+        for key, values in c.tables().items():
+            low = min(values)
+            if low < 0 and key not in ("intake", "compression"):   # an engine draws its
+                # charge below atmospheric pressure, and compresses it from there
+                where = ".".join(c.table_loc(key))
+                out.append(f"cylinders[{i}].{where}: p/p_max down to {low:g} "
                            f"({low * c.p_max / 1e6:.4g} MPa gauge, a vacuum): the tables are "
                            "gauge pressures relative to p_max; check the sign")
     return out
@@ -598,11 +859,13 @@ def dyad_name(d) -> str:
 
 def to_mechanism(case: Case):
     """Build the kinematics description (:class:`flywheel.linkage.Mechanism`) of a case."""
-    from flywheel.linkage import RPR, RRP, RRR, Crank, Guide, LinkPoint, Mechanism
+    from flywheel.linkage import RPR, RRP, RRR, Crank, CrankPin, Guide, LinkPoint, Mechanism
 
     c = case.crank
+    pins = tuple(CrankPin(p.name, math.radians(p.angle_deg),
+                          p.length if p.length is not None else case.crank_length) for p in c.pins)
     crank = Crank(c.name, c.pivot, tuple(c.pivot_at), c.tip, case.crank_length,
-                  math.radians(c.start_angle_deg), -1 if c.rotation == "cw" else 1)
+                  math.radians(c.start_angle_deg), -1 if c.rotation == "cw" else 1, pins)
     dyads = []
     for d in case.dyads:
         br = 1 if d.branch == "+" else -1

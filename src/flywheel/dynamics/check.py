@@ -42,6 +42,7 @@ class CheckReport:
     point_analogues: dict | None = None   # point → (|v_q| [m/rad], |a_q| [m/rad²]) at those angles
     link_analogues: dict | None = None    # link → (ω_q [-], ε_q [1/rad]) at those angles
     tabulated: TabulatedCheck | None = None
+    firing_deg: dict | None = None        # four-stroke cylinder → where it fires [deg], in order
 
 
 def check_case(case) -> CheckReport:
@@ -53,7 +54,7 @@ def check_case(case) -> CheckReport:
     from flywheel.dynamics.pipeline import analyze
 
     n1 = case.machine.omega_mean / (2 * math.pi)
-    analyze(case, n_points=360)
+    firing = analyze(case, n_points=360).scalars.get("firing_deg")
     if case.tabulated is not None:
         return CheckReport(case=case, crank_speed_rps=n1, tabulated=_tabulated(case))
 
@@ -81,7 +82,7 @@ def check_case(case) -> CheckReport:
         links = {name: (lm.omega_q, lm.eps_q) for name, lm in k.links.items()}
     return CheckReport(case=case, crank_speed_rps=n1, mechanism=mech, sliders=tuple(sliders),
                        dead_centre_angles=tuple(angles), point_analogues=points,
-                       link_analogues=links)
+                       link_analogues=links, firing_deg=firing)
 
 
 def _tabulated(case) -> TabulatedCheck:

@@ -47,6 +47,8 @@ def _loads(ld: LoadsResult) -> dict[str, Column]:
         cols[f"s_{c.name}"] = Column(c.s, "-")
         cols[f"p_{c.name}"] = Column(c.p, "Pa")
         cols[f"F_{c.name}"] = Column(c.F, "N")
+        if c.stroke is not None:      # a four-stroke cylinder: which stroke at each node
+            cols[f"stroke_{c.name}"] = Column(c.stroke.astype(float), "-")
     for name, F in ld.forces.items():
         cols[f"F_{name}"] = Column(F, "N")
     return cols

@@ -269,7 +269,7 @@ class ForceAnalysis:
 def carriers(mech: Mechanism) -> dict[str, str]:
     """The link [name] that carries each named point, :data:`FRAME` for fixed points.
 
-    Fixed points and the crank's pivot: the frame; the crank pin: the crank; a point on a link
+    Fixed points and the crank's pivot: the frame; the crank pins: the crank; a point on a link
     (``LinkPoint``): its link. A dyad's own joint is shared by its two links; when a later
     group starts from it, the pin is taken to be carried by the RRR's ``link_a`` or by the
     RRP's slider (a pin on the piston): the later group's reaction acts on that link, and the
@@ -279,6 +279,8 @@ def carriers(mech: Mechanism) -> dict[str, str]:
     out = {name: FRAME for name in mech.ground}
     out[mech.crank.pivot] = FRAME
     out[mech.crank.tip] = mech.crank.name
+    for pin in mech.crank.pins:          # the further pins of a multi-throw crankshaft
+        out[pin.name] = mech.crank.name
     for p in mech.points:
         out[p.name] = p.link
     for d in mech.dyads:

@@ -5,6 +5,7 @@ angles where a technological force switches on or off.
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 
 import numpy as np
 
@@ -17,20 +18,23 @@ DEFAULT_POINTS = 3600
 MAX_POINTS = 100_000      # ≈ 0.5 GB of arrays; far past convergence (tests/test_dynamics.py)
 
 
-def closed_grid(n_points: int, extra: list[float]) -> np.ndarray:
-    """Closed grid over [0, 2π]: n_points uniform intervals plus the extra angles [rad] (taken
-    mod 2π; one closer than 1e-9 rad to a node merges with it, the smaller one stays).
+def closed_grid(n_points: int, extra: list[float], cycle: float = 2 * np.pi) -> np.ndarray:
+    """Closed grid over the cycle [0, Φ] (``cycle`` Φ [rad]: 2π, or 4π for a four-stroke
+    engine): n_points uniform intervals plus the extra angles [rad] (taken mod Φ; one closer than
+    1e-9 rad to a node merges with it, the smaller one stays).
 
     >>> closed_grid(4, [1.0, 7.0]).round(4).tolist()
     [0.0, 0.7168, 1.0, 1.5708, 3.1416, 4.7124, 6.2832]
+    >>> closed_grid(4, [7.0], cycle=4 * np.pi).round(4).tolist()
+    [0.0, 3.1416, 6.2832, 7.0, 9.4248, 12.5664]
     """
-    base = np.linspace(0.0, 2 * np.pi, n_points + 1)
-    extra = np.mod(np.asarray(extra, float), 2 * np.pi)
+    base = np.linspace(0.0, cycle, n_points + 1)
+    extra = np.mod(np.asarray(extra, float), cycle)
     phi = np.union1d(base, extra)
     # merge nodes closer than 1e-9 rad (an extra angle that is already a node)
     keep = np.concatenate([[True], np.diff(phi) > 1e-9])
     phi = phi[keep]
-    phi[-1] = 2 * np.pi
+    phi[-1] = cycle
     return phi
 
 
@@ -48,19 +52,22 @@ def grid_options(case, n_points: int, at_deg: list[float] | None) -> list[float]
 
 
 def report_index(phi: np.ndarray, a_deg: float) -> int:
-    """Grid index of the report angle ``a_deg`` [deg] (a node of the grid, taken mod 360°)."""
-    return int(np.argmin(np.abs(phi - math.radians(a_deg) % (2 * np.pi))))
+    """Grid index of the report angle ``a_deg`` [deg] (a node of the closed grid ``phi`` over
+    the cycle, taken mod the cycle: 360°, or 720° for a four-stroke engine)."""
+    return int(np.argmin(np.abs(phi - math.radians(a_deg) % (phi[-1] - phi[0]))))
 
 
-def standard_positions(mech) -> tuple[list[tuple[str, float]], dict]:
-    """The standard positions, by angle: every 30° and the dead centres of every slider, a dead
-    centre on a 30° position sharing its row (label "90° = 3 outer d.c."). Returns
-    ([(label, φ [rad])], {slider: [DeadCentre]})."""
+def standard_positions(mech, cycle: float = 2 * np.pi) -> tuple[list[tuple[str, float]], dict]:
+    """The standard positions over the cycle ``cycle`` [rad], by angle: every 30° (12 over 360°,
+    24 over 720°, as course projects number them) and the dead centres of every slider in every
+    revolution, a dead centre on a 30° position sharing its row (label "90° = 3 outer d.c.").
+    Returns ([(label, φ [rad])], {slider: [DeadCentre] of one revolution})."""
     sliders = [d.slider for d in mech.dyads if hasattr(d, "guide")]
     dcs = {s: dead_centres(mech, s) for s in sliders}
-    positions = [(f"{k * 30}°", math.radians(k * 30)) for k in range(12)]
+    revs = int(round(cycle / (2 * np.pi)))
+    positions = [(f"{k * 30}°", math.radians(k * 30)) for k in range(12 * revs)]
     for s, lst in dcs.items():
-        for dc in lst:
+        for dc in (replace(dc, phi=dc.phi + 2 * np.pi * r) for r in range(revs) for dc in lst):
             label = f"{s} {dc.kind} d.c."
             same = [i for i, (_, ph) in enumerate(positions) if abs(ph - dc.phi) < 1e-9]
             if same:     # a dead centre on a standard position: one row, both names
@@ -140,14 +147,16 @@ def refined(mech, kin: Kinematics, phi: np.ndarray) -> Kinematics:
 
 
 def linkage_grid(case, mech, dcs: dict, n_points: int, extra: list[float]) -> tuple[np.ndarray, Kinematics]:
-    """The closed grid with the ``extra`` angles [rad] as nodes, and the kinematics on it; the
-    angles where a technological force switches on or off are added as nodes too (found on the
-    first grid, then only those nodes are solved: :func:`refined`)."""
-    phi = closed_grid(n_points, extra)
+    """The closed grid over the case's cycle (machine.cycle) with the ``extra`` angles [rad] as
+    nodes, and the kinematics on it; the angles where a technological force switches on or off
+    are added as nodes too (found on the first grid, then only those nodes are solved:
+    :func:`refined`)."""
+    cycle = case.machine.cycle
+    phi = closed_grid(n_points, extra, cycle)
     kin = solve(mech, phi)
     if case.forces:
         switch = force_switch_angles(case.forces, mech, dcs, phi, kin)
         if switch:
-            phi = closed_grid(n_points, extra + switch)
+            phi = closed_grid(n_points, extra + switch, cycle)
             kin = refined(mech, kin, phi)
     return phi, kin

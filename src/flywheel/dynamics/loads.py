@@ -143,3 +143,61 @@ def gravity_moment(mass: float, gravity: np.ndarray, v_q: np.ndarray) -> np.ndar
     """Reduced moment of a link's weight [N·m]: M = m·g⃗·v_qS (design.md §2). The seed projects
     v_qS on a direction that turns with the crank instead (seeds README, defect 5)."""
     return mass * (v_q @ np.asarray(gravity, float))
+
+
+# -- four-stroke engines ---------------------------------------------------------------------
+
+FOUR_STROKES = ("intake", "compression", "expansion", "exhaust")
+"""The strokes of a four-stroke cylinder, in the order of its cycle (Φ = 4π): intake and
+expansion move the piston away from the head, compression and exhaust towards it."""
+
+
+def four_stroke_index(phi: np.ndarray, fires_at: float, far_after: float) -> np.ndarray:
+    """Index into :data:`FOUR_STROKES` of the stroke at each crank angle φ [rad] of a cylinder
+    that fires at ``fires_at`` [rad] (its head dead centre that begins expansion), with its far
+    dead centre ``far_after`` [rad] after each head dead centre (π for a centric slider-crank).
+
+    With ψ = (φ − φ_f) mod 4π the strokes are expansion [0, ψ_far), exhaust [ψ_far, 2π),
+    intake [2π, 2π + ψ_far), compression [2π + ψ_far, 4π) (the four-stroke cycle, two
+    revolutions, each stroke between dead centres; Артоболевский, «Теория механизмов и машин»,
+    the indicator diagram of a four-stroke engine). A node on a dead centre gets one of the two
+    strokes that meet there, never another.
+
+    >>> four_stroke_index(np.radians([0, 90, 180, 270, 360, 450, 540, 630]), 0.0, np.pi).tolist()
+    [2, 2, 3, 3, 0, 0, 1, 1]
+    """
+    psi = np.mod(np.asarray(phi, float) - fires_at, 4 * np.pi)
+    rev2 = psi >= 2 * np.pi
+    away = np.mod(psi, 2 * np.pi) < far_after
+    return np.where(rev2, np.where(away, 0, 1), np.where(away, 2, 3))
+
+
+def four_stroke_pressure(s: np.ndarray, stroke: np.ndarray,
+                         tables: dict[str, tuple[np.ndarray, np.ndarray]], method: str) -> np.ndarray:
+    """p/p_max [-] of a four-stroke cylinder at relative travel s ∈ [0, 1] from its head, each
+    node read from the table of its stroke (``stroke``: index into :data:`FOUR_STROKES`, as
+    :func:`four_stroke_index` gives; ``tables``: stroke name → (s, p/p_max) of that stroke,
+    s increasing from 0 to 1), with the interpolation ``method`` of :func:`interpolate_table`.
+    All four on the whole grid at once."""
+    values = np.stack([interpolate_table(np.asarray(tables[name][0], float),
+                                         np.asarray(tables[name][1], float), s, method)
+                       for name in FOUR_STROKES])
+    return np.take_along_axis(values, np.asarray(stroke)[None, :], axis=0)[0]
+
+
+def stroke_joins(s_table, tables: dict[str, list[float]]) -> list[tuple[str, str, float, float, float]]:
+    """Where the strokes of a four-stroke diagram meet at the dead centres: (stroke that ends,
+    stroke that begins, s there, p/p_max at the end, p/p_max at the start), in the cycle's
+    order — intake ends at s = 1 where compression begins, compression at s = 0 where expansion
+    begins, expansion at s = 1 where exhaust begins, exhaust at s = 0 where intake begins.
+
+    >>> t = {"intake": [0, 0], "compression": [1, 0.1], "expansion": [1, 0.2], "exhaust": [0.1, 0.3]}
+    >>> [(a, b, p, q) for a, b, _, p, q in stroke_joins([0, 1], t)]
+    [('intake', 'compression', 0, 0.1), ('compression', 'expansion', 1, 1), ('expansion', 'exhaust', 0.2, 0.3), ('exhaust', 'intake', 0.1, 0)]
+    """
+    out = []
+    for k, name in enumerate(FOUR_STROKES):
+        nxt = FOUR_STROKES[(k + 1) % 4]
+        end = -1 if name in ("intake", "expansion") else 0       # moving away ends at s = 1
+        out.append((name, nxt, s_table[end], tables[name][end], tables[nxt][end]))
+    return out

@@ -18,6 +18,7 @@ import numpy as np
 from flywheel.dynamics import loads as L
 from flywheel.dynamics import reduction, stages
 from flywheel.dynamics.columns import linkage_columns
+from flywheel.dynamics.engine import firing_angles, four_stroke_cylinder
 from flywheel.dynamics.grid import (DEFAULT_POINTS, grid_options, linkage_grid, report_index,
                                     slider_frame, standard_positions)
 from flywheel.dynamics.results import (CylinderResult, EnergyResult, LoadsResult, MotionResult,
@@ -43,7 +44,7 @@ def analyze(case, n_points: int = DEFAULT_POINTS, at_deg: list[float] | None = N
         return analyze_tabulated(case, n_points, at_deg, transients, motion)
     at_deg = grid_options(case, n_points, at_deg)
     mech = case.mechanism()
-    positions, dcs = standard_positions(mech)
+    positions, dcs = standard_positions(mech, case.machine.cycle)
     phi, kin = linkage_grid(case, mech, dcs, n_points,
                             [p for _, p in positions] + [math.radians(a) for a in at_deg])
     ld = linkage_loads(case, mech, dcs, kin)
@@ -105,7 +106,12 @@ def linkage_loads(case, mech, dcs: dict, kin) -> LoadsResult:
     cylinders: list[CylinderResult] = []
     forces: dict[str, np.ndarray] = {}
     warnings: list[str] = []
+    fires_at = firing_angles(case, mech, dcs) if any(c.four_stroke for c in case.cylinders) else {}
     for cy in case.cylinders:
+        if cy.four_stroke:
+            cylinders.append(four_stroke_cylinder(cy, mech, dcs, kin, fires_at[cy.name]))
+            M_parts[f"gas {cy.name}"] = cylinders[-1].M
+            continue
         d, u, base, head, far = slider_frame(mech, dcs, cy.piston, cy.head, f"cylinders {cy.name}: piston")
         x = (P[d.joint].r - base) @ u
         x_dot = P[d.joint].v_q @ u
@@ -199,7 +205,8 @@ def report_angles(at_deg: list[float], kin, ld: LoadsResult, red: ReductionResul
 def links_drawn(mech) -> tuple[tuple[str, tuple[str, ...]], ...]:
     """(link, its points) of every link of the kinematic scheme: the crank, each dyad's links,
     and the other points (centroids …) on the link that carries them."""
-    drawn = [(mech.crank.name, [mech.crank.pivot, mech.crank.tip])]
+    drawn = [(mech.crank.name, [mech.crank.pivot, mech.crank.tip]
+              + [pin.name for pin in mech.crank.pins])]
     for d in mech.dyads:
         if hasattr(d, "guide"):
             drawn.append((d.rod, [d.origin, d.joint]))

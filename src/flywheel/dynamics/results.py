@@ -39,6 +39,15 @@ class CylinderResult:
     table_away: np.ndarray      # p/p_max [-] while moving away from it
     p_max: float                # [Pa]
     head_phi: float             # crank angle of the head dead centre [rad]
+    # a four-stroke cylinder (None for two tables, one per direction): the stroke at each node,
+    # an index into flywheel.dynamics.loads.FOUR_STROKES (intake, compression, expansion,
+    # exhaust); each stroke's table p/p_max [-] at its travels stroke_s [-]; where it fires
+    # [rad, 0 … 4π). table_s, table_towards, table_away then hold expansion's travels and the
+    # compression and expansion tables at them.
+    stroke: np.ndarray | None = None
+    stroke_tables: dict[str, np.ndarray] | None = None
+    fires_at: float | None = None
+    stroke_s: dict[str, np.ndarray] | None = None
 
 
 @dataclass(frozen=True)
@@ -63,7 +72,7 @@ class ReductionResult:
     dJ_parts: dict[str, np.ndarray]   # link → its share of dJ_II/dφ [kg·m²/rad]
     J_II: np.ndarray                  # reduced inertia of the second group [kg·m²]
     dJ_II: np.ndarray                 # dJ_II/dφ [kg·m²/rad]
-    J_II_mean: float                  # cycle mean (1/2π)∮J_II dφ [kg·m²]
+    J_II_mean: float                  # cycle mean (1/Φ)∮J_II dφ [kg·m²]
     J_II_min: float                   # [kg·m²]
     J_II_max: float                   # [kg·m²]
     warnings: tuple[str, ...] = ()
@@ -338,6 +347,16 @@ class Results:
     forces: ForceResult | None = None        # the force analysis (kinetostatics)
     warnings: tuple[str, ...] = ()
 
+    @property
+    def cycle(self) -> float:
+        """The cycle Φ [rad]: the closed grid's span, 2π (4π for a four-stroke engine)."""
+        return float(self.phi[-1] - self.phi[0])
+
+    @property
+    def cycle_deg(self) -> int:
+        """The cycle Φ [deg]: 360, 720 …"""
+        return int(round(math.degrees(self.cycle)))
+
     def index_of(self, phi: float) -> int:
         """Grid index of the node at angle ``phi`` [rad] (report angles are grid nodes)."""
         return int(np.argmin(np.abs(self.phi - phi)))
@@ -369,6 +388,8 @@ class Results:
         out.update({
             "omega_mean": s.omega_mean,
             "n_points": int(self.phi.size),
+            "cycle_deg": self.cycle_deg,
+            **self._firing(),
             "cycle_work_resistance": e.cycle_work_resistance,
             "driving_moment": e.driving_moment,
             "balancing_moment": e.balancing_moment,
@@ -415,8 +436,14 @@ class Results:
         return [{**a, **self.forces.at_entry(self.at_index(a["phi_deg"]))} for a in self.at]
 
     def at_index(self, phi_deg: float) -> int:
-        """Grid index of the report angle ``phi_deg`` [deg] (a node, taken mod 360°)."""
-        return int(np.argmin(np.abs(self.phi - math.radians(phi_deg) % (2 * np.pi))))
+        """Grid index of the report angle ``phi_deg`` [deg] (a node, taken mod the cycle)."""
+        return int(np.argmin(np.abs(self.phi - math.radians(phi_deg) % self.cycle)))
+
+    def _firing(self) -> dict:
+        """{"firing_deg": {cylinder: where it fires [deg]}} of the four-stroke cylinders, in
+        firing order; {} if there are none."""
+        fires = sorted((c.fires_at, c.name) for c in self.cylinders if c.fires_at is not None)
+        return {"firing_deg": {n: math.degrees(a) for a, n in fires}} if fires else {}
 
     def to_document(self) -> dict:
         """The summary.json document, JSON-ready (:func:`json_ready`)."""

@@ -24,14 +24,15 @@ from flywheel.errors import InputError
 def reduced_inertia(phi: np.ndarray, J_parts: dict[str, np.ndarray],
                     dJ_parts: dict[str, np.ndarray], warnings=()) -> ReductionResult:
     """J_II and dJ_II/dφ as the sums of the links' shares (seed 000 §3.1), with J_II's cycle
-    mean (trapezoid rule) and extremes. J_parts [kg·m²], dJ_parts [kg·m²/rad] by link."""
+    mean (1/Φ)·∮J_II dφ over the closed grid's cycle Φ (trapezoid rule) and extremes. J_parts
+    [kg·m²], dJ_parts [kg·m²/rad] by link."""
     if J_parts:
         J_II, dJ_II = reduction.reduced_inertia({k: (J_parts[k], dJ_parts[k]) for k in J_parts})
     else:
         J_II, dJ_II = np.zeros_like(phi), np.zeros_like(phi)
     return ReductionResult(
         J_parts=J_parts, dJ_parts=dJ_parts, J_II=J_II, dJ_II=dJ_II,
-        J_II_mean=float(energy.cumulative_work(J_II, phi)[-1] / (2 * np.pi)),
+        J_II_mean=float(energy.cumulative_work(J_II, phi)[-1] / (phi[-1] - phi[0])),
         J_II_min=float(np.min(J_II)), J_II_max=float(np.max(J_II)), warnings=tuple(warnings))
 
 
@@ -39,8 +40,11 @@ def work_and_energy(phi: np.ndarray, loads: LoadsResult, red: ReductionResult,
                     machine) -> EnergyResult:
     """The constant moment that balances the cycle, the works A_D, A_C, A, and ΔT_I(φ) with its
     global extremes (Merzalov; seed 000 §3.2.7, §4). ``machine``: the case's [machine]
-    (ω_m, balance). Raises InputError if the loads' work has the wrong sign for the balance."""
+    (ω_m, balance). The cycle Φ is the closed grid's (2π, or 4π for a four-stroke engine):
+    M = −(1/Φ)·∮ M_known dφ. Raises InputError if the loads' work has the wrong sign for the
+    balance."""
     omega_m = machine.omega_mean
+    cycle = phi[-1] - phi[0]
     zero = np.zeros_like(phi)
     M_parts, W_parts = loads.M_parts, loads.W_parts
     warnings: list[str] = []
@@ -72,8 +76,8 @@ def work_and_energy(phi: np.ndarray, loads: LoadsResult, red: ReductionResult,
         driving_moment = M_const
     else:
         A_D, A_C = A_known, A_const
-        cycle_work_resistance = M_const * 2 * np.pi
-        driving_moment = work_known / (2 * np.pi)
+        cycle_work_resistance = M_const * cycle
+        driving_moment = work_known / cycle
     T_II, dT_I = energy.first_group_energy_change(A, red.J_II, omega_m)
     phi_max, dT_max = energy.extreme(dT_I, phi, "max")
     phi_min, dT_min = energy.extreme(dT_I, phi, "min")

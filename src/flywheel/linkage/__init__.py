@@ -6,6 +6,7 @@ come from the differentiated closure equations, exactly, vectorized over the φ 
 """
 from flywheel.linkage.mechanism import (
     Crank,
+    CrankPin,
     Guide,
     LinkPoint,
     Mechanism,
@@ -16,6 +17,6 @@ from flywheel.linkage.mechanism import (
 from flywheel.linkage.solve import Kinematics, LinkMotion, PointMotion, solve
 
 __all__ = [
-    "Crank", "Guide", "LinkPoint", "Mechanism", "RPR", "RRP", "RRR",
+    "Crank", "CrankPin", "Guide", "LinkPoint", "Mechanism", "RPR", "RRP", "RRR",
     "Kinematics", "LinkMotion", "PointMotion", "solve",
 ]

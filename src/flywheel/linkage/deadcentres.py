@@ -53,6 +53,9 @@ def dead_centres(mech: Mechanism, slider: str, n_grid: int = 721) -> list[DeadCe
     phi = np.linspace(0.0, 2 * np.pi, n_grid)
     k = solve(mech, phi)
     v = k.points[d.joint].v_q @ u
+    # the closing node is φ = 0 again: take its value from there, so a dead centre at φ = 0,
+    # where v is zero up to round-off of either sign at 0 and at 2π, is found whatever the signs
+    v[-1] = v[0]
     idx = np.nonzero(np.sign(v[:-1]) != np.sign(v[1:]))[0]
     if idx.size == 0:   # a slider that never moves (driven from a fixed point) has none
         return []

@@ -9,12 +9,24 @@ from dataclasses import dataclass, field
 
 
 @dataclass(frozen=True)
+class CrankPin:
+    """A further crank pin (throw) on the crank's shaft: point ``name`` at ``length`` [m] from
+    the pivot, at ``angle`` [rad] to the crank's tip, counter-clockwise positive; it turns with
+    the crank, at θ1 + angle."""
+
+    name: str
+    angle: float
+    length: float
+
+
+@dataclass(frozen=True)
 class Crank:
     """The driving link.
 
     name: link name; pivot: fixed point name at ``pivot_at`` [m]; tip: the crank pin's name;
     length [m]; start_angle [rad] from the +x axis at φ = 0; direction +1 (counter-clockwise)
-    or −1 (clockwise). The crank's angle is θ1 = start_angle + direction·φ.
+    or −1 (clockwise). The crank's angle is θ1 = start_angle + direction·φ. ``pins``: further
+    crank pins of a multi-throw crankshaft (:class:`CrankPin`), points of the same link.
     """
 
     name: str
@@ -24,6 +36,7 @@ class Crank:
     length: float
     start_angle: float
     direction: int = 1
+    pins: tuple[CrankPin, ...] = ()
 
 
 @dataclass(frozen=True)

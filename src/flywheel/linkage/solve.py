@@ -83,7 +83,8 @@ def _fail_where(bad: np.ndarray, phi: np.ndarray, what: str, dyad: str | None = 
 
 
 def _crank(mech: Mechanism, phi: np.ndarray, points: dict, links: dict) -> None:
-    """A = O + l·(cos θ1, sin θ1), θ1 = θ0 + s·φ: v_q = s·l·(−sin, cos), a_q = −l·(cos, sin)."""
+    """A = O + l·(cos θ1, sin θ1), θ1 = θ0 + s·φ: v_q = s·l·(−sin, cos), a_q = −l·(cos, sin);
+    each further pin likewise at its own length and at θ1 + β (β its angle to the tip)."""
     c = mech.crank
     n = phi.size
     theta = c.start_angle + c.direction * phi
@@ -93,6 +94,12 @@ def _crank(mech: Mechanism, phi: np.ndarray, points: dict, links: dict) -> None:
     zero = np.zeros((n, 2))
     points[c.pivot] = PointMotion(origin, zero, zero)
     points[c.tip] = PointMotion(origin + c.length * cs, c.direction * c.length * sn, -c.length * cs)
+    for pin in c.pins:
+        th = theta + pin.angle
+        pc = np.stack([np.cos(th), np.sin(th)], axis=1)
+        ps = np.stack([-np.sin(th), np.cos(th)], axis=1)
+        points[pin.name] = PointMotion(origin + pin.length * pc, c.direction * pin.length * ps,
+                                       -pin.length * pc)
     links[c.name] = LinkMotion(theta, np.full(n, float(c.direction)), np.zeros(n), c.pivot)
 
 

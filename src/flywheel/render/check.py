@@ -47,6 +47,9 @@ def print_check(report, console=None) -> None:
     console.print(f"[bold]{case.title or 'case'}[/bold]  ({case.source})" if case.source
                   else f"[bold]{case.title or 'case'}[/bold]")
     console.print(_crank_line(report, m))
+    if m.cycle_deg != 360 or report.firing_deg:
+        console.print(f"cycle Φ = {m.cycle_deg:g}°" + ("; fires: " + ", ".join(
+            f"{n} at {a:.6g}°" for n, a in report.firing_deg.items()) if report.firing_deg else ""))
     c = mech.crank
     t = Table(title="Mechanism", show_lines=False)
     for col in ("group", "links", "points", "data"):
@@ -54,6 +57,9 @@ def print_check(report, console=None) -> None:
     t.add_row("crank", c.name, f"{c.pivot} → {c.tip}",
               f"l = {c.length:.6g} m, θ0 = {math.degrees(c.start_angle):g}°, "
               f"{'cw' if c.direction < 0 else 'ccw'}")
+    for pin in c.pins:
+        t.add_row("crank pin", c.name, f"{c.pivot} → {pin.name}",
+                  f"l = {pin.length:.6g} m, at {math.degrees(pin.angle):g}° to {c.tip}")
     for spec, d in zip(case.dyads, mech.dyads):
         if isinstance(spec, RRPSpec):
             t.add_row(f"RRP {d.name}", f"{d.rod}, {d.slider}", f"{d.origin} → {d.joint}",
@@ -86,7 +92,7 @@ def print_check(report, console=None) -> None:
                                  nm.heading("p_max", si="MPa"), "head", "interpolation", "points"))
         for cy in case.cylinders:
             t.add_row(cy.name, cy.piston, f"{cy.bore:g}", f"{cy.p_max / 1e6:g}", cy.head,
-                      cy.interpolation, str(len(cy.s)))
+                      cy.interpolation, str(len(cy.s if cy.s is not None else cy.diagram.s)))
         console.print(t)
 
     if report.sliders:

@@ -108,7 +108,7 @@ T = {
         "first_group": "first group", "centroid": "centroid",
         "balance_word": {"driving": "driving", "resistance": "resistance"},
         "balance_row": "constant moment balancing the cycle",
-        "balance": "- {A_C} = ∮ {M_C} dφ = {A} {uJ}; {M_D} = −{A_C}/2π = {M} {uM} (the cycle balance)",
+        "balance": "- {A_C} = ∮ {M_C} dφ = {A} {uJ}; {M_D} = −{A_C}/Φ = {M} {uM} (the cycle balance, Φ = {cycle}°)",
         "extremes": ("- {dT} max = {vmax} {uJ} at {amax}°, min = {vmin} {uJ} at {amin}° (global "
                      "extremes); {span} = {v} {uJ}"),
         "merzalov": "- Merzalov: {J} = {span}/(δ·{w}²) = {v} {uI}, δ achieved {d}",
@@ -192,7 +192,7 @@ T = {
         "first_group": "первая группа", "centroid": "центр масс",
         "balance_word": {"driving": "движущий", "resistance": "сопротивления"},
         "balance_row": "постоянный момент из условия цикла",
-        "balance": "- {A_C} = ∮ {M_C} dφ = {A} {uJ}; {M_D} = −{A_C}/2π = {M} {uM} (из условия цикла)",
+        "balance": "- {A_C} = ∮ {M_C} dφ = {A} {uJ}; {M_D} = −{A_C}/Φ = {M} {uM} (из условия цикла, Φ = {cycle}°)",
         "extremes": ("- {dT} max = {vmax} {uJ} при {amax}°, min = {vmin} {uJ} при {amin}° "
                      "(глобальные экстремумы); {span} = {v} {uJ}"),
         "merzalov": "- по Мерцалову: {J} = {span}/(δ·{w}²) = {v} {uI}, достигнутый δ {d}",
@@ -440,7 +440,8 @@ def build_document(results, lang: str = "en", plots: list[str] | None = None,
     b.add(Bullets((
         t["balance"].format(A_C=sym("cycle_work_resistance"), M_C=sym("M_C"), M_D=sym("driving_moment"),
                             A=g(s["cycle_work_resistance"], 6), uJ=u("cycle_work_resistance"),
-                            M=g(s["driving_moment"], 6), uM=u("driving_moment"))[2:],
+                            M=g(s["driving_moment"], 6), uM=u("driving_moment"),
+                            cycle=g(s.get("cycle_deg", 360.0), 6))[2:],
         t["extremes"].format(dT=sym("dT_I"), vmax=g(s["delta_T_I_max"], 6), amax=f"{s['phi_delta_T_I_max_deg']:.2f}",
                              vmin=g(s["delta_T_I_min"], 6), amin=f"{s['phi_delta_T_I_min_deg']:.2f}",
                              span=sym("delta_T_max"), v=g(s["delta_T_max"], 6), uJ=u("delta_T_max"))[2:],
@@ -587,9 +588,20 @@ def _input_of_case(b: _Builder, case, t: dict, lang: str) -> None:
                 [[c.name, c.piston, g(c.bore, 6), g(c.p_max, 6),
                   nm.DEAD_CENTRES[c.head][lang == "ru"]] for c in case.cylinders])
         for c in case.cylinders:
-            b.table(t["indicator"].format(c=c.name), [nm.symbol("s_{cylinder}", lang),
-                                                      f"{nm.symbol('p_rel', lang)} ↑", f"{nm.symbol('p_rel', lang)} ↓"],
-                    [[g(s_, 4), g(a, 4), g(w, 4)] for s_, a, w in zip(c.s, c.towards_head, c.away_from_head)])
+            sym_s, sym_p = nm.symbol("s_{cylinder}", lang), nm.symbol("p_rel", lang)
+            if getattr(c, "strokes", None) is not None:      # a four-stroke cylinder
+                st = c.strokes
+                names = ("intake", "compression", "expansion", "exhaust")
+                b.table(t["indicator"].format(c=c.name), [sym_s] + [f"{sym_p} {n}" for n in names],
+                        [[g(s_, 4)] + [g(getattr(st, n)[k], 4) for n in names]
+                         for k, s_ in enumerate(c.s)])
+            elif getattr(c, "diagram", None) is not None:    # one table over the cycle
+                b.table(t["indicator"].format(c=c.name), [sym_s, sym_p],
+                        [[g(s_, 4), g(p_, 4)] for s_, p_ in zip(c.diagram.s, c.diagram.p)])
+            else:
+                b.table(t["indicator"].format(c=c.name), [sym_s, f"{sym_p} ↑", f"{sym_p} ↓"],
+                        [[g(s_, 4), g(a, 4), g(w, 4)]
+                         for s_, a, w in zip(c.s, c.towards_head, c.away_from_head)])
     if case.forces or case.couples:
         b.add(Heading(3, f"1.5. {t['forces']}"))
         rows = [[nm.load_name(f"force {f.name}", lang), f.slider, g(f.magnitude, 6), u("force_magnitude")]

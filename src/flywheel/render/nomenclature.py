@@ -92,6 +92,12 @@ TERMS: dict[str, Term] = {
     "A": _t("A", "$A$", "J", "total work A", "суммарная работа A"),
     "s_{cylinder}": _t("s", "$s$", "-", "relative piston travel from the head, {x}",
                        "относительное перемещение поршня от головки, {x}"),
+    "stroke_{cylinder}": _t("такт", "", "-", "stroke of {x}: 0 intake, 1 compression, 2 expansion, "
+                            "3 exhaust", "такт {x}: 0 впуск, 1 сжатие, 2 расширение, 3 выпуск",
+                            "stroke"),
+    "cycle_deg": _t("Φ", r"$\Phi$", "deg", "the cycle", "цикл"),
+    "firing_deg": _t("φ_всп", r"$\varphi_{всп}$", "deg", "where each cylinder fires",
+                     "угол вспышки в каждом цилиндре", "φ_fire"),
     "p_{cylinder}": _t("p", "$p$", "Pa", "gas pressure, {x}", "давление газа, {x}"),
     "p_rel": _t("p/p_max", r"$p/p_{max}$", "-", "relative gas pressure p/p_max",
                 "относительное давление газа p/p_max"),

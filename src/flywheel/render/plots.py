@@ -193,9 +193,10 @@ def _phi_deg(results) -> np.ndarray:
     return np.degrees(results.phi)
 
 
-def _phi_axis(ax, lang: str, label: bool = True) -> None:
-    ax.set_xlim(0.0, 360.0)
-    ax.set_xticks(np.arange(0, 361, 30))
+def _phi_axis(ax, lang: str, label: bool = True, cycle_deg: int = 360) -> None:
+    """φ over the cycle (360°, 720° …), a tick every 30° per revolution."""
+    ax.set_xlim(0.0, float(cycle_deg))
+    ax.set_xticks(np.arange(0, cycle_deg + 1, 30 * cycle_deg // 360))
     if label:
         ax.set_xlabel(nm.axis("phi_deg", lang))
 
@@ -303,7 +304,7 @@ def figure_positions(results, lang: str = "en"):
             axes[2].set_ylabel(nm.axis("slider_travel", lang))
             _legend(axes[2])
         for ax in axes:
-            _phi_axis(ax, lang, label=ax is axes[-1])
+            _phi_axis(ax, lang, label=ax is axes[-1], cycle_deg=results.cycle_deg)
         axes[0].set_title(_title(results, _t(lang, "positions")))
         return fig
     return _drawn(build)
@@ -328,8 +329,8 @@ def _analogue_figure(results, lang, which: str):
         ax2.set_ylabel(nm.axis(link_key, lang))
         for ax in (ax1, ax2):
             _legend(ax)
-        _phi_axis(ax1, lang, label=False)
-        _phi_axis(ax2, lang)
+        _phi_axis(ax1, lang, label=False, cycle_deg=results.cycle_deg)
+        _phi_axis(ax2, lang, cycle_deg=results.cycle_deg)
         ax1.set_title(_title(results, _t(lang, which)))
         return fig
     return _drawn(build)
@@ -364,8 +365,8 @@ def figure_J_II(results, lang: str = "en"):
         ax2.set_ylabel(nm.axis("dJ_II", lang))
         for ax in (ax1, ax2):
             _legend(ax)
-        _phi_axis(ax1, lang, label=False)
-        _phi_axis(ax2, lang)
+        _phi_axis(ax1, lang, label=False, cycle_deg=results.cycle_deg)
+        _phi_axis(ax2, lang, cycle_deg=results.cycle_deg)
         ax1.set_title(_title(results, nm.name_tex("J_II", lang)))
         return fig
     return _drawn(build)
@@ -412,7 +413,7 @@ def figure_piston_forces(results, lang: str = "en"):
             line, = ax.plot(deg, c.F, color=f"C{k}",
                             label=_t(lang, "F_gas", p=c.piston, c=c.name))
             for a in results.at:
-                i = results.index_of(math.radians(a["phi_deg"]) % (2 * math.pi))
+                i = results.index_of(math.radians(a["phi_deg"]) % results.cycle)
                 ax.plot(deg[i], c.F[i], "o", color=line.get_color(),
                         label=_t(lang, "F_at", c=c.name, a=a["phi_deg"], v=float(c.F[i]),
                                  u=nm.unit_of(f"F_{c.name}", lang)))
@@ -422,7 +423,7 @@ def figure_piston_forces(results, lang: str = "en"):
                         label=_t(lang, "F_tech", n=nm.member(key, lang)))
         ax.axhline(0.0, color="0.3", linewidth=0.6)
         ax.set_ylabel(nm.axis("F_{load}", lang))
-        _phi_axis(ax, lang)
+        _phi_axis(ax, lang, cycle_deg=results.cycle_deg)
         _legend(ax)
         ax.set_title(_title(results, _t(lang, "forces")))
         return fig
@@ -463,7 +464,7 @@ def figure_reduced_moments(results, lang: str = "en"):
             axes[1].set_ylabel(nm.axis("M {load}", lang))
         for a in axes:
             _legend(a)
-            _phi_axis(a, lang, label=a is axes[-1])
+            _phi_axis(a, lang, label=a is axes[-1], cycle_deg=results.cycle_deg)
         ax.set_title(_title(results, _t(lang, "moments")))
         return fig
     return _drawn(build)
@@ -491,7 +492,7 @@ def figure_works(results, lang: str = "en"):
                 ax.axvline(a, color="C3", linestyle=":", linewidth=0.8)
         ax.axhline(0.0, color="0.3", linewidth=0.6)
         ax.set_ylabel(_t(lang, "W_axis", u=nm.unit_of("A", lang)))
-        _phi_axis(ax, lang)
+        _phi_axis(ax, lang, cycle_deg=results.cycle_deg)
         _legend(ax)
         ax.set_title(_title(results, _t(lang, "works")))
         return fig
@@ -521,7 +522,7 @@ def figure_omega(results, lang: str = "en"):
                    label=_t(lang, "value", s=nm.tex("omega_mean", lang), v=sc["omega_mean"],
                             u=nm.unit_of("omega_mean", lang)))
         ax.set_ylabel(nm.axis("omega", lang))
-        _phi_axis(ax, lang)
+        _phi_axis(ax, lang, cycle_deg=results.cycle_deg)
         _legend(ax)
         ax.set_title(_title(results, _t(lang, "omega")))
         return fig
@@ -535,7 +536,7 @@ def figure_epsilon(results, lang: str = "en"):
         ax.plot(_phi_deg(results), results.columns["epsilon"].values, color="k", label=_t(lang, "e"))
         ax.axhline(0.0, color="0.3", linewidth=0.6)
         ax.set_ylabel(nm.axis("epsilon", lang))
-        _phi_axis(ax, lang)
+        _phi_axis(ax, lang, cycle_deg=results.cycle_deg)
         _legend(ax)
         ax.set_title(_title(results, _t(lang, "epsilon")))
         return fig
@@ -705,7 +706,7 @@ def figure_scheme(results, lang: str = "en"):
             if k >= n:
                 ax.set_visible(False)
                 continue
-            i = results.index_of(math.radians(angles[k]) % (2 * math.pi))
+            i = results.index_of(math.radians(angles[k]) % results.cycle)
             _draw_scheme(ax, results, i, scale, lang)
             ax.set_title(_title(results, _t(lang, "scheme", a=angles[k])) if n == 1
                          else _t(lang, "scheme", a=angles[k]))
@@ -735,7 +736,8 @@ def figures(results, lang: str = "en"):
     if results.kinematics is None:   # tabulated kinematics (issue 5): no positions to draw
         out = out[-1:]
     for c in results.cylinders:
-        out.append((f"indicator_{_safe(c.name)}.png", lambda c=c: figure_indicator(results, c, lang)))
+        out.append((f"indicator_{_safe(c.name)}.png", lambda c=c: figure_indicator(results, c, lang)
+                    if c.stroke is None else _engine_plots().figure_indicator_strokes(results, c, lang)))
     if results.cylinders or any(k.startswith("F_") for k in results.columns):
         out.append(("piston_forces.png", lambda: figure_piston_forces(results, lang)))
     out += [
@@ -747,6 +749,12 @@ def figures(results, lang: str = "en"):
     if results.kinematics is not None:
         out.append(("scheme.png", lambda: figure_scheme(results, lang)))
     return out
+
+
+def _engine_plots():
+    from flywheel.render import plots_engine
+
+    return plots_engine
 
 
 def all_figures(results, lang: str = "en"):
@@ -775,6 +783,17 @@ def _save_some(results, folder: Path, lang: str, indices: list[int]) -> None:
                             pil_kwargs={"compress_level": 1})
             finally:
                 fig.clear()
+                _release(fig)
+
+
+def _release(fig) -> None:
+    """Let pyplot forget a figure it made (plots_extra's are pyplot's): it keeps every open
+    figure, and past 20 it warns (a RuntimeWarning, an error in the tests)."""
+    import sys
+
+    plt = sys.modules.get("matplotlib.pyplot")
+    if plt is not None:
+        plt.close(fig)
 
 
 _HEAVY = ("energy_mass.png", "positions.png")

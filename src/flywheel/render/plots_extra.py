@@ -192,8 +192,9 @@ def figure_energy_mass(results, lang: str = "en"):
                                   uJ=uJ, J=J_sym, w=w_m, J_v=s["J_required"], uI=uI))
     bx.set_xlabel(nm.axis("phi_deg", lang))
     bx.set_ylabel(nm.axis("dT_I", lang))
-    bx.set_xlim(0, 360)
-    bx.set_xticks(np.arange(0, 361, 30))
+    cycle = results.cycle_deg
+    bx.set_xlim(0, cycle)
+    bx.set_xticks(np.arange(0, cycle + 1, 30 * cycle // 360))
     bx.grid(True, alpha=0.3)
     bx.legend(fontsize=8, loc="best")
     bx.set_title(f"(c) {_f(t, 'merz', dT=dT_sym)}", fontsize=10)

@@ -23,8 +23,17 @@ def table_csv(results) -> str:
     header = ",".join(csv_header(key) for key in cols)
     data = np.column_stack([c.values for c in cols.values()])
     lines = [header]
-    lines += [",".join(_fmt(v) for v in row) for row in data]
+    lines += _rows(data)
     return "\n".join(lines) + "\n"
+
+
+def _rows(data: np.ndarray) -> list[str]:
+    """Each row of ``data`` as :func:`_fmt` writes its numbers, joined by commas: one format
+    operation per row (half the time of one per number; the in-line four's table has 150
+    columns), the same text."""
+    data = np.where(data == 0, 0.0, data)          # −0.0 is written 0, as _fmt does
+    fmt = ",".join(["%.12g"] * data.shape[1])
+    return [fmt % tuple(row) for row in data.tolist()]
 
 
 def positions_csv(results) -> str:

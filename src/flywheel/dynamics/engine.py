@@ -1,0 +1,113 @@
+"""Four-stroke cylinders: where each fires in the 720° cycle, and its gas force stroke by stroke.
+
+A four-stroke cylinder's cycle is two revolutions: expansion (the working stroke) from the
+head dead centre where it fires, exhaust, intake, compression (Артоболевский, «Теория
+механизмов и машин», the dynamics of a machine with an internal-combustion engine; the
+cycle Φ = 4π). Each stroke reads its own indicator table against the relative travel s from
+the head (:func:`flywheel.dynamics.loads.four_stroke_pressure`); the gas force pushes the piston
+away from the head as in any cylinder. Where each cylinder fires is set by a firing order
+(``machine.firing_order``: each fires at its first head dead centre after the one before) or
+by each cylinder's ``fires_at_deg``.
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from flywheel.dynamics import loads as L
+from flywheel.dynamics.grid import slider_frame
+from flywheel.dynamics.results import CylinderResult
+from flywheel.errors import InputError
+
+_TWO_REV = 4 * np.pi
+_SAME = 1e-9            # rad: two firings closer than this are the same instant
+
+
+def _head_centre(mech, dcs: dict, cy) -> float:
+    """The crank angle [rad, 0 … 2π) of the cylinder's head dead centre."""
+    return slider_frame(mech, dcs, cy.piston, cy.head, f"cylinders {cy.name}: piston")[3].phi
+
+
+def _deg(phi: float) -> str:
+    return f"{math.degrees(phi):.6g}°"
+
+
+def firing_angles(case, mech, dcs: dict) -> dict[str, float]:
+    """φ_f [rad, 0 … 4π) of each four-stroke cylinder of ``case``: the head dead centre that
+    begins its expansion stroke.
+
+    With ``machine.firing_order`` the first cylinder of the order fires at its head dead centre
+    nearest to its ``fires_at_deg`` (default: in the first revolution), and each next one at
+    its first head dead centre after the one before; the order must go round the cycle once
+    (every firing before the first cylinder's next one). Without an order, each cylinder fires
+    at its head dead centre nearest to its ``fires_at_deg`` (default: in the first revolution).
+    Raises InputError naming the field for an order that does not fit the crank's pins, or a
+    ``fires_at_deg`` far (more than 90°) from a head dead centre."""
+    four = [c for c in case.cylinders if c.four_stroke]
+    idx = {c.name: i for i, c in enumerate(case.cylinders)}
+    heads = {c.name: _head_centre(mech, dcs, c) for c in four}
+
+    def nearest(c) -> float:
+        h = heads[c.name]
+        if c.fires_at_deg is None:
+            return h
+        want = math.radians(c.fires_at_deg) % _TWO_REV
+        best = min((h, h + 2 * np.pi), key=lambda a: abs((want - a + np.pi * 2) % _TWO_REV - 2 * np.pi))
+        gap = abs((want - best + 2 * np.pi) % _TWO_REV - 2 * np.pi)
+        if gap > np.pi / 2 + 1e-12:
+            raise InputError(
+                f"cylinders[{idx[c.name]}].fires_at_deg: {c.fires_at_deg:g}° is {math.degrees(gap):.4g}° "
+                f"from the nearest head dead centre of piston {c.piston} ({_deg(h)}, "
+                f"{_deg(h + 2 * np.pi)}): a cylinder fires at its head dead centre (allowed: "
+                f"within 90° of one)")
+        return best
+
+    order = case.machine.firing_order
+    if order is None:
+        return {c.name: nearest(c) for c in four}
+    by_name = {c.name: c for c in four}
+    first = nearest(by_name[order[0]])
+    out = {order[0]: first}
+    prev = first
+    for k, name in enumerate(order[1:], start=1):
+        h = heads[name]
+        step = (h - prev) % (2 * np.pi)          # its next head dead centre after `prev`
+        if step < _SAME:
+            step += 2 * np.pi
+        at = prev + step
+        if at >= first + _TWO_REV - _SAME:
+            listing = ", ".join(f"{n} at {_deg(heads[n])}/{_deg(heads[n] + 2 * np.pi)}" for n in order)
+            raise InputError(
+                f"machine.firing_order: {'-'.join(order)} does not fit in one 720° cycle: "
+                f"cylinder {name} (position {k + 1}) would fire at {_deg(at)}, not before cylinder "
+                f"{order[0]} fires again at {_deg(first + _TWO_REV)} (allowed: an order in which "
+                f"each cylinder reaches its head dead centre after the one before, all within "
+                f"720°; the head dead centres: {listing})")
+        out[name] = at
+        prev = at
+    return {n: a % _TWO_REV for n, a in out.items()}
+
+
+def four_stroke_cylinder(cy, mech, dcs: dict, kin, fires_at: float) -> CylinderResult:
+    """A four-stroke cylinder on the grid of ``kin``: the stroke at each node
+    (:func:`~flywheel.dynamics.loads.four_stroke_index`), p = p_max·(its table at s), the gas
+    force F = p·πd²/4 away from the head and its reduced moment (seed 000 §3.2.4–3.2.6, with
+    four tables instead of two). ``fires_at`` [rad]: where it fires (:func:`firing_angles`)."""
+    d, u, base, head, far = slider_frame(mech, dcs, cy.piston, cy.head, f"cylinders {cy.name}: piston")
+    P = kin.points[d.joint]
+    x, x_dot = (P.r - base) @ u, P.v_q @ u
+    tables = {k: (np.asarray(a, float), np.asarray(b, float))
+              for k, (a, b) in cy.stroke_tables().items()}
+    s = L.relative_travel(x, head.x, far.x)
+    stroke = L.four_stroke_index(kin.phi, fires_at, (far.phi - head.phi) % (2 * np.pi))
+    p = L.four_stroke_pressure(s, stroke, tables, cy.interpolation) * cy.p_max
+    F = p * np.pi * cy.bore**2 / 4
+    M = L.gas_moment(F, x_dot, head.x, far.x)
+    towards = (stroke == 1) | (stroke == 3)
+    s_exp, p_exp = tables["expansion"]      # the two-table fields: compression and expansion
+    return CylinderResult(cy.name, cy.piston, s, towards, p, F, M, s_exp,  # at expansion's s
+                          np.interp(s_exp, *tables["compression"]), p_exp, cy.p_max, head.phi,
+                          stroke=stroke, stroke_tables={k: v[1] for k, v in tables.items()},
+                          fires_at=float(fires_at),
+                          stroke_s={k: v[0] for k, v in tables.items()})
