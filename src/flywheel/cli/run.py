@@ -110,6 +110,8 @@ def run_command(
     _guard(write_folder, out, build, "summary.json", notes=notes)
     for n in notes:
         sys.stderr.write(f"note: {n}\n")
+    for w in results.warnings:              # on stderr too: `2>/dev/null` and pipes behave
+        sys.stderr.write(f"warning: {w}\n")
     if as_json:
         sys.stdout.write(text_json)
     else:
