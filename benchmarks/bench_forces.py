@@ -16,71 +16,32 @@ Prints the machine. Target (issue 12): the force analysis adds ≤ 5 ms at 3600 
 from __future__ import annotations
 
 import argparse
-import os
-import platform
 import sys
-import timeit
 from dataclasses import replace
 from pathlib import Path
 
-import numpy as np
 
 ROOT = Path(__file__).resolve().parents[1]
 CASE = ROOT / "cases" / "compressor.toml"
 TARGET_MS = 5.0
 
-
-def cpu_model() -> str:
-    try:
-        for line in Path("/proc/cpuinfo").read_text().splitlines():
-            if line.startswith("model name"):
-                return line.split(":", 1)[1].strip()
-    except OSError:
-        pass
-    return platform.processor() or "?"
-
-
-def machine() -> str:
-    try:
-        nproc = len(os.sched_getaffinity(0))
-    except AttributeError:  # not on Linux
-        nproc = os.cpu_count()
-    return (f"{platform.platform()} ({platform.machine()}), {cpu_model()}; "
-            f"nproc {nproc}; Python {platform.python_version()}; numpy {np.__version__}")
-
-
-def best_ms(stmt, repeat: int) -> float:
-    """Best time of one call [ms]: timeit picks a loop count for ~0.2 s, best of ``repeat``."""
-    timer = timeit.Timer(stmt)
-    number, _ = timer.autorange()
-    return min(timer.repeat(repeat=repeat, number=number)) / number * 1e3
+from bench_kinematics import best_ms, machine  # noqa: E402  (the same machine line and timer)
 
 
 def prepare(points: int):
-    """Mechanism, kinematics, ω, ε and loads of the compressor as the pipeline has them."""
-    from flywheel.cases.run import load_case, to_mechanism
-    from flywheel.dynamics import forces as fo
-    from flywheel.dynamics.pipeline import analyze
-    from flywheel.linkage import solve
-    from flywheel.linkage.deadcentres import dead_centres, guide_frame, slider_dyad
+    """Mechanism, kinematics, ω, ε and loads of the compressor as the run has them (the loads
+    built by the pipeline's own force_loads)."""
+    from flywheel.cases.run import load_case
+    from flywheel.dynamics.grid import standard_positions
+    from flywheel.dynamics.pipeline import analyze, force_loads
 
     case = load_case(CASE)
     res = analyze(case, n_points=points)
-    mech = to_mechanism(case)
-    kin = solve(mech, res.phi)
-    pf = []
-    for cy, cr in zip(case.cylinders, res.cylinders):     # gas pushes away from the head
-        d = slider_dyad(mech, cy.piston)
-        u, _ = guide_frame(d)
-        dcs = {dc.kind: dc for dc in dead_centres(mech, cy.piston)}
-        head, far = dcs[cy.head], dcs["inner" if cy.head == "outer" else "outer"]
-        pf.append(fo.PointForce(cy.name, cy.piston, d.joint,
-                                (cr.F * np.sign(far.x - head.x))[:, None] * u))
-    s = res.scalars
-    loads = fo.Loads(case.links, tuple(pf), (), tuple(case.machine.gravity),
-                     max(s["J_required"], s["J_first_group"]))
-    return mech, kin, res.columns["omega"].values, res.columns["epsilon"].values, loads, \
-        s["balancing_moment"]
+    mech = case.mechanism()
+    _, dcs = standard_positions(mech)
+    loads = force_loads(case, mech, dcs, res.kinematics, res.loads, res.motion.J_I)
+    return mech, res.kinematics, res.motion.omega, res.motion.epsilon, loads, \
+        res.energy.balancing_moment
 
 
 def main() -> int:
