@@ -445,26 +445,13 @@ def test_kinetostatics_closes_on_the_engines(name):
     pins, equals the constant moment of the cycle balance at every node (design.md §9: the
     equation of motion read backwards), and Zhukovsky's lever agrees. An independent check of
     the pins, the four-stroke gas forces and ω(φ), ε(φ) over the 720° cycle."""
-    from flywheel.dynamics import forces as fo
-    from flywheel.linkage import solve
-    from flywheel.linkage.deadcentres import dead_centres, guide_frame, slider_dyad
+    from test_forces import case_setup      # the loads built in the test, not by the pipeline
 
-    case = load_case(CASES / name)
-    res = analyze(case)
-    mech = case.mechanism()
-    kin = solve(mech, res.phi)
-    pf = []
-    for cy, cr in zip(case.cylinders, res.cylinders):
-        d = slider_dyad(mech, cy.piston)
-        u, _ = guide_frame(d)
-        dcs = {dc.kind: dc for dc in dead_centres(mech, cy.piston)}
-        head, far = dcs[cy.head], dcs["inner" if cy.head == "outer" else "outer"]
-        pf.append(fo.PointForce(cy.name, cy.piston, d.joint,
-                                (cr.F * np.sign(far.x - head.x))[:, None] * u))
-    s = res.scalars
-    J_I = max(s["J_required"], s["J_first_group"])
-    loads = fo.Loads(case.links, tuple(pf), (), tuple(case.machine.gravity), J_I)
-    w, e = res.columns["omega"].values, res.columns["epsilon"].values
+    from flywheel.dynamics import forces as fo
+
+    st = case_setup(name.removesuffix(".toml"))
+    mech, kin, w, e, loads = st["mech"], st["kin"], st["omega"], st["eps"], st["loads"]
+    s = st["res"].scalars
     fa = fo.kinetostatics(mech, kin, w, e, loads)
     assert fo.closure(fa, s["balancing_moment"]) < 1e-10
     lever = fo.zhukovsky_moment(mech, kin, w, e, loads)
