@@ -24,6 +24,7 @@ Computation only: no typer, no rich.
 from __future__ import annotations
 
 import csv
+import functools
 import io
 import json
 import math
@@ -65,19 +66,17 @@ class Key:
         m = re.fullmatch(r"(?:variant[_ -]?)?0*(\d+)(?:\.toml)?", v, flags=re.IGNORECASE)
         if m is None:
             return None
-        return self._by_number().get(m.group(1))
+        return self._by_number.get(m.group(1))
 
+    @functools.cached_property
     def _by_number(self) -> dict[str, str]:
         """Variant number without leading zeros → the key's id (one dict per key: a sheet's
         rows are looked up in constant time, and a cell of 5 000 digits is only a string)."""
-        cache = self.__dict__.get("_numbers")
-        if cache is None:
-            cache = {}
-            for vid in self.variants:
-                if vid.isdigit():
-                    cache.setdefault(vid.lstrip("0") or "0", vid)
-            object.__setattr__(self, "_numbers", cache)
-        return cache
+        out: dict[str, str] = {}
+        for vid in self.variants:
+            if vid.isdigit():
+                out.setdefault(vid.lstrip("0") or "0", vid)
+        return out
 
 
 def _number(v) -> bool:
