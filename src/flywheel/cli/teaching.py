@@ -24,9 +24,16 @@ def variants_command(
                                        "one, printed and written into every file)."),
     points: int = typer.Option(1440, "--points", help="Intervals of the φ grid for the "
                                "answers of a run case."),
+    sheets: bool = typer.Option(False, "--sheets", help="Also write a printable task sheet per "
+                                "variant (sheets/variant_NN.html and .pdf, and sheets.pdf with "
+                                "them all): the drawing, the data, what to find; no answers."),
+    sheets_format: str = typer.Option("both", "--sheets-format", help="Formats of --sheets: "
+                                      "both | html | pdf."),
+    lang: str = typer.Option("ru", "--lang", help="Language of the task sheets: ru | en."),
 ) -> None:
     """Individual variants of a task from a template, with the answer key (answers.json,
-    answers.csv) and a blank answer sheet (students.csv)."""
+    answers.csv), a blank answer sheet (students.csv) and, with --sheets, a printable task
+    sheet per variant."""
     from flywheel.cli.guard import _guard, fail
 
     if not 1 <= count <= 9999:
@@ -35,6 +42,11 @@ def variants_command(
         fail(f"--seed: {seed} is not allowed (allowed: 0 … 2^63 − 1)")
     if points < 36:
         fail(f"--points: {points} is too few (allowed: 36 or more)")
+    if lang not in ("en", "ru"):
+        fail(f"--lang: {lang!r} is not a language (allowed: ru, en)")
+    if sheets_format not in ("both", "html", "pdf"):
+        fail(f"--sheets-format: {sheets_format!r} is not a sheet format (allowed: both, html, "
+             "pdf)")
     import secrets
     import sys
 
@@ -54,10 +66,26 @@ def variants_command(
         vs = _guard(generate, t, count, seed, points,
                     lambda i: bar.update(task, completed=i))
     notes: list[str] = []
-    _guard(write_variants, vs, out, notes)
+    extra = None
+    if sheets:
+        from flywheel.render.sheets import write_sheets
+        from flywheel.teaching.sheets import sheets_of
+
+        pages = _guard(sheets_of, vs)
+        missing = sorted({p.no_drawing for p in pages if p.no_drawing})
+        for why in missing:                 # one line for the batch, not one per sheet
+            sys.stderr.write(f"note: --sheets: {template}: {why}\n")
+
+        def extra(folder):
+            with Progress(TextColumn("sheets"), BarColumn(), MofNCompleteColumn(),
+                          console=console, transient=True, disable=not console.is_terminal) as b:
+                t = b.add_task("sheets", total=len(pages))
+                write_sheets(pages, folder, lang, sheets_format,
+                             lambda i: b.update(t, completed=i))
+    _guard(write_variants, vs, out, notes, extra)
     for n in notes:
         sys.stderr.write(f"note: {n}\n")
-    print_variants(vs, out)
+    print_variants(vs, out, sheets=sheets_format if sheets else None)
 
 
 def grade_command(

@@ -96,8 +96,9 @@ def _g(x, fmt: str = ".6g") -> str:
     return str(x)
 
 
-def print_variants(vs, out, console=None) -> None:
-    """The variants drawn and their answers, one row each."""
+def print_variants(vs, out, console=None, sheets: str | None = None) -> None:
+    """The variants drawn and their answers, one row each; ``sheets``: the format of the task
+    sheets written (both, html, pdf), None if none."""
     from rich.console import Console
     from rich.table import Table
 
@@ -120,7 +121,10 @@ def print_variants(vs, out, console=None) -> None:
                       "again")
     console.print(f"seed {vs.seed} (the same seed gives the same files)", highlight=False,
                   soft_wrap=True)
-    console.print(f"written: {out}/ (variant_*.toml, answers.json, answers.csv, students.csv)",
+    written = {None: "", "both": ", sheets/*.html, sheets/*.pdf, sheets.pdf",
+               "html": ", sheets/*.html", "pdf": ", sheets/*.pdf, sheets.pdf"}[sheets]
+    console.print(f"written: {out}/ (variant_*.toml, answers.json, answers.csv, students.csv"
+                  f"{written})",
                   highlight=False, markup=False, soft_wrap=True)
 
 

@@ -511,10 +511,12 @@ def students_csv(vs: VariantSet) -> str:
     return buf.getvalue()
 
 
-def write_variants(vs: VariantSet, out, notes: list[str] | None = None) -> Path:
+def write_variants(vs: VariantSet, out, notes: list[str] | None = None,
+                   extra: Callable[[Path], Any] | None = None) -> Path:
     """Write the variant files, answers.json, answers.csv and students.csv to ``out``, whole or
     not at all. Refuses a non-empty folder that is not an earlier variants folder; in an
-    earlier one only the files flywheel wrote change (what was removed goes to ``notes``)."""
+    earlier one only the files flywheel wrote change (what was removed goes to ``notes``).
+    ``extra(folder)`` writes more files into the same folder (the task sheets)."""
     from flywheel.io.output import write_folder
 
     out = Path(out)
@@ -525,5 +527,7 @@ def write_variants(vs: VariantSet, out, notes: list[str] | None = None) -> Path:
         (folder / "answers.json").write_text(answers_json(vs), encoding="utf-8")
         (folder / "answers.csv").write_text(answers_csv(vs), encoding="utf-8")
         (folder / "students.csv").write_text(students_csv(vs), encoding="utf-8")
+        if extra is not None:
+            extra(folder)
 
     return write_folder(out, build, "answers.json", "variants", notes)

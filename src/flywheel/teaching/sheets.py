@@ -1,0 +1,242 @@
+"""What goes on a student's task sheet (``flywheel variants … --sheets``; docs/teacher.md):
+the variant's input data with their units, the list of what to find with the tolerance the
+grader will use, and what the drawing needs — the linkage of a run case (its kinematics on a
+coarse grid) or the given moment graphs M_D(φ), M_C(φ) of a task2 case.
+
+No answer goes on a sheet: the data are the variant file's own inputs, the find-list names the
+answers without their values. The words and the typesetting are render/sheets.py's.
+
+Units come from the case schema (each field's description says its unit in brackets, e.g.
+``bore d [m]``); a field without one is dimensionless (a ratio, δ) or its unit is unknown.
+Computation only: no typer, rich or matplotlib.
+"""
+from __future__ import annotations
+
+import math
+import re
+import tomllib
+from dataclasses import dataclass, field
+from functools import lru_cache
+from typing import Any
+
+#: top-level tables of a case that are not data of the task (how to report, the start-up motor)
+NOT_DATA = ("title", "source", "output", "motor", "force_analysis")
+#: intervals of the φ grid of the drawing's kinematics (the drawing needs no finer one)
+DRAWING_POINTS = 360
+
+
+@dataclass(frozen=True)
+class Given:
+    """One input of the variant: ``path`` in the case document ("links.2.mass"), its ``value``
+    (a number, or a tuple for an array), its SI ``unit`` from the schema ("" dimensionless or
+    not stated) and whether this variant drew it (``varied``)."""
+
+    path: str
+    value: Any
+    unit: str
+    varied: bool
+
+
+@dataclass(frozen=True)
+class Find:
+    """One answer asked: its result key ("J_flywheel", "flywheel_disk.D") and the relative
+    tolerance the grader applies to it [1]."""
+
+    answer: str
+    tolerance: float
+
+
+@dataclass(frozen=True)
+class MomentGraphs:
+    """The given moment graphs of a task2 variant on a φ grid: phi_deg [deg], M_D, M_C [N·m];
+    ``unknown``: the graph whose value the cycle balance (or the power) gives — the sheet marks
+    it "?" and prints no scale; ``breaks_deg``: the graphs' corners [deg]; ``cycle_deg``."""
+
+    phi_deg: tuple[float, ...]
+    M_D: tuple[float, ...]
+    M_C: tuple[float, ...]
+    unknown: str | None
+    breaks_deg: tuple[float, ...]
+    cycle_deg: float
+
+
+@dataclass(frozen=True)
+class Sheet:
+    """One task sheet: variant ``number`` (1-based) and ``stem`` of its files ("variant_07"),
+    the template's ``kind`` and ``title``, the inputs (``given``), what to find (``find``), and
+    the drawing: ``linkage`` (Results of the variant on a coarse grid, drawn at ``angle_deg``)
+    or ``moments``; ``no_drawing`` says why there is none ("" when there is one); ``names``:
+    the names of the elements of the case's arrays ("cylinders.0" → "HP", "dyads.1" → "C")."""
+
+    number: int
+    id: str
+    stem: str
+    kind: str
+    title: str
+    given: tuple[Given, ...]
+    find: tuple[Find, ...]
+    linkage: Any = None
+    angle_deg: float | None = None
+    moments: MomentGraphs | None = None
+    no_drawing: str = ""
+    names: dict[str, str] = field(default_factory=dict)
+
+
+# -- units from the schema -------------------------------------------------------------------------
+
+@lru_cache(maxsize=2)
+def _units(kind: str) -> dict[str, str]:
+    """Field name → unit as its description states it ("[kg·m²]"), over every model of the
+    kind's schema; a name whose models disagree is left out (the unit is then not printed)."""
+    if kind == "run":
+        from flywheel.cases.run import case_json_schema
+
+        schema = case_json_schema()
+    else:
+        from flywheel.cases.task2 import Task2Case
+
+        schema = Task2Case.model_json_schema()
+    found: dict[str, set[str]] = {}
+    for model in [schema, *schema.get("$defs", {}).values()]:
+        for name, prop in model.get("properties", {}).items():
+            m = re.search(r"\[([^\]]+)\]", prop.get("description", ""))
+            unit = m.group(1) if m else ("deg" if name.endswith("_deg") else "")
+            if unit in ("-", "1"):
+                unit = ""
+            found.setdefault(name, set()).add(unit)
+    return {k: next(iter(v)) for k, v in found.items() if len(v) == 1}
+
+
+def unit_of_path(kind: str, path: str) -> str:
+    """The unit of a field of the case document: its own name's, else the nearest table's
+    that states one (``machine.first_group.crankshaft`` → kg·m² of first_group)."""
+    units = _units(kind)
+    parts = [p for p in path.split(".") if not p.isdigit()]
+    for name in reversed(parts):
+        if units.get(name):
+            return units[name]
+        if name in units:           # known and dimensionless
+            return ""
+    return ""
+
+
+# -- the data rows ---------------------------------------------------------------------------------
+
+def _number(v) -> bool:
+    return isinstance(v, (int, float)) and not isinstance(v, bool)
+
+
+def _numeric(v) -> bool:
+    if _number(v):
+        return True
+    return isinstance(v, list) and bool(v) and all(_numeric(x) for x in v)
+
+
+def _leaves(node, prefix: str = ""):
+    """(path, value) of every number or array of numbers below ``node``, in document order."""
+    items = node.items() if isinstance(node, dict) else enumerate(node)
+    for k, v in items:
+        path = f"{prefix}{k}"
+        if _numeric(v):
+            yield path, (_tuple(v) if isinstance(v, list) else v)
+        elif isinstance(v, (dict, list)):
+            yield from _leaves(v, path + ".")
+
+
+def _tuple(v):
+    return tuple(_tuple(x) if isinstance(x, list) else x for x in v)
+
+
+def given_rows(kind: str, document: dict, varied: set[str]) -> tuple[Given, ...]:
+    """The inputs of a case document: the drawn values first (in the template's order), then
+    the fixed numbers a student needs (every number of the case but the report settings)."""
+    rows = [Given(p, v, unit_of_path(kind, p), p in varied)
+            for p, v in _leaves({k: v for k, v in document.items() if k not in NOT_DATA})]
+    order = {p: i for i, p in enumerate(varied)} if isinstance(varied, dict) else {}
+    drawn = sorted((g for g in rows if g.varied), key=lambda g: order.get(g.path, 0))
+    return tuple(drawn + [g for g in rows if not g.varied])
+
+
+def element_names(document: dict) -> dict[str, str]:
+    """The name of each table of an array of tables ("cylinders.0" → "HP"): its ``name``,
+    else its ``joint`` (a dyad is named by its joint)."""
+    out = {}
+    for key, value in document.items():
+        if isinstance(value, list):
+            for i, entry in enumerate(value):
+                if isinstance(entry, dict):
+                    name = entry.get("name", entry.get("joint"))
+                    if isinstance(name, str) and name:
+                        out[f"{key}.{i}"] = name
+    return out
+
+
+def find_list(template) -> tuple[Find, ...]:
+    """The answers asked, each with the tolerance ``flywheel grade`` uses for it (the
+    template's per-answer tolerance, else its default)."""
+    return tuple(Find(a, float(template.tolerances.get(a, template.tolerance)))
+                 for a in template.answers)
+
+
+# -- the drawing -----------------------------------------------------------------------------------
+
+def _linkage(document: dict, source: str):
+    """(Results on a coarse grid, the angle [deg] to draw at) of a run case, or (None, reason)
+    for a case without a linkage (kinematics given as a table)."""
+    from flywheel.cases.run import parse_case
+    from flywheel.dynamics.pipeline import analyze
+
+    case = parse_case(document, source)
+    if case.tabulated is not None:
+        return None, ("the kinematics are given as a table ([tabulated]): the sheet "
+                      "has no drawing of the mechanism")
+    results = analyze(case, n_points=DRAWING_POINTS)
+    angles = [float(a["phi_deg"]) for a in results.at] or [0.0]
+    return results, angles[0]
+
+
+def _moments(document: dict, source: str) -> tuple[MomentGraphs | None, str]:
+    """The given moment graphs of a task2 case, or (None, reason) for an area diagram."""
+    from flywheel.cases.task2 import parse_task2_case, solve_case
+    from flywheel.constant_inertia.solve import sample
+
+    case = parse_task2_case(document, source)
+    r = solve_case(case, source)
+    if r.driving is None or r.resistance is None:
+        return None, ("the task is given as an area diagram, not as moment graphs: "
+                      "the sheet has no drawing")
+    s = sample(r, n=721)
+    breaks = sorted({round(math.degrees(x), 9) for m in (r.driving, r.resistance)
+                     for x in m.breakpoints()})
+    unknown = r.unknown or r.power_found
+    return MomentGraphs(tuple(math.degrees(x) for x in s["phi"]), tuple(s["M_D"]),
+                        tuple(s["M_C"]), unknown, tuple(breaks),
+                        math.degrees(r.cycle)), ""
+
+
+def sheets_of(vs, progress=None) -> list[Sheet]:
+    """The task sheet of every variant of a :class:`~flywheel.teaching.variants.VariantSet`;
+    ``progress(i)`` after sheet i (1-based)."""
+    t = vs.template
+    find = find_list(t)
+    varied = {v.path: i for i, v in enumerate(t.varied)}
+    out = []
+    for n, v in enumerate(vs.variants, 1):
+        doc = tomllib.loads(v.text)
+        stem = v.filename.rsplit(".", 1)[0]
+        kw: dict[str, Any] = {}
+        if t.kind == "run":
+            res, how = _linkage(doc, v.filename)
+            if res is None:
+                kw["no_drawing"] = how
+            else:
+                kw.update(linkage=res, angle_deg=how)
+        else:
+            graphs, why = _moments(doc, v.filename)
+            kw.update(moments=graphs, no_drawing=why)
+        title = doc.get("title", "") if isinstance(doc.get("title", ""), str) else ""
+        out.append(Sheet(n, v.id, stem, t.kind, title, given_rows(t.kind, doc, varied),
+                         find, names=element_names(doc), **kw))
+        if progress is not None:
+            progress(n)
+    return out
