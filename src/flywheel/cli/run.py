@@ -57,11 +57,18 @@ def run_command(
                                          "else true."),
     report: Optional[list[str]] = typer.Option(None, "--report", help="Report format: md, html, "
                                                "pdf, docx; repeatable (default: md and html)."),
+    csv_style: str = typer.Option("plain", "--csv", help="CSV dialect of the tables: plain, or "
+                                  "excel-ru (';', decimal commas, BOM: opens in a Russian "
+                                  "Excel)."),
 ) -> None:
     """Run the whole dynamic analysis of a case; write summary.json, table.csv, positions.csv,
     forces.csv, forces_positions.csv, report.md and plots/*.png to the output folder."""
     if lang not in ("en", "ru"):
         fail(f"--lang: {lang!r} is not a language (allowed: en, ru)")
+    from flywheel.render.csvfmt import STYLES, restyle
+
+    if csv_style not in STYLES:
+        fail(f"--csv: {csv_style!r} is not a CSV dialect (allowed: {', '.join(STYLES)})")
     from flywheel.render.report_formats import FORMATS
 
     formats = report or ["md", "html"]
@@ -85,10 +92,10 @@ def run_command(
 
     def build(folder: Path) -> None:
         (folder / "summary.json").write_text(text_json, encoding="utf-8")
-        (folder / "table.csv").write_text(table_csv(results), encoding="utf-8")
-        (folder / "positions.csv").write_text(positions_csv(results), encoding="utf-8")
-        (folder / "forces.csv").write_text(forces_csv(results), encoding="utf-8")
-        (folder / "forces_positions.csv").write_text(forces_positions_csv(results), encoding="utf-8")
+        for name, table in (("table.csv", table_csv), ("positions.csv", positions_csv),
+                            ("forces.csv", forces_csv),
+                            ("forces_positions.csv", forces_positions_csv)):
+            (folder / name).write_text(restyle(table(results), csv_style), encoding="utf-8")
         pngs: list[str] = []
         if not no_plots:
             from flywheel.render.plots import write_plots

@@ -11,11 +11,14 @@ Numbers are passed as ``float``/``int`` and formatted here (``fmt``); strings st
 '\\ufeffstudent;J\\r\\nИванов;0,5\\r\\n'
 >>> csv_text([["a", "b"], [1, 2.5]])
 'a,b\\n1,2.5\\n'
+>>> restyle("position,x [m]\\n0° = 3 outer d.c.,-1.5e-05\\n", "excel-ru")
+'\\ufeffposition;x [m]\\r\\n0° = 3 outer d.c.;-1,5e-05\\r\\n'
 """
 from __future__ import annotations
 
 import csv
 import io
+import re
 from collections.abc import Callable, Iterable, Sequence
 
 STYLES = ("plain", "excel-ru")
@@ -41,3 +44,28 @@ def csv_text(rows: Iterable[Sequence], style: str = "plain",
                 out.append(str(v))
         w.writerow(out)
     return ("\ufeff" if ru else "") + buf.getvalue()
+
+
+_NUMBER = re.compile(r"[-+]?(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?")
+
+
+class _Spelled(float):
+    """A number read from CSV text that keeps its spelling (so restyling changes only the
+    separators and the decimal mark, never a digit)."""
+
+    text: str
+
+    def __new__(cls, text: str):
+        obj = super().__new__(cls, text)
+        obj.text = text
+        return obj
+
+
+def restyle(text: str, style: str) -> str:
+    """CSV text written in the plain dialect, in ``style``: the same cells; a cell that is a
+    number gets the style's decimal mark, every other cell stays as it is."""
+    if style == "plain":
+        return text
+    rows = [[_Spelled(c) if _NUMBER.fullmatch(c) else c for c in row]
+            for row in csv.reader(io.StringIO(text))]
+    return csv_text(rows, style, fmt=lambda x: getattr(x, "text", repr(x)))
