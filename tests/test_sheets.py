@@ -1,0 +1,270 @@
+"""`flywheel variants … --sheets`: one printable task sheet per variant (HTML and a one-page
+PDF, and sheets.pdf with them all) carrying the variant's own values with units, the answers
+asked with their units and the grader's tolerances — and no answer, no command; the same bytes
+on a rerun; Russian and English; run (compressor) and task2 templates; a tabulated template
+gets sheets without a drawing and one note line."""
+import json
+import re
+import tomllib
+from html.parser import HTMLParser
+from pathlib import Path
+
+import pytest
+from typer.testing import CliRunner
+
+from flywheel.cli import app
+
+CASES = Path(__file__).resolve().parent.parent / "cases"
+COMPRESSOR = CASES / "variants_compressor.toml"
+TASK2 = CASES / "variants_task2.toml"
+runner = CliRunner()
+
+
+def invoke(*args):
+    return runner.invoke(app, ["variants", *map(str, args)])
+
+
+def err_text(res):
+    try:
+        return res.stderr
+    except (ValueError, AttributeError):  # older click mixes the streams
+        return res.output
+
+
+class Sheet(HTMLParser):
+    """The text of a sheet as a person reads it: the tables' rows (cells), the paragraphs, the
+    headings; images counted. Attributes (the embedded PNG) are not text."""
+
+    def __init__(self, html: str):
+        super().__init__()
+        self.tables: list[list[list[str]]] = []
+        self.captions: list[str] = []
+        self.paragraphs: list[str] = []
+        self.headings: list[str] = []
+        self.images = 0
+        self._cell: list[str] | None = None
+        self._text: list[str] | None = None
+        self._where = ""
+        self.feed(html)
+
+    def handle_starttag(self, tag, attrs):
+        if tag == "table":
+            self.tables.append([])
+        elif tag == "tr":
+            self.tables[-1].append([])
+        elif tag in ("td", "th"):
+            self._cell = []
+        elif tag in ("p", "h1", "h2", "figcaption"):
+            self._text, self._where = [], tag
+        elif tag == "img":
+            self.images += 1
+
+    def handle_endtag(self, tag):
+        if tag in ("td", "th") and self._cell is not None:
+            self.tables[-1][-1].append("".join(self._cell).strip())
+            self._cell = None
+        elif tag in ("p", "h1", "h2", "figcaption") and self._text is not None:
+            text = "".join(self._text).strip()
+            {"p": self.paragraphs, "figcaption": self.captions}.get(tag, self.headings).append(text)
+            self._text = None
+
+    def handle_data(self, data):
+        if self._cell is not None:
+            self._cell.append(data)
+        if self._text is not None:
+            self._text.append(data)
+
+    @property
+    def text(self) -> str:
+        return "\n".join([*self.headings, *self.paragraphs, *self.captions,
+                          *("\t".join(r) for t in self.tables for r in t)])
+
+
+def pages(pdf: bytes) -> int:
+    return len(re.findall(rb"/Type\s*/Page\b", pdf))
+
+
+@pytest.fixture(scope="module")
+def compressor_dir(tmp_path_factory):
+    out = tmp_path_factory.mktemp("s") / "compressor"
+    res = invoke(COMPRESSOR, "--count", 3, "--seed", 11, "--out", out, "--sheets")
+    assert res.exit_code == 0, res.output
+    return out
+
+
+@pytest.fixture(scope="module")
+def task2_dir(tmp_path_factory):
+    out = tmp_path_factory.mktemp("s") / "task2"
+    res = invoke(TASK2, "--count", 4, "--seed", 5, "--out", out, "--sheets", "--lang", "en")
+    assert res.exit_code == 0, res.output
+    return out
+
+
+def key_of(folder: Path) -> dict:
+    return json.loads((folder / "answers.json").read_text(encoding="utf-8"))
+
+
+def sheet_of(folder: Path, vid: str) -> Sheet:
+    return Sheet((folder / "sheets" / f"variant_{vid}.html").read_text(encoding="utf-8"))
+
+
+def numbers(cell: str) -> list[float]:
+    return [float(x) for x in re.findall(r"[-+]?\d+(?:\.\d+)?(?:e[-+]?\d+)?", cell)]
+
+
+@pytest.mark.parametrize("which", ["compressor_dir", "task2_dir"])
+def test_one_sheet_per_variant_html_and_one_page_pdf(request, which):
+    folder = request.getfixturevalue(which)
+    key = key_of(folder)
+    stems = sorted(p.stem for p in folder.glob("variant_*.toml"))
+    assert stems == [f"variant_{v}" for v in key["variants"]]
+    assert sorted(p.name for p in (folder / "sheets").iterdir()) == sorted(
+        [f"{s}.html" for s in stems] + [f"{s}.pdf" for s in stems])
+    for s in stems:
+        pdf = (folder / "sheets" / f"{s}.pdf").read_bytes()
+        assert pdf.startswith(b"%PDF") and pages(pdf) == 1          # one A4 page each
+        assert sheet_of(folder, s.split("_")[1]).images == 1        # the drawing, inline
+    assert pages((folder / "sheets.pdf").read_bytes()) == len(stems)   # the class set
+
+
+def test_the_sheet_carries_the_variants_own_values(compressor_dir):
+    key = key_of(compressor_dir)
+    for vid, drawn in key["drawn"].items():
+        sh = sheet_of(compressor_dir, vid)
+        given, other = sh.tables[0], sh.tables[1]
+        assert given[0] == ["Величина", "Значение", "Ед. изм."]
+        # the drawn values, in the template's order, each with its unit
+        assert [numbers(r[1])[0] for r in given[1:]] == pytest.approx(list(drawn.values()),
+                                                                        rel=1e-9)
+        assert [r[2] for r in given[1:]] == ["об/с", "–", "кг", "кг", "Па", "м"]
+        # the fixed data a student needs, from the variant file itself
+        doc = tomllib.loads((compressor_dir / f"variant_{vid}.toml").read_text(encoding="utf-8"))
+        rows = {r[0]: r[1:] for r in other[1:]}
+        assert rows["масса звена 5 m5"] == ["%g" % doc["links"]["5"]["mass"], "кг"]
+        assert rows["плотность материала маховика ρ"] == ["7800", "кг/м³"]
+        assert numbers(rows["цилиндр LP: p/p_max при движении поршня к головке"][0]) == \
+            doc["cylinders"][1]["towards_head"]
+        assert rows["момент инерции: gearbox (приведён к кривошипу)"] == ["0.074", "кг·м²"]
+
+
+def test_the_find_list_is_worded_as_a_task_with_units_and_tolerances(compressor_dir, task2_dir):
+    sh = sheet_of(compressor_dir, "1".zfill(2))
+    items = [p for p in sh.paragraphs if re.match(r"\d+\. ", p)]
+    assert len(items) == len(key_of(compressor_dir)["answers"])
+    assert "4. Определить момент инерции маховика J_М, кг·м² (допуск ±1 %)." in items
+    assert "5. Определить наружный диаметр маховика в виде сплошного диска D, м (допуск ±2 %)." \
+        in items                                    # the per-answer tolerance of the template
+    en = [p for p in sheet_of(task2_dir, "01").paragraphs if re.match(r"\d+\. ", p)]
+    assert en[0] == "1. Determine the resistance moment M_C [N·m]; accepted within ±1 %."
+    assert en[1] == ("2. Determine the greatest angular velocity ω_max [rad/s]; accepted within "
+                     "±0.001 %.")                  # tolerances.omega_max = 1e-5
+
+
+@pytest.mark.parametrize("which", ["compressor_dir", "task2_dir"])
+def test_no_answer_and_no_command_on_a_sheet(request, which):
+    folder = request.getfixturevalue(which)
+    key = key_of(folder)
+    for vid, answers in key["variants"].items():
+        sh = sheet_of(folder, vid)
+        text = sh.text
+        data = [x for t in sh.tables for r in t[1:] for x in numbers(r[1])]
+        for value in answers.values():
+            spellings = {repr(value), "%.6g" % value}
+            # an answer that is close to a datum (ω_max to ω0 within 0.1 %) is checked at 6
+            # digits only: its rounder spellings are the datum's
+            if not any(abs(value - d) <= 1e-3 * abs(value) for d in data):
+                spellings |= {"%.4g" % value, "%.5g" % value}
+            for spelled in spellings:
+                if len(spelled.replace("-", "").replace(".", "")) >= 3:
+                    assert spelled not in text, (vid, spelled)
+        assert "flywheel" not in text and "solve" not in text.lower()
+        assert ".toml" not in text
+
+
+def test_the_pdf_source_carries_the_same_values_and_no_answer(tmp_path):
+    """The PDF is typst's: its source (and the PDF's text where pypdf is installed) holds the
+    drawn values and none of the answers."""
+    from flywheel.render.sheets import build_sheet, sheet_typst
+    from flywheel.teaching.sheets import sheets_of
+    from flywheel.teaching.variants import generate, load_template
+
+    vs = generate(load_template(COMPRESSOR), 2, 11)
+    for v, s in zip(vs.variants, sheets_of(vs)):
+        src = sheet_typst(build_sheet(s, "ru", "x.png"))
+        for path, value in v.drawn.items():
+            assert f'[#"{"%.6g" % value}"]' in src, (path, value)
+        for value in v.answers.values():
+            assert "%.5g" % value not in src
+    pypdf = pytest.importorskip("pypdf")
+    out = tmp_path / "v"
+    assert invoke(COMPRESSOR, "--count", 1, "--seed", 11, "--out", out, "--sheets",
+                  "--sheets-format", "pdf").exit_code == 0
+    text = pypdf.PdfReader(out / "sheets" / "variant_01.pdf").pages[0].extract_text()
+    for value in vs.variants[0].drawn.values():
+        assert "%.6g" % value in text
+
+
+def test_byte_identical_on_rerun(tmp_path, compressor_dir):
+    out = tmp_path / "again"
+    res = invoke(COMPRESSOR, "--count", 3, "--seed", 11, "--out", out, "--sheets")
+    assert res.exit_code == 0, res.output
+    for f in [*(compressor_dir / "sheets").iterdir(), compressor_dir / "sheets.pdf"]:
+        rel = f.relative_to(compressor_dir)
+        assert (out / rel).read_bytes() == f.read_bytes(), rel
+
+
+def test_russian_and_english_wording(compressor_dir, task2_dir, tmp_path):
+    ru = sheet_of(compressor_dir, "02")
+    assert ru.headings[:3] == ["Вариант 2", "Дано", "Определить"]
+    assert any(p.startswith("Студент ____") and "Группа ____" in p for p in ru.paragraphs)
+    assert ru.captions == ["Рис. 1 — Кинематическая схема механизма при φ = 120°"]
+    en = sheet_of(task2_dir, "03")
+    assert en.headings[:3] == ["Variant 3", "Given", "Determine"]
+    assert any(p.startswith("Student ____") and "Group ____" in p for p in en.paragraphs)
+    assert en.captions == ["Figure 1 — The given moment graphs M_D(φ) and M_C(φ)"]
+    # the same task2 variants in Russian: the course's symbols
+    out = tmp_path / "ru"
+    assert invoke(TASK2, "--count", 1, "--seed", 5, "--out", out, "--sheets").exit_code == 0
+    sh = sheet_of(out, "01")
+    assert sh.captions == ["Рис. 1 — Заданные графики моментов M_Д(φ) и M_С(φ)"]
+    assert sh.paragraphs[-6] == "1. Определить момент сопротивления M_С, Н·м (допуск ±1 %)."
+
+
+def test_task2_sheet_gives_the_graphs_data(task2_dir):
+    key = key_of(task2_dir)
+    for vid, drawn in key["drawn"].items():
+        sh = sheet_of(task2_dir, vid)
+        rows = {r[0]: r[1:] for r in sh.tables[0][1:]}
+        assert rows["angular velocity at φ = 0, ω0"] == ["%g" % drawn["speed.omega0"], "rad/s"]
+        assert rows["driving moment M_D"] == ["%g" % drawn["driving.value"], "N·m"]
+        assert rows["M_C: start of its graph"] == ["%g" % drawn["resistance.from_deg"], "°"]
+        other = {r[0]: r[1:] for r in sh.tables[1][1:]}
+        assert other["coefficient of speed fluctuation asked δ"] == ["0.0001", "–"]
+
+
+def test_tabulated_template_sheets_without_drawing_one_note(tmp_path):
+    template = tmp_path / "press_variants.toml"
+    template.write_text((CASES / "press.toml").read_text(encoding="utf-8")
+                        + '\n[variants]\n"machine.delta" = { values = [0.04, 0.05, 0.06] }\n'
+                        'answers = ["J_required"]\n', encoding="utf-8")
+    out = tmp_path / "v"
+    res = invoke(template, "--count", 3, "--seed", 1, "--out", out, "--sheets",
+                 "--sheets-format", "html")
+    assert res.exit_code == 0, res.output
+    notes = [ln for ln in err_text(res).splitlines() if "sheet" in ln]
+    assert len(notes) == 1 and notes[0].startswith("note: --sheets: ")
+    assert "table" in notes[0] and "no drawing" in notes[0]
+    for vid in ("1", "2", "3"):
+        sh = sheet_of(out, vid.zfill(2))
+        assert sh.images == 0 and sh.captions == []
+        assert sh.headings[0] == f"Вариант {vid}"
+    assert not (out / "sheets.pdf").exists()          # html only
+
+
+def test_without_sheets_nothing_changes(tmp_path, compressor_dir):
+    out = tmp_path / "plain"
+    assert invoke(COMPRESSOR, "--count", 3, "--seed", 11, "--out", out).exit_code == 0
+    assert not (out / "sheets").exists() and not (out / "sheets.pdf").exists()
+    for f in out.glob("*.*"):
+        if f.name != ".flywheel-manifest.json":
+            assert f.read_bytes() == (compressor_dir / f.name).read_bytes()
