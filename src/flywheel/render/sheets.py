@@ -20,6 +20,10 @@ from flywheel.render import nomenclature as nm
 from flywheel.render.document import Document, Figure, Heading, Paragraph, Table
 
 FORMATS = ("both", "html", "pdf")
+#: the sheet's own print style, after the записка's: the drawing small enough for one A4 page
+_CSS = ("figure img { max-height: 68mm; width: auto; } "
+        "@media print { body { font-size: 9.5pt; } table { font-size: 0.8em; } "
+        "td, th { padding: 0.05em 0.35em; } } td:nth-child(2) { white-space: normal; }")
 #: the combined file of all sheets, one per page, for printing the class set
 COMBINED = "sheets.pdf"
 FOLDER = "sheets"
@@ -233,7 +237,7 @@ def build_sheet(sheet, lang: str = "ru", figure: str | None = None) -> Document:
         doc.blocks.append(Figure(1, caption, figure))
     doc.blocks.append(Heading(2, w["given"]))
     header = (w["quantity"], w["value"], w["unit"])
-    names = sheet_names(sheet)
+    names = sheet.names
     number = 0
     for part, rows in (("drawn", [g for g in sheet.given if g.varied]),
                        ("fixed", [g for g in sheet.given if not g.varied])):
@@ -245,12 +249,6 @@ def build_sheet(sheet, lang: str = "ru", figure: str | None = None) -> Document:
     doc.blocks.append(Heading(2, w["find"]))
     doc.blocks += [Paragraph(item) for item in find_items(sheet, lang)]
     return doc
-
-
-def sheet_names(sheet) -> dict[str, str]:
-    """Names of the indexed elements ("cylinders.0" → "HP", "dyads.1" → "C") — the sheet's
-    ``names``; empty when the sheet has none."""
-    return dict(getattr(sheet, "names", {}) or {})
 
 
 # -- drawings -----------------------------------------------------------------------------------
@@ -384,7 +382,8 @@ def write_sheets(sheets, folder: Path, lang: str = "ru", formats: str = "both",
             png = f"{s.stem}.png"
             doc = build_sheet(s, lang, png if draw(s, images / png, lang) else None)
             if formats in ("both", "html"):
-                (out / f"{s.stem}.html").write_text(html(doc, images), encoding="utf-8")
+                page = html(doc, images).replace("</style>", _CSS + "</style>", 1)
+                (out / f"{s.stem}.html").write_text(page, encoding="utf-8")
                 names.append(f"{FOLDER}/{s.stem}.html")
             if formats in ("both", "pdf"):
                 src = sheet_typst(doc)

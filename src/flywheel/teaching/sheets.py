@@ -147,13 +147,14 @@ def _tuple(v):
     return tuple(_tuple(x) if isinstance(x, list) else x for x in v)
 
 
-def given_rows(kind: str, document: dict, varied: set[str]) -> tuple[Given, ...]:
-    """The inputs of a case document: the drawn values first (in the template's order), then
-    the fixed numbers a student needs (every number of the case but the report settings)."""
-    rows = [Given(p, v, unit_of_path(kind, p), p in varied)
+def given_rows(kind: str, document: dict, varied) -> tuple[Given, ...]:
+    """The inputs of a case document: the drawn values first (``varied``: their paths, in the
+    template's order), then the fixed numbers a student needs (every number of the case but
+    the report settings and the start-up motor, in document order)."""
+    order = {p: i for i, p in enumerate(varied)}
+    rows = [Given(p, v, unit_of_path(kind, p), p in order)
             for p, v in _leaves({k: v for k, v in document.items() if k not in NOT_DATA})]
-    order = {p: i for i, p in enumerate(varied)} if isinstance(varied, dict) else {}
-    drawn = sorted((g for g in rows if g.varied), key=lambda g: order.get(g.path, 0))
+    drawn = sorted((g for g in rows if g.varied), key=lambda g: order[g.path])
     return tuple(drawn + [g for g in rows if not g.varied])
 
 
@@ -219,7 +220,7 @@ def sheets_of(vs, progress=None) -> list[Sheet]:
     ``progress(i)`` after sheet i (1-based)."""
     t = vs.template
     find = find_list(t)
-    varied = {v.path: i for i, v in enumerate(t.varied)}
+    varied = [v.path for v in t.varied]
     out = []
     for n, v in enumerate(vs.variants, 1):
         doc = tomllib.loads(v.text)
