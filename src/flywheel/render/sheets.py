@@ -48,10 +48,11 @@ WORDS = {
 }
 
 #: input fields of a case file: a dotted-path pattern (``#`` an array index, ``*`` a name) →
-#: (English, Russian) label; ``{x}`` is the element's name (a link, a cylinder, a point)
+#: (English, Russian) label; ``{x}`` is the element's name (a link, a cylinder, a point);
+#: "@key" takes the name of a quantity the nomenclature has
 FIELDS: list[tuple[str, str, str]] = [
-    ("machine.speed_rps", "crank speed n1", "частота вращения кривошипа n₁"),
-    ("machine.speed_rpm", "crank speed n1", "частота вращения кривошипа n₁"),
+    ("machine.speed_rps", "@crank_speed", ""),          # "@key": the nomenclature's name
+    ("machine.speed_rpm", "@crank_speed", ""),
     ("machine.delta", "coefficient of speed fluctuation δ", "коэффициент неравномерности хода δ"),
     ("machine.gravity", "gravity g (x, y)", "ускорение свободного падения g (x, y)"),
     ("machine.cycle_deg", "cycle Φ", "цикл Φ"),
@@ -59,7 +60,7 @@ FIELDS: list[tuple[str, str, str]] = [
      "момент инерции: {x} (приведён к кривошипу)"),
     ("design.mean_piston_speed", "mean piston speed V_m", "средняя скорость поршня V_ср"),
     ("design.rod_to_crank", "rod to crank length ratio k", "отношение длин шатуна и кривошипа k"),
-    ("crank.length", "crank length l1", "длина кривошипа l₁"),
+    ("crank.length", "@crank_length", ""),
     ("crank.pivot_at", "crank pivot (x, y)", "координаты опоры кривошипа (x, y)"),
     ("crank.start_angle_deg", "crank angle at φ = 0, from +x",
      "положение кривошипа при φ = 0 (от оси x)"),
@@ -164,6 +165,8 @@ def field_label(path: str, lang: str, names: dict[str, str] | None = None) -> st
     for rx, en, ru in _FIELD_RX:
         m = rx.match(path)
         if m:
+            if en.startswith("@"):
+                return nm.name(en[1:], lang)
             d = m.groupdict()
             x = d.get("x") or (names or {}).get(path.split(".")[0] + "." + d.get("i", ""), "")
             if not x and d.get("i") is not None:
