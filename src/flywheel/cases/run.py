@@ -16,6 +16,7 @@ from pydantic import BaseModel, Field, PrivateAttr, Strict, model_validator
 
 from flywheel.errors import CaseFileError
 from flywheel.io.schema import FieldError, StrictModel, within, clean_loc, describe, load, loc_str, pick, validate
+from flywheel.cases.rim import MATERIALS, RimSpec  # shared with the task2 format
 from flywheel.cases.tabulated import TabulatedSpec
 
 Pos = Annotated[float, Field(gt=0)]
@@ -428,10 +429,6 @@ class CoupleSpec(StrictModel):
     moment: Moment
 
 
-MATERIALS = {  # density [kg/m³], allowable hoop stress of a rotating rim [Pa]
-    "steel": (7800.0, 20e6),
-    "cast-iron": (7200.0, 7e6),
-}
 
 
 class FlywheelSpec(StrictModel):
@@ -454,6 +451,20 @@ class FlywheelSpec(StrictModel):
         description="'first-principles': J = πρbD⁴/32 with the density and ratios above; "
                     "'course': the seed's rounded empirical constants 0.366, 0.406, 6123 "
                     "(steel, b = 0.2·D, D1 = 0.8·D)")
+    rim: RimSpec | None = Field(
+        None, description="design the rim (rim speed or allowable stress, share, section): "
+                          "results.flywheel_rim then holds the designed rim")
+
+    @model_validator(mode="after")
+    def _rim_share_once(self):
+        if self.rim is not None and "rim_share" in self.model_fields_set:
+            raise FieldError(("rim_share",), "with [flywheel.rim] the share is "
+                                             "flywheel.rim.share (give it there)")
+        if self.rim is not None and self.rim.speed is not None:
+            self.rim.check_speed(self.rho, self.sigma, self.material
+                                 if self.density is None and self.allowable_stress is None
+                                 else "the given material")
+        return self
 
     @property
     def rho(self) -> float:

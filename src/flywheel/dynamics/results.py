@@ -12,6 +12,8 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from flywheel.dynamics.sizing import RimDesign
+
 UNITS = "SI (m, kg, s, rad, N, N·m, J, kg·m²); angles *_deg in degrees"
 
 
@@ -147,6 +149,8 @@ class SizingResult:
     material_density: float      # ρ [kg/m³]
     rim_speed_limit: float       # √(σ/ρ) [m/s]
     formulas: str                # "first-principles" or "course"
+    rim_design: RimDesign | None = None   # the rim of [flywheel.rim] (replaces ``rim`` in
+    #                                       summary.json's flywheel_rim)
     warnings: tuple[str, ...] = ()
 
 
@@ -412,12 +416,14 @@ class Results:
             "T0": m.T0,
             "cycle_time": m.cycle_time,
             "flywheel_disk": s.disk.as_dict(),
-            "flywheel_rim": s.rim.as_dict(),
+            "flywheel_rim": (s.rim.as_dict() if s.rim_design is None
+                             else s.rim_design.as_dict()),
             "flywheel_material": s.material,
             "flywheel_material_density": s.material_density,
             "flywheel_speed_ratio": s.speed_ratio,
             "flywheel_J_on_its_shaft": s.J_on_its_shaft,
-            "flywheel_rim_share": s.rim_share,
+            "flywheel_rim_share": (s.rim_share if s.rim_design is None
+                                   else s.rim_design.share),
             "flywheel_rim_speed_limit": s.rim_speed_limit,
             "flywheel_formulas": s.formulas,
         })

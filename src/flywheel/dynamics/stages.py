@@ -113,6 +113,13 @@ def size_flywheel(phi: np.ndarray, en: EnergyResult, red: ReductionResult, machi
     else:
         disk = sizing.disk(J_shaft, fw.rho, fw.width_ratio)
         rim = sizing.rim(J_shaft * fw.rim_share, fw.rho, fw.width_ratio, fw.inner_ratio)
+    rim_spec = getattr(fw, "rim", None)
+    designed = None
+    if rim_spec is not None:          # [flywheel.rim]: the rim as engineers finish it
+        try:
+            designed = rim_spec.design(J_shaft, omega_m * fw.speed_ratio, fw.rho, fw.sigma)
+        except InputError as exc:
+            raise InputError(f"{exc} (the flywheel's J = {J_shaft:.6g} kg·m² on its shaft)") from None
     return SizingResult(
         omega_mean=float(omega_m), delta=float(delta), J_required=float(J_req),
         J_first_group=J_first, J_flywheel=float(J_fly), J_required_exact=float(J_exact),
@@ -123,7 +130,7 @@ def size_flywheel(phi: np.ndarray, en: EnergyResult, red: ReductionResult, machi
         disk=FlywheelShape(**disk), rim=FlywheelShape(**rim), material=fw.material,
         material_density=float(fw.rho),
         rim_speed_limit=float(sizing.rim_speed_limit(fw.sigma, fw.rho)), formulas=fw.formulas,
-        warnings=tuple(warnings))
+        rim_design=designed, warnings=tuple(warnings))
 
 
 def true_motion(phi: np.ndarray, en: EnergyResult, red: ReductionResult,
@@ -165,6 +172,8 @@ def with_rim_speeds(sz: SizingResult, mo: MotionResult, fw) -> SizingResult:
     for shape, dims in (("disk", sz.disk), ("rim", sz.rim)):
         v = mo.omega_max * sz.speed_ratio * dims.D / 2
         shapes[shape] = replace(dims, rim_speed=v)
+        if shape == "rim" and sz.rim_design is not None:
+            continue                  # the designed rim replaces this one
         if v > sz.rim_speed_limit:
             material = fw.material if fw.density is None and fw.allowable_stress is None \
                 else "the given material"
@@ -173,7 +182,12 @@ def with_rim_speeds(sz: SizingResult, mo: MotionResult, fw) -> SizingResult:
                             f"stress σ = ρ·v², Timoshenko, Strength of Materials, part II) for "
                             f"{material}: σ = {fw.sigma / 1e6:g} MPa, ρ = {fw.rho:g} kg/m³ (set "
                             f"flywheel.allowable_stress, or a wider flywheel: width_ratio)")
-    return replace(sz, disk=shapes["disk"], rim=shapes["rim"], warnings=tuple(warnings))
+    designed = sz.rim_design
+    if designed is not None:          # its hoop stress at ω_max, ρ·(ω_max·i·D_mean/2)²
+        v_top = mo.omega_max * sz.speed_ratio * designed.D_mean / 2
+        designed = replace(designed, stress_at_omega_max=designed.density * v_top ** 2)
+    return replace(sz, disk=shapes["disk"], rim=shapes["rim"], rim_design=designed,
+                   warnings=tuple(warnings))
 
 
 def dynamics(phi: np.ndarray, loads: LoadsResult, red: ReductionResult, machine,

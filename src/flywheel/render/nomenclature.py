@@ -404,6 +404,16 @@ TERMS: dict[str, Term] = {
     "shaking_moment": _t("M_ст", r"$M_{ст}$", "N·m", "shaking moment on the frame",
                          "неуравновешенный момент на стойку", "M_sh"),
     # end force analysis -----------------------------------------------------------------------
+    # --- flywheel ---  (the designed rim, [flywheel.rim]: results.flywheel_rim)
+    "D_mean": _t("D_ср", r"$D_{ср}$", "m", "mean diameter of the rim", "средний диаметр обода",
+                 "D_m", "$D_m$"),
+    "thickness": _t("t", "$t$", "m", "radial thickness of the rim", "толщина обода"),
+    "width": _t("b", "$b$", "m", "width of the rim", "ширина обода"),
+    "stress": _t("σ", r"$\sigma$", "Pa", "hoop stress of the rim ρ·v²",
+                 "напряжение в ободе ρ·v²"),
+    "share": _t("k_об", r"$k_{об}$", "-", "share of J carried by the rim", "доля J на ободе",
+                "k_rim", r"$k_{rim}$"),
+    "flywheel_rim_design": _t("", "", "", "the rim as designed", "спроектированный обод"),
 }
 
 # the load names inside "M {load}": "gas HP", "gravity 2", "force punch", "couple c", "moment m"

@@ -143,14 +143,19 @@ def print_summary(results, console=None, lang: str = "en") -> None:
                     f"{_g(s['flywheel_material_density'], 5)}"
                     + (f"; {nm.name('flywheel_rim_speed_limit', lang)} {_g(lim, 3)}" if lim else ""),
                     u("flywheel_material_density", *(["flywheel_rim_speed_limit"] if lim else [])))
-    share = results.sizing.rim_share
+    share = s["flywheel_rim_share"]
     if share < 1 - 1e-9:
         tab.add_row(nm.name("flywheel_rim_share", lang), _g(share, 4), u("flywheel_rim_share"))
+    designed = "D_mean" in s["flywheel_rim"]          # [flywheel.rim]: the designed rim
+    rim_fields = (("D_mean", "thickness", "width", "mass", "rim_speed", "stress"),
+                  (4, 4, 4, 5, 4, 4)) if designed else (("D", "D_inner", "b", "mass"), (4, 4, 4, 5))
     for key, fields, digits in (("flywheel_disk", ("D", "b", "mass"), (4, 4, 5)),
-                                ("flywheel_rim", ("D", "D_inner", "b", "mass"), (4, 4, 4, 5))):
+                                ("flywheel_rim", *rim_fields)):
         d = s[key]
-        tab.add_row(nm.name(key, lang), ", ".join(f"{nm.symbol(f, lang)} = {_g(d[f], n)}"
-                                                  for f, n in zip(fields, digits)), u(*fields))
+        tab.add_row(nm.name("flywheel_rim_design" if key == "flywheel_rim" and designed else key,
+                            lang),
+                    ", ".join(f"{nm.symbol(f, lang)} = {_g(d[f], n)}"
+                              for f, n in zip(fields, digits)), u(*fields))
     console.print(tab)
     for a in results.at:
         pt = Table(title=t["title_at"].format(phi=_g(a["phi_deg"]), w=_g(a["omega"]), e=_g(a["epsilon"]),
