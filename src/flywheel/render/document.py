@@ -112,6 +112,7 @@ T = {
         "extremes": ("- {dT} max = {vmax} {uJ} at {amax}°, min = {vmin} {uJ} at {amin}° (global "
                      "extremes); {span} = {v} {uJ}"),
         "merzalov": "- Merzalov: {J} = {span}/(δ·{w}²) = {v} {uI}, δ achieved {d}",
+        "given": "- the flywheel is given (not sized): {J} = {v} {uI} on the crank shaft gives δ = {d}",
         "exact": "- exact (energy–mass diagram): {J} = {v} {uI}, δ achieved {d}",
         "flywheel": "- flywheel {JM} = {J} − ({J1}) = {v} {uI}",
         "shaft": "; on a shaft {i:g} times faster: {v} {uI}",
@@ -198,6 +199,7 @@ T = {
         "extremes": ("- {dT} max = {vmax} {uJ} при {amax}°, min = {vmin} {uJ} при {amin}° "
                      "(глобальные экстремумы); {span} = {v} {uJ}"),
         "merzalov": "- по Мерцалову: {J} = {span}/(δ·{w}²) = {v} {uI}, достигнутый δ {d}",
+        "given": "- маховик задан (не подбирается): {J} = {v} {uI} на валу кривошипа даёт δ = {d}",
         "exact": "- точно (диаграмма Виттенбауэра): {J} = {v} {uI}, достигнутый δ {d}",
         "flywheel": "- маховик {JM} = {J} − ({J1}) = {v} {uI}",
         "shaft": "; на валу, вращающемся в {i:g} раз быстрее: {v} {uI}",
@@ -537,6 +539,8 @@ def _sizing_lines(s: dict, t: dict, lang: str) -> list[str]:
     if s.get("flywheel_speed_ratio", 1) != 1:
         fw += t["shaft"].format(i=s["flywheel_speed_ratio"], v=g(s["flywheel_J_on_its_shaft"], 6), uI=uI)
     return [
+        t["given"].format(J=sym("J_required"), v=g(s["J_required"], 6), uI=uI,
+                          d=g(s["delta_achieved"], 6)) if s.get("flywheel_given") else
         t["merzalov"].format(J=sym("J_required"), span=sym("delta_T_max"), w=sym("omega_mean"),
                              v=g(s["J_required"], 6), uI=uI, d=g(s["delta_achieved"], 6)),
         t["exact"].format(J=sym("J_required_exact"), v=g(s["J_required_exact"], 6), uI=uI,

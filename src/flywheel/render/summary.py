@@ -124,10 +124,18 @@ def print_summary(results, console=None, lang: str = "en") -> None:
         tab.add_row(nm.name(key, lang), _g(s[key]), u(key))
     tab.add_row(f"{nm.symbol('dT_I', lang)} max / min", f"{at('delta_T_I_max')} / {at('delta_T_I_min')}",
                 u("dT_I"))
+    given = s.get("flywheel_given", False)          # a given flywheel: δ is its answer
+    if given:
+        tab.add_row(nm.name("J_flywheel_given", lang), _g(s["J_flywheel_given"]),
+                    u("J_flywheel_given"))
     for key in ("J_required", "J_required_exact", "J_first_group", "J_flywheel", "delta",
                 "delta_achieved", "delta_achieved_exact"):
-        tab.add_row(nm.name(key, lang), _g(s[key]), u(key))
-    for key in ("omega_max", "omega_min"):
+        tab.add_row(nm.name("delta_given" if given and key == "delta" else key, lang),
+                    _g(s[key]), u(key))
+    for key in ("power", "power_moment", "power_from_loads"):
+        if key in s:
+            tab.add_row(nm.name(key, lang), _g(s[key]), u(key))
+    for key in ("omega_max", "omega_min", *(("epsilon_max", "epsilon_min") if given else ())):
         tab.add_row(nm.name(key, lang), at(key), u(key))
     if "flywheel_speed_ratio" in s:
         tab.add_row(t["fw_shaft"].format(i=nm.symbol("flywheel_speed_ratio", lang),
