@@ -121,3 +121,21 @@ def test_bad_rims():
     doc["flywheel"]["rim"]["speed"] = 28.8                           # √(6e6/7250) = 28.77
     with pytest.raises(CaseFileError, match=r"flywheel\.rim\.speed: .*28\.7678"):
         parse_task2_case(doc, "k.toml")
+
+
+def test_khurmi_16_14_rim_of_the_fluctuation():
+    # Khurmi & Gupta, Example 16.14 (FOSSEE companion, p. 592): an engine at 800 rpm, speed
+    # within ±2 % (C_s = 0.04), ΔE = (420 − (−30)) mm² at 1 mm² = 500·π/30 N·m; cast-iron rim,
+    # σ = 7 MPa, ρ = 7200 kg/m³, width = 5 × thickness, the whole flywheel effect in the rim.
+    # Printed: D = 0.744 m, t = 84 mm, b = 424 mm (the companion prints t and b with %d).
+    dE = 450 * 500 * PI / 30
+    w, Cs = 2 * PI * 800 / 60, 0.04
+    rim = design_rim(dE / (w ** 2 * Cs), w, 7200.0, 7e6, share=1.0, width_to_thickness=5.0)
+    v = math.sqrt(7e6 / 7200)
+    D = v * 60 / (PI * 800)
+    m = dE / (v ** 2 * Cs)
+    t = math.sqrt(m / (PI * D * 5 * 7200))
+    assert rim.D_mean == pytest.approx(D, rel=1e-14) and round(D, 3) == 0.744
+    assert rim.mass == pytest.approx(m, rel=1e-13)
+    assert rim.thickness == pytest.approx(t, rel=1e-13) and math.floor(t * 1000) == 84
+    assert rim.width == pytest.approx(5 * t, rel=1e-13) and math.floor(5 * t * 1000) == 424
