@@ -16,6 +16,7 @@ from pydantic import BaseModel, Field, PrivateAttr, Strict, model_validator
 
 from flywheel.errors import CaseFileError
 from flywheel.io.schema import FieldError, StrictModel, within, clean_loc, describe, load, loc_str, pick, validate
+from flywheel.cases.rim import MATERIALS, RimSpec  # shared with the task2 format
 from flywheel.cases.tabulated import TabulatedSpec
 
 Pos = Annotated[float, Field(gt=0)]
@@ -49,8 +50,13 @@ class Machine(StrictModel):
         None, description="crank speed n1 [rev/s]")
     speed_rpm: Annotated[float, Field(gt=0), _within(0.06, 6e5, "rpm")] | None = Field(
         None, description="crank speed [rev/min] (instead of speed_rps)")
-    delta: Annotated[float, Field(gt=0, lt=1), _within(1e-6, 1.0, "")] = Field(
-        description="coefficient of speed fluctuation δ, 1e-6 ≤ δ < 1")
+    delta: Annotated[float, Field(gt=0, lt=1), _within(1e-6, 1.0, "")] | None = Field(
+        None, description="coefficient of speed fluctuation δ, 1e-6 ≤ δ < 1: the flywheel is "
+                          "sized for it (omit it when the flywheel is given: flywheel.J …)")
+    power: Annotated[float, Field(gt=0), _within(1e-3, 1e10, "W")] | None = Field(
+        None, description="the machine's mean power at the mean speed [W] (an engine's indicated "
+                          "power, a compressor's drive): M = P/ω_m is checked against the "
+                          "constant moment of the cycle balance")
     balance: Literal["driving", "resistance"] = Field(
         "driving", description="the unknown constant moment found from the cycle balance")
     gravity: Annotated[tuple[float, float], Strict(False), _within(-1e3, 1e3, "m/s²")] = Field(
@@ -428,10 +434,27 @@ class CoupleSpec(StrictModel):
     moment: Moment
 
 
-MATERIALS = {  # density [kg/m³], allowable hoop stress of a rotating rim [Pa]
-    "steel": (7800.0, 20e6),
-    "cast-iron": (7200.0, 7e6),
-}
+
+
+class GivenDisk(StrictModel):
+    """A given flywheel: a solid disk of the material of [flywheel]."""
+
+    D: Length = Field(description="diameter [m]")
+    b: Length = Field(description="width [m]")
+
+
+class GivenRim(StrictModel):
+    """A given flywheel: a rim (hub and spokes neglected) of the material of [flywheel]."""
+
+    D: Length = Field(description="outer diameter [m]")
+    D_inner: Length = Field(description="inner diameter [m], below D")
+    b: Length = Field(description="width [m]")
+
+    @model_validator(mode="after")
+    def _check(self):
+        if not self.D_inner < self.D:
+            raise FieldError(("D_inner",), f"{self.D_inner:g} m is not below D = {self.D:g} m")
+        return self
 
 
 class FlywheelSpec(StrictModel):
@@ -454,10 +477,61 @@ class FlywheelSpec(StrictModel):
         description="'first-principles': J = πρbD⁴/32 with the density and ratios above; "
                     "'course': the seed's rounded empirical constants 0.366, 0.406, 6123 "
                     "(steel, b = 0.2·D, D1 = 0.8·D)")
+    rim: RimSpec | None = Field(
+        None, description="design the rim (rim speed or allowable stress, share, section): "
+                          "results.flywheel_rim then holds the designed rim")
+    # a given flywheel (instead of machine.delta): one of the four
+    J: Annotated[float, Field(gt=0), _within(0.0, 1e9, "kg·m²")] | None = Field(
+        None, description="a given flywheel: its moment of inertia on its own shaft [kg·m²] "
+                          "(J_I = first group + J·i²); machine.delta is then omitted")
+    mass: Annotated[float, Field(gt=0), _within(0.0, 1e9, "kg")] | None = Field(
+        None, description="a given flywheel's mass [kg], with radius_of_gyration: J = m·k²")
+    radius_of_gyration: Annotated[float, Field(gt=0), _within(1e-6, 1e3, "m")] | None = Field(
+        None, description="its radius of gyration k [m] (with mass)")
+    given_disk: GivenDisk | None = Field(
+        None, description="a given solid disk (D, b): J = π·ρ·b·D⁴/32")
+    given_rim: GivenRim | None = Field(
+        None, description="a given rim (D, D_inner, b): J = π·ρ·b·(D⁴ − D_inner⁴)/32")
+
+    @model_validator(mode="after")
+    def _rim_share_once(self):
+        if self.rim is not None and "rim_share" in self.model_fields_set:
+            raise FieldError(("rim_share",), "with [flywheel.rim] the share is "
+                                             "flywheel.rim.share (give it there)")
+        forms = [k for k in ("J", "mass", "given_disk", "given_rim") if getattr(self, k) is not None]
+        if len(forms) > 1:
+            raise FieldError((forms[1],), f"a given flywheel is one of J, mass with "
+                             f"radius_of_gyration, given_disk, given_rim (got {', '.join(forms)})")
+        if (self.mass is None) != (self.radius_of_gyration is None):
+            which = "radius_of_gyration" if self.mass is not None else "mass"
+            raise FieldError((which,), "missing: mass and radius_of_gyration go together "
+                                       "(J = m·k²)")
+        if self.rim is not None and self.rim.speed is not None:
+            self.rim.check_speed(self.rho, self.sigma, self.material
+                                 if self.density is None and self.allowable_stress is None
+                                 else "the given material")
+        return self
 
     @property
     def rho(self) -> float:
         return self.density if self.density is not None else MATERIALS[self.material][0]
+
+    @property
+    def given_J(self) -> float | None:
+        """The given flywheel's J on its own shaft [kg·m²]: J, m·k², π·ρ·b·D⁴/32 of a disk or
+        π·ρ·b·(D⁴ − D1⁴)/32 of a rim (:func:`flywheel.dynamics.sizing.disk`, ``rim``); None
+        when the flywheel is to be sized for machine.delta."""
+        if self.J is not None:
+            return self.J
+        if self.mass is not None:
+            return self.mass * self.radius_of_gyration ** 2
+        if self.given_disk is not None:
+            d = self.given_disk
+            return math.pi * self.rho * d.b * d.D ** 4 / 32
+        if self.given_rim is not None:
+            r = self.given_rim
+            return math.pi * self.rho * r.b * (r.D ** 4 - r.D_inner ** 4) / 32
+        return None
 
     @property
     def sigma(self) -> float:
@@ -547,6 +621,15 @@ def _check_references(case: Case) -> None:
     if (case.crank is None) == (case.tabulated is None):
         raise FieldError((), "give exactly one of [crank] (a linkage) and [tabulated] "
                             "(kinematics from a table)")
+    given = case.flywheel.given_J is not None
+    if given and case.machine.delta is not None:
+        raise FieldError(("machine", "delta"), "give exactly one of machine.delta (the flywheel "
+                         "is sized for it) and a given flywheel (flywheel.J, mass with "
+                         "radius_of_gyration, given_disk or given_rim), not both")
+    if not given and case.machine.delta is None:
+        raise FieldError(("machine", "delta"), "missing: give machine.delta (the flywheel is "
+                         "sized for it) or a given flywheel (flywheel.J, mass with "
+                         "radius_of_gyration, given_disk or given_rim)")
     if case.motor is not None and case.motor.no_load_speed_rpm * 2 * math.pi / 60 <= case.machine.omega_mean:
         raise FieldError(("motor", "no_load_speed_rpm"),
                         f"{case.motor.no_load_speed_rpm:g} rpm is not above the mean speed "
@@ -757,7 +840,7 @@ def plausibility_warnings(case: Case) -> list[str]:
         out.append(f"crank.length: {case.crank_length:g} m is unusually short (cranks: 5 mm … "
                    "2 m); lengths are in metres")
     d = case.machine.delta
-    if not DELTA_USUAL[0] <= d <= DELTA_USUAL[1]:
+    if d is not None and not DELTA_USUAL[0] <= d <= DELTA_USUAL[1]:
         out.append(f"machine.delta: δ = {d:g} is outside the usual 1/300 … 1/5 "
                    f"({DELTA_USUAL[0]:.4f} … {DELTA_USUAL[1]:.1f}; Артоболевский's table: "
                    "presses 1/5 … 1/20, engines 1/80 … 1/150, generators 1/200 … 1/300)")

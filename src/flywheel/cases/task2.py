@@ -18,6 +18,7 @@ from typing import Annotated, ClassVar, Literal, Union
 
 from pydantic import Field, Strict, field_validator
 
+from flywheel.cases.rim import MATERIALS, Density, Material, RimSpec, Stress
 from flywheel.constant_inertia import graphs
 from flywheel.constant_inertia.solve import (BALANCE_RTOL, Task2Result, balance, power_value, solve,
                                             solve_areas)
@@ -162,6 +163,22 @@ class Flywheel(StrictModel):
     fluctuation_percent: float | None = Field(
         None, description="asked '±x % of the mean speed': δ = 2x/100")
     rim_radius: float | None = Field(None, description="mean radius of a rim: m = J/R² [m]")
+    material: Material = Field("steel", description="for [flywheel.rim]: sets density (7800 / "
+                               "7200 kg/m³) and allowable rim stress (20 / 7 MPa) unless given")
+    density: Density | None = Field(None, description="material density ρ [kg/m³]")
+    allowable_stress: Stress | None = Field(
+        None, description="allowable hoop stress of the rim σ_allow [Pa]")
+    rim: RimSpec | None = Field(None, description="design the rim: mean diameter from the rim "
+                                                  "speed or the allowable stress, share of J, "
+                                                  "section")
+
+    @property
+    def rho(self) -> float:
+        return self.density if self.density is not None else MATERIALS[self.material][0]
+
+    @property
+    def sigma(self) -> float:
+        return self.allowable_stress if self.allowable_stress is not None else MATERIALS[self.material][1]
 
 
 class Diagram(StrictModel):
@@ -203,6 +220,7 @@ class Task2Case(StrictModel):
 
 
 TOP = {"speed": Speed, "flywheel": Flywheel, "diagram": Diagram}
+NESTED = {("flywheel", "rim"): RimSpec}
 SINGLE_SPEEDS = ("omega0", "omega0_rpm", "mean", "mean_rpm")
 
 
@@ -214,6 +232,8 @@ def _model_at(loc: tuple, data: dict):
     head = loc[0]
     if head in TOP and len(loc) == 1:
         return TOP[head]
+    if tuple(loc) in NESTED:
+        return NESTED[tuple(loc)]
     if head in ("driving", "resistance") and len(loc) == 1:
         kind = (data.get(head) or {}).get("kind") if isinstance(data.get(head), dict) else None
         return KINDS.get(kind)
@@ -291,6 +311,12 @@ def _check(case: Task2Case) -> None:
             and not limits:
         raise FieldError("flywheel", "give J, or mass and radius_of_gyration, or the asked delta "
                    "(or fluctuation_percent, or the speed limits)")
+    if f.rim is not None and f.rim.speed is not None:
+        try:
+            f.rim.check_speed(f.rho, f.sigma, f.material if f.density is None and
+                              f.allowable_stress is None else "the given material")
+        except FieldError as exc:
+            raise FieldError(("flywheel", *exc.loc), str(exc)) from None
     if case.power is not None:
         _pos("power", case.power, "W")
     mean_known = given[0] in ("mean", "mean_rpm") or limits
@@ -518,7 +544,10 @@ def solve_case(case: Task2Case, source: str = "<case>", at_deg=()) -> Task2Resul
     k_gyr = f.radius_of_gyration if f.mass is None else None
     cycle = math.radians(case.cycle_deg)
     speeds = _speeds(case)
-    kw = dict(delta=delta, rim_radius=f.rim_radius, radius_of_gyration=k_gyr, **speeds)
+    rim = None if f.rim is None else dict(
+        density=f.rho, allowable_stress=f.sigma, share=f.rim.share, speed=f.rim.speed,
+        width_to_thickness=f.rim.width_to_thickness, width=f.rim.width)
+    kw = dict(delta=delta, rim_radius=f.rim_radius, radius_of_gyration=k_gyr, rim=rim, **speeds)
     at = [math.radians(x) for x in (*case.at_deg, *at_deg)]
     field = "flywheel"
     try:

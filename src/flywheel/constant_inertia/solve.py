@@ -182,6 +182,8 @@ class Task2Result:
     power_found: str | None = None        # which graph's value the mean power gave
     radius_of_gyration: float | None = None   # k [m]
     flywheel_mass: float | None = None        # m = J/k² [kg]
+    rim: object | None = None    # the designed rim (flywheel.dynamics.sizing.RimDesign) of J
+    #                              (J_required when δ is asked) at ω_ср
 
     def to_document(self, title: str = "", source: str = "") -> dict:
         """The results document, the JSON of ``flywheel task2 --json`` (SI units; angles in
@@ -233,6 +235,8 @@ class Task2Result:
         if self.flywheel_mass is not None:
             d["radius_of_gyration"] = self.radius_of_gyration
             d["flywheel_mass"] = self.flywheel_mass
+        if self.rim is not None:
+            d["flywheel_rim"] = self.rim.as_dict()
         d.update({
             "epsilon_max": self.epsilon_max,
             "epsilon_min": self.epsilon_min,
@@ -620,7 +624,8 @@ def _motion(bounds: list[float], kinds: list[str], A: list[float], J: float | No
 
 
 def _finish(res: dict, delta: float | None, rim_radius: float | None,
-            radius_of_gyration: float | None = None, work_per_cycle: float | None = None) -> dict:
+            radius_of_gyration: float | None = None, work_per_cycle: float | None = None,
+            rim: dict | None = None) -> dict:
     if delta is not None:
         res["delta_target"] = delta
         res["J_required"] = _J_for(res["delta_T_max"], res["omega_mean"], delta)
@@ -635,6 +640,13 @@ def _finish(res: dict, delta: float | None, rim_radius: float | None,
         # C_E = ΔE / work done per cycle (Khurmi & Gupta §16.4)
         res["work_per_cycle"] = work_per_cycle
         res["energy_fluctuation_coefficient"] = res["delta_T_max"] / work_per_cycle
+    if rim is not None:     # the rim as engineers finish it (Khurmi & Gupta ch. 16)
+        from dataclasses import replace
+
+        from flywheel.dynamics.sizing import design_rim
+        d = design_rim(res.get("J_required") or res["J"], res["omega_mean"], **rim)
+        res["rim"] = replace(d, stress_at_omega_max=d.density * (
+            d.rim_speed * res["omega_max"] / res["omega_mean"]) ** 2)
     return res
 
 
@@ -642,7 +654,7 @@ def solve(M_D: Moment, M_C: Moment, J: float | None = None, *, omega0: float | N
           omega_mean: float | None = None, delta: float | None = None,
           rim_radius: float | None = None, unknown: str | None = None,
           at: Sequence[float] = (), radius_of_gyration: float | None = None,
-          power_found: str | None = None) -> Task2Result:
+          power_found: str | None = None, rim: dict | None = None) -> Task2Result:
     """Steady (or not) motion under M_D(φ), M_C(φ) with constant J.
 
     Parameters: ``M_D``, ``M_C`` graphs [N·m over rad]; ``J`` [kg·m²] (None: found from
@@ -650,7 +662,9 @@ def solve(M_D: Moment, M_C: Moment, J: float | None = None, *, omega0: float | N
     (ω_ср, steady motion only) [rad/s]; ``delta`` asks for the J giving that δ at the same
     ω_ср; ``rim_radius`` [m] asks for the rim mass m = J/R²; ``at`` [rad]: angles where ω, ε
     and t are reported; ``radius_of_gyration`` [m] asks for the mass m = J/k²; ``unknown``,
-    ``power_found``: which graph's value the balance or the mean power found (for the record).
+    ``power_found``: which graph's value the balance or the mean power found (for the record);
+    ``rim``: the keyword arguments of :func:`flywheel.dynamics.sizing.design_rim` (density,
+    allowable_stress, share, speed, width_to_thickness, width) to design the rim of the J.
 
     Besides ω: ε(φ) = (M_D − M_C)/J and its global extremes (:func:`epsilon_extremes`), and
     the time law t(φ) = ∫₀^φ dφ/ω (:func:`time_linear`, :func:`integrate`): the cycle time, the
@@ -714,7 +728,7 @@ def solve(M_D: Moment, M_C: Moment, J: float | None = None, *, omega0: float | N
                      M_C.value(x, +1 if i < len(bounds) - 1 else -1), a, w, t)
                  for i, (x, k, a, w, t) in enumerate(zip(bounds, kinds, A, omega, times)))
     e_max, x_max, e_min, x_min = epsilon_extremes(pieces, res["J"])
-    res = _finish(res, delta, rim_radius, radius_of_gyration, W_D if steady else None)
+    res = _finish(res, delta, rim_radius, radius_of_gyration, W_D if steady else None, rim)
     power = (W_D / M_D.cycle) * res["omega_mean"] if steady else None
     return Task2Result(rows=rows, cycle=M_D.cycle, M_D=M_D.nominal, M_C=M_C.nominal,
                        unknown=unknown, work_driving=W_D, work_resistance=W_C, power=power,
@@ -728,7 +742,7 @@ def solve_areas(energies: Sequence[float], J: float | None = None, *, cycle: flo
                 delta: float | None = None, rim_radius: float | None = None,
                 crossings_at: Sequence[float] | None = None, at: Sequence[float] = (),
                 radius_of_gyration: float | None = None,
-                work_per_cycle: float | None = None) -> Task2Result:
+                work_per_cycle: float | None = None, rim: dict | None = None) -> Task2Result:
     """A turning-moment diagram given by the signed areas between its crossings with the mean
     line (Khurmi & Gupta, §16.5): ``energies`` [J] in order, positive above the mean line.
 
@@ -738,7 +752,8 @@ def solve_areas(energies: Sequence[float], J: float | None = None, *, cycle: flo
     the angles of ω_max and ω_min are unknown (None). A maximum fluctuation of energy ΔE given
     directly is the diagram [ΔE, −ΔE]. The areas say nothing of the moments between the
     crossings, so ε(φ) and the time law are unknown: ``at`` must be empty.
-    ``work_per_cycle`` [J] gives C_E = ΔT_нб/W; ``radius_of_gyration`` [m] the mass J/k².
+    ``work_per_cycle`` [J] gives C_E = ΔT_нб/W; ``radius_of_gyration`` [m] the mass J/k²;
+    ``rim`` designs the rim (as in :func:`solve`).
 
     >>> r = solve_areas([295.0, -685.0, 40.0, -340.0, 960.0, -270.0], J=1.0, omega_mean=100.0)
     >>> r.delta_T_max
@@ -780,7 +795,7 @@ def solve_areas(energies: Sequence[float], J: float | None = None, *, cycle: flo
     omega = res.pop("omega")
     rows = tuple(Row(x if crossings_at is not None else math.nan, "crossing", None, None, a, w)
                  for x, a, w in zip(bounds, A, omega))
-    res = _finish(res, delta, rim_radius, radius_of_gyration, work_per_cycle)
+    res = _finish(res, delta, rim_radius, radius_of_gyration, work_per_cycle, rim)
     return Task2Result(rows=rows, cycle=cycle, **res)
 
 

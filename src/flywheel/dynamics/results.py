@@ -12,6 +12,8 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from flywheel.dynamics.sizing import RimDesign
+
 UNITS = "SI (m, kg, s, rad, N, N·m, J, kg·m²); angles *_deg in degrees"
 
 
@@ -98,6 +100,9 @@ class EnergyResult:
     delta_T_I_min: float             # global minimum of ΔT_I [J] …
     phi_delta_T_I_min: float         # … at this angle [rad]
     delta_T_max: float               # ΔT_нб = max − min [J]
+    power: float | None = None       # machine.power, the given mean power [W]
+    power_moment: float | None = None      # P/ω_m, the mean moment it means [N·m]
+    power_from_loads: float | None = None  # |balancing_moment|·ω_m, the loads' power [W]
     warnings: tuple[str, ...] = ()
 
 
@@ -125,7 +130,7 @@ class SizingResult:
     """The flywheel for the coefficient of speed fluctuation δ (seed 000 §4; design.md §2)."""
 
     omega_mean: float            # ω_m [rad/s]
-    delta: float                 # target δ [-]
+    delta: float                 # target δ [-] (a given flywheel: the δ it gives)
     J_required: float            # J_I by Merzalov: ΔT_нб/(ω_m²·δ) [kg·m²]
     J_first_group: float         # inertia already on the crank shaft [kg·m²]
     J_flywheel: float            # J_required − J_first_group [kg·m²] (≤ 0: none needed)
@@ -147,6 +152,10 @@ class SizingResult:
     material_density: float      # ρ [kg/m³]
     rim_speed_limit: float       # √(σ/ρ) [m/s]
     formulas: str                # "first-principles" or "course"
+    rim_design: RimDesign | None = None   # the rim of [flywheel.rim] (replaces ``rim`` in
+    #                                       summary.json's flywheel_rim)
+    flywheel_given: bool = False          # the flywheel was given (not sized): δ is its δ
+    J_flywheel_given: float | None = None  # the given flywheel's J on its own shaft [kg·m²]
     warnings: tuple[str, ...] = ()
 
 
@@ -395,6 +404,10 @@ class Results:
             "balancing_moment": e.balancing_moment,
             "balance": e.balance,
             "delta": s.delta,
+            **({"flywheel_given": True, "J_flywheel_given": s.J_flywheel_given,
+                **self._epsilon_extremes()} if s.flywheel_given else {}),
+            **({"power": e.power, "power_moment": e.power_moment,
+                "power_from_loads": e.power_from_loads} if e.power is not None else {}),
             "delta_T_max": e.delta_T_max,
             "delta_T_I_max": e.delta_T_I_max, "phi_delta_T_I_max_deg": math.degrees(e.phi_delta_T_I_max),
             "delta_T_I_min": e.delta_T_I_min, "phi_delta_T_I_min_deg": math.degrees(e.phi_delta_T_I_min),
@@ -412,12 +425,14 @@ class Results:
             "T0": m.T0,
             "cycle_time": m.cycle_time,
             "flywheel_disk": s.disk.as_dict(),
-            "flywheel_rim": s.rim.as_dict(),
+            "flywheel_rim": (s.rim.as_dict() if s.rim_design is None
+                             else s.rim_design.as_dict()),
             "flywheel_material": s.material,
             "flywheel_material_density": s.material_density,
             "flywheel_speed_ratio": s.speed_ratio,
             "flywheel_J_on_its_shaft": s.J_on_its_shaft,
-            "flywheel_rim_share": s.rim_share,
+            "flywheel_rim_share": (s.rim_share if s.rim_design is None
+                                   else s.rim_design.share),
             "flywheel_rim_speed_limit": s.rim_speed_limit,
             "flywheel_formulas": s.formulas,
         })
@@ -438,6 +453,15 @@ class Results:
     def at_index(self, phi_deg: float) -> int:
         """Grid index of the report angle ``phi_deg`` [deg] (a node, taken mod the cycle)."""
         return int(np.argmin(np.abs(self.phi - math.radians(phi_deg) % self.cycle)))
+
+    def _epsilon_extremes(self) -> dict:
+        """ε's global extremes over the cycle's nodes [rad/s²] and their first angles [deg]."""
+        eps = self.motion.epsilon
+        i_max, i_min = int(np.argmax(eps)), int(np.argmin(eps))
+        return {"epsilon_max": float(eps[i_max]),
+                "phi_epsilon_max_deg": math.degrees(self.phi[i_max]),
+                "epsilon_min": float(eps[i_min]),
+                "phi_epsilon_min_deg": math.degrees(self.phi[i_min])}
 
     def _firing(self) -> dict:
         """{"firing_deg": {cylinder: where it fires [deg]}} of the four-stroke cylinders, in

@@ -2,6 +2,7 @@
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 
 import numpy as np
 
@@ -106,3 +107,115 @@ def rim_speed_limit(allowable_stress: float, density: float) -> float:
     Materials, part II, rotating rings). σ_allow = 7 MPa for cast iron and 20 MPa for steel give
     the customary limits of about 30 and 50 m/s."""
     return math.sqrt(allowable_stress / density)
+
+
+RIM_SHARE_DEFAULT = 0.9
+"""The share of the flywheel's J carried by a designed rim when none is given: the hub and arms
+carry the rest (Khurmi & Gupta, «Theory of Machines», ch. 16, "Dimensions of the flywheel rim":
+the rim is usually taken to give about 90 % of the flywheel effect; their worked examples use
+0.92, 0.95)."""
+
+WIDTH_TO_THICKNESS_DEFAULT = 2.0
+"""The rim's width b over its radial thickness t when neither is given (b = 2·t, as in Khurmi &
+Gupta's Examples 16.16 and 16.23)."""
+
+
+@dataclass(frozen=True)
+class RimDesign:
+    """A flywheel rim of rectangular section designed as engineers finish a flywheel (Khurmi &
+    Gupta, «Theory of Machines», ch. 16, "Dimensions of the flywheel rim"; :func:`design_rim`).
+
+    Which formula each quantity uses: ``rim_speed`` v = ω·D_mean/2 at the mean speed ω of the
+    flywheel's shaft [m/s]; ``stress`` σ = ρ·v², the hoop stress of a thin rotating ring [Pa]
+    (Timoshenko, «Strength of Materials», part II, rotating rings); ``mass`` m = share·J/R²
+    with R = D_mean/2 (thin ring: radius of gyration = mean radius) [kg]; the section from
+    m = ρ·π·D_mean·b·t (exact for a rectangular annulus) with b = ratio·t or b given [m];
+    ``J_rim_exact`` = m·(R² + t²/4), the same rim as a thick annulus, ½·m·(R_o² + R_i²)
+    [kg·m²], which exceeds the thin-ring share·J by the factor 1 + (t/D_mean)²."""
+
+    J: float                     # the flywheel's J on its own shaft, to be shared [kg·m²]
+    share: float                 # share of J (and of the energy) carried by the rim [-]
+    omega: float                 # the flywheel shaft's mean speed ω [rad/s]
+    density: float               # ρ [kg/m³]
+    allowable_stress: float      # σ_allow [Pa]
+    speed_from: str              # "allowable stress" (v = √(σ_allow/ρ)) or "given"
+    D_mean: float                # mean diameter 2·v/ω [m]
+    rim_speed: float             # v at D_mean at the mean speed [m/s]
+    stress: float                # thin-ring hoop stress ρ·v² [Pa]
+    mass: float                  # share·J/R² [kg]
+    thickness: float             # radial thickness t [m]
+    width: float                 # axial width b [m]
+    J_rim: float                 # thin ring m·R² = share·J [kg·m²]
+    J_rim_exact: float           # thick annulus m·(R² + t²/4) [kg·m²]
+    stress_at_omega_max: float | None = None   # ρ·(ω_max·R)² after the motion [Pa]
+
+    def as_dict(self) -> dict:
+        """summary.json's results.flywheel_rim (and ``task2 --json``'s flywheel_rim): the
+        contract keys D_mean, thickness, width, mass, rim_speed, stress, share, then the outer
+        and inner diameters and the width under the plain rim's names (D, D_inner, b)."""
+        out = {"D_mean": self.D_mean, "thickness": self.thickness, "width": self.width,
+               "mass": self.mass, "rim_speed": self.rim_speed, "stress": self.stress,
+               "share": self.share, "D": self.D_mean + self.thickness,
+               "D_inner": self.D_mean - self.thickness, "b": self.width,
+               "allowable_stress": self.allowable_stress, "rim_speed_from": self.speed_from,
+               "J_rim": self.J_rim, "J_rim_exact": self.J_rim_exact}
+        if self.stress_at_omega_max is not None:
+            out["stress_at_omega_max"] = self.stress_at_omega_max
+        return out
+
+
+def design_rim(J: float, omega: float, density: float, allowable_stress: float, *,
+               share: float = RIM_SHARE_DEFAULT, speed: float | None = None,
+               width_to_thickness: float | None = None,
+               width: float | None = None) -> RimDesign:
+    """The rim carrying ``share`` of ``J`` [kg·m²] on a shaft turning at the mean speed
+    ``omega`` [rad/s] (Khurmi & Gupta, «Theory of Machines», ch. 16, "Dimensions of the flywheel
+    rim", Examples 16.14–16.18, 16.23):
+
+    v = √(σ_allow/ρ) (hoop stress of a thin rotating ring σ = ρ·v²) or the given ``speed``;
+    D_mean = 2·v/ω; m = share·J/R², R = D_mean/2 (thin ring, k = R); m = ρ·π·D_mean·b·t with
+    b = ratio·t, t = √(m/(π·D_mean·ratio·ρ)), or b = ``width`` given, t = m/(π·D_mean·b·ρ).
+
+    Raises InputError (naming the field) if the given speed's stress ρ·v² exceeds σ_allow
+    (no diameter can help: the stress of a thin ring depends on v alone), if the share is not in
+    (0, 1], or if the rim comes out thicker than its mean diameter (no hole left).
+
+    >>> r = design_rim(100.0, 50.0, 7200.0, 7e6, share=1.0, width_to_thickness=2.0)
+    >>> round(r.rim_speed ** 2 * 7200.0 / 7e6, 12), round(r.mass * (r.D_mean / 2) ** 2, 9)
+    (1.0, 100.0)
+    """
+    from flywheel.errors import InputError
+
+    if not 0.0 < share <= 1.0:
+        raise InputError(f"flywheel.rim.share: {share:g} is not a share (allowed: 0 < share ≤ 1)")
+    v_max = rim_speed_limit(allowable_stress, density)
+    if speed is None:
+        v, speed_from = v_max, "allowable stress"
+    else:
+        if density * speed ** 2 > allowable_stress * (1 + 1e-12):
+            raise InputError(
+                f"flywheel.rim.speed: {speed:g} m/s gives the hoop stress ρ·v² = "
+                f"{density * speed ** 2 / 1e6:.6g} MPa above the allowable "
+                f"{allowable_stress / 1e6:.6g} MPa, whatever the diameter (allowed: at most "
+                f"√(σ/ρ) = {v_max:.6g} m/s for ρ = {density:g} kg/m³)")
+        v, speed_from = speed, "given"
+    D = 2 * v / omega
+    R = D / 2
+    J_rim = share * max(J, 0.0)
+    m = J_rim / R ** 2
+    if width is not None:
+        b = width
+        t = m / (math.pi * D * b * density)
+    else:
+        ratio = width_to_thickness if width_to_thickness is not None else WIDTH_TO_THICKNESS_DEFAULT
+        t = math.sqrt(m / (math.pi * D * ratio * density))
+        b = ratio * t
+    if not t < D:
+        raise InputError(
+            f"flywheel.rim: the rim comes out {t:.4g} m thick on a mean diameter of {D:.4g} m, "
+            f"so it has no hole (allowed: thickness < mean diameter: a higher rim speed, a wider "
+            f"rim, or a smaller share)")
+    return RimDesign(J=float(J), share=float(share), omega=float(omega), density=float(density),
+                     allowable_stress=float(allowable_stress), speed_from=speed_from,
+                     D_mean=D, rim_speed=v, stress=density * v ** 2, mass=m, thickness=t,
+                     width=b, J_rim=m * R ** 2, J_rim_exact=m * (R ** 2 + t ** 2 / 4))

@@ -21,6 +21,11 @@ from flywheel.dynamics.results import (EnergyResult, FlywheelShape, ForceResult,
 from flywheel.errors import InputError
 
 
+POWER_RTOL = 0.01
+"""machine.power and the power of the case's loads, |M_const|·ω_m, may differ by this share
+before a warning says so (a textbook rounds its power to three digits)."""
+
+
 def reduced_inertia(phi: np.ndarray, J_parts: dict[str, np.ndarray],
                     dJ_parts: dict[str, np.ndarray], warnings=()) -> ReductionResult:
     """J_II and dJ_II/dφ as the sums of the links' shares (seed 000 §3.1), with J_II's cycle
@@ -78,6 +83,19 @@ def work_and_energy(phi: np.ndarray, loads: LoadsResult, red: ReductionResult,
         A_D, A_C = A_known, A_const
         cycle_work_resistance = M_const * cycle
         driving_moment = work_known / cycle
+    power = getattr(machine, "power", None)
+    power_moment = power_from_loads = None
+    if power is not None:   # the mean power at ω_m: M = P/ω_m against the balance's moment
+        power_moment = power / omega_m
+        mean_moment = abs(float(M_const))   # mean driving (or resistance) moment [N·m]
+        power_from_loads = mean_moment * omega_m
+        if abs(power_from_loads - power) > POWER_RTOL * power:
+            which = "driving" if machine.balance == "driving" else "resistance"
+            warnings.append(
+                f"machine.power: P = {power:.6g} W at ω_m = {omega_m:.6g} rad/s means a mean "
+                f"{which} moment P/ω_m = {power_moment:.6g} N·m, but the case's loads balance "
+                f"with {mean_moment:.6g} N·m ({power_from_loads:.6g} W, "
+                f"{(power_from_loads / power - 1) * 100:+.3g} %): check the loads or the power")
     T_II, dT_I = energy.first_group_energy_change(A, red.J_II, omega_m)
     phi_max, dT_max = energy.extreme(dT_I, phi, "max")
     phi_min, dT_min = energy.extreme(dT_I, phi, "min")
@@ -87,32 +105,50 @@ def work_and_energy(phi: np.ndarray, loads: LoadsResult, red: ReductionResult,
         cycle_work_resistance=float(cycle_work_resistance), driving_moment=float(driving_moment),
         T_II=T_II, dT_I=dT_I, delta_T_I_max=float(dT_max), phi_delta_T_I_max=phi_max,
         delta_T_I_min=float(dT_min), phi_delta_T_I_min=phi_min,
-        delta_T_max=float(dT_max - dT_min), warnings=tuple(warnings))
+        delta_T_max=float(dT_max - dT_min), power=power, power_moment=power_moment,
+        power_from_loads=power_from_loads, warnings=tuple(warnings))
 
 
 def size_flywheel(phi: np.ndarray, en: EnergyResult, red: ReductionResult, machine,
-                  fw) -> SizingResult:
+                  fw, delta: float | None = None, J_given: float | None = None) -> SizingResult:
     """J_I for δ by Merzalov and exactly (the energy–mass diagram, with its tangents and
     tangency points), the flywheel on its shaft (seed 003, eqs. 9.21–9.23) and its disk and rim
     dimensions. ``machine``, ``fw``: the case's [machine] and [flywheel]. Rim speeds come after
-    the motion (:func:`with_rim_speeds`)."""
-    omega_m, delta = machine.omega_mean, machine.delta
+    the motion (:func:`with_rim_speeds`).
+
+    A given flywheel (``J_given`` [kg·m²] on its own shaft, :func:`given_flywheel_delta`): no
+    sizing — J_I = J_first_group + J_given·i² is what the crank shaft carries (J_required),
+    ``delta`` is the δ it gives, and the exact J_I and the tangents are those of that δ (they
+    come back to J_I: a check of the energy–mass diagram against the motion)."""
+    omega_m = machine.omega_mean
+    delta = machine.delta if delta is None else delta
     warnings: list[str] = []
-    J_req = sizing.J_required_merzalov(en.delta_T_max, omega_m, delta)
     J_first = float(sum(machine.first_group.values()))
-    J_fly = J_req - J_first
-    if J_fly <= 0:
+    if J_given is None:
+        J_req = sizing.J_required_merzalov(en.delta_T_max, omega_m, delta)
+    else:
+        J_req = J_first + J_given * fw.speed_ratio ** 2
+    J_fly = J_req - J_first if J_given is None else J_given * fw.speed_ratio ** 2
+    if J_given is None and J_fly <= 0:
         warnings.append(f"the first group already has {J_first:.6g} kg·m² ≥ J_required = {J_req:.6g} "
                         f"kg·m²: no flywheel is needed")
     J_exact, T0_exact = sizing.J_required_exact(en.A, red.J_II, omega_m, delta)
     k_plus, k_minus = sizing.tangent_slopes(omega_m, delta)
     i_max, i_min = sizing.tangency_points(en.A, red.J_II, omega_m, delta)
-    J_shaft = max(J_fly, 0.0) / fw.speed_ratio**2          # seed 003, eqs. 9.21–9.23
+    J_shaft = (max(J_fly, 0.0) / fw.speed_ratio**2          # seed 003, eqs. 9.21–9.23
+               if J_given is None else J_given)
     if fw.formulas == "course":
         disk, rim = sizing.disk_course(J_shaft), sizing.rim_course(J_shaft * fw.rim_share)
     else:
         disk = sizing.disk(J_shaft, fw.rho, fw.width_ratio)
         rim = sizing.rim(J_shaft * fw.rim_share, fw.rho, fw.width_ratio, fw.inner_ratio)
+    rim_spec = getattr(fw, "rim", None)
+    designed = None
+    if rim_spec is not None:          # [flywheel.rim]: the rim as engineers finish it
+        try:
+            designed = rim_spec.design(J_shaft, omega_m * fw.speed_ratio, fw.rho, fw.sigma)
+        except InputError as exc:
+            raise InputError(f"{exc} (the flywheel's J = {J_shaft:.6g} kg·m² on its shaft)") from None
     return SizingResult(
         omega_mean=float(omega_m), delta=float(delta), J_required=float(J_req),
         J_first_group=J_first, J_flywheel=float(J_fly), J_required_exact=float(J_exact),
@@ -123,7 +159,8 @@ def size_flywheel(phi: np.ndarray, en: EnergyResult, red: ReductionResult, machi
         disk=FlywheelShape(**disk), rim=FlywheelShape(**rim), material=fw.material,
         material_density=float(fw.rho),
         rim_speed_limit=float(sizing.rim_speed_limit(fw.sigma, fw.rho)), formulas=fw.formulas,
-        warnings=tuple(warnings))
+        rim_design=designed, flywheel_given=J_given is not None,
+        J_flywheel_given=None if J_given is None else float(J_given), warnings=tuple(warnings))
 
 
 def true_motion(phi: np.ndarray, en: EnergyResult, red: ReductionResult,
@@ -165,6 +202,8 @@ def with_rim_speeds(sz: SizingResult, mo: MotionResult, fw) -> SizingResult:
     for shape, dims in (("disk", sz.disk), ("rim", sz.rim)):
         v = mo.omega_max * sz.speed_ratio * dims.D / 2
         shapes[shape] = replace(dims, rim_speed=v)
+        if shape == "rim" and sz.rim_design is not None:
+            continue                  # the designed rim replaces this one
         if v > sz.rim_speed_limit:
             material = fw.material if fw.density is None and fw.allowable_stress is None \
                 else "the given material"
@@ -173,14 +212,43 @@ def with_rim_speeds(sz: SizingResult, mo: MotionResult, fw) -> SizingResult:
                             f"stress σ = ρ·v², Timoshenko, Strength of Materials, part II) for "
                             f"{material}: σ = {fw.sigma / 1e6:g} MPa, ρ = {fw.rho:g} kg/m³ (set "
                             f"flywheel.allowable_stress, or a wider flywheel: width_ratio)")
-    return replace(sz, disk=shapes["disk"], rim=shapes["rim"], warnings=tuple(warnings))
+    designed = sz.rim_design
+    if designed is not None:          # its hoop stress at ω_max, ρ·(ω_max·i·D_mean/2)²
+        v_top = mo.omega_max * sz.speed_ratio * designed.D_mean / 2
+        designed = replace(designed, stress_at_omega_max=designed.density * v_top ** 2)
+    return replace(sz, disk=shapes["disk"], rim=shapes["rim"], rim_design=designed,
+                   warnings=tuple(warnings))
+
+
+def given_flywheel_delta(en: EnergyResult, red: ReductionResult, machine, J_given: float,
+                         speed_ratio: float) -> float:
+    """The δ a given flywheel gives: J_I = J_first_group + J_given·i² [kg·m²] on the crank
+    shaft, ω(φ) from the energy equation ½(J_I + J_II)·ω² = T0 + A with (ω_max + ω_min)/2 = ω_m
+    (:func:`true_motion`'s motion), δ = (ω_max − ω_min)/ω_m. Raises InputError if there is no
+    inertia at all."""
+    J_I = float(sum(machine.first_group.values())) + J_given * speed_ratio ** 2
+    if not J_I + float(red.J_II.min()) > 0:
+        raise InputError("the machine has no inertia (allowed: a flywheel.J > 0, masses in "
+                         "[links] or machine.first_group)")
+    T0 = motion.T0_for_mean_speed(en.A, J_I, red.J_II, machine.omega_mean)
+    return float(motion.speed_fluctuation(motion.omega_from_energy(T0, en.A, J_I, red.J_II))[3])
 
 
 def dynamics(phi: np.ndarray, loads: LoadsResult, red: ReductionResult, machine,
              fw) -> tuple[EnergyResult, SizingResult, MotionResult]:
-    """Energy → sizing → motion → rim speeds: everything that follows from the loads and J_II."""
+    """Energy → sizing → motion → rim speeds: everything that follows from the loads and J_II.
+    A given flywheel (``fw.given_J``) is not sized: its δ comes from the motion
+    (:func:`given_flywheel_delta`)."""
     en = work_and_energy(phi, loads, red, machine)
-    sz = size_flywheel(phi, en, red, machine, fw)
+    J_given = getattr(fw, "given_J", None)
+    if J_given is None:
+        sz = size_flywheel(phi, en, red, machine, fw)
+    else:
+        delta = given_flywheel_delta(en, red, machine, J_given, fw.speed_ratio)
+        if not 0 < delta < 2:
+            raise InputError(f"the given flywheel (J = {J_given:.6g} kg·m²) is too small: the "
+                             f"speed fluctuates by δ = {delta:.6g} (allowed: a larger flywheel.J)")
+        sz = size_flywheel(phi, en, red, machine, fw, delta=delta, J_given=J_given)
     mo = true_motion(phi, en, red, sz)
     return en, with_rim_speeds(sz, mo, fw), mo
 
@@ -313,7 +381,8 @@ def time_domain(case, phi: np.ndarray, red: ReductionResult, en: EnergyResult,
         w_x = case.motor.no_load_speed_rpm * 2 * math.pi / 60
         M_p = case.motor.starting_torque or en.driving_moment / (1 - machine.omega_mean / w_x)
         st = timedomain.startup(phi, J, dJ, en.M_known, timedomain.linear_motor(M_p, w_x),
-                                machine.omega_mean, machine.delta)
+                                machine.omega_mean, machine.delta if machine.delta is not None
+                                else mo.delta_achieved)
         startup = {k: v for k, v in st.items() if not isinstance(v, np.ndarray)}
         startup["starting_torque"] = float(M_p)
         startup["no_load_speed"] = float(w_x)

@@ -16,7 +16,8 @@ def _crank_line(report, m) -> str:
     """n1, ω_m, δ and which constant moment balances the cycle."""
     return (f"{nm.name('crank_speed')} = {report.crank_speed_rps:.6g} {nm.unit_of('crank_speed')}, "
             f"{nm.symbol('omega_mean')} = {m.omega_mean:.6g} {nm.unit_of('omega_mean')}, "
-            f"{nm.symbol('delta')} = {m.delta:g}, balance: constant {m.balance} moment")
+            + (f"{nm.symbol('delta')} = {m.delta:g}, " if m.delta is not None else
+               "a given flywheel, ") + f"balance: constant {m.balance} moment")
 
 
 def _table(title: str, columns):

@@ -112,11 +112,14 @@ T = {
         "extremes": ("- {dT} max = {vmax} {uJ} at {amax}°, min = {vmin} {uJ} at {amin}° (global "
                      "extremes); {span} = {v} {uJ}"),
         "merzalov": "- Merzalov: {J} = {span}/(δ·{w}²) = {v} {uI}, δ achieved {d}",
+        "given": "- the flywheel is given (not sized): {J} = {v} {uI} on the crank shaft gives δ = {d}",
         "exact": "- exact (energy–mass diagram): {J} = {v} {uI}, δ achieved {d}",
         "flywheel": "- flywheel {JM} = {J} − ({J1}) = {v} {uI}",
         "shaft": "; on a shaft {i:g} times faster: {v} {uI}",
         "disk": "- disk ({mat}): {dims}, {speed} {v} {u}",
         "rim": "- rim: {dims}, {speed} {v} {u} (limit {lim} {u})",
+        "rim_design": ("- the rim as designed (share {share} of the flywheel's J; thin ring, Khurmi & "
+                       "Gupta ch. 16): {dims}; σ = ρ·v² = {sigma} MPa"),
         "omega_extremes": "- {wmax} = {vmax} {uw} at {amax}°, {wmin} = {vmin} {uw} at {amin}°; {T} {v} {uT}",
         "at": "ω = {w} {uw}, ε = {e} {ue}",
         "time": "7. Motion in time",
@@ -196,11 +199,14 @@ T = {
         "extremes": ("- {dT} max = {vmax} {uJ} при {amax}°, min = {vmin} {uJ} при {amin}° "
                      "(глобальные экстремумы); {span} = {v} {uJ}"),
         "merzalov": "- по Мерцалову: {J} = {span}/(δ·{w}²) = {v} {uI}, достигнутый δ {d}",
+        "given": "- маховик задан (не подбирается): {J} = {v} {uI} на валу кривошипа даёт δ = {d}",
         "exact": "- точно (диаграмма Виттенбауэра): {J} = {v} {uI}, достигнутый δ {d}",
         "flywheel": "- маховик {JM} = {J} − ({J1}) = {v} {uI}",
         "shaft": "; на валу, вращающемся в {i:g} раз быстрее: {v} {uI}",
         "disk": "- диск ({mat}): {dims}, {speed} {v} {u}",
         "rim": "- обод: {dims}, {speed} {v} {u} (допускаемая {lim} {u})",
+        "rim_design": ("- спроектированный обод (доля {share} от J маховика; тонкое кольцо, Khurmi & "
+                       "Gupta, гл. 16): {dims}; σ = ρ·v² = {sigma} МПа"),
         "omega_extremes": "- {wmax} = {vmax} {uw} при {amax}°, {wmin} = {vmin} {uw} при {amin}°; {T} {v} {uT}",
         "at": "ω = {w} {uw}, ε = {e} {ue}",
         "time": "7. Движение во времени",
@@ -533,6 +539,8 @@ def _sizing_lines(s: dict, t: dict, lang: str) -> list[str]:
     if s.get("flywheel_speed_ratio", 1) != 1:
         fw += t["shaft"].format(i=s["flywheel_speed_ratio"], v=g(s["flywheel_J_on_its_shaft"], 6), uI=uI)
     return [
+        t["given"].format(J=sym("J_required"), v=g(s["J_required"], 6), uI=uI,
+                          d=g(s["delta_achieved"], 6)) if s.get("flywheel_given") else
         t["merzalov"].format(J=sym("J_required"), span=sym("delta_T_max"), w=sym("omega_mean"),
                              v=g(s["J_required"], 6), uI=uI, d=g(s["delta_achieved"], 6)),
         t["exact"].format(J=sym("J_required_exact"), v=g(s["J_required_exact"], 6), uI=uI,
@@ -544,6 +552,9 @@ def _sizing_lines(s: dict, t: dict, lang: str) -> list[str]:
         t["rim"].format(dims=dims(r, ("D", "D_inner", "b", "mass"), (4, 4, 4, 5)),
                         speed=nm.name("rim_speed", lang), v=g(r.get("rim_speed"), 4), u=u("rim_speed"),
                         lim=g(s.get("flywheel_rim_speed_limit"), 3)),
+        *([t["rim_design"].format(share=g(r["share"], 4), sigma=g(r["stress"] / 1e6, 4),
+                                  dims=dims(r, ("D_mean", "thickness", "width", "mass", "rim_speed"),
+                                            (4, 4, 4, 5, 4)))] if "D_mean" in r else []),
         t["omega_extremes"].format(wmax=sym("omega_max"), vmax=g(s["omega_max"], 6),
                                    amax=f"{s['phi_omega_max_deg']:.2f}", wmin=sym("omega_min"),
                                    vmin=g(s["omega_min"], 6), amin=f"{s['phi_omega_min_deg']:.2f}",

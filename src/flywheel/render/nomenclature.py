@@ -404,6 +404,33 @@ TERMS: dict[str, Term] = {
     "shaking_moment": _t("M_ст", r"$M_{ст}$", "N·m", "shaking moment on the frame",
                          "неуравновешенный момент на стойку", "M_sh"),
     # end force analysis -----------------------------------------------------------------------
+    # --- flywheel ---  (the designed rim, [flywheel.rim]: results.flywheel_rim)
+    "D_mean": _t("D_ср", r"$D_{ср}$", "m", "mean diameter of the rim", "средний диаметр обода",
+                 "D_m", "$D_m$"),
+    "thickness": _t("t", "$t$", "m", "radial thickness of the rim", "толщина обода"),
+    "width": _t("b", "$b$", "m", "width of the rim", "ширина обода"),
+    "stress": _t("σ", r"$\sigma$", "Pa", "hoop stress of the rim ρ·v²",
+                 "напряжение в ободе ρ·v²"),
+    "share": _t("k_об", r"$k_{об}$", "-", "share of J carried by the rim", "доля J на ободе",
+                "k_rim", r"$k_{rim}$"),
+    "flywheel_rim_design": _t("", "", "", "the rim as designed", "спроектированный обод"),
+    "flywheel_given": _t("", "", "", "the flywheel is given (not sized)",
+                         "маховик задан (не подбирается)"),
+    "J_flywheel_given": _t("J_М", "$J_М$", "kg·m²", "the given flywheel's J on its shaft",
+                           "заданный момент инерции маховика на его валу", "J_M", "$J_M$"),
+    "delta_given": _t("δ", r"$\delta$", "-", "δ the given flywheel gives",
+                      "δ при заданном маховике"),
+    "power": _t("P", "$P$", "W", "mean power at ω_m (given)", "средняя мощность при ω_ср (задана)"),
+    "power_moment": _t("P/ω_m", r"$P/\omega_m$", "N·m", "mean moment P/ω_m of the given power",
+                       "средний момент P/ω_ср по заданной мощности", "P/ω_m", r"$P/\omega_m$"),
+    "epsilon_max": _t("ε_max", r"$\varepsilon_{max}$", "rad/s²", "largest ε over the cycle",
+                      "наибольшее ε за цикл"),
+    "epsilon_min": _t("ε_min", r"$\varepsilon_{min}$", "rad/s²", "smallest ε over the cycle",
+                      "наименьшее ε за цикл"),
+    "phi_epsilon_max_deg": _t("φ", r"$\varphi$", "deg", "φ of ε_max", "φ при ε_max"),
+    "phi_epsilon_min_deg": _t("φ", r"$\varphi$", "deg", "φ of ε_min", "φ при ε_min"),
+    "power_from_loads": _t("P", "$P$", "W", "power of the loads |M|·ω_m",
+                           "мощность нагрузок |M|·ω_ср"),
 }
 
 # the load names inside "M {load}": "gas HP", "gravity 2", "force punch", "couple c", "moment m"

@@ -281,6 +281,15 @@ TERMS: dict[str, Term] = {
     "ag_plot_moment_axis": T("M", "N·m", "moment [N·m]", "момент [Н·м]"),
     "ag_plot_t_axis": T("t", "s", "t [s]", "t [с]"),
     "ag_plot_title": T("", "", "machine aggregate", "машинный агрегат"),
+    # --- flywheel ---
+    "rim_design": T("", "", "rim (share {share} of J, b/t = {ratio})",
+                    "обод (доля {share} от J_пр, b/t = {ratio})"),
+    "rim_design_dims": T("", "m", "D_mean = {D}, t = {t}, b = {b} m; m = {m} kg",
+                         "D_ср = {D}, t = {t}, b = {b} м; m = {m} кг"),
+    "rim_design_how": T("", "", "v = {v} m/s ({src}), σ = ρ·v² = {sigma} MPa; m = share·J/R²",
+                        "v = {v} м/с ({src}), σ = ρ·v² = {sigma} МПа; m = доля·J_пр/R²"),
+    "rim_from_stress": T("", "", "from σ_allow", "по σ_доп"),
+    "rim_from_given": T("", "", "given", "задана"),
 }
 del T
 

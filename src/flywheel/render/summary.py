@@ -124,10 +124,18 @@ def print_summary(results, console=None, lang: str = "en") -> None:
         tab.add_row(nm.name(key, lang), _g(s[key]), u(key))
     tab.add_row(f"{nm.symbol('dT_I', lang)} max / min", f"{at('delta_T_I_max')} / {at('delta_T_I_min')}",
                 u("dT_I"))
+    given = s.get("flywheel_given", False)          # a given flywheel: δ is its answer
+    if given:
+        tab.add_row(nm.name("J_flywheel_given", lang), _g(s["J_flywheel_given"]),
+                    u("J_flywheel_given"))
     for key in ("J_required", "J_required_exact", "J_first_group", "J_flywheel", "delta",
                 "delta_achieved", "delta_achieved_exact"):
-        tab.add_row(nm.name(key, lang), _g(s[key]), u(key))
-    for key in ("omega_max", "omega_min"):
+        tab.add_row(nm.name("delta_given" if given and key == "delta" else key, lang),
+                    _g(s[key]), u(key))
+    for key in ("power", "power_moment", "power_from_loads"):
+        if key in s:
+            tab.add_row(nm.name(key, lang), _g(s[key]), u(key))
+    for key in ("omega_max", "omega_min", *(("epsilon_max", "epsilon_min") if given else ())):
         tab.add_row(nm.name(key, lang), at(key), u(key))
     if "flywheel_speed_ratio" in s:
         tab.add_row(t["fw_shaft"].format(i=nm.symbol("flywheel_speed_ratio", lang),
@@ -143,14 +151,19 @@ def print_summary(results, console=None, lang: str = "en") -> None:
                     f"{_g(s['flywheel_material_density'], 5)}"
                     + (f"; {nm.name('flywheel_rim_speed_limit', lang)} {_g(lim, 3)}" if lim else ""),
                     u("flywheel_material_density", *(["flywheel_rim_speed_limit"] if lim else [])))
-    share = results.sizing.rim_share
+    share = s["flywheel_rim_share"]
     if share < 1 - 1e-9:
         tab.add_row(nm.name("flywheel_rim_share", lang), _g(share, 4), u("flywheel_rim_share"))
+    designed = "D_mean" in s["flywheel_rim"]          # [flywheel.rim]: the designed rim
+    rim_fields = (("D_mean", "thickness", "width", "mass", "rim_speed", "stress"),
+                  (4, 4, 4, 5, 4, 4)) if designed else (("D", "D_inner", "b", "mass"), (4, 4, 4, 5))
     for key, fields, digits in (("flywheel_disk", ("D", "b", "mass"), (4, 4, 5)),
-                                ("flywheel_rim", ("D", "D_inner", "b", "mass"), (4, 4, 4, 5))):
+                                ("flywheel_rim", *rim_fields)):
         d = s[key]
-        tab.add_row(nm.name(key, lang), ", ".join(f"{nm.symbol(f, lang)} = {_g(d[f], n)}"
-                                                  for f, n in zip(fields, digits)), u(*fields))
+        tab.add_row(nm.name("flywheel_rim_design" if key == "flywheel_rim" and designed else key,
+                            lang),
+                    ", ".join(f"{nm.symbol(f, lang)} = {_g(d[f], n)}"
+                              for f, n in zip(fields, digits)), u(*fields))
     console.print(tab)
     for a in results.at:
         pt = Table(title=t["title_at"].format(phi=_g(a["phi_deg"]), w=_g(a["omega"]), e=_g(a["epsilon"]),

@@ -109,6 +109,15 @@ def print_summary(r, title: str = "", source: str = "", console=None, lang: str 
     if r.flywheel_mass is not None:
         t.add_row(L("flywheel_mass", k=_g(r.radius_of_gyration)), _g(r.flywheel_mass), U("kg"),
                   L("flywheel_mass_how"))
+    if r.rim is not None:                     # [flywheel.rim]: the designed rim
+        d = r.rim
+        t.add_row(L("rim_design", share=_g(d.share, ".4g"), ratio=_g(d.width / d.thickness, ".4g")
+                    if d.thickness > 0 else "—"),
+                  L("rim_design_dims", D=_g(d.D_mean, ".4g"), t=_g(d.thickness, ".4g"),
+                    b=_g(d.width, ".4g"), m=_g(d.mass, ".5g")), "",
+                  L("rim_design_how", v=_g(d.rim_speed, ".4g"), sigma=_g(d.stress / 1e6, ".4g"),
+                    src=L("rim_from_stress" if d.speed_from == "allowable stress"
+                          else "rim_from_given")))
     if r.driving is None and r.energy_fluctuation_coefficient is not None:
         t.add_row(L("energy_fluctuation_coefficient"), _g(r.energy_fluctuation_coefficient), "",
                   "")
