@@ -857,6 +857,15 @@ def dyad_name(d) -> str:
     return d.name or (d.rocker if isinstance(d, RPRSpec) else d.joint)
 
 
+def field_of(exc: Exception, case) -> str:
+    """The case-file path of the dyad an error names (an AssemblyError's ``dyad``: 'dyads[1]'),
+    else '' — the one lookup for the CLI guard and the variants' templates."""
+    dyad = getattr(exc, "dyad", None)
+    if dyad is None or case is None or not hasattr(case, "dyads"):
+        return ""
+    return next((f"dyads[{i}]" for i, d in enumerate(case.dyads) if dyad_name(d) == dyad), "")
+
+
 def to_mechanism(case: Case):
     """Build the kinematics description (:class:`flywheel.linkage.Mechanism`) of a case."""
     from flywheel.linkage import RPR, RRP, RRR, Crank, CrankPin, Guide, LinkPoint, Mechanism
