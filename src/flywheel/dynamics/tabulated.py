@@ -156,7 +156,7 @@ def dynamic_moments(spec, omega: float) -> np.ndarray:
 # -- the analysis ------------------------------------------------------------------------------
 
 def analyze_tabulated(case, n_points: int = DEFAULT_POINTS, at_deg: list[float] | None = None,
-                      transients: bool = False, motion: str = "true") -> Results:
+                      transients: bool = False, motion: str = "true", progress=None) -> Results:
     """The dynamic analysis of a case whose kinematics are a table (``case.tabulated``).
 
     The table is a second source of the loads and of J_II's parts, on the grid with its
@@ -175,7 +175,7 @@ def analyze_tabulated(case, n_points: int = DEFAULT_POINTS, at_deg: list[float] 
     tab = tabulated_kinematics(spec, phi, red, en, case.machine.omega_mean)
     at = report_angles(at_deg, phi, tab, ld, red, en, mo)
     fo = stages.force_analysis(phi, red, en, mo, case.machine.omega_mean, motion)
-    td = stages.time_domain(case, phi, red, en, mo) if transients else None
+    td = stages.time_domain(case, phi, red, en, mo, progress) if transients else None
     return Results(
         title=case.title, source=case.source, phi=phi, kinematics=None, loads=ld, reduction=red,
         energy=en, sizing=sz, motion=mo, columns=tabulated_columns(phi, tab, ld, red, en, mo),
