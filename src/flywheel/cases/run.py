@@ -551,9 +551,6 @@ def _check_references(case: Case) -> None:
         raise FieldError(("motor", "no_load_speed_rpm"),
                         f"{case.motor.no_load_speed_rpm:g} rpm is not above the mean speed "
                         f"{case.machine.omega_mean * 30 / math.pi:g} rpm")
-    if case.tabulated is not None and case.machine.cycle_deg != 360:
-        raise FieldError(("machine", "cycle_deg"), f"{case.machine.cycle_deg:g}° with [tabulated]: "
-                         "a table of positions covers one revolution (allowed: 360)")
     if case.tabulated is not None:   # no linkage: masses and loads live in [tabulated]
         for key in ("ground", "dyads", "points", "links", "cylinders", "forces", "couples"):
             if getattr(case, key):
@@ -834,7 +831,10 @@ def parse_case(data: dict, source: str = "<case>") -> Case:
     other = wrong_kind(data, "run", source)
     if other is not None:
         raise CaseFileError(other)
-    return validate(data, Case, source, lambda errs: _describe(pick(errs, _DYAD_TAGS)))
+    from flywheel.cases.tabulated import cycle_context
+
+    return validate(data, Case, source, lambda errs: _describe(pick(errs, _DYAD_TAGS)),
+                    context=cycle_context(data))   # a [tabulated] table covers the machine's cycle
 
 
 def load_case(path) -> Case:
