@@ -42,7 +42,8 @@ def work_and_energy(phi: np.ndarray, loads: LoadsResult, red: ReductionResult,
     global extremes (Merzalov; seed 000 §3.2.7, §4). ``machine``: the case's [machine]
     (ω_m, balance). The cycle Φ is the closed grid's (2π, or 4π for a four-stroke engine):
     M = −(1/Φ)·∮ M_known dφ. Raises InputError if the loads' work has the wrong sign for the
-    balance."""
+    balance; loads that do no net work (weights only) need no constant moment whichever the
+    balance: M = 0 and a warning."""
     omega_m = machine.omega_mean
     cycle = phi[-1] - phi[0]
     zero = np.zeros_like(phi)
@@ -63,7 +64,7 @@ def work_and_energy(phi: np.ndarray, loads: LoadsResult, red: ReductionResult,
             f"the loads do {work_known:+.6g} J of work over a cycle: a constant driving moment "
             f"would have to be {M_const:.6g} N·m ≤ 0 (allowed: resistance must absorb work; "
             f"for an engine set machine.balance = \"resistance\")")
-    if machine.balance == "resistance" and not M_const < 0:
+    elif machine.balance == "resistance" and not M_const < 0:
         raise InputError(
             f"the loads do {work_known:+.6g} J of work over a cycle: a constant resistance moment "
             f"would have to be {-M_const:.6g} N·m ≤ 0 (allowed: driving forces must supply work; "
