@@ -57,6 +57,17 @@ def test_rundown_estimate_none_without_net_resistance():
     assert timedomain.rundown_cycles(phi, np.full_like(phi, 2.0), 30.0 * np.sin(phi), 20.0) is None
 
 
+def test_rundown_of_loads_that_drive_says_so():
+    """Loads that do positive work (an engine's gas) never run the machine down: three cycles
+    for the history, no estimate, and the reason names the positive work (not 'no net work')."""
+    phi = np.linspace(0, 2 * np.pi, 361)
+    M = np.full_like(phi, 5.0)
+    assert timedomain.rundown_cycles(phi, np.full_like(phi, 2.0), M, 20.0) is None
+    rd = timedomain.rundown(phi, np.full_like(phi, 2.0), np.zeros_like(phi), M, 20.0)
+    assert not rd["stopped"] and "positive work" in rd["reason"] and "+31.4 J" in rd["reason"]
+    assert math.radians(rd["angle_deg"]) == pytest.approx(3 * 2 * np.pi, rel=1e-9)
+
+
 def test_startup_estimate_is_the_closed_form_for_constant_inertia():
     """J·dω/dt = (M_п/ω_x)(ω_s − ω): ω = ω_s·(1 − e^(−t/τ)), within δ/50 of ω_s after
     t* = τ·ln(50/δ), having turned ∫ω dt = ω_s·τ·(ln(50/δ) − 1 + δ/50), that over 2π cycles;

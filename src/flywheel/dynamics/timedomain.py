@@ -344,9 +344,9 @@ def rundown(phi_grid: np.ndarray, J: np.ndarray, dJ: np.ndarray, M_loads: np.nda
     """The drive is cut at φ = 0 with speed ω0: the loads alone act until the crank stops.
     Returns ``time`` [s] and ``angle_deg`` (crank rotation) to standstill, and the history.
 
-    If the loads do no net work over a cycle (gravity only, say: |∮M dφ| ≤ 1e-9·∮|M| dφ) the
-    machine never runs down: three cycles are integrated for the history and ``reason`` says so
-    (``stopped`` False). ``progress(fraction)``: the angle turned over the estimate of
+    If the loads do no net work over a cycle (gravity only, say: |∮M dφ| ≤ 1e-9·∮|M| dφ), or
+    positive work (an engine's gas: they drive), the machine never runs down: three cycles are
+    integrated for the history and ``reason`` says which (``stopped`` False). ``progress(fraction)``: the angle turned over the estimate of
     :func:`rundown_cycles` (at most 0.99 until the end)."""
     period = phi_grid[-1] - phi_grid[0]
     # cycle totals summed pairwise (np.sum): the running sum's end differs in the last bits,
@@ -366,6 +366,10 @@ def rundown(phi_grid: np.ndarray, J: np.ndarray, dJ: np.ndarray, M_loads: np.nda
     out = {"stopped": stopped, "time": float(h.t[-1]), "angle_deg": float(np.degrees(h.phi[-1])),
            "t": h.t, "omega": h.omega, "phi": h.phi}
     if conservative and not stopped:
-        out["reason"] = (f"the loads do no net work over a cycle ({work:.3g} J): without the drive "
-                         f"the machine keeps turning")
+        out["reason"] = (
+            f"the loads do no net work over a cycle ({work:.3g} J): without the drive the machine "
+            f"keeps turning" if not work > 1e-9 * scale else
+            f"the loads do positive work over a cycle ({work:+.3g} J: they drive, as an engine's "
+            f"gas does): without the constant resistance the machine speeds up, there is no "
+            f"run-down")
     return out
