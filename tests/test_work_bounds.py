@@ -210,3 +210,49 @@ def test_progress_does_not_change_the_results():
     a = analyze(c, n_points=360, transients=True).to_document()
     b = analyze(c, n_points=360, transients=True, progress=lambda s, f: None).to_document()
     assert a == b
+
+
+# -- the bar on a terminal, nothing when piped ----------------------------------------------------
+
+def _flywheel(args, terminal: bool):
+    """`python -m flywheel ARGS` with stderr piped; ``terminal``: rich told stderr is a terminal
+    (FORCE_COLOR, as a terminal would make it draw)."""
+    import os
+    import subprocess
+    import sys
+
+    env = {k: v for k, v in os.environ.items() if k not in ("FORCE_COLOR", "TTY_COMPATIBLE",
+                                                             "NO_COLOR", "TERM")}
+    if terminal:
+        env["FORCE_COLOR"] = "1"
+    return subprocess.run([sys.executable, "-m", "flywheel", *map(str, args)], env=env,
+                          capture_output=True, text=True, timeout=120)
+
+
+def _visible_lines(text: str) -> list[str]:
+    import re
+
+    text = re.sub(r"\x1b\[[0-9;?]*[A-Za-z]", "", text).replace("\r", "\n")
+    return [ln for ln in text.splitlines() if ln.strip()]
+
+
+def test_the_bar_shows_on_a_terminal_and_not_when_piped(tmp_path):
+    args = ["run", CASES / "press.toml", "--transients", "--no-plots", "--json", "--out"]
+    piped = _flywheel(args + [tmp_path / "a"], terminal=False)
+    shown = _flywheel(args + [tmp_path / "b"], terminal=True)
+    assert piped.returncode == shown.returncode == 0
+    assert "run-down" not in piped.stderr and "\x1b" not in piped.stderr
+    assert "run-down" in shown.stderr                 # the bar's stage, drawn and then cleared
+    assert piped.stdout == shown.stdout               # the results do not depend on it
+
+
+def test_an_error_on_a_terminal_is_still_one_line(tmp_path):
+    """The bar is closed before the error is printed: one line, not wrapped by the display."""
+    doc = (CASES / "slotted_link.toml").read_text(encoding="utf-8")
+    case = tmp_path / "c.toml"
+    case.write_text(doc.replace("magnitude = 1500.0", "magnitude = 1.5"), encoding="utf-8")
+    p = _flywheel(["run", case, "--transients", "--no-plots", "--out", tmp_path / "o"],
+                  terminal=True)
+    assert p.returncode == 2
+    lines = _visible_lines(p.stderr)
+    assert len(lines) == 1 and lines[0].startswith("error: ") and "500 cycles" in lines[0], lines

@@ -80,9 +80,12 @@ def run_command(
              "mechanism to animate (allowed: a case with [crank] and [[dyads]])")
     from flywheel.cli.progress import stage_bar
 
-    with stage_bar() as progress:       # a bar on a terminal only (the transients take seconds)
-        results = _guard(analyze, c, n_points=points, at_deg=at, transients=transients,
-                         motion=motion, progress=progress, source=case, case=c)
+    def analyze_with_bar():             # a bar on a terminal only (the transients take seconds),
+        with stage_bar() as progress:   # gone before an error line is printed
+            return analyze(c, n_points=points, at_deg=at, transients=transients, motion=motion,
+                           progress=progress)
+
+    results = _guard(analyze_with_bar, source=case, case=c)
     out = out if out is not None else Path("out") / case.stem
     text_json = summary_json(results)
 
