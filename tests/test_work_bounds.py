@@ -256,3 +256,19 @@ def test_an_error_on_a_terminal_is_still_one_line(tmp_path):
     assert p.returncode == 2
     lines = _visible_lines(p.stderr)
     assert len(lines) == 1 and lines[0].startswith("error: ") and "500 cycles" in lines[0], lines
+
+
+def test_a_variants_error_on_a_terminal_is_still_one_line(tmp_path):
+    """The same for `variants`' bar: every draw fails (rods too short to assemble), the error
+    raised while the bar is drawn is printed after it is gone."""
+    text = (CASES / "variants_compressor.toml").read_text(encoding="utf-8")
+    lines = text.splitlines()
+    i = next(k for k, ln in enumerate(lines) if ln.startswith('"machine.speed_rps"'))
+    lines[i] = '"design.rod_to_crank" = { values = [0.5, 0.6] }'
+    t = tmp_path / "t.toml"
+    t.write_text("\n".join(lines) + "\n", encoding="utf-8")
+    p = _flywheel(["variants", t, "--count", "2", "--seed", "1", "--out", tmp_path / "v"],
+                  terminal=True)
+    assert p.returncode == 2
+    err = [ln for ln in _visible_lines(p.stderr) if not ln.lstrip().startswith("variants ")]
+    assert len(err) == 1 and err[0].startswith("error: ") and "dyads[0]" in err[0], err
