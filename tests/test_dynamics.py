@@ -453,6 +453,26 @@ def test_wrong_balance_sign_is_an_input_error():
         analyze(_slider_crank_case("resistance"), n_points=360)
 
 
+@pytest.mark.parametrize("balance", ["driving", "resistance"])
+def test_loads_without_net_work_need_no_constant_moment_whichever_the_balance(balance):
+    """The four-bar under its weights only: gravity is conservative, its work over a cycle is
+    zero (the potential energy returns), so no constant moment balances anything: M = 0, the
+    flywheel only smooths the weights' periodic moment — the same machine whichever balance
+    is named, with a warning."""
+    from flywheel.io.toml import read_toml
+
+    doc = read_toml(CASES / "fourbar.toml")
+    base = analyze(parse_case(doc, "fourbar.toml"), n_points=720).scalars
+    doc["machine"]["balance"] = balance
+    res = analyze(parse_case(doc, "fourbar.toml"), n_points=720)
+    s = res.scalars
+    assert s["balancing_moment"] == 0.0 and s["driving_moment"] == 0.0
+    assert s["cycle_work_resistance"] == 0.0
+    for key in ("delta_T_max", "J_required", "J_required_exact", "omega_max", "omega_min"):
+        assert s[key] == base[key], key
+    assert any("no net work" in w for w in res.warnings)
+
+
 def test_slider_mass_reduced_inertia_closed_form():
     """A piston of mass m on a centric slider-crank: J_II = m·ẋ_q², with
     ẋ_q = −r·sin φ·(1 + r·cos φ/√(l² − r² sin² φ))."""

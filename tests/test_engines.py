@@ -445,7 +445,7 @@ def test_kinetostatics_closes_on_the_engines(name):
     pins, equals the constant moment of the cycle balance at every node (design.md §9: the
     equation of motion read backwards), and Zhukovsky's lever agrees. An independent check of
     the pins, the four-stroke gas forces and ω(φ), ε(φ) over the 720° cycle."""
-    from test_forces import case_setup      # the loads built in the test, not by the pipeline
+    from helpers import case_setup          # the loads built in the test, not by the pipeline
 
     from flywheel.dynamics import forces as fo
 

@@ -29,11 +29,11 @@ import pytest
 
 from flywheel.cases.run import load_case, to_mechanism
 from flywheel.dynamics import forces as fo
-from flywheel.dynamics.pipeline import analyze
 from flywheel.errors import InputError
 from flywheel.linkage import RRP, Crank, Guide, LinkPoint, Mechanism, solve
-from flywheel.linkage.deadcentres import dead_centres, guide_frame, slider_dyad
 from flywheel.linkage.solve import Kinematics, PointMotion
+
+from helpers import case_setup  # the bundled cases' loads built in the tests (tests/helpers.py)
 
 CASES = Path(__file__).resolve().parents[1] / "cases"
 DEG = math.pi / 180
@@ -268,40 +268,6 @@ def applied_loads(kin, i: int, w: float, e: float, masses: dict, point_forces: l
     out.setdefault(crank, np.zeros(3))
     out[crank][2] -= J_I * direction * e
     return out
-
-
-def case_setup(name: str) -> dict:
-    """A bundled case as the force analysis sees it, built here from the case file and the
-    pipeline's results: gas forces push each piston away from its cylinder head with the
-    magnitude results.cylinders[i].F (reduced moment F·x′·sign(x_far − x_head), loads.py);
-    technological forces oppose the slider's velocity (reduced moment −F·|x′|); weights m·g at
-    the centroids; J_I = max(J_required, J_first_group) (pipeline.dynamics)."""
-    case = load_case(CASES / f"{name}.toml")
-    res = analyze(case)
-    mech = to_mechanism(case)
-    kin = solve(mech, res.phi)
-    pf = []
-    for cy, cr in zip(case.cylinders, res.cylinders):
-        d = slider_dyad(mech, cy.piston)
-        u, _ = guide_frame(d)
-        dcs = {dc.kind: dc for dc in dead_centres(mech, cy.piston)}
-        head, far = dcs[cy.head], dcs["inner" if cy.head == "outer" else "outer"]
-        pf.append(fo.PointForce(cy.name, cy.piston, d.joint,
-                                (cr.F * np.sign(far.x - head.x))[:, None] * u))
-    for f in case.forces:
-        d = slider_dyad(mech, f.slider)
-        u, _ = guide_frame(d)
-        x_dot = kin.points[d.joint].v_q @ u
-        F = res.columns[f"F_{f.name}"].values
-        pf.append(fo.PointForce(f.name, f.slider, d.joint, (-F * np.sign(x_dot))[:, None] * u))
-    s = res.scalars
-    J_I = max(s["J_required"], s["J_first_group"])
-    loads = fo.Loads(case.links, tuple(pf),
-                     tuple(fo.Couple(c.name, c.link, c.moment) for c in case.couples),
-                     tuple(case.machine.gravity), J_I)
-    return {"case": case, "res": res, "mech": mech, "kin": kin, "loads": loads,
-            "omega": res.columns["omega"].values, "eps": res.columns["epsilon"].values,
-            "M_D": s["balancing_moment"], "J_I": J_I}
 
 
 @functools.cache

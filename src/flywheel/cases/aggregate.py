@@ -289,10 +289,11 @@ def build(case: AggregateCase):
         if case.coupling.between is not None:
             raise FieldError("coupling.between", "the coupling joins the motor to the machine: "
                                                  "between is for the shafts of a chain")
+        # the motor first: its checks (motor.J missing …) name the field before J_Д enters the chain
+        drive = _motor(case.motor, m.M0 * m.i31, m.i31 * m.order, m.M_amplitude * m.i31, False)
         names = ("motor J_Д", "machine J_пр.I")
         ch = chain([case.motor.J, J_I], [c], [case.coupling.damping], [1.0, m.i31],
                    list(names), lines=[_line(case.coupling, "coupling", 0, (0, 1), names)])
-        drive = _motor(case.motor, m.M0 * m.i31, m.i31 * m.order, m.M_amplitude * m.i31, False)
         return ch, drive
     frames = [k for k, r in enumerate(case.rotors or []) if r.fixed]
     if frames and not case.shafts:

@@ -634,9 +634,6 @@ def _check_references(case: Case) -> None:
         raise FieldError(("motor", "no_load_speed_rpm"),
                         f"{case.motor.no_load_speed_rpm:g} rpm is not above the mean speed "
                         f"{case.machine.omega_mean * 30 / math.pi:g} rpm")
-    if case.tabulated is not None and case.machine.cycle_deg != 360:
-        raise FieldError(("machine", "cycle_deg"), f"{case.machine.cycle_deg:g}° with [tabulated]: "
-                         "a table of positions covers one revolution (allowed: 360)")
     if case.tabulated is not None:   # no linkage: masses and loads live in [tabulated]
         for key in ("ground", "dyads", "points", "links", "cylinders", "forces", "couples"):
             if getattr(case, key):
@@ -917,7 +914,10 @@ def parse_case(data: dict, source: str = "<case>") -> Case:
     other = wrong_kind(data, "run", source)
     if other is not None:
         raise CaseFileError(other)
-    return validate(data, Case, source, lambda errs: _describe(pick(errs, _DYAD_TAGS)))
+    from flywheel.cases.tabulated import cycle_context
+
+    return validate(data, Case, source, lambda errs: _describe(pick(errs, _DYAD_TAGS)),
+                    context=cycle_context(data))   # a [tabulated] table covers the machine's cycle
 
 
 def load_case(path) -> Case:
@@ -938,6 +938,15 @@ def dyad_name(d) -> str:
     """The name a dyad goes by in the kinematics and its messages: ``name``, else its joint
     (RRR, RRP) or its rocker (RPR)."""
     return d.name or (d.rocker if isinstance(d, RPRSpec) else d.joint)
+
+
+def field_of(exc: Exception, case) -> str:
+    """The case-file path of the dyad an error names (an AssemblyError's ``dyad``: 'dyads[1]'),
+    else '' — the one lookup for the CLI guard and the variants' templates."""
+    dyad = getattr(exc, "dyad", None)
+    if dyad is None or case is None or not hasattr(case, "dyads"):
+        return ""
+    return next((f"dyads[{i}]" for i, d in enumerate(case.dyads) if dyad_name(d) == dyad), "")
 
 
 def to_mechanism(case: Case):

@@ -8,12 +8,13 @@ from __future__ import annotations
 from typing import Annotated, Literal
 
 import numpy as np
-from pydantic import Field, model_validator
+from pydantic import Field, PrivateAttr, ValidationInfo, model_validator
 
 from flywheel.io.schema import FieldError, StrictModel
 
 MIN_POSITIONS = 6
 MAX_GAP_DEG = 360.0 / MIN_POSITIONS      # the widest allowed gap between neighbouring positions
+CYCLE_DEG = 360.0                        # the cycle when the validation context gives none
 _TOL = 1e-9
 
 Row = list[float]
@@ -71,11 +72,16 @@ class TabMoment(StrictModel):
 
 
 class TabulatedSpec(StrictModel):
-    """The kinematics and loads as tables aligned with ``positions_deg`` (docs/tabulated.md)."""
+    """The kinematics and loads as tables aligned with ``positions_deg`` (docs/tabulated.md).
 
-    positions_deg: Row = Field(description="crank positions φ [deg], increasing, within [0, 360]; "
-                                           "a last position 360 repeats the first (0) and its "
-                                           "values must equal those at 0")
+    The table covers the machine's cycle: 360°, or machine.cycle_deg (720° for a four-stroke
+    engine or a press whose cycle is two revolutions), given to the validation as the context
+    ``{"cycle_deg": …}`` by the run case's loader (:func:`cycle_context`)."""
+
+    positions_deg: Row = Field(description="crank positions φ [deg], increasing, within the cycle "
+                                           "[0, machine.cycle_deg] (360 unless given); a last "
+                                           "position at the cycle's end repeats the first (0) "
+                                           "and its values must equal those at 0")
     interpolation: Literal["periodic-spline", "finite-differences"] = Field(
         "periodic-spline",
         description="J_II(φ) and dJ_II/dφ: 'periodic-spline' (scipy CubicSpline, periodic; "
@@ -90,17 +96,25 @@ class TabulatedSpec(StrictModel):
     forces: list[TabForce] = Field(default_factory=list)
     moments: list[TabMoment] = Field(default_factory=list)
 
+    _cycle_deg: float = PrivateAttr(CYCLE_DEG)
+
     @model_validator(mode="after")
-    def _check(self):
-        _validate(self)
+    def _check(self, info: ValidationInfo):
+        self._cycle_deg = (info.context or {}).get("cycle_deg", CYCLE_DEG)
+        _validate(self, self._cycle_deg)
         return self
 
     # -- derived ------------------------------------------------------------------------------
     @property
+    def cycle_deg(self) -> float:
+        """The cycle the table covers [deg]: 360, or the machine's cycle_deg."""
+        return self._cycle_deg
+
+    @property
     def closed(self) -> bool:
-        """True if the last position (360°) repeats the first (0°)."""
+        """True if the last position (the cycle's end, 360° or 720°) repeats the first (0°)."""
         p = self.positions_deg
-        return abs(p[-1] - p[0] - 360.0) < _TOL
+        return abs(p[-1] - p[0] - self._cycle_deg) < _TOL
 
     @property
     def nodes_deg(self) -> np.ndarray:
@@ -109,15 +123,26 @@ class TabulatedSpec(StrictModel):
         return p[:-1] if self.closed else p
 
 
-def _validate(t: TabulatedSpec) -> None:
+def cycle_context(data) -> dict:
+    """The validation context of a run case document: its machine.cycle_deg when that is a
+    whole number of revolutions (else 360: the [machine] error is reported on its own)."""
+    machine = data.get("machine") if isinstance(data, dict) else None
+    c = machine.get("cycle_deg", CYCLE_DEG) if isinstance(machine, dict) else CYCLE_DEG
+    ok = (isinstance(c, (int, float)) and not isinstance(c, bool) and 360.0 <= c <= 3600.0
+          and abs(c / 360.0 - round(c / 360.0)) < 1e-9)
+    return {"cycle_deg": float(c) if ok else CYCLE_DEG}
+
+
+def _validate(t: TabulatedSpec, cycle: float = CYCLE_DEG) -> None:
     p = t.positions_deg
     n = len(p)
     if n == 0:
         raise TableError(("positions_deg",), f"no positions (allowed: {MIN_POSITIONS} or more "
-                                             f"distinct angles within 0 … 360)")
+                                             f"distinct angles within 0 … {cycle:g})")
     for i, a in enumerate(p):
-        if not 0.0 <= a <= 360.0:
-            raise TableError(("positions_deg", i), f"{a:g}° is outside the cycle (allowed: 0 … 360)")
+        if not 0.0 <= a <= cycle:
+            raise TableError(("positions_deg", i), f"{a:g}° is outside the cycle (allowed: 0 … "
+                                                   f"{cycle:g}{_cycle_note(cycle)})")
     for i in range(1, n):
         if abs(p[i] - p[i - 1]) < _TOL:
             raise TableError(("positions_deg", i), f"duplicated angle {p[i]:g}° (positions {i} and "
@@ -130,13 +155,14 @@ def _validate(t: TabulatedSpec) -> None:
         raise TableError(("positions_deg",), f"{distinct} distinct positions are too few "
                                              f"(allowed: {MIN_POSITIONS} or more)")
     nodes = np.asarray(p[:distinct], float)
-    gaps = np.diff(np.append(nodes, nodes[0] + 360.0))
+    gaps = np.diff(np.append(nodes, nodes[0] + cycle))
     k = int(np.argmax(gaps))
     if gaps[k] > MAX_GAP_DEG + _TOL:
         end = nodes[(k + 1) % distinct]
         raise TableError(("positions_deg",), f"the positions do not cover the cycle: nothing between "
                                              f"{nodes[k]:g}° and {end:g}° ({gaps[k]:g}° gap; allowed: "
-                                             f"{MAX_GAP_DEG:g}° or less between neighbours, 0 … 360)")
+                                             f"{MAX_GAP_DEG:g}° or less between neighbours, 0 … "
+                                             f"{cycle:g}{_cycle_note(cycle)})")
 
     def row(values, loc: tuple, nonneg: bool = False) -> None:
         if len(values) != n:
@@ -147,8 +173,8 @@ def _validate(t: TabulatedSpec) -> None:
             raise TableError(loc + (i,), f"{values[i]:g} < 0: velocity analogues are magnitudes "
                                          f"|V_q| ≥ 0 (the direction is in a force's angle_deg)")
         if t.closed and abs(values[-1] - values[0]) > _TOL * max(1.0, abs(values[0])):
-            raise TableError(loc + (n - 1,), f"the value at 360° ({values[-1]:g}) must repeat the "
-                                             f"value at 0° ({values[0]:g}): the cycle closes")
+            raise TableError(loc + (n - 1,), f"the value at {cycle:g}° ({values[-1]:g}) must repeat "
+                                             f"the value at 0° ({values[0]:g}): the cycle closes")
 
     for name, v in t.points.items():
         row(v, ("points", name), nonneg=True)
@@ -188,6 +214,10 @@ def _validate(t: TabulatedSpec) -> None:
             raise TableError(("moments", i, "name"), f"load name {m.name!r} is used twice")
         names.add(m.name)
     _check_finite(t)
+
+
+def _cycle_note(cycle: float) -> str:
+    return "" if cycle == CYCLE_DEG else ", the cycle of machine.cycle_deg"
 
 
 def _check_finite(t: TabulatedSpec) -> None:

@@ -55,7 +55,10 @@ def aggregate_command(
         ch, drive = to_model(c, str(case))
         if plot is not None and drive is None:
             raise InputError("--plot needs a [motor]: a chain without one has no motion in time")
-        result = analyze(ch, drive, t_end=t_end)
+        from flywheel.cli.progress import stage_bar
+
+        with stage_bar() as progress:   # a bar on a terminal only (a long --t-end takes seconds)
+            result = analyze(ch, drive, t_end=t_end, progress=progress)
         # no Infinity/NaN printed, in the summary or the JSON (which has none): guard.not_finite
         refuse_nonfinite(result.to_document(), who=str(case))
         if plot is not None:

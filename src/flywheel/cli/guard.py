@@ -59,12 +59,9 @@ def _reraise(exc: Exception) -> NoReturn:
 
 def _field_of(exc: Exception, case) -> str:
     """The case-file path of the dyad an AssemblyError names ('dyads[1]'), else ''."""
-    from flywheel.cases.run import dyad_name
+    from flywheel.cases.run import field_of
 
-    dyad = getattr(exc, "dyad", None)
-    if dyad is None or case is None:
-        return ""
-    return next((f"dyads[{i}]" for i, d in enumerate(case.dyads) if dyad_name(d) == dyad), "")
+    return field_of(exc, case)
 
 
 _guard = guard   # the name the command modules used before the package split

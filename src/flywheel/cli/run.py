@@ -85,8 +85,14 @@ def run_command(
     if animate and c.tabulated is not None:
         fail(f"--animate: {case} gives its kinematics as a table ([tabulated]): there is no "
              "mechanism to animate (allowed: a case with [crank] and [[dyads]])")
-    results = _guard(analyze, c, n_points=points, at_deg=at, transients=transients,
-                     motion=motion, source=case, case=c)
+    from flywheel.cli.progress import stage_bar
+
+    def analyze_with_bar():             # a bar on a terminal only (the transients take seconds),
+        with stage_bar() as progress:   # gone before an error line is printed
+            return analyze(c, n_points=points, at_deg=at, transients=transients, motion=motion,
+                           progress=progress)
+
+    results = _guard(analyze_with_bar, source=case, case=c)
     out = out if out is not None else Path("out") / case.stem
     text_json = summary_json(results)
 

@@ -60,11 +60,14 @@ def variants_command(
         seed = secrets.randbelow(2 ** 32)
     t = _guard(load_template, template, points)
     console = Console(stderr=True)
-    with Progress(TextColumn("variants"), BarColumn(), MofNCompleteColumn(), console=console,
-                  transient=True, disable=not console.is_terminal) as bar:
-        task = bar.add_task("variants", total=count)
-        vs = _guard(generate, t, count, seed, points,
-                    lambda i: bar.update(task, completed=i))
+
+    def generate_with_bar():            # the bar is gone before an error line is printed
+        with Progress(TextColumn("variants"), BarColumn(), MofNCompleteColumn(), console=console,
+                      transient=True, disable=not console.is_terminal) as bar:
+            task = bar.add_task("variants", total=count)
+            return generate(t, count, seed, points, lambda i: bar.update(task, completed=i))
+
+    vs = _guard(generate_with_bar)
     notes: list[str] = []
     extra = None
     if sheets:
@@ -128,11 +131,15 @@ def grade_command(
     from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn
 
     console = Console(stderr=True)
-    with Progress(TextColumn("sheets"), BarColumn(), MofNCompleteColumn(), console=console,
-                  transient=True, disable=not console.is_terminal) as bar:
-        task = bar.add_task("sheets", total=None)
-        report = _guard(grade, k, answers, tolerance,
-                        lambda done, total: bar.update(task, completed=done, total=total))
+
+    def grade_with_bar():               # the bar is gone before an error line is printed
+        with Progress(TextColumn("sheets"), BarColumn(), MofNCompleteColumn(), console=console,
+                      transient=True, disable=not console.is_terminal) as bar:
+            task = bar.add_task("sheets", total=None)
+            return grade(k, answers, tolerance,
+                         lambda done, total: bar.update(task, completed=done, total=total))
+
+    report = _guard(grade_with_bar)
     if not report.students:                 # an error: one line, nothing else written
         if report.problems:
             fail(f"nothing could be graded ({len(report.problems)} problem(s); the first: "

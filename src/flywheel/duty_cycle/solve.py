@@ -300,15 +300,15 @@ def _speeds_from_flywheel(d: DutyCycle, J: float) -> _Timeline:
     solves ``½·J·(ω_max² − ω_min²) = ΔE`` (ΔE may depend on the speeds through
     ``P = M_Д·ω_ср`` or ``t_op = Δφ_op/ω_ср``), by bisection to the last bit."""
     if d.speed_max is not None:
-        w, unit = d.speed_max, "max"
+        w = d.speed_max
         pair = (lambda x: (w, w - x))
         top = w
     elif d.speed_mean is not None:
-        w, unit = d.speed_mean, "mean"
+        w = d.speed_mean
         pair = (lambda x: (w + 0.5 * x, w - 0.5 * x))
         top = 2.0 * w
     else:
-        w, unit = d.speed_min, "min"
+        w = d.speed_min
         pair = (lambda x: (w + x, w))
         top = None
 

@@ -27,7 +27,7 @@ from flywheel.errors import InputError
 
 
 def analyze(case, n_points: int = DEFAULT_POINTS, at_deg: list[float] | None = None,
-            transients: bool = False, motion: str | None = None) -> Results:
+            transients: bool = False, motion: str | None = None, progress=None) -> Results:
     """Run the whole dynamic analysis of a validated case (:class:`flywheel.cases.run.Case`).
 
     n_points: uniform intervals over the cycle (the report angles, standard positions and dead
@@ -35,13 +35,15 @@ def analyze(case, n_points: int = DEFAULT_POINTS, at_deg: list[float] | None = N
     output.at_deg); transients: also integrate the equation of motion in time (a check of
     ω(φ), start-up with the case's motor, run-down; imports scipy); motion: the crank's
     motion in the force analysis, "true" or "steady" (default: the case's
-    force_analysis.motion). Raises FlywheelError subclasses for input that cannot be analysed.
+    force_analysis.motion); progress: a plain callable ``progress(stage, fraction)`` for the
+    time integrations of ``transients`` (:func:`stages.time_domain`). Raises FlywheelError
+    subclasses for input that cannot be analysed.
     """
     motion = force_motion(case, motion)
     if case.tabulated is not None:
         from flywheel.dynamics.tabulated import analyze_tabulated
 
-        return analyze_tabulated(case, n_points, at_deg, transients, motion)
+        return analyze_tabulated(case, n_points, at_deg, transients, motion, progress)
     at_deg = grid_options(case, n_points, at_deg)
     mech = case.mechanism()
     positions, dcs = standard_positions(mech, case.machine.cycle)
@@ -53,7 +55,7 @@ def analyze(case, n_points: int = DEFAULT_POINTS, at_deg: list[float] | None = N
     at = report_angles(at_deg, kin, ld, red, en, mo)
     fo = stages.force_analysis(phi, red, en, mo, case.machine.omega_mean, motion, mech, kin,
                                force_loads(case, mech, dcs, kin, ld, mo.J_I))
-    td = stages.time_domain(case, phi, red, en, mo) if transients else None
+    td = stages.time_domain(case, phi, red, en, mo, progress) if transients else None
     return Results(
         title=case.title, source=case.source, phi=phi, kinematics=kin, loads=ld, reduction=red,
         energy=en, sizing=sz, motion=mo,

@@ -47,7 +47,8 @@ def work_and_energy(phi: np.ndarray, loads: LoadsResult, red: ReductionResult,
     global extremes (Merzalov; seed 000 §3.2.7, §4). ``machine``: the case's [machine]
     (ω_m, balance). The cycle Φ is the closed grid's (2π, or 4π for a four-stroke engine):
     M = −(1/Φ)·∮ M_known dφ. Raises InputError if the loads' work has the wrong sign for the
-    balance."""
+    balance; loads that do no net work (weights only) need no constant moment whichever the
+    balance: M = 0 and a warning."""
     omega_m = machine.omega_mean
     cycle = phi[-1] - phi[0]
     zero = np.zeros_like(phi)
@@ -68,7 +69,7 @@ def work_and_energy(phi: np.ndarray, loads: LoadsResult, red: ReductionResult,
             f"the loads do {work_known:+.6g} J of work over a cycle: a constant driving moment "
             f"would have to be {M_const:.6g} N·m ≤ 0 (allowed: resistance must absorb work; "
             f"for an engine set machine.balance = \"resistance\")")
-    if machine.balance == "resistance" and not M_const < 0:
+    elif machine.balance == "resistance" and not M_const < 0:
         raise InputError(
             f"the loads do {work_known:+.6g} J of work over a cycle: a constant resistance moment "
             f"would have to be {-M_const:.6g} N·m ≤ 0 (allowed: driving forces must supply work; "
@@ -367,22 +368,51 @@ def crank_pin_load(mech, kin, fa) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
 
 
 def time_domain(case, phi: np.ndarray, red: ReductionResult, en: EnergyResult,
-                mo: MotionResult) -> TimeDomainResult:
+                mo: MotionResult, progress=None) -> TimeDomainResult:
     """--transients: the steady motion checked by time integration, start-up with the case's
-    [motor] (if any), run-down (:mod:`flywheel.dynamics.timedomain`; imports scipy)."""
+    [motor] (if any), run-down (:mod:`flywheel.dynamics.timedomain`; imports scipy).
+
+    The start-up and the run-down are estimated first (timedomain.startup_cycles,
+    rundown_cycles); one longer than MAX_STARTUP_CYCLES or MAX_RUNDOWN_CYCLES cycles is refused
+    (InputError) before any integration. ``progress(stage, fraction)``: a plain callable, stage
+    "steady check", "start-up" or "run-down", fractions 0 … 1 non-decreasing per stage."""
     from flywheel.dynamics import timedomain
 
     machine = case.machine
     J, dJ = mo.J_I + red.J_II, red.dJ_II
     warnings: list[str] = []
-    verification = timedomain.verify_steady(phi, J, dJ, en.M_sum, mo.omega)
-    histories, means = {}, None
+
+    def stage(name: str):
+        return None if progress is None else (lambda f: progress(name, f))
+
+    motor = None
+    delta = machine.delta if machine.delta is not None else mo.delta_achieved
     if case.motor is not None:
         w_x = case.motor.no_load_speed_rpm * 2 * math.pi / 60
         M_p = case.motor.starting_torque or en.driving_moment / (1 - machine.omega_mean / w_x)
-        st = timedomain.startup(phi, J, dJ, en.M_known, timedomain.linear_motor(M_p, w_x),
-                                machine.omega_mean, machine.delta if machine.delta is not None
-                                else mo.delta_achieved)
+        motor = timedomain.linear_motor(M_p, w_x)
+        n_up = timedomain.startup_cycles(phi, J, en.M_known, motor, machine.omega_mean,
+                                         delta)
+        if n_up is not None and n_up > timedomain.MAX_STARTUP_CYCLES:
+            raise InputError(
+                f"motor: the start-up of --transients would take about {n_up:.3g} cycles "
+                f"(ω̄·τ·(ln(50/δ) − 1)/Φ with the time constant τ = J̄·ω_x/M_п), more than the limit "
+                f"of {timedomain.MAX_STARTUP_CYCLES} cycles: the motor (motor.starting_torque, "
+                "motor.no_load_speed_rpm) is too weak for these masses; run without --transients")
+    n_down = timedomain.rundown_cycles(phi, J, en.M_known, float(mo.omega[0]))
+    if n_down is not None and n_down > timedomain.MAX_RUNDOWN_CYCLES:
+        raise InputError(
+            f"the run-down of --transients would take about {n_down:.3g} cycles (the kinetic "
+            f"energy ½·J·ω² over the work the loads take per cycle, "
+            f"{0.5 * float(J[0]) * float(mo.omega[0]) ** 2 / n_down:.3g} J), more "
+            f"than the limit of {timedomain.MAX_RUNDOWN_CYCLES} cycles: the loads are very small "
+            "for the masses; run without --transients")
+    verification = timedomain.verify_steady(phi, J, dJ, en.M_sum, mo.omega,
+                                            progress=stage("steady check"))
+    histories, means = {}, None
+    if motor is not None:
+        st = timedomain.startup(phi, J, dJ, en.M_known, motor,
+                                machine.omega_mean, delta, progress=stage("start-up"))
         startup = {k: v for k, v in st.items() if not isinstance(v, np.ndarray)}
         startup["starting_torque"] = float(M_p)
         startup["no_load_speed"] = float(w_x)
@@ -396,7 +426,8 @@ def time_domain(case, phi: np.ndarray, red: ReductionResult, en: EnergyResult,
                    "reason": "no [motor] in the case: under a constant driving moment the work "
                              "over a cycle is zero at any speed, so there is no start-up to a "
                              "steady state"}
-    rd = timedomain.rundown(phi, J, dJ, en.M_known, float(mo.omega[0]))
+    rd = timedomain.rundown(phi, J, dJ, en.M_known, float(mo.omega[0]),
+                            progress=stage("run-down"))
     histories["rundown"] = (rd["t"], rd["omega"])
     return TimeDomainResult(
         verification=verification, startup=startup,

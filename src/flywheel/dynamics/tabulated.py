@@ -104,9 +104,10 @@ def static_moments(spec) -> np.ndarray:
 # -- periodic interpolation ---------------------------------------------------------------------
 
 def periodic_interpolate(nodes: np.ndarray, values: np.ndarray, phi: np.ndarray, kind: str,
-                         derivative: bool = False) -> np.ndarray:
+                         derivative: bool = False, period: float = 2 * np.pi) -> np.ndarray:
     """Interpolate values given at the distinct ``nodes`` [rad] (increasing, within one cycle)
-    onto ``phi`` [rad], periodically over 2π.
+    onto ``phi`` [rad], periodically over the cycle ``period`` [rad] (2π, or 4π for a table
+    over a 720° cycle).
 
     kind: 'periodic-spline' (scipy CubicSpline, bc_type='periodic'), or 'linear' /
     'finite-differences' (piecewise linear; its derivative on [φ_i, φ_{i+1}) is the forward
@@ -118,7 +119,6 @@ def periodic_interpolate(nodes: np.ndarray, values: np.ndarray, phi: np.ndarray,
     """
     nodes = np.asarray(nodes, float)
     values = np.asarray(values, float)
-    period = 2 * np.pi
     xe = np.append(nodes, nodes[0] + period)
     ye = np.append(values, values[0])
     if kind == "periodic-spline":
@@ -135,6 +135,11 @@ def _nodes_rad(spec) -> np.ndarray:
     return np.radians(spec.nodes_deg)
 
 
+def _period(spec) -> float:
+    """The table's cycle [rad]: 2π, or machine.cycle_deg (4π for 720°)."""
+    return math.radians(spec.cycle_deg)
+
+
 def _distinct(spec, values) -> np.ndarray:
     return np.asarray(values, float)[: spec.nodes_deg.size]
 
@@ -144,7 +149,8 @@ def inertia_derivative_at_positions(spec) -> np.ndarray:
     or the seed's forward difference (I_{i+1} − I_i)/(φ_{i+1} − φ_i))."""
     J = _distinct(spec, reduced_inertia_at_positions(spec))
     phi = np.radians(np.asarray(spec.positions_deg, float))
-    return periodic_interpolate(_nodes_rad(spec), J, phi, spec.interpolation, derivative=True)
+    return periodic_interpolate(_nodes_rad(spec), J, phi, spec.interpolation, derivative=True,
+                                period=_period(spec))
 
 
 def dynamic_moments(spec, omega: float) -> np.ndarray:
@@ -156,7 +162,7 @@ def dynamic_moments(spec, omega: float) -> np.ndarray:
 # -- the analysis ------------------------------------------------------------------------------
 
 def analyze_tabulated(case, n_points: int = DEFAULT_POINTS, at_deg: list[float] | None = None,
-                      transients: bool = False, motion: str = "true") -> Results:
+                      transients: bool = False, motion: str = "true", progress=None) -> Results:
     """The dynamic analysis of a case whose kinematics are a table (``case.tabulated``).
 
     The table is a second source of the loads and of J_II's parts, on the grid with its
@@ -168,14 +174,15 @@ def analyze_tabulated(case, n_points: int = DEFAULT_POINTS, at_deg: list[float] 
     """
     spec = case.tabulated
     at_deg = grid_options(case, n_points, at_deg)
-    phi = closed_grid(n_points, list(_nodes_rad(spec)) + [math.radians(a) for a in at_deg])
+    phi = closed_grid(n_points, list(_nodes_rad(spec)) + [math.radians(a) for a in at_deg],
+                      _period(spec))
     red = tabulated_reduction(spec, phi)
     ld = tabulated_loads(spec, phi)
     en, sz, mo = stages.dynamics(phi, ld, red, case.machine, case.flywheel)
     tab = tabulated_kinematics(spec, phi, red, en, case.machine.omega_mean)
     at = report_angles(at_deg, phi, tab, ld, red, en, mo)
     fo = stages.force_analysis(phi, red, en, mo, case.machine.omega_mean, motion)
-    td = stages.time_domain(case, phi, red, en, mo) if transients else None
+    td = stages.time_domain(case, phi, red, en, mo, progress) if transients else None
     return Results(
         title=case.title, source=case.source, phi=phi, kinematics=None, loads=ld, reduction=red,
         energy=en, sizing=sz, motion=mo, columns=tabulated_columns(phi, tab, ld, red, en, mo),
@@ -194,8 +201,9 @@ def tabulated_reduction(spec, phi: np.ndarray) -> ReductionResult:
     J_parts, dJ_parts, warnings = {}, {}, []
     for name, J in link_inertia_at_positions(spec).items():
         Jd = _distinct(spec, J)
-        J_parts[name] = periodic_interpolate(nodes, Jd, phi, kind)
-        dJ_parts[name] = periodic_interpolate(nodes, Jd, phi, kind, derivative=True)
+        J_parts[name] = periodic_interpolate(nodes, Jd, phi, kind, period=_period(spec))
+        dJ_parts[name] = periodic_interpolate(nodes, Jd, phi, kind, derivative=True,
+                                              period=_period(spec))
         if J_parts[name].min() < -0.01 * Jd.max():
             i = int(np.argmin(J_parts[name]))
             warnings.append(f"tabulated: the {kind} interpolation of link {name}'s share of J_II "
@@ -210,7 +218,8 @@ def tabulated_loads(spec, phi: np.ndarray) -> LoadsResult:
     nodes = _nodes_rad(spec)
     kinds = {f"force {f.name}": f.interpolation for f in spec.forces}
     kinds.update({f"moment {m.name}": m.interpolation for m in spec.moments})
-    M_parts = {key: periodic_interpolate(nodes, _distinct(spec, M), phi, kinds[key])
+    M_parts = {key: periodic_interpolate(nodes, _distinct(spec, M), phi, kinds[key],
+                                         period=_period(spec))
                for key, M in load_moments_at_positions(spec).items()}
     return LoadsResult(M_parts=M_parts, W_parts={})
 
@@ -224,7 +233,8 @@ def tabulated_kinematics(spec, phi: np.ndarray, red: ReductionResult,
     kind_kin = "periodic-spline" if kind_J == "periodic-spline" else "linear"
 
     def magnitude(values) -> np.ndarray:
-        sq = periodic_interpolate(nodes, _distinct(spec, values) ** 2, phi, kind_kin)
+        sq = periodic_interpolate(nodes, _distinct(spec, values) ** 2, phi, kind_kin,
+                                  period=_period(spec))
         return np.sqrt(np.maximum(sq, 0.0))
 
     return TabulatedResult(

@@ -54,7 +54,8 @@ import numpy as np
 from flywheel.elastic.chain import Chain, Drive, coefficients
 from flywheel.elastic.forced import Steady, steady_state
 from flywheel.elastic.modes import Modes, Node, mode_nodes, natural_frequencies
-from flywheel.elastic.timedomain import (CHECK_FAST_PERIODS, MAX_FAST_PERIODS, History, start_up,
+from flywheel.elastic.timedomain import (CHECK_FAST_PERIODS, MAX_FAST_PERIODS, History, check_work,
+                                         start_up,
                                          start_up_duration, steady_method, steady_run)
 from flywheel.errors import InputError
 
@@ -239,10 +240,14 @@ def _amplitude(x: np.ndarray) -> float:
 
 
 def analyze(ch: Chain, drive: Drive | None = None, t_end: float | None = None,
-            time_domain: bool = True) -> AggregateResult:
+            time_domain: bool = True, progress=None) -> AggregateResult:
     """Coefficients (9.24–9.25), natural frequencies and — with a drive — the closed-form steady
     state, the resonance margins, a solve_ivp check on the periodic orbit and the start-up. The
-    natural frequencies are computed once here and handed to every step that needs them."""
+    natural frequencies are computed once here and handed to every step that needs them.
+
+    Each explicit integration is estimated first and refused beyond MAX_STEPS steps
+    (:func:`~flywheel.elastic.timedomain.check_work`; a ``t_end`` given is named as --t-end).
+    ``progress(stage, fraction)``: a plain callable, stage "start-up", fractions 0 … 1."""
     a, c = coefficients(ch)
     modes = natural_frequencies(ch)
     nodes = tuple(mode_nodes(ch, x) for x in modes.elastic_shapes.T)
@@ -262,16 +267,21 @@ def analyze(ch: Chain, drive: Drive | None = None, t_end: float | None = None,
     if method != "DOP853":
         notes.append(Note("radau", (("fast", fast), ("f_top", f_top),
                                     ("limit", CHECK_FAST_PERIODS))))
+    if method == "DOP853":
+        check_work(ch, drive, 5 * 2 * math.pi / st.omega_forcing, "steady check", modes=modes)
     chk = steady_run(ch, drive, st, modes=modes)
     ch_twist = _amplitude(chk.twist[0])
     ch_delta = tuple(float(2 * _amplitude(chk.omega[k]) / st.omega_mean) for k in (0, -1))
+    option = "" if t_end is None else "--t-end"
     if t_end is None:
         t_end, wanted = start_up_duration(ch, drive, modes)
         if t_end < wanted:
             notes.append(Note("cap_linear" if drive.kind == "linear" else "cap_constant",
                               (("t_end", t_end), ("limit", MAX_FAST_PERIODS), ("f_top", f_top),
                                ("wanted", wanted))))
-    su = start_up(ch, drive, t_end, modes=modes)
+    check_work(ch, drive, t_end, "start-up", option, modes)
+    su = start_up(ch, drive, t_end, modes=modes,
+                  progress=None if progress is None else (lambda f: progress("start-up", f)))
     peak = float(np.max(np.abs(ch.c[0] * su.twist[0])))
     reached = np.nonzero(su.omega[0] >= 0.95 * st.omega_mean)[0]
     t95 = float(su.t[reached[0]]) if drive.kind == "linear" and len(reached) else None

@@ -59,14 +59,16 @@ M = TypeVar("M", bound=BaseModel)
 
 
 def validate(data, model: type[M], source: str, describe_error: Callable[[list[dict]], str],
-             check: Callable[[M], object] | None = None) -> M:
+             check: Callable[[M], object] | None = None, context: dict | None = None) -> M:
     """``model`` validated from a parsed document, else one CaseFileError line naming ``source``.
 
     ``describe_error(errors)`` words pydantic's errors (the case kind knows its tags and keys);
     a FieldError raised inside a model validator keeps its own path below the model's; a
-    FieldError from ``check(model)`` (checks that span tables) names its path."""
+    FieldError from ``check(model)`` (checks that span tables) names its path. ``context``:
+    pydantic's validation context, for a table whose checks depend on another (a [tabulated]
+    table covers the machine's cycle)."""
     try:
-        obj = model.model_validate(data)
+        obj = model.model_validate(data, context=context)
     except ValidationError as exc:
         errs = exc.errors()
         for e in errs:

@@ -262,9 +262,16 @@ def results_of(kind: str, doc: dict, source: str, n_points: int = RUN_POINTS) ->
     ``flywheel task2 --json`` for a task2 case (SI units)."""
     case = _validate(kind, doc, source)
     if kind == "run":
+        from flywheel.cases.run import field_of
         from flywheel.dynamics.pipeline import analyze
 
-        return analyze(case, n_points=n_points).to_document()["results"]
+        try:
+            return analyze(case, n_points=n_points).to_document()["results"]
+        except FlywheelError as exc:      # name the field as `flywheel run` does ('dyads[0]: …')
+            where = field_of(exc, case)
+            if not where:
+                raise
+            raise type(exc)(f"{where}: {exc}") from None
     from flywheel.cases.task2 import solve_case
 
     return solve_case(case, source).to_document()

@@ -1,0 +1,31 @@
+"""The progress bar of the long computations (`run --transients`, `aggregate`): rich on a
+terminal, nothing at all when stderr is piped or redirected, or under ``--quiet``.
+
+The computation takes a plain callable ``progress(stage, fraction)`` (fractions 0 … 1, never
+decreasing within a stage) and knows nothing of rich; :func:`stage_bar` gives one.
+"""
+from __future__ import annotations
+
+from collections.abc import Callable, Iterator
+from contextlib import contextmanager
+
+
+@contextmanager
+def stage_bar() -> Iterator[Callable[[str, float], None]]:
+    """``with stage_bar() as progress: compute(progress=progress)``: one bar per stage on
+    stderr while a terminal shows it, removed when done (``transient``)."""
+    from rich.console import Console
+    from rich.progress import BarColumn, Progress, TaskProgressColumn, TextColumn, TimeElapsedColumn
+
+    console = Console(stderr=True)
+    tasks: dict[str, int] = {}
+    with Progress(TextColumn("{task.description}"), BarColumn(), TaskProgressColumn(),
+                  TimeElapsedColumn(), console=console, transient=True,
+                  disable=not console.is_terminal) as bar:
+
+        def progress(stage: str, fraction: float) -> None:
+            if stage not in tasks:
+                tasks[stage] = bar.add_task(stage, total=1.0)
+            bar.update(tasks[stage], completed=fraction)
+
+        yield progress

@@ -1,0 +1,274 @@
+"""Bounds on work and progress of the long integrations (issue 17, item 3).
+
+The cost of `run --transients` (start-up, run-down) and of the aggregate's start-up is
+estimated before integrating; the estimates are checked here against closed forms and the
+integrations themselves; a run beyond the stated maximum is refused (the messages: the
+catalogue, tests/bad_inputs/catalogue.toml, "transients-…-too-long", "t-end-too-many-steps",
+"startup-stiff-motor"). The progress callable gets fractions 0 … 1 that never decrease.
+No timing: the bounds are counts (cycles, steps), not seconds.
+"""
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from flywheel.dynamics import timedomain
+from flywheel.errors import InputError
+
+CASES = Path(__file__).resolve().parents[1] / "cases"
+
+
+class Recorder:
+    """A progress callable that keeps what it was given, per stage."""
+
+    def __init__(self):
+        self.calls: dict[str, list[float]] = {}
+
+    def __call__(self, *args):
+        stage, fraction = args if len(args) == 2 else ("", args[0])
+        self.calls.setdefault(stage, []).append(fraction)
+
+    def check(self, stage: str = "") -> list[float]:
+        f = self.calls[stage]
+        assert all(0.0 <= x <= 1.0 for x in f), f
+        assert all(b >= a for a, b in zip(f, f[1:])), f"{stage}: not monotone: {f}"
+        assert f[-1] == 1.0
+        return f
+
+
+# -- the estimates against closed forms and the integration --------------------------------------
+
+def test_rundown_estimate_is_the_closed_form_for_constant_inertia_and_load():
+    """Constant J and resisting M: ½Jω0² = M·φ_stop, so φ_stop/Φ = Jω0²/(2MΦ) cycles exactly;
+    the integration stops there (test_timedomain checks the angle to 1e-6)."""
+    phi = np.linspace(0, 2 * np.pi, 721)
+    J, M, w0 = 2.0, 50.0, 30.0
+    n = timedomain.rundown_cycles(phi, np.full_like(phi, J), np.full_like(phi, -M), w0)
+    assert n == pytest.approx(J * w0**2 / (2 * M) / (2 * np.pi), rel=1e-12)
+    rd = timedomain.rundown(phi, np.full_like(phi, J), np.zeros_like(phi), np.full_like(phi, -M), w0)
+    assert math.radians(rd["angle_deg"]) / (2 * np.pi) == pytest.approx(n, rel=1e-6)
+
+
+def test_rundown_estimate_none_without_net_resistance():
+    phi = np.linspace(0, 2 * np.pi, 361)
+    assert timedomain.rundown_cycles(phi, np.full_like(phi, 2.0), 30.0 * np.sin(phi), 20.0) is None
+
+
+def test_rundown_of_loads_that_drive_says_so():
+    """Loads that do positive work (an engine's gas) never run the machine down: three cycles
+    for the history, no estimate, and the reason names the positive work (not 'no net work')."""
+    phi = np.linspace(0, 2 * np.pi, 361)
+    M = np.full_like(phi, 5.0)
+    assert timedomain.rundown_cycles(phi, np.full_like(phi, 2.0), M, 20.0) is None
+    rd = timedomain.rundown(phi, np.full_like(phi, 2.0), np.zeros_like(phi), M, 20.0)
+    assert not rd["stopped"] and "positive work" in rd["reason"] and "+31.4 J" in rd["reason"]
+    assert math.radians(rd["angle_deg"]) == pytest.approx(3 * 2 * np.pi, rel=1e-9)
+
+
+def test_startup_estimate_is_the_closed_form_for_constant_inertia():
+    """J·dω/dt = (M_п/ω_x)(ω_s − ω): ω = ω_s·(1 − e^(−t/τ)), within δ/50 of ω_s after
+    t* = τ·ln(50/δ), having turned ∫ω dt = ω_s·τ·(ln(50/δ) − 1 + δ/50), that over 2π cycles;
+    the integration converges (a cycle mean within δ/50 and a step below δ/500) within a few
+    cycles of that."""
+    phi = np.linspace(0.0, 2 * np.pi, 361)
+    J, w_x, delta, M_p = 1.0, 100.0, 0.04, 50.0
+    w_s, tau = w_x / 2, J * w_x / M_p
+    motor = timedomain.linear_motor(M_p, w_x)
+    n = timedomain.startup_cycles(phi, np.full_like(phi, J), np.full_like(phi, -M_p / 2), motor,
+                                  w_s, delta)
+    assert n == pytest.approx(w_s * tau * (math.log(50 / delta) - 1 + delta / 50) / (2 * np.pi),
+                             rel=1e-9)
+    st = timedomain.startup(phi, np.full_like(phi, J), np.zeros_like(phi),
+                            np.full_like(phi, -M_p / 2), motor, w_s, delta)
+    assert st["converged"] and abs(st["cycles_run"] - n) < 0.05 * n + 3
+
+
+def test_startup_estimate_none_when_the_motor_cannot_carry_the_load():
+    phi = np.linspace(0.0, 2 * np.pi, 361)
+    motor = timedomain.linear_motor(50.0, 100.0)
+    assert timedomain.startup_cycles(phi, np.ones_like(phi), np.full_like(phi, -60.0), motor,
+                                     50.0, 0.04) is None
+
+
+@pytest.mark.parametrize("name", ["compressor", "press", "shaper"])
+def test_estimates_of_the_bundled_cases_agree_with_their_integration(name):
+    """On real machines (J(φ), M(φ) varying) the estimates are of the right size: within 25 %
+    of the cycles the integration takes (the limit is meant against runs 10–1000× longer)."""
+    from flywheel.cases.run import load_case
+    from flywheel.dynamics.pipeline import analyze
+
+    c = load_case(CASES / f"{name}.toml")
+    r = analyze(c, n_points=720, transients=True)
+    J = r.motion.J_I + r.reduction.J_II
+    td = r.time_domain
+    n_down = timedomain.rundown_cycles(r.phi, J, r.energy.M_known, float(r.motion.omega[0]))
+    assert n_down == pytest.approx(td.rundown["angle_deg"] / 360, rel=0.25)
+    if c.motor is not None:
+        m = c.machine
+        motor = timedomain.linear_motor(td.startup["starting_torque"], td.startup["no_load_speed"])
+        n_up = timedomain.startup_cycles(r.phi, J, r.energy.M_known, motor, m.omega_mean, m.delta)
+        assert n_up == pytest.approx(td.startup["cycles_to_steady"], rel=0.25)
+
+
+def test_aggregate_step_estimate_against_the_solver():
+    """explicit_steps against DOP853's own count (nfev/12) on the bundled aggregate over 20 s:
+    the step is limited by 1/8 of the highest natural period (plus rejected steps)."""
+    from flywheel.cases.aggregate import load_aggregate_case, to_model
+    from flywheel.elastic import timedomain as etd
+
+    ch, drive = to_model(load_aggregate_case(CASES / "aggregate.toml"), "aggregate.toml")
+    est, _ = etd.explicit_steps(ch, drive, 20.0)
+    import scipy.integrate
+
+    seen = []
+    real = scipy.integrate.solve_ivp
+
+    def counting(*a, **k):
+        sol = real(*a, **k)
+        seen.append(sol.nfev / 12)
+        return sol
+
+    scipy.integrate.solve_ivp = counting
+    try:
+        etd.start_up(ch, drive, 20.0)
+    finally:
+        scipy.integrate.solve_ivp = real
+    assert seen[0] == pytest.approx(est, rel=0.3)
+
+
+# -- the refusals (the computation's side; the CLI lines are in the catalogue) -------------------
+
+def test_rundown_beyond_the_limit_is_refused_before_integrating(monkeypatch):
+    from flywheel.cases.run import parse_case
+    from flywheel.dynamics.pipeline import analyze
+    from flywheel.io.toml import read_toml
+
+    doc = read_toml(CASES / "slotted_link.toml")
+    doc["forces"][0]["magnitude"] = 1.5
+    c = parse_case(doc, "c.toml")
+    monkeypatch.setattr(timedomain, "rundown", lambda *a, **k: pytest.fail("integrated"))
+    with pytest.raises(InputError, match=r"run-down of --transients would take about .* "
+                                         r"more than the limit of 500 cycles"):
+        analyze(c, n_points=360, transients=True)
+
+
+def test_aggregate_t_end_beyond_the_limit_names_the_option():
+    from flywheel.cases.aggregate import load_aggregate_case, to_model
+    from flywheel.elastic import timedomain as etd
+    from flywheel.elastic.model import analyze
+
+    ch, drive = to_model(load_aggregate_case(CASES / "aggregate.toml"), "aggregate.toml")
+    t_end = 1.5 * etd.MAX_STEPS / etd.explicit_steps(ch, drive, 1.0)[0]
+    with pytest.raises(InputError, match=rf"^--t-end: .* more than the limit of {etd.MAX_STEPS}"):
+        analyze(ch, drive, t_end=t_end)
+
+
+# -- progress ------------------------------------------------------------------------------------
+
+def test_progress_of_run_transients_is_monotone_per_stage():
+    from flywheel.cases.run import load_case
+    from flywheel.dynamics.pipeline import analyze
+
+    rec = Recorder()
+    analyze(load_case(CASES / "compressor.toml"), n_points=720, transients=True, progress=rec)
+    assert set(rec.calls) == {"steady check", "start-up", "run-down"}
+    for stage in rec.calls:
+        f = rec.check(stage)
+        assert len(f) >= 2
+    # the run-down (7 cycles) reports along the way, every 1 % at most
+    assert 10 <= len(rec.calls["run-down"]) <= 101
+
+
+def test_progress_of_the_rundown_alone():
+    phi = np.linspace(0, 2 * np.pi, 721)
+    rec = Recorder()
+    timedomain.rundown(phi, np.full_like(phi, 2.0), np.zeros_like(phi), np.full_like(phi, -50.0),
+                       30.0, progress=rec)
+    f = rec.check()
+    assert f[0] < 0.1 and len(f) > 20
+
+
+def test_progress_of_the_aggregate_startup_is_monotone():
+    from flywheel.cases.aggregate import load_aggregate_case, to_model
+    from flywheel.elastic.model import analyze
+
+    ch, drive = to_model(load_aggregate_case(CASES / "aggregate.toml"), "aggregate.toml")
+    rec = Recorder()
+    analyze(ch, drive, progress=rec)
+    f = rec.check("start-up")
+    assert len(f) > 20
+
+
+def test_progress_does_not_change_the_results():
+    from flywheel.cases.run import load_case
+    from flywheel.dynamics.pipeline import analyze
+
+    c = load_case(CASES / "compressor.toml")
+    a = analyze(c, n_points=360, transients=True).to_document()
+    b = analyze(c, n_points=360, transients=True, progress=lambda s, f: None).to_document()
+    assert a == b
+
+
+# -- the bar on a terminal, nothing when piped ----------------------------------------------------
+
+def _flywheel(args, terminal: bool):
+    """`python -m flywheel ARGS` with stderr piped; ``terminal``: rich told stderr is a terminal
+    (FORCE_COLOR, as a terminal would make it draw)."""
+    import os
+    import subprocess
+    import sys
+
+    env = {k: v for k, v in os.environ.items() if k not in ("FORCE_COLOR", "TTY_COMPATIBLE",
+                                                             "NO_COLOR", "TERM")}
+    if terminal:
+        env["FORCE_COLOR"] = "1"
+    return subprocess.run([sys.executable, "-m", "flywheel", *map(str, args)], env=env,
+                          capture_output=True, text=True, timeout=120)
+
+
+def _visible_lines(text: str) -> list[str]:
+    import re
+
+    text = re.sub(r"\x1b\[[0-9;?]*[A-Za-z]", "", text).replace("\r", "\n")
+    return [ln for ln in text.splitlines() if ln.strip()]
+
+
+def test_the_bar_shows_on_a_terminal_and_not_when_piped(tmp_path):
+    args = ["run", CASES / "press.toml", "--transients", "--no-plots", "--json", "--out"]
+    piped = _flywheel(args + [tmp_path / "a"], terminal=False)
+    shown = _flywheel(args + [tmp_path / "b"], terminal=True)
+    assert piped.returncode == shown.returncode == 0
+    assert "run-down" not in piped.stderr and "\x1b" not in piped.stderr
+    assert "run-down" in shown.stderr                 # the bar's stage, drawn and then cleared
+    assert piped.stdout == shown.stdout               # the results do not depend on it
+
+
+def test_an_error_on_a_terminal_is_still_one_line(tmp_path):
+    """The bar is closed before the error is printed: one line, not wrapped by the display."""
+    doc = (CASES / "slotted_link.toml").read_text(encoding="utf-8")
+    case = tmp_path / "c.toml"
+    case.write_text(doc.replace("magnitude = 1500.0", "magnitude = 1.5"), encoding="utf-8")
+    p = _flywheel(["run", case, "--transients", "--no-plots", "--out", tmp_path / "o"],
+                  terminal=True)
+    assert p.returncode == 2
+    lines = _visible_lines(p.stderr)
+    assert len(lines) == 1 and lines[0].startswith("error: ") and "500 cycles" in lines[0], lines
+
+
+def test_a_variants_error_on_a_terminal_is_still_one_line(tmp_path):
+    """The same for `variants`' bar: every draw fails (rods too short to assemble), the error
+    raised while the bar is drawn is printed after it is gone."""
+    text = (CASES / "variants_compressor.toml").read_text(encoding="utf-8")
+    lines = text.splitlines()
+    i = next(k for k, ln in enumerate(lines) if ln.startswith('"machine.speed_rps"'))
+    lines[i] = '"design.rod_to_crank" = { values = [0.5, 0.6] }'
+    t = tmp_path / "t.toml"
+    t.write_text("\n".join(lines) + "\n", encoding="utf-8")
+    p = _flywheel(["variants", t, "--count", "2", "--seed", "1", "--out", tmp_path / "v"],
+                  terminal=True)
+    assert p.returncode == 2
+    err = [ln for ln in _visible_lines(p.stderr) if not ln.lstrip().startswith("variants ")]
+    assert len(err) == 1 and err[0].startswith("error: ") and "dyads[0]" in err[0], err
