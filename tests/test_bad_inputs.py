@@ -286,12 +286,9 @@ def test_bad_input(entry: Entry, tmp_path):
         assert f in lines[0], f"{f!r} not in the error line\n{what}"
 
 
-@pytest.mark.xfail(strict=True, reason="a usage error (an option's value of the wrong type, an "
-                   "unknown option, a missing argument) is the parser's multi-line box, not one "
-                   "`error:` line")
 def test_usage_error_is_one_error_line(tmp_path):
     o = invoke(Entry("run/points-not-a-number", ["run", f"{CASES}/compressor.toml", "--points",
-                                                 "many", "--out", "{tmp}/out"], ["--points"]),
-               tmp_path)
+                                                 "many", "--out", "{tmp}/out"], ["--points"],
+                     subprocess=True), tmp_path)
     lines = [ln for ln in o.stderr.splitlines() if ln.strip()]
     assert o.code == 2 and len(lines) == 1 and lines[0].startswith("error: "), describe(o)
