@@ -456,8 +456,12 @@ def figure_positions_plan(results, lang: str = "en", scheme=None):
     for lab, phi in std:
         k = int(round(math.degrees(phi) / 30))
         numbers.setdefault(k % 12, []).append(k)
-    segs, dsegs = [], []
+    segs, dsegs, drawn = [], [], set()
     for lab, phi in std + dcs:
+        once = round(math.degrees(phi) % 360.0, 6)    # a 720° cycle repeats the geometry
+        if once in drawn:
+            continue
+        drawn.add(once)
         i = results.index_of(phi % results.cycle)
         for _, pts in links:
             xy = np.array([P[p].r[i] for p in pts])
