@@ -508,7 +508,7 @@ def force_polygons(mech: Mechanism, kin: Kinematics, fa: ForceAnalysis, loads: L
     return tuple(out)
 
 
-# -- Zhukovsky's lever ------------------------------------------------------------------------------
+# -- Zhukovsky's lever ----------------------------------------------------------------------------
 
 def zhukovsky_lever(mech: Mechanism, kin: Kinematics, fa: ForceAnalysis, loads: Loads, i: int,
                     velocity: KinematicPlan) -> ZhukovskyLever:
@@ -544,7 +544,7 @@ def zhukovsky_lever(mech: Mechanism, kin: Kinematics, fa: ForceAnalysis, loads: 
                           velocity.scale, round_scale(float(largest), SHEET_MM[1] / 2))
 
 
-# -- all of them ------------------------------------------------------------------------------------
+# -- all of them ----------------------------------------------------------------------------------
 
 def plan_set(mech: Mechanism, kin: Kinematics, fa: ForceAnalysis, loads: Loads, i: int,
              phi_deg: float) -> PlanSet:

@@ -414,7 +414,7 @@ TERMS: dict[str, Term] = {
     "mu_F": _t("μ_F", r"$\mu_F$", "N/mm", "scale of the force plan", "масштаб плана сил"),
     "velocity_plan": _t("", "", "", "velocity plan", "план скоростей"),
     "acceleration_plan": _t("", "", "", "acceleration plan", "план ускорений"),
-    "force_polygon": _t("", "", "", "force polygon", "план сил"),
+    "force_polygon": _t("", "", "", "force polygons of the Assur groups", "планы сил групп Ассура"),
     "zhukovsky_lever": _t("", "", "", "Zhukovsky's lever", "рычаг Жуковского"),
     "positions_plan": _t("", "", "", "the mechanism in its standard positions",
                          "план положений механизма"),

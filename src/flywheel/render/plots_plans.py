@@ -24,14 +24,13 @@ from flywheel.render import nomenclature as nm
 
 _TEXT = {
     "en": {
-        "velocity": "velocity plan at φ = {a:g}°",
-        "acceleration": "acceleration plan at φ = {a:g}°",
-        "forces": "force polygons of the Assur groups at φ = {a:g}°",
-        "lever": "Zhukovsky's lever at φ = {a:g}° (the velocity plan turned 90° clockwise)",
-        "positions": "positions of the mechanism (план положений), {n} positions every 30°",
+        "velocity": "{p} at φ = {a:g}°",
+        "acceleration": "{p} at φ = {a:g}°",
+        "forces": "{p} at φ = {a:g}°",
+        "lever": "{p} at φ = {a:g}° (the velocity plan turned 90° clockwise)",
+        "positions": "{p} (план положений), {n} positions every 30°",
         "group": "group {g} ({k}: links {l})",
         "crank": "crank {l} and the frame",
-        "sheet": "on the sheet, mm",
         "pole_v": "pole p",
         "pole_a": "pole π",
         "absolute": "absolute",
@@ -60,14 +59,13 @@ _TEXT = {
         "crank_circle": "path of the crank pin",
     },
     "ru": {
-        "velocity": "план скоростей при φ = {a:g}°",
-        "acceleration": "план ускорений при φ = {a:g}°",
-        "forces": "планы сил групп Ассура при φ = {a:g}°",
-        "lever": "рычаг Жуковского при φ = {a:g}° (план скоростей, повёрнутый на 90° по часовой стрелке)",
-        "positions": "план положений механизма, {n} положений через 30°",
+        "velocity": "{p} при φ = {a:g}°",
+        "acceleration": "{p} при φ = {a:g}°",
+        "forces": "{p} при φ = {a:g}°",
+        "lever": "{p} при φ = {a:g}° (план скоростей, повёрнутый на 90° по часовой стрелке)",
+        "positions": "{p}, {n} положений через 30°",
         "group": "группа {g} ({k}: звенья {l})",
         "crank": "кривошип {l} и стойка",
-        "sheet": "на чертеже, мм",
         "pole_v": "полюс p",
         "pole_a": "полюс π",
         "absolute": "абсолютные",
@@ -139,7 +137,7 @@ def _scheme(ax, results, i: int, size: float, scheme) -> None:
     draw_at(ax, results, i, size)
 
 
-# -- labels -----------------------------------------------------------------------------------------
+# -- labels ---------------------------------------------------------------------------------------
 
 _SUB = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
 
@@ -203,7 +201,7 @@ def _scale_text(key: str, mu: float, lang: str) -> str:
     return f"{nm.tex(key, lang)} = {mu:g} {nm.unit_of(key, lang)}"
 
 
-# -- the kinematic plans -----------------------------------------------------------------------------
+# -- the kinematic plans --------------------------------------------------------------------------
 
 def _arrows(ax, tails: np.ndarray, heads: np.ndarray, colour: str, width: float = 1.6,
             style: str = "-") -> None:
@@ -226,7 +224,7 @@ def _frame_plan(ax, pts: np.ndarray, lang: str) -> None:
     ax.set_xlim(lo[0] - pad, hi[0] + pad)
     ax.set_ylim(lo[1] - pad, hi[1] + pad)
     ax.set_aspect("equal", adjustable="box")
-    ax.set_xlabel(_t(lang, "sheet"))
+    ax.set_xlabel(f"{nm.name('plan_length', lang)}, {nm.unit_of('plan_length', lang)}")
     ax.grid(True, alpha=0.3)
 
 
@@ -283,7 +281,7 @@ def _kinematic_plan(results, ps, which: str, lang: str):
     extra.append(_t(lang, name, x=", ".join(f"{n} {lw[n]:.4g}" for n in lw)))
     fig.text(1 - (_TABLE_W - 0.1) / 10.0, 1 - 0.75 / 7.0,
              "\n".join(_wrap(extra) + [""] + lines), va="top", ha="left", fontsize=7.5)
-    what = _t(lang, which, a=ps.phi_deg)
+    what = _t(lang, which, p=nm.name(f"{which}_plan", lang), a=ps.phi_deg)
     ax.set_title(f"{_title(results, what)}, {_scale_text(key, mu, lang)}", loc="left")
     return fig
 
@@ -312,7 +310,7 @@ def figure_acceleration_plan(results, ps, lang: str = "en"):
     return _kinematic_plan(results, ps, "acceleration", lang)
 
 
-# -- the force polygons ------------------------------------------------------------------------------
+# -- the force polygons ---------------------------------------------------------------------------
 
 def figure_force_polygons(results, ps, lang: str = "en"):
     """The force polygon of every Assur group and of the crank at one report angle, each to
@@ -357,19 +355,20 @@ def figure_force_polygons(results, ps, lang: str = "en"):
         _frame_plan(ax, np.array(pts), lang)
         what = (_t(lang, "crank", l=pg.links[0]) if pg.kind == "crank"
                 else _t(lang, "group", g=pg.group, k=pg.kind, l=", ".join(pg.links)))
-        ax.set_title(f"{what}\n{_scale_text('mu_F', mu, lang)}; {_t(lang, 'closes', c=pg.closure)}",
-                     fontsize=8.5)
+        scale = _scale_text("mu_F", mu, lang)
+        ax.set_title(f"{what}\n{scale}; {_t(lang, 'closes', c=pg.closure)}", fontsize=8.5)
     order = ("weight", "inertia", "given", "known", "reaction", "chord")
-    handles = [Line2D([], [], color=_COLOURS.get(k, "0.45"), linestyle="--" if k == "chord" else "-",
-                      linewidth=1.5, label=_t(lang, k)) for k in order if k in used]
+    handles = [Line2D([], [], color=_COLOURS.get(k, "0.45"), linewidth=1.5,
+                      linestyle="--" if k == "chord" else "-", label=_t(lang, k))
+               for k in order if k in used]
     fig.legend(handles=handles, loc="upper left",
                bbox_to_anchor=(1 - 2.5 / size[0], 1 - 1.15 / size[1]), fontsize=8)
-    unit_n = _unit("N", lang)
-    fig.suptitle(f"{_title(results, _t(lang, 'forces', a=ps.phi_deg))} ({unit_n})", fontsize=10)
+    what = _t(lang, "forces", p=nm.name("force_polygon", lang), a=ps.phi_deg)
+    fig.suptitle(f"{_title(results, what)} ({_unit('N', lang)})", fontsize=10)
     return fig
 
 
-# -- Zhukovsky's lever ----------------------------------------------------------------------------------
+# -- Zhukovsky's lever ----------------------------------------------------------------------------
 
 def figure_lever(results, ps, lang: str = "en"):
     """Zhukovsky's lever at one report angle: the turned velocity plan to μ_v, every force at
@@ -417,19 +416,19 @@ def figure_lever(results, ps, lang: str = "en"):
     k = fa.balancing_moment[ps.index] if fa is not None else float("nan")
     Py = float(np.hypot(*lv.balancing_force.force)) * (1 if lv.balancing_moment >= 0 else -1)
     lines += ["", _plain(_t(lang, "lever_sum", s=lv.moment_of_loads)),
-              _plain(_t(lang, "lever_My" if lang != "ru" else "lever_My", m=lv.balancing_moment,
-                        k=k)),
+              _plain(_t(lang, "lever_My", m=lv.balancing_moment, k=k)),
               _plain(_t(lang, "lever_Py", p=Py))]
     _frame_plan(ax, np.array(pts), lang)
     fig.text(1 - 4.0 / 10.5, 1 - 0.95 / 7.4, "\n".join(_wrap(lines, 62)), va="top", ha="left",
              fontsize=7.5)
-    ax.set_title(f"{_title(results, _t(lang, 'lever', a=ps.phi_deg))}\n"
+    what = _t(lang, "lever", p=nm.name("zhukovsky_lever", lang), a=ps.phi_deg)
+    ax.set_title(f"{_title(results, what)}\n"
                  f"{_scale_text('mu_v', mu, lang)}, {_scale_text('mu_F', muF, lang)}",
                  fontsize=9.5, loc="left")
     return fig
 
 
-# -- the positions drawing --------------------------------------------------------------------------------
+# -- the positions drawing ------------------------------------------------------------------------
 
 def figure_positions_plan(results, lang: str = "en", scheme=None):
     """The mechanism in its standard positions (every 30°: 12, or 24 over a 720° cycle)
@@ -440,13 +439,15 @@ def figure_positions_plan(results, lang: str = "en", scheme=None):
     from matplotlib.lines import Line2D
 
     P = results.kinematics.points
-    cycle = results.cycle_deg
     fig, axes = _figure((10.0, 8.0), right=2.9, top=0.7)
     ax = axes[0, 0]
     allr = np.concatenate([pm.r for pm in P.values()])
     size = 0.035 * float(max(np.ptp(allr[:, 0]), np.ptp(allr[:, 1]), 1e-9))
-    std = [(lab, phi) for lab, phi in results.position_angles if abs(math.degrees(phi) / 30
-                                                                      - round(math.degrees(phi) / 30)) < 1e-6]
+    def every_30(phi: float) -> bool:
+        k = math.degrees(phi) / 30
+        return abs(k - round(k)) < 1e-6
+
+    std = [(lab, phi) for lab, phi in results.position_angles if every_30(phi)]
     dcs = [(lab, phi) for lab, phi in results.position_angles if (lab, phi) not in std]
     i0 = results.index_of(std[0][1]) if std else 0
     if scheme is not None:
@@ -476,17 +477,16 @@ def figure_positions_plan(results, lang: str = "en", scheme=None):
     # the numbers: at the crank pin (outwards from the pivot) and at each slider's joint
     # (alternately on either side of its guide)
     pivot, tip = links[0][1][0], links[0][1][1]
-    sliders, guides = [], set()        # one slider per guide (an engine's pistons share one)
+    sliders, guides = {}, set()        # one slider per guide (an engine's pistons share one)
     for lm in results.kinematics.links.values():
         if lm.theta is not None and not np.any(lm.omega_q != 0) and lm.ref in P \
                 and float(np.ptp(P[lm.ref].r, axis=0).max()) > 1e-12:
-            r = P[lm.ref].r
-            th = float(lm.theta[0])
-            line = (round(th % math.pi, 9), round(float(r[0, 1] * math.cos(th) - r[0, 0] * math.sin(th)), 9))
-            if line not in guides:
+            r, th = P[lm.ref].r[0], float(lm.theta[0])
+            line = (round(th % math.pi, 9), round(r[1] * math.cos(th) - r[0] * math.sin(th), 9))
+            if line not in guides and lm.ref != tip:
                 guides.add(line)
-                sliders.append(lm.ref)
-    for p in [tip] + [s for s in dict.fromkeys(sliders) if s != tip]:
+                sliders[lm.ref] = th              # the guide's direction [rad]
+    for p in [tip, *sliders]:
         for k, ks in numbers.items():
             i = results.index_of(math.radians(30 * k))
             c = P[p].r[i]
@@ -495,8 +495,7 @@ def figure_positions_plan(results, lang: str = "en", scheme=None):
                 n = d / (np.hypot(*d) or 1.0)
                 off = (11 * n[0], 11 * n[1])
             else:
-                th = float(results.kinematics.links[[n for n, lm in results.kinematics.links.items()
-                                                     if lm.ref == p and not np.any(lm.omega_q != 0)][0]].theta[i])
+                th = sliders[p]
                 side = 1 if k % 2 else -1
                 off = (-9 * side * math.sin(th), 9 * side * math.cos(th))
             ax.annotate(", ".join(str(x) for x in ks), c, xytext=off, textcoords="offset points",
@@ -511,11 +510,12 @@ def figure_positions_plan(results, lang: str = "en", scheme=None):
         handles.append(Line2D([], [], color="C3", linestyle="--", linewidth=0.8,
                               label=_t(lang, "d_c")))
     ax.legend(handles=handles, loc="upper left", bbox_to_anchor=(1.02, 1.0), borderaxespad=0.0)
-    ax.set_title(_title(results, _t(lang, "positions", n=len(std))), loc="left")
+    what = _t(lang, "positions", p=nm.name("positions_plan", lang), n=len(std))
+    ax.set_title(_title(results, what), loc="left")
     return fig
 
 
-# -- the list ------------------------------------------------------------------------------------------
+# -- the list -------------------------------------------------------------------------------------
 
 def figures(results, lang: str = "en", scheme=None) -> list:
     """(file name, figure-building function) of the plans: the positions drawing, and at each
