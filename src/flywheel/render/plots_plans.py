@@ -475,7 +475,7 @@ def figure_positions_plan(results, lang: str = "en", scheme=None):
         ax.add_collection(LineCollection(dsegs, colors="C3", linewidths=0.8, linestyles="--",
                                          zorder=2.6))
     # the numbers: at the crank pin (outwards from the pivot) and at each slider's joint
-    # (alternately on either side of its guide)
+    # (beyond its guide, on the side of the crank pin)
     pivot, tip = links[0][1][0], links[0][1][1]
     sliders, guides = {}, set()        # one slider per guide (an engine's pistons share one)
     for lm in results.kinematics.links.values():
@@ -494,10 +494,12 @@ def figure_positions_plan(results, lang: str = "en", scheme=None):
                 d = c - P[pivot].r[i]
                 n = d / (np.hypot(*d) or 1.0)
                 off = (11 * n[0], 11 * n[1])
-            else:
+            else:        # the side of the guide the crank pin is on: strokes apart
                 th = sliders[p]
-                side = 1 if k % 2 else -1
-                off = (-9 * side * math.sin(th), 9 * side * math.cos(th))
+                u = (math.cos(th), math.sin(th))
+                rel = P[tip].r[i] - c
+                side = -1 if u[0] * rel[1] - u[1] * rel[0] < -1e-12 else 1
+                off = (-20 * side * u[1], 20 * side * u[0])
             ax.annotate(", ".join(str(x) for x in ks), c, xytext=off, textcoords="offset points",
                         ha="center", va="center", fontsize=7.5, color="C0", zorder=8)
     ax.set_aspect("equal", adjustable="datalim")
