@@ -282,7 +282,7 @@ def _kinematic_plan(results, ps, which: str, lang: str):
     fig.text(1 - (_TABLE_W - 0.1) / 10.0, 1 - 0.75 / 7.0,
              "\n".join(_wrap(extra) + [""] + lines), va="top", ha="left", fontsize=7.5)
     what = _t(lang, which, p=nm.name(f"{which}_plan", lang), a=ps.phi_deg)
-    ax.set_title(f"{_title(results, what)}, {_scale_text(key, mu, lang)}", loc="left")
+    ax.set_title(f"{_title(results, what)}, {_scale_text(key, mu, lang)}", loc="left", y=1.01)
     return fig
 
 
@@ -356,7 +356,8 @@ def figure_force_polygons(results, ps, lang: str = "en"):
         what = (_t(lang, "crank", l=pg.links[0]) if pg.kind == "crank"
                 else _t(lang, "group", g=pg.group, k=pg.kind, l=", ".join(pg.links)))
         scale = _scale_text("mu_F", mu, lang)
-        ax.set_title(f"{what}\n{scale}; {_t(lang, 'closes', c=pg.closure)}", fontsize=8.5)
+        ax.set_title(f"{what}\n{scale}; {_t(lang, 'closes', c=pg.closure)}", fontsize=8.5,
+                     y=1.01)   # a fixed place: no layout pass for it
     order = ("weight", "inertia", "given", "known", "reaction", "chord")
     handles = [Line2D([], [], color=_COLOURS.get(k, "0.45"), linewidth=1.5,
                       linestyle="--" if k == "chord" else "-", label=_t(lang, k))
@@ -424,7 +425,7 @@ def figure_lever(results, ps, lang: str = "en"):
     what = _t(lang, "lever", p=nm.name("zhukovsky_lever", lang), a=ps.phi_deg)
     ax.set_title(f"{_title(results, what)}\n"
                  f"{_scale_text('mu_v', mu, lang)}, {_scale_text('mu_F', muF, lang)}",
-                 fontsize=9.5, loc="left")
+                 fontsize=9.5, loc="left", y=1.01)
     return fig
 
 
@@ -513,7 +514,7 @@ def figure_positions_plan(results, lang: str = "en", scheme=None):
                               label=_t(lang, "d_c")))
     ax.legend(handles=handles, loc="upper left", bbox_to_anchor=(1.02, 1.0), borderaxespad=0.0)
     what = _t(lang, "positions", p=nm.name("positions_plan", lang), n=len(std))
-    ax.set_title(_title(results, what), loc="left")
+    ax.set_title(_title(results, what), loc="left", y=1.01)
     return fig
 
 
