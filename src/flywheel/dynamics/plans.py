@@ -31,9 +31,9 @@ Scales: :func:`round_scale` — a round value 1, 2, 2.5 or 5 × 10^k per mm, the
 which the longest vector is at most 120 mm on the sheet (so it is longer than 60 mm).
 
 Sources: И. И. Артоболевский, «Теория механизмов и машин», 4-е изд., М.: Наука, 1988 —
-планы скоростей и ускорений (гл. 4: кинематический анализ групп; теорема подобия; ускорение
-Кориолиса), силовой расчёт групп Ассура и план сил, рычаг Н. Е. Жуковского (гл. 13); the
-course's labels pa, pb, ab, πa, n, τ, k.
+планы скоростей и ускорений (кинематический анализ групп, гл. 4 as linkage/solve.py cites
+it; теорема подобия; ускорение Кориолиса), силовой расчёт групп Ассура и план сил, рычаг
+Н. Е. Жуковского (as dynamics/forces.py cites them); the course's labels pa, pb, ab, πa, n, τ, k.
 """
 from __future__ import annotations
 
