@@ -11,12 +11,16 @@ slider-crank quantities, the shaking force and moment), the two other balancing 
 run` calls it, ``stages.force_analysis`` (the three, the crank-pin load, the closure; with
 ``steady`` the true motion's kinetostatics a second time for the closure) with the loads built
 from the case (``pipeline.force_loads``), and summary.json's document with and without it.
+Then the plans at the report angles (dynamics.plans.plan_sets, built in analyze) and the CPU
+time of drawing each plan figure (render/plots_plans.py: build and PNG, as run saves them).
 Prints the machine. Target (issue 12): the force analysis adds ≤ 5 ms at 3600 points.
 """
 from __future__ import annotations
 
 import argparse
+import io
 import sys
+import time
 from dataclasses import replace
 from pathlib import Path
 
@@ -42,6 +46,30 @@ def prepare(points: int):
     loads = force_loads(case, mech, dcs, res.kinematics, res.loads, res.motion.J_I)
     return mech, res.kinematics, res.motion.omega, res.motion.epsilon, loads, \
         res.energy.balancing_moment
+
+
+def plan_figures_cpu(results, lang: str = "en", repeat: int = 3) -> dict[str, float]:
+    """{file name: best CPU seconds} of the plan figures of ``results``: each built and saved
+    as `flywheel run` saves it (zlib level 1, no metadata), best of ``repeat`` of
+    time.process_time (this process's CPU, so the other load on the machine counts less)."""
+    from flywheel.render import plots
+
+    out = {}
+    with plots._style():
+        plots.figure_omega(results, lang).savefig(io.BytesIO(), format="png")   # warm up
+        for name, build in plots.all_figures(results, lang):
+            if not name.startswith("plan_"):
+                continue
+            best = float("inf")
+            for _ in range(repeat):
+                t = time.process_time()
+                fig = build()
+                fig.savefig(io.BytesIO(), format="png", dpi=plots.DPI, metadata={"Software": None},
+                            pil_kwargs={"compress_level": 1})
+                best = min(best, time.process_time() - t)
+                fig.clear()
+            out[name] = best
+    return out
 
 
 def main() -> int:
@@ -81,6 +109,14 @@ def main() -> int:
     doc_with = best_ms(lambda: res.to_document(), args.repeat)
     doc_without = best_ms(lambda: bare.to_document(), args.repeat)
 
+    # the plans at the report angles (issue 12 item 6): built in analyze, drawn with the plots
+    from flywheel.dynamics import plans
+
+    ld = force_loads(case, mech, dcs, res.kinematics, res.loads, res.motion.J_I)
+    plans_ms = best_ms(lambda: plans.plan_sets(mech, res.kinematics, res.forces.analysis, ld,
+                                               case.output.at_deg), args.repeat)
+    drawn = plan_figures_cpu(res)
+
     fa = fo.kinetostatics(*a)
     print(f"machine: {machine()}")
     print(f"case: {CASE.relative_to(ROOT)}; grid: {kin.phi.size} nodes; "
@@ -95,6 +131,11 @@ def main() -> int:
     print(f"summary.json document: {doc_with:.3f} ms with the force analysis, "
           f"{doc_without:.3f} ms without")
     print(f"closure max|M_y − M_D|/|M_D| = {fo.closure(fa, M_D):.2e} (M_D = {M_D:.6g} N·m)")
+    print(f"the plans at {len(case.output.at_deg)} report angle(s) (velocity, acceleration, force "
+          f"polygons, lever): {plans_ms:.3f} ms")
+    print("drawing the plans (build + PNG, CPU of one process, best of 3): "
+          + ", ".join(f"{n} {t * 1e3:.0f} ms" for n, t in drawn.items())
+          + f"; total {sum(drawn.values()) * 1e3:.0f} ms")
     ok = max(whole, stage_true, stage_steady) <= TARGET_MS
     print("target met" if ok else "TARGET MISSED")
     return 0 if ok else 1

@@ -18,6 +18,8 @@ EXPECTED = {
     "indicator_HP.png", "indicator_LP.png", "piston_forces.png", "reduced_moments.png",
     "works.png", "omega.png", "epsilon.png", "scheme.png", "energy_mass.png", "time_law.png",
     "reactions.png", "balancing_moment.png", "hodographs.png",      # the force analysis
+    "plan_positions.png", "plan_velocity_120.png", "plan_acceleration_120.png",   # the plans
+    "plan_forces_120.png", "plan_lever_120.png",
 }
 
 

@@ -1,5 +1,5 @@
 """The analysis of a case: mechanism → grid → kinematics → loads → reduction → energy → sizing →
-motion → report angles → force analysis → (time domain) → Results.
+motion → report angles → force analysis → plans at the report angles → (time domain) → Results.
 
 :func:`analyze` reads the validated case and calls the stages in order (design.md §1). This
 module is the linkage route: the case's mechanism gives the kinematics, and its cylinders,
@@ -16,7 +16,7 @@ import math
 import numpy as np
 
 from flywheel.dynamics import loads as L
-from flywheel.dynamics import reduction, stages
+from flywheel.dynamics import plans, reduction, stages
 from flywheel.dynamics.columns import linkage_columns
 from flywheel.dynamics.engine import firing_angles, four_stroke_cylinder
 from flywheel.dynamics.grid import (DEFAULT_POINTS, grid_options, linkage_grid, report_index,
@@ -53,15 +53,16 @@ def analyze(case, n_points: int = DEFAULT_POINTS, at_deg: list[float] | None = N
     red = linkage_reduction(case, kin)
     en, sz, mo = stages.dynamics(phi, ld, red, case.machine, case.flywheel)
     at = report_angles(at_deg, kin, ld, red, en, mo)
-    fo = stages.force_analysis(phi, red, en, mo, case.machine.omega_mean, motion, mech, kin,
-                               force_loads(case, mech, dcs, kin, ld, mo.J_I))
+    fl = force_loads(case, mech, dcs, kin, ld, mo.J_I)
+    fo = stages.force_analysis(phi, red, en, mo, case.machine.omega_mean, motion, mech, kin, fl)
+    pl = plans.plan_sets(mech, kin, fo.analysis, fl, at_deg)     # drawn at the report angles
     td = stages.time_domain(case, phi, red, en, mo, progress) if transients else None
     return Results(
         title=case.title, source=case.source, phi=phi, kinematics=kin, loads=ld, reduction=red,
         energy=en, sizing=sz, motion=mo,
         columns=linkage_columns(phi, kin, mech.crank.name, ld, red, en, mo), at=at,
         position_angles=tuple(positions), links_drawn=links_drawn(mech),
-        crank_length=float(mech.crank.length), time_domain=td, forces=fo,
+        crank_length=float(mech.crank.length), time_domain=td, forces=fo, plans=pl,
         warnings=tuple(case.plausibility_warnings()) + warnings_of(ld, red, en, sz, mo, fo, td))
 
 

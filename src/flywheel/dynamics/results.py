@@ -354,6 +354,7 @@ class Results:
     tabulated: TabulatedResult | None = None
     time_domain: TimeDomainResult | None = None
     forces: ForceResult | None = None        # the force analysis (kinetostatics)
+    plans: tuple = ()                        # dynamics.plans.PlanSet at each report angle (linkage)
     warnings: tuple[str, ...] = ()
 
     @property

@@ -158,6 +158,10 @@ T = {
             "reduced_moments": "Reduced moments of the loads", "works": "Works and kinetic energy",
             "energy_mass": "Energy–mass diagram (Wittenbauer)", "time_law": "Time law t(φ)",
             "transients": "Start-up and run-down",
+            "plan_positions": "The mechanism in its standard positions",
+            "plan_velocity": "Velocity plan at φ = {a}°", "plan_acceleration": "Acceleration plan at φ = {a}°",
+            "plan_forces": "Force polygons of the Assur groups at φ = {a}°",
+            "plan_lever": "Zhukovsky's lever at φ = {a}°",
         },
     },
     "ru": {
@@ -249,6 +253,10 @@ T = {
             "reduced_moments": "Приведённые моменты сил", "works": "Работы и кинетическая энергия",
             "energy_mass": "Диаграмма энергия–масса (Виттенбауэра)", "time_law": "Закон движения t(φ)",
             "transients": "Разгон и выбег",
+            "plan_positions": "План положений механизма",
+            "plan_velocity": "План скоростей при φ = {a}°", "plan_acceleration": "План ускорений при φ = {a}°",
+            "plan_forces": "Планы сил групп Ассура при φ = {a}°",
+            "plan_lever": "Рычаг Жуковского при φ = {a}°",
         },
     },
 }
@@ -259,7 +267,10 @@ _FIGURE_SECTION = {"positions": "kin", "scheme": "kin", "velocity_analogues": "k
                    "piston_forces": "red", "reduced_moments": "red", "works": "energy",
                    "energy_mass": "sizing", "omega": "motion", "epsilon": "motion",
                    "time_law": "motion", "transients": "time", "reactions": "forces",
-                   "balancing_moment": "forces", "hodographs": "forces"}
+                   "balancing_moment": "forces", "hodographs": "forces",
+                   # the plans (render/plots_plans.py): plan_<what>[_<angle>]
+                   "plan_positions": "kin", "plan_velocity": "kin", "plan_acceleration": "kin",
+                   "plan_forces": "forces", "plan_lever": "forces"}
 
 
 def g(x, digits: int = 5) -> str:
@@ -276,6 +287,11 @@ def _figure_caption(file: str, lang: str) -> str:
         return t[stem]
     if stem.startswith("indicator_"):
         return t["indicator"].format(x=stem[len("indicator_"):])
+    if stem.startswith("plan_") and stem.count("_") >= 2:       # plan_velocity_22_5: 22.5°
+        what, _, a = stem[len("plan_"):].partition("_")
+        if f"plan_{what}" in t:
+            a = a.replace("m", "−", 1).replace("_", ".")
+            return t[f"plan_{what}"].format(a=a)
     if stem in ("J_II", "omega", "epsilon"):
         n = nm.name(stem, lang)
         return f"{n[:1].upper()}{n[1:]}(φ)"
@@ -284,7 +300,8 @@ def _figure_caption(file: str, lang: str) -> str:
 
 def _section_of(file: str) -> str:
     stem = file.rsplit(".", 1)[0]
-    return _FIGURE_SECTION.get(stem, _FIGURE_SECTION.get(stem.split("_")[0], "figures"))
+    return _FIGURE_SECTION.get(stem, _FIGURE_SECTION.get(
+        "_".join(stem.split("_")[:2]), _FIGURE_SECTION.get(stem.split("_")[0], "figures")))
 
 
 class _Builder:

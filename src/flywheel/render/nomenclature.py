@@ -431,6 +431,22 @@ TERMS: dict[str, Term] = {
     "phi_epsilon_min_deg": _t("φ", r"$\varphi$", "deg", "φ of ε_min", "φ при ε_min"),
     "power_from_loads": _t("P", "$P$", "W", "power of the loads |M|·ω_m",
                            "мощность нагрузок |M|·ω_ср"),
+    # --- plans ---
+    # (issue 12 item 6; docs/forces.md "The plans"): the scales of the drawn plans and the
+    # plans' names; plots/plan_*.png
+    "mu_v": _t("μ_v", r"$\mu_v$", "(m/s)/mm", "scale of the velocity plan",
+               "масштаб плана скоростей"),
+    "mu_a": _t("μ_a", r"$\mu_a$", "(m/s²)/mm", "scale of the acceleration plan",
+               "масштаб плана ускорений"),
+    "mu_F": _t("μ_F", r"$\mu_F$", "N/mm", "scale of the force plan", "масштаб плана сил"),
+    "velocity_plan": _t("", "", "", "velocity plan", "план скоростей"),
+    "acceleration_plan": _t("", "", "", "acceleration plan", "план ускорений"),
+    "force_polygon": _t("", "", "", "force polygons of the Assur groups", "планы сил групп Ассура"),
+    "zhukovsky_lever": _t("", "", "", "Zhukovsky's lever", "рычаг Жуковского"),
+    "positions_plan": _t("", "", "", "the mechanism in its standard positions",
+                         "план положений механизма"),
+    "plan_length": _t("", "", "mm", "length on the drawing", "длина на чертеже"),
+    # --- end plans ---
 }
 
 # the load names inside "M {load}": "gas HP", "gravity 2", "force punch", "couple c", "moment m"
@@ -450,7 +466,7 @@ MATERIALS = {"steel": ("steel", "сталь"), "cast-iron": ("cast iron", "чу�
 # -- units ----------------------------------------------------------------------------------------
 _UNIT_RU = {"m": "м", "kg": "кг", "s": "с", "rad": "рад", "N": "Н", "J": "Дж", "Pa": "Па",
             "MPa": "МПа", "W": "Вт", "kW": "кВт", "deg": "°", "rpm": "об/мин", "min": "мин",
-            "Hz": "Гц", "h": "ч", "rev": "об"}
+            "Hz": "Гц", "h": "ч", "rev": "об", "mm": "мм"}
 _UNIT_EN_PRINT = {"deg": "°"}
 
 

@@ -761,9 +761,11 @@ def all_figures(results, lang: str = "en"):
     """:func:`figures` and those beyond the worksheet (plots_extra: the energy–mass diagram,
     the time law, and with --transients the start-up and run-down), for one pool of workers."""
     from flywheel.render import plots_extra as px
-    from flywheel.render import plots_forces
+    from flywheel.render import plots_forces, plots_plans
 
     out = figures(results, lang) + plots_forces.figures(results, lang)   # force analysis
+    out += plots_plans.figures(results, lang,      # the plans, at the report angles only
+                               scheme=(_draw_scheme_fixed, _draw_scheme_at))
     out += [("energy_mass.png", lambda: px.figure_energy_mass(results, lang)),
             ("time_law.png", lambda: px.figure_time_law(results, lang))]
     if results.time_domain is not None:
