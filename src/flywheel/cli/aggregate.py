@@ -90,7 +90,9 @@ def aggregate_command(
         if plot is not None:
             typer.echo(text("plot_written", lang, path=plot))
         if out is not None:
-            typer.echo(f"{'записано' if lang == 'ru' else 'written'}: {out}/ "
+            from flywheel.render.nomenclature import prefix
+
+            typer.echo(f"{prefix('written', lang)}: {out}/ "
                        f"({', '.join(written)})")
 
 
@@ -109,6 +111,8 @@ def _write_out(out: Path, result, formats, title: str, source: str, lang: str) -
         lambda path: draw(result, path, title, lang),
         FIGURE if result.startup is not None else None,
         lambda fig: build_aggregate_document(result, title, source, lang, fig), formats)
+    from flywheel.render.nomenclature import message, prefix
+
     for n in notes:
-        sys.stderr.write(f"note: {n}\n")
+        sys.stderr.write(f"{prefix('note', lang)}: {message(n, lang)}\n")
     return names

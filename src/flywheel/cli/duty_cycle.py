@@ -27,8 +27,10 @@ def duty_cycle_command(
 
     c = guard(load_duty_case, case)
     result = guard(solve_case, c, str(case))
+    from flywheel.render.nomenclature import message, prefix
+
     for w in result.warnings:
-        sys.stderr.write(f"warning: {w}\n")
+        sys.stderr.write(f"{prefix('warning', lang)}: {message(w, lang)}\n")
     if as_json:
         from flywheel.render.duty_cycle import to_json
 

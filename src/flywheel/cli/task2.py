@@ -210,7 +210,9 @@ def task2_command(
         if plot is not None:
             typer.echo(text("plot_written", lang, path=plot))
         if out is not None:
-            typer.echo(f"{'записано' if lang == 'ru' else 'written'}: {out}/ "
+            from flywheel.render.nomenclature import prefix
+
+            typer.echo(f"{prefix('written', lang)}: {out}/ "
                        f"({', '.join(written)})")
 
 
@@ -228,6 +230,8 @@ def _write_out(out: Path, result, formats, title, source, doc_title, doc_source,
         out, "task2", to_json(result, doc_title, doc_source) + "\n",
         lambda path: draw(result, path, title, lang), FIGURE,
         lambda fig: build_task2_document(result, title, source, lang, fig), formats)
+    from flywheel.render.nomenclature import message, prefix
+
     for n in notes:
-        sys.stderr.write(f"note: {n}\n")
+        sys.stderr.write(f"{prefix('note', lang)}: {message(n, lang)}\n")
     return names
