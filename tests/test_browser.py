@@ -100,3 +100,15 @@ def test_report_html_in_headless_chromium(tmp_path):
     data = shot.read_bytes()
     assert data[:8] == b"\x89PNG\r\n\x1a\n" and len(data) > 20_000
     print(f"screenshot: {shot}")
+
+    printed = tmp_path / "printed.pdf"   # the browser's "Print to PDF": A4, nothing past the edge
+    run = _chromium(browser, tmp_path, "--no-pdf-header-footer", f"--print-to-pdf={printed}",
+                    page.as_uri())
+    assert run.returncode == 0 and printed.read_bytes()[:4] == b"%PDF", run.stderr[-2000:]
+    if shutil.which("pdftotext") is not None:
+        from test_report_formats import _pages
+
+        pages = _pages(printed)
+        assert {(round(min(w, h)), round(max(w, h))) for w, h, _, _ in pages} == {(595, 842)}
+        for w, h, right, _ in pages:
+            assert right <= w - 10 / 25.4 * 72, (w, right)     # inside the page's 15 mm margin
