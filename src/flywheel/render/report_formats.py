@@ -202,6 +202,7 @@ def docx(doc: Document, plots_dir: Path | None = None) -> bytes:
     import docx as pydocx
     from docx.enum.text import WD_ALIGN_PARAGRAPH
     from docx.oxml import parse_xml
+    from docx.table import _Cell
     from docx.shared import Mm, Pt
 
     tab, fig = CAPTION[doc.lang]
@@ -237,9 +238,11 @@ def docx(doc: Document, plots_dir: Path | None = None) -> bytes:
             d.add_paragraph(f"{tab} {b.number} — {b.caption}")
             t = d.add_table(rows=1 + len(b.rows), cols=len(b.header))
             t.style = "Table Grid"
-            for r, cells in enumerate((b.header, *b.rows)):
-                for c, text in enumerate(cells):
-                    cell = t.cell(r, c)
+            # the cells straight from the rows' XML: Table.cell(r, c) rebuilds the whole grid
+            # on every call (quadratic; seconds for the report's tables)
+            for r, (tr, cells) in enumerate(zip(t._tbl.tr_lst, (b.header, *b.rows))):
+                for tc, text in zip(tr.tc_lst, cells):
+                    cell = _Cell(tc, t)
                     cell.text = text
                     for p in cell.paragraphs:
                         for run in p.runs:
