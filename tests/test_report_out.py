@@ -145,7 +145,8 @@ def test_one_command_does_not_replace_anothers_folder(tmp_path):
 
 
 @pytest.mark.parametrize("cmd", [["task2", "--case", str(CASES / "task2_seed_triangle.toml")],
-                                 ["aggregate", str(CASES / "aggregate.toml")]])
+                                 ["aggregate", str(CASES / "aggregate.toml")],
+                                 ["duty-cycle", str(CASES / "duty_khurmi_16_19_punch.toml")]])
 def test_bad_report_is_one_line(tmp_path, cmd):
     res = runner.invoke(app, [*cmd, "--out", str(tmp_path / "o"), "--report", "odt"])
     assert res.exit_code == 2 and res.output.count("\n") == 1, res.output
@@ -153,3 +154,30 @@ def test_bad_report_is_one_line(tmp_path, cmd):
     res = runner.invoke(app, [*cmd, "--report", "md"])
     assert res.exit_code == 2 and "--out" in res.output and res.output.count("\n") == 1
     assert not (tmp_path / "o").exists()
+
+
+def test_duty_cycle_out(tmp_path):
+    """`flywheel duty-cycle CASE --out DIR`: summary.json is the --json document, the записка
+    has the method, the tables of the summary with its numbers and the case's source; no figure."""
+    import docx
+
+    case = CASES / "duty_khurmi_16_19_punch.toml"
+    res = invoke("duty-cycle", case, "--out", tmp_path / "o", "--lang", "ru", *ALL)
+    assert f"записано: {tmp_path / 'o'}/" in res.stdout
+    js = invoke("duty-cycle", case, "--json").output
+    assert (tmp_path / "o" / "summary.json").read_text(encoding="utf-8") == js
+    doc = json.loads(js)
+    page = _Page()
+    page.feed((tmp_path / "o" / "report.html").read_text(encoding="utf-8"))
+    body = "".join(page.text)
+    assert "Метод решения" in body and "Маховик" in body and doc["source"] in body
+    # Khurmi & Gupta Ex. 16.19, printed: P = 3 kW, m = 618 kg (exact 617.940 kg)
+    assert round(doc["mass"]) == 618 and doc["motor_power"] == 3000.0
+    assert f"{doc['mass']:.6g}" in page.cells and f"{doc['motor_power']:.6g}" in page.cells
+    assert "<img" not in (tmp_path / "o" / "report.html").read_text(encoding="utf-8")
+    assert "Таблица 1" in _pdf_text(tmp_path / "o" / "report.pdf")
+    d = docx.Document(str(tmp_path / "o" / "report.docx"))
+    assert len(d.tables) == (tmp_path / "o" / "report.md").read_text(encoding="utf-8").count("\nТаблица ")
+    invoke("duty-cycle", case, "--out", tmp_path / "p", "--lang", "ru", *ALL)
+    for f in ("summary.json", "report.md", "report.html", "report.pdf", "report.docx"):
+        assert (tmp_path / "o" / f).read_bytes() == (tmp_path / "p" / f).read_bytes(), f
