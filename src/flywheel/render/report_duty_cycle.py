@@ -67,7 +67,7 @@ def build_duty_cycle_document(r, title: str, source: str, lang: str = "en") -> D
     add(Formula(rf"\Delta E = \frac{{J (\omega_{{max}}^{{2}} - \omega_{{min}}^{{2}})}}{{2}} = "
                 rf"J {wm}^{{2}} \delta, \delta = \frac{{\omega_{{max}} - \omega_{{min}}}}{{{wm}}}"))
     add(Formula(r"J = m k^{2}, \Delta E = m v^{2} \delta"))
-    add(Formula(rf"t_{{\text{{{'в' if lang == 'ru' else 'rec'}}}}} = \frac{{\Delta E}}{{P}}"))
+    add(Formula(rf"t_{{\text{{{'вос' if lang == 'ru' else 'rec'}}}}} = \frac{{\Delta E}}{{P}}"))
 
     add(Heading(2, t["results"]))
     for caption, header, rows, note, _ in summary_tables(d, lang):
