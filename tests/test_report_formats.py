@@ -153,3 +153,50 @@ def test_bad_report_format_is_one_line(tmp_path):
     res = runner.invoke(app, ["run", str(CASES / "compressor.toml"), "--out", str(tmp_path / "o"),
                               "--report", "odt"])
     assert res.exit_code == 2 and "--report" in res.output and "allowed: md, html, pdf, docx" in res.output
+
+
+def test_docx_formulas_are_word_equations(ru_run):
+    """Every formula of the model is an OMML equation (m:oMath) whose runs spell the formula:
+    the fraction of Merzalov's J_I is an m:f, ω_ср² an m:sSubSup, Chebyshev's W = 3n − 2p₅ − p₄
+    reads back from the runs."""
+    import docx
+
+    from flywheel.render.mathfmt import OMML_NS
+
+    d = docx.Document(str(ru_run / "report.docx"))
+    body = d.element.body
+    maths = body.findall(f".//{{{OMML_NS}}}oMath")
+    md = (ru_run / "report.md").read_text(encoding="utf-8")
+    assert len(maths) == md.count("\n$$ ") + md.startswith("$$ ") >= 8
+    texts = ["".join(t.text for t in m.iter(f"{{{OMML_NS}}}t")) for m in maths]
+    assert any(t.startswith("W=3n−2p5−p4=3·") for t in (x.replace(" ", "") for x in texts)), texts
+    assert body.findall(f".//{{{OMML_NS}}}f") and body.findall(f".//{{{OMML_NS}}}sSubSup")
+    assert not any(p.text.startswith("W = 3n") for p in d.paragraphs)   # no plain-text copy
+
+
+def _pages(pdf: Path) -> list[tuple[float, float, float, str]]:
+    """(width, height, the largest right edge of a word, the text) of each page [pt]."""
+    xml = subprocess.run(["pdftotext", "-bbox", str(pdf), "-"], capture_output=True, text=True,
+                         check=True).stdout
+    out = []
+    for w, h, body in re.findall(r'<page width="([\d.]+)" height="([\d.]+)">(.*?)</page>', xml, re.S):
+        right = max([float(x) for x in re.findall(r'xMax="([\d.]+)"', body)] or [0.0])
+        out.append((float(w), float(h), right, " ".join(re.findall(r">([^<]+)</word>", body))))
+    return out
+
+
+def test_wide_tables_fit_a4(tmp_path):
+    """The reduction table of the inline four (17 columns) goes on a landscape page of its own
+    in a smaller font; no word of any page runs past the right margin (18 mm, typst)."""
+    run(tmp_path / "o", "--no-plots", "--report", "pdf", "--report", "html", case="engine_inline4.toml")
+    html = (tmp_path / "o" / "report.html").read_text(encoding="utf-8")
+    assert '<div class="tab wide landscape">' in html and "@page landscape" in html
+    assert "size: A4 landscape" in html and ".landscape { page: landscape; }" in html
+    if shutil.which("pdftotext") is None:
+        pytest.skip("pdftotext is not installed: the PDF's pages are not measured")
+    pages = _pages(tmp_path / "o" / "report.pdf")
+    for w, h, right, _ in pages:
+        assert right <= w - 18 / 25.4 * 72 + 1, (w, right)
+    wide = [p for p in pages if "Table 10 —" in p[3]]
+    assert wide and wide[0][0] > wide[0][1]          # landscape
+    assert all(w < h for w, h, _, t in pages if "Table 1 —" in t)   # the rest stays portrait

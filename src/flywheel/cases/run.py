@@ -14,7 +14,7 @@ from typing import Annotated, Literal, Union
 
 from pydantic import BaseModel, Field, PrivateAttr, Strict, model_validator
 
-from flywheel.errors import CaseFileError
+from flywheel.errors import CaseFileError, Notice
 from flywheel.io.schema import FieldError, StrictModel, within, clean_loc, describe, load, loc_str, pick, validate
 from flywheel.cases.rim import MATERIALS, RimSpec  # shared with the task2 format
 from flywheel.cases.tabulated import TabulatedSpec
@@ -834,25 +834,30 @@ def plausibility_warnings(case: Case) -> list[str]:
     indicator table. Values that cannot be right are refused by the schema instead."""
     out = []
     if case.crank is not None and case.crank_length < 5e-3:
-        out.append(f"crank.length: {case.crank_length:g} m is unusually short (cranks: 5 mm … "
-                   "2 m); lengths are in metres")
+        out.append(Notice(f"crank.length: {case.crank_length:g} m is unusually short (cranks: "
+                          "5 mm … 2 m); lengths are in metres", "crank_short",
+                          length=case.crank_length))
     d = case.machine.delta
     if d is not None and not DELTA_USUAL[0] <= d <= DELTA_USUAL[1]:
-        out.append(f"machine.delta: δ = {d:g} is outside the usual 1/300 … 1/5 "
-                   f"({DELTA_USUAL[0]:.4f} … {DELTA_USUAL[1]:.1f}; Артоболевский's table: "
-                   "presses 1/5 … 1/20, engines 1/80 … 1/150, generators 1/200 … 1/300)")
+        out.append(Notice(f"machine.delta: δ = {d:g} is outside the usual 1/300 … 1/5 "
+                          f"({DELTA_USUAL[0]:.4f} … {DELTA_USUAL[1]:.1f}; Артоболевский's table: "
+                          "presses 1/5 … 1/20, engines 1/80 … 1/150, generators 1/200 … 1/300)",
+                          "delta_unusual", delta=d, lo=DELTA_USUAL[0], hi=DELTA_USUAL[1]))
     rpm = case.machine.omega_mean * 30 / math.pi
     if not 1.0 <= rpm <= 20_000.0:
-        out.append(f"machine: the crank speed {rpm:.6g} rpm is outside the usual 1 … 20 000 rpm")
+        out.append(Notice(f"machine: the crank speed {rpm:.6g} rpm is outside the usual 1 … "
+                          "20 000 rpm", "rpm_unusual", rpm=rpm))
     for i, c in enumerate(case.cylinders):
         for key, values in c.tables().items():
             low = min(values)
             if low < 0 and key not in ("intake", "compression"):   # an engine draws its
                 # charge below atmospheric pressure, and compresses it from there
                 where = ".".join(c.table_loc(key))
-                out.append(f"cylinders[{i}].{where}: p/p_max down to {low:g} "
-                           f"({low * c.p_max / 1e6:.4g} MPa gauge, a vacuum): the tables are "
-                           "gauge pressures relative to p_max; check the sign")
+                out.append(Notice(f"cylinders[{i}].{where}: p/p_max down to {low:g} "
+                                  f"({low * c.p_max / 1e6:.4g} MPa gauge, a vacuum): the tables "
+                                  "are gauge pressures relative to p_max; check the sign",
+                                  "cylinder_vacuum", where=f"cylinders[{i}].{where}", low=low,
+                                  p=low * c.p_max / 1e6))
     return out
 
 

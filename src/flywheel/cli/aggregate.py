@@ -31,6 +31,13 @@ def aggregate_command(
                                "vibrations per minute with its nodes (positions along the "
                                "shafts), and each shaft's equivalent length (the JSON always "
                                "has them)."),
+    out: Optional[Path] = typer.Option(None, "--out", "-o", help="Also write an output folder: "
+                                       "summary.json (as --json), plots/aggregate.png (with a "
+                                       "[motor]) and the report (see --report); a rerun replaces "
+                                       "only its own files."),
+    report: Optional[list[str]] = typer.Option(None, "--report", help="Report format with --out: "
+                                               "md, html, pdf, docx; repeatable (default: md and "
+                                               "html)."),
 ) -> None:
     """Two-mass machine aggregate (Ефанов ch. 9) or a chain of rotors: coefficients a_ij, c_ij,
     natural frequencies, steady forced vibration, start-up."""
@@ -48,6 +55,11 @@ def aggregate_command(
             raise InputError(f"--t-end: {t_end:g} s is out of range (allowed: 0 … {MAX_T_END:g} s; "
                              "a start-up is over in seconds to a minute, and the integration "
                              "time grows with it)")
+        from flywheel.render.report_folder import check_formats
+
+        formats = check_formats(report)
+        if report and out is None:
+            raise InputError("--report writes into the output folder: give --out DIR as well")
         from flywheel.cases.aggregate import load_aggregate_case, to_model
         from flywheel.elastic.model import analyze
 
@@ -68,6 +80,8 @@ def aggregate_command(
                 draw(result, plot, c.title, lang)
             except (OSError, ValueError) as exc:
                 raise InputError(f"--plot {plot}: cannot write the image ({exc})") from None
+        if out is not None:
+            written = _write_out(out, result, formats, c.title, c.source, lang)
     if json:
         from flywheel.render.aggregate import to_json
 
@@ -78,3 +92,30 @@ def aggregate_command(
         print_summary(result, c.title, c.source, lang=lang, modes=modes)
         if plot is not None:
             typer.echo(text("plot_written", lang, path=plot))
+        if out is not None:
+            from flywheel.render.nomenclature import prefix
+
+            typer.echo(f"{prefix('written', lang)}: {out}/ "
+                       f"({', '.join(written)})")
+
+
+def _write_out(out: Path, result, formats, title: str, source: str, lang: str) -> list[str]:
+    """The --out folder (render/report_folder.py): summary.json, plots/aggregate.png (with a
+    motor), the report. Notes of a rerun go to stderr; returns the names written."""
+    import sys
+
+    from flywheel.render.aggregate import plot as draw
+    from flywheel.render.aggregate import to_json
+    from flywheel.render.report_aggregate import FIGURE, build_aggregate_document
+    from flywheel.render.report_folder import write_report_folder
+
+    names, notes = write_report_folder(
+        out, "aggregate", to_json(result, title, source) + "\n",
+        lambda path: draw(result, path, title, lang),
+        FIGURE if result.startup is not None else None,
+        lambda fig: build_aggregate_document(result, title, source, lang, fig), formats)
+    from flywheel.render.nomenclature import message, prefix
+
+    for n in notes:
+        sys.stderr.write(f"{prefix('note', lang)}: {message(n, lang)}\n")
+    return names

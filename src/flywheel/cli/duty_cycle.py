@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import sys
 from pathlib import Path
+from typing import Optional
 
 import typer
 
@@ -15,6 +16,12 @@ def duty_cycle_command(
     case: Path = typer.Argument(..., help="Duty-cycle case file (TOML), see docs/duty-cycle.md."),
     as_json: bool = typer.Option(False, "--json", help="Print the results as JSON."),
     lang: str = typer.Option("en", "--lang", help="Language of the summary: en | ru."),
+    out: Optional[Path] = typer.Option(None, "--out", "-o", help="Also write an output folder: "
+                                       "summary.json (as --json) and the report (see --report); "
+                                       "a rerun replaces only its own files."),
+    report: Optional[list[str]] = typer.Option(None, "--report", help="Report format with --out: "
+                                               "md, html, pdf, docx; repeatable (default: md and "
+                                               "html)."),
 ) -> None:
     """Duty-cycle machines (punching, riveting, shearing presses): the motor's power and torque,
     the energy the flywheel gives, its J and mass, the speed at the end of the operation, the
@@ -23,12 +30,31 @@ def duty_cycle_command(
 
     if lang not in ("en", "ru"):
         fail(f"--lang: {lang!r} is not a language (allowed: en, ru)")
+    from flywheel.render.report_folder import check_formats
+
+    formats = guard(check_formats, report)
+    if report and out is None:
+        fail("--report writes into the output folder: give --out DIR as well")
     from flywheel.cases.duty_cycle import load_duty_case, solve_case
 
     c = guard(load_duty_case, case)
     result = guard(solve_case, c, str(case))
+    from flywheel.render.nomenclature import message, prefix
+
+    written = None
+    if out is not None:
+        from flywheel.render.duty_cycle import to_json
+        from flywheel.render.report_duty_cycle import build_duty_cycle_document
+        from flywheel.render.report_folder import write_report_folder
+
+        written, notes = guard(write_report_folder, out, "duty-cycle",
+                               to_json(result, c.title, c.source) + "\n", None, None,
+                               lambda fig: build_duty_cycle_document(result, c.title, c.source,
+                                                                     lang), formats)
+        for n in notes:
+            sys.stderr.write(f"{prefix('note', lang)}: {message(n, lang)}\n")
     for w in result.warnings:
-        sys.stderr.write(f"warning: {w}\n")
+        sys.stderr.write(f"{prefix('warning', lang)}: {message(w, lang)}\n")
     if as_json:
         from flywheel.render.duty_cycle import to_json
 
@@ -37,3 +63,5 @@ def duty_cycle_command(
         from flywheel.render.duty_cycle import print_summary
 
         print_summary(result, c.title, c.source, lang=lang)
+        if written is not None:
+            typer.echo(f"{prefix('written', lang)}: {out}/ ({', '.join(written)})")

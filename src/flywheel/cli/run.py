@@ -121,17 +121,19 @@ def run_command(
 
     notes: list[str] = []
     _guard(write_folder, out, build, "summary.json", notes=notes)
+    from flywheel.render.nomenclature import message, prefix
+
     for n in notes:
-        sys.stderr.write(f"note: {n}\n")
+        sys.stderr.write(f"{prefix('note', lang)}: {message(n, lang)}\n")
     for w in results.warnings:              # on stderr too: `2>/dev/null` and pipes behave
-        sys.stderr.write(f"warning: {w}\n")
+        sys.stderr.write(f"{prefix('warning', lang)}: {message(w, lang)}\n")
     if as_json:
         sys.stdout.write(text_json)
     else:
         from flywheel.render.summary import print_summary
 
         print_summary(results, lang=lang)
-        typer.echo(f"{'записано' if lang == 'ru' else 'written'}: {out}/ (summary.json, table.csv, "
+        typer.echo(f"{prefix('written', lang)}: {out}/ (summary.json, table.csv, "
                    "positions.csv, forces.csv, forces_positions.csv, "
                    + ", ".join(f"report.{f}" for f in dict.fromkeys(formats))
                    + ("" if no_plots else ", plots/*.png")

@@ -84,6 +84,13 @@ def task2_command(
     as_json: bool = typer.Option(False, "--json", help="Print the results as JSON (the same "
                                  "document in every language)."),
     lang: str = typer.Option("en", "--lang", help="Language of the summary and the plot: en | ru."),
+    out: Optional[Path] = typer.Option(None, "--out", "-o", help="Also write an output folder: "
+                                       "summary.json (as --json), plots/task2.png and the "
+                                       "report (see --report); a rerun replaces only its own "
+                                       "files."),
+    report: Optional[List[str]] = typer.Option(None, "--report", help="Report format with --out: "
+                                               "md, html, pdf, docx; repeatable (default: md and "
+                                               "html)."),
 ) -> None:
     """Task 2: ω_max, ω_min, ω_ср and δ of a machine with constant J under given M_D(φ), M_C(φ)."""
     import math
@@ -102,6 +109,11 @@ def task2_command(
             raise InputError(f"--lang: {lang!r} is not a language (allowed: {', '.join(LANGS)})")
         if plot is not None and plot.is_dir():
             raise InputError(f"--plot {plot}: is a folder, expected an image file")
+        from flywheel.render.report_folder import check_formats
+
+        formats = check_formats(report)
+        if report and out is None:
+            raise InputError("--report writes into the output folder: give --out DIR as well")
         if case is not None:
             used = (["--profile"] if profile is not None else []) + [n for n, _ in given]
             if used:
@@ -185,6 +197,8 @@ def task2_command(
                 draw(result, plot, title, lang)
             except (OSError, ValueError) as exc:
                 raise InputError(f"--plot {plot}: cannot write the image ({exc})") from None
+        if out is not None:
+            written = _write_out(out, result, formats, title, source, doc_title, doc_source, lang)
     if as_json:
         from flywheel.render.task2 import to_json
 
@@ -195,3 +209,29 @@ def task2_command(
         print_summary(result, title, source, lang=lang, motion=epsilon or bool(at))
         if plot is not None:
             typer.echo(text("plot_written", lang, path=plot))
+        if out is not None:
+            from flywheel.render.nomenclature import prefix
+
+            typer.echo(f"{prefix('written', lang)}: {out}/ "
+                       f"({', '.join(written)})")
+
+
+def _write_out(out: Path, result, formats, title, source, doc_title, doc_source, lang):
+    """The --out folder (render/report_folder.py): summary.json, plots/task2.png, the report.
+    Notes of a rerun go to stderr; returns the names written."""
+    import sys
+
+    from flywheel.render.report_folder import write_report_folder
+    from flywheel.render.report_task2 import FIGURE, build_task2_document
+    from flywheel.render.task2 import plot as draw
+    from flywheel.render.task2 import to_json
+
+    names, notes = write_report_folder(
+        out, "task2", to_json(result, doc_title, doc_source) + "\n",
+        lambda path: draw(result, path, title, lang), FIGURE,
+        lambda fig: build_task2_document(result, title, source, lang, fig), formats)
+    from flywheel.render.nomenclature import message, prefix
+
+    for n in notes:
+        sys.stderr.write(f"{prefix('note', lang)}: {message(n, lang)}\n")
+    return names

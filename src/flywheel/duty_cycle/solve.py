@@ -43,7 +43,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from flywheel.errors import InputError
+from flywheel.errors import InputError, Notice
 
 TWO_PI = 2.0 * math.pi
 RPM = 30.0 / math.pi           # rad/s → rev/min
@@ -440,15 +440,17 @@ def _result(d: DutyCycle, tl: _Timeline, J: float) -> DutyCycleResult:
         if not lin and tl.T > 0:
             checks.append(("recovery_time_two_ways", J * (w1 - w2) / tl.T - tl.t_rec))
         if dE == 0.0:
-            warnings.append("the motor alone gives the operation its energy (P·t_op ≥ E): the "
-                            "flywheel gives nothing, ΔE = 0")
+            warnings.append(Notice("the motor alone gives the operation its energy (P·t_op ≥ E): "
+                                   "the flywheel gives nothing, ΔE = 0", "duty_motor_alone"))
         if tl.t_idle > tl.Tc * 1e-9:
-            warnings.append(f"the motor is stronger than the operations need: it works "
-                            f"{tl.t_op + tl.t_rec:.6g} s of each {tl.Tc:.6g} s cycle and idles "
-                            f"{tl.t_idle:.6g} s at ω_max (its torque taken to fall to zero "
-                            f"there)")
+            warnings.append(Notice(f"the motor is stronger than the operations need: it works "
+                                   f"{tl.t_op + tl.t_rec:.6g} s of each {tl.Tc:.6g} s cycle and "
+                                   f"idles {tl.t_idle:.6g} s at ω_max (its torque taken to fall to "
+                                   f"zero there)", "duty_motor_idles", t_work=tl.t_op + tl.t_rec,
+                                   t_cycle=tl.Tc, t_idle=tl.t_idle))
     if not 0 < delta <= 0.3 and dE > 0:
-        warnings.append(f"δ = {delta:.4g}: the speed swings by more than 30 % of the mean")
+        warnings.append(Notice(f"δ = {delta:.4g}: the speed swings by more than 30 % of the mean",
+                               "duty_delta_large", delta=delta))
     return DutyCycleResult(
         work=d.work, energy=E, delta_E=dE,
         energy_fluctuation_coefficient=None if not E else dE / E,

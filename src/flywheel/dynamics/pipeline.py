@@ -23,7 +23,7 @@ from flywheel.dynamics.grid import (DEFAULT_POINTS, grid_options, linkage_grid, 
                                     slider_frame, standard_positions)
 from flywheel.dynamics.results import (CylinderResult, EnergyResult, LoadsResult, MotionResult,
                                        ReductionResult, Results, warnings_of)
-from flywheel.errors import InputError
+from flywheel.errors import InputError, Notice
 
 
 def analyze(case, n_points: int = DEFAULT_POINTS, at_deg: list[float] | None = None,
@@ -125,9 +125,12 @@ def linkage_loads(case, mech, dcs: dict, kin) -> LoadsResult:
         M = L.gas_moment(F, x_dot, head.x, far.x)
         if np.min(p) < 0:
             i = int(np.argmin(p))
-            warnings.append(f"cylinder {cy.name}: the {cy.interpolation} interpolation of its "
-                            f"indicator table gives negative pressure, down to {p[i] / 1e6:.4g} MPa "
-                            f"at φ = {math.degrees(phi[i]):.1f}° (use 'pchip' to avoid overshoot)")
+            p_mpa, at = float(p[i]) / 1e6, math.degrees(phi[i])
+            warnings.append(Notice(f"cylinder {cy.name}: the {cy.interpolation} interpolation of its "
+                                   f"indicator table gives negative pressure, down to {p_mpa:.4g} "
+                                   f"MPa at φ = {at:.1f}° (use 'pchip' to avoid overshoot)",
+                                   "cylinder_negative_p", cylinder=cy.name,
+                                   kind=cy.interpolation, p=p_mpa, phi_deg=at))
         M_parts[f"gas {cy.name}"] = M
         towards = x_dot * (head.x - far.x) > 0
         cylinders.append(CylinderResult(cy.name, cy.piston, s, towards, p, F, M, s_tab, up, down,

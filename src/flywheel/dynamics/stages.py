@@ -18,7 +18,7 @@ from flywheel.dynamics import energy, motion, reduction, sizing
 from flywheel.dynamics.results import (EnergyResult, FlywheelShape, ForceResult, LoadsResult,
                                        MotionResult, ReductionResult, SizingResult,
                                        TimeDomainResult)
-from flywheel.errors import InputError
+from flywheel.errors import InputError, Notice
 
 
 POWER_RTOL = 0.01
@@ -62,8 +62,8 @@ def work_and_energy(phi: np.ndarray, loads: LoadsResult, red: ReductionResult,
     if abs(work_known) <= 1e-9 * float(energy.cumulative_work(np.abs(M_known), phi)[-1]):
         # only conservative loads (gravity, say): nothing to balance, round-off aside
         M_const, work_known = 0.0, 0.0
-        warnings.append("the loads do no net work over a cycle: the balancing moment is 0 "
-                        "(the flywheel only smooths the loads' periodic part)")
+        warnings.append(Notice("the loads do no net work over a cycle: the balancing moment is 0 "
+                               "(the flywheel only smooths the loads' periodic part)", "no_net_work"))
     elif machine.balance == "driving" and not M_const > 0:
         raise InputError(
             f"the loads do {work_known:+.6g} J of work over a cycle: a constant driving moment "
@@ -92,11 +92,14 @@ def work_and_energy(phi: np.ndarray, loads: LoadsResult, red: ReductionResult,
         power_from_loads = mean_moment * omega_m
         if abs(power_from_loads - power) > POWER_RTOL * power:
             which = "driving" if machine.balance == "driving" else "resistance"
-            warnings.append(
+            warnings.append(Notice(
                 f"machine.power: P = {power:.6g} W at ω_m = {omega_m:.6g} rad/s means a mean "
                 f"{which} moment P/ω_m = {power_moment:.6g} N·m, but the case's loads balance "
                 f"with {mean_moment:.6g} N·m ({power_from_loads:.6g} W, "
-                f"{(power_from_loads / power - 1) * 100:+.3g} %): check the loads or the power")
+                f"{(power_from_loads / power - 1) * 100:+.3g} %): check the loads or the power",
+                "power_mismatch", power=power, omega=omega_m, driving=which == "driving",
+                M_power=power_moment, M_loads=mean_moment, P_loads=power_from_loads,
+                pct=(power_from_loads / power - 1) * 100))
     T_II, dT_I = energy.first_group_energy_change(A, red.J_II, omega_m)
     phi_max, dT_max = energy.extreme(dT_I, phi, "max")
     phi_min, dT_min = energy.extreme(dT_I, phi, "min")
@@ -131,8 +134,9 @@ def size_flywheel(phi: np.ndarray, en: EnergyResult, red: ReductionResult, machi
         J_req = J_first + J_given * fw.speed_ratio ** 2
     J_fly = J_req - J_first if J_given is None else J_given * fw.speed_ratio ** 2
     if J_given is None and J_fly <= 0:
-        warnings.append(f"the first group already has {J_first:.6g} kg·m² ≥ J_required = {J_req:.6g} "
-                        f"kg·m²: no flywheel is needed")
+        warnings.append(Notice(f"the first group already has {J_first:.6g} kg·m² ≥ J_required = "
+                               f"{J_req:.6g} kg·m²: no flywheel is needed", "no_flywheel_needed",
+                               J_first=J_first, J_required=J_req))
     J_exact, T0_exact = sizing.J_required_exact(en.A, red.J_II, omega_m, delta)
     k_plus, k_minus = sizing.tangent_slopes(omega_m, delta)
     i_max, i_min = sizing.tangency_points(en.A, red.J_II, omega_m, delta)
@@ -208,11 +212,14 @@ def with_rim_speeds(sz: SizingResult, mo: MotionResult, fw) -> SizingResult:
         if v > sz.rim_speed_limit:
             material = fw.material if fw.density is None and fw.allowable_stress is None \
                 else "the given material"
-            warnings.append(f"flywheel as a {shape}: rim speed {v:.1f} m/s exceeds "
-                            f"the safe {sz.rim_speed_limit:.1f} m/s = √(σ/ρ) of a thin rotating ring (hoop "
-                            f"stress σ = ρ·v², Timoshenko, Strength of Materials, part II) for "
-                            f"{material}: σ = {fw.sigma / 1e6:g} MPa, ρ = {fw.rho:g} kg/m³ (set "
-                            f"flywheel.allowable_stress, or a wider flywheel: width_ratio)")
+            warnings.append(Notice(
+                f"flywheel as a {shape}: rim speed {v:.1f} m/s exceeds "
+                f"the safe {sz.rim_speed_limit:.1f} m/s = √(σ/ρ) of a thin rotating ring (hoop "
+                f"stress σ = ρ·v², Timoshenko, Strength of Materials, part II) for "
+                f"{material}: σ = {fw.sigma / 1e6:g} MPa, ρ = {fw.rho:g} kg/m³ (set "
+                f"flywheel.allowable_stress, or a wider flywheel: width_ratio)", "rim_speed",
+                shape=shape, v=v, limit=sz.rim_speed_limit, material=material,
+                sigma=fw.sigma / 1e6, rho=fw.rho))
     designed = sz.rim_design
     if designed is not None:          # its hoop stress at ω_max, ρ·(ω_max·i·D_mean/2)²
         v_top = mo.omega_max * sz.speed_ratio * designed.D_mean / 2
@@ -314,8 +321,8 @@ def force_analysis(phi: np.ndarray, red: ReductionResult, en: EnergyResult, mo: 
     fa_true = fa if motion == "true" else fo.kinetostatics(mech, kin, true_w, true_e, loads)
     warnings = []
     if not any(getattr(m, "mass", 0) or getattr(m, "J_S", 0) for m in loads.masses.values()):
-        warnings.append("force analysis: no link has mass or J_S, so the reactions are those of "
-                        "the given forces alone (no inertia forces)")
+        warnings.append(Notice("force analysis: no link has mass or J_S, so the reactions are those "
+                               "of the given forces alone (no inertia forces)", "forces_massless"))
     P, Ft, Fr = crank_pin_load(mech, kin, fa)
     c, ref = closure(fa_true.balancing_moment)
     return ForceResult(

@@ -36,6 +36,7 @@ from flywheel.dynamics.grid import DEFAULT_POINTS, closed_grid, grid_options, re
 from flywheel.dynamics.periodic import periodic_linear
 from flywheel.dynamics.results import (EnergyResult, LoadsResult, MotionResult, ReductionResult,
                                        Results, TabulatedResult, warnings_of)
+from flywheel.errors import Notice
 
 # -- per-position values: the table's own arithmetic (seed 004, eq. 7 and Мст), used by the
 #    analysis below and by the case's validation (overflow, flywheel.cases.tabulated) ---------
@@ -206,9 +207,11 @@ def tabulated_reduction(spec, phi: np.ndarray) -> ReductionResult:
                                               period=_period(spec))
         if J_parts[name].min() < -0.01 * Jd.max():
             i = int(np.argmin(J_parts[name]))
-            warnings.append(f"tabulated: the {kind} interpolation of link {name}'s share of J_II "
-                            f"dips below zero ({J_parts[name][i]:.3g} kg·m² at φ = "
-                            f"{math.degrees(phi[i]):.1f}°): give more positions near there")
+            J_low, at = float(J_parts[name][i]), math.degrees(phi[i])
+            warnings.append(Notice(f"tabulated: the {kind} interpolation of link {name}'s share of "
+                                   f"J_II dips below zero ({J_low:.3g} kg·m² at φ = {at:.1f}°): "
+                                   "give more positions near there", "tabulated_negative_J",
+                                   kind=kind, link=name, J=J_low, phi_deg=at))
     return stages.reduced_inertia(phi, J_parts, dJ_parts, warnings)
 
 

@@ -25,6 +25,7 @@ import numpy as np
 
 from flywheel.dynamics.energy import cumulative_work, trapezoid_areas
 from flywheel.dynamics.periodic import PeriodicTables, periodic_linear
+from flywheel.errors import Notice
 
 #: the largest start-up allowed, in cycles as estimated by :func:`startup_cycles` (the
 #: integration's own cap, ``startup(max_cycles=…)``, is twice that)
@@ -288,8 +289,9 @@ def startup(phi_grid: np.ndarray, J: np.ndarray, dJ: np.ndarray, M_loads: np.nda
             return {"stalled": True, "converged": False,
                     "stall_angle_deg": float(np.degrees(phi[-1])), "time": float(t0 + t[-1]),
                     "omega_final_predicted": w_pred, "time_constant": tau,
-                    "warning": f"start-up: the motor cannot start the machine, it stops at "
-                               f"φ = {np.degrees(phi[-1]):.1f}°"}
+                    "warning": Notice(f"start-up: the motor cannot start the machine, it stops "
+                                      f"at φ = {np.degrees(phi[-1]):.1f}°", "startup_stall",
+                                      phi_deg=float(np.degrees(phi[-1])))}
         dt = float(t[-1])
         means.append(float(sol.y[2][-1]) / period)
         mids.append(t0 + dt / 2)
@@ -311,9 +313,12 @@ def startup(phi_grid: np.ndarray, J: np.ndarray, dJ: np.ndarray, M_loads: np.nda
         target = (f"{w_pred:.5g} rad/s" if w_pred is not None
                   else "none: the motor line cannot carry the mean load")
         out.update(time_to_steady=None, cycles_to_steady=None, omega_mean_steady=None,
-                   warning=f"start-up: no steady state after {len(means)} cycles ({t0:.4g} s); the "
-                           f"last cycle-mean speed is {out['omega_mean_last']:.5g} rad/s, the steady "
-                           f"speed predicted by the motor line {target}")
+                   warning=Notice(f"start-up: no steady state after {len(means)} cycles ({t0:.4g} "
+                                  f"s); the last cycle-mean speed is {out['omega_mean_last']:.5g} "
+                                  f"rad/s, the steady speed predicted by the motor line {target}",
+                                  "startup_not_steady", cycles=len(means), t=float(t0),
+                                  omega=float(out["omega_mean_last"]),
+                                  omega_pred=None if w_pred is None else float(w_pred)))
         return out
     lo, hi = w_pred * (1 - band), w_pred * (1 + band)
     i = len(means)

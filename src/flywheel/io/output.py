@@ -26,7 +26,7 @@ import tempfile
 from dataclasses import dataclass
 from pathlib import Path
 
-from flywheel.errors import InputError
+from flywheel.errors import InputError, Notice
 
 MANIFEST = ".flywheel-manifest.json"
 _PID = ".flywheel-writer-pid"          # inside a temporary folder while it is being built
@@ -251,11 +251,13 @@ def _merge(tmp: Path, target: Path, earlier: _Earlier, new: dict[str, str], mani
                 d = d.parent
     write_file(target / MANIFEST, manifest)
     if edited:
-        notes.append(f"{target}: kept the files you edited since the earlier run: "
-                     f"{', '.join(edited)}")
+        notes.append(Notice(f"{target}: kept the files you edited since the earlier run: "
+                            f"{', '.join(edited)}", "out_kept", target=str(target),
+                            files=", ".join(edited)))
     if removed:
-        notes.append(f"{target}: removed {len(removed)} file(s) of the earlier run that this "
-                     f"run does not write: {_summarise(removed)}")
+        notes.append(Notice(f"{target}: removed {len(removed)} file(s) of the earlier run that "
+                            f"this run does not write: {_summarise(removed)}", "out_removed",
+                            target=str(target), n=len(removed), files=_summarise(removed)))
 
 
 def _summarise(names: list[str], n: int = 4) -> str:

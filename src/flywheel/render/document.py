@@ -516,7 +516,7 @@ def build_document(results, lang: str = "en", plots: list[str] | None = None,
     if td:
         b.add(Heading(2, t["time"]))
         b.add(Paragraph(t["time_note"]))
-        b.add(Bullets(tuple(x[2:] for x in _time_lines(td, s, t))))
+        b.add(Bullets(tuple(x[2:] for x in _time_lines(td, s, t, lang))))
         b.figures_of("time")
 
     if getattr(results, "forces", None) is not None:    # the force analysis (render/forces.py)
@@ -527,7 +527,7 @@ def build_document(results, lang: str = "en", plots: list[str] | None = None,
 
     if results.warnings:
         b.add(Heading(2, t["warn"]))
-        b.add(Bullets(tuple(results.warnings)))
+        b.add(Bullets(tuple(nm.message(w, lang) for w in results.warnings)))
     if b.plots:
         b.add(Heading(2, t["figures"]))
         b.figures_of("figures")
@@ -658,7 +658,7 @@ def _structure(b: _Builder, case, t: dict, lang: str) -> None:
     b.add(Formula(rf"W = 3n - 2p_{{5}} - p_{{4}} = 3 \cdot {n} - 2 \cdot {p5} - {p4} = {3 * n - 2 * p5 - p4}"))
 
 
-def _time_lines(td: dict, s: dict, t: dict) -> list[str]:
+def _time_lines(td: dict, s: dict, t: dict, lang: str = "en") -> list[str]:
     """The bullet lines of the "Motion in time" section (--transients)."""
     v, st, rd = td["verification"], td["startup"], td["rundown"]
     lines = [
@@ -683,7 +683,7 @@ def _time_lines(td: dict, s: dict, t: dict) -> list[str]:
         lines.append("- " + t["st_no"].format(n=st.get("cycles_run"), t=g(st.get("time_run"), 4),
                                               w=g(st.get("omega_mean_last"), 6)))
         if st.get("warning"):
-            lines.append(f"- **{st['warning']}**")
+            lines.append(f"- **{nm.message(st['warning'], lang)}**")
     return lines + [_rundown_line(rd, t)]
 
 

@@ -64,6 +64,56 @@ def _rows(keys_values, lang: str) -> list[tuple[str, str, str, str]]:
             for k, v in keys_values if v is not None]
 
 
+def summary_tables(d: dict, lang: str = "en") -> list[tuple[str, tuple, list, str, tuple]]:
+    """The summary's tables from the result's document ``d``: (title, header, rows, a note
+    after it or "", the columns' justification), empty tables included (the caller skips them).
+    The rich summary and the записка (render/report_duty_cycle.py) print the same."""
+    t = L10N[lang]
+    head = (t["quantity"], t["symbol"], t["value"], t["unit"])
+    just = ("left", "left", "right", "left")
+    w = d["work"] or {}
+    shape = w.get("shape")
+    out = [(t["operation"], head, _rows([
+        ("sheared_area", w.get("sheared_area")), ("energy_per_area", w.get("energy_per_area")),
+        ("force_max", w.get("force_max")), ("plate_thickness", w.get("thickness")),
+        ("energy_per_operation", d["energy"]), ("delta_E", d["delta_E"]),
+        ("energy_fluctuation_coefficient", d["energy_fluctuation_coefficient"]),
+        ("operation_moment", d["operation_moment"])], lang)
+        + ([(nm.name("force_shape", lang), nm.symbol("force_shape", lang),
+             t["shape"][shape], nm.unit_of("force_shape", lang))] if shape else []), "", just)]
+    out.append((t["motor"], head, _rows([
+        ("motor_power", d["motor_power"]),
+        ("motor_efficiency", d["efficiency"] if d["efficiency"] != 1.0 else None),
+        ("motor_input_power", d["motor_input_power"] if d["efficiency"] != 1.0 else None),
+        ("motor_torque", d["motor_torque"]), ("mean_power", d["mean_power"]),
+        ("operations_per_hour", d["operations_per_hour"]),
+        ("operations_per_minute", d["operations_per_minute"]),
+        ("revolutions_per_operation", d["revolutions_per_operation"])], lang), "", just))
+    out.append((t["speeds"], head, _rows([
+        ("rpm_max", d["rpm_max"]), ("rpm_min", d["rpm_min"]), ("rpm_mean", d["rpm_mean"]),
+        ("omega_max", d["omega_max"]), ("omega_min", d["omega_min"]),
+        ("omega_mean", d["omega_mean"]),
+        ("rim_speed_max", d["rim_speed_max"]), ("rim_speed_min", d["rim_speed_min"]),
+        ("rim_speed_mean", d["rim_speed_mean"]), ("speed_fluctuation", d["delta"])], lang), "",
+        just))
+    out.append((t["flywheel"], head, _rows([
+        ("flywheel_J", d["J"]), ("flywheel_radius", d["radius"]), ("flywheel_mass", d["mass"])],
+        lang), t["no_radius"] if d["omega_max"] is None else "", just))
+    if d["cycle_time"] is not None:
+        rows = [(f"{nm.name(k, lang)} ({nm.symbol(k, lang)})", _g(time), _g(angle))
+                for k, time, angle in (
+                    ("operation_time", d["operation_time"], d["operation_angle_deg"]),
+                    ("recovery_time", d["recovery_time"], d["recovery_angle_deg"]),
+                    ("idle_time", d["idle_time"], d["idle_angle_deg"]),
+                    ("cycle_phase", d["cycle_time"], d["cycle_angle_deg"]))]
+        out.append((t["timing"], (t["phase"], *(f"{nm.symbol(k, lang)}, {nm.unit_of(k, lang)}"
+                                                for k in ("phase_time", "phase_angle_deg"))),
+                    rows, f"{nm.name('operation_share', lang)}: "
+                          f"{nm.symbol('operation_share', lang)} = {_g(d['operation_share'])}",
+                    ("left", "right", "right")))
+    return out
+
+
 def print_summary(r, title: str = "", source: str = "", lang: str = "en", console=None) -> None:
     """The operation, motor, speeds, flywheel, timing and checks on a rich console."""
     from rich.console import Console
@@ -75,60 +125,16 @@ def print_summary(r, title: str = "", source: str = "", lang: str = "en", consol
     d = r.to_document()
     if title:
         console.print(f"[bold]{escape(title)}[/bold]" + (f"  ({escape(source)})" if source else ""))
-
-    def table(head: str, rows) -> None:
-        if not rows:
-            return
-        tab = Table(title=escape(head), title_justify="left")
-        for col, just in ((t["quantity"], "left"), (t["symbol"], "left"), (t["value"], "right"),
-                          (t["unit"], "left")):
-            tab.add_column(col, justify=just)
-        for row in rows:
-            tab.add_row(*(escape(x) for x in row))
-        console.print(tab)
-
-    w = d["work"] or {}
-    shape = w.get("shape")
-    table(t["operation"], _rows([
-        ("sheared_area", w.get("sheared_area")), ("energy_per_area", w.get("energy_per_area")),
-        ("force_max", w.get("force_max")), ("plate_thickness", w.get("thickness")),
-        ("energy_per_operation", d["energy"]), ("delta_E", d["delta_E"]),
-        ("energy_fluctuation_coefficient", d["energy_fluctuation_coefficient"]),
-        ("operation_moment", d["operation_moment"])], lang)
-        + ([(nm.name("force_shape", lang), nm.symbol("force_shape", lang),
-             t["shape"][shape], nm.unit_of("force_shape", lang))] if shape else []))
-    table(t["motor"], _rows([
-        ("motor_power", d["motor_power"]),
-        ("motor_efficiency", d["efficiency"] if d["efficiency"] != 1.0 else None),
-        ("motor_input_power", d["motor_input_power"] if d["efficiency"] != 1.0 else None),
-        ("motor_torque", d["motor_torque"]), ("mean_power", d["mean_power"]),
-        ("operations_per_hour", d["operations_per_hour"]),
-        ("operations_per_minute", d["operations_per_minute"]),
-        ("revolutions_per_operation", d["revolutions_per_operation"])], lang))
-    table(t["speeds"], _rows([
-        ("rpm_max", d["rpm_max"]), ("rpm_min", d["rpm_min"]), ("rpm_mean", d["rpm_mean"]),
-        ("omega_max", d["omega_max"]), ("omega_min", d["omega_min"]),
-        ("omega_mean", d["omega_mean"]),
-        ("rim_speed_max", d["rim_speed_max"]), ("rim_speed_min", d["rim_speed_min"]),
-        ("rim_speed_mean", d["rim_speed_mean"]), ("speed_fluctuation", d["delta"])], lang))
-    table(t["flywheel"], _rows([
-        ("flywheel_J", d["J"]), ("flywheel_radius", d["radius"]), ("flywheel_mass", d["mass"])],
-        lang))
-    if d["omega_max"] is None:
-        console.print(escape(t["no_radius"]))
-    if d["cycle_time"] is not None:
-        tab = Table(title=escape(t["timing"]), title_justify="left")
-        tab.add_column(t["phase"])
-        for k in ("phase_time", "phase_angle_deg"):
-            tab.add_column(escape(f"{nm.symbol(k, lang)}, {nm.unit_of(k, lang)}"), justify="right")
-        for k, time, angle in (("operation_time", d["operation_time"], d["operation_angle_deg"]),
-                               ("recovery_time", d["recovery_time"], d["recovery_angle_deg"]),
-                               ("idle_time", d["idle_time"], d["idle_angle_deg"]),
-                               ("cycle_phase", d["cycle_time"], d["cycle_angle_deg"])):
-            tab.add_row(escape(f"{nm.name(k, lang)} ({nm.symbol(k, lang)})"), _g(time), _g(angle))
-        console.print(tab)
-        console.print(escape(f"{nm.name('operation_share', lang)}: "
-                             f"{nm.symbol('operation_share', lang)} = {_g(d['operation_share'])}"))
+    for head, columns, rows, note, just in summary_tables(d, lang):
+        if rows:
+            tab = Table(title=escape(head), title_justify="left")
+            for col, j in zip(columns, just):
+                tab.add_column(escape(col), justify=j)
+            for row in rows:
+                tab.add_row(*(escape(x) for x in row))
+            console.print(tab)
+        if note:
+            console.print(escape(note))
     if d["checks"]:
         tab = Table(title=escape(t["checks"]), title_justify="left")
         tab.add_column(t["quantity"])

@@ -248,3 +248,47 @@ def _pl(n: Node) -> str:
 def plain(src: str) -> str:
     """The formula as one line of Unicode text (Word, the Markdown's alt text)."""
     return _pl(parse(src))
+
+
+# -- OMML (Word's native equations) ---------------------------------------------------------------
+OMML_NS = "http://schemas.openxmlformats.org/officeDocument/2006/math"
+_W_NS = "http://schemas.openxmlformats.org/wordprocessingml/2006/main"
+
+
+def _om_run(text: str, plain: bool) -> str:
+    """One math run; identifiers keep Word's math italic, numbers, operators and words upright."""
+    sty = '<m:rPr><m:sty m:val="p"/></m:rPr>' if plain else ""
+    return f'<m:r>{sty}<m:t xml:space="preserve">{escape(text, quote=False)}</m:t></m:r>'
+
+
+def _om(n: Node) -> str:
+    k = n.kind
+    if k == "i":
+        return _om_run(n.text, plain=len(n.text) > 1 and n.text.isascii())
+    if k in ("n", "o", "t"):
+        return _om_run(n.text, plain=True)
+    if k == "row":
+        return "".join(_om(c) for c in n.kids)
+    a = [_om(c) for c in n.kids]
+    if k == "sub":
+        return f"<m:sSub><m:e>{a[0]}</m:e><m:sub>{a[1]}</m:sub></m:sSub>"
+    if k == "sup":
+        return f"<m:sSup><m:e>{a[0]}</m:e><m:sup>{a[1]}</m:sup></m:sSup>"
+    if k == "subsup":
+        return f"<m:sSubSup><m:e>{a[0]}</m:e><m:sub>{a[1]}</m:sub><m:sup>{a[2]}</m:sup></m:sSubSup>"
+    if k == "frac":
+        return f"<m:f><m:num>{a[0]}</m:num><m:den>{a[1]}</m:den></m:f>"
+    return f'<m:rad><m:radPr><m:degHide m:val="1"/></m:radPr><m:deg/><m:e>{a[0]}</m:e></m:rad>'
+
+
+def omml(src: str) -> str:
+    """The formula as Office Math (OMML, ECMA-376 part 1 §22.1): an ``m:oMathPara`` element
+    that Word (and LibreOffice) show as an editable equation — fractions, sub- and superscripts,
+    radicals, Greek letters; written directly for this notation's small tree (no XSLT).
+
+    >>> x = omml(r"\\frac{\\omega}{2}")
+    >>> x[x.index("<m:f>"):x.index("</m:f>") + 6]
+    '<m:f><m:num><m:r><m:t xml:space="preserve">ω</m:t></m:r></m:num><m:den><m:r><m:rPr><m:sty m:val="p"/></m:rPr><m:t xml:space="preserve">2</m:t></m:r></m:den></m:f>'
+    """
+    return (f'<m:oMathPara xmlns:m="{OMML_NS}" xmlns:w="{_W_NS}"><m:oMath>'
+            f"{_om(parse(src))}</m:oMath></m:oMathPara>")

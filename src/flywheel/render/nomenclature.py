@@ -615,3 +615,97 @@ def position_label(label: str, lang: str = "en") -> str:
 def csv_header(key: str) -> str:
     """A CSV column header: ``name [unit]`` with the SI unit ("J_II [kg·m²]")."""
     return f"{key} [{si_unit(key)}]"
+
+
+# --- report: messages ---
+# The warnings and notes of the computation (errors.Notice: the English text with a code and
+# its parameters) in Russian, and the CLI's line prefixes. English is the Notice's own text.
+MESSAGES_RU = {
+    "no_net_work": ("нагрузки не совершают работы за цикл: уравновешивающий момент равен 0 "
+                    "(маховик лишь сглаживает периодическую часть нагрузок)"),
+    "forces_massless": ("силовой анализ: ни у одного звена нет массы или J_S, поэтому реакции "
+                        "создают одни заданные силы (сил инерции нет)"),
+    "tabulated_negative_J": ("таблица: интерполяция ({kind}) доли звена {link} в J_II опускается "
+                             "ниже нуля ({J:.3g} кг·м² при φ = {phi_deg:.1f}°): задайте больше "
+                             "положений вблизи этого угла"),
+    "cylinder_negative_p": ("цилиндр {cylinder}: интерполяция ({kind}) его индикаторной таблицы "
+                            "даёт отрицательное давление, до {p:.4g} МПа при φ = {phi_deg:.1f}° "
+                            "(интерполяция 'pchip' не даёт выбросов)"),
+    "startup_stall": ("разгон: двигатель не может разогнать машину, она останавливается при "
+                      "φ = {phi_deg:.1f}°"),
+    "startup_not_steady": ("разгон: установившийся режим не достигнут за {cycles} циклов "
+                           "({t:.4g} с); средняя скорость последнего цикла {omega:.5g} рад/с, "
+                           "установившаяся скорость по характеристике двигателя {target}"),
+    "duty_motor_alone": ("двигатель один даёт операции её энергию (P·t_оп ≥ E): маховик не "
+                         "отдаёт ничего, ΔE = 0"),
+    "duty_motor_idles": ("двигатель сильнее, чем нужно операциям: он работает {t_work:.6g} с "
+                         "из каждого цикла {t_cycle:.6g} с и {t_idle:.6g} с идёт вхолостую при "
+                         "ω_max (его момент там принят равным нулю)"),
+    "power_mismatch": ("machine.power: P = {power:.6g} Вт при ω_ср = {omega:.6g} рад/с означает "
+                       "средний момент P/ω_ср = {M_power:.6g} Н·м, но нагрузки случая "
+                       "уравновешиваются моментом {M_loads:.6g} Н·м ({P_loads:.6g} Вт, "
+                       "{pct:+.3g} %): проверьте нагрузки или мощность"),
+    "duty_delta_large": "δ = {delta:.4g}: скорость колеблется больше чем на 30 % от средней",
+    "crank_short": ("crank.length: {length:g} м — необычно короткий кривошип (кривошипы: "
+                    "5 мм … 2 м); длины задаются в метрах"),
+    "delta_unusual": ("machine.delta: δ = {delta:g} вне обычных 1/300 … 1/5 ({lo:.4f} … "
+                      "{hi:.1f}; по таблице Артоболевского: прессы 1/5 … 1/20, двигатели "
+                      "1/80 … 1/150, генераторы 1/200 … 1/300)"),
+    "rpm_unusual": ("machine: частота вращения кривошипа {rpm:.6g} об/мин вне обычных 1 … "
+                    "20 000 об/мин"),
+    "cylinder_vacuum": ("{where}: p/p_max опускается до {low:g} ({p:.4g} МПа избыточного, "
+                        "разрежение): таблицы задают избыточное давление в долях p_max; "
+                        "проверьте знак"),
+    "no_flywheel_needed": ("первая группа уже имеет {J_first:.6g} кг·м² ≥ J_I = "
+                           "{J_required:.6g} кг·м²: маховик не нужен"),
+    "rim_speed": ("маховик в виде {shape_ru}: окружная скорость {v:.1f} м/с больше допускаемой "
+                  "{limit:.1f} м/с = √(σ/ρ) тонкого вращающегося кольца (окружное напряжение "
+                  "σ = ρ·v², Тимошенко, «Сопротивление материалов», ч. II) для материала "
+                  "{material_ru}: σ = {sigma:g} МПа, ρ = {rho:g} кг/м³ (задайте "
+                  "flywheel.allowable_stress или более широкий маховик: width_ratio)"),
+    "out_kept": "{target}: оставлены файлы, изменённые вами после прошлого запуска: {files}",
+    "out_removed": ("{target}: удалены файлы прошлого запуска, которые этот запуск не пишет "
+                    "({n}): {files_ru}"),
+}
+#: the CLI's line prefixes ("warning: …") and its last line ("written: DIR/ (…)")
+PREFIXES = {"warning": ("warning", "предупреждение"), "note": ("note", "примечание"),
+            "written": ("written", "записано")}
+
+
+def _ru_params(code: str, p: dict) -> dict:
+    """Parameters of a Notice that need words of their own in Russian."""
+    p = dict(p)
+    if code == "startup_not_steady":
+        p["target"] = (f"{p['omega_pred']:.5g} рад/с" if p.get("omega_pred") is not None
+                       else "нет: характеристика двигателя не может нести среднюю нагрузку")
+    elif code == "rim_speed":
+        p["shape_ru"] = {"disk": "диска", "rim": "обода"}.get(p["shape"], p["shape"])
+        p["material_ru"] = ("заданного" if p["material"] == "the given material"
+                            else material(p["material"], "ru"))
+    elif code == "out_removed":
+        names = p["files"].split(", ")
+        more = names[-1].split(" and ")
+        if len(more) == 2 and more[1].endswith(" more"):
+            names[-1] = f"{more[0]} и ещё {more[1][:-len(' more')]}"
+        p["files_ru"] = ", ".join(names)
+    return p
+
+
+def message(text: str, lang: str = "en") -> str:
+    """A warning or note in ``lang``: a Notice (errors.Notice) with a Russian template is said
+    in Russian, anything else (English, or a plain string) as it is.
+
+    >>> from flywheel.errors import Notice
+    >>> message(Notice("δ = 0.5: the speed swings by more than 30 % of the mean",
+    ...                "duty_delta_large", delta=0.5), "ru")
+    'δ = 0.5: скорость колеблется больше чем на 30 % от средней'
+    """
+    code = getattr(text, "code", "")
+    if lang != "ru" or code not in MESSAGES_RU:
+        return str(text)
+    return MESSAGES_RU[code].format(**_ru_params(code, text.params))
+
+
+def prefix(key: str, lang: str = "en") -> str:
+    """A CLI line prefix ("warning", "note", "written") in ``lang``."""
+    return PREFIXES[key][lang == "ru"]

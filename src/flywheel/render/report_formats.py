@@ -3,7 +3,8 @@
 - html: one self-contained file (Jinja2): styles inline with a print stylesheet for A4, the
   figures inline as data: URIs of the PNGs, formulas as MathML; nothing fetched.
 - pdf: typst (its Python package; bundled fonts typeset Cyrillic), formulas in typst math.
-- docx: python-docx, formulas as Unicode text; the zip's dates fixed so reruns are identical.
+- docx: python-docx, formulas as Word equations (OMML written from mathfmt's tree); the zip's
+  dates fixed so reruns are identical.
 
 Heavy imports (jinja2, typst, docx) live inside the function of their format.
 """
@@ -22,6 +23,8 @@ from flywheel.render.document import Bullets, Document, Figure, Formula, Heading
 from flywheel.render.report import CAPTION
 
 FORMATS = ("md", "html", "pdf", "docx")
+#: a table of more columns than WIDE gets a smaller font; of more than WIDE_PAGE a landscape page
+WIDE, WIDE_PAGE = 8, 12
 
 _CSS = """
 body { font-family: "DejaVu Serif", "Times New Roman", serif; max-width: 190mm; margin: 1em auto;
@@ -35,10 +38,13 @@ figure { margin: 1em 0; text-align: center; page-break-inside: avoid; break-insi
 figure img { max-width: 100%; height: auto; }
 figcaption { font-size: 0.9em; margin-top: 0.3em; }
 math[display="block"] { margin: 0.5em 0; }
+.tab { overflow-x: auto; } .wide table { font-size: 0.72em; } .wide th, .wide td { padding: 0.1em 0.25em; }
 @page { size: A4; margin: 18mm 15mm; }
+@page landscape { size: A4 landscape; margin: 15mm 15mm; }
 @media print { body { max-width: none; margin: 0; padding: 0; font-size: 10.5pt; }
   h2, h3 { page-break-after: avoid; break-after: avoid; }
-  table { page-break-inside: avoid; break-inside: avoid; } }
+  table { page-break-inside: avoid; break-inside: avoid; }
+  .tab { overflow: visible; } .landscape { page: landscape; } .landscape table { font-size: 0.65em; } }
 """
 
 _TEMPLATE = """<!DOCTYPE html>
@@ -54,13 +60,13 @@ _TEMPLATE = """<!DOCTYPE html>
 {% elif b.kind == "p" %}<p>{{ b.html }}</p>
 {% elif b.kind == "ul" %}<ul>{% for i in b.entries %}<li>{{ i }}</li>{% endfor %}</ul>
 {% elif b.kind == "f" %}{{ b.mathml }}
-{% elif b.kind == "t" %}<p class="caption" id="table-{{ b.number }}">{{ b.label }}</p>
+{% elif b.kind == "t" %}<div class="tab{{ b.width }}"><p class="caption" id="table-{{ b.number }}">{{ b.label }}</p>
 <table>
 <thead><tr>{% for c in b.header %}<th>{{ c }}</th>{% endfor %}</tr></thead>
 <tbody>
 {% for r in b.rows %}<tr>{% for c in r %}<td>{{ c }}</td>{% endfor %}</tr>
 {% endfor %}</tbody>
-</table>
+</table></div>
 {% elif b.kind == "img" %}<figure id="figure-{{ b.number }}">{% if b.src %}<img src="{{ b.src }}" alt="{{ b.label }}">{% endif %}
 <figcaption>{{ b.label }}</figcaption></figure>
 {% endif %}
@@ -95,8 +101,10 @@ def html(doc: Document, plots_dir: Path | None = None) -> str:
         elif isinstance(b, Formula):
             blocks.append({"kind": "f", "mathml": Markup(mathfmt.mathml(b.tex))})
         elif isinstance(b, Table):
+            n = len(b.header)
             blocks.append({"kind": "t", "number": b.number, "label": f"{tab} {b.number} — {b.caption}",
-                           "header": b.header, "rows": b.rows})
+                           "header": b.header, "rows": b.rows,
+                           "width": "" if n <= WIDE else " wide" if n <= WIDE_PAGE else " wide landscape"})
         elif isinstance(b, Figure):
             src = None
             if plots_dir is not None and (plots_dir / b.file).is_file():
@@ -124,7 +132,7 @@ def typst_source(doc: Document) -> str:
            '#set page(paper: "a4", margin: (x: 18mm, y: 18mm), numbering: "1")',
            f'#set text(lang: "{doc.lang}", size: 10pt)',
            '#set par(justify: false)',
-           '#show table.cell: set text(size: 8pt)', ""]
+           ""]
     for b in doc.blocks:
         if isinstance(b, Heading):
             out.append("=" * b.level + " " + _ts(b.text))
@@ -135,14 +143,26 @@ def typst_source(doc: Document) -> str:
         elif isinstance(b, Formula):
             out.append(f"$ {mathfmt.typst(b.tex)} $")
         elif isinstance(b, Table):
-            cells = ", ".join(f"[{_ts(c)}]" for r in (b.header, *b.rows) for c in r)
-            out.append(f"#block(breakable: true)[{_ts(f'{tab} {b.number} — {b.caption}')}]")
-            out.append(f"#table(columns: {len(b.header)}, inset: 3pt, align: right, {cells})")
+            out.append(_typst_table(b, f"{tab} {b.number} — {b.caption}"))
         elif isinstance(b, Figure):
             out.append(f'#figure(image("plots/{b.file}", width: 100%), numbering: none, '
                        f"caption: [{_ts(f'{fig} {b.number} — {b.caption}')}])")
         out.append("")
     return "\n".join(out)
+
+
+def _typst_table(b: Table, caption: str) -> str:
+    """A numbered table as typst: its caption, the first column left, the numbers right; a wide
+    table (more than WIDE columns) in a smaller font, a very wide one (more than WIDE_PAGE) on a
+    landscape page of its own, so that no number runs over its cell or the A4 margin."""
+    n = len(b.header)
+    size, inset = ("8pt", "3pt") if n <= WIDE else ("7pt", "2pt") if n <= WIDE_PAGE else ("6.5pt", "2pt")
+    cells = ", ".join(f"[{_ts(c)}]" for r in (b.header, *b.rows) for c in r)
+    src = (f"#block(breakable: true)[{_ts(caption)}]\n"
+           f"#[#show table.cell: set text(size: {size})\n"
+           f"#table(columns: {n}, inset: {inset}, align: (x, y) => if x == 0 {{ left }} else "
+           f"{{ right }}, {cells})]")
+    return f"#page(flipped: true)[\n{src}\n]" if n > WIDE_PAGE else src
 
 
 def pdf(doc: Document, plots_dir: Path | None = None) -> bytes:
@@ -176,11 +196,13 @@ def _fixed_zip(data: bytes) -> bytes:
 
 
 def docx(doc: Document, plots_dir: Path | None = None) -> bytes:
-    """The document as Word (python-docx); formulas as Unicode text lines."""
+    """The document as Word (python-docx); formulas as native equations (OMML, mathfmt.omml)."""
     import datetime
 
     import docx as pydocx
     from docx.enum.text import WD_ALIGN_PARAGRAPH
+    from docx.oxml import parse_xml
+    from docx.table import _Cell
     from docx.shared import Mm, Pt
 
     tab, fig = CAPTION[doc.lang]
@@ -211,14 +233,16 @@ def docx(doc: Document, plots_dir: Path | None = None) -> bytes:
         elif isinstance(b, Formula):
             p = d.add_paragraph()
             p.alignment = WD_ALIGN_PARAGRAPH.CENTER
-            p.add_run(mathfmt.plain(b.tex)).italic = True
+            p._p.append(parse_xml(mathfmt.omml(b.tex)))       # a native Word equation
         elif isinstance(b, Table):
             d.add_paragraph(f"{tab} {b.number} — {b.caption}")
             t = d.add_table(rows=1 + len(b.rows), cols=len(b.header))
             t.style = "Table Grid"
-            for r, cells in enumerate((b.header, *b.rows)):
-                for c, text in enumerate(cells):
-                    cell = t.cell(r, c)
+            # the cells straight from the rows' XML: Table.cell(r, c) rebuilds the whole grid
+            # on every call (quadratic; seconds for the report's tables)
+            for r, (tr, cells) in enumerate(zip(t._tbl.tr_lst, (b.header, *b.rows))):
+                for tc, text in zip(tr.tc_lst, cells):
+                    cell = _Cell(tc, t)
                     cell.text = text
                     for p in cell.paragraphs:
                         for run in p.runs:

@@ -186,4 +186,4 @@ def print_summary(results, console=None, lang: str = "en") -> None:
     for line in time_domain_lines(s.get("time_domain"), lang):
         console.print(line, markup=False)
     for w in results.warnings:
-        console.print(f"[yellow]{t['warning']}:[/yellow] {escape(w)}")
+        console.print(f"[yellow]{t['warning']}:[/yellow] {escape(nm.message(w, lang))}")

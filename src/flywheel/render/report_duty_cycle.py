@@ -1,0 +1,91 @@
+"""The записка of `flywheel duty-cycle CASE --out DIR`: a press, riveter or shear whose flywheel
+gives each operation's energy, as a textbook solution (Khurmi & Gupta, «Theory of Machines»,
+ch. 16, "Flywheel in Punching Press"), a document model (render/document.py) written as
+report.md/.html/.pdf/.docx like the one of `flywheel run`.
+
+Sections: the method with its formulas, the operation, the motor, the speeds, the flywheel and
+the timing (the same tables as the summary, render/duty_cycle.py ``summary_tables``), the checks,
+the warnings and the sources. There is no figure (the command draws none). Every number is the
+result's document (``DutyCycleResult.to_document()``).
+"""
+from __future__ import annotations
+
+from flywheel.render import nomenclature as nm
+from flywheel.render.document import Bullets, Document, Formula, Heading, Paragraph, Table
+from flywheel.render.duty_cycle import summary_tables
+
+T = {
+    "en": {
+        "title": "Flywheel of a machine that works in operations", "source": "Source",
+        "method": "1. Method",
+        "method_note": ("One operation takes the energy E in the time t_op of each cycle T_c; the "
+                        "motor gives the constant torque M_D (power P) and the flywheel the rest, "
+                        "ΔE; its speed falls from ω_max to ω_min during the operation and the motor "
+                        "brings it back before the next one."),
+        "results": "2. Solution", "checks": "3. Checks", "warn": "Warnings", "sources": "Sources",
+        "case_source": "Input data: {s}.",
+        "book": ("Khurmi R. S., Gupta J. K. Theory of Machines, ch. 16: Turning Moment Diagrams "
+                 "and Flywheel, the section \"Flywheel in Punching Press\" (Ex. 16.19–16.23)."),
+    },
+    "ru": {
+        "title": "Маховик машины, работающей циклами операций", "source": "Источник",
+        "method": "1. Метод решения",
+        "method_note": ("Операция потребляет энергию E за время t_оп каждого цикла T_ц; двигатель "
+                        "даёт постоянный момент M_Д (мощность P), маховик — остальное, ΔE; за "
+                        "операцию его скорость падает от ω_max до ω_min, и двигатель восстанавливает "
+                        "её до следующей операции."),
+        "results": "2. Решение", "checks": "3. Проверки", "warn": "Предупреждения",
+        "sources": "Источники", "case_source": "Исходные данные: {s}.",
+        "book": ("Khurmi R. S., Gupta J. K. Theory of Machines, гл. 16: Turning Moment Diagrams "
+                 "and Flywheel, раздел «Flywheel in Punching Press» (примеры 16.19–16.23)."),
+    },
+}
+
+
+def build_duty_cycle_document(r, title: str, source: str, lang: str = "en") -> Document:
+    """The записка of one duty-cycle result."""
+    t = T[lang]
+    d = r.to_document()
+    doc = Document(title or t["title"], lang)
+    add = doc.blocks.append
+    n = 0
+
+    def table(caption, header, rows):
+        nonlocal n
+        n += 1
+        add(Table(n, caption, tuple(header), tuple(tuple(x) for x in rows)))
+
+    add(Heading(1, f"{t['title']}: {title}" if title else t["title"]))
+    if source:
+        add(Paragraph(f"{t['source']}: {source}"))
+    add(Heading(2, t["method"]))
+    add(Paragraph(t["method_note"]))
+    MD = r"M_{\text{Д}}" if lang == "ru" else r"M_{D}"
+    top = r"t_{\text{оп}}" if lang == "ru" else r"t_{op}"
+    wm = r"\omega_{\text{ср}}"
+    add(Formula(rf"\Delta E = E - P {top}, P = {MD} {wm}"))
+    add(Formula(rf"\Delta E = \frac{{J (\omega_{{max}}^{{2}} - \omega_{{min}}^{{2}})}}{{2}} = "
+                rf"J {wm}^{{2}} \delta, \delta = \frac{{\omega_{{max}} - \omega_{{min}}}}{{{wm}}}"))
+    add(Formula(r"J = m k^{2}, \Delta E = m v^{2} \delta"))
+    add(Formula(rf"t_{{\text{{{'вос' if lang == 'ru' else 'rec'}}}}} = \frac{{\Delta E}}{{P}}"))
+
+    add(Heading(2, t["results"]))
+    for caption, header, rows, note, _ in summary_tables(d, lang):
+        if rows:
+            table(caption, header, rows)
+        if note:
+            add(Paragraph(note))
+    if d["checks"]:
+        from flywheel.render.duty_cycle import L10N
+
+        add(Heading(2, t["checks"]))
+        L = L10N[lang]
+        table(L["checks"], (L["quantity"], L["value"], L["unit"]),
+              [(nm.name(k, lang), f"{v:.1e}", nm.unit_of(k, lang)) for k, v in d["checks"].items()])
+    if r.warnings:
+        add(Heading(2, t["warn"]))
+        add(Bullets(tuple(nm.message(w, lang) for w in r.warnings)))
+    add(Heading(2, t["sources"]))
+    src = ([t["case_source"].format(s=source)] if source else []) + [t["book"]]
+    add(Bullets(tuple(f"[{i}] {x}" for i, x in enumerate(src, 1))))
+    return doc

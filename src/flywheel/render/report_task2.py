@@ -1,0 +1,241 @@
+"""The записка of `flywheel task2 --out DIR`: a textbook solution of «Задача 2» (steady motion of
+a machine with constant reduced inertia under given moment graphs) as a document model
+(render/document.py), written as report.md/.html/.pdf/.docx like the one of `flywheel run`.
+
+Sections: the given data (the constants and the moment graphs at their breakpoints), the method
+with its formulas, the segment table, the results, the motion (ε, phases, time), the figure
+with its caption, the sources. Nothing is computed here: every number is a field of the
+:class:`~flywheel.constant_inertia.solve.Task2Result` (the graphs are only read at their
+breakpoints). Labels come from the nomenclature (render/nomenclature_ci.py); this module keeps
+the section titles and the sentences.
+Source of the method: the textbook task «Задача 2» (½·J·(ω² − ω0²) = ∫(M_Д − M_С)dφ,
+δ = (ω_max − ω_min)/ω_ср, J = ΔT_нб/(δ·ω_ср²)); Артоболевский И. И., «Теория механизмов и
+машин», ch. 16–17.
+"""
+from __future__ import annotations
+
+import math
+
+from flywheel.render.document import Bullets, Document, Figure, Formula, Heading, Paragraph, Table
+from flywheel.render.nomenclature_ci import symbol, text, unit
+
+FIGURE = "task2.png"
+
+T = {
+    "en": {
+        "title": "Steady motion with constant reduced inertia", "source": "Source",
+        "given": "1. Given data", "given_caption": "Given data",
+        "graphs_caption": "Moment graphs at their breakpoints (values just after the angle)",
+        "areas_caption": "Work of the moments between the crossings (area diagram)",
+        "method": "2. Method",
+        "method_note": ("The reduced inertia J is constant, so the kinetic energy theorem over "
+                        "the angle φ gives the speed directly; the extremes of ω lie where "
+                        "M_D = M_C, and the cycle is steady when ∮(M_D − M_C)dφ = 0."),
+        "solution": "3. Solution", "segments_caption": "Segments: works and speeds at the breakpoints and crossings",
+        "results_caption": "Results",
+        "motion": "4. Acceleration, phases and time", "motion_caption": "Acceleration and cycle time",
+        "phases_caption": "Phases between the extremes of ω",
+        "at_caption": "The motion at the asked angles",
+        "figure": "Moments M_D, M_C, work A, speed ω(φ) and acceleration ε(φ)",
+        "figure_areas": "Energy and speed at the crossings",
+        "sources": "Sources", "case_source": "Input data: {s}.",
+        "book": ("Artobolevsky I. I. Teoriya mekhanizmov i mashin (Theory of Mechanisms and "
+                 "Machines). 4th ed. Moscow: Nauka, 1988: ch. 16–17 (reduction, speed "
+                 "fluctuation, the flywheel)."),
+        "given_J": "reduced moment of inertia", "given_w0": "speed at φ = 0",
+        "given_cycle": "cycle", "given_MD": "driving moment {kind}",
+        "given_MC": "resistance moment {kind}", "found": "found from the cycle balance",
+        "given_delta": "asked coefficient of speed fluctuation",
+        "given_R": "mean radius of the rim", "given_k": "radius of gyration",
+        "steady_no": ("The motion is not steady: the work over the cycle is {work} J, ω after "
+                      "one cycle {omega_end} rad/s."),
+        "quantity": "quantity", "symbol": "symbol", "value": "value", "unit": "unit",
+    },
+    "ru": {
+        "title": "Установившееся движение при постоянном приведённом моменте инерции",
+        "source": "Источник",
+        "given": "1. Исходные данные", "given_caption": "Исходные данные",
+        "graphs_caption": "Графики моментов в точках излома (значения справа от угла)",
+        "areas_caption": "Работа моментов между точками пересечения (диаграмма площадей)",
+        "method": "2. Метод решения",
+        "method_note": ("Приведённый момент инерции J_пр постоянен, поэтому теорема об "
+                        "изменении кинетической энергии на угле φ сразу даёт скорость; экстремумы "
+                        "ω лежат там, где M_Д = M_С, а цикл установившийся, когда "
+                        "∮(M_Д − M_С)dφ = 0."),
+        "solution": "3. Решение",
+        "segments_caption": "Участки: работы и скорости в точках излома и пересечения",
+        "results_caption": "Результаты",
+        "motion": "4. Ускорение, фазы и время", "motion_caption": "Ускорение и время цикла",
+        "phases_caption": "Фазы между экстремумами ω",
+        "at_caption": "Движение в заданных положениях",
+        "figure": "Моменты M_Д, M_С, работа A, скорость ω(φ) и ускорение ε(φ)",
+        "figure_areas": "Энергия и скорость в точках пересечения",
+        "sources": "Источники", "case_source": "Исходные данные: {s}.",
+        "book": ("Артоболевский И. И. Теория механизмов и машин. — 4-е изд. — М.: Наука, 1988: "
+                 "гл. 16–17 (приведение, неравномерность хода, маховик)."),
+        "given_J": "приведённый момент инерции", "given_w0": "скорость при φ = 0",
+        "given_cycle": "цикл", "given_MD": "движущий момент {kind}",
+        "given_MC": "момент сопротивления {kind}", "found": "найден из условия цикла",
+        "given_delta": "заданный коэффициент неравномерности",
+        "given_R": "средний радиус обода", "given_k": "радиус инерции",
+        "steady_no": ("Движение не установившееся: работа за цикл {work} Дж, ω после цикла "
+                      "{omega_end} рад/с."),
+        "quantity": "величина", "symbol": "обозначение", "value": "значение", "unit": "ед.",
+    },
+}
+
+KINDS = {"en": {"constant": "(constant)", "triangle": "(triangle, peak)",
+                "rectangle": "(rectangle)", "points": "(largest ordinate)", "series": "(a0)"},
+         "ru": {"constant": "(постоянный)", "triangle": "(треугольник, пик)",
+                "rectangle": "(прямоугольник)", "points": "(наибольшая ордината)",
+                "series": "(a0)"}}
+
+
+def g(x, fmt: str = ".6g") -> str:
+    """A number as the report prints it (−0 → 0; None or NaN → "—")."""
+    if x is None or (isinstance(x, float) and not math.isfinite(x)):
+        return "—"
+    return format(0.0 if abs(x) < 1e-12 else x, fmt)
+
+
+def _deg(phi) -> str:
+    return "—" if phi is None or math.isnan(phi) else g(math.degrees(phi))
+
+
+def _sub(base: str, en: str, ru: str, lang: str) -> str:
+    """A symbol with a subscript in the formula notation (render/mathfmt.py)."""
+    return rf"{base}_{{\text{{{ru if lang == 'ru' else en}}}}}"
+
+
+def build_task2_document(r, title: str, source: str, lang: str = "en",
+                         figure: str | None = FIGURE) -> Document:
+    """The записка of one task-2 result; ``figure`` the plot's name under plots/ (None: none)."""
+    t = T[lang]
+
+    def U(u: str) -> str:
+        return unit(u, lang)
+
+    doc = Document(title or t["title"], lang)
+    add = doc.blocks.append
+    n_tab = [0]
+
+    def table(caption, header, rows):
+        n_tab[0] += 1
+        add(Table(n_tab[0], caption, tuple(header), tuple(tuple(x) for x in rows)))
+
+    add(Heading(1, f"{t['title']}: {title}" if title else t["title"]))
+    if source:
+        add(Paragraph(f"{t['source']}: {source}"))
+
+    # 1. given data ---------------------------------------------------------------------------
+    add(Heading(2, t["given"]))
+    MD, MC = symbol("M_D", lang), symbol("M_C", lang)
+    rows = [[t["given_J"], symbol("J", lang), g(r.J), U("kg·m²")],
+            [t["given_w0"], "ω0", g(r.omega0), U("rad/s")],
+            [t["given_cycle"], "Φ", g(math.degrees(r.cycle)), U("deg")]]
+    for sym, graph, kind_key, found in ((MD, r.driving, "given_MD", r.unknown == "driving"),
+                                        (MC, r.resistance, "given_MC", r.unknown == "resistance")):
+        nominal = r.M_D if sym == MD else r.M_C
+        if graph is None and nominal is None:
+            continue
+        kind = KINDS[lang].get(graph.kind, "") if graph is not None else ""
+        rows.append([t[kind_key].format(kind=kind).strip(), sym,
+                     t["found"] if found else g(nominal), "" if found else U("N·m")])
+    if r.delta_target is not None:
+        rows.append([t["given_delta"], "δ", g(r.delta_target), ""])
+    if r.rim_radius is not None:
+        rows.append([t["given_R"], "R", g(r.rim_radius), U("m")])
+    if r.radius_of_gyration is not None:
+        rows.append([t["given_k"], "k", g(r.radius_of_gyration), U("m")])
+    table(t["given_caption"], [t["quantity"], t["symbol"], t["value"], t["unit"]], rows)
+    if r.driving is not None and r.resistance is not None:
+        cuts = sorted({round(p, 12) for m in (r.driving, r.resistance) for p in m.breakpoints()})
+        scale = 1e-9 * max(abs(r.driving.nominal), abs(r.resistance.nominal), 1.0)
+
+        def m(graph, p):       # the rounding of a breakpoint is no value of its own
+            v = graph.value(p)
+            return g(0.0 if abs(v) < scale else v)
+
+        table(t["graphs_caption"], [f"φ, {U('deg')}", f"{MD}, {U('N·m')}", f"{MC}, {U('N·m')}"],
+              [[g(math.degrees(p)), m(r.driving, p), m(r.resistance, p)] for p in cuts])
+
+    # 2. method -------------------------------------------------------------------------------
+    add(Heading(2, t["method"]))
+    add(Paragraph(t["method_note"]))
+    md, mc = _sub("M", "D", "Д", lang), _sub("M", "C", "С", lang)
+    J = _sub("J", "", "пр", lang) if lang == "ru" else "J"
+    wm, dT = _sub(r"\omega", "ср", "ср", lang), _sub(r"\Delta T", "нб", "нб", lang)
+    add(Formula(rf"A(\varphi) = \int_{{0}}^{{\varphi}} ({md} - {mc}) d\varphi = "
+                rf"\frac{{{J} (\omega^{{2}} - \omega_{{0}}^{{2}})}}{{2}}"))
+    add(Formula(rf"\omega(\varphi) = \sqrt{{\omega_{{0}}^{{2}} + \frac{{2A(\varphi)}}{{{J}}}}}"))
+    add(Formula(rf"{wm} = \frac{{\omega_{{max}} + \omega_{{min}}}}{{2}}, "
+                rf"\delta = \frac{{\omega_{{max}} - \omega_{{min}}}}{{{wm}}}, "
+                rf"{dT} = A_{{max}} - A_{{min}}"))
+    if r.driving is not None:
+        add(Formula(rf"\varepsilon(\varphi) = \frac{{{md} - {mc}}}{{{J}}}, "
+                    rf"t(\varphi) = \int_{{0}}^{{\varphi}} \frac{{d\varphi}}{{\omega}}"))
+    if r.J_required is not None:
+        add(Formula(rf"{J} = \frac{{{dT}}}{{\delta {wm}^{{2}}}}"))
+
+    # 3. solution -----------------------------------------------------------------------------
+    add(Heading(2, t["solution"]))
+    if r.unknown:
+        name = symbol({"resistance": "M_C", "driving": "M_D"}[r.unknown], lang)
+        val = r.M_C if r.unknown == "resistance" else r.M_D
+        add(Paragraph(text("t2_balance", lang, name=name, value=g(val), work=g(r.work_driving))))
+    if r.power_found is not None and r.power is not None:
+        name = symbol("M_D" if r.power_found == "driving" else "M_C", lang)
+        add(Paragraph(text("t2_power", lang, P=g(r.power), name=name, T=g(r.power / r.omega_mean))))
+    if not r.steady:
+        add(Paragraph(t["steady_no"].format(work=g(r.work_end), omega_end=g(r.omega_end, ".6f"))))
+    table(t["segments_caption"],
+          ["#", f"φ, {U('deg')}", "φ/π", text("point", lang), f"{MD}, {U('N·m')}",
+           f"{MC}, {U('N·m')}", f"A, {U('J')}", f"ω, {U('rad/s')}"],
+          [[str(i), _deg(row.phi), "—" if math.isnan(row.phi) else g(row.phi / math.pi),
+            text("crossing_MD_MC", lang) if row.kind == "crossing" and row.M_D is not None
+            else text("crossing" if row.kind == "crossing" else "bound", lang),
+            g(row.M_D), g(row.M_C), g(row.A), g(row.omega, ".6f")] for i, row in enumerate(r.rows)])
+    res = [[text("omega_max", lang), g(r.omega_max, ".6f"), U("rad/s"), _deg(r.phi_omega_max)],
+           [text("omega_min", lang), g(r.omega_min, ".6f"), U("rad/s"), _deg(r.phi_omega_min)],
+           [text("omega_mean", lang), g(r.omega_mean, ".6f"), U("rad/s"), ""],
+           [text("delta", lang), g(r.delta), "", ""],
+           [text("delta_T_max", lang), g(r.delta_T_max), U("J"), ""]]
+    if r.power is not None:
+        res.append([text("power", lang), g(r.power), U("W"), ""])
+    if r.J_required is not None:
+        res.append([text("J_required", lang, delta=g(r.delta_target)), g(r.J_required),
+                    U("kg·m²"), ""])
+    if r.rim_mass is not None:
+        res.append([text("rim_mass", lang, R=g(r.rim_radius)), g(r.rim_mass), U("kg"), ""])
+    if r.flywheel_mass is not None:
+        res.append([text("flywheel_mass", lang, k=g(r.radius_of_gyration)), g(r.flywheel_mass),
+                    U("kg"), ""])
+    if r.energy_fluctuation_coefficient is not None:
+        res.append([text("energy_fluctuation_coefficient", lang),
+                    g(r.energy_fluctuation_coefficient), "", ""])
+    table(t["results_caption"], [t["quantity"], t["value"], t["unit"], f"φ, {U('deg')}"], res)
+
+    # 4. motion -------------------------------------------------------------------------------
+    if r.driving is not None:
+        add(Heading(2, t["motion"]))
+        table(t["motion_caption"], [t["quantity"], t["value"], t["unit"], f"φ, {U('deg')}"],
+              [[text("epsilon_max", lang), g(r.epsilon_max), U("rad/s²"), _deg(r.phi_epsilon_max)],
+               [text("epsilon_min", lang), g(r.epsilon_min), U("rad/s²"), _deg(r.phi_epsilon_min)],
+               [text("cycle_time", lang), g(r.cycle_time), U("s"), ""]])
+        if r.phases:
+            table(t["phases_caption"],
+                  ["#", f"φ₁, {U('deg')}", f"φ₂, {U('deg')}", text("trend", lang),
+                   f"t, {U('s')}", f"Δt, {U('s')}"],
+                  [[str(i), _deg(p.phi_start), _deg(p.phi_end), text(f"trend_{p.trend}", lang),
+                    g(p.t_start), g(p.duration)] for i, p in enumerate(r.phases)])
+        if r.at:
+            table(t["at_caption"], [f"φ, {U('deg')}", f"ω, {U('rad/s')}", f"ε, {U('rad/s²')}",
+                                    f"t, {U('s')}"],
+                  [[_deg(a.phi), g(a.omega, ".6f"), g(a.epsilon), g(a.t)] for a in r.at])
+    if figure:
+        add(Figure(1, t["figure"] if r.driving is not None else t["figure_areas"], figure))
+
+    add(Heading(2, t["sources"]))
+    src = ([t["case_source"].format(s=source)] if source else []) + [t["book"]]
+    add(Bullets(tuple(f"[{i}] {x}" for i, x in enumerate(src, 1))))
+    return doc
