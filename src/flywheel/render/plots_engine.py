@@ -12,19 +12,8 @@ from __future__ import annotations
 
 import numpy as np
 
-_TEXT = {
-    "en": {"intake": "intake", "compression": "compression", "expansion": "expansion",
-           "exhaust": "exhaust", "table": "{k}: table", "s_axis": "relative piston travel s "
-           "from the head", "p_axis": "p / p_max", "p_MPa": "p, MPa (gauge)",
-           "phi": "crank angle φ, °", "title": "{t}: four-stroke indicator diagram, cylinder {c}",
-           "fires": "fires at {a:.1f}°"},
-    "ru": {"intake": "впуск", "compression": "сжатие", "expansion": "расширение",
-           "exhaust": "выпуск", "table": "{k}: таблица", "s_axis": "относительное перемещение "
-           "поршня s от головки", "p_axis": "p / p_max", "p_MPa": "p, МПа (избыточное)",
-           "phi": "угол поворота кривошипа φ, °",
-           "title": "{t}: индикаторная диаграмма четырёхтактного цилиндра {c}",
-           "fires": "воспламенение при {a:.1f}°"},
-}
+from flywheel.render import nomenclature as nm
+
 _COLORS = ("C0", "C2", "C3", "C1")     # intake, compression, expansion, exhaust
 
 
@@ -34,7 +23,8 @@ def figure_indicator_strokes(results, cylinder, lang: str = "en"):
 
     from flywheel.dynamics.loads import FOUR_STROKES
 
-    t = _TEXT.get(lang, _TEXT["en"])
+    def t(key: str, **fields) -> str:
+        return nm.name(f"engine_{key}", lang, **fields)
 
     def build():
         w, h = 11.0, 9.0
@@ -50,30 +40,30 @@ def figure_indicator_strokes(results, cylinder, lang: str = "en"):
         for k, name in enumerate(FOUR_STROKES):
             mask = stroke == k
             order = np.argsort(s[mask], kind="stable")
-            ax.plot(s[mask][order], rel[mask][order], color=_COLORS[k], label=t[name])
+            ax.plot(s[mask][order], rel[mask][order], color=_COLORS[k], label=t(name))
             ax.plot(cylinder.stroke_s[name], cylinder.stroke_tables[name], "o", color=_COLORS[k],
-                    markersize=4, markerfacecolor="none", label=t["table"].format(k=t[name]))
+                    markersize=4, markerfacecolor="none", label=t("table", k=t(name)))
             bx.plot(np.where(mask, deg, np.nan), np.where(mask, cylinder.p / 1e6, np.nan),
-                    color=_COLORS[k], label=t[name])
+                    color=_COLORS[k], label=t(name))
         ax.axhline(0.0, color="0.3", linewidth=0.6)
         ax.set_xlim(0.0, 1.0)
-        ax.set_xlabel(t["s_axis"])
-        ax.set_ylabel(t["p_axis"])
+        ax.set_xlabel(t("s_axis"))
+        ax.set_ylabel(t("p_axis"))
         sec = ax.secondary_yaxis("right", functions=(lambda r: r * p_max / 1e6,
                                                      lambda p: p * 1e6 / p_max))
-        sec.set_ylabel(t["p_MPa"])
+        sec.set_ylabel(t("p_MPa"))
         ax.legend(loc="upper left", bbox_to_anchor=(1.09, 1.0), borderaxespad=0.0)
         bx.axhline(0.0, color="0.3", linewidth=0.6)
         for r in range(results.cycle_deg // 720):
             a = np.degrees(cylinder.fires_at) + 720 * r
             bx.axvline(a, color="0.4", linewidth=0.8, linestyle=":")
-        bx.plot([], [], " ", label=t["fires"].format(a=float(np.degrees(cylinder.fires_at))))
+        bx.plot([], [], " ", label=t("fires", a=float(np.degrees(cylinder.fires_at))))
         cycle = results.cycle_deg
         bx.set_xlim(0.0, float(cycle))
         bx.set_xticks(np.arange(0, cycle + 1, 30 * cycle // 360))
-        bx.set_xlabel(t["phi"])
-        bx.set_ylabel(t["p_MPa"])
+        bx.set_xlabel(t("phi"))
+        bx.set_ylabel(t("p_MPa"))
         bx.legend(loc="upper left", bbox_to_anchor=(1.09, 1.0), borderaxespad=0.0)
-        ax.set_title(t["title"].format(t=results.title, c=cylinder.name))
+        ax.set_title(t("title", t=results.title, c=cylinder.name))
         return fig
     return build()

@@ -6,7 +6,7 @@ Drawn as render/plots.py draws — pyplot-free :class:`matplotlib.figure.Figure`
 fixed margins in inches and the legend outside the axes — and saved by its pool of workers in
 its fixed style (:func:`figures` is registered in ``plots.all_figures``; this module does not
 import render/plots.py, which imports it). Quantities are named by
-:mod:`flywheel.render.nomenclature`; this module keeps the titles. Nothing is computed here but
+:mod:`flywheel.render.nomenclature`, and so are the titles. Nothing is computed here but
 degrees and the axis limits; matplotlib is imported inside the functions.
 """
 from __future__ import annotations
@@ -17,35 +17,6 @@ import numpy as np
 
 from flywheel.render.nomenclature import axis, name, symbol, unit_of, tex
 
-_TEXT = {
-    "en": {
-        "reactions": r"reactions in the joints $|R_{ij}|(\varphi)$, $R_{ij}$: the force of link i on link j",
-        "moment": r"balancing moment on the crank $M_y(\varphi)$, three ways",
-        "moment_steady": r"balancing moment on the crank $M_y(\varphi)$, steady motion $\omega$ = {w:.5g} rad/s",
-        "M_const": "{s} = {v:.6g} {u} (constant, from the cycle balance)",
-        "hodographs": "polar diagrams (hodographs) of the loads over the cycle",
-        "pin": "load on the crank pin, in the crank's axes",
-        "bearing": r"load on the main bearing $R_{10}$",
-        "shaking": "shaking force on the frame",
-        "curve": "over the cycle, labels: φ, °",
-        "origin": "origin (zero force)",
-    },
-    "ru": {
-        "reactions": r"реакции в кинематических парах $|R_{ij}|(\varphi)$, $R_{ij}$ — сила действия звена i на звено j",
-        "moment": r"уравновешивающий момент на кривошипе $M_у(\varphi)$, три способа",
-        "moment_steady": r"уравновешивающий момент на кривошипе $M_у(\varphi)$, равномерное вращение "
-                         "ω = {w:.5g} рад/с",
-        "M_const": "{s} = {v:.6g} {u} (постоянный, из условия цикла)",
-        "hodographs": "полярные диаграммы (годографы) нагрузок за цикл",
-        "pin": "нагрузка на шатунную шейку в осях кривошипа",
-        "bearing": r"нагрузка на коренной подшипник $R_{10}$",
-        "shaking": "сила, действующая на стойку",
-        "curve": "за цикл, подписи: φ, °",
-        "origin": "начало координат (нулевая сила)",
-    },
-}
-
-
 def _typeset(key: str, lang: str) -> str:
     """The quantity's name with its plain symbol typeset as mathtext (no literal underscore)."""
 
@@ -53,8 +24,7 @@ def _typeset(key: str, lang: str) -> str:
 
 
 def _t(lang: str, key: str, **kw) -> str:
-    text = _TEXT["ru" if lang == "ru" else "en"][key]
-    return text.format(**kw) if kw else text
+    return name(f"forces_plot_{key}", lang, **kw)
 
 
 DPI = 120                  # as render/plots.py
