@@ -10,6 +10,7 @@ from pathlib import Path
 import pytest
 
 from flywheel import analyze, load_case
+from flywheel.render import figure as fg
 from flywheel.render import plots
 
 CASE = Path(__file__).resolve().parents[1] / "cases" / "compressor.toml"
@@ -116,7 +117,7 @@ def test_the_users_style_neither_changes_the_plots_nor_is_changed(results, made)
         made(fig)
         assert matplotlib.rcParams["lines.linewidth"] == 7.0
     ax = fig.axes[0]
-    assert ax.lines[0].get_linewidth() == plots._RC["lines.linewidth"]
+    assert ax.lines[0].get_linewidth() == fg.RC["lines.linewidth"]
     assert ax.xaxis.get_gridlines()[0].get_visible()
 
 

@@ -37,10 +37,11 @@ def write_animation(results, path: Path, lang: str = "en", frames: int = FRAMES,
         raise ValueError("tabulated kinematics have no geometry to animate")
     from PIL import Image
 
+    from flywheel.render import figure as fg
     from flywheel.render import plots
 
-    with plots._style():
-        fig, ax = plots._figure((6.4, 6.0), left=0.8, right=0.2, bottom=0.6, top=0.45)
+    with fg.style():
+        fig, ax = fg.figure((6.4, 6.0), left=0.8, right=0.2, bottom=0.6, top=0.45)
         fig.set_dpi(DPI)
         pts = np.concatenate([pm.r for pm in results.kinematics.points.values()])
         lo, hi = pts.min(axis=0), pts.max(axis=0)

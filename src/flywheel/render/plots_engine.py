@@ -1,7 +1,7 @@
 """The indicator diagram of a four-stroke cylinder (DIR/plots/indicator_NAME.png).
 
-Drawn inside :mod:`flywheel.render.plots`' style (its writer builds every figure in it); this
-module does not import plots (plots calls it), so it makes its own pyplot-free Figure.
+Drawn with :mod:`flywheel.render.figure`'s toolkit inside its style (plots' writer builds
+every figure in it).
 
 Two panels: the closed diagram p/p_max against the relative travel s as the program used it
 (the grid values, stroke by stroke, with each stroke's table as markers), and the pressure
@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from flywheel.render import figure as fg
 from flywheel.render import nomenclature as nm
 
 _COLORS = ("C0", "C2", "C3", "C1")     # intake, compression, expansion, exhaust
@@ -19,19 +20,13 @@ _COLORS = ("C0", "C2", "C3", "C1")     # intake, compression, expansion, exhaust
 
 def figure_indicator_strokes(results, cylinder, lang: str = "en"):
     """The four strokes of ``cylinder`` (a four-stroke :class:`CylinderResult`)."""
-    from matplotlib.figure import Figure
-
     from flywheel.dynamics.loads import FOUR_STROKES
 
     def t(key: str, **fields) -> str:
         return nm.name(f"engine_{key}", lang, **fields)
 
     def build():
-        w, h = 11.0, 9.0
-        fig = Figure(figsize=(w, h), dpi=120)
-        ax, bx = fig.subplots(2, 1)
-        fig.subplots_adjust(left=0.85 / w, right=1 - 2.9 / w, bottom=0.7 / h, top=1 - 0.5 / h,
-                            hspace=0.3)
+        fig, (ax, bx) = fg.figure((11.0, 9.0), 2, 1, right=2.9, bottom=0.7, top=0.5, hspace=0.3)
         s = np.asarray(cylinder.s, float)
         rel = np.asarray(cylinder.p, float) / cylinder.p_max
         stroke = np.asarray(cylinder.stroke)
@@ -58,9 +53,7 @@ def figure_indicator_strokes(results, cylinder, lang: str = "en"):
             a = np.degrees(cylinder.fires_at) + 720 * r
             bx.axvline(a, color="0.4", linewidth=0.8, linestyle=":")
         bx.plot([], [], " ", label=t("fires", a=float(np.degrees(cylinder.fires_at))))
-        cycle = results.cycle_deg
-        bx.set_xlim(0.0, float(cycle))
-        bx.set_xticks(np.arange(0, cycle + 1, 30 * cycle // 360))
+        fg.phi_axis(bx, lang, label=False, cycle_deg=results.cycle_deg)
         bx.set_xlabel(t("phi"))
         bx.set_ylabel(t("p_MPa"))
         bx.legend(loc="upper left", bbox_to_anchor=(1.09, 1.0), borderaxespad=0.0)
