@@ -12,6 +12,8 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from flywheel.linkage.drawing import Drawing
+
 UNITS = "SI (m, kg, s, rad, N, N·m, J, kg·m²); angles *_deg in degrees"
 
 
@@ -346,6 +348,7 @@ class Results:
     time_domain: TimeDomainResult | None = None
     forces: ForceResult | None = None        # the force analysis (kinetostatics)
     warnings: tuple[str, ...] = ()
+    drawing: Drawing | None = None           # what the scheme draws (linkage/drawing.py); None if tabulated
 
     @property
     def cycle(self) -> float:

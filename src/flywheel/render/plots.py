@@ -8,8 +8,10 @@ The figures are drawn with the toolkit of :mod:`flywheel.render.figure` (pyplot-
 with fixed margins, one fixed style, the legend outside the axes, the φ axis): with fixed
 sizes, dpi and no metadata the PNG bytes are the same for the same input.
 
-Renderers compute no physics: everything drawn is read from the results; the only arithmetic
-here is geometry for drawing (degrees, guide directions, slider travel along its guide).
+Renderers compute nothing: everything drawn is read from the results — the quantities, and
+what the scheme shows (which points move, the sliders and their guides, the points on each
+link, the slider travel) from ``results.drawing`` (:mod:`flywheel.linkage.drawing`); the only
+arithmetic here is layout (degrees, where a symbol or a label goes).
 """
 from __future__ import annotations
 
@@ -125,91 +127,16 @@ def _phi_deg(results) -> np.ndarray:
     return np.degrees(results.phi)
 
 
-def _moving_points(results) -> list[str]:
-    return [n for n, pm in results.kinematics.points.items()
-            if np.any(pm.v_q != 0) or np.any(pm.a_q != 0)]
-
-
-def _fixed_points(results) -> list[str]:
-    return [n for n, pm in results.kinematics.points.items()
-            if not (np.any(pm.v_q != 0) or np.any(pm.a_q != 0))]
-
-
-def _turning_links(results) -> list[str]:
-    """Links other than the crank that turn (ω_q not identically zero), by name."""
-    crank = results.links_drawn[0][0] if results.links_drawn else None
-    return [n for n, lm in results.kinematics.links.items()
-            if n != crank and (np.any(lm.omega_q != 0) or np.any(lm.eps_q != 0))]
-
-
-def _guided_sliders(results) -> list[tuple[str, str, float]]:
-    """(slider link, its joint, guide angle [rad]) of every slider on a fixed guide."""
-    drawn = {name for name, _ in results.links_drawn}
-    out = []
-    for name, lm in results.kinematics.links.items():
-        if name in drawn or np.any(lm.omega_q != 0) or lm.theta is None:
-            continue
-        if lm.ref in results.kinematics.points:
-            out.append((name, lm.ref, float(lm.theta[0])))
-    return out
-
-
-def _moving_blocks(results) -> list[tuple[str, str]]:
-    """(slider link, its pivot point) of sliders on turning links (RPR, кулиса)."""
-    drawn = {name for name, _ in results.links_drawn}
-    return [(name, lm.ref) for name, lm in results.kinematics.links.items()
-            if name not in drawn and np.any(lm.omega_q != 0) and lm.theta is not None
-            and lm.ref in results.kinematics.points]
-
-
-def _link_members(results) -> list[tuple[str, list[str]]]:
-    """``links_drawn`` with every other joint that moves rigidly with the link added (e.g. the
-    point of a rocker that drives the next dyad beyond its slider block): a point X rides on
-    link L if X − P, turned back by L's angle θ, stays constant (P: L's first point)."""
-    P, L = results.kinematics.points, results.kinematics.links
-    joints = list(dict.fromkeys(p for _, pts in results.links_drawn for p in pts))
-    allr = np.concatenate([pm.r for pm in P.values()])
-    tol = 1e-9 * max(float(np.ptp(allr[:, 0])), float(np.ptp(allr[:, 1])), 1e-12)
-    out = []
-    for link, pts in results.links_drawn:
-        members = list(pts)
-        lm = L.get(link)
-        if lm is not None and lm.theta is not None and pts:
-            c, s = np.cos(lm.theta), np.sin(lm.theta)
-            base = P[pts[0]].r
-            for x in joints:
-                if x in members:
-                    continue
-                rel = P[x].r - base
-                local = np.stack([rel[:, 0] * c + rel[:, 1] * s, -rel[:, 0] * s + rel[:, 1] * c])
-                if np.all(np.ptp(local, axis=1) <= tol):
-                    members.append(x)
-        out.append((link, members))
-    return out
-
-
-def _slider_travel(results, joint: str, angle: float) -> np.ndarray:
-    """Distance [m] along the guide from the dead centre farther from the crank pivot."""
-    pm = results.kinematics.points[joint]
-    u = np.array([math.cos(angle), math.sin(angle)])
-    x = pm.r @ u
-    fixed = _fixed_points(results)
-    pivot = results.kinematics.points[fixed[0]].r[0] if fixed else np.zeros(2)
-    i_hi, i_lo = int(np.argmax(x)), int(np.argmin(x))
-    far = i_hi if (np.linalg.norm(pm.r[i_hi] - pivot) >= np.linalg.norm(pm.r[i_lo] - pivot)) else i_lo
-    return np.abs(x - x[far])
-
-
 # -- the figures -------------------------------------------------------------------------------------
 def figure_positions(results, lang: str = "en"):
     """x(φ), y(φ) of every moving point (constant coordinates left out) and slider travel."""
     def build():
-        sliders = _guided_sliders(results)
+        sliders = results.drawing.guided_sliders
         rows = 3 if sliders else 2
         fig, axes = fg.figure((11.0, 9.0 if sliders else 7.0), rows, 1, sharex=True, hspace=0.12)
         deg = _phi_deg(results)
         for ax, k, key in ((axes[0], 0, "x"), (axes[1], 1, "y")):
-            for name in _moving_points(results):
+            for name in results.drawing.moving_points:
                 v = results.kinematics.points[name].r[:, k]
                 if np.ptp(v) > 1e-12 * max(1.0, np.max(np.abs(v))):
                     ax.plot(deg, v, label=_sub("xy"[k], name))
@@ -217,7 +144,7 @@ def figure_positions(results, lang: str = "en"):
             fg.legend(ax)
         if sliders:
             for link, joint, angle in sliders:
-                axes[2].plot(deg, _slider_travel(results, joint, angle),
+                axes[2].plot(deg, results.drawing.slider_travel[link],
                              label=_t(lang, "travel_of", S=nm.tex("slider_travel", lang), s=link,
                                       p=joint))
             axes[2].set_ylabel(nm.axis("slider_travel", lang))
@@ -233,14 +160,14 @@ def _analogue_figure(results, lang, which: str):
     def build():
         fig, (ax1, ax2) = fg.figure(fg.TALL, 2, 1, sharex=True, hspace=0.12)
         deg = _phi_deg(results)
-        for name in _moving_points(results):
+        for name in results.drawing.moving_points:
             pm = results.kinematics.points[name]
             vec = pm.v_q if which == "velocity" else pm.a_q
             ax1.plot(deg, np.hypot(vec[:, 0], vec[:, 1]),
                      label=_sub("v" if which == "velocity" else "a", name, norm=True))
         ax1.set_ylabel(nm.axis("vq_{point}" if which == "velocity" else "aq_{point}", lang))
         link_key = "omega_q_{link}" if which == "velocity" else "eps_q_{link}"
-        for name in _turning_links(results):
+        for name in results.drawing.turning_links:
             lm = results.kinematics.links[name]
             ax2.plot(deg, lm.omega_q if which == "velocity" else lm.eps_q,
                      label=f"{nm.tex(link_key, lang)} {_t(lang, 'link', n=name)}")
@@ -462,29 +389,33 @@ def figure_epsilon(results, lang: str = "en"):
     return fg.drawn(build)
 
 
-def _draw_scheme(ax, results, i: int, size: float, lang: str) -> None:
-    """The mechanism at grid node i on ax; ``size`` [m] scales the symbols: what does not move
-    (trajectories, guides, fixed pivots), then what does."""
-    _draw_scheme_fixed(ax, results, size)
-    _draw_scheme_at(ax, results, i, size)
+def draw_scheme(ax, results, i: int, size: float, lang: str = "en") -> None:
+    """The kinematic scheme of ``results`` (a linkage case's run results) at grid node ``i`` on
+    the matplotlib Axes ``ax``: what does not move (trajectories, guides, fixed pivots), then
+    what does (links, joints, sliders, names); equal axes labelled x, y [m] in ``lang``.
+    ``size`` [m] scales the symbols (the scheme uses 0.035 of ``results.drawing.span``). Reads
+    only ``results.kinematics`` and ``results.drawing`` (linkage/drawing.py); a public entry
+    point for other figures that draw the mechanism (the velocity and acceleration plans)."""
+    draw_scheme_fixed(ax, results, size)
+    draw_scheme_at(ax, results, i, size)
     ax.set_aspect("equal", adjustable="datalim")
     ax.set_xlabel(nm.axis("x", lang))
     ax.set_ylabel(nm.axis("y", lang))
 
 
-def _draw_scheme_fixed(ax, results, size: float) -> None:
+def draw_scheme_fixed(ax, results, size: float) -> None:
     """The parts of the scheme that do not move: the trajectories of the moving points, the
     guides with their hatching, the fixed pivots on their hatched bases."""
     from matplotlib.patches import Polygon
 
     P = results.kinematics.points
-    moving, fixed = _moving_points(results), _fixed_points(results)
+    moving, fixed = results.drawing.moving_points, results.drawing.fixed_points
     # trajectories
     for k, name in enumerate(moving):
         r = P[name].r
         ax.plot(r[:, 0], r[:, 1], color=f"C{k % 10}", linewidth=0.8, alpha=0.8, zorder=1)
     # guides with hatching on one side, sliders as blocks
-    for link, joint, angle in _guided_sliders(results):
+    for link, joint, angle in results.drawing.guided_sliders:
         r = P[joint].r
         u = np.array([math.cos(angle), math.sin(angle)])
         nrm = np.array([-u[1], u[0]])
@@ -513,18 +444,16 @@ def _draw_scheme_fixed(ax, results, size: float) -> None:
                     color="k", linewidth=0.5, zorder=2.5)
 
 
-def _draw_scheme_at(ax, results, i: int, size: float) -> None:
+def draw_scheme_at(ax, results, i: int, size: float) -> None:
     """The parts of the scheme that move, at grid node i: sliders, links, joints, names."""
     from matplotlib.patches import Polygon, Rectangle
     from matplotlib.transforms import Affine2D
 
     P = results.kinematics.points
-    moving, fixed = _moving_points(results), _fixed_points(results)
+    moving, fixed = results.drawing.moving_points, results.drawing.fixed_points
     centre = np.mean([P[n].r[i] for n in moving + fixed], axis=0)
-    joints = []
-    for _, pts in results.links_drawn:
-        joints += [p for p in pts if p not in joints]
-    for link, joint, angle in _guided_sliders(results):
+    joints = results.drawing.joints
+    for link, joint, angle in results.drawing.guided_sliders:
         nrm = np.array([-math.sin(angle), math.cos(angle)])
         c = P[joint].r[i]
         block = Rectangle((-0.9 * size, -0.45 * size), 1.8 * size, 0.9 * size, facecolor="0.85",
@@ -533,7 +462,7 @@ def _draw_scheme_at(ax, results, i: int, size: float) -> None:
         ax.add_patch(block)
         ax.text(*(c - 1.9 * size * nrm), link, ha="center", va="center", fontsize=8,
                 style="italic", color="0.2", zorder=7)
-    for link, pivot in _moving_blocks(results):
+    for link, pivot in results.drawing.moving_blocks:
         c = P[pivot].r[i]
         block = Rectangle((-0.9 * size, -0.45 * size), 1.8 * size, 0.9 * size, facecolor="0.85",
                           edgecolor="k", linewidth=1.2, zorder=4)
@@ -543,7 +472,7 @@ def _draw_scheme_at(ax, results, i: int, size: float) -> None:
         ax.annotate(link, c, xytext=(0, -14), textcoords="offset points", ha="center",
                     fontsize=8, style="italic", color="0.2", zorder=7)
     # links: a bar through their joints, or a plate if the joints are not in line
-    for link, pts in _link_members(results):
+    for link, pts in results.drawing.members:
         xy = np.array([P[p].r[i] for p in pts])
         d = xy - xy.mean(axis=0)
         _, sv, vt = np.linalg.svd(d, full_matrices=False)
@@ -590,18 +519,18 @@ def _scheme_legend_handles(results, lang: str):
     h = [Line2D([], [], color="k", linewidth=2.5, label=_t(lang, "links")),
          Line2D([], [], linestyle="", marker="o", markerfacecolor="white", markeredgecolor="k",
                 markersize=6.5, label=_t(lang, "joints"))]
-    joints = {p for _, pts in results.links_drawn for p in pts}
-    if any(n not in joints for n in _moving_points(results)):
+    joints = set(results.drawing.joints)
+    if any(n not in joints for n in results.drawing.moving_points):
         h.append(Line2D([], [], linestyle="", marker="o", color="k", markersize=4.5,
                         label=_t(lang, "other_points")))
-    if _fixed_points(results):
+    if results.drawing.fixed_points:
         h.append(Line2D([], [], linestyle="", marker="^", markerfacecolor="white",
                         markeredgecolor="k", markersize=8, label=_t(lang, "ground")))
-    if _guided_sliders(results) or _moving_blocks(results):
+    if results.drawing.guided_sliders or results.drawing.moving_blocks:
         h.append(Patch(facecolor="0.85", edgecolor="k", label=_t(lang, "sliders")))
-    if _guided_sliders(results):
+    if results.drawing.guided_sliders:
         h.append(Line2D([], [], color="k", linewidth=1.0, label=_t(lang, "guides")))
-    for k, name in enumerate(_moving_points(results)):
+    for k, name in enumerate(results.drawing.moving_points):
         h.append(Line2D([], [], color=f"C{k % 10}", linewidth=0.8,
                         label=_t(lang, "trajectory", p=name)))
     return h
@@ -619,14 +548,13 @@ def figure_scheme(results, lang: str = "en"):
         size = (5.2 * ncols + _SCHEME_LEGEND_W, 5.4 * nrows + (0.3 if n > 1 else 0.0))
         fig, axes = fg.figure(size, nrows, ncols, squeeze=False, right=_SCHEME_LEGEND_W,
                             top=0.75 if n > 1 else 0.4, hspace=0.25, wspace=0.3)
-        allr = np.concatenate([pm.r for pm in results.kinematics.points.values()])
-        scale = 0.035 * float(max(np.ptp(allr[:, 0]), np.ptp(allr[:, 1]), 1e-9))
+        scale = 0.035 * max(results.drawing.span, 1e-9)
         for k, ax in enumerate(axes.flat):
             if k >= n:
                 ax.set_visible(False)
                 continue
             i = results.index_of(math.radians(angles[k]) % results.cycle)
-            _draw_scheme(ax, results, i, scale, lang)
+            draw_scheme(ax, results, i, scale, lang)
             ax.set_title(fg.title(results, _t(lang, "scheme", a=angles[k])) if n == 1
                          else _t(lang, "scheme", a=angles[k]))
         if n > 1:
