@@ -437,6 +437,18 @@ def test_cli_summary_and_plot(tmp_path):
     assert b"Software" not in png.read_bytes()[:4000]
 
 
+@pytest.mark.parametrize("suffix", [".svg", ".pdf"])
+def test_cli_plot_svg_pdf_same_bytes_on_a_rerun(tmp_path, suffix):
+    """--plot chooses the format by the suffix; SVG and PDF carry no date and the SVG's ids a
+    fixed salt, so two runs write the same bytes."""
+    paths = [tmp_path / f"a{suffix}", tmp_path / f"b{suffix}"]
+    for p in paths:
+        res = cli(CASES / "aggregate.toml", "--plot", p, "--t-end", "0.2")
+        assert res.exit_code == 0, res.output
+    assert paths[0].read_bytes() == paths[1].read_bytes()
+    assert paths[0].read_bytes()[:5] == (b"%PDF-" if suffix == ".pdf" else b"<?xml")
+
+
 def _summary(path, t_end=None):
     # print_summary on a wide console: no wrapped cells; box characters dropped
     import io

@@ -57,13 +57,22 @@ def run_command(
                                          "else true."),
     report: Optional[list[str]] = typer.Option(None, "--report", help="Report format: md, html, "
                                                "pdf, docx; repeatable (default: md and html)."),
+    figure_format: str = typer.Option("png", "--figure-format", help="Format of plots/*: png, svg "
+                                      "or pdf (svg, pdf: written beside the PNGs the reports embed)."),
+    dpi: int = typer.Option(120, "--dpi", help="Resolution of the plots [dots per inch], 50…600."),
 ) -> None:
     """Run the whole dynamic analysis of a case; write summary.json, table.csv, positions.csv,
     forces.csv, forces_positions.csv, report.md and plots/*.png to the output folder."""
     if lang not in ("en", "ru"):
         fail(f"--lang: {lang!r} is not a language (allowed: en, ru)")
+    from flywheel.render.figure import DPI_RANGE, FORMATS as FIGURE_FORMATS
     from flywheel.render.report_formats import FORMATS
 
+    if figure_format not in FIGURE_FORMATS:
+        fail(f"--figure-format: {figure_format!r} is not a figure format (allowed: "
+             f"{', '.join(FIGURE_FORMATS)})")
+    if not DPI_RANGE[0] <= dpi <= DPI_RANGE[1]:
+        fail(f"--dpi: {dpi} is out of range (allowed: {DPI_RANGE[0]} to {DPI_RANGE[1]})")
     formats = report or ["md", "html"]
     for f in formats:
         if f not in FORMATS:
@@ -94,8 +103,9 @@ def run_command(
             from flywheel.render.plots import write_plots
 
             (folder / "plots").mkdir()
-            pngs += [p.name for p in write_plots(results, folder / "plots", lang=lang,
-                                                 jobs=min(2, os.cpu_count() or 1))]
+            pngs += [p.with_suffix(".png").name for p in write_plots(
+                results, folder / "plots", lang=lang, jobs=min(2, os.cpu_count() or 1),
+                fmt=figure_format, dpi=dpi)]
         if animate:
             from flywheel.render.animate import write_animation
 
@@ -121,5 +131,6 @@ def run_command(
         typer.echo(f"{'записано' if lang == 'ru' else 'written'}: {out}/ (summary.json, table.csv, "
                    "positions.csv, forces.csv, forces_positions.csv, "
                    + ", ".join(f"report.{f}" for f in dict.fromkeys(formats))
-                   + ("" if no_plots else ", plots/*.png")
+                   + ("" if no_plots else ", plots/*.png"
+                      + ("" if figure_format == "png" else f", plots/*.{figure_format}"))
                    + (", mechanism.gif" if animate else "") + ")")

@@ -225,6 +225,10 @@ def plot(r, path, title: str = "", lang: str = "en") -> None:
     fig.tight_layout()
     from pathlib import Path
 
-    png = Path(path).suffix.lower() == ".png"
-    fig.savefig(path, dpi=100, **({"metadata": {"Software": None}} if png else {}))
+    from flywheel.render.figure import SVG_SALT, stable_metadata
+
+    fmt = Path(path).suffix.lower()[1:]
+    kw = {"metadata": {"Software": None}} if fmt == "png" else stable_metadata(fmt)
+    with matplotlib.rc_context({"svg.hashsalt": SVG_SALT}):      # SVG, PDF: same bytes on a rerun
+        fig.savefig(path, dpi=100, **kw)
     plt.close(fig)

@@ -214,5 +214,12 @@ def plot(r, path, title: str = "", lang: str = "en") -> None:
             a.grid(True, alpha=0.3)
     fig.suptitle(title or L("t2_plot_title", delta=f"{r.delta:.6g}", dT=f"{r.delta_T_max:.6g}"))
     fig.tight_layout()
-    fig.savefig(path, dpi=100)
+    import os
+    from pathlib import Path
+
+    from flywheel.render.figure import SVG_SALT, stable_metadata
+
+    fmt = Path(path).suffix.lower()[1:] if isinstance(path, (str, os.PathLike)) else ""
+    with matplotlib.rc_context({"svg.hashsalt": SVG_SALT}):      # SVG, PDF: same bytes on a rerun
+        fig.savefig(path, dpi=100, **stable_metadata(fmt))
     plt.close(fig)
