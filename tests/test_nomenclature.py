@@ -67,6 +67,25 @@ def test_units_in_russian():
         "рад/с", "кг·м²", "Н·м", "Дж", "°", "–", "м/рад²"]
 
 
+def test_every_term_has_both_languages_with_the_same_fields():
+    """One table for every command: each entry names itself in English and Russian, a
+    template's {fields} are the same in both, and its unit prints in Russian without Latin
+    letters (task2 and aggregate labels included)."""
+    import string
+
+    def fields(template):
+        return sorted(f for _, f, _, _ in string.Formatter().parse(template) if f)
+
+    for key, t in nm.TERMS.items():
+        assert t.en and t.ru, key
+        assert fields(t.en) == fields(t.ru), key
+        assert not re.search(r"[A-Za-z]", nm.unit(t.unit, "ru").replace("max", "")), (key, t.unit)
+    assert nm.name("t2_balance", "ru", name="M_С", value="60", work="94.2478") == (
+        "баланс работ за цикл ∮M_Д dφ = ∮M_С dφ даёт M_С = 60 Н·м (работа за цикл 94.2478 Дж)")
+    assert nm.symbol("t2_M_D", "en") == "M_D" and nm.symbol("t2_M_D", "ru") == "M_Д"
+    assert nm.rotor_name("motor J_Д", "ru") == "двигатель J_Д"
+
+
 def test_families_and_headings():
     assert nm.term("M gravity 2")[0] is nm.TERMS["M {load}"]
     assert nm.name("M gravity 2", "ru") == "приведённый момент: сила тяжести звена 2"

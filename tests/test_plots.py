@@ -10,6 +10,7 @@ from pathlib import Path
 import pytest
 
 from flywheel import analyze, load_case
+from flywheel.render import figure as fg
 from flywheel.render import plots
 
 CASE = Path(__file__).resolve().parents[1] / "cases" / "compressor.toml"
@@ -118,7 +119,7 @@ def test_the_users_style_neither_changes_the_plots_nor_is_changed(results, made)
         made(fig)
         assert matplotlib.rcParams["lines.linewidth"] == 7.0
     ax = fig.axes[0]
-    assert ax.lines[0].get_linewidth() == plots._RC["lines.linewidth"]
+    assert ax.lines[0].get_linewidth() == fg.RC["lines.linewidth"]
     assert ax.xaxis.get_gridlines()[0].get_visible()
 
 
@@ -284,3 +285,46 @@ def test_scheme_at_several_angles(made):
         f"kinematic scheme at φ = {a:g}°" for a in (30, 120, 250, 300)]
     assert r.title in fig.get_suptitle()
     _check_layout(fig)
+
+
+# -- figure formats (run --figure-format, --dpi; task2/aggregate --plot by suffix) ----------------
+@pytest.mark.parametrize("fmt", ["svg", "pdf"])
+def test_svg_and_pdf_are_the_same_bytes_on_a_rerun(tmp_path, results, fmt):
+    """Two figures drawn from the same results, saved apart: the same bytes (no date, a fixed
+    SVG hash salt), and a real file of that format."""
+    paths = []
+    for k in range(2):
+        fig = plots.figure_J_II(results)
+        try:
+            path = tmp_path / f"J_II_{k}.{fmt}"
+            fg.save(fig, path, fmt)
+            paths.append(path)
+        finally:
+            fig.clear()
+    a, b = (p.read_bytes() for p in paths)
+    assert a == b
+    assert a.startswith(b"%PDF") if fmt == "pdf" else b"<svg" in a[:2000]
+
+
+def test_write_plots_svg_keeps_the_pngs_the_reports_embed(tmp_path, results):
+    out = plots.write_plots(results, tmp_path, fmt="svg", dpi=60)
+    assert out and all(p.suffix == ".svg" and p.is_file() for p in out)
+    assert all(p.with_suffix(".png").is_file() for p in out)
+    from PIL import Image
+
+    assert out[0].name == "positions.svg"
+    with Image.open(out[0].with_suffix(".png")) as im:      # the positions: 11 in wide at 60 dpi
+        assert im.size[0] == 11 * 60
+
+
+@pytest.mark.parametrize("suffix", [".svg", ".pdf"])
+def test_task2_plot_by_suffix_is_the_same_bytes_on_a_rerun(tmp_path, suffix):
+    from typer.testing import CliRunner
+
+    from flywheel.cli import app
+
+    paths = [tmp_path / f"a{suffix}", tmp_path / f"b{suffix}"]
+    for p in paths:
+        res = CliRunner().invoke(app, ["task2", "--profile", "triangle", "--plot", str(p)])
+        assert res.exit_code == 0, res.output
+    assert paths[0].read_bytes() == paths[1].read_bytes()

@@ -47,7 +47,8 @@ def aggregate_command(
     from flywheel.errors import InputError
 
     with guarded(source=case):      # an error of the analysis is prefixed with the case file
-        from flywheel.render.nomenclature_ci import LANGS, text
+        from flywheel.render import nomenclature as nm
+        from flywheel.render.nomenclature import LANGS
 
         if lang not in LANGS:
             raise InputError(f"--lang: {lang!r} is not a language (allowed: {', '.join(LANGS)})")
@@ -90,8 +91,10 @@ def aggregate_command(
         from flywheel.render.aggregate import print_summary
 
         print_summary(result, c.title, c.source, lang=lang, modes=modes)
+        from flywheel.render import nomenclature as nm
+
         if plot is not None:
-            typer.echo(text("plot_written", lang, path=plot))
+            typer.echo(nm.name("plot_written", lang, path=plot))
         if out is not None:
             from flywheel.render.nomenclature import prefix
 

@@ -60,6 +60,9 @@ def run_command(
     csv_style: str = typer.Option("plain", "--csv", help="CSV dialect of the tables: plain, or "
                                   "excel-ru (';', decimal commas, BOM: opens in a Russian "
                                   "Excel)."),
+    figure_format: str = typer.Option("png", "--figure-format", help="Format of plots/*: png, svg "
+                                      "or pdf (svg, pdf: written beside the PNGs the reports embed)."),
+    dpi: int = typer.Option(120, "--dpi", help="Resolution of the plots [dots per inch], 50…600."),
 ) -> None:
     """Run the whole dynamic analysis of a case; write summary.json, table.csv, positions.csv,
     forces.csv, forces_positions.csv, report.md and plots/*.png to the output folder."""
@@ -69,8 +72,14 @@ def run_command(
 
     if csv_style not in STYLES:
         fail(f"--csv: {csv_style!r} is not a CSV dialect (allowed: {', '.join(STYLES)})")
+    from flywheel.render.figure import DPI_RANGE, FORMATS as FIGURE_FORMATS
     from flywheel.render.report_formats import FORMATS
 
+    if figure_format not in FIGURE_FORMATS:
+        fail(f"--figure-format: {figure_format!r} is not a figure format (allowed: "
+             f"{', '.join(FIGURE_FORMATS)})")
+    if not DPI_RANGE[0] <= dpi <= DPI_RANGE[1]:
+        fail(f"--dpi: {dpi} is out of range (allowed: {DPI_RANGE[0]} to {DPI_RANGE[1]})")
     formats = report or ["md", "html"]
     for f in formats:
         if f not in FORMATS:
@@ -107,8 +116,9 @@ def run_command(
             from flywheel.render.plots import write_plots
 
             (folder / "plots").mkdir()
-            pngs += [p.name for p in write_plots(results, folder / "plots", lang=lang,
-                                                 jobs=min(2, os.cpu_count() or 1))]
+            pngs += [p.with_suffix(".png").name for p in write_plots(
+                results, folder / "plots", lang=lang, jobs=min(2, os.cpu_count() or 1),
+                fmt=figure_format, dpi=dpi)]
         if animate:
             from flywheel.render.animate import write_animation
 
@@ -136,5 +146,6 @@ def run_command(
         typer.echo(f"{prefix('written', lang)}: {out}/ (summary.json, table.csv, "
                    "positions.csv, forces.csv, forces_positions.csv, "
                    + ", ".join(f"report.{f}" for f in dict.fromkeys(formats))
-                   + ("" if no_plots else ", plots/*.png")
+                   + ("" if no_plots else ", plots/*.png"
+                      + ("" if figure_format == "png" else f", plots/*.{figure_format}"))
                    + (", mechanism.gif" if animate else "") + ")")

@@ -103,7 +103,8 @@ def task2_command(
                                        ("--from", start), ("--to", end), ("--mc", mc),
                                        ("--delta", delta)) if v is not None]
     with guarded():
-        from flywheel.render.nomenclature_ci import LANGS, text
+        from flywheel.render import nomenclature as nm
+        from flywheel.render.nomenclature import LANGS
 
         if lang not in LANGS:
             raise InputError(f"--lang: {lang!r} is not a language (allowed: {', '.join(LANGS)})")
@@ -163,10 +164,10 @@ def task2_command(
                     M_C=mc, delta=delta, at=[math.radians(x) for x in at or ()])
 
             # the JSON document is the same in every language; the summary and plot speak lang
-            doc_title = text("t2_seed_title", profile=profile)
-            doc_source = text("t2_seed_source")
-            title = text("t2_seed_title", lang, profile=text(profile, lang))
-            source = text("t2_seed_source", lang)
+            doc_title = nm.name("t2_seed_title", profile=profile)
+            doc_source = nm.name("t2_seed_source")
+            title = nm.name("t2_seed_title", lang, profile=nm.name(profile, lang))
+            source = nm.name("t2_seed_source", lang)
         from flywheel.constant_inertia.solve import NotFiniteError
 
         # inputs near the limits of double precision: no Infinity/NaN in the output (it is not
@@ -207,8 +208,10 @@ def task2_command(
         from flywheel.render.task2 import print_summary
 
         print_summary(result, title, source, lang=lang, motion=epsilon or bool(at))
+        from flywheel.render import nomenclature as nm
+
         if plot is not None:
-            typer.echo(text("plot_written", lang, path=plot))
+            typer.echo(nm.name("plot_written", lang, path=plot))
         if out is not None:
             from flywheel.render.nomenclature import prefix
 

@@ -24,6 +24,7 @@ from flywheel.dynamics.grid import (DEFAULT_POINTS, grid_options, linkage_grid, 
 from flywheel.dynamics.results import (CylinderResult, EnergyResult, LoadsResult, MotionResult,
                                        ReductionResult, Results, warnings_of)
 from flywheel.errors import InputError, Notice
+from flywheel.linkage.drawing import describe, links_drawn
 
 
 def analyze(case, n_points: int = DEFAULT_POINTS, at_deg: list[float] | None = None,
@@ -63,6 +64,7 @@ def analyze(case, n_points: int = DEFAULT_POINTS, at_deg: list[float] | None = N
         columns=linkage_columns(phi, kin, mech.crank.name, ld, red, en, mo), at=at,
         position_angles=tuple(positions), links_drawn=links_drawn(mech),
         crank_length=float(mech.crank.length), time_domain=td, forces=fo, plans=pl,
+        drawing=describe(mech, kin),
         warnings=tuple(case.plausibility_warnings()) + warnings_of(ld, red, en, sz, mo, fo, td))
 
 
@@ -208,21 +210,3 @@ def report_angles(at_deg: list[float], kin, ld: LoadsResult, red: ReductionResul
     return tuple(out)
 
 
-def links_drawn(mech) -> tuple[tuple[str, tuple[str, ...]], ...]:
-    """(link, its points) of every link of the kinematic scheme: the crank, each dyad's links,
-    and the other points (centroids …) on the link that carries them."""
-    drawn = [(mech.crank.name, [mech.crank.pivot, mech.crank.tip]
-              + [pin.name for pin in mech.crank.pins])]
-    for d in mech.dyads:
-        if hasattr(d, "guide"):
-            drawn.append((d.rod, [d.origin, d.joint]))
-        elif hasattr(d, "rocker"):
-            drawn.append((d.rocker, [d.pivot, d.origin]))
-        else:
-            drawn.append((d.link_a, [d.point_a, d.joint]))
-            drawn.append((d.link_b, [d.point_b, d.joint]))
-    for p in mech.points:               # centroids and other points drawn on their links
-        for link, pts in drawn:
-            if link == p.link and p.name not in pts:
-                pts.append(p.name)
-    return tuple((link, tuple(pts)) for link, pts in drawn)

@@ -13,6 +13,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from flywheel.dynamics.sizing import RimDesign
+from flywheel.linkage.drawing import Drawing
 
 UNITS = "SI (m, kg, s, rad, N, N·m, J, kg·m²); angles *_deg in degrees"
 
@@ -356,6 +357,7 @@ class Results:
     forces: ForceResult | None = None        # the force analysis (kinetostatics)
     plans: tuple = ()                        # dynamics.plans.PlanSet at each report angle (linkage)
     warnings: tuple[str, ...] = ()
+    drawing: Drawing | None = None           # what the scheme draws (linkage/drawing.py); None if tabulated
 
     @property
     def cycle(self) -> float:

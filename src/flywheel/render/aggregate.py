@@ -14,7 +14,7 @@ from __future__ import annotations
 
 import math
 
-from flywheel.render.nomenclature_ci import rotor_name, text, unit
+from flywheel.render import nomenclature as nm
 
 TWO_PI = 2.0 * math.pi
 RPM = 30.0 / math.pi  # rad/s → rev/min
@@ -42,16 +42,16 @@ def _matrix(name: str, m, unit: str, lang: str = "en"):
     t = Table(title=escape(f"{name} [{unit}]"))
     t.add_column("")
     for j in range(n):
-        t.add_column(text("matrix_j", lang, j=j + 1), justify="right")
+        t.add_column(nm.name("matrix_j", lang, j=j + 1), justify="right")
     for i in range(n):
-        t.add_row(text("matrix_i", lang, i=i + 1), *(_g(m[i, j]) for j in range(n)))
+        t.add_row(nm.name("matrix_i", lang, i=i + 1), *(_g(m[i, j]) for j in range(n)))
     return t
 
 
 def print_summary(r, title: str = "", source: str = "", console=None, lang: str = "en",
                   modes: bool = False) -> None:
     """Coefficients, natural frequencies, resonance margins and the steady state; labels,
-    symbols and units in ``lang`` (en, ru: :mod:`flywheel.render.nomenclature_ci`). ``modes``
+    symbols and units in ``lang`` (en, ru: :mod:`flywheel.render.nomenclature`). ``modes``
     adds every mode's frequency in Hz and rpm with its nodes, and the shafts' equivalent
     lengths."""
     from rich.console import Console
@@ -59,10 +59,10 @@ def print_summary(r, title: str = "", source: str = "", console=None, lang: str 
     from rich.table import Table
 
     def L(key: str, **fields) -> str:
-        return text(key, lang, **fields)
+        return nm.name(key, lang, **fields)
 
     def U(u: str) -> str:
-        return unit(u, lang)
+        return nm.unit(u, lang)
 
     def table(title, columns):
         t = Table(title=e(title))
@@ -77,7 +77,7 @@ def print_summary(r, title: str = "", source: str = "", console=None, lang: str 
     if title:
         console.print(f"[bold]{e(title)}[/bold]" + (f"  ({e(source)})" if source else ""))
     ch = r.chain
-    names = [rotor_name(n, lang) for n in ch.names]
+    names = [nm.rotor_name(n, lang) for n in ch.names]
     t = table(L("ag_rotors"), ("#", L("rotor"), L("J_reduced"), L("u")))
     for k, (n, j, u) in enumerate(zip(names, ch.J, ch.ratio)):
         row(t, k + 1, n, _g(j), _g(u))
@@ -90,7 +90,7 @@ def print_summary(r, title: str = "", source: str = "", console=None, lang: str 
         for line in ch.lines:
             if min(line.ends) < 0:
                 k += 1
-                a, b = (rotor_name(n, lang) for n in line.names)
+                a, b = (nm.rotor_name(n, lang) for n in line.names)
                 row(t, k, f"{a} – {b} ({L('frame')})", _g(line.c_input * _u_in(ch, line) ** 2),
                     _g(0.0))
     console.print(t)
@@ -151,10 +151,10 @@ def _u_in(ch, line) -> float:
 
 def _node_text(node, lang: str) -> str:
     if node.rotor is not None:
-        return text("node_rotor", lang, name=rotor_name(node.rotor, lang))
-    a, b = (rotor_name(n, lang) for n in node.between)
-    dist = "" if node.distance is None else text("node_dist", lang, d=_g(node.distance), a=a)
-    return text("node_shaft", lang, a=a, b=b, dist=dist, frac=_g(100 * node.fraction, ".4g"))
+        return nm.name("node_rotor", lang, name=nm.rotor_name(node.rotor, lang))
+    a, b = (nm.rotor_name(n, lang) for n in node.between)
+    dist = "" if node.distance is None else nm.name("node_dist", lang, d=_g(node.distance), a=a)
+    return nm.name("node_shaft", lang, a=a, b=b, dist=dist, frac=_g(100 * node.fraction, ".4g"))
 
 
 def _print_modes(r, console, lang: str) -> None:
@@ -164,7 +164,7 @@ def _print_modes(r, console, lang: str) -> None:
     from rich.table import Table
 
     def L(key: str, **fields) -> str:
-        return text(key, lang, **fields)
+        return nm.name(key, lang, **fields)
 
     ch = r.chain
     frames = set(ch.frames)
@@ -176,7 +176,7 @@ def _print_modes(r, console, lang: str) -> None:
         for node in nodes:
             if node.between is not None and (set(node.between) & frames):
                 name = next(n for n in node.between if n in frames)
-                parts.append(L("node_frame", name=rotor_name(name, lang)))
+                parts.append(L("node_frame", name=nm.rotor_name(name, lang)))
             else:
                 parts.append(_node_text(node, lang))
         t.add_row(str(k + 1), e(_g(w / TWO_PI)), e(_g(w * RPM)), e("; ".join(parts) or "—"))
@@ -186,7 +186,7 @@ def _print_modes(r, console, lang: str) -> None:
                 L("equivalent_length"), L("d_ref")):
         t.add_column(e(col))
     for line in ch.lines:
-        a, b = (rotor_name(n, lang) for n in line.names)
+        a, b = (nm.rotor_name(n, lang) for n in line.names)
         t.add_row(str(line.index + 1), e(f"{a} – {b}"), e(_g(line.gear)), e(_g(line.c_input)),
                   e(_g(line.total_length)), e(_g(line.equivalent_length)), e(_g(line.d_ref)))
     console.print(t)
@@ -201,10 +201,10 @@ def plot(r, path, title: str = "", lang: str = "en") -> None:
     import matplotlib.pyplot as plt
 
     def L(key: str, **fields) -> str:
-        return text(key, lang, **fields)
+        return nm.name(key, lang, **fields)
 
     ch = r.chain
-    names = [rotor_name(n, lang) for n in ch.names]
+    names = [nm.rotor_name(n, lang) for n in ch.names]
     fig, axes = plt.subplots(2, 2, figsize=(11, 7))
     for col, (h, name) in enumerate(((r.startup, L("ag_plot_startup")),
                                      (r.check, L("ag_plot_steady")))):
@@ -225,6 +225,10 @@ def plot(r, path, title: str = "", lang: str = "en") -> None:
     fig.tight_layout()
     from pathlib import Path
 
-    png = Path(path).suffix.lower() == ".png"
-    fig.savefig(path, dpi=100, **({"metadata": {"Software": None}} if png else {}))
+    from flywheel.render.figure import SVG_SALT, stable_metadata
+
+    fmt = Path(path).suffix.lower()[1:]
+    kw = {"metadata": {"Software": None}} if fmt == "png" else stable_metadata(fmt)
+    with matplotlib.rc_context({"svg.hashsalt": SVG_SALT}):      # SVG, PDF: same bytes on a rerun
+        fig.savefig(path, dpi=100, **kw)
     plt.close(fig)

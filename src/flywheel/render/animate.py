@@ -1,5 +1,5 @@
 """mechanism.gif: the linkage moving over one cycle, drawn by the same code as the kinematic
-scheme (render/plots._draw_scheme: links, joints, sliders on their guides, the trajectories of
+scheme (render/plots.draw_scheme: links, joints, sliders on their guides, the trajectories of
 the moving points), with the crank angle on every frame.
 
 Frames are nodes of the φ grid (the node nearest each of ``frames`` equal steps of the cycle),
@@ -37,19 +37,20 @@ def write_animation(results, path: Path, lang: str = "en", frames: int = FRAMES,
         raise ValueError("tabulated kinematics have no geometry to animate")
     from PIL import Image
 
+    from flywheel.render import figure as fg
     from flywheel.render import plots
 
-    with plots._style():
-        fig, ax = plots._figure((6.4, 6.0), left=0.8, right=0.2, bottom=0.6, top=0.45)
+    with fg.style():
+        fig, ax = fg.figure((6.4, 6.0), left=0.8, right=0.2, bottom=0.6, top=0.45)
         fig.set_dpi(DPI)
-        pts = np.concatenate([pm.r for pm in results.kinematics.points.values()])
-        lo, hi = pts.min(axis=0), pts.max(axis=0)
+        b = results.drawing.bounds
+        lo, hi = np.array(b[:2]), np.array(b[2:])
         span = float(max(hi[0] - lo[0], hi[1] - lo[1], 1e-9))
         size = 0.035 * span
         mid = (lo + hi) / 2
         half = 0.5 * span + 3 * size
         idx = frame_indices(results, frames)
-        plots._draw_scheme_fixed(ax, results, size)       # drawn once: it does not move
+        plots.draw_scheme_fixed(ax, results, size)       # drawn once: it does not move
         ax.set_xlim(mid[0] - half, mid[0] + half)
         ax.set_ylim(mid[1] - half, mid[1] + half)
         ax.set_aspect("equal", adjustable="box")
@@ -67,7 +68,7 @@ def write_animation(results, path: Path, lang: str = "en", frames: int = FRAMES,
             canvas.restore_region(background)
             for artist in [a for a in ax.get_children() if a not in fixed]:
                 artist.remove()
-            plots._draw_scheme_at(ax, results, i, size)
+            plots.draw_scheme_at(ax, results, i, size)
             ax.set_xlim(mid[0] - half, mid[0] + half)
             ax.set_ylim(mid[1] - half, mid[1] + half)
             for artist in sorted((a for a in ax.get_children() if a not in fixed),

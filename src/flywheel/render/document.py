@@ -11,65 +11,9 @@ formula), ch. 16–17 (reduction, Merzalov's method, the energy–mass diagram).
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
-
 from flywheel.render import nomenclature as nm
-
-
-# -- blocks ---------------------------------------------------------------------------------------
-@dataclass(frozen=True)
-class Heading:
-    level: int          # 1 the title, 2 a section, 3 a subsection
-    text: str           # with its number ("5. Flywheel")
-
-
-@dataclass(frozen=True)
-class Paragraph:
-    text: str           # may hold **bold** runs
-
-
-@dataclass(frozen=True)
-class Bullets:
-    items: tuple[str, ...]
-
-
-@dataclass(frozen=True)
-class Formula:
-    tex: str            # render/mathfmt.py notation
-
-
-@dataclass(frozen=True)
-class Table:
-    number: int
-    caption: str
-    header: tuple[str, ...]
-    rows: tuple[tuple[str, ...], ...]
-
-
-@dataclass(frozen=True)
-class Figure:
-    number: int
-    caption: str
-    file: str           # the PNG's name under plots/
-
-
-@dataclass
-class Document:
-    title: str
-    lang: str
-    blocks: list = field(default_factory=list)
-
-    @property
-    def tables(self) -> list[Table]:
-        return [b for b in self.blocks if isinstance(b, Table)]
-
-    @property
-    def figures(self) -> list[Figure]:
-        return [b for b in self.blocks if isinstance(b, Figure)]
-
-    @property
-    def headings(self) -> list[Heading]:
-        return [b for b in self.blocks if isinstance(b, Heading)]
+from flywheel.render.blocks import (  # noqa: F401  (the model, re-exported)
+    Bullets, Document, Figure, Formula, Heading, Paragraph, Table)
 
 
 # -- words ----------------------------------------------------------------------------------------
@@ -325,45 +269,6 @@ class _Builder:
             self.plots.remove(f)
 
 
-def _add_markdown(b: _Builder, text: str) -> None:
-    """Blocks from a section written as simple Markdown (## and ### headings, "- " bullets,
-    pipe tables whose caption is the line before them, paragraphs): the force analysis's
-    section, which render/forces.py writes, joins every format's numbering."""
-    lines = text.splitlines()
-    i, pending = 0, None
-    while i < len(lines):
-        ln = lines[i].rstrip()
-        if not ln:
-            i += 1
-            continue
-        if ln.startswith("#"):
-            level = len(ln) - len(ln.lstrip("#"))
-            b.add(Heading(level, ln[level:].strip()))
-        elif ln.startswith("- "):
-            items = []
-            while i < len(lines) and lines[i].startswith("- "):
-                items.append(lines[i][2:].strip())
-                i += 1
-            b.add(Bullets(tuple(items)))
-            continue
-        elif ln.startswith("|"):
-            rows = []
-            while i < len(lines) and lines[i].startswith("|"):
-                cells = [c.strip() for c in lines[i].strip().strip("|").split("|")]
-                if not all(set(c) <= set("-:") for c in cells):
-                    rows.append(cells)
-                i += 1
-            if pending is not None and b.doc.blocks and b.doc.blocks[-1] is pending:
-                b.doc.blocks.pop()
-            b.table(pending.text if pending is not None else "", rows[0], rows[1:])
-            pending = None
-            continue
-        else:
-            pending = Paragraph(ln)
-            b.add(pending)
-        i += 1
-
-
 def _mt(key: str, lang: str) -> str:
     """The nomenclature's mathtext symbol without its dollars (the formula notation)."""
     return nm.tex(key, lang).strip("$")
@@ -520,9 +425,9 @@ def build_document(results, lang: str = "en", plots: list[str] | None = None,
         b.figures_of("time")
 
     if getattr(results, "forces", None) is not None:    # the force analysis (render/forces.py)
-        from flywheel.render.forces import report_section
+        from flywheel.render.forces import add_report_section
 
-        _add_markdown(b, report_section(results, lang))
+        add_report_section(b, results, lang)
         b.figures_of("forces")
 
     if results.warnings:

@@ -1,5 +1,5 @@
 """The force analysis as people read it: forces.csv, forces_positions.csv, the rich summary's
-section and report.md's section (issue 12). Text only: every number comes from
+section and the report's section, as document blocks (issue 12). Text only: every number comes from
 ``Results.forces`` (:class:`~flywheel.dynamics.results.ForceResult`); every quantity's name,
 symbol and unit from :mod:`flywheel.render.nomenclature`; this module keeps the sentence
 templates. Numbers in the CSV files follow render/tables.py: 12 significant digits (``%.12g``),
@@ -11,6 +11,7 @@ import math
 
 import numpy as np
 
+from flywheel.render.blocks import Bullets, Heading, Paragraph
 from flywheel.render.nomenclature import csv_header, name, position_label, symbol, unit, unit_of
 
 T = {
@@ -255,28 +256,32 @@ def print_forces(results, console, lang: str = "en") -> None:
             console.print(st)
 
 
-# -- report.md ------------------------------------------------------------------------------------
+# -- the report's section (document blocks) -------------------------------------------------------
 
-def _table(header: list[str], rows: list[list[str]]) -> str:
-    out = ["| " + " | ".join(header) + " |", "|" + "---|" * len(header)]
-    out += ["| " + " | ".join(r) + " |" for r in rows]
-    return "\n".join(out) + "\n"
+def _cells(row) -> tuple[str, ...]:
+    return tuple(str(c).strip() for c in row)
 
 
-def report_section(results, lang: str = "en") -> str:
-    """report.md's section: method, closure, the reactions and M_y at the standard positions,
-    and at each report angle M_y three ways, every reaction and the slider-crank quantities."""
+def add_report_section(b, results, lang: str = "en") -> None:
+    """The report's section as document blocks (render/blocks.py), added to the report's
+    builder ``b`` (its ``add(block)`` and ``table(caption, header, rows)``, which numbers the
+    tables): method, closure, the reactions and M_y at the standard positions, and at each
+    report angle M_y three ways, every reaction and the slider-crank quantities."""
     if results.forces is None:
-        return ""
+        return
     t = T[lang]
     f = results.forces
     fa = f.analysis
-    parts = [f"\n## {t['title']}\n\n"]
+    b.add(Heading(2, t["title"].strip()))
     if fa is not None:
-        parts.append(t["intro"] + "\n\n")
-    parts.append("\n".join(f"- {line}" for line in summary_lines(results, lang)) + "\n")
+        b.add(Paragraph(t["intro"].rstrip()))
+    b.add(Bullets(tuple(line.strip() for line in summary_lines(results, lang))))
     deg = "φ [" + unit("deg", lang) + "]"
     My = f"{symbol('M_y', lang)} [{unit_of('M_y', lang)}]"
+
+    def table(caption, header, rows):
+        b.table(caption, _cells(header), [_cells(r) for r in rows])
+
     if fa is None:
         parts_of = [k for k in ("M_st", "M_dyn") if k in results.columns]    # seed 004's Мст, Мдин
         header = [t["pos"], deg] + [f"{symbol(k, lang)} [{unit_of(k, lang)}]" for k in parts_of] + [My]
@@ -286,9 +291,9 @@ def report_section(results, lang: str = "en") -> str:
             body.append([position_label(lab, lang), _g(math.degrees(p), 6)]
                         + [_g(float(results.columns[k].values[i]), 6) for k in parts_of]
                         + [_g(float(f.M_y_power[i]), 6)])
-        parts.append(f"\n{t['tab_positions']}\n\n" + _table(header, body))
-        parts.append(f"\n{t['moments']}\n\n" + _table([deg, t["power"]], _moment_rows(results)))
-        return "".join(parts)
+        table(t["tab_positions"], header, body)
+        table(t["moments"], [deg, t["power"]], _moment_rows(results))
+        return
     keys = list(f.joints)
     header = [t["pos"], deg, My] + [f"R {k}" for k in keys]
     body = []
@@ -297,29 +302,27 @@ def report_section(results, lang: str = "en") -> str:
         body.append([position_label(lab, lang), _g(math.degrees(p), 6),
                      _g(float(fa.balancing_moment[i]), 6)]
                     + [_g(float(fa.joints[k].magnitude[i]), 5) for k in keys])
-    parts.append(f"\n{t['positions']}\n\n" + _table(header, body))
-    parts.append(f"\n{t['moments']}\n\n"
-                 + _table([deg, t["kin"], t["zhuk"], t["power"]], _moment_rows(results)))
+    table(t["positions"], header, body)
+    table(t["moments"], [deg, t["kin"], t["zhuk"], t["power"]], _moment_rows(results))
     N = unit("N", lang)
     for a in results.at:
         i = results.at_index(a["phi_deg"])
-        parts.append(f"\n### {t['at'].format(a=_g(a['phi_deg'], 6))}\n\n"
-                     f"{t['joints'].format(a=_g(a['phi_deg'], 6))}\n\n")
+        b.add(Heading(3, t["at"].format(a=_g(a["phi_deg"], 6)).strip()))
         rows = [[k, r.joint, r.by, r.on, _g(float(r.x[i]), 6), _g(float(r.y[i]), 6),
                  _g(float(r.magnitude[i]), 6), _g(math.degrees(float(r.angle[i])), 5)]
                 for k, r in f.joints.items()]
-        parts.append(_table([t["joint"], t["point"], t["by"], t["on"], f"R_x [{N}]", f"R_y [{N}]",
-                             f"R [{N}]", f"{t['angle']} [{unit('deg', lang)}]"], rows))
+        table(t["joints"].format(a=_g(a["phi_deg"], 6)),
+              [t["joint"], t["point"], t["by"], t["on"], f"R_x [{N}]", f"R_y [{N}]", f"R [{N}]",
+               f"{t['angle']} [{unit('deg', lang)}]"], rows)
         if f.slider_crank:
             head = [t["slider"]] + [f"{symbol(q, lang)} [{unit_of(q, lang)}]" for q in SLIDER_CRANK]
             rows = [[s] + [_g(float(getattr(sc, q)[i]), 6) for q in SLIDER_CRANK]
                     for s, sc in f.slider_crank.items()]
-            parts.append(f"\n{t['sc'].format(a=_g(a['phi_deg'], 6))}: "
-                         + "; ".join(f"{symbol(q, lang)} — {name(q, lang)}" for q in SLIDER_CRANK)
-                         + "\n\n" + _table(head, rows))
+            table(f"{t['sc'].format(a=_g(a['phi_deg'], 6))}: "
+                  + "; ".join(f"{symbol(q, lang)} — {name(q, lang)}" for q in SLIDER_CRANK),
+                  head, rows)
         P, S = f.crank_pin_load[i], fa.shaking_force[i]
-        parts.append("\n" + t["frame"].format(
+        b.add(Paragraph(t["frame"].format(
             P=_g(float(np.hypot(*P)), 6), T=_g(float(f.crank_pin_tangential[i]), 6),
             R=_g(float(f.crank_pin_radial[i]), 6), B=_g(float(fa.main_bearing_load.magnitude[i]), 6),
-            S=_g(float(np.hypot(*S)), 6), M=_g(float(fa.shaking_moment[i]), 6)) + "\n")
-    return "".join(parts)
+            S=_g(float(np.hypot(*S)), 6), M=_g(float(fa.shaking_moment[i]), 6)).rstrip()))

@@ -2,6 +2,10 @@
 Russian name. CSV headers, plot axes and legends, the rich summary and the report take their
 names from here; the renderers keep only sentence templates.
 
+The commands other than ``run`` (task2, aggregate) and the plots take their row labels,
+headings and sentence templates from the same table (the block marked ``--- nom`` at its end);
+a name may be a template with ``{fields}`` that :func:`name` fills.
+
 Symbols are the course's (Артоболевский, «Теория механизмов и машин», ch. 16–17; the course
 worksheet on the two-stage compressor): ω_ср, M_Д, A_С, ΔT_нб, J_I, J_II. ``symbol`` is the
 course's plain-text form (Russian subscripts), ``symbol_en`` the English text's where it differs
@@ -50,6 +54,15 @@ class Term:
 
 def _t(symbol, math, unit, en, ru, symbol_en="", math_en=""):
     return Term(symbol, math, unit, en, ru, symbol_en, math_en)
+
+
+def _ci(symbol_en, unit, en, ru, symbol_ru=""):
+    """A label of task2 / aggregate / a plot, given as those tables were written: the English
+    symbol first and the course's (Russian) one only where it differs (M_Д for M_D); no mathtext."""
+    return Term(symbol_ru or symbol_en, "", unit, en, ru, symbol_en if symbol_ru else "")
+
+
+LANGS = ("en", "ru")
 
 
 # -- the table ------------------------------------------------------------------------------------
@@ -447,6 +460,287 @@ TERMS: dict[str, Term] = {
                          "план положений механизма"),
     "plan_length": _t("", "", "mm", "length on the drawing", "длина на чертеже"),
     # --- end plans ---
+    # --- nom: task2 and aggregate (were render/nomenclature_ci.py), the engine's and the force
+    # analysis's plot labels (were inline in render/plots_engine.py, render/plots_forces.py).
+    # Names may be templates with {fields} (name(key, lang, **fields) fills them); text handed
+    # to rich in a table title keeps its square brackets escaped (\\[). Keys the table above
+    # already had for another meaning carry the prefix t2_ (task 2's row labels).
+    # -- quantities of task 2 ----------------------------------------------------------------
+    "t2_J": _ci("J", "kg·m²", "J (reduced inertia)", "J_пр (приведённый момент инерции)", "J_пр"),
+    "omega0": _ci("ω0", "rad/s", "ω0 (at φ = 0)", "ω0 (при φ = 0)"),
+    "t2_omega_mean": _ci("ω_ср", "rad/s", "ω_ср = (ω_max + ω_min)/2", "ω_ср = (ω_max + ω_min)/2"),
+    "t2_delta": _ci("δ", "", "δ = (ω_max − ω_min)/ω_ср",
+                      "δ = (ω_max − ω_min)/ω_ср, коэффициент неравномерности"),
+    "t2_delta_T_max": _ci("ΔT_нб", "J", "ΔT_нб = A_max − A_min", "ΔT_нб = A_max − A_min"),
+    "t2_P": _ci("P", "W", "power = mean M_D · ω_ср", "мощность = среднее M_Д · ω_ср"),
+    "t2_J_required": _ci("J", "kg·m²", "J for δ = {delta}", "J_пр для δ = {delta}", "J_пр"),
+    "t2_J_required_how": _ci("", "", "ΔT_нб/(δ·ω_ср²)", "ΔT_нб/(δ·ω_ср²)"),
+    "rim_mass": _ci("m", "kg", "rim mass at R = {R} m", "масса обода при R = {R} м"),
+    "rim_mass_how": _ci("", "", "m = J/R²", "m = J_пр/R²"),
+    "t2_M_D": _ci("M_D", "N·m", "M_D", "M_Д", "M_Д"),
+    "t2_M_C": _ci("M_C", "N·m", "M_C", "M_С", "M_С"),
+    "t2_A": _ci("A", "J", "A", "A"),
+    "t2_omega": _ci("ω", "rad/s", "ω", "ω"),
+    "t2_phi_deg": _ci("φ°", "deg", "φ°", "φ°"),
+    "phi_pi": _ci("φ/π", "", "φ/π", "φ/π"),
+    "rpm": _ci("n", "rpm", "{n} rpm", "{n} об/мин"),
+    "rpm_at": _ci("", "", "{n} rpm at {angle}", "{n} об/мин при {angle}"),
+    "angle": _ci("φ", "deg", "φ = {deg}° ({pi}π rad)", "φ = {deg}° ({pi}π рад)"),
+    "angle_unknown": _ci("", "", "(angle not given)", "(угол не задан)"),
+    # --- flywheel (task2's designed rim; were in render/nomenclature_ci.py) ---
+    "rim_design": _ci("", "", "rim (share {share} of J, b/t = {ratio})",
+                      "обод (доля {share} от J_пр, b/t = {ratio})"),
+    "rim_design_dims": _ci("", "m", "D_mean = {D}, t = {t}, b = {b} m; m = {m} kg",
+                           "D_ср = {D}, t = {t}, b = {b} м; m = {m} кг"),
+    "rim_design_how": _ci("", "", "v = {v} m/s ({src}), σ = ρ·v² = {sigma} MPa; m = share·J/R²",
+                          "v = {v} м/с ({src}), σ = ρ·v² = {sigma} МПа; m = доля·J_пр/R²"),
+    "rim_from_stress": _ci("", "", "from σ_allow", "по σ_доп"),
+    "rim_from_given": _ci("", "", "given", "задана"),
+    # -- task 2: headings and sentences -------------------------------------------------------
+    "t2_seed_title": _ci("", "", "«Задача 2», {profile} resistance moment",
+                           "Задача 2, момент сопротивления — {profile}"),
+    "t2_seed_source": _ci("", "", "textbook task «Задача 2» (steady motion under given moment "
+                            "graphs, table 27)", "задача «Задача 2» (установившееся движение "
+                            "при заданных графиках моментов, табл. 27)"),
+    "triangle": _ci("", "", "triangle", "треугольник"),
+    "rectangle": _ci("", "", "rectangle", "прямоугольник"),
+    "t2_balance": _ci("", "", "cycle balance ∮M_D dφ = ∮M_C dφ gives {name} = {value} N·m "
+                                "(work per cycle {work} J)",
+                        "баланс работ за цикл ∮M_Д dφ = ∮M_С dφ даёт {name} = {value} Н·м "
+                        "(работа за цикл {work} Дж)"),
+    "t2_given": _ci("", "", "M_D = {M_D} N·m, M_C = {M_C} N·m (given)",
+                      "M_Д = {M_D} Н·м, M_С = {M_C} Н·м (заданы)"),
+    "t2_unsteady": _ci("", "", "[yellow]the motion is not steady:[/yellow] the work over the cycle "
+                                 "is {work} J, so ω after one cycle is {omega_end} rad/s "
+                                 "(ω0 = {omega0} rad/s)",
+                         "[yellow]движение не установившееся:[/yellow] работа за цикл {work} Дж, "
+                         "поэтому ω в конце цикла {omega_end} рад/с (ω0 = {omega0} рад/с)"),
+    "t2_segments": _ci("", "", "Segments: ½·J·(ω² − ω0²) = A(φ) = ∫(M_D − M_C) dφ\n"
+                                 "φ \\[deg], M \\[N·m], A \\[J], ω \\[rad/s]",
+                         "Участки: ½·J_пр·(ω² − ω0²) = A(φ) = ∫(M_Д − M_С) dφ\n"
+                         "φ \\[град], M \\[Н·м], A \\[Дж], ω \\[рад/с]"),
+    "point": _ci("", "", "point", "точка"),
+    "crossing_MD_MC": _ci("", "", "M_D = M_C", "M_Д = M_С"),
+    "crossing": _ci("", "", "crossing", "пересечение"),
+    "bound": _ci("", "", "bound", "граница"),
+    "results": _ci("", "", "Results", "Результаты"),
+    "quantity": _ci("", "", "quantity", "величина"),
+    "value": _ci("", "", "value", "значение"),
+    "unit": _ci("", "", "unit", "ед."),
+    # -- task 2: angular acceleration and time (shown with --epsilon or --at) -------------------
+    "t2_motion": _ci("", "", "Acceleration and time: ε(φ) = (M_D − M_C)/J, t(φ) = ∫₀^φ dφ/ω",
+                       "Угловое ускорение и время: ε(φ) = (M_Д − M_С)/J_пр, t(φ) = ∫₀^φ dφ/ω"),
+    "t2_epsilon": _ci("ε", "rad/s²", "ε", "ε"),
+    "t2_epsilon_max": _ci("ε_max", "rad/s²", "ε_max (largest over the cycle)",
+                         "ε_max (наибольшее за цикл)"),
+    "t2_epsilon_min": _ci("ε_min", "rad/s²", "ε_min (smallest over the cycle)",
+                         "ε_min (наименьшее за цикл)"),
+    "t2_cycle_time": _ci("T_ц", "s", "cycle time ∫₀^Φ dφ/ω", "время цикла ∫₀^Φ dφ/ω"),
+    "t2_energy_fluctuation_coefficient": _ci("C_E", "", "C_E = ΔT_нб / work per cycle",
+                                               "C_E = ΔT_нб / работа за цикл"),
+    "at_angle": _ci("", "", "at {angle}", "при {angle}"),
+    "t2_phases": _ci("", "", "Phases between the extremes of ω (crossings and jumps of M_D − M_C)",
+                       "Участки между экстремумами ω (пересечения и скачки M_Д − M_С)"),
+    "phi_from": _ci("φ", "deg", "from φ°", "от φ°"),
+    "phi_to": _ci("φ", "deg", "to φ°", "до φ°"),
+    "trend": _ci("", "", "speed", "скорость"),
+    "trend_up": _ci("", "", "rises (M_D > M_C)", "растёт (M_Д > M_С)"),
+    "trend_down": _ci("", "", "falls (M_D < M_C)", "падает (M_Д < M_С)"),
+    "trend_steady": _ci("", "", "constant (M_D = M_C)", "постоянна (M_Д = M_С)"),
+    "t_start": _ci("t", "s", "t at start \\[s]", "t в начале \\[с]"),
+    "duration": _ci("Δt", "s", "duration \\[s]", "длительность \\[с]"),
+    "t2_at": _ci("", "", "At the asked angles", "В заданных положениях"),
+    "t2_t": _ci("t", "s", "t \\[s]", "t \\[с]"),
+    "phi_col": _ci("φ", "deg", "φ°", "φ°"),
+    "omega_col": _ci("ω", "rad/s", "ω \\[rad/s]", "ω \\[рад/с]"),
+    "epsilon_col": _ci("ε", "rad/s²", "ε \\[rad/s²]", "ε \\[рад/с²]"),
+    "t2_flywheel_mass": _ci("m", "kg", "mass at k = {k} m", "масса при k = {k} м"),
+    "flywheel_mass_how": _ci("", "", "m = J/k²", "m = J_пр/k²"),
+    "t2_power": _ci("", "", "mean power P = {P} W at ω_ср: mean {name} = P/ω_ср = {T} N·m",
+                      "средняя мощность P = {P} Вт при ω_ср: среднее {name} = P/ω_ср = {T} Н·м"),
+    # -- task 2: the plot ----------------------------------------------------------------------
+    "t2_plot_epsilon": _ci("ε", "rad/s²", "ε(φ) = (M_D − M_C)/J", "ε(φ) = (M_Д − M_С)/J_пр"),
+    "t2_plot_epsilon_axis": _ci("ε", "rad/s²", "ε [rad/s²]", "ε [рад/с²]"),
+    "t2_plot_epsilon_max": _ci("ε_max", "rad/s²", "ε_max = {value} rad/s² at {deg}°",
+                                 "ε_max = {value} рад/с² при {deg}°"),
+    "t2_plot_epsilon_min": _ci("ε_min", "rad/s²", "ε_min = {value} rad/s² at {deg}°",
+                                 "ε_min = {value} рад/с² при {deg}°"),
+    "t2_plot_MD": _ci("M_D", "N·m", "M_D (driving)", "M_Д (движущий)", "M_Д"),
+    "t2_plot_MC": _ci("M_C", "N·m", "M_C (resistance)", "M_С (сопротивления)", "M_С"),
+    "t2_plot_moment": _ci("M", "N·m", "moment [N·m]", "момент [Н·м]"),
+    "t2_plot_A": _ci("A", "J", "A(φ) = ∫(M_D − M_C) dφ", "A(φ) = ∫(M_Д − M_С) dφ"),
+    "t2_plot_A_axis": _ci("A", "J", "A [J]", "A [Дж]"),
+    "t2_plot_omega": _ci("ω", "rad/s", "ω(φ)", "ω(φ)"),
+    "t2_plot_A_areas": _ci("", "", "energy at the crossings", "энергия в точках пересечения"),
+    "t2_plot_omega_areas": _ci("", "", "ω at the crossings", "ω в точках пересечения"),
+    "t2_plot_omega_mean": _ci("ω_ср", "rad/s", "ω_ср", "ω_ср"),
+    "t2_plot_omega_axis": _ci("ω", "rad/s", "ω [rad/s]", "ω [рад/с]"),
+    "t2_plot_phi_axis": _ci("φ", "deg", "φ [deg]", "φ [град]"),
+    "t2_plot_crossing_no": _ci("", "", "crossing number", "номер пересечения"),
+    "t2_plot_title": _ci("", "", "task 2: δ = {delta}, ΔT_нб = {dT} J",
+                           "задача 2: δ = {delta}, ΔT_нб = {dT} Дж"),
+    "plot_written": _ci("", "", "plot written to {path}", "график записан в {path}"),
+    # -- aggregate: the model ------------------------------------------------------------------
+    "ag_rotors": _ci("", "", "Rotors reduced to shaft I (J·u², u = ω/ω_I)",
+                       "Массы, приведённые к валу I (J·u², u = ω/ω_I)"),
+    "rotor": _ci("", "", "rotor", "масса"),
+    "J_reduced": _ci("J", "kg·m²", "J_reduced [kg·m²]", "J_пр [кг·м²]", "J_пр"),
+    "u": _ci("u", "", "u", "u"),
+    "ag_connections": _ci("", "", "Connections reduced to shaft I (c·u²)",
+                            "Упругие связи, приведённые к валу I (c·u²)"),
+    "between": _ci("", "", "between", "между"),
+    "c": _ci("c", "N·m/rad", "c [N·m/rad]", "жёсткость c [Н·м/рад]"),
+    "damping": _ci("b", "N·m·s/rad", "damping [N·m·s/rad]", "демпфирование [Н·м·с/рад]"),
+    "rotor_motor": _ci("", "", "motor J_Д", "двигатель J_Д"),
+    "rotor_machine": _ci("", "", "machine J_пр.I", "машина J_пр.I"),
+    "ag_equations": _ci("", "", "Equations (9.24): Σ_j a_ij·q̈_j + Σ_j c_ij·q_j = Q_i, "
+                                  "q1 = φ1, q_(k+1) = φ_(k+1) − φ_k",
+                          "Уравнения (9.24): Σ_j a_ij·q̈_j + Σ_j c_ij·q_j = Q_i, обобщённые "
+                          "координаты q1 = φ1, q_(k+1) = φ_(k+1) − φ_k"),
+    "a_ij": _ci("a_ij", "kg·m²", "inertia coefficients a_ij", "инерционные коэффициенты a_ij"),
+    "c_ij": _ci("c_ij", "N·m/rad", "stiffness coefficients c_ij", "коэффициенты жёсткости c_ij"),
+    "matrix_j": _ci("", "", "j = {j}", "j = {j}"),
+    "matrix_i": _ci("", "", "i = {i}", "i = {i}"),
+    "ag_equations_fixed": _ci("", "", "Equations: Σ_j a_ij·φ̈_j + Σ_j c_ij·φ_j = 0 in the rotors' "
+                                        "absolute angles (a shaft fixed to the frame: no rigid "
+                                        "rotation; a = M, c = K)",
+                                "Уравнения: Σ_j a_ij·φ̈_j + Σ_j c_ij·φ_j = 0 в абсолютных углах масс "
+                                "(вал заделан в стойку: вращения как твёрдого тела нет; a = M, c = K)"),
+    "ag_equations_tree": _ci("", "", "Equations (9.24): Σ_j a_ij·q̈_j + Σ_j c_ij·q_j = Q_i, "
+                                       "q1 = φ of the first rotor, q_(k+1) = φ_to − φ_from of shaft k",
+                               "Уравнения (9.24): Σ_j a_ij·q̈_j + Σ_j c_ij·q_j = Q_i, обобщённые "
+                               "координаты q1 = φ первой массы, q_(k+1) = φ_to − φ_from вала k"),
+    "frame": _ci("", "", "frame", "стойка"),
+    # -- aggregate: modes, nodes and shafts (shown with --modes) -------------------------------
+    "ag_mode_nodes": _ci("", "", "Modes: frequencies and nodes (points that stand still)",
+                           "Формы колебаний: частоты и узлы (неподвижные точки)"),
+    "rpm_col": _ci("n", "rpm", "n [vib/min]", "n [кол/мин]"),
+    "nodes": _ci("", "", "nodes", "узлы"),
+    "node_shaft": _ci("", "", "shaft {a}–{b}: {dist}{frac} % of its compliance from {a}",
+                        "вал {a}–{b}: {dist}{frac} % податливости от {a}"),
+    "node_dist": _ci("", "m", "{d} m from {a}, ", "{d} м от {a}, "),
+    "node_rotor": _ci("", "", "rotor {name} stands still", "масса {name} неподвижна"),
+    "node_frame": _ci("", "", "the fixed end {name}", "заделка {name}"),
+    "ag_shafts": _ci("", "", "Shafts: stiffness and equivalent length (uniform shaft of the first "
+                               "piece's diameter)",
+                       "Валы: жёсткость и приведённая длина (гладкий вал диаметра первого участка)"),
+    "gear_ratio": _ci("i", "", "gear i", "передача i"),
+    "c_input": _ci("c", "N·m/rad", "c (input side) [N·m/rad]", "c (со стороны входа) [Н·м/рад]"),
+    "length": _ci("L", "m", "length [m]", "длина [м]"),
+    "equivalent_length": _ci("L_eq", "m", "L_eq [m]", "L_прив [м]"),
+    "d_ref": _ci("d", "m", "at d [m]", "при d [м]"),
+    # -- aggregate: natural frequencies, resonance -----------------------------------------------
+    "ag_modes": _ci("", "", "Natural frequencies (K·x = ω²·M·x)",
+                      "Собственные частоты (K·x = ω²·M·x)"),
+    "mode": _ci("", "", "mode", "№ формы"),
+    "omega_n": _ci("ω", "rad/s", "ω [rad/s]", "ω [рад/с]"),
+    "f_n": _ci("f", "Hz", "f [Hz]", "f [Гц]"),
+    "shape": _ci("", "", "shape (φ, largest = 1)", "форма колебаний (φ, наибольшая = 1)"),
+    "rigid_body": _ci("", "", "rigid body", "твёрдое тело"),
+    "ag_no_motor": _ci("", "", "no [motor]: natural frequencies only",
+                         "нет [motor]: только собственные частоты"),
+    "ag_forcing": _ci("", "", "forcing ω_III = {w} rad/s ({f} Hz) at the steady speed "
+                                "ω_I = {omega} rad/s ({n} rev/min)",
+                        "вынуждающая частота ω_III = {w} рад/с ({f} Гц) при установившейся скорости "
+                        "ω_I = {omega} рад/с ({n} об/мин)"),
+    "ag_resonance": _ci("", "", "Resonance margins", "Отстройка от резонанса"),
+    "f_n_col": _ci("f_n", "Hz", "f_n [Hz]", "f_n [Гц]"),
+    "ratio": _ci("", "", "ω_forcing/ω_n", "ω_вын/ω_n"),
+    "margin": _ci("", "", "margin |1 − ω_f/ω_n|", "отстройка |1 − ω_вын/ω_n|"),
+    # -- aggregate: steady state and start-up ------------------------------------------------------
+    "ag_steady": _ci("", "", "Steady state (closed form; solve_ivp check on the periodic orbit)",
+                       "Установившийся режим (точное решение; проверка solve_ivp на периодической "
+                       "траектории)"),
+    "solve_ivp": _ci("", "", "solve_ivp", "solve_ivp"),
+    "twist_mean": _ci("q2", "rad", "twist q2 = φ2 − φ1, mean",
+                        "угол закручивания q2 = φ2 − φ1, среднее"),
+    "twist_amp": _ci("q2", "rad", "twist q2, amplitude", "угол закручивания q2, амплитуда"),
+    "moment_mean": _ci("M_у", "N·m", "elastic moment c·(φ1 − φ2) = −c·q2, mean",
+                         "упругий момент c·(φ1 − φ2) = −c·q2, среднее"),
+    "moment_amp": _ci("M_у", "N·m", "elastic moment −c·q2, amplitude",
+                        "упругий момент −c·q2, амплитуда"),
+    "omega_motor": _ci("ω1", "rad/s", "ω1 (motor) min … max", "ω1 (двигатель) min … max"),
+    "delta_motor": _ci("δ", "", "δ motor", "δ двигателя"),
+    "omega_machine": _ci("ω2", "rad/s", "ω2 (machine, own shaft) min … max",
+                           "ω2 (машина, на своём валу) min … max"),
+    "delta_machine": _ci("δ", "", "δ machine", "δ машины"),
+    "startup_peak": _ci("", "N·m", "start-up: peak elastic moment",
+                          "пуск: наибольший упругий момент"),
+    "startup_over": _ci("", "s", "over {t} s", "за {t} с"),
+    "startup_time": _ci("t", "s", "start-up: time to 95 % of ω1", "пуск: время до 95 % ω1"),
+    "note": _ci("", "", "note: {note}", "примечание: {note}"),
+    "note_radau": _ci("", "", "solve_ivp check: 5 forcing periods are {fast:.4g} periods of the "
+                                "highest natural frequency {f_top:.6g} Hz, more than the explicit "
+                                "method's {limit}: integrated with the implicit Radau method and the "
+                                "constant Jacobian, which follows the forced motion but damps that "
+                                "mode's own oscillation",
+                        "проверка solve_ivp: 5 периодов возмущения — это {fast:.4g} периодов высшей "
+                        "собственной частоты {f_top:.6g} Гц, больше предела явного метода ({limit}): "
+                        "интегрирование неявным методом Radau с постоянной матрицей Якоби, который "
+                        "следует вынужденному движению, но гасит собственные колебания этой формы"),
+    "note_cap_linear": _ci("", "", "start-up: integrated over {t_end:.4g} s = {limit} periods of the "
+                                     "highest natural frequency {f_top:.6g} Hz (the cap), not the "
+                                     "default {wanted:.4g} s (the longer of five time constants and 20 "
+                                     "forcing periods); --t-end sets the duration",
+                             "пуск: проинтегрирован за {t_end:.4g} с = {limit} периодов высшей "
+                             "собственной частоты {f_top:.6g} Гц (предел), а не {wanted:.4g} с по "
+                             "умолчанию (большее из пяти постоянных времени и 20 периодов "
+                             "возмущения); длительность задаёт --t-end"),
+    "note_cap_constant": _ci("", "", "start-up: integrated over {t_end:.4g} s = {limit} periods of "
+                                       "the highest natural frequency {f_top:.6g} Hz (the cap), not the "
+                                       "default {wanted:.4g} s (20 forcing periods); --t-end sets the "
+                                       "duration",
+                               "пуск: проинтегрирован за {t_end:.4g} с = {limit} периодов высшей "
+                               "собственной частоты {f_top:.6g} Гц (предел), а не {wanted:.4g} с по "
+                               "умолчанию (20 периодов возмущения); длительность задаёт --t-end"),
+    # -- aggregate: the plot ---------------------------------------------------------------------
+    "ag_plot_startup": _ci("", "", "start-up", "пуск"),
+    "ag_plot_steady": _ci("", "", "steady state", "установившийся режим"),
+    "ag_plot_omega1": _ci("ω1", "rad/s", "ω1, {name}", "ω1, {name}"),
+    "ag_plot_omegaN": _ci("ω", "rad/s", "ω{n}, {name} (reduced to shaft I)",
+                            "ω{n}, {name} (приведена к валу I)"),
+    "ag_plot_omega_axis": _ci("ω", "rad/s", "ω [rad/s]", "ω [рад/с]"),
+    "ag_plot_moment": _ci("M_у", "N·m", "elastic moment c·(φ1 − φ2) = −c·q2",
+                            "упругий момент c·(φ1 − φ2) = −c·q2"),
+    "ag_plot_moment_axis": _ci("M", "N·m", "moment [N·m]", "момент [Н·м]"),
+    "ag_plot_t_axis": _ci("t", "s", "t [s]", "t [с]"),
+    "ag_plot_title": _ci("", "", "machine aggregate", "машинный агрегат"),
+    # -- the four-stroke indicator diagram (render/plots_engine.py) ---------------------------
+    "engine_intake": _ci("", "", "intake", "впуск"),
+    "engine_compression": _ci("", "", "compression", "сжатие"),
+    "engine_expansion": _ci("", "", "expansion", "расширение"),
+    "engine_exhaust": _ci("", "", "exhaust", "выпуск"),
+    "engine_table": _ci("", "", "{k}: table", "{k}: таблица"),
+    "engine_s_axis": _ci("s", "", "relative piston travel s from the head",
+                         "относительное перемещение поршня s от головки"),
+    "engine_p_axis": _ci("p/p_max", "", "p / p_max", "p / p_max"),
+    "engine_p_MPa": _ci("p", "MPa", "p, MPa (gauge)", "p, МПа (избыточное)"),
+    "engine_phi": _ci("φ", "deg", "crank angle φ, °", "угол поворота кривошипа φ, °"),
+    "engine_title": _ci("", "", "{t}: four-stroke indicator diagram, cylinder {c}",
+                        "{t}: индикаторная диаграмма четырёхтактного цилиндра {c}"),
+    "engine_fires": _ci("", "deg", "fires at {a:.1f}°", "воспламенение при {a:.1f}°"),
+    # -- the force analysis's plots (render/plots_forces.py) ------------------------------------
+    "forces_plot_reactions": _ci("", "", r"reactions in the joints $|R_{ij}|(\varphi)$, $R_{ij}$: the "
+                                 "force of link i on link j",
+                                 r"реакции в кинематических парах $|R_{ij}|(\varphi)$, $R_{ij}$ — "
+                                 "сила действия звена i на звено j"),
+    "forces_plot_moment": _ci("", "", r"balancing moment on the crank $M_y(\varphi)$, three ways",
+                              r"уравновешивающий момент на кривошипе $M_у(\varphi)$, три способа"),
+    "forces_plot_moment_steady": _ci("", "", r"balancing moment on the crank $M_y(\varphi)$, "
+                                     "steady motion $\\omega$ = {w:.5g} rad/s",
+                                     r"уравновешивающий момент на кривошипе $M_у(\varphi)$, "
+                                     "равномерное вращение ω = {w:.5g} рад/с"),
+    "forces_plot_M_const": _ci("", "", "{s} = {v:.6g} {u} (constant, from the cycle balance)",
+                               "{s} = {v:.6g} {u} (постоянный, из условия цикла)"),
+    "forces_plot_hodographs": _ci("", "", "polar diagrams (hodographs) of the loads over the cycle",
+                                  "полярные диаграммы (годографы) нагрузок за цикл"),
+    "forces_plot_pin": _ci("", "", "load on the crank pin, in the crank's axes",
+                           "нагрузка на шатунную шейку в осях кривошипа"),
+    "forces_plot_bearing": _ci("", "", r"load on the main bearing $R_{10}$",
+                               r"нагрузка на коренной подшипник $R_{10}$"),
+    "forces_plot_shaking": _ci("", "", "shaking force on the frame", "сила, действующая на стойку"),
+    "forces_plot_curve": _ci("", "", "over the cycle, labels: φ, °", "за цикл, подписи: φ, °"),
+    "forces_plot_origin": _ci("", "", "origin (zero force)", "начало координат (нулевая сила)"),
 }
 
 # the load names inside "M {load}": "gas HP", "gravity 2", "force punch", "couple c", "moment m"
@@ -517,10 +811,31 @@ def member(key: str, lang: str = "en") -> str:
     return load_name(term(key)[1], lang)
 
 
-def name(key: str, lang: str = "en") -> str:
-    """The quantity's name in ``lang`` ("reduced moment: gas HP")."""
+def name(key: str, lang: str = "en", **fields) -> str:
+    """The quantity's name in ``lang`` ("reduced moment: gas HP"); a template's ``{fields}``
+    filled from ``fields`` (none given: the name as it is).
+
+    >>> name("t2_balance", "ru", name="M_С", value="60", work="94.2478")
+    'баланс работ за цикл ∮M_Д dφ = ∮M_С dφ даёт M_С = 60 Н·м (работа за цикл 94.2478 Дж)'
+    >>> name("omega_max"), name("t2_J", "ru")
+    ('ω_max', 'J_пр (приведённый момент инерции)')
+    """
     t, x = term(key)
-    return (t.ru if lang == "ru" else t.en).format(x=load_name(x, lang))
+    template = t.ru if lang == "ru" else t.en
+    if x:
+        fields = {"x": load_name(x, lang), **fields}
+    return template.format(**fields) if fields else template
+
+
+def rotor_name(rotor: str, lang: str = "en") -> str:
+    """A rotor's name in ``lang`` (`flywheel aggregate`): the two-mass model's own names
+    translate, a user's stay."""
+    if lang != "ru":
+        return rotor
+    for key in ("rotor_motor", "rotor_machine"):
+        if rotor == TERMS[key].en:
+            return TERMS[key].ru
+    return rotor
 
 
 def symbol(key: str, lang: str = "en") -> str:

@@ -4,44 +4,26 @@ The only module that imports matplotlib, and only inside its functions, so ``imp
 stays fast and headless. Each ``figure_*`` function draws one figure from a
 :class:`~flywheel.dynamics.results.Results` and returns it; :func:`write_plots` saves them all.
 
-The figures are plain :class:`matplotlib.figure.Figure` objects rendered by the Agg canvas:
-they never go through pyplot, so they need no display, register no global state (nothing to
-leak or to close) and leave the caller's backend alone (a notebook keeps its own). The style is
-reset to matplotlib's defaults plus a few fixed settings for every figure, so a user's
-matplotlibrc cannot change the files; with fixed sizes, dpi and no metadata the PNG bytes are
-the same for the same input.
+The figures are drawn with the toolkit of :mod:`flywheel.render.figure` (pyplot-free figures
+with fixed margins, one fixed style, the legend outside the axes, the φ axis): with fixed
+sizes, dpi and no metadata the PNG bytes are the same for the same input.
 
-Renderers compute no physics: everything drawn is read from the results; the only arithmetic
-here is geometry for drawing (degrees, guide directions, slider travel along its guide).
+Renderers compute nothing: everything drawn is read from the results — the quantities, and
+what the scheme shows (which points move, the sliders and their guides, the points on each
+link, the slider travel) from ``results.drawing`` (:mod:`flywheel.linkage.drawing`); the only
+arithmetic here is layout (degrees, where a symbol or a label goes).
 """
 from __future__ import annotations
 
 import math
-from contextlib import contextmanager
 from pathlib import Path
 
 import numpy as np
 
+from flywheel.render import figure as fg
 from flywheel.render import nomenclature as nm
 
-DPI = 120
-_LEGEND_W = 3.9            # room for a legend right of the axes [in]
 _SCHEME_LEGEND_W = 2.6     # room for the scheme's legend [in]
-_WIDE = (11.0, 5.0)         # one φ plot and its legend [in]
-_TALL = (11.0, 7.0)         # two stacked φ plots [in]
-_RC = {
-    "font.family": "DejaVu Sans",
-    "mathtext.fontset": "dejavusans",
-    "font.size": 9.0,
-    "axes.titlesize": 10.0,
-    "axes.labelsize": 9.0,
-    "legend.fontsize": 8.0,
-    "axes.grid": True,
-    "grid.alpha": 0.35,
-    "lines.linewidth": 1.4,
-    "figure.dpi": DPI,
-    "savefig.dpi": DPI,
-}
 
 # -- words ----------------------------------------------------------------------------------------
 # Sentence templates only: every quantity's symbol, name and unit comes from the nomenclature
@@ -141,199 +123,63 @@ def _sub(symbol: str, name: str, norm: bool = False) -> str:
     return f"$|{symbol}_q|$ {name}" if norm else f"${symbol}$ {name}"
 
 
-# -- figure plumbing ------------------------------------------------------------------------------
-_styled = 0        # depth of nested _style() blocks: only the outermost one sets the style
-
-
-@contextmanager
-def _style():
-    """matplotlib's defaults plus _RC, whatever the user's matplotlibrc says; the caller's
-    settings come back on exit."""
-    global _styled
-    if _styled:
-        yield
-        return
-    import matplotlib
-
-    with matplotlib.rc_context():
-        matplotlib.rcdefaults()
-        matplotlib.rcParams.update(_RC)
-        _styled += 1
-        try:
-            yield
-        finally:
-            _styled -= 1
-
-
-def _figure(size, nrows=1, ncols=1, sharex=False, squeeze=True, *, left=0.85, right=_LEGEND_W,
-            bottom=0.6, top=0.4, hspace=0.35, wspace=0.45):
-    """A pyplot-free Figure and its axes, with fixed margins given in inches (a layout engine
-    would cost half the time of a plot). ``right`` leaves room for a legend outside the axes."""
-    from matplotlib.figure import Figure
-
-    w, h = size
-    fig = Figure(figsize=size, dpi=DPI)
-    axes = fig.subplots(nrows, ncols, sharex=sharex, squeeze=squeeze)
-    fig.subplots_adjust(left=left / w, right=1 - right / w, bottom=bottom / h, top=1 - top / h,
-                        hspace=hspace, wspace=wspace)
-    return fig, axes
-
-
-def _drawn(build):
-    """Run ``build`` inside the fixed style; return its figure."""
-    with _style():
-        return build()
-
-
-def _title(results, what: str) -> str:
-    return f"{results.title}: {what}"
-
-
 def _phi_deg(results) -> np.ndarray:
     return np.degrees(results.phi)
-
-
-def _phi_axis(ax, lang: str, label: bool = True, cycle_deg: int = 360) -> None:
-    """φ over the cycle (360°, 720° …), a tick every 30° per revolution."""
-    ax.set_xlim(0.0, float(cycle_deg))
-    ax.set_xticks(np.arange(0, cycle_deg + 1, 30 * cycle_deg // 360))
-    if label:
-        ax.set_xlabel(nm.axis("phi_deg", lang))
-
-
-def _legend(ax, **kw):
-    """Legend outside the axes, on the right: it never hides a curve."""
-    return ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), borderaxespad=0.0, **kw)
-
-
-def _moving_points(results) -> list[str]:
-    return [n for n, pm in results.kinematics.points.items()
-            if np.any(pm.v_q != 0) or np.any(pm.a_q != 0)]
-
-
-def _fixed_points(results) -> list[str]:
-    return [n for n, pm in results.kinematics.points.items()
-            if not (np.any(pm.v_q != 0) or np.any(pm.a_q != 0))]
-
-
-def _turning_links(results) -> list[str]:
-    """Links other than the crank that turn (ω_q not identically zero), by name."""
-    crank = results.links_drawn[0][0] if results.links_drawn else None
-    return [n for n, lm in results.kinematics.links.items()
-            if n != crank and (np.any(lm.omega_q != 0) or np.any(lm.eps_q != 0))]
-
-
-def _guided_sliders(results) -> list[tuple[str, str, float]]:
-    """(slider link, its joint, guide angle [rad]) of every slider on a fixed guide."""
-    drawn = {name for name, _ in results.links_drawn}
-    out = []
-    for name, lm in results.kinematics.links.items():
-        if name in drawn or np.any(lm.omega_q != 0) or lm.theta is None:
-            continue
-        if lm.ref in results.kinematics.points:
-            out.append((name, lm.ref, float(lm.theta[0])))
-    return out
-
-
-def _moving_blocks(results) -> list[tuple[str, str]]:
-    """(slider link, its pivot point) of sliders on turning links (RPR, кулиса)."""
-    drawn = {name for name, _ in results.links_drawn}
-    return [(name, lm.ref) for name, lm in results.kinematics.links.items()
-            if name not in drawn and np.any(lm.omega_q != 0) and lm.theta is not None
-            and lm.ref in results.kinematics.points]
-
-
-def _link_members(results) -> list[tuple[str, list[str]]]:
-    """``links_drawn`` with every other joint that moves rigidly with the link added (e.g. the
-    point of a rocker that drives the next dyad beyond its slider block): a point X rides on
-    link L if X − P, turned back by L's angle θ, stays constant (P: L's first point)."""
-    P, L = results.kinematics.points, results.kinematics.links
-    joints = list(dict.fromkeys(p for _, pts in results.links_drawn for p in pts))
-    allr = np.concatenate([pm.r for pm in P.values()])
-    tol = 1e-9 * max(float(np.ptp(allr[:, 0])), float(np.ptp(allr[:, 1])), 1e-12)
-    out = []
-    for link, pts in results.links_drawn:
-        members = list(pts)
-        lm = L.get(link)
-        if lm is not None and lm.theta is not None and pts:
-            c, s = np.cos(lm.theta), np.sin(lm.theta)
-            base = P[pts[0]].r
-            for x in joints:
-                if x in members:
-                    continue
-                rel = P[x].r - base
-                local = np.stack([rel[:, 0] * c + rel[:, 1] * s, -rel[:, 0] * s + rel[:, 1] * c])
-                if np.all(np.ptp(local, axis=1) <= tol):
-                    members.append(x)
-        out.append((link, members))
-    return out
-
-
-def _slider_travel(results, joint: str, angle: float) -> np.ndarray:
-    """Distance [m] along the guide from the dead centre farther from the crank pivot."""
-    pm = results.kinematics.points[joint]
-    u = np.array([math.cos(angle), math.sin(angle)])
-    x = pm.r @ u
-    fixed = _fixed_points(results)
-    pivot = results.kinematics.points[fixed[0]].r[0] if fixed else np.zeros(2)
-    i_hi, i_lo = int(np.argmax(x)), int(np.argmin(x))
-    far = i_hi if (np.linalg.norm(pm.r[i_hi] - pivot) >= np.linalg.norm(pm.r[i_lo] - pivot)) else i_lo
-    return np.abs(x - x[far])
 
 
 # -- the figures -------------------------------------------------------------------------------------
 def figure_positions(results, lang: str = "en"):
     """x(φ), y(φ) of every moving point (constant coordinates left out) and slider travel."""
     def build():
-        sliders = _guided_sliders(results)
+        sliders = results.drawing.guided_sliders
         rows = 3 if sliders else 2
-        fig, axes = _figure((11.0, 9.0 if sliders else 7.0), rows, 1, sharex=True, hspace=0.12)
+        fig, axes = fg.figure((11.0, 9.0 if sliders else 7.0), rows, 1, sharex=True, hspace=0.12)
         deg = _phi_deg(results)
         for ax, k, key in ((axes[0], 0, "x"), (axes[1], 1, "y")):
-            for name in _moving_points(results):
+            for name in results.drawing.moving_points:
                 v = results.kinematics.points[name].r[:, k]
                 if np.ptp(v) > 1e-12 * max(1.0, np.max(np.abs(v))):
                     ax.plot(deg, v, label=_sub("xy"[k], name))
             ax.set_ylabel(nm.axis(key, lang))
-            _legend(ax)
+            fg.legend(ax)
         if sliders:
             for link, joint, angle in sliders:
-                axes[2].plot(deg, _slider_travel(results, joint, angle),
+                axes[2].plot(deg, results.drawing.slider_travel[link],
                              label=_t(lang, "travel_of", S=nm.tex("slider_travel", lang), s=link,
                                       p=joint))
             axes[2].set_ylabel(nm.axis("slider_travel", lang))
-            _legend(axes[2])
+            fg.legend(axes[2])
         for ax in axes:
-            _phi_axis(ax, lang, label=ax is axes[-1], cycle_deg=results.cycle_deg)
-        axes[0].set_title(_title(results, _t(lang, "positions")))
+            fg.phi_axis(ax, lang, label=ax is axes[-1], cycle_deg=results.cycle_deg)
+        axes[0].set_title(fg.title(results, _t(lang, "positions")))
         return fig
-    return _drawn(build)
+    return fg.drawn(build)
 
 
 def _analogue_figure(results, lang, which: str):
     def build():
-        fig, (ax1, ax2) = _figure(_TALL, 2, 1, sharex=True, hspace=0.12)
+        fig, (ax1, ax2) = fg.figure(fg.TALL, 2, 1, sharex=True, hspace=0.12)
         deg = _phi_deg(results)
-        for name in _moving_points(results):
+        for name in results.drawing.moving_points:
             pm = results.kinematics.points[name]
             vec = pm.v_q if which == "velocity" else pm.a_q
             ax1.plot(deg, np.hypot(vec[:, 0], vec[:, 1]),
                      label=_sub("v" if which == "velocity" else "a", name, norm=True))
         ax1.set_ylabel(nm.axis("vq_{point}" if which == "velocity" else "aq_{point}", lang))
         link_key = "omega_q_{link}" if which == "velocity" else "eps_q_{link}"
-        for name in _turning_links(results):
+        for name in results.drawing.turning_links:
             lm = results.kinematics.links[name]
             ax2.plot(deg, lm.omega_q if which == "velocity" else lm.eps_q,
                      label=f"{nm.tex(link_key, lang)} {_t(lang, 'link', n=name)}")
         ax2.axhline(0.0, color="0.3", linewidth=0.6)
         ax2.set_ylabel(nm.axis(link_key, lang))
         for ax in (ax1, ax2):
-            _legend(ax)
-        _phi_axis(ax1, lang, label=False, cycle_deg=results.cycle_deg)
-        _phi_axis(ax2, lang, cycle_deg=results.cycle_deg)
-        ax1.set_title(_title(results, _t(lang, which)))
+            fg.legend(ax)
+        fg.phi_axis(ax1, lang, label=False, cycle_deg=results.cycle_deg)
+        fg.phi_axis(ax2, lang, cycle_deg=results.cycle_deg)
+        ax1.set_title(fg.title(results, _t(lang, which)))
         return fig
-    return _drawn(build)
+    return fg.drawn(build)
 
 
 def figure_velocity_analogues(results, lang: str = "en"):
@@ -349,7 +195,7 @@ def figure_acceleration_analogues(results, lang: str = "en"):
 def figure_J_II(results, lang: str = "en"):
     """J_II(φ) with each link's share and its mean; dJ_II/dφ below."""
     def build():
-        fig, (ax1, ax2) = _figure(_TALL, 2, 1, sharex=True, hspace=0.12)
+        fig, (ax1, ax2) = fg.figure(fg.TALL, 2, 1, sharex=True, hspace=0.12)
         deg = _phi_deg(results)
         ax1.plot(deg, results.columns["J_II"].values, color="k", linewidth=2.0,
                  label=nm.tex("J_II", lang))
@@ -364,19 +210,19 @@ def figure_J_II(results, lang: str = "en"):
         ax2.axhline(0.0, color="0.3", linewidth=0.6)
         ax2.set_ylabel(nm.axis("dJ_II", lang))
         for ax in (ax1, ax2):
-            _legend(ax)
-        _phi_axis(ax1, lang, label=False, cycle_deg=results.cycle_deg)
-        _phi_axis(ax2, lang, cycle_deg=results.cycle_deg)
-        ax1.set_title(_title(results, nm.name_tex("J_II", lang)))
+            fg.legend(ax)
+        fg.phi_axis(ax1, lang, label=False, cycle_deg=results.cycle_deg)
+        fg.phi_axis(ax2, lang, cycle_deg=results.cycle_deg)
+        ax1.set_title(fg.title(results, nm.name_tex("J_II", lang)))
         return fig
-    return _drawn(build)
+    return fg.drawn(build)
 
 
 def figure_indicator(results, cylinder, lang: str = "en"):
     """p/p_max against s as the program used it (the grid values, split by the direction of
     the piston's motion), with the indicator tables as markers; p [MPa] on the right axis."""
     def build():
-        fig, ax = _figure((9.0, 5.8), right=0.85, bottom=1.35)
+        fig, ax = fg.figure((9.0, 5.8), right=0.85, bottom=1.35)
         s = np.asarray(cylinder.s, float)
         rel = np.asarray(cylinder.p, float) / cylinder.p_max
         towards = np.asarray(cylinder.towards_head, bool)
@@ -396,16 +242,16 @@ def figure_indicator(results, cylinder, lang: str = "en"):
                                                      lambda p: p * 1e6 / p_max))
         sec.set_ylabel(nm.axis("p_{cylinder}", lang, si="MPa"))
         ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.13), ncols=2)
-        ax.set_title(_title(results, _t(lang, "indicator", c=cylinder.name)))
+        ax.set_title(fg.title(results, _t(lang, "indicator", c=cylinder.name)))
         return fig
-    return _drawn(build)
+    return fg.drawn(build)
 
 
 def figure_piston_forces(results, lang: str = "en"):
     """Gas force on every piston (and any technological force) against φ, with the values at
     the report angles marked."""
     def build():
-        fig, ax = _figure(_WIDE)
+        fig, ax = fg.figure(fg.WIDE)
         deg = _phi_deg(results)
         names = set()
         for k, c in enumerate(results.cylinders):
@@ -423,11 +269,11 @@ def figure_piston_forces(results, lang: str = "en"):
                         label=_t(lang, "F_tech", n=nm.member(key, lang)))
         ax.axhline(0.0, color="0.3", linewidth=0.6)
         ax.set_ylabel(nm.axis("F_{load}", lang))
-        _phi_axis(ax, lang, cycle_deg=results.cycle_deg)
-        _legend(ax)
-        ax.set_title(_title(results, _t(lang, "forces")))
+        fg.phi_axis(ax, lang, cycle_deg=results.cycle_deg)
+        fg.legend(ax)
+        ax.set_title(fg.title(results, _t(lang, "forces")))
         return fig
-    return _drawn(build)
+    return fg.drawn(build)
 
 
 def figure_reduced_moments(results, lang: str = "en"):
@@ -437,7 +283,7 @@ def figure_reduced_moments(results, lang: str = "en"):
         small = [k for k in results.M_parts if k.startswith(("gravity ", "couple "))]
         big = [k for k in results.M_parts if k not in small]
         rows = 2 if small else 1
-        fig, axes = _figure(_TALL if small else _WIDE, rows, 1, sharex=True, squeeze=False,
+        fig, axes = fg.figure(fg.TALL if small else fg.WIDE, rows, 1, sharex=True, squeeze=False,
                             hspace=0.12)
         axes = axes[:, 0]
         deg = _phi_deg(results)
@@ -463,17 +309,17 @@ def figure_reduced_moments(results, lang: str = "en"):
             axes[1].axhline(0.0, color="0.3", linewidth=0.6)
             axes[1].set_ylabel(nm.axis("M {load}", lang))
         for a in axes:
-            _legend(a)
-            _phi_axis(a, lang, label=a is axes[-1], cycle_deg=results.cycle_deg)
-        ax.set_title(_title(results, _t(lang, "moments")))
+            fg.legend(a)
+            fg.phi_axis(a, lang, label=a is axes[-1], cycle_deg=results.cycle_deg)
+        ax.set_title(fg.title(results, _t(lang, "moments")))
         return fig
-    return _drawn(build)
+    return fg.drawn(build)
 
 
 def figure_works(results, lang: str = "en"):
     """A_D, A_C, A, T_II and ΔT_I against φ; ΔT_I's global max and min marked."""
     def build():
-        fig, ax = _figure(_WIDE)
+        fig, ax = fg.figure(fg.WIDE)
         deg = _phi_deg(results)
         cols = results.columns
         # ΔT_I differs from A only by T_II's change: A is drawn dashed, over it
@@ -492,18 +338,18 @@ def figure_works(results, lang: str = "en"):
                 ax.axvline(a, color="C3", linestyle=":", linewidth=0.8)
         ax.axhline(0.0, color="0.3", linewidth=0.6)
         ax.set_ylabel(_t(lang, "W_axis", u=nm.unit_of("A", lang)))
-        _phi_axis(ax, lang, cycle_deg=results.cycle_deg)
-        _legend(ax)
-        ax.set_title(_title(results, _t(lang, "works")))
+        fg.phi_axis(ax, lang, cycle_deg=results.cycle_deg)
+        fg.legend(ax)
+        ax.set_title(fg.title(results, _t(lang, "works")))
         return fig
-    return _drawn(build)
+    return fg.drawn(build)
 
 
 def figure_omega(results, lang: str = "en"):
     """ω(φ) with J_I by Merzalov, ω(φ) with the exact J_I (dashed), and the lines ω_max,
     ω_min, ω_m."""
     def build():
-        fig, ax = _figure(_WIDE)
+        fig, ax = fg.figure(fg.WIDE)
         deg = _phi_deg(results)
         sc = results.scalars
         ax.plot(deg, results.columns["omega"].values, color="k", linewidth=1.8,
@@ -522,50 +368,54 @@ def figure_omega(results, lang: str = "en"):
                    label=_t(lang, "value", s=nm.tex("omega_mean", lang), v=sc["omega_mean"],
                             u=nm.unit_of("omega_mean", lang)))
         ax.set_ylabel(nm.axis("omega", lang))
-        _phi_axis(ax, lang, cycle_deg=results.cycle_deg)
-        _legend(ax)
-        ax.set_title(_title(results, _t(lang, "omega")))
+        fg.phi_axis(ax, lang, cycle_deg=results.cycle_deg)
+        fg.legend(ax)
+        ax.set_title(fg.title(results, _t(lang, "omega")))
         return fig
-    return _drawn(build)
+    return fg.drawn(build)
 
 
 def figure_epsilon(results, lang: str = "en"):
     """ε(φ) of the crank."""
     def build():
-        fig, ax = _figure(_WIDE)
+        fig, ax = fg.figure(fg.WIDE)
         ax.plot(_phi_deg(results), results.columns["epsilon"].values, color="k", label=_t(lang, "e"))
         ax.axhline(0.0, color="0.3", linewidth=0.6)
         ax.set_ylabel(nm.axis("epsilon", lang))
-        _phi_axis(ax, lang, cycle_deg=results.cycle_deg)
-        _legend(ax)
-        ax.set_title(_title(results, _t(lang, "epsilon")))
+        fg.phi_axis(ax, lang, cycle_deg=results.cycle_deg)
+        fg.legend(ax)
+        ax.set_title(fg.title(results, _t(lang, "epsilon")))
         return fig
-    return _drawn(build)
+    return fg.drawn(build)
 
 
-def _draw_scheme(ax, results, i: int, size: float, lang: str) -> None:
-    """The mechanism at grid node i on ax; ``size`` [m] scales the symbols: what does not move
-    (trajectories, guides, fixed pivots), then what does."""
-    _draw_scheme_fixed(ax, results, size)
-    _draw_scheme_at(ax, results, i, size)
+def draw_scheme(ax, results, i: int, size: float, lang: str = "en") -> None:
+    """The kinematic scheme of ``results`` (a linkage case's run results) at grid node ``i`` on
+    the matplotlib Axes ``ax``: what does not move (trajectories, guides, fixed pivots), then
+    what does (links, joints, sliders, names); equal axes labelled x, y [m] in ``lang``.
+    ``size`` [m] scales the symbols (the scheme uses 0.035 of ``results.drawing.span``). Reads
+    only ``results.kinematics`` and ``results.drawing`` (linkage/drawing.py); a public entry
+    point for other figures that draw the mechanism (the velocity and acceleration plans)."""
+    draw_scheme_fixed(ax, results, size)
+    draw_scheme_at(ax, results, i, size)
     ax.set_aspect("equal", adjustable="datalim")
     ax.set_xlabel(nm.axis("x", lang))
     ax.set_ylabel(nm.axis("y", lang))
 
 
-def _draw_scheme_fixed(ax, results, size: float) -> None:
+def draw_scheme_fixed(ax, results, size: float) -> None:
     """The parts of the scheme that do not move: the trajectories of the moving points, the
     guides with their hatching, the fixed pivots on their hatched bases."""
     from matplotlib.patches import Polygon
 
     P = results.kinematics.points
-    moving, fixed = _moving_points(results), _fixed_points(results)
+    moving, fixed = results.drawing.moving_points, results.drawing.fixed_points
     # trajectories
     for k, name in enumerate(moving):
         r = P[name].r
         ax.plot(r[:, 0], r[:, 1], color=f"C{k % 10}", linewidth=0.8, alpha=0.8, zorder=1)
     # guides with hatching on one side, sliders as blocks
-    for link, joint, angle in _guided_sliders(results):
+    for link, joint, angle in results.drawing.guided_sliders:
         r = P[joint].r
         u = np.array([math.cos(angle), math.sin(angle)])
         nrm = np.array([-u[1], u[0]])
@@ -594,18 +444,16 @@ def _draw_scheme_fixed(ax, results, size: float) -> None:
                     color="k", linewidth=0.5, zorder=2.5)
 
 
-def _draw_scheme_at(ax, results, i: int, size: float) -> None:
+def draw_scheme_at(ax, results, i: int, size: float) -> None:
     """The parts of the scheme that move, at grid node i: sliders, links, joints, names."""
     from matplotlib.patches import Polygon, Rectangle
     from matplotlib.transforms import Affine2D
 
     P = results.kinematics.points
-    moving, fixed = _moving_points(results), _fixed_points(results)
+    moving, fixed = results.drawing.moving_points, results.drawing.fixed_points
     centre = np.mean([P[n].r[i] for n in moving + fixed], axis=0)
-    joints = []
-    for _, pts in results.links_drawn:
-        joints += [p for p in pts if p not in joints]
-    for link, joint, angle in _guided_sliders(results):
+    joints = results.drawing.joints
+    for link, joint, angle in results.drawing.guided_sliders:
         nrm = np.array([-math.sin(angle), math.cos(angle)])
         c = P[joint].r[i]
         block = Rectangle((-0.9 * size, -0.45 * size), 1.8 * size, 0.9 * size, facecolor="0.85",
@@ -614,7 +462,7 @@ def _draw_scheme_at(ax, results, i: int, size: float) -> None:
         ax.add_patch(block)
         ax.text(*(c - 1.9 * size * nrm), link, ha="center", va="center", fontsize=8,
                 style="italic", color="0.2", zorder=7)
-    for link, pivot in _moving_blocks(results):
+    for link, pivot in results.drawing.moving_blocks:
         c = P[pivot].r[i]
         block = Rectangle((-0.9 * size, -0.45 * size), 1.8 * size, 0.9 * size, facecolor="0.85",
                           edgecolor="k", linewidth=1.2, zorder=4)
@@ -624,7 +472,7 @@ def _draw_scheme_at(ax, results, i: int, size: float) -> None:
         ax.annotate(link, c, xytext=(0, -14), textcoords="offset points", ha="center",
                     fontsize=8, style="italic", color="0.2", zorder=7)
     # links: a bar through their joints, or a plate if the joints are not in line
-    for link, pts in _link_members(results):
+    for link, pts in results.drawing.members:
         xy = np.array([P[p].r[i] for p in pts])
         d = xy - xy.mean(axis=0)
         _, sv, vt = np.linalg.svd(d, full_matrices=False)
@@ -671,18 +519,18 @@ def _scheme_legend_handles(results, lang: str):
     h = [Line2D([], [], color="k", linewidth=2.5, label=_t(lang, "links")),
          Line2D([], [], linestyle="", marker="o", markerfacecolor="white", markeredgecolor="k",
                 markersize=6.5, label=_t(lang, "joints"))]
-    joints = {p for _, pts in results.links_drawn for p in pts}
-    if any(n not in joints for n in _moving_points(results)):
+    joints = set(results.drawing.joints)
+    if any(n not in joints for n in results.drawing.moving_points):
         h.append(Line2D([], [], linestyle="", marker="o", color="k", markersize=4.5,
                         label=_t(lang, "other_points")))
-    if _fixed_points(results):
+    if results.drawing.fixed_points:
         h.append(Line2D([], [], linestyle="", marker="^", markerfacecolor="white",
                         markeredgecolor="k", markersize=8, label=_t(lang, "ground")))
-    if _guided_sliders(results) or _moving_blocks(results):
+    if results.drawing.guided_sliders or results.drawing.moving_blocks:
         h.append(Patch(facecolor="0.85", edgecolor="k", label=_t(lang, "sliders")))
-    if _guided_sliders(results):
+    if results.drawing.guided_sliders:
         h.append(Line2D([], [], color="k", linewidth=1.0, label=_t(lang, "guides")))
-    for k, name in enumerate(_moving_points(results)):
+    for k, name in enumerate(results.drawing.moving_points):
         h.append(Line2D([], [], color=f"C{k % 10}", linewidth=0.8,
                         label=_t(lang, "trajectory", p=name)))
     return h
@@ -698,24 +546,23 @@ def figure_scheme(results, lang: str = "en"):
         ncols = min(n, 3)
         nrows = math.ceil(n / ncols)
         size = (5.2 * ncols + _SCHEME_LEGEND_W, 5.4 * nrows + (0.3 if n > 1 else 0.0))
-        fig, axes = _figure(size, nrows, ncols, squeeze=False, right=_SCHEME_LEGEND_W,
+        fig, axes = fg.figure(size, nrows, ncols, squeeze=False, right=_SCHEME_LEGEND_W,
                             top=0.75 if n > 1 else 0.4, hspace=0.25, wspace=0.3)
-        allr = np.concatenate([pm.r for pm in results.kinematics.points.values()])
-        scale = 0.035 * float(max(np.ptp(allr[:, 0]), np.ptp(allr[:, 1]), 1e-9))
+        scale = 0.035 * max(results.drawing.span, 1e-9)
         for k, ax in enumerate(axes.flat):
             if k >= n:
                 ax.set_visible(False)
                 continue
             i = results.index_of(math.radians(angles[k]) % results.cycle)
-            _draw_scheme(ax, results, i, scale, lang)
-            ax.set_title(_title(results, _t(lang, "scheme", a=angles[k])) if n == 1
+            draw_scheme(ax, results, i, scale, lang)
+            ax.set_title(fg.title(results, _t(lang, "scheme", a=angles[k])) if n == 1
                          else _t(lang, "scheme", a=angles[k]))
         if n > 1:
-            fig.suptitle(_title(results, _t(lang, "scheme_many")))
+            fig.suptitle(fg.title(results, _t(lang, "scheme_many")))
         fig.legend(handles=_scheme_legend_handles(results, lang), loc="upper left",
                    bbox_to_anchor=(1 - (_SCHEME_LEGEND_W - 0.15) / size[0], 1 - 0.4 / size[1]))
         return fig
-    return _drawn(build)
+    return fg.drawn(build)
 
 
 # -- writing -----------------------------------------------------------------------------------------
@@ -765,7 +612,7 @@ def all_figures(results, lang: str = "en"):
 
     out = figures(results, lang) + plots_forces.figures(results, lang)   # force analysis
     out += plots_plans.figures(results, lang,      # the plans, at the report angles only
-                               scheme=(_draw_scheme_fixed, _draw_scheme_at))
+                               scheme=(draw_scheme_fixed, draw_scheme_at))
     out += [("energy_mass.png", lambda: px.figure_energy_mass(results, lang)),
             ("time_law.png", lambda: px.figure_time_law(results, lang))]
     if results.time_domain is not None:
@@ -773,16 +620,18 @@ def all_figures(results, lang: str = "en"):
     return out
 
 
-def _save_some(results, folder: Path, lang: str, indices: list[int]) -> None:
+def _save_some(results, folder: Path, lang: str, indices: list[int], fmt: str = "png",
+               dpi: int = fg.DPI) -> None:
+    """Draw figures ``indices`` and save each as PNG and, if ``fmt`` is another format, as
+    ``fmt`` too (the reports embed the PNGs)."""
     specs = all_figures(results, lang)
-    with _style():
+    with fg.style():
         for i in indices:
             name, build = specs[i]
             fig = build()
             try:
-                # zlib level 1: a third of the time of the default 6 for 10 % larger files
-                fig.savefig(folder / name, format="png", dpi=DPI, metadata={"Software": None},
-                            pil_kwargs={"compress_level": 1})
+                for f in dict.fromkeys(("png", fmt)):
+                    fg.save(fig, folder / Path(name).with_suffix("." + f).name, f, dpi)
             finally:
                 fig.clear()
                 _release(fig)
@@ -801,7 +650,8 @@ def _release(fig) -> None:
 _HEAVY = ("energy_mass.png", "positions.png")
 
 
-def _save_next(results, folder: Path, lang: str, order: list[int], counter) -> None:
+def _save_next(results, folder: Path, lang: str, order: list[int], counter, fmt: str = "png",
+               dpi: int = fg.DPI) -> None:
     """Draw figures ``order[k]`` for k taken one at a time from the shared ``counter``."""
     while True:
         with counter.get_lock():
@@ -809,10 +659,11 @@ def _save_next(results, folder: Path, lang: str, order: list[int], counter) -> N
             counter.value += 1
         if k >= len(order):
             return
-        _save_some(results, folder, lang, [order[k]])
+        _save_some(results, folder, lang, [order[k]], fmt, dpi)
 
 
-def _worker(results, folder: Path, lang: str, order: list[int], counter) -> None:
+def _worker(results, folder: Path, lang: str, order: list[int], counter, fmt: str = "png",
+            dpi: int = fg.DPI) -> None:
     """A forked plotting process: it dies with its parent (Linux: PR_SET_PDEATHSIG), leaves
     Ctrl-C to the parent (which stops it) and ends quietly on SIGTERM."""
     import signal
@@ -825,20 +676,25 @@ def _worker(results, folder: Path, lang: str, order: list[int], counter) -> None
         ctypes.CDLL(None, use_errno=True).prctl(1, signal.SIGKILL)   # 1 = PR_SET_PDEATHSIG
     except (OSError, AttributeError):
         pass                              # not Linux: the parent still terminates it
-    _save_next(results, folder, lang, order, counter)
+    _save_next(results, folder, lang, order, counter, fmt, dpi)
 
 
-def write_plots(results, folder: Path, lang: str = "en", jobs: int = 1) -> list[Path]:
-    """Write every plot of ``results`` (:func:`all_figures`) as PNG into ``folder`` (created if
-    missing); return the paths in a fixed order. ``lang``: "en" or "ru" for the labels and titles. ``jobs`` > 1
-    renders in that many forked processes (Linux/macOS; each file is drawn whole by one).
+def write_plots(results, folder: Path, lang: str = "en", jobs: int = 1, fmt: str = "png",
+                dpi: int = fg.DPI) -> list[Path]:
+    """Write every plot of ``results`` (:func:`all_figures`) into ``folder`` (created if
+    missing) as PNG and, with ``fmt`` "svg" or "pdf", as that format too (the reports embed
+    the PNGs), at ``dpi``; return the paths of the ``fmt`` files in a fixed order. ``lang``:
+    "en" or "ru" for the labels and titles. ``jobs`` > 1 renders in that many forked processes
+    (Linux/macOS; each figure is drawn whole by one).
 
-    The files are byte-identical for the same input (fixed size and dpi, no metadata).
+    The files are byte-identical for the same input (fixed size and dpi, no metadata or dates).
     """
     import multiprocessing as mp
 
     if lang not in ("en", "ru"):
         raise ValueError(f"lang {lang!r}: allowed 'en' or 'ru'")
+    if fmt not in fg.FORMATS:
+        raise ValueError(f"fmt {fmt!r}: allowed {', '.join(fg.FORMATS)}")
     folder = Path(folder)
     folder.mkdir(parents=True, exist_ok=True)
     names = [name for name, _ in all_figures(results, lang)]
@@ -849,12 +705,12 @@ def write_plots(results, folder: Path, lang: str = "en", jobs: int = 1) -> list[
     if jobs > 1 and "fork" in mp.get_all_start_methods():
         ctx = mp.get_context("fork")
         counter = ctx.Value("i", 0)
-        children = [ctx.Process(target=_worker, args=(results, folder, lang, order, counter))
+        children = [ctx.Process(target=_worker, args=(results, folder, lang, order, counter, fmt, dpi))
                     for _ in range(jobs - 1)]
         for c in children:
             c.start()
         try:
-            _save_next(results, folder, lang, order, counter)
+            _save_next(results, folder, lang, order, counter, fmt, dpi)
         except BaseException:            # Ctrl-C, SIGTERM, an error: the workers stop now
             for c in children:
                 c.terminate()
@@ -865,5 +721,5 @@ def write_plots(results, folder: Path, lang: str = "en", jobs: int = 1) -> list[
         if any(c.exitcode != 0 for c in children):
             raise RuntimeError("a plotting process failed")
     else:
-        _save_some(results, folder, lang, order)
-    return [folder / n for n in names]
+        _save_some(results, folder, lang, order, fmt, dpi)
+    return [folder / Path(n).with_suffix("." + fmt).name for n in names]

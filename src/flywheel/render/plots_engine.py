@@ -1,7 +1,7 @@
 """The indicator diagram of a four-stroke cylinder (DIR/plots/indicator_NAME.png).
 
-Drawn inside :mod:`flywheel.render.plots`' style (its writer builds every figure in it); this
-module does not import plots (plots calls it), so it makes its own pyplot-free Figure.
+Drawn with :mod:`flywheel.render.figure`'s toolkit inside its style (plots' writer builds
+every figure in it).
 
 Two panels: the closed diagram p/p_max against the relative travel s as the program used it
 (the grid values, stroke by stroke, with each stroke's table as markers), and the pressure
@@ -12,36 +12,21 @@ from __future__ import annotations
 
 import numpy as np
 
-_TEXT = {
-    "en": {"intake": "intake", "compression": "compression", "expansion": "expansion",
-           "exhaust": "exhaust", "table": "{k}: table", "s_axis": "relative piston travel s "
-           "from the head", "p_axis": "p / p_max", "p_MPa": "p, MPa (gauge)",
-           "phi": "crank angle φ, °", "title": "{t}: four-stroke indicator diagram, cylinder {c}",
-           "fires": "fires at {a:.1f}°"},
-    "ru": {"intake": "впуск", "compression": "сжатие", "expansion": "расширение",
-           "exhaust": "выпуск", "table": "{k}: таблица", "s_axis": "относительное перемещение "
-           "поршня s от головки", "p_axis": "p / p_max", "p_MPa": "p, МПа (избыточное)",
-           "phi": "угол поворота кривошипа φ, °",
-           "title": "{t}: индикаторная диаграмма четырёхтактного цилиндра {c}",
-           "fires": "воспламенение при {a:.1f}°"},
-}
+from flywheel.render import figure as fg
+from flywheel.render import nomenclature as nm
+
 _COLORS = ("C0", "C2", "C3", "C1")     # intake, compression, expansion, exhaust
 
 
 def figure_indicator_strokes(results, cylinder, lang: str = "en"):
     """The four strokes of ``cylinder`` (a four-stroke :class:`CylinderResult`)."""
-    from matplotlib.figure import Figure
-
     from flywheel.dynamics.loads import FOUR_STROKES
 
-    t = _TEXT.get(lang, _TEXT["en"])
+    def t(key: str, **fields) -> str:
+        return nm.name(f"engine_{key}", lang, **fields)
 
     def build():
-        w, h = 11.0, 9.0
-        fig = Figure(figsize=(w, h), dpi=120)
-        ax, bx = fig.subplots(2, 1)
-        fig.subplots_adjust(left=0.85 / w, right=1 - 2.9 / w, bottom=0.7 / h, top=1 - 0.5 / h,
-                            hspace=0.3)
+        fig, (ax, bx) = fg.figure((11.0, 9.0), 2, 1, right=2.9, bottom=0.7, top=0.5, hspace=0.3)
         s = np.asarray(cylinder.s, float)
         rel = np.asarray(cylinder.p, float) / cylinder.p_max
         stroke = np.asarray(cylinder.stroke)
@@ -50,30 +35,28 @@ def figure_indicator_strokes(results, cylinder, lang: str = "en"):
         for k, name in enumerate(FOUR_STROKES):
             mask = stroke == k
             order = np.argsort(s[mask], kind="stable")
-            ax.plot(s[mask][order], rel[mask][order], color=_COLORS[k], label=t[name])
+            ax.plot(s[mask][order], rel[mask][order], color=_COLORS[k], label=t(name))
             ax.plot(cylinder.stroke_s[name], cylinder.stroke_tables[name], "o", color=_COLORS[k],
-                    markersize=4, markerfacecolor="none", label=t["table"].format(k=t[name]))
+                    markersize=4, markerfacecolor="none", label=t("table", k=t(name)))
             bx.plot(np.where(mask, deg, np.nan), np.where(mask, cylinder.p / 1e6, np.nan),
-                    color=_COLORS[k], label=t[name])
+                    color=_COLORS[k], label=t(name))
         ax.axhline(0.0, color="0.3", linewidth=0.6)
         ax.set_xlim(0.0, 1.0)
-        ax.set_xlabel(t["s_axis"])
-        ax.set_ylabel(t["p_axis"])
+        ax.set_xlabel(t("s_axis"))
+        ax.set_ylabel(t("p_axis"))
         sec = ax.secondary_yaxis("right", functions=(lambda r: r * p_max / 1e6,
                                                      lambda p: p * 1e6 / p_max))
-        sec.set_ylabel(t["p_MPa"])
+        sec.set_ylabel(t("p_MPa"))
         ax.legend(loc="upper left", bbox_to_anchor=(1.09, 1.0), borderaxespad=0.0)
         bx.axhline(0.0, color="0.3", linewidth=0.6)
         for r in range(results.cycle_deg // 720):
             a = np.degrees(cylinder.fires_at) + 720 * r
             bx.axvline(a, color="0.4", linewidth=0.8, linestyle=":")
-        bx.plot([], [], " ", label=t["fires"].format(a=float(np.degrees(cylinder.fires_at))))
-        cycle = results.cycle_deg
-        bx.set_xlim(0.0, float(cycle))
-        bx.set_xticks(np.arange(0, cycle + 1, 30 * cycle // 360))
-        bx.set_xlabel(t["phi"])
-        bx.set_ylabel(t["p_MPa"])
+        bx.plot([], [], " ", label=t("fires", a=float(np.degrees(cylinder.fires_at))))
+        fg.phi_axis(bx, lang, label=False, cycle_deg=results.cycle_deg)
+        bx.set_xlabel(t("phi"))
+        bx.set_ylabel(t("p_MPa"))
         bx.legend(loc="upper left", bbox_to_anchor=(1.09, 1.0), borderaxespad=0.0)
-        ax.set_title(t["title"].format(t=results.title, c=cylinder.name))
+        ax.set_title(t("title", t=results.title, c=cylinder.name))
         return fig
     return build()

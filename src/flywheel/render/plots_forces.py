@@ -2,11 +2,11 @@
 three ways with the constant moment of the dynamics, and the polar diagrams (hodographs) of
 the crank-pin load, the main-bearing load and the shaking force.
 
-Drawn as render/plots.py draws — pyplot-free :class:`matplotlib.figure.Figure` objects with
-fixed margins in inches and the legend outside the axes — and saved by its pool of workers in
-its fixed style (:func:`figures` is registered in ``plots.all_figures``; this module does not
+Drawn with render/figure.py's toolkit, as render/plots.py draws — pyplot-free figures with
+fixed margins in inches and the legend outside the axes — and saved by plots.py's pool of
+workers in the fixed style (:func:`figures` is registered in ``plots.all_figures``; this module does not
 import render/plots.py, which imports it). Quantities are named by
-:mod:`flywheel.render.nomenclature`; this module keeps the titles. Nothing is computed here but
+:mod:`flywheel.render.nomenclature`, and so are the titles. Nothing is computed here but
 degrees and the axis limits; matplotlib is imported inside the functions.
 """
 from __future__ import annotations
@@ -15,36 +15,8 @@ import math
 
 import numpy as np
 
+from flywheel.render import figure as fg
 from flywheel.render.nomenclature import axis, name, symbol, unit_of, tex
-
-_TEXT = {
-    "en": {
-        "reactions": r"reactions in the joints $|R_{ij}|(\varphi)$, $R_{ij}$: the force of link i on link j",
-        "moment": r"balancing moment on the crank $M_y(\varphi)$, three ways",
-        "moment_steady": r"balancing moment on the crank $M_y(\varphi)$, steady motion $\omega$ = {w:.5g} rad/s",
-        "M_const": "{s} = {v:.6g} {u} (constant, from the cycle balance)",
-        "hodographs": "polar diagrams (hodographs) of the loads over the cycle",
-        "pin": "load on the crank pin, in the crank's axes",
-        "bearing": r"load on the main bearing $R_{10}$",
-        "shaking": "shaking force on the frame",
-        "curve": "over the cycle, labels: φ, °",
-        "origin": "origin (zero force)",
-    },
-    "ru": {
-        "reactions": r"реакции в кинематических парах $|R_{ij}|(\varphi)$, $R_{ij}$ — сила действия звена i на звено j",
-        "moment": r"уравновешивающий момент на кривошипе $M_у(\varphi)$, три способа",
-        "moment_steady": r"уравновешивающий момент на кривошипе $M_у(\varphi)$, равномерное вращение "
-                         "ω = {w:.5g} рад/с",
-        "M_const": "{s} = {v:.6g} {u} (постоянный, из условия цикла)",
-        "hodographs": "полярные диаграммы (годографы) нагрузок за цикл",
-        "pin": "нагрузка на шатунную шейку в осях кривошипа",
-        "bearing": r"нагрузка на коренной подшипник $R_{10}$",
-        "shaking": "сила, действующая на стойку",
-        "curve": "за цикл, подписи: φ, °",
-        "origin": "начало координат (нулевая сила)",
-    },
-}
-
 
 def _typeset(key: str, lang: str) -> str:
     """The quantity's name with its plain symbol typeset as mathtext (no literal underscore)."""
@@ -53,53 +25,19 @@ def _typeset(key: str, lang: str) -> str:
 
 
 def _t(lang: str, key: str, **kw) -> str:
-    text = _TEXT["ru" if lang == "ru" else "en"][key]
-    return text.format(**kw) if kw else text
-
-
-DPI = 120                  # as render/plots.py
-_LEGEND_W = 3.9            # room for a legend right of the axes [in]
-_WIDE = (11.0, 5.0)         # one φ plot and its legend [in]
-
-
-def _figure(size, nrows=1, ncols=1, *, left=0.85, right=_LEGEND_W, bottom=0.6, top=0.4,
-            wspace=0.45):
-    """A pyplot-free Figure and its axes with fixed margins [in] (render/plots.py's layout)."""
-    from matplotlib.figure import Figure
-
-    w, h = size
-    fig = Figure(figsize=size, dpi=DPI)
-    axes = fig.subplots(nrows, ncols)
-    fig.subplots_adjust(left=left / w, right=1 - right / w, bottom=bottom / h, top=1 - top / h,
-                        wspace=wspace)
-    return fig, axes
-
-
-def _legend(ax):
-    """Legend outside the axes, on the right: it never hides a curve."""
-    return ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), borderaxespad=0.0)
-
-
-def _title(results, what: str) -> str:
-    return f"{results.title}: {what}"
-
-
-def _phi_axis(ax, lang: str) -> None:
-    ax.set_xlim(0.0, 360.0)
-    ax.set_xticks(np.arange(0, 361, 30))
-    ax.set_xlabel(axis("phi_deg", lang))
+    return name(f"forces_plot_{key}", lang, **kw)
 
 
 def figure_reactions(results, lang: str = "en"):
     """|R_ij|(φ) of every joint, one curve each (linkage cases)."""
-    fig, ax = _figure(_WIDE)
+    fig, ax = fg.figure(fg.WIDE)
     deg = np.degrees(results.phi)
     for key, r in results.forces.joints.items():
         ax.plot(deg, r.magnitude, label=f"{tex(f'R_{key}', lang)} {key}")
     ax.set_ylabel(axis("reaction", lang))
-    _phi_axis(ax, lang)
-    _legend(ax)
-    ax.set_title(_title(results, _t(lang, "reactions")))
+    fg.phi_axis(ax, lang)
+    fg.legend(ax)
+    ax.set_title(fg.title(results, _t(lang, "reactions")))
     return fig
 
 
@@ -108,7 +46,7 @@ def figure_balancing_moment(results, lang: str = "en"):
     alone for a tabulated case), and the constant moment of the dynamics: with the true motion
     the curves lie on that line."""
     f = results.forces
-    fig, ax = _figure(_WIDE)
+    fig, ax = fg.figure(fg.WIDE)
     deg = np.degrees(results.phi)
     curves = [f.M_y_power]
     if f.analysis is not None:
@@ -131,11 +69,11 @@ def figure_balancing_moment(results, lang: str = "en"):
     pad = 0.08 * (hi - lo)
     ax.set_ylim(lo - pad, hi + pad)
     ax.set_ylabel(axis("M_y", lang))
-    _phi_axis(ax, lang)
-    _legend(ax)
+    fg.phi_axis(ax, lang)
+    fg.legend(ax)
     what = (_t(lang, "moment") if f.motion == "true"
             else _t(lang, "moment_steady", w=float(f.omega[0])))
-    ax.set_title(_title(results, what))
+    ax.set_title(fg.title(results, what))
     return fig
 
 
@@ -156,7 +94,7 @@ def figure_hodographs(results, lang: str = "en"):
     crank's load on the main bearing and (c) the shaking force, in the case's axes."""
     f = results.forces
     fa = f.analysis
-    fig, axes = _figure((15.0, 6.0), 1, 3, right=0.3, bottom=1.3, top=0.75, wspace=0.35)
+    fig, axes = fg.figure((15.0, 6.0), 1, 3, right=0.3, bottom=1.3, top=0.75, wspace=0.35)
     mb, S = fa.main_bearing_load, fa.shaking_force
     panels = [
         (f.crank_pin_tangential, f.crank_pin_radial, "crank_pin_tangential", "crank_pin_radial",
@@ -170,7 +108,7 @@ def figure_hodographs(results, lang: str = "en"):
         ax.set_ylabel(axis(ky, lang))
         ax.set_title(_t(lang, title))
     axes[0].legend(loc="upper left", bbox_to_anchor=(0.0, -0.16))
-    fig.suptitle(_title(results, _t(lang, "hodographs")))
+    fig.suptitle(fg.title(results, _t(lang, "hodographs")))
     return fig
 
 

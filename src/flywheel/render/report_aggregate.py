@@ -7,14 +7,14 @@ the method (Lagrange's equations in the generalised coordinates, 9.24–9.25; th
 equation; the steady forced vibration), the coefficients a_ij and c_ij, the natural frequencies
 with their shapes, the resonance margins, the steady state and the start-up, the figure, the
 sources. Every number is a field of the :class:`~flywheel.elastic.model.AggregateResult`;
-labels come from render/nomenclature_ci.py, this module keeps the section titles.
+labels come from render/nomenclature.py, this module keeps the section titles.
 """
 from __future__ import annotations
 
 import math
 
 from flywheel.render.document import Bullets, Document, Figure, Formula, Heading, Paragraph, Table
-from flywheel.render.nomenclature_ci import rotor_name, text, unit
+from flywheel.render.nomenclature import name as text, rotor_name, unit
 
 FIGURE = "aggregate.png"
 TWO_PI = 2.0 * math.pi

@@ -6,7 +6,7 @@ Sections: the given data (the constants and the moment graphs at their breakpoin
 with its formulas, the segment table, the results, the motion (ε, phases, time), the figure
 with its caption, the sources. Nothing is computed here: every number is a field of the
 :class:`~flywheel.constant_inertia.solve.Task2Result` (the graphs are only read at their
-breakpoints). Labels come from the nomenclature (render/nomenclature_ci.py); this module keeps
+breakpoints). Labels come from the nomenclature (render/nomenclature.py); this module keeps
 the section titles and the sentences.
 Source of the method: the textbook task «Задача 2» (½·J·(ω² − ω0²) = ∫(M_Д − M_С)dφ,
 δ = (ω_max − ω_min)/ω_ср, J = ΔT_нб/(δ·ω_ср²)); Артоболевский И. И., «Теория механизмов и
@@ -17,7 +17,7 @@ from __future__ import annotations
 import math
 
 from flywheel.render.document import Bullets, Document, Figure, Formula, Heading, Paragraph, Table
-from flywheel.render.nomenclature_ci import symbol, text, unit
+from flywheel.render.nomenclature import name as text, symbol, unit
 
 FIGURE = "task2.png"
 
@@ -129,8 +129,8 @@ def build_task2_document(r, title: str, source: str, lang: str = "en",
 
     # 1. given data ---------------------------------------------------------------------------
     add(Heading(2, t["given"]))
-    MD, MC = symbol("M_D", lang), symbol("M_C", lang)
-    rows = [[t["given_J"], symbol("J", lang), g(r.J), U("kg·m²")],
+    MD, MC = symbol("t2_M_D", lang), symbol("t2_M_C", lang)
+    rows = [[t["given_J"], symbol("t2_J", lang), g(r.J), U("kg·m²")],
             [t["given_w0"], "ω0", g(r.omega0), U("rad/s")],
             [t["given_cycle"], "Φ", g(math.degrees(r.cycle)), U("deg")]]
     for sym, graph, kind_key, found in ((MD, r.driving, "given_MD", r.unknown == "driving"),
@@ -184,7 +184,7 @@ def build_task2_document(r, title: str, source: str, lang: str = "en",
         val = r.M_C if r.unknown == "resistance" else r.M_D
         add(Paragraph(text("t2_balance", lang, name=name, value=g(val), work=g(r.work_driving))))
     if r.power_found is not None and r.power is not None:
-        name = symbol("M_D" if r.power_found == "driving" else "M_C", lang)
+        name = symbol("t2_M_D" if r.power_found == "driving" else "M_C", lang)
         add(Paragraph(text("t2_power", lang, P=g(r.power), name=name, T=g(r.power / r.omega_mean))))
     if not r.steady:
         add(Paragraph(t["steady_no"].format(work=g(r.work_end), omega_end=g(r.omega_end, ".6f"))))
@@ -197,21 +197,21 @@ def build_task2_document(r, title: str, source: str, lang: str = "en",
             g(row.M_D), g(row.M_C), g(row.A), g(row.omega, ".6f")] for i, row in enumerate(r.rows)])
     res = [[text("omega_max", lang), g(r.omega_max, ".6f"), U("rad/s"), _deg(r.phi_omega_max)],
            [text("omega_min", lang), g(r.omega_min, ".6f"), U("rad/s"), _deg(r.phi_omega_min)],
-           [text("omega_mean", lang), g(r.omega_mean, ".6f"), U("rad/s"), ""],
-           [text("delta", lang), g(r.delta), "", ""],
-           [text("delta_T_max", lang), g(r.delta_T_max), U("J"), ""]]
+           [text("t2_omega_mean", lang), g(r.omega_mean, ".6f"), U("rad/s"), ""],
+           [text("t2_delta", lang), g(r.delta), "", ""],
+           [text("t2_delta_T_max", lang), g(r.delta_T_max), U("J"), ""]]
     if r.power is not None:
-        res.append([text("power", lang), g(r.power), U("W"), ""])
+        res.append([text("t2_P", lang), g(r.power), U("W"), ""])
     if r.J_required is not None:
-        res.append([text("J_required", lang, delta=g(r.delta_target)), g(r.J_required),
+        res.append([text("t2_J_required", lang, delta=g(r.delta_target)), g(r.J_required),
                     U("kg·m²"), ""])
     if r.rim_mass is not None:
         res.append([text("rim_mass", lang, R=g(r.rim_radius)), g(r.rim_mass), U("kg"), ""])
     if r.flywheel_mass is not None:
-        res.append([text("flywheel_mass", lang, k=g(r.radius_of_gyration)), g(r.flywheel_mass),
+        res.append([text("t2_flywheel_mass", lang, k=g(r.radius_of_gyration)), g(r.flywheel_mass),
                     U("kg"), ""])
     if r.energy_fluctuation_coefficient is not None:
-        res.append([text("energy_fluctuation_coefficient", lang),
+        res.append([text("t2_energy_fluctuation_coefficient", lang),
                     g(r.energy_fluctuation_coefficient), "", ""])
     table(t["results_caption"], [t["quantity"], t["value"], t["unit"], f"φ, {U('deg')}"], res)
 
@@ -219,9 +219,9 @@ def build_task2_document(r, title: str, source: str, lang: str = "en",
     if r.driving is not None:
         add(Heading(2, t["motion"]))
         table(t["motion_caption"], [t["quantity"], t["value"], t["unit"], f"φ, {U('deg')}"],
-              [[text("epsilon_max", lang), g(r.epsilon_max), U("rad/s²"), _deg(r.phi_epsilon_max)],
-               [text("epsilon_min", lang), g(r.epsilon_min), U("rad/s²"), _deg(r.phi_epsilon_min)],
-               [text("cycle_time", lang), g(r.cycle_time), U("s"), ""]])
+              [[text("t2_epsilon_max", lang), g(r.epsilon_max), U("rad/s²"), _deg(r.phi_epsilon_max)],
+               [text("t2_epsilon_min", lang), g(r.epsilon_min), U("rad/s²"), _deg(r.phi_epsilon_min)],
+               [text("t2_cycle_time", lang), g(r.cycle_time), U("s"), ""]])
         if r.phases:
             table(t["phases_caption"],
                   ["#", f"φ₁, {U('deg')}", f"φ₂, {U('deg')}", text("trend", lang),

@@ -257,21 +257,17 @@ def build_sheet(sheet, lang: str = "ru", figure: str | None = None) -> Document:
 # -- drawings -----------------------------------------------------------------------------------
 
 def draw_linkage(ax, results, i: int, lang: str) -> None:
-    """The mechanism at grid node ``i`` with its points named: the one call of the scheme
-    drawing of render/plots.py (its helpers are moving to render/figure.py: change it here)."""
-    import numpy as np
-
+    """The mechanism at grid node ``i`` with its points named: render/plots.py's scheme
+    drawing (``draw_scheme``), symbols scaled to the drawing's span as the run's scheme is."""
     from flywheel.render import plots
 
-    allr = np.concatenate([pm.r for pm in results.kinematics.points.values()])
-    size = 0.035 * float(max(np.ptp(allr[:, 0]), np.ptp(allr[:, 1]), 1e-9))
-    plots._draw_scheme(ax, results, i, size, lang)
+    plots.draw_scheme(ax, results, i, 0.035 * results.drawing.span, lang)
 
 
 def _style():
-    from flywheel.render import plots
+    from flywheel.render import figure
 
-    return plots._style()
+    return figure.style()
 
 
 def _linkage_png(sheet, path: Path, lang: str) -> None:
@@ -338,7 +334,8 @@ def sheet_typst(doc: Document) -> str:
 
     src = typst_source(doc)
     src = src.replace('margin: (x: 18mm, y: 18mm), numbering: "1"', 'margin: (x: 15mm, y: 12mm)')
-    src = src.replace("inset: 3pt, align: right,", "inset: 2pt, align: (left, right, left),")
+    src = src.replace("inset: 3pt, align: (x, y) => if x == 0 { left } else { right },",
+                      "inset: 2pt, align: (left, right, left),")    # (tests/test_sheets.py's one-page check fails if report_formats._typst_table changes this)
     return src.replace("width: 100%)", "height: 62mm)")
 
 

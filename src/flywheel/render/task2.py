@@ -9,7 +9,7 @@ from __future__ import annotations
 import math
 
 from flywheel.constant_inertia.solve import RPM
-from flywheel.render.nomenclature_ci import symbol, text, unit
+from flywheel.render import nomenclature as nm
 
 
 def to_dict(r, title: str = "", source: str = "") -> dict:
@@ -32,23 +32,23 @@ def _g(x: float | None, fmt: str = ".6g") -> str:
 
 def _angle(phi: float | None, lang: str = "en") -> str:
     if phi is None or math.isnan(phi):
-        return text("angle_unknown", lang)
-    return text("angle", lang, deg=_g(math.degrees(phi)), pi=_g(phi / math.pi))
+        return nm.name("angle_unknown", lang)
+    return nm.name("angle", lang, deg=_g(math.degrees(phi)), pi=_g(phi / math.pi))
 
 
 def print_summary(r, title: str = "", source: str = "", console=None, lang: str = "en",
                   motion: bool = False) -> None:
     """The segment table and the results, as the seed presents them, on a rich console; labels,
-    symbols and units in ``lang`` (en, ru: :mod:`flywheel.render.nomenclature_ci`). ``motion``
+    symbols and units in ``lang`` (en, ru: :mod:`flywheel.render.nomenclature`). ``motion``
     (or angles asked in ``r.at``) adds ε(φ)'s extremes, the time law and the asked angles."""
     from rich.console import Console
     from rich.table import Table
 
     def L(key: str, **fields) -> str:
-        return text(key, lang, **fields)
+        return nm.name(key, lang, **fields)
 
     def U(u: str) -> str:
-        return unit(u, lang)
+        return nm.unit(u, lang)
 
     console = console or Console()
     if title:
@@ -56,22 +56,22 @@ def print_summary(r, title: str = "", source: str = "", console=None, lang: str 
 
         console.print(f"[bold]{escape(title)}[/bold]" + (f"  ({escape(source)})" if source else ""))
     if r.unknown:
-        name = symbol({"resistance": "M_C", "driving": "M_D"}[r.unknown], lang)
+        name = nm.symbol({"resistance": "t2_M_C", "driving": "t2_M_D"}[r.unknown], lang)
         val = r.M_C if r.unknown == "resistance" else r.M_D
         console.print(L("t2_balance", name=name, value=_g(val), work=_g(r.work_driving)))
     elif r.M_C is not None:
         console.print(L("t2_given", M_D=_g(r.M_D), M_C=_g(r.M_C)))
     if r.power_found is not None and r.power is not None:   # the mean power needs steady motion
-        name = symbol("M_D" if r.power_found == "driving" else "M_C", lang)
+        name = nm.symbol("t2_M_D" if r.power_found == "driving" else "t2_M_C", lang)
         console.print(L("t2_power", P=_g(r.power), name=name, T=_g(r.power / r.omega_mean)))
     if not r.steady:
         console.print(L("t2_unsteady", work=f"{r.work_end:.6g}", omega_end=_g(r.omega_end, ".6f"),
                         omega0=_g(r.omega0, ".6f")))
 
     t = Table(title=L("t2_segments"))
-    for col, just in (("#", "right"), (L("phi_deg"), "right"), (L("phi_pi"), "right"),
-                      (L("point"), "left"), (symbol("M_D", lang), "right"),
-                      (symbol("M_C", lang), "right"), (L("A"), "right"), (L("omega"), "right")):
+    for col, just in (("#", "right"), (L("t2_phi_deg"), "right"), (L("phi_pi"), "right"),
+                      (L("point"), "left"), (nm.symbol("t2_M_D", lang), "right"),
+                      (nm.symbol("t2_M_C", lang), "right"), (L("t2_A"), "right"), (L("t2_omega"), "right")):
         t.add_column(col, justify=just, no_wrap=True)
     for i, row in enumerate(r.rows):
         deg = None if math.isnan(row.phi) else math.degrees(row.phi)
@@ -90,24 +90,24 @@ def print_summary(r, title: str = "", source: str = "", console=None, lang: str 
     t = Table(title=L("results"))
     for col in (L("quantity"), L("value"), L("unit"), ""):
         t.add_column(col)
-    t.add_row(L("J"), _g(r.J), U("kg·m²"), "")
+    t.add_row(L("t2_J"), _g(r.J), U("kg·m²"), "")
     t.add_row(L("omega0"), _g(r.omega0, ".6f"), U("rad/s"), rpm(r.omega0))
     t.add_row(L("omega_max"), _g(r.omega_max, ".6f"), U("rad/s"),
               rpm_at(r.omega_max, r.phi_omega_max))
     t.add_row(L("omega_min"), _g(r.omega_min, ".6f"), U("rad/s"),
               rpm_at(r.omega_min, r.phi_omega_min))
-    t.add_row(L("omega_mean"), _g(r.omega_mean, ".6f"), U("rad/s"), rpm(r.omega_mean))
-    t.add_row(L("delta"), _g(r.delta), "", "")
-    t.add_row(L("delta_T_max"), _g(r.delta_T_max), U("J"), "")
+    t.add_row(L("t2_omega_mean"), _g(r.omega_mean, ".6f"), U("rad/s"), rpm(r.omega_mean))
+    t.add_row(L("t2_delta"), _g(r.delta), "", "")
+    t.add_row(L("t2_delta_T_max"), _g(r.delta_T_max), U("J"), "")
     if r.power is not None:
-        t.add_row(L("power"), _g(r.power), U("W"), "")
+        t.add_row(L("t2_P"), _g(r.power), U("W"), "")
     if r.J_required is not None:
-        t.add_row(L("J_required", delta=_g(r.delta_target)), _g(r.J_required), U("kg·m²"),
-                  L("J_required_how"))
+        t.add_row(L("t2_J_required", delta=_g(r.delta_target)), _g(r.J_required), U("kg·m²"),
+                  L("t2_J_required_how"))
     if r.rim_mass is not None:
         t.add_row(L("rim_mass", R=_g(r.rim_radius)), _g(r.rim_mass), U("kg"), L("rim_mass_how"))
     if r.flywheel_mass is not None:
-        t.add_row(L("flywheel_mass", k=_g(r.radius_of_gyration)), _g(r.flywheel_mass), U("kg"),
+        t.add_row(L("t2_flywheel_mass", k=_g(r.radius_of_gyration)), _g(r.flywheel_mass), U("kg"),
                   L("flywheel_mass_how"))
     if r.rim is not None:                     # [flywheel.rim]: the designed rim
         d = r.rim
@@ -119,7 +119,7 @@ def print_summary(r, title: str = "", source: str = "", console=None, lang: str 
                     src=L("rim_from_stress" if d.speed_from == "allowable stress"
                           else "rim_from_given")))
     if r.driving is None and r.energy_fluctuation_coefficient is not None:
-        t.add_row(L("energy_fluctuation_coefficient"), _g(r.energy_fluctuation_coefficient), "",
+        t.add_row(L("t2_energy_fluctuation_coefficient"), _g(r.energy_fluctuation_coefficient), "",
                   "")
     console.print(t)
     if (motion or r.at) and r.driving is not None:
@@ -131,18 +131,18 @@ def _print_motion(r, console, lang: str) -> None:
     from rich.table import Table
 
     def L(key: str, **fields) -> str:
-        return text(key, lang, **fields)
+        return nm.name(key, lang, **fields)
 
     t = Table(title=L("t2_motion"))
     for col in (L("quantity"), L("value"), L("unit"), ""):
         t.add_column(col)
-    t.add_row(L("epsilon_max"), _g(r.epsilon_max), unit("rad/s²", lang),
+    t.add_row(L("t2_epsilon_max"), _g(r.epsilon_max), nm.unit("rad/s²", lang),
               L("at_angle", angle=_angle(r.phi_epsilon_max, lang)))
-    t.add_row(L("epsilon_min"), _g(r.epsilon_min), unit("rad/s²", lang),
+    t.add_row(L("t2_epsilon_min"), _g(r.epsilon_min), nm.unit("rad/s²", lang),
               L("at_angle", angle=_angle(r.phi_epsilon_min, lang)))
-    t.add_row(L("cycle_time"), _g(r.cycle_time), unit("s", lang), "")
+    t.add_row(L("t2_cycle_time"), _g(r.cycle_time), nm.unit("s", lang), "")
     if r.energy_fluctuation_coefficient is not None:
-        t.add_row(L("energy_fluctuation_coefficient"), _g(r.energy_fluctuation_coefficient), "",
+        t.add_row(L("t2_energy_fluctuation_coefficient"), _g(r.energy_fluctuation_coefficient), "",
                   "")
     console.print(t)
     t = Table(title=L("t2_phases"))
@@ -155,7 +155,7 @@ def _print_motion(r, console, lang: str) -> None:
     console.print(t)
     if r.at:
         t = Table(title=L("t2_at"))
-        for col in (L("phi_col"), L("omega_col"), L("epsilon_col"), L("t")):
+        for col in (L("phi_col"), L("omega_col"), L("epsilon_col"), L("t2_t")):
             t.add_column(col, justify="right", no_wrap=True)
         for a in r.at:
             t.add_row(_g(math.degrees(a.phi)), _g(a.omega, ".6f"), _g(a.epsilon), _g(a.t))
@@ -173,7 +173,7 @@ def plot(r, path, title: str = "", lang: str = "en") -> None:
     from flywheel.constant_inertia.solve import sample
 
     def L(key: str, **fields) -> str:
-        return text(key, lang, **fields)
+        return nm.name(key, lang, **fields)
 
     if r.driving is not None:
         s = sample(r)
@@ -223,5 +223,12 @@ def plot(r, path, title: str = "", lang: str = "en") -> None:
             a.grid(True, alpha=0.3)
     fig.suptitle(title or L("t2_plot_title", delta=f"{r.delta:.6g}", dT=f"{r.delta_T_max:.6g}"))
     fig.tight_layout()
-    fig.savefig(path, dpi=100)
+    import os
+    from pathlib import Path
+
+    from flywheel.render.figure import SVG_SALT, stable_metadata
+
+    fmt = Path(path).suffix.lower()[1:] if isinstance(path, (str, os.PathLike)) else ""
+    with matplotlib.rc_context({"svg.hashsalt": SVG_SALT}):      # SVG, PDF: same bytes on a rerun
+        fig.savefig(path, dpi=100, **stable_metadata(fmt))
     plt.close(fig)

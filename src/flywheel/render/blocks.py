@@ -1,0 +1,64 @@
+"""The blocks of the записка's document model (render/document.py builds the document, render/
+report.py and report_formats.py write it out): headings, paragraphs, bullet lists, formulas,
+numbered tables and figures with captions. A module of its own so that the sections other
+renderers build (the force analysis, render/forces.py) use the same model without importing
+the document builder.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+
+@dataclass(frozen=True)
+class Heading:
+    level: int          # 1 the title, 2 a section, 3 a subsection
+    text: str           # with its number ("5. Flywheel")
+
+
+@dataclass(frozen=True)
+class Paragraph:
+    text: str           # may hold **bold** runs
+
+
+@dataclass(frozen=True)
+class Bullets:
+    items: tuple[str, ...]
+
+
+@dataclass(frozen=True)
+class Formula:
+    tex: str            # render/mathfmt.py notation
+
+
+@dataclass(frozen=True)
+class Table:
+    number: int
+    caption: str
+    header: tuple[str, ...]
+    rows: tuple[tuple[str, ...], ...]
+
+
+@dataclass(frozen=True)
+class Figure:
+    number: int
+    caption: str
+    file: str           # the PNG's name under plots/
+
+
+@dataclass
+class Document:
+    title: str
+    lang: str
+    blocks: list = field(default_factory=list)
+
+    @property
+    def tables(self) -> list[Table]:
+        return [b for b in self.blocks if isinstance(b, Table)]
+
+    @property
+    def figures(self) -> list[Figure]:
+        return [b for b in self.blocks if isinstance(b, Figure)]
+
+    @property
+    def headings(self) -> list[Heading]:
+        return [b for b in self.blocks if isinstance(b, Heading)]
