@@ -173,7 +173,7 @@ def test_folders_excel_style_sheets_and_variant_spellings(tmp_path, key_dir, key
 
 
 def test_out_writes_one_line_per_answer(tmp_path, key_dir, key):
-    out = tmp_path / "report" / "grades.csv"
+    out = tmp_path / "grades.csv"
     res = invoke(key_dir / "answers.json", sheet(tmp_path / "a.csv", key), "--out", out)
     assert res.exit_code == 0, res.output
     with open(out, newline="") as f:
@@ -183,6 +183,13 @@ def test_out_writes_one_line_per_answer(tmp_path, key_dir, key):
     assert {r["pass"] for r in rows} == {"1"}
     one_line_error(invoke(key_dir / "answers.json", tmp_path / "a.csv", "--out", tmp_path),
                    "--out", "is a folder")
+    # a file in a folder that does not exist (a mistyped path): refused before grading, as
+    # task2 --plot does; nothing is created
+    for option in ("--out", "--gradebook"):
+        one_line_error(invoke(key_dir / "answers.json", tmp_path / "a.csv", option,
+                              tmp_path / "no" / "such" / "book.csv"),
+                       option, "book.csv: the folder", "no/such does not exist")
+        assert not (tmp_path / "no").exists()
 
 
 def test_bad_key_and_options(tmp_path, key_dir, key):
