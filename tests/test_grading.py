@@ -2,6 +2,7 @@
 statistics, and a batch that goes on past broken files and rows."""
 import csv
 import json
+import re
 from pathlib import Path
 
 import pytest
@@ -339,6 +340,21 @@ def test_summary_prints_the_class_summary_only(tmp_path, key_dir, key):
     _, rep = as_json(key_dir / "answers.json", path)
     assert rep["summary"]["handed_in_nothing"] == ["nobody"]
     assert sum(rep["summary"]["score_distribution"].values()) == 5
+
+
+def test_the_whole_report_in_russian(tmp_path, key_dir, key):
+    """--lang ru words the per-student tables, the group and the statistics in Russian; the
+    numbers are the English report's."""
+    path = sheet(tmp_path / "a.csv", key)
+    en = invoke(key_dir / "answers.json", path)
+    ru = invoke(key_dir / "answers.json", path, "--lang", "ru")
+    assert en.exit_code == ru.exit_code == 0, ru.output
+    assert "By answer" in en.stdout and "variant" in en.stdout
+    for words in ("ivanov — вариант", "ответ", "допуск", "верно", "Группа: проверено 4",
+                  "По ответам", "средний балл 100 %; все ответы верны: 4 из 4"):
+        assert words in ru.stdout, words
+    assert "By answer" not in ru.stdout and "mean score" not in ru.stdout
+    assert re.findall(r"\d+(?:\.\d+)?", en.stdout) == re.findall(r"\d+(?:\.\d+)?", ru.stdout)
 
 
 def test_a_student_twice_the_later_row_counts(tmp_path, key_dir, key):

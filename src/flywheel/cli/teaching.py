@@ -110,8 +110,8 @@ def grade_command(
     csv_style: str = typer.Option("plain", "--csv", help="CSV dialect of --out and "
                                   "--gradebook: plain, or excel-ru (';', decimal commas, BOM: "
                                   "opens in a Russian Excel)."),
-    lang: str = typer.Option("en", "--lang", help="Language of the summary and the gradebook's "
-                             "headers: en | ru."),
+    lang: str = typer.Option("en", "--lang", help="Language of the report, the summary and the "
+                             "gradebook's headers: en | ru."),
     as_json: bool = typer.Option(False, "--json", help="Print the report as JSON."),
 ) -> None:
     """Grade students' answers against an answer key: per student each answer's error and
@@ -179,7 +179,7 @@ def grade_command(
         if summary:
             print_class_summary(report, lang)
         else:
-            print_report(report)
+            print_report(report, lang=lang)
         for path in (out, gradebook):
             if path is not None and report.students:
                 typer.echo(f"written: {path}")
