@@ -176,8 +176,8 @@ FIELDS: list[tuple[str, str, str]] = [
 ANSWERS: dict[str, tuple[str, str]] = {
     "run:J_required": ("the required moment of inertia of the first group",
                        "необходимый момент инерции первой группы звеньев"),
-    "task2:J_required": ("the moment of inertia that gives the asked δ",
-                         "приведённый момент инерции, обеспечивающий заданный δ"),
+    "task2:J_required": ("the moment of inertia that gives the asked δ,",
+                         "приведённый момент инерции, обеспечивающий заданный δ,"),
     "task2:delta": ("the coefficient of speed fluctuation", "коэффициент неравномерности хода"),
     "driving_moment": ("the driving moment that balances the cycle",
                        "приведённый движущий момент из условия цикла"),
