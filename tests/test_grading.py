@@ -369,3 +369,48 @@ def test_a_student_twice_the_later_row_counts(tmp_path, key_dir, key):
     assert iv["file"] == str(b) and iv["score"] < 1                # … with the later row
     assert any("'ivanov' appears again" in p["message"] and "the later row counts" in p["message"]
                for p in rep["problems"])
+
+
+def test_a_class_batch_scored_as_a_teacher_would(tmp_path, key_dir, key):
+    """One batch: right (ivanov), slightly off but inside every tolerance (petrova), badly
+    wrong (sidorov: every answer 1.5 times the key), handed in nothing (kim), and ivanov again
+    in a second file with his first answer wrong. A teacher's marks: the later ivanov row in
+    the first's place, n−1 of n; petrova n of n; sidorov 0; kim 0 with every answer missing."""
+    answers, n = key["answers"], len(key["answers"])
+    tol = {a: key["tolerances"].get(a, key["tolerance"]) for a in answers}
+
+    def edit(i, ans):
+        for a in answers:
+            if i == 1:
+                ans[a] *= 1 + tol[a] / 2                       # within its own tolerance
+            elif i == 2:
+                ans[a] *= 1.5
+            elif i == 3:
+                ans[a] = ""
+    first = sheet(tmp_path / "a.csv", key, change=edit)
+    again = tmp_path / "b.csv"
+    vid = list(key["variants"])[0]
+    redo = dict(key["variants"][vid], **{answers[0]: 2 * key["variants"][vid][answers[0]]})
+    with open(again, "w", newline="", encoding="utf-8") as f:
+        csv.writer(f).writerows([["student", "variant", *answers],
+                                 ["ivanov", vid, *(repr(redo[a]) for a in answers)]])
+    book = tmp_path / "book.csv"
+    res, rep = as_json(key_dir / "answers.json", first, again, "--gradebook", book)
+    assert res.exit_code == 0, res.output
+    marks = {s["student"]: (s["passed"], s["total"]) for s in rep["students"]}
+    assert marks == {"ivanov": (n - 1, n), "petrova": (n, n), "sidorov": (0, n), "kim": (0, n)}
+    assert rep["summary"]["handed_in_nothing"] == ["kim"]
+    assert rep["summary"]["full_marks"] == 1
+    assert rep["summary"]["score_distribution"] == {
+        str(k): v for k, v in {0: 2, n - 1: 1, n: 1}.items()} | {
+        str(k): 0 for k in range(n + 1) if k not in (0, n - 1, n)}
+    assert [p for p in rep["problems"] if "'ivanov' appears again" in p["message"]]
+    rows = list(csv.reader(book.open(encoding="utf-8")))
+    assert [r[0] for r in rows[1:]] == ["ivanov", "petrova", "sidorov", "kim"]
+    verdicts = {r[0]: r[2:2 + 2 * n:2] for r in rows[1:]}
+    assert verdicts["ivanov"] == ["FAIL"] + ["pass"] * (n - 1)
+    assert verdicts["petrova"] == ["pass"] * n
+    assert verdicts["sidorov"] == ["FAIL"] * n and verdicts["kim"] == ["no answer"] * n
+    errors = {r[0]: r[3:3 + 2 * n:2] for r in rows[1:]}
+    assert [float(e) for e in errors["sidorov"]] == pytest.approx([0.5] * n)
+    assert [float(e) for e in errors["petrova"]] == pytest.approx([tol[a] / 2 for a in answers])
