@@ -54,7 +54,7 @@ from flywheel.cli import app
 ROOT = Path(__file__).resolve().parents[1]
 CASES = ROOT / "cases"
 CATALOGUE = Path(__file__).resolve().parent / "bad_inputs" / "catalogue.toml"
-COMMANDS = ("run", "check", "task2", "aggregate", "variants", "grade", "schema")
+COMMANDS = ("run", "check", "task2", "aggregate", "duty-cycle", "variants", "grade", "schema")
 runner = CliRunner()
 
 

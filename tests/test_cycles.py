@@ -79,12 +79,25 @@ def test_report_angles_beyond_one_revolution():
     assert r.phi[i] == pytest.approx(math.radians(480.0), abs=1e-12)
 
 
+def _run_cases() -> list[str]:
+    from flywheel.cases import kind_of
+
+    return [p.name for p in sorted(CASES.glob("*.toml")) if kind_of(read_toml(p)) == "run"]
+
+
 def test_cycle_deg_is_in_every_summary(tmp_path):
-    for name, cycle in (("compressor.toml", 360), ("press.toml", 360), ("fourbar.toml", 360)):
-        res = runner.invoke(app, ["run", str(CASES / name), "--no-plots", "--json", "--out",
-                                  str(tmp_path / name)])
+    """Every bundled run case, its summary's results.cycle_deg the case's machine.cycle_deg
+    (360 unless it says otherwise: 720 for the engines)."""
+    names = _run_cases()
+    assert {"compressor.toml", "press.toml", "engine_4stroke.toml", "engine_inline4.toml",
+            "shaper.toml", "pump.toml"} <= set(names)
+    for name in names:
+        res = runner.invoke(app, ["run", str(CASES / name), "--no-plots", "--json", "--points",
+                                  "720", "--out", str(tmp_path / name)])
         assert res.exit_code == 0, res.output
-        assert json.loads(res.stdout)["results"]["cycle_deg"] == cycle
+        want = read_toml(CASES / name)["machine"].get("cycle_deg", 360)
+        assert json.loads(res.stdout)["results"]["cycle_deg"] == want, name
+        assert want == (720 if name.startswith("engine") else 360)
 
 
 def test_a_720_degree_run_writes_every_output(tmp_path):

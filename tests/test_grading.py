@@ -2,6 +2,7 @@
 statistics, and a batch that goes on past broken files and rows."""
 import csv
 import json
+import re
 from pathlib import Path
 
 import pytest
@@ -173,7 +174,7 @@ def test_folders_excel_style_sheets_and_variant_spellings(tmp_path, key_dir, key
 
 
 def test_out_writes_one_line_per_answer(tmp_path, key_dir, key):
-    out = tmp_path / "report" / "grades.csv"
+    out = tmp_path / "grades.csv"
     res = invoke(key_dir / "answers.json", sheet(tmp_path / "a.csv", key), "--out", out)
     assert res.exit_code == 0, res.output
     with open(out, newline="") as f:
@@ -183,6 +184,13 @@ def test_out_writes_one_line_per_answer(tmp_path, key_dir, key):
     assert {r["pass"] for r in rows} == {"1"}
     one_line_error(invoke(key_dir / "answers.json", tmp_path / "a.csv", "--out", tmp_path),
                    "--out", "is a folder")
+    # a file in a folder that does not exist (a mistyped path): refused before grading, as
+    # task2 --plot does; nothing is created
+    for option in ("--out", "--gradebook"):
+        one_line_error(invoke(key_dir / "answers.json", tmp_path / "a.csv", option,
+                              tmp_path / "no" / "such" / "book.csv"),
+                       option, "book.csv: the folder", "no/such does not exist")
+        assert not (tmp_path / "no").exists()
 
 
 def test_bad_key_and_options(tmp_path, key_dir, key):
@@ -334,6 +342,21 @@ def test_summary_prints_the_class_summary_only(tmp_path, key_dir, key):
     assert sum(rep["summary"]["score_distribution"].values()) == 5
 
 
+def test_the_whole_report_in_russian(tmp_path, key_dir, key):
+    """--lang ru words the per-student tables, the group and the statistics in Russian; the
+    numbers are the English report's."""
+    path = sheet(tmp_path / "a.csv", key)
+    en = invoke(key_dir / "answers.json", path)
+    ru = invoke(key_dir / "answers.json", path, "--lang", "ru")
+    assert en.exit_code == ru.exit_code == 0, ru.output
+    assert "By answer" in en.stdout and "variant" in en.stdout
+    for words in ("ivanov — вариант", "ответ", "допуск", "верно", "Группа: проверено 4",
+                  "По ответам", "средний балл 100 %; все ответы верны: 4 из 4"):
+        assert words in ru.stdout, words
+    assert "By answer" not in ru.stdout and "mean score" not in ru.stdout
+    assert re.findall(r"\d+(?:\.\d+)?", en.stdout) == re.findall(r"\d+(?:\.\d+)?", ru.stdout)
+
+
 def test_a_student_twice_the_later_row_counts(tmp_path, key_dir, key):
     a = sheet(tmp_path / "a.csv", key)
     b = sheet(tmp_path / "b.csv", key, names=("ivanov", "x1", "x2", "x3"),
@@ -346,3 +369,48 @@ def test_a_student_twice_the_later_row_counts(tmp_path, key_dir, key):
     assert iv["file"] == str(b) and iv["score"] < 1                # … with the later row
     assert any("'ivanov' appears again" in p["message"] and "the later row counts" in p["message"]
                for p in rep["problems"])
+
+
+def test_a_class_batch_scored_as_a_teacher_would(tmp_path, key_dir, key):
+    """One batch: right (ivanov), slightly off but inside every tolerance (petrova), badly
+    wrong (sidorov: every answer 1.5 times the key), handed in nothing (kim), and ivanov again
+    in a second file with his first answer wrong. A teacher's marks: the later ivanov row in
+    the first's place, n−1 of n; petrova n of n; sidorov 0; kim 0 with every answer missing."""
+    answers, n = key["answers"], len(key["answers"])
+    tol = {a: key["tolerances"].get(a, key["tolerance"]) for a in answers}
+
+    def edit(i, ans):
+        for a in answers:
+            if i == 1:
+                ans[a] *= 1 + tol[a] / 2                       # within its own tolerance
+            elif i == 2:
+                ans[a] *= 1.5
+            elif i == 3:
+                ans[a] = ""
+    first = sheet(tmp_path / "a.csv", key, change=edit)
+    again = tmp_path / "b.csv"
+    vid = list(key["variants"])[0]
+    redo = dict(key["variants"][vid], **{answers[0]: 2 * key["variants"][vid][answers[0]]})
+    with open(again, "w", newline="", encoding="utf-8") as f:
+        csv.writer(f).writerows([["student", "variant", *answers],
+                                 ["ivanov", vid, *(repr(redo[a]) for a in answers)]])
+    book = tmp_path / "book.csv"
+    res, rep = as_json(key_dir / "answers.json", first, again, "--gradebook", book)
+    assert res.exit_code == 0, res.output
+    marks = {s["student"]: (s["passed"], s["total"]) for s in rep["students"]}
+    assert marks == {"ivanov": (n - 1, n), "petrova": (n, n), "sidorov": (0, n), "kim": (0, n)}
+    assert rep["summary"]["handed_in_nothing"] == ["kim"]
+    assert rep["summary"]["full_marks"] == 1
+    assert rep["summary"]["score_distribution"] == {
+        str(k): v for k, v in {0: 2, n - 1: 1, n: 1}.items()} | {
+        str(k): 0 for k in range(n + 1) if k not in (0, n - 1, n)}
+    assert [p for p in rep["problems"] if "'ivanov' appears again" in p["message"]]
+    rows = list(csv.reader(book.open(encoding="utf-8")))
+    assert [r[0] for r in rows[1:]] == ["ivanov", "petrova", "sidorov", "kim"]
+    verdicts = {r[0]: r[2:2 + 2 * n:2] for r in rows[1:]}
+    assert verdicts["ivanov"] == ["FAIL"] + ["pass"] * (n - 1)
+    assert verdicts["petrova"] == ["pass"] * n
+    assert verdicts["sidorov"] == ["FAIL"] * n and verdicts["kim"] == ["no answer"] * n
+    errors = {r[0]: r[3:3 + 2 * n:2] for r in rows[1:]}
+    assert [float(e) for e in errors["sidorov"]] == pytest.approx([0.5] * n)
+    assert [float(e) for e in errors["petrova"]] == pytest.approx([tol[a] / 2 for a in answers])

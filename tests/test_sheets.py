@@ -33,7 +33,8 @@ def err_text(res):
 
 class Sheet(HTMLParser):
     """The text of a sheet as a person reads it: the tables' rows (cells), the paragraphs, the
-    headings; images counted. Attributes (the embedded PNG) are not text."""
+    headings; images counted. Attributes (the embedded PNG) are not text. A subscript
+    (<sub>нб</sub>) is read back in the underscore notation ("ΔT_нб")."""
 
     def __init__(self, html: str):
         super().__init__()
@@ -58,6 +59,8 @@ class Sheet(HTMLParser):
             self._text, self._where = [], tag
         elif tag == "img":
             self.images += 1
+        elif tag == "sub":
+            self.handle_data("_")
 
     def handle_endtag(self, tag):
         if tag in ("td", "th") and self._cell is not None:
@@ -87,7 +90,7 @@ def pages(pdf: bytes) -> int:
 @pytest.fixture(scope="module")
 def compressor_dir(tmp_path_factory):
     out = tmp_path_factory.mktemp("s") / "compressor"
-    res = invoke(COMPRESSOR, "--count", 3, "--seed", 11, "--out", out, "--sheets")
+    res = invoke(COMPRESSOR, "--count", 3, "--seed", 11, "--out", out, "--sheets", "--lang", "ru")
     assert res.exit_code == 0, res.output
     return out
 
@@ -140,7 +143,7 @@ def test_the_sheet_carries_the_variants_own_values(compressor_dir):
         # the fixed data a student needs, from the variant file itself
         doc = tomllib.loads((compressor_dir / f"variant_{vid}.toml").read_text(encoding="utf-8"))
         rows = {r[0]: r[1:] for r in other[1:]}
-        assert rows["масса звена 5 m5"] == ["%g" % doc["links"]["5"]["mass"], "кг"]
+        assert rows["масса звена 5 m_5"] == ["%g" % doc["links"]["5"]["mass"], "кг"]
         assert rows["плотность материала маховика ρ"] == ["7800", "кг/м³"]
         assert numbers(rows["цилиндр LP: p/p_max при движении поршня к головке"][0]) == \
             doc["cylinders"][1]["towards_head"]
@@ -206,7 +209,7 @@ def test_the_pdf_source_carries_the_same_values_and_no_answer(tmp_path):
 
 def test_byte_identical_on_rerun(tmp_path, compressor_dir):
     out = tmp_path / "again"
-    res = invoke(COMPRESSOR, "--count", 3, "--seed", 11, "--out", out, "--sheets")
+    res = invoke(COMPRESSOR, "--count", 3, "--seed", 11, "--out", out, "--sheets", "--lang", "ru")
     assert res.exit_code == 0, res.output
     for f in [*(compressor_dir / "sheets").iterdir(), compressor_dir / "sheets.pdf"]:
         rel = f.relative_to(compressor_dir)
@@ -224,7 +227,8 @@ def test_russian_and_english_wording(compressor_dir, task2_dir, tmp_path):
     assert en.captions == ["Figure 1 — The given moment graphs M_D(φ) and M_C(φ)"]
     # the same task2 variants in Russian: the course's symbols
     out = tmp_path / "ru"
-    assert invoke(TASK2, "--count", 1, "--seed", 5, "--out", out, "--sheets").exit_code == 0
+    assert invoke(TASK2, "--count", 1, "--seed", 5, "--out", out, "--sheets",
+                  "--lang", "ru").exit_code == 0
     sh = sheet_of(out, "01")
     assert sh.captions == ["Рис. 1 — Заданные графики моментов M_Д(φ) и M_С(φ)"]
     assert sh.paragraphs[-6] == "1. Определить момент сопротивления M_С, Н·м (допуск ±1 %)."
@@ -249,7 +253,7 @@ def test_tabulated_template_sheets_without_drawing_one_note(tmp_path):
                         'answers = ["J_required"]\n', encoding="utf-8")
     out = tmp_path / "v"
     res = invoke(template, "--count", 3, "--seed", 1, "--out", out, "--sheets",
-                 "--sheets-format", "html")
+                 "--sheets-format", "html", "--lang", "ru")
     assert res.exit_code == 0, res.output
     notes = [ln for ln in err_text(res).splitlines() if "sheet" in ln]
     assert len(notes) == 1 and notes[0].startswith("note: --sheets: ")
@@ -268,3 +272,57 @@ def test_without_sheets_nothing_changes(tmp_path, compressor_dir):
     for f in out.glob("*.*"):
         if f.name != ".flywheel-manifest.json":
             assert f.read_bytes() == (compressor_dir / f.name).read_bytes()
+
+
+def test_the_default_language_is_english_as_every_other_command(tmp_path):
+    out = tmp_path / "en"
+    assert invoke(TASK2, "--count", 1, "--seed", 5, "--out", out, "--sheets",
+                  "--sheets-format", "html").exit_code == 0
+    sh = sheet_of(out, "01")
+    assert sh.headings[:3] == ["Variant 1", "Given", "Determine"]
+
+
+def test_symbols_are_typeset_with_subscripts_not_underscores(compressor_dir):
+    """M_Д, ΔT_нб, J_I, J_М, p_max: a subscript in the HTML (<sub>) and in the PDF's typst
+    source (#sub[…]), never a literal underscore in what a student reads."""
+    from flywheel.render.sheets import build_sheet, sheet_typst
+    from flywheel.teaching.sheets import sheets_of
+    from flywheel.teaching.variants import generate, load_template
+
+    page = (compressor_dir / "sheets" / "variant_01.html").read_text(encoding="utf-8")
+    for sym in ("M<sub>Д</sub>", "ΔT<sub>нб</sub>", "J<sub>I</sub>", "J<sub>М</sub>",
+                "p/p<sub>max</sub>", "m<sub>5</sub>", "J<sub>S2</sub>"):
+        assert sym in page, sym
+
+    class Visible(Sheet):                   # the text as printed: no underscore added back
+        def handle_starttag(self, tag, attrs):
+            if tag != "sub":
+                super().handle_starttag(tag, attrs)
+
+    assert "_" not in re.sub(r"_{2,}", "", Visible(page).text)     # the name line's blanks aside
+    s = sheets_of(generate(load_template(COMPRESSOR), 1, 11))[0]
+    for lang in ("ru", "en"):
+        src = sheet_typst(build_sheet(s, lang, "x.png"))
+        body = src.split("\n\n", 1)[1]
+        assert '#sub[#"max"]' in body and "\ue000" not in body and "\ue001" not in body
+        assert "_" not in re.sub(r"_{2,}", "", body), lang
+
+
+def test_engine_and_shaper_sheets_name_every_field(tmp_path):
+    """The four-stroke template's stroke tables and firing angle and the shaper's fixed pivot
+    have names on the sheet, not the case file's dotted paths."""
+    for name in ("variants_engine.toml", "variants_shaper.toml"):
+        out = tmp_path / name
+        assert invoke(CASES / name, "--count", 1, "--seed", 2, "--out", out, "--sheets",
+                      "--sheets-format", "html", "--lang", "ru").exit_code == 0
+        sh = sheet_of(out, "01")
+        labels = [r[0] for t in sh.tables for r in t[1:]]
+        assert not [x for x in labels if re.fullmatch(r"[\w.]+", x) and "." in x], labels
+    engine = sheet_of(tmp_path / "variants_engine.toml", "01")
+    labels = [r[0] for t in engine.tables for r in t[1:]]
+    assert "цилиндр 1: p/p_max на такте сжатия" in labels
+    assert "цилиндр 1: воспламенение при φ" in labels
+    items = [p for p in sheet_of(tmp_path / "variants_shaper.toml", "01").paragraphs
+             if re.match(r"\d+\. ", p)]
+    assert "4. Определить момент инерции маховика на его валу J_М/i², кг·м² (допуск ±1 %)." \
+        in items                                 # the symbol once

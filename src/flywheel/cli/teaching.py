@@ -29,7 +29,8 @@ def variants_command(
                                 "them all): the drawing, the data, what to find; no answers."),
     sheets_format: str = typer.Option("both", "--sheets-format", help="Formats of --sheets: "
                                       "both | html | pdf."),
-    lang: str = typer.Option("ru", "--lang", help="Language of the task sheets: ru | en."),
+    lang: str = typer.Option("en", "--lang", help="Language of the task sheets: en | ru "
+                             "(ru: the wording of a Russian course sheet)."),
 ) -> None:
     """Individual variants of a task from a template, with the answer key (answers.json,
     answers.csv), a blank answer sheet (students.csv) and, with --sheets, a printable task
@@ -43,7 +44,7 @@ def variants_command(
     if points < 36:
         fail(f"--points: {points} is too few (allowed: 36 or more)")
     if lang not in ("en", "ru"):
-        fail(f"--lang: {lang!r} is not a language (allowed: ru, en)")
+        fail(f"--lang: {lang!r} is not a language (allowed: en, ru)")
     if sheets_format not in ("both", "html", "pdf"):
         fail(f"--sheets-format: {sheets_format!r} is not a sheet format (allowed: both, html, "
              "pdf)")
@@ -109,8 +110,8 @@ def grade_command(
     csv_style: str = typer.Option("plain", "--csv", help="CSV dialect of --out and "
                                   "--gradebook: plain, or excel-ru (';', decimal commas, BOM: "
                                   "opens in a Russian Excel)."),
-    lang: str = typer.Option("en", "--lang", help="Language of the summary and the gradebook's "
-                             "headers: en | ru."),
+    lang: str = typer.Option("en", "--lang", help="Language of the report, the summary and the "
+                             "gradebook's headers: en | ru."),
     as_json: bool = typer.Option(False, "--json", help="Print the report as JSON."),
 ) -> None:
     """Grade students' answers against an answer key: per student each answer's error and
@@ -126,6 +127,10 @@ def grade_command(
         fail(f"--lang: {lang!r} is not a language (allowed: en, ru)")
     if csv_style not in ("plain", "excel-ru"):
         fail(f"--csv: {csv_style!r} is not a CSV dialect (allowed: plain, excel-ru)")
+    for option, path in (("--out", out), ("--gradebook", gradebook)):
+        if path is not None and not path.is_dir() and not path.parent.is_dir():
+            fail(f"{option} {path}: the folder {path.parent} does not exist (allowed: a CSV file "
+                 "name in an existing folder)")
     k = _guard(load_key, key)
     from rich.console import Console
     from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn
@@ -174,7 +179,7 @@ def grade_command(
         if summary:
             print_class_summary(report, lang)
         else:
-            print_report(report)
+            print_report(report, lang=lang)
         for path in (out, gradebook):
             if path is not None and report.students:
                 typer.echo(f"written: {path}")

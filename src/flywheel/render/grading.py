@@ -12,7 +12,15 @@ TEXT = {
            "graded); --json lists them", "verdict": "verdict", "error": "error", "score": "score",
            "total": "total", "pass": "pass", "fail": "FAIL", "no_answer": "no answer",
            "student": "student", "variant": "variant", "full": "full marks: {k} of {n}",
-           "each": "each", "of": "of"},
+           "each": "each", "of": "of",
+           "student_title": "{student} — variant {variant} — {passed}/{total} ({pct})",
+           "answer": "answer", "given": "given", "key": "key", "tolerance": "tolerance",
+           "abs": "abs", "group": "Group: {n} graded, mean score {mean}", "wrong_col": "wrong",
+           "more_students": "… and {n} more students (the whole report: --out REPORT.csv or "
+           "--json)", "by_answer": "By answer",
+           "stats": "mean score {mean}; full marks: {k} of {n}; most often wrong: {worst}",
+           "problem_list": "{n} problem(s)", "problem_note": "(skipped or not graded):",
+           "more_problems": "… and {n} more (all of them: --json)"},
     "ru": {"summary": "Итоги группы: проверено {n}, средний балл {mean}",
            "dist": "Распределение баллов", "passed": "верных ответов", "students": "студентов",
            "wrong": "Чаще всего ошибались в", "none": "нет", "nothing": "Не сдали ответов ({n})",
@@ -21,7 +29,17 @@ TEXT = {
            "verdict": "оценка", "error": "погрешность", "score": "балл", "total": "всего",
            "pass": "верно", "fail": "НЕВЕРНО", "no_answer": "нет ответа", "student": "студент",
            "variant": "вариант", "full": "все ответы верны: {k} из {n}", "each": "каждый",
-           "of": "из"},
+           "of": "из",
+           "student_title": "{student} — вариант {variant} — {passed}/{total} ({pct})",
+           "answer": "ответ", "given": "дано", "key": "ключ", "tolerance": "допуск",
+           "abs": "абс.", "group": "Группа: проверено {n}, средний балл {mean}",
+           "wrong_col": "ошибки",
+           "more_students": "… и ещё студентов: {n} (весь отчёт: --out REPORT.csv или --json)",
+           "by_answer": "По ответам",
+           "stats": "средний балл {mean}; все ответы верны: {k} из {n}; чаще всего ошибались "
+                    "в: {worst}",
+           "problem_list": "Замечаний: {n}", "problem_note": "(пропущено или не проверено):",
+           "more_problems": "… и ещё {n} (все: --json)"},
 }
 
 
@@ -136,65 +154,69 @@ DETAIL_STUDENTS = 60      # a class: per student a table of the answers; more: t
 GROUP_ROWS = 500          # rows of the group table and problem lines shown on the terminal
 
 
-def print_report(r, console=None) -> None:
+def print_report(r, console=None, lang: str = "en") -> None:
     """Per student a table of the answers (for a class of up to DETAIL_STUDENTS); then the
     group table, statistics and problems, each cut at GROUP_ROWS lines with a note where the
-    whole report is (--out, --json): the terminal gets a readable page, not megabytes."""
+    whole report is (--out, --json): the terminal gets a readable page, not megabytes. The
+    wording in ``lang`` (the problems' own messages stay as the grader words them)."""
     from rich.console import Console
     from rich.table import Table
 
+    t = TEXT[lang]
     console = console or Console()
     for s in (r.students if len(r.students) <= DETAIL_STUDENTS else ()):
-        table = Table(title=f"{s.student} — variant {s.variant} — {s.passed}/{s.total} "
-                            f"({_pct(s.score)})", title_justify="left")
-        table.add_column("answer")
-        table.add_column("given", justify="right")
-        table.add_column("key", justify="right")
-        table.add_column("error", justify="right")
-        table.add_column("tolerance", justify="right")
+        table = Table(title=t["student_title"].format(student=s.student, variant=s.variant,
+                                                      passed=s.passed, total=s.total,
+                                                      pct=_pct(s.score)), title_justify="left")
+        table.add_column(t["answer"])
+        table.add_column(t["given"], justify="right")
+        table.add_column(t["key"], justify="right")
+        table.add_column(t["error"], justify="right")
+        table.add_column(t["tolerance"], justify="right")
         table.add_column("")
         for a in s.answers:
             err = "—" if a.error is None else (
-                f"{100 * a.error:.3g} %" if a.error_kind == "relative" else f"{a.error:.3g} abs")
-            mark = "[green]pass[/]" if a.passed else (
-                "[red]FAIL[/]" if a.given is not None else "[red]no answer[/]")
+                f"{100 * a.error:.3g} %" if a.error_kind == "relative"
+                else f"{a.error:.3g} {t['abs']}")
+            mark = f"[green]{t['pass']}[/]" if a.passed else (
+                f"[red]{t['fail']}[/]" if a.given is not None else f"[red]{t['no_answer']}[/]")
             table.add_row(a.answer, _g(a.given), _g(a.key), err, f"{100 * a.tolerance:g} %",
                           mark)
         console.print(table)
 
     if r.students:
-        group = Table(title=f"Group: {len(r.students)} graded, mean score "
-                            f"{_pct(r.mean_score)}", title_justify="left")
-        group.add_column("student")
-        group.add_column("variant")
-        group.add_column("score", justify="right")
-        group.add_column("wrong")
+        group = Table(title=t["group"].format(n=len(r.students), mean=_pct(r.mean_score)),
+                      title_justify="left")
+        group.add_column(t["student"])
+        group.add_column(t["variant"])
+        group.add_column(t["score"], justify="right")
+        group.add_column(t["wrong_col"])
         for s in r.students[:GROUP_ROWS]:
             group.add_row(s.student, s.variant, f"{s.passed}/{s.total} ({_pct(s.score)})",
                           ", ".join(s.wrong) or "—")
         console.print(group)
         if len(r.students) > GROUP_ROWS:
-            console.print(f"… and {len(r.students) - GROUP_ROWS} more students (the whole report: "
-                          "--out REPORT.csv or --json)", highlight=False)
-        per = Table(title="By answer", title_justify="left")
-        per.add_column("answer")
-        per.add_column("wrong", justify="right")
-        per.add_column("tolerance", justify="right")
+            console.print(t["more_students"].format(n=len(r.students) - GROUP_ROWS),
+                          highlight=False)
+        per = Table(title=t["by_answer"], title_justify="left")
+        per.add_column(t["answer"])
+        per.add_column(t["wrong_col"], justify="right")
+        per.add_column(t["tolerance"], justify="right")
         for a, (w, n) in r.wrong_counts().items():
             per.add_row(a, f"{w}/{n}", f"{100 * r.key.tolerance_of(a, r.tolerance):g} %")
         console.print(per)
         worst = r.most_often_wrong()
         full = sum(s.passed == s.total for s in r.students)
-        console.print(f"mean score {_pct(r.mean_score)}; full marks: {full} of "
-                      f"{len(r.students)}; most often wrong: "
-                      + ("none" if worst is None else
-                         f"{', '.join(worst[0])} ({worst[1]} of {len(r.students)}"
-                         + (" each)" if len(worst[0]) > 1 else ")")),
-                      highlight=False)
+        console.print(t["stats"].format(
+            mean=_pct(r.mean_score), k=full, n=len(r.students),
+            worst=t["none"] if worst is None else
+            f"{', '.join(worst[0])} ({worst[1]} {t['of']} {len(r.students)}"
+            + (f" {t['each']})" if len(worst[0]) > 1 else ")")), highlight=False)
     if r.problems:
-        console.print(f"[yellow]{len(r.problems)} problem(s)[/] (skipped or not graded):")
+        console.print(f"[yellow]{t['problem_list'].format(n=len(r.problems))}[/] "
+                      f"{t['problem_note']}")
         for p in r.problems[:GROUP_ROWS]:
             console.print(f"  {p}", highlight=False, markup=False, soft_wrap=True)
         if len(r.problems) > GROUP_ROWS:
-            console.print(f"  … and {len(r.problems) - GROUP_ROWS} more (all of them: --json)",
+            console.print("  " + t["more_problems"].format(n=len(r.problems) - GROUP_ROWS),
                           highlight=False)

@@ -75,9 +75,9 @@ FIELDS: list[tuple[str, str, str]] = [
      "точка {x}: доля длины звена"),
     ("points.*.distance", "point {x}: distance along its link", "точка {x}: расстояние по звену"),
     ("points.*.across", "point {x}: offset across its link", "точка {x}: смещение поперёк звена"),
-    ("links.*.mass", "mass of link {x} m{x}", "масса звена {x} m{x}"),
-    ("links.*.J_S", "moment of inertia of link {x} about its centroid J{x}S",
-     "момент инерции звена {x} относительно центра масс J{x}S"),
+    ("links.*.mass", "mass of link {x} m_{x}", "масса звена {x} m_{x}"),
+    ("links.*.J_S", "moment of inertia of link {x} about its centroid J_S{x}",
+     "момент инерции звена {x} относительно центра масс J_S{x}"),
     ("cylinders.#.bore", "bore of cylinder {x} d", "диаметр цилиндра {x} d"),
     ("cylinders.#.p_max", "maximum pressure in cylinder {x} p_max",
      "максимальное давление в цилиндре {x} p_max"),
@@ -96,6 +96,35 @@ FIELDS: list[tuple[str, str, str]] = [
     ("flywheel.inner_ratio", "rim inner to outer diameter D1/D",
      "отношение диаметров обода D₁/D"),
     ("flywheel.speed_ratio", "flywheel shaft speed ratio i", "передаточное отношение к валу маховика i"),
+    # --- audit: engines (issue 13), a given flywheel and its rim (issues 13, 14) ---
+    ("machine.power", "mean power P", "средняя мощность P"),
+    ("crank.pins.#.angle_deg", "crank pin {x}: angle to the crank",
+     "шатунная шейка {x}: угол к кривошипу"),
+    ("crank.pins.#.length", "crank pin {x}: throw", "шатунная шейка {x}: радиус кривошипа"),
+    ("ground.*", "fixed point {x} (x, y)", "неподвижная точка {x} (x, y)"),
+    ("cylinders.#.fires_at_deg", "cylinder {x}: fires at φ", "цилиндр {x}: воспламенение при φ"),
+    ("cylinders.#.strokes.intake", "cylinder {x}: p/p_max on the intake stroke",
+     "цилиндр {x}: p/p_max на такте впуска"),
+    ("cylinders.#.strokes.compression", "cylinder {x}: p/p_max on the compression stroke",
+     "цилиндр {x}: p/p_max на такте сжатия"),
+    ("cylinders.#.strokes.expansion", "cylinder {x}: p/p_max on the expansion stroke",
+     "цилиндр {x}: p/p_max на такте расширения"),
+    ("cylinders.#.strokes.exhaust", "cylinder {x}: p/p_max on the exhaust stroke",
+     "цилиндр {x}: p/p_max на такте выпуска"),
+    ("cylinders.#.diagram.s", "cylinder {x}: indicator diagram, travel s",
+     "цилиндр {x}: индикаторная диаграмма, перемещение s"),
+    ("cylinders.#.diagram.p", "cylinder {x}: indicator diagram, p/p_max",
+     "цилиндр {x}: индикаторная диаграмма, p/p_max"),
+    ("flywheel.mass", "flywheel mass m", "масса маховика m"),
+    ("flywheel.radius_of_gyration", "radius of gyration of the flywheel k",
+     "радиус инерции маховика k"),
+    ("flywheel.allowable_stress", "allowable stress of the rim [σ]",
+     "допускаемое напряжение обода [σ]"),
+    ("flywheel.rim.share", "share of J carried by the rim", "доля J, приходящаяся на обод"),
+    ("flywheel.rim.width_to_thickness", "rim width to thickness b/t",
+     "отношение ширины обода к толщине b/t"),
+    ("flywheel.rim.width", "rim width b", "ширина обода b"),
+    ("flywheel.rim.speed", "rim speed v", "окружная скорость обода v"),
     # task2 («Задача 2»)
     ("cycle_deg", "cycle Φ", "цикл Φ"),
     ("speed.omega0", "angular velocity at φ = 0, ω0", "угловая скорость при φ = 0, ω₀"),
@@ -114,15 +143,41 @@ FIELDS: list[tuple[str, str, str]] = [
     ("resistance.apex_deg", "M_C: angle of its peak", "M_С: угол вершины"),
     ("resistance.base", "M_C outside its graph", "M_С вне участка"),
     ("driving.base", "M_D outside its graph", "M_Д вне участка"),
-]
+    # --- audit: task2 fields of the bundled cases (issue 14) ---
+    ("power", "mean power P", "средняя мощность P"),
+    ("at_deg", "angles asked φ", "заданные углы φ"),
+    ("speed.omega0_rpm", "speed at φ = 0, n0", "частота вращения при φ = 0, n₀"),
+    ("speed.mean_rpm", "mean speed n_m", "средняя частота вращения n_ср"),
+    ("speed.max_rpm", "greatest speed n_max", "наибольшая частота вращения n_max"),
+    ("speed.min_rpm", "least speed n_min", "наименьшая частота вращения n_min"),
+    ("flywheel.fluctuation_percent", "speed fluctuation ± % of the mean",
+     "колебание скорости, ± % от средней"),
+    ("flywheel.rim_radius", "rim radius R", "радиус обода R"),
+    ("diagram.areas", "areas of the turning-moment diagram", "площади диаграммы моментов"),
+    ("diagram.moment_scale", "diagram: moment scale", "диаграмма: масштаб моментов"),
+    ("diagram.angle_scale_deg", "diagram: angle scale", "диаграмма: масштаб углов"),
+    ("diagram.delta_E", "maximum fluctuation of energy ΔE", "наибольшее изменение энергии ΔE"),
+    ("diagram.energy_fluctuation_coefficient", "coefficient of fluctuation of energy C_E",
+     "коэффициент колебания энергии C_E"),
+    ("diagram.work_per_cycle", "work per cycle A", "работа за цикл A"),
+] + [entry for graph, en, ru in (("driving", "M_D", "M_Д"), ("resistance", "M_C", "M_С"))
+     for entry in (
+         (f"{graph}.points", f"{en}: points (φ, M)", f"{ru}: точки графика (φ, M)"),
+         (f"{graph}.scale", f"{en}: scale of the graph", f"{ru}: масштаб графика"),
+         (f"{graph}.a0", f"{en}: constant term a_0", f"{ru}: постоянная составляющая a_0"),
+         (f"{graph}.a", f"{en}: sine coefficients a_k", f"{ru}: коэффициенты при sin kφ a_k"),
+         (f"{graph}.b", f"{en}: cosine coefficients b_k", f"{ru}: коэффициенты при cos kφ b_k"),
+         (f"{graph}.orders", f"{en}: harmonic orders k", f"{ru}: порядки гармоник k"),
+         (f"{graph}.top_from_deg", f"{en}: start of the top", f"{ru}: начало верхнего участка"),
+         (f"{graph}.top_to_deg", f"{en}: end of the top", f"{ru}: конец верхнего участка"))]
 
 #: the answers as a task: key → (English, Russian) object of "Determine …" (the symbol and
 #: the unit are the nomenclature's; "{kind}"-specific entries first)
 ANSWERS: dict[str, tuple[str, str]] = {
     "run:J_required": ("the required moment of inertia of the first group",
                        "необходимый момент инерции первой группы звеньев"),
-    "task2:J_required": ("the moment of inertia that gives the asked δ",
-                         "приведённый момент инерции, обеспечивающий заданный δ"),
+    "task2:J_required": ("the moment of inertia that gives the asked δ,",
+                         "приведённый момент инерции, обеспечивающий заданный δ,"),
     "task2:delta": ("the coefficient of speed fluctuation", "коэффициент неравномерности хода"),
     "driving_moment": ("the driving moment that balances the cycle",
                        "приведённый движущий момент из условия цикла"),
@@ -144,9 +199,30 @@ ANSWERS: dict[str, tuple[str, str]] = {
     "omega_mean": ("the mean angular velocity", "среднюю угловую скорость"),
     "cycle_work_resistance": ("the work of the resistance over a cycle",
                               "работу сил сопротивления за цикл"),
+    "balancing_moment": ("the constant moment that balances the cycle (with its sign)",
+                         "постоянный момент из условия цикла (со знаком)"),
+    "flywheel_J_on_its_shaft": ("the moment of inertia of the flywheel on its own shaft",
+                                "момент инерции маховика на его валу"),
 }
 #: answers whose nomenclature symbol differs between the two kinds (J_I of a run, J_пр of task2)
 _SYMBOLS = {"task2:J_required": ("J", "J_пр"), "task2:delta": ("δ", "δ")}
+
+#: a subscript as marked in a sheet's text (private-use characters, which no number or word of
+#: ours contains), typeset by :func:`sheet_html` (<sub>) and :func:`sheet_typst` (#sub[])
+SUB = ("\ue000", "\ue001")
+_SUB_RX = re.compile(r"(?:(?<!\w)|(?<=Δ))([^\W\d_])_([^\W_]+)")
+
+
+def subscripts(text: str) -> str:
+    """The symbols of ``text`` written with an underscore ("M_Д", "ΔT_нб", "p/p_max", "J_S2")
+    with their subscripts marked for typesetting; an underscore inside a word (a case file's
+    name like "crank_gear") is left as it is."""
+    return _SUB_RX.sub(lambda m: f"{m[1]}{SUB[0]}{m[2]}{SUB[1]}", text)
+
+
+def plain(text: str) -> str:
+    """Marked text back as plain text with underscores ("M_Д")."""
+    return text.replace(SUB[0], "_").replace(SUB[1], "")
 
 
 # -- words --------------------------------------------------------------------------------------
@@ -160,18 +236,19 @@ _FIELD_RX = [(_pattern(p), en, ru) for p, en, ru in FIELDS]
 
 
 def field_label(path: str, lang: str, names: dict[str, str] | None = None) -> str:
-    """The label of an input field ("links.2.mass" → "масса звена 2 m2"); ``names``: the
-    element name of an indexed path ("cylinders.0" → "HP"); an unknown field by its path."""
+    """The label of an input field ("links.2.mass" → "масса звена 2 m_2", the subscript
+    marked: :func:`subscripts`); ``names``: the element name of an indexed path ("cylinders.0"
+    → "HP"); an unknown field by its dotted path as the case file spells it."""
     for rx, en, ru in _FIELD_RX:
         m = rx.match(path)
         if m:
             if en.startswith("@"):
-                return nm.name(en[1:], lang)
+                return subscripts(nm.name(en[1:], lang))
             d = m.groupdict()
-            x = d.get("x") or (names or {}).get(path.split(".")[0] + "." + d.get("i", ""), "")
+            x = d.get("x") or ""
             if not x and d.get("i") is not None:
-                x = str(int(d["i"]) + 1)
-            return (ru if lang == "ru" else en).format(x=x)
+                x = (names or {}).get(path[:m.end("i")]) or str(int(d["i"]) + 1)
+            return subscripts((ru if lang == "ru" else en).format(x=x))
     return path
 
 
@@ -196,7 +273,9 @@ def _answer_words(kind: str, key: str, lang: str) -> tuple[str, str, str]:
     if f"{kind}:{key}" in _SYMBOLS:
         sym = _SYMBOLS[f"{kind}:{key}"][lang == "ru"]
     what = words[lang == "ru"] if words else name
-    return what, sym, "" if unit in ("–", "") else unit
+    if sym and what.endswith(sym):          # a name that ends with its symbol: not twice
+        what = what[:-len(sym)].rstrip(" ,")
+    return subscripts(what), subscripts(sym), "" if unit in ("–", "") else unit
 
 
 def _tol(t: float) -> str:
@@ -233,8 +312,8 @@ def build_sheet(sheet, lang: str = "ru", figure: str | None = None) -> Document:
     doc.blocks.append(Paragraph(w["student"]))
     if figure is not None:
         if sheet.moments is not None:
-            caption = w["moments"].format(MD=nm.symbol("driving_moment", lang),
-                                          MC=nm.symbol("M_C", lang))
+            caption = w["moments"].format(MD=subscripts(nm.symbol("driving_moment", lang)),
+                                          MC=subscripts(nm.symbol("M_C", lang)))
         else:
             caption = w["scheme"].format(a=sheet.angle_deg)
         doc.blocks.append(Figure(1, caption, figure))
@@ -333,10 +412,21 @@ def sheet_typst(doc: Document) -> str:
     from flywheel.render.report_formats import typst_source
 
     src = typst_source(doc)
+    # a marked subscript is inside one of the source's string literals (#"…"): close it
+    src = src.replace(SUB[0], '"#sub[#"').replace(SUB[1], '"]#"')
     src = src.replace('margin: (x: 18mm, y: 18mm), numbering: "1"', 'margin: (x: 15mm, y: 12mm)')
     src = src.replace("inset: 3pt, align: (x, y) => if x == 0 { left } else { right },",
                       "inset: 2pt, align: (left, right, left),")    # (tests/test_sheets.py's one-page check fails if report_formats._typst_table changes this)
     return src.replace("width: 100%)", "height: 62mm)")
+
+
+def sheet_html(doc: Document, images: Path | None) -> str:
+    """The sheet as one self-contained HTML page: the записка's (report_formats.html) with the
+    sheet's print style and the marked subscripts as <sub>."""
+    from flywheel.render.report_formats import html
+
+    page = html(doc, images).replace("</style>", _CSS + "</style>", 1)
+    return page.replace(SUB[0], "<sub>").replace(SUB[1], "</sub>")
 
 
 def _body(src: str) -> tuple[str, str]:
@@ -369,8 +459,6 @@ def write_sheets(sheets, folder: Path, lang: str = "ru", formats: str = "both",
                  progress=None) -> list[str]:
     """Write ``folder``/sheets/<variant>.html and/or .pdf for every sheet, and with PDF the
     class set ``folder``/sheets.pdf (one page per sheet); the names written (relative)."""
-    from flywheel.render.report_formats import html
-
     if formats not in FORMATS:
         raise ValueError(f"sheet format {formats!r} (allowed: {', '.join(FORMATS)})")
     out = folder / FOLDER
@@ -382,8 +470,7 @@ def write_sheets(sheets, folder: Path, lang: str = "ru", formats: str = "both",
             png = f"{s.stem}.png"
             doc = build_sheet(s, lang, png if draw(s, images / png, lang) else None)
             if formats in ("both", "html"):
-                page = html(doc, images).replace("</style>", _CSS + "</style>", 1)
-                (out / f"{s.stem}.html").write_text(page, encoding="utf-8")
+                (out / f"{s.stem}.html").write_text(sheet_html(doc, images), encoding="utf-8")
                 names.append(f"{FOLDER}/{s.stem}.html")
             if formats in ("both", "pdf"):
                 src = sheet_typst(doc)

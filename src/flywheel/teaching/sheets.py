@@ -158,9 +158,10 @@ def given_rows(kind: str, document: dict, varied) -> tuple[Given, ...]:
     return tuple(drawn + [g for g in rows if not g.varied])
 
 
-def element_names(document: dict) -> dict[str, str]:
-    """The name of each table of an array of tables ("cylinders.0" → "HP"): its ``name``,
-    else its ``joint`` (a dyad is named by its joint)."""
+def element_names(document: dict, prefix: str = "") -> dict[str, str]:
+    """The name of each table of an array of tables ("cylinders.0" → "HP", "crank.pins.0" →
+    "A2"): its ``name``, else its ``joint`` (a dyad is named by its joint); arrays inside a
+    table too (a crank's pins)."""
     out = {}
     for key, value in document.items():
         if isinstance(value, list):
@@ -168,7 +169,9 @@ def element_names(document: dict) -> dict[str, str]:
                 if isinstance(entry, dict):
                     name = entry.get("name", entry.get("joint"))
                     if isinstance(name, str) and name:
-                        out[f"{key}.{i}"] = name
+                        out[f"{prefix}{key}.{i}"] = name
+        elif isinstance(value, dict) and not prefix:
+            out.update(element_names(value, f"{key}."))
     return out
 
 
