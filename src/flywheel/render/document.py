@@ -92,7 +92,7 @@ T = {
                  "Merzalov's method, the energy–mass diagram)."),
         "case_source": "Input data: {s}.",
         "fig": {
-            "positions": "Positions of the mechanism", "scheme": "Scheme of the mechanism",
+            "positions": "Position functions of the points x(φ), y(φ)", "scheme": "Scheme of the mechanism",
             "reactions": "Reactions in the kinematic pairs",
             "balancing_moment": "Balancing moment on the crank, three ways",
             "hodographs": "Polar diagrams of the crank-pin, main-bearing and shaking loads",
@@ -186,7 +186,7 @@ T = {
                  "Виттенбауэра)."),
         "case_source": "Исходные данные: {s}.",
         "fig": {
-            "positions": "Планы положений механизма", "scheme": "Схема механизма",
+            "positions": "Функции положения точек x(φ), y(φ)", "scheme": "Схема механизма",
             "reactions": "Реакции в кинематических парах",
             "balancing_moment": "Уравновешивающий момент на кривошипе тремя способами",
             "hodographs": "Полярные диаграммы нагрузок на шатунную шейку, коренной подшипник и стойку",
