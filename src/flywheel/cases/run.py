@@ -77,8 +77,10 @@ class Machine(StrictModel):
             raise ValueError("give exactly one of speed_rps, speed_rpm")
         revs = self.cycle_deg / 360.0
         if not (1 <= revs <= CYCLE_REVS_MAX and revs == round(revs)):
-            raise FieldError(("cycle_deg",), f"{self.cycle_deg:g}° is not a whole number of "
-                             f"revolutions (allowed: 360, 720, 1080 … {360 * CYCLE_REVS_MAX}°)")
+            raise FieldError(("cycle_deg",), Notice(
+                f"{self.cycle_deg:g}° is not a whole number of revolutions (allowed: 360, 720, "
+                f"1080 … {360 * CYCLE_REVS_MAX}°)", "cycle_not_whole", cycle=self.cycle_deg,
+                top=360 * CYCLE_REVS_MAX))
         return self
 
     @property

@@ -989,7 +989,7 @@ PREFIXES = {"warning": ("warning", "предупреждение"), "note": ("no
 
 def _ru_params(code: str, p: dict) -> dict:
     """Parameters of a Notice that need words of their own in Russian."""
-    p = dict(p)
+    p = _msgs_ru_params(p)
     if code == "startup_not_steady":
         p["target"] = (f"{p['omega_pred']:.5g} рад/с" if p.get("omega_pred") is not None
                        else "нет: характеристика двигателя не может нести среднюю нагрузку")
@@ -1018,9 +1018,127 @@ def message(text: str, lang: str = "en") -> str:
     code = getattr(text, "code", "")
     if lang != "ru" or code not in MESSAGES_RU:
         return str(text)
-    return MESSAGES_RU[code].format(**_ru_params(code, text.params))
+    return getattr(text, "lead", "") + MESSAGES_RU[code].format(**_ru_params(code, text.params))
 
 
 def prefix(key: str, lang: str = "en") -> str:
     """A CLI line prefix ("warning", "note", "written") in ``lang``."""
     return PREFIXES[key][lang == "ru"]
+
+
+# --- msgs ---
+# The errors of a user's input (cli/guard.py's `error:` line) in Russian: a FlywheelError or a
+# schema error raised with an errors.Notice says it in the user's --lang. Rare errors stay English.
+PREFIXES["error"] = ("error", "ошибка")
+#: what a file was expected to be (io/toml.py's "is a folder, expected …")
+_FILE_KINDS_RU = {"a TOML case file": "файл случая TOML", "a TOML template": "шаблон TOML"}
+#: the case kinds (cases/__init__.py NAMES) for "this is …, not …"
+_CASE_KINDS_RU = {"run": "случай для flywheel run",
+                  "task2": "случай задачи 2 (заданные графики моментов)",
+                  "aggregate": "случай агрегата (упругие муфты)",
+                  "variants": "шаблон вариантов",
+                  "duty_cycle": "случай рабочего цикла (пресс, клёпальная машина, ножницы)"}
+MESSAGES_RU.update({
+    # io/toml.py
+    "no_such_file": "{path}: нет такого файла",
+    "is_a_folder": "{path}: это папка, а нужен {what_ru}",
+    "not_utf8": "{path}: текст не в кодировке UTF-8 ({reason} в байте {byte})",
+    "toml_syntax": "{path}: синтаксическая ошибка TOML: {detail_ru}",
+    # cases/__init__.py
+    "wrong_kind": "{source}: это {kind_ru}, а не {expected_ru}: используйте `{command}`",
+    # io/schema.py: the field path is the Notice's lead
+    "missing": "не задано обязательное поле",
+    "unknown_key": "неизвестный ключ{hint_ru} (допустимы: {allowed})",
+    "out_of_range": "{x:g}{unit_ru} вне допустимого диапазона ({lo:g} … {hi:g}{unit_ru})",
+    "not_a_table": "должно быть таблицей ключей, например {{ ключ = значение, … }}{got_ru}",
+    "not_finite_number": "должно быть конечным числом{got_ru}",
+    "pydantic_float_type": "должно быть числом{got_ru}",
+    "pydantic_int_type": "должно быть целым числом{got_ru}",
+    "pydantic_int_from_float": "должно быть целым числом, а не дробным{got_ru}",
+    "pydantic_string_type": "должно быть строкой{got_ru}",
+    "pydantic_bool_type": "должно быть логическим значением (true или false){got_ru}",
+    "pydantic_list_type": "должно быть списком [ … ]{got_ru}",
+    "pydantic_tuple_type": "должно быть списком [ … ]{got_ru}",
+    "pydantic_greater_than": "должно быть больше {gt:g}{got_ru}",
+    "pydantic_greater_than_equal": "должно быть не меньше {ge:g}{got_ru}",
+    "pydantic_less_than": "должно быть меньше {lt:g}{got_ru}",
+    "pydantic_less_than_equal": "должно быть не больше {le:g}{got_ru}",
+    "pydantic_literal_error": "должно быть одним из: {expected}{got_ru}",
+    "pydantic_too_short": ("слишком мало элементов: нужно не меньше {min_length}, задано "
+                           "{actual_length}"),
+    "pydantic_too_long": ("слишком много элементов: допустимо не больше {max_length}, задано "
+                          "{actual_length}"),
+    # cases/run.py
+    "cycle_not_whole": ("{cycle:g}° — не целое число оборотов (допустимо: 360, 720, 1080 … "
+                        "{top}°)"),
+    # linkage/solve.py: the group, what would assemble it
+    "dyad_rrr": "группа {name} (RRR, звенья {a}–{b})",
+    "dyad_in_line": "{what_ru} (звенья на одной прямой: мёртвое положение)",
+    "dyad_rrp": "группа {name} (RRP, шатун {rod})",
+    "dyad_rrp_perpendicular": "группа {name} (RRP, шатун {rod} перпендикулярен направляющей)",
+    "dyad_rpr": "группа {name} (RPR, кулиса {rocker})",
+    "cannot_assemble": "{what_ru} не собирается при угле кривошипа φ = {deg:.2f}°",
+    "cannot_assemble_need": "{what_ru} не собирается при угле кривошипа φ = {deg:.2f}°: {need_ru}",
+    "need_base": "{a} и {b} совпадают: у группы нет базы (переместите опору)",
+    "need_in_line": ("расстояние {a}–{b} достигает {edge} м: звенья ложатся на одну прямую "
+                     "(мёртвое положение; измените длину так, чтобы расстояние оставалось "
+                     "строго между {lo:.6g} и {hi:.6g} м)"),
+    "need_reach": ("расстояние {a}–{b} меняется в пределах {dmin:.6g} … {dmax:.6g} м, а звенья "
+                   "({la:.6g} и {lb:.6g} м) достают лишь {lo:.6g} … {hi:.6g} м"),
+    "need_rod": ("шатун ({rod_length:.6g} м) должен быть не короче {reach:.6g} м — наибольшего "
+                 "расстояния точки {origin} от направляющей за цикл"),
+    "need_rod_dead": ("мёртвое положение: сделайте шатун длиннее наибольшего расстояния точки "
+                      "{origin} от направляющей"),
+    "need_offset": ("смещение линии ползуна ({offset:.6g} м) должно быть меньше расстояния "
+                    "{pivot}–{origin}, которое падает до {dmin:.6g} м"),
+    "singular_rpr": ("{what_ru} имеет особое положение вблизи угла кривошипа φ = {deg:.2f}°: "
+                     "{origin} проходит через опору кулисы {pivot}, где направление кулисы не "
+                     "определено (сместите {pivot} с траектории {origin} или измените смещение "
+                     "линии ползуна)"),
+    # teaching/variants.py
+    "checked_as": "{detail_ru} [проверено как {as_kind_ru}]",
+    "template_not_analysed": "{source}: сам шаблон не удаётся рассчитать: {detail_ru}",
+    # io/output.py
+    "out_is_a_file": "--out {target}: {file} — это файл, а не папка",
+    "out_not_ours": ("--out {target}: папка существует, не пуста и записана не командой flywheel "
+                     "(нет {manifest}); укажите новую или пустую папку (в папке, записанной "
+                     "flywheel, повторный запуск заменяет только свои файлы)"),
+    # the command-line options
+    "points_range": ("--points: {n} вне допустимого диапазона (допустимо: 36 … {top}; результаты "
+                     "сходятся гораздо раньше: {default} по умолчанию отличается от сетки в 4 раза "
+                     "мельче не более чем на 1e-4)"),
+    "option_not_finite": "{option} должно быть конечным числом (задано {got})",
+    "option_not_positive": "{option} должно быть положительным (задано {v:g} {unit_ru})",
+    "option_delta": "--delta должно лежать между 0 и 2 (задано {delta:g})",
+    "option_from_to": "--from ({start:g}°) должно быть меньше --to ({end:g}°)",
+})
+_MSGS_DERIVED = {"detail_ru", "as_kind_ru", "what_ru", "need_ru", "kind_ru", "expected_ru", "hint_ru", "unit_ru", "got_ru"}
+
+
+def _msgs_ru_params(p: dict) -> dict:
+    """The Russian words of an error's parameters: a parameter that is itself a Notice (the
+    group in "… cannot be assembled") said in Russian, the kinds of file and case, the unit."""
+    p = dict(p)
+    for k in ("what", "need", "detail"):
+        if k in p:
+            p[k + "_ru"] = message(p[k], "ru")
+    if "what" in p and "what_ru" in p and p["what"] in _FILE_KINDS_RU:
+        p["what_ru"] = _FILE_KINDS_RU[p["what"]]
+    if "kind" in p and "expected" in p:
+        p["kind_ru"] = _CASE_KINDS_RU.get(p["kind"], p["kind"])
+        p["expected_ru"] = _CASE_KINDS_RU.get(p["expected"], p["expected"])
+    if "detail" in p and "path" in p:                  # tomllib's own words stay, not its place
+        p["detail_ru"] = re.sub(r"\(at line (\d+), column (\d+)\)", r"(строка \1, столбец \2)",
+                                p["detail"])
+    if "as_kind" in p:
+        p["as_kind_ru"] = _CASE_KINDS_RU.get(p["as_kind"], p["as_kind"])
+    if isinstance(p.get("expected"), str) and " or " in p["expected"]:   # pydantic's literal
+        p["expected"] = p["expected"].replace(" or ", " или ")
+    if "near" in p:
+        p["hint_ru"] = f"; может быть, {p['near']!r}?" if p["near"] else ""
+    if "unit" in p:
+        p["unit_ru"] = unit(p["unit"], "ru")
+        if "x" in p:                                         # out_of_range: "12 м/с"
+            p["unit_ru"] = f" {p['unit_ru']}" if p["unit"] else ""
+    p["got_ru"] = f" (задано {p['got']})" if p.get("got") else ""
+    return p

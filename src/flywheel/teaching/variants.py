@@ -38,7 +38,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-from flywheel.errors import CaseFileError, FlywheelError, InputError
+from flywheel.errors import CaseFileError, FlywheelError, InputError, Notice, led, said
 from flywheel.io.toml import read_toml
 
 #: intervals of the φ grid for the answers of a run case (4 per degree; the answers differ from
@@ -254,7 +254,8 @@ def detect_kind(doc: dict, source: str) -> str:
             errors[kind] = exc
     likely = "run" if "machine" in doc else "task2"
     what = "a flywheel run case" if likely == "run" else "a flywheel task2 case"
-    raise CaseFileError(f"{errors[likely]} [checked as {what}]")
+    raise CaseFileError(Notice(f"{errors[likely]} [checked as {what}]", "checked_as",
+                               detail=said(errors[likely]), as_kind=likely))
 
 
 def results_of(kind: str, doc: dict, source: str, n_points: int = RUN_POINTS) -> dict:
@@ -271,7 +272,7 @@ def results_of(kind: str, doc: dict, source: str, n_points: int = RUN_POINTS) ->
             where = field_of(exc, case)
             if not where:
                 raise
-            raise type(exc)(f"{where}: {exc}") from None
+            raise type(exc)(led(f"{where}: ", said(exc))) from None
     from flywheel.cases.task2 import solve_case
 
     return solve_case(case, source).to_document()
@@ -350,7 +351,9 @@ def parse_template(data: dict, source: str = "<template>", n_points: int = RUN_P
     try:
         base = results_of(kind, doc, source, n_points)
     except FlywheelError as exc:
-        raise CaseFileError(f"{source}: the template itself cannot be analysed: {exc}") from None
+        raise CaseFileError(Notice(f"{source}: the template itself cannot be analysed: {exc}",
+                                   "template_not_analysed", source=source,
+                                   detail=said(exc))) from None
     pick_answers(base, answers, f"{source}: variants.answers")
     return Template(source, Path(source).name, kind, doc, tuple(varied), answers, tol, tols)
 
