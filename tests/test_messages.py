@@ -210,3 +210,44 @@ def test_an_english_error_is_unchanged_by_its_notice():
     assert str(e) == "c.toml: x: missing required field"
     assert nm.message(said(e), "ru") == "c.toml: x: не задано обязательное поле"
     assert nm.message(said(CaseFileError("plain")), "ru") == "plain"
+
+
+def test_variants_and_grade_say_their_warnings_and_problems_in_russian(tmp_path):
+    """`variants --lang ru`: the repeat warning, the seed and written lines; `grade --lang ru`:
+    every problem of a sheet ("строка N: …") and the written line. English unchanged."""
+    tpl = (CASES / "variants_task2.toml").read_text(encoding="utf-8")
+    tpl = tpl[:tpl.index("\n[variants]") + 1] + ('[variants]\n"flywheel.J" = { values = [5.0, 8.0] }\n'
+                                           'answers = ["M_C", "omega_max"]\n')
+    (tmp_path / "t.toml").write_text(tpl, encoding="utf-8")
+    args = ["variants", str(tmp_path / "t.toml"), "--count", "3", "--seed", "1"]
+    en = runner.invoke(app, [*args, "--out", str(tmp_path / "en")])
+    assert en.exit_code == 0, en.output
+    assert "warning: only 2 different variants are possible; 3 asked, so some repeat" in en.stdout
+    assert "seed 1 (the same seed gives the same files)" in en.stdout
+    ru = runner.invoke(app, [*args, "--out", str(tmp_path / "v"), "--lang", "ru"])
+    assert ru.exit_code == 0, ru.output
+    text = " ".join(ru.stdout.split())
+    assert ("предупреждение: возможно лишь 2 разных вариантов; запрошено 3, поэтому некоторые "
+            "повторяются") in text
+    assert "seed 1 (тот же seed даёт те же файлы)" in text
+    assert f"записано: {tmp_path / 'v'}/" in text
+    sheet = tmp_path / "s.csv"
+    sheet.write_text("student,variant,M_C,omega_max\nIvanov,01,90,abc\nPetrov,07,1,1\n"
+                     "Sidorov,02,90,280\nSidorov,01,90,280\n,01,1,\n", encoding="utf-8")
+    key = str(tmp_path / "v" / "answers.json")
+    ru = runner.invoke(app, ["grade", key, str(sheet), "--lang", "ru", "--out",
+                             str(tmp_path / "m.csv")])
+    assert ru.exit_code == 0, ru.output
+    out = " ".join(ru.stdout.split())
+    assert f"{sheet}, строка 2: 'Ivanov': не число: omega_max = 'abc'; строка пропущена" in out
+    assert f"{sheet}, строка 3: 'Petrov': вариант '07' отсутствует в ключе" in out
+    assert f"{sheet}, строка 6: нет имени студента; строка пропущена" in out
+    assert f"'Sidorov' встречается снова (впервые: {sheet}, строка 4)" in out
+    assert f"записано: {tmp_path / 'm.csv'}" in out
+    en = runner.invoke(app, ["grade", key, str(sheet)])
+    assert f"{sheet}, row 2: 'Ivanov': not a number: omega_max = 'abc'; row skipped" in \
+        " ".join(en.stdout.split())
+    ru = runner.invoke(app, ["grade", key, str(tmp_path / "nope.csv"), "--lang", "ru"])
+    assert ru.exit_code == 2
+    assert ru.stderr == (f"ошибка: нечего проверить (замечаний: 1; первое: {tmp_path}/nope.csv: "
+                         "нет такого файла или папки)\n")

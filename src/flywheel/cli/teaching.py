@@ -55,6 +55,7 @@ def variants_command(
     from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn
 
     from flywheel.render.grading import print_variants
+    from flywheel.render.nomenclature import message, prefix
     from flywheel.teaching.variants import generate, load_template, write_variants
 
     if seed is None:
@@ -78,7 +79,8 @@ def variants_command(
         pages = _guard(sheets_of, vs)
         missing = sorted({p.no_drawing for p in pages if p.no_drawing})
         for why in missing:                 # one line for the batch, not one per sheet
-            sys.stderr.write(f"note: --sheets: {template}: {why}\n")
+            sys.stderr.write(f"{prefix('note', lang)}: --sheets: {template}: "
+                             f"{message(why, lang)}\n")
 
         def extra(folder):
             with Progress(TextColumn("sheets"), BarColumn(), MofNCompleteColumn(),
@@ -88,8 +90,8 @@ def variants_command(
                              lambda i: b.update(t, completed=i))
     _guard(write_variants, vs, out, notes, extra)
     for n in notes:
-        sys.stderr.write(f"note: {n}\n")
-    print_variants(vs, out, sheets=sheets_format if sheets else None)
+        sys.stderr.write(f"{prefix('note', lang)}: {message(n, lang)}\n")
+    print_variants(vs, out, sheets=sheets_format if sheets else None, lang=lang)
 
 
 def grade_command(
@@ -120,6 +122,7 @@ def grade_command(
     import sys
 
     from flywheel.cli.guard import _guard, fail
+    from flywheel.errors import Notice
     from flywheel.io.output import write_file
     from flywheel.teaching.grading import grade, load_key, report_csv, report_dict
 
@@ -147,8 +150,10 @@ def grade_command(
     report = _guard(grade_with_bar)
     if not report.students:                 # an error: one line, nothing else written
         if report.problems:
-            fail(f"nothing could be graded ({len(report.problems)} problem(s); the first: "
-                 f"{report.problems[0]})")
+            first = report.problems[0].said()
+            fail(Notice(f"nothing could be graded ({len(report.problems)} problem(s); the "
+                        f"first: {first})", "nothing_graded", n=len(report.problems),
+                        detail=first))
         files = ", ".join(report.files) or ", ".join(map(str, answers))
         fail(f"{files}: nothing could be graded: no filled-in student rows (a row needs a "
              "student name and a variant)")
@@ -182,7 +187,9 @@ def grade_command(
             print_report(report, lang=lang)
         for path in (out, gradebook):
             if path is not None and report.students:
-                typer.echo(f"written: {path}")
+                from flywheel.render.nomenclature import prefix
+
+                typer.echo(f"{prefix('written', lang)}: {path}")
 
 
 def _number_or_text(cell: str):

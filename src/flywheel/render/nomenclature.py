@@ -1111,8 +1111,43 @@ MESSAGES_RU.update({
     "option_not_positive": "{option} должно быть положительным (задано {v:g} {unit_ru})",
     "option_delta": "--delta должно лежать между 0 и 2 (задано {delta:g})",
     "option_from_to": "--from ({start:g}°) должно быть меньше --to ({end:g}°)",
+    # teaching/grading.py: a sheet's problems ("file, row 3: …"), the grade command
+    "sheet_problem": "{where_ru}: {detail_ru}",
+    "sheet_bad_bom": "начинается с метки порядка байтов {enc}, но не является текстом {enc}",
+    "sheet_binary": "двоичные данные, а не текстовый файл CSV",
+    "sheet_no_encoding": ("двоичные данные, а не текстовый файл CSV (не подходит ни одна "
+                          "кодировка: UTF-8, UTF-16, cp1251, cp866, koi8-r)"),
+    "sheet_too_large": ("{mb:.0f} МБ — слишком большой файл для листа ответов (допустимо: до "
+                        "{top:.0f} МБ)"),
+    "sheet_folder_empty": "папка без файлов *.csv",
+    "sheet_missing": "нет такого файла или папки",
+    "sheet_unreadable": "не удаётся прочитать ({reason})",
+    "sheet_empty": "пустой файл (ожидается заголовок student,variant,…)",
+    "sheet_not_csv": "не читается как файл CSV ({detail})",
+    "sheet_no_column": ("нет столбца {columns} (заголовок должен быть student,variant,<ответы…>; "
+                        "задано {header})"),
+    "sheet_unknown_columns": ("столбцы {columns} не являются ответами ключа (пропущены; ответы: "
+                              "{answers})"),
+    "sheet_absent_columns": "нет столбца для {columns}: эти ответы считаются не данными",
+    "row_no_student": "нет имени студента; строка пропущена",
+    "row_variant": "{student!r}: {what_variant} (допустимы: {allowed}); строка пропущена",
+    "row_not_a_number": "{student!r}: не число: {bad}; строка пропущена",
+    "row_again": ("{student!r} встречается снова (впервые: {file}, строка {row}): засчитана "
+                  "более поздняя строка, ранняя не проверяется"),
+    "run_rows_reached": ("не проверено: за один запуск проверено уже {top} строк студентов "
+                         "(проверяйте листы по частям)"),
+    "run_rows_cut": ("эта строка и {n} после неё не проверены: не больше {top} строк студентов "
+                     "за один запуск (проверяйте листы по частям)"),
+    "nothing_graded": "нечего проверить (замечаний: {n}; первое: {detail_ru})",
+    # teaching/variants.py, teaching/sheets.py
+    "variants_repeat": ("возможно лишь {possible} разных вариантов; запрошено {count}, поэтому "
+                        "некоторые повторяются"),
+    "sheet_no_drawing_tabulated": ("кинематика задана таблицей ([tabulated]): на листе задания "
+                                   "нет чертежа механизма"),
+    "sheet_no_drawing_areas": ("задача задана диаграммой площадей, а не графиками моментов: на "
+                               "листе задания нет чертежа"),
 })
-_MSGS_DERIVED = {"detail_ru", "as_kind_ru", "what_ru", "need_ru", "kind_ru", "expected_ru", "hint_ru", "unit_ru", "got_ru"}
+_MSGS_DERIVED = {"where_ru", "what_variant", "detail_ru", "as_kind_ru", "what_ru", "need_ru", "kind_ru", "expected_ru", "hint_ru", "unit_ru", "got_ru"}
 
 
 def _msgs_ru_params(p: dict) -> dict:
@@ -1132,6 +1167,11 @@ def _msgs_ru_params(p: dict) -> dict:
                                 p["detail"])
     if "as_kind" in p:
         p["as_kind_ru"] = _CASE_KINDS_RU.get(p["as_kind"], p["as_kind"])
+    if "sheet" in p:
+        p["where_ru"] = p["sheet"] if p["row"] is None else f"{p['sheet']}, строка {p['row']}"
+    if "variant" in p and "allowed" in p:
+        p["what_variant"] = (f"вариант {p['variant']!r} отсутствует в ключе" if p["variant"]
+                             else "не указан вариант")
     if isinstance(p.get("expected"), str) and " or " in p["expected"]:   # pydantic's literal
         p["expected"] = p["expected"].replace(" or ", " или ")
     if "near" in p:

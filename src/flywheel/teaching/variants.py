@@ -419,8 +419,9 @@ def generate(template: Template, count: int, seed: int, n_points: int = RUN_POIN
     distinct = count <= template.combinations
     warnings = []
     if not distinct:
-        warnings.append(f"only {template.combinations} different variants are possible; "
-                        f"{count} asked, so some repeat")
+        warnings.append(Notice(f"only {template.combinations} different variants are possible; "
+                               f"{count} asked, so some repeat", "variants_repeat",
+                               possible=template.combinations, count=count))
     seen: set[str] = set()
     variants = []
     failed_total = 0
