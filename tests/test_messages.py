@@ -251,3 +251,33 @@ def test_variants_and_grade_say_their_warnings_and_problems_in_russian(tmp_path)
     assert ru.exit_code == 2
     assert ru.stderr == (f"ошибка: нечего проверить (замечаний: 1; первое: {tmp_path}/nope.csv: "
                          "нет такого файла или папки)\n")
+
+
+def test_transients_reasons_are_russian(tmp_path):
+    """--transients without [motor] on an engine: the start-up and run-down reasons in the
+    summary and the report say in Russian why there is none (the loads drive: +work)."""
+    out = tmp_path / "o"
+    res = runner.invoke(app, ["run", str(CASES / "engine_4stroke.toml"), "--points", "720",
+                              "--no-plots", "--transients", "--lang", "ru", "--report", "md",
+                              "--out", str(out)])
+    assert res.exit_code == 0, res.output
+    text = " ".join(res.stdout.split())
+    md = (out / "report.md").read_text(encoding="utf-8")
+    for said in (text, md):
+        assert "разгон: не рассчитан (в задании нет раздела [motor]" in said
+        assert "выбега нет: нагрузки совершают за цикл положительную работу (+" in said
+        assert "no [motor]" not in said and "positive work" not in said
+    # English keeps its lines
+    en = runner.invoke(app, ["run", str(CASES / "engine_4stroke.toml"), "--points", "720",
+                             "--no-plots", "--transients", "--out", str(tmp_path / "e")])
+    assert "start-up: not computed (no [motor] in the case" in " ".join(en.stdout.split())
+
+
+def test_task2_report_of_an_unknown_driving_moment(tmp_path):
+    """A task2 case whose driving moment comes from the cycle balance writes its report in both
+    languages (it raised KeyError 'M_D' before)."""
+    for lang, said in (("en", "gives M_D = 375 N·m"), ("ru", "даёт M_Д = 375 Н·м")):
+        res = runner.invoke(app, ["task2", "--case", str(CASES / "task2_readme_press.toml"),
+                                  "--out", str(tmp_path / lang), "--report", "md", "--lang", lang])
+        assert res.exit_code == 0, res.output
+        assert said in (tmp_path / lang / "report.md").read_text(encoding="utf-8")

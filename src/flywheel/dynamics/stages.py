@@ -430,9 +430,9 @@ def time_domain(case, phi: np.ndarray, red: ReductionResult, en: EnergyResult,
             means = timedomain.history_cycle_means(st["t"], st["omega"], float(phi[-1] - phi[0]))
     else:
         startup = {"computed": False,
-                   "reason": "no [motor] in the case: under a constant driving moment the work "
-                             "over a cycle is zero at any speed, so there is no start-up to a "
-                             "steady state"}
+                   "reason": Notice("no [motor] in the case: under a constant driving moment "
+                                    "the work over a cycle is zero at any speed, so there is no "
+                                    "start-up to a steady state", "startup_no_motor")}
     rd = timedomain.rundown(phi, J, dJ, en.M_known, float(mo.omega[0]),
                             progress=stage("run-down"))
     histories["rundown"] = (rd["t"], rd["omega"])

@@ -1146,6 +1146,15 @@ MESSAGES_RU.update({
                                    "нет чертежа механизма"),
     "sheet_no_drawing_areas": ("задача задана диаграммой площадей, а не графиками моментов: на "
                                "листе задания нет чертежа"),
+    # --transients (dynamics/stages.py, timedomain.py): why there is no start-up or run-down
+    "startup_no_motor": ("в задании нет раздела [motor]: при постоянном движущем моменте работа "
+                         "за цикл равна нулю при любой скорости, установившегося режима разгона "
+                         "нет"),
+    "rundown_no_work": ("работа нагрузок за цикл равна нулю, без привода машина "
+                        "продолжает вращаться"),
+    "rundown_positive_work": ("нагрузки совершают за цикл положительную работу ({work:+.3g} Дж: "
+                              "они движут машину, как газ в двигателе), без постоянного "
+                              "сопротивления машина разгоняется"),
 })
 _MSGS_DERIVED = {"where_ru", "what_variant", "detail_ru", "as_kind_ru", "what_ru", "need_ru", "kind_ru", "expected_ru", "hint_ru", "unit_ru", "got_ru"}
 
