@@ -281,3 +281,22 @@ def test_task2_report_of_an_unknown_driving_moment(tmp_path):
                                   "--out", str(tmp_path / lang), "--report", "md", "--lang", lang])
         assert res.exit_code == 0, res.output
         assert said in (tmp_path / lang / "report.md").read_text(encoding="utf-8")
+
+
+@pytest.mark.parametrize("case", ["fourbar", "shaper", "engine_inline4", "press"])
+def test_check_speaks_russian(case):
+    """`flywheel check --lang ru`: the tables' titles, headings and words in Russian (units
+    "φ, °", "масса, кг"), the same numbers as in English; English unchanged by the option."""
+    en = runner.invoke(app, ["check", str(CASES / f"{case}.toml")], terminal_width=200)
+    ru = runner.invoke(app, ["check", str(CASES / f"{case}.toml"), "--lang", "ru"],
+                       terminal_width=200)
+    assert en.exit_code == 0 and ru.exit_code == 0, ru.output
+    assert ru.stdout.rstrip().endswith("случай корректен")
+    assert en.stdout.rstrip().endswith("case is valid")
+    num = re.compile(r"(?<!\w)-?\d+(?:\.\d+)?(?:e[+-]?\d+)?")
+    assert num.findall(ru.stdout) == num.findall(en.stdout)
+    start = ru.stdout.index("частота вращения кривошипа")   # the title, source are the user's
+    lines = ru.stdout[start:].splitlines()
+    words = {w for ln in lines for w in re.findall(r"[A-Za-z]{4,}", ln)}
+    assert words <= {"periodic", "spline", "pchip", "natural", "linear", "crank", "gearbox",
+                     "head", "gear", "crankshaft", "punch", "cubic"}, words      # interpolations, the user's names

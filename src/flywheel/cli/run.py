@@ -24,14 +24,18 @@ def schema_command() -> None:
     typer.echo(json.dumps(case_json_schema(), indent=2, ensure_ascii=False))
 
 
-def check_command(case: Path = typer.Argument(..., help="Case file (TOML).")) -> None:
+def check_command(case: Path = typer.Argument(..., help="Case file (TOML)."),
+                  lang: str = typer.Option("en", "--lang", help="Language of the printout and "
+                                           "of the error line: en | ru.")) -> None:
     """Validate a case file and print what it describes; exit 0 if valid, 2 if not."""
     from flywheel.cases.run import load_case
     from flywheel.dynamics.check import check_case
     from flywheel.render.check import print_check
 
+    if lang not in ("en", "ru"):
+        fail(f"--lang: {lang!r} is not a language (allowed: en, ru)")
     c = _guard(load_case, case)
-    print_check(_guard(check_case, c, source=case, case=c))
+    print_check(_guard(check_case, c, source=case, case=c), lang=lang)
 
 
 def run_command(
