@@ -142,6 +142,13 @@ RUSSIAN_ERRORS = {
     "run/out-is-a-file": ["— это файл, а не папка"],
     "run/points-zero": ["--points: 0 вне допустимого диапазона (допустимо: 36 … 100000"],
     "task2/md-negative": ["--md должно быть положительным (задано -15 Н·м)"],
+    "run/csv-dialect-unknown": ["--csv: 'excel' — недопустимое значение (допустимы: plain, "
+                                "excel-ru)"],
+    "run/dpi-too-small": ["--dpi: 10 вне допустимого диапазона (допустимо: 50 … 600)"],
+    "task2/report-without-out": ["--report пишет в папку вывода: укажите также --out DIR"],
+    "aggregate/report-unknown": ["--report: 'html5' — недопустимое значение"],
+    "grade/tolerance-negative": ["--tolerance: должно быть положительным числом (задано -0.01)"],
+    "variants/count-zero": ["--count: 0 — недопустимое значение (допустимо: 1…9999)"],
     "task2/case-misspelt-key": ["неизвестный ключ"],
     "aggregate/misspelt-key": ["неизвестный ключ"],
     "variants/template-does-not-solve": ["сам шаблон не удаётся рассчитать", "не собирается"],

@@ -50,6 +50,23 @@ def fail(message: str) -> None:
     raise typer.Exit(code=2)
 
 
+def choice(option: str, got, what: str, allowed: str):
+    """The error of an option's value that is not one of ``allowed``: "--csv: 'excel' is not a
+    CSV dialect (allowed: plain, excel-ru)", an errors.Notice (said in Russian too)."""
+    from flywheel.errors import Notice
+
+    return Notice(f"{option}: {got!r} is not {what} (allowed: {allowed})", "option_choice",
+                  option=option, got=repr(got), allowed=allowed)
+
+
+def needs_out():
+    """The error of --report without --out (task2, aggregate, duty-cycle)."""
+    from flywheel.errors import Notice
+
+    return Notice("--report writes into the output folder: give --out DIR as well",
+                  "report_needs_out")
+
+
 def guard(func, *args, source: Path | None = None, case=None, **kwargs):
     """Call func; turn a FlywheelError into one clear line and exit 2. An error found while
     computing a valid ``case`` (a dyad that cannot be assembled, loads whose work has the wrong

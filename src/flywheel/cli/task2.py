@@ -95,7 +95,7 @@ def task2_command(
     """Task 2: ω_max, ω_min, ω_ср and δ of a machine with constant J under given M_D(φ), M_C(φ)."""
     import math
 
-    from flywheel.cli.guard import first_nonfinite, guarded, not_finite
+    from flywheel.cli.guard import first_nonfinite, guarded, needs_out, not_finite
     from flywheel.errors import FlywheelError, InputError, Notice
 
     title = source = ""
@@ -114,7 +114,7 @@ def task2_command(
 
         formats = check_formats(report)
         if report and out is None:
-            raise InputError("--report writes into the output folder: give --out DIR as well")
+            raise InputError(needs_out())
         if case is not None:
             used = (["--profile"] if profile is not None else []) + [n for n, _ in given]
             if used:

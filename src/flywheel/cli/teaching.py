@@ -35,19 +35,21 @@ def variants_command(
     """Individual variants of a task from a template, with the answer key (answers.json,
     answers.csv), a blank answer sheet (students.csv) and, with --sheets, a printable task
     sheet per variant."""
-    from flywheel.cli.guard import _guard, fail
+    from flywheel.cli.guard import _guard, choice, fail
+    from flywheel.errors import Notice
 
     if not 1 <= count <= 9999:
-        fail(f"--count: {count} is not allowed (allowed: 1…9999)")
+        fail(Notice(f"--count: {count} is not allowed (allowed: 1…9999)", "option_not_allowed",
+                    option="--count", got=count, allowed="1…9999"))
     if seed is not None and not 0 <= seed < 2 ** 63:
-        fail(f"--seed: {seed} is not allowed (allowed: 0 … 2^63 − 1)")
+        fail(Notice(f"--seed: {seed} is not allowed (allowed: 0 … 2^63 − 1)",
+                    "option_not_allowed", option="--seed", got=seed, allowed="0 … 2^63 − 1"))
     if points < 36:
         fail(f"--points: {points} is too few (allowed: 36 or more)")
     if lang not in ("en", "ru"):
         fail(f"--lang: {lang!r} is not a language (allowed: en, ru)")
     if sheets_format not in ("both", "html", "pdf"):
-        fail(f"--sheets-format: {sheets_format!r} is not a sheet format (allowed: both, html, "
-             "pdf)")
+        fail(choice("--sheets-format", sheets_format, "a sheet format", "both, html, pdf"))
     import secrets
     import sys
 
@@ -121,7 +123,7 @@ def grade_command(
     A student who appears twice: the later row counts (the earlier is reported)."""
     import sys
 
-    from flywheel.cli.guard import _guard, fail
+    from flywheel.cli.guard import _guard, choice, fail
     from flywheel.errors import Notice
     from flywheel.io.output import write_file
     from flywheel.teaching.grading import grade, load_key, report_csv, report_dict
@@ -129,7 +131,7 @@ def grade_command(
     if lang not in ("en", "ru"):
         fail(f"--lang: {lang!r} is not a language (allowed: en, ru)")
     if csv_style not in ("plain", "excel-ru"):
-        fail(f"--csv: {csv_style!r} is not a CSV dialect (allowed: plain, excel-ru)")
+        fail(choice("--csv", csv_style, "a CSV dialect", "plain, excel-ru"))
     for option, path in (("--out", out), ("--gradebook", gradebook)):
         if path is not None and not path.is_dir() and not path.parent.is_dir():
             fail(f"{option} {path}: the folder {path.parent} does not exist (allowed: a CSV file "

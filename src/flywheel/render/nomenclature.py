@@ -1155,6 +1155,12 @@ MESSAGES_RU.update({
     "rundown_positive_work": ("нагрузки совершают за цикл положительную работу ({work:+.3g} Дж: "
                               "они движут машину, как газ в двигателе), без постоянного "
                               "сопротивления машина разгоняется"),
+    # the command-line options (cli/guard.py choice, needs_out; cli/*.py)
+    "option_choice": "{option}: {got} — недопустимое значение (допустимы: {allowed})",
+    "option_not_allowed": "{option}: {got} — недопустимое значение (допустимо: {allowed})",
+    "option_range": "{option}: {got} вне допустимого диапазона (допустимо: {lo} … {hi})",
+    "option_not_positive_number": "{option}: должно быть положительным числом (задано {got})",
+    "report_needs_out": "--report пишет в папку вывода: укажите также --out DIR",
 })
 _MSGS_DERIVED = {"where_ru", "what_variant", "detail_ru", "as_kind_ru", "what_ru", "need_ru", "kind_ru", "expected_ru", "hint_ru", "unit_ru", "got_ru"}
 

@@ -482,7 +482,9 @@ def grade(key: Key, paths, tolerance: float | None = None, progress=None) -> Rep
     ``progress(done, total)`` is called after each sheet (a progress bar).
     """
     if tolerance is not None and not _positive(tolerance):
-        raise InputError(f"--tolerance: must be a positive number (got {tolerance!r})")
+        raise InputError(Notice(f"--tolerance: must be a positive number (got {tolerance!r})",
+                                "option_not_positive_number", option="--tolerance",
+                                got=repr(tolerance)))
     files, problems = sheet_files(paths)
     students: list[StudentGrade] = []
     for i, f in enumerate(files):
