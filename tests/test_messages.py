@@ -307,3 +307,20 @@ def test_check_speaks_russian(case):
     words = {w for ln in lines for w in re.findall(r"[A-Za-z]{4,}", ln)}
     assert words <= {"periodic", "spline", "pchip", "natural", "linear", "crank", "gearbox",
                      "head", "gear", "crankshaft", "punch", "cubic"}, words      # interpolations, the user's names
+
+
+def test_balance_and_stopping_errors_are_russian(tmp_path):
+    """Two errors students meet: loads whose work has the wrong sign for the balance, a
+    machine that stops (task2)."""
+    for eid, said in (("run/loads-give-negative-driving-moment",
+                       "нагрузки совершают за цикл работу +731.25 Дж: постоянный движущий момент "
+                       "должен был бы быть -116.382 Н·м ≤ 0"),
+                      ("task2/case-speed-falls-to-zero",
+                       "speed: машина останавливается при φ = 181.938°: кинетической энергии "
+                       "½·J·ω0² = 1.5 Дж не хватает")):
+        entry = _entry(eid)
+        d = tmp_path / eid.replace("/", "_")
+        d.mkdir()
+        bad.build_files(entry, d)
+        o = bad.invoke(replace(entry, args=[*entry.args, "--lang", "ru"]), d)
+        assert o.code == 2 and o.stderr.startswith("ошибка: ") and said in o.stderr, o.stderr

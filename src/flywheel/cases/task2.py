@@ -22,7 +22,7 @@ from flywheel.cases.rim import MATERIALS, Density, Material, RimSpec, Stress
 from flywheel.constant_inertia import graphs
 from flywheel.constant_inertia.solve import (BALANCE_RTOL, Task2Result, balance, power_value, solve,
                                             solve_areas)
-from flywheel.errors import CaseFileError, InputError
+from flywheel.errors import CaseFileError, InputError, led, said
 from flywheel.io.schema import FieldError, StrictModel, load, validate, within, clean_loc, describe, loc_str, pick
 
 BALANCE = "balance"
@@ -592,4 +592,4 @@ def solve_case(case: Task2Case, source: str = "<case>", at_deg=()) -> Task2Resul
         msg = str(exc)
         if msg.startswith(("a mean speed needs", "to find J from δ", "the machine stops")):
             field = "speed"
-        raise CaseFileError(f"{source}: {field}: {msg}") from None
+        raise CaseFileError(led(f"{source}: {field}: ", said(exc))) from None

@@ -65,15 +65,17 @@ def work_and_energy(phi: np.ndarray, loads: LoadsResult, red: ReductionResult,
         warnings.append(Notice("the loads do no net work over a cycle: the balancing moment is 0 "
                                "(the flywheel only smooths the loads' periodic part)", "no_net_work"))
     elif machine.balance == "driving" and not M_const > 0:
-        raise InputError(
+        raise InputError(Notice(
             f"the loads do {work_known:+.6g} J of work over a cycle: a constant driving moment "
             f"would have to be {M_const:.6g} N·m ≤ 0 (allowed: resistance must absorb work; "
-            f"for an engine set machine.balance = \"resistance\")")
+            f"for an engine set machine.balance = \"resistance\")", "balance_driving",
+            work=work_known, M=M_const))
     elif machine.balance == "resistance" and not M_const < 0:
-        raise InputError(
+        raise InputError(Notice(
             f"the loads do {work_known:+.6g} J of work over a cycle: a constant resistance moment "
             f"would have to be {-M_const:.6g} N·m ≤ 0 (allowed: driving forces must supply work; "
-            f"for a compressor or press set machine.balance = \"driving\")")
+            f"for a compressor or press set machine.balance = \"driving\")", "balance_resistance",
+            work=work_known, M=-M_const))
     A_const = M_const * phi
     A = A_known + A_const
     if machine.balance == "driving":

@@ -1161,6 +1161,17 @@ MESSAGES_RU.update({
     "option_range": "{option}: {got} вне допустимого диапазона (допустимо: {lo} … {hi})",
     "option_not_positive_number": "{option}: должно быть положительным числом (задано {got})",
     "report_needs_out": "--report пишет в папку вывода: укажите также --out DIR",
+    # dynamics/stages.py: the cycle balance; constant_inertia/solve.py: a speed that falls to 0
+    "balance_driving": ("нагрузки совершают за цикл работу {work:+.6g} Дж: постоянный движущий "
+                        "момент должен был бы быть {M:.6g} Н·м ≤ 0 (допустимо: силы сопротивления "
+                        "должны поглощать работу; для двигателя задайте machine.balance = "
+                        "\"resistance\")"),
+    "balance_resistance": ("нагрузки совершают за цикл работу {work:+.6g} Дж: постоянный момент "
+                           "сопротивления должен был бы быть {M:.6g} Н·м ≤ 0 (допустимо: движущие "
+                           "силы должны совершать работу; для компрессора или пресса задайте "
+                           "machine.balance = \"driving\")"),
+    "machine_stops": ("машина останавливается {where_ru}: кинетической энергии ½·J·ω0² = "
+                      "{T0:.6g} Дж не хватает, чтобы покрыть недостаток работы {deficit:.6g} Дж"),
 })
 _MSGS_DERIVED = {"where_ru", "what_variant", "detail_ru", "as_kind_ru", "what_ru", "need_ru", "kind_ru", "expected_ru", "hint_ru", "unit_ru", "got_ru"}
 
