@@ -149,6 +149,12 @@ RUSSIAN_ERRORS = {
     "aggregate/report-unknown": ["--report: 'html5' — недопустимое значение"],
     "grade/tolerance-negative": ["--tolerance: должно быть положительным числом (задано -0.01)"],
     "variants/count-zero": ["--count: 0 — недопустимое значение (допустимо: 1…9999)"],
+    "run/delta-missing": ["machine.delta: не задано: укажите machine.delta"],
+    "run/crank-missing": ["(верхний уровень): задайте что-то одно: [crank] (механизм) или "
+                          "[tabulated]"],
+    "task2/case-delta-two": ["flywheel.delta: должно лежать между 0 и 2 (задано 2)"],
+    "grade/key-answer-a-string": ["variants.01.J_required: должно быть конечным числом (задано "
+                                  "'30.2')"],
     "task2/case-misspelt-key": ["неизвестный ключ"],
     "aggregate/misspelt-key": ["неизвестный ключ"],
     "variants/template-does-not-solve": ["сам шаблон не удаётся рассчитать", "не собирается"],

@@ -1018,7 +1018,8 @@ def message(text: str, lang: str = "en") -> str:
     code = getattr(text, "code", "")
     if lang != "ru" or code not in MESSAGES_RU:
         return str(text)
-    return getattr(text, "lead", "") + MESSAGES_RU[code].format(**_ru_params(code, text.params))
+    lead = getattr(text, "lead", "").replace(": (top level): ", ": (верхний уровень): ")
+    return lead + MESSAGES_RU[code].format(**_ru_params(code, text.params))
 
 
 def prefix(key: str, lang: str = "en") -> str:
@@ -1172,6 +1173,20 @@ MESSAGES_RU.update({
                            "machine.balance = \"driving\")"),
     "machine_stops": ("машина останавливается {where_ru}: кинетической энергии ½·J·ω0² = "
                       "{T0:.6g} Дж не хватает, чтобы покрыть недостаток работы {deficit:.6g} Дж"),
+    # cases/run.py: the checks across tables
+    "crank_or_tabulated": ("задайте что-то одно: [crank] (механизм) или [tabulated] (кинематика "
+                           "таблицей)"),
+    "delta_and_given_flywheel": ("задайте что-то одно: machine.delta (маховик подбирается под "
+                                 "него) или заданный маховик (flywheel.J, mass с "
+                                 "radius_of_gyration, given_disk или given_rim), но не оба"),
+    "delta_missing": ("не задано: укажите machine.delta (маховик подбирается под него) или "
+                      "заданный маховик (flywheel.J, mass с radius_of_gyration, given_disk или "
+                      "given_rim)"),
+    "motor_too_slow": "{n0:g} об/мин — не больше средней скорости {n:g} об/мин",
+    # teaching (the template's and the key's numbers), cases/task2.py
+    "not_positive_number": "должно быть положительным числом{got_ru}",
+    "not_positive_relative": "должно быть положительным числом, относительным{got_ru}",
+    "delta_0_2": "должно лежать между 0 и 2 (задано {delta:g})",
 })
 _MSGS_DERIVED = {"where_ru", "what_variant", "detail_ru", "as_kind_ru", "what_ru", "need_ru", "kind_ru", "expected_ru", "hint_ru", "unit_ru", "got_ru"}
 

@@ -32,7 +32,7 @@ import re
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from flywheel.errors import CaseFileError, InputError, Notice, said
+from flywheel.errors import CaseFileError, InputError, Notice, led, said
 
 DEFAULT_TOLERANCE = 0.01
 #: round-off allowance: an error of tolerance·(1 + SLACK) still passes (0.01 typed for 1 %)
@@ -104,7 +104,8 @@ def parse_key(doc, source: str = "<key>") -> Key:
         raise CaseFileError(f"{source}: {where or 'the key'}: must be a non-empty object "
                             "{variant: {answer: value}}")
     if not _positive(tol):
-        raise CaseFileError(f"{source}: tolerance: must be a positive number (got {tol!r})")
+        raise CaseFileError(led(f"{source}: tolerance: ", Notice(
+            f"must be a positive number (got {tol!r})", "not_positive_number", got=repr(tol))))
     if not isinstance(tols, dict) or not all(_positive(v) for v in tols.values()):
         raise CaseFileError(f"{source}: tolerances: must be an object {{answer: positive "
                             f"number}} (got {tols!r})")
@@ -116,8 +117,9 @@ def parse_key(doc, source: str = "<key>") -> Key:
                                 f"(got {ans!r})")
         for name, value in ans.items():
             if not _number(value):
-                raise CaseFileError(f"{source}: {at}.{name}: must be a finite number "
-                                    f"(got {value!r})")
+                raise CaseFileError(led(f"{source}: {at}.{name}: ", Notice(
+                    f"must be a finite number (got {value!r})", "not_finite_number",
+                    got=repr(value))))
         variants[str(vid)] = {str(k): float(v) for k, v in ans.items()}
     if answers is None:
         seen: dict[str, None] = {}

@@ -159,7 +159,9 @@ def _grid(spec: dict, where: str) -> tuple:
         if k not in spec:
             raise CaseFileError(f"{where}: {k} is missing (give min, max and step, or values)")
         if not _is_number(spec[k]):
-            raise CaseFileError(f"{where}.{k}: must be a finite number (got {spec[k]!r})")
+            raise CaseFileError(led(f"{where}.{k}: ", Notice(
+                f"must be a finite number (got {spec[k]!r})", "not_finite_number",
+                got=repr(spec[k]))))
     lo, hi, step = spec["min"], spec["max"], spec["step"]
     if step <= 0:
         raise CaseFileError(f"{where}.step: must be positive (got {step!r})")
@@ -214,8 +216,9 @@ def _answers(table: dict, where: str) -> tuple[tuple[str, ...], float, dict[str,
                                 "column name (, ; \" or a line break)")
     tol = table.get("tolerance", DEFAULT_TOLERANCE)
     if not _is_number(tol) or tol <= 0:
-        raise CaseFileError(f"{where}.tolerance: must be a positive number, relative "
-                            f"(got {tol!r})")
+        raise CaseFileError(led(f"{where}.tolerance: ", Notice(
+            f"must be a positive number, relative (got {tol!r})", "not_positive_relative",
+            got=repr(tol))))
     tols = table.get("tolerances", {})
     if not isinstance(tols, dict):
         raise CaseFileError(f"{where}.tolerances: must be a table {{ answer = tolerance }} "
@@ -225,8 +228,8 @@ def _answers(table: dict, where: str) -> tuple[tuple[str, ...], float, dict[str,
             raise CaseFileError(f"{where}.tolerances.{k}: not one of the answers "
                                 f"(allowed: {', '.join(ans)})")
         if not _is_number(v) or v <= 0:
-            raise CaseFileError(f"{where}.tolerances.{k}: must be a positive number "
-                                f"(got {v!r})")
+            raise CaseFileError(led(f"{where}.tolerances.{k}: ", Notice(
+                f"must be a positive number (got {v!r})", "not_positive_number", got=repr(v))))
     return tuple(ans), float(tol), {k: float(v) for k, v in tols.items()}
 
 
