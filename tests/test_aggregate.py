@@ -631,8 +631,8 @@ def test_lang_ru_same_numbers_russian_labels(name):
     en, ru = wide(*args), wide(*args, "--lang", "ru")
     assert en.exit_code == 0 and ru.exit_code == 0, ru.output
     for heading in ("Массы, приведённые к валу I", "Упругие связи, приведённые к валу I",
-                    "инерционные коэффициенты a_ij [кг·м²]", "коэффициенты жёсткости c_ij [Н·м/рад]",
-                    "Собственные частоты (K·x = ω²·M·x)", "твёрдое тело", "ω [рад/с]", "f [Гц]",
+                    "инерционные коэффициенты a_ij, кг·м²", "коэффициенты жёсткости c_ij, Н·м/рад",
+                    "Собственные частоты (K·x = ω²·M·x)", "твёрдое тело", "ω, рад/с", "f, Гц",
                     "форма колебаний"):
         assert heading in " ".join(ru.stdout.split()), heading      # titles may wrap
     assert "Rotors reduced" not in ru.stdout and "Natural frequencies" not in ru.stdout

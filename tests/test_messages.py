@@ -7,7 +7,12 @@ import ast
 import pickle
 import re
 import string
+import subprocess
+import sys
+from dataclasses import replace
 from pathlib import Path
+
+import pytest
 
 from typer.testing import CliRunner
 
@@ -19,7 +24,11 @@ SRC = Path(__file__).resolve().parents[1] / "src" / "flywheel"
 CASES = Path(__file__).resolve().parents[1] / "cases"
 runner = CliRunner()
 # fields a template may take that render/nomenclature.py derives from the Notice's own
-DERIVED = {"target", "shape_ru", "material_ru", "files_ru"}
+DERIVED = {"target", "shape_ru", "material_ru", "files_ru"} | nm._MSGS_DERIVED
+# the errors io/schema.py.describe makes from pydantic's (code made from pydantic's error type;
+# fields: pydantic's ctx and the value given)
+DESCRIBED = {c for c in nm.MESSAGES_RU if c.startswith("pydantic_")} | {
+    "missing", "not_a_table", "not_finite_number"}
 
 
 def _notices():
@@ -27,7 +36,7 @@ def _notices():
     for path in SRC.rglob("*.py"):
         for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
             if (isinstance(node, ast.Call) and getattr(node.func, "id", None) == "Notice"
-                    and len(node.args) >= 2):
+                    and len(node.args) >= 2 and isinstance(node.args[1], ast.Constant)):
                 yield path.name, node.args[1].value, {k.arg for k in node.keywords}
 
 
@@ -38,7 +47,7 @@ def test_every_notice_has_a_russian_template_with_its_fields():
         assert code in nm.MESSAGES_RU, (file, code)
         fields = {f for _, f, _, _ in string.Formatter().parse(nm.MESSAGES_RU[code]) if f}
         assert fields <= keys | DERIVED, (file, code, fields - keys)
-    assert {c for _, c, _ in found} == set(nm.MESSAGES_RU)
+    assert {c for _, c, _ in found} | DESCRIBED == set(nm.MESSAGES_RU)
 
 
 def test_a_notice_is_its_english_text_and_survives_pickling():
@@ -104,3 +113,220 @@ def test_task2_and_aggregate_written_lines_are_russian(tmp_path):
     res = runner.invoke(app, ["task2", "--out", str(tmp_path / "t"), "--lang", "ru",
                               "--report", "md"])
     assert "примечание: " in res.stderr and "удалены файлы" in res.stderr
+
+
+# -- errors under --lang ru ------------------------------------------------------------------------
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+import test_bad_inputs as bad  # noqa: E402
+
+# catalogue entries (tests/bad_inputs/catalogue.toml) run again with --lang ru: the Russian words
+# the one `ошибка:` line must hold (besides the entry's file and field path)
+RUSSIAN_ERRORS = {
+    "run/missing-file": ["нет такого файла"],
+    "run/folder-given-as-case": ["это папка, а нужен файл случая TOML"],
+    "run/empty-file": ["machine: не задано обязательное поле"],
+    "run/binary-png": ["текст не в кодировке UTF-8"],
+    "run/toml-decimal-comma": ["синтаксическая ошибка TOML", "(строка 11, столбец 14)"],
+    "run/misspelt-table": ["machin: неизвестный ключ; может быть, 'machine'?", "допустимы:"],
+    "run/speed-quoted": ["machine.speed_rps: должно быть числом (задано '10.0')"],
+    "run/speed-nan": ["machine.speed_rps: должно быть конечным числом (задано nan)"],
+    "run/speed-negative": ["machine.speed_rps: должно быть больше 0 (задано -10.0)"],
+    "run/speed-1e308": ["machine.speed_rps", "вне допустимого диапазона"],
+    "run/balance-unknown": ["machine.balance: должно быть одним из: 'driving' или 'resistance'"],
+    "run/machine-not-a-table": ["machine: должно быть таблицей ключей"],
+    "run/rrr-cannot-assemble": ["dyads[0]: группа B (RRR, звенья 2–3) не собирается при угле "
+                                "кривошипа φ = "],
+    "run/rpr-rocker-pivot-on-crank-circle": ["dyads[0]: группа 3 (RPR, кулиса 3) имеет особое "
+                                             "положение"],
+    "run/task2-case": ["это случай задачи 2", "используйте `flywheel task2 --case"],
+    "run/out-is-a-file": ["— это файл, а не папка"],
+    "run/points-zero": ["--points: 0 вне допустимого диапазона (допустимо: 36 … 100000"],
+    "task2/md-negative": ["--md должно быть положительным (задано -15 Н·м)"],
+    "run/csv-dialect-unknown": ["--csv: 'excel' — недопустимое значение (допустимы: plain, "
+                                "excel-ru)"],
+    "run/dpi-too-small": ["--dpi: 10 вне допустимого диапазона (допустимо: 50 … 600)"],
+    "task2/report-without-out": ["--report пишет в папку вывода: укажите также --out DIR"],
+    "aggregate/report-unknown": ["--report: 'html5' — недопустимое значение"],
+    "grade/tolerance-negative": ["--tolerance: должно быть положительным числом (задано -0.01)"],
+    "variants/count-zero": ["--count: 0 — недопустимое значение (допустимо: 1…9999)"],
+    "run/delta-missing": ["machine.delta: не задано: укажите machine.delta"],
+    "run/crank-missing": ["(верхний уровень): задайте что-то одно: [crank] (механизм) или "
+                          "[tabulated]"],
+    "task2/case-delta-two": ["flywheel.delta: должно лежать между 0 и 2 (задано 2)"],
+    "grade/key-answer-a-string": ["variants.01.J_required: должно быть конечным числом (задано "
+                                  "'30.2')"],
+    "task2/case-misspelt-key": ["неизвестный ключ"],
+    "aggregate/misspelt-key": ["неизвестный ключ"],
+    "variants/template-does-not-solve": ["сам шаблон не удаётся рассчитать", "не собирается"],
+    "variants/template-does-not-validate": ["machine.delta: должно быть больше 0",
+                                            "[проверено как случай для flywheel run]"],
+}
+# English words that must not be left in a translated line (names the user gave aside)
+ENGLISH = re.compile(r"\b(the|is|not|must|be|allowed|out|of|range|given|cannot|no|such|should|"
+                     r"input|valid|missing|required|unknown|key|file|folder|number|use|this)\b")
+
+
+def _entry(eid):
+    return next(e for e in bad.load_catalogue() if e.id == eid)
+
+
+@pytest.mark.parametrize("eid", sorted(RUSSIAN_ERRORS))
+def test_errors_are_russian_with_lang_ru(eid, tmp_path):
+    entry = _entry(eid)
+    bad.build_files(entry, tmp_path)
+    o = bad.invoke(replace(entry, args=[*entry.args, "--lang", "ru"]), tmp_path)
+    assert o.code == 2 and o.stdout == "", o
+    lines = o.stderr.splitlines()
+    assert len(lines) == 1 and lines[0].startswith("ошибка: "), lines
+    line = lines[0]
+    for f in RUSSIAN_ERRORS[eid]:
+        assert f in line, (f, line)
+    # the entry's file and field path (its fragments that are no English words) are kept
+    for f in entry.fragments:
+        f = bad.subst(f, tmp_path)
+        if "/" in f or "." in f and " " not in f:
+            assert f in line, (f, line)
+    said = re.sub(r"\S*[/.]\S*|'[^']*'|`[^`]*`|\([a-z_, ]+\)$|--[a-z-]+", "", line)
+    if "TOML" in said:                      # tomllib's own words stay English: its place is Russian
+        said = said.split("TOML: ")[0]
+    said = re.sub(r"допустимы: [\w, ]+", "", said)
+    assert not ENGLISH.search(said), line
+
+
+def test_the_error_language_comes_from_the_raw_arguments_too(tmp_path):
+    """An error found before the command's options are parsed (no click context yet) takes the
+    language from sys.argv: run in a subprocess."""
+    res = subprocess.run([sys.executable, "-m", "flywheel", "run", str(tmp_path / "nope.toml"),
+                          "--lang=ru"], capture_output=True, text=True)
+    assert res.returncode == 2
+    assert res.stderr == f"ошибка: {tmp_path / 'nope.toml'}: нет такого файла\n"
+    res = subprocess.run([sys.executable, "-m", "flywheel", "run", str(tmp_path / "nope.toml")],
+                         capture_output=True, text=True)
+    assert res.stderr == f"error: {tmp_path / 'nope.toml'}: no such file\n"
+    from flywheel.cli.guard import lang
+
+    saved = sys.argv
+    try:
+        sys.argv = ["flywheel", "grade", "--lang", "ru"]
+        assert lang() == "ru"
+        sys.argv = ["flywheel", "grade", "--lang", "de"]
+        assert lang() == "en"
+    finally:
+        sys.argv = saved
+
+
+def test_an_english_error_is_unchanged_by_its_notice():
+    """The English text of a translated error is byte for byte the old one."""
+    from flywheel.errors import CaseFileError, led, said
+
+    e = CaseFileError(led("c.toml: ", led("x: ", Notice("missing required field", "missing"))))
+    assert str(e) == "c.toml: x: missing required field"
+    assert nm.message(said(e), "ru") == "c.toml: x: не задано обязательное поле"
+    assert nm.message(said(CaseFileError("plain")), "ru") == "plain"
+
+
+def test_variants_and_grade_say_their_warnings_and_problems_in_russian(tmp_path):
+    """`variants --lang ru`: the repeat warning, the seed and written lines; `grade --lang ru`:
+    every problem of a sheet ("строка N: …") and the written line. English unchanged."""
+    tpl = (CASES / "variants_task2.toml").read_text(encoding="utf-8")
+    tpl = tpl[:tpl.index("\n[variants]") + 1] + ('[variants]\n"flywheel.J" = { values = [5.0, 8.0] }\n'
+                                           'answers = ["M_C", "omega_max"]\n')
+    (tmp_path / "t.toml").write_text(tpl, encoding="utf-8")
+    args = ["variants", str(tmp_path / "t.toml"), "--count", "3", "--seed", "1"]
+    en = runner.invoke(app, [*args, "--out", str(tmp_path / "en")])
+    assert en.exit_code == 0, en.output
+    assert "warning: only 2 different variants are possible; 3 asked, so some repeat" in en.stdout
+    assert "seed 1 (the same seed gives the same files)" in en.stdout
+    ru = runner.invoke(app, [*args, "--out", str(tmp_path / "v"), "--lang", "ru"])
+    assert ru.exit_code == 0, ru.output
+    text = " ".join(ru.stdout.split())
+    assert ("предупреждение: возможно лишь 2 разных вариантов; запрошено 3, поэтому некоторые "
+            "повторяются") in text
+    assert "seed 1 (тот же seed даёт те же файлы)" in text
+    assert f"записано: {tmp_path / 'v'}/" in text
+    sheet = tmp_path / "s.csv"
+    sheet.write_text("student,variant,M_C,omega_max\nIvanov,01,90,abc\nPetrov,07,1,1\n"
+                     "Sidorov,02,90,280\nSidorov,01,90,280\n,01,1,\n", encoding="utf-8")
+    key = str(tmp_path / "v" / "answers.json")
+    ru = runner.invoke(app, ["grade", key, str(sheet), "--lang", "ru", "--out",
+                             str(tmp_path / "m.csv")])
+    assert ru.exit_code == 0, ru.output
+    out = " ".join(ru.stdout.split())
+    assert f"{sheet}, строка 2: 'Ivanov': не число: omega_max = 'abc'; строка пропущена" in out
+    assert f"{sheet}, строка 3: 'Petrov': вариант '07' отсутствует в ключе" in out
+    assert f"{sheet}, строка 6: нет имени студента; строка пропущена" in out
+    assert f"'Sidorov' встречается снова (впервые: {sheet}, строка 4)" in out
+    assert f"записано: {tmp_path / 'm.csv'}" in out
+    en = runner.invoke(app, ["grade", key, str(sheet)])
+    assert f"{sheet}, row 2: 'Ivanov': not a number: omega_max = 'abc'; row skipped" in \
+        " ".join(en.stdout.split())
+    ru = runner.invoke(app, ["grade", key, str(tmp_path / "nope.csv"), "--lang", "ru"])
+    assert ru.exit_code == 2
+    assert ru.stderr == (f"ошибка: нечего проверить (замечаний: 1; первое: {tmp_path}/nope.csv: "
+                         "нет такого файла или папки)\n")
+
+
+def test_transients_reasons_are_russian(tmp_path):
+    """--transients without [motor] on an engine: the start-up and run-down reasons in the
+    summary and the report say in Russian why there is none (the loads drive: +work)."""
+    out = tmp_path / "o"
+    res = runner.invoke(app, ["run", str(CASES / "engine_4stroke.toml"), "--points", "720",
+                              "--no-plots", "--transients", "--lang", "ru", "--report", "md",
+                              "--out", str(out)])
+    assert res.exit_code == 0, res.output
+    text = " ".join(res.stdout.split())
+    md = (out / "report.md").read_text(encoding="utf-8")
+    for said in (text, md):
+        assert "разгон: не рассчитан (в задании нет раздела [motor]" in said
+        assert "выбега нет: нагрузки совершают за цикл положительную работу (+" in said
+        assert "no [motor]" not in said and "positive work" not in said
+    # English keeps its lines
+    en = runner.invoke(app, ["run", str(CASES / "engine_4stroke.toml"), "--points", "720",
+                             "--no-plots", "--transients", "--out", str(tmp_path / "e")])
+    assert "start-up: not computed (no [motor] in the case" in " ".join(en.stdout.split())
+
+
+def test_task2_report_of_an_unknown_driving_moment(tmp_path):
+    """A task2 case whose driving moment comes from the cycle balance writes its report in both
+    languages (it raised KeyError 'M_D' before)."""
+    for lang, said in (("en", "gives M_D = 375 N·m"), ("ru", "даёт M_Д = 375 Н·м")):
+        res = runner.invoke(app, ["task2", "--case", str(CASES / "task2_readme_press.toml"),
+                                  "--out", str(tmp_path / lang), "--report", "md", "--lang", lang])
+        assert res.exit_code == 0, res.output
+        assert said in (tmp_path / lang / "report.md").read_text(encoding="utf-8")
+
+
+@pytest.mark.parametrize("case", ["fourbar", "shaper", "engine_inline4", "press"])
+def test_check_speaks_russian(case):
+    """`flywheel check --lang ru`: the tables' titles, headings and words in Russian (units
+    "φ, °", "масса, кг"), the same numbers as in English; English unchanged by the option."""
+    en = runner.invoke(app, ["check", str(CASES / f"{case}.toml")], terminal_width=200)
+    ru = runner.invoke(app, ["check", str(CASES / f"{case}.toml"), "--lang", "ru"],
+                       terminal_width=200)
+    assert en.exit_code == 0 and ru.exit_code == 0, ru.output
+    assert ru.stdout.rstrip().endswith("случай корректен")
+    assert en.stdout.rstrip().endswith("case is valid")
+    num = re.compile(r"(?<!\w)-?\d+(?:\.\d+)?(?:e[+-]?\d+)?")
+    assert num.findall(ru.stdout) == num.findall(en.stdout)
+    start = ru.stdout.index("частота вращения кривошипа")   # the title, source are the user's
+    lines = ru.stdout[start:].splitlines()
+    words = {w for ln in lines for w in re.findall(r"[A-Za-z]{4,}", ln)}
+    assert words <= {"periodic", "spline", "pchip", "natural", "linear", "crank", "gearbox",
+                     "head", "gear", "crankshaft", "punch", "cubic"}, words      # interpolations, the user's names
+
+
+def test_balance_and_stopping_errors_are_russian(tmp_path):
+    """Two errors students meet: loads whose work has the wrong sign for the balance, a
+    machine that stops (task2)."""
+    for eid, said in (("run/loads-give-negative-driving-moment",
+                       "нагрузки совершают за цикл работу +731.25 Дж: постоянный движущий момент "
+                       "должен был бы быть -116.382 Н·м ≤ 0"),
+                      ("task2/case-speed-falls-to-zero",
+                       "speed: машина останавливается при φ = 181.938°: кинетической энергии "
+                       "½·J·ω0² = 1.5 Дж не хватает")):
+        entry = _entry(eid)
+        d = tmp_path / eid.replace("/", "_")
+        d.mkdir()
+        bad.build_files(entry, d)
+        o = bad.invoke(replace(entry, args=[*entry.args, "--lang", "ru"]), d)
+        assert o.code == 2 and o.stderr.startswith("ошибка: ") and said in o.stderr, o.stderr

@@ -256,8 +256,8 @@ def test_tabulated_template_sheets_without_drawing_one_note(tmp_path):
                  "--sheets-format", "html", "--lang", "ru")
     assert res.exit_code == 0, res.output
     notes = [ln for ln in err_text(res).splitlines() if "sheet" in ln]
-    assert len(notes) == 1 and notes[0].startswith("note: --sheets: ")
-    assert "table" in notes[0] and "no drawing" in notes[0]
+    assert len(notes) == 1 and notes[0].startswith("примечание: --sheets: ")   # --lang ru
+    assert "таблицей" in notes[0] and "нет чертежа механизма" in notes[0]
     for vid in ("1", "2", "3"):
         sh = sheet_of(out, vid.zfill(2))
         assert sh.images == 0 and sh.captions == []

@@ -26,13 +26,38 @@ class Notice(str):
     >>> w = Notice("δ = 0.5: too much", "delta_swing", delta=0.5)
     >>> w == "δ = 0.5: too much", w.code, w.params
     (True, 'delta_swing', {'delta': 0.5})
+
+    An error's message may be a Notice too (``CaseFileError(Notice(…))``): the CLI's guard then
+    says it in the user's ``--lang``. ``lead`` is the language-neutral beginning of the text (the
+    file and field path, "cases/c.toml: machine.delta: ") that the translation keeps.
     """
 
     code: str
     params: dict
+    lead: str = ""
 
     def __new__(cls, text: str, code: str = "", **params):
         self = super().__new__(cls, text)
         self.code = code
         self.params = params
         return self
+
+
+def led(lead: str, text) -> str:
+    """``lead + text``, a Notice still (its ``lead`` grown) when ``text`` is one.
+
+    >>> n = led("c.toml: ", Notice("x: missing required field", "missing", where="x"))
+    >>> n, n.code, n.lead
+    ('c.toml: x: missing required field', 'missing', 'c.toml: ')
+    """
+    if not getattr(text, "code", ""):
+        return lead + str(text)
+    out = Notice(lead + str(text), text.code, **text.params)
+    out.lead = lead + text.lead
+    return out
+
+
+def said(exc: BaseException) -> str:
+    """An exception's message, the Notice itself when it was raised with one."""
+    first = exc.args[0] if len(exc.args) == 1 else None
+    return first if isinstance(first, Notice) else str(exc)

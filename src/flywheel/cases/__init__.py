@@ -58,5 +58,8 @@ def wrong_kind(data, expected: str, source: str) -> str | None:
     kind = kind_of(data)
     if kind is None or kind == expected:
         return None
-    return (f"{source}: this is {NAMES[kind]}, not {NAMES[expected]}: use "
-            f"`{COMMANDS[kind].format(file=source)}`")
+    from flywheel.errors import Notice
+
+    return Notice(f"{source}: this is {NAMES[kind]}, not {NAMES[expected]}: use "
+                  f"`{COMMANDS[kind].format(file=source)}`", "wrong_kind", source=source,
+                  kind=kind, expected=expected, command=COMMANDS[kind].format(file=source))

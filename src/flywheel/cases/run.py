@@ -77,8 +77,10 @@ class Machine(StrictModel):
             raise ValueError("give exactly one of speed_rps, speed_rpm")
         revs = self.cycle_deg / 360.0
         if not (1 <= revs <= CYCLE_REVS_MAX and revs == round(revs)):
-            raise FieldError(("cycle_deg",), f"{self.cycle_deg:g}° is not a whole number of "
-                             f"revolutions (allowed: 360, 720, 1080 … {360 * CYCLE_REVS_MAX}°)")
+            raise FieldError(("cycle_deg",), Notice(
+                f"{self.cycle_deg:g}° is not a whole number of revolutions (allowed: 360, 720, "
+                f"1080 … {360 * CYCLE_REVS_MAX}°)", "cycle_not_whole", cycle=self.cycle_deg,
+                top=360 * CYCLE_REVS_MAX))
         return self
 
     @property
@@ -619,21 +621,24 @@ class Case(StrictModel):
 def _check_references(case: Case) -> None:
     """Names are unique and defined before use; lengths can be derived."""
     if (case.crank is None) == (case.tabulated is None):
-        raise FieldError((), "give exactly one of [crank] (a linkage) and [tabulated] "
-                            "(kinematics from a table)")
+        raise FieldError((), Notice("give exactly one of [crank] (a linkage) and [tabulated] "
+                                    "(kinematics from a table)", "crank_or_tabulated"))
     given = case.flywheel.given_J is not None
     if given and case.machine.delta is not None:
-        raise FieldError(("machine", "delta"), "give exactly one of machine.delta (the flywheel "
-                         "is sized for it) and a given flywheel (flywheel.J, mass with "
-                         "radius_of_gyration, given_disk or given_rim), not both")
+        raise FieldError(("machine", "delta"), Notice(
+            "give exactly one of machine.delta (the flywheel is sized for it) and a given flywheel "
+            "(flywheel.J, mass with radius_of_gyration, given_disk or given_rim), not both",
+            "delta_and_given_flywheel"))
     if not given and case.machine.delta is None:
-        raise FieldError(("machine", "delta"), "missing: give machine.delta (the flywheel is "
-                         "sized for it) or a given flywheel (flywheel.J, mass with "
-                         "radius_of_gyration, given_disk or given_rim)")
+        raise FieldError(("machine", "delta"), Notice(
+            "missing: give machine.delta (the flywheel is sized for it) or a given flywheel "
+            "(flywheel.J, mass with radius_of_gyration, given_disk or given_rim)",
+            "delta_missing"))
     if case.motor is not None and case.motor.no_load_speed_rpm * 2 * math.pi / 60 <= case.machine.omega_mean:
-        raise FieldError(("motor", "no_load_speed_rpm"),
-                        f"{case.motor.no_load_speed_rpm:g} rpm is not above the mean speed "
-                        f"{case.machine.omega_mean * 30 / math.pi:g} rpm")
+        raise FieldError(("motor", "no_load_speed_rpm"), Notice(
+            f"{case.motor.no_load_speed_rpm:g} rpm is not above the mean speed "
+            f"{case.machine.omega_mean * 30 / math.pi:g} rpm", "motor_too_slow",
+            n0=case.motor.no_load_speed_rpm, n=case.machine.omega_mean * 30 / math.pi))
     if case.tabulated is not None:   # no linkage: masses and loads live in [tabulated]
         for key in ("ground", "dyads", "points", "links", "cylinders", "forces", "couples"):
             if getattr(case, key):

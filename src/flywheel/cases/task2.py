@@ -22,7 +22,7 @@ from flywheel.cases.rim import MATERIALS, Density, Material, RimSpec, Stress
 from flywheel.constant_inertia import graphs
 from flywheel.constant_inertia.solve import (BALANCE_RTOL, Task2Result, balance, power_value, solve,
                                             solve_areas)
-from flywheel.errors import CaseFileError, InputError
+from flywheel.errors import CaseFileError, InputError, Notice, led, said
 from flywheel.io.schema import FieldError, StrictModel, load, validate, within, clean_loc, describe, loc_str, pick
 
 BALANCE = "balance"
@@ -295,7 +295,8 @@ def _check(case: Task2Case) -> None:
                        ("rim_radius", "m"), ("fluctuation_percent", "%")):
         _pos(f"flywheel.{name}", getattr(f, name), unit)
     if f.delta is not None and not 0 < f.delta < 2:
-        raise FieldError("flywheel.delta", f"must lie between 0 and 2 (got {f.delta:g})")
+        raise FieldError("flywheel.delta", Notice(f"must lie between 0 and 2 (got {f.delta:g})",
+                                                  "delta_0_2", delta=f.delta))
     if f.J is not None and f.mass is not None:
         raise FieldError("flywheel", "give J or mass with radius_of_gyration, not both")
     if f.mass is not None and f.radius_of_gyration is None:
@@ -592,4 +593,4 @@ def solve_case(case: Task2Case, source: str = "<case>", at_deg=()) -> Task2Resul
         msg = str(exc)
         if msg.startswith(("a mean speed needs", "to find J from δ", "the machine stops")):
             field = "speed"
-        raise CaseFileError(f"{source}: {field}: {msg}") from None
+        raise CaseFileError(led(f"{source}: {field}: ", said(exc))) from None

@@ -51,7 +51,8 @@ def _root(
 
 
 class _ErrorsOnly:
-    """stderr under --quiet: only lines that start with "error:" get through."""
+    """stderr under --quiet: only lines that start with "error:" ("ошибка:" under --lang ru)
+    get through."""
 
     def __init__(self, stream):
         self._stream = stream
@@ -61,7 +62,7 @@ class _ErrorsOnly:
         self._line += text
         *done, self._line = self._line.split("\n")
         for ln in done:
-            if ln.startswith("error:"):
+            if ln.startswith(("error:", "ошибка:")):
                 self._stream.write(ln + "\n")
         return len(text)
 
@@ -141,7 +142,10 @@ def main() -> None:
             where = f"{ctx.command_path}: " if ctx is not None else ""
             see = f" (see {ctx.command_path} --help)" if ctx is not None else ""
             msg = " ".join(exc.format_message().split())
-            sys.stderr.write(f"error: {where}{msg}{see}\n")
+            from flywheel.cli.guard import lang
+            from flywheel.render.nomenclature import prefix
+
+            sys.stderr.write(f"{prefix('error', lang())}: {where}{msg}{see}\n")
             sys.exit(2)
         from flywheel import __version__
 

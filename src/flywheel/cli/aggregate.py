@@ -43,7 +43,7 @@ def aggregate_command(
     natural frequencies, steady forced vibration, start-up."""
     import math
 
-    from flywheel.cli.guard import guarded, refuse_nonfinite
+    from flywheel.cli.guard import guarded, needs_out, refuse_nonfinite
     from flywheel.errors import InputError
 
     with guarded(source=case):      # an error of the analysis is prefixed with the case file
@@ -60,7 +60,7 @@ def aggregate_command(
 
         formats = check_formats(report)
         if report and out is None:
-            raise InputError("--report writes into the output folder: give --out DIR as well")
+            raise InputError(needs_out())
         from flywheel.cases.aggregate import load_aggregate_case, to_model
         from flywheel.elastic.model import analyze
 

@@ -26,7 +26,7 @@ def duty_cycle_command(
     """Duty-cycle machines (punching, riveting, shearing presses): the motor's power and torque,
     the energy the flywheel gives, its J and mass, the speed at the end of the operation, the
     time and angle to recover, the cycle."""
-    from flywheel.cli.guard import fail, guard
+    from flywheel.cli.guard import fail, guard, needs_out
 
     if lang not in ("en", "ru"):
         fail(f"--lang: {lang!r} is not a language (allowed: en, ru)")
@@ -34,7 +34,7 @@ def duty_cycle_command(
 
     formats = guard(check_formats, report)
     if report and out is None:
-        fail("--report writes into the output folder: give --out DIR as well")
+        fail(needs_out())
     from flywheel.cases.duty_cycle import load_duty_case, solve_case
 
     c = guard(load_duty_case, case)

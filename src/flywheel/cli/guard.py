@@ -19,25 +19,67 @@ from typing import Iterator, NoReturn
 import typer
 
 
+def lang() -> str:
+    """The ``--lang`` of the command line: the running command's parsed option, else the raw
+    arguments (an error may come before the option is parsed), else "en"."""
+    from typer._click.globals import get_current_context
+
+    ctx = get_current_context(silent=True)
+    while ctx is not None:
+        given = ctx.params.get("lang")
+        if isinstance(given, str):
+            return "ru" if given == "ru" else "en"
+        ctx = ctx.parent
+    argv = sys.argv[1:]
+    for i, a in enumerate(argv):
+        if a == "--lang" and i + 1 < len(argv):
+            return "ru" if argv[i + 1] == "ru" else "en"
+        if a.startswith("--lang="):
+            return "ru" if a == "--lang=ru" else "en"
+    return "en"
+
+
 def fail(message: str) -> None:
-    """Print one line to stderr and exit 2 (bad input)."""
-    sys.stderr.write(f"error: {message}\n")
+    """Print one line to stderr and exit 2 (bad input); under ``--lang ru`` the prefix is
+    «ошибка:» and a message that is an errors.Notice with a Russian template is Russian (the
+    rest stays English)."""
+    from flywheel.render.nomenclature import message as say, prefix
+
+    ln = lang()
+    sys.stderr.write(f"{prefix('error', ln)}: {say(message, ln)}\n")
     raise typer.Exit(code=2)
+
+
+def choice(option: str, got, what: str, allowed: str):
+    """The error of an option's value that is not one of ``allowed``: "--csv: 'excel' is not a
+    CSV dialect (allowed: plain, excel-ru)", an errors.Notice (said in Russian too)."""
+    from flywheel.errors import Notice
+
+    return Notice(f"{option}: {got!r} is not {what} (allowed: {allowed})", "option_choice",
+                  option=option, got=repr(got), allowed=allowed)
+
+
+def needs_out():
+    """The error of --report without --out (task2, aggregate, duty-cycle)."""
+    from flywheel.errors import Notice
+
+    return Notice("--report writes into the output folder: give --out DIR as well",
+                  "report_needs_out")
 
 
 def guard(func, *args, source: Path | None = None, case=None, **kwargs):
     """Call func; turn a FlywheelError into one clear line and exit 2. An error found while
     computing a valid ``case`` (a dyad that cannot be assembled, loads whose work has the wrong
     sign) is prefixed with the case file ``source`` and, where known, the field path."""
-    from flywheel.errors import CaseFileError, FlywheelError
+    from flywheel.errors import CaseFileError, FlywheelError, led, said
 
     try:
         return func(*args, **kwargs)
     except FlywheelError as exc:
-        msg = str(exc)
+        msg = said(exc)
         if source is not None and not isinstance(exc, CaseFileError) and not msg.startswith("--"):
             where = _field_of(exc, case)
-            msg = f"{source}: {where}: {msg}" if where else f"{source}: {msg}"
+            msg = led(f"{source}: {where}: " if where else f"{source}: ", msg)
         fail(msg)
 
 

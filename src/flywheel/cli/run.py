@@ -12,7 +12,8 @@ from typing import Optional
 
 import typer
 
-from flywheel.cli.guard import _guard, fail
+from flywheel.cli.guard import _guard, choice, fail
+from flywheel.errors import Notice
 
 
 def schema_command() -> None:
@@ -24,14 +25,18 @@ def schema_command() -> None:
     typer.echo(json.dumps(case_json_schema(), indent=2, ensure_ascii=False))
 
 
-def check_command(case: Path = typer.Argument(..., help="Case file (TOML).")) -> None:
+def check_command(case: Path = typer.Argument(..., help="Case file (TOML)."),
+                  lang: str = typer.Option("en", "--lang", help="Language of the printout and "
+                                           "of the error line: en | ru.")) -> None:
     """Validate a case file and print what it describes; exit 0 if valid, 2 if not."""
     from flywheel.cases.run import load_case
     from flywheel.dynamics.check import check_case
     from flywheel.render.check import print_check
 
+    if lang not in ("en", "ru"):
+        fail(f"--lang: {lang!r} is not a language (allowed: en, ru)")
     c = _guard(load_case, case)
-    print_check(_guard(check_case, c, source=case, case=c))
+    print_check(_guard(check_case, c, source=case, case=c), lang=lang)
 
 
 def run_command(
@@ -71,19 +76,19 @@ def run_command(
     from flywheel.render.csvfmt import STYLES, restyle
 
     if csv_style not in STYLES:
-        fail(f"--csv: {csv_style!r} is not a CSV dialect (allowed: {', '.join(STYLES)})")
+        fail(choice("--csv", csv_style, "a CSV dialect", ", ".join(STYLES)))
     from flywheel.render.figure import DPI_RANGE, FORMATS as FIGURE_FORMATS
     from flywheel.render.report_formats import FORMATS
 
     if figure_format not in FIGURE_FORMATS:
-        fail(f"--figure-format: {figure_format!r} is not a figure format (allowed: "
-             f"{', '.join(FIGURE_FORMATS)})")
+        fail(choice("--figure-format", figure_format, "a figure format", ", ".join(FIGURE_FORMATS)))
     if not DPI_RANGE[0] <= dpi <= DPI_RANGE[1]:
-        fail(f"--dpi: {dpi} is out of range (allowed: {DPI_RANGE[0]} to {DPI_RANGE[1]})")
+        fail(Notice(f"--dpi: {dpi} is out of range (allowed: {DPI_RANGE[0]} to {DPI_RANGE[1]})",
+                    "option_range", option="--dpi", got=dpi, lo=DPI_RANGE[0], hi=DPI_RANGE[1]))
     formats = report or ["md", "html"]
     for f in formats:
         if f not in FORMATS:
-            fail(f"--report: {f!r} is not a report format (allowed: {', '.join(FORMATS)})")
+            fail(choice("--report", f, "a report format", ", ".join(FORMATS)))
     from flywheel.cases.run import load_case
     from flywheel.dynamics.pipeline import analyze
     from flywheel.io.output import write_folder

@@ -95,8 +95,8 @@ def task2_command(
     """Task 2: ω_max, ω_min, ω_ср and δ of a machine with constant J under given M_D(φ), M_C(φ)."""
     import math
 
-    from flywheel.cli.guard import first_nonfinite, guarded, not_finite
-    from flywheel.errors import FlywheelError, InputError
+    from flywheel.cli.guard import first_nonfinite, guarded, needs_out, not_finite
+    from flywheel.errors import FlywheelError, InputError, Notice
 
     title = source = ""
     given = [(name, v) for name, v in (("--md", md), ("--j", j), ("--omega0", omega0),
@@ -114,7 +114,7 @@ def task2_command(
 
         formats = check_formats(report)
         if report and out is None:
-            raise InputError("--report writes into the output folder: give --out DIR as well")
+            raise InputError(needs_out())
         if case is not None:
             used = (["--profile"] if profile is not None else []) + [n for n, _ in given]
             if used:
@@ -141,15 +141,19 @@ def task2_command(
                 raise InputError(f"--profile must be triangle or rectangle (got {profile!r})")
             for name, v in given:
                 if not math.isfinite(v):
-                    raise InputError(f"{name} must be a finite number (got {v})")
+                    raise InputError(Notice(f"{name} must be a finite number (got {v})",
+                                            "option_not_finite", option=name, got=str(v)))
             for name, v, unit in (("--md", md, "N·m"), ("--j", j, "kg·m²"),
                                   ("--omega0", omega0, "rad/s"), ("--mc", mc, "N·m")):
                 if v is not None and v <= 0:
-                    raise InputError(f"{name} must be positive (got {v:g} {unit})")
+                    raise InputError(Notice(f"{name} must be positive (got {v:g} {unit})",
+                                            "option_not_positive", option=name, v=v, unit=unit))
             if delta is not None and not 0 < delta < 2:
-                raise InputError(f"--delta must lie between 0 and 2 (got {delta:g})")
+                raise InputError(Notice(f"--delta must lie between 0 and 2 (got {delta:g})",
+                                        "option_delta", delta=delta))
             if start is not None and end is not None and start >= end:
-                raise InputError(f"--from ({start:g}°) must be less than --to ({end:g}°)")
+                raise InputError(Notice(f"--from ({start:g}°) must be less than --to ({end:g}°)",
+                                        "option_from_to", start=start, end=end))
             _check_at(at, 360.0)
             blame = given
 

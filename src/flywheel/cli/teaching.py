@@ -35,19 +35,21 @@ def variants_command(
     """Individual variants of a task from a template, with the answer key (answers.json,
     answers.csv), a blank answer sheet (students.csv) and, with --sheets, a printable task
     sheet per variant."""
-    from flywheel.cli.guard import _guard, fail
+    from flywheel.cli.guard import _guard, choice, fail
+    from flywheel.errors import Notice
 
     if not 1 <= count <= 9999:
-        fail(f"--count: {count} is not allowed (allowed: 1…9999)")
+        fail(Notice(f"--count: {count} is not allowed (allowed: 1…9999)", "option_not_allowed",
+                    option="--count", got=count, allowed="1…9999"))
     if seed is not None and not 0 <= seed < 2 ** 63:
-        fail(f"--seed: {seed} is not allowed (allowed: 0 … 2^63 − 1)")
+        fail(Notice(f"--seed: {seed} is not allowed (allowed: 0 … 2^63 − 1)",
+                    "option_not_allowed", option="--seed", got=seed, allowed="0 … 2^63 − 1"))
     if points < 36:
         fail(f"--points: {points} is too few (allowed: 36 or more)")
     if lang not in ("en", "ru"):
         fail(f"--lang: {lang!r} is not a language (allowed: en, ru)")
     if sheets_format not in ("both", "html", "pdf"):
-        fail(f"--sheets-format: {sheets_format!r} is not a sheet format (allowed: both, html, "
-             "pdf)")
+        fail(choice("--sheets-format", sheets_format, "a sheet format", "both, html, pdf"))
     import secrets
     import sys
 
@@ -55,6 +57,7 @@ def variants_command(
     from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn
 
     from flywheel.render.grading import print_variants
+    from flywheel.render.nomenclature import message, prefix
     from flywheel.teaching.variants import generate, load_template, write_variants
 
     if seed is None:
@@ -78,7 +81,8 @@ def variants_command(
         pages = _guard(sheets_of, vs)
         missing = sorted({p.no_drawing for p in pages if p.no_drawing})
         for why in missing:                 # one line for the batch, not one per sheet
-            sys.stderr.write(f"note: --sheets: {template}: {why}\n")
+            sys.stderr.write(f"{prefix('note', lang)}: --sheets: {template}: "
+                             f"{message(why, lang)}\n")
 
         def extra(folder):
             with Progress(TextColumn("sheets"), BarColumn(), MofNCompleteColumn(),
@@ -88,8 +92,8 @@ def variants_command(
                              lambda i: b.update(t, completed=i))
     _guard(write_variants, vs, out, notes, extra)
     for n in notes:
-        sys.stderr.write(f"note: {n}\n")
-    print_variants(vs, out, sheets=sheets_format if sheets else None)
+        sys.stderr.write(f"{prefix('note', lang)}: {message(n, lang)}\n")
+    print_variants(vs, out, sheets=sheets_format if sheets else None, lang=lang)
 
 
 def grade_command(
@@ -119,14 +123,15 @@ def grade_command(
     A student who appears twice: the later row counts (the earlier is reported)."""
     import sys
 
-    from flywheel.cli.guard import _guard, fail
+    from flywheel.cli.guard import _guard, choice, fail
+    from flywheel.errors import Notice
     from flywheel.io.output import write_file
     from flywheel.teaching.grading import grade, load_key, report_csv, report_dict
 
     if lang not in ("en", "ru"):
         fail(f"--lang: {lang!r} is not a language (allowed: en, ru)")
     if csv_style not in ("plain", "excel-ru"):
-        fail(f"--csv: {csv_style!r} is not a CSV dialect (allowed: plain, excel-ru)")
+        fail(choice("--csv", csv_style, "a CSV dialect", "plain, excel-ru"))
     for option, path in (("--out", out), ("--gradebook", gradebook)):
         if path is not None and not path.is_dir() and not path.parent.is_dir():
             fail(f"{option} {path}: the folder {path.parent} does not exist (allowed: a CSV file "
@@ -147,8 +152,10 @@ def grade_command(
     report = _guard(grade_with_bar)
     if not report.students:                 # an error: one line, nothing else written
         if report.problems:
-            fail(f"nothing could be graded ({len(report.problems)} problem(s); the first: "
-                 f"{report.problems[0]})")
+            first = report.problems[0].said()
+            fail(Notice(f"nothing could be graded ({len(report.problems)} problem(s); the "
+                        f"first: {first})", "nothing_graded", n=len(report.problems),
+                        detail=first))
         files = ", ".join(report.files) or ", ".join(map(str, answers))
         fail(f"{files}: nothing could be graded: no filled-in student rows (a row needs a "
              "student name and a variant)")
@@ -182,7 +189,9 @@ def grade_command(
             print_report(report, lang=lang)
         for path in (out, gradebook):
             if path is not None and report.students:
-                typer.echo(f"written: {path}")
+                from flywheel.render.nomenclature import prefix
+
+                typer.echo(f"{prefix('written', lang)}: {path}")
 
 
 def _number_or_text(cell: str):

@@ -32,7 +32,7 @@ from typing import Callable, Sequence
 
 from flywheel.constant_inertia.crossings import bisect_root, crossings, stationary_points
 from flywheel.constant_inertia.graphs import TWO_PI, Moment, Piece, net_pieces, size
-from flywheel.errors import InputError
+from flywheel.errors import InputError, Notice
 
 # relative tolerance of the cycle balance (steady motion) and of the sum of areas
 BALANCE_RTOL = 1e-9
@@ -601,11 +601,17 @@ def _motion(bounds: list[float], kinds: list[str], A: list[float], J: float | No
     wsq = [w0sq + 2 * a / J for a in A]
     if min(wsq) <= 0.0:
         i = next(i for i, w in enumerate(wsq) if w <= 0.0)
-        where = (f"at φ = {math.degrees(stop(J, w0sq)):.6g}°" if stop is not None
-                 else f"before row {i}")
-        raise InputError(f"the machine stops {where}: the kinetic energy "
-                         f"½·J·ω0² = {0.5 * J * w0sq:.6g} J cannot cover the deficit "
-                         f"{-min(A):.6g} J")
+        if stop is not None:
+            phi_stop = math.degrees(stop(J, w0sq))
+            where = f"at φ = {phi_stop:.6g}°"
+        else:
+            where = f"before row {i}"
+        raise InputError(Notice(f"the machine stops {where}: the kinetic energy "
+                                f"½·J·ω0² = {0.5 * J * w0sq:.6g} J cannot cover the deficit "
+                                f"{-min(A):.6g} J", "machine_stops",
+                                where_ru=(f"при φ = {phi_stop:.6g}°" if stop is not None
+                                          else f"до строки {i}"),
+                                T0=0.5 * J * w0sq, deficit=-min(A)))
     omega = [math.sqrt(w) for w in wsq]
     w_max, w_min = omega[i_max], omega[i_min]
     if omega_mean is not None:       # exact, free of round-off in the square roots

@@ -10,7 +10,7 @@ from dataclasses import replace
 import numpy as np
 
 from flywheel.dynamics import loads
-from flywheel.errors import InputError
+from flywheel.errors import InputError, Notice
 from flywheel.linkage import Kinematics, LinkMotion, PointMotion, solve
 from flywheel.linkage.deadcentres import dead_centres, guide_frame, slider_dyad
 
@@ -41,9 +41,10 @@ def closed_grid(n_points: int, extra: list[float], cycle: float = 2 * np.pi) -> 
 def grid_options(case, n_points: int, at_deg: list[float] | None) -> list[float]:
     """Check --points and --at; the report angles [deg] (default: the case's output.at_deg)."""
     if not 36 <= n_points <= MAX_POINTS:
-        raise InputError(f"--points: {n_points} is out of range (allowed: 36 … {MAX_POINTS}; "
-                         f"results converge well before: the default {DEFAULT_POINTS} is within "
-                         f"1e-4 of a 4× finer grid)")
+        raise InputError(Notice(
+            f"--points: {n_points} is out of range (allowed: 36 … {MAX_POINTS}; results converge "
+            f"well before: the default {DEFAULT_POINTS} is within 1e-4 of a 4× finer grid)",
+            "points_range", n=n_points, top=MAX_POINTS, default=DEFAULT_POINTS))
     at_deg = list(case.output.at_deg if at_deg is None else at_deg)
     for a in at_deg:
         if not math.isfinite(a):

@@ -65,15 +65,17 @@ def work_and_energy(phi: np.ndarray, loads: LoadsResult, red: ReductionResult,
         warnings.append(Notice("the loads do no net work over a cycle: the balancing moment is 0 "
                                "(the flywheel only smooths the loads' periodic part)", "no_net_work"))
     elif machine.balance == "driving" and not M_const > 0:
-        raise InputError(
+        raise InputError(Notice(
             f"the loads do {work_known:+.6g} J of work over a cycle: a constant driving moment "
             f"would have to be {M_const:.6g} N·m ≤ 0 (allowed: resistance must absorb work; "
-            f"for an engine set machine.balance = \"resistance\")")
+            f"for an engine set machine.balance = \"resistance\")", "balance_driving",
+            work=work_known, M=M_const))
     elif machine.balance == "resistance" and not M_const < 0:
-        raise InputError(
+        raise InputError(Notice(
             f"the loads do {work_known:+.6g} J of work over a cycle: a constant resistance moment "
             f"would have to be {-M_const:.6g} N·m ≤ 0 (allowed: driving forces must supply work; "
-            f"for a compressor or press set machine.balance = \"driving\")")
+            f"for a compressor or press set machine.balance = \"driving\")", "balance_resistance",
+            work=work_known, M=-M_const))
     A_const = M_const * phi
     A = A_known + A_const
     if machine.balance == "driving":
@@ -430,9 +432,9 @@ def time_domain(case, phi: np.ndarray, red: ReductionResult, en: EnergyResult,
             means = timedomain.history_cycle_means(st["t"], st["omega"], float(phi[-1] - phi[0]))
     else:
         startup = {"computed": False,
-                   "reason": "no [motor] in the case: under a constant driving moment the work "
-                             "over a cycle is zero at any speed, so there is no start-up to a "
-                             "steady state"}
+                   "reason": Notice("no [motor] in the case: under a constant driving moment "
+                                    "the work over a cycle is zero at any speed, so there is no "
+                                    "start-up to a steady state", "startup_no_motor")}
     rd = timedomain.rundown(phi, J, dJ, en.M_known, float(mo.omega[0]),
                             progress=stage("run-down"))
     histories["rundown"] = (rd["t"], rd["omega"])

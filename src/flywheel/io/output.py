@@ -179,17 +179,19 @@ def write_folder(target: Path, build, marker: str, kind: str = "output",
     target = Path(target)
     for p in (target, *target.parents):
         if p.exists() and not p.is_dir():
-            raise InputError(f"--out {target}: {p} is a file, not a folder")
+            raise InputError(Notice(f"--out {target}: {p} is a file, not a folder",
+                                    "out_is_a_file", target=str(target), file=str(p)))
     earlier: _Earlier | None = None
     if target.is_dir() and any(target.iterdir()):
         earlier = _read_manifest(target, kind)
         if earlier is None and _legacy(target, marker, kind):
             earlier = _Earlier({})
         if earlier is None:
-            raise InputError(f"--out {target}: the folder exists, is not empty and is not an "
-                             f"earlier {kind} folder of flywheel (no {MANIFEST}); give a new or "
-                             f"empty folder (in an {kind} folder a rerun replaces only the "
-                             f"files flywheel wrote)")
+            raise InputError(Notice(
+                f"--out {target}: the folder exists, is not empty and is not an earlier {kind} "
+                f"folder of flywheel (no {MANIFEST}); give a new or empty folder (in an {kind} "
+                f"folder a rerun replaces only the files flywheel wrote)", "out_not_ours",
+                target=str(target), folder_kind=kind, manifest=MANIFEST))
     parent = target.resolve().parent
     try:
         parent.mkdir(parents=True, exist_ok=True)

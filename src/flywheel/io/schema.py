@@ -12,7 +12,7 @@ from typing import TypeVar
 
 from pydantic import BaseModel, ConfigDict, ValidationError
 
-from flywheel.errors import CaseFileError
+from flywheel.errors import CaseFileError, Notice, led, said
 
 
 class StrictModel(BaseModel):
@@ -25,7 +25,8 @@ class StrictModel(BaseModel):
 
 class FieldError(ValueError):
     """A problem found by a check that spans fields: ``loc`` is the field path, as a tuple
-    (``("cylinders", 0, "piston")``) or a dotted string (``"motor.J"``)."""
+    (``("cylinders", 0, "piston")``) or a dotted string (``"motor.J"``). ``msg`` may be an
+    errors.Notice (said in the user's --lang)."""
 
     def __init__(self, loc: tuple | str, msg: str):
         super().__init__(msg)
@@ -50,7 +51,8 @@ def within(lo: float, hi: float, unit: str = ""):
         for x in vals:
             if isinstance(x, (int, float)) and not lo <= x <= hi:
                 u = f" {unit}" if unit else ""
-                raise ValueError(f"{x:g}{u} is out of range (allowed: {lo:g} … {hi:g}{u})")
+                raise ValueError(Notice(f"{x:g}{u} is out of range (allowed: {lo:g} … {hi:g}{u})",
+                                        "out_of_range", x=x, lo=lo, hi=hi, unit=unit))
         return v
     return AfterValidator(check)
 
@@ -74,13 +76,15 @@ def validate(data, model: type[M], source: str, describe_error: Callable[[list[d
         for e in errs:
             ctx = e.get("ctx", {}).get("error")
             if isinstance(ctx, FieldError) and isinstance(ctx.loc, tuple):
-                raise CaseFileError(f"{source}: {loc_str(e['loc'] + ctx.loc)}: {ctx}") from None
-        raise CaseFileError(f"{source}: {describe_error(errs)}") from None
+                raise CaseFileError(led(f"{source}: {loc_str(e['loc'] + ctx.loc)}: ",
+                                        said(ctx))) from None
+        raise CaseFileError(led(f"{source}: ", describe_error(errs))) from None
     if check is not None:
         try:
             check(obj)
         except FieldError as exc:
-            raise CaseFileError(f"{source}: {exc.where + ': ' if exc.where else ''}{exc}") from None
+            raise CaseFileError(led(f"{source}: {exc.where + ': ' if exc.where else ''}",
+                                    said(exc))) from None
     return obj
 
 
@@ -128,7 +132,28 @@ def describe(err: dict, allowed: Callable[[tuple], list[str]], drop: Iterable[st
              messages: dict[str, str] | None = None) -> str:
     """'field.path: what is wrong (got …)'. ``allowed(loc)`` lists the keys valid in the table at
     ``loc`` (the raw pydantic location) for an unknown key; ``messages`` replaces the text of an
-    error type ({'greater_than': 'must be positive'})."""
+    error type ({'greater_than': 'must be positive'}). An errors.Notice: the field path is its
+    ``lead``, the code the kind of problem (pydantic's own types as "pydantic_<type>")."""
+    text = _describe(err, allowed, drop, messages)
+    where = loc_str(clean_loc(err["loc"], drop))
+    if isinstance(text, Notice):
+        return text
+    got = err.get("input")
+    kind = err["type"]
+    ctx = {k: v for k, v in (err.get("ctx") or {}).items() if isinstance(v, (int, float, str))}
+    code = "pydantic_" + kind
+    if kind == "missing":
+        code = "missing"
+    elif kind in ("model_type", "model_attributes_type", "dict_type"):
+        code = "not_a_table"
+    elif kind == "finite_number":
+        code = "not_finite_number"
+    out = Notice(text[len(where) + 2:], code, got=repr(got) if not isinstance(got, (dict, list))
+                 else "", **ctx)
+    return led(f"{where}: ", out)
+
+
+def _describe(err, allowed, drop, messages) -> str:
     loc = clean_loc(err["loc"], drop)
     kind, msg = err["type"], err["msg"]
     where = loc_str(loc)
@@ -140,7 +165,9 @@ def describe(err: dict, allowed: Callable[[tuple], list[str]], drop: Iterable[st
         lower = {a.lower(): a for a in keys}
         near = difflib.get_close_matches(key.lower(), list(lower), n=1)
         hint = f"; did you mean {lower[near[0]]!r}?" if near else ""
-        return f"{where}: unknown key{hint} (allowed: {', '.join(keys)})"
+        return led(f"{where}: ", Notice(f"unknown key{hint} (allowed: {', '.join(keys)})",
+                                        "unknown_key", key=key, near=lower[near[0]] if near
+                                        else "", allowed=", ".join(keys)))
     if kind == "missing":
         return f"{where}: missing required field"
     if kind == "finite_number":
@@ -148,6 +175,9 @@ def describe(err: dict, allowed: Callable[[tuple], list[str]], drop: Iterable[st
     if kind in ("model_type", "model_attributes_type", "dict_type"):
         return f"{where}: must be a table of keys, e.g. {{ key = value, … }}{got_s}"
     if kind == "value_error":
+        ctx = err.get("ctx", {}).get("error")
+        if ctx is not None and isinstance(said(ctx), Notice):
+            return led(f"{where}: ", said(ctx))
         return f"{where}: {msg.removeprefix('Value error, ')}"
     if messages and kind in messages:
         return f"{where}: {messages[kind]}{got_s}"

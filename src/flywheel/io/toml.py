@@ -4,7 +4,7 @@ from __future__ import annotations
 import tomllib
 from pathlib import Path
 
-from flywheel.errors import CaseFileError
+from flywheel.errors import CaseFileError, Notice
 
 
 def read_toml(path, what: str = "a TOML case file") -> dict:
@@ -15,14 +15,18 @@ def read_toml(path, what: str = "a TOML case file") -> dict:
     try:
         text = path.read_bytes().decode("utf-8-sig")   # a BOM (Windows editors) is no error
     except FileNotFoundError:
-        raise CaseFileError(f"{path}: no such file") from None
+        raise CaseFileError(Notice(f"{path}: no such file", "no_such_file", path=str(path))) from None
     except IsADirectoryError:
-        raise CaseFileError(f"{path}: is a folder, expected {what}") from None
+        raise CaseFileError(Notice(f"{path}: is a folder, expected {what}", "is_a_folder",
+                                   path=str(path), what=what)) from None
     except UnicodeDecodeError as exc:
-        raise CaseFileError(f"{path}: not UTF-8 text ({exc.reason} at byte {exc.start})") from None
+        raise CaseFileError(Notice(f"{path}: not UTF-8 text ({exc.reason} at byte {exc.start})",
+                                   "not_utf8", path=str(path), reason=exc.reason,
+                                   byte=exc.start)) from None
     except OSError as exc:
         raise CaseFileError(f"{path}: cannot be read ({exc.strerror})") from None
     try:
         return tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
-        raise CaseFileError(f"{path}: TOML syntax error: {exc}") from None
+        raise CaseFileError(Notice(f"{path}: TOML syntax error: {exc}", "toml_syntax",
+                                   path=str(path), detail=str(exc))) from None

@@ -39,7 +39,7 @@ def _matrix(name: str, m, unit: str, lang: str = "en"):
     from rich.table import Table
 
     n = m.shape[0]
-    t = Table(title=escape(f"{name} [{unit}]"))
+    t = Table(title=escape(f"{name}, {unit}" if lang == "ru" else f"{name} [{unit}]"))
     t.add_column("")
     for j in range(n):
         t.add_column(nm.name("matrix_j", lang, j=j + 1), justify="right")

@@ -6,18 +6,73 @@ import math
 
 from flywheel.render import nomenclature as nm
 
+# the words of `flywheel check` (the quantities' names, symbols and units: the nomenclature)
+W = {
+    "en": {"case": "case", "given_fw": "a given flywheel, ", "balance": "balance: constant {b} moment",
+           "cycle": "cycle Φ = {c}°",
+           "fires": "; fires: ", "fire_at": "{n} at {a}°", "mechanism": "Mechanism",
+           "group": "group", "links": "links", "points": "points", "data": "data",
+           "crank": "crank", "crank_pin": "crank pin", "cw": "cw", "ccw": "ccw",
+           "pin_at": "l = {l} m, at {a}° to {tip}",
+           "rrp": "rod {l} m; guide through {th} at {a}°, offset {o} m; branch {b}",
+           "rpr_where": "{o} on rocker about {p}", "rpr": "offset {o} m; branch {b}",
+           "rrr": "{a} m, {b} m; branch {br}", "point": "point", "of": "{f} of {o}→{t}",
+           "across": ", {a} m across", "from": "{d} m from {o} at {a}°", "Links": "Links",
+           "link": "link", "centroid": "centroid",
+           "first_group": "first group (on the crank shaft): ", "Cylinders": "Cylinders",
+           "name": "name", "piston": "piston", "head": "head", "interpolation": "interpolation",
+           "Dead centres": "Dead centres", "slider": "slider", "dead centre": "dead centre",
+           "x along guide": "x along guide", "stroke": "stroke", "outer": "outer",
+           "inner": "inner",
+           "pts_dc": "Points at the dead centres: {v} / {a}",
+           "links_dc": "Links at the dead centres: {w} / {e}", "valid": "case is valid",
+           "J_II_by": "{J} by {how}", "tab_kin": "Tabulated kinematics (one row per position)",
+           "tab_red": "Reduced to the crank ({M} = {w}²/2·{dJ}, {dJ} by {how})",
+           "loads": "loads: ", "force_at": "{n} at {p} ({how})", "moment": "moment {n} ({how})",
+           "at": "at", "row": "{w} row"},
+    "ru": {"case": "случай", "given_fw": "заданный маховик, ", "cycle": "цикл Φ = {c}°",
+           "fires": "; вспышки: ", "fire_at": "{n} при {a}°", "mechanism": "Механизм",
+           "group": "группа", "links": "звенья", "points": "точки", "data": "данные",
+           "crank": "кривошип", "crank_pin": "шейка кривошипа", "cw": "по часовой стрелке",
+           "ccw": "против часовой стрелки", "pin_at": "l = {l} м, под {a}° к {tip}",
+           "rrp": ("шатун {l} м; направляющая через {th} под {a}°, смещение {o} м; сборка {b}"),
+           "rpr_where": "{o} на кулисе с опорой {p}", "rpr": "смещение {o} м; сборка {b}",
+           "rrr": "{a} м, {b} м; сборка {br}", "point": "точка", "of": "{f} отрезка {o}→{t}",
+           "across": ", {a} м поперёк", "from": "{d} м от {o} под {a}°", "Links": "Звенья",
+           "link": "звено", "centroid": "центр масс",
+           "first_group": "первая группа (на валу кривошипа): ", "Cylinders": "Цилиндры",
+           "name": "имя", "piston": "поршень", "head": "головка", "interpolation": "интерполяция",
+           "Dead centres": "Мёртвые точки", "slider": "ползун", "dead centre": "мёртвая точка",
+           "x along guide": "x вдоль направляющей", "stroke": "ход", "outer": "внешняя",
+           "inner": "внутренняя",
+           "pts_dc": "Точки в мёртвых положениях: {v} / {a}",
+           "links_dc": "Звенья в мёртвых положениях: {w} / {e}", "valid": "случай корректен",
+           "J_II_by": "{J}: интерполяция {how}",
+           "tab_kin": "Кинематика по таблице (строка на положение)",
+           "tab_red": "Приведение к кривошипу ({M} = {w}²/2·{dJ}, {dJ}: интерполяция {how})",
+           "loads": "нагрузки: ", "force_at": "{n} в точке {p} ({how})",
+           "moment": "момент {n} ({how})", "at": "точка", "row": "строка {w}"},
+}
+
 
 def _g(x: float) -> str:
     """6 significant digits; round-off below 1e-12 shown as 0."""
     return f"{0.0 if abs(x) < 1e-12 else x:.6g}"
 
 
-def _crank_line(report, m) -> str:
+def _crank_line(report, m, lang: str = "en") -> str:
     """n1, ω_m, δ and which constant moment balances the cycle."""
-    return (f"{nm.name('crank_speed')} = {report.crank_speed_rps:.6g} {nm.unit_of('crank_speed')}, "
-            f"{nm.symbol('omega_mean')} = {m.omega_mean:.6g} {nm.unit_of('omega_mean')}, "
-            + (f"{nm.symbol('delta')} = {m.delta:g}, " if m.delta is not None else
-               "a given flywheel, ") + f"balance: constant {m.balance} moment")
+    w = W[lang]
+    if lang == "ru":
+        bal = ("уравновешивание: постоянный движущий момент" if m.balance == "driving" else
+               "уравновешивание: постоянный момент сопротивления")
+    else:
+        bal = w["balance"].format(b=m.balance)
+    return (f"{nm.name('crank_speed', lang)} = {report.crank_speed_rps:.6g} "
+            f"{nm.unit_of('crank_speed', lang)}, "
+            f"{nm.symbol('omega_mean', lang)} = {m.omega_mean:.6g} {nm.unit_of('omega_mean', lang)}, "
+            + (f"{nm.symbol('delta', lang)} = {m.delta:g}, " if m.delta is not None else
+               w["given_fw"]) + bal)
 
 
 def _table(title: str, columns):
@@ -31,9 +86,10 @@ def _table(title: str, columns):
     return t
 
 
-def print_check(report, console=None) -> None:
+def print_check(report, console=None, lang: str = "en") -> None:
     """Print a :class:`~flywheel.dynamics.check.CheckReport`: the mechanism, links, cylinders
-    and the kinematics at each slider's dead centres (or a tabulated case's table)."""
+    and the kinematics at each slider's dead centres (or a tabulated case's table); the words
+    in ``lang``."""
     from rich.console import Console
     from rich.table import Table
 
@@ -41,119 +97,141 @@ def print_check(report, console=None) -> None:
 
     console = console or Console()
     case = report.case
+    w = W[lang]
     if report.tabulated is not None:
-        return _print_tabulated(report, console)
+        return _print_tabulated(report, console, lang)
     mech = report.mechanism
     m = case.machine
-    console.print(f"[bold]{case.title or 'case'}[/bold]  ({case.source})" if case.source
-                  else f"[bold]{case.title or 'case'}[/bold]")
-    console.print(_crank_line(report, m))
+    console.print(f"[bold]{case.title or w['case']}[/bold]  ({case.source})" if case.source
+                  else f"[bold]{case.title or w['case']}[/bold]")
+    console.print(_crank_line(report, m, lang))
     if m.cycle_deg != 360 or report.firing_deg:
-        console.print(f"cycle Φ = {m.cycle_deg:g}°" + ("; fires: " + ", ".join(
-            f"{n} at {a:.6g}°" for n, a in report.firing_deg.items()) if report.firing_deg else ""))
+        console.print(w["cycle"].format(c=f"{m.cycle_deg:g}") + (w["fires"] + ", ".join(
+            w["fire_at"].format(n=n, a=f"{a:.6g}") for n, a in report.firing_deg.items())
+            if report.firing_deg else ""))
     c = mech.crank
-    t = Table(title="Mechanism", show_lines=False)
+    t = Table(title=w["mechanism"], show_lines=False)
     for col in ("group", "links", "points", "data"):
-        t.add_column(col)
-    t.add_row("crank", c.name, f"{c.pivot} → {c.tip}",
-              f"l = {c.length:.6g} m, θ0 = {math.degrees(c.start_angle):g}°, "
-              f"{'cw' if c.direction < 0 else 'ccw'}")
+        t.add_column(w[col])
+    t.add_row(w["crank"], c.name, f"{c.pivot} → {c.tip}",
+              f"l = {c.length:.6g} {nm.unit('m', lang)}, θ0 = {math.degrees(c.start_angle):g}°, "
+              f"{w['cw'] if c.direction < 0 else w['ccw']}")
     for pin in c.pins:
-        t.add_row("crank pin", c.name, f"{c.pivot} → {pin.name}",
-                  f"l = {pin.length:.6g} m, at {math.degrees(pin.angle):g}° to {c.tip}")
+        t.add_row(w["crank_pin"], c.name, f"{c.pivot} → {pin.name}",
+                  w["pin_at"].format(l=f"{pin.length:.6g}", a=f"{math.degrees(pin.angle):g}",
+                                     tip=c.tip))
     for spec, d in zip(case.dyads, mech.dyads):
         if isinstance(spec, RRPSpec):
             t.add_row(f"RRP {d.name}", f"{d.rod}, {d.slider}", f"{d.origin} → {d.joint}",
-                      f"rod {d.rod_length:.6g} m; guide through {d.guide.through} at "
-                      f"{math.degrees(d.guide.angle):g}°, offset {d.guide.offset:g} m; branch {spec.branch}")
+                      w["rrp"].format(l=f"{d.rod_length:.6g}", th=d.guide.through,
+                                      a=f"{math.degrees(d.guide.angle):g}",
+                                      o=f"{d.guide.offset:g}", b=spec.branch))
         elif isinstance(spec, RPRSpec):
-            t.add_row(f"RPR {d.name}", f"{d.rocker}, {d.slider}", f"{d.origin} on rocker about {d.pivot}",
-                      f"offset {d.offset:g} m; branch {spec.branch}")
+            t.add_row(f"RPR {d.name}", f"{d.rocker}, {d.slider}",
+                      w["rpr_where"].format(o=d.origin, p=d.pivot),
+                      w["rpr"].format(o=f"{d.offset:g}", b=spec.branch))
         else:
             t.add_row(f"RRR {d.name}", f"{d.link_a}, {d.link_b}",
                       f"{d.point_a} → {d.joint} ← {d.point_b}",
-                      f"{d.length_a:.6g} m, {d.length_b:.6g} m; branch {spec.branch}")
+                      w["rrr"].format(a=f"{d.length_a:.6g}", b=f"{d.length_b:.6g}",
+                                      br=spec.branch))
     for p in mech.points:
-        how = (f"{p.fraction:g} of {p.origin}→{p.toward}" + (f", {p.across:g} m across" if p.across else "")
-               if p.toward else f"{p.distance:g} m from {p.origin} at {math.degrees(p.angle):g}°")
-        t.add_row("point", p.link, p.name, how)
+        how = (w["of"].format(f=f"{p.fraction:g}", o=p.origin, t=p.toward)
+               + (w["across"].format(a=f"{p.across:g}") if p.across else "")
+               if p.toward else w["from"].format(d=f"{p.distance:g}", o=p.origin,
+                                                 a=f"{math.degrees(p.angle):g}"))
+        t.add_row(w["point"], p.link, p.name, how)
     console.print(t)
 
     if case.links:
-        t = _table("Links", ("link", nm.heading("link_mass", label=nm.name("link_mass")),
-                             nm.heading("J_S"), "centroid"))
+        t = _table(w["Links"], (w["link"], nm.heading("link_mass", lang,
+                                                      label=nm.name("link_mass", lang)),
+                                nm.heading("J_S", lang), w["centroid"]))
         for name, lk in case.links.items():
             t.add_row(name, f"{lk.mass:g}" if lk.mass else "—", f"{lk.J_S:g}", lk.centroid or "—")
         console.print(t)
     if m.first_group:
-        console.print("first group (on the crank shaft): " + ", ".join(
-            f"{k} = {v:g} {nm.unit_of('J_first_group')}" for k, v in m.first_group.items()))
+        console.print(w["first_group"] + ", ".join(
+            f"{k} = {v:g} {nm.unit_of('J_first_group', lang)}" for k, v in m.first_group.items()))
     if case.cylinders:
-        t = _table("Cylinders", ("name", "piston", nm.heading("bore", label=nm.name("bore")),
-                                 nm.heading("p_max", si="MPa"), "head", "interpolation", "points"))
+        t = _table(w["Cylinders"], (w["name"], w["piston"],
+                                    nm.heading("bore", lang, label=nm.name("bore", lang)),
+                                    nm.heading("p_max", lang, si="MPa"), w["head"],
+                                    w["interpolation"], w["points"]))
         for cy in case.cylinders:
-            t.add_row(cy.name, cy.piston, f"{cy.bore:g}", f"{cy.p_max / 1e6:g}", cy.head,
+            t.add_row(cy.name, cy.piston, f"{cy.bore:g}", f"{cy.p_max / 1e6:g}",
+                      w.get(cy.head, cy.head),
                       cy.interpolation, str(len(cy.s if cy.s is not None else cy.diagram.s)))
         console.print(t)
 
     if report.sliders:
-        t = _table("Dead centres", ("slider", "dead centre", nm.heading("phi_deg"),
-                                    nm.heading("x", label="x along guide")))
+        t = _table(w["Dead centres"], (w["slider"], w["dead centre"], nm.heading("phi_deg", lang),
+                                       nm.heading("x", lang, label=w["x along guide"])))
         for sl in report.sliders:
             for dc in sl.dead_centres:
-                t.add_row(sl.slider, dc.kind, f"{math.degrees(dc.phi):.4f}", f"{dc.x:.6g}")
-            t.add_row(sl.slider, "stroke", "", f"{sl.stroke:.6g}")
+                t.add_row(sl.slider, w.get(dc.kind, dc.kind), f"{math.degrees(dc.phi):.4f}",
+                          f"{dc.x:.6g}")
+            t.add_row(sl.slider, w["stroke"], "", f"{sl.stroke:.6g}")
         console.print(t)
         angles = report.dead_centre_angles
         if angles:
-            vq = nm.heading("v_q", label=f"|{nm.symbol('v_q')}|")
-            aq = nm.heading("a_q", label=f"|{nm.symbol('a_q')}|")
-            t = _table(f"Points at the dead centres: {vq} / {aq}",
-                       (nm.heading("phi_deg"), *report.point_analogues))
+            vq = nm.heading("v_q", lang, label=f"|{nm.symbol('v_q', lang)}|")
+            aq = nm.heading("a_q", lang, label=f"|{nm.symbol('a_q', lang)}|")
+            t = _table(w["pts_dc"].format(v=vq, a=aq),
+                       (nm.heading("phi_deg", lang), *report.point_analogues))
             for i, a in enumerate(angles):
                 t.add_row(f"{math.degrees(a):.4f}", *(
                     f"{_g(v[i])} / {_g(acc[i])}" for v, acc in report.point_analogues.values()))
             console.print(t)
-            t = _table(f"Links at the dead centres: {nm.heading('omega_q')} / {nm.heading('epsilon_q')}",
-                       (nm.heading("phi_deg"), *report.link_analogues))
+            t = _table(w["links_dc"].format(w=nm.heading("omega_q", lang),
+                                            e=nm.heading("epsilon_q", lang)),
+                       (nm.heading("phi_deg", lang), *report.link_analogues))
             for i, a in enumerate(angles):
                 t.add_row(f"{math.degrees(a):.4f}", *(
                     f"{_g(w[i])} / {_g(e[i])}" for w, e in report.link_analogues.values()))
             console.print(t)
-    console.print("[green]case is valid[/green]")
+    console.print(f"[green]{w['valid']}[/green]")
 
 
-def _print_tabulated(report, console) -> None:
+def _print_tabulated(report, console, lang: str = "en") -> None:
     """A case with tabulated kinematics: its table, one row per position, with Мст and J_II."""
     case, red = report.case, report.tabulated
     tab, m = case.tabulated, case.machine
-    console.print(f"[bold]{case.title or 'case'}[/bold]" + (f"  ({case.source})" if case.source else ""))
-    console.print(f"{_crank_line(report, m)}; {nm.symbol('J_II')} by {tab.interpolation}",
+    w = W[lang]
+    console.print(f"[bold]{case.title or w['case']}[/bold]"
+                  + (f"  ({case.source})" if case.source else ""))
+    console.print(f"{_crank_line(report, m, lang)}; "
+                  + w["J_II_by"].format(J=nm.symbol("J_II", lang), how=tab.interpolation),
                   markup=False)
-    phi = nm.heading("phi_deg")
+    phi = nm.heading("phi_deg", lang)
     kin = [(phi, tab.positions_deg)]
-    kin += [(nm.heading(f"vq_{k}", label=f"|{nm.symbol(f'vq_{k}')}| {k}"), v) for k, v in tab.points.items()]
-    kin += [(nm.heading(f"omega_q_{k}", label=f"{nm.symbol(f'omega_q_{k}')} {k}"), v)
+    kin += [(nm.heading(f"vq_{k}", lang, label=f"|{nm.symbol(f'vq_{k}', lang)}| {k}"), v)
+            for k, v in tab.points.items()]
+    kin += [(nm.heading(f"omega_q_{k}", lang, label=f"{nm.symbol(f'omega_q_{k}', lang)} {k}"), v)
             for k, v in tab.omega_q.items()]
-    reduced = [(phi, tab.positions_deg), (nm.heading("M_st"), red.static_moments),
-               (nm.heading("J_II"), red.J_II), (nm.heading("dJ_II"), red.dJ_II),
-               (nm.heading("M_dyn"), red.dynamic_moments)]
-    dJ = nm.symbol("dJ_II")
-    for title, cols in (("Tabulated kinematics (one row per position)", kin),
-                        (f"Reduced to the crank ({nm.symbol('M_dyn')} = {nm.symbol('omega_mean')}²/2·{dJ}, "
-                         f"{dJ} by {tab.interpolation})", reduced)):
+    reduced = [(phi, tab.positions_deg), (nm.heading("M_st", lang), red.static_moments),
+               (nm.heading("J_II", lang), red.J_II), (nm.heading("dJ_II", lang), red.dJ_II),
+               (nm.heading("M_dyn", lang), red.dynamic_moments)]
+    dJ = nm.symbol("dJ_II", lang)
+    for title, cols in ((w["tab_kin"], kin),
+                        (w["tab_red"].format(M=nm.symbol("M_dyn", lang),
+                                             w=nm.symbol("omega_mean", lang), dJ=dJ,
+                                             how=tab.interpolation), reduced)):
         t = _table(title, ("#", *(c[0] for c in cols)))
         for k in range(len(tab.positions_deg)):
             t.add_row(str(k + 1), *(_g(float(v[k])) for _, v in cols))
         console.print(t)
     if tab.forces or tab.moments:
-        console.print("loads: " + ", ".join(
-            [f"{f.name} at {f.point} ({f.interpolation})" for f in tab.forces]
-            + [f"moment {mo.name} ({mo.interpolation})" for mo in tab.moments]), markup=False)
-    t = _table("Links", ("link", nm.heading("link_mass", label=nm.name("link_mass")), "at",
-                         nm.heading("link_J"), f"{nm.symbol('omega_q')} row"))
+        console.print(w["loads"] + ", ".join(
+            [w["force_at"].format(n=f.name, p=f.point, how=f.interpolation) for f in tab.forces]
+            + [w["moment"].format(n=mo.name, how=mo.interpolation) for mo in tab.moments]),
+            markup=False)
+    t = _table(w["Links"], (w["link"], nm.heading("link_mass", lang,
+                                                  label=nm.name("link_mass", lang)), w["at"],
+                            nm.heading("link_J", lang),
+                            w["row"].format(w=nm.symbol("omega_q", lang))))
     for name, lk in tab.links.items():
         t.add_row(name, f"{lk.mass:g}" if lk.mass else "—", lk.point or "—", f"{lk.J:g}",
                   (lk.omega_q or name) if lk.J else "—")
     console.print(t)
-    console.print("[green]case is valid[/green]")
+    console.print(f"[green]{w['valid']}[/green]")

@@ -123,7 +123,7 @@ T = {
         "tabulated": "Кинематические характеристики заданы таблицей (схема механизма не задана).",
         "kin": "2. Кинематика в стандартных положениях",
         "kin_caption": "Аналоги скоростей в стандартных положениях",
-        "kin_note": "Аналоги скоростей точек {vq} = dr/dφ [{u}], звеньев {wq} = dθ/dφ.",
+        "kin_note": "Аналоги скоростей точек {vq} = dr/dφ ({u}), звеньев {wq} = dθ/dφ.",
         "red": "3. Приведение масс и сил",
         "red_caption": "Приведённый момент инерции и приведённые моменты в стандартных положениях",
         "red_note": ("J_II — кинетическая энергия звеньев на ½ω²; приведённый момент силы F·v_q, "
@@ -175,12 +175,9 @@ T = {
                   "({t} с); средняя скорость последнего цикла {w} рад/с"),
         "st_stall": "разгон из состояния покоя: двигатель не может разогнать машину — остановка при φ = {a}°",
         "st_none": "разгон: не рассчитан ({reason})",
-        "st_none_motor": ("в задании нет раздела [motor]: при постоянном движущем моменте работа за "
-                          "цикл равна нулю при любой скорости, установившегося режима разгона нет"),
         "rd": "выбег после отключения привода при φ = 0: {t} с, оборотов кривошипа: {rev}",
         "rd_not": " (не остановился в пределах интегрирования)",
-        "rd_never": ("выбега нет: работа нагрузок за цикл равна нулю, без привода машина продолжает "
-                     "вращаться"),
+        "rd_never": "выбега нет: {reason}",
         "book": ("Артоболевский И. И. Теория механизмов и машин. — 4-е изд. — М.: Наука, 1988: "
                  "гл. 2 (структура), гл. 16–17 (приведение, метод Мерцалова, диаграмма "
                  "Виттенбауэра)."),
@@ -571,10 +568,8 @@ def _time_lines(td: dict, s: dict, t: dict, lang: str = "en") -> list[str]:
         "- " + t["period"].format(T=g(v["period"], 6), Te=g(s["cycle_time"], 6)),
     ]
     if st.get("computed") is False:
-        reason = st["reason"]
-        if "st_none_motor" in t and reason.startswith("no [motor]"):
-            reason = t["st_none_motor"]
-        return lines + ["- " + t["st_none"].format(reason=reason), _rundown_line(rd, t)]
+        return lines + ["- " + t["st_none"].format(reason=nm.message(st["reason"], lang)),
+                        _rundown_line(rd, t, lang)]
     if "starting_torque" in st:
         lines.append("- " + t["motor"].format(Mp=g(st["starting_torque"], 5), wx=g(st["no_load_speed"], 5),
                                               ws=g(st.get("omega_final_predicted"), 6),
@@ -589,11 +584,11 @@ def _time_lines(td: dict, s: dict, t: dict, lang: str = "en") -> list[str]:
                                               w=g(st.get("omega_mean_last"), 6)))
         if st.get("warning"):
             lines.append(f"- **{nm.message(st['warning'], lang)}**")
-    return lines + [_rundown_line(rd, t)]
+    return lines + [_rundown_line(rd, t, lang)]
 
 
-def _rundown_line(rd: dict, t: dict) -> str:
-    if rd.get("reason"):
-        return "- " + t["rd_never"]
+def _rundown_line(rd: dict, t: dict, lang: str = "en") -> str:
+    if rd.get("reason"):                # English: the fixed line; Russian: the reason itself
+        return "- " + t["rd_never"].format(reason=nm.message(rd["reason"], lang))
     return "- " + t["rd"].format(t=g(rd["time"], 4), rev=f"{rd['angle_deg'] / 360:.2f}") + (
         "" if rd["stopped"] else t["rd_not"])

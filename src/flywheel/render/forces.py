@@ -63,7 +63,7 @@ T = {
         "ok": " — M_у = M_Д при каждом φ: уравнение движения, прочитанное в обратную сторону",
         "bad": " — НЕ ошибка округления: проверьте нагрузки",
         "mean": "среднее за цикл M_у: {m} Н·м (M_Д = {d} Н·м)",
-        "moments": "Уравновешивающий момент M_у в расчётных положениях [Н·м]",
+        "moments": "Уравновешивающий момент M_у в расчётных положениях, Н·м",
         "kin": "кинетостатика", "zhuk": "рычаг Жуковского", "power": "баланс мощностей",
         "joints": "Реакции в кинематических парах при φ = {a}° (R_ij — сила действия звена i "
                   "на звено j)",
@@ -80,11 +80,11 @@ T = {
                   "вращения; найден тремя способами: кинетостатикой, рычагом Жуковского "
                   "(Σ F·v_q + Σ M·ω_q с силами инерции, M_у = −сумма) и из баланса мощностей "
                   "(M_у = J·ε + ½·J′·ω² − Σ F·v_q − Σ M·ω_q). Правила знаков: docs/forces.md."),
-        "positions": "Реакции |R_ij| [Н] и M_у [Н·м] в стандартных положениях",
+        "positions": "Реакции |R_ij| (Н) и M_у (Н·м) в стандартных положениях",
         "at": "При φ = {a}°",
         "frame": ("нагрузка на шатунную шейку {P} Н (F_T = {T} Н, F_R = {R} Н); на коренной "
                   "подшипник {B} Н; сила, действующая на стойку, {S} Н, момент {M} Н·м"),
-        "tab_positions": ("M_у из баланса мощностей в положениях таблицы [Н·м] рядом с "
+        "tab_positions": ("M_у из баланса мощностей в положениях таблицы (Н·м) рядом с "
                           "моментами статического и динамического сопротивления при ω_ср (при "
                           "равномерном вращении M_у = M_ст + M_дин)"),
         "note": ("реакции в кинематических парах требуют схемы механизма: кинематика задана "
@@ -235,7 +235,7 @@ def print_forces(results, console, lang: str = "en") -> None:
     for line in summary_lines(results, lang):
         console.print(line, markup=False)
     tab = Table(title=t["moments"])
-    tab.add_column("φ [" + unit("deg", lang) + "]", justify="right")
+    tab.add_column(_h("φ", unit("deg", lang), lang), justify="right")
     heads = [t["power"]] if f.analysis is None else [t["kin"], t["zhuk"], t["power"]]
     for h in heads:
         tab.add_column(h, justify="right")
@@ -250,10 +250,16 @@ def print_forces(results, console, lang: str = "en") -> None:
             st = Table(title=t["sc"].format(a=_g(a["phi_deg"], 6)))
             st.add_column(t["slider"], justify="right")
             for q in SLIDER_CRANK:
-                st.add_column(f"{symbol(q, lang)} [{unit_of(q, lang)}]", justify="right")
+                st.add_column(_h(symbol(q, lang), unit_of(q, lang), lang), justify="right")
             for s, sc in f.slider_crank.items():
                 st.add_row(s, *(_g(float(getattr(sc, q)[i]), 6) for q in SLIDER_CRANK))
             console.print(st)
+
+
+def _h(sym: str, u: str, lang: str) -> str:
+    """A column heading: "R [N]" in English, "R, Н" in Russian (the course's style, as
+    nomenclature.heading)."""
+    return f"{sym}, {u}" if lang == "ru" else f"{sym} [{u}]"
 
 
 # -- the report's section (document blocks) -------------------------------------------------------
@@ -276,15 +282,15 @@ def add_report_section(b, results, lang: str = "en") -> None:
     if fa is not None:
         b.add(Paragraph(t["intro"].rstrip()))
     b.add(Bullets(tuple(line.strip() for line in summary_lines(results, lang))))
-    deg = "φ [" + unit("deg", lang) + "]"
-    My = f"{symbol('M_y', lang)} [{unit_of('M_y', lang)}]"
+    deg = _h("φ", unit("deg", lang), lang)
+    My = _h(symbol("M_y", lang), unit_of("M_y", lang), lang)
 
     def table(caption, header, rows):
         b.table(caption, _cells(header), [_cells(r) for r in rows])
 
     if fa is None:
         parts_of = [k for k in ("M_st", "M_dyn") if k in results.columns]    # seed 004's Мст, Мдин
-        header = [t["pos"], deg] + [f"{symbol(k, lang)} [{unit_of(k, lang)}]" for k in parts_of] + [My]
+        header = [t["pos"], deg] + [_h(symbol(k, lang), unit_of(k, lang), lang) for k in parts_of] + [My]
         body = []
         for lab, p in results.position_angles:
             i = results.index_of(p)
@@ -312,10 +318,10 @@ def add_report_section(b, results, lang: str = "en") -> None:
                  _g(float(r.magnitude[i]), 6), _g(math.degrees(float(r.angle[i])), 5)]
                 for k, r in f.joints.items()]
         table(t["joints"].format(a=_g(a["phi_deg"], 6)),
-              [t["joint"], t["point"], t["by"], t["on"], f"R_x [{N}]", f"R_y [{N}]", f"R [{N}]",
-               f"{t['angle']} [{unit('deg', lang)}]"], rows)
+              [t["joint"], t["point"], t["by"], t["on"], _h("R_x", N, lang), _h("R_y", N, lang),
+               _h("R", N, lang), _h(t["angle"], unit("deg", lang), lang)], rows)
         if f.slider_crank:
-            head = [t["slider"]] + [f"{symbol(q, lang)} [{unit_of(q, lang)}]" for q in SLIDER_CRANK]
+            head = [t["slider"]] + [_h(symbol(q, lang), unit_of(q, lang), lang) for q in SLIDER_CRANK]
             rows = [[s] + [_g(float(getattr(sc, q)[i]), 6) for q in SLIDER_CRANK]
                     for s, sc in f.slider_crank.items()]
             table(f"{t['sc'].format(a=_g(a['phi_deg'], 6))}: "

@@ -20,7 +20,12 @@ TEXT = {
            "--json)", "by_answer": "By answer",
            "stats": "mean score {mean}; full marks: {k} of {n}; most often wrong: {worst}",
            "problem_list": "{n} problem(s)", "problem_note": "(skipped or not graded):",
-           "more_problems": "… and {n} more (all of them: --json)"},
+           "more_problems": "… and {n} more (all of them: --json)",
+           "v_title": "{n} variant(s) of {name} ({kind}{grid})", "v_run": "flywheel run case",
+           "v_task2": "flywheel task2 case", "v_grid": ", answers on a {n}-interval grid",
+           "v_variant": "variant", "v_drawn": "drawn", "v_answers": "answers (SI)",
+           "v_failed": "{n} draw(s) failed validation or analysis and were drawn again",
+           "v_seed": "seed {seed} (the same seed gives the same files)"},
     "ru": {"summary": "Итоги группы: проверено {n}, средний балл {mean}",
            "dist": "Распределение баллов", "passed": "верных ответов", "students": "студентов",
            "wrong": "Чаще всего ошибались в", "none": "нет", "nothing": "Не сдали ответов ({n})",
@@ -39,7 +44,14 @@ TEXT = {
            "stats": "средний балл {mean}; все ответы верны: {k} из {n}; чаще всего ошибались "
                     "в: {worst}",
            "problem_list": "Замечаний: {n}", "problem_note": "(пропущено или не проверено):",
-           "more_problems": "… и ещё {n} (все: --json)"},
+           "more_problems": "… и ещё {n} (все: --json)",
+           "v_title": "Варианты ({n}) по шаблону {name} ({kind}{grid})",
+           "v_run": "случай flywheel run", "v_task2": "случай flywheel task2",
+           "v_grid": ", ответы на сетке из {n} интервалов", "v_variant": "вариант",
+           "v_drawn": "выпало", "v_answers": "ответы (СИ)",
+           "v_failed": ("розыгрышей, не прошедших проверку или расчёт и разыгранных заново: "
+                        "{n}"),
+           "v_seed": "seed {seed} (тот же seed даёт те же файлы)"},
 }
 
 
@@ -114,34 +126,35 @@ def _g(x, fmt: str = ".6g") -> str:
     return str(x)
 
 
-def print_variants(vs, out, console=None, sheets: str | None = None) -> None:
+def print_variants(vs, out, console=None, sheets: str | None = None, lang: str = "en") -> None:
     """The variants drawn and their answers, one row each; ``sheets``: the format of the task
-    sheets written (both, html, pdf), None if none."""
+    sheets written (both, html, pdf), None if none; the wording in ``lang``."""
     from rich.console import Console
     from rich.table import Table
 
+    from flywheel.render.nomenclature import message, prefix
+
     console = console or Console()
     t = vs.template
-    kind = "flywheel run case" if t.kind == "run" else "flywheel task2 case"
-    grid = f", answers on a {vs.n_points}-interval grid" if t.kind == "run" else ""
-    table = Table(title=f"{len(vs.variants)} variant(s) of {t.name} ({kind}{grid})")
-    table.add_column("variant", no_wrap=True)
-    table.add_column("drawn", style="cyan")
-    table.add_column("answers (SI)")
+    w = TEXT[lang]
+    kind = w["v_run"] if t.kind == "run" else w["v_task2"]
+    grid = w["v_grid"].format(n=vs.n_points) if t.kind == "run" else ""
+    table = Table(title=w["v_title"].format(n=len(vs.variants), name=t.name, kind=kind, grid=grid))
+    table.add_column(w["v_variant"], no_wrap=True)
+    table.add_column(w["v_drawn"], style="cyan")
+    table.add_column(w["v_answers"])
     for v in vs.variants:
         table.add_row(v.id, "\n".join(f"{p.path} = {_g(v.drawn[p.path])}" for p in t.varied),
                       "\n".join(f"{a} = {_g(v.answers[a])}" for a in t.answers))
     console.print(table)
-    for w in vs.warnings:
-        console.print(f"[yellow]warning:[/] {w}")
+    for x in vs.warnings:
+        console.print(f"[yellow]{prefix('warning', lang)}:[/] {message(x, lang)}")
     if vs.failed_draws:
-        console.print(f"{vs.failed_draws} draw(s) failed validation or analysis and were drawn "
-                      "again")
-    console.print(f"seed {vs.seed} (the same seed gives the same files)", highlight=False,
-                  soft_wrap=True)
+        console.print(w["v_failed"].format(n=vs.failed_draws))
+    console.print(w["v_seed"].format(seed=vs.seed), highlight=False, soft_wrap=True)
     written = {None: "", "both": ", sheets/*.html, sheets/*.pdf, sheets.pdf",
                "html": ", sheets/*.html", "pdf": ", sheets/*.pdf, sheets.pdf"}[sheets]
-    console.print(f"written: {out}/ (variant_*.toml, answers.json, answers.csv, students.csv"
+    console.print(f"{prefix('written', lang)}: {out}/ (variant_*.toml, answers.json, answers.csv, students.csv"
                   f"{written})",
                   highlight=False, markup=False, soft_wrap=True)
 
@@ -158,7 +171,9 @@ def print_report(r, console=None, lang: str = "en") -> None:
     """Per student a table of the answers (for a class of up to DETAIL_STUDENTS); then the
     group table, statistics and problems, each cut at GROUP_ROWS lines with a note where the
     whole report is (--out, --json): the terminal gets a readable page, not megabytes. The
-    wording in ``lang`` (the problems' own messages stay as the grader words them)."""
+    wording in ``lang`` (the problems too: render/nomenclature.py MESSAGES_RU)."""
+    from flywheel.render.nomenclature import message
+
     from rich.console import Console
     from rich.table import Table
 
@@ -216,7 +231,8 @@ def print_report(r, console=None, lang: str = "en") -> None:
         console.print(f"[yellow]{t['problem_list'].format(n=len(r.problems))}[/] "
                       f"{t['problem_note']}")
         for p in r.problems[:GROUP_ROWS]:
-            console.print(f"  {p}", highlight=False, markup=False, soft_wrap=True)
+            console.print(f"  {message(p.said(), lang)}", highlight=False, markup=False,
+                          soft_wrap=True)
         if len(r.problems) > GROUP_ROWS:
             console.print("  " + t["more_problems"].format(n=len(r.problems) - GROUP_ROWS),
                           highlight=False)

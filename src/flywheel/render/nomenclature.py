@@ -518,7 +518,7 @@ TERMS: dict[str, Term] = {
     "t2_segments": _ci("", "", "Segments: ½·J·(ω² − ω0²) = A(φ) = ∫(M_D − M_C) dφ\n"
                                  "φ \\[deg], M \\[N·m], A \\[J], ω \\[rad/s]",
                          "Участки: ½·J_пр·(ω² − ω0²) = A(φ) = ∫(M_Д − M_С) dφ\n"
-                         "φ \\[град], M \\[Н·м], A \\[Дж], ω \\[рад/с]"),
+                         "φ, °; M, Н·м; A, Дж; ω, рад/с"),
     "point": _ci("", "", "point", "точка"),
     "crossing_MD_MC": _ci("", "", "M_D = M_C", "M_Д = M_С"),
     "crossing": _ci("", "", "crossing", "пересечение"),
@@ -552,7 +552,7 @@ TERMS: dict[str, Term] = {
     "t2_at": _ci("", "", "At the asked angles", "В заданных положениях"),
     "t2_t": _ci("t", "s", "t \\[s]", "t \\[с]"),
     "phi_col": _ci("φ", "deg", "φ°", "φ°"),
-    "omega_col": _ci("ω", "rad/s", "ω \\[rad/s]", "ω \\[рад/с]"),
+    "omega_col": _ci("ω", "rad/s", "ω \\[rad/s]", "ω, рад/с"),
     "epsilon_col": _ci("ε", "rad/s²", "ε \\[rad/s²]", "ε \\[рад/с²]"),
     "t2_flywheel_mass": _ci("m", "kg", "mass at k = {k} m", "масса при k = {k} м"),
     "flywheel_mass_how": _ci("", "", "m = J/k²", "m = J_пр/k²"),
@@ -584,13 +584,13 @@ TERMS: dict[str, Term] = {
     "ag_rotors": _ci("", "", "Rotors reduced to shaft I (J·u², u = ω/ω_I)",
                        "Массы, приведённые к валу I (J·u², u = ω/ω_I)"),
     "rotor": _ci("", "", "rotor", "масса"),
-    "J_reduced": _ci("J", "kg·m²", "J_reduced [kg·m²]", "J_пр [кг·м²]", "J_пр"),
+    "J_reduced": _ci("J", "kg·m²", "J_reduced [kg·m²]", "J_пр, кг·м²", "J_пр"),
     "u": _ci("u", "", "u", "u"),
     "ag_connections": _ci("", "", "Connections reduced to shaft I (c·u²)",
                             "Упругие связи, приведённые к валу I (c·u²)"),
     "between": _ci("", "", "between", "между"),
-    "c": _ci("c", "N·m/rad", "c [N·m/rad]", "жёсткость c [Н·м/рад]"),
-    "damping": _ci("b", "N·m·s/rad", "damping [N·m·s/rad]", "демпфирование [Н·м·с/рад]"),
+    "c": _ci("c", "N·m/rad", "c [N·m/rad]", "жёсткость c, Н·м/рад"),
+    "damping": _ci("b", "N·m·s/rad", "damping [N·m·s/rad]", "демпфирование, Н·м·с/рад"),
     "rotor_motor": _ci("", "", "motor J_Д", "двигатель J_Д"),
     "rotor_machine": _ci("", "", "machine J_пр.I", "машина J_пр.I"),
     "ag_equations": _ci("", "", "Equations (9.24): Σ_j a_ij·q̈_j + Σ_j c_ij·q_j = Q_i, "
@@ -625,7 +625,7 @@ TERMS: dict[str, Term] = {
                                "piece's diameter)",
                        "Валы: жёсткость и приведённая длина (гладкий вал диаметра первого участка)"),
     "gear_ratio": _ci("i", "", "gear i", "передача i"),
-    "c_input": _ci("c", "N·m/rad", "c (input side) [N·m/rad]", "c (со стороны входа) [Н·м/рад]"),
+    "c_input": _ci("c", "N·m/rad", "c (input side) [N·m/rad]", "c (со стороны входа), Н·м/рад"),
     "length": _ci("L", "m", "length [m]", "длина [м]"),
     "equivalent_length": _ci("L_eq", "m", "L_eq [m]", "L_прив [м]"),
     "d_ref": _ci("d", "m", "at d [m]", "при d [м]"),
@@ -633,8 +633,8 @@ TERMS: dict[str, Term] = {
     "ag_modes": _ci("", "", "Natural frequencies (K·x = ω²·M·x)",
                       "Собственные частоты (K·x = ω²·M·x)"),
     "mode": _ci("", "", "mode", "№ формы"),
-    "omega_n": _ci("ω", "rad/s", "ω [rad/s]", "ω [рад/с]"),
-    "f_n": _ci("f", "Hz", "f [Hz]", "f [Гц]"),
+    "omega_n": _ci("ω", "rad/s", "ω [rad/s]", "ω, рад/с"),
+    "f_n": _ci("f", "Hz", "f [Hz]", "f, Гц"),
     "shape": _ci("", "", "shape (φ, largest = 1)", "форма колебаний (φ, наибольшая = 1)"),
     "rigid_body": _ci("", "", "rigid body", "твёрдое тело"),
     "ag_no_motor": _ci("", "", "no [motor]: natural frequencies only",
@@ -644,7 +644,7 @@ TERMS: dict[str, Term] = {
                         "вынуждающая частота ω_III = {w} рад/с ({f} Гц) при установившейся скорости "
                         "ω_I = {omega} рад/с ({n} об/мин)"),
     "ag_resonance": _ci("", "", "Resonance margins", "Отстройка от резонанса"),
-    "f_n_col": _ci("f_n", "Hz", "f_n [Hz]", "f_n [Гц]"),
+    "f_n_col": _ci("f_n", "Hz", "f_n [Hz]", "f_n, Гц"),
     "ratio": _ci("", "", "ω_forcing/ω_n", "ω_вын/ω_n"),
     "margin": _ci("", "", "margin |1 − ω_f/ω_n|", "отстройка |1 − ω_вын/ω_n|"),
     # -- aggregate: steady state and start-up ------------------------------------------------------
@@ -989,7 +989,7 @@ PREFIXES = {"warning": ("warning", "предупреждение"), "note": ("no
 
 def _ru_params(code: str, p: dict) -> dict:
     """Parameters of a Notice that need words of their own in Russian."""
-    p = dict(p)
+    p = _msgs_ru_params(p)
     if code == "startup_not_steady":
         p["target"] = (f"{p['omega_pred']:.5g} рад/с" if p.get("omega_pred") is not None
                        else "нет: характеристика двигателя не может нести среднюю нагрузку")
@@ -1018,9 +1018,208 @@ def message(text: str, lang: str = "en") -> str:
     code = getattr(text, "code", "")
     if lang != "ru" or code not in MESSAGES_RU:
         return str(text)
-    return MESSAGES_RU[code].format(**_ru_params(code, text.params))
+    lead = getattr(text, "lead", "").replace(": (top level): ", ": (верхний уровень): ")
+    return lead + MESSAGES_RU[code].format(**_ru_params(code, text.params))
 
 
 def prefix(key: str, lang: str = "en") -> str:
     """A CLI line prefix ("warning", "note", "written") in ``lang``."""
     return PREFIXES[key][lang == "ru"]
+
+
+# --- msgs ---
+# The errors of a user's input (cli/guard.py's `error:` line) in Russian: a FlywheelError or a
+# schema error raised with an errors.Notice says it in the user's --lang. Rare errors stay English.
+PREFIXES["error"] = ("error", "ошибка")
+#: what a file was expected to be (io/toml.py's "is a folder, expected …")
+_FILE_KINDS_RU = {"a TOML case file": "файл случая TOML", "a TOML template": "шаблон TOML"}
+#: the case kinds (cases/__init__.py NAMES) for "this is …, not …"
+_CASE_KINDS_RU = {"run": "случай для flywheel run",
+                  "task2": "случай задачи 2 (заданные графики моментов)",
+                  "aggregate": "случай агрегата (упругие муфты)",
+                  "variants": "шаблон вариантов",
+                  "duty_cycle": "случай рабочего цикла (пресс, клёпальная машина, ножницы)"}
+MESSAGES_RU.update({
+    # io/toml.py
+    "no_such_file": "{path}: нет такого файла",
+    "is_a_folder": "{path}: это папка, а нужен {what_ru}",
+    "not_utf8": "{path}: текст не в кодировке UTF-8 ({reason} в байте {byte})",
+    "toml_syntax": "{path}: синтаксическая ошибка TOML: {detail_ru}",
+    # cases/__init__.py
+    "wrong_kind": "{source}: это {kind_ru}, а не {expected_ru}: используйте `{command}`",
+    # io/schema.py: the field path is the Notice's lead
+    "missing": "не задано обязательное поле",
+    "unknown_key": "неизвестный ключ{hint_ru} (допустимы: {allowed})",
+    "out_of_range": "{x:g}{unit_ru} вне допустимого диапазона ({lo:g} … {hi:g}{unit_ru})",
+    "not_a_table": "должно быть таблицей ключей, например {{ ключ = значение, … }}{got_ru}",
+    "not_finite_number": "должно быть конечным числом{got_ru}",
+    "pydantic_float_type": "должно быть числом{got_ru}",
+    "pydantic_int_type": "должно быть целым числом{got_ru}",
+    "pydantic_int_from_float": "должно быть целым числом, а не дробным{got_ru}",
+    "pydantic_string_type": "должно быть строкой{got_ru}",
+    "pydantic_bool_type": "должно быть логическим значением (true или false){got_ru}",
+    "pydantic_list_type": "должно быть списком [ … ]{got_ru}",
+    "pydantic_tuple_type": "должно быть списком [ … ]{got_ru}",
+    "pydantic_greater_than": "должно быть больше {gt:g}{got_ru}",
+    "pydantic_greater_than_equal": "должно быть не меньше {ge:g}{got_ru}",
+    "pydantic_less_than": "должно быть меньше {lt:g}{got_ru}",
+    "pydantic_less_than_equal": "должно быть не больше {le:g}{got_ru}",
+    "pydantic_literal_error": "должно быть одним из: {expected}{got_ru}",
+    "pydantic_too_short": ("слишком мало элементов: нужно не меньше {min_length}, задано "
+                           "{actual_length}"),
+    "pydantic_too_long": ("слишком много элементов: допустимо не больше {max_length}, задано "
+                          "{actual_length}"),
+    # cases/run.py
+    "cycle_not_whole": ("{cycle:g}° — не целое число оборотов (допустимо: 360, 720, 1080 … "
+                        "{top}°)"),
+    # linkage/solve.py: the group, what would assemble it
+    "dyad_rrr": "группа {name} (RRR, звенья {a}–{b})",
+    "dyad_in_line": "{what_ru} (звенья на одной прямой: мёртвое положение)",
+    "dyad_rrp": "группа {name} (RRP, шатун {rod})",
+    "dyad_rrp_perpendicular": "группа {name} (RRP, шатун {rod} перпендикулярен направляющей)",
+    "dyad_rpr": "группа {name} (RPR, кулиса {rocker})",
+    "cannot_assemble": "{what_ru} не собирается при угле кривошипа φ = {deg:.2f}°",
+    "cannot_assemble_need": "{what_ru} не собирается при угле кривошипа φ = {deg:.2f}°: {need_ru}",
+    "need_base": "{a} и {b} совпадают: у группы нет базы (переместите опору)",
+    "need_in_line": ("расстояние {a}–{b} достигает {edge} м: звенья ложатся на одну прямую "
+                     "(мёртвое положение; измените длину так, чтобы расстояние оставалось "
+                     "строго между {lo:.6g} и {hi:.6g} м)"),
+    "need_reach": ("расстояние {a}–{b} меняется в пределах {dmin:.6g} … {dmax:.6g} м, а звенья "
+                   "({la:.6g} и {lb:.6g} м) достают лишь {lo:.6g} … {hi:.6g} м"),
+    "need_rod": ("шатун ({rod_length:.6g} м) должен быть не короче {reach:.6g} м — наибольшего "
+                 "расстояния точки {origin} от направляющей за цикл"),
+    "need_rod_dead": ("мёртвое положение: сделайте шатун длиннее наибольшего расстояния точки "
+                      "{origin} от направляющей"),
+    "need_offset": ("смещение линии ползуна ({offset:.6g} м) должно быть меньше расстояния "
+                    "{pivot}–{origin}, которое падает до {dmin:.6g} м"),
+    "singular_rpr": ("{what_ru} имеет особое положение вблизи угла кривошипа φ = {deg:.2f}°: "
+                     "{origin} проходит через опору кулисы {pivot}, где направление кулисы не "
+                     "определено (сместите {pivot} с траектории {origin} или измените смещение "
+                     "линии ползуна)"),
+    # teaching/variants.py
+    "checked_as": "{detail_ru} [проверено как {as_kind_ru}]",
+    "template_not_analysed": "{source}: сам шаблон не удаётся рассчитать: {detail_ru}",
+    # io/output.py
+    "out_is_a_file": "--out {target}: {file} — это файл, а не папка",
+    "out_not_ours": ("--out {target}: папка существует, не пуста и записана не командой flywheel "
+                     "(нет {manifest}); укажите новую или пустую папку (в папке, записанной "
+                     "flywheel, повторный запуск заменяет только свои файлы)"),
+    # the command-line options
+    "points_range": ("--points: {n} вне допустимого диапазона (допустимо: 36 … {top}; результаты "
+                     "сходятся гораздо раньше: {default} по умолчанию отличается от сетки в 4 раза "
+                     "мельче не более чем на 1e-4)"),
+    "option_not_finite": "{option} должно быть конечным числом (задано {got})",
+    "option_not_positive": "{option} должно быть положительным (задано {v:g} {unit_ru})",
+    "option_delta": "--delta должно лежать между 0 и 2 (задано {delta:g})",
+    "option_from_to": "--from ({start:g}°) должно быть меньше --to ({end:g}°)",
+    # teaching/grading.py: a sheet's problems ("file, row 3: …"), the grade command
+    "sheet_problem": "{where_ru}: {detail_ru}",
+    "sheet_bad_bom": "начинается с метки порядка байтов {enc}, но не является текстом {enc}",
+    "sheet_binary": "двоичные данные, а не текстовый файл CSV",
+    "sheet_no_encoding": ("двоичные данные, а не текстовый файл CSV (не подходит ни одна "
+                          "кодировка: UTF-8, UTF-16, cp1251, cp866, koi8-r)"),
+    "sheet_too_large": ("{mb:.0f} МБ — слишком большой файл для листа ответов (допустимо: до "
+                        "{top:.0f} МБ)"),
+    "sheet_folder_empty": "папка без файлов *.csv",
+    "sheet_missing": "нет такого файла или папки",
+    "sheet_unreadable": "не удаётся прочитать ({reason})",
+    "sheet_empty": "пустой файл (ожидается заголовок student,variant,…)",
+    "sheet_not_csv": "не читается как файл CSV ({detail})",
+    "sheet_no_column": ("нет столбца {columns} (заголовок должен быть student,variant,<ответы…>; "
+                        "задано {header})"),
+    "sheet_unknown_columns": ("столбцы {columns} не являются ответами ключа (пропущены; ответы: "
+                              "{answers})"),
+    "sheet_absent_columns": "нет столбца для {columns}: эти ответы считаются не данными",
+    "row_no_student": "нет имени студента; строка пропущена",
+    "row_variant": "{student!r}: {what_variant} (допустимы: {allowed}); строка пропущена",
+    "row_not_a_number": "{student!r}: не число: {bad}; строка пропущена",
+    "row_again": ("{student!r} встречается снова (впервые: {file}, строка {row}): засчитана "
+                  "более поздняя строка, ранняя не проверяется"),
+    "run_rows_reached": ("не проверено: за один запуск проверено уже {top} строк студентов "
+                         "(проверяйте листы по частям)"),
+    "run_rows_cut": ("эта строка и {n} после неё не проверены: не больше {top} строк студентов "
+                     "за один запуск (проверяйте листы по частям)"),
+    "nothing_graded": "нечего проверить (замечаний: {n}; первое: {detail_ru})",
+    # teaching/variants.py, teaching/sheets.py
+    "variants_repeat": ("возможно лишь {possible} разных вариантов; запрошено {count}, поэтому "
+                        "некоторые повторяются"),
+    "sheet_no_drawing_tabulated": ("кинематика задана таблицей ([tabulated]): на листе задания "
+                                   "нет чертежа механизма"),
+    "sheet_no_drawing_areas": ("задача задана диаграммой площадей, а не графиками моментов: на "
+                               "листе задания нет чертежа"),
+    # --transients (dynamics/stages.py, timedomain.py): why there is no start-up or run-down
+    "startup_no_motor": ("в задании нет раздела [motor]: при постоянном движущем моменте работа "
+                         "за цикл равна нулю при любой скорости, установившегося режима разгона "
+                         "нет"),
+    "rundown_no_work": ("работа нагрузок за цикл равна нулю, без привода машина "
+                        "продолжает вращаться"),
+    "rundown_positive_work": ("нагрузки совершают за цикл положительную работу ({work:+.3g} Дж: "
+                              "они движут машину, как газ в двигателе), без постоянного "
+                              "сопротивления машина разгоняется"),
+    # the command-line options (cli/guard.py choice, needs_out; cli/*.py)
+    "option_choice": "{option}: {got} — недопустимое значение (допустимы: {allowed})",
+    "option_not_allowed": "{option}: {got} — недопустимое значение (допустимо: {allowed})",
+    "option_range": "{option}: {got} вне допустимого диапазона (допустимо: {lo} … {hi})",
+    "option_not_positive_number": "{option}: должно быть положительным числом (задано {got})",
+    "report_needs_out": "--report пишет в папку вывода: укажите также --out DIR",
+    # dynamics/stages.py: the cycle balance; constant_inertia/solve.py: a speed that falls to 0
+    "balance_driving": ("нагрузки совершают за цикл работу {work:+.6g} Дж: постоянный движущий "
+                        "момент должен был бы быть {M:.6g} Н·м ≤ 0 (допустимо: силы сопротивления "
+                        "должны поглощать работу; для двигателя задайте machine.balance = "
+                        "\"resistance\")"),
+    "balance_resistance": ("нагрузки совершают за цикл работу {work:+.6g} Дж: постоянный момент "
+                           "сопротивления должен был бы быть {M:.6g} Н·м ≤ 0 (допустимо: движущие "
+                           "силы должны совершать работу; для компрессора или пресса задайте "
+                           "machine.balance = \"driving\")"),
+    "machine_stops": ("машина останавливается {where_ru}: кинетической энергии ½·J·ω0² = "
+                      "{T0:.6g} Дж не хватает, чтобы покрыть недостаток работы {deficit:.6g} Дж"),
+    # cases/run.py: the checks across tables
+    "crank_or_tabulated": ("задайте что-то одно: [crank] (механизм) или [tabulated] (кинематика "
+                           "таблицей)"),
+    "delta_and_given_flywheel": ("задайте что-то одно: machine.delta (маховик подбирается под "
+                                 "него) или заданный маховик (flywheel.J, mass с "
+                                 "radius_of_gyration, given_disk или given_rim), но не оба"),
+    "delta_missing": ("не задано: укажите machine.delta (маховик подбирается под него) или "
+                      "заданный маховик (flywheel.J, mass с radius_of_gyration, given_disk или "
+                      "given_rim)"),
+    "motor_too_slow": "{n0:g} об/мин — не больше средней скорости {n:g} об/мин",
+    # teaching (the template's and the key's numbers), cases/task2.py
+    "not_positive_number": "должно быть положительным числом{got_ru}",
+    "not_positive_relative": "должно быть положительным числом, относительным{got_ru}",
+    "delta_0_2": "должно лежать между 0 и 2 (задано {delta:g})",
+})
+_MSGS_DERIVED = {"where_ru", "what_variant", "detail_ru", "as_kind_ru", "what_ru", "need_ru", "kind_ru", "expected_ru", "hint_ru", "unit_ru", "got_ru"}
+
+
+def _msgs_ru_params(p: dict) -> dict:
+    """The Russian words of an error's parameters: a parameter that is itself a Notice (the
+    group in "… cannot be assembled") said in Russian, the kinds of file and case, the unit."""
+    p = dict(p)
+    for k in ("what", "need", "detail"):
+        if k in p:
+            p[k + "_ru"] = message(p[k], "ru")
+    if "what" in p and "what_ru" in p and p["what"] in _FILE_KINDS_RU:
+        p["what_ru"] = _FILE_KINDS_RU[p["what"]]
+    if "kind" in p and "expected" in p:
+        p["kind_ru"] = _CASE_KINDS_RU.get(p["kind"], p["kind"])
+        p["expected_ru"] = _CASE_KINDS_RU.get(p["expected"], p["expected"])
+    if "detail" in p and "path" in p:                  # tomllib's own words stay, not its place
+        p["detail_ru"] = re.sub(r"\(at line (\d+), column (\d+)\)", r"(строка \1, столбец \2)",
+                                p["detail"])
+    if "as_kind" in p:
+        p["as_kind_ru"] = _CASE_KINDS_RU.get(p["as_kind"], p["as_kind"])
+    if "sheet" in p:
+        p["where_ru"] = p["sheet"] if p["row"] is None else f"{p['sheet']}, строка {p['row']}"
+    if "variant" in p and "allowed" in p:
+        p["what_variant"] = (f"вариант {p['variant']!r} отсутствует в ключе" if p["variant"]
+                             else "не указан вариант")
+    if isinstance(p.get("expected"), str) and " or " in p["expected"]:   # pydantic's literal
+        p["expected"] = p["expected"].replace(" or ", " или ")
+    if "near" in p:
+        p["hint_ru"] = f"; может быть, {p['near']!r}?" if p["near"] else ""
+    if "unit" in p:
+        p["unit_ru"] = unit(p["unit"], "ru")
+        if "x" in p:                                         # out_of_range: "12 м/с"
+            p["unit_ru"] = f" {p['unit_ru']}" if p["unit"] else ""
+    p["got_ru"] = f" (задано {p['got']})" if p.get("got") else ""
+    return p

@@ -8,7 +8,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from flywheel.errors import InputError
+from flywheel.errors import InputError, Notice
 
 
 def check_formats(formats) -> list[str]:
@@ -18,8 +18,9 @@ def check_formats(formats) -> list[str]:
     formats = list(formats or ["md", "html"])
     for f in formats:
         if f not in FORMATS:
-            raise InputError(f"--report: {f!r} is not a report format "
-                             f"(allowed: {', '.join(FORMATS)})")
+            raise InputError(Notice(f"--report: {f!r} is not a report format (allowed: "
+                                    f"{', '.join(FORMATS)})", "option_choice", option="--report",
+                                    got=repr(f), allowed=", ".join(FORMATS)))
     return list(dict.fromkeys(formats))
 
 

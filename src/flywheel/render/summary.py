@@ -33,8 +33,6 @@ L10N = {
         "td_verify": "интегрирование во времени (solve_ivp, циклов: {n}): движение повторяется с "
                      "точностью {rep}, совпадает с ω(φ) до {dev}, период {T} с",
         "st_none": "разгон: не рассчитан ({reason})",
-        "st_none_motor": "нет раздела [motor]: при постоянном движущем моменте работа за цикл равна "
-                         "нулю при любой скорости, установившегося режима разгона нет",
         "st_stall": "разгон: двигатель останавливается при φ = {a}°",
         "st_ok": "разгон из состояния покоя: установившийся режим (в пределах δ/10) через {t} с "
                  "(циклов: {n}), средняя скорость {w} рад/с",
@@ -42,8 +40,7 @@ L10N = {
                  "средняя скорость последнего цикла {w} рад/с, по характеристике двигателя {wp} рад/с",
         "rd": "выбег после отключения привода: {t} с, оборотов: {rev}",
         "rd_not": " (не остановился)",
-        "rd_never": "выбега нет: работа нагрузок за цикл равна нулю, без привода машина "
-                    "продолжает вращаться",
+        "rd_never": "выбега нет: {reason}",
     },
 }
 
@@ -74,10 +71,7 @@ def time_domain_lines(td: dict | None, lang: str = "en") -> list[str]:
                                  dev=f"{v['max_deviation']:.1e}", T=_g(v["period"]))]
     st = td["startup"]
     if st.get("computed") is False:
-        reason = st["reason"]
-        if lang == "ru" and reason.startswith("no [motor]"):
-            reason = t["st_none_motor"]
-        out.append(t["st_none"].format(reason=reason))
+        out.append(t["st_none"].format(reason=nm.message(st["reason"], lang)))
     elif st.get("stalled"):
         out.append(t["st_stall"].format(a=f"{st['stall_angle_deg']:.1f}"))
     elif st.get("converged", True) and st.get("time_to_steady") is not None:
@@ -89,8 +83,8 @@ def time_domain_lines(td: dict | None, lang: str = "en") -> list[str]:
                                      w=_g(st.get("omega_mean_last", 0.0)),
                                      wp=_g(wp) if wp is not None else "—"))
     rd = td["rundown"]
-    if rd.get("reason"):
-        out.append(t["rd_never"])
+    if rd.get("reason"):                # English: the fixed line; Russian: the reason itself
+        out.append(t["rd_never"].format(reason=nm.message(rd["reason"], lang)))
         return out
     out.append(t["rd"].format(t=_g(rd["time"], 4), rev=f"{rd['angle_deg'] / 360:.2f}")
                + ("" if rd["stopped"] else t["rd_not"]))

@@ -32,7 +32,7 @@ import re
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from flywheel.errors import CaseFileError, InputError
+from flywheel.errors import CaseFileError, InputError, Notice, led, said
 
 DEFAULT_TOLERANCE = 0.01
 #: round-off allowance: an error of tolerance·(1 + SLACK) still passes (0.01 typed for 1 %)
@@ -104,7 +104,8 @@ def parse_key(doc, source: str = "<key>") -> Key:
         raise CaseFileError(f"{source}: {where or 'the key'}: must be a non-empty object "
                             "{variant: {answer: value}}")
     if not _positive(tol):
-        raise CaseFileError(f"{source}: tolerance: must be a positive number (got {tol!r})")
+        raise CaseFileError(led(f"{source}: tolerance: ", Notice(
+            f"must be a positive number (got {tol!r})", "not_positive_number", got=repr(tol))))
     if not isinstance(tols, dict) or not all(_positive(v) for v in tols.values()):
         raise CaseFileError(f"{source}: tolerances: must be an object {{answer: positive "
                             f"number}} (got {tols!r})")
@@ -116,8 +117,9 @@ def parse_key(doc, source: str = "<key>") -> Key:
                                 f"(got {ans!r})")
         for name, value in ans.items():
             if not _number(value):
-                raise CaseFileError(f"{source}: {at}.{name}: must be a finite number "
-                                    f"(got {value!r})")
+                raise CaseFileError(led(f"{source}: {at}.{name}: ", Notice(
+                    f"must be a finite number (got {value!r})", "not_finite_number",
+                    got=repr(value))))
         variants[str(vid)] = {str(k): float(v) for k, v in ans.items()}
     if answers is None:
         seen: dict[str, None] = {}
@@ -181,15 +183,23 @@ def rel_error(given: float, key: float) -> tuple[float, str]:
 
 @dataclass(frozen=True)
 class Problem:
-    """Something that could not be graded: file, row (1 = the header; None: the whole file)."""
+    """Something that could not be graded: file, row (1 = the header; None: the whole file);
+    ``message`` an errors.Notice (said in Russian under ``grade --lang ru``)."""
 
     file: str
     row: int | None
     message: str
 
     def __str__(self) -> str:
+        return self.said()
+
+    def said(self) -> str:
+        """``file, row N: message``: a Notice (its ``lead`` the place) for the CLI's lines."""
         where = self.file if self.row is None else f"{self.file}, row {self.row}"
-        return f"{where}: {self.message}"
+        if not getattr(self.message, "code", ""):
+            return f"{where}: {self.message}"
+        return Notice(f"{where}: {self.message}", "sheet_problem", sheet=self.file, row=self.row,
+                      detail=self.message)
 
 
 @dataclass(frozen=True)
@@ -308,25 +318,25 @@ def decode_sheet(data: bytes) -> tuple[str, str]:
             try:
                 return data.decode(enc), enc.replace("-sig", "")
             except UnicodeDecodeError:
-                raise SheetError(f"starts with a {enc} byte-order mark but is not {enc} text") \
-                    from None
+                raise SheetError(Notice(f"starts with a {enc} byte-order mark but is not {enc} "
+                                        "text", "sheet_bad_bom", enc=enc)) from None
     try:
         text = data.decode("utf-8")
     except UnicodeDecodeError:
         pass
     else:
         if "\x00" in text:
-            raise SheetError("binary data, not a CSV text file")
+            raise SheetError(Notice("binary data, not a CSV text file", "sheet_binary"))
         return text, "utf-8"
     from charset_normalizer import from_bytes
 
     best = from_bytes(data, cp_isolation=list(ENCODINGS)).best()
     if best is None:
-        raise SheetError("binary data, not a CSV text file (no text encoding fits: UTF-8, "
-                         "UTF-16, cp1251, cp866, koi8-r)")
+        raise SheetError(Notice("binary data, not a CSV text file (no text encoding fits: "
+                                "UTF-8, UTF-16, cp1251, cp866, koi8-r)", "sheet_no_encoding"))
     text = str(best)
     if "\x00" in text:
-        raise SheetError("binary data, not a CSV text file")
+        raise SheetError(Notice("binary data, not a CSV text file", "sheet_binary"))
     return text, best.encoding
 
 
@@ -334,8 +344,9 @@ def _read_text(path: Path) -> str:
     """The text of a sheet (see :func:`decode_sheet`); SheetError if too large or not text."""
     size = path.stat().st_size
     if size > MAX_SHEET_BYTES:
-        raise SheetError(f"{size / 1e6:.0f} MB is too large for an answer sheet (allowed: up to "
-                         f"{MAX_SHEET_BYTES / 1e6:.0f} MB)")
+        raise SheetError(Notice(f"{size / 1e6:.0f} MB is too large for an answer sheet (allowed: "
+                                f"up to {MAX_SHEET_BYTES / 1e6:.0f} MB)", "sheet_too_large",
+                                mb=size / 1e6, top=MAX_SHEET_BYTES / 1e6))
     return decode_sheet(path.read_bytes())[0]
 
 
@@ -357,12 +368,14 @@ def sheet_files(paths) -> tuple[list[Path], list[Problem]]:
         if p.is_dir():
             found = sorted(q for q in p.iterdir() if q.suffix.lower() == ".csv" and q.is_file())
             if not found:
-                problems.append(Problem(str(p), None, "folder without *.csv files"))
+                problems.append(Problem(str(p), None, Notice("folder without *.csv files",
+                                                             "sheet_folder_empty")))
             files += found
         elif p.exists():
             files.append(p)
         else:
-            problems.append(Problem(str(p), None, "no such file or folder"))
+            problems.append(Problem(str(p), None, Notice("no such file or folder",
+                                                         "sheet_missing")))
     return files, problems
 
 
@@ -374,36 +387,42 @@ def grade_sheet(key: Key, path, tolerance: float | None = None
     try:
         text = _read_text(path)
     except OSError as exc:
-        return [], [Problem(name, None, f"cannot be read ({exc.strerror})")]
+        return [], [Problem(name, None, Notice(f"cannot be read ({exc.strerror})",
+                                               "sheet_unreadable", reason=exc.strerror))]
     except SheetError as exc:
-        return [], [Problem(name, None, str(exc))]
+        return [], [Problem(name, None, said(exc))]
     lines = text.splitlines()
     if not lines or not lines[0].strip():
-        return [], [Problem(name, None, "empty file (expected a header student,variant,…)")]
+        return [], [Problem(name, None, Notice("empty file (expected a header "
+                                               "student,variant,…)", "sheet_empty"))]
     try:
         rows = list(csv.reader(io.StringIO(text), delimiter=_delimiter(lines[0])))
     except csv.Error as exc:
-        return [], [Problem(name, None, f"not a readable CSV file ({exc})")]
+        return [], [Problem(name, None, Notice(f"not a readable CSV file ({exc})",
+                                               "sheet_not_csv", detail=str(exc)))]
     header = [h.strip() for h in rows[0]]
     lower = [h.lower() for h in header]
     missing = [c for c in ("student", "variant") if c not in lower]
     if missing:
-        return [], [Problem(name, 1, f"no {' and no '.join(repr(c) for c in missing)} column "
-                                     f"(the header must be student,variant,<answers…>; got "
-                                     f"{_short(','.join(header))})")]
+        return [], [Problem(name, 1, Notice(
+            f"no {' and no '.join(repr(c) for c in missing)} column (the header must be "
+            f"student,variant,<answers…>; got {_short(','.join(header))})", "sheet_no_column",
+            columns=' и '.join(repr(c) for c in missing), header=_short(','.join(header))))]
     col_student, col_variant = lower.index("student"), lower.index("variant")
     columns = {h: i for i, h in enumerate(header) if i not in (col_student, col_variant) and h}
     problems: list[Problem] = []
     known = set(key.answers) | {a for v in key.variants.values() for a in v}
     unknown = [h for h in columns if h not in known]
     if unknown:
-        problems.append(Problem(name, 1, f"column(s) {', '.join(map(repr, unknown))} are not "
-                                         f"answers of the key (ignored; answers: "
-                                         f"{', '.join(key.answers)})"))
+        problems.append(Problem(name, 1, Notice(
+            f"column(s) {', '.join(map(repr, unknown))} are not answers of the key (ignored; "
+            f"answers: {', '.join(key.answers)})", "sheet_unknown_columns",
+            columns=', '.join(map(repr, unknown)), answers=', '.join(key.answers))))
     absent = [a for a in key.answers if a not in columns]
     if absent:
-        problems.append(Problem(name, 1, f"no column for {', '.join(map(repr, absent))}: "
-                                         "those answers count as not given"))
+        problems.append(Problem(name, 1, Notice(
+            f"no column for {', '.join(map(repr, absent))}: those answers count as not given",
+            "sheet_absent_columns", columns=', '.join(map(repr, absent)))))
     graded: list[StudentGrade] = []
     for n, row in enumerate(rows[1:], start=2):
         cells = [c.strip() for c in row]
@@ -415,7 +434,8 @@ def grade_sheet(key: Key, path, tolerance: float | None = None
         if not student and not any(given.values()):
             continue  # a row of the blank sheet nobody filled in
         if not student:
-            problems.append(Problem(name, n, "no student name; row skipped"))
+            problems.append(Problem(name, n, Notice("no student name; row skipped",
+                                                    "row_no_student")))
             continue
         who = f"{student!r}: "
         vid = key.find(variant)
@@ -423,7 +443,9 @@ def grade_sheet(key: Key, path, tolerance: float | None = None
             ids = list(key.variants)
             allowed = f"{ids[0]}…{ids[-1]}" if len(ids) > 3 else ", ".join(ids)
             what = "no variant" if not variant else f"variant {variant!r} is not in the key"
-            problems.append(Problem(name, n, f"{who}{what} (allowed: {allowed}); row skipped"))
+            problems.append(Problem(name, n, Notice(
+                f"{who}{what} (allowed: {allowed}); row skipped", "row_variant",
+                student=student, variant=variant, allowed=allowed)))
             continue
         values: dict[str, float | None] = {}
         bad = []
@@ -437,8 +459,9 @@ def grade_sheet(key: Key, path, tolerance: float | None = None
             except ValueError:
                 bad.append(f"{a} = {t!r}")
         if bad:
-            problems.append(Problem(name, n, f"{who}not a number: {'; '.join(bad)}; "
-                                             "row skipped"))
+            problems.append(Problem(name, n, Notice(f"{who}not a number: {'; '.join(bad)}; "
+                                                    "row skipped", "row_not_a_number",
+                                                    student=student, bad='; '.join(bad))))
             continue
         grades = []
         for a, k in key.variants[vid].items():
@@ -461,21 +484,25 @@ def grade(key: Key, paths, tolerance: float | None = None, progress=None) -> Rep
     ``progress(done, total)`` is called after each sheet (a progress bar).
     """
     if tolerance is not None and not _positive(tolerance):
-        raise InputError(f"--tolerance: must be a positive number (got {tolerance!r})")
+        raise InputError(Notice(f"--tolerance: must be a positive number (got {tolerance!r})",
+                                "option_not_positive_number", option="--tolerance",
+                                got=repr(tolerance)))
     files, problems = sheet_files(paths)
     students: list[StudentGrade] = []
     for i, f in enumerate(files):
         if len(students) >= MAX_ROWS:
-            problems += [Problem(str(g), None, f"not graded: the run has reached {MAX_ROWS} "
-                                               "student rows (grade the sheets in parts)")
+            problems += [Problem(str(g), None, Notice(
+                f"not graded: the run has reached {MAX_ROWS} student rows (grade the sheets in "
+                "parts)", "run_rows_reached", top=MAX_ROWS))
                          for g in files[i:]]
             break
         s, p = grade_sheet(key, f, tolerance)
         if len(students) + len(s) > MAX_ROWS:
             keep = MAX_ROWS - len(students)
-            p.append(Problem(str(f), s[keep].row, f"this row and the {len(s) - keep - 1} after "
-                                                  f"it not graded: at most {MAX_ROWS} student "
-                                                  "rows per run (grade the sheets in parts)"))
+            p.append(Problem(str(f), s[keep].row, Notice(
+                f"this row and the {len(s) - keep - 1} after it not graded: at most {MAX_ROWS} "
+                "student rows per run (grade the sheets in parts)", "run_rows_cut",
+                n=len(s) - keep - 1, top=MAX_ROWS)))
             s = s[:keep]
         students += s
         problems += p
@@ -487,9 +514,10 @@ def grade(key: Key, paths, tolerance: float | None = None, progress=None) -> Rep
     for s in students:
         if s.student in latest:
             first = latest[s.student]
-            problems.append(Problem(s.file, s.row, f"{s.student!r} appears again (first at "
-                                                   f"{first.file}, row {first.row}): the later "
-                                                   "row counts, the earlier is not graded"))
+            problems.append(Problem(s.file, s.row, Notice(
+                f"{s.student!r} appears again (first at {first.file}, row {first.row}): the "
+                "later row counts, the earlier is not graded", "row_again",
+                student=s.student, file=first.file, row=first.row)))
         latest[s.student] = s
     order = list(dict.fromkeys(s.student for s in students))
     students = [latest[name] for name in order]

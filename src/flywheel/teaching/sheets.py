@@ -192,8 +192,10 @@ def _linkage(document: dict, source: str):
 
     case = parse_case(document, source)
     if case.tabulated is not None:
-        return None, ("the kinematics are given as a table ([tabulated]): the sheet "
-                      "has no drawing of the mechanism")
+        from flywheel.errors import Notice
+
+        return None, Notice("the kinematics are given as a table ([tabulated]): the sheet has "
+                            "no drawing of the mechanism", "sheet_no_drawing_tabulated")
     results = analyze(case, n_points=DRAWING_POINTS)
     angles = [float(a["phi_deg"]) for a in results.at] or [0.0]
     return results, angles[0]
@@ -207,8 +209,10 @@ def _moments(document: dict, source: str) -> tuple[MomentGraphs | None, str]:
     case = parse_task2_case(document, source)
     r = solve_case(case, source)
     if r.driving is None or r.resistance is None:
-        return None, ("the task is given as an area diagram, not as moment graphs: "
-                      "the sheet has no drawing")
+        from flywheel.errors import Notice
+
+        return None, Notice("the task is given as an area diagram, not as moment graphs: the "
+                            "sheet has no drawing", "sheet_no_drawing_areas")
     s = sample(r, n=721)
     breaks = sorted({round(math.degrees(x), 9) for m in (r.driving, r.resistance)
                      for x in m.breakpoints()})

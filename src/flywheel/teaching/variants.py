@@ -38,7 +38,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-from flywheel.errors import CaseFileError, FlywheelError, InputError
+from flywheel.errors import CaseFileError, FlywheelError, InputError, Notice, led, said
 from flywheel.io.toml import read_toml
 
 #: intervals of the φ grid for the answers of a run case (4 per degree; the answers differ from
@@ -159,7 +159,9 @@ def _grid(spec: dict, where: str) -> tuple:
         if k not in spec:
             raise CaseFileError(f"{where}: {k} is missing (give min, max and step, or values)")
         if not _is_number(spec[k]):
-            raise CaseFileError(f"{where}.{k}: must be a finite number (got {spec[k]!r})")
+            raise CaseFileError(led(f"{where}.{k}: ", Notice(
+                f"must be a finite number (got {spec[k]!r})", "not_finite_number",
+                got=repr(spec[k]))))
     lo, hi, step = spec["min"], spec["max"], spec["step"]
     if step <= 0:
         raise CaseFileError(f"{where}.step: must be positive (got {step!r})")
@@ -214,8 +216,9 @@ def _answers(table: dict, where: str) -> tuple[tuple[str, ...], float, dict[str,
                                 "column name (, ; \" or a line break)")
     tol = table.get("tolerance", DEFAULT_TOLERANCE)
     if not _is_number(tol) or tol <= 0:
-        raise CaseFileError(f"{where}.tolerance: must be a positive number, relative "
-                            f"(got {tol!r})")
+        raise CaseFileError(led(f"{where}.tolerance: ", Notice(
+            f"must be a positive number, relative (got {tol!r})", "not_positive_relative",
+            got=repr(tol))))
     tols = table.get("tolerances", {})
     if not isinstance(tols, dict):
         raise CaseFileError(f"{where}.tolerances: must be a table {{ answer = tolerance }} "
@@ -225,8 +228,8 @@ def _answers(table: dict, where: str) -> tuple[tuple[str, ...], float, dict[str,
             raise CaseFileError(f"{where}.tolerances.{k}: not one of the answers "
                                 f"(allowed: {', '.join(ans)})")
         if not _is_number(v) or v <= 0:
-            raise CaseFileError(f"{where}.tolerances.{k}: must be a positive number "
-                                f"(got {v!r})")
+            raise CaseFileError(led(f"{where}.tolerances.{k}: ", Notice(
+                f"must be a positive number (got {v!r})", "not_positive_number", got=repr(v))))
     return tuple(ans), float(tol), {k: float(v) for k, v in tols.items()}
 
 
@@ -254,7 +257,8 @@ def detect_kind(doc: dict, source: str) -> str:
             errors[kind] = exc
     likely = "run" if "machine" in doc else "task2"
     what = "a flywheel run case" if likely == "run" else "a flywheel task2 case"
-    raise CaseFileError(f"{errors[likely]} [checked as {what}]")
+    raise CaseFileError(Notice(f"{errors[likely]} [checked as {what}]", "checked_as",
+                               detail=said(errors[likely]), as_kind=likely))
 
 
 def results_of(kind: str, doc: dict, source: str, n_points: int = RUN_POINTS) -> dict:
@@ -271,7 +275,7 @@ def results_of(kind: str, doc: dict, source: str, n_points: int = RUN_POINTS) ->
             where = field_of(exc, case)
             if not where:
                 raise
-            raise type(exc)(f"{where}: {exc}") from None
+            raise type(exc)(led(f"{where}: ", said(exc))) from None
     from flywheel.cases.task2 import solve_case
 
     return solve_case(case, source).to_document()
@@ -350,7 +354,9 @@ def parse_template(data: dict, source: str = "<template>", n_points: int = RUN_P
     try:
         base = results_of(kind, doc, source, n_points)
     except FlywheelError as exc:
-        raise CaseFileError(f"{source}: the template itself cannot be analysed: {exc}") from None
+        raise CaseFileError(Notice(f"{source}: the template itself cannot be analysed: {exc}",
+                                   "template_not_analysed", source=source,
+                                   detail=said(exc))) from None
     pick_answers(base, answers, f"{source}: variants.answers")
     return Template(source, Path(source).name, kind, doc, tuple(varied), answers, tol, tols)
 
@@ -416,8 +422,9 @@ def generate(template: Template, count: int, seed: int, n_points: int = RUN_POIN
     distinct = count <= template.combinations
     warnings = []
     if not distinct:
-        warnings.append(f"only {template.combinations} different variants are possible; "
-                        f"{count} asked, so some repeat")
+        warnings.append(Notice(f"only {template.combinations} different variants are possible; "
+                               f"{count} asked, so some repeat", "variants_repeat",
+                               possible=template.combinations, count=count))
     seen: set[str] = set()
     variants = []
     failed_total = 0
