@@ -85,8 +85,7 @@ T = {
         "st_none": "start-up: not computed ({reason})",
         "rd": "run-down after the drive is cut at φ = 0: {t} s, {rev} revolutions of the crank",
         "rd_not": " (not stopped within the integration limit)",
-        "rd_never": ("run-down: none — the loads do no net work over a cycle, so without the drive "
-                     "the machine keeps turning"),
+        "rd_never": "run-down: none — {reason}",
         "book": ("Artobolevsky I. I. Teoriya mekhanizmov i mashin (Theory of Mechanisms and "
                  "Machines). 4th ed. Moscow: Nauka, 1988: ch. 2 (structure), ch. 16–17 (reduction, "
                  "Merzalov's method, the energy–mass diagram)."),

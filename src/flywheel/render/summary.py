@@ -22,8 +22,7 @@ L10N = {
                  "cycle-mean speed {w} rad/s, the motor line predicts {wp} rad/s",
         "rd": "run-down after the drive is cut: {t} s, {rev} revolutions",
         "rd_not": " (not stopped)",
-        "rd_never": "run-down: none — the loads do no net work over a cycle, so without the drive "
-                    "the machine keeps turning",
+        "rd_never": "run-down: none — {reason}",
     },
     "ru": {
         "title_main": "Результаты", "title_at": "При φ = {phi}°: ω = {w} {uw}, ε = {e} {ue}",
