@@ -300,9 +300,11 @@ import re as _re
 #: a symbol's subscript in running text: a symbol of one to three letters (ΔT, dJ, p, ω) at a
 #: word's start, "_", then up to four letters or digits (or a braced group) ending the word —
 #: J_II, M_Д, ΔT_нб, ω_ср, v_qS2, p/p_max, R_{12}; not an identifier (flywheel_rim, at_deg in
-#: backticks, a.b_c, plots/J_II.png, x_y_z)
+#: backticks, a.b_c, plots/J_II.png, x_y_z); a Roman shaft number after a dot stays in the
+#: subscript (J_пр.I)
 _L = "0-9A-Za-zА-Яа-яЁёΑ-Ωα-ω"         # a subscript's letters and digits (not ², ³: they stay)
-_SUB_RX = _re.compile(r"(?<![\w.`\\])([^\W\d_][^\W\d_]{0,2})_(\{[^{}\s]{1,12}\}|[" + _L + "]{1,4})"
+_SUB_RX = _re.compile(r"(?<![\w.`\\])([^\W\d_][^\W\d_]{0,2})_"
+                      r"(\{[^{}\s]{1,12}\}|[" + _L + r"]{1,4}(?:\.[IVX]{1,3})?)"
                       r"(?![" + _L + r"_`])(?!\.\w)")
 
 

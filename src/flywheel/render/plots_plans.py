@@ -250,7 +250,8 @@ def _set_frame(ax, lo, hi, lang: str, xlabel: bool = True) -> None:
     ax.set_ylim(lo[1], hi[1])
     ax.set_aspect("equal", adjustable="datalim")
     if xlabel:
-        ax.set_xlabel(f"{nm.name('plan_length', lang)}, {nm.unit_of('plan_length', lang)}")
+        ax.set_xlabel(nm.with_unit(nm.name("plan_length", lang), nm.unit_of("plan_length", lang),
+                                   lang))
     ax.grid(True, alpha=0.3)
 
 
