@@ -445,7 +445,7 @@ def _kinematic_plan(results, ps, which: str, lang: str):
             if kind == "absolute":
                 continue
             for v, t, h in zip(vs, tails, heads):
-                if v.value > 0:
+                if float(np.hypot(*(h - t))) >= 2.0:   # shorter than 2 mm: in the table only
                     labels.along(t, h, _ON_PLAN[kind], _COLOURS[kind], 8.0)
     _set_frame(ax, lo, hi, lang)
     handles = [Line2D([], [], color=_COLOURS[k], linewidth=1.8 if k == "absolute" else 1.2,
