@@ -200,3 +200,85 @@ def test_wide_tables_fit_a4(tmp_path):
     wide = [p for p in pages if "Table 10 —" in p[3]]
     assert wide and wide[0][0] > wide[0][1]          # landscape
     assert all(w < h for w, h, _, t in pages if "Table 1 —" in t)   # the rest stays portrait
+
+
+class _SymbolCells(HTMLParser):
+    """The header cells and the first (symbol) column of every table, as raw inner HTML."""
+
+    def __init__(self):
+        super().__init__()
+        self.cells, self._cell, self._first = [], None, False
+
+    def handle_starttag(self, tag, attrs):
+        if tag == "tr":
+            self._first = True
+        elif tag in ("th", "td"):
+            self._cell = [] if tag == "th" or self._first else None
+            self._first = False
+        elif self._cell is not None:
+            self._cell.append(f"<{tag}>")
+
+    def handle_endtag(self, tag):
+        if tag in ("th", "td"):
+            if self._cell is not None:
+                self.cells.append("".join(self._cell))
+            self._cell = None
+        elif self._cell is not None:
+            self._cell.append(f"</{tag}>")
+
+    def handle_data(self, data):
+        if self._cell is not None:
+            self._cell.append(data)
+
+
+@pytest.mark.parametrize("lang", ["en", "ru"])
+def test_symbols_are_typeset_with_subscripts(lang, tmp_path):
+    """The symbols of the records' tables and bullets (J_II, ΔT_нб, M_Д, ω_ср) carry their
+    subscripts as subscripts: <sub> in HTML (no "_" left in a header or symbol cell), #sub in
+    typst, subscript runs in Word; identifiers (summary.json) keep their text; reruns are
+    byte-identical."""
+    import docx
+
+    from flywheel.cases.run import load_case
+    from flywheel.dynamics.pipeline import analyze
+    from flywheel.render import report_formats
+    from flywheel.render.document import build_document
+
+    formats = ["--report", "html", "--report", "docx", "--lang", lang]
+    run(tmp_path / "a", "--no-plots", *formats)
+    run(tmp_path / "b", "--no-plots", *formats)
+    for f in ("html", "docx"):
+        assert (tmp_path / "a" / f"report.{f}").read_bytes() == \
+            (tmp_path / "b" / f"report.{f}").read_bytes(), f
+    page = (tmp_path / "a" / "report.html").read_text(encoding="utf-8")
+    sym = _SymbolCells()
+    sym.feed(page)
+    assert len(sym.cells) > 100
+    assert not [c for c in sym.cells if "_" in c]
+    subs = [c for c in sym.cells if "<sub>" in c]
+    assert "J<sub>II</sub>" in "".join(subs) and len(subs) >= 10
+    assert "ΔT<sub>нб</sub>" in page
+    # the bullets: Merzalov's flywheel as J_I = ΔT_нб/(δ·ω²) with its subscripts
+    assert re.search(r"<li>[^<]*J<sub>I</sub> = ΔT<sub>нб</sub>/\(δ·ω<sub>(m|ср)</sub>²\)", page)
+    # Word: the same subscripts as subscript runs
+    d = docx.Document(str(tmp_path / "a" / "report.docx"))
+    runs = [r for p in d.paragraphs for r in p.runs]
+    runs += [r for t in d.tables for row in t.rows for c in row.cells for p in c.paragraphs
+             for r in p.runs]
+    sub = {r.text for r in runs if r.font.subscript}
+    assert {"I", "II", "нб"} <= sub
+    assert not [r.text for r in runs if r.font.subscript is not True and re.search(r"\b[JM]_", r.text)]
+    # typst: #sub
+    c = load_case(CASES / "compressor.toml")
+    src = report_formats.typst_source(build_document(analyze(c, n_points=360), lang, [], case=c))
+    assert '#"J"#sub[#"II"]' in src and "#sub[" in src
+
+
+def test_subscripts_leave_identifiers_alone():
+    assert mathfmt.subscripts("see summary.json and `results.flywheel_rim`") == [
+        ("see summary.json and `results.flywheel_rim`", False)]
+    assert mathfmt.subscripts("plots/J_II.png, t2_plot, a_b_c") == [
+        ("plots/J_II.png, t2_plot, a_b_c", False)]
+    assert mathfmt.subscripts("M_Д − M_{С}") == [("M", False), ("Д", True), (" − M", False),
+                                                ("С", True)]
+    assert mathfmt.sub_html("p/p_max <") == "p/p<sub>max</sub> &lt;"

@@ -74,7 +74,9 @@ def test_task2_html_reads_back(t2):
     # the numbers of the seed task: ω_max 200.011044, ω_min 199.988955 (crossings at 5π/8, 11π/8)
     assert f"{doc['omega_max']:.6f}" in page.cells and f"{doc['omega_min']:.6f}" in page.cells
     assert f"{doc['delta']:.6g}" in page.cells and f"{doc['delta_T_max']:.6g}" in page.cells
-    assert "Рис. 1 — Моменты M_Д, M_С" in page.captions[-1]
+    # the symbols' subscripts typeset (<sub>), not printed as "M_Д"
+    assert "Рис. 1 — Моменты MД, MС" in page.captions[-1]
+    assert "Моменты M<sub>Д</sub>, M<sub>С</sub>" in (t2 / "report.html").read_text(encoding="utf-8")
     assert [c.split(" — ")[0] for c in page.captions[:-1]] == [
         f"Таблица {i}" for i in range(1, len(page.captions))]
     assert page.refs == [r for r in page.refs if r.startswith("data:image/png;base64,")]

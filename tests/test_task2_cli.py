@@ -88,44 +88,45 @@ def test_plot(tmp_path):
     assert out2.stat().st_size > 1000
 
 
-def test_plot_structure():
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+def test_plot_structure(monkeypatch):
+    from matplotlib.figure import Figure
 
     from flywheel.constant_inertia.preset import seed_task
+    from flywheel.render.mathfmt import sub_mathtext as mt
     from flywheel.render.task2 import plot
 
     r = seed_task("triangle")
     seen = {}
-    orig = plt.close
+    orig = Figure.savefig
 
-    def keep(fig):
+    def keep(fig, *a, **kw):
         seen["fig"] = fig
-        orig(fig)
+        return orig(fig, *a, **kw)
 
-    plt.close = keep
-    try:
-        import io
-        plot(r, io.BytesIO())
-    finally:
-        plt.close = orig
+    monkeypatch.setattr(Figure, "savefig", keep)
+    import io
+    plot(r, io.BytesIO())
     axes = seen["fig"].axes
     assert len(axes) == 4                      # M, A, ω and ε beside ω (below it, same φ axis)
     labels = [line.get_label() for ax in axes for line in ax.get_lines()]
-    assert "M_D (driving)" in labels and "M_C (resistance)" in labels and "ω(φ)" in labels
-    assert axes[2].get_ylabel() == "ω [rad/s]"
-    assert axes[3].get_xlabel() == "φ [deg]" and axes[3].get_ylabel() == "ε [rad/s²]"
+    # the symbols' subscripts are mathtext, never a literal "M_D" (issue 15)
+    assert mt("M_D (driving)") == r"M$_\mathregular{D}$ (driving)"
+    assert mt("M_D (driving)") in labels and mt("M_C (resistance)") in labels and "ω(φ)" in labels
+    assert not [x for x in labels                  # "_child1": matplotlib's unnamed lines
+                if "_" in x.replace(r"$_\mathregular", "") and not x.startswith("_child")]
+    # units as every figure writes them: "ω, rad/s" (tests/test_nomenclature.py)
+    assert axes[2].get_ylabel() == "ω, rad/s"
+    assert axes[3].get_xlabel() == "φ, °" and axes[3].get_ylabel() == "ε, rad/s²"
     # the ε curve is (M_D − M_C)/J: 15/12 outside the triangle, (15 − 60)/12 at its apex;
     # its extremes are marked where the result puts them
-    eps = next(line for line in axes[3].get_lines() if line.get_label() == "ε(φ) = (M_D − M_C)/J")
+    eps = next(line for line in axes[3].get_lines()
+               if line.get_label() == mt("ε(φ) = (M_D − M_C)/J"))
     x, y = eps.get_xdata(), eps.get_ydata()
     assert max(y) == 15 / 12 and min(y) == (15 - 60) / 12 and y[list(x).index(180.0)] == -3.75
     marks = {line.get_label(): (line.get_xdata()[0], line.get_ydata()[0])
-             for line in axes[3].get_lines() if line.get_label().startswith("ε_m")}
-    assert marks == {"ε_max = 1.25 rad/s² at 0°": (0.0, 1.25),
-                     "ε_min = -3.75 rad/s² at 180°": (180.0, -3.75)}
+             for line in axes[3].get_lines() if line.get_label().startswith("ε$_")}
+    assert marks == {mt("ε_max = 1.25 rad/s² at 0°"): (0.0, 1.25),
+                     mt("ε_min = -3.75 rad/s² at 180°"): (180.0, -3.75)}
 
 
 def _case(tmp_path, text):
@@ -395,33 +396,30 @@ def test_lang_ru_seed_words():
     assert "│ M_Д = M_С │" in out and "треугольник" in out
 
 
-def test_lang_ru_plot_labels(tmp_path):
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+def test_lang_ru_plot_labels(tmp_path, monkeypatch):
+    from matplotlib.figure import Figure
 
     from flywheel.constant_inertia.preset import seed_task
+    from flywheel.render.mathfmt import sub_mathtext as mt
     from flywheel.render.task2 import plot
 
     seen = {}
-    orig = plt.close
+    orig = Figure.savefig
 
-    def keep(fig):
+    def keep(fig, *a, **kw):
         seen["fig"] = fig
-        orig(fig)
+        return orig(fig, *a, **kw)
 
-    plt.close = keep
-    try:
-        plot(seed_task("triangle"), tmp_path / "ru.png", lang="ru")
-    finally:
-        plt.close = orig
+    monkeypatch.setattr(Figure, "savefig", keep)
+    plot(seed_task("triangle"), tmp_path / "ru.png", lang="ru")
     axes = seen["fig"].axes
     labels = [line.get_label() for ax in axes for line in ax.get_lines()]
-    assert "M_Д (движущий)" in labels and "M_С (сопротивления)" in labels
-    assert "ε(φ) = (M_Д − M_С)/J_пр" in labels
-    assert axes[2].get_ylabel() == "ω [рад/с]"
-    assert axes[3].get_xlabel() == "φ [град]" and axes[3].get_ylabel() == "ε [рад/с²]"
+    assert mt("M_Д (движущий)") == r"M$_\mathregular{Д}$ (движущий)"
+    assert mt("M_Д (движущий)") in labels and mt("M_С (сопротивления)") in labels
+    assert mt("ε(φ) = (M_Д − M_С)/J_пр") in labels and mt("ω_ср") in labels
+    # the course's style "ω, рад/с", as every figure of run writes its axes
+    assert axes[2].get_ylabel() == "ω, рад/с"
+    assert axes[3].get_xlabel() == "φ, °" and axes[3].get_ylabel() == "ε, рад/с²"
     res = run("--lang", "ru", "--plot", tmp_path / "cli.png")
     assert res.exit_code == 0 and "график записан в" in res.stdout
     assert (tmp_path / "cli.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"

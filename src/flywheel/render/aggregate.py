@@ -193,42 +193,44 @@ def _print_modes(r, console, lang: str) -> None:
 
 
 def plot(r, path, title: str = "", lang: str = "en") -> None:
-    """Speeds and the elastic moment against time: start-up and steady state (2×2 panels);
-    labels in ``lang``."""
-    import matplotlib
+    """Speeds and the elastic moment against time: start-up and steady state (2×2 panels; a
+    pyplot-free figure in render/figure.py's fixed style, constrained layout, legends inside);
+    labels in ``lang``, symbols' subscripts as mathtext (mathfmt.sub_mathtext)."""
+    from pathlib import Path
 
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    import matplotlib
+    from matplotlib.figure import Figure
+
+    from flywheel.render import figure as fg
+    from flywheel.render.figure import SVG_SALT, stable_metadata
+    from flywheel.render.mathfmt import sub_mathtext
 
     def L(key: str, **fields) -> str:
-        return nm.name(key, lang, **fields)
+        return sub_mathtext(nm.name(key, lang, **fields))
 
     ch = r.chain
     names = [nm.rotor_name(n, lang) for n in ch.names]
-    fig, axes = plt.subplots(2, 2, figsize=(11, 7))
-    for col, (h, name) in enumerate(((r.startup, L("ag_plot_startup")),
-                                     (r.check, L("ag_plot_steady")))):
-        ax = axes[0, col]
-        ax.plot(h.t, h.omega[0], label=L("ag_plot_omega1", name=names[0]))
-        ax.plot(h.t, h.omega[-1], label=L("ag_plot_omegaN", n=ch.n, name=names[-1]))
-        ax.set_ylabel(L("ag_plot_omega_axis"))
-        ax.set_title(name)
-        ax.legend(fontsize=8)
-        ax = axes[1, col]
-        ax.plot(h.t, -ch.c[0] * h.twist[0], color="tab:red", label=L("ag_plot_moment"))
-        ax.set_ylabel(L("ag_plot_moment_axis"))
-        ax.set_xlabel(L("ag_plot_t_axis"))
-        ax.legend(fontsize=8)
-    for ax in axes.flat:
-        ax.grid(True, alpha=0.3)
-    fig.suptitle(title or L("ag_plot_title"))
-    fig.tight_layout()
-    from pathlib import Path
-
-    from flywheel.render.figure import SVG_SALT, stable_metadata
-
-    fmt = Path(path).suffix.lower()[1:]
-    kw = {"metadata": {"Software": None}} if fmt == "png" else stable_metadata(fmt)
-    with matplotlib.rc_context({"svg.hashsalt": SVG_SALT}):      # SVG, PDF: same bytes on a rerun
-        fig.savefig(path, dpi=100, **kw)
-    plt.close(fig)
+    with fg.style():
+        fig = Figure(figsize=(11, 7), dpi=100, layout="constrained")
+        axes = fig.subplots(2, 2)
+        for col, (h, name) in enumerate(((r.startup, L("ag_plot_startup")),
+                                         (r.check, L("ag_plot_steady")))):
+            ax = axes[0, col]
+            ax.plot(h.t, h.omega[0], label=L("ag_plot_omega1", name=names[0]))
+            ax.plot(h.t, h.omega[-1], label=L("ag_plot_omegaN", n=ch.n, name=names[-1]))
+            ax.set_ylabel(L("ag_plot_omega_axis"))
+            ax.set_title(name)
+            ax = axes[1, col]
+            ax.plot(h.t, -ch.c[0] * h.twist[0], color="tab:red", label=L("ag_plot_moment"))
+            ax.set_ylabel(L("ag_plot_moment_axis"))
+            ax.set_xlabel(L("ag_plot_t_axis"))
+        for ax in axes.flat:
+            ax.grid(True, alpha=0.3)
+        # one legend for the four panels, below them: the steady state's curves fill their axes
+        handles = axes[0, 0].get_lines() + axes[1, 0].get_lines()
+        fig.legend(handles=handles, loc="outside lower center", ncols=len(handles), fontsize=8)
+        fig.suptitle(title or L("ag_plot_title"))
+        fmt = Path(path).suffix.lower()[1:]
+        kw = {"metadata": {"Software": None}} if fmt == "png" else stable_metadata(fmt)
+        with matplotlib.rc_context({"svg.hashsalt": SVG_SALT}):  # SVG, PDF: same bytes on a rerun
+            fig.savefig(path, dpi=100, **kw)

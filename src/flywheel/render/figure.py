@@ -98,8 +98,41 @@ def phi_axis(ax, lang: str, label: bool = True, cycle_deg: int = 360) -> None:
 
 
 def legend(ax, **kw):
-    """Legend outside the axes, on the right: it never hides a curve."""
+    """A legend that never hides a curve: a figure of one axes gets it below the axes, in one
+    or two columns, and loses the room on the right the legend would have taken (the figure
+    cut to the axes' width: nothing wasted, issue 15); stacked axes keep theirs outside on the
+    right."""
+    if len(ax.figure.axes) == 1:
+        return _legend_below(ax, **kw)
     return ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), borderaxespad=0.0, **kw)
+
+
+_ROW_H = 0.18             # a legend row at 8 pt [in]
+_RIGHT_BELOW = 0.35       # the right margin of a figure whose legend is below [in]
+
+
+def _legend_below(ax, **kw):
+    """:func:`legend` for a figure of one axes: the figure is resized (the axes keep their size
+    in inches) so that the legend's rows fit under the axis label."""
+    import math
+    import re
+
+    fig = ax.figure
+    w, h = (float(x) for x in fig.get_size_inches())
+    sp = fig.subplotpars
+    left, right, bottom, top = sp.left * w, (1 - sp.right) * w, sp.bottom * h, (1 - sp.top) * h
+    labels = [t for t in ax.get_legend_handles_labels()[1] if not t.startswith("_")]
+    visible = [len(re.sub(r"\\[A-Za-z]+|[$_^{}]", "", t)) for t in labels]   # mathtext's markup
+    ncols = 2 if len(labels) > 1 and max(visible) <= 46 else 1
+    rows = math.ceil(len(labels) / ncols)
+    leg_h = rows * _ROW_H + 0.15
+    new_w, new_h = w - right + _RIGHT_BELOW, h + leg_h
+    fig.set_size_inches(new_w, new_h)
+    fig.subplots_adjust(left=left / new_w, right=1 - _RIGHT_BELOW / new_w,
+                        bottom=(bottom + leg_h) / new_h, top=1 - top / new_h)
+    return ax.legend(loc="upper center", bbox_to_anchor=(0.5, (leg_h + 0.02) / new_h),
+                     bbox_transform=fig.transFigure, ncols=ncols, frameon=False,
+                     borderaxespad=0.0, **kw)
 
 
 def stable_metadata(fmt: str) -> dict:

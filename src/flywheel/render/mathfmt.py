@@ -292,3 +292,57 @@ def omml(src: str) -> str:
     """
     return (f'<m:oMathPara xmlns:m="{OMML_NS}" xmlns:w="{_W_NS}"><m:oMath>'
             f"{_om(parse(src))}</m:oMath></m:oMathPara>")
+
+
+# -- symbols in running text: their subscripts (the report's prose, tables; the figures) ----------
+import re as _re
+
+#: a symbol's subscript in running text: a symbol of one to three letters (ΔT, dJ, p, ω) at a
+#: word's start, "_", then up to four letters or digits (or a braced group) ending the word —
+#: J_II, M_Д, ΔT_нб, ω_ср, v_qS2, p/p_max, R_{12}; not an identifier (flywheel_rim, at_deg in
+#: backticks, a.b_c, plots/J_II.png, x_y_z); a Roman shaft number after a dot stays in the
+#: subscript (J_пр.I)
+_L = "0-9A-Za-zА-Яа-яЁёΑ-Ωα-ω"         # a subscript's letters and digits (not ², ³: they stay)
+_SUB_RX = _re.compile(r"(?<![\w.`\\])([^\W\d_][^\W\d_]{0,2})_"
+                      r"(\{[^{}\s]{1,12}\}|[" + _L + r"]{1,4}(?:\.[IVX]{1,3})?)"
+                      r"(?![" + _L + r"_`])(?!\.\w)")
+
+
+def subscripts(text: str) -> list[tuple[str, bool]]:
+    """``text`` cut into runs (text, is a subscript) at its symbols' subscripts, the "_" (and a
+    subscript's braces) dropped; text without a symbol's subscript is one run.
+
+    >>> subscripts("J_I = ΔT_нб/(δ·ω_m²)")
+    [('J', False), ('I', True), (' = ΔT', False), ('нб', True), ('/(δ·ω', False), ('m', True), ('²)', False)]
+    >>> subscripts("`results.flywheel_rim` in summary.json")
+    [('`results.flywheel_rim` in summary.json', False)]
+    """
+    out: list[tuple[str, bool]] = []
+    pos = 0
+    for m in _SUB_RX.finditer(text):
+        if text.count("`", 0, m.start()) % 2:        # inside `code`: left alone
+            continue
+        out.append((text[pos:m.end(1)], False))
+        sub = m.group(2)
+        out.append((sub[1:-1] if sub.startswith("{") else sub, True))
+        pos = m.end()
+    if pos < len(text) or not out:
+        out.append((text[pos:], False))
+    return [(s, b) for s, b in out if s] or [(text, False)]
+
+
+def sub_html(text: str) -> str:
+    """``text`` as escaped HTML with its symbols' subscripts in <sub>."""
+    return "".join(f"<sub>{escape(s, quote=False)}</sub>" if b else escape(s, quote=False)
+                   for s, b in subscripts(text))
+
+
+def sub_mathtext(text: str) -> str:
+    """``text`` for a matplotlib label with its symbols' subscripts as mathtext ("M_D (driving)"
+    → "M$_\\mathregular{D}$ (driving)": upright, in the label's font). A "$" in ``text``
+    is escaped."""
+    runs = subscripts(text)
+    if len(runs) == 1:
+        return text
+    return "".join(r"$_\mathregular{" + s + "}$" if b else s.replace("$", r"\$")
+                   for s, b in runs)

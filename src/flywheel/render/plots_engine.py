@@ -22,11 +22,15 @@ def figure_indicator_strokes(results, cylinder, lang: str = "en"):
     """The four strokes of ``cylinder`` (a four-stroke :class:`CylinderResult`)."""
     from flywheel.dynamics.loads import FOUR_STROKES
 
+    from flywheel.render.mathfmt import sub_mathtext
+
     def t(key: str, **fields) -> str:
         return nm.name(f"engine_{key}", lang, **fields)
 
     def build():
-        fig, (ax, bx) = fg.figure((11.0, 9.0), 2, 1, right=2.9, bottom=0.7, top=0.5, hspace=0.3)
+        # A4 width; each panel's legend in rows below it (never over a curve)
+        fig, (ax, bx) = fg.figure((8.5, 9.6), 2, 1, left=0.8, right=0.8, bottom=1.05, top=0.45,
+                                  hspace=0.42)
         s = np.asarray(cylinder.s, float)
         rel = np.asarray(cylinder.p, float) / cylinder.p_max
         stroke = np.asarray(cylinder.stroke)
@@ -43,11 +47,11 @@ def figure_indicator_strokes(results, cylinder, lang: str = "en"):
         ax.axhline(0.0, color="0.3", linewidth=0.6)
         ax.set_xlim(0.0, 1.0)
         ax.set_xlabel(t("s_axis"))
-        ax.set_ylabel(t("p_axis"))
+        ax.set_ylabel(sub_mathtext(t("p_axis")))
         sec = ax.secondary_yaxis("right", functions=(lambda r: r * p_max / 1e6,
                                                      lambda p: p * 1e6 / p_max))
         sec.set_ylabel(t("p_MPa"))
-        ax.legend(loc="upper left", bbox_to_anchor=(1.09, 1.0), borderaxespad=0.0)
+        ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.15), ncols=4, frameon=False)
         bx.axhline(0.0, color="0.3", linewidth=0.6)
         for r in range(results.cycle_deg // 720):
             a = np.degrees(cylinder.fires_at) + 720 * r
@@ -56,7 +60,7 @@ def figure_indicator_strokes(results, cylinder, lang: str = "en"):
         fg.phi_axis(bx, lang, label=False, cycle_deg=results.cycle_deg)
         bx.set_xlabel(t("phi"))
         bx.set_ylabel(t("p_MPa"))
-        bx.legend(loc="upper left", bbox_to_anchor=(1.09, 1.0), borderaxespad=0.0)
+        bx.legend(loc="upper center", bbox_to_anchor=(0.5, -0.15), ncols=5, frameon=False)
         ax.set_title(t("title", t=results.title, c=cylinder.name))
         return fig
     return build()

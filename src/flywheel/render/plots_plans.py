@@ -46,14 +46,14 @@ _TEXT = {
         "reaction": "reactions found",
         "chord": "whole reaction R = Rⁿ + Rτ",
         "closes": "closes to {c:.2g} N",
-        "omega": "ω = {w:.5g} rad/s, ε = {e:.5g} rad/s²",
+        "omega": "ω = {w} rad/s, ε = {e} rad/s²",
         "links_w": "ω of the links, rad/s: {x}",
         "links_e": "ε of the links, rad/s²: {x}",
-        "lever_sum": "Σ moments about p: {s:.6g} W",
-        "lever_My": "M_y = −Σ/ω = {m:.6g} N·m (kinetostatics: {k:.6g} N·m)",
-        "lever_Py": "P_y = M_y/l₁ = {p:.6g} N at the crank pin",
-        "couple": "{n} on link {l}: M·ω_i = {m:.5g} N·m · {w:.5g} rad/s = {p:.5g} W",
-        "moment": "{n}: h = {h:.4g} mm, F·h = {p:.5g} W",
+        "lever_sum": "Σ moments about p: {s} W",
+        "lever_My": "M_y = −Σ/ω = {m} N·m (kinetostatics: {k} N·m)",
+        "lever_Py": "P_y = M_y/l₁ = {p} N at the crank pin",
+        "couple": "{n} on link {l}: M·ω_i = {m} N·m · {w} rad/s = {p} W",
+        "moment": "{n}: h = {h} mm, F·h = {p} W",
         "d_c": "dead centres",
         "position_k": "positions 0 … {n}",
         "crank_circle": "path of the crank pin",
@@ -81,14 +81,14 @@ _TEXT = {
         "reaction": "найденные реакции",
         "chord": "полная реакция R = Rⁿ + Rτ",
         "closes": "невязка {c:.2g} Н",
-        "omega": "ω = {w:.5g} рад/с, ε = {e:.5g} рад/с²",
+        "omega": "ω = {w} рад/с, ε = {e} рад/с²",
         "links_w": "ω звеньев, рад/с: {x}",
         "links_e": "ε звеньев, рад/с²: {x}",
-        "lever_sum": "Σ моментов относительно p: {s:.6g} Вт",
-        "lever_My": "M_у = −Σ/ω = {m:.6g} Н·м (кинетостатика: {k:.6g} Н·м)",
-        "lever_Py": "P_у = M_у/l₁ = {p:.6g} Н на пальце кривошипа",
-        "couple": "{n} на звене {l}: M·ω_i = {m:.5g} Н·м · {w:.5g} рад/с = {p:.5g} Вт",
-        "moment": "{n}: h = {h:.4g} мм, F·h = {p:.5g} Вт",
+        "lever_sum": "Σ моментов относительно p: {s} Вт",
+        "lever_My": "M_у = −Σ/ω = {m} Н·м (кинетостатика: {k} Н·м)",
+        "lever_Py": "P_у = M_у/l₁ = {p} Н на пальце кривошипа",
+        "couple": "{n} на звене {l}: M·ω_i = {m} Н·м · {w} рад/с = {p} Вт",
+        "moment": "{n}: h = {h} мм, F·h = {p} Вт",
         "d_c": "мёртвые положения",
         "position_k": "положения 0 … {n}",
         "crank_circle": "траектория пальца кривошипа",
@@ -96,7 +96,6 @@ _TEXT = {
 }
 
 DPI = 120                   # as render/plots.py
-_TABLE_W = 3.6              # room for the table of values right of a plan [in]
 _COLOURS = {"absolute": "k", "relative": "C0", "normal": "C0", "tangential": "C3",
             "coriolis": "C2", "sliding": "C4", "weight": "C2", "inertia": "C3", "given": "C1",
             "known": "C4", "reaction": "k", "reaction_n": "k", "reaction_t": "k"}
@@ -104,6 +103,9 @@ _COLOURS = {"absolute": "k", "relative": "C0", "normal": "C0", "tangential": "C3
 
 def _t(lang: str, key: str, **kw) -> str:
     text = _TEXT["ru" if lang == "ru" else "en"][key]
+    # a bare float field: 4 significant digits, no exponent above 1 (:func:`_num`)
+    kw = {k: _num(v) if isinstance(v, (float, np.floating)) and "{" + k + "}" in text else v
+          for k, v in kw.items()}
     return text.format(**kw) if kw else text
 
 
@@ -113,7 +115,7 @@ def _plain(text: str) -> str:
             .replace("P_у", "Pу").replace("ω_i", "ωᵢ"))
 
 
-def _figure(size, nrows=1, ncols=1, *, left=0.7, right=_TABLE_W, bottom=0.6, top=0.75,
+def _figure(size, nrows=1, ncols=1, *, left=0.7, right=0.3, bottom=0.6, top=0.75,
             wspace=0.3, hspace=0.35):
     """A pyplot-free Figure and its axes with fixed margins [in] (render/plots.py's layout)."""
     from matplotlib.figure import Figure
@@ -201,6 +203,151 @@ def _scale_text(key: str, mu: float, lang: str) -> str:
     return f"{nm.tex(key, lang)} = {mu:g} {nm.unit_of(key, lang)}"
 
 
+def _num(v: float, sig: int = 4) -> str:
+    """A value to ``sig`` significant digits, never in exponent form above 1 (12345.6 →
+    "12346", 253.92 → "253.9", 5.8861 → "5.886")."""
+    v = float(v)
+    if v == 0.0 or not math.isfinite(v):
+        return f"{v:g}"
+    if abs(v) >= 10.0 ** sig:
+        return f"{v:.0f}"
+    return f"{v:.{sig}g}"
+
+
+def _clean(v: float, largest: float) -> float:
+    """A value below 1e-9 of the largest of its kind is rounding noise: 0."""
+    return 0.0 if abs(float(v)) <= 1e-9 * largest else float(v)
+
+
+# -- the layout: axes placed by hand in inches, text placed off the lines ---------------------------
+
+_PT = 72.0                  # points per inch
+_CHAR_W = 0.56              # a character's mean width over the font size (DejaVu Sans)
+
+
+def _limits(pts: np.ndarray, aspect_range=(0.55, 1.8)) -> tuple[np.ndarray, np.ndarray]:
+    """The lower-left and upper-right corners [mm] of a plan's frame round ``pts``: a margin of
+    12 % (at least 10 mm across), the shorter side widened so height/width stays in
+    ``aspect_range`` (a flat polygon gets room for its labels, the page no empty band)."""
+    lo, hi = pts.min(axis=0), pts.max(axis=0)
+    span = max(float(np.max(hi - lo)), 10.0)
+    pad = 0.12 * span
+    lo, hi = lo - pad, hi + pad
+    w, h = float(hi[0] - lo[0]), float(hi[1] - lo[1])
+    a_lo, a_hi = aspect_range
+    if h < a_lo * w:
+        extra = (a_lo * w - h) / 2
+        lo, hi = lo - (0, extra), hi + (0, extra)
+    elif h > a_hi * w:
+        extra = (h / a_hi - w) / 2
+        lo, hi = lo - (extra, 0), hi + (extra, 0)
+    return lo, hi
+
+
+def _set_frame(ax, lo, hi, lang: str, xlabel: bool = True) -> None:
+    """Equal axes in mm over [lo, hi] (the axes' box already has the frame's aspect)."""
+    ax.set_xlim(lo[0], hi[0])
+    ax.set_ylim(lo[1], hi[1])
+    ax.set_aspect("equal", adjustable="datalim")
+    if xlabel:
+        ax.set_xlabel(nm.with_unit(nm.name("plan_length", lang), nm.unit_of("plan_length", lang),
+                                   lang))
+    ax.grid(True, alpha=0.3)
+
+
+class _Labels:
+    """Places a frame's labels beside its vectors: each along the vector's normal, off every
+    line and every label placed before (a greedy search over a few candidate places, in mm
+    of the plan; ``ppm``: points of the page per mm of the plan)."""
+
+    def __init__(self, ax, ppm: float, segments: list[tuple[np.ndarray, np.ndarray]],
+                 frame=None):
+        self.ax, self.ppm, self.frame = ax, ppm, frame
+        self.boxes: list[tuple[float, float, float, float]] = []
+        # the lines as points every 2 pt of the page
+        cloud = [a + np.linspace(0.0, 1.0, max(2, int(np.hypot(*(b - a)) * ppm / 2) + 1))[:, None]
+                 * (b - a) for a, b in segments]
+        self.cloud = np.concatenate(cloud) if cloud else np.zeros((0, 2))
+
+    def _box(self, x, y, w, h, ha, va):
+        x0 = x - {"left": 0.0, "center": w / 2, "right": w}[ha]
+        y0 = y - {"bottom": 0.0, "center": h / 2, "top": h}[va]
+        return (x0, y0, x0 + w, y0 + h)
+
+    def _cost(self, b) -> float:
+        x0, y0, x1, y1 = b
+        c = 0.0
+        if self.frame is not None:          # out of the axes: over the tick labels
+            lo, hi = self.frame
+            if x0 < lo[0] or y0 < lo[1] or x1 > hi[0] or y1 > hi[1]:
+                c += 50.0
+        for q in self.boxes:
+            dx = min(x1, q[2]) - max(x0, q[0])
+            dy = min(y1, q[3]) - max(y0, q[1])
+            if dx > 0 and dy > 0:
+                c += 10.0 + dx * dy
+        if len(self.cloud):
+            p = self.cloud
+            c += float(np.count_nonzero((p[:, 0] > x0) & (p[:, 0] < x1)
+                                        & (p[:, 1] > y0) & (p[:, 1] < y1)))
+        return c
+
+    def block(self, xy, text: str, fontsize: float, ha="left", va="bottom", off=(4.0, 4.0)):
+        """Mark a label placed elsewhere (a point's letters) as an obstacle."""
+        w = _CHAR_W * fontsize * len(text) / self.ppm
+        h = 1.25 * fontsize / self.ppm
+        self.boxes.append(self._box(xy[0] + off[0] / self.ppm, xy[1] + off[1] / self.ppm,
+                                    w, h, ha, va))
+
+    def along(self, tail, head, text: str, colour, fontsize: float = 7.0) -> None:
+        """``text`` beside the vector tail → head [mm]."""
+        d = np.asarray(head, float) - np.asarray(tail, float)
+        L = float(np.hypot(*d))
+        n = np.array([-d[1], d[0]]) / L if L > 1e-12 else np.array([0.0, 1.0])
+        w = _CHAR_W * fontsize * len(text) / self.ppm
+        h = 1.25 * fontsize / self.ppm
+        best = None
+        for t in (0.5, 0.35, 0.65, 0.2, 0.8):
+            for side in (1.0, -1.0):
+                for dist in (2.5, 8.0):
+                    m = side * n
+                    ha = "left" if m[0] > 0.35 else "right" if m[0] < -0.35 else "center"
+                    va = "bottom" if m[1] > 0.35 else "top" if m[1] < -0.35 else "center"
+                    xy = np.asarray(tail, float) + t * d + m * dist / self.ppm
+                    b = self._box(xy[0], xy[1], w, h, ha, va)
+                    c = self._cost(b) + 0.01 * dist + 0.05 * abs(t - 0.5)
+                    if best is None or c < best[0] - 1e-12:
+                        best = (c, xy, ha, va, b)
+                if best[0] < 0.2:
+                    break
+            if best[0] < 0.2:
+                break
+        _, xy, ha, va, b = best
+        self.boxes.append(b)
+        self.ax.text(float(xy[0]), float(xy[1]), text, ha=ha, va=va, fontsize=fontsize,
+                     color=colour, zorder=6)
+
+
+def _columns(fig, lines: list[str], x0: float, y0: float, width: float, H: float, W: float,
+             fontsize: float = 7.5, col_w: float = 2.3) -> None:
+    """``lines`` as a compact table in columns below y0 [in from the bottom], from x0 [in]
+    across ``width`` [in]: one text per column (a text object per cell would cost a layout
+    each)."""
+    ncol = max(1, int(width // col_w))
+    rows = math.ceil(len(lines) / ncol)
+    for c in range(ncol):
+        chunk = lines[c * rows:(c + 1) * rows]
+        if chunk:
+            fig.text((x0 + c * width / ncol) / W, y0 / H, "\n".join(chunk), va="top", ha="left",
+                     fontsize=fontsize, linespacing=1.3)
+
+
+def _table_height(n: int, width: float, fontsize: float = 7.5, col_w: float = 2.3) -> float:
+    """The height [in] of :func:`_columns`'s table of n lines."""
+    ncol = max(1, int(width // col_w))
+    return math.ceil(n / ncol) * 1.3 * fontsize / _PT + 0.05
+
+
 # -- the kinematic plans --------------------------------------------------------------------------
 
 def _arrows(ax, tails: np.ndarray, heads: np.ndarray, colour: str, width: float = 1.6,
@@ -216,30 +363,34 @@ def _arrows(ax, tails: np.ndarray, heads: np.ndarray, colour: str, width: float 
                                      linestyle=style, zorder=3))
 
 
-def _frame_plan(ax, pts: np.ndarray, lang: str) -> None:
-    """Equal axes in mm round the points, with a margin."""
-    lo, hi = pts.min(axis=0), pts.max(axis=0)
-    span = max(float(np.max(hi - lo)), 10.0)
-    pad = 0.12 * span
-    ax.set_xlim(lo[0] - pad, hi[0] + pad)
-    ax.set_ylim(lo[1] - pad, hi[1] + pad)
-    ax.set_aspect("equal", adjustable="box")
-    ax.set_xlabel(f"{nm.name('plan_length', lang)}, {nm.unit_of('plan_length', lang)}")
-    ax.grid(True, alpha=0.3)
+def _plan_axes(fig, W: float, H: float, x: float, y: float, w: float, h: float):
+    """An axes placed at (x, y), w × h [in] on a W × H [in] figure."""
+    return fig.add_axes((x / W, y / H, w / W, h / H))
+
+
+def _plan_box(lo, hi, max_w: float, max_h: float) -> tuple[float, float]:
+    """The axes' size [in] that shows [lo, hi] [mm] at equal scales within max_w × max_h."""
+    xs, ys = float(hi[0] - lo[0]), float(hi[1] - lo[1])
+    w, h = max_w, max_w * ys / xs
+    if h > max_h:
+        w, h = max_h * xs / ys, max_h
+    return w, h
 
 
 def _kinematic_plan(results, ps, which: str, lang: str):
-    """The velocity (``which`` "velocity") or the acceleration plan at one report angle."""
+    """The velocity (``which`` "velocity") or the acceleration plan at one report angle: the
+    plan to its scale, the legend in one row below it, then its values as a compact table
+    (A4 width: 8 in, the height what the plan needs)."""
+    from matplotlib.figure import Figure
     from matplotlib.lines import Line2D
 
     plan = ps.velocity if which == "velocity" else ps.acceleration
     key, u = ("mu_v", "m/s") if which == "velocity" else ("mu_a", "m/s²")
     mu = plan.scale
-    fig, axes = _figure((10.0, 7.0))
-    ax = axes[0, 0]
     pts = [np.zeros(2)]
-    kinds = []
+    groups = []
     lines = []
+    vmax = max([abs(float(v.value)) for v in plan.vectors] + [0.0])
     for kind in ("absolute", "relative", "normal", "tangential", "coriolis", "sliding"):
         vs = [v for v in plan.vectors if v.kind == kind]
         if not vs:
@@ -247,16 +398,34 @@ def _kinematic_plan(results, ps, which: str, lang: str):
         tails = np.array([v.tail for v in vs]) / mu
         heads = np.array([v.head for v in vs]) / mu
         pts += list(tails) + list(heads)
+        groups.append((kind, vs, tails, heads))
+        for v in vs:
+            val = _clean(v.value, vmax)
+            lines.append(f"{_vec_label(plan, v)} = {_num(val)} {_unit(u, lang)}, "
+                         f"{val / mu:.1f} {_unit('mm', lang)}")
+    lo, hi = _limits(np.array(pts))
+    W, left, right = 8.0, 0.7, 0.3
+    aw, ah = _plan_box(lo, hi, W - left - right, 6.2)
+    lw = plan.links
+    wmax = max([abs(float(x)) for x in lw.values()] + [0.0])
+    name = "links_w" if which == "velocity" else "links_e"
+    head = (f"{_t(lang, 'omega', w=plan.omega, e=plan.epsilon)}; "
+            f"{_t(lang, name, x=', '.join(f'{n} {_num(_clean(lw[n], wmax))}' for n in lw))}")
+    head = _wrap([head], int((W - left - right) / (_CHAR_W * 7.5 / _PT)))
+    top, below, leg = 0.55, 0.5, 0.3
+    t_h = _table_height(len(lines), W - left - right)
+    h_h = len(head) * 1.3 * 7.5 / _PT + 0.08
+    H = top + ah + below + leg + h_h + t_h + 0.1
+    fig = Figure(figsize=(W, H), dpi=DPI)
+    x_ax = left + (W - left - right - aw) / 2
+    y_ax = H - top - ah
+    ax = _plan_axes(fig, W, H, x_ax, y_ax, aw, ah)
+    ppm = aw * _PT / float(hi[0] - lo[0])
+    segs = [(t, h) for _, _, tails, heads in groups for t, h in zip(tails, heads)]
+    labels = _Labels(ax, ppm, segs, (lo, hi))
+    for kind, vs, tails, heads in groups:
         _arrows(ax, tails, heads, _COLOURS[kind], 1.8 if kind == "absolute" else 1.2,
                 "-" if kind in ("absolute", "tangential") else "--" if kind == "relative" else "-")
-        kinds.append(kind)
-        for v in vs:
-            if kind != "absolute" and which == "acceleration" and v.value > 0:
-                mid = (np.array(v.tail) + np.array(v.head)) / (2 * mu)
-                ax.annotate(_ON_PLAN[kind], mid, xytext=(3, -9), textcoords="offset points",
-                            fontsize=8, color=_COLOURS[kind], zorder=6)
-            lines.append(f"{_vec_label(plan, v)} = {v.value:.4g} {_unit(u, lang)}, "
-                         f"{v.value / mu:.1f} {_unit('mm', lang)}")
     # the images: their letters (one label per point of the plan)
     seen: dict[tuple, list[str]] = {}
     for point, xy in plan.images.items():
@@ -266,23 +435,32 @@ def _kinematic_plan(results, ps, which: str, lang: str):
     for xy, labs in seen.items():
         if xy == (0.0, 0.0) or (abs(xy[0]) < 1e-9 and abs(xy[1]) < 1e-9):
             labs = [pole] + labs
+        text = ", ".join(labs)
         ax.plot(*xy, "o", markersize=3.2, color="k", zorder=5)
-        ax.annotate(", ".join(labs), xy, xytext=(4, 4), textcoords="offset points", fontsize=10,
+        ax.annotate(text, xy, xytext=(4, 4), textcoords="offset points", fontsize=10,
                     fontweight="bold", zorder=7)
-    _frame_plan(ax, np.array(pts), lang)
+        labels.block(xy, text, 10.0)
+    if which == "acceleration":
+        for kind, vs, tails, heads in groups:
+            if kind == "absolute":
+                continue
+            for v, t, h in zip(vs, tails, heads):
+                if float(np.hypot(*(h - t))) >= 2.0:   # shorter than 2 mm: in the table only
+                    labels.along(t, h, _ON_PLAN[kind], _COLOURS[kind], 8.0)
+    _set_frame(ax, lo, hi, lang)
     handles = [Line2D([], [], color=_COLOURS[k], linewidth=1.8 if k == "absolute" else 1.2,
                       linestyle="--" if k == "relative" else "-", label=_t(lang, k))
-               for k in kinds]
-    ax.legend(handles=handles, loc="lower left", bbox_to_anchor=(1.02, 0.0), borderaxespad=0.0,
-              fontsize=8)
-    lw = plan.links
-    extra = [_t(lang, "omega", w=plan.omega, e=plan.epsilon)]
-    name = "links_w" if which == "velocity" else "links_e"
-    extra.append(_t(lang, name, x=", ".join(f"{n} {lw[n]:.4g}" for n in lw)))
-    fig.text(1 - (_TABLE_W - 0.1) / 10.0, 1 - 0.75 / 7.0,
-             "\n".join(_wrap(extra) + [""] + lines), va="top", ha="left", fontsize=7.5)
+               for k, *_ in groups]
+    y = y_ax - below
+    fig.legend(handles=handles, loc="upper center", bbox_to_anchor=(0.5, y / H),
+               ncols=len(handles), fontsize=8, frameon=False)
+    y -= leg
+    fig.text(left / W, y / H, "\n".join(head), va="top", ha="left", fontsize=7.5,
+             linespacing=1.3)
+    _columns(fig, lines, left, y - h_h, W - left - right, H, W)
     what = _t(lang, which, p=nm.name(f"{which}_plan", lang), a=ps.phi_deg)
-    ax.set_title(f"{_title(results, what)}, {_scale_text(key, mu, lang)}", loc="left", y=1.01)
+    fig.text(left / W, 1 - 0.12 / H, f"{_title(results, what)}, {_scale_text(key, mu, lang)}",
+             va="top", ha="left", fontsize=10)
     return fig
 
 
@@ -312,60 +490,102 @@ def figure_acceleration_plan(results, ps, lang: str = "en"):
 
 # -- the force polygons ---------------------------------------------------------------------------
 
+def _rows_of(aspects: list[float], width: float, gap: float, max_h: float,
+             max_total: float, row_extra: float) -> tuple[list[list[int]], float]:
+    """The panels (height/width ``aspects``) in rows of one common axes height: the number of
+    columns that gives the tallest axes [in] within ``width`` and ``max_total`` (rows' axes
+    plus ``row_extra`` each). Returns the rows (panel indices) and the axes' height."""
+    n = len(aspects)
+    best = None
+    for ncols in range(1, n + 1):
+        rows = [list(range(k, min(k + ncols, n))) for k in range(0, n, ncols)]
+        h = max_h
+        for row in rows:
+            h = min(h, (width - gap * len(row)) / sum(1.0 / aspects[k] for k in row))
+        h = min(h, max_total / len(rows) - row_extra)
+        if best is None or h > best[1] + 1e-9:
+            best = (rows, h)
+    return best
+
+
 def figure_force_polygons(results, ps, lang: str = "en"):
     """The force polygon of every Assur group and of the crank at one report angle, each to
-    its own μ_F (one panel each)."""
+    its own μ_F (one panel each; the panels in rows of one height, each as wide as its polygon
+    needs, A4 width: 10 in), the values beside the vectors (4 significant digits), the legend
+    in one row below."""
+    from matplotlib.figure import Figure
     from matplotlib.lines import Line2D
 
     polys = ps.polygons
-    n = len(polys)
-    ncols = min(n, 3)
-    nrows = math.ceil(n / ncols)
-    size = (4.6 * ncols + 2.6, 4.9 * nrows + 0.6)
-    fig, axes = _figure(size, nrows, ncols, left=0.6, right=2.6, top=1.15, bottom=0.55,
-                        wspace=0.3, hspace=0.42)
-    used = set()
-    for k, ax in enumerate(axes.flat):
-        if k >= n:
-            ax.set_visible(False)
-            continue
-        pg = polys[k]
+    frames = []
+    for pg in polys:
         mu = pg.scale
-        pts = [np.zeros(2)]
-        for kind in ("weight", "inertia", "given", "known", "reaction", "reaction_n", "reaction_t"):
-            vs = [v for v in pg.vectors if v.kind == kind]
-            if not vs:
-                continue
-            used.add("reaction" if kind.startswith("reaction") else kind)
-            tails = np.array([v.tail for v in vs]) / mu
-            heads = np.array([v.head for v in vs]) / mu
-            pts += list(tails) + list(heads)
-            _arrows(ax, tails, heads, _COLOURS[kind], 1.5)
-        if pg.chords:
-            used.add("chord")
-            tails = np.array([v.tail for v in pg.chords]) / mu
-            heads = np.array([v.head for v in pg.chords]) / mu
-            _arrows(ax, tails, heads, "0.45", 1.0, "--")
-        for v in pg.vectors + pg.chords:
-            mid = (np.array(v.tail) + np.array(v.head)) / (2 * mu)
-            ax.annotate(f"{_force_label(v.label, lang)} {v.value:.5g}", mid, xytext=(3, 3),
-                        textcoords="offset points", fontsize=7,
-                        color=_COLOURS.get(v.kind, "k") if v not in pg.chords else "0.35",
-                        zorder=6)
-        _frame_plan(ax, np.array(pts), lang)
-        what = (_t(lang, "crank", l=pg.links[0]) if pg.kind == "crank"
-                else _t(lang, "group", g=pg.group, k=pg.kind, l=", ".join(pg.links)))
-        scale = _scale_text("mu_F", mu, lang)
-        ax.set_title(f"{what}\n{scale}; {_t(lang, 'closes', c=pg.closure)}", fontsize=8.5,
-                     y=1.01)   # a fixed place: no layout pass for it
+        vecs = [v for v in pg.vectors] + list(pg.chords)
+        pts = np.array([np.zeros(2)] + [np.array(v.tail) / mu for v in vecs]
+                       + [np.array(v.head) / mu for v in vecs])
+        frames.append(_limits(pts))
+    aspects = [float((hi - lo)[1] / (hi - lo)[0]) for lo, hi in frames]
+    W, left, right, gap = 10.0, 0.1, 0.15, 0.6       # gap: each panel's y tick labels [in]
+    title_h, row_extra = 0.75, 1.5          # title above, tick labels and x label below [in]
+    for _ in range(2):      # each panel at least as wide as its title (1.9 in)
+        rows, ah = _rows_of(aspects, W - left - right, gap, 4.5, 11.0, row_extra)
+        aspects = [min(a, ah / 1.9) for a in aspects]
+    for k, (lo, hi) in enumerate(frames):        # a frame widened to its panel's aspect
+        extra = (float(hi[1] - lo[1]) / aspects[k] - float(hi[0] - lo[0])) / 2
+        frames[k] = (lo - (extra, 0.0), hi + (extra, 0.0))
+    top, leg = 0.6, 0.35
+    H = top + len(rows) * (ah + row_extra) + leg
+    fig = Figure(figsize=(W, H), dpi=DPI)
+    used = set()
+    for r, row in enumerate(rows):
+        widths = [ah / aspects[k] for k in row]
+        x = left + (W - left - right - sum(widths) - gap * len(row)) / 2
+        y = H - top - r * (ah + row_extra) - title_h - ah
+        for k, aw in zip(row, widths):
+            x += gap
+            ax = _plan_axes(fig, W, H, x, y, aw, ah)
+            x += aw
+            pg = polys[k]
+            mu = pg.scale
+            lo, hi = frames[k]
+            segs = []
+            for kind in ("weight", "inertia", "given", "known", "reaction", "reaction_n",
+                         "reaction_t"):
+                vs = [v for v in pg.vectors if v.kind == kind]
+                if not vs:
+                    continue
+                used.add("reaction" if kind.startswith("reaction") else kind)
+                tails = np.array([v.tail for v in vs]) / mu
+                heads = np.array([v.head for v in vs]) / mu
+                segs += list(zip(tails, heads))
+                _arrows(ax, tails, heads, _COLOURS[kind], 1.5)
+            if pg.chords:
+                used.add("chord")
+                tails = np.array([v.tail for v in pg.chords]) / mu
+                heads = np.array([v.head for v in pg.chords]) / mu
+                segs += list(zip(tails, heads))
+                _arrows(ax, tails, heads, "0.45", 1.0, "--")
+            labels = _Labels(ax, aw * _PT / float(hi[0] - lo[0]), segs, (lo, hi))
+            # the longest first: the short vectors' labels then find room round them
+            for v in sorted(pg.vectors + pg.chords, key=lambda v: -float(v.value)):
+                labels.along(np.array(v.tail) / mu, np.array(v.head) / mu,
+                             f"{_force_label(v.label, lang)} {_num(v.value)}",
+                             _COLOURS.get(v.kind, "k") if v not in pg.chords else "0.35")
+            _set_frame(ax, lo, hi, lang)
+            what = (_t(lang, "crank", l=pg.links[0]) if pg.kind == "crank"
+                    else _t(lang, "group", g=pg.group, k=pg.kind, l=", ".join(pg.links)))
+            scale = _scale_text("mu_F", mu, lang)
+            ax.set_title(f"{what}\n{scale}\n{_t(lang, 'closes', c=pg.closure)}", fontsize=8.5,
+                         y=1.01)   # a fixed place: no layout pass for it
     order = ("weight", "inertia", "given", "known", "reaction", "chord")
     handles = [Line2D([], [], color=_COLOURS.get(k, "0.45"), linewidth=1.5,
                       linestyle="--" if k == "chord" else "-", label=_t(lang, k))
                for k in order if k in used]
-    fig.legend(handles=handles, loc="upper left",
-               bbox_to_anchor=(1 - 2.5 / size[0], 1 - 1.15 / size[1]), fontsize=8)
+    fig.legend(handles=handles, loc="lower center", bbox_to_anchor=(0.5, 0.05 / H),
+               ncols=min(3, len(handles)), fontsize=8, frameon=False)
     what = _t(lang, "forces", p=nm.name("force_polygon", lang), a=ps.phi_deg)
-    fig.suptitle(f"{_title(results, what)} ({_unit('N', lang)})", fontsize=10)
+    fig.suptitle(f"{_title(results, what)} ({_unit('N', lang)})", fontsize=10,
+                 y=1 - 0.1 / H, va="top")
     return fig
 
 
@@ -373,40 +593,25 @@ def figure_force_polygons(results, ps, lang: str = "en"):
 
 def figure_lever(results, ps, lang: str = "en"):
     """Zhukovsky's lever at one report angle: the turned velocity plan to μ_v, every force at
-    its point's image (drawn to μ_F), the couples' powers, the sum of the moments about the
-    pole and M_y from it beside M_y of the kinetostatics."""
+    its point's image (drawn to μ_F), and below it the forces' arms and powers, the couples'
+    powers, the sum of the moments about the pole and M_y from it beside M_y of the
+    kinetostatics (A4 width: 8 in)."""
+    from matplotlib.collections import LineCollection
+    from matplotlib.figure import Figure
+
     lv = ps.lever
     mu, muF = lv.scale, lv.force_scale
-    fig, axes = _figure((10.5, 7.4), right=4.1, top=0.95)
-    ax = axes[0, 0]
     pts = [np.zeros(2)]
-    # the lever: the rays from the pole to the images, and the images' letters
     imgs = {p: np.array(xy) / mu for p, xy in lv.images.items()}
-    from matplotlib.collections import LineCollection
-
-    rays = [np.stack([np.zeros(2), xy]) for xy in imgs.values() if np.hypot(*xy) > 1e-9]
-    if rays:
-        ax.add_collection(LineCollection(rays, colors="0.6", linewidths=1.0, zorder=2))
     pts += list(imgs.values())
-    seen: dict[tuple, list[str]] = {}
-    for p, xy in imgs.items():
-        seen.setdefault((round(xy[0], 3), round(xy[1], 3)), []).append(_image(lv.image_labels[p]))
-    for xy, labs in seen.items():
-        if abs(xy[0]) < 1e-9 and abs(xy[1]) < 1e-9:
-            labs = ["p"] + labs
-        ax.plot(*xy, "o", markersize=3.2, color="k", zorder=5)
-        ax.annotate(", ".join(labs), xy, xytext=(-12, 5), textcoords="offset points",
-                    fontsize=10, fontweight="bold", zorder=7)
+    arrows = []
     lines = []
     for f in lv.forces + (lv.balancing_force,):
         tail = imgs[f.point]
         head = tail + np.array(f.force) / muF
         pts += [tail, head]
-        colour = "k" if f.kind == "balancing" else _COLOURS[f.kind]
-        _arrows(ax, tail[None, :], head[None, :], colour, 2.0 if f.kind == "balancing" else 1.3)
+        arrows.append((f, tail, head))
         F = float(np.hypot(*f.force))
-        ax.annotate(_force_label(f.name, lang), head, xytext=(3, 3), textcoords="offset points",
-                    fontsize=8, color=colour, zorder=6)
         if f.kind != "balancing" and F > 0:
             lines.append(_plain(_t(lang, "moment", n=_force_label(f.name, lang),
                                    h=f.moment / F / mu, p=f.moment)))
@@ -416,16 +621,49 @@ def figure_lever(results, ps, lang: str = "en"):
     fa = results.forces.analysis
     k = fa.balancing_moment[ps.index] if fa is not None else float("nan")
     Py = float(np.hypot(*lv.balancing_force.force)) * (1 if lv.balancing_moment >= 0 else -1)
-    lines += ["", _plain(_t(lang, "lever_sum", s=lv.moment_of_loads)),
-              _plain(_t(lang, "lever_My", m=lv.balancing_moment, k=k)),
-              _plain(_t(lang, "lever_Py", p=Py))]
-    _frame_plan(ax, np.array(pts), lang)
-    fig.text(1 - 4.0 / 10.5, 1 - 0.95 / 7.4, "\n".join(_wrap(lines, 62)), va="top", ha="left",
-             fontsize=7.5)
+    sums = [_plain(_t(lang, "lever_sum", s=lv.moment_of_loads)),
+            _plain(_t(lang, "lever_My", m=lv.balancing_moment, k=k)),
+            _plain(_t(lang, "lever_Py", p=Py))]
+    lo, hi = _limits(np.array(pts))
+    W, left, right = 8.0, 0.7, 0.3
+    aw, ah = _plan_box(lo, hi, W - left - right, 6.2)
+    top, below = 0.75, 0.55
+    t_h = _table_height(len(lines), W - left - right, col_w=3.5)
+    s_h = len(sums) * 1.3 * 7.5 / _PT + 0.1
+    H = top + ah + below + t_h + s_h + 0.1
+    fig = Figure(figsize=(W, H), dpi=DPI)
+    y_ax = H - top - ah
+    ax = _plan_axes(fig, W, H, left + (W - left - right - aw) / 2, y_ax, aw, ah)
+    rays = [np.stack([np.zeros(2), xy]) for xy in imgs.values() if np.hypot(*xy) > 1e-9]
+    if rays:
+        ax.add_collection(LineCollection(rays, colors="0.6", linewidths=1.0, zorder=2))
+    labels = _Labels(ax, aw * _PT / float(hi[0] - lo[0]),
+                     [(np.zeros(2), r[1]) for r in rays] + [(t, h) for _, t, h in arrows],
+                     (lo, hi))
+    seen: dict[tuple, list[str]] = {}
+    for p, xy in imgs.items():
+        seen.setdefault((round(xy[0], 3), round(xy[1], 3)), []).append(_image(lv.image_labels[p]))
+    for xy, labs in seen.items():
+        if abs(xy[0]) < 1e-9 and abs(xy[1]) < 1e-9:
+            labs = ["p"] + labs
+        text = ", ".join(labs)
+        ax.plot(*xy, "o", markersize=3.2, color="k", zorder=5)
+        ax.annotate(text, xy, xytext=(-12, 5), textcoords="offset points",
+                    fontsize=10, fontweight="bold", zorder=7)
+        labels.block(xy, text, 10.0, off=(-12.0, 5.0))
+    for f, tail, head in arrows:
+        colour = "k" if f.kind == "balancing" else _COLOURS[f.kind]
+        _arrows(ax, tail[None, :], head[None, :], colour, 2.0 if f.kind == "balancing" else 1.3)
+        labels.along(tail, head, _force_label(f.name, lang), colour, 8.0)
+    _set_frame(ax, lo, hi, lang)
+    y = y_ax - below
+    _columns(fig, lines, left, y, W - left - right, H, W, col_w=3.5)
+    fig.text(left / W, (y - t_h - 0.05) / H, "\n".join(sums), va="top", ha="left",
+             fontsize=7.5, linespacing=1.3)
     what = _t(lang, "lever", p=nm.name("zhukovsky_lever", lang), a=ps.phi_deg)
-    ax.set_title(f"{_title(results, what)}\n"
-                 f"{_scale_text('mu_v', mu, lang)}, {_scale_text('mu_F', muF, lang)}",
-                 fontsize=9.5, loc="left", y=1.01)
+    fig.text(left / W, 1 - 0.12 / H, f"{_title(results, what)}\n"
+             f"{_scale_text('mu_v', mu, lang)}, {_scale_text('mu_F', muF, lang)}",
+             va="top", ha="left", fontsize=9.5)
     return fig
 
 
@@ -440,7 +678,7 @@ def figure_positions_plan(results, lang: str = "en", scheme=None):
     from matplotlib.lines import Line2D
 
     P = results.kinematics.points
-    fig, axes = _figure((10.0, 8.0), right=2.9, top=0.7)
+    fig, axes = _figure((8.0, 8.0), left=0.75, right=0.25, top=0.6, bottom=0.95)
     ax = axes[0, 0]
     allr = np.concatenate([pm.r for pm in P.values()])
     size = 0.035 * float(max(np.ptp(allr[:, 0]), np.ptp(allr[:, 1]), 1e-9))
@@ -512,7 +750,8 @@ def figure_positions_plan(results, lang: str = "en", scheme=None):
     if dsegs:
         handles.append(Line2D([], [], color="C3", linestyle="--", linewidth=0.8,
                               label=_t(lang, "d_c")))
-    ax.legend(handles=handles, loc="upper left", bbox_to_anchor=(1.02, 1.0), borderaxespad=0.0)
+    fig.legend(handles=handles, loc="lower center", bbox_to_anchor=(0.5, 0.02),
+               ncols=len(handles), frameon=False)
     what = _t(lang, "positions", p=nm.name("positions_plan", lang), n=len(std))
     ax.set_title(_title(results, what), loc="left", y=1.01)
     return fig

@@ -56,7 +56,7 @@ _TEMPLATE = """<!DOCTYPE html>
 </head>
 <body>
 {% for b in blocks -%}
-{% if b.kind == "h" %}<h{{ b.level }}>{{ b.text }}</h{{ b.level }}>
+{% if b.kind == "h" %}<h{{ b.level }}>{{ b.html }}</h{{ b.level }}>
 {% elif b.kind == "p" %}<p>{{ b.html }}</p>
 {% elif b.kind == "ul" %}<ul>{% for i in b.entries %}<li>{{ i }}</li>{% endfor %}</ul>
 {% elif b.kind == "f" %}{{ b.mathml }}
@@ -68,7 +68,7 @@ _TEMPLATE = """<!DOCTYPE html>
 {% endfor %}</tbody>
 </table></div>
 {% elif b.kind == "img" %}<figure id="figure-{{ b.number }}">{% if b.src %}<img src="{{ b.src }}" alt="{{ b.label }}">{% endif %}
-<figcaption>{{ b.label }}</figcaption></figure>
+<figcaption>{{ b.caption }}</figcaption></figure>
 {% endif %}
 {%- endfor %}
 </body>
@@ -77,10 +77,12 @@ _TEMPLATE = """<!DOCTYPE html>
 
 
 def _bold_html(text: str) -> str:
-    from markupsafe import Markup, escape
+    """Text as HTML: **bold**, the symbols' subscripts (J_II, ΔT_нб) in <sub> (mathfmt.subscripts)."""
+    from markupsafe import Markup
 
     parts = text.split("**")
-    return Markup("".join(str(escape(p)) if i % 2 == 0 else f"<strong>{escape(p)}</strong>"
+    return Markup("".join(mathfmt.sub_html(p) if i % 2 == 0
+                          else f"<strong>{mathfmt.sub_html(p)}</strong>"
                           for i, p in enumerate(parts)))
 
 
@@ -93,7 +95,7 @@ def html(doc: Document, plots_dir: Path | None = None) -> str:
     blocks = []
     for b in doc.blocks:
         if isinstance(b, Heading):
-            blocks.append({"kind": "h", "level": b.level, "text": b.text})
+            blocks.append({"kind": "h", "level": b.level, "html": _bold_html(b.text)})
         elif isinstance(b, Paragraph):
             blocks.append({"kind": "p", "html": _bold_html(b.text)})
         elif isinstance(b, Bullets):
@@ -102,27 +104,33 @@ def html(doc: Document, plots_dir: Path | None = None) -> str:
             blocks.append({"kind": "f", "mathml": Markup(mathfmt.mathml(b.tex))})
         elif isinstance(b, Table):
             n = len(b.header)
-            blocks.append({"kind": "t", "number": b.number, "label": f"{tab} {b.number} — {b.caption}",
-                           "header": b.header, "rows": b.rows,
+            blocks.append({"kind": "t", "number": b.number,
+                           "label": _bold_html(f"{tab} {b.number} — {b.caption}"),
+                           "header": [_bold_html(c) for c in b.header],
+                           "rows": [[_bold_html(c) for c in r] for r in b.rows],
                            "width": "" if n <= WIDE else " wide" if n <= WIDE_PAGE else " wide landscape"})
         elif isinstance(b, Figure):
             src = None
             if plots_dir is not None and (plots_dir / b.file).is_file():
                 src = "data:image/png;base64," + base64.b64encode((plots_dir / b.file).read_bytes()).decode()
             blocks.append({"kind": "img", "number": b.number, "label": f"{fig} {b.number} — {b.caption}",
-                           "src": src})
+                           "caption": _bold_html(f"{fig} {b.number} — {b.caption}"), "src": src})
     env = jinja2.Environment(autoescape=True, keep_trailing_newline=True)
     return env.from_string(_TEMPLATE).render(doc=doc, blocks=blocks, css=Markup(_CSS))
 
 
 # -- typst / PDF ----------------------------------------------------------------------------------
 def _ts(text: str) -> str:
-    """Text as typst markup: every run a string literal (nothing in it is markup); **bold**."""
+    """Text as typst markup: every run a string literal (nothing in it is markup); **bold**;
+    the symbols' subscripts (mathfmt.subscripts) as #sub."""
     def lit(s: str) -> str:
         return '#"' + s.replace("\\", "\\\\").replace('"', '\\"') + '"' if s else ""
 
+    def subs(s: str) -> str:          # the symbols' subscripts (J_II, ΔT_нб) as #sub[…]
+        return "".join(f"#sub[{lit(r)}]" if b else lit(r) for r, b in mathfmt.subscripts(s))
+
     parts = text.split("**")
-    return "".join(lit(p) if i % 2 == 0 else f"#strong[{lit(p)}]" for i, p in enumerate(parts))
+    return "".join(subs(p) if i % 2 == 0 else f"#strong[{subs(p)}]" for i, p in enumerate(parts))
 
 
 def typst_source(doc: Document) -> str:
@@ -217,10 +225,17 @@ def docx(doc: Document, plots_dir: Path | None = None) -> bytes:
     d.core_properties.author = d.core_properties.last_modified_by = "flywheel"
     d.core_properties.revision = 1
 
-    def runs(p, text: str):
+    def runs(p, text: str, size=None, bold: bool = False):
+        """**bold** runs, the symbols' subscripts (J_II, ΔT_нб) as subscript runs."""
         for i, part in enumerate(text.split("**")):
-            if part:
-                p.add_run(part).bold = i % 2 == 1
+            for seg, sub in mathfmt.subscripts(part) if part else ():
+                if seg:
+                    r = p.add_run(seg)
+                    r.bold = bold or i % 2 == 1
+                    if sub:
+                        r.font.subscript = True
+                    if size is not None:
+                        r.font.size = size
 
     for b in doc.blocks:
         if isinstance(b, Heading):
@@ -235,24 +250,21 @@ def docx(doc: Document, plots_dir: Path | None = None) -> bytes:
             p.alignment = WD_ALIGN_PARAGRAPH.CENTER
             p._p.append(parse_xml(mathfmt.omml(b.tex)))       # a native Word equation
         elif isinstance(b, Table):
-            d.add_paragraph(f"{tab} {b.number} — {b.caption}")
+            runs(d.add_paragraph(), f"{tab} {b.number} — {b.caption}")
             t = d.add_table(rows=1 + len(b.rows), cols=len(b.header))
             t.style = "Table Grid"
+            size = Pt(7 if len(b.header) > 7 else 8.5)
             # the cells straight from the rows' XML: Table.cell(r, c) rebuilds the whole grid
             # on every call (quadratic; seconds for the report's tables)
             for r, (tr, cells) in enumerate(zip(t._tbl.tr_lst, (b.header, *b.rows))):
                 for tc, text in zip(tr.tc_lst, cells):
-                    cell = _Cell(tc, t)
-                    cell.text = text
-                    for p in cell.paragraphs:
-                        for run in p.runs:
-                            run.font.size = Pt(7 if len(b.header) > 7 else 8.5)
-                            run.bold = r == 0
+                    runs(_Cell(tc, t).paragraphs[0], text, size, bold=r == 0)
         elif isinstance(b, Figure):
             if plots_dir is not None and (plots_dir / b.file).is_file():
                 d.add_picture(str(plots_dir / b.file), width=Mm(170))
                 d.paragraphs[-1].alignment = WD_ALIGN_PARAGRAPH.CENTER
-            p = d.add_paragraph(f"{fig} {b.number} — {b.caption}")
+            p = d.add_paragraph()
+            runs(p, f"{fig} {b.number} — {b.caption}")
             p.alignment = WD_ALIGN_PARAGRAPH.CENTER
     buf = io.BytesIO()
     d.save(buf)

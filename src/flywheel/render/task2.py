@@ -163,72 +163,78 @@ def _print_motion(r, console, lang: str) -> None:
 
 
 def plot(r, path, title: str = "", lang: str = "en") -> None:
-    """M_D, M_C, A and ω against φ [deg] into an image file (matplotlib, Agg backend); labels in
-    ``lang``."""
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
-    from flywheel.constant_inertia.solve import sample
-
-    def L(key: str, **fields) -> str:
-        return nm.name(key, lang, **fields)
-
-    if r.driving is not None:
-        s = sample(r)
-        x = [math.degrees(p) for p in s["phi"]]
-        fig, axes = plt.subplots(4, 1, figsize=(8, 11.5), sharex=True)
-        ax = axes[3]
-        ax.plot(x, s["epsilon"], color="tab:purple", label=L("t2_plot_epsilon"))
-        ax.axhline(0.0, color="grey", linewidth=0.6)
-        for value, phi, key, marker in ((r.epsilon_max, r.phi_epsilon_max, "t2_plot_epsilon_max",
-                                         "^"),
-                                        (r.epsilon_min, r.phi_epsilon_min, "t2_plot_epsilon_min",
-                                         "v")):
-            ax.plot([math.degrees(phi)], [value], marker, color="tab:purple",
-                    label=L(key, value=f"{value:.6g}", deg=f"{math.degrees(phi):.6g}"))
-        ax.set_ylabel(L("t2_plot_epsilon_axis"))
-        ax.legend(fontsize=8)
-        ax = axes[0]
-        ax.plot(x, s["M_D"], label=L("t2_plot_MD"))
-        ax.plot(x, s["M_C"], label=L("t2_plot_MC"))
-        ax.set_ylabel(L("t2_plot_moment"))
-        ax.legend()
-        axes[1].plot(x, s["A"], color="tab:green", label=L("t2_plot_A"))
-        axes[1].set_ylabel(L("t2_plot_A_axis"))
-        axes[1].legend()
-        axes[2].plot(x, s["omega"], color="tab:red", label=L("t2_plot_omega"))
-    else:
-        known = not math.isnan(r.rows[0].phi)
-        x = [math.degrees(row.phi) if known else i for i, row in enumerate(r.rows)]
-        fig, axes = plt.subplots(2, 1, figsize=(8, 6), sharex=True)
-        axes = [None, *axes]
-        axes[1].plot(x, [row.A for row in r.rows], "o-", color="tab:green",
-                     label=L("t2_plot_A_areas"))
-        axes[1].set_ylabel(L("t2_plot_A_axis"))
-        axes[1].legend()
-        axes[2].plot(x, [row.omega for row in r.rows], "o-", color="tab:red",
-                     label=L("t2_plot_omega_areas"))
-    ax = axes[2]
-    ax.axhline(r.omega_mean, color="grey", linestyle="--", linewidth=0.8,
-               label=L("t2_plot_omega_mean"))
-    ax.set_ylabel(L("t2_plot_omega_axis"))
-    axes[-1].set_xlabel(L("t2_plot_phi_axis")
-                        if r.driving is not None or not math.isnan(r.rows[0].phi)
-                        else L("t2_plot_crossing_no"))
-    ax.legend()
-    for a in axes:
-        if a is not None:
-            a.grid(True, alpha=0.3)
-    fig.suptitle(title or L("t2_plot_title", delta=f"{r.delta:.6g}", dT=f"{r.delta_T_max:.6g}"))
-    fig.tight_layout()
+    """M_D, M_C, A and ω against φ [deg] into an image file (a pyplot-free matplotlib figure in
+    render/figure.py's fixed style, laid out by matplotlib's constrained layout, the legends
+    inside the axes); labels in ``lang``, the symbols' subscripts (M_Д, ω_ср, ε_max) as
+    mathtext (mathfmt.sub_mathtext), units as the other figures write them ("ω, рад/с")."""
     import os
     from pathlib import Path
 
-    from flywheel.render.figure import SVG_SALT, stable_metadata
+    import matplotlib
+    from matplotlib.figure import Figure
 
-    fmt = Path(path).suffix.lower()[1:] if isinstance(path, (str, os.PathLike)) else ""
-    with matplotlib.rc_context({"svg.hashsalt": SVG_SALT}):      # SVG, PDF: same bytes on a rerun
-        fig.savefig(path, dpi=100, **stable_metadata(fmt))
-    plt.close(fig)
+    from flywheel.constant_inertia.solve import sample
+    from flywheel.render import figure as fg
+    from flywheel.render.mathfmt import sub_mathtext
+
+    def L(key: str, **fields) -> str:
+        return sub_mathtext(nm.name(key, lang, **fields))
+
+    with fg.style():
+        if r.driving is not None:
+            s = sample(r)
+            x = [math.degrees(p) for p in s["phi"]]
+            fig = Figure(figsize=(8, 10.5), dpi=100, layout="constrained")
+            axes = fig.subplots(4, 1, sharex=True)
+            ax = axes[3]
+            ax.plot(x, s["epsilon"], color="tab:purple", label=L("t2_plot_epsilon"))
+            ax.axhline(0.0, color="grey", linewidth=0.6)
+            for value, phi, key, marker in ((r.epsilon_max, r.phi_epsilon_max,
+                                             "t2_plot_epsilon_max", "^"),
+                                            (r.epsilon_min, r.phi_epsilon_min,
+                                             "t2_plot_epsilon_min", "v")):
+                ax.plot([math.degrees(phi)], [value], marker, color="tab:purple",
+                        label=L(key, value=f"{value:.4g}", deg=f"{math.degrees(phi):.4g}"))
+            ax.set_ylabel(L("t2_plot_epsilon_axis"))
+            ax.legend(fontsize=8)
+            ax = axes[0]
+            ax.plot(x, s["M_D"], label=L("t2_plot_MD"))
+            ax.plot(x, s["M_C"], label=L("t2_plot_MC"))
+            ax.set_ylabel(L("t2_plot_moment"))
+            ax.legend()
+            axes[1].plot(x, s["A"], color="tab:green", label=L("t2_plot_A"))
+            axes[1].set_ylabel(L("t2_plot_A_axis"))
+            axes[1].legend()
+            axes[2].plot(x, s["omega"], color="tab:red", label=L("t2_plot_omega"))
+        else:
+            known = not math.isnan(r.rows[0].phi)
+            x = [math.degrees(row.phi) if known else i for i, row in enumerate(r.rows)]
+            fig = Figure(figsize=(8, 6), dpi=100, layout="constrained")
+            axes = [None, *fig.subplots(2, 1, sharex=True)]
+            axes[1].plot(x, [row.A for row in r.rows], "o-", color="tab:green",
+                         label=L("t2_plot_A_areas"))
+            axes[1].set_ylabel(L("t2_plot_A_axis"))
+            axes[1].legend()
+            axes[2].plot(x, [row.omega for row in r.rows], "o-", color="tab:red",
+                         label=L("t2_plot_omega_areas"))
+        ax = axes[2]
+        ax.axhline(r.omega_mean, color="grey", linestyle="--", linewidth=0.8,
+                   label=L("t2_plot_omega_mean"))
+        ax.set_ylabel(L("t2_plot_omega_axis"))
+        ax.ticklabel_format(axis="y", useOffset=False)      # 200.01, not "+2e2" and 0.01
+        phi_known = r.driving is not None or not math.isnan(r.rows[0].phi)
+        axes[-1].set_xlabel(L("t2_plot_phi_axis") if phi_known else L("t2_plot_crossing_no"))
+        if phi_known:
+            axes[-1].set_xticks(range(0, 361, 30))
+        ax.legend()
+        for a in axes:
+            if a is not None:
+                a.grid(True, alpha=0.3)
+        fig.suptitle(title or L("t2_plot_title", delta=f"{r.delta:.4g}",
+                                dT=f"{r.delta_T_max:.4g}"))
+        from flywheel.render.figure import SVG_SALT, stable_metadata
+
+        fmt = Path(path).suffix.lower()[1:] if isinstance(path, (str, os.PathLike)) else ""
+        kw = {"metadata": {"Software": None}} if fmt == "png" else stable_metadata(fmt)
+        with matplotlib.rc_context({"svg.hashsalt": SVG_SALT}):  # SVG, PDF: same bytes on a rerun
+            fig.savefig(path, dpi=100, **kw)
