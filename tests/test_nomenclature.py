@@ -91,14 +91,19 @@ def test_families_and_headings():
     assert nm.name("M gravity 2", "ru") == "приведённый момент: сила тяжести звена 2"
     assert nm.heading("dJ_II", "en") == "dJ_II/dφ [kg·m²/rad]"
     assert nm.heading("omega_q", "ru") == "ω_q"                       # dimensionless: no unit
-    assert nm.axis("phi_deg", "en") == r"$\varphi$, °"
-    assert nm.axis("omega_mean", "en") == r"$\omega_m$, rad/s"
+    assert nm.axis("phi_deg", "en") == r"$\varphi$ [deg]"
+    assert nm.axis("omega_mean", "en") == r"$\omega_m$ [rad/s]"
     assert nm.axis("omega_mean", "ru") == r"$\omega_{ср}$, рад/с"
     assert nm.legend("A_D", "ru") == "$A_Д$: работа движущих сил"
     assert nm.name_tex("J_II", "en") == r"reduced moment of inertia of the second group $J_{II}$"
     assert nm.position_label("0° = 3 outer d.c.", "en") == "0° = 3 outer d.c."
     with pytest.raises(KeyError, match="not in the nomenclature"):
         nm.term("no such quantity")
+
+
+COMMA_UNIT = (r",\s*(°|deg|rad|rad/s|rad/s²|kg|kg·m²|N|N·m|J|W|Pa|MPa|m|mm|m/s|m/s²|s|"
+              r"\(m/s\)/mm|\(m/s²\)/mm|N/mm)\s*$")
+"""An English label in the Russian style 'ω, rad/s' (English writes 'ω [rad/s]')."""
 
 
 def _figure_texts(fig) -> list[str]:
@@ -110,8 +115,9 @@ def _figure_texts(fig) -> list[str]:
 
 @pytest.mark.parametrize("lang", ["en", "ru"])
 def test_figure_text_has_no_literal_underscores_and_one_unit_style(lang):
-    """Every figure: a symbol with a subscript is mathtext, never 'J_II' as typed; units
-    as 'symbol, unit', never '[deg]', '[rad/s]'; in Russian no English unit."""
+    """Every figure: a symbol with a subscript is mathtext, never 'J_II' as typed; one unit
+    style per language (issue 15): Russian 'ω, рад/с' (never brackets, no English unit),
+    English 'ω [rad/s]' (never 'ω, rad/s')."""
     from flywheel.render.plots import all_figures
 
     r = analyze(load_case(ROOT / "cases" / "compressor.toml"), n_points=360, transients=True)
@@ -121,9 +127,11 @@ def test_figure_text_has_no_literal_underscores_and_one_unit_style(lang):
             for text in _figure_texts(fig):
                 plain = re.sub(r"\$[^$]*\$", "", text)
                 assert "_" not in plain, (name, text)
-                assert not re.search(r"\[[^\]]*\]", plain.replace("[motor]", "")), (name, text)
                 if lang == "ru":
+                    assert not re.search(r"\[[^\]]*\]", plain.replace("[motor]", "")), (name, text)
                     assert not re.search(r"\b(rad|kg|deg|MPa|N·m)\b", plain), (name, text)
+                else:
+                    assert not re.search(COMMA_UNIT, plain), (name, text)
         finally:
             fig.clear()
 

@@ -7,6 +7,8 @@ import subprocess
 import sys
 from pathlib import Path
 
+import re
+
 import pytest
 
 from flywheel import analyze, load_case
@@ -58,9 +60,10 @@ def _check_common(fig, results, lang="en"):
     assert axes
     titles = [ax.get_title() for ax in axes] + [fig.get_suptitle()]
     assert any(results.title in t for t in titles)
+    unit = r".+ \[[^\]]+\]|.+, \S+"       # "name [unit]" (English), "name, unit" (Russian)
     for ax in axes:
-        assert ax.get_ylabel().rsplit(", ", 1)[-1].strip() not in ("", ax.get_ylabel())  # "name, unit"
-    assert any(", " in ax.get_xlabel() for ax in axes)
+        assert re.fullmatch(unit, ax.get_ylabel()), ax.get_ylabel()
+    assert any(re.fullmatch(unit, ax.get_xlabel()) for ax in axes)
     assert _legend_texts(fig)
     if lang == "ru":
         assert any(any("а" <= ch <= "я" for ch in t) for t in titles)
@@ -148,8 +151,8 @@ def test_positions(results, made):
     assert _legend_texts(fig)[:4] == ["$x_{A}$", "$x_{S2}$", "$x_{C}$", "$x_{S4}$"]
     assert [t.get_text() for t in ax_y.get_legend().get_texts()] == [
         "$y_{A}$", "$y_{B}$", "$y_{S2}$", "$y_{S4}$"]
-    assert ax_s.get_ylabel() == "$S$, m"
-    assert ax_s.get_xlabel() == r"$\varphi$, °"
+    assert ax_s.get_ylabel() == "$S$ [m]"
+    assert ax_s.get_xlabel() == r"$\varphi$ [deg]"
     assert len(ax_s.lines) == 2                       # sliders 3 and 5
     for line in ax_s.lines:                           # each travel spans the stroke 2·l1
         y = line.get_ydata()
@@ -163,14 +166,14 @@ def test_analogues(results, made):
     made(fig)
     top, bottom = fig.axes
     assert len(top.lines) == 5                        # A, B, S2, C, S4
-    assert top.get_ylabel().endswith(", m/rad")
+    assert top.get_ylabel().endswith(" [m/rad]")
     assert [t.get_text() for t in bottom.get_legend().get_texts()] == [
         r"$\omega_q$ link 2", r"$\omega_q$ link 4"]
     fig = plots.figure_acceleration_analogues(results)
     made(fig)
     top, bottom = fig.axes
-    assert top.get_ylabel().endswith(", m/rad²")
-    assert bottom.get_ylabel().endswith(", 1/rad")
+    assert top.get_ylabel().endswith(" [m/rad²]")
+    assert bottom.get_ylabel().endswith(" [1/rad]")
 
 
 def test_J_II(results, made):
@@ -179,8 +182,8 @@ def test_J_II(results, made):
     top, bottom = fig.axes
     # J_II, the four links' shares, the mean
     assert len(top.get_legend().get_texts()) == 1 + len(results.J_parts) + 1
-    assert top.get_ylabel().endswith(", kg·m²")
-    assert bottom.get_ylabel().endswith(", kg·m²/rad")
+    assert top.get_ylabel().endswith(" [kg·m²]")
+    assert bottom.get_ylabel().endswith(" [kg·m²/rad]")
 
 
 def test_indicator(results, made):
@@ -189,7 +192,7 @@ def test_indicator(results, made):
     made(fig)
     ax = fig.axes[0]
     assert "cylinder LP" in ax.get_title()
-    assert ax.get_xlabel() == "$s$, –"
+    assert ax.get_xlabel() == "$s$ [–]"
     texts = _legend_texts(fig)
     assert texts == ["piston moving towards the head", "piston moving away from the head",
                      "table points: towards the head", "table points: away from the head"]
@@ -198,7 +201,7 @@ def test_indicator(results, made):
     # the curves are what the program used: the grid's p/p_max, every node once
     curves = [ln for ln in ax.lines if ln.get_linestyle() == "-" and len(ln.get_xdata()) > 20]
     assert sum(len(c.get_xdata()) for c in curves) == results.phi.size
-    assert [a.get_ylabel() for a in ax.child_axes] == ["$p$, MPa"]     # secondary axis
+    assert [a.get_ylabel() for a in ax.child_axes] == ["$p$ [MPa]"]     # secondary axis
 
 
 def test_piston_forces_mark_the_report_angle(results, made):
@@ -208,7 +211,7 @@ def test_piston_forces_mark_the_report_angle(results, made):
     # seed 000 prints F_B(120°) = 2993 N, F_C(120°) = 3957 N
     assert "HP at φ = 120°: 2993 N" in texts
     assert "LP at φ = 120°: 3957 N" in texts
-    assert fig.axes[0].get_ylabel() == "$F$, N"
+    assert fig.axes[0].get_ylabel() == "$F$ [N]"
 
 
 def test_reduced_moments(results, made):
@@ -221,7 +224,7 @@ def test_reduced_moments(results, made):
     m_d = results.scalars["balancing_moment"]
     assert any(t.startswith(f"$M_D$ = {m_d:.5g} N·m") for t in texts)
     assert len(bottom.get_legend().get_texts()) == 4   # gravity of links 2..5
-    assert top.get_ylabel().endswith(", N·m")
+    assert top.get_ylabel().endswith(" [N·m]")
 
 
 def test_works_marks_the_extremes_of_delta_T_I(results, made):
@@ -237,7 +240,7 @@ def test_works_marks_the_extremes_of_delta_T_I(results, made):
             rf"{sc['phi_delta_T_I_min_deg']:.1f}°") in texts
     marker = next(ln for ln in ax.lines if ln.get_marker() == "^")
     assert marker.get_xdata()[0] == pytest.approx(sc["phi_delta_T_I_max_deg"])
-    assert ax.get_ylabel() == "work, energy, J"
+    assert ax.get_ylabel() == "work, energy [J]"
 
 
 def test_omega(results, made):
@@ -249,13 +252,13 @@ def test_omega(results, made):
     levels = sorted(ln.get_ydata()[0] for ln in ax.lines if len(ln.get_ydata()) == 2)
     sc = results.scalars
     assert levels == pytest.approx(sorted([sc["omega_min"], sc["omega_mean"], sc["omega_max"]]))
-    assert ax.get_ylabel() == r"$\omega$, rad/s"
+    assert ax.get_ylabel() == r"$\omega$ [rad/s]"
 
 
 def test_epsilon(results, made):
     fig = plots.figure_epsilon(results)
     made(fig)
-    assert fig.axes[0].get_ylabel() == r"$\varepsilon$, rad/s²"
+    assert fig.axes[0].get_ylabel() == r"$\varepsilon$ [rad/s²]"
     assert len(fig.axes[0].lines) == 2                 # ε and the zero line
 
 
@@ -264,7 +267,7 @@ def test_scheme(results, made):
     made(fig)
     (ax,) = _data_axes(fig)
     assert ax.get_aspect() == 1.0
-    assert (ax.get_xlabel(), ax.get_ylabel()) == ("$x$, m", "$y$, m")
+    assert (ax.get_xlabel(), ax.get_ylabel()) == ("$x$ [m]", "$y$ [m]")
     labels = {t.get_text() for t in ax.texts}
     assert {"O", "A", "B", "C", "S2", "S4"} <= labels          # every named point
     assert {"1", "2", "3", "4", "5"} <= labels                  # every link

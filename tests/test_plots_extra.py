@@ -65,7 +65,7 @@ def _check_energy_mass(results, lang="en"):
         assert len(dims) == 1
         assert any(x.get_text().startswith(f"$J_I$ = {s['J_required_exact']:.5g}") for x in full.texts)
         assert zoom.get_xlabel() == J_axis
-        assert merz.get_xlabel() == nm.axis("phi_deg", lang) == r"$\varphi$, °"
+        assert merz.get_xlabel() == nm.axis("phi_deg", lang) == (r"$\varphi$, °" if lang == "ru" else r"$\varphi$ [deg]")
         assert r"$\Delta T_{нб}$" in " ".join(x.get_text() for x in merz.get_legend().get_texts())
     finally:
         plots_extra._plt().close(fig)

@@ -114,9 +114,9 @@ def test_plot_structure(monkeypatch):
     assert mt("M_D (driving)") in labels and mt("M_C (resistance)") in labels and "ω(φ)" in labels
     assert not [x for x in labels                  # "_child1": matplotlib's unnamed lines
                 if "_" in x.replace(r"$_\mathregular", "") and not x.startswith("_child")]
-    # units as every figure writes them: "ω, rad/s" (tests/test_nomenclature.py)
-    assert axes[2].get_ylabel() == "ω, rad/s"
-    assert axes[3].get_xlabel() == "φ, °" and axes[3].get_ylabel() == "ε, rad/s²"
+    # units as every English figure writes them: "ω [rad/s]" (tests/test_nomenclature.py)
+    assert axes[2].get_ylabel() == "ω [rad/s]"
+    assert axes[3].get_xlabel() == "φ [deg]" and axes[3].get_ylabel() == "ε [rad/s²]"
     # the ε curve is (M_D − M_C)/J: 15/12 outside the triangle, (15 − 60)/12 at its apex;
     # its extremes are marked where the result puts them
     eps = next(line for line in axes[3].get_lines()

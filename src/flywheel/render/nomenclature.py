@@ -560,22 +560,22 @@ TERMS: dict[str, Term] = {
                       "средняя мощность P = {P} Вт при ω_ср: среднее {name} = P/ω_ср = {T} Н·м"),
     # -- task 2: the plot ----------------------------------------------------------------------
     "t2_plot_epsilon": _ci("ε", "rad/s²", "ε(φ) = (M_D − M_C)/J", "ε(φ) = (M_Д − M_С)/J_пр"),
-    "t2_plot_epsilon_axis": _ci("ε", "rad/s²", "ε, rad/s²", "ε, рад/с²"),
+    "t2_plot_epsilon_axis": _ci("ε", "rad/s²", "ε [rad/s²]", "ε, рад/с²"),
     "t2_plot_epsilon_max": _ci("ε_max", "rad/s²", "ε_max = {value} rad/s² at {deg}°",
                                  "ε_max = {value} рад/с² при {deg}°"),
     "t2_plot_epsilon_min": _ci("ε_min", "rad/s²", "ε_min = {value} rad/s² at {deg}°",
                                  "ε_min = {value} рад/с² при {deg}°"),
     "t2_plot_MD": _ci("M_D", "N·m", "M_D (driving)", "M_Д (движущий)", "M_Д"),
     "t2_plot_MC": _ci("M_C", "N·m", "M_C (resistance)", "M_С (сопротивления)", "M_С"),
-    "t2_plot_moment": _ci("M", "N·m", "moment, N·m", "момент, Н·м"),
+    "t2_plot_moment": _ci("M", "N·m", "moment [N·m]", "момент, Н·м"),
     "t2_plot_A": _ci("A", "J", "A(φ) = ∫(M_D − M_C) dφ", "A(φ) = ∫(M_Д − M_С) dφ"),
-    "t2_plot_A_axis": _ci("A", "J", "A, J", "A, Дж"),
+    "t2_plot_A_axis": _ci("A", "J", "A [J]", "A, Дж"),
     "t2_plot_omega": _ci("ω", "rad/s", "ω(φ)", "ω(φ)"),
     "t2_plot_A_areas": _ci("", "", "energy at the crossings", "энергия в точках пересечения"),
     "t2_plot_omega_areas": _ci("", "", "ω at the crossings", "ω в точках пересечения"),
     "t2_plot_omega_mean": _ci("ω_ср", "rad/s", "ω_ср", "ω_ср"),
-    "t2_plot_omega_axis": _ci("ω", "rad/s", "ω, rad/s", "ω, рад/с"),
-    "t2_plot_phi_axis": _ci("φ", "deg", "φ, °", "φ, °"),
+    "t2_plot_omega_axis": _ci("ω", "rad/s", "ω [rad/s]", "ω, рад/с"),
+    "t2_plot_phi_axis": _ci("φ", "deg", "φ [deg]", "φ, °"),
     "t2_plot_crossing_no": _ci("", "", "crossing number", "номер пересечения"),
     "t2_plot_title": _ci("", "", "task 2: δ = {delta}, ΔT_нб = {dT} J",
                            "задача 2: δ = {delta}, ΔT_нб = {dT} Дж"),
@@ -699,11 +699,11 @@ TERMS: dict[str, Term] = {
     "ag_plot_omega1": _ci("ω1", "rad/s", "ω1, {name}", "ω1, {name}"),
     "ag_plot_omegaN": _ci("ω", "rad/s", "ω{n}, {name} (reduced to shaft I)",
                             "ω{n}, {name} (приведена к валу I)"),
-    "ag_plot_omega_axis": _ci("ω", "rad/s", "ω, rad/s", "ω, рад/с"),
+    "ag_plot_omega_axis": _ci("ω", "rad/s", "ω [rad/s]", "ω, рад/с"),
     "ag_plot_moment": _ci("M_у", "N·m", "elastic moment c·(φ1 − φ2) = −c·q2",
                             "упругий момент c·(φ1 − φ2) = −c·q2"),
-    "ag_plot_moment_axis": _ci("M", "N·m", "moment, N·m", "момент, Н·м"),
-    "ag_plot_t_axis": _ci("t", "s", "t, s", "t, с"),
+    "ag_plot_moment_axis": _ci("M", "N·m", "moment [N·m]", "момент, Н·м"),
+    "ag_plot_t_axis": _ci("t", "s", "t [s]", "t, с"),
     "ag_plot_title": _ci("", "", "machine aggregate", "машинный агрегат"),
     # -- the four-stroke indicator diagram (render/plots_engine.py) ---------------------------
     "engine_intake": _ci("", "", "intake", "впуск"),
@@ -715,7 +715,7 @@ TERMS: dict[str, Term] = {
                          "относительное перемещение поршня s от головки"),
     "engine_p_axis": _ci("p/p_max", "", "p / p_max", "p / p_max"),
     "engine_p_MPa": _ci("p", "MPa", "p, MPa (gauge)", "p, МПа (избыточное)"),
-    "engine_phi": _ci("φ", "deg", "crank angle φ, °", "угол поворота кривошипа φ, °"),
+    "engine_phi": _ci("φ", "deg", "crank angle φ [deg]", "угол поворота кривошипа φ, °"),
     "engine_title": _ci("", "", "{t}: four-stroke indicator diagram, cylinder {c}",
                         "{t}: индикаторная диаграмма четырёхтактного цилиндра {c}"),
     "engine_fires": _ci("", "deg", "fires at {a:.1f}°", "воспламенение при {a:.1f}°"),
@@ -739,7 +739,7 @@ TERMS: dict[str, Term] = {
     "forces_plot_bearing": _ci("", "", r"load on the main bearing $R_{10}$",
                                r"нагрузка на коренной подшипник $R_{10}$"),
     "forces_plot_shaking": _ci("", "", "shaking force on the frame", "сила, действующая на стойку"),
-    "forces_plot_curve": _ci("", "", "over the cycle, labels: φ, °", "за цикл, подписи: φ, °"),
+    "forces_plot_curve": _ci("", "", "over the cycle, labels: φ [deg]", "за цикл, подписи: φ, °"),
     "forces_plot_origin": _ci("", "", "origin (zero force)", "начало координат (нулевая сила)"),
 }
 
@@ -860,10 +860,12 @@ def si_unit(key: str) -> str:
 
 
 def with_unit(label: str, u: str, lang: str = "en") -> str:
-    """A figure's label and its unit in the figures' one style, the course's: "ω, рад/с",
-    "ω, rad/s" (tests/test_nomenclature.py holds every figure to it); ``u`` as printed in
-    ``lang`` already."""
-    return f"{label}, {u}"
+    """A figure's label and its unit in the figures' one style per language: Russian as the
+    course writes it, "ω, рад/с"; English as the text tables and CSV headers do, "ω [rad/s]"
+    (tests/test_nomenclature.py holds every figure to it); ``u`` as printed in ``lang`` already."""
+    if lang == "ru":
+        return f"{label}, {u}"
+    return f"{label} [{'deg' if u == '°' else u}]"
 
 
 def axis(key: str, lang: str = "en", si: str | None = None) -> str:

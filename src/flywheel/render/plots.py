@@ -51,7 +51,7 @@ _TEXT = {
         "M_const": "{M} = {v:.5g} {u} (constant, balances the cycle)",
         "M_sum": "{M}: total",
         "works": "works and kinetic energies",
-        "W_axis": "work, energy, {u}",
+        "W_axis": "work, energy [{u}]",
         "extreme": "{s} = {v:.5g} {u} at φ = {a:.1f}°",
         "omega": r"angular velocity of the crank $\omega(\varphi)$",
         "w": r"$\omega(\varphi)$ with {J} by Merzalov, δ = {d:.4g}",

@@ -16,7 +16,7 @@ from flywheel.render import nomenclature as nm
 # (render/nomenclature.py), filled in where the templates say {…}.
 TEXT = {
     "en": {"em": "Energy–mass diagram (Wittenbauer) and Merzalov's {dT}",
-           "T": r"$\Delta T = A(\varphi)$, {u}",
+           "T": r"$\Delta T = A(\varphi)$ [{u}]",
            "curve": r"$\Delta T(J_{{II}})$ over the cycle", "tan_max": r"tangent at $\psi_{{max}}$",
            "tan_min": r"tangent at $\psi_{{min}}$", "tan_slope": "{tan}: {w}²/2 = {k:.5g} {uJ}/({uI})",
            "origin": "origin of the full-energy axes (−{J}, −{T})",
