@@ -188,8 +188,8 @@ def write_folder(target: Path, build, marker: str, kind: str = "output",
         if earlier is None:
             raise InputError(f"--out {target}: the folder exists, is not empty and is not an "
                              f"earlier {kind} folder of flywheel (no {MANIFEST}); give a new or "
-                             f"empty folder (in an {kind} folder a rerun replaces only the "
-                             f"files flywheel wrote)")
+                             f"empty folder (in {'an' if kind[0] in 'aeiou' else 'a'} {kind} folder "
+                             f"a rerun replaces only the files flywheel wrote)")
     parent = target.resolve().parent
     try:
         parent.mkdir(parents=True, exist_ok=True)
