@@ -598,6 +598,11 @@ FOUND = (
     ("task2", "task2_khurmi_16_6", (), ("--out", "{out}", "--report", "md"),
      "KeyError: 'M_D' is not in the nomenclature: the report of a task-2 case whose driving "
      "moment is found from the cycle balance"),
+    ("run", "compressor", (Edit("scale", ("cylinders", 0, "towards_head", 9), 1e300),
+                           Edit("give", ("flywheel",), {"mass": 100.0, "radius_of_gyration": 0.2})),
+     ("--transients",),
+     "RuntimeError 'the machine stopped inside a cycle' (exit 1): p/p_max = 3.5e299 accepted, a "
+     "given flywheel too small to average ω_m reported with δ = 2 and ω_max = 5.5e150 rad/s"),
 )
 
 
