@@ -154,6 +154,12 @@ def main() -> None:
                          f"input): {what}; please report it with the command and its input "
                          f"files{'' if _Options.debug else ' (--debug shows the traceback)'}\n")
         sys.exit(1)
+    finally:
+        # the command is over (its outputs whole, or none): a Ctrl-C during the interpreter's
+        # exit (atexit: the plot workers joined) is too late to stop anything and would print
+        # "Exception ignored in atexit callback" with a traceback; SIGTERM ends it silently
+        signal.signal(signal.SIGINT, signal.SIG_IGN)
+        signal.signal(signal.SIGTERM, signal.SIG_DFL)
 
 
 if __name__ == "__main__":  # pragma: no cover
