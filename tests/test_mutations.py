@@ -52,7 +52,7 @@ from pathlib import Path
 
 import pytest
 import tomli_w
-from hypothesis import HealthCheck, event, given, note, settings
+from hypothesis import HealthCheck, event, given, note, seed, settings
 from hypothesis import strategies as st
 from typer.testing import CliRunner
 
@@ -62,6 +62,7 @@ ROOT = Path(__file__).resolve().parents[1]
 CASES = ROOT / "cases"
 EXAMPLES = int(os.environ.get("FLYWHEEL_MUTATIONS", "300"))
 SURVEY = os.environ.get("FLYWHEEL_MUTATIONS_SURVEY", "")
+SEED = os.environ.get("FLYWHEEL_MUTATIONS_SEED", "")     # another set of mutants (by hand)
 TIME_LIMIT = 20                      # s per mutant
 MEMORY_LIMIT = 3 * 2 ** 30           # bytes of address space a mutant may add
 FACTORS = (0.0, -1.0, 1e-300, 1e300, math.nan, math.inf, 1e6, 0.01, 0.5, 3.0)
@@ -544,12 +545,15 @@ def check(kind: str, case: str, eds: list[Edit], options: tuple = ()) -> None:
 
 
 def _mutation_test(kind: str):
-    @settings(max_examples=_examples(kind), derandomize=True, database=None, deadline=None,
+    @settings(max_examples=_examples(kind), derandomize=not SEED, database=None, deadline=None,
               suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large],
               print_blob=False)
     @given(cases_and_edits(kind))
     def test(case_and_edits):
         check(kind, *case_and_edits)
+
+    if SEED:
+        test = seed(int(SEED))(test)
 
     test.__name__ = f"test_mutants_of_{kind}_cases"
     return test

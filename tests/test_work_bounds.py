@@ -219,6 +219,39 @@ def test_stiff_motor_start_up_is_computed_with_lsoda():
     np.testing.assert_allclose(r.startup.omega[:, -1], [1.05001871, 1.07353374], rtol=1e-7)
 
 
+def test_steady_check_lsoda_agrees_with_dop853():
+    """The steady check (5 forcing periods from the closed-form orbit) by LSODA and by DOP853,
+    where both run (ω_x = 100 rpm): the same speeds and twist to 1e-6 of their largest."""
+    from flywheel.elastic import timedomain as etd
+    from flywheel.elastic.forced import steady_state
+
+    ch, drive = _stiff_aggregate(100.0)
+    st = steady_state(ch, drive)
+    a = etd.steady_run(ch, drive, st, method="DOP853")
+    b = etd.steady_run(ch, drive, st, method="LSODA")
+    np.testing.assert_allclose(b.omega, a.omega, rtol=0, atol=1e-6 * np.max(np.abs(a.omega)))
+    np.testing.assert_allclose(b.twist, a.twist, rtol=0, atol=1e-6 * np.max(np.abs(a.twist)))
+
+
+def test_a_very_steep_motor_is_integrated_by_lsoda_in_both_runs():
+    """(mutation survey) rated_slip ×1e-4 in cases/aggregate.toml: ρ = 2.7e6 1/s; the steady
+    check's 2.2e5 explicit steps (inside the bound) took 14 s, now LSODA for both runs, in
+    about a second."""
+    import time
+
+    from flywheel.cases.aggregate import parse_aggregate_case, to_model
+    from flywheel.elastic.model import analyze
+    from flywheel.io.toml import read_toml
+
+    doc = read_toml(CASES / "aggregate.toml")
+    doc["motor"]["rated_slip"] *= 1e-4
+    ch, drive = to_model(parse_aggregate_case(doc, "c.toml"), "c.toml")
+    t0 = time.process_time()
+    r = analyze(ch, drive)
+    assert time.process_time() - t0 < 8
+    assert r.check.method == "LSODA" and r.startup.method == "LSODA"
+
+
 def test_bundled_aggregate_start_up_stays_explicit():
     from flywheel.cases.aggregate import load_aggregate_case, to_model
     from flywheel.elastic.model import analyze

@@ -272,9 +272,11 @@ def analyze(ch: Chain, drive: Drive | None = None, t_end: float | None = None,
     if method != "DOP853":
         notes.append(Note("radau", (("fast", fast), ("f_top", f_top),
                                     ("limit", CHECK_FAST_PERIODS))))
-    if method == "DOP853":
-        check_work(ch, drive, 5 * 2 * math.pi / st.omega_forcing, "steady check", modes=modes)
-    chk = steady_run(ch, drive, st, modes=modes)
+    if method == "DOP853":            # LSODA when stiff only by the motor or a damper
+        method = start_up_method(ch, drive, 5 * 2 * math.pi / st.omega_forcing, modes)
+        check_work(ch, drive, 5 * 2 * math.pi / st.omega_forcing, "steady check", modes=modes,
+                   method=method)
+    chk = steady_run(ch, drive, st, modes=modes, method=method)
     ch_twist = _amplitude(chk.twist[0])
     ch_delta = tuple(float(2 * _amplitude(chk.omega[k]) / st.omega_mean) for k in (0, -1))
     option = "" if t_end is None else "--t-end"

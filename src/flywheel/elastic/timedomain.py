@@ -36,6 +36,10 @@ MAX_FAST_PERIODS = 2000
 CHECK_FAST_PERIODS = 500
 #: the most steps an explicit integration may take (:func:`explicit_steps`), some 20 s
 MAX_STEPS = 250_000
+#: a run stiff only by ρ (:func:`start_up_method`): over this many explicit steps (~2 s) and this
+#: many times the steps that resolve the modes, LSODA instead
+STIFF_STEPS = 25_000
+STIFF_RATIO = 4.0
 
 
 def _highest(ch: Chain, modes: Modes | None) -> float:
@@ -115,13 +119,15 @@ def resolving_steps(ch: Chain, drive: Drive | None, t_end: float,
 
 def start_up_method(ch: Chain, drive: Drive | None, t_end: float,
                     modes: Modes | None = None) -> str:
-    """"DOP853" (explicit) while its estimated steps are at most MAX_STEPS; "LSODA" (stiff: the
-    constant Jacobian, steps still at most 1/8 of the highest natural period) when only the
-    stability limit ρ/6 puts it beyond and resolving the modes stays within MAX_STEPS; else
-    "DOP853" (and :func:`check_work` refuses it). LSODA and DOP853 agree to ~1e-8 where both run
+    """"LSODA" (stiff: the constant Jacobian, steps still at most 1/8 of the highest natural
+    period) when the explicit method would take more than STIFF_STEPS steps (~2 s), more than
+    STIFF_RATIO times those that resolve the modes (its stability limit ρ/6 sets the step), and
+    resolving them stays within MAX_STEPS; else "DOP853" (explicit; :func:`check_work` refuses
+    it beyond MAX_STEPS). LSODA and DOP853 agree to ~1e-8 where both run
     (tests/test_work_bounds.py)."""
     steps, _ = explicit_steps(ch, drive, t_end, modes)
-    if steps > MAX_STEPS and resolving_steps(ch, drive, t_end, modes) <= MAX_STEPS:
+    resolving = resolving_steps(ch, drive, t_end, modes)
+    if steps > STIFF_STEPS and steps > STIFF_RATIO * resolving and resolving <= MAX_STEPS:
         return "LSODA"
     return "DOP853"
 
@@ -228,18 +234,23 @@ def steady_method(ch: Chain, w: float, periods: float = 5.0,
 
 
 def steady_run(ch: Chain, drive: Drive, st: Steady, periods: float = 5.0,
-               per_period: int = 200, modes: Modes | None = None) -> History:
+               per_period: int = 200, modes: Modes | None = None,
+               method: str | None = None) -> History:
     """solve_ivp started on the closed-form periodic orbit (φ = θ + Im X, ω = ω_s + ω·Re X) over a
     few forcing periods: it must stay there (a check of the closed form). Explicit (DOP853) when
     that is at most CHECK_FAST_PERIODS periods of the highest natural frequency, else the implicit
     Radau method with the constant Jacobian (:func:`steady_method`): the cost is bounded either
-    way."""
+    way; LSODA when the explicit run is stiff only by ρ (:func:`start_up_method`). method: force
+    one."""
     w = st.omega_forcing
     phi0 = st.theta + st.X.imag
     omega0 = st.omega_mean + w * st.X.real
     t_end = periods * 2 * math.pi / w
     modes = modes or natural_frequencies(ch)
-    method, _ = steady_method(ch, w, periods, modes)
+    if method is None:
+        method, _ = steady_method(ch, w, periods, modes)
+        if method == "DOP853":
+            method = start_up_method(ch, drive, t_end, modes)
     return simulate(ch, drive, phi0, omega0, t_end, n_samples=int(periods * per_period) + 1,
                     method=method, modes=modes)
 
