@@ -693,15 +693,6 @@ TERMS: dict[str, Term] = {
                                "пуск: проинтегрирован за {t_end:.4g} с = {limit} периодов высшей "
                                "собственной частоты {f_top:.6g} Гц (предел), а не {wanted:.4g} с по "
                                "умолчанию (20 периодов возмущения); длительность задаёт --t-end"),
-    # --- mut ---
-    "note_lsoda": _ci("", "", "start-up: stiff (the fastest decay rate of the system {rho:.4g} 1/s, "
-                              "from the motor's slope or a damper): integrated with LSODA and the "
-                              "constant Jacobian, steps of at most 1/8 of the period of the highest "
-                              "natural frequency {f_top:.6g} Hz",
-                      "пуск: жёсткая система (наибольшая скорость затухания {rho:.4g} 1/с — от "
-                      "наклона характеристики двигателя или демпфера): интегрирование методом "
-                      "LSODA с постоянной матрицей Якоби, шаг не больше 1/8 периода высшей "
-                      "собственной частоты {f_top:.6g} Гц"),
     # -- aggregate: the plot ---------------------------------------------------------------------
     "ag_plot_startup": _ci("", "", "start-up", "пуск"),
     "ag_plot_steady": _ci("", "", "steady state", "установившийся режим"),
@@ -750,6 +741,15 @@ TERMS: dict[str, Term] = {
     "forces_plot_shaking": _ci("", "", "shaking force on the frame", "сила, действующая на стойку"),
     "forces_plot_curve": _ci("", "", "over the cycle, labels: φ, °", "за цикл, подписи: φ, °"),
     "forces_plot_origin": _ci("", "", "origin (zero force)", "начало координат (нулевая сила)"),
+    # --- mut ---
+    "note_lsoda": _ci("", "", "start-up: stiff (the fastest decay rate of the system {rho:.4g} 1/s, "
+                              "from the motor's slope or a damper): integrated with LSODA and the "
+                              "constant Jacobian, steps of at most 1/8 of the period of the highest "
+                              "natural frequency {f_top:.6g} Hz",
+                      "пуск: жёсткая система (наибольшая скорость затухания {rho:.4g} 1/с — от "
+                      "наклона характеристики двигателя или демпфера): интегрирование методом "
+                      "LSODA с постоянной матрицей Якоби, шаг не больше 1/8 периода высшей "
+                      "собственной частоты {f_top:.6g} Гц"),
 }
 
 # the load names inside "M {load}": "gas HP", "gravity 2", "force punch", "couple c", "moment m"
