@@ -295,3 +295,23 @@ def test_a_ctrl_c_while_the_interpreter_exits_prints_no_traceback():
                          capture_output=True, text=True, timeout=60)
     assert res.returncode == 0 and "Traceback" not in res.stderr, res.stderr
     assert json.loads(res.stdout)
+
+
+def test_an_error_raised_while_a_ctrl_c_unwinds_is_the_interruption(monkeypatch, capsys):
+    """A library's clean-up that fails while a Ctrl-C unwinds it (matplotlib: "Invalid bounding
+    box" in a sheet's figure, seen once by hand) is the interruption: one line, exit 130, not
+    "internal error … a bug"."""
+    import flywheel.cli as cli
+
+    def interrupted(*a, **k):
+        try:
+            raise cli.Stopped(signal.SIGINT)
+        finally:
+            raise ValueError("Invalid bounding box")
+
+    monkeypatch.setattr(cli, "app", interrupted)
+    monkeypatch.setattr(signal, "signal", lambda *a: None)   # leave pytest's handlers alone
+    with pytest.raises(SystemExit) as e:
+        cli.main()
+    assert e.value.code == 130
+    assert capsys.readouterr().err == "error: interrupted (Ctrl-C)\n"
