@@ -166,6 +166,113 @@ def test_aggregate_t_end_beyond_the_limit_names_the_option():
         analyze(ch, drive, t_end=t_end)
 
 
+# -- a stiff start-up: LSODA instead of a refusal ---------------------------------------------------
+
+def _stiff_aggregate(synchronous_rpm: float):
+    from flywheel.cases.aggregate import parse_aggregate_case, to_model
+    from flywheel.io.toml import read_toml
+
+    doc = read_toml(CASES / "aggregate.toml")
+    doc["motor"]["synchronous_rpm"] = synchronous_rpm
+    return to_model(parse_aggregate_case(doc, "c.toml"), "c.toml")
+
+
+@pytest.mark.parametrize("rpm, t_end", [(100.0, 3.0), (10.0, 1.5)])
+def test_stiff_start_up_lsoda_agrees_with_dop853(rpm, t_end):
+    """Where both run, LSODA (the constant Jacobian, the same largest step) gives the explicit
+    DOP853's start-up: speeds to 2e-5 of their largest (measured 9e-6), the twist and its peak
+    moment to 1e-6 (measured 2–3e-7), both at rtol 1e-9 (a motor of ω_x = 100 rpm:
+    ρ = 4e3 1/s; of 10 rpm: ρ = 4e4 1/s, the state matrix's largest |eigenvalue|)."""
+    from flywheel.elastic import timedomain as etd
+
+    ch, drive = _stiff_aggregate(rpm)
+    explicit = etd.start_up(ch, drive, t_end, method="DOP853")
+    stiff = etd.start_up(ch, drive, t_end, method="LSODA")
+    assert explicit.method == "DOP853" and stiff.method == "LSODA"
+    scale = np.max(np.abs(explicit.omega))
+    np.testing.assert_allclose(stiff.omega, explicit.omega, rtol=0, atol=2e-5 * scale)
+    tw = np.max(np.abs(explicit.twist))
+    np.testing.assert_allclose(stiff.twist, explicit.twist, rtol=0, atol=1e-6 * tw)
+    peak = lambda h: np.max(np.abs(ch.c[0] * h.twist[0]))  # noqa: E731
+    assert peak(stiff) == pytest.approx(peak(explicit), rel=1e-6)
+
+
+def test_stiff_motor_start_up_is_computed_with_lsoda():
+    """synchronous_rpm = 10 in cases/aggregate.toml: DOP853 would take ~4.6e5 steps over the
+    default 68.3 s (refused before; measured: 37 s of computing, peak elastic moment 296.463 N·m,
+    ω at the end 1.05002 and 1.07353 rad/s); LSODA resolves the modes in ~2e4 steps, in about a
+    second, to the same values, and says so in a note."""
+    import time
+
+    from flywheel.elastic import timedomain as etd
+    from flywheel.elastic.model import analyze
+
+    ch, drive = _stiff_aggregate(10.0)
+    t_end, _ = etd.start_up_duration(ch, drive)
+    assert etd.explicit_steps(ch, drive, t_end)[0] > etd.MAX_STEPS
+    assert etd.start_up_method(ch, drive, t_end) == "LSODA"
+    t0 = time.process_time()
+    r = analyze(ch, drive)
+    assert time.process_time() - t0 < 10
+    assert r.startup.method == "LSODA" and any(n.kind == "lsoda" for n in r.notes)
+    assert r.startup_peak_moment == pytest.approx(296.46334131193504, rel=1e-6)  # DOP853's
+    np.testing.assert_allclose(r.startup.omega[:, -1], [1.05001871, 1.07353374], rtol=1e-7)
+
+
+def test_steady_check_lsoda_agrees_with_dop853():
+    """The steady check (5 forcing periods from the closed-form orbit) by LSODA and by DOP853,
+    where both run (ω_x = 100 rpm): the same speeds and twist to 1e-6 of their largest."""
+    from flywheel.elastic import timedomain as etd
+    from flywheel.elastic.forced import steady_state
+
+    ch, drive = _stiff_aggregate(100.0)
+    st = steady_state(ch, drive)
+    a = etd.steady_run(ch, drive, st, method="DOP853")
+    b = etd.steady_run(ch, drive, st, method="LSODA")
+    np.testing.assert_allclose(b.omega, a.omega, rtol=0, atol=1e-6 * np.max(np.abs(a.omega)))
+    np.testing.assert_allclose(b.twist, a.twist, rtol=0, atol=1e-6 * np.max(np.abs(a.twist)))
+
+
+def test_a_very_steep_motor_is_integrated_by_lsoda_in_both_runs():
+    """(mutation survey) rated_slip ×1e-4 in cases/aggregate.toml: ρ = 2.7e6 1/s; the steady
+    check's 2.2e5 explicit steps (inside the bound) took 14 s, now LSODA for both runs, in
+    about a second."""
+    import time
+
+    from flywheel.cases.aggregate import parse_aggregate_case, to_model
+    from flywheel.elastic.model import analyze
+    from flywheel.io.toml import read_toml
+
+    doc = read_toml(CASES / "aggregate.toml")
+    doc["motor"]["rated_slip"] *= 1e-4
+    ch, drive = to_model(parse_aggregate_case(doc, "c.toml"), "c.toml")
+    t0 = time.process_time()
+    r = analyze(ch, drive)
+    assert time.process_time() - t0 < 8
+    assert r.check.method == "LSODA" and r.startup.method == "LSODA"
+
+
+def test_bundled_aggregate_start_up_stays_explicit():
+    from flywheel.cases.aggregate import load_aggregate_case, to_model
+    from flywheel.elastic.model import analyze
+
+    ch, drive = to_model(load_aggregate_case(CASES / "aggregate.toml"), "aggregate.toml")
+    r = analyze(ch, drive)
+    assert r.startup.method == "DOP853" and not any(n.kind == "lsoda" for n in r.notes)
+
+
+def test_stiff_start_up_beyond_the_resolving_steps_is_still_refused():
+    """LSODA too resolves every mode: a --t-end whose modes need more than MAX_STEPS steps is
+    refused as before, naming the option."""
+    from flywheel.elastic import timedomain as etd
+    from flywheel.elastic.model import analyze
+
+    ch, drive = _stiff_aggregate(10.0)
+    t_end = 1.2 * etd.MAX_STEPS / etd.resolving_steps(ch, drive, 1.0)
+    with pytest.raises(InputError, match=rf"^--t-end: .* more than the limit of {etd.MAX_STEPS}"):
+        analyze(ch, drive, t_end=t_end)
+
+
 # -- progress ------------------------------------------------------------------------------------
 
 def test_progress_of_run_transients_is_monotone_per_stage():

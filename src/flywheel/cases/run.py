@@ -739,7 +739,12 @@ def _check_references(case: Case) -> None:
                                                         f"(sliders: {', '.join(sorted(sliders)) or 'none'})")
     for i, c in enumerate(case.cylinders):
         for key, values in c.tables().items():
-            low = min(values)
+            low, high = min(values), max(values)
+            if not high <= 1 + 1e-9:          # (mut) 1e300 here overflowed the energy silently
+                raise FieldError(("cylinders", i) + c.table_loc(key),
+                                 f"p/p_max = {high:g} is above 1: p_max = {c.p_max:g} Pa is the "
+                                 f"largest pressure of the diagram (allowed: −0.101325 MPa/p_max "
+                                 f"… 1; to go higher, raise p_max)")
             if low * c.p_max < -ATM:
                 raise FieldError(("cylinders", i) + c.table_loc(key),
                                  f"p/p_max = {low:g} gives "

@@ -106,6 +106,30 @@ def _stop(signum, frame) -> None:
     raise Stopped(signum)
 
 
+def _stopped(exc: Stopped) -> None:
+    """One line and exit 130 (Ctrl-C) or 143 (SIGTERM)."""
+    import signal
+    import sys
+
+    signal.signal(signal.SIGINT, signal.SIG_IGN)     # a second Ctrl-C: no traceback
+    name = "interrupted (Ctrl-C)" if exc.signum == signal.SIGINT else "terminated (SIGTERM)"
+    sys.stderr.write(f"error: {name}\n")
+    sys.exit(128 + exc.signum)
+
+
+def _stop_in_chain(exc: BaseException) -> Stopped | None:
+    """The Stopped an exception was raised while handling (a library's ``finally`` or
+    ``except`` that failed on the way out of a Ctrl-C: matplotlib's "Invalid bounding box" when
+    a sheet's figure was interrupted), if any."""
+    seen = set()
+    while exc is not None and id(exc) not in seen:
+        if isinstance(exc, Stopped):
+            return exc
+        seen.add(id(exc))
+        exc = exc.__cause__ or exc.__context__
+    return None
+
+
 def _is_usage_error(exc: Exception) -> bool:
     """A command-line usage error of the parser (an unknown option, a value of the wrong
     type, a missing argument): typer's vendored click raises these with exit code 2."""
@@ -130,11 +154,11 @@ def main() -> None:
         os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
         sys.exit(141)
     except Stopped as exc:
-        signal.signal(signal.SIGINT, signal.SIG_IGN)     # a second Ctrl-C: no traceback
-        name = "interrupted (Ctrl-C)" if exc.signum == signal.SIGINT else "terminated (SIGTERM)"
-        sys.stderr.write(f"error: {name}\n")
-        sys.exit(128 + exc.signum)
+        _stopped(exc)
     except Exception as exc:                  # not the user's input: a bug of flywheel
+        cause = _stop_in_chain(exc)
+        if cause is not None:                 # raised by a library's clean-up of the Ctrl-C
+            _stopped(cause)
         if _is_usage_error(exc):
             if type(exc).__name__ == "NoArgsIsHelpError":
                 sys.exit(0)                   # the help is printed already
@@ -158,6 +182,12 @@ def main() -> None:
                          f"input): {what}; please report it with the command and its input "
                          f"files{'' if _Options.debug else ' (--debug shows the traceback)'}\n")
         sys.exit(1)
+    finally:
+        # the command is over (its outputs whole, or none): a Ctrl-C during the interpreter's
+        # exit (atexit: the plot workers joined) is too late to stop anything and would print
+        # "Exception ignored in atexit callback" with a traceback; SIGTERM ends it silently
+        signal.signal(signal.SIGINT, signal.SIG_IGN)
+        signal.signal(signal.SIGTERM, signal.SIG_DFL)
 
 
 if __name__ == "__main__":  # pragma: no cover

@@ -241,7 +241,17 @@ def given_flywheel_delta(en: EnergyResult, red: ReductionResult, machine, J_give
         raise InputError("the machine has no inertia (allowed: a flywheel.J > 0, masses in "
                          "[links] or machine.first_group)")
     T0 = motion.T0_for_mean_speed(en.A, J_I, red.J_II, machine.omega_mean)
-    return float(motion.speed_fluctuation(motion.omega_from_energy(T0, en.A, J_I, red.J_II))[3])
+    _, _, wm, delta = motion.speed_fluctuation(motion.omega_from_energy(T0, en.A, J_I, red.J_II))
+    if not abs(wm - machine.omega_mean) <= 1e-6 * machine.omega_mean:
+        # ω_min → 0 and still (ω_max + ω_min)/2 > ω_m: no steady motion at this mean speed
+        raise InputError(f"the given flywheel (J = {J_given:.6g} kg·m²) is too small for these "
+                         f"loads: the energy change over the cycle, {float(np.ptp(en.A)):.4g} J, "
+                         f"stops the machine before it can average ω_m = "
+                         f"{machine.omega_mean:.6g} rad/s — no steady motion exists (allowed: a "
+                         f"J_I + J_II of at least about "
+                         f"{float(np.ptp(en.A)) / (2 * machine.omega_mean ** 2):.4g} kg·m² on "
+                         f"the crank shaft: a larger flywheel.J, or smaller loads)")
+    return float(delta)
 
 
 def dynamics(phi: np.ndarray, loads: LoadsResult, red: ReductionResult, machine,

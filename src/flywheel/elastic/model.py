@@ -55,6 +55,7 @@ from flywheel.elastic.chain import Chain, Drive, coefficients
 from flywheel.elastic.forced import Steady, steady_state
 from flywheel.elastic.modes import Modes, Node, mode_nodes, natural_frequencies
 from flywheel.elastic.timedomain import (CHECK_FAST_PERIODS, MAX_FAST_PERIODS, History, check_work,
+                                         explicit_steps, start_up_method,
                                          start_up,
                                          start_up_duration, steady_method, steady_run)
 from flywheel.errors import InputError
@@ -79,6 +80,9 @@ NOTE_TEXT = {
               "frequency {f_top:.6g} Hz, more than the explicit method's {limit}: integrated with "
               "the implicit Radau method and the constant Jacobian, which follows the forced "
               "motion but damps that mode's own oscillation"),
+    "lsoda": ("start-up: stiff (the fastest decay rate of the system {rho:.4g} 1/s, from the "
+              "motor's slope or a damper): integrated with LSODA and the constant Jacobian, steps "
+              "of at most 1/8 of the period of the highest natural frequency {f_top:.6g} Hz"),
     "cap_linear": ("start-up: integrated over {t_end:.4g} s = {limit} periods of the highest "
                    "natural frequency {f_top:.6g} Hz (the cap), not the default {wanted:.4g} s "
                    "(the longer of five time constants and 20 forcing periods); --t-end sets the "
@@ -93,7 +97,8 @@ NOTE_TEXT = {
 class Note:
     """What the reader should know about how a time-domain run was bounded. kind : "radau" (the
     steady check integrated implicitly), "cap_linear" or "cap_constant" (the start-up capped at
-    MAX_FAST_PERIODS periods of the highest natural frequency; by the motor's kind); values :
+    MAX_FAST_PERIODS periods of the highest natural frequency; by the motor's kind), "lsoda" (the
+    start-up stiff, integrated by LSODA: rho [1/s]); values :
     the numbers it states, (name, value) pairs: fast [periods], f_top [Hz], limit [periods],
     t_end and wanted [s]."""
 
@@ -267,9 +272,11 @@ def analyze(ch: Chain, drive: Drive | None = None, t_end: float | None = None,
     if method != "DOP853":
         notes.append(Note("radau", (("fast", fast), ("f_top", f_top),
                                     ("limit", CHECK_FAST_PERIODS))))
-    if method == "DOP853":
-        check_work(ch, drive, 5 * 2 * math.pi / st.omega_forcing, "steady check", modes=modes)
-    chk = steady_run(ch, drive, st, modes=modes)
+    if method == "DOP853":            # LSODA when stiff only by the motor or a damper
+        method = start_up_method(ch, drive, 5 * 2 * math.pi / st.omega_forcing, modes)
+        check_work(ch, drive, 5 * 2 * math.pi / st.omega_forcing, "steady check", modes=modes,
+                   method=method)
+    chk = steady_run(ch, drive, st, modes=modes, method=method)
     ch_twist = _amplitude(chk.twist[0])
     ch_delta = tuple(float(2 * _amplitude(chk.omega[k]) / st.omega_mean) for k in (0, -1))
     option = "" if t_end is None else "--t-end"
@@ -279,8 +286,12 @@ def analyze(ch: Chain, drive: Drive | None = None, t_end: float | None = None,
             notes.append(Note("cap_linear" if drive.kind == "linear" else "cap_constant",
                               (("t_end", t_end), ("limit", MAX_FAST_PERIODS), ("f_top", f_top),
                                ("wanted", wanted))))
-    check_work(ch, drive, t_end, "start-up", option, modes)
-    su = start_up(ch, drive, t_end, modes=modes,
+    su_method = start_up_method(ch, drive, t_end, modes)
+    check_work(ch, drive, t_end, "start-up", option, modes, su_method)
+    if su_method != "DOP853":
+        notes.append(Note("lsoda", (("rho", explicit_steps(ch, drive, t_end, modes)[1]),
+                                    ("f_top", f_top))))
+    su = start_up(ch, drive, t_end, modes=modes, method=su_method,
                   progress=None if progress is None else (lambda f: progress("start-up", f)))
     peak = float(np.max(np.abs(ch.c[0] * su.twist[0])))
     reached = np.nonzero(su.omega[0] >= 0.95 * st.omega_mean)[0]

@@ -9,7 +9,11 @@ from the caller (computed once, :func:`flywheel.elastic.modes.natural_frequencie
 each function computes them itself. scipy is imported inside the function that uses it.
 
 Every explicit integration is estimated before it starts (:func:`explicit_steps`) and refused
-beyond :data:`MAX_STEPS` steps (about 20 s of computing) with one line that says what to change;
+beyond :data:`MAX_STEPS` steps (about 20 s of computing) with one line that says what to change —
+except a start-up that is stiff only (a steep motor characteristic on a light rotor, a strong
+damper: the state matrix's largest |eigenvalue| ρ, not a fast mode, sets the explicit step): it is
+integrated by LSODA with the constant Jacobian and the same largest step, 1/8 of the highest
+natural period, so it still resolves every mode (:func:`start_up_method`);
 ``simulate`` reports ``progress(fraction)`` (the simulated time over t_end, 0 … 1, never
 decreasing) to a plain callable.
 """
@@ -32,6 +36,10 @@ MAX_FAST_PERIODS = 2000
 CHECK_FAST_PERIODS = 500
 #: the most steps an explicit integration may take (:func:`explicit_steps`), some 20 s
 MAX_STEPS = 250_000
+#: a run stiff only by ρ (:func:`start_up_method`): over this many explicit steps (~2 s) and this
+#: many times the steps that resolve the modes, LSODA instead
+STIFF_STEPS = 25_000
+STIFF_RATIO = 4.0
 
 
 def _highest(ch: Chain, modes: Modes | None) -> float:
@@ -101,12 +109,37 @@ def explicit_steps(ch: Chain, drive: Drive | None, t_end: float,
     return t_end * max(1.7 * fastest, rho / 6.0), rho
 
 
+def resolving_steps(ch: Chain, drive: Drive | None, t_end: float,
+                    modes: Modes | None = None) -> float:
+    """The steps over ``t_end`` [s] that resolving the system's oscillations takes whatever the
+    method (:func:`explicit_steps` without the stability limit): 1.7·max(ω_top, ω_forcing)·t_end."""
+    w = drive.forcing_ratio * drive.steady_speed() if drive is not None else 0.0
+    return t_end * 1.7 * max(_highest(ch, modes), w)
+
+
+def start_up_method(ch: Chain, drive: Drive | None, t_end: float,
+                    modes: Modes | None = None) -> str:
+    """"LSODA" (stiff: the constant Jacobian, steps still at most 1/8 of the highest natural
+    period) when the explicit method would take more than STIFF_STEPS steps (~2 s), more than
+    STIFF_RATIO times those that resolve the modes (its stability limit ρ/6 sets the step), and
+    resolving them stays within MAX_STEPS; else "DOP853" (explicit; :func:`check_work` refuses
+    it beyond MAX_STEPS). LSODA and DOP853 agree to ~1e-8 where both run
+    (tests/test_work_bounds.py)."""
+    steps, _ = explicit_steps(ch, drive, t_end, modes)
+    resolving = resolving_steps(ch, drive, t_end, modes)
+    if steps > STIFF_STEPS and steps > STIFF_RATIO * resolving and resolving <= MAX_STEPS:
+        return "LSODA"
+    return "DOP853"
+
+
 def check_work(ch: Chain, drive: Drive | None, t_end: float, what: str, option: str = "",
-               modes: Modes | None = None) -> None:
-    """Refuse (InputError) an explicit integration over ``t_end`` that would take more than
-    MAX_STEPS steps, naming ``option`` (e.g. "--t-end") when the user chose the duration, else
-    what makes the system stiff."""
+               modes: Modes | None = None, method: str = "DOP853") -> None:
+    """Refuse (InputError) an integration over ``t_end`` that would take more than MAX_STEPS
+    steps, naming ``option`` (e.g. "--t-end") when the user chose the duration, else what makes
+    the system stiff. method "LSODA" (stiff): only the steps that resolve the modes count."""
     steps, rho = explicit_steps(ch, drive, t_end, modes)
+    if method == "LSODA":
+        steps = resolving_steps(ch, drive, t_end, modes)
     if steps <= MAX_STEPS:
         return
     motor_rate = drive.slope / ch.J[0] if drive is not None and drive.kind == "linear" else 0.0
@@ -136,7 +169,8 @@ def simulate(ch: Chain, drive: Drive | None, phi0, omega0, t_end: float, n_sampl
     F: the motor torque M_Д(φ̇_1) on the first rotor, −(M_0·i31 + M̃·i31·sin(ω_III·t)) on the last
     (9.20), ω_III = forcing_ratio × the steady speed (the seed's linear model); drive None: free.
     method "DOP853" (explicit) takes steps of at most 1/8 of the shortest period, the highest
-    natural frequency's or the forcing's; "Radau" (implicit, for a stiff system: a torsional mode
+    natural frequency's or the forcing's, and so does "LSODA" (for a system stiff by its motor or
+    damper, not by a fast mode: the constant Jacobian A); "Radau" (implicit, for a stiff system: a torsional mode
     far faster than the forcing) gets the constant Jacobian and steps of at most 1/8 of the forcing
     period — it follows the forced motion but damps a mode's own oscillation it does not resolve.
     ``progress(fraction)``: t/t_end as the integration advances (non-decreasing, every 1 %).
@@ -161,6 +195,8 @@ def simulate(ch: Chain, drive: Drive | None, phi0, omega0, t_end: float, n_sampl
     t_eval = np.linspace(0.0, t_end, n_samples)
     if method == "Radau":
         opts = {"jac": A, "max_step": 2 * math.pi / max(w, 1e-300) / 8}
+    elif method == "LSODA":
+        opts = {"jac": lambda t, y: A, "max_step": 2 * math.pi / fastest / 8}
     else:
         opts = {"max_step": 2 * math.pi / fastest / 8}
     with np.errstate(all="ignore"):
@@ -198,18 +234,23 @@ def steady_method(ch: Chain, w: float, periods: float = 5.0,
 
 
 def steady_run(ch: Chain, drive: Drive, st: Steady, periods: float = 5.0,
-               per_period: int = 200, modes: Modes | None = None) -> History:
+               per_period: int = 200, modes: Modes | None = None,
+               method: str | None = None) -> History:
     """solve_ivp started on the closed-form periodic orbit (φ = θ + Im X, ω = ω_s + ω·Re X) over a
     few forcing periods: it must stay there (a check of the closed form). Explicit (DOP853) when
     that is at most CHECK_FAST_PERIODS periods of the highest natural frequency, else the implicit
     Radau method with the constant Jacobian (:func:`steady_method`): the cost is bounded either
-    way."""
+    way; LSODA when the explicit run is stiff only by ρ (:func:`start_up_method`). method: force
+    one."""
     w = st.omega_forcing
     phi0 = st.theta + st.X.imag
     omega0 = st.omega_mean + w * st.X.real
     t_end = periods * 2 * math.pi / w
     modes = modes or natural_frequencies(ch)
-    method, _ = steady_method(ch, w, periods, modes)
+    if method is None:
+        method, _ = steady_method(ch, w, periods, modes)
+        if method == "DOP853":
+            method = start_up_method(ch, drive, t_end, modes)
     return simulate(ch, drive, phi0, omega0, t_end, n_samples=int(periods * per_period) + 1,
                     method=method, modes=modes)
 
@@ -228,20 +269,25 @@ def start_up_duration(ch: Chain, drive: Drive, modes: Modes | None = None) -> tu
 
 def start_up(ch: Chain, drive: Drive, t_end: float | None = None, n_samples: int = 4001,
              modes: Modes | None = None,
-             progress: Callable[[float], None] | None = None) -> History:
+             progress: Callable[[float], None] | None = None,
+             method: str | None = None) -> History:
     """From rest, all twists zero (linear motor), or from the nominal speed with the load applied
     at t = 0 (constant torque, which has no start-up of its own). Default duration:
     :func:`start_up_duration`. Explicit (DOP853): the start-up excites the torsional modes, and
-    their peak moment is what it is for."""
+    their peak moment is what it is for; LSODA when that is stiff (:func:`start_up_method`), with
+    the same largest step. method: force one."""
     omega_s = drive.steady_speed()
     modes = modes or natural_frequencies(ch)
     if t_end is None:
         t_end, _ = start_up_duration(ch, drive, modes)
+    if method is None:
+        method = start_up_method(ch, drive, t_end, modes)
     v0 = 0.0 if drive.kind == "linear" else omega_s
     return simulate(ch, drive, np.zeros(ch.n), np.full(ch.n, v0), t_end, n_samples=n_samples,
-                    modes=modes, progress=progress)
+                    modes=modes, progress=progress, method=method)
 
 
 __all__ = ["MAX_FAST_PERIODS", "CHECK_FAST_PERIODS", "MAX_STEPS", "explicit_steps", "check_work",
+           "resolving_steps", "start_up_method",
            "History", "state_space", "simulate",
            "energy", "steady_method", "steady_run", "start_up_duration", "start_up"]

@@ -189,8 +189,9 @@ def write_folder(target: Path, build, marker: str, kind: str = "output",
         if earlier is None:
             raise InputError(Notice(
                 f"--out {target}: the folder exists, is not empty and is not an earlier {kind} "
-                f"folder of flywheel (no {MANIFEST}); give a new or empty folder (in an {kind} "
-                f"folder a rerun replaces only the files flywheel wrote)", "out_not_ours",
+                f"folder of flywheel (no {MANIFEST}); give a new or empty folder (in "
+                f"{'an' if kind[0] in 'aeiou' else 'a'} {kind} folder a rerun replaces only the "
+                f"files flywheel wrote)", "out_not_ours",
                 target=str(target), folder_kind=kind, manifest=MANIFEST))
     parent = target.resolve().parent
     try:

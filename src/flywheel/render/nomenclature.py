@@ -741,6 +741,15 @@ TERMS: dict[str, Term] = {
     "forces_plot_shaking": _ci("", "", "shaking force on the frame", "сила, действующая на стойку"),
     "forces_plot_curve": _ci("", "", "over the cycle, labels: φ [deg]", "за цикл, подписи: φ, °"),
     "forces_plot_origin": _ci("", "", "origin (zero force)", "начало координат (нулевая сила)"),
+    # --- mut ---
+    "note_lsoda": _ci("", "", "start-up: stiff (the fastest decay rate of the system {rho:.4g} 1/s, "
+                              "from the motor's slope or a damper): integrated with LSODA and the "
+                              "constant Jacobian, steps of at most 1/8 of the period of the highest "
+                              "natural frequency {f_top:.6g} Hz",
+                      "пуск: жёсткая система (наибольшая скорость затухания {rho:.4g} 1/с — от "
+                      "наклона характеристики двигателя или демпфера): интегрирование методом "
+                      "LSODA с постоянной матрицей Якоби, шаг не больше 1/8 периода высшей "
+                      "собственной частоты {f_top:.6g} Гц"),
 }
 
 # the load names inside "M {load}": "gas HP", "gravity 2", "force punch", "couple c", "moment m"

@@ -180,11 +180,11 @@ def build_task2_document(r, title: str, source: str, lang: str = "en",
     # 3. solution -----------------------------------------------------------------------------
     add(Heading(2, t["solution"]))
     if r.unknown:
-        name = symbol({"resistance": "M_C", "driving": "t2_M_D"}[r.unknown], lang)
+        name = symbol({"resistance": "t2_M_C", "driving": "t2_M_D"}[r.unknown], lang)
         val = r.M_C if r.unknown == "resistance" else r.M_D
         add(Paragraph(text("t2_balance", lang, name=name, value=g(val), work=g(r.work_driving))))
     if r.power_found is not None and r.power is not None:
-        name = symbol("t2_M_D" if r.power_found == "driving" else "M_C", lang)
+        name = symbol("t2_M_D" if r.power_found == "driving" else "t2_M_C", lang)
         add(Paragraph(text("t2_power", lang, P=g(r.power), name=name, T=g(r.power / r.omega_mean))))
     if not r.steady:
         add(Paragraph(t["steady_no"].format(work=g(r.work_end), omega_end=g(r.omega_end, ".6f"))))
