@@ -62,3 +62,19 @@ class Document:
     @property
     def headings(self) -> list[Heading]:
         return [b for b in self.blocks if isinstance(b, Heading)]
+
+    def add_table(self, caption: str, header, rows) -> None:
+        """Append a table numbered after the document's tables so far; cells as strings."""
+        self.blocks.append(Table(len(self.tables) + 1, caption, tuple(header),
+                                 tuple(tuple(str(c) for c in r) for r in rows)))
+
+    @classmethod
+    def titled(cls, heading: str, title: str, source: str, source_word: str,
+               lang: str) -> "Document":
+        """A document opened as every command's записка opens: "<heading>: <title>" as its
+        first heading, then "<source_word>: <source>" when a source is given."""
+        doc = cls(title or heading, lang)
+        doc.blocks.append(Heading(1, f"{heading}: {title}" if title else heading))
+        if source:
+            doc.blocks.append(Paragraph(f"{source_word}: {source}"))
+        return doc

@@ -13,7 +13,7 @@ from __future__ import annotations
 
 import math
 
-from flywheel.render.document import Bullets, Document, Figure, Formula, Heading, Paragraph, Table
+from flywheel.render.document import Bullets, Document, Figure, Formula, Heading, Paragraph
 from flywheel.render.nomenclature import name as text, rotor_name, unit
 
 FIGURE = "aggregate.png"
@@ -105,18 +105,11 @@ def build_aggregate_document(r, title: str, source: str, lang: str = "en",
     def U(u: str) -> str:
         return unit(u, lang)
 
-    doc = Document(title or t["title"], lang)
+    doc = Document.titled(t["title"], title, source, t["source"], lang)
     add = doc.blocks.append
-    n_tab = [0]
 
     def table(caption, header, rows):
-        n_tab[0] += 1
-        add(Table(n_tab[0], caption[:1].upper() + caption[1:], tuple(header),
-                  tuple(tuple(str(c) for c in x) for x in rows)))
-
-    add(Heading(1, f"{t['title']}: {title}" if title else t["title"]))
-    if source:
-        add(Paragraph(f"{t['source']}: {source}"))
+        doc.add_table(caption[:1].upper() + caption[1:], header, rows)
 
     # 1. given data ---------------------------------------------------------------------------
     ch = r.chain

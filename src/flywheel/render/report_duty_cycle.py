@@ -11,7 +11,7 @@ result's document (``DutyCycleResult.to_document()``).
 from __future__ import annotations
 
 from flywheel.render import nomenclature as nm
-from flywheel.render.document import Bullets, Document, Formula, Heading, Paragraph, Table
+from flywheel.render.document import Bullets, Document, Formula, Heading, Paragraph
 from flywheel.render.duty_cycle import summary_tables
 
 T = {
@@ -46,18 +46,8 @@ def build_duty_cycle_document(r, title: str, source: str, lang: str = "en") -> D
     """The записка of one duty-cycle result."""
     t = T[lang]
     d = r.to_document()
-    doc = Document(title or t["title"], lang)
-    add = doc.blocks.append
-    n = 0
-
-    def table(caption, header, rows):
-        nonlocal n
-        n += 1
-        add(Table(n, caption, tuple(header), tuple(tuple(x) for x in rows)))
-
-    add(Heading(1, f"{t['title']}: {title}" if title else t["title"]))
-    if source:
-        add(Paragraph(f"{t['source']}: {source}"))
+    doc = Document.titled(t["title"], title, source, t["source"], lang)
+    add, table = doc.blocks.append, doc.add_table
     add(Heading(2, t["method"]))
     add(Paragraph(t["method_note"]))
     MD = r"M_{\text{Д}}" if lang == "ru" else r"M_{D}"

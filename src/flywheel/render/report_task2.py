@@ -16,7 +16,7 @@ from __future__ import annotations
 
 import math
 
-from flywheel.render.document import Bullets, Document, Figure, Formula, Heading, Paragraph, Table
+from flywheel.render.document import Bullets, Document, Figure, Formula, Heading, Paragraph
 from flywheel.render.nomenclature import name as text, symbol, unit
 
 FIGURE = "task2.png"
@@ -115,17 +115,8 @@ def build_task2_document(r, title: str, source: str, lang: str = "en",
     def U(u: str) -> str:
         return unit(u, lang)
 
-    doc = Document(title or t["title"], lang)
-    add = doc.blocks.append
-    n_tab = [0]
-
-    def table(caption, header, rows):
-        n_tab[0] += 1
-        add(Table(n_tab[0], caption, tuple(header), tuple(tuple(x) for x in rows)))
-
-    add(Heading(1, f"{t['title']}: {title}" if title else t["title"]))
-    if source:
-        add(Paragraph(f"{t['source']}: {source}"))
+    doc = Document.titled(t["title"], title, source, t["source"], lang)
+    add, table = doc.blocks.append, doc.add_table
 
     # 1. given data ---------------------------------------------------------------------------
     add(Heading(2, t["given"]))
