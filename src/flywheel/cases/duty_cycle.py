@@ -18,7 +18,7 @@ from pydantic import AfterValidator, Field
 from flywheel.duty_cycle import work as wk
 from flywheel.duty_cycle.solve import (DutyCycle, DutyCycleError, DutyCycleResult, Work,
                                        nonfinite, solve)
-from flywheel.errors import CaseFileError
+from flywheel.errors import CaseFileError, Notice, led, said
 from flywheel.io.schema import FieldError, StrictModel, describe, load, pick, validate
 
 RPM = math.pi / 30.0            # rev/min → rad/s
@@ -35,7 +35,9 @@ def _within(lo: float, hi: float, unit: str, lo_open: bool = False, hi_open: boo
             left = f"{lo:g} <" if lo_open else f"{lo:g} ≤"
             right = f"< {hi:g}" if hi_open else f"≤ {hi:g}"
             why = f": {above}" if above and v >= hi else ""
-            raise ValueError(f"{v:g}{u} is out of range{why} (allowed: {left} value {right}{u})")
+            raise ValueError(Notice(f"{v:g}{u} is out of range{why} (allowed: {left} value "
+                                    f"{right}{u})", "duty_out_of_range", x=v, unit=unit,
+                                    left=left, right=right, below_zero=bool(why)))
         return v
     return AfterValidator(check)
 
@@ -285,8 +287,10 @@ def _check_speed_pair(sp: Flywheel, speeds: list[str], flucts: list[str]) -> Non
     if "max" in level and "min" in level:
         (kx, vx), (kn, vn) = level["max"], level["min"]
         if not vn < vx:
-            raise FieldError(f"flywheel.{kn}", f"{vn:g} is not below {kx} = {vx:g} "
-                             f"(allowed: 0 < {kn} < {kx})")
+            raise FieldError(f"flywheel.{kn}", Notice(f"{vn:g} is not below {kx} = {vx:g} "
+                                                      f"(allowed: 0 < {kn} < {kx})",
+                                                      "speed_not_below", v=vn, other=kx, vo=vx,
+                                                      allowed=f"0 < {kn} < {kx}"))
     if "mean" in level and "max" in level:
         (km, vm), (kx, vx) = level["mean"], level["max"]
         if not vm < vx < 2 * vm:
@@ -296,8 +300,10 @@ def _check_speed_pair(sp: Flywheel, speeds: list[str], flucts: list[str]) -> Non
     if "mean" in level and "min" in level:
         (km, vm), (kn, vn) = level["mean"], level["min"]
         if not vn < vm:
-            raise FieldError(f"flywheel.{kn}", f"{vn:g} is not below {km} = {vm:g} "
-                             f"(allowed: 0 < {kn} < {vm:g})")
+            raise FieldError(f"flywheel.{kn}", Notice(f"{vn:g} is not below {km} = {vm:g} "
+                                                      f"(allowed: 0 < {kn} < {vm:g})",
+                                                      "speed_not_below", v=vn, other=km, vo=vm,
+                                                      allowed=f"0 < {kn} < {vm:g}"))
     if flucts == ["drop_percent"] and "max" not in level:
         raise FieldError("flywheel.drop_percent", "is a drop from the top speed: give it with "
                          "max_rpm, max_omega or max_rim_speed")
@@ -402,7 +408,7 @@ def solve_case(c: DutyCase, source: str = "<case>") -> DutyCycleResult:
     try:
         result = solve(to_duty_cycle(c))
     except DutyCycleError as exc:
-        raise CaseFileError(f"{source}: {exc.field}: {exc}") from None
+        raise CaseFileError(led(f"{source}: {exc.field}: ", said(exc))) from None
     except (ArithmeticError, ValueError) as exc:      # inputs near the limits of doubles
         raise CaseFileError(f"{source}: the values are too large or too small for double "
                             f"precision ({exc})") from None

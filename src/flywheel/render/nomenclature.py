@@ -1007,7 +1007,7 @@ PREFIXES = {"warning": ("warning", "предупреждение"), "note": ("no
 
 def _ru_params(code: str, p: dict) -> dict:
     """Parameters of a Notice that need words of their own in Russian."""
-    p = _msgs_ru_params(p)
+    p = _msgs2_ru_params(code, _msgs_ru_params(p))
     if code == "startup_not_steady":
         p["target"] = (f"{p['omega_pred']:.5g} рад/с" if p.get("omega_pred") is not None
                        else "нет: характеристика двигателя не может нести среднюю нагрузку")
@@ -1240,4 +1240,134 @@ def _msgs_ru_params(p: dict) -> dict:
         if "x" in p:                                         # out_of_range: "12 м/с"
             p["unit_ru"] = f" {p['unit_ru']}" if p["unit"] else ""
     p["got_ru"] = f" (задано {p['got']})" if p.get("got") else ""
+    return p
+
+
+# --- msgs2 ---
+# The cross-field checks of the case files (cases/*.py), the duty cycle's limits, in Russian.
+MESSAGES_RU.update({
+    # cases/run.py
+    "speed_rps_or_rpm": "задайте что-то одно: speed_rps или speed_rpm",
+    "point_to_or_distance": "задайте что-то одно: `to` (с fraction) или `distance` (с angle_deg)",
+    "link_mass_centroid": "у звена с массой должен быть задан `centroid`",
+    "strictly_increasing": "значения должны строго возрастать",
+    "values_per_s": "нужно {n} значений, по одному на каждое s (задано {count})",
+    "strokes_do_not_meet": ("начинается с p/p_max = {p_begin:g} при s = {at:g}, где {end} "
+                            "кончается на {p_end:g}: такты не смыкаются (скачок {jump:.4g}; "
+                            "допустимо: не больше join_tolerance = {tol:g}; подъём при вспышке "
+                            "задаётся в таблице расширения, сразу после s = 0)"),
+    "rim_inner_above_outer": "{inner:g} м — не меньше D = {D:g} м",
+    "rim_share_twice": ("при [flywheel.rim] доля задаётся как flywheel.rim.share (укажите её "
+                        "там)"),
+    "given_flywheel_forms": ("заданный маховик — что-то одно из: J, mass с radius_of_gyration, "
+                             "given_disk, given_rim (задано {forms})"),
+    "mass_radius_missing": "не задано: mass и radius_of_gyration задаются вместе (J = m·k²)",
+    "crank_length_missing": "не задано: укажите crank.length или design.mean_piston_speed",
+    "point_twice": "имя точки {name!r} уже занято",
+    "link_twice": "имя звена {name!r} уже занято",
+    "point_used_before": "точка {name!r} используется раньше, чем задана (заданы: {so_far})",
+    "link_not_defined": "звено {name!r} не задано (звенья: {links})",
+    "point_never_defined": "точка {name!r} нигде не задана",
+    "no_link_named": "нет звена {name!r} (звенья: {links})",
+    "point_not_defined": "точка {name!r} не задана",
+    "not_a_slider_of": "{name!r} — не ползун группы RRP (ползуны: {sliders_ru})",
+    "pressure_above_p_max": ("p/p_max = {high:g} больше 1: p_max = {p_max:g} Па — наибольшее "
+                             "давление диаграммы (допустимо: −0.101325 МПа/p_max … 1; чтобы "
+                             "поднять выше, увеличьте p_max)"),
+    "pressure_below_vacuum": ("p/p_max = {low:g} даёт {mpa:.4g} МПа избыточного давления, ниже "
+                              "абсолютного вакуума (допустимо: p ≥ −0.101325 МПа избыточного)"),
+    "not_a_slider": "{name!r} — не ползун группы RRP",
+    "s_range": "должно быть 0 ≤ from < to ≤ 1 (задано {lo}, {hi})",
+    "no_link": "нет звена {name!r}",
+    "load_twice": "имя нагрузки {name!r} встречается дважды",
+    "pin_twice": ("{angle:g}° ставит шейку {pin!r} туда, где уже {whom_ru} {name!r} (тот же "
+                  "угол и радиус): шейки под одним углом — одна шейка с одним именем (допустимо: "
+                  "присоедините шатуны к {name!r} или задайте другой угол)"),
+    "four_stroke_cycle": ("четырёхтактная диаграмма занимает 720° угла кривошипа, а цикл машины "
+                          "— {cycle:g}° (допустимо: machine.cycle_deg = 720 или кратное 720)"),
+    "firing_order_missing": ("нет цилиндра {name!r} (порядок работы перечисляет каждый "
+                             "четырёхтактный цилиндр один раз: {four})"),
+    "dyad_kind": "kind должно быть одним из: RRP, RRR, RPR",
+    # cases/rim.py
+    "rim_share": "{share:g} — не доля J маховика (допустимо: 0 < share ≤ 1)",
+    "rim_width_or_ratio": "задайте что-то одно: width или width_to_thickness",
+    "rim_speed_stress": ("{speed:g} м/с даёт окружное напряжение ρ·v² = {stress:.6g} МПа больше "
+                         "допускаемого {allowable:.6g} МПа ({material_ru}, ρ = {density:g} "
+                         "кг/м³) при любом диаметре (допустимо: не больше √(σ/ρ) = {top:.6g} "
+                         "м/с)"),
+    # cases/task2.py
+    "amount_word": "должно быть числом, \"balance\" или \"power\" (задано {value})",
+    "must_be_positive": "должно быть положительным (задано {v:g} {unit_ru})",
+    "task2_speed_one_of": ("задайте что-то одно: omega0, omega0_rpm, mean, mean_rpm или пределы "
+                           "max и min (или max_rpm и min_rpm){given_ru}"),
+    "task2_J_or_mass": "задайте что-то одно: J или mass с radius_of_gyration",
+    "mass_radius_together": "mass и radius_of_gyration задаются вместе (J = m·k²)",
+    "task2_delta_or_percent": "задайте что-то одно: delta или fluctuation_percent",
+    "diagram_or_graphs": "задайте что-то одно: [diagram] или [driving] и [resistance]",
+    "balance_once": ("\"balance\" может заменять лишь одно значение (другое уже задано так: "
+                     "{other})"),
+    "points_go_back": "угол {at:g}° идёт после {before:g}°: углы не должны убывать",
+    "points_third_value": ("третье значение при {at:g}°: у скачка их два (значение до и значение "
+                           "после него)"),
+    "points_span": "должно охватывать цикл 0…{cycle:g}° (охвачено {first:g}…{last:g}°)",
+    "from_to_deg": "нужно 0 ≤ from_deg < to_deg ≤ {cycle:g} (задано {start:g}, {end:g})",
+    "trapezoid_top": "нужно from_deg ≤ top_from_deg ≤ top_to_deg ≤ to_deg",
+    "orders_for_terms": "{orders} порядков гармоник на {terms} членов ряда",
+    "areas_do_not_close": ("сумма {total:.6g}, а не 0: за цикл площади над средней линией и под "
+                           "ней должны быть равны"),
+    # cases/tabulated.py
+    "positions_increase": "{at:g}° после {before:g}°: положения должны возрастать",
+    "values_per_position": ("нужно {n} значений, по одному на каждое положение positions_deg "
+                            "(задано {count})"),
+    "analogues_missing": ("аналогов скоростей точки {name!r} нет в [tabulated.points] (строки: "
+                          "{rows})"),
+    # cases/aggregate.py
+    "coupling_c_or_dL": "задайте что-то одно: c или d и L (с G)",
+    "shaft_G": ("не задано: с d и L нужен модуль сдвига G (например, 8.0e10 Па для стали)"),
+    "motor_J_missing": "не задано обязательное поле (J_Д, момент инерции ротора двигателя, кг·м²)",
+    "motor_torque_one_of": ("задайте что-то одно: starting_torque или rated_torque с "
+                            "rated_slip"),
+    "chain_or_two_mass": ("случай — либо двухмассовый агрегат ([coupling], [machine]), либо "
+                          "цепочка ([[rotors]], [[shafts]]), но не то и другое"),
+    "two_mass_needs": "не задано: двухмассовому агрегату нужны [motor], [coupling] и [machine]",
+    "J_III_missing": ("не задано: укажите J_III (J_пр.III, кг·м²) или J_III_0 с "
+                      "J_III_positions"),
+    "i21_missing": "не задано: маховику на валу II нужно i21 = ω_II/ω_I",
+    "fixed_end_shafts": ("не задано: неподвижный конец rotors[{k}] связан валом с ротором; "
+                         "задайте [[shafts]] (N роторам нужно N − 1 валов)"),
+    "aggregate_form": ("не задано: задайте двухмассовый агрегат ([motor], [coupling], [machine]) "
+                       "или цепочку ([[rotors]] и [[shafts]])"),
+    "two_rotors": "цепочке нужно не меньше двух роторов (задано {count})",
+    "shafts_count": "{rotors} роторам нужно {shafts} валов между ними (задано {count})",
+    "rotor_names": "имена роторов должны различаться",
+    "load_needs_motor": "не задано: для [load] нужен [motor] на первом роторе",
+    # cases/duty_cycle.py, duty_cycle/solve.py
+    "duty_out_of_range": ("{x:g}{unit_ru} вне допустимого диапазона{why_ru} (допустимо: {left} "
+                          "значение {right}{unit_ru})"),
+    "speed_not_below": "{v:g} — не меньше {other} = {vo:g} (допустимо: {allowed})",
+    "duty_flywheel_small": ("маховик слишком мал: чтобы отдать {need:.6g} Дж (ΔE) на каждую "
+                            "операцию, его скорость упала бы до нуля ({energy} = не больше "
+                            "{top:.6g} Дж); возьмите маховик больше"),
+})
+_MSGS2_DERIVED = {"sliders_ru", "whom_ru", "material_ru", "given_ru", "shafts", "why_ru"}
+_MSGS_DERIVED |= _MSGS2_DERIVED
+_WHOM_RU = {"the crank's tip": "конец кривошипа"}
+
+
+def _msgs2_ru_params(code: str, p: dict) -> dict:
+    """The Russian words of the msgs2 errors' parameters."""
+    if "sliders" in p:
+        p["sliders_ru"] = p["sliders"] or "нет"
+    if "whom" in p:
+        w = p["whom"]
+        p["whom_ru"] = _WHOM_RU.get(w, w.replace("pin (", "шейка ("))
+    if code == "rim_speed_stress":
+        p["material_ru"] = ("заданный материал" if p["material"] == "the given material"
+                            else material(p["material"], "ru"))
+    if "given" in p:
+        p["given_ru"] = f" (задано {p['given']})" if p["given"] else ""
+    if code == "shafts_count":
+        p["shafts"] = p["rotors"] - 1
+    if "below_zero" in p:
+        p["why_ru"] = ": скорость упала бы до нуля или ниже" if p["below_zero"] else ""
     return p
