@@ -45,7 +45,8 @@ def variants_command(
         fail(Notice(f"--seed: {seed} is not allowed (allowed: 0 … 2^63 − 1)",
                     "option_not_allowed", option="--seed", got=seed, allowed="0 … 2^63 − 1"))
     if points < 36:
-        fail(f"--points: {points} is too few (allowed: 36 or more)")
+        fail(Notice(f"--points: {points} is too few (allowed: 36 or more)", "points_too_few",
+                    n=points))
     if lang not in ("en", "ru"):
         fail(f"--lang: {lang!r} is not a language (allowed: en, ru)")
     if sheets_format not in ("both", "html", "pdf"):

@@ -1349,7 +1349,29 @@ MESSAGES_RU.update({
                             "операцию, его скорость упала бы до нуля ({energy} = не больше "
                             "{top:.6g} Дж); возьмите маховик больше"),
 })
-_MSGS2_DERIVED = {"sliders_ru", "whom_ru", "material_ru", "given_ru", "shafts", "why_ru"}
+MESSAGES_RU.update({
+    # the non-finite policy (cli/guard.py not_finite; constant_inertia/solve.py's details)
+    "not_finite": ("{who_ru}{quantity_ru} — не конечное число ({detail_ru}): значения выходят за "
+                   "пределы двойной точности (числа слишком велики или слишком малы)"),
+    "nf_power_moment": "средняя мощность даёт {which_ru} {x} Н·м",
+    "nf_balance_moment": "баланс работ за цикл даёт {which_ru} {x} Н·м",
+    "nf_work": "работа A(φ) = {x} Дж",
+    # the command-line options
+    "at_not_finite": "--at: {a} — не конечный угол в градусах",
+    "t_end_range": ("--t-end: {t:g} с вне допустимого диапазона (допустимо: 0 … {top:g} с; разгон "
+                    "длится от секунд до минуты, а время интегрирования растёт вместе с ним)"),
+    "too_many_steps": ("{cause}{task_ru} потребовал бы около {steps:.3g} шагов интегрирования "
+                       "({t_end:.4g} с; наибольшая скорость процессов системы {rate:.4g} 1/с), "
+                       "больше предела {top}: {fix_ru}"),
+    "plot_needs_motor": "--plot требует [motor]: у цепочки без двигателя нет движения во времени",
+    "plot_is_a_folder": "--plot {plot}: это папка, а нужен файл изображения",
+    "plot_cannot_write": "--plot {plot}: не удаётся записать изображение ({reason})",
+    "case_drops_options": "--case берёт данные из файла; уберите {used}",
+    "profile_choice": "--profile должно быть triangle или rectangle (задано {value})",
+    "from_to_cycle": "from и to должны лежать в пределах 0…360° (задано {start:g}°, {end:g}°)",
+    "points_too_few": "--points: {n} — слишком мало (допустимо: 36 и больше)",
+})
+_MSGS2_DERIVED = {"who_ru", "quantity_ru", "which_ru", "task_ru", "fix_ru", "sliders_ru", "whom_ru", "material_ru", "given_ru", "shafts", "why_ru"}
 _MSGS_DERIVED |= _MSGS2_DERIVED
 _WHOM_RU = {"the crank's tip": "конец кривошипа"}
 
@@ -1368,6 +1390,22 @@ def _msgs2_ru_params(code: str, p: dict) -> dict:
         p["given_ru"] = f" (задано {p['given']})" if p["given"] else ""
     if code == "shafts_count":
         p["shafts"] = p["rotors"] - 1
+    if code == "not_finite":
+        p["who_ru"] = f"{p['who']}: " if p["who"] else ""
+        p["quantity_ru"] = "результат" if p["quantity"] == "a result" else p["quantity"]
+    if "which" in p:
+        p["which_ru"] = {"resistance": "момент сопротивления",
+                         "driving": "движущий момент"}.get(p["which"], p["which"])
+    if code == "too_many_steps":
+        p["task_ru"] = {"start-up": "разгон", "steady check": "расчёт установившегося режима"
+                        }.get(p["task"], p["task"])
+        p["fix_ru"] = {
+            "option": f"задайте {p['option']} короче",
+            "motor": (f"характеристика двигателя крута для его ротора: M_п/ω_x на J_Д = "
+                      f"{p['motor_rate']:.3g} 1/с; более пологая (motor.synchronous_rpm, момент) "
+                      "или более тяжёлый ротор (J двигателя) делают задачу решаемой"),
+            "stiff": ("демпфер или вал такой жёсткости для этих роторов делают систему жёсткой "
+                      "(демпфирование, c)")}[p["fix_kind"]]
     if "below_zero" in p:
         p["why_ru"] = ": скорость упала бы до нуля или ниже" if p["below_zero"] else ""
     return p
