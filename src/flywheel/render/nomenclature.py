@@ -1371,7 +1371,37 @@ MESSAGES_RU.update({
     "from_to_cycle": "from и to должны лежать в пределах 0…360° (задано {start:g}°, {end:g}°)",
     "points_too_few": "--points: {n} — слишком мало (допустимо: 36 и больше)",
 })
-_MSGS2_DERIVED = {"who_ru", "quantity_ru", "which_ru", "task_ru", "fix_ru", "sliders_ru", "whom_ru", "material_ru", "given_ru", "shafts", "why_ru"}
+MESSAGES_RU.update({
+    # teaching/variants.py: the template's paths, ranges and answers
+    "path_not_in": ("{name!r} нет в {here_ru} (там есть: {keys_ru}){hint_ru} — изменяемое поле "
+                    "должно иметь значение в шаблоне"),
+    "positive_got": "должно быть положительным{got_ru}",
+    "max_below_min": "max ({hi}) меньше min ({lo})",
+    "spec_not_table": ("должно быть таблицей {{ values = [...] }} или {{ min = …, max = …, "
+                       "step = … }}{got_ru}"),
+    "nonempty_array": "должно быть непустым списком{got_ru}",
+    "answers_missing": ("не задано (ключи результатов для ключа ответов, например answers = "
+                        "[\"J_required\", \"delta_T_max\"])"),
+    "answers_empty": "должно быть непустым списком имён результатов{got_ru}",
+    "not_an_answer": "не является одним из ответов (допустимы: {allowed})",
+    "not_a_result": "{name!r} {what_ru} (числовые результаты: {names}){hint_ru}",
+    "no_variants_table": ("нет таблицы [variants] (в ней сказано, что менять и какие результаты "
+                          "служат ответами; см. docs/teacher.md)"),
+    "draws_failed": ("вариант {number}: {failed} попыток подряд не прошли проверку или расчёт; "
+                     "сузьте диапазоны в [variants] (последняя ошибка: {detail_ru})"),
+    # teaching/grading.py: the answer key; cli/teaching.py, io/output.py: the files written
+    "key_not_object": "должно быть объектом JSON {{вариант: {{ответ: значение}}}} (задано {type})",
+    "key_no_variants": "{where_ru}: должно быть непустым объектом {{вариант: {{ответ: значение}}}}",
+    "key_tolerances": "должно быть объектом {{ответ: положительное число}}{got_ru}",
+    "key_is_a_folder": "{path}: это папка, а нужен answers.json команды flywheel variants",
+    "not_json": "{path}: не JSON: {msg} (строка {line}, столбец {col})",
+    "option_is_a_folder": "{option} {path}: это папка, а нужно {expected_ru}",
+    "csv_folder_missing": ("{option} {path}: папки {parent} не существует (допустимо: имя файла "
+                           "CSV в существующей папке)"),
+    "no_student_rows": ("{files}: нечего проверить: нет заполненных строк студентов (в строке "
+                        "нужны имя студента и вариант)"),
+})
+_MSGS2_DERIVED = {"here_ru", "keys_ru", "what_ru", "expected_ru", "who_ru", "quantity_ru", "which_ru", "task_ru", "fix_ru", "sliders_ru", "whom_ru", "material_ru", "given_ru", "shafts", "why_ru"}
 _MSGS_DERIVED |= _MSGS2_DERIVED
 _WHOM_RU = {"the crank's tip": "конец кривошипа"}
 
@@ -1406,6 +1436,17 @@ def _msgs2_ru_params(code: str, p: dict) -> dict:
                       "или более тяжёлый ротор (J двигателя) делают задачу решаемой"),
             "stiff": ("демпфер или вал такой жёсткости для этих роторов делают систему жёсткой "
                       "(демпфирование, c)")}[p["fix_kind"]]
+    if code == "path_not_in":
+        p["here_ru"] = "верхнем уровне" if p["here"] == "the top level" else p["here"]
+        p["keys_ru"] = "ничего" if p["keys"] == "nothing" else p["keys"]
+    if code == "not_a_result":
+        p["what_ru"] = ("не является результатом" if p["value"] is None
+                        else f"— не конечное число (это {p['value']})")
+    if code == "key_no_variants":
+        p["where_ru"] = p["where"] or "ключ"
+    if code == "option_is_a_folder":
+        p["expected_ru"] = {"a CSV file name": "имя файла CSV",
+                            "a file name": "имя файла"}.get(p["expected"], p["expected"])
     if "below_zero" in p:
         p["why_ru"] = ": скорость упала бы до нуля или ниже" if p["below_zero"] else ""
     return p
