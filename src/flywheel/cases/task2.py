@@ -251,7 +251,9 @@ def _describe(err: dict, data: dict) -> str:
         near = difflib.get_close_matches(str(tag), list(KINDS), n=1)
         hint = f"; did you mean {near[0]!r}?" if near and tag else ""
         what = f"unknown kind {tag!r}" if tag else "missing kind"
-        return f"{loc_str(clean_loc(loc))}.kind: {what}{hint} (allowed: {', '.join(KINDS)})"
+        return led(f"{loc_str(clean_loc(loc))}.kind: ", Notice(
+            f"{what}{hint} (allowed: {', '.join(KINDS)})", "graph_kind", tag=str(tag),
+            near=near[0] if near and tag else "", allowed=", ".join(KINDS)))
 
     def allowed(parent: tuple) -> list[str]:
         model = _model_at(clean_loc(parent), data)

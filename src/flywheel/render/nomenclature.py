@@ -1401,7 +1401,38 @@ MESSAGES_RU.update({
     "no_student_rows": ("{files}: нечего проверить: нет заполненных строк студентов (в строке "
                         "нужны имя студента и вариант)"),
 })
-_MSGS2_DERIVED = {"here_ru", "keys_ru", "what_ru", "expected_ru", "who_ru", "quantity_ru", "which_ru", "task_ru", "fix_ru", "sliders_ru", "whom_ru", "material_ru", "given_ru", "shafts", "why_ru"}
+MESSAGES_RU.update({
+    # dynamics/sizing.py, dynamics/stages.py: the designed rim, a given flywheel, --transients
+    "rim_no_hole": ("flywheel.rim: обод получается толщиной {t:.4g} м при среднем диаметре "
+                    "{D:.4g} м, и отверстия не остаётся (допустимо: толщина < среднего диаметра: "
+                    "больше окружная скорость обода, шире обод или меньше доля)"),
+    "with_flywheel_J": "{detail_ru} (J маховика на его валу = {J:.6g} кг·м²)",
+    "given_flywheel_small": ("заданный маховик (J = {J:.6g} кг·м²) слишком мал для этих "
+                             "нагрузок: изменение энергии за цикл, {swing:.4g} Дж, останавливает "
+                             "машину раньше, чем она наберёт среднюю скорость ω_m = {omega:.6g} "
+                             "рад/с — установившегося движения нет (допустимо: J_I + J_II не "
+                             "меньше примерно {need:.4g} кг·м² на валу кривошипа: больше "
+                             "flywheel.J или меньше нагрузки)"),
+    "startup_too_long": ("motor: разгон для --transients занял бы около {n:.3g} циклов "
+                         "(ω̄·τ·(ln(50/δ) − 1)/Φ с постоянной времени τ = J̄·ω_x/M_п), больше "
+                         "предела {top} циклов: двигатель (motor.starting_torque, "
+                         "motor.no_load_speed_rpm) слишком слаб для этих масс; запустите без "
+                         "--transients"),
+    "rundown_too_long": ("выбег для --transients занял бы около {n:.3g} циклов (кинетическая "
+                         "энергия ½·J·ω² на работу нагрузок за цикл, {work:.3g} Дж), больше "
+                         "предела {top} циклов: нагрузки очень малы для этих масс; запустите без "
+                         "--transients"),
+    "animate_tabulated": ("--animate: {case} задаёт кинематику таблицей ([tabulated]): "
+                          "анимировать нечего, механизма нет (допустимо: случай с [crank] и "
+                          "[[dyads]])"),
+    "graph_kind": "{tag_ru}{hint_ru} (допустимы: {allowed})",
+})
+MESSAGES_RU["firing_order_fit"] = (
+    "machine.firing_order: {order} не укладывается в один цикл 720°: цилиндр {name} (позиция "
+    "{position}) сработал бы при {at}, не раньше, чем цилиндр {first} сработает снова при "
+    "{again} (допустимо: порядок, в котором каждый цилиндр приходит в верхнюю мёртвую точку "
+    "после предыдущего, всё в пределах 720°; верхние мёртвые точки: {heads_ru})")
+_MSGS2_DERIVED = {"heads_ru", "tag_ru", "here_ru", "keys_ru", "what_ru", "expected_ru", "who_ru", "quantity_ru", "which_ru", "task_ru", "fix_ru", "sliders_ru", "whom_ru", "material_ru", "given_ru", "shafts", "why_ru"}
 _MSGS_DERIVED |= _MSGS2_DERIVED
 _WHOM_RU = {"the crank's tip": "конец кривошипа"}
 
@@ -1447,6 +1478,10 @@ def _msgs2_ru_params(code: str, p: dict) -> dict:
     if code == "option_is_a_folder":
         p["expected_ru"] = {"a CSV file name": "имя файла CSV",
                             "a file name": "имя файла"}.get(p["expected"], p["expected"])
+    if code == "firing_order_fit":
+        p["heads_ru"] = ", ".join(f"{n} при {a}/{b}" for n, a, b in p["heads"])
+    if code == "graph_kind":
+        p["tag_ru"] = f"неизвестный вид {p['tag']!r}" if p["tag"] else "не задан вид"
     if "below_zero" in p:
         p["why_ru"] = ": скорость упала бы до нуля или ниже" if p["below_zero"] else ""
     return p
