@@ -1297,7 +1297,7 @@ MESSAGES_RU.update({
                          "м/с)"),
     # cases/task2.py
     "amount_word": "должно быть числом, \"balance\" или \"power\" (задано {value})",
-    "must_be_positive": "должно быть положительным (задано {v:g} {unit_ru})",
+    "must_be_positive": "должно быть положительным (задано {v:g}{unit_sp_ru})",
     "task2_speed_one_of": ("задайте что-то одно: omega0, omega0_rpm, mean, mean_rpm или пределы "
                            "max и min (или max_rpm и min_rpm){given_ru}"),
     "task2_J_or_mass": "задайте что-то одно: J или mass с radius_of_gyration",
@@ -1432,7 +1432,7 @@ MESSAGES_RU["firing_order_fit"] = (
     "{position}) сработал бы при {at}, не раньше, чем цилиндр {first} сработает снова при "
     "{again} (допустимо: порядок, в котором каждый цилиндр приходит в верхнюю мёртвую точку "
     "после предыдущего, всё в пределах 720°; верхние мёртвые точки: {heads_ru})")
-_MSGS2_DERIVED = {"heads_ru", "tag_ru", "here_ru", "keys_ru", "what_ru", "expected_ru", "who_ru", "quantity_ru", "which_ru", "task_ru", "fix_ru", "sliders_ru", "whom_ru", "material_ru", "given_ru", "shafts", "why_ru"}
+_MSGS2_DERIVED = {"heads_ru", "unit_sp_ru", "tag_ru", "here_ru", "keys_ru", "what_ru", "expected_ru", "who_ru", "quantity_ru", "which_ru", "task_ru", "fix_ru", "sliders_ru", "whom_ru", "material_ru", "given_ru", "shafts", "why_ru"}
 _MSGS_DERIVED |= _MSGS2_DERIVED
 _WHOM_RU = {"the crank's tip": "конец кривошипа"}
 
@@ -1478,6 +1478,8 @@ def _msgs2_ru_params(code: str, p: dict) -> dict:
     if code == "option_is_a_folder":
         p["expected_ru"] = {"a CSV file name": "имя файла CSV",
                             "a file name": "имя файла"}.get(p["expected"], p["expected"])
+    if code == "must_be_positive":
+        p["unit_sp_ru"] = f" {p['unit_ru']}" if p["unit"] else ""
     if code == "firing_order_fit":
         p["heads_ru"] = ", ".join(f"{n} при {a}/{b}" for n, a, b in p["heads"])
     if code == "graph_kind":
