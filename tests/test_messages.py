@@ -474,3 +474,17 @@ def test_balance_and_stopping_errors_are_russian(tmp_path):
         bad.build_files(entry, d)
         o = bad.invoke(replace(entry, args=[*entry.args, "--lang", "ru"]), d)
         assert o.code == 2 and o.stderr.startswith("ошибка: ") and said in o.stderr, o.stderr
+
+
+def test_motion_option_error_is_russian(tmp_path):
+    """`run --motion` with a motion that is not one: the English line unchanged, the Russian one
+    Russian (no catalogue entry: the option is checked before any output)."""
+    args = ["run", str(CASES / "fourbar.toml"), "--points", "360", "--no-plots", "--motion",
+            "fast", "--out", str(tmp_path / "o")]
+    en = runner.invoke(app, args)
+    assert en.exit_code == 2
+    assert en.stderr == "error: --motion: 'fast' is not a motion (allowed: true, steady)\n"
+    ru = runner.invoke(app, [*args, "--lang", "ru"])
+    assert ru.exit_code == 2
+    assert ru.stderr == ("ошибка: --motion: 'fast' — недопустимое значение (допустимы: true, "
+                         "steady)\n")
