@@ -488,3 +488,30 @@ def test_motion_option_error_is_russian(tmp_path):
     assert ru.exit_code == 2
     assert ru.stderr == ("ошибка: --motion: 'fast' — недопустимое значение (допустимы: true, "
                          "steady)\n")
+
+
+@pytest.mark.parametrize("edit, en_said, ru_said", [
+    (("energy = 4000.0", "force = 4000.0"), "operation.thickness: missing: the force's travel",
+     "operation.thickness: не задано: работу определяет путь силы (толщина листа)"),
+    (("energy = 4000.0", "energy = 4000.0\nforce = 10.0"), "operation: give the work one way",
+     "operation: задайте работу одним способом: energy, или energy_per_area"),
+    (("energy = 4000.0", ""), "operation: missing: give the work of one operation",
+     "operation: не задано: укажите работу одной операции"),
+    (("angle_deg = 90", "angle_deg = 90\ncycle_share = 0.25"), "operation: give exactly one of",
+     "operation: задайте что-то одно из: "),
+    (("rim_diameter = 0.8", "J = 5.0\nmass = 10.0\nrim_diameter = 0.8"),
+     "flywheel: give J or mass, not both", "flywheel: задайте что-то одно: J или mass"),
+])
+def test_duty_cycle_case_errors_are_russian(tmp_path, edit, en_said, ru_said):
+    """The duty cycle's checks of the operation and the flywheel: English unchanged, Russian
+    under --lang ru (one line, no English words)."""
+    text = (CASES / "duty_readme_press.toml").read_text(encoding="utf-8").replace(*edit, 1)
+    (tmp_path / "c.toml").write_text(text, encoding="utf-8")
+    en = runner.invoke(app, ["duty-cycle", str(tmp_path / "c.toml")])
+    assert en.exit_code == 2 and en.stderr.startswith(f"error: {tmp_path / 'c.toml'}: {en_said}")
+    ru = runner.invoke(app, ["duty-cycle", str(tmp_path / "c.toml"), "--lang", "ru"])
+    assert ru.exit_code == 2, ru.output
+    lines = ru.stderr.splitlines()
+    assert len(lines) == 1 and lines[0].startswith(f"ошибка: {tmp_path / 'c.toml'}: {ru_said}")
+    said = re.sub(r"\S*[/.]\S*|'[^']*'|--[a-z-]+", "", lines[0])
+    assert not ENGLISH.search(said), lines[0]

@@ -1432,6 +1432,21 @@ MESSAGES_RU["firing_order_fit"] = (
     "{position}) сработал бы при {at}, не раньше, чем цилиндр {first} сработает снова при "
     "{again} (допустимо: порядок, в котором каждый цилиндр приходит в верхнюю мёртвую точку "
     "после предыдущего, всё в пределах 720°; верхние мёртвые точки: {heads_ru})")
+MESSAGES_RU.update({
+    # cases/duty_cycle.py: the operation, the cycle, the flywheel
+    "one_of_keys": "задайте что-то одно из: {keys}{given_ru}",
+    "duty_work_one_way": ("задайте работу одним способом: energy, или energy_per_area с площадью "
+                          "среза, или force (или shear_strength) с thickness и shape (задано "
+                          "{given})"),
+    "duty_work_missing": ("не задано: укажите работу одной операции (energy, energy_per_area с "
+                          "площадью среза или force с thickness и shape) или delta_E"),
+    "duty_thickness_missing": "не задано: работу определяет путь силы (толщина листа)",
+    "duty_shape_missing": ("не задано: укажите, как сила меняется на пути (допустимо: constant, "
+                           "falling, triangle)"),
+    "duty_cycle_missing": ("не задано: укажите [cycle] (как часто) или мощность либо момент "
+                           "двигателя, чтобы найти наибольший темп, который он выдержит"),
+    "duty_J_or_mass": "задайте что-то одно: J или mass",
+})
 _MSGS2_DERIVED = {"heads_ru", "unit_sp_ru", "tag_ru", "here_ru", "keys_ru", "what_ru", "expected_ru", "who_ru", "quantity_ru", "which_ru", "task_ru", "fix_ru", "sliders_ru", "whom_ru", "material_ru", "given_ru", "shafts", "why_ru"}
 _MSGS_DERIVED |= _MSGS2_DERIVED
 _WHOM_RU = {"the crank's tip": "конец кривошипа"}
