@@ -161,6 +161,146 @@ RUSSIAN_ERRORS = {
     "variants/template-does-not-validate": ["machine.delta: должно быть больше 0",
                                             "[проверено как случай для flywheel run]"],
 }
+# --- msgs2 --- the cross-field checks of the case files, the non-finite policy, --t-end, --at,
+# --plot, the variants template's paths and answers, the answer key (json's own words stay English)
+RUSSIAN_ERRORS.update({
+    "run/aggregate-case": ['это случай агрегата (упругие муфты), а не случай для'],
+    "run/variants-template": ['это шаблон вариантов, а не случай для flywheel run:'],
+    "run/two-speeds": ['задайте что-то одно: speed_rps или speed_rpm'],
+    "run/no-speed": ['задайте что-то одно: speed_rps или speed_rpm'],
+    "run/no-crank-length": ['не задано: укажите crank.length или design.mean_piston_speed'],
+    "run/ground-point-undefined": ["точка 'D' используется раньше, чем задана (заданы: A, O)"],
+    "run/dyads-missing": ["звено '2' не задано (звенья: 1)"],
+    "run/dyad-kind-unknown": ['должно быть одним из: RRP, RRR, RPR'],
+    "run/dyad-from-undefined": ["точка 'Z' используется раньше, чем задана (заданы: A, B, O,"],
+    "run/dyad-joint-reused": ["имя точки 'B' уже занято"],
+    "run/dyad-link-reused": ["имя звена '2' уже занято"],
+    "run/point-on-undefined-link": ["звено '9' не задано (звенья: 1, 2, 3, 4, 5)"],
+    "run/point-from-undefined-point": ["точка 'Q' нигде не задана"],
+    "run/point-to-and-distance": ['задайте что-то одно: `to` (с fraction) или `distance` (с'],
+    "run/link-centroid-undefined": ["точка 'S9' не задана"],
+    "run/link-undefined": ["нет звена '7' (звенья: 1, 2, 3)"],
+    "run/link-mass-without-centroid": ['у звена с массой должен быть задан `centroid`'],
+    "run/cylinder-table-one-short": ['нужно 11 значений, по одному на каждое s (задано 10)'],
+    "run/cylinder-s-not-increasing": ['значения должны строго возрастать'],
+    "run/cylinder-piston-undefined": ['не ползун группы RRP (ползуны: 3, 5)'],
+    "run/cylinder-pressure-below-vacuum": ['даёт -17.64 МПа избыточного давления, ниже абсолютного'],
+    "run/cylinder-pressure-above-p-max": ['больше 1: p_max = 882000 Па — наибольшее давление диаграммы'],
+    "run/given-flywheel-too-small-no-steady-motion": ['заданный маховик (J = 0.001 кг·м²) слишком мал для этих'],
+    "run/force-on-undefined-slider": ['не ползун группы RRP'],
+    "run/force-range-reversed": ['должно быть 0 ≤ from < to ≤ 1 (задано 0.95, 0.05)'],
+    "run/force-name-duplicate": ["имя нагрузки 'cutting' встречается дважды"],
+    "run/couple-on-undefined-link": ["нет звена '8'"],
+    "run/tabulated-row-one-short": ['нужно 13 значений, по одному на каждое положение'],
+    "run/tabulated-positions-not-increasing": ['после 60°: положения должны возрастать'],
+    "run/tabulated-force-at-undefined-point": ["аналогов скоростей точки 'B9' нет в [tabulated.points]"],
+    "run/tabulated-link-at-undefined-point": ["аналогов скоростей точки 'B5' нет в [tabulated.points]"],
+    "run/at-nan": ['не конечный угол в градусах'],
+    "run/at-inf": ['не конечный угол в градусах'],
+    "run/transients-rundown-too-long": ['выбег для --transients занял бы около 1.51e+03 циклов'],
+    "run/transients-startup-too-long": ['разгон для --transients занял бы около 8.74e+03 циклов'],
+    "check/task2-case": ['это случай задачи 2 (заданные графики моментов), а не'],
+    "check/aggregate-chain": ['это случай агрегата (упругие муфты), а не случай для'],
+    "check/point-from-undefined": ["точка 'X' нигде не задана"],
+    "task2/profile-unknown": ["должно быть triangle или rectangle (задано 'square')"],
+    "task2/md-1e308": ['не конечное число (баланс работ за цикл даёт момент'],
+    "task2/to-beyond-the-cycle": ['и to должны лежать в пределах 0…360° (задано 90°, 720°)'],
+    "task2/case-and-options": ['берёт данные из файла; уберите --md'],
+    "task2/plot-is-a-folder": ['это папка, а нужен файл изображения'],
+    "task2/case-run-case": ['это случай для flywheel run, а не случай задачи 2 (заданные'],
+    "task2/case-aggregate-case": ['это случай агрегата (упругие муфты), а не случай задачи 2'],
+    "task2/case-variants-template": ['это шаблон вариантов, а не случай задачи 2 (заданные'],
+    "task2/case-two-speeds": ['задайте что-то одно: omega0, omega0_rpm, mean, mean_rpm или'],
+    "task2/case-J-negative": ['должно быть положительным (задано -12 кг·м²)'],
+    "task2/case-mass-without-radius": ['и radius_of_gyration задаются вместе (J = m·k²)'],
+    "task2/case-driving-kind-unknown": ["неизвестный вид 'linear' (допустимы: constant, points,"],
+    "task2/case-value-not-balance": ['должно быть числом, "balance" или "power" (задано'],
+    "task2/case-two-balances": ['может заменять лишь одно значение (другое уже задано так:'],
+    "task2/case-points-go-back": ['угол 200° идёт после 270°: углы не должны убывать'],
+    "task2/case-points-three-at-one-angle": ['третье значение при 90°: у скачка их два (значение до и'],
+    "task2/case-points-do-not-reach-the-cycle-end": ['должно охватывать цикл 0…360° (охвачено 0…300°)'],
+    "task2/case-triangle-reversed": ['нужно 0 ≤ from_deg < to_deg ≤ 360 (задано 300, 270)'],
+    "task2/case-trapezoid-top-outside": ['нужно from_deg ≤ top_from_deg ≤ top_to_deg ≤ to_deg'],
+    "task2/case-harmonic-lengths-differ": ['порядков гармоник на 1 членов ряда'],
+    "task2/case-diagram-areas-do-not-close": ['сумма 1, а не 0: за цикл площади над средней линией и под'],
+    "task2/case-diagram-and-graphs": ['задайте что-то одно: [diagram] или [driving] и [resistance]'],
+    "task2/case-diagram-scale-zero": ['должно быть положительным (задано 0)'],
+    "task2/case-driving-1e308": ['не конечное число (баланс работ за цикл даёт момент'],
+    "aggregate/empty-file": ['не задано: задайте двухмассовый агрегат ([motor],'],
+    "aggregate/run-case": ['это случай для flywheel run, а не случай агрегата (упругие'],
+    "aggregate/task2-case": ['это случай задачи 2 (заданные графики моментов), а не'],
+    "aggregate/variants-template": ['это шаблон вариантов, а не случай агрегата (упругие муфты):'],
+    "aggregate/motor-J-missing": ['не задано обязательное поле (J_Д, момент инерции ротора'],
+    "aggregate/motor-slip-without-torque": ['задайте что-то одно: starting_torque или rated_torque с'],
+    "aggregate/coupling-c-and-d-L": ['задайте что-то одно: c или d и L (с G)'],
+    "aggregate/coupling-missing": ['не задано: двухмассовому агрегату нужны [motor], [coupling]'],
+    "aggregate/flywheel-on-II-without-i21": ['не задано: маховику на валу II нужно i21 = ω_II/ω_I'],
+    "aggregate/J-III-missing": ['не задано: укажите J_III (J_пр.III, кг·м²) или J_III_0 с'],
+    "aggregate/one-rotor": ['цепочке нужно не меньше двух роторов (задано 1)'],
+    "aggregate/shafts-one-short": ['роторам нужно 2 валов между ними (задано 1)'],
+    "aggregate/rotor-names-repeat": ['имена роторов должны различаться'],
+    "aggregate/shaft-G-missing": ['не задано: с d и L нужен модуль сдвига G (например, 8.0e10'],
+    "aggregate/load-without-motor": ['не задано: для [load] нужен [motor] на первом роторе'],
+    "aggregate/chain-and-two-mass": ['случай — либо двухмассовый агрегат ([coupling], [machine]),'],
+    "aggregate/t-end-zero": ['с вне допустимого диапазона (допустимо: 0 … 600 с; разгон'],
+    "aggregate/t-end-nan": ['с вне допустимого диапазона (допустимо: 0 … 600 с; разгон'],
+    "aggregate/t-end-1e6": ['с вне допустимого диапазона (допустимо: 0 … 600 с; разгон'],
+    "aggregate/t-end-too-many-steps": ['разгон потребовал бы около 1.88e+07 шагов интегрирования'],
+    "aggregate/startup-stiff-motor-t-end": ['разгон потребовал бы около 3.99e+06 шагов интегрирования'],
+    "aggregate/plot-without-motor": ['требует [motor]: у цепочки без двигателя нет движения во'],
+    "variants/points-too-few": ['слишком мало (допустимо: 36 и больше)'],
+    "variants/points-too-many": ['сам шаблон не удаётся рассчитать: --points: 100000000 вне'],
+    "variants/template-empty": ['нет таблицы [variants] (в ней сказано, что менять и какие'],
+    "variants/no-variants-table": ['нет таблицы [variants] (в ней сказано, что менять и какие'],
+    "variants/path-misspelt": ["нет в [speed] (там есть: omega0); может быть, 'omega0'? —"],
+    "variants/path-into-a-missing-table": ['нет в верхнем уровне (там есть: title, source, cycle_deg,'],
+    "variants/answers-missing": ['не задано (ключи результатов для ключа ответов, например'],
+    "variants/answers-empty": ['должно быть непустым списком имён результатов (задано [])'],
+    "variants/answer-misspelt": ['не является результатом (числовые результаты: omega_max,'],
+    "variants/answer-not-a-number": ['не является результатом (числовые результаты: omega_max,'],
+    "variants/min-above-max": ['меньше min (30.0)'],
+    "variants/step-zero": ['должно быть положительным (задано 0.0)'],
+    "variants/values-empty": ['должно быть непустым списком (задано [])'],
+    "variants/spec-a-bare-number": ['должно быть таблицей { values = [...] } или { min = …, max'],
+    "variants/tolerance-for-unknown-answer": ['не является одним из ответов (допустимы: M_C, omega_max,'],
+    "variants/every-draw-fails": ['вариант 1: 50 попыток подряд не прошли проверку или расчёт;'],
+    "grade/key-missing": ['нет такого файла'],
+    "grade/key-folder": ['это папка, а нужен answers.json команды flywheel variants'],
+    "grade/key-binary": ['текст не в кодировке UTF-8 (invalid start byte в байте 0)'],
+    "grade/key-not-json": ['не JSON: Expecting property name enclosed in double quotes'],
+    "grade/key-truncated": ['не JSON: Unterminated string starting at (строка 3, столбец'],
+    "grade/key-a-list": ['должно быть объектом JSON {вариант: {ответ: значение}}'],
+    "grade/key-no-variants": ['должно быть непустым объектом {вариант: {ответ: значение}}'],
+    "grade/key-tolerances-zero": ['должно быть объектом {ответ: положительное число} (задано'],
+    "grade/key-is-a-case-file": ['не JSON: Expecting value (строка 1, столбец 1)'],
+    "grade/key-and-sheet-swapped": ['не JSON: Expecting value (строка 1, столбец 1)'],
+    "grade/out-is-a-folder": ['это папка, а нужно имя файла CSV'],
+    "grade/gradebook-is-a-folder": ['это папка, а нужно имя файла CSV'],
+    "grade/out-inside-a-file": ['не существует (допустимо: имя файла CSV в существующей папке)'],
+    "grade/sheet-blank-rows-only": ['нечего проверить: нет заполненных строк студентов (в строке'],
+    "run/rim-share-zero": ['не доля J маховика (допустимо: 0 < share ≤ 1)'],
+    "run/rim-share-above-one": ['не доля J маховика (допустимо: 0 < share ≤ 1)'],
+    "run/rim-speed-above-the-allowable-stress": ['м/с даёт окружное напряжение ρ·v² = 49.92 МПа больше'],
+    "run/rim-width-and-ratio": ['задайте что-то одно: width или width_to_thickness'],
+    "run/rim-share-twice": ['при [flywheel.rim] доля задаётся как flywheel.rim.share'],
+    "run/rim-thicker-than-its-diameter": ['обод получается толщиной 3009 м при среднем диаметре'],
+    "task2/rim-share-zero": ['не доля J маховика (допустимо: 0 < share ≤ 1)'],
+    "task2/rim-speed-above-the-allowable-stress": ['м/с даёт окружное напряжение ρ·v² = 11.6 МПа больше'],
+    "run/given-flywheel-mass-without-radius": ['не задано: mass и radius_of_gyration задаются вместе (J ='],
+    "run/given-flywheel-two-forms": ['заданный маховик — что-то одно из: J, mass с'],
+    "run/given-rim-inner-above-outer": ['м — не меньше D = 0.5 м'],
+    "run/pins-at-the-same-angle": ["ставит шейку 'A3' туда, где уже шейка (crank.pins[0]) 'A2'"],
+    "run/firing-order-misses-a-cylinder": ["нет цилиндра '2' (порядок работы перечисляет каждый"],
+    "run/firing-order-does-not-fit-the-crankshaft": ['не укладывается в один цикл 720°: цилиндр 4 (позиция 4)'],
+    "run/four-stroke-diagram-on-a-360-cycle": ['четырёхтактная диаграмма занимает 720° угла кривошипа, а'],
+    "run/strokes-do-not-meet": ['начинается с p/p_max = 0.5 при s = 0, где compression'],
+    "run/animate-a-tabulated-case": ['задаёт кинематику таблицей ([tabulated]): анимировать'],
+    "aggregate/fixed-end-without-a-shaft": ['не задано: неподвижный конец rotors[0] связан валом с'],
+    "grade/gradebook-in-a-missing-folder": ['не существует (допустимо: имя файла CSV в существующей папке)'],
+    "duty-cycle/speed-drop-beyond-the-speed": ['вне допустимого диапазона: скорость упала бы до нуля или'],
+    "duty-cycle/min-speed-above-the-max": ['не меньше max_rpm = 225 (допустимо: 0 < min_rpm < max_rpm)'],
+    "duty-cycle/given-flywheel-would-stop": ['маховик слишком мал: чтобы отдать 97000 Дж (ΔE) на каждую'],
+})
 # English words that must not be left in a translated line (names the user gave aside)
 ENGLISH = re.compile(r"\b(the|is|not|must|be|allowed|out|of|range|given|cannot|no|such|should|"
                      r"input|valid|missing|required|unknown|key|file|folder|number|use|this)\b")
@@ -183,6 +323,10 @@ def test_errors_are_russian_with_lang_ru(eid, tmp_path):
         assert f in line, (f, line)
     # the entry's file and field path (its fragments that are no English words) are kept
     for f in entry.fragments:
+        if re.search(r"\b[a-z]{2,}\b", re.sub(r"\S*[/.]\S*", "", f)):  # English words: files only
+            for path in re.findall(r"\{(?:tmp|cases)\}\S*", f):
+                assert bad.subst(path, tmp_path) in line, (path, line)
+            continue
         f = bad.subst(f, tmp_path)
         if "/" in f or "." in f and " " not in f:
             assert f in line, (f, line)
@@ -330,3 +474,44 @@ def test_balance_and_stopping_errors_are_russian(tmp_path):
         bad.build_files(entry, d)
         o = bad.invoke(replace(entry, args=[*entry.args, "--lang", "ru"]), d)
         assert o.code == 2 and o.stderr.startswith("ошибка: ") and said in o.stderr, o.stderr
+
+
+def test_motion_option_error_is_russian(tmp_path):
+    """`run --motion` with a motion that is not one: the English line unchanged, the Russian one
+    Russian (no catalogue entry: the option is checked before any output)."""
+    args = ["run", str(CASES / "fourbar.toml"), "--points", "360", "--no-plots", "--motion",
+            "fast", "--out", str(tmp_path / "o")]
+    en = runner.invoke(app, args)
+    assert en.exit_code == 2
+    assert en.stderr == "error: --motion: 'fast' is not a motion (allowed: true, steady)\n"
+    ru = runner.invoke(app, [*args, "--lang", "ru"])
+    assert ru.exit_code == 2
+    assert ru.stderr == ("ошибка: --motion: 'fast' — недопустимое значение (допустимы: true, "
+                         "steady)\n")
+
+
+@pytest.mark.parametrize("edit, en_said, ru_said", [
+    (("energy = 4000.0", "force = 4000.0"), "operation.thickness: missing: the force's travel",
+     "operation.thickness: не задано: работу определяет путь силы (толщина листа)"),
+    (("energy = 4000.0", "energy = 4000.0\nforce = 10.0"), "operation: give the work one way",
+     "operation: задайте работу одним способом: energy, или energy_per_area"),
+    (("energy = 4000.0", ""), "operation: missing: give the work of one operation",
+     "operation: не задано: укажите работу одной операции"),
+    (("angle_deg = 90", "angle_deg = 90\ncycle_share = 0.25"), "operation: give exactly one of",
+     "operation: задайте что-то одно из: "),
+    (("rim_diameter = 0.8", "J = 5.0\nmass = 10.0\nrim_diameter = 0.8"),
+     "flywheel: give J or mass, not both", "flywheel: задайте что-то одно: J или mass"),
+])
+def test_duty_cycle_case_errors_are_russian(tmp_path, edit, en_said, ru_said):
+    """The duty cycle's checks of the operation and the flywheel: English unchanged, Russian
+    under --lang ru (one line, no English words)."""
+    text = (CASES / "duty_readme_press.toml").read_text(encoding="utf-8").replace(*edit, 1)
+    (tmp_path / "c.toml").write_text(text, encoding="utf-8")
+    en = runner.invoke(app, ["duty-cycle", str(tmp_path / "c.toml")])
+    assert en.exit_code == 2 and en.stderr.startswith(f"error: {tmp_path / 'c.toml'}: {en_said}")
+    ru = runner.invoke(app, ["duty-cycle", str(tmp_path / "c.toml"), "--lang", "ru"])
+    assert ru.exit_code == 2, ru.output
+    lines = ru.stderr.splitlines()
+    assert len(lines) == 1 and lines[0].startswith(f"ошибка: {tmp_path / 'c.toml'}: {ru_said}")
+    said = re.sub(r"\S*[/.]\S*|'[^']*'|--[a-z-]+", "", lines[0])
+    assert not ENGLISH.search(said), lines[0]

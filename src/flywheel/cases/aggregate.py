@@ -22,7 +22,7 @@ from typing import Annotated, Literal
 
 from pydantic import Field
 
-from flywheel.errors import CaseFileError, FlywheelError
+from flywheel.errors import CaseFileError, FlywheelError, Notice
 from flywheel.io.schema import FieldError, StrictModel, load, validate, within, clean_loc, describe, pick
 
 Pos = Annotated[float, Field(gt=0)]
@@ -180,7 +180,8 @@ def _stiffness_pieces(s: Shaft, where: str) -> tuple[float, float, list]:
         at = f"{where}.segments[{k}]" if s.segments is not None else where
         if p.c is not None:
             if p.d is not None or p.L is not None:
-                raise FieldError(f"{at}.c", "give c, or d and L (with G), not both")
+                raise FieldError(f"{at}.c", Notice("give c, or d and L (with G), not both",
+                                                    "coupling_c_or_dL"))
             c = p.c
             G = None
         else:
@@ -189,8 +190,8 @@ def _stiffness_pieces(s: Shaft, where: str) -> tuple[float, float, list]:
                 raise FieldError(f"{at}.{missing}", "missing: give c, or d and L with G")
             G = p.G if p.G is not None else s.G
             if G is None:
-                raise FieldError(f"{at}.G", "missing: the shear modulus is needed with d and L "
-                                      "(e.g. 8.0e10 Pa for steel)")
+                raise FieldError(f"{at}.G", Notice("missing: the shear modulus is needed with d "
+                                                   "and L (e.g. 8.0e10 Pa for steel)", "shaft_G"))
             c = shaft_stiffness(G, p.d, p.L)
         u = s.i if p.side == "out" else 1.0   # speed of the piece over the input speed
         cs.append(c * u * u)
@@ -215,7 +216,8 @@ def _motor(m: Motor, M0: float, forcing_ratio: float, amplitude: float, chain_fo
     if chain_form and m.J is not None:
         raise FieldError("motor.J", "in a chain the first rotor is the motor: give its J in rotors[0]")
     if not chain_form and m.J is None:
-        raise FieldError("motor.J", "missing required field (J_Д, the motor's rotor [kg·m²])")
+        raise FieldError("motor.J", Notice("missing required field (J_Д, the motor's rotor "
+                                            "[kg·m²])", "motor_J_missing"))
     if m.characteristic == "linear":
         for k in ("speed_rpm",):
             if getattr(m, k) is not None:
@@ -225,8 +227,9 @@ def _motor(m: Motor, M0: float, forcing_ratio: float, amplitude: float, chain_fo
             raise FieldError("motor.synchronous_rpm", "missing: the linear characteristic needs ω_x")
         given = [k for k in ("starting_torque", "rated_torque") if getattr(m, k) is not None]
         if len(given) != 1:
-            raise FieldError("motor.starting_torque", "give exactly one of starting_torque, or "
-                                                "rated_torque with rated_slip")
+            raise FieldError("motor.starting_torque", Notice(
+                "give exactly one of starting_torque, or rated_torque with rated_slip",
+                "motor_torque_one_of"))
         if m.rated_torque is not None and m.rated_slip is None:
             raise FieldError("motor.rated_slip", "missing: needed with rated_torque (M_п = M_н/s_н)")
         if m.starting_torque is not None and m.rated_slip is not None:
@@ -255,13 +258,14 @@ def build(case: AggregateCase):
     two_mass = [k for k in ("coupling", "machine") if getattr(case, k) is not None]
     chain_keys = [k for k in ("rotors", "shafts", "load") if getattr(case, k) is not None]
     if two_mass and chain_keys:
-        raise FieldError(chain_keys[0], "a case is either the two-mass aggregate ([coupling], "
-                                  "[machine]) or a chain ([[rotors]], [[shafts]]), not both")
+        raise FieldError(chain_keys[0], Notice("a case is either the two-mass aggregate "
+                                               "([coupling], [machine]) or a chain ([[rotors]], "
+                                               "[[shafts]]), not both", "chain_or_two_mass"))
     if two_mass:
         for k in ("coupling", "machine"):
             if getattr(case, k) is None:
-                raise FieldError(k, "missing: the two-mass aggregate needs [motor], [coupling] and "
-                              "[machine]")
+                raise FieldError(k, Notice("missing: the two-mass aggregate needs [motor], "
+                                           "[coupling] and [machine]", "two_mass_needs"))
         if case.motor is None:
             raise FieldError("motor", "missing: the two-mass aggregate needs [motor] with J (J_Д)")
         m = case.machine
@@ -269,8 +273,9 @@ def build(case: AggregateCase):
             raise FieldError("machine.J_III", "give J_III, or J_III_0 with J_III_positions, not both")
         if m.J_III is None:
             if m.J_III_positions is None:
-                raise FieldError("machine.J_III", "missing: give J_III (J_пр.III [kg·m²]), or J_III_0 "
-                                            "with J_III_positions")
+                raise FieldError("machine.J_III", Notice(
+                    "missing: give J_III (J_пр.III [kg·m²]), or J_III_0 with J_III_positions",
+                    "J_III_missing"))
             if not m.J_III_positions:
                 raise FieldError("machine.J_III_positions", "needs at least one value")
             J_III = mean_reduced_inertia(m.J_III_0 or 0.0, m.J_III_positions)
@@ -279,7 +284,8 @@ def build(case: AggregateCase):
         else:
             J_III = m.J_III
         if m.flywheel is not None and m.flywheel.shaft == "II" and m.i21 is None:
-            raise FieldError("machine.i21", "missing: a flywheel on shaft II needs i21 = ω_II/ω_I")
+            raise FieldError("machine.i21", Notice("missing: a flywheel on shaft II needs i21 = "
+                                                   "ω_II/ω_I", "i21_missing"))
         J_I = reduced_inertia_I(J_III, m.i31, m.flywheel.J if m.flywheel else 0.0,
                                 m.flywheel.shaft if m.flywheel else "I", m.i21)
         c, i = _stiffness(case.coupling, "coupling")
@@ -297,18 +303,23 @@ def build(case: AggregateCase):
         return ch, drive
     frames = [k for k, r in enumerate(case.rotors or []) if r.fixed]
     if frames and not case.shafts:
-        raise FieldError("shafts", f"missing: the fixed end rotors[{frames[0]}] holds a rotor "
-                                   "through a shaft to the frame; give [[shafts]] (N rotors need "
-                                   "N − 1 shafts)")
+        raise FieldError("shafts", Notice(f"missing: the fixed end rotors[{frames[0]}] holds a "
+                                          "rotor through a shaft to the frame; give [[shafts]] (N "
+                                          "rotors need N − 1 shafts)", "fixed_end_shafts",
+                                          k=frames[0]))
     if case.rotors is None or case.shafts is None:
         raise FieldError("rotors" if case.rotors is None else "shafts",
-                   "missing: give the two-mass aggregate ([motor], [coupling], [machine]) or a "
-                   "chain ([[rotors]] and [[shafts]])")
+                   Notice("missing: give the two-mass aggregate ([motor], [coupling], "
+                          "[machine]) or a chain ([[rotors]] and [[shafts]])", "aggregate_form"))
     if len(case.rotors) < 2:
-        raise FieldError("rotors", f"a chain needs at least two rotors (got {len(case.rotors)})")
+        raise FieldError("rotors", Notice(f"a chain needs at least two rotors (got "
+                                          f"{len(case.rotors)})", "two_rotors",
+                                          count=len(case.rotors)))
     if len(case.shafts) != len(case.rotors) - 1:
-        raise FieldError("shafts", f"{len(case.rotors)} rotors need {len(case.rotors) - 1} shafts "
-                             f"between them (got {len(case.shafts)})")
+        raise FieldError("shafts", Notice(f"{len(case.rotors)} rotors need "
+                                          f"{len(case.rotors) - 1} shafts between them (got "
+                                          f"{len(case.shafts)})", "shafts_count",
+                                          rotors=len(case.rotors), count=len(case.shafts)))
     for k, r in enumerate(case.rotors):
         if r.fixed and r.J is not None:
             raise FieldError(f"rotors[{k}].J", "a fixed end (fixed = true) is the frame: it has no "
@@ -318,7 +329,7 @@ def build(case: AggregateCase):
                                                "[kg·m²]; or fixed = true for the frame)")
     names = [r.name or str(k + 1) for k, r in enumerate(case.rotors)]
     if len(set(names)) != len(names):
-        raise FieldError("rotors", "rotor names must differ")
+        raise FieldError("rotors", Notice("rotor names must differ", "rotor_names"))
     given = [k for k, sh in enumerate(case.shafts) if sh.between is not None]
     if frames or given:
         ch = _tree(case, names, frames, given)
@@ -337,7 +348,8 @@ def build(case: AggregateCase):
                 u *= i
         ch = chain(J, cs, bs, us, names, lines=lines)
     if case.load is not None and case.motor is None:
-        raise FieldError("motor", "missing: a [load] needs a [motor] on the first rotor")
+        raise FieldError("motor", Notice("missing: a [load] needs a [motor] on the first rotor",
+                                          "load_needs_motor"))
     if case.motor is None:
         return ch, None
     if not ch.is_line:

@@ -18,7 +18,7 @@ from pydantic import AfterValidator, Field
 from flywheel.duty_cycle import work as wk
 from flywheel.duty_cycle.solve import (DutyCycle, DutyCycleError, DutyCycleResult, Work,
                                        nonfinite, solve)
-from flywheel.errors import CaseFileError
+from flywheel.errors import CaseFileError, Notice, led, said
 from flywheel.io.schema import FieldError, StrictModel, describe, load, pick, validate
 
 RPM = math.pi / 30.0            # rev/min → rad/s
@@ -35,7 +35,9 @@ def _within(lo: float, hi: float, unit: str, lo_open: bool = False, hi_open: boo
             left = f"{lo:g} <" if lo_open else f"{lo:g} ≤"
             right = f"< {hi:g}" if hi_open else f"≤ {hi:g}"
             why = f": {above}" if above and v >= hi else ""
-            raise ValueError(f"{v:g}{u} is out of range{why} (allowed: {left} value {right}{u})")
+            raise ValueError(Notice(f"{v:g}{u} is out of range{why} (allowed: {left} value "
+                                    f"{right}{u})", "duty_out_of_range", x=v, unit=unit,
+                                    left=left, right=right, below_zero=bool(why)))
         return v
     return AfterValidator(check)
 
@@ -164,8 +166,9 @@ def _given(model, keys) -> list[str]:
 def _one_of(table: str, model, keys, required: bool = True) -> str | None:
     got = _given(model, keys)
     if len(got) > 1 or (required and not got):
-        raise FieldError(table, f"give exactly one of {', '.join(keys)}"
-                         + (f" (got {', '.join(got)})" if got else ""))
+        raise FieldError(table, Notice(f"give exactly one of {', '.join(keys)}"
+                                       + (f" (got {', '.join(got)})" if got else ""),
+                                       "one_of_keys", keys=", ".join(keys), given=", ".join(got)))
     return got[0] if got else None
 
 
@@ -176,14 +179,16 @@ def _check(c: DutyCase) -> None:
     # the work of the operation
     routes = _given(op, ("energy", "energy_per_area", "force", "shear_strength"))
     if len(routes) > 1:
-        raise FieldError("operation", "give the work one way: energy, or energy_per_area with "
-                         f"the sheared area, or force (or shear_strength) with thickness and "
-                         f"shape (got {', '.join(routes)})")
+        raise FieldError("operation", Notice(
+            "give the work one way: energy, or energy_per_area with "
+            f"the sheared area, or force (or shear_strength) with thickness and "
+            f"shape (got {', '.join(routes)})", "duty_work_one_way", given=", ".join(routes)))
     route = routes[0] if routes else None
     if route is None and op.delta_E is None:
-        raise FieldError("operation", "missing: give the work of one operation (energy, "
-                         "energy_per_area with the sheared area, or force with thickness and "
-                         "shape), or delta_E")
+        raise FieldError("operation", Notice(
+            "missing: give the work of one operation (energy, "
+            "energy_per_area with the sheared area, or force with thickness and "
+            "shape), or delta_E", "duty_work_missing"))
     area_keys = ("sheared_area", "hole_diameter", "cut_length")
     if route in ("energy_per_area", "shear_strength"):
         a = _one_of("operation", op, area_keys)
@@ -196,11 +201,13 @@ def _check(c: DutyCase) -> None:
                 raise FieldError(f"operation.{k}", "goes with energy_per_area or shear_strength")
     if route in ("force", "shear_strength"):
         if op.thickness is None:
-            raise FieldError("operation.thickness", "missing: the force's travel (the plate's "
-                             "thickness) sets the work")
+            raise FieldError("operation.thickness", Notice(
+                "missing: the force's travel (the plate's thickness) sets the work",
+                "duty_thickness_missing"))
         if op.shape is None:
-            raise FieldError("operation.shape", "missing: state the force over the travel "
-                             "(allowed: constant, falling, triangle)")
+            raise FieldError("operation.shape", Notice(
+                "missing: state the force over the travel (allowed: constant, falling, "
+                "triangle)", "duty_shape_missing"))
     elif op.shape is not None:
         raise FieldError("operation.shape", "goes with force or shear_strength")
     # the timing
@@ -233,13 +240,14 @@ def _check(c: DutyCase) -> None:
                                  "energy_per_area or force); with only delta_E the flywheel "
                                  "alone is sized")
     elif c.cycle is None and motor is None:
-        raise FieldError("cycle", "missing: give [cycle] (how often), or the motor's power or "
-                         "torque to find the largest rate it can keep")
+        raise FieldError("cycle", Notice(
+            "missing: give [cycle] (how often), or the motor's power or "
+            "torque to find the largest rate it can keep", "duty_cycle_missing"))
     # the flywheel
     radius = _one_of("flywheel", fw, ("radius_of_gyration", "rim_radius", "rim_diameter"),
                      required=False)
     if fw.J is not None and fw.mass is not None:
-        raise FieldError("flywheel", "give J or mass, not both")
+        raise FieldError("flywheel", Notice("give J or mass, not both", "duty_J_or_mass"))
     # the speeds
     speeds = _given(sp, SPEEDS)
     flucts = _given(sp, FLUCTUATIONS)
@@ -285,8 +293,10 @@ def _check_speed_pair(sp: Flywheel, speeds: list[str], flucts: list[str]) -> Non
     if "max" in level and "min" in level:
         (kx, vx), (kn, vn) = level["max"], level["min"]
         if not vn < vx:
-            raise FieldError(f"flywheel.{kn}", f"{vn:g} is not below {kx} = {vx:g} "
-                             f"(allowed: 0 < {kn} < {kx})")
+            raise FieldError(f"flywheel.{kn}", Notice(f"{vn:g} is not below {kx} = {vx:g} "
+                                                      f"(allowed: 0 < {kn} < {kx})",
+                                                      "speed_not_below", v=vn, other=kx, vo=vx,
+                                                      allowed=f"0 < {kn} < {kx}"))
     if "mean" in level and "max" in level:
         (km, vm), (kx, vx) = level["mean"], level["max"]
         if not vm < vx < 2 * vm:
@@ -296,8 +306,10 @@ def _check_speed_pair(sp: Flywheel, speeds: list[str], flucts: list[str]) -> Non
     if "mean" in level and "min" in level:
         (km, vm), (kn, vn) = level["mean"], level["min"]
         if not vn < vm:
-            raise FieldError(f"flywheel.{kn}", f"{vn:g} is not below {km} = {vm:g} "
-                             f"(allowed: 0 < {kn} < {vm:g})")
+            raise FieldError(f"flywheel.{kn}", Notice(f"{vn:g} is not below {km} = {vm:g} "
+                                                      f"(allowed: 0 < {kn} < {vm:g})",
+                                                      "speed_not_below", v=vn, other=km, vo=vm,
+                                                      allowed=f"0 < {kn} < {vm:g}"))
     if flucts == ["drop_percent"] and "max" not in level:
         raise FieldError("flywheel.drop_percent", "is a drop from the top speed: give it with "
                          "max_rpm, max_omega or max_rim_speed")
@@ -402,7 +414,7 @@ def solve_case(c: DutyCase, source: str = "<case>") -> DutyCycleResult:
     try:
         result = solve(to_duty_cycle(c))
     except DutyCycleError as exc:
-        raise CaseFileError(f"{source}: {exc.field}: {exc}") from None
+        raise CaseFileError(led(f"{source}: {exc.field}: ", said(exc))) from None
     except (ArithmeticError, ValueError) as exc:      # inputs near the limits of doubles
         raise CaseFileError(f"{source}: the values are too large or too small for double "
                             f"precision ({exc})") from None

@@ -7,6 +7,7 @@ from typing import Annotated, Literal
 
 from pydantic import Field, model_validator
 
+from flywheel.errors import Notice
 from flywheel.io.schema import FieldError, StrictModel, within
 
 MATERIALS = {  # density [kg/m³], allowable hoop stress of a rotating rim [Pa]
@@ -38,10 +39,12 @@ class RimSpec(StrictModel):
     @model_validator(mode="after")
     def _check(self):
         if not 0.0 < self.share <= 1.0:
-            raise FieldError(("share",), f"{self.share:g} is not a share of the flywheel's J "
-                                         f"(allowed: 0 < share ≤ 1)")
+            raise FieldError(("share",), Notice(f"{self.share:g} is not a share of the flywheel's "
+                                                f"J (allowed: 0 < share ≤ 1)", "rim_share",
+                                                share=self.share))
         if self.width is not None and self.width_to_thickness is not None:
-            raise FieldError((), "give width or width_to_thickness, not both")
+            raise FieldError((), Notice("give width or width_to_thickness, not both",
+                                        "rim_width_or_ratio"))
         return self
 
     def check_speed(self, density: float, allowable_stress: float, material: str) -> None:
@@ -49,11 +52,15 @@ class RimSpec(StrictModel):
         rim.speed saying the largest speed allowed (no diameter helps: σ depends on v alone)."""
         if density * self.speed ** 2 > allowable_stress * (1 + 1e-12):
             raise FieldError(("rim", "speed"),
-                             f"{self.speed:g} m/s gives the hoop stress ρ·v² = "
-                             f"{density * self.speed ** 2 / 1e6:.6g} MPa above the allowable "
-                             f"{allowable_stress / 1e6:.6g} MPa ({material}, ρ = {density:g} kg/m³), whatever the "
-                             f"diameter (allowed: at most √(σ/ρ) = "
-                             f"{(allowable_stress / density) ** 0.5:.6g} m/s)")
+                             Notice(f"{self.speed:g} m/s gives the hoop stress ρ·v² = "
+                                    f"{density * self.speed ** 2 / 1e6:.6g} MPa above the "
+                                    f"allowable {allowable_stress / 1e6:.6g} MPa ({material}, "
+                                    f"ρ = {density:g} kg/m³), whatever the diameter (allowed: at "
+                                    f"most √(σ/ρ) = {(allowable_stress / density) ** 0.5:.6g} m/s)",
+                                    "rim_speed_stress", speed=self.speed,
+                                    stress=density * self.speed ** 2 / 1e6,
+                                    allowable=allowable_stress / 1e6, material=material,
+                                    density=density, top=(allowable_stress / density) ** 0.5))
 
     def design(self, J: float, omega: float, density: float, allowable_stress: float):
         """The rim (:class:`flywheel.dynamics.sizing.RimDesign`) for J [kg·m²] at ω [rad/s]."""

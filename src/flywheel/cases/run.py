@@ -14,7 +14,7 @@ from typing import Annotated, Literal, Union
 
 from pydantic import BaseModel, Field, PrivateAttr, Strict, model_validator
 
-from flywheel.errors import CaseFileError, Notice
+from flywheel.errors import CaseFileError, Notice, led
 from flywheel.io.schema import FieldError, StrictModel, within, clean_loc, describe, load, loc_str, pick, validate
 from flywheel.cases.rim import MATERIALS, RimSpec  # shared with the task2 format
 from flywheel.cases.tabulated import TabulatedSpec
@@ -74,7 +74,7 @@ class Machine(StrictModel):
     @model_validator(mode="after")
     def _check(self):
         if (self.speed_rps is None) == (self.speed_rpm is None):
-            raise ValueError("give exactly one of speed_rps, speed_rpm")
+            raise ValueError(Notice("give exactly one of speed_rps, speed_rpm", "speed_rps_or_rpm"))
         revs = self.cycle_deg / 360.0
         if not (1 <= revs <= CYCLE_REVS_MAX and revs == round(revs)):
             raise FieldError(("cycle_deg",), Notice(
@@ -198,7 +198,8 @@ class PointSpec(StrictModel):
     @model_validator(mode="after")
     def _one_way(self):
         if (self.to is None) == (self.distance is None):
-            raise ValueError("give either `to` (with fraction) or `distance` (with angle_deg)")
+            raise ValueError(Notice("give either `to` (with fraction) or `distance` (with angle_deg)",
+                                    "point_to_or_distance"))
         if self.distance is not None and (self.fraction or self.across):
             raise ValueError("`fraction` and `across` go with `to`, not with `distance`")
         if self.to is not None and self.angle_deg:
@@ -216,7 +217,7 @@ class LinkSpec(StrictModel):
     @model_validator(mode="after")
     def _centroid(self):
         if self.mass > 0 and self.centroid is None:
-            raise ValueError("a link with mass needs `centroid`")
+            raise ValueError(Notice("a link with mass needs `centroid`", "link_mass_centroid"))
         return self
 
 
@@ -353,7 +354,7 @@ class CylinderSpec(StrictModel):
         if len(s) < 2:
             raise FieldError(("s",), "needs at least 2 values")
         if any(b <= a for a, b in zip(s, s[1:])):
-            raise FieldError(("s",), "must be strictly increasing")
+            raise FieldError(("s",), Notice("must be strictly increasing", "strictly_increasing"))
         if abs(s[0]) > 1e-12 or abs(s[-1] - 1) > 1e-12:
             raise FieldError(("s",), f"must span [0, 1] (got {s[0]} … {s[-1]})")
         two = [k for k in ("towards_head", "away_from_head") if getattr(self, k) is not None]
@@ -372,7 +373,8 @@ class CylinderSpec(StrictModel):
         for key, values in self.tables().items():
             if len(values) != len(s):
                 loc = ("strokes", key) if self.strokes is not None else (key,)
-                raise FieldError(loc, f"needs {len(s)} values, one per s (got {len(values)})")
+                raise FieldError(loc, Notice(f"needs {len(s)} values, one per s (got {len(values)})",
+                                              "values_per_s", n=len(s), count=len(values)))
         if self.strokes is not None:
             from flywheel.dynamics.loads import stroke_joins
 
@@ -381,10 +383,13 @@ class CylinderSpec(StrictModel):
                 if abs(p_begin - p_end) > self.join_tolerance:
                     raise FieldError(
                         ("strokes", begin),
-                        f"begins at p/p_max = {p_begin:g} at s = {at:g}, where {end} ends at "
-                        f"{p_end:g}: the strokes do not meet (a jump of {abs(p_begin - p_end):.4g}; "
-                        f"allowed: at most join_tolerance = {self.join_tolerance:g}; a rise at "
-                        f"firing belongs inside the expansion table, just after s = 0)")
+                        Notice(f"begins at p/p_max = {p_begin:g} at s = {at:g}, where {end} ends at "
+                               f"{p_end:g}: the strokes do not meet (a jump of "
+                               f"{abs(p_begin - p_end):.4g}; allowed: at most join_tolerance = "
+                               f"{self.join_tolerance:g}; a rise at firing belongs inside the "
+                               f"expansion table, just after s = 0)", "strokes_do_not_meet",
+                               p_begin=p_begin, at=at, end=end, p_end=p_end,
+                               jump=abs(p_begin - p_end), tol=self.join_tolerance))
         return self
 
     def tables(self) -> dict[str, list[float]]:
@@ -455,7 +460,9 @@ class GivenRim(StrictModel):
     @model_validator(mode="after")
     def _check(self):
         if not self.D_inner < self.D:
-            raise FieldError(("D_inner",), f"{self.D_inner:g} m is not below D = {self.D:g} m")
+            raise FieldError(("D_inner",), Notice(f"{self.D_inner:g} m is not below D = {self.D:g} m",
+                                                  "rim_inner_above_outer", inner=self.D_inner,
+                                                  D=self.D))
         return self
 
 
@@ -498,16 +505,18 @@ class FlywheelSpec(StrictModel):
     @model_validator(mode="after")
     def _rim_share_once(self):
         if self.rim is not None and "rim_share" in self.model_fields_set:
-            raise FieldError(("rim_share",), "with [flywheel.rim] the share is "
-                                             "flywheel.rim.share (give it there)")
+            raise FieldError(("rim_share",), Notice("with [flywheel.rim] the share is "
+                                                    "flywheel.rim.share (give it there)",
+                                                    "rim_share_twice"))
         forms = [k for k in ("J", "mass", "given_disk", "given_rim") if getattr(self, k) is not None]
         if len(forms) > 1:
-            raise FieldError((forms[1],), f"a given flywheel is one of J, mass with "
-                             f"radius_of_gyration, given_disk, given_rim (got {', '.join(forms)})")
+            raise FieldError((forms[1],), Notice(f"a given flywheel is one of J, mass with "
+                             f"radius_of_gyration, given_disk, given_rim (got {', '.join(forms)})",
+                             "given_flywheel_forms", forms=", ".join(forms)))
         if (self.mass is None) != (self.radius_of_gyration is None):
             which = "radius_of_gyration" if self.mass is not None else "mass"
-            raise FieldError((which,), "missing: mass and radius_of_gyration go together "
-                                       "(J = m·k²)")
+            raise FieldError((which,), Notice("missing: mass and radius_of_gyration go together "
+                                              "(J = m·k²)", "mass_radius_missing"))
         if self.rim is not None and self.rim.speed is not None:
             self.rim.check_speed(self.rho, self.sigma, self.material
                                  if self.density is None and self.allowable_stress is None
@@ -646,24 +655,29 @@ def _check_references(case: Case) -> None:
                                         "[tabulated] (docs/tabulated.md)")
         return
     if case.crank.length is None and case.design.mean_piston_speed is None:
-        raise FieldError(("crank", "length"), "missing: give crank.length or design.mean_piston_speed")
+        raise FieldError(("crank", "length"), Notice("missing: give crank.length or "
+                                                     "design.mean_piston_speed", "crank_length_missing"))
     points: set[str] = set()
     links: set[str] = set()
 
     def new_point(name: str, loc: tuple) -> None:
         if name in points:
-            raise FieldError(loc, f"point name {name!r} is already defined")
+            raise FieldError(loc, Notice(f"point name {name!r} is already defined", "point_twice",
+                                         name=name))
         points.add(name)
 
     def new_link(name: str, loc: tuple) -> None:
         if name in links:
-            raise FieldError(loc, f"link name {name!r} is already defined")
+            raise FieldError(loc, Notice(f"link name {name!r} is already defined", "link_twice",
+                                         name=name))
         links.add(name)
 
     def known(name: str, loc: tuple) -> None:
         if name not in points:
-            raise FieldError(loc, f"point {name!r} is used before it is defined "
-                                 f"(defined so far: {', '.join(sorted(points))})")
+            raise FieldError(loc, Notice(f"point {name!r} is used before it is defined "
+                                         f"(defined so far: {', '.join(sorted(points))})",
+                                         "point_used_before", name=name,
+                                         so_far=", ".join(sorted(points))))
 
     for name in case.ground:
         new_point(name, ("ground", name))
@@ -721,52 +735,65 @@ def _check_references(case: Case) -> None:
     place_points()
     for name, p in pending.items():
         if p.link not in links:
-            raise FieldError(("points", name, "link"), f"link {p.link!r} is not defined "
-                                                      f"(links: {', '.join(sorted(links))})")
+            raise FieldError(("points", name, "link"), Notice(
+                f"link {p.link!r} is not defined (links: {', '.join(sorted(links))})",
+                "link_not_defined", name=p.link, links=", ".join(sorted(links))))
         missing = p.from_ if p.from_ not in points else p.to
-        raise FieldError(("points", name), f"point {missing!r} is never defined")
+        raise FieldError(("points", name), Notice(f"point {missing!r} is never defined",
+                                                  "point_never_defined", name=missing))
     for name, link in case.links.items():
         if name not in links:
-            raise FieldError(("links", name), f"no link named {name!r} (links: {', '.join(sorted(links))})")
+            raise FieldError(("links", name), Notice(
+                f"no link named {name!r} (links: {', '.join(sorted(links))})", "no_link_named",
+                name=name, links=", ".join(sorted(links))))
         if link.centroid is not None and link.centroid not in points:
-            raise FieldError(("links", name, "centroid"), f"point {link.centroid!r} is not defined")
+            raise FieldError(("links", name, "centroid"), Notice(
+                f"point {link.centroid!r} is not defined", "point_not_defined", name=link.centroid))
         if link.centroid is not None and link.centroid not in on[name]:
             raise FieldError(("links", name, "centroid"), f"point {link.centroid!r} is not on link "
                             f"{name} (its points: {', '.join(sorted(on[name]))})")
     for i, c in enumerate(case.cylinders):
         if c.piston not in sliders:
-            raise FieldError(("cylinders", i, "piston"), f"{c.piston!r} is not the slider of an RRP dyad "
-                                                        f"(sliders: {', '.join(sorted(sliders)) or 'none'})")
+            raise FieldError(("cylinders", i, "piston"), Notice(
+                f"{c.piston!r} is not the slider of an RRP dyad "
+                f"(sliders: {', '.join(sorted(sliders)) or 'none'})", "not_a_slider_of",
+                name=c.piston, sliders=", ".join(sorted(sliders))))
     for i, c in enumerate(case.cylinders):
         for key, values in c.tables().items():
             low, high = min(values), max(values)
             if not high <= 1 + 1e-9:          # (mut) 1e300 here overflowed the energy silently
                 raise FieldError(("cylinders", i) + c.table_loc(key),
-                                 f"p/p_max = {high:g} is above 1: p_max = {c.p_max:g} Pa is the "
-                                 f"largest pressure of the diagram (allowed: −0.101325 MPa/p_max "
-                                 f"… 1; to go higher, raise p_max)")
+                                 Notice(f"p/p_max = {high:g} is above 1: p_max = {c.p_max:g} Pa "
+                                        f"is the largest pressure of the diagram (allowed: "
+                                        f"−0.101325 MPa/p_max … 1; to go higher, raise p_max)",
+                                        "pressure_above_p_max", high=high, p_max=c.p_max))
             if low * c.p_max < -ATM:
                 raise FieldError(("cylinders", i) + c.table_loc(key),
-                                 f"p/p_max = {low:g} gives "
-                                 f"{low * c.p_max / 1e6:.4g} MPa gauge, below absolute vacuum "
-                                 f"(allowed: p ≥ −0.101325 MPa gauge)")
+                                 Notice(f"p/p_max = {low:g} gives "
+                                        f"{low * c.p_max / 1e6:.4g} MPa gauge, below absolute "
+                                        f"vacuum (allowed: p ≥ −0.101325 MPa gauge)",
+                                        "pressure_below_vacuum", low=low,
+                                        mpa=low * c.p_max / 1e6))
     _check_engine(case)
     for i, f in enumerate(case.forces):
         if f.slider not in sliders:
-            raise FieldError(("forces", i, "slider"), f"{f.slider!r} is not the slider of an RRP dyad")
+            raise FieldError(("forces", i, "slider"), Notice(
+                f"{f.slider!r} is not the slider of an RRP dyad", "not_a_slider", name=f.slider))
         lo, hi = f.s_range
         if not 0 <= lo < hi <= 1:
-            raise FieldError(("forces", i, "s_range"), f"must satisfy 0 ≤ from < to ≤ 1 (got {lo}, {hi})")
+            raise FieldError(("forces", i, "s_range"), Notice(
+                f"must satisfy 0 ≤ from < to ≤ 1 (got {lo}, {hi})", "s_range", lo=lo, hi=hi))
     for i, c in enumerate(case.couples):
         if c.link not in links:
-            raise FieldError(("couples", i, "link"), f"no link named {c.link!r}")
+            raise FieldError(("couples", i, "link"), Notice(f"no link named {c.link!r}",
+                                                             "no_link", name=c.link))
     names = ([(("cylinders", i, "name"), c.name) for i, c in enumerate(case.cylinders)]
              + [(("forces", i, "name"), f.name) for i, f in enumerate(case.forces)]
              + [(("couples", i, "name"), c.name) for i, c in enumerate(case.couples)])
     seen: set[str] = set()
     for loc, n in names:
         if n in seen:
-            raise FieldError(loc, f"load name {n!r} is used twice")
+            raise FieldError(loc, Notice(f"load name {n!r} is used twice", "load_twice", name=n))
         seen.add(n)
 
 
@@ -781,10 +808,11 @@ def _check_pins(case: Case) -> None:
             gap = abs((where[0] - angle + 180.0) % 360.0 - 180.0)
             if gap < 1e-9 and abs(where[1] - length) <= 1e-12 * length:
                 raise FieldError(("crank", "pins", i, "angle_deg"),
-                                 f"{pin.angle_deg:g}° puts pin {pin.name!r} where {what} {name!r} "
-                                 f"is (same angle and throw): pins at the same angle are one pin "
-                                 f"with one name (allowed: attach the rods to {name!r}, or give "
-                                 f"another angle)")
+                                 Notice(f"{pin.angle_deg:g}° puts pin {pin.name!r} where {what} "
+                                        f"{name!r} is (same angle and throw): pins at the same "
+                                        f"angle are one pin with one name (allowed: attach the "
+                                        f"rods to {name!r}, or give another angle)", "pin_twice",
+                                        angle=pin.angle_deg, pin=pin.name, whom=what, name=name))
         seen.append((where, pin.name, f"pin (crank.pins[{i}])"))
 
 
@@ -796,9 +824,10 @@ def _check_engine(case: Case) -> None:
     for i, c in enumerate(case.cylinders):
         if c.four_stroke and round(cycle) % 720:
             raise FieldError(("cylinders", i, "diagram" if c.diagram is not None else "strokes"),
-                             f"a four-stroke diagram spans 720° of "
-                             f"crank angle, the machine's cycle is {cycle:g}° (allowed: "
-                             f"machine.cycle_deg = 720, or a multiple of 720)")
+                             Notice(f"a four-stroke diagram spans 720° of "
+                                    f"crank angle, the machine's cycle is {cycle:g}° (allowed: "
+                                    f"machine.cycle_deg = 720, or a multiple of 720)",
+                                    "four_stroke_cycle", cycle=cycle))
     order = case.machine.firing_order
     if order is None:
         return
@@ -819,8 +848,10 @@ def _check_engine(case: Case) -> None:
         seen.add(name)
     missing = [n for n in four if n not in seen]
     if missing:
-        raise FieldError(("machine", "firing_order"), f"cylinder {missing[0]!r} is missing (a "
-                         f"firing order lists every four-stroke cylinder once: {', '.join(four)})")
+        raise FieldError(("machine", "firing_order"), Notice(
+            f"cylinder {missing[0]!r} is missing (a firing order lists every four-stroke "
+            f"cylinder once: {', '.join(four)})", "firing_order_missing", name=missing[0],
+            four=", ".join(four)))
     for i, c in enumerate(case.cylinders):
         if c.fires_at_deg is not None and c.name != order[0]:
             raise FieldError(("cylinders", i, "fires_at_deg"), f"machine.firing_order sets where "
@@ -917,7 +948,8 @@ def _fields_at(loc: tuple) -> list[str]:
 
 def _describe(err: dict) -> str:
     if err["type"] in ("union_tag_invalid", "union_tag_not_found"):
-        return f"{loc_str(clean_loc(err['loc'], _DYAD_TAGS))}: kind must be one of RRP, RRR, RPR"
+        return led(f"{loc_str(clean_loc(err['loc'], _DYAD_TAGS))}: ",
+                   Notice("kind must be one of RRP, RRR, RPR", "dyad_kind"))
     return describe(err, _fields_at, _DYAD_TAGS)
 
 

@@ -10,6 +10,7 @@ from typing import Annotated, Literal
 import numpy as np
 from pydantic import Field, PrivateAttr, ValidationInfo, model_validator
 
+from flywheel.errors import Notice
 from flywheel.io.schema import FieldError, StrictModel
 
 MIN_POSITIONS = 6
@@ -148,8 +149,9 @@ def _validate(t: TabulatedSpec, cycle: float = CYCLE_DEG) -> None:
             raise TableError(("positions_deg", i), f"duplicated angle {p[i]:g}° (positions {i} and "
                                                    f"{i + 1})")
         if p[i] < p[i - 1]:
-            raise TableError(("positions_deg", i), f"{p[i]:g}° after {p[i - 1]:g}°: positions must "
-                                                   f"increase")
+            raise TableError(("positions_deg", i), Notice(
+                f"{p[i]:g}° after {p[i - 1]:g}°: positions must increase", "positions_increase",
+                at=p[i], before=p[i - 1]))
     distinct = n - 1 if t.closed else n
     if distinct < MIN_POSITIONS:
         raise TableError(("positions_deg",), f"{distinct} distinct positions are too few "
@@ -166,8 +168,9 @@ def _validate(t: TabulatedSpec, cycle: float = CYCLE_DEG) -> None:
 
     def row(values, loc: tuple, nonneg: bool = False) -> None:
         if len(values) != n:
-            raise TableError(loc, f"needs {n} values, one per position in positions_deg "
-                                  f"(got {len(values)})")
+            raise TableError(loc, Notice(f"needs {n} values, one per position in positions_deg "
+                                         f"(got {len(values)})", "values_per_position", n=n,
+                                         count=len(values)))
         if nonneg and min(values) < 0:
             i = int(np.argmin(values))
             raise TableError(loc + (i,), f"{values[i]:g} < 0: velocity analogues are magnitudes "
@@ -188,8 +191,9 @@ def _validate(t: TabulatedSpec, cycle: float = CYCLE_DEG) -> None:
                                  f"but no velocity analogues: give point = a row of "
                                  f"[tabulated.points] (rows: {known_points})")
         if lk.point is not None and lk.point not in t.points:
-            raise TableError(("links", name, "point"), f"velocity analogues of {lk.point!r} are "
-                             f"missing from [tabulated.points] (rows: {known_points})")
+            raise TableError(("links", name, "point"), Notice(
+                f"velocity analogues of {lk.point!r} are missing from [tabulated.points] (rows: "
+                f"{known_points})", "analogues_missing", name=lk.point, rows=known_points))
         if lk.J > 0:
             key = lk.omega_q or name
             if key not in t.omega_q:
@@ -199,8 +203,9 @@ def _validate(t: TabulatedSpec, cycle: float = CYCLE_DEG) -> None:
     names: set[str] = set()
     for i, f in enumerate(t.forces):
         if f.point not in t.points:
-            raise TableError(("forces", i, "point"), f"velocity analogues of {f.point!r} are missing "
-                             f"from [tabulated.points] (rows: {known_points})")
+            raise TableError(("forces", i, "point"), Notice(
+                f"velocity analogues of {f.point!r} are missing from [tabulated.points] (rows: "
+                f"{known_points})", "analogues_missing", name=f.point, rows=known_points))
         for key in ("magnitude", "angle_deg"):
             v = getattr(f, key)
             if isinstance(v, list):

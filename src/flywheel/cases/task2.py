@@ -35,7 +35,8 @@ def _amount(v):
     """A number, or the string "balance" (the unknown of the cycle balance) or "power" (the
     unknown of the mean power)."""
     if isinstance(v, str) and v not in (BALANCE, POWER):
-        raise ValueError(f'must be a number, "balance" or "power" (got {v!r})')
+        raise ValueError(Notice(f'must be a number, "balance" or "power" (got {v!r})',
+                                "amount_word", value=repr(v)))
     return v
 
 
@@ -250,7 +251,9 @@ def _describe(err: dict, data: dict) -> str:
         near = difflib.get_close_matches(str(tag), list(KINDS), n=1)
         hint = f"; did you mean {near[0]!r}?" if near and tag else ""
         what = f"unknown kind {tag!r}" if tag else "missing kind"
-        return f"{loc_str(clean_loc(loc))}.kind: {what}{hint} (allowed: {', '.join(KINDS)})"
+        return led(f"{loc_str(clean_loc(loc))}.kind: ", Notice(
+            f"{what}{hint} (allowed: {', '.join(KINDS)})", "graph_kind", tag=str(tag),
+            near=near[0] if near and tag else "", allowed=", ".join(KINDS)))
 
     def allowed(parent: tuple) -> list[str]:
         model = _model_at(clean_loc(parent), data)
@@ -263,7 +266,8 @@ def _describe(err: dict, data: dict) -> str:
 
 def _pos(field: str, v: float | None, unit: str) -> None:
     if v is not None and not v > 0:
-        raise FieldError(field, f"must be positive (got {v:g} {unit})")
+        raise FieldError(field, Notice(f"must be positive (got {v:g} {unit})", "must_be_positive",
+                                       v=v, unit=unit))
 
 
 def _check(case: Task2Case) -> None:
@@ -280,9 +284,10 @@ def _check(case: Task2Case) -> None:
                      "min_rpm": "max_rpm"}[given[0]]
             raise FieldError(f"speed.{other}", f"missing: speed limits come in pairs "
                                                f"({given[0]} with {other})")
-        raise FieldError("speed", "give exactly one of omega0, omega0_rpm, mean, mean_rpm, or the "
-                                  "limits max and min (or max_rpm and min_rpm)"
-                         + (f" (got {', '.join(given)})" if given else ""))
+        raise FieldError("speed", Notice("give exactly one of omega0, omega0_rpm, mean, mean_rpm, "
+                                         "or the limits max and min (or max_rpm and min_rpm)"
+                                         + (f" (got {', '.join(given)})" if given else ""),
+                                         "task2_speed_one_of", given=", ".join(given)))
     for k in given:
         _pos(f"speed.{k}", getattr(s, k), "rad/s" if "rpm" not in k else "rpm")
     if len(given) == 2 and not getattr(s, given[1]) < getattr(s, given[0]):
@@ -298,11 +303,14 @@ def _check(case: Task2Case) -> None:
         raise FieldError("flywheel.delta", Notice(f"must lie between 0 and 2 (got {f.delta:g})",
                                                   "delta_0_2", delta=f.delta))
     if f.J is not None and f.mass is not None:
-        raise FieldError("flywheel", "give J or mass with radius_of_gyration, not both")
+        raise FieldError("flywheel", Notice("give J or mass with radius_of_gyration, not both",
+                                             "task2_J_or_mass"))
     if f.mass is not None and f.radius_of_gyration is None:
-        raise FieldError("flywheel", "mass and radius_of_gyration go together (J = m·k²)")
+        raise FieldError("flywheel", Notice("mass and radius_of_gyration go together (J = m·k²)",
+                                             "mass_radius_together"))
     if f.delta is not None and f.fluctuation_percent is not None:
-        raise FieldError("flywheel", "give delta or fluctuation_percent, not both")
+        raise FieldError("flywheel", Notice("give delta or fluctuation_percent, not both",
+                                             "task2_delta_or_percent"))
     limits = len(given) == 2
     if limits and (f.delta is not None or f.fluctuation_percent is not None):
         which = "delta" if f.delta is not None else "fluctuation_percent"
@@ -317,7 +325,7 @@ def _check(case: Task2Case) -> None:
             f.rim.check_speed(f.rho, f.sigma, f.material if f.density is None and
                               f.allowable_stress is None else "the given material")
         except FieldError as exc:
-            raise FieldError(("flywheel", *exc.loc), str(exc)) from None
+            raise FieldError(("flywheel", *exc.loc), said(exc)) from None
     if case.power is not None:
         _pos("power", case.power, "W")
     mean_known = given[0] in ("mean", "mean_rpm") or limits
@@ -327,7 +335,8 @@ def _check(case: Task2Case) -> None:
                                              f"(got {x:g})")
     if case.diagram is not None:
         if case.driving is not None or case.resistance is not None:
-            raise FieldError("diagram", "give either [diagram] or [driving] and [resistance], not both")
+            raise FieldError("diagram", Notice("give either [diagram] or [driving] and [resistance], "
+                                                "not both", "diagram_or_graphs"))
         if case.at_deg:
             raise FieldError("at_deg", "a diagram given by areas has no moments between its "
                                        "crossings: ε, ω and t at an angle need [driving] and "
@@ -354,9 +363,10 @@ def _check(case: Task2Case) -> None:
                                                     ("resistance", case.resistance))
                 if g.unknown_field()]
     if len(unknowns) > 1:
-        raise FieldError(f"{unknowns[1][0]}.{unknowns[1][1]}",
-                   '"balance" may stand for one value only (the other is '
-                   f"{unknowns[0][0]}.{unknowns[0][1]})")
+        raise FieldError(f"{unknowns[1][0]}.{unknowns[1][1]}", Notice(
+            '"balance" may stand for one value only (the other is '
+            f"{unknowns[0][0]}.{unknowns[0][1]})", "balance_once",
+            other=f"{unknowns[0][0]}.{unknowns[0][1]}"))
     powered = [(n, g.power_field()) for n, g in (("driving", case.driving),
                                                  ("resistance", case.resistance))
                if g.power_field()]
@@ -384,34 +394,39 @@ def _check_graph(name: str, g, cycle: float) -> None:
             raise FieldError(f"{name}.points", "needs at least two [angle, moment] points")
         for i in range(1, len(g.points)):
             if g.points[i][0] < g.points[i - 1][0]:
-                raise FieldError(f"{name}.points[{i}]",
-                           f"angle {g.points[i][0]:g}° comes after {g.points[i - 1][0]:g}°: "
-                           "angles must not decrease")
+                raise FieldError(f"{name}.points[{i}]", Notice(
+                    f"angle {g.points[i][0]:g}° comes after {g.points[i - 1][0]:g}°: "
+                    "angles must not decrease", "points_go_back", at=g.points[i][0],
+                    before=g.points[i - 1][0]))
             if i >= 2 and g.points[i][0] == g.points[i - 1][0] == g.points[i - 2][0]:
-                raise FieldError(f"{name}.points[{i}]",
-                           f"a third value at {g.points[i][0]:g}°: a jump has two (the value "
-                           "before and the value after it)")
+                raise FieldError(f"{name}.points[{i}]", Notice(
+                    f"a third value at {g.points[i][0]:g}°: a jump has two (the value "
+                    "before and the value after it)", "points_third_value", at=g.points[i][0]))
         if g.points[0][0] != 0 or g.points[-1][0] != cycle:
-            raise FieldError(f"{name}.points",
-                       f"must span the cycle 0…{cycle:g}° (spans "
-                       f"{g.points[0][0]:g}…{g.points[-1][0]:g}°)")
+            raise FieldError(f"{name}.points", Notice(
+                f"must span the cycle 0…{cycle:g}° (spans "
+                f"{g.points[0][0]:g}…{g.points[-1][0]:g}°)", "points_span", cycle=cycle,
+                first=g.points[0][0], last=g.points[-1][0]))
     elif isinstance(g, (TriangleGraph, RectangleGraph, TrapezoidGraph)):
         if not 0 <= g.from_deg < g.to_deg <= cycle:
-            raise FieldError(f"{name}.from_deg", f"need 0 ≤ from_deg < to_deg ≤ {cycle:g} "
-                       f"(got {g.from_deg:g}, {g.to_deg:g})")
+            raise FieldError(f"{name}.from_deg", Notice(
+                f"need 0 ≤ from_deg < to_deg ≤ {cycle:g} (got {g.from_deg:g}, {g.to_deg:g})",
+                "from_to_deg", cycle=cycle, start=g.from_deg, end=g.to_deg))
         if isinstance(g, TriangleGraph) and g.apex_deg is not None \
                 and not g.from_deg <= g.apex_deg <= g.to_deg:
             raise FieldError(f"{name}.apex_deg", f"must lie within {g.from_deg:g}…{g.to_deg:g}° "
                        f"(got {g.apex_deg:g})")
         if isinstance(g, TrapezoidGraph) and not (
                 g.from_deg <= g.top_from_deg <= g.top_to_deg <= g.to_deg):
-            raise FieldError(f"{name}.top_from_deg",
-                       "need from_deg ≤ top_from_deg ≤ top_to_deg ≤ to_deg")
+            raise FieldError(f"{name}.top_from_deg", Notice(
+                "need from_deg ≤ top_from_deg ≤ top_to_deg ≤ to_deg", "trapezoid_top"))
     elif isinstance(g, HarmonicGraph):
         n = max(len(g.a), len(g.b))
         if g.orders is not None:
             if len(g.orders) != n:
-                raise FieldError(f"{name}.orders", f"{len(g.orders)} orders for {n} terms")
+                raise FieldError(f"{name}.orders", Notice(f"{len(g.orders)} orders for {n} terms",
+                                                          "orders_for_terms", orders=len(g.orders),
+                                                          terms=n))
             if any(not k > 0 for k in g.orders):
                 raise FieldError(f"{name}.orders", "orders must be positive")
 
@@ -444,8 +459,9 @@ def _check_diagram(d: Diagram, cycle: float) -> None:
         raise FieldError(f"diagram.{key}", "needs at least two areas")
     total, size = math.fsum(vals), math.fsum(abs(v) for v in vals)
     if abs(total) > BALANCE_RTOL * size:
-        raise FieldError(f"diagram.{key}", f"sum to {total:.6g}, not 0: over a cycle the areas above "
-                   "and below the mean line must be equal")
+        raise FieldError(f"diagram.{key}", Notice(
+            f"sum to {total:.6g}, not 0: over a cycle the areas above "
+            "and below the mean line must be equal", "areas_do_not_close", total=total))
     if d.crossings_deg is not None:
         c = d.crossings_deg
         if len(c) != len(vals) + 1:

@@ -44,7 +44,7 @@ def aggregate_command(
     import math
 
     from flywheel.cli.guard import guarded, needs_out, refuse_nonfinite
-    from flywheel.errors import InputError
+    from flywheel.errors import InputError, Notice
 
     with guarded(source=case):      # an error of the analysis is prefixed with the case file
         from flywheel.render import nomenclature as nm
@@ -53,9 +53,10 @@ def aggregate_command(
         if lang not in LANGS:
             raise InputError(f"--lang: {lang!r} is not a language (allowed: {', '.join(LANGS)})")
         if t_end is not None and not (math.isfinite(t_end) and 0 < t_end <= MAX_T_END):
-            raise InputError(f"--t-end: {t_end:g} s is out of range (allowed: 0 … {MAX_T_END:g} s; "
-                             "a start-up is over in seconds to a minute, and the integration "
-                             "time grows with it)")
+            raise InputError(Notice(f"--t-end: {t_end:g} s is out of range (allowed: 0 … "
+                                    f"{MAX_T_END:g} s; a start-up is over in seconds to a "
+                                    "minute, and the integration time grows with it)",
+                                    "t_end_range", t=t_end, top=MAX_T_END))
         from flywheel.render.report_folder import check_formats
 
         formats = check_formats(report)
@@ -67,7 +68,8 @@ def aggregate_command(
         c = load_aggregate_case(case)
         ch, drive = to_model(c, str(case))
         if plot is not None and drive is None:
-            raise InputError("--plot needs a [motor]: a chain without one has no motion in time")
+            raise InputError(Notice("--plot needs a [motor]: a chain without one has no motion "
+                                    "in time", "plot_needs_motor"))
         from flywheel.cli.progress import stage_bar
 
         with stage_bar() as progress:   # a bar on a terminal only (a long --t-end takes seconds)
@@ -80,7 +82,9 @@ def aggregate_command(
             try:
                 draw(result, plot, c.title, lang)
             except (OSError, ValueError) as exc:
-                raise InputError(f"--plot {plot}: cannot write the image ({exc})") from None
+                raise InputError(Notice(f"--plot {plot}: cannot write the image ({exc})",
+                                        "plot_cannot_write", plot=str(plot),
+                                        reason=str(exc))) from None
         if out is not None:
             written = _write_out(out, result, formats, c.title, c.source, lang)
     if json:

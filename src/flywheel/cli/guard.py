@@ -138,8 +138,11 @@ def not_finite(quantity: str, detail: str, who: str = "") -> NoReturn:
     """The one non-finite policy: ``error: who: <quantity> is not finite (detail): …``, exit 2.
 
     ``who`` names the inputs to blame (the case file and its fields, or the options given)."""
-    fail(f"{who + ': ' if who else ''}{quantity} is not finite ({detail}): the values overflow "
-         "double precision (the numbers are too large or too small)")
+    from flywheel.errors import Notice
+
+    fail(Notice(f"{who + ': ' if who else ''}{quantity} is not finite ({detail}): the values "
+                "overflow double precision (the numbers are too large or too small)",
+                "not_finite", who=who, quantity=quantity, detail=detail))
 
 
 def refuse_nonfinite(document, who: str = "") -> None:

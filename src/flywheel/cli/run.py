@@ -97,8 +97,9 @@ def run_command(
 
     c = _guard(load_case, case)
     if animate and c.tabulated is not None:
-        fail(f"--animate: {case} gives its kinematics as a table ([tabulated]): there is no "
-             "mechanism to animate (allowed: a case with [crank] and [[dyads]])")
+        fail(Notice(f"--animate: {case} gives its kinematics as a table ([tabulated]): there is "
+                    "no mechanism to animate (allowed: a case with [crank] and [[dyads]])",
+                    "animate_tabulated", case=str(case)))
     from flywheel.cli.progress import stage_bar
 
     def analyze_with_bar():             # a bar on a terminal only (the transients take seconds),

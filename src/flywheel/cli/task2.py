@@ -109,7 +109,8 @@ def task2_command(
         if lang not in LANGS:
             raise InputError(f"--lang: {lang!r} is not a language (allowed: {', '.join(LANGS)})")
         if plot is not None and plot.is_dir():
-            raise InputError(f"--plot {plot}: is a folder, expected an image file")
+            raise InputError(Notice(f"--plot {plot}: is a folder, expected an image file",
+                                        "plot_is_a_folder", plot=str(plot)))
         from flywheel.render.report_folder import check_formats
 
         formats = check_formats(report)
@@ -118,7 +119,9 @@ def task2_command(
         if case is not None:
             used = (["--profile"] if profile is not None else []) + [n for n, _ in given]
             if used:
-                raise InputError(f"--case takes its data from the file; drop {', '.join(used)}")
+                raise InputError(Notice(f"--case takes its data from the file; drop "
+                                        f"{', '.join(used)}", "case_drops_options",
+                                        used=", ".join(used)))
             from flywheel.cases.task2 import load_task2_case, solve_case
 
             c = load_task2_case(case)
@@ -138,7 +141,8 @@ def task2_command(
 
             profile = "triangle" if profile is None else profile
             if profile not in PROFILES:
-                raise InputError(f"--profile must be triangle or rectangle (got {profile!r})")
+                raise InputError(Notice(f"--profile must be triangle or rectangle (got {profile!r})",
+                                        "profile_choice", value=repr(profile)))
             for name, v in given:
                 if not math.isfinite(v):
                     raise InputError(Notice(f"{name} must be a finite number (got {v})",
@@ -201,7 +205,9 @@ def task2_command(
             try:
                 draw(result, plot, title, lang)
             except (OSError, ValueError) as exc:
-                raise InputError(f"--plot {plot}: cannot write the image ({exc})") from None
+                raise InputError(Notice(f"--plot {plot}: cannot write the image ({exc})",
+                                        "plot_cannot_write", plot=str(plot),
+                                        reason=str(exc))) from None
         if out is not None:
             written = _write_out(out, result, formats, title, source, doc_title, doc_source, lang)
     if as_json:

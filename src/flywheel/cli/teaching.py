@@ -45,7 +45,8 @@ def variants_command(
         fail(Notice(f"--seed: {seed} is not allowed (allowed: 0 … 2^63 − 1)",
                     "option_not_allowed", option="--seed", got=seed, allowed="0 … 2^63 − 1"))
     if points < 36:
-        fail(f"--points: {points} is too few (allowed: 36 or more)")
+        fail(Notice(f"--points: {points} is too few (allowed: 36 or more)", "points_too_few",
+                    n=points))
     if lang not in ("en", "ru"):
         fail(f"--lang: {lang!r} is not a language (allowed: en, ru)")
     if sheets_format not in ("both", "html", "pdf"):
@@ -134,8 +135,9 @@ def grade_command(
         fail(choice("--csv", csv_style, "a CSV dialect", "plain, excel-ru"))
     for option, path in (("--out", out), ("--gradebook", gradebook)):
         if path is not None and not path.is_dir() and not path.parent.is_dir():
-            fail(f"{option} {path}: the folder {path.parent} does not exist (allowed: a CSV file "
-                 "name in an existing folder)")
+            fail(Notice(f"{option} {path}: the folder {path.parent} does not exist (allowed: a "
+                        "CSV file name in an existing folder)", "csv_folder_missing",
+                        option=option, path=str(path), parent=str(path.parent)))
     k = _guard(load_key, key)
     from rich.console import Console
     from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn
@@ -157,8 +159,8 @@ def grade_command(
                         f"first: {first})", "nothing_graded", n=len(report.problems),
                         detail=first))
         files = ", ".join(report.files) or ", ".join(map(str, answers))
-        fail(f"{files}: nothing could be graded: no filled-in student rows (a row needs a "
-             "student name and a variant)")
+        fail(Notice(f"{files}: nothing could be graded: no filled-in student rows (a row needs "
+                    "a student name and a variant)", "no_student_rows", files=files))
     if out is not None:
         text = report_csv(report)
         if csv_style == "excel-ru":

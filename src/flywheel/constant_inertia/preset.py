@@ -11,7 +11,7 @@ from typing import Sequence
 
 from flywheel.constant_inertia.graphs import TWO_PI, constant, rectangle, triangle
 from flywheel.constant_inertia.solve import Task2Result, balance, check_positive, solve
-from flywheel.errors import InputError
+from flywheel.errors import InputError, Notice
 
 SEED_DEFAULTS = {"M_D": 15.0, "J": 12.0, "omega0": 200.0}
 SEED_SPANS_DEG = {"triangle": (90.0, 270.0), "rectangle": (90.0, 180.0)}
@@ -39,8 +39,10 @@ def seed_task(profile: str = "triangle", *, M_D: float = 15.0, J: float = 12.0,
         raise InputError(f"from ({math.degrees(start):g}°) must be less than to "
                          f"({math.degrees(end):g}°)")
     if start < 0 or end > TWO_PI * (1 + 1e-12):
-        raise InputError(f"from and to must lie within 0…360° (got {math.degrees(start):g}°, "
-                         f"{math.degrees(end):g}°)")
+        raise InputError(Notice(f"from and to must lie within 0…360° (got "
+                                f"{math.degrees(start):g}°, {math.degrees(end):g}°)",
+                                "from_to_cycle", start=math.degrees(start),
+                                end=math.degrees(end)))
     check_positive("M_D", M_D, "N·m")
     check_positive("J", J, "kg·m²")
     check_positive("ω0", omega0, "rad/s")

@@ -477,7 +477,9 @@ def power_value(make: Callable[[float], Moment], power: float, omega_mean: float
     x = float(round(x, 12)) if abs(x - round(x, 12)) < 1e-12 * max(1.0, abs(x)) else x
     x += 0.0
     if not math.isfinite(x):
-        raise NotFiniteError(quantity, f"the mean power gives a {which} moment of {x!r} N·m")
+        raise NotFiniteError(quantity, Notice(f"the mean power gives a {which} moment of "
+                                              f"{x!r} N·m", "nf_power_moment", which=which,
+                                              x=repr(x)))
     if x < 0.0:
         raise InputError(f"the mean power {power:.6g} W needs a negative {which} moment value "
                          f"({x:.6g}): the graph's fixed part alone does more work than "
@@ -522,7 +524,8 @@ def balance(make_D: Callable[[float], Moment], make_C: Callable[[float], Moment]
     x += 0.0    # no −0.0
     if not math.isfinite(x):
         raise NotFiniteError("M_C" if unknown == "resistance" else "M_D",
-                             f"the cycle balance gives a {unknown} moment of {x!r} N·m")
+                             Notice(f"the cycle balance gives a {unknown} moment of {x!r} N·m",
+                                    "nf_balance_moment", which=unknown, x=repr(x)))
     if x < 0.0:
         raise InputError(
             f"the cycle balance needs a negative {unknown} moment ({x:.6g} N·m): "
@@ -576,7 +579,8 @@ def _motion(bounds: list[float], kinds: list[str], A: list[float], J: float | No
     """
     bad = next((i for i, a in enumerate(A) if not math.isfinite(a)), None)
     if bad is not None:
-        raise NotFiniteError(f"segments[{bad}].A", f"the work A(φ) = {A[bad]!r} J")
+        raise NotFiniteError(f"segments[{bad}].A", Notice(f"the work A(φ) = {A[bad]!r} J",
+                                                           "nf_work", x=repr(A[bad])))
     # the first of equal extremes (equal to 1e-12 of the swing: round-off must not choose)
     tol = 1e-12 * (max(A) - min(A))
     i_max = next(i for i, a in enumerate(A) if a >= max(A) - tol)

@@ -329,9 +329,11 @@ def _speeds_from_flywheel(d: DutyCycle, J: float) -> _Timeline:
         need = _timeline(d, w1, 0.0).dE
         what = "½·m·v²" if d.linear_speeds else "½·J·ω²"
         raise DutyCycleError(d.field("flywheel", "flywheel"),
-                             f"the flywheel is too small: to give the {need:.6g} J (ΔE) of each "
-                             f"operation its speed would fall to zero ({what} = "
-                             f"{0.5 * J * w1 ** 2:.6g} J at most); give a larger flywheel")
+                             Notice(f"the flywheel is too small: to give the {need:.6g} J (ΔE) "
+                                    f"of each operation its speed would fall to zero ({what} = "
+                                    f"{0.5 * J * w1 ** 2:.6g} J at most); give a larger flywheel",
+                                    "duty_flywheel_small", need=need, energy=what,
+                                    top=0.5 * J * w1 ** 2))
     x = _bisect(f, 0.0, top)
     return _timeline(d, *pair(x))
 

@@ -18,7 +18,7 @@ import numpy as np
 from flywheel.dynamics import loads as L
 from flywheel.dynamics.grid import slider_frame
 from flywheel.dynamics.results import CylinderResult
-from flywheel.errors import InputError
+from flywheel.errors import InputError, Notice
 
 _TWO_REV = 4 * np.pi
 _SAME = 1e-9            # rad: two firings closer than this are the same instant
@@ -78,12 +78,15 @@ def firing_angles(case, mech, dcs: dict) -> dict[str, float]:
         at = prev + step
         if at >= first + _TWO_REV - _SAME:
             listing = ", ".join(f"{n} at {_deg(heads[n])}/{_deg(heads[n] + 2 * np.pi)}" for n in order)
-            raise InputError(
+            raise InputError(Notice(
                 f"machine.firing_order: {'-'.join(order)} does not fit in one 720° cycle: "
                 f"cylinder {name} (position {k + 1}) would fire at {_deg(at)}, not before cylinder "
                 f"{order[0]} fires again at {_deg(first + _TWO_REV)} (allowed: an order in which "
                 f"each cylinder reaches its head dead centre after the one before, all within "
-                f"720°; the head dead centres: {listing})")
+                f"720°; the head dead centres: {listing})", "firing_order_fit",
+                order="-".join(order), name=name, position=k + 1, at=_deg(at), first=order[0],
+                again=_deg(first + _TWO_REV),
+                heads=[(n, _deg(heads[n]), _deg(heads[n] + 2 * np.pi)) for n in order]))
         out[name] = at
         prev = at
     return {n: a % _TWO_REV for n, a in out.items()}

@@ -184,7 +184,7 @@ def design_rim(J: float, omega: float, density: float, allowable_stress: float, 
     >>> round(r.rim_speed ** 2 * 7200.0 / 7e6, 12), round(r.mass * (r.D_mean / 2) ** 2, 9)
     (1.0, 100.0)
     """
-    from flywheel.errors import InputError
+    from flywheel.errors import InputError, Notice
 
     if not 0.0 < share <= 1.0:
         raise InputError(f"flywheel.rim.share: {share:g} is not a share (allowed: 0 < share ≤ 1)")
@@ -211,10 +211,10 @@ def design_rim(J: float, omega: float, density: float, allowable_stress: float, 
         t = math.sqrt(m / (math.pi * D * ratio * density))
         b = ratio * t
     if not t < D:
-        raise InputError(
+        raise InputError(Notice(
             f"flywheel.rim: the rim comes out {t:.4g} m thick on a mean diameter of {D:.4g} m, "
             f"so it has no hole (allowed: thickness < mean diameter: a higher rim speed, a wider "
-            f"rim, or a smaller share)")
+            f"rim, or a smaller share)", "rim_no_hole", t=t, D=D))
     return RimDesign(J=float(J), share=float(share), omega=float(omega), density=float(density),
                      allowable_stress=float(allowable_stress), speed_from=speed_from,
                      D_mean=D, rim_speed=v, stress=density * v ** 2, mass=m, thickness=t,

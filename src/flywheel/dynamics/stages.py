@@ -18,7 +18,7 @@ from flywheel.dynamics import energy, motion, reduction, sizing
 from flywheel.dynamics.results import (EnergyResult, FlywheelShape, ForceResult, LoadsResult,
                                        MotionResult, ReductionResult, SizingResult,
                                        TimeDomainResult)
-from flywheel.errors import InputError, Notice
+from flywheel.errors import InputError, Notice, said
 
 
 POWER_RTOL = 0.01
@@ -155,7 +155,8 @@ def size_flywheel(phi: np.ndarray, en: EnergyResult, red: ReductionResult, machi
         try:
             designed = rim_spec.design(J_shaft, omega_m * fw.speed_ratio, fw.rho, fw.sigma)
         except InputError as exc:
-            raise InputError(f"{exc} (the flywheel's J = {J_shaft:.6g} kg·m² on its shaft)") from None
+            raise InputError(Notice(f"{exc} (the flywheel's J = {J_shaft:.6g} kg·m² on its shaft)",
+                                    "with_flywheel_J", detail=said(exc), J=J_shaft)) from None
     return SizingResult(
         omega_mean=float(omega_m), delta=float(delta), J_required=float(J_req),
         J_first_group=J_first, J_flywheel=float(J_fly), J_required_exact=float(J_exact),
@@ -244,13 +245,15 @@ def given_flywheel_delta(en: EnergyResult, red: ReductionResult, machine, J_give
     _, _, wm, delta = motion.speed_fluctuation(motion.omega_from_energy(T0, en.A, J_I, red.J_II))
     if not abs(wm - machine.omega_mean) <= 1e-6 * machine.omega_mean:
         # ω_min → 0 and still (ω_max + ω_min)/2 > ω_m: no steady motion at this mean speed
-        raise InputError(f"the given flywheel (J = {J_given:.6g} kg·m²) is too small for these "
-                         f"loads: the energy change over the cycle, {float(np.ptp(en.A)):.4g} J, "
-                         f"stops the machine before it can average ω_m = "
-                         f"{machine.omega_mean:.6g} rad/s — no steady motion exists (allowed: a "
-                         f"J_I + J_II of at least about "
-                         f"{float(np.ptp(en.A)) / (2 * machine.omega_mean ** 2):.4g} kg·m² on "
-                         f"the crank shaft: a larger flywheel.J, or smaller loads)")
+        swing, need = float(np.ptp(en.A)), float(np.ptp(en.A)) / (2 * machine.omega_mean ** 2)
+        raise InputError(Notice(
+            f"the given flywheel (J = {J_given:.6g} kg·m²) is too small for these "
+            f"loads: the energy change over the cycle, {swing:.4g} J, "
+            f"stops the machine before it can average ω_m = "
+            f"{machine.omega_mean:.6g} rad/s — no steady motion exists (allowed: a "
+            f"J_I + J_II of at least about {need:.4g} kg·m² on "
+            f"the crank shaft: a larger flywheel.J, or smaller loads)", "given_flywheel_small",
+            J=J_given, swing=swing, omega=machine.omega_mean, need=need))
     return float(delta)
 
 
@@ -413,19 +416,22 @@ def time_domain(case, phi: np.ndarray, red: ReductionResult, en: EnergyResult,
         n_up = timedomain.startup_cycles(phi, J, en.M_known, motor, machine.omega_mean,
                                          delta)
         if n_up is not None and n_up > timedomain.MAX_STARTUP_CYCLES:
-            raise InputError(
+            raise InputError(Notice(
                 f"motor: the start-up of --transients would take about {n_up:.3g} cycles "
                 f"(ω̄·τ·(ln(50/δ) − 1)/Φ with the time constant τ = J̄·ω_x/M_п), more than the limit "
                 f"of {timedomain.MAX_STARTUP_CYCLES} cycles: the motor (motor.starting_torque, "
-                "motor.no_load_speed_rpm) is too weak for these masses; run without --transients")
+                "motor.no_load_speed_rpm) is too weak for these masses; run without --transients",
+                "startup_too_long", n=n_up, top=timedomain.MAX_STARTUP_CYCLES))
     n_down = timedomain.rundown_cycles(phi, J, en.M_known, float(mo.omega[0]))
     if n_down is not None and n_down > timedomain.MAX_RUNDOWN_CYCLES:
-        raise InputError(
+        work = 0.5 * float(J[0]) * float(mo.omega[0]) ** 2 / n_down
+        raise InputError(Notice(
             f"the run-down of --transients would take about {n_down:.3g} cycles (the kinetic "
             f"energy ½·J·ω² over the work the loads take per cycle, "
-            f"{0.5 * float(J[0]) * float(mo.omega[0]) ** 2 / n_down:.3g} J), more "
+            f"{work:.3g} J), more "
             f"than the limit of {timedomain.MAX_RUNDOWN_CYCLES} cycles: the loads are very small "
-            "for the masses; run without --transients")
+            "for the masses; run without --transients", "rundown_too_long", n=n_down, work=work,
+            top=timedomain.MAX_RUNDOWN_CYCLES))
     verification = timedomain.verify_steady(phi, J, dJ, en.M_sum, mo.omega,
                                             progress=stage("steady check"))
     histories, means = {}, None

@@ -28,7 +28,7 @@ import numpy as np
 from flywheel.elastic.chain import Chain, Drive
 from flywheel.elastic.forced import Steady
 from flywheel.elastic.modes import Modes, natural_frequencies
-from flywheel.errors import InputError
+from flywheel.errors import InputError, Notice
 
 #: the explicit start-up runs at most this many periods of the highest natural frequency
 MAX_FAST_PERIODS = 2000
@@ -143,6 +143,7 @@ def check_work(ch: Chain, drive: Drive | None, t_end: float, what: str, option: 
     if steps <= MAX_STEPS:
         return
     motor_rate = drive.slope / ch.J[0] if drive is not None and drive.kind == "linear" else 0.0
+    kind = "option" if option else "motor" if motor_rate >= 0.5 * rho else "stiff"
     if option:
         cause = f"{option}: "
         fix = f"give a shorter {option}"
@@ -154,9 +155,13 @@ def check_work(ch: Chain, drive: Drive | None, t_end: float, what: str, option: 
     else:
         cause = ""
         fix = "a damper or a shaft this stiff for these rotors makes the system stiff (damping, c)"
-    raise InputError(f"{cause}the {what} would take about {steps:.3g} integration steps "
-                     f"({t_end:.4g} s; highest rate of the system {max(rho, _highest(ch, modes)):.4g} "
-                     f"1/s), more than the limit of {MAX_STEPS}: {fix}")
+    rate = max(rho, _highest(ch, modes))
+    raise InputError(Notice(f"{cause}the {what} would take about {steps:.3g} integration steps "
+                            f"({t_end:.4g} s; highest rate of the system {rate:.4g} "
+                            f"1/s), more than the limit of {MAX_STEPS}: {fix}", "too_many_steps",
+                            cause=cause, task=what, steps=steps, t_end=t_end, rate=rate,
+                            top=MAX_STEPS, fix_kind=kind, option=option,
+                            motor_rate=motor_rate))
 
 
 def simulate(ch: Chain, drive: Drive | None, phi0, omega0, t_end: float, n_samples: int = 2001,

@@ -273,7 +273,9 @@ def write_file(path: Path, text: str, option: str = "--out", expected: str = "a 
     be written."""
     path = Path(path)
     if path.is_dir():
-        raise InputError(f"{option} {path}: is a folder, expected {expected}")
+        raise InputError(Notice(f"{option} {path}: is a folder, expected {expected}",
+                                "option_is_a_folder", option=option, path=str(path),
+                                expected=expected))
     tmp = None
     try:
         path.parent.mkdir(parents=True, exist_ok=True)

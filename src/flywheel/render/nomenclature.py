@@ -1007,7 +1007,7 @@ PREFIXES = {"warning": ("warning", "предупреждение"), "note": ("no
 
 def _ru_params(code: str, p: dict) -> dict:
     """Parameters of a Notice that need words of their own in Russian."""
-    p = _msgs_ru_params(p)
+    p = _msgs2_ru_params(code, _msgs_ru_params(p))
     if code == "startup_not_steady":
         p["target"] = (f"{p['omega_pred']:.5g} рад/с" if p.get("omega_pred") is not None
                        else "нет: характеристика двигателя не может нести среднюю нагрузку")
@@ -1240,4 +1240,265 @@ def _msgs_ru_params(p: dict) -> dict:
         if "x" in p:                                         # out_of_range: "12 м/с"
             p["unit_ru"] = f" {p['unit_ru']}" if p["unit"] else ""
     p["got_ru"] = f" (задано {p['got']})" if p.get("got") else ""
+    return p
+
+
+# --- msgs2 ---
+# The cross-field checks of the case files (cases/*.py), the duty cycle's limits, in Russian.
+MESSAGES_RU.update({
+    # cases/run.py
+    "speed_rps_or_rpm": "задайте что-то одно: speed_rps или speed_rpm",
+    "point_to_or_distance": "задайте что-то одно: `to` (с fraction) или `distance` (с angle_deg)",
+    "link_mass_centroid": "у звена с массой должен быть задан `centroid`",
+    "strictly_increasing": "значения должны строго возрастать",
+    "values_per_s": "нужно {n} значений, по одному на каждое s (задано {count})",
+    "strokes_do_not_meet": ("начинается с p/p_max = {p_begin:g} при s = {at:g}, где {end} "
+                            "кончается на {p_end:g}: такты не смыкаются (скачок {jump:.4g}; "
+                            "допустимо: не больше join_tolerance = {tol:g}; подъём при вспышке "
+                            "задаётся в таблице расширения, сразу после s = 0)"),
+    "rim_inner_above_outer": "{inner:g} м — не меньше D = {D:g} м",
+    "rim_share_twice": ("при [flywheel.rim] доля задаётся как flywheel.rim.share (укажите её "
+                        "там)"),
+    "given_flywheel_forms": ("заданный маховик — что-то одно из: J, mass с radius_of_gyration, "
+                             "given_disk, given_rim (задано {forms})"),
+    "mass_radius_missing": "не задано: mass и radius_of_gyration задаются вместе (J = m·k²)",
+    "crank_length_missing": "не задано: укажите crank.length или design.mean_piston_speed",
+    "point_twice": "имя точки {name!r} уже занято",
+    "link_twice": "имя звена {name!r} уже занято",
+    "point_used_before": "точка {name!r} используется раньше, чем задана (заданы: {so_far})",
+    "link_not_defined": "звено {name!r} не задано (звенья: {links})",
+    "point_never_defined": "точка {name!r} нигде не задана",
+    "no_link_named": "нет звена {name!r} (звенья: {links})",
+    "point_not_defined": "точка {name!r} не задана",
+    "not_a_slider_of": "{name!r} — не ползун группы RRP (ползуны: {sliders_ru})",
+    "pressure_above_p_max": ("p/p_max = {high:g} больше 1: p_max = {p_max:g} Па — наибольшее "
+                             "давление диаграммы (допустимо: −0.101325 МПа/p_max … 1; чтобы "
+                             "поднять выше, увеличьте p_max)"),
+    "pressure_below_vacuum": ("p/p_max = {low:g} даёт {mpa:.4g} МПа избыточного давления, ниже "
+                              "абсолютного вакуума (допустимо: p ≥ −0.101325 МПа избыточного)"),
+    "not_a_slider": "{name!r} — не ползун группы RRP",
+    "s_range": "должно быть 0 ≤ from < to ≤ 1 (задано {lo}, {hi})",
+    "no_link": "нет звена {name!r}",
+    "load_twice": "имя нагрузки {name!r} встречается дважды",
+    "pin_twice": ("{angle:g}° ставит шейку {pin!r} туда, где уже {whom_ru} {name!r} (тот же "
+                  "угол и радиус): шейки под одним углом — одна шейка с одним именем (допустимо: "
+                  "присоедините шатуны к {name!r} или задайте другой угол)"),
+    "four_stroke_cycle": ("четырёхтактная диаграмма занимает 720° угла кривошипа, а цикл машины "
+                          "— {cycle:g}° (допустимо: machine.cycle_deg = 720 или кратное 720)"),
+    "firing_order_missing": ("нет цилиндра {name!r} (порядок работы перечисляет каждый "
+                             "четырёхтактный цилиндр один раз: {four})"),
+    "dyad_kind": "kind должно быть одним из: RRP, RRR, RPR",
+    # cases/rim.py
+    "rim_share": "{share:g} — не доля J маховика (допустимо: 0 < share ≤ 1)",
+    "rim_width_or_ratio": "задайте что-то одно: width или width_to_thickness",
+    "rim_speed_stress": ("{speed:g} м/с даёт окружное напряжение ρ·v² = {stress:.6g} МПа больше "
+                         "допускаемого {allowable:.6g} МПа ({material_ru}, ρ = {density:g} "
+                         "кг/м³) при любом диаметре (допустимо: не больше √(σ/ρ) = {top:.6g} "
+                         "м/с)"),
+    # cases/task2.py
+    "amount_word": "должно быть числом, \"balance\" или \"power\" (задано {value})",
+    "must_be_positive": "должно быть положительным (задано {v:g}{unit_sp_ru})",
+    "task2_speed_one_of": ("задайте что-то одно: omega0, omega0_rpm, mean, mean_rpm или пределы "
+                           "max и min (или max_rpm и min_rpm){given_ru}"),
+    "task2_J_or_mass": "задайте что-то одно: J или mass с radius_of_gyration",
+    "mass_radius_together": "mass и radius_of_gyration задаются вместе (J = m·k²)",
+    "task2_delta_or_percent": "задайте что-то одно: delta или fluctuation_percent",
+    "diagram_or_graphs": "задайте что-то одно: [diagram] или [driving] и [resistance]",
+    "balance_once": ("\"balance\" может заменять лишь одно значение (другое уже задано так: "
+                     "{other})"),
+    "points_go_back": "угол {at:g}° идёт после {before:g}°: углы не должны убывать",
+    "points_third_value": ("третье значение при {at:g}°: у скачка их два (значение до и значение "
+                           "после него)"),
+    "points_span": "должно охватывать цикл 0…{cycle:g}° (охвачено {first:g}…{last:g}°)",
+    "from_to_deg": "нужно 0 ≤ from_deg < to_deg ≤ {cycle:g} (задано {start:g}, {end:g})",
+    "trapezoid_top": "нужно from_deg ≤ top_from_deg ≤ top_to_deg ≤ to_deg",
+    "orders_for_terms": "{orders} порядков гармоник на {terms} членов ряда",
+    "areas_do_not_close": ("сумма {total:.6g}, а не 0: за цикл площади над средней линией и под "
+                           "ней должны быть равны"),
+    # cases/tabulated.py
+    "positions_increase": "{at:g}° после {before:g}°: положения должны возрастать",
+    "values_per_position": ("нужно {n} значений, по одному на каждое положение positions_deg "
+                            "(задано {count})"),
+    "analogues_missing": ("аналогов скоростей точки {name!r} нет в [tabulated.points] (строки: "
+                          "{rows})"),
+    # cases/aggregate.py
+    "coupling_c_or_dL": "задайте что-то одно: c или d и L (с G)",
+    "shaft_G": ("не задано: с d и L нужен модуль сдвига G (например, 8.0e10 Па для стали)"),
+    "motor_J_missing": "не задано обязательное поле (J_Д, момент инерции ротора двигателя, кг·м²)",
+    "motor_torque_one_of": ("задайте что-то одно: starting_torque или rated_torque с "
+                            "rated_slip"),
+    "chain_or_two_mass": ("случай — либо двухмассовый агрегат ([coupling], [machine]), либо "
+                          "цепочка ([[rotors]], [[shafts]]), но не то и другое"),
+    "two_mass_needs": "не задано: двухмассовому агрегату нужны [motor], [coupling] и [machine]",
+    "J_III_missing": ("не задано: укажите J_III (J_пр.III, кг·м²) или J_III_0 с "
+                      "J_III_positions"),
+    "i21_missing": "не задано: маховику на валу II нужно i21 = ω_II/ω_I",
+    "fixed_end_shafts": ("не задано: неподвижный конец rotors[{k}] связан валом с ротором; "
+                         "задайте [[shafts]] (N роторам нужно N − 1 валов)"),
+    "aggregate_form": ("не задано: задайте двухмассовый агрегат ([motor], [coupling], [machine]) "
+                       "или цепочку ([[rotors]] и [[shafts]])"),
+    "two_rotors": "цепочке нужно не меньше двух роторов (задано {count})",
+    "shafts_count": "{rotors} роторам нужно {shafts} валов между ними (задано {count})",
+    "rotor_names": "имена роторов должны различаться",
+    "load_needs_motor": "не задано: для [load] нужен [motor] на первом роторе",
+    # cases/duty_cycle.py, duty_cycle/solve.py
+    "duty_out_of_range": ("{x:g}{unit_ru} вне допустимого диапазона{why_ru} (допустимо: {left} "
+                          "значение {right}{unit_ru})"),
+    "speed_not_below": "{v:g} — не меньше {other} = {vo:g} (допустимо: {allowed})",
+    "duty_flywheel_small": ("маховик слишком мал: чтобы отдать {need:.6g} Дж (ΔE) на каждую "
+                            "операцию, его скорость упала бы до нуля ({energy} = не больше "
+                            "{top:.6g} Дж); возьмите маховик больше"),
+})
+MESSAGES_RU.update({
+    # the non-finite policy (cli/guard.py not_finite; constant_inertia/solve.py's details)
+    "not_finite": ("{who_ru}{quantity_ru} — не конечное число ({detail_ru}): значения выходят за "
+                   "пределы двойной точности (числа слишком велики или слишком малы)"),
+    "nf_power_moment": "средняя мощность даёт {which_ru} {x} Н·м",
+    "nf_balance_moment": "баланс работ за цикл даёт {which_ru} {x} Н·м",
+    "nf_work": "работа A(φ) = {x} Дж",
+    # the command-line options
+    "at_not_finite": "--at: {a} — не конечный угол в градусах",
+    "t_end_range": ("--t-end: {t:g} с вне допустимого диапазона (допустимо: 0 … {top:g} с; разгон "
+                    "длится от секунд до минуты, а время интегрирования растёт вместе с ним)"),
+    "too_many_steps": ("{cause}{task_ru} потребовал бы около {steps:.3g} шагов интегрирования "
+                       "({t_end:.4g} с; наибольшая скорость процессов системы {rate:.4g} 1/с), "
+                       "больше предела {top}: {fix_ru}"),
+    "plot_needs_motor": "--plot требует [motor]: у цепочки без двигателя нет движения во времени",
+    "plot_is_a_folder": "--plot {plot}: это папка, а нужен файл изображения",
+    "plot_cannot_write": "--plot {plot}: не удаётся записать изображение ({reason})",
+    "case_drops_options": "--case берёт данные из файла; уберите {used}",
+    "profile_choice": "--profile должно быть triangle или rectangle (задано {value})",
+    "from_to_cycle": "from и to должны лежать в пределах 0…360° (задано {start:g}°, {end:g}°)",
+    "points_too_few": "--points: {n} — слишком мало (допустимо: 36 и больше)",
+})
+MESSAGES_RU.update({
+    # teaching/variants.py: the template's paths, ranges and answers
+    "path_not_in": ("{name!r} нет в {here_ru} (там есть: {keys_ru}){hint_ru} — изменяемое поле "
+                    "должно иметь значение в шаблоне"),
+    "positive_got": "должно быть положительным{got_ru}",
+    "max_below_min": "max ({hi}) меньше min ({lo})",
+    "spec_not_table": ("должно быть таблицей {{ values = [...] }} или {{ min = …, max = …, "
+                       "step = … }}{got_ru}"),
+    "nonempty_array": "должно быть непустым списком{got_ru}",
+    "answers_missing": ("не задано (ключи результатов для ключа ответов, например answers = "
+                        "[\"J_required\", \"delta_T_max\"])"),
+    "answers_empty": "должно быть непустым списком имён результатов{got_ru}",
+    "not_an_answer": "не является одним из ответов (допустимы: {allowed})",
+    "not_a_result": "{name!r} {what_ru} (числовые результаты: {names}){hint_ru}",
+    "no_variants_table": ("нет таблицы [variants] (в ней сказано, что менять и какие результаты "
+                          "служат ответами; см. docs/teacher.md)"),
+    "draws_failed": ("вариант {number}: {failed} попыток подряд не прошли проверку или расчёт; "
+                     "сузьте диапазоны в [variants] (последняя ошибка: {detail_ru})"),
+    # teaching/grading.py: the answer key; cli/teaching.py, io/output.py: the files written
+    "key_not_object": "должно быть объектом JSON {{вариант: {{ответ: значение}}}} (задано {type})",
+    "key_no_variants": "{where_ru}: должно быть непустым объектом {{вариант: {{ответ: значение}}}}",
+    "key_tolerances": "должно быть объектом {{ответ: положительное число}}{got_ru}",
+    "key_is_a_folder": "{path}: это папка, а нужен answers.json команды flywheel variants",
+    "not_json": "{path}: не JSON: {msg} (строка {line}, столбец {col})",
+    "option_is_a_folder": "{option} {path}: это папка, а нужно {expected_ru}",
+    "csv_folder_missing": ("{option} {path}: папки {parent} не существует (допустимо: имя файла "
+                           "CSV в существующей папке)"),
+    "no_student_rows": ("{files}: нечего проверить: нет заполненных строк студентов (в строке "
+                        "нужны имя студента и вариант)"),
+})
+MESSAGES_RU.update({
+    # dynamics/sizing.py, dynamics/stages.py: the designed rim, a given flywheel, --transients
+    "rim_no_hole": ("flywheel.rim: обод получается толщиной {t:.4g} м при среднем диаметре "
+                    "{D:.4g} м, и отверстия не остаётся (допустимо: толщина < среднего диаметра: "
+                    "больше окружная скорость обода, шире обод или меньше доля)"),
+    "with_flywheel_J": "{detail_ru} (J маховика на его валу = {J:.6g} кг·м²)",
+    "given_flywheel_small": ("заданный маховик (J = {J:.6g} кг·м²) слишком мал для этих "
+                             "нагрузок: изменение энергии за цикл, {swing:.4g} Дж, останавливает "
+                             "машину раньше, чем она наберёт среднюю скорость ω_m = {omega:.6g} "
+                             "рад/с — установившегося движения нет (допустимо: J_I + J_II не "
+                             "меньше примерно {need:.4g} кг·м² на валу кривошипа: больше "
+                             "flywheel.J или меньше нагрузки)"),
+    "startup_too_long": ("motor: разгон для --transients занял бы около {n:.3g} циклов "
+                         "(ω̄·τ·(ln(50/δ) − 1)/Φ с постоянной времени τ = J̄·ω_x/M_п), больше "
+                         "предела {top} циклов: двигатель (motor.starting_torque, "
+                         "motor.no_load_speed_rpm) слишком слаб для этих масс; запустите без "
+                         "--transients"),
+    "rundown_too_long": ("выбег для --transients занял бы около {n:.3g} циклов (кинетическая "
+                         "энергия ½·J·ω² на работу нагрузок за цикл, {work:.3g} Дж), больше "
+                         "предела {top} циклов: нагрузки очень малы для этих масс; запустите без "
+                         "--transients"),
+    "animate_tabulated": ("--animate: {case} задаёт кинематику таблицей ([tabulated]): "
+                          "анимировать нечего, механизма нет (допустимо: случай с [crank] и "
+                          "[[dyads]])"),
+    "graph_kind": "{tag_ru}{hint_ru} (допустимы: {allowed})",
+})
+MESSAGES_RU["firing_order_fit"] = (
+    "machine.firing_order: {order} не укладывается в один цикл 720°: цилиндр {name} (позиция "
+    "{position}) сработал бы при {at}, не раньше, чем цилиндр {first} сработает снова при "
+    "{again} (допустимо: порядок, в котором каждый цилиндр приходит в верхнюю мёртвую точку "
+    "после предыдущего, всё в пределах 720°; верхние мёртвые точки: {heads_ru})")
+MESSAGES_RU.update({
+    # cases/duty_cycle.py: the operation, the cycle, the flywheel
+    "one_of_keys": "задайте что-то одно из: {keys}{given_ru}",
+    "duty_work_one_way": ("задайте работу одним способом: energy, или energy_per_area с площадью "
+                          "среза, или force (или shear_strength) с thickness и shape (задано "
+                          "{given})"),
+    "duty_work_missing": ("не задано: укажите работу одной операции (energy, energy_per_area с "
+                          "площадью среза или force с thickness и shape) или delta_E"),
+    "duty_thickness_missing": "не задано: работу определяет путь силы (толщина листа)",
+    "duty_shape_missing": ("не задано: укажите, как сила меняется на пути (допустимо: constant, "
+                           "falling, triangle)"),
+    "duty_cycle_missing": ("не задано: укажите [cycle] (как часто) или мощность либо момент "
+                           "двигателя, чтобы найти наибольший темп, который он выдержит"),
+    "duty_J_or_mass": "задайте что-то одно: J или mass",
+})
+_MSGS2_DERIVED = {"heads_ru", "unit_sp_ru", "tag_ru", "here_ru", "keys_ru", "what_ru", "expected_ru", "who_ru", "quantity_ru", "which_ru", "task_ru", "fix_ru", "sliders_ru", "whom_ru", "material_ru", "given_ru", "shafts", "why_ru"}
+_MSGS_DERIVED |= _MSGS2_DERIVED
+_WHOM_RU = {"the crank's tip": "конец кривошипа"}
+
+
+def _msgs2_ru_params(code: str, p: dict) -> dict:
+    """The Russian words of the msgs2 errors' parameters."""
+    if "sliders" in p:
+        p["sliders_ru"] = p["sliders"] or "нет"
+    if "whom" in p:
+        w = p["whom"]
+        p["whom_ru"] = _WHOM_RU.get(w, w.replace("pin (", "шейка ("))
+    if code == "rim_speed_stress":
+        p["material_ru"] = ("заданный материал" if p["material"] == "the given material"
+                            else material(p["material"], "ru"))
+    if "given" in p:
+        p["given_ru"] = f" (задано {p['given']})" if p["given"] else ""
+    if code == "shafts_count":
+        p["shafts"] = p["rotors"] - 1
+    if code == "not_finite":
+        p["who_ru"] = f"{p['who']}: " if p["who"] else ""
+        p["quantity_ru"] = "результат" if p["quantity"] == "a result" else p["quantity"]
+    if "which" in p:
+        p["which_ru"] = {"resistance": "момент сопротивления",
+                         "driving": "движущий момент"}.get(p["which"], p["which"])
+    if code == "too_many_steps":
+        p["task_ru"] = {"start-up": "разгон", "steady check": "расчёт установившегося режима"
+                        }.get(p["task"], p["task"])
+        p["fix_ru"] = {
+            "option": f"задайте {p['option']} короче",
+            "motor": (f"характеристика двигателя крута для его ротора: M_п/ω_x на J_Д = "
+                      f"{p['motor_rate']:.3g} 1/с; более пологая (motor.synchronous_rpm, момент) "
+                      "или более тяжёлый ротор (J двигателя) делают задачу решаемой"),
+            "stiff": ("демпфер или вал такой жёсткости для этих роторов делают систему жёсткой "
+                      "(демпфирование, c)")}[p["fix_kind"]]
+    if code == "path_not_in":
+        p["here_ru"] = "верхнем уровне" if p["here"] == "the top level" else p["here"]
+        p["keys_ru"] = "ничего" if p["keys"] == "nothing" else p["keys"]
+    if code == "not_a_result":
+        p["what_ru"] = ("не является результатом" if p["value"] is None
+                        else f"— не конечное число (это {p['value']})")
+    if code == "key_no_variants":
+        p["where_ru"] = p["where"] or "ключ"
+    if code == "option_is_a_folder":
+        p["expected_ru"] = {"a CSV file name": "имя файла CSV",
+                            "a file name": "имя файла"}.get(p["expected"], p["expected"])
+    if code == "must_be_positive":
+        p["unit_sp_ru"] = f" {p['unit_ru']}" if p["unit"] else ""
+    if code == "firing_order_fit":
+        p["heads_ru"] = ", ".join(f"{n} при {a}/{b}" for n, a, b in p["heads"])
+    if code == "graph_kind":
+        p["tag_ru"] = f"неизвестный вид {p['tag']!r}" if p["tag"] else "не задан вид"
+    if "below_zero" in p:
+        p["why_ru"] = ": скорость упала бы до нуля или ниже" if p["below_zero"] else ""
     return p

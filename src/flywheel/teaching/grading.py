@@ -90,8 +90,9 @@ def _positive(v) -> bool:
 def parse_key(doc, source: str = "<key>") -> Key:
     """Check a parsed answers.json document (one CaseFileError line if it is not a key)."""
     if not isinstance(doc, dict):
-        raise CaseFileError(f"{source}: must be a JSON object {{variant: {{answer: value}}}} "
-                            f"(got {type(doc).__name__})")
+        raise CaseFileError(led(f"{source}: ", Notice(
+            f"must be a JSON object {{variant: {{answer: value}}}} (got {type(doc).__name__})",
+            "key_not_object", type=type(doc).__name__)))
     if "variants" in doc:
         table = doc["variants"]
         where = "variants"
@@ -101,14 +102,16 @@ def parse_key(doc, source: str = "<key>") -> Key:
     else:
         table, where, tol, tols, answers = doc, "", DEFAULT_TOLERANCE, {}, None
     if not isinstance(table, dict) or not table:
-        raise CaseFileError(f"{source}: {where or 'the key'}: must be a non-empty object "
-                            "{variant: {answer: value}}")
+        raise CaseFileError(led(f"{source}: ", Notice(
+            f"{where or 'the key'}: must be a non-empty object {{variant: {{answer: value}}}}",
+            "key_no_variants", where=where)))
     if not _positive(tol):
         raise CaseFileError(led(f"{source}: tolerance: ", Notice(
             f"must be a positive number (got {tol!r})", "not_positive_number", got=repr(tol))))
     if not isinstance(tols, dict) or not all(_positive(v) for v in tols.values()):
-        raise CaseFileError(f"{source}: tolerances: must be an object {{answer: positive "
-                            f"number}} (got {tols!r})")
+        raise CaseFileError(led(f"{source}: tolerances: ", Notice(
+            f"must be an object {{answer: positive number}} (got {tols!r})", "key_tolerances",
+            got=repr(tols))))
     variants: dict[str, dict[str, float]] = {}
     for vid, ans in table.items():
         at = f"{where}.{vid}" if where else str(vid)
@@ -139,19 +142,22 @@ def load_key(path) -> Key:
     try:
         text = path.read_text(encoding="utf-8-sig")
     except FileNotFoundError:
-        raise CaseFileError(f"{path}: no such file") from None
+        raise CaseFileError(Notice(f"{path}: no such file", "no_such_file", path=str(path))) from None
     except IsADirectoryError:
-        raise CaseFileError(f"{path}: is a folder, expected the answers.json of "
-                            "flywheel variants") from None
+        raise CaseFileError(Notice(f"{path}: is a folder, expected the answers.json of "
+                                   "flywheel variants", "key_is_a_folder", path=str(path))) from None
     except UnicodeDecodeError as exc:
-        raise CaseFileError(f"{path}: not UTF-8 text ({exc.reason} at byte {exc.start})") from None
+        raise CaseFileError(Notice(f"{path}: not UTF-8 text ({exc.reason} at byte {exc.start})",
+                                   "not_utf8", path=str(path), reason=exc.reason,
+                                   byte=exc.start)) from None
     except OSError as exc:
         raise CaseFileError(f"{path}: cannot be read ({exc.strerror})") from None
     try:
         doc = json.loads(text)
     except json.JSONDecodeError as exc:
-        raise CaseFileError(f"{path}: not JSON: {exc.msg} at line {exc.lineno} column "
-                            f"{exc.colno}") from None
+        raise CaseFileError(Notice(f"{path}: not JSON: {exc.msg} at line {exc.lineno} column "
+                                   f"{exc.colno}", "not_json", path=str(path), msg=exc.msg,
+                                   line=exc.lineno, col=exc.colno)) from None
     return parse_key(doc, str(path))
 
 

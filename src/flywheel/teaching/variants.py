@@ -132,8 +132,10 @@ def _resolve(doc, path: str, where: str) -> tuple[tuple[str | int, ...], Any]:
                 near = difflib.get_close_matches(name, [str(k) for k in node], n=1)
                 hint = f"; did you mean {near[0]!r}?" if near else ""
                 keys = ", ".join(map(str, node)) or "nothing"
-                raise CaseFileError(f"{where}: {name!r} is not in {here} (it has: {keys}){hint}"
-                                    " — a varied field must have a value in the template")
+                raise CaseFileError(led(f"{where}: ", Notice(
+                    f"{name!r} is not in {here} (it has: {keys}){hint}"
+                    " — a varied field must have a value in the template", "path_not_in",
+                    name=name, here=here, keys=keys, near=near[0] if near else "")))
             parts.append(name)
             node = node[name]
         elif isinstance(node, list):
@@ -164,9 +166,11 @@ def _grid(spec: dict, where: str) -> tuple:
                 got=repr(spec[k]))))
     lo, hi, step = spec["min"], spec["max"], spec["step"]
     if step <= 0:
-        raise CaseFileError(f"{where}.step: must be positive (got {step!r})")
+        raise CaseFileError(led(f"{where}.step: ", Notice(f"must be positive (got {step!r})",
+                                                          "positive_got", got=repr(step))))
     if hi < lo:
-        raise CaseFileError(f"{where}: max ({hi!r}) is less than min ({lo!r})")
+        raise CaseFileError(led(f"{where}: ", Notice(f"max ({hi!r}) is less than min ({lo!r})",
+                                                     "max_below_min", hi=repr(hi), lo=repr(lo))))
     n = math.floor((hi - lo) / step * (1 + 1e-12) + 1e-9) + 1
     if n > 100_000:
         raise CaseFileError(f"{where}: {n} grid values are too many (allowed: up to 100000; "
@@ -178,8 +182,9 @@ def _grid(spec: dict, where: str) -> tuple:
 
 def _choices(spec, where: str, current) -> tuple:
     if not isinstance(spec, dict):
-        raise CaseFileError(f"{where}: must be a table {{ values = [...] }} or "
-                            f"{{ min = …, max = …, step = … }} (got {spec!r})")
+        raise CaseFileError(led(f"{where}: ", Notice(
+            f"must be a table {{ values = [...] }} or {{ min = …, max = …, step = … }} "
+            f"(got {spec!r})", "spec_not_table", got=repr(spec))))
     unknown = [k for k in spec if k not in SPEC_KEYS]
     if unknown:
         raise CaseFileError(f"{where}: unknown key {unknown[0]!r} (allowed: values, or min, max, "
@@ -189,7 +194,8 @@ def _choices(spec, where: str, current) -> tuple:
             raise CaseFileError(f"{where}: give either values or min, max, step, not both")
         vals = spec["values"]
         if not isinstance(vals, list) or not vals:
-            raise CaseFileError(f"{where}.values: must be a non-empty array (got {vals!r})")
+            raise CaseFileError(led(f"{where}.values: ", Notice(
+                f"must be a non-empty array (got {vals!r})", "nonempty_array", got=repr(vals))))
         if any(isinstance(v, dict) for v in vals):
             raise CaseFileError(f"{where}.values: tables cannot be drawn (vary their fields)")
         return tuple(vals)
@@ -201,13 +207,15 @@ def _choices(spec, where: str, current) -> tuple:
 
 def _answers(table: dict, where: str) -> tuple[tuple[str, ...], float, dict[str, float]]:
     if "answers" not in table:
-        raise CaseFileError(f"{where}.answers: missing (the result keys of the answer key, e.g. "
-                            'answers = ["J_required", "delta_T_max"])')
+        raise CaseFileError(led(f"{where}.answers: ", Notice(
+            'missing (the result keys of the answer key, e.g. answers = ["J_required", '
+            '"delta_T_max"])', "answers_missing")))
     ans = table["answers"]
     if (not isinstance(ans, list) or not ans
             or not all(isinstance(a, str) and a.strip() for a in ans)):
-        raise CaseFileError(f"{where}.answers: must be a non-empty array of result names "
-                            f"(got {ans!r})")
+        raise CaseFileError(led(f"{where}.answers: ", Notice(
+            f"must be a non-empty array of result names (got {ans!r})", "answers_empty",
+            got=repr(ans))))
     for a in ans:
         if ans.count(a) > 1:
             raise CaseFileError(f"{where}.answers: {a!r} is listed twice")
@@ -225,8 +233,9 @@ def _answers(table: dict, where: str) -> tuple[tuple[str, ...], float, dict[str,
                             f"(got {tols!r})")
     for k, v in tols.items():
         if k not in ans:
-            raise CaseFileError(f"{where}.tolerances.{k}: not one of the answers "
-                                f"(allowed: {', '.join(ans)})")
+            raise CaseFileError(led(f"{where}.tolerances.{k}: ", Notice(
+                f"not one of the answers (allowed: {', '.join(ans)})", "not_an_answer",
+                allowed=", ".join(ans))))
         if not _is_number(v) or v <= 0:
             raise CaseFileError(led(f"{where}.tolerances.{k}: ", Notice(
                 f"must be a positive number (got {v!r})", "not_positive_number", got=repr(v))))
@@ -314,8 +323,10 @@ def pick_answers(results: dict, answers, where: str) -> dict[str, float]:
             near = difflib.get_close_matches(a, names, n=1)
             hint = f"; did you mean {near[0]!r}?" if near else ""
             what = "is not a result" if v is None else f"is not a finite number (it is {v!r})"
-            raise CaseFileError(f"{where}: {a!r} {what} (numbers available: {', '.join(names)})"
-                                f"{hint}")
+            raise CaseFileError(led(f"{where}: ", Notice(
+                f"{a!r} {what} (numbers available: {', '.join(names)}){hint}", "not_a_result",
+                name=a, value=None if v is None else repr(v), names=", ".join(names),
+                near=near[0] if near else "")))
         out[a] = float(v)
     return out
 
@@ -326,8 +337,9 @@ def parse_template(data: dict, source: str = "<template>", n_points: int = RUN_P
     """Check a template document: its case validates and solves, [variants] is well formed,
     every path exists and every answer is a numeric result of the template itself."""
     if "variants" not in data:
-        raise CaseFileError(f"{source}: no [variants] table (it says what to vary and which "
-                            "results are the answers; see docs/teacher.md)")
+        raise CaseFileError(led(f"{source}: ", Notice(
+            "no [variants] table (it says what to vary and which results are the answers; see "
+            "docs/teacher.md)", "no_variants_table")))
     table = data["variants"]
     if not isinstance(table, dict):
         raise CaseFileError(f"{source}: variants: must be a table (got {table!r})")
@@ -455,12 +467,13 @@ def generate(template: Template, count: int, seed: int, n_points: int = RUN_POIN
             except FlywheelError as exc:
                 failed += 1
                 failed_total += 1
-                last_error = str(exc)
+                last_error = said(exc)
                 if failed >= MAX_FAILED_DRAWS:
-                    raise InputError(
-                        f"{template.source}: variant {number}: {failed} draws in a row failed "
+                    raise InputError(led(f"{template.source}: ", Notice(
+                        f"variant {number}: {failed} draws in a row failed "
                         f"validation or analysis; narrow the ranges in [variants] (the last: "
-                        f"{last_error})") from None
+                        f"{last_error})", "draws_failed", number=number, failed=failed,
+                        detail=last_error))) from None
                 continue
             seen.add(signature)
             variants.append(Variant(vid, filename, drawn, text, answers))
