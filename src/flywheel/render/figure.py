@@ -22,6 +22,7 @@ DPI = 120
 LEGEND_W = 3.9            # room for a legend right of the axes [in]
 WIDE = (11.0, 5.0)         # one φ plot and its legend [in]
 TALL = (11.0, 7.0)         # two stacked φ plots [in]
+A4_W = 7.45               # a figure as wide as A4's text [in]
 RC = {
     "font.family": "DejaVu Sans",
     "mathtext.fontset": "dejavusans",
@@ -109,6 +110,51 @@ def legend(ax, **kw):
 
 _ROW_H = 0.18             # a legend row at 8 pt [in]
 _RIGHT_BELOW = 0.35       # the right margin of a figure whose legend is below [in]
+_GAP = 0.08               # between a panel (or its tick labels) and its legend [in]
+_XLABEL_H = 0.48          # a panel's x tick labels and axis label [in]
+
+
+def legends_below(fig, axes, *, max_cols: int = 4, right: float = _RIGHT_BELOW):
+    """Stacked axes (one column, drawn with :func:`figure`): each panel's legend below it, in
+    as many columns (up to ``max_cols``) as fit the panel's width, measured; the figure cut to
+    the panels' width (``right`` [in] kept on the right) and made taller by the legends, the
+    panels keeping their size in inches — no width lost to a legend on the right (issue 15)."""
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+    w, h = (float(x) for x in fig.get_size_inches())
+    sp = fig.subplotpars
+    left, top = sp.left * w, (1 - sp.top) * h
+    ax_w = (sp.right - sp.left) * w
+    new_w = left + ax_w + right
+    renderer = FigureCanvasAgg(fig).get_renderer()
+    rows = []                                     # (axes, its height, its legend's height) [in]
+    for ax in axes:
+        handles, labels = ax.get_legend_handles_labels()
+        leg, leg_h = None, 0.0
+        for n in range(min(max_cols, len(labels)), 0, -1):
+            leg = ax.legend(handles, labels, loc="upper center", ncols=n, frameon=False,
+                            borderaxespad=0.0, borderpad=0.2)
+            bb = leg.get_window_extent(renderer)
+            leg_h = bb.height / DPI
+            if bb.width / DPI <= ax_w + right or n == 1:
+                break
+        rows.append((ax, ax.get_position().height * h, leg, leg_h))
+    below = [(_XLABEL_H if ax.get_xlabel() else 0.0) + (_GAP + leg_h if leg else 0.0)
+             for ax, _, leg, leg_h in rows]
+    new_h = top + sum(r[1] for r in rows) + sum(below) + 0.12 * (len(rows) - 1) + 0.08
+    fig.set_size_inches(new_w, new_h)
+    y = new_h - top                               # from the bottom, in inches
+    for (ax, ax_h, leg, _), room in zip(rows, below):
+        y -= ax_h
+        ax.set_position([left / new_w, y / new_h, ax_w / new_w, ax_h / new_h])
+        if leg is not None:
+            under = y - (_XLABEL_H if ax.get_xlabel() else 0.0) - _GAP
+            leg.set_bbox_to_anchor(((left + ax_w / 2) / new_w, under / new_h),
+                                   transform=fig.transFigure)
+        y -= room + 0.12
+    return fig
+
+
 
 
 def _legend_below(ax, **kw):
