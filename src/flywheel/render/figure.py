@@ -1,7 +1,8 @@
 """The figure toolkit every plot of ``flywheel run`` is drawn with (render/plots.py,
 plots_forces.py, plots_engine.py, animate.py; plots_extra.py's figures are drawn inside
-:func:`style`): the fixed style, pyplot-free figures with fixed margins, the legend outside the
-axes, the φ axis and the titles.
+:func:`style`): the fixed style, pyplot-free figures with fixed margins, the legends below the
+axes (figures as wide as A4's text, :data:`A4_W`: no width lost to a legend), the φ axis and
+the titles.
 
 The figures are plain :class:`matplotlib.figure.Figure` objects rendered by the Agg canvas:
 they never go through pyplot, so they need no display, register no global state (nothing to
@@ -67,7 +68,8 @@ def style():
 def figure(size, nrows=1, ncols=1, sharex=False, squeeze=True, *, left=0.85, right=LEGEND_W,
            bottom=0.6, top=0.4, hspace=0.35, wspace=0.45):
     """A pyplot-free Figure and its axes, with fixed margins given in inches (a layout engine
-    would cost half the time of a plot). ``right`` leaves room for a legend outside the axes."""
+    would cost half the time of a plot). ``right`` leaves room for a legend outside the axes
+    (:func:`legend` and :func:`legends_below` then cut the figure to the axes)."""
     from matplotlib.figure import Figure
 
     w, h = size
@@ -101,8 +103,8 @@ def phi_axis(ax, lang: str, label: bool = True, cycle_deg: int = 360) -> None:
 def legend(ax, **kw):
     """A legend that never hides a curve: a figure of one axes gets it below the axes, in one
     or two columns, and loses the room on the right the legend would have taken (the figure
-    cut to the axes' width: nothing wasted, issue 15); stacked axes keep theirs outside on the
-    right."""
+    cut to the axes' width: nothing wasted, issue 15). Stacked axes are laid out together by
+    :func:`legends_below` instead; called on one of them, this puts its legend on the right."""
     if len(ax.figure.axes) == 1:
         return _legend_below(ax, **kw)
     return ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), borderaxespad=0.0, **kw)

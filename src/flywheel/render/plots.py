@@ -5,7 +5,7 @@ stays fast and headless. Each ``figure_*`` function draws one figure from a
 :class:`~flywheel.dynamics.results.Results` and returns it; :func:`write_plots` saves them all.
 
 The figures are drawn with the toolkit of :mod:`flywheel.render.figure` (pyplot-free figures
-with fixed margins, one fixed style, the legend outside the axes, the φ axis): with fixed
+with fixed margins, one fixed style, the legends below the axes, the φ axis): with fixed
 sizes, dpi and no metadata the PNG bytes are the same for the same input.
 
 Renderers compute nothing: everything drawn is read from the results — the quantities, and

@@ -95,7 +95,7 @@ def figure_hodographs(results, lang: str = "en"):
     f = results.forces
     fa = f.analysis
     # A4 text width: two panels a row, the legend in the fourth cell (never over a curve)
-    fig, grid = fg.figure((7.45, 7.6), 2, 2, left=0.85, right=0.3, bottom=0.55, top=0.75,
+    fig, grid = fg.figure((fg.A4_W, 7.6), 2, 2, left=0.85, right=0.3, bottom=0.55, top=0.75,
                           hspace=0.42, wspace=0.5)
     axes = [grid[0, 0], grid[0, 1], grid[1, 0]]
     cell = grid[1, 1].get_position()
