@@ -129,6 +129,7 @@ def legends_below(fig, axes, *, max_cols: int = 4, right: float = _RIGHT_BELOW):
     ax_w = (sp.right - sp.left) * w
     new_w = left + ax_w + right
     renderer = FigureCanvasAgg(fig).get_renderer()
+    top += _fit_title(axes[0], ax_w + 2 * min(left, right), renderer)   # centred on the axes
     rows = []                                     # (axes, its height, its legend's height) [in]
     for ax in axes:
         handles, labels = ax.get_legend_handles_labels()
@@ -161,9 +162,12 @@ def legends_below(fig, axes, *, max_cols: int = 4, right: float = _RIGHT_BELOW):
 
 def _legend_below(ax, **kw):
     """:func:`legend` for a figure of one axes: the figure is resized (the axes keep their size
-    in inches) so that the legend's rows fit under the axis label."""
+    in inches) so that the legend's rows fit under the axis label, and the title (set before)
+    is broken into lines if wider than the figure."""
     import math
     import re
+
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
 
     fig = ax.figure
     w, h = (float(x) for x in fig.get_size_inches())
@@ -174,13 +178,56 @@ def _legend_below(ax, **kw):
     ncols = 2 if len(labels) > 1 and max(visible) <= 46 else 1
     rows = math.ceil(len(labels) / ncols)
     leg_h = rows * _ROW_H + 0.15
-    new_w, new_h = w - right + _RIGHT_BELOW, h + leg_h
+    top += _fit_title(ax, w - left - right + 2 * min(left, _RIGHT_BELOW),
+                      FigureCanvasAgg(fig).get_renderer())       # centred on the axes
+    new_w = w - right + _RIGHT_BELOW
+    new_h = h + leg_h + top - (1 - sp.top) * h
     fig.set_size_inches(new_w, new_h)
     fig.subplots_adjust(left=left / new_w, right=1 - _RIGHT_BELOW / new_w,
                         bottom=(bottom + leg_h) / new_h, top=1 - top / new_h)
     return ax.legend(loc="upper center", bbox_to_anchor=(0.5, (leg_h + 0.02) / new_h),
                      bbox_transform=fig.transFigure, ncols=ncols, frameon=False,
                      borderaxespad=0.0, **kw)
+
+
+def fit_heading(fig, text, width: float) -> float:
+    """Break ``text`` (a title or suptitle of ``fig``, a figure of :func:`figure`) into lines
+    if wider than ``width`` [in], and make the figure that much taller at the top, the axes
+    keeping their size and place in inches; returns the height added [in]."""
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+    extra = fit_text(text, width, FigureCanvasAgg(fig).get_renderer())
+    if extra:
+        w, h = (float(x) for x in fig.get_size_inches())
+        sp = fig.subplotpars
+        top, bottom = (1 - sp.top) * h, sp.bottom * h
+        fig.set_size_inches(w, h + extra)
+        fig.subplots_adjust(top=1 - (top + extra) / (h + extra), bottom=bottom / (h + extra))
+    return extra
+
+
+def _fit_title(ax, width: float, renderer) -> float:
+    """:func:`fit_text` for the title of ``ax``."""
+    return fit_text(ax.title, width, renderer)
+
+
+def fit_text(text, width: float, renderer) -> float:
+    """A title (a matplotlib Text) wider than ``width`` [in], the room it has, broken after
+    the case's name (the last ": ", as :func:`title` joins them), then at spaces if a line is
+    still too wide; returns the height [in] the added lines need (0 if none)."""
+    import textwrap
+
+    s = text.get_text()
+    wide = text.get_window_extent(renderer).width / DPI
+    if not s or wide <= width - 0.1:
+        return 0.0
+    head, sep, tail = s.rpartition(": ")
+    parts = [head + ":", tail] if sep else [s]
+    chars = max(12, int(len(s) * (width - 0.1) / wide))        # characters a line holds
+    lines = [ln for part in parts for ln in (textwrap.wrap(part, chars, break_long_words=False)
+                                             if len(part) > chars else [part])]
+    text.set_text("\n".join(lines))
+    return (len(lines) - 1) * 1.2 * float(text.get_fontsize()) / 72.0
 
 
 def stable_metadata(fmt: str) -> dict:

@@ -264,8 +264,8 @@ def figure_piston_forces(results, lang: str = "en"):
         ax.axhline(0.0, color="0.3", linewidth=0.6)
         ax.set_ylabel(nm.axis("F_{load}", lang))
         fg.phi_axis(ax, lang, cycle_deg=results.cycle_deg)
-        fg.legend(ax)
         ax.set_title(fg.title(results, _t(lang, "forces")))
+        fg.legend(ax)            # after the title: a title too wide is broken
         return fig
     return fg.drawn(build)
 
@@ -332,8 +332,8 @@ def figure_works(results, lang: str = "en"):
         ax.axhline(0.0, color="0.3", linewidth=0.6)
         ax.set_ylabel(_t(lang, "W_axis", u=nm.unit_of("A", lang)))
         fg.phi_axis(ax, lang, cycle_deg=results.cycle_deg)
-        fg.legend(ax)
         ax.set_title(fg.title(results, _t(lang, "works")))
+        fg.legend(ax)            # after the title: a title too wide is broken
         return fig
     return fg.drawn(build)
 
@@ -362,8 +362,8 @@ def figure_omega(results, lang: str = "en"):
                             u=nm.unit_of("omega_mean", lang)))
         ax.set_ylabel(nm.axis("omega", lang))
         fg.phi_axis(ax, lang, cycle_deg=results.cycle_deg)
-        fg.legend(ax)
         ax.set_title(fg.title(results, _t(lang, "omega")))
+        fg.legend(ax)            # after the title: a title too wide is broken
         return fig
     return fg.drawn(build)
 
@@ -376,8 +376,8 @@ def figure_epsilon(results, lang: str = "en"):
         ax.axhline(0.0, color="0.3", linewidth=0.6)
         ax.set_ylabel(nm.axis("epsilon", lang))
         fg.phi_axis(ax, lang, cycle_deg=results.cycle_deg)
-        fg.legend(ax)
         ax.set_title(fg.title(results, _t(lang, "epsilon")))
+        fg.legend(ax)            # after the title: a title too wide is broken
         return fig
     return fg.drawn(build)
 
@@ -557,9 +557,12 @@ def figure_scheme(results, lang: str = "en"):
             ax.set_title(fg.title(results, _t(lang, "scheme", a=angles[k])) if n == 1
                          else _t(lang, "scheme", a=angles[k]))
         if n > 1:
-            fig.suptitle(fg.title(results, _t(lang, "scheme_many")))
+            fg.fit_heading(fig, fig.suptitle(fg.title(results, _t(lang, "scheme_many"))),
+                           fg.A4_W - 0.2)
+        else:
+            fg.fit_heading(fig, axes[0, 0].title, 6.25 + 0.7)
         fig.legend(handles=handles, loc="lower center", ncols=_SCHEME_LEGEND_COLS,
-                   bbox_to_anchor=(0.5, 0.05 / size[1]), frameon=False)
+                   bbox_to_anchor=(0.5, 0.05 / float(fig.get_size_inches()[1])), frameon=False)
         return fig
     return fg.drawn(build)
 
