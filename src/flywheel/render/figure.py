@@ -178,8 +178,9 @@ def _legend_below(ax, **kw):
     ncols = 2 if len(labels) > 1 and max(visible) <= 46 else 1
     rows = math.ceil(len(labels) / ncols)
     leg_h = rows * _ROW_H + 0.15
-    top += _fit_title(ax, w - left - right + 2 * min(left, _RIGHT_BELOW),
-                      FigureCanvasAgg(fig).get_renderer())       # centred on the axes
+    room = w - left - right + 2 * min(left, _RIGHT_BELOW)        # the title: centred on the axes
+    if _may_overflow(ax.title, room):
+        top += _fit_title(ax, room, FigureCanvasAgg(fig).get_renderer())
     new_w = w - right + _RIGHT_BELOW
     new_h = h + leg_h + top - (1 - sp.top) * h
     fig.set_size_inches(new_w, new_h)
@@ -196,7 +197,8 @@ def fit_heading(fig, text, width: float) -> float:
     keeping their size and place in inches; returns the height added [in]."""
     from matplotlib.backends.backend_agg import FigureCanvasAgg
 
-    extra = fit_text(text, width, FigureCanvasAgg(fig).get_renderer())
+    extra = fit_text(text, width, FigureCanvasAgg(fig).get_renderer()) \
+        if _may_overflow(text, width) else 0.0
     if extra:
         w, h = (float(x) for x in fig.get_size_inches())
         sp = fig.subplotpars
@@ -204,6 +206,13 @@ def fit_heading(fig, text, width: float) -> float:
         fig.set_size_inches(w, h + extra)
         fig.subplots_adjust(top=1 - (top + extra) / (h + extra), bottom=bottom / (h + extra))
     return extra
+
+
+def _may_overflow(text, width: float) -> bool:
+    """Whether the Text ``text`` could be wider than ``width`` [in]: no glyph of DejaVu Sans
+    is wider than 0.75 em on average over a title, so a shorter one needs no measuring (a
+    renderer and a text layout, ~10 ms)."""
+    return len(text.get_text()) * 0.75 * float(text.get_fontsize()) / 72.0 > width - 0.1
 
 
 def _fit_title(ax, width: float, renderer) -> float:
