@@ -345,3 +345,19 @@ def test_point_letters_do_not_touch_on_a_crowded_plan():
         for i, a in enumerate(boxes):
             for j in range(i):
                 assert not a.overlaps(boxes[j]), (bold[i].get_text(), bold[j].get_text())
+
+
+def test_plan_images_keep_their_order_under_any_hash_seed():
+    """The images (and so the letters drawn at one point, 'p, o, c') come in the same order
+    whatever PYTHONHASHSEED is: no set's order reaches a plan (byte-identical reruns)."""
+    import os
+    import subprocess
+    import sys
+
+    code = ("from flywheel.cases.run import load_case; from flywheel.dynamics.pipeline import analyze; "
+            f"r = analyze(load_case(r'{CASES / 'shaper.toml'}'), n_points=72, at_deg=[60.0]); "
+            "print(list(r.plans[0].velocity.images))")
+    out = {subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True,
+                          env={**os.environ, "PYTHONHASHSEED": seed}).stdout
+           for seed in ("1", "2", "3")}
+    assert len(out) == 1, out
