@@ -140,6 +140,8 @@ def test_every_figure_has_title_labels_legend_and_fits(results, made, lang):
         made(fig)
         _check_common(fig, results, lang)
         _check_layout(fig)
+        if not name.startswith("plan_"):          # A4's text width, no width lost (issue 15)
+            assert fig.get_size_inches()[0] <= 7.5, name
 
 
 # -- one figure at a time -----------------------------------------------------------------------------
@@ -316,8 +318,8 @@ def test_write_plots_svg_keeps_the_pngs_the_reports_embed(tmp_path, results):
     from PIL import Image
 
     assert out[0].name == "positions.svg"
-    with Image.open(out[0].with_suffix(".png")) as im:      # the positions: 11 in wide at 60 dpi
-        assert im.size[0] == 11 * 60
+    with Image.open(out[0].with_suffix(".png")) as im:      # the positions: 7.45 in (A4) at 60 dpi
+        assert im.size[0] == round(7.45 * 60)
 
 
 @pytest.mark.parametrize("suffix", [".svg", ".pdf"])

@@ -272,7 +272,9 @@ class _Structure:
 
     def __init__(self, mech: Mechanism, kin: Kinematics) -> None:
         c = mech.crank
-        self.fixed = set(mech.ground) | {c.pivot}
+        # in the case's order (a set's would change with the hash seed, and with it the order
+        # of the letters at the pole: p, o, c or p, c, o — outputs differing between runs)
+        self.fixed = dict.fromkeys([*mech.ground, c.pivot])
         self.steps: list[tuple] = []
         known_links = {c.name}
         placed = set(self.fixed)

@@ -1,7 +1,8 @@
 """The figure toolkit every plot of ``flywheel run`` is drawn with (render/plots.py,
 plots_forces.py, plots_engine.py, animate.py; plots_extra.py's figures are drawn inside
-:func:`style`): the fixed style, pyplot-free figures with fixed margins, the legend outside the
-axes, the φ axis and the titles.
+:func:`style`): the fixed style, pyplot-free figures with fixed margins, the legends below the
+axes (figures as wide as A4's text, :data:`A4_W`: no width lost to a legend), the φ axis and
+the titles.
 
 The figures are plain :class:`matplotlib.figure.Figure` objects rendered by the Agg canvas:
 they never go through pyplot, so they need no display, register no global state (nothing to
@@ -22,6 +23,7 @@ DPI = 120
 LEGEND_W = 3.9            # room for a legend right of the axes [in]
 WIDE = (11.0, 5.0)         # one φ plot and its legend [in]
 TALL = (11.0, 7.0)         # two stacked φ plots [in]
+A4_W = 7.45               # a figure as wide as A4's text [in]
 RC = {
     "font.family": "DejaVu Sans",
     "mathtext.fontset": "dejavusans",
@@ -66,7 +68,8 @@ def style():
 def figure(size, nrows=1, ncols=1, sharex=False, squeeze=True, *, left=0.85, right=LEGEND_W,
            bottom=0.6, top=0.4, hspace=0.35, wspace=0.45):
     """A pyplot-free Figure and its axes, with fixed margins given in inches (a layout engine
-    would cost half the time of a plot). ``right`` leaves room for a legend outside the axes."""
+    would cost half the time of a plot). ``right`` leaves room for a legend outside the axes
+    (:func:`legend` and :func:`legends_below` then cut the figure to the axes)."""
     from matplotlib.figure import Figure
 
     w, h = size
@@ -100,8 +103,8 @@ def phi_axis(ax, lang: str, label: bool = True, cycle_deg: int = 360) -> None:
 def legend(ax, **kw):
     """A legend that never hides a curve: a figure of one axes gets it below the axes, in one
     or two columns, and loses the room on the right the legend would have taken (the figure
-    cut to the axes' width: nothing wasted, issue 15); stacked axes keep theirs outside on the
-    right."""
+    cut to the axes' width: nothing wasted, issue 15). Stacked axes are laid out together by
+    :func:`legends_below` instead; called on one of them, this puts its legend on the right."""
     if len(ax.figure.axes) == 1:
         return _legend_below(ax, **kw)
     return ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), borderaxespad=0.0, **kw)
@@ -109,13 +112,62 @@ def legend(ax, **kw):
 
 _ROW_H = 0.18             # a legend row at 8 pt [in]
 _RIGHT_BELOW = 0.35       # the right margin of a figure whose legend is below [in]
+_GAP = 0.08               # between a panel (or its tick labels) and its legend [in]
+_XLABEL_H = 0.48          # a panel's x tick labels and axis label [in]
+
+
+def legends_below(fig, axes, *, max_cols: int = 4, right: float = _RIGHT_BELOW):
+    """Stacked axes (one column, drawn with :func:`figure`): each panel's legend below it, in
+    as many columns (up to ``max_cols``) as fit the panel's width, measured; the figure cut to
+    the panels' width (``right`` [in] kept on the right) and made taller by the legends, the
+    panels keeping their size in inches — no width lost to a legend on the right (issue 15)."""
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+    w, h = (float(x) for x in fig.get_size_inches())
+    sp = fig.subplotpars
+    left, top = sp.left * w, (1 - sp.top) * h
+    ax_w = (sp.right - sp.left) * w
+    new_w = left + ax_w + right
+    renderer = FigureCanvasAgg(fig).get_renderer()
+    top += _fit_title(axes[0], ax_w + 2 * min(left, right), renderer)   # centred on the axes
+    rows = []                                     # (axes, its height, its legend's height) [in]
+    for ax in axes:
+        handles, labels = ax.get_legend_handles_labels()
+        leg, leg_h = None, 0.0
+        for n in range(min(max_cols, len(labels)), 0, -1):
+            leg = ax.legend(handles, labels, loc="upper center", ncols=n, frameon=False,
+                            borderaxespad=0.0, borderpad=0.2)
+            bb = leg.get_window_extent(renderer)
+            leg_h = bb.height / DPI
+            if bb.width / DPI <= ax_w + right or n == 1:
+                break
+        rows.append((ax, ax.get_position().height * h, leg, leg_h))
+    below = [(_XLABEL_H if ax.get_xlabel() else 0.0) + (_GAP + leg_h if leg else 0.0)
+             for ax, _, leg, leg_h in rows]
+    new_h = top + sum(r[1] for r in rows) + sum(below) + 0.12 * (len(rows) - 1) + 0.08
+    fig.set_size_inches(new_w, new_h)
+    y = new_h - top                               # from the bottom, in inches
+    for (ax, ax_h, leg, _), room in zip(rows, below):
+        y -= ax_h
+        ax.set_position([left / new_w, y / new_h, ax_w / new_w, ax_h / new_h])
+        if leg is not None:
+            under = y - (_XLABEL_H if ax.get_xlabel() else 0.0) - _GAP
+            leg.set_bbox_to_anchor(((left + ax_w / 2) / new_w, under / new_h),
+                                   transform=fig.transFigure)
+        y -= room + 0.12
+    return fig
+
+
 
 
 def _legend_below(ax, **kw):
     """:func:`legend` for a figure of one axes: the figure is resized (the axes keep their size
-    in inches) so that the legend's rows fit under the axis label."""
+    in inches) so that the legend's rows fit under the axis label, and the title (set before)
+    is broken into lines if wider than the figure."""
     import math
     import re
+
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
 
     fig = ax.figure
     w, h = (float(x) for x in fig.get_size_inches())
@@ -126,13 +178,65 @@ def _legend_below(ax, **kw):
     ncols = 2 if len(labels) > 1 and max(visible) <= 46 else 1
     rows = math.ceil(len(labels) / ncols)
     leg_h = rows * _ROW_H + 0.15
-    new_w, new_h = w - right + _RIGHT_BELOW, h + leg_h
+    room = w - left - right + 2 * min(left, _RIGHT_BELOW)        # the title: centred on the axes
+    if _may_overflow(ax.title, room):
+        top += _fit_title(ax, room, FigureCanvasAgg(fig).get_renderer())
+    new_w = w - right + _RIGHT_BELOW
+    new_h = h + leg_h + top - (1 - sp.top) * h
     fig.set_size_inches(new_w, new_h)
     fig.subplots_adjust(left=left / new_w, right=1 - _RIGHT_BELOW / new_w,
                         bottom=(bottom + leg_h) / new_h, top=1 - top / new_h)
     return ax.legend(loc="upper center", bbox_to_anchor=(0.5, (leg_h + 0.02) / new_h),
                      bbox_transform=fig.transFigure, ncols=ncols, frameon=False,
                      borderaxespad=0.0, **kw)
+
+
+def fit_heading(fig, text, width: float) -> float:
+    """Break ``text`` (a title or suptitle of ``fig``, a figure of :func:`figure`) into lines
+    if wider than ``width`` [in], and make the figure that much taller at the top, the axes
+    keeping their size and place in inches; returns the height added [in]."""
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+    extra = fit_text(text, width, FigureCanvasAgg(fig).get_renderer()) \
+        if _may_overflow(text, width) else 0.0
+    if extra:
+        w, h = (float(x) for x in fig.get_size_inches())
+        sp = fig.subplotpars
+        top, bottom = (1 - sp.top) * h, sp.bottom * h
+        fig.set_size_inches(w, h + extra)
+        fig.subplots_adjust(top=1 - (top + extra) / (h + extra), bottom=bottom / (h + extra))
+    return extra
+
+
+def _may_overflow(text, width: float) -> bool:
+    """Whether the Text ``text`` could be wider than ``width`` [in]: no glyph of DejaVu Sans
+    is wider than 0.75 em on average over a title, so a shorter one needs no measuring (a
+    renderer and a text layout, ~10 ms)."""
+    return len(text.get_text()) * 0.75 * float(text.get_fontsize()) / 72.0 > width - 0.1
+
+
+def _fit_title(ax, width: float, renderer) -> float:
+    """:func:`fit_text` for the title of ``ax``."""
+    return fit_text(ax.title, width, renderer)
+
+
+def fit_text(text, width: float, renderer) -> float:
+    """A title (a matplotlib Text) wider than ``width`` [in], the room it has, broken after
+    the case's name (the last ": ", as :func:`title` joins them), then at spaces if a line is
+    still too wide; returns the height [in] the added lines need (0 if none)."""
+    import textwrap
+
+    s = text.get_text()
+    wide = text.get_window_extent(renderer).width / DPI
+    if not s or wide <= width - 0.1:
+        return 0.0
+    head, sep, tail = s.rpartition(": ")
+    parts = [head + ":", tail] if sep else [s]
+    chars = max(12, int(len(s) * (width - 0.1) / wide))        # characters a line holds
+    lines = [ln for part in parts for ln in (textwrap.wrap(part, chars, break_long_words=False)
+                                             if len(part) > chars else [part])]
+    text.set_text("\n".join(lines))
+    return (len(lines) - 1) * 1.2 * float(text.get_fontsize()) / 72.0
 
 
 def stable_metadata(fmt: str) -> dict:

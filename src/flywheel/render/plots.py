@@ -5,7 +5,7 @@ stays fast and headless. Each ``figure_*`` function draws one figure from a
 :class:`~flywheel.dynamics.results.Results` and returns it; :func:`write_plots` saves them all.
 
 The figures are drawn with the toolkit of :mod:`flywheel.render.figure` (pyplot-free figures
-with fixed margins, one fixed style, the legend outside the axes, the φ axis): with fixed
+with fixed margins, one fixed style, the legends below the axes, the φ axis): with fixed
 sizes, dpi and no metadata the PNG bytes are the same for the same input.
 
 Renderers compute nothing: everything drawn is read from the results — the quantities, and
@@ -23,7 +23,7 @@ import numpy as np
 from flywheel.render import figure as fg
 from flywheel.render import nomenclature as nm
 
-_SCHEME_LEGEND_W = 2.6     # room for the scheme's legend [in]
+_SCHEME_LEGEND_COLS = 4     # columns of the scheme's legend (below the panels)
 
 # -- words ----------------------------------------------------------------------------------------
 # Sentence templates only: every quantity's symbol, name and unit comes from the nomenclature
@@ -141,18 +141,16 @@ def figure_positions(results, lang: str = "en"):
                 if np.ptp(v) > 1e-12 * max(1.0, np.max(np.abs(v))):
                     ax.plot(deg, v, label=_sub("xy"[k], name))
             ax.set_ylabel(nm.axis(key, lang))
-            fg.legend(ax)
         if sliders:
             for link, joint, angle in sliders:
                 axes[2].plot(deg, results.drawing.slider_travel[link],
                              label=_t(lang, "travel_of", S=nm.tex("slider_travel", lang), s=link,
                                       p=joint))
             axes[2].set_ylabel(nm.axis("slider_travel", lang))
-            fg.legend(axes[2])
         for ax in axes:
             fg.phi_axis(ax, lang, label=ax is axes[-1], cycle_deg=results.cycle_deg)
         axes[0].set_title(fg.title(results, _t(lang, "positions")))
-        return fig
+        return fg.legends_below(fig, axes)
     return fg.drawn(build)
 
 
@@ -173,12 +171,10 @@ def _analogue_figure(results, lang, which: str):
                      label=f"{nm.tex(link_key, lang)} {_t(lang, 'link', n=name)}")
         ax2.axhline(0.0, color="0.3", linewidth=0.6)
         ax2.set_ylabel(nm.axis(link_key, lang))
-        for ax in (ax1, ax2):
-            fg.legend(ax)
         fg.phi_axis(ax1, lang, label=False, cycle_deg=results.cycle_deg)
         fg.phi_axis(ax2, lang, cycle_deg=results.cycle_deg)
         ax1.set_title(fg.title(results, _t(lang, which)))
-        return fig
+        return fg.legends_below(fig, (ax1, ax2))
     return fg.drawn(build)
 
 
@@ -209,12 +205,10 @@ def figure_J_II(results, lang: str = "en"):
         ax2.plot(deg, results.columns["dJ_II"].values, color="k", label=nm.tex("dJ_II", lang))
         ax2.axhline(0.0, color="0.3", linewidth=0.6)
         ax2.set_ylabel(nm.axis("dJ_II", lang))
-        for ax in (ax1, ax2):
-            fg.legend(ax)
         fg.phi_axis(ax1, lang, label=False, cycle_deg=results.cycle_deg)
         fg.phi_axis(ax2, lang, cycle_deg=results.cycle_deg)
         ax1.set_title(fg.title(results, nm.name_tex("J_II", lang)))
-        return fig
+        return fg.legends_below(fig, (ax1, ax2))
     return fg.drawn(build)
 
 
@@ -222,7 +216,7 @@ def figure_indicator(results, cylinder, lang: str = "en"):
     """p/p_max against s as the program used it (the grid values, split by the direction of
     the piston's motion), with the indicator tables as markers; p [MPa] on the right axis."""
     def build():
-        fig, ax = fg.figure((9.0, 5.8), right=0.85, bottom=1.35)
+        fig, ax = fg.figure((fg.A4_W, 5.8), right=0.85, bottom=1.35)
         s = np.asarray(cylinder.s, float)
         rel = np.asarray(cylinder.p, float) / cylinder.p_max
         towards = np.asarray(cylinder.towards_head, bool)
@@ -270,8 +264,8 @@ def figure_piston_forces(results, lang: str = "en"):
         ax.axhline(0.0, color="0.3", linewidth=0.6)
         ax.set_ylabel(nm.axis("F_{load}", lang))
         fg.phi_axis(ax, lang, cycle_deg=results.cycle_deg)
-        fg.legend(ax)
         ax.set_title(fg.title(results, _t(lang, "forces")))
+        fg.legend(ax)            # after the title: a title too wide is broken
         return fig
     return fg.drawn(build)
 
@@ -309,10 +303,9 @@ def figure_reduced_moments(results, lang: str = "en"):
             axes[1].axhline(0.0, color="0.3", linewidth=0.6)
             axes[1].set_ylabel(nm.axis("M {load}", lang))
         for a in axes:
-            fg.legend(a)
             fg.phi_axis(a, lang, label=a is axes[-1], cycle_deg=results.cycle_deg)
         ax.set_title(fg.title(results, _t(lang, "moments")))
-        return fig
+        return fg.legends_below(fig, axes)
     return fg.drawn(build)
 
 
@@ -339,8 +332,8 @@ def figure_works(results, lang: str = "en"):
         ax.axhline(0.0, color="0.3", linewidth=0.6)
         ax.set_ylabel(_t(lang, "W_axis", u=nm.unit_of("A", lang)))
         fg.phi_axis(ax, lang, cycle_deg=results.cycle_deg)
-        fg.legend(ax)
         ax.set_title(fg.title(results, _t(lang, "works")))
+        fg.legend(ax)            # after the title: a title too wide is broken
         return fig
     return fg.drawn(build)
 
@@ -369,8 +362,8 @@ def figure_omega(results, lang: str = "en"):
                             u=nm.unit_of("omega_mean", lang)))
         ax.set_ylabel(nm.axis("omega", lang))
         fg.phi_axis(ax, lang, cycle_deg=results.cycle_deg)
-        fg.legend(ax)
         ax.set_title(fg.title(results, _t(lang, "omega")))
+        fg.legend(ax)            # after the title: a title too wide is broken
         return fig
     return fg.drawn(build)
 
@@ -383,8 +376,8 @@ def figure_epsilon(results, lang: str = "en"):
         ax.axhline(0.0, color="0.3", linewidth=0.6)
         ax.set_ylabel(nm.axis("epsilon", lang))
         fg.phi_axis(ax, lang, cycle_deg=results.cycle_deg)
-        fg.legend(ax)
         ax.set_title(fg.title(results, _t(lang, "epsilon")))
+        fg.legend(ax)            # after the title: a title too wide is broken
         return fig
     return fg.drawn(build)
 
@@ -543,11 +536,17 @@ def figure_scheme(results, lang: str = "en"):
     def build():
         angles = [float(a["phi_deg"]) for a in results.at] or [0.0]
         n = len(angles)
-        ncols = min(n, 3)
+        ncols = min(n, 2)
         nrows = math.ceil(n / ncols)
-        size = (5.2 * ncols + _SCHEME_LEGEND_W, 5.4 * nrows + (0.3 if n > 1 else 0.0))
-        fig, axes = fg.figure(size, nrows, ncols, squeeze=False, right=_SCHEME_LEGEND_W,
-                            top=0.75 if n > 1 else 0.4, hspace=0.25, wspace=0.3)
+        handles = _scheme_legend_handles(results, lang)
+        leg_h = math.ceil(len(handles) / _SCHEME_LEGEND_COLS) * fg._ROW_H + 0.2
+        # A4 text width; the legend in rows below the panels
+        panel = (6.25, 5.0) if ncols == 1 else (2.75, 3.2)     # [in]; 0.75 in between
+        top = 0.75 if n > 1 else 0.4
+        bottom = 0.55 + leg_h
+        size = (fg.A4_W, top + bottom + panel[1] * nrows + 0.6 * (nrows - 1))
+        fig, axes = fg.figure(size, nrows, ncols, squeeze=False, right=0.35, top=top,
+                              bottom=bottom, hspace=0.6 / panel[1], wspace=0.75 / panel[0])
         scale = 0.035 * max(results.drawing.span, 1e-9)
         for k, ax in enumerate(axes.flat):
             if k >= n:
@@ -558,9 +557,12 @@ def figure_scheme(results, lang: str = "en"):
             ax.set_title(fg.title(results, _t(lang, "scheme", a=angles[k])) if n == 1
                          else _t(lang, "scheme", a=angles[k]))
         if n > 1:
-            fig.suptitle(fg.title(results, _t(lang, "scheme_many")))
-        fig.legend(handles=_scheme_legend_handles(results, lang), loc="upper left",
-                   bbox_to_anchor=(1 - (_SCHEME_LEGEND_W - 0.15) / size[0], 1 - 0.4 / size[1]))
+            fg.fit_heading(fig, fig.suptitle(fg.title(results, _t(lang, "scheme_many"))),
+                           fg.A4_W - 0.2)
+        else:
+            fg.fit_heading(fig, axes[0, 0].title, 6.25 + 0.7)
+        fig.legend(handles=handles, loc="lower center", ncols=_SCHEME_LEGEND_COLS,
+                   bbox_to_anchor=(0.5, 0.05 / float(fig.get_size_inches()[1])), frameon=False)
         return fig
     return fg.drawn(build)
 

@@ -29,7 +29,7 @@ def figure_indicator_strokes(results, cylinder, lang: str = "en"):
 
     def build():
         # A4 width; each panel's legend in rows below it (never over a curve)
-        fig, (ax, bx) = fg.figure((8.5, 9.6), 2, 1, left=0.8, right=0.8, bottom=1.05, top=0.45,
+        fig, (ax, bx) = fg.figure((fg.A4_W, 9.6), 2, 1, left=0.8, right=0.8, bottom=1.05, top=0.45,
                                   hspace=0.42)
         s = np.asarray(cylinder.s, float)
         rel = np.asarray(cylinder.p, float) / cylinder.p_max

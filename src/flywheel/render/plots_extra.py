@@ -96,7 +96,7 @@ def figure_energy_mass(results, lang: str = "en"):
     i_max, i_min = sz.i_tangent_max, sz.i_tangent_min    # tangency points (ψ_max, ψ_min)
     kl = top - bottom
 
-    fig, axd = plt.subplot_mosaic([["full", "full"], ["zoom", "merzalov"]], figsize=(12, 9.5),
+    fig, axd = plt.subplot_mosaic([["full", "full"], ["zoom", "merzalov"]], figsize=(7.45, 9.0),
                                   constrained_layout=True, height_ratios=[1.1, 1])
     ax, zx, bx = axd["full"], axd["zoom"], axd["merzalov"]
     for name, a in axd.items():
@@ -178,7 +178,7 @@ def figure_energy_mass(results, lang: str = "en"):
     zx.set_ylabel(_f(t, "T", u=uJ))
     zx.set_title(f"(b) {_f(t, 'zoom')}", fontsize=10)
     zx.grid(True, alpha=0.3)
-    zx.legend(fontsize=8, loc="best")
+    zx.legend(fontsize=8, loc="upper center", bbox_to_anchor=(0.5, -0.13), frameon=False)   # below: off the curve
 
     # -- (c) Merzalov --------------------------------------------------------------------------
     dT = results.columns["dT_I"].values
@@ -194,9 +194,9 @@ def figure_energy_mass(results, lang: str = "en"):
     bx.set_ylabel(nm.axis("dT_I", lang))
     cycle = results.cycle_deg
     bx.set_xlim(0, cycle)
-    bx.set_xticks(np.arange(0, cycle + 1, 30 * cycle // 360))
+    bx.set_xticks(np.arange(0, cycle + 1, 60 * cycle // 360))      # a half-width panel
     bx.grid(True, alpha=0.3)
-    bx.legend(fontsize=8, loc="best")
+    bx.legend(fontsize=8, loc="upper center", bbox_to_anchor=(0.5, -0.13), frameon=False)
     bx.set_title(f"(c) {_f(t, 'merz', dT=dT_sym)}", fontsize=10)
     return fig
 
@@ -206,7 +206,7 @@ def figure_time_law(results, lang: str = "en"):
     plt = _plt()
     t = TEXT[lang]
     time = results.columns["t"].values
-    fig, (a1, a2) = plt.subplots(2, 1, figsize=(9, 6), sharex=True, constrained_layout=True)
+    fig, (a1, a2) = plt.subplots(2, 1, figsize=(7.45, 5.6), sharex=True, constrained_layout=True)
     a1.plot(time, results.columns["omega"].values, label="ω(t)")
     a1.set_ylabel(nm.axis("omega", lang))
     a2.plot(time, results.columns["epsilon"].values, color="tab:orange", label="ε(t)")
@@ -214,7 +214,7 @@ def figure_time_law(results, lang: str = "en"):
     a2.set_xlabel(nm.axis("t", lang))
     for a in (a1, a2):
         a.grid(True, alpha=0.3)
-        a.legend(fontsize=8, loc="upper right")
+        a.legend(fontsize=8, loc="best", framealpha=0.85)
     a1.set_title(f"{results.title}\n" + _f(t, "time", T=nm.tex("cycle_time", lang),
                                              v=results.scalars["cycle_time"],
                                              u=nm.unit_of("cycle_time", lang)),
@@ -230,7 +230,7 @@ def figure_transients(results, lang: str = "en"):
     t = TEXT[lang]
     hist = results.time_domain.histories
     st = results.time_domain.startup
-    fig, ax = plt.subplots(figsize=(9, 5), constrained_layout=True)
+    fig, ax = plt.subplots(figsize=(7.45, 4.8), constrained_layout=True)
     if "startup" in hist:
         ts, ws_ = hist["startup"]
         ax.plot(ts, ws_, lw=0.8, label=_f(t, "start"))

@@ -36,8 +36,8 @@ def figure_reactions(results, lang: str = "en"):
         ax.plot(deg, r.magnitude, label=f"{tex(f'R_{key}', lang)} {key}")
     ax.set_ylabel(axis("reaction", lang))
     fg.phi_axis(ax, lang)
-    fg.legend(ax)
     ax.set_title(fg.title(results, _t(lang, "reactions")))
+    fg.legend(ax)            # after the title: a title too wide is broken
     return fig
 
 
@@ -70,10 +70,10 @@ def figure_balancing_moment(results, lang: str = "en"):
     ax.set_ylim(lo - pad, hi + pad)
     ax.set_ylabel(axis("M_y", lang))
     fg.phi_axis(ax, lang)
-    fg.legend(ax)
     what = (_t(lang, "moment") if f.motion == "true"
             else _t(lang, "moment_steady", w=float(f.omega[0])))
     ax.set_title(fg.title(results, what))
+    fg.legend(ax)            # after the title: a title too wide is broken
     return fig
 
 
@@ -94,7 +94,13 @@ def figure_hodographs(results, lang: str = "en"):
     crank's load on the main bearing and (c) the shaking force, in the case's axes."""
     f = results.forces
     fa = f.analysis
-    fig, axes = fg.figure((15.0, 6.0), 1, 3, right=0.3, bottom=1.3, top=0.75, wspace=0.35)
+    # A4 text width: two panels a row, the legend in the fourth cell (never over a curve)
+    fig, grid = fg.figure((fg.A4_W, 7.6), 2, 2, left=0.85, right=0.3, bottom=0.55, top=0.75,
+                          hspace=0.42, wspace=0.5)
+    fg.fit_heading(fig, fig.suptitle(fg.title(results, _t(lang, "hodographs"))), fg.A4_W - 0.2)
+    axes = [grid[0, 0], grid[0, 1], grid[1, 0]]
+    cell = grid[1, 1].get_position()
+    fig.delaxes(grid[1, 1])
     mb, S = fa.main_bearing_load, fa.shaking_force
     panels = [
         (f.crank_pin_tangential, f.crank_pin_radial, "crank_pin_tangential", "crank_pin_radial",
@@ -104,11 +110,12 @@ def figure_hodographs(results, lang: str = "en"):
     ]
     for ax, (x, y, kx, ky, title, color) in zip(axes, panels):
         _hodograph(ax, x, y, results, lang, color)
+        ax.locator_params(axis="x", nbins=5)      # a narrow panel: the tick labels apart
         ax.set_xlabel(axis(kx, lang))
         ax.set_ylabel(axis(ky, lang))
         ax.set_title(_t(lang, title))
-    axes[0].legend(loc="upper left", bbox_to_anchor=(0.0, -0.16))
-    fig.suptitle(fg.title(results, _t(lang, "hodographs")))
+    axes[0].legend(loc="center", bbox_to_anchor=((cell.x0 + cell.x1) / 2, (cell.y0 + cell.y1) / 2),
+                   bbox_transform=fig.transFigure)
     return fig
 
 

@@ -292,12 +292,31 @@ class _Labels:
                                         & (p[:, 1] > y0) & (p[:, 1] < y1)))
         return c
 
-    def block(self, xy, text: str, fontsize: float, ha="left", va="bottom", off=(4.0, 4.0)):
-        """Mark a label placed elsewhere (a point's letters) as an obstacle."""
+    # a point's letters: up right of it first, then the other corners and sides [pt, ha, va]
+    _AROUND = ((4.0, 4.0, "left", "bottom"), (-4.0, 4.0, "right", "bottom"),
+               (4.0, -4.0, "left", "top"), (-4.0, -4.0, "right", "top"),
+               (6.0, 0.0, "left", "center"), (-6.0, 0.0, "right", "center"),
+               (0.0, 6.0, "center", "bottom"), (0.0, -6.0, "center", "top"))
+
+    def point(self, xy, text: str, fontsize: float = 10.0, first=(4.0, 4.0)) -> None:
+        """``text`` (bold) beside the point ``xy`` [mm]: at ``first`` [pt] up right of it
+        unless that place sits on a line or a label placed before, else at the corner or side
+        that sits on the fewest (the same search as :meth:`along`, around the point)."""
         w = _CHAR_W * fontsize * len(text) / self.ppm
         h = 1.25 * fontsize / self.ppm
-        self.boxes.append(self._box(xy[0] + off[0] / self.ppm, xy[1] + off[1] / self.ppm,
-                                    w, h, ha, va))
+        cands = ((first[0], first[1], "left", "bottom"),) + self._AROUND[1:]
+        best = None
+        for k, (ox, oy, ha, va) in enumerate(cands):
+            b = self._box(xy[0] + ox / self.ppm, xy[1] + oy / self.ppm, w, h, ha, va)
+            c = self._cost(b) + (0.0 if k == 0 else 0.5 + 0.01 * k)
+            if best is None or c < best[0] - 1e-12:
+                best = (c, ox, oy, ha, va, b)
+            if k == 0 and c < 0.2:
+                break
+        _, ox, oy, ha, va, b = best
+        self.boxes.append(b)
+        self.ax.annotate(text, xy, xytext=(ox, oy), textcoords="offset points", ha=ha, va=va,
+                         fontsize=fontsize, fontweight="bold", zorder=7)
 
     def along(self, tail, head, text: str, colour, fontsize: float = 7.0) -> None:
         """``text`` beside the vector tail → head [mm]."""
@@ -437,9 +456,7 @@ def _kinematic_plan(results, ps, which: str, lang: str):
             labs = [pole] + labs
         text = ", ".join(labs)
         ax.plot(*xy, "o", markersize=3.2, color="k", zorder=5)
-        ax.annotate(text, xy, xytext=(4, 4), textcoords="offset points", fontsize=10,
-                    fontweight="bold", zorder=7)
-        labels.block(xy, text, 10.0)
+        labels.point(xy, text, 10.0)
     if which == "acceleration":
         for kind, vs, tails, heads in groups:
             if kind == "absolute":
@@ -648,9 +665,7 @@ def figure_lever(results, ps, lang: str = "en"):
             labs = ["p"] + labs
         text = ", ".join(labs)
         ax.plot(*xy, "o", markersize=3.2, color="k", zorder=5)
-        ax.annotate(text, xy, xytext=(-12, 5), textcoords="offset points",
-                    fontsize=10, fontweight="bold", zorder=7)
-        labels.block(xy, text, 10.0, off=(-12.0, 5.0))
+        labels.point(xy, text, 10.0, first=(-12.0, 5.0))
     for f, tail, head in arrows:
         colour = "k" if f.kind == "balancing" else _COLOURS[f.kind]
         _arrows(ax, tail[None, :], head[None, :], colour, 2.0 if f.kind == "balancing" else 1.3)
