@@ -202,6 +202,8 @@ def plot(r, path, title: str = "", lang: str = "en") -> None:
     from matplotlib.figure import Figure
 
     from flywheel.render import figure as fg
+    import textwrap
+
     from flywheel.render.figure import SVG_SALT, stable_metadata
     from flywheel.render.mathfmt import sub_mathtext
 
@@ -211,7 +213,7 @@ def plot(r, path, title: str = "", lang: str = "en") -> None:
     ch = r.chain
     names = [nm.rotor_name(n, lang) for n in ch.names]
     with fg.style():
-        fig = Figure(figsize=(11, 7), dpi=100, layout="constrained")
+        fig = Figure(figsize=(7.45, 6.4), dpi=100, layout="constrained")
         axes = fig.subplots(2, 2)
         for col, (h, name) in enumerate(((r.startup, L("ag_plot_startup")),
                                          (r.check, L("ag_plot_steady")))):
@@ -229,7 +231,8 @@ def plot(r, path, title: str = "", lang: str = "en") -> None:
         # one legend for the four panels, below them: the steady state's curves fill their axes
         handles = axes[0, 0].get_lines() + axes[1, 0].get_lines()
         fig.legend(handles=handles, loc="outside lower center", ncols=len(handles), fontsize=8)
-        fig.suptitle(title or L("ag_plot_title"))
+        # a long title broken at spaces to the A4 figure's width (about 75 characters a line)
+        fig.suptitle(textwrap.fill(title or L("ag_plot_title"), 75))
         fmt = Path(path).suffix.lower()[1:]
         kw = {"metadata": {"Software": None}} if fmt == "png" else stable_metadata(fmt)
         with matplotlib.rc_context({"svg.hashsalt": SVG_SALT}):  # SVG, PDF: same bytes on a rerun

@@ -184,7 +184,7 @@ def plot(r, path, title: str = "", lang: str = "en") -> None:
         if r.driving is not None:
             s = sample(r)
             x = [math.degrees(p) for p in s["phi"]]
-            fig = Figure(figsize=(8, 10.5), dpi=100, layout="constrained")
+            fig = Figure(figsize=(7.45, 10), dpi=100, layout="constrained")
             axes = fig.subplots(4, 1, sharex=True)
             ax = axes[3]
             ax.plot(x, s["epsilon"], color="tab:purple", label=L("t2_plot_epsilon"))
@@ -209,7 +209,7 @@ def plot(r, path, title: str = "", lang: str = "en") -> None:
         else:
             known = not math.isnan(r.rows[0].phi)
             x = [math.degrees(row.phi) if known else i for i, row in enumerate(r.rows)]
-            fig = Figure(figsize=(8, 6), dpi=100, layout="constrained")
+            fig = Figure(figsize=(7.45, 5.6), dpi=100, layout="constrained")
             axes = [None, *fig.subplots(2, 1, sharex=True)]
             axes[1].plot(x, [row.A for row in r.rows], "o-", color="tab:green",
                          label=L("t2_plot_A_areas"))
