@@ -47,3 +47,32 @@ def case_setup(name: str) -> dict:
     return {"case": case, "res": res, "mech": mech, "kin": kin, "loads": loads,
             "omega": res.columns["omega"].values, "eps": res.columns["epsilon"].values,
             "M_D": s["balancing_moment"], "J_I": J_I}
+
+
+# numerical derivatives: 8th-order central differences (as tests/test_kinematics.py)
+_D1 = np.array([1 / 280, -4 / 105, 1 / 5, -4 / 5, 0.0, 4 / 5, -1 / 5, 4 / 105, -1 / 280])
+_D2 = np.array([-1 / 560, 8 / 315, -1 / 5, 8 / 5, -205 / 72, 8 / 5, -1 / 5, 8 / 315, -1 / 560])
+
+
+def check_numerical(mech, phi0, scale) -> int:
+    """Every point's and link's velocity and acceleration analogue of ``mech`` at the angles
+    ``phi0`` [rad] against 8th-order central differences of the positions (points to
+    1e-8·``scale`` [m]); returns how many analogues were checked."""
+    k = solve(mech, phi0)
+    offs = np.arange(-4, 5)
+    checked = 0
+    for h, w, order in ((1e-3, _D1, 1), (4e-3, _D2, 2)):
+        kk = solve(mech, (phi0[:, None] + h * offs[None, :]).ravel())
+        for name, pm in kk.points.items():
+            num = np.einsum("k,nkj->nj", w, pm.r.reshape(phi0.size, 9, 2)) / h ** order
+            exact = k.points[name].v_q if order == 1 else k.points[name].a_q
+            np.testing.assert_allclose(exact, num, rtol=1e-8, atol=1e-8 * scale, err_msg=name)
+            checked += 1
+        for name, lm in kk.links.items():
+            th = lm.theta.reshape(phi0.size, 9)
+            th = th[:, 4:5] + np.angle(np.exp(1j * (th - th[:, 4:5])))
+            exact = k.links[name].omega_q if order == 1 else k.links[name].eps_q
+            np.testing.assert_allclose(exact, (th @ w) / h ** order, rtol=1e-8, atol=1e-8,
+                                       err_msg=name)
+            checked += 1
+    return checked

@@ -21,6 +21,7 @@ from flywheel.cli import app
 from flywheel.dynamics.pipeline import analyze
 from flywheel.errors import CaseFileError, InputError
 from flywheel.io.toml import read_toml
+from helpers import check_numerical  # 8th-order central differences (tests/helpers.py)
 
 CASES = Path(__file__).resolve().parents[1] / "cases"
 STROKES = ("intake", "compression", "expansion", "exhaust")
@@ -331,30 +332,6 @@ def test_pins_at_the_same_angle_with_different_names():
     assert "crank.pins[1].name: point name 'A2' is already defined" in _error(data)
 
 
-# numerical derivatives: 8th-order central differences (as tests/test_kinematics.py)
-_D1 = np.array([1 / 280, -4 / 105, 1 / 5, -4 / 5, 0.0, 4 / 5, -1 / 5, 4 / 105, -1 / 280])
-_D2 = np.array([-1 / 560, 8 / 315, -1 / 5, 8 / 5, -205 / 72, 8 / 5, -1 / 5, 8 / 315, -1 / 560])
-
-
-def _check_numerical(mech, phi0, scale):
-    from flywheel.linkage import solve
-
-    k = solve(mech, phi0)
-    offs = np.arange(-4, 5)
-    for h, w, order in ((1e-3, _D1, 1), (4e-3, _D2, 2)):
-        kk = solve(mech, (phi0[:, None] + h * offs[None, :]).ravel())
-        for name, pm in kk.points.items():
-            num = np.einsum("k,nkj->nj", w, pm.r.reshape(phi0.size, 9, 2)) / h ** order
-            exact = k.points[name].v_q if order == 1 else k.points[name].a_q
-            np.testing.assert_allclose(exact, num, rtol=1e-8, atol=1e-8 * scale, err_msg=name)
-        for name, lm in kk.links.items():
-            th = lm.theta.reshape(phi0.size, 9)
-            th = th[:, 4:5] + np.angle(np.exp(1j * (th - th[:, 4:5])))
-            exact = k.links[name].omega_q if order == 1 else k.links[name].eps_q
-            np.testing.assert_allclose(exact, (th @ w) / h ** order, rtol=1e-8, atol=1e-8,
-                                       err_msg=name)
-
-
 @pytest.mark.parametrize("layout", ["inline4", "boxer", "vtwin", "odd"])
 def test_multi_throw_kinematics_against_numerical_derivatives(layout):
     """Pins at stated angles and throws, with slider dyads and a four-bar on them: every
@@ -382,7 +359,7 @@ def test_multi_throw_kinematics_against_numerical_derivatives(layout):
                  RRR("C", "P", "4", 0.2, "D", "5", 0.15, "C"))
     mech = Mechanism(crank, dyads, (), {"D": (0.12, 0.13)} if layout == "odd" else {})
     phi0 = np.radians(np.arange(7.0, 360.0, 23.0))
-    _check_numerical(mech, phi0, 0.2)
+    check_numerical(mech, phi0, 0.2)
     k = solve(mech, phi0)
     for pin in crank.pins:
         d = k.points[pin.name].r - np.asarray(crank.pivot_at)

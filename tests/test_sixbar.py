@@ -19,6 +19,7 @@ from flywheel.cases.run import load_case
 from flywheel.cli import app
 from flywheel.dynamics.pipeline import analyze
 from flywheel.linkage import RRP, RRR, Crank, Guide, LinkPoint, Mechanism, solve
+from helpers import check_numerical  # 8th-order central differences (tests/helpers.py)
 from flywheel.linkage.deadcentres import dead_centres
 
 CASES = Path(__file__).resolve().parents[1] / "cases"
@@ -68,32 +69,6 @@ def test_shaper_cuts_on_the_slow_stroke_only(tmp_path):
     assert "cases/shaper.toml" in (CASES.parent / "README.md").read_text(encoding="utf-8")
 
 
-# numerical derivatives: 8th-order central differences (as tests/test_kinematics.py)
-_D1 = np.array([1 / 280, -4 / 105, 1 / 5, -4 / 5, 0.0, 4 / 5, -1 / 5, 4 / 105, -1 / 280])
-_D2 = np.array([-1 / 560, 8 / 315, -1 / 5, 8 / 5, -205 / 72, 8 / 5, -1 / 5, 8 / 315, -1 / 560])
-
-
-def _check_numerical(mech, phi0, scale):
-    k = solve(mech, phi0)
-    offs = np.arange(-4, 5)
-    checked = 0
-    for h, w, order in ((1e-3, _D1, 1), (4e-3, _D2, 2)):
-        kk = solve(mech, (phi0[:, None] + h * offs[None, :]).ravel())
-        for name, pm in kk.points.items():
-            num = np.einsum("k,nkj->nj", w, pm.r.reshape(phi0.size, 9, 2)) / h ** order
-            exact = k.points[name].v_q if order == 1 else k.points[name].a_q
-            np.testing.assert_allclose(exact, num, rtol=1e-8, atol=1e-8 * scale, err_msg=name)
-            checked += 1
-        for name, lm in kk.links.items():
-            th = lm.theta.reshape(phi0.size, 9)
-            th = th[:, 4:5] + np.angle(np.exp(1j * (th - th[:, 4:5])))
-            exact = k.links[name].omega_q if order == 1 else k.links[name].eps_q
-            np.testing.assert_allclose(exact, (th @ w) / h ** order, rtol=1e-8, atol=1e-8,
-                                       err_msg=name)
-            checked += 1
-    return checked
-
-
 def toggle_press() -> Mechanism:
     """A crank press with a toggle (кривошипно-коленный пресс): crank 1 (0.08 m) drives the
     connecting rod 2 to the knee B, where the upper toggle link 3 (about the fixed D) and the
@@ -110,7 +85,7 @@ def toggle_press() -> Mechanism:
 def test_toggle_press_kinematics_against_numerical_derivatives():
     mech = toggle_press()
     phi0 = np.radians(np.arange(3.0, 360.0, 17.0))
-    assert _check_numerical(mech, phi0, 0.3) == 2 * (7 + 5)
+    assert check_numerical(mech, phi0, 0.3) == 2 * (7 + 5)
     k = solve(mech, np.linspace(0, 2 * np.pi, 721))
     # loop closure: every link keeps its length, the slide stays on its guide
     for a, b, L in (("A", "B", 0.35), ("D", "B", 0.25), ("B", "C", 0.3)):
@@ -128,9 +103,9 @@ def test_shaper_and_four_bar_with_a_slider_against_numerical_derivatives():
     four-bar whose coupler point drives a slider (RRR, then RRP from [points])."""
     mech = load_case(CASES / "shaper.toml").mechanism()
     phi0 = np.radians(np.arange(5.0, 360.0, 19.0))
-    assert _check_numerical(mech, phi0, 0.3) > 0
+    assert check_numerical(mech, phi0, 0.3) > 0
     fb = load_case(CASES / "fourbar.toml").mechanism()
     coupler = [p.name for p in fb.points if p.link == "2"][0]
     mech = Mechanism(fb.crank, fb.dyads + (RRP("G", coupler, "G", "6", 0.5, "7",
                                                Guide((0.0, -0.25), 0.0)),), fb.points, fb.ground)
-    assert _check_numerical(mech, phi0, 0.3) > 0
+    assert check_numerical(mech, phi0, 0.3) > 0
