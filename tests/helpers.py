@@ -76,3 +76,11 @@ def check_numerical(mech, phi0, scale) -> int:
                                        err_msg=name)
             checked += 1
     return checked
+
+
+def err_text(res) -> str:
+    """The stderr of a typer CliRunner result (older click mixes the streams: its output)."""
+    try:
+        return res.stderr
+    except (ValueError, AttributeError):
+        return res.output

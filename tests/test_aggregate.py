@@ -18,6 +18,7 @@ from flywheel.elastic.timedomain import (MAX_FAST_PERIODS, energy, simulate, sta
 from flywheel.elastic.model import analyze
 from flywheel.cases.aggregate import load_aggregate_case, parse_aggregate_case, to_model
 from flywheel.errors import CaseFileError, InputError
+from helpers import err_text  # a CliRunner result's stderr (tests/helpers.py)
 
 CASES = Path(__file__).resolve().parent.parent / "cases"
 KEYS = {"natural_frequencies_hz", "twist_amplitude", "elastic_moment_amplitude", "delta_motor",
@@ -401,12 +402,6 @@ def cli(*args):
 
     return runner.invoke(app, ["aggregate", *map(str, args)])
 
-
-def err_text(res):
-    try:
-        return res.stderr
-    except (ValueError, AttributeError):
-        return res.output
 
 
 def test_cli_json_contract():

@@ -11,6 +11,7 @@ from typer.testing import CliRunner
 from flywheel.cli import app
 from flywheel.errors import CaseFileError
 from flywheel.teaching.grading import grade, parse_key, parse_number, rel_error
+from helpers import err_text  # a CliRunner result's stderr (tests/helpers.py)
 
 CASES = Path(__file__).resolve().parent.parent / "cases"
 runner = CliRunner()
@@ -19,12 +20,6 @@ runner = CliRunner()
 def invoke(*args):
     return runner.invoke(app, ["grade", *map(str, args)])
 
-
-def err_text(res):
-    try:
-        return res.stderr
-    except (ValueError, AttributeError):  # older click mixes the streams
-        return res.output
 
 
 def one_line_error(res, *fragments):

@@ -13,6 +13,7 @@ import pytest
 from typer.testing import CliRunner
 
 from flywheel.cli import app
+from helpers import err_text  # a CliRunner result's stderr (tests/helpers.py)
 
 CASES = Path(__file__).resolve().parent.parent / "cases"
 COMPRESSOR = CASES / "variants_compressor.toml"
@@ -23,12 +24,6 @@ runner = CliRunner()
 def invoke(*args):
     return runner.invoke(app, ["variants", *map(str, args)])
 
-
-def err_text(res):
-    try:
-        return res.stderr
-    except (ValueError, AttributeError):  # older click mixes the streams
-        return res.output
 
 
 class Sheet(HTMLParser):

@@ -7,6 +7,7 @@ import pytest
 from typer.testing import CliRunner
 
 from flywheel.cli import app
+from helpers import err_text  # a CliRunner result's stderr (tests/helpers.py)
 
 CASES = Path(__file__).resolve().parent.parent / "cases"
 KEYS = {"omega_max", "omega_min", "omega_mean", "delta", "phi_omega_max_deg",
@@ -18,12 +19,6 @@ runner = CliRunner()
 def run(*args):
     return runner.invoke(app, ["task2", *map(str, args)])
 
-
-def err_text(res):
-    try:
-        return res.stderr
-    except (ValueError, AttributeError):  # older click mixes the streams
-        return res.output
 
 
 def test_json_contract_triangle():

@@ -14,6 +14,7 @@ from flywheel.dynamics.pipeline import analyze
 from flywheel.render.task2 import to_dict
 from flywheel.cases.task2 import load_task2_case, solve_case
 from flywheel.teaching.variants import RUN_POINTS, answer_value, load_template
+from helpers import err_text  # a CliRunner result's stderr (tests/helpers.py)
 
 CASES = Path(__file__).resolve().parent.parent / "cases"
 COMPRESSOR = CASES / "variants_compressor.toml"
@@ -25,12 +26,6 @@ runner = CliRunner()
 def invoke(*args):
     return runner.invoke(app, ["variants", *map(str, args)])
 
-
-def err_text(res):
-    try:
-        return res.stderr
-    except (ValueError, AttributeError):  # older click mixes the streams
-        return res.output
 
 
 def one_line_error(res, *fragments):
