@@ -43,15 +43,13 @@ def aggregate_command(
     natural frequencies, steady forced vibration, start-up."""
     import math
 
-    from flywheel.cli.guard import guarded, needs_out, refuse_nonfinite
+    from flywheel.cli.guard import check_lang, guarded, needs_out, refuse_nonfinite
     from flywheel.errors import InputError, Notice
 
     with guarded(source=case):      # an error of the analysis is prefixed with the case file
         from flywheel.render import nomenclature as nm
-        from flywheel.render.nomenclature import LANGS
 
-        if lang not in LANGS:
-            raise InputError(f"--lang: {lang!r} is not a language (allowed: {', '.join(LANGS)})")
+        check_lang(lang)
         if t_end is not None and not (math.isfinite(t_end) and 0 < t_end <= MAX_T_END):
             raise InputError(Notice(f"--t-end: {t_end:g} s is out of range (allowed: 0 … "
                                     f"{MAX_T_END:g} s; a start-up is over in seconds to a "

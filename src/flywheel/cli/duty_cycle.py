@@ -26,10 +26,9 @@ def duty_cycle_command(
     """Duty-cycle machines (punching, riveting, shearing presses): the motor's power and torque,
     the energy the flywheel gives, its J and mass, the speed at the end of the operation, the
     time and angle to recover, the cycle."""
-    from flywheel.cli.guard import fail, guard, needs_out
+    from flywheel.cli.guard import check_lang, fail, guard, needs_out
 
-    if lang not in ("en", "ru"):
-        fail(f"--lang: {lang!r} is not a language (allowed: en, ru)")
+    check_lang(lang)
     from flywheel.render.report_folder import check_formats
 
     formats = guard(check_formats, report)

@@ -59,6 +59,12 @@ def choice(option: str, got, what: str, allowed: str):
                   option=option, got=repr(got), allowed=allowed)
 
 
+def check_lang(lang: str) -> None:
+    """Refuse a ``--lang`` that is not en or ru: one error line, exit 2 (every command)."""
+    if lang not in ("en", "ru"):
+        fail(choice("--lang", lang, "a language", "en, ru"))
+
+
 def needs_out():
     """The error of --report without --out (task2, aggregate, duty-cycle)."""
     from flywheel.errors import Notice

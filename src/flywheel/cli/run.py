@@ -12,7 +12,7 @@ from typing import Optional
 
 import typer
 
-from flywheel.cli.guard import _guard, choice, fail
+from flywheel.cli.guard import _guard, check_lang, choice, fail
 from flywheel.errors import Notice
 
 
@@ -33,8 +33,7 @@ def check_command(case: Path = typer.Argument(..., help="Case file (TOML)."),
     from flywheel.dynamics.check import check_case
     from flywheel.render.check import print_check
 
-    if lang not in ("en", "ru"):
-        fail(f"--lang: {lang!r} is not a language (allowed: en, ru)")
+    check_lang(lang)
     c = _guard(load_case, case)
     print_check(_guard(check_case, c, source=case, case=c), lang=lang)
 
@@ -71,8 +70,7 @@ def run_command(
 ) -> None:
     """Run the whole dynamic analysis of a case; write summary.json, table.csv, positions.csv,
     forces.csv, forces_positions.csv, report.md and plots/*.png to the output folder."""
-    if lang not in ("en", "ru"):
-        fail(f"--lang: {lang!r} is not a language (allowed: en, ru)")
+    check_lang(lang)
     from flywheel.render.csvfmt import STYLES, restyle
 
     if csv_style not in STYLES:

@@ -95,7 +95,7 @@ def task2_command(
     """Task 2: ω_max, ω_min, ω_ср and δ of a machine with constant J under given M_D(φ), M_C(φ)."""
     import math
 
-    from flywheel.cli.guard import first_nonfinite, guarded, needs_out, not_finite
+    from flywheel.cli.guard import check_lang, first_nonfinite, guarded, needs_out, not_finite
     from flywheel.errors import FlywheelError, InputError, Notice
 
     title = source = ""
@@ -104,10 +104,8 @@ def task2_command(
                                        ("--delta", delta)) if v is not None]
     with guarded():
         from flywheel.render import nomenclature as nm
-        from flywheel.render.nomenclature import LANGS
 
-        if lang not in LANGS:
-            raise InputError(f"--lang: {lang!r} is not a language (allowed: {', '.join(LANGS)})")
+        check_lang(lang)
         if plot is not None and plot.is_dir():
             raise InputError(Notice(f"--plot {plot}: is a folder, expected an image file",
                                         "plot_is_a_folder", plot=str(plot)))

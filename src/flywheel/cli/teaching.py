@@ -35,7 +35,7 @@ def variants_command(
     """Individual variants of a task from a template, with the answer key (answers.json,
     answers.csv), a blank answer sheet (students.csv) and, with --sheets, a printable task
     sheet per variant."""
-    from flywheel.cli.guard import _guard, choice, fail
+    from flywheel.cli.guard import _guard, check_lang, choice, fail
     from flywheel.errors import Notice
 
     if not 1 <= count <= 9999:
@@ -47,8 +47,7 @@ def variants_command(
     if points < 36:
         fail(Notice(f"--points: {points} is too few (allowed: 36 or more)", "points_too_few",
                     n=points))
-    if lang not in ("en", "ru"):
-        fail(f"--lang: {lang!r} is not a language (allowed: en, ru)")
+    check_lang(lang)
     if sheets_format not in ("both", "html", "pdf"):
         fail(choice("--sheets-format", sheets_format, "a sheet format", "both, html, pdf"))
     import secrets
@@ -124,13 +123,12 @@ def grade_command(
     A student who appears twice: the later row counts (the earlier is reported)."""
     import sys
 
-    from flywheel.cli.guard import _guard, choice, fail
+    from flywheel.cli.guard import _guard, check_lang, choice, fail
     from flywheel.errors import Notice
     from flywheel.io.output import write_file
     from flywheel.teaching.grading import grade, load_key, report_csv, report_dict
 
-    if lang not in ("en", "ru"):
-        fail(f"--lang: {lang!r} is not a language (allowed: en, ru)")
+    check_lang(lang)
     if csv_style not in ("plain", "excel-ru"):
         fail(choice("--csv", csv_style, "a CSV dialect", "plain, excel-ru"))
     for option, path in (("--out", out), ("--gradebook", gradebook)):
