@@ -16,6 +16,7 @@ import re
 import shutil
 import tempfile
 import zipfile
+from dataclasses import dataclass
 from pathlib import Path
 
 from flywheel.render import mathfmt
@@ -133,11 +134,21 @@ def _ts(text: str) -> str:
     return "".join(subs(p) if i % 2 == 0 else f"#strong[{subs(p)}]" for i, p in enumerate(parts))
 
 
-def typst_source(doc: Document) -> str:
+@dataclass(frozen=True)
+class TypstLayout:
+    """How typst_source sets the page, the narrow tables and the figures: the записка's by
+    default; a task sheet (render/sheets.py) fits one A4 page with its own."""
+
+    page: str = 'margin: (x: 18mm, y: 18mm), numbering: "1"'
+    table: str = "inset: 3pt, align: (x, y) => if x == 0 { left } else { right }"
+    image: str = "width: 100%"
+
+
+def typst_source(doc: Document, layout: TypstLayout = TypstLayout()) -> str:
     """The document as a typst file (figures referenced as plots/<name>)."""
     tab, fig = CAPTION[doc.lang]
     out = ['#set document(title: ' + _ts(doc.title)[1:] + ', date: none)',
-           '#set page(paper: "a4", margin: (x: 18mm, y: 18mm), numbering: "1")',
+           f'#set page(paper: "a4", {layout.page})',
            f'#set text(lang: "{doc.lang}", size: 10pt)',
            '#set par(justify: false)',
            ""]
@@ -151,25 +162,28 @@ def typst_source(doc: Document) -> str:
         elif isinstance(b, Formula):
             out.append(f"$ {mathfmt.typst(b.tex)} $")
         elif isinstance(b, Table):
-            out.append(_typst_table(b, f"{tab} {b.number} — {b.caption}"))
+            out.append(_typst_table(b, f"{tab} {b.number} — {b.caption}", layout.table))
         elif isinstance(b, Figure):
-            out.append(f'#figure(image("plots/{b.file}", width: 100%), numbering: none, '
+            out.append(f'#figure(image("plots/{b.file}", {layout.image}), numbering: none, '
                        f"caption: [{_ts(f'{fig} {b.number} — {b.caption}')}])")
         out.append("")
     return "\n".join(out)
 
 
-def _typst_table(b: Table, caption: str) -> str:
-    """A numbered table as typst: its caption, the first column left, the numbers right; a wide
-    table (more than WIDE columns) in a smaller font, a very wide one (more than WIDE_PAGE) on a
-    landscape page of its own, so that no number runs over its cell or the A4 margin."""
+def _typst_table(b: Table, caption: str, narrow: str = TypstLayout.table) -> str:
+    """A numbered table as typst: its caption, then a table of up to WIDE columns in 8 pt set
+    by ``narrow`` (the layout's inset and alignment: the first column left, the numbers
+    right); a wide table (more than WIDE columns) in a smaller font, a very wide one (more than
+    WIDE_PAGE) on a landscape page of its own, so that no number runs over its cell or the A4
+    margin."""
     n = len(b.header)
-    size, inset = ("8pt", "3pt") if n <= WIDE else ("7pt", "2pt") if n <= WIDE_PAGE else ("6.5pt", "2pt")
+    align = "align: (x, y) => if x == 0 { left } else { right }"
+    size, style = ("8pt", narrow) if n <= WIDE else \
+        ("7pt" if n <= WIDE_PAGE else "6.5pt", f"inset: 2pt, {align}")
     cells = ", ".join(f"[{_ts(c)}]" for r in (b.header, *b.rows) for c in r)
     src = (f"#block(breakable: true)[{_ts(caption)}]\n"
            f"#[#show table.cell: set text(size: {size})\n"
-           f"#table(columns: {n}, inset: {inset}, align: (x, y) => if x == 0 {{ left }} else "
-           f"{{ right }}, {cells})]")
+           f"#table(columns: {n}, {style}, {cells})]")
     return f"#page(flipped: true)[\n{src}\n]" if n > WIDE_PAGE else src
 
 

@@ -409,15 +409,13 @@ def sheet_typst(doc: Document) -> str:
     """The sheet as typst source: the записка's (report_formats.typst_source) on one A4 page —
     narrower margins, no page number, the drawing 62 mm high, tables tighter, the quantity's
     name left-aligned."""
-    from flywheel.render.report_formats import typst_source
+    from flywheel.render.report_formats import TypstLayout, typst_source
 
-    src = typst_source(doc)
+    src = typst_source(doc, TypstLayout(page="margin: (x: 15mm, y: 12mm)",
+                                        table="inset: 2pt, align: (left, right, left)",
+                                        image="height: 62mm"))
     # a marked subscript is inside one of the source's string literals (#"…"): close it
-    src = src.replace(SUB[0], '"#sub[#"').replace(SUB[1], '"]#"')
-    src = src.replace('margin: (x: 18mm, y: 18mm), numbering: "1"', 'margin: (x: 15mm, y: 12mm)')
-    src = src.replace("inset: 3pt, align: (x, y) => if x == 0 { left } else { right },",
-                      "inset: 2pt, align: (left, right, left),")    # (tests/test_sheets.py's one-page check fails if report_formats._typst_table changes this)
-    return src.replace("width: 100%)", "height: 62mm)")
+    return src.replace(SUB[0], '"#sub[#"').replace(SUB[1], '"]#"')
 
 
 def sheet_html(doc: Document, images: Path | None) -> str:
