@@ -1005,9 +1005,16 @@ PREFIXES = {"warning": ("warning", "предупреждение"), "note": ("no
             "written": ("written", "записано")}
 
 
+#: functions (code, params) -> params that add the Russian words a block's templates need;
+#: each block of templates below appends its own (the order they are appended is the order run)
+_PARAM_HOOKS: list = []
+
+
 def _ru_params(code: str, p: dict) -> dict:
     """Parameters of a Notice that need words of their own in Russian."""
     p = _msgs2_ru_params(code, _msgs_ru_params(p))
+    for hook in _PARAM_HOOKS:
+        p = hook(code, p)
     if code == "startup_not_steady":
         p["target"] = (f"{p['omega_pred']:.5g} рад/с" if p.get("omega_pred") is not None
                        else "нет: характеристика двигателя не может нести среднюю нагрузку")
