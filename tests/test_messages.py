@@ -515,3 +515,79 @@ def test_duty_cycle_case_errors_are_russian(tmp_path, edit, en_said, ru_said):
     assert len(lines) == 1 and lines[0].startswith(f"ошибка: {tmp_path / 'c.toml'}: {ru_said}")
     said = re.sub(r"\S*[/.]\S*|'[^']*'|--[a-z-]+", "", lines[0])
     assert not ENGLISH.search(said), lines[0]
+
+
+# --- msgs_cli --- the command-line parser's own errors, the interruption, an internal error
+FLYWHEEL = str(Path(sys.executable).with_name("flywheel"))   # the console script: its name
+USAGE_RU = [
+    (["run", "CASE", "--foo"], "ошибка: flywheel run: нет такого параметра: --foo (похожие: "
+     "--motion, --out) (см. flywheel run --help)"),
+    (["run"], "ошибка: flywheel run: не задан аргумент 'case' (см. flywheel run --help)"),
+    (["run", "CASE", "--points", "abc"], "ошибка: flywheel run: --points: должно быть целым "
+     "числом (задано 'abc') (см. flywheel run --help)"),
+    (["task2", "--md", "x"], "ошибка: flywheel task2: --md: должно быть числом (задано 'x') "
+     "(см. flywheel task2 --help)"),
+    (["bogus"], "ошибка: flywheel: нет такой команды: 'bogus' (см. flywheel --help)"),
+    (["run", "CASE", "extra"], "ошибка: flywheel run: лишние аргументы: extra (см. flywheel run "
+     "--help)"),
+    (["run", "CASE", "--no-plots=3"], "ошибка: параметр --no-plots не принимает значения"),
+]
+
+
+@pytest.mark.parametrize("args,expected", USAGE_RU, ids=[" ".join(a) for a, _ in USAGE_RU])
+def test_usage_errors_are_russian_and_english_is_the_parsers_own(args, expected):
+    """The parser's errors (cli/usage.py) under --lang ru: one Russian line, exit 2, in a real
+    process (the console script's main() says them); in English the parser's own words."""
+    case = str(CASES / "compressor.toml")
+    args = [case if a == "CASE" else a for a in args]
+    ru = subprocess.run([FLYWHEEL, *args, "--lang", "ru"],
+                        capture_output=True, text=True)
+    assert ru.returncode == 2 and ru.stdout == ""
+    assert ru.stderr == expected + "\n"
+    en = subprocess.run([FLYWHEEL, *args], capture_output=True, text=True)
+    assert en.returncode == 2 and en.stderr.startswith("error: ")
+    assert len(en.stderr.splitlines()) == 1 and not re.search("[а-я]", en.stderr)
+
+
+def test_a_value_of_an_option_given_last_is_still_said(capsys):
+    """`--out` given last takes no value: the parser's BadOptionUsage (no command context)."""
+    res = subprocess.run([FLYWHEEL, "run", str(CASES / "compressor.toml"),
+                          "--lang", "ru", "--out"], capture_output=True, text=True)
+    assert res.returncode == 2 and res.stderr == "ошибка: параметру --out нужно значение\n"
+
+
+@pytest.mark.parametrize("lang,line", [("ru", "ошибка: прервано (Ctrl-C)\n"),
+                                       ("en", "error: interrupted (Ctrl-C)\n")])
+def test_the_interruption_line_is_said_in_the_users_language(monkeypatch, capsys, lang, line):
+    import signal
+
+    import flywheel.cli as cli
+
+    def interrupted(*a, **k):
+        raise cli.Stopped(signal.SIGINT)
+
+    monkeypatch.setattr(cli, "app", interrupted)
+    monkeypatch.setattr(signal, "signal", lambda *a: None)   # leave pytest's handlers alone
+    monkeypatch.setattr(sys, "argv", ["flywheel", "run", "c.toml", "--lang", lang])
+    with pytest.raises(SystemExit) as e:
+        cli.main()
+    assert e.value.code == 130 and capsys.readouterr().err == line
+
+
+def test_an_internal_error_is_said_in_russian(monkeypatch, capsys):
+    import signal
+
+    import flywheel.cli as cli
+
+    def broken(*a, **k):
+        raise ZeroDivisionError("division by zero")
+
+    monkeypatch.setattr(cli, "app", broken)
+    monkeypatch.setattr(signal, "signal", lambda *a: None)
+    monkeypatch.setattr(sys, "argv", ["flywheel", "run", "c.toml", "--lang", "ru"])
+    with pytest.raises(SystemExit) as e:
+        cli.main()
+    err = capsys.readouterr().err
+    assert e.value.code == 1 and err.startswith("ошибка: внутренняя ошибка flywheel ")
+    assert "ZeroDivisionError: division by zero; пожалуйста, сообщите о ней" in err
+    assert err.endswith("(--debug покажет трассировку)\n")

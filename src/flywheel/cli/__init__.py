@@ -112,8 +112,14 @@ def _stopped(exc: Stopped) -> None:
     import sys
 
     signal.signal(signal.SIGINT, signal.SIG_IGN)     # a second Ctrl-C: no traceback
-    name = "interrupted (Ctrl-C)" if exc.signum == signal.SIGINT else "terminated (SIGTERM)"
-    sys.stderr.write(f"error: {name}\n")
+    from flywheel.cli.guard import lang
+    from flywheel.errors import Notice
+    from flywheel.render.nomenclature import message, prefix
+
+    name = (Notice("interrupted (Ctrl-C)", "stopped_interrupted") if exc.signum == signal.SIGINT
+            else Notice("terminated (SIGTERM)", "stopped_terminated"))
+    ln = lang()
+    sys.stderr.write(f"{prefix('error', ln)}: {message(name, ln)}\n")
     sys.exit(128 + exc.signum)
 
 
@@ -163,24 +169,33 @@ def main() -> None:
             if type(exc).__name__ == "NoArgsIsHelpError":
                 sys.exit(0)                   # the help is printed already
             ctx = getattr(exc, "ctx", None)
-            where = f"{ctx.command_path}: " if ctx is not None else ""
-            see = f" (see {ctx.command_path} --help)" if ctx is not None else ""
-            msg = " ".join(exc.format_message().split())
             from flywheel.cli.guard import lang
-            from flywheel.render.nomenclature import prefix
+            from flywheel.cli.usage import usage_notice
+            from flywheel.render.nomenclature import message, prefix
 
-            sys.stderr.write(f"{prefix('error', lang())}: {where}{msg}{see}\n")
+            ln = lang()
+            where = f"{ctx.command_path}: " if ctx is not None else ""
+            see = (f" ({'см.' if ln == 'ru' else 'see'} {ctx.command_path} --help)"
+                   if ctx is not None else "")
+            msg = message(usage_notice(exc), ln)
+            sys.stderr.write(f"{prefix('error', ln)}: {where}{msg}{see}\n")
             sys.exit(2)
         from flywheel import __version__
+        from flywheel.cli.guard import lang
+        from flywheel.errors import Notice
+        from flywheel.render.nomenclature import message, prefix
 
         if _Options.debug:
             import traceback
 
             traceback.print_exc()
         what = f"{type(exc).__name__}: {exc}".splitlines()[0][:300]
-        sys.stderr.write(f"error: internal error in flywheel {__version__} (a bug, not your "
-                         f"input): {what}; please report it with the command and its input "
-                         f"files{'' if _Options.debug else ' (--debug shows the traceback)'}\n")
+        text = Notice(f"internal error in flywheel {__version__} (a bug, not your input): "
+                      f"{what}; please report it with the command and its input files"
+                      f"{'' if _Options.debug else ' (--debug shows the traceback)'}",
+                      "internal_error", version=__version__, what=what, debug=_Options.debug)
+        ln = lang()
+        sys.stderr.write(f"{prefix('error', ln)}: {message(text, ln)}\n")
         sys.exit(1)
     finally:
         # the command is over (its outputs whole, or none): a Ctrl-C during the interpreter's

@@ -1509,3 +1509,44 @@ def _msgs2_ru_params(code: str, p: dict) -> dict:
     if "below_zero" in p:
         p["why_ru"] = ": скорость упала бы до нуля или ниже" if p["below_zero"] else ""
     return p
+
+
+# --- msgs_cli ---
+# The command-line parser's own errors (cli/usage.py), the interruption and the internal-error
+# lines (cli/__init__.py) in Russian.
+_USAGE_VALUE_KINDS_RU = {"integer": "целым числом", "number": "числом",
+                         "boolean": "логическим значением (true или false)"}
+MESSAGES_RU.update({
+    "usage_no_such_option": "нет такого параметра: {option}{possible_ru}",
+    "usage_needs_value": "параметру {option} нужно {count_ru}",
+    "usage_takes_no_value": "параметр {option} не принимает значения",
+    "usage_missing": "не задан {kind_ru} {name}",
+    "usage_bad_value": "{hint}: должно быть {value_kind_ru}{got_ru}",
+    "usage_no_such_command": "нет такой команды: {command!r}",
+    "usage_extra_arguments": "лишние аргументы: {args}",
+    "usage_missing_command": "не задана команда",
+    "stopped_interrupted": "прервано (Ctrl-C)",
+    "stopped_terminated": "остановлено (SIGTERM)",
+    "internal_error": ("внутренняя ошибка flywheel {version} (ошибка программы, а не ваших "
+                       "данных): {what}; пожалуйста, сообщите о ней, приложив команду и её "
+                       "входные файлы{debug_ru}"),
+})
+_MSGS_DERIVED |= {"possible_ru", "count_ru", "kind_ru", "value_kind_ru", "debug_ru"}
+
+
+def _msgs_cli_ru_params(code: str, p: dict) -> dict:
+    """The Russian words of the parser's errors' parameters."""
+    if code == "usage_no_such_option":
+        p["possible_ru"] = f" (похожие: {p['possible']})" if p["possible"] else ""
+    elif code == "usage_needs_value":
+        p["count_ru"] = "значение" if p["count"] == 1 else f"{p['count']} значения"
+    elif code == "usage_missing":
+        p["kind_ru"] = {"argument": "аргумент", "option": "параметр"}[p["kind"]]
+    elif code == "usage_bad_value":
+        p["value_kind_ru"] = _USAGE_VALUE_KINDS_RU[p["value_kind"]]
+    elif code == "internal_error":
+        p["debug_ru"] = "" if p["debug"] else " (--debug покажет трассировку)"
+    return p
+
+
+_PARAM_HOOKS.append(_msgs_cli_ru_params)
