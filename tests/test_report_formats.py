@@ -282,3 +282,16 @@ def test_subscripts_leave_identifiers_alone():
     assert mathfmt.subscripts("M_Д − M_{С}") == [("M", False), ("Д", True), (" − M", False),
                                                 ("С", True)]
     assert mathfmt.sub_html("p/p_max <") == "p/p<sub>max</sub> &lt;"
+
+
+def test_a_russian_report_has_no_english_table_headings(tmp_path):
+    """Every table heading of the Russian записка is Russian (or a symbol): the four-stroke
+    indicator table's strokes too («p/p_max впуск», not «p/p_max intake»)."""
+    run(tmp_path / "o", "--no-plots", "--report", "md", "--lang", "ru",
+        case="engine_inline4.toml")
+    lines = (tmp_path / "o" / "report.md").read_text(encoding="utf-8").splitlines()
+    heads = [ln for ln, nxt in zip(lines, lines[1:]) if ln.startswith("| ") and nxt.startswith("|--")]
+    assert len(heads) > 10
+    assert "| s | p/p_max впуск | p/p_max сжатие | p/p_max расширение | p/p_max выпуск |" in heads
+    words = {w for h in heads for w in re.findall(r"\b[a-z]{4,}\b", h)}
+    assert not words, words

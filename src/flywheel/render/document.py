@@ -521,7 +521,8 @@ def _input_of_case(b: _Builder, case, t: dict, lang: str) -> None:
             if getattr(c, "strokes", None) is not None:      # a four-stroke cylinder
                 st = c.strokes
                 names = ("intake", "compression", "expansion", "exhaust")
-                b.table(t["indicator"].format(c=c.name), [sym_s] + [f"{sym_p} {n}" for n in names],
+                b.table(t["indicator"].format(c=c.name),
+                        [sym_s] + [f"{sym_p} {nm.name('engine_' + n, lang)}" for n in names],
                         [[g(s_, 4)] + [g(getattr(st, n)[k], 4) for n in names]
                          for k, s_ in enumerate(c.s)])
             elif getattr(c, "diagram", None) is not None:    # one table over the cycle
