@@ -301,6 +301,82 @@ RUSSIAN_ERRORS.update({
     "duty-cycle/min-speed-above-the-max": ['не меньше max_rpm = 225 (допустимо: 0 < min_rpm < max_rpm)'],
     "duty-cycle/given-flywheel-would-stop": ['маховик слишком мал: чтобы отдать 97000 Дж (ΔE) на каждую'],
 })
+# --- msgs_duty --- the duty cycle's case checks and solution, the variants template's paths,
+# ranges and answers, the answer key's variants and answers
+RUSSIAN_ERRORS.update({
+    "duty-cycle/hole-without-thickness": ["operation.thickness: не задано: для hole_diameter "
+                                          "нужна толщина листа (A = π·d·t)"],
+    "duty-cycle/sheared-area-with-the-energy": ["operation.hole_diameter: задаётся только "
+                                                "вместе с energy_per_area или shear_strength"],
+    "duty-cycle/shape-with-the-energy": ["operation.shape: задаётся только вместе с force или "
+                                         "shear_strength"],
+    "duty-cycle/stroke-without-thickness": ["operation.thickness: не задано: ход задаёт долю "
+                                            "цикла t/(2·s)"],
+    "duty-cycle/stroke-shorter-than-half-the-thickness": [
+        "0.01 м — меньше половины толщины 0.032 м", "(допустимо: stroke ≥ 0.016 м)"],
+    "duty-cycle/delta-E-above-the-work": ["20000 Дж — больше работы операции E = 15000 Дж "
+                                          "(допустимо: ΔE ≤ E)"],
+    "duty-cycle/cycle-with-delta-E-alone": ["cycle: требует работы одной операции",
+                                            "при одном delta_E подбирается только маховик"],
+    "duty-cycle/speeds-in-two-units": ["задайте скорости в одних единицах (задано max_rpm, "
+                                       "min_omega)"],
+    "duty-cycle/given-flywheel-two-speeds": ["при заданном маховике задайте одну скорость",
+                                             "(задано max_rpm, min_rpm)"],
+    "duty-cycle/given-mass-without-radius": ["flywheel.mass: нужен радиус"],
+    "duty-cycle/given-J-with-rim-speeds-without-radius": ["flywheel.J: при скоростях на радиусе "
+                                                          "(м/с) задайте и радиус"],
+    "duty-cycle/two-fluctuations": ["задайте что-то одно из: percent, total_percent, delta, "
+                                    "drop_percent (задано percent, delta)"],
+    "duty-cycle/one-speed-only": ["задайте две скорости (две из max, min, mean)",
+                                  "(задано max_rpm)"],
+    "duty-cycle/revolutions-with-rim-speeds-without-radius": [
+        "cycle.every_revolutions: нужна скорость вала", "скорости в об/мин"],
+    "duty-cycle/max-speed-twice-the-mean": ["225 при mean_rpm = 100 даёт min = 2·mean − max = "
+                                            "-25 (допустимо: 100 < max_rpm < 200)"],
+    "duty-cycle/drop-without-the-top-speed": ["flywheel.drop_percent: это падение от "
+                                              "наибольшей скорости"],
+    "duty-cycle/speeds-equal-in-rad-per-s": ["не дают её падения (допустимо: ω_max > ω_min > "
+                                             "0)"],
+    "duty-cycle/motor-power-too-small": ["motor.power: мощность двигателя 2000 Вт меньше "
+                                         "средней мощности операций E/T_c = 3000 Вт"],
+    "duty-cycle/motor-torque-too-small-for-the-rate": [
+        "motor.torque: момент двигателя 1 Н·м (P = M_Д·ω_ср = 22.2529 Вт) меньше средней "
+        "мощности операций"],
+    "duty-cycle/motor-torque-too-small-for-the-revolutions": [
+        "момент двигателя 100 Н·м меньше среднего момента операций E/(2π·k) = 212.207 Н·м",
+        "(допустимо: не меньше 212.207 Н·м)"],
+    "duty-cycle/operation-longer-than-the-cycle": ["операция длится 6 с — дольше цикла T_c = "
+                                                   "5 с (допустимо: не дольше цикла)"],
+    "variants/path-index-not-a-number": ["cylinders — массив; 'x' — не индекс (допустимо: "
+                                         "0…1)"],
+    "variants/path-index-out-of-range": ["в cylinders элементов: 2; индекс 7 вне допустимого "
+                                         "диапазона (допустимо: 0…1)"],
+    "variants/path-inside-a-number": ["speed.omega0 — значение, а не таблица; внутри него нет "
+                                      "ничего с именем 'rpm'"],
+    "variants/path-overlaps-another": ['variants."speed.omega0": пересекается с '
+                                       'variants."speed.omega0"'],
+    "variants/path-is-a-table": ["это таблица; меняйте её поля по одному"],
+    "variants/values-are-tables": ["таблицы нельзя выбирать целиком"],
+    "variants/vary-the-variants-table": ["нельзя менять саму таблицу [variants]"],
+    "variants/variants-not-a-table": ["variants: должно быть таблицей (задано 3)"],
+    "variants/nothing-to-vary": ["variants: нечего менять (добавьте, например,"],
+    "variants/grid-without-step": ["не задано step (задайте min, max и step или values)"],
+    "variants/grid-too-fine": ["2000001 значений сетки — слишком много (допустимо: не больше "
+                               "100000"],
+    "variants/spec-unknown-key": ["неизвестный ключ 'vals'"],
+    "variants/values-and-a-grid": ["задайте что-то одно: values или min, max, step"],
+    "variants/grid-on-a-word": ["для min/max/step в шаблоне нужно число (там 'balance')"],
+    "variants/answer-twice": ["variants.answers: 'M_C' указан дважды"],
+    "variants/answer-with-a-semicolon": ["'M_C;delta' содержит символ, недопустимый в имени "
+                                         "столбца CSV"],
+    "variants/tolerances-a-number": ["variants.tolerances: должно быть таблицей { ответ = "
+                                     "допуск } (задано 0.01)"],
+    "grade/key-variant-not-an-object": ["variants.01: должно быть объектом {ответ: значение} "
+                                        "(задано 150.0)"],
+    "grade/key-answers-not-a-list": ["answers: должно быть списком имён ответов (задано "
+                                     "'M_C')"],
+    "grade/key-name-too-long": ["не удаётся прочитать (слишком длинное имя файла)"],
+})
 # English words that must not be left in a translated line (names the user gave aside)
 ENGLISH = re.compile(r"\b(the|is|not|must|be|allowed|out|of|range|given|cannot|no|such|should|"
                      r"input|valid|missing|required|unknown|key|file|folder|number|use|this)\b")
@@ -591,3 +667,35 @@ def test_an_internal_error_is_said_in_russian(monkeypatch, capsys):
     assert e.value.code == 1 and err.startswith("ошибка: внутренняя ошибка flywheel ")
     assert "ZeroDivisionError: division by zero; пожалуйста, сообщите о ней" in err
     assert err.endswith("(--debug покажет трассировку)\n")
+# --- msgs_duty ---
+def test_variants_without_a_new_combination_and_a_students_infinity(tmp_path, monkeypatch):
+    """`variants` that finds no new combination within its draws (fewer draws allowed here
+    than the 2000 of the program, so that seed 4 draws the one variant again three times):
+    English unchanged, Russian under --lang ru; a student's "inf" is no number."""
+    from flywheel.teaching import grading, variants
+
+    monkeypatch.setattr(variants, "MAX_DUPLICATE_DRAWS", 2)
+    (tmp_path / "t.toml").write_text(
+        "cycle_deg = 360\n\n[speed]\nomega0 = 200.0\n\n[flywheel]\nJ = 12.0\n\n[driving]\n"
+        "kind = \"constant\"\nvalue = 15.0\n\n[resistance]\nkind = \"constant\"\nvalue = "
+        "\"balance\"\n\n[variants]\n\"flywheel.J\" = { values = [10.0, 12.0] }\n"
+        "answers = [\"omega_max\"]\n", encoding="utf-8")
+    args = ["variants", str(tmp_path / "t.toml"), "--count", "2", "--seed", "4", "--out",
+            str(tmp_path / "v")]
+    en = runner.invoke(app, args)
+    assert en.exit_code == 2 and en.stderr == (
+        "error: variant 2: no new combination found in 2 draws; widen the ranges or ask for "
+        "fewer variants\n")
+    ru = runner.invoke(app, [*args, "--lang", "ru"])
+    assert ru.exit_code == 2 and ru.stderr == (
+        "ошибка: вариант 2: за 2 попыток не найдено новой комбинации; расширьте диапазоны или "
+        "запросите меньше вариантов\n")
+    assert not (tmp_path / "v").exists()
+    with pytest.raises(ValueError) as exc:
+        grading.parse_number("−inf")
+    assert nm.message(exc.value.args[0], "ru") == "'−inf' — не конечное число"
+    import errno
+
+    unreadable = Notice("cannot be read (File name too long)", "sheet_unreadable",
+                        reason="File name too long", errno=errno.ENAMETOOLONG)
+    assert nm.message(unreadable, "ru") == "не удаётся прочитать (слишком длинное имя файла)"

@@ -172,6 +172,11 @@ def _one_of(table: str, model, keys, required: bool = True) -> str | None:
     return got[0] if got else None
 
 
+def _goes_with(loc: str, a: str, b: str) -> FieldError:
+    """A key given without the keys it belongs to ("goes with a or b")."""
+    return FieldError(loc, Notice(f"goes with {a} or {b}", "dc_goes_with", a=a, b=b))
+
+
 def _check(c: DutyCase) -> None:
     """Checks that span fields; each raises with its field path."""
     op, fw = c.operation, c.flywheel
@@ -193,12 +198,14 @@ def _check(c: DutyCase) -> None:
     if route in ("energy_per_area", "shear_strength"):
         a = _one_of("operation", op, area_keys)
         if a != "sheared_area" and op.thickness is None:
-            raise FieldError("operation.thickness", f"missing: {a} needs the plate's thickness "
-                             f"(A = {'π·d·t' if a == 'hole_diameter' else 'L·t'})")
+            area = "π·d·t" if a == "hole_diameter" else "L·t"
+            raise FieldError("operation.thickness", Notice(
+                f"missing: {a} needs the plate's thickness (A = {area})", "dc_area_thickness",
+                key=a, area=area))
     else:
         for k in area_keys:
             if getattr(op, k) is not None:
-                raise FieldError(f"operation.{k}", "goes with energy_per_area or shear_strength")
+                raise _goes_with(f"operation.{k}", "energy_per_area", "shear_strength")
     if route in ("force", "shear_strength"):
         if op.thickness is None:
             raise FieldError("operation.thickness", Notice(
@@ -209,25 +216,30 @@ def _check(c: DutyCase) -> None:
                 "missing: state the force over the travel (allowed: constant, falling, "
                 "triangle)", "duty_shape_missing"))
     elif op.shape is not None:
-        raise FieldError("operation.shape", "goes with force or shear_strength")
+        raise _goes_with("operation.shape", "force", "shear_strength")
     # the timing
     timing = _one_of("operation", op, TIMINGS)
     if timing == "energy_fluctuation_coefficient" and route is None:
+        # library use only: no CLI input reaches this
         raise FieldError("operation.energy_fluctuation_coefficient",
                          "C_E = ΔE/E needs the work of one operation E")
     if timing == "stroke":
         if op.thickness is None:
-            raise FieldError("operation.thickness", "missing: the stroke gives the share t/(2·s) "
-                             "of the cycle, which needs the plate's thickness t")
+            raise FieldError("operation.thickness", Notice(
+                "missing: the stroke gives the share t/(2·s) of the cycle, which needs the "
+                "plate's thickness t", "dc_stroke_thickness"))
         if op.thickness > 2 * op.stroke:
-            raise FieldError("operation.stroke", f"{op.stroke:g} m is less than half the "
-                             f"thickness {op.thickness:g} m: the share t/(2·s) would exceed 1 "
-                             f"(allowed: stroke ≥ {op.thickness / 2:g} m)")
+            raise FieldError("operation.stroke", Notice(
+                f"{op.stroke:g} m is less than half the thickness {op.thickness:g} m: the share "
+                f"t/(2·s) would exceed 1 (allowed: stroke ≥ {op.thickness / 2:g} m)",
+                "dc_stroke_short", stroke=op.stroke, thickness=op.thickness,
+                half=op.thickness / 2))
     if timing == "delta_E" and route is not None:
         E = _work(op).energy
         if op.delta_E > E:
-            raise FieldError("operation.delta_E", f"{op.delta_E:g} J is more than the work of "
-                             f"the operation E = {E:.6g} J (allowed: ΔE ≤ E)")
+            raise FieldError("operation.delta_E", Notice(
+                f"{op.delta_E:g} J is more than the work of the operation E = {E:.6g} J "
+                "(allowed: ΔE ≤ E)", "dc_delta_E_above_E", delta_E=op.delta_E, E=E))
     # cycle and motor
     if c.cycle is not None:
         _one_of("cycle", c.cycle, CYCLES)
@@ -236,9 +248,9 @@ def _check(c: DutyCase) -> None:
     if route is None:
         for name in ("cycle", "motor"):
             if getattr(c, name) is not None:
-                raise FieldError(name, "needs the work of one operation (operation.energy, "
-                                 "energy_per_area or force); with only delta_E the flywheel "
-                                 "alone is sized")
+                raise FieldError(name, Notice(
+                    "needs the work of one operation (operation.energy, energy_per_area or "
+                    "force); with only delta_E the flywheel alone is sized", "dc_needs_work"))
     elif c.cycle is None and motor is None:
         raise FieldError("cycle", Notice(
             "missing: give [cycle] (how often), or the motor's power or "
@@ -253,38 +265,46 @@ def _check(c: DutyCase) -> None:
     flucts = _given(sp, FLUCTUATIONS)
     units = {SPEEDS[k][1] for k in speeds}
     if len(units) > 1:
-        raise FieldError("flywheel", f"give the speeds in one unit (got {', '.join(speeds)})")
+        raise FieldError("flywheel", Notice(f"give the speeds in one unit (got "
+                                            f"{', '.join(speeds)})", "dc_speed_units",
+                                            given=", ".join(speeds)))
     linear = units == {"rim"}
     given = fw.J is not None or fw.mass is not None
     if given:
         if len(speeds) != 1 or flucts:
-            raise FieldError("flywheel", "with the flywheel given, give one speed (max, mean or "
-                             "min) and no fluctuation: the program finds the others"
-                             + (f" (got {', '.join(speeds + flucts)})" if speeds or flucts
-                                else ""))
+            got = ", ".join(speeds + flucts)
+            raise FieldError("flywheel", Notice(
+                "with the flywheel given, give one speed (max, mean or min) and no "
+                "fluctuation: the program finds the others" + (f" (got {got})" if got else ""),
+                "dc_given_one_speed", given=got))
         if fw.mass is not None and radius is None and not linear:
-            raise FieldError("flywheel.mass", "needs the radius (radius_of_gyration, rim_radius "
-                             "or rim_diameter): J = m·k²")
+            raise FieldError("flywheel.mass", Notice(
+                "needs the radius (radius_of_gyration, rim_radius or rim_diameter): J = m·k²",
+                "dc_mass_radius"))
         if fw.J is not None and linear and radius is None:
-            raise FieldError("flywheel.J", "with speeds at the radius (m/s), give the radius too")
+            raise FieldError("flywheel.J", Notice(
+                "with speeds at the radius (m/s), give the radius too", "dc_J_radius"))
     else:
         if len(flucts) > 1:
-            raise FieldError("flywheel", f"give one of {', '.join(FLUCTUATIONS)} "
-                             f"(got {', '.join(flucts)})")
+            raise FieldError("flywheel", Notice(
+                f"give one of {', '.join(FLUCTUATIONS)} (got {', '.join(flucts)})",
+                "one_of_keys", keys=", ".join(FLUCTUATIONS), given=", ".join(flucts)))
         if len(speeds) + len(flucts) != 2 or len(speeds) == 0:
-            raise FieldError("flywheel", "give two speeds (two of max, min, mean) or one speed and "
-                             "the fluctuation (percent, total_percent, delta, drop_percent), or "
-                             "give the flywheel (J or mass) and one speed"
-                             + (f" (got {', '.join(speeds + flucts)})" if speeds or flucts
-                                else ""))
+            got = ", ".join(speeds + flucts)
+            raise FieldError("flywheel", Notice(
+                "give two speeds (two of max, min, mean) or one speed and the fluctuation "
+                "(percent, total_percent, delta, drop_percent), or give the flywheel (J or "
+                "mass) and one speed" + (f" (got {got})" if got else ""), "dc_two_speeds",
+                given=got))
         _check_speed_pair(sp, speeds, flucts)
     if linear and radius is None:
         for loc, bad in (("operation.angle_deg", op.angle_deg),
                          ("cycle.every_revolutions", c.cycle and c.cycle.every_revolutions),
                          ("motor.torque", c.motor and c.motor.torque)):
             if bad is not None:
-                raise FieldError(loc, "needs the shaft's speed: with speeds at the radius (m/s) "
-                                 "give the flywheel's radius too, or the speeds in rpm")
+                raise FieldError(loc, Notice(
+                    "needs the shaft's speed: with speeds at the radius (m/s) give the "
+                    "flywheel's radius too, or the speeds in rpm", "dc_shaft_speed"))
 
 
 def _check_speed_pair(sp: Flywheel, speeds: list[str], flucts: list[str]) -> None:
@@ -300,9 +320,10 @@ def _check_speed_pair(sp: Flywheel, speeds: list[str], flucts: list[str]) -> Non
     if "mean" in level and "max" in level:
         (km, vm), (kx, vx) = level["mean"], level["max"]
         if not vm < vx < 2 * vm:
-            raise FieldError(f"flywheel.{kx}", f"{vx:g} with {km} = {vm:g} gives min = "
-                             f"2·mean − max = {2 * vm - vx:g} "
-                             f"(allowed: {vm:g} < {kx} < {2 * vm:g})")
+            raise FieldError(f"flywheel.{kx}", Notice(
+                f"{vx:g} with {km} = {vm:g} gives min = 2·mean − max = {2 * vm - vx:g} "
+                f"(allowed: {vm:g} < {kx} < {2 * vm:g})", "dc_max_mean", v=vx, mean_key=km,
+                mean=vm, low=2 * vm - vx, key=kx, top=2 * vm))
     if "mean" in level and "min" in level:
         (km, vm), (kn, vn) = level["mean"], level["min"]
         if not vn < vm:
@@ -311,8 +332,9 @@ def _check_speed_pair(sp: Flywheel, speeds: list[str], flucts: list[str]) -> Non
                                                       "speed_not_below", v=vn, other=km, vo=vm,
                                                       allowed=f"0 < {kn} < {vm:g}"))
     if flucts == ["drop_percent"] and "max" not in level:
-        raise FieldError("flywheel.drop_percent", "is a drop from the top speed: give it with "
-                         "max_rpm, max_omega or max_rim_speed")
+        raise FieldError("flywheel.drop_percent", Notice(
+            "is a drop from the top speed: give it with max_rpm, max_omega or max_rim_speed",
+            "dc_drop_needs_max"))
 
 
 def _describe(err: dict) -> str:
@@ -416,10 +438,12 @@ def solve_case(c: DutyCase, source: str = "<case>") -> DutyCycleResult:
     except DutyCycleError as exc:
         raise CaseFileError(led(f"{source}: {exc.field}: ", said(exc))) from None
     except (ArithmeticError, ValueError) as exc:      # inputs near the limits of doubles
-        raise CaseFileError(f"{source}: the values are too large or too small for double "
-                            f"precision ({exc})") from None
+        raise CaseFileError(led(f"{source}: ", Notice(
+            f"the values are too large or too small for double precision ({exc})",
+            "dc_double_precision", detail=str(exc)))) from None
     bad = nonfinite(result)
     if bad is not None:
-        raise CaseFileError(f"{source}: {bad} is not a finite number: the values are too large "
-                            "or too small for double precision")
+        raise CaseFileError(led(f"{source}: ", Notice(
+            f"{bad} is not a finite number: the values are too large or too small for double "
+            "precision", "dc_result_not_finite", result=bad)))
     return result

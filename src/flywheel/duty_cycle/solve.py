@@ -354,6 +354,7 @@ def solve(d: DutyCycle) -> DutyCycleResult:
     """
     if d.linear_speeds and (d.angle is not None or d.revolutions is not None
                             or d.motor_torque is not None):
+        # library use only: no CLI input reaches this
         raise DutyCycleError(d.field("speed", "speed"),
                              "speeds given at the radius (m/s) without the radius: an angle, "
                              "revolutions or a motor torque need the shaft's speed (give the "
@@ -364,9 +365,9 @@ def solve(d: DutyCycle) -> DutyCycleResult:
     else:
         w1, w2 = _speed_pair(d)
         if not w1 > w2 > 0:
-            raise DutyCycleError(d.field("speed", "flywheel"),
-                                 f"the speed limits {w1:.17g} and {w2:.17g} leave no drop "
-                                 f"(allowed: ω_max > ω_min > 0)")
+            raise DutyCycleError(d.field("speed", "flywheel"), Notice(
+                f"the speed limits {w1:.17g} and {w2:.17g} leave no drop (allowed: ω_max > "
+                "ω_min > 0)", "dc_no_drop", w1=w1, w2=w2))
         tl = _timeline(d, w1, w2)
         J = 2.0 * tl.dE / ((w1 - w2) * (w1 + w2))
     _check_timeline(d, tl)
@@ -387,21 +388,23 @@ def _check_timeline(d: DutyCycle, tl: _Timeline) -> None:
         what = "power" if d.motor_torque is None else "torque"
         have = (f"{tl.P:.6g} W" if what == "power"
                 else f"{tl.T:.6g} N·m (P = M_Д·ω_ср = {tl.P:.6g} W)")
-        raise DutyCycleError(d.field("motor", f"motor.{what}"),
-                             f"the motor's {have} is less than the mean power of the "
-                             f"operations E/T_c = {E / d.period:.6g} W: the flywheel would "
-                             f"never recover (allowed: at least {E / d.period:.6g} W)")
+        raise DutyCycleError(d.field("motor", f"motor.{what}"), Notice(
+            f"the motor's {have} is less than the mean power of the operations E/T_c = "
+            f"{E / d.period:.6g} W: the flywheel would never recover (allowed: at least "
+            f"{E / d.period:.6g} W)", "dc_motor_weak", by=what, P=tl.P, T=tl.T,
+            need=E / d.period))
     if d.revolutions is not None and tl.T < E / (TWO_PI * d.revolutions) * (1 - _TOL):
         need = E / (TWO_PI * d.revolutions)
-        raise DutyCycleError(d.field("motor", "motor.torque"),
-                             f"the motor's torque {tl.T:.6g} N·m is less than the mean moment "
-                             f"of the operations E/(2π·k) = {need:.6g} N·m: the flywheel would "
-                             f"never recover (allowed: at least {need:.6g} N·m)")
+        raise DutyCycleError(d.field("motor", "motor.torque"), Notice(
+            f"the motor's torque {tl.T:.6g} N·m is less than the mean moment of the operations "
+            f"E/(2π·k) = {need:.6g} N·m: the flywheel would never recover (allowed: at least "
+            f"{need:.6g} N·m)", "dc_torque_weak", T=tl.T, need=need))
     if tl.t_op is not None and tl.Tc is not None and tl.t_op > tl.Tc * (1 + _TOL):
-        raise DutyCycleError(d.field("operation", "operation"),
-                             f"the operation takes {tl.t_op:.6g} s, longer than the cycle "
-                             f"T_c = {tl.Tc:.6g} s (allowed: at most the cycle)")
+        raise DutyCycleError(d.field("operation", "operation"), Notice(
+            f"the operation takes {tl.t_op:.6g} s, longer than the cycle T_c = {tl.Tc:.6g} s "
+            "(allowed: at most the cycle)", "dc_operation_too_long", t_op=tl.t_op, Tc=tl.Tc))
     if tl.t_op is not None and tl.t_op < 0:
+        # library use only: no CLI input reaches this
         raise DutyCycleError(d.field("operation", "operation"),
                              f"ΔE = {d.delta_E:.6g} J leaves the motor a negative share of the "
                              f"operation's energy (allowed: ΔE ≤ E = {E:.6g} J)")

@@ -91,6 +91,7 @@ def speed_limits(maximum: float | None = None, minimum: float | None = None,
     if mean is not None and minimum is not None:
         return 2.0 * mean - minimum, minimum
     if delta is None:
+        # library use only: no CLI input reaches this
         raise ValueError("two of maximum, minimum, mean, delta are needed")
     if mean is not None:
         return mean * (1.0 + delta / 2.0), mean * (1.0 - delta / 2.0)
@@ -98,4 +99,5 @@ def speed_limits(maximum: float | None = None, minimum: float | None = None,
         return maximum, maximum * (2.0 - delta) / (2.0 + delta)
     if minimum is not None:
         return minimum * (2.0 + delta) / (2.0 - delta), minimum
+    # library use only: no CLI input reaches this
     raise ValueError("a speed is needed besides delta")

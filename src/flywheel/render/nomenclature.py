@@ -24,6 +24,7 @@ term of a concrete key ("x_B", "M gas HP") and the name filled in ("x of B").
 """
 from __future__ import annotations
 
+import errno
 import re
 from dataclasses import dataclass
 
@@ -1550,3 +1551,106 @@ def _msgs_cli_ru_params(code: str, p: dict) -> dict:
 
 
 _PARAM_HOOKS.append(_msgs_cli_ru_params)
+# --- msgs_duty ---
+# The duty cycle's case checks and solution (cases/duty_cycle.py, duty_cycle/solve.py), the
+# variants template (teaching/variants.py) and the answer key (teaching/grading.py) in Russian.
+MESSAGES_RU.update({
+    # cases/duty_cycle.py: the operation
+    "dc_goes_with": "задаётся только вместе с {a} или {b}",
+    "dc_area_thickness": "не задано: для {key} нужна толщина листа (A = {area})",
+    "dc_stroke_thickness": ("не задано: ход задаёт долю цикла t/(2·s), и для неё нужна толщина "
+                            "листа t"),
+    "dc_stroke_short": ("{stroke:g} м — меньше половины толщины {thickness:g} м: доля t/(2·s) "
+                        "превысила бы 1 (допустимо: stroke ≥ {half:g} м)"),
+    "dc_delta_E_above_E": ("{delta_E:g} Дж — больше работы операции E = {E:.6g} Дж (допустимо: "
+                           "ΔE ≤ E)"),
+    "dc_needs_work": ("требует работы одной операции (operation.energy, energy_per_area или "
+                      "force); при одном delta_E подбирается только маховик"),
+    # cases/duty_cycle.py: the flywheel and its speeds
+    "dc_speed_units": "задайте скорости в одних единицах{given_ru}",
+    "dc_given_one_speed": ("при заданном маховике задайте одну скорость (max, mean или min) и не "
+                           "задавайте неравномерность: остальное программа найдёт сама"
+                           "{given_ru}"),
+    "dc_mass_radius": "нужен радиус (radius_of_gyration, rim_radius или rim_diameter): J = m·k²",
+    "dc_J_radius": "при скоростях на радиусе (м/с) задайте и радиус",
+    "dc_two_speeds": ("задайте две скорости (две из max, min, mean), или одну скорость и "
+                      "неравномерность (percent, total_percent, delta, drop_percent), или "
+                      "заданный маховик (J или mass) и одну скорость{given_ru}"),
+    "dc_shaft_speed": ("нужна скорость вала: при скоростях на радиусе (м/с) задайте и радиус "
+                       "маховика или задайте скорости в об/мин"),
+    "dc_max_mean": ("{v:g} при {mean_key} = {mean:g} даёт min = 2·mean − max = {low:g} "
+                    "(допустимо: {mean:g} < {key} < {top:g})"),
+    "dc_drop_needs_max": ("это падение от наибольшей скорости: задайте его вместе с max_rpm, "
+                          "max_omega или max_rim_speed"),
+    "dc_double_precision": "значения слишком велики или слишком малы для двойной точности",
+    "dc_result_not_finite": ("{result} — не конечное число: значения слишком велики или слишком "
+                             "малы для двойной точности"),
+    # duty_cycle/solve.py: the solution
+    "dc_no_drop": ("пределы скорости {w1:.17g} и {w2:.17g} не дают её падения (допустимо: "
+                   "ω_max > ω_min > 0)"),
+    "dc_motor_weak": ("{have_ru} меньше средней мощности операций E/T_c = {need:.6g} Вт: "
+                      "маховик никогда не восстановит скорость (допустимо: не меньше "
+                      "{need:.6g} Вт)"),
+    "dc_torque_weak": ("момент двигателя {T:.6g} Н·м меньше среднего момента операций "
+                       "E/(2π·k) = {need:.6g} Н·м: маховик никогда не восстановит скорость "
+                       "(допустимо: не меньше {need:.6g} Н·м)"),
+    "dc_operation_too_long": ("операция длится {t_op:.6g} с — дольше цикла T_c = {Tc:.6g} с "
+                              "(допустимо: не дольше цикла)"),
+    # teaching/variants.py: the template's paths and ranges
+    "var_not_an_index": "{array} — массив; {name!r} — не индекс (допустимо: 0…{last})",
+    "var_index_range": ("в {array} элементов: {n}; индекс {i} вне допустимого диапазона "
+                        "(допустимо: 0…{last})"),
+    "var_inside_a_value": ("{value} — значение, а не таблица; внутри него нет ничего с именем "
+                           "{name!r}"),
+    "var_grid_missing": "не задано {key} (задайте min, max и step или values)",
+    "var_grid_too_many": ("{n} значений сетки — слишком много (допустимо: не больше 100000; "
+                          "возьмите шаг больше)"),
+    "var_unknown_key": "неизвестный ключ {key!r} (допустимы: values или min, max, step)",
+    "var_values_or_grid": "задайте что-то одно: values или min, max, step",
+    "var_values_tables": "таблицы нельзя выбирать целиком (меняйте их поля)",
+    "var_grid_needs_number": ("для min/max/step в шаблоне нужно число (там {current}); задайте "
+                              "values = [...]"),
+    "var_answer_twice": "{name!r} указан дважды",
+    "var_answer_csv": ("{name!r} содержит символ, недопустимый в имени столбца CSV (, ; \" или "
+                       "перевод строки)"),
+    "var_tolerances_table": "должно быть таблицей {{ ответ = допуск }}{got_ru}",
+    "var_not_a_table": "должно быть таблицей{got_ru}",
+    "var_vary_variants": "нельзя менять саму таблицу [variants]",
+    "var_path_is_table": "это таблица; меняйте её поля по одному",
+    "var_nothing_to_vary": ("нечего менять (добавьте, например, \"machine.speed_rps\" = "
+                            "{{ values = [8, 10, 12] }})"),
+    "var_overlap": "пересекается с {other}",
+    "var_no_new_combination": ("вариант {number}: за {draws} попыток не найдено новой "
+                               "комбинации; расширьте диапазоны или запросите меньше вариантов"),
+    # teaching/grading.py: the answer key, a student's number
+    "grade_answers_object": "должно быть объектом {{ответ: значение}}{got_ru}",
+    "grade_answers_list": "должно быть списком имён ответов{got_ru}",
+    "grade_key_unreadable": "{path}: не удаётся прочитать ({reason_ru})",
+    "grade_not_finite": "{value!r} — не конечное число",
+})
+
+
+#: the system's reasons a file cannot be read (OSError.errno; another one keeps its own words)
+_OS_ERRORS_RU = {errno.ENAMETOOLONG: "слишком длинное имя файла",
+                 errno.ENOTDIR: "часть пути — не папка",
+                 errno.EACCES: "нет прав на чтение",
+                 errno.EPERM: "нет прав на чтение",
+                 errno.EIO: "ошибка ввода-вывода",
+                 errno.ELOOP: "слишком много символических ссылок"}
+
+
+def _msgs_duty_ru_params(code: str, p: dict) -> dict:
+    """The motor that is too weak (its power, or its torque and the power it gives); why a
+    file cannot be read."""
+    if code == "dc_motor_weak":
+        p["have_ru"] = (f"мощность двигателя {p['P']:.6g} Вт" if p["by"] == "power" else
+                        f"момент двигателя {p['T']:.6g} Н·м (P = M_Д·ω_ср = {p['P']:.6g} Вт)")
+    if code in ("grade_key_unreadable", "sheet_unreadable"):
+        p["reason_ru"] = _OS_ERRORS_RU.get(p.get("errno"), p["reason"])
+        if code == "sheet_unreadable":          # its template (block msgs) says {reason}
+            p["reason"] = p["reason_ru"]
+    return p
+
+
+_PARAM_HOOKS.append(_msgs_duty_ru_params)
+_MSGS_DERIVED |= {"have_ru", "reason_ru"}

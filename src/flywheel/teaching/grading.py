@@ -116,8 +116,9 @@ def parse_key(doc, source: str = "<key>") -> Key:
     for vid, ans in table.items():
         at = f"{where}.{vid}" if where else str(vid)
         if not isinstance(ans, dict) or not ans:
-            raise CaseFileError(f"{source}: {at}: must be an object {{answer: value}} "
-                                f"(got {ans!r})")
+            raise CaseFileError(led(f"{source}: {at}: ", Notice(
+                f"must be an object {{answer: value}} (got {ans!r})", "grade_answers_object",
+                got=repr(ans))))
         for name, value in ans.items():
             if not _number(value):
                 raise CaseFileError(led(f"{source}: {at}.{name}: ", Notice(
@@ -130,8 +131,9 @@ def parse_key(doc, source: str = "<key>") -> Key:
             seen.update(dict.fromkeys(ans))
         answers = list(seen)
     if not isinstance(answers, list) or not all(isinstance(a, str) for a in answers):
-        raise CaseFileError(f"{source}: answers: must be a list of answer names "
-                            f"(got {answers!r})")
+        raise CaseFileError(led(f"{source}: answers: ", Notice(
+            f"must be a list of answer names (got {answers!r})", "grade_answers_list",
+            got=repr(answers))))
     return Key(source, variants, float(tol), {str(k): float(v) for k, v in tols.items()},
                tuple(answers))
 
@@ -151,7 +153,9 @@ def load_key(path) -> Key:
                                    "not_utf8", path=str(path), reason=exc.reason,
                                    byte=exc.start)) from None
     except OSError as exc:
-        raise CaseFileError(f"{path}: cannot be read ({exc.strerror})") from None
+        raise CaseFileError(Notice(f"{path}: cannot be read ({exc.strerror})",
+                                   "grade_key_unreadable", path=str(path),
+                                   reason=exc.strerror, errno=exc.errno)) from None
     try:
         doc = json.loads(text)
     except json.JSONDecodeError as exc:
@@ -174,7 +178,7 @@ def parse_number(text: str) -> float:
         t = t.replace(",", ".")
     x = float(t)
     if not math.isfinite(x):
-        raise ValueError(f"{text!r} is not finite")
+        raise ValueError(Notice(f"{text!r} is not finite", "grade_not_finite", value=text))
     return x
 
 
@@ -394,7 +398,8 @@ def grade_sheet(key: Key, path, tolerance: float | None = None
         text = _read_text(path)
     except OSError as exc:
         return [], [Problem(name, None, Notice(f"cannot be read ({exc.strerror})",
-                                               "sheet_unreadable", reason=exc.strerror))]
+                                               "sheet_unreadable", reason=exc.strerror,
+                                               errno=exc.errno))]
     except SheetError as exc:
         return [], [Problem(name, None, said(exc))]
     lines = text.splitlines()

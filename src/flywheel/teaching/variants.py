@@ -140,17 +140,22 @@ def _resolve(doc, path: str, where: str) -> tuple[tuple[str | int, ...], Any]:
             node = node[name]
         elif isinstance(node, list):
             if not name.isdigit():
-                raise CaseFileError(f"{where}: {walked} is an array; {name!r} is not an index "
-                                    f"(allowed: 0…{len(node) - 1})")
+                raise CaseFileError(led(f"{where}: ", Notice(
+                    f"{walked} is an array; {name!r} is not an index (allowed: "
+                    f"0…{len(node) - 1})", "var_not_an_index", array=walked, name=name,
+                    last=len(node) - 1)))
             i = int(name)
             if i >= len(node):
-                raise CaseFileError(f"{where}: {walked} has {len(node)} entries; index {i} is "
-                                    f"out of range (allowed: 0…{len(node) - 1})")
+                raise CaseFileError(led(f"{where}: ", Notice(
+                    f"{walked} has {len(node)} entries; index {i} is out of range (allowed: "
+                    f"0…{len(node) - 1})", "var_index_range", array=walked, n=len(node), i=i,
+                    last=len(node) - 1)))
             parts.append(i)
             node = node[i]
         else:
-            raise CaseFileError(f"{where}: {walked} is a value, not a table; nothing inside it "
-                                f"is called {name!r}")
+            raise CaseFileError(led(f"{where}: ", Notice(
+                f"{walked} is a value, not a table; nothing inside it is called {name!r}",
+                "var_inside_a_value", value=walked, name=name)))
         walked = f"{walked}.{name}" if walked else name
     return tuple(parts), node
 
@@ -159,7 +164,9 @@ def _grid(spec: dict, where: str) -> tuple:
     """The values min, min + step, …, ≤ max (rounded to 12 decimals; integers stay integers)."""
     for k in ("min", "max", "step"):
         if k not in spec:
-            raise CaseFileError(f"{where}: {k} is missing (give min, max and step, or values)")
+            raise CaseFileError(led(f"{where}: ", Notice(
+                f"{k} is missing (give min, max and step, or values)", "var_grid_missing",
+                key=k)))
         if not _is_number(spec[k]):
             raise CaseFileError(led(f"{where}.{k}: ", Notice(
                 f"must be a finite number (got {spec[k]!r})", "not_finite_number",
@@ -173,8 +180,9 @@ def _grid(spec: dict, where: str) -> tuple:
                                                      "max_below_min", hi=repr(hi), lo=repr(lo))))
     n = math.floor((hi - lo) / step * (1 + 1e-12) + 1e-9) + 1
     if n > 100_000:
-        raise CaseFileError(f"{where}: {n} grid values are too many (allowed: up to 100000; "
-                            "use a larger step)")
+        raise CaseFileError(led(f"{where}: ", Notice(
+            f"{n} grid values are too many (allowed: up to 100000; use a larger step)",
+            "var_grid_too_many", n=n)))
     if all(isinstance(spec[k], int) for k in ("min", "max", "step")):
         return tuple(lo + k * step for k in range(n))
     return tuple(round(lo + k * step, 12) + 0.0 for k in range(n))
@@ -187,21 +195,25 @@ def _choices(spec, where: str, current) -> tuple:
             f"(got {spec!r})", "spec_not_table", got=repr(spec))))
     unknown = [k for k in spec if k not in SPEC_KEYS]
     if unknown:
-        raise CaseFileError(f"{where}: unknown key {unknown[0]!r} (allowed: values, or min, max, "
-                            "step)")
+        raise CaseFileError(led(f"{where}: ", Notice(
+            f"unknown key {unknown[0]!r} (allowed: values, or min, max, step)",
+            "var_unknown_key", key=unknown[0])))
     if "values" in spec:
         if set(spec) - {"values"}:
-            raise CaseFileError(f"{where}: give either values or min, max, step, not both")
+            raise CaseFileError(led(f"{where}: ", Notice(
+                "give either values or min, max, step, not both", "var_values_or_grid")))
         vals = spec["values"]
         if not isinstance(vals, list) or not vals:
             raise CaseFileError(led(f"{where}.values: ", Notice(
                 f"must be a non-empty array (got {vals!r})", "nonempty_array", got=repr(vals))))
         if any(isinstance(v, dict) for v in vals):
-            raise CaseFileError(f"{where}.values: tables cannot be drawn (vary their fields)")
+            raise CaseFileError(led(f"{where}.values: ", Notice(
+                "tables cannot be drawn (vary their fields)", "var_values_tables")))
         return tuple(vals)
     if not _is_number(current):
-        raise CaseFileError(f"{where}: min/max/step need a number in the template "
-                            f"(it has {current!r}); use values = [...]")
+        raise CaseFileError(led(f"{where}: ", Notice(
+            f"min/max/step need a number in the template (it has {current!r}); use "
+            "values = [...]", "var_grid_needs_number", current=repr(current))))
     return _grid(spec, where)
 
 
@@ -218,10 +230,12 @@ def _answers(table: dict, where: str) -> tuple[tuple[str, ...], float, dict[str,
             got=repr(ans))))
     for a in ans:
         if ans.count(a) > 1:
-            raise CaseFileError(f"{where}.answers: {a!r} is listed twice")
+            raise CaseFileError(led(f"{where}.answers: ", Notice(
+                f"{a!r} is listed twice", "var_answer_twice", name=a)))
         if any(c in a for c in ',;"\n'):
-            raise CaseFileError(f"{where}.answers: {a!r} has a character not allowed in a CSV "
-                                "column name (, ; \" or a line break)")
+            raise CaseFileError(led(f"{where}.answers: ", Notice(
+                f"{a!r} has a character not allowed in a CSV column name (, ; \" or a line "
+                "break)", "var_answer_csv", name=a)))
     tol = table.get("tolerance", DEFAULT_TOLERANCE)
     if not _is_number(tol) or tol <= 0:
         raise CaseFileError(led(f"{where}.tolerance: ", Notice(
@@ -229,8 +243,9 @@ def _answers(table: dict, where: str) -> tuple[tuple[str, ...], float, dict[str,
             got=repr(tol))))
     tols = table.get("tolerances", {})
     if not isinstance(tols, dict):
-        raise CaseFileError(f"{where}.tolerances: must be a table {{ answer = tolerance }} "
-                            f"(got {tols!r})")
+        raise CaseFileError(led(f"{where}.tolerances: ", Notice(
+            f"must be a table {{ answer = tolerance }} (got {tols!r})", "var_tolerances_table",
+            got=repr(tols))))
     for k, v in tols.items():
         if k not in ans:
             raise CaseFileError(led(f"{where}.tolerances.{k}: ", Notice(
@@ -342,7 +357,8 @@ def parse_template(data: dict, source: str = "<template>", n_points: int = RUN_P
             "docs/teacher.md)", "no_variants_table")))
     table = data["variants"]
     if not isinstance(table, dict):
-        raise CaseFileError(f"{source}: variants: must be a table (got {table!r})")
+        raise CaseFileError(led(f"{source}: variants: ", Notice(
+            f"must be a table (got {table!r})", "var_not_a_table", got=repr(table))))
     doc = {k: v for k, v in data.items() if k != "variants"}
     kind = detect_kind(doc, source)
     answers, tol, tols = _answers(table, f"{source}: variants")
@@ -350,19 +366,23 @@ def parse_template(data: dict, source: str = "<template>", n_points: int = RUN_P
     for path, spec in _flatten(table, doc):
         where = f"{source}: {_q(path)}"
         if path.split(".")[0] == "variants":
-            raise CaseFileError(f"{where}: cannot vary the [variants] table itself")
+            raise CaseFileError(led(f"{where}: ", Notice(
+                "cannot vary the [variants] table itself", "var_vary_variants")))
         parts, current = _resolve(doc, path, where)
         if isinstance(current, dict):
-            raise CaseFileError(f"{where}: is a table; vary its fields one by one")
+            raise CaseFileError(led(f"{where}: ", Notice(
+                "is a table; vary its fields one by one", "var_path_is_table")))
         varied.append(Varied(path, parts, _choices(spec, where, current)))
     if not varied:
-        raise CaseFileError(f"{source}: variants: nothing to vary (add e.g. "
-                            '"machine.speed_rps" = { values = [8, 10, 12] })')
+        raise CaseFileError(led(f"{source}: variants: ", Notice(
+            'nothing to vary (add e.g. "machine.speed_rps" = { values = [8, 10, 12] })',
+            "var_nothing_to_vary")))
     for i, v in enumerate(varied):
         for w in varied[:i]:
             short, long_ = sorted((v.parts, w.parts), key=len)
             if long_[:len(short)] == short:
-                raise CaseFileError(f"{source}: {_q(v.path)}: overlaps {_q(w.path)}")
+                raise CaseFileError(led(f"{source}: {_q(v.path)}: ", Notice(
+                    f"overlaps {_q(w.path)}", "var_overlap", other=_q(w.path))))
     try:
         base = results_of(kind, doc, source, n_points)
     except FlywheelError as exc:
@@ -426,8 +446,10 @@ def generate(template: Template, count: int, seed: int, n_points: int = RUN_POIN
     import tomli_w
 
     if not 1 <= count <= MAX_COUNT:
+        # library use only: no CLI input reaches this
         raise InputError(f"--count: {count} is not allowed (allowed: 1…{MAX_COUNT})")
     if not 0 <= seed < 2 ** 63:
+        # library use only: no CLI input reaches this
         raise InputError(f"--seed: {seed} is not allowed (allowed: 0 … 2^63 − 1)")
     rng = np.random.default_rng(seed)
     width = max(2, len(str(count)))
@@ -450,9 +472,10 @@ def generate(template: Template, count: int, seed: int, n_points: int = RUN_POIN
             if distinct and signature in seen:
                 dupes += 1
                 if dupes > MAX_DUPLICATE_DRAWS:
-                    raise InputError(f"variant {number}: no new combination found in "
-                                     f"{MAX_DUPLICATE_DRAWS} draws; widen the ranges or ask "
-                                     "for fewer variants")
+                    raise InputError(Notice(
+                        f"variant {number}: no new combination found in {MAX_DUPLICATE_DRAWS} "
+                        "draws; widen the ranges or ask for fewer variants",
+                        "var_no_new_combination", number=number, draws=MAX_DUPLICATE_DRAWS))
                 continue
             doc = copy.deepcopy(template.document)
             for v, i in zip(template.varied, idx):
