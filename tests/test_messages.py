@@ -377,6 +377,20 @@ RUSSIAN_ERRORS.update({
                                      "'M_C')"],
     "grade/key-name-too-long": ["не удаётся прочитать (слишком длинное имя файла)"],
 })
+# --- msgs_tabulated --- the checks of a [tabulated] section (cases/tabulated.py)
+RUSSIAN_ERRORS.update({
+    "run/tabulated-position-outside-the-cycle": ["400° вне цикла (допустимо: 0 … 360)"],
+    "run/tabulated-position-duplicated": ["угол 30° повторяется (положения 2 и 3)"],
+    "run/tabulated-too-few-positions": ["различных положений 2 — слишком мало (допустимо: 6"],
+    "run/tabulated-positions-leave-a-gap": ["между 3° и 120° нет ни одного (промежуток 117°;"],
+    "run/tabulated-analogue-negative": ["-0.05 < 0: аналоги скоростей — модули |V_q| ≥ 0"],
+    "run/tabulated-row-does-not-close": ["значение при 360° (0.03) должно повторять значение"],
+    "run/tabulated-link-mass-without-point": ["у звена 3 масса 81.6 кг, но нет аналогов"],
+    "run/tabulated-link-J-without-omega-row": ["в [tabulated.omega_q] нет строки '7' (строки: 2,"],
+    "run/tabulated-load-name-twice": ["имя нагрузки 'G2' встречается дважды"],
+    "run/tabulated-inertia-overflows": ["переполняется в положении 4 (90°): значения вне"],
+    "run/tabulated-moment-overflows": ["приведённый момент нагрузки «сила G5» переполняется"],
+})
 # English words that must not be left in a translated line (names the user gave aside)
 ENGLISH = re.compile(r"\b(the|is|not|must|be|allowed|out|of|range|given|cannot|no|such|should|"
                      r"input|valid|missing|required|unknown|key|file|folder|number|use|this)\b")

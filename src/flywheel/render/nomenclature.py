@@ -1654,3 +1654,44 @@ def _msgs_duty_ru_params(code: str, p: dict) -> dict:
 
 _PARAM_HOOKS.append(_msgs_duty_ru_params)
 _MSGS_DERIVED |= {"have_ru", "reason_ru"}
+
+
+# --- msgs_tabulated ---
+# The checks of a [tabulated] section (cases/tabulated.py) in Russian.
+MESSAGES_RU.update({
+    "tab_no_positions": ("нет положений (допустимо: {min} или больше различных углов в пределах "
+                         "0 … {cycle:g})"),
+    "tab_outside_cycle": "{a:g}° вне цикла (допустимо: 0 … {cycle:g}{cycle_note_ru})",
+    "tab_duplicated": "угол {a:g}° повторяется (положения {i} и {j})",
+    "tab_too_few": "различных положений {n} — слишком мало (допустимо: {min} или больше)",
+    "tab_gap": ("положения не покрывают цикл: между {a:g}° и {b:g}° нет ни одного (промежуток "
+                "{gap:g}°; допустимо: не больше {max_gap:g}° между соседними, 0 … "
+                "{cycle:g}{cycle_note_ru})"),
+    "tab_negative_analogue": ("{v:g} < 0: аналоги скоростей — модули |V_q| ≥ 0 (направление "
+                              "задаёт angle_deg силы)"),
+    "tab_not_closed": ("значение при {cycle:g}° ({last:g}) должно повторять значение при 0° "
+                       "({first:g}): цикл замкнут"),
+    "tab_mass_no_point": ("у звена {link} масса {mass:g} кг, но нет аналогов скоростей: задайте "
+                          "point — строку [tabulated.points] (строки: {rows_ru})"),
+    "tab_J_no_omega_q": ("у звена {link} J = {J:g} кг·м², но в [tabulated.omega_q] нет строки "
+                         "{key!r} (строки: {rows_ru})"),
+    "tab_inertia_overflow": ("m·V_q² + J·ω_q² переполняется в положении {k} ({a:g}°): значения "
+                             "вне допустимого диапазона (допустимо: единицы СИ, м и кг·м²)"),
+    "tab_moment_overflow": ("приведённый момент нагрузки «{load_ru}» переполняется в положении {k} ({a:g}°): "
+                            "значения вне допустимого диапазона (допустимо: единицы СИ, Н и м)"),
+})
+_MSGS_DERIVED |= {"cycle_note_ru", "rows_ru", "load_ru"}
+
+
+def _msgs_tabulated_ru_params(code: str, p: dict) -> dict:
+    """The Russian words of the [tabulated] checks' parameters."""
+    if "own_cycle" in p:
+        p["cycle_note_ru"] = ", цикл machine.cycle_deg" if p["own_cycle"] else ""
+    if code in ("tab_mass_no_point", "tab_J_no_omega_q"):
+        p["rows_ru"] = "нет" if p["rows"] == "none" else p["rows"]
+    if code == "tab_moment_overflow":
+        p["load_ru"] = load_name(p["load"], "ru")
+    return p
+
+
+_PARAM_HOOKS.append(_msgs_tabulated_ru_params)
