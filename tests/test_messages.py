@@ -713,3 +713,16 @@ def test_variants_without_a_new_combination_and_a_students_infinity(tmp_path, mo
     unreadable = Notice("cannot be read (File name too long)", "sheet_unreadable",
                         reason="File name too long", errno=errno.ENAMETOOLONG)
     assert nm.message(unreadable, "ru") == "не удаётся прочитать (слишком длинное имя файла)"
+
+
+def test_the_progress_bar_names_its_stages_in_the_users_language():
+    """The stages the computations report (dynamics/stages.py, elastic/model.py) all have
+    their Russian name; an unknown one stays as it is."""
+    stages = set()
+    for path in (SRC / "dynamics" / "stages.py", SRC / "elastic" / "model.py"):
+        stages |= {b or a for a, b in re.findall(r'progress\("([^"]+)"|stage\("([^"]+)"\)',
+                                                 path.read_text(encoding="utf-8"))}
+    assert {"start-up", "run-down", "steady check"} <= stages
+    for st in stages:
+        assert nm.stage_name(st, "en") == st and re.search("[а-я]", nm.stage_name(st, "ru")), st
+    assert nm.stage_name("anything", "ru") == "anything"

@@ -70,7 +70,7 @@ def aggregate_command(
                                     "in time", "plot_needs_motor"))
         from flywheel.cli.progress import stage_bar
 
-        with stage_bar() as progress:   # a bar on a terminal only (a long --t-end takes seconds)
+        with stage_bar(lang) as progress:   # a bar on a terminal only (a long --t-end takes seconds)
             result = analyze(ch, drive, t_end=t_end, progress=progress)
         # no Infinity/NaN printed, in the summary or the JSON (which has none): guard.not_finite
         refuse_nonfinite(result.to_document(), who=str(case))

@@ -11,11 +11,14 @@ from contextlib import contextmanager
 
 
 @contextmanager
-def stage_bar() -> Iterator[Callable[[str, float], None]]:
-    """``with stage_bar() as progress: compute(progress=progress)``: one bar per stage on
-    stderr while a terminal shows it, removed when done (``transient``)."""
+def stage_bar(lang: str = "en") -> Iterator[Callable[[str, float], None]]:
+    """``with stage_bar(lang) as progress: compute(progress=progress)``: one bar per stage on
+    stderr while a terminal shows it, removed when done (``transient``); the stage's name
+    ("start-up") in ``lang`` (render/nomenclature.py ``stage_name``)."""
     from rich.console import Console
     from rich.progress import BarColumn, Progress, TaskProgressColumn, TextColumn, TimeElapsedColumn
+
+    from flywheel.render.nomenclature import stage_name
 
     console = Console(stderr=True)
     tasks: dict[str, int] = {}
@@ -25,7 +28,7 @@ def stage_bar() -> Iterator[Callable[[str, float], None]]:
 
         def progress(stage: str, fraction: float) -> None:
             if stage not in tasks:
-                tasks[stage] = bar.add_task(stage, total=1.0)
+                tasks[stage] = bar.add_task(stage_name(stage, lang), total=1.0)
             bar.update(tasks[stage], completed=fraction)
 
         yield progress

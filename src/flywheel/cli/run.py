@@ -101,7 +101,7 @@ def run_command(
     from flywheel.cli.progress import stage_bar
 
     def analyze_with_bar():             # a bar on a terminal only (the transients take seconds),
-        with stage_bar() as progress:   # gone before an error line is printed
+        with stage_bar(lang) as progress:   # gone before an error line is printed
             return analyze(c, n_points=points, at_deg=at, transients=transients, motion=motion,
                            progress=progress)
 

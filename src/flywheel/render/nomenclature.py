@@ -1695,3 +1695,14 @@ def _msgs_tabulated_ru_params(code: str, p: dict) -> dict:
 
 
 _PARAM_HOOKS.append(_msgs_tabulated_ru_params)
+
+
+# --- progress ---
+#: the stages of the long computations as the progress bar names them (cli/progress.py)
+STAGES = {"start-up": ("start-up", "разгон"), "run-down": ("run-down", "выбег"),
+          "steady check": ("steady check", "проверка установившегося режима")}
+
+
+def stage_name(stage: str, lang: str = "en") -> str:
+    """A progress bar's stage ("start-up") in ``lang``; an unknown stage as it is."""
+    return STAGES[stage][lang == "ru"] if stage in STAGES else stage
