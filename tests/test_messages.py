@@ -303,6 +303,35 @@ RUSSIAN_ERRORS.update({
 })
 # --- msgs_aggregate --- the aggregate's case checks across fields, the chain reduced to
 # shaft I (gear pairs in series), the natural frequencies and the steady state
+def test_aggregate_integration_failure_is_russian(monkeypatch):
+    # no case file is known to make solve_ivp fail (the steps are bounded first): a failed
+    # result stands in for it; scipy's own words stay English, as tomllib's do
+    import numpy as np
+    import scipy.integrate
+
+    class Failed:
+        success, t, y = False, None, np.zeros((3, 1))
+        message = "Required step size is less than spacing between numbers."
+
+    from flywheel.cases.aggregate import load_aggregate_case, to_model
+    from flywheel.elastic.model import analyze
+
+    case = str(CASES / "aggregate.toml")
+    w = analyze(*to_model(load_aggregate_case(case)), time_domain=False).steady.omega_forcing
+    t = f"{5 * 2 * np.pi / w:.4g}"              # the steady check: 5 forcing periods, first
+    monkeypatch.setattr(scipy.integrate, "solve_ivp", lambda *a, **k: Failed())
+    en = runner.invoke(app, ["aggregate", case, "--json"])
+    ru = runner.invoke(app, ["aggregate", case, "--json", "--lang", "ru"])
+    assert en.exit_code == ru.exit_code == 2 and en.stdout == ru.stdout == ""
+    assert en.stderr == (f"error: {case}: solve_ivp (DOP853) failed over 0 … {t} s: "
+                         "Required step size is less than spacing between numbers.\n")
+    assert ru.stderr == (f"ошибка: {case}: solve_ivp (DOP853) не справился на отрезке 0 … "
+                         f"{t} с: Required step size is less than spacing between numbers.\n")
+    Failed.success, Failed.y = True, np.full((3, 1), np.nan)
+    ru = runner.invoke(app, ["aggregate", case, "--json", "--lang", "ru"])
+    assert ru.stderr.endswith("с: решение не конечно\n"), ru.stderr
+
+
 RUSSIAN_ERRORS.update({
     "aggregate/shaft-stiffness-and-segments": ["задайте что-то одно: жёсткость прямо (c или d и L) или"],
     "aggregate/shaft-segments-empty": ["нужен хотя бы один отрезок вала"],
