@@ -391,6 +391,78 @@ RUSSIAN_ERRORS.update({
     "run/tabulated-inertia-overflows": ["переполняется в положении 4 (90°): значения вне"],
     "run/tabulated-moment-overflows": ["приведённый момент нагрузки «сила G5» переполняется"],
 })
+# --- msgs_aggregate --- the aggregate's case checks across fields, the chain reduced to
+# shaft I (gear pairs in series), the natural frequencies and the steady state
+def test_aggregate_integration_failure_is_russian(monkeypatch):
+    # no case file is known to make solve_ivp fail (the steps are bounded first): a failed
+    # result stands in for it; scipy's own words stay English, as tomllib's do
+    import numpy as np
+    import scipy.integrate
+
+    class Failed:
+        success, t, y = False, None, np.zeros((3, 1))
+        message = "Required step size is less than spacing between numbers."
+
+    from flywheel.cases.aggregate import load_aggregate_case, to_model
+    from flywheel.elastic.model import analyze
+
+    case = str(CASES / "aggregate.toml")
+    w = analyze(*to_model(load_aggregate_case(case)), time_domain=False).steady.omega_forcing
+    t = f"{5 * 2 * np.pi / w:.4g}"              # the steady check: 5 forcing periods, first
+    monkeypatch.setattr(scipy.integrate, "solve_ivp", lambda *a, **k: Failed())
+    en = runner.invoke(app, ["aggregate", case, "--json"])
+    ru = runner.invoke(app, ["aggregate", case, "--json", "--lang", "ru"])
+    assert en.exit_code == ru.exit_code == 2 and en.stdout == ru.stdout == ""
+    assert en.stderr == (f"error: {case}: solve_ivp (DOP853) failed over 0 … {t} s: "
+                         "Required step size is less than spacing between numbers.\n")
+    assert ru.stderr == (f"ошибка: {case}: solve_ivp (DOP853) не справился на отрезке 0 … "
+                         f"{t} с: Required step size is less than spacing between numbers.\n")
+    Failed.success, Failed.y = True, np.full((3, 1), np.nan)
+    ru = runner.invoke(app, ["aggregate", case, "--json", "--lang", "ru"])
+    assert ru.stderr.endswith("с: решение не конечно\n"), ru.stderr
+
+
+RUSSIAN_ERRORS.update({
+    "aggregate/shaft-stiffness-and-segments": ["задайте что-то одно: жёсткость прямо (c или d и L) или"],
+    "aggregate/shaft-segments-empty": ["нужен хотя бы один отрезок вала"],
+    "aggregate/shaft-L-missing": ["не задано: задайте c или d и L (с G)"],
+    "aggregate/chain-motor-with-J": ["в цепочке двигатель — это первый ротор: задайте его J в"],
+    "aggregate/motor-linear-with-speed": ["только при characteristic = \"constant\" (двигатель с линейной"],
+    "aggregate/motor-synchronous-missing": ["не задано: линейной характеристике нужна синхронная скорость"],
+    "aggregate/motor-rated-slip-missing": ["не задано: нужно вместе с rated_torque (M_п = M_н/s_н)"],
+    "aggregate/motor-slip-with-starting-torque": ["задаётся только вместе с rated_torque"],
+    "aggregate/motor-cannot-drive": ["двигатель не может привести машину в движение: M_п = 4191.17"],
+    "aggregate/motor-constant-with-synchronous": ["только при characteristic = \"linear\""],
+    "aggregate/motor-constant-without-speed": ["не задано: двигателю с постоянным моментом нужна"],
+    "aggregate/two-mass-without-motor": ["не задано: двухмассовому агрегату нужен [motor] с J (J_Д)"],
+    "aggregate/J-III-and-its-positions": ["задайте что-то одно: J_III или J_III_0 с J_III_positions"],
+    "aggregate/J-III-positions-empty": ["нужно хотя бы одно значение"],
+    "aggregate/J-III-positions-zero": ["J_пр.III получается равным нулю: должен быть положительным"],
+    "aggregate/coupling-gear-pair": ["муфта соединяет двигатель с валом I: зубчатой пары в ней нет"],
+    "aggregate/coupling-between": ["муфта соединяет двигатель с машиной: between задаётся только"],
+    "aggregate/fixed-rotor-with-J": ["неподвижный конец (fixed = true) — это стойка: момента"],
+    "aggregate/rotor-J-missing": ["не задано обязательное поле (момент инерции, кг·м²; или fixed"],
+    "aggregate/motor-on-a-fixed-system": ["вал, закреплённый в стойке, не может вращаться непрерывно:"],
+    "aggregate/motor-on-a-branched-system": ["вынужденные колебания и пуск рассчитываются для", "требуют свободной неразветвлённой цепочки"],
+    "aggregate/between-for-one-shaft-only": ["не задано: задайте between для каждого вала или ни для одного"],
+    "aggregate/between-one-name": ["нужны имена двух роторов, первым — со стороны входа (задано 1)"],
+    "aggregate/between-unknown-rotor": ["нет ротора 'X' (роторы: A, B, C)"],
+    "aggregate/between-to-itself": ["соединяет ротор 'A' с ним самим"],
+    "aggregate/fixed-end-in-the-middle": ["неподвижный конец — конец системы: к нему подходит один вал"],
+    "aggregate/every-rotor-fixed": ["все роторы неподвижны: хотя бы один должен вращаться"],
+    "aggregate/rotors-in-a-loop": ["роторы и валы должны образовывать одну связную систему без"],
+    "aggregate/damping-of-a-shaft-to-the-frame": ["вал к стойке: его демпфирование в модели не учитывается"],
+    "aggregate/reduced-J-overflows": ["ротор 51: приведённое к валу I значение момента инерции — не", "оно выходит за пределы двойной точности"],
+    "aggregate/reduced-stiffness-to-the-frame-overflows": ["ротор 56: жёсткость связи со стойкой, приведённая к валу I,"],
+    "aggregate/reduced-stiffness-to-the-frame-underflows": ["системе, закреплённой в стойке, нужен вал к стойке"],
+    "aggregate/reduced-J-underflows": ["ротор 54: момент инерции должен быть положительным (получено"],
+    "aggregate/reduced-stiffness-underflows": ["соединение 55: жёсткость должна быть положительной (получено"],
+    "aggregate/natural-frequencies-overflow": ["собственные частоты не конечны: задача K·x = ω²·M·x выходит"],
+    "aggregate/resonance-undamped": ["частота возмущения 31.4159 рад/с (5 Гц) совпадает с", "амплитуда установившихся колебаний неограниченна"],
+    "aggregate/forcing-swings-the-rigid-body": ["частота возмущения 1.0472e-07 рад/с намного ниже низшей", "которую двигатель с постоянным моментом не удерживает"],
+    "aggregate/forcing-reverses-a-rotor": ["скорость ротора машина J_пр.I колебалась бы на ±358.758 рад/с", "вращалась в обратную сторону каждый период"],
+    "aggregate/forcing-frequency-zero": ["амплитуды установившихся колебаний не конечны при частоте"],
+})
 # English words that must not be left in a translated line (names the user gave aside)
 ENGLISH = re.compile(r"\b(the|is|not|must|be|allowed|out|of|range|given|cannot|no|such|should|"
                      r"input|valid|missing|required|unknown|key|file|folder|number|use|this)\b")

@@ -22,7 +22,7 @@ from typing import Annotated, Literal
 
 from pydantic import Field
 
-from flywheel.errors import CaseFileError, FlywheelError, Notice
+from flywheel.errors import CaseFileError, FlywheelError, Notice, led, said
 from flywheel.io.schema import FieldError, StrictModel, load, validate, within, clean_loc, describe, pick
 
 Pos = Annotated[float, Field(gt=0)]
@@ -169,11 +169,12 @@ def _stiffness_pieces(s: Shaft, where: str) -> tuple[float, float, list]:
 
     direct = [k for k in ("c", "d", "L") if getattr(s, k) is not None]
     if s.segments is not None and direct:
-        raise FieldError(f"{where}.{direct[0]}", "give the stiffness either directly or as segments, "
-                                           "not both")
+        raise FieldError(f"{where}.{direct[0]}", Notice("give the stiffness either directly or as "
+                                                        "segments, not both", "ag_stiffness_twice"))
     pieces = s.segments if s.segments is not None else [Segment(c=s.c, d=s.d, L=s.L)]
     if not pieces:
-        raise FieldError(f"{where}.segments", "needs at least one segment")
+        raise FieldError(f"{where}.segments", Notice("needs at least one segment",
+                                                     "ag_no_segments"))
     cs = []
     info = []
     for k, p in enumerate(pieces):
@@ -187,7 +188,8 @@ def _stiffness_pieces(s: Shaft, where: str) -> tuple[float, float, list]:
         else:
             if p.d is None or p.L is None:
                 missing = "d" if p.d is None else "L"
-                raise FieldError(f"{at}.{missing}", "missing: give c, or d and L with G")
+                raise FieldError(f"{at}.{missing}", Notice("missing: give c, or d and L with G",
+                                                           "ag_c_or_dL_missing"))
             G = p.G if p.G is not None else s.G
             if G is None:
                 raise FieldError(f"{at}.G", Notice("missing: the shear modulus is needed with d "
@@ -214,40 +216,47 @@ def _motor(m: Motor, M0: float, forcing_ratio: float, amplitude: float, chain_fo
     from flywheel.elastic.chain import Drive, starting_torque_from_rated
 
     if chain_form and m.J is not None:
-        raise FieldError("motor.J", "in a chain the first rotor is the motor: give its J in rotors[0]")
+        raise FieldError("motor.J", Notice("in a chain the first rotor is the motor: give its J in "
+                                           "rotors[0]", "ag_chain_motor_J"))
     if not chain_form and m.J is None:
         raise FieldError("motor.J", Notice("missing required field (J_Д, the motor's rotor "
                                             "[kg·m²])", "motor_J_missing"))
     if m.characteristic == "linear":
         for k in ("speed_rpm",):
             if getattr(m, k) is not None:
-                raise FieldError(f"motor.{k}", "only for characteristic = \"constant\" (a linear motor "
-                                         "finds its own speed)")
+                raise FieldError(f"motor.{k}", Notice("only for characteristic = \"constant\" (a "
+                                                      "linear motor finds its own speed)",
+                                                      "ag_only_constant"))
         if m.synchronous_rpm is None:
-            raise FieldError("motor.synchronous_rpm", "missing: the linear characteristic needs ω_x")
+            raise FieldError("motor.synchronous_rpm", Notice("missing: the linear characteristic "
+                                                             "needs ω_x", "ag_omega_x_missing"))
         given = [k for k in ("starting_torque", "rated_torque") if getattr(m, k) is not None]
         if len(given) != 1:
             raise FieldError("motor.starting_torque", Notice(
                 "give exactly one of starting_torque, or rated_torque with rated_slip",
                 "motor_torque_one_of"))
         if m.rated_torque is not None and m.rated_slip is None:
-            raise FieldError("motor.rated_slip", "missing: needed with rated_torque (M_п = M_н/s_н)")
+            raise FieldError("motor.rated_slip", Notice("missing: needed with rated_torque "
+                                                        "(M_п = M_н/s_н)", "ag_slip_missing"))
         if m.starting_torque is not None and m.rated_slip is not None:
-            raise FieldError("motor.rated_slip", "only with rated_torque")
+            raise FieldError("motor.rated_slip", Notice("only with rated_torque",
+                                                        "ag_slip_only_rated"))
         M_start = (m.starting_torque if m.starting_torque is not None
                    else starting_torque_from_rated(m.rated_torque, m.rated_slip))
         if not M0 < M_start:
-            raise FieldError("motor.starting_torque",
-                       f"the motor cannot drive the machine: M_п = {M_start:g} N·m is not above "
-                       f"the mean resistance reduced to shaft I, {M0:g} N·m")
+            raise FieldError("motor.starting_torque", Notice(
+                f"the motor cannot drive the machine: M_п = {M_start:g} N·m is not above the mean "
+                f"resistance reduced to shaft I, {M0:g} N·m", "ag_motor_too_weak",
+                M_start=M_start, M0=M0))
         return Drive("linear", M0, amplitude, forcing_ratio, M_start=M_start,
                      omega_x=m.synchronous_rpm * RPM)
     for k in ("synchronous_rpm", "starting_torque", "rated_torque", "rated_slip"):
         if getattr(m, k) is not None:
-            raise FieldError(f"motor.{k}", "only for characteristic = \"linear\"")
+            raise FieldError(f"motor.{k}", Notice("only for characteristic = \"linear\"",
+                                                  "ag_only_linear"))
     if m.speed_rpm is None:
-        raise FieldError("motor.speed_rpm", "missing: a constant-torque motor needs the steady speed "
-                                      "of shaft I")
+        raise FieldError("motor.speed_rpm", Notice("missing: a constant-torque motor needs the "
+                                                   "steady speed of shaft I", "ag_speed_missing"))
     return Drive("constant", M0, amplitude, forcing_ratio, omega_nominal=m.speed_rpm * RPM)
 
 
@@ -267,20 +276,24 @@ def build(case: AggregateCase):
                 raise FieldError(k, Notice("missing: the two-mass aggregate needs [motor], "
                                            "[coupling] and [machine]", "two_mass_needs"))
         if case.motor is None:
-            raise FieldError("motor", "missing: the two-mass aggregate needs [motor] with J (J_Д)")
+            raise FieldError("motor", Notice("missing: the two-mass aggregate needs [motor] with J "
+                                             "(J_Д)", "ag_two_mass_motor"))
         m = case.machine
         if m.J_III is not None and (m.J_III_0 is not None or m.J_III_positions is not None):
-            raise FieldError("machine.J_III", "give J_III, or J_III_0 with J_III_positions, not both")
+            raise FieldError("machine.J_III", Notice("give J_III, or J_III_0 with J_III_positions, "
+                                                     "not both", "ag_J_III_twice"))
         if m.J_III is None:
             if m.J_III_positions is None:
                 raise FieldError("machine.J_III", Notice(
                     "missing: give J_III (J_пр.III [kg·m²]), or J_III_0 with J_III_positions",
                     "J_III_missing"))
             if not m.J_III_positions:
-                raise FieldError("machine.J_III_positions", "needs at least one value")
+                raise FieldError("machine.J_III_positions", Notice("needs at least one value",
+                                                                   "ag_no_positions"))
             J_III = mean_reduced_inertia(m.J_III_0 or 0.0, m.J_III_positions)
             if not J_III > 0:
-                raise FieldError("machine.J_III_positions", "J_пр.III comes out zero: must be positive")
+                raise FieldError("machine.J_III_positions", Notice(
+                    "J_пр.III comes out zero: must be positive", "ag_J_III_zero"))
         else:
             J_III = m.J_III
         if m.flywheel is not None and m.flywheel.shaft == "II" and m.i21 is None:
@@ -290,11 +303,13 @@ def build(case: AggregateCase):
                                 m.flywheel.shaft if m.flywheel else "I", m.i21)
         c, i = _stiffness(case.coupling, "coupling")
         if case.coupling.i != 1.0:
-            raise FieldError("coupling.i", "the coupling joins the motor to shaft I: no gear pair "
-                                     "(the machine's gears are i21, i31)")
+            raise FieldError("coupling.i", Notice("the coupling joins the motor to shaft I: no "
+                                                  "gear pair (the machine's gears are i21, i31)",
+                                                  "ag_coupling_gear"))
         if case.coupling.between is not None:
-            raise FieldError("coupling.between", "the coupling joins the motor to the machine: "
-                                                 "between is for the shafts of a chain")
+            raise FieldError("coupling.between", Notice("the coupling joins the motor to the "
+                                                        "machine: between is for the shafts of a "
+                                                        "chain", "ag_coupling_between"))
         # the motor first: its checks (motor.J missing …) name the field before J_Д enters the chain
         drive = _motor(case.motor, m.M0 * m.i31, m.i31 * m.order, m.M_amplitude * m.i31, False)
         names = ("motor J_Д", "machine J_пр.I")
@@ -322,11 +337,12 @@ def build(case: AggregateCase):
                                           rotors=len(case.rotors), count=len(case.shafts)))
     for k, r in enumerate(case.rotors):
         if r.fixed and r.J is not None:
-            raise FieldError(f"rotors[{k}].J", "a fixed end (fixed = true) is the frame: it has no "
-                                               "moment of inertia")
+            raise FieldError(f"rotors[{k}].J", Notice("a fixed end (fixed = true) is the frame: it "
+                                                      "has no moment of inertia", "ag_fixed_J"))
         if not r.fixed and r.J is None:
-            raise FieldError(f"rotors[{k}].J", "missing required field (moment of inertia "
-                                               "[kg·m²]; or fixed = true for the frame)")
+            raise FieldError(f"rotors[{k}].J", Notice("missing required field (moment of inertia "
+                                                      "[kg·m²]; or fixed = true for the frame)",
+                                                      "ag_rotor_J_missing"))
     names = [r.name or str(k + 1) for k, r in enumerate(case.rotors)]
     if len(set(names)) != len(names):
         raise FieldError("rotors", Notice("rotor names must differ", "rotor_names"))
@@ -355,12 +371,23 @@ def build(case: AggregateCase):
     if not ch.is_line:
         what = ("a shaft fixed to the frame cannot turn continuously" if ch.fixed else
                 "the forced vibration and the start-up are computed for an unbranched chain")
-        raise FieldError("motor", f"{what}: a [motor] (and a [load]) need a free, unbranched "
-                                  "chain; this system gives its natural frequencies and modes only")
+        raise FieldError("motor", Notice(f"{what}: a [motor] (and a [load]) need a free, "
+                                         "unbranched chain; this system gives its natural "
+                                         "frequencies and modes only", "ag_motor_needs_line",
+                                         fixed=ch.fixed))
     u = float(ch.ratio[-1])
     ld = case.load or Load()
     drive = _motor(case.motor, ld.M0 * u, u * ld.order, ld.M_amplitude * u, True)
     return ch, drive
+
+
+def _sq(x: float) -> float:
+    """x², infinity where it overflows (a float's ``**`` raises OverflowError instead): the chain
+    then names the quantity that is not finite."""
+    try:
+        return x ** 2
+    except OverflowError:
+        return math.inf
 
 
 def _tree(case: AggregateCase, names: list[str], frames: list[int], given: list[int]):
@@ -374,24 +401,30 @@ def _tree(case: AggregateCase, names: list[str], frames: list[int], given: list[
     n = len(case.rotors)
     if given and len(given) != len(case.shafts):
         k = next(k for k in range(len(case.shafts)) if k not in given)
-        raise FieldError(f"shafts[{k}].between", "missing: give between for every shaft or for "
-                                                 "none (then shaft k joins rotors k and k + 1)")
+        raise FieldError(f"shafts[{k}].between", Notice("missing: give between for every shaft or "
+                                                        "for none (then shaft k joins rotors k and "
+                                                        "k + 1)", "ag_between_all_or_none"))
     ends = []
     for k, sh in enumerate(case.shafts):
         if sh.between is None:
             ends.append((k, k + 1))
             continue
         if len(sh.between) != 2:
-            raise FieldError(f"shafts[{k}].between", f"needs two rotor names, input side first "
-                                                     f"(got {len(sh.between)})")
+            raise FieldError(f"shafts[{k}].between", Notice(f"needs two rotor names, input side "
+                                                            f"first (got {len(sh.between)})",
+                                                            "ag_between_two",
+                                                            count=len(sh.between)))
         idx = []
         for name in sh.between:
             if name not in names:
-                raise FieldError(f"shafts[{k}].between", f"unknown rotor {name!r} (rotors: "
-                                                         f"{', '.join(names)})")
+                raise FieldError(f"shafts[{k}].between", Notice(
+                    f"unknown rotor {name!r} (rotors: {', '.join(names)})", "ag_unknown_rotor",
+                    name=name, rotors=", ".join(names)))
             idx.append(names.index(name))
         if idx[0] == idx[1]:
-            raise FieldError(f"shafts[{k}].between", f"joins rotor {names[idx[0]]!r} to itself")
+            raise FieldError(f"shafts[{k}].between", Notice(f"joins rotor {names[idx[0]]!r} to "
+                                                            "itself", "ag_shaft_to_itself",
+                                                            name=names[idx[0]]))
         ends.append((idx[0], idx[1]))
     adj: dict[int, list[tuple[int, int]]] = {r: [] for r in range(n)}
     for k, (a, b) in enumerate(ends):
@@ -399,11 +432,13 @@ def _tree(case: AggregateCase, names: list[str], frames: list[int], given: list[
         adj[b].append((a, k))
     for f in frames:
         if len(adj[f]) != 1:
-            raise FieldError(f"rotors[{f}]", f"a fixed end is an end of the system: one shaft to "
-                                             f"it (got {len(adj[f])})")
+            raise FieldError(f"rotors[{f}]", Notice(f"a fixed end is an end of the system: one "
+                                                    f"shaft to it (got {len(adj[f])})",
+                                                    "ag_fixed_one_shaft", count=len(adj[f])))
     free = [r for r in range(n) if r not in frames]
     if not free:
-        raise FieldError("rotors", "every rotor is fixed: at least one must turn")
+        raise FieldError("rotors", Notice("every rotor is fixed: at least one must turn",
+                                          "ag_all_fixed"))
     # speed ratios from the first free rotor, through the tree (frames are leaves)
     u: dict[int, float] = {free[0]: 1.0}
     todo = [free[0]]
@@ -418,23 +453,25 @@ def _tree(case: AggregateCase, names: list[str], frames: list[int], given: list[
                 todo.append(nxt)
     missing = [r for r in range(n) if r not in u]
     if missing:
-        raise FieldError("shafts", f"the rotors and shafts must form one connected system "
-                                   f"without loops: {names[missing[0]]!r} is not joined to "
-                                   f"{names[free[0]]!r}")
+        raise FieldError("shafts", Notice(f"the rotors and shafts must form one connected system "
+                                          f"without loops: {names[missing[0]]!r} is not joined to "
+                                          f"{names[free[0]]!r}", "ag_not_connected",
+                                          name=names[missing[0]], first=names[free[0]]))
     pos = {r: j for j, r in enumerate(free)}
-    J = [case.rotors[r].J * u[r] ** 2 for r in free]
+    J = [case.rotors[r].J * _sq(u[r]) for r in free]
     cs, bs, pairs, lines = [], [], [], []
     ground = [0.0] * len(free)
     for k, (a, b) in enumerate(ends):
         where = f"shafts[{k}]"
         c_in, _ = _stiffness(case.shafts[k], where)
-        c_red, b_red = c_in * u[a] ** 2, case.shafts[k].damping * u[a] ** 2
+        c_red, b_red = c_in * _sq(u[a]), case.shafts[k].damping * _sq(u[a])
         lines.append(_line(case.shafts[k], where, k, (pos.get(a, -1), pos.get(b, -1)),
                            (names[a], names[b])))
         if a in frames or b in frames:
             if case.shafts[k].damping:
-                raise FieldError(f"{where}.damping", "a shaft to the frame: its damping is not "
-                                                     "modelled (natural frequencies only)")
+                raise FieldError(f"{where}.damping", Notice("a shaft to the frame: its damping is "
+                                                            "not modelled (natural frequencies "
+                                                            "only)", "ag_frame_damping"))
             ground[pos[b if a in frames else a]] += c_red
             continue
         cs.append(c_red)
@@ -461,7 +498,7 @@ def parse_aggregate_case(data: dict, source: str = "<case>") -> AggregateCase:
         try:
             build(case)
         except FlywheelError as exc:
-            raise CaseFileError(f"{source}: {exc}") from None
+            raise CaseFileError(led(f"{source}: ", said(exc))) from None
 
     return validate(data, AggregateCase, source, lambda errs: _describe(pick(errs)), check)
 
@@ -476,4 +513,4 @@ def to_model(case: AggregateCase, source: str = "<case>"):
     try:
         return build(case)
     except FieldError as exc:
-        raise CaseFileError(f"{source}: {exc.where}: {exc}") from None
+        raise CaseFileError(led(f"{source}: {exc.where}: ", said(exc))) from None

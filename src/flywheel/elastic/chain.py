@@ -23,7 +23,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from flywheel.errors import InputError
+from flywheel.errors import InputError, Notice
 
 
 # -- building blocks ---------------------------------------------------------------------------
@@ -64,6 +64,7 @@ def reduced_inertia_I(J_III: float, i31: float, J_M: float = 0.0, flywheel_shaft
     """
     ratio = {"I": 1.0, "II": i21, "III": i31}[flywheel_shaft]
     if ratio is None:
+        # library use only: no CLI input reaches this
         raise InputError("a flywheel on shaft II needs the gear ratio i21")
     return J_M * ratio ** 2 + J_III * i31 ** 2
 
@@ -185,21 +186,30 @@ class Chain:
     frames: tuple[str, ...] = ()
 
     def __post_init__(self):
+        # (the case file's checks, cases/aggregate.py, come first: a chain from a case has its
+        # rotors, connections and ground stiffness in the right numbers)
         if len(self.J) < 2 and (self.ground is None or len(self.J) < 1):
+            # library use only: no CLI input reaches this
             raise InputError("a chain needs at least two rotors")
         if len(self.c) != len(self.J) - 1 or len(self.damping) != len(self.c):
+            # library use only: no CLI input reaches this
             raise InputError("a chain of N rotors needs N − 1 connections")
         if self.ends is not None and len(self.ends) != len(self.c):
+            # library use only: no CLI input reaches this
             raise InputError("every connection needs its two rotors")
         if self.ground is not None:
             if len(self.ground) != len(self.J):
+                # library use only: no CLI input reaches this
                 raise InputError("the ground stiffness needs one value per rotor")
             for k, v in enumerate(self.ground):
                 if not (math.isfinite(v) and v >= 0):
-                    raise InputError(f"rotor {self.names[k]}: the stiffness to the frame reduced to "
-                                     f"shaft I must be finite and not negative (got {v:g} N·m/rad)")
-            if not np.any(self.ground > 0):
-                raise InputError("a system fixed to the frame needs a shaft to it")
+                    raise InputError(Notice(
+                        f"rotor {self.names[k]}: the stiffness to the frame reduced to shaft I must "
+                        f"be finite and not negative (got {v:g} N·m/rad)", "ag_ground_not_finite",
+                        name=self.names[k], v=v))
+            if not np.any(self.ground > 0):      # every one underflows to 0 (gear ratios ≪ 1)
+                raise InputError(Notice("a system fixed to the frame needs a shaft to it",
+                                        "ag_ground_zero"))
         for what, vals, unit, rotor in (("moment of inertia", self.J, " kg·m²", True),
                                         ("speed ratio", self.ratio, "", True),
                                         ("stiffness", self.c, " N·m/rad", False),
@@ -208,18 +218,25 @@ class Chain:
                 if not math.isfinite(v):
                     where = f"rotor {self.names[k]}" if rotor else f"connection {k + 1}"
                     why = ": it overflows double precision" if math.isinf(v) else ""
-                    raise InputError(f"{where}: the {what} reduced to shaft I is not finite "
-                                     f"(got {v:g}{unit}){why}")
+                    raise InputError(Notice(f"{where}: the {what} reduced to shaft I is not finite "
+                                            f"(got {v:g}{unit}){why}", "ag_reduced_not_finite",
+                                            rotor=self.names[k] if rotor else None,
+                                            connection=k + 1, quantity=what, v=v,
+                                            unit=unit.strip(), overflow=math.isinf(v)))
+        # a reduced J or c of 0: the product J·u² or c·u² underflows (gear ratios ≪ 1)
         for k, v in enumerate(self.J):
             if not v > 0:
-                raise InputError(f"rotor {self.names[k]}: moment of inertia must be positive "
-                                 f"(got {v:g} kg·m²)")
+                raise InputError(Notice(f"rotor {self.names[k]}: moment of inertia must be "
+                                        f"positive (got {v:g} kg·m²)", "ag_J_not_positive",
+                                        name=self.names[k], v=v))
         for k, v in enumerate(self.c):
             if not v > 0:
-                raise InputError(f"connection {k + 1}: stiffness must be positive "
-                                 f"(got {v:g} N·m/rad)")
+                raise InputError(Notice(f"connection {k + 1}: stiffness must be positive "
+                                        f"(got {v:g} N·m/rad)", "ag_c_not_positive",
+                                        connection=k + 1, v=v))
         for k, v in enumerate(self.damping):
             if not v >= 0:
+                # library use only: no CLI input reaches this
                 raise InputError(f"connection {k + 1}: damping must not be negative (got {v:g})")
 
     @property
@@ -384,6 +401,7 @@ class Drive:
         """ω_I in steady state: M_п·(1 − ω/ω_x) = M_0·i31 ⇒ ω = ω_x·(1 − M_0·i31/M_п)."""
         if self.kind == "linear":
             if not self.M0 < self.M_start:
+                # library use only: no CLI input reaches this
                 raise InputError(
                     f"the motor cannot drive the machine: the mean resistance reduced to shaft I, "
                     f"M_0·i31 = {self.M0:g} N·m, is not below the starting torque "

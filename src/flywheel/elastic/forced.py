@@ -13,7 +13,7 @@ import numpy as np
 
 from flywheel.elastic.chain import Chain, Drive
 from flywheel.elastic.modes import RESONANCE_TOL, Modes, natural_frequencies, resonant_mode
-from flywheel.errors import InputError
+from flywheel.errors import InputError, Notice
 
 
 @dataclass(frozen=True)
@@ -66,7 +66,10 @@ def _harmonic(ch: Chain, drive: Drive, w: float) -> tuple[np.ndarray, np.ndarray
     scale = np.abs(A).max(axis=0)
     scale[scale == 0] = 1.0
     with np.errstate(all="ignore"):
-        y = np.linalg.solve(A / scale, F) / scale
+        try:
+            y = np.linalg.solve(A / scale, F) / scale
+        except np.linalg.LinAlgError:     # ω²·J underflows to 0 (a forcing frequency ≈ 0)
+            y = np.full(n, np.nan, dtype=complex)
     t = y[1:]
     X = y[0] + np.concatenate([[0.0], np.cumsum(t)])
     return X, t
@@ -96,15 +99,17 @@ def steady_state(ch: Chain, drive: Drive, modes: Modes | None = None) -> Steady:
         k = resonant_mode(ch, drive, modes, w)
         if k is not None:
             wn = float(modes.elastic[k])
-            raise InputError(
+            raise InputError(Notice(
                 f"the forcing frequency {w:.6g} rad/s ({w / (2 * math.pi):.6g} Hz) equals the "
                 f"natural frequency {wn:.6g} rad/s of torsional mode {k + 1} (within "
                 f"{RESONANCE_TOL:g}) and nothing damps it: the steady amplitude is unbounded (give "
-                f"a coupling damping, a linear motor characteristic, or change the speed)")
+                f"a coupling damping, a linear motor characteristic, or change the speed)",
+                "ag_resonance", w=w, hz=w / (2 * math.pi), wn=wn, mode=k + 1, tol=RESONANCE_TOL))
         X, t = _harmonic(ch, drive, w)
         if not (np.all(np.isfinite(X)) and np.all(np.isfinite(t))):
-            raise InputError(f"the steady amplitudes are not finite at the forcing frequency "
-                             f"{w:.6g} rad/s: the harmonic solution overflows double precision")
+            raise InputError(Notice(f"the steady amplitudes are not finite at the forcing "
+                                    f"frequency {w:.6g} rad/s: the harmonic solution overflows "
+                                    "double precision", "ag_amplitudes_not_finite", w=w))
     twist_mean = -drive.M0 / ch.c
     theta = np.concatenate([[0.0], np.cumsum(twist_mean)])
     twist_amp = np.abs(t)
@@ -116,7 +121,7 @@ def steady_state(ch: Chain, drive: Drive, modes: Modes | None = None) -> Steady:
                   ch.c * twist_amp, omega_amp, 2.0 * omega_amp / omega_s)
 
 
-def _reversal_message(ch, drive, modes, w, omega_s, X, k) -> str:
+def _reversal_message(ch, drive, modes, w, omega_s, X, k) -> Notice:
     amp = float(w * abs(X[k]))
     rigid = float(w * abs(ch.J @ X) / ch.J.sum())   # speed swing of the centre of inertia
     tail = ("so it would stop and turn backwards every period: there is no steady run of this "
@@ -124,12 +129,16 @@ def _reversal_message(ch, drive, modes, w, omega_s, X, k) -> str:
     if rigid >= 0.5 * amp and len(modes.elastic) and w < modes.elastic[0]:
         held = ("which a constant-torque motor does not hold" if drive.slope == 0
                 else "which the motor characteristic hardly holds")
-        return (f"the forcing frequency {w:.6g} rad/s is far below the lowest natural frequency "
-                f"{float(modes.elastic[0]):.6g} rad/s, so the load swings the whole machine as a "
-                f"rigid body (the ω = 0 mode, {held}): the speed would vary by ±{amp:.6g} rad/s "
-                f"about the mean {omega_s:.6g} rad/s, " + tail)
-    return (f"the speed of rotor {ch.names[k]} would vary by ±{amp:.6g} rad/s about the mean "
-            f"{omega_s:.6g} rad/s (δ = {2 * amp / omega_s:.4g}), " + tail)
+        return Notice(f"the forcing frequency {w:.6g} rad/s is far below the lowest natural "
+                      f"frequency {float(modes.elastic[0]):.6g} rad/s, so the load swings the "
+                      f"whole machine as a rigid body (the ω = 0 mode, {held}): the speed would "
+                      f"vary by ±{amp:.6g} rad/s about the mean {omega_s:.6g} rad/s, " + tail,
+                      "ag_reversal_rigid", w=w, wn=float(modes.elastic[0]),
+                      constant=drive.slope == 0, amp=amp, mean=omega_s)
+    return Notice(f"the speed of rotor {ch.names[k]} would vary by ±{amp:.6g} rad/s about the "
+                  f"mean {omega_s:.6g} rad/s (δ = {2 * amp / omega_s:.4g}), " + tail,
+                  "ag_reversal_rotor", name=ch.names[k], amp=amp, mean=omega_s,
+                  delta=2 * amp / omega_s)
 
 
 def forced_twist_two_mass(J1: float, J2: float, c: float, amplitude: float, w: float) -> float:

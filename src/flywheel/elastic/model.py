@@ -258,7 +258,8 @@ def analyze(ch: Chain, drive: Drive | None = None, t_end: float | None = None,
     nodes = tuple(mode_nodes(ch, x) for x in modes.elastic_shapes.T)
     if drive is None:
         return AggregateResult(ch, a, c, modes, nodes=nodes)
-    if not ch.is_line:
+    if not ch.is_line:            # (cases/aggregate.py refuses such a case first)
+        # library use only: no CLI input reaches this
         raise InputError("a motor and a load drive a free, unbranched chain; a branched system "
                          "or one fixed to the frame gives its natural frequencies and modes only")
     st = steady_state(ch, drive, modes)

@@ -14,7 +14,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from flywheel.elastic.chain import Chain, Drive, damping_matrix, mass_matrix, stiffness_matrix
-from flywheel.errors import InputError
+from flywheel.errors import InputError, Notice
 
 #: relative tolerance under which an eigenvalue counts as the rigid-body mode
 RIGID_TOL = 1e-9
@@ -74,14 +74,18 @@ def natural_frequencies(ch: Chain) -> Modes:
     from scipy.linalg import eigh
 
     with np.errstate(all="ignore"):
-        lam, vec = eigh(stiffness_matrix(ch), mass_matrix(ch))
-    if not (np.all(np.isfinite(lam)) and np.all(np.isfinite(vec))):
-        with np.errstate(all="ignore"):
-            ratio = float(np.max(ch.c)) / float(np.min(ch.J))
-        raise InputError(
+        K, M = stiffness_matrix(ch), mass_matrix(ch)     # K sums the stiffnesses: it may overflow
+        finite = bool(np.all(np.isfinite(K)) and np.all(np.isfinite(M)))
+        if finite:
+            lam, vec = eigh(K, M)
+    if not (finite and np.all(np.isfinite(lam)) and np.all(np.isfinite(vec))):
+        c_top, J_low = float(np.max(ch.c)), float(np.min(ch.J))
+        ratio = c_top / J_low
+        raise InputError(Notice(
             f"the natural frequencies are not finite: the eigenproblem K·x = ω²·M·x overflows "
-            f"double precision (stiffness up to {np.max(ch.c):g} N·m/rad against inertia down to "
-            f"{np.min(ch.J):g} kg·m², c/J = {ratio:g} 1/s²)")
+            f"double precision (stiffness up to {c_top:g} N·m/rad against inertia down to "
+            f"{J_low:g} kg·m², c/J = {ratio:g} 1/s²)", "ag_eigen_not_finite",
+            c=c_top, J=J_low, ratio=ratio))
     if not ch.fixed:
         scale = max(abs(lam[-1]), 1e-300)
         lam = np.where(np.abs(lam) < RIGID_TOL * scale, 0.0, lam)

@@ -208,8 +208,11 @@ def simulate(ch: Chain, drive: Drive | None, phi0, omega0, t_end: float, n_sampl
         sol = solve_ivp(rhs, (0.0, t_end), y0, method=method, t_eval=t_eval, rtol=rtol,
                         atol=atol, **opts)
     if not sol.success or not np.all(np.isfinite(sol.y)):
-        raise InputError(f"solve_ivp ({method}) failed over 0 … {t_end:.4g} s: "
-                         f"{sol.message if not sol.success else 'the solution is not finite'}")
+        reason = sol.message if not sol.success else ""      # scipy's own words
+        raise InputError(Notice(f"solve_ivp ({method}) failed over 0 … {t_end:.4g} s: "
+                                f"{reason or 'the solution is not finite'}",
+                                "ag_solve_ivp_failed", method=method, t_end=t_end,
+                                reason=reason))
     if progress is not None:
         progress(1.0)
     q1, twist, om = sol.y[0], sol.y[1:n], sol.y[n:]

@@ -1551,6 +1551,8 @@ def _msgs_cli_ru_params(code: str, p: dict) -> dict:
 
 
 _PARAM_HOOKS.append(_msgs_cli_ru_params)
+
+
 # --- msgs_duty ---
 # The duty cycle's case checks and solution (cases/duty_cycle.py, duty_cycle/solve.py), the
 # variants template (teaching/variants.py) and the answer key (teaching/grading.py) in Russian.
@@ -1706,3 +1708,121 @@ STAGES = {"start-up": ("start-up", "разгон"), "run-down": ("run-down", "в
 def stage_name(stage: str, lang: str = "en") -> str:
     """A progress bar's stage ("start-up") in ``lang``; an unknown stage as it is."""
     return STAGES[stage][lang == "ru"] if stage in STAGES else stage
+
+
+# --- msgs_aggregate ---
+# The errors of `flywheel aggregate` in Russian: the case's checks across fields
+# (cases/aggregate.py), the chain reduced to shaft I (elastic/chain.py), the steady state
+# (elastic/forced.py), the natural frequencies (elastic/modes.py), the integration
+# (elastic/timedomain.py).
+_AG_REVERSAL_TAIL = ("так что машина останавливалась бы и вращалась в обратную сторону каждый "
+                     "период: установившегося движения у этой модели нет (увеличьте скорость, "
+                     "добавьте инерции или маховик либо уменьшите M_amplitude)")
+MESSAGES_RU.update({
+    # cases/aggregate.py: shafts and couplings
+    "ag_stiffness_twice": ("задайте что-то одно: жёсткость прямо (c или d и L) или отрезками "
+                           "segments"),
+    "ag_no_segments": "нужен хотя бы один отрезок вала",
+    "ag_c_or_dL_missing": "не задано: задайте c или d и L (с G)",
+    "ag_coupling_gear": ("муфта соединяет двигатель с валом I: зубчатой пары в ней нет (передачи "
+                         "машины — i21, i31)"),
+    "ag_coupling_between": ("муфта соединяет двигатель с машиной: between задаётся только для "
+                            "валов цепочки"),
+    # cases/aggregate.py: the motor
+    "ag_chain_motor_J": "в цепочке двигатель — это первый ротор: задайте его J в rotors[0]",
+    "ag_only_constant": ("только при characteristic = \"constant\" (двигатель с линейной "
+                         "характеристикой сам находит свою скорость)"),
+    "ag_only_linear": "только при characteristic = \"linear\"",
+    "ag_omega_x_missing": "не задано: линейной характеристике нужна синхронная скорость ω_x",
+    "ag_slip_missing": "не задано: нужно вместе с rated_torque (M_п = M_н/s_н)",
+    "ag_slip_only_rated": "задаётся только вместе с rated_torque",
+    "ag_motor_too_weak": ("двигатель не может привести машину в движение: M_п = {M_start:g} Н·м "
+                          "не больше среднего момента сопротивления, приведённого к валу I, "
+                          "{M0:g} Н·м"),
+    "ag_speed_missing": ("не задано: двигателю с постоянным моментом нужна установившаяся "
+                         "скорость вала I"),
+    # cases/aggregate.py: the two-mass aggregate
+    "ag_two_mass_motor": "не задано: двухмассовому агрегату нужен [motor] с J (J_Д)",
+    "ag_J_III_twice": "задайте что-то одно: J_III или J_III_0 с J_III_positions",
+    "ag_no_positions": "нужно хотя бы одно значение",
+    "ag_J_III_zero": "J_пр.III получается равным нулю: должен быть положительным",
+    # cases/aggregate.py: the chain, its fixed ends and branches
+    "ag_fixed_J": "неподвижный конец (fixed = true) — это стойка: момента инерции у него нет",
+    "ag_rotor_J_missing": ("не задано обязательное поле (момент инерции, кг·м²; или fixed = true "
+                           "для стойки)"),
+    "ag_motor_needs_line": ("{ag_why}: [motor] (и [load]) требуют свободной неразветвлённой "
+                            "цепочки; для этой системы находятся лишь собственные частоты и формы "
+                            "колебаний"),
+    "ag_between_all_or_none": ("не задано: задайте between для каждого вала или ни для одного "
+                               "(тогда вал k соединяет роторы k и k + 1)"),
+    "ag_between_two": "нужны имена двух роторов, первым — со стороны входа (задано {count})",
+    "ag_unknown_rotor": "нет ротора {name!r} (роторы: {rotors})",
+    "ag_shaft_to_itself": "соединяет ротор {name!r} с ним самим",
+    "ag_fixed_one_shaft": ("неподвижный конец — конец системы: к нему подходит один вал (задано "
+                           "{count})"),
+    "ag_all_fixed": "все роторы неподвижны: хотя бы один должен вращаться",
+    "ag_not_connected": ("роторы и валы должны образовывать одну связную систему без замкнутых "
+                         "контуров: {name!r} не соединён с {first!r}"),
+    "ag_frame_damping": ("вал к стойке: его демпфирование в модели не учитывается (только "
+                         "собственные частоты)"),
+    # elastic/chain.py: the chain reduced to shaft I (J·u², c·u² overflow or underflow)
+    "ag_ground_not_finite": ("ротор {name}: жёсткость связи со стойкой, приведённая к валу I, "
+                             "должна быть конечной и неотрицательной (получено {v:g} Н·м/рад)"),
+    "ag_ground_zero": "системе, закреплённой в стойке, нужен вал к стойке",
+    "ag_reduced_not_finite": ("{ag_where}: приведённое к валу I значение {ag_quantity} — не "
+                              "конечное число (получено {v:g}{ag_unit}){ag_overflow}"),
+    "ag_J_not_positive": ("ротор {name}: момент инерции должен быть положительным (получено "
+                          "{v:g} кг·м²)"),
+    "ag_c_not_positive": ("соединение {connection}: жёсткость должна быть положительной "
+                          "(получено {v:g} Н·м/рад)"),
+    # elastic/forced.py, elastic/modes.py, elastic/timedomain.py
+    "ag_resonance": ("частота возмущения {w:.6g} рад/с ({hz:.6g} Гц) совпадает с собственной "
+                     "частотой {wn:.6g} рад/с крутильной формы {mode} (с точностью {tol:g}), и "
+                     "её ничто не демпфирует: амплитуда установившихся колебаний неограниченна "
+                     "(задайте демпфирование муфты, линейную характеристику двигателя или "
+                     "измените скорость)"),
+    "ag_amplitudes_not_finite": ("амплитуды установившихся колебаний не конечны при частоте "
+                                 "возмущения {w:.6g} рад/с: гармоническое решение выходит за "
+                                 "пределы двойной точности"),
+    "ag_reversal_rigid": ("частота возмущения {w:.6g} рад/с намного ниже низшей собственной "
+                          "частоты {wn:.6g} рад/с, поэтому нагрузка раскачивает всю машину как "
+                          "жёсткое тело (форма с ω = 0, {ag_held}): скорость колебалась бы на "
+                          "±{amp:.6g} рад/с около средней {mean:.6g} рад/с, " + _AG_REVERSAL_TAIL),
+    "ag_reversal_rotor": ("скорость ротора {name} колебалась бы на ±{amp:.6g} рад/с около средней "
+                          "{mean:.6g} рад/с (δ = {delta:.4g}), " + _AG_REVERSAL_TAIL),
+    "ag_eigen_not_finite": ("собственные частоты не конечны: задача K·x = ω²·M·x выходит за "
+                            "пределы двойной точности (жёсткость до {c:g} Н·м/рад при моменте "
+                            "инерции от {J:g} кг·м², c/J = {ratio:g} 1/с²)"),
+    "ag_solve_ivp_failed": ("solve_ivp ({method}) не справился на отрезке 0 … {t_end:.4g} с: "
+                            "{ag_reason}"),
+})
+_AG_QUANTITIES_RU = {"moment of inertia": "момента инерции", "speed ratio": "передаточного "
+                     "отношения", "stiffness": "жёсткости", "damping": "демпфирования"}
+_MSGS_DERIVED |= {"ag_why", "ag_where", "ag_quantity", "ag_unit", "ag_overflow", "ag_held",
+                  "ag_reason"}
+
+
+def _msgs_aggregate_ru_params(code: str, p: dict) -> dict:
+    """The Russian words of the aggregate's errors' parameters (the two-mass model's own rotor
+    names said in Russian, rotor_name)."""
+    if code in ("ag_reversal_rotor", "ag_J_not_positive", "ag_ground_not_finite"):
+        p["name"] = rotor_name(p["name"], "ru")
+    if code == "ag_motor_needs_line":
+        p["ag_why"] = ("вал, закреплённый в стойке, не может вращаться непрерывно" if p["fixed"]
+                       else "вынужденные колебания и пуск рассчитываются для неразветвлённой "
+                            "цепочки")
+    elif code == "ag_reduced_not_finite":
+        p["ag_where"] = (f"ротор {rotor_name(p['rotor'], 'ru')}" if p["rotor"] is not None
+                         else f"соединение {p['connection']}")
+        p["ag_quantity"] = _AG_QUANTITIES_RU.get(p["quantity"], p["quantity"])
+        p["ag_unit"] = f" {unit(p['unit'], 'ru')}" if p["unit"] else ""
+        p["ag_overflow"] = ": оно выходит за пределы двойной точности" if p["overflow"] else ""
+    elif code == "ag_reversal_rigid":
+        p["ag_held"] = ("которую двигатель с постоянным моментом не удерживает" if p["constant"]
+                        else "которую характеристика двигателя почти не удерживает")
+    elif code == "ag_solve_ivp_failed":
+        p["ag_reason"] = p["reason"] or "решение не конечно"
+    return p
+
+
+_PARAM_HOOKS.append(_msgs_aggregate_ru_params)
