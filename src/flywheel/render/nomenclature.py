@@ -1598,7 +1598,7 @@ SHEET_FIELDS: list[tuple[str, str, str]] = [
     ("cycle_deg", "cycle Φ", "цикл Φ"),
     ("speed.omega0", "angular velocity at φ = 0, ω0", "угловая скорость при φ = 0, ω₀"),
     ("speed.mean", "mean angular velocity ω_m", "средняя угловая скорость ω_ср"),
-    ("flywheel.J", "reduced moment of inertia J", "приведённый момент инерции J_пр"),
+    # flywheel.J means two things (docs/case-format.md, docs/task2.md): "run:" and "task2:" below
     ("flywheel.delta", "coefficient of speed fluctuation asked δ",
      "заданный коэффициент неравномерности хода δ"),
     ("driving.value", "driving moment M_D", "движущий момент M_Д"),
@@ -1629,6 +1629,34 @@ SHEET_FIELDS: list[tuple[str, str, str]] = [
     ("diagram.energy_fluctuation_coefficient", "coefficient of fluctuation of energy C_E",
      "коэффициент колебания энергии C_E"),
     ("diagram.work_per_cycle", "work per cycle A", "работа за цикл A"),
+    # --- sheets: the fields of one case kind ("kind:path"; a run's "run,i:" when the flywheel
+    # is on a shaft of its own, speed ratio i ≠ 1), the given flywheel's forms, the text fields ---
+    ("task2:flywheel.J", "reduced moment of inertia J", "приведённый момент инерции J_пр"),
+    ("run,i:flywheel.J", "moment of inertia of the given flywheel on its own shaft J_M/i²",
+     "момент инерции заданного маховика на его валу J_М/i²"),
+    ("run:flywheel.J", "moment of inertia of the given flywheel J_M",
+     "момент инерции заданного маховика J_М"),
+    ("flywheel.given_disk.D", "given flywheel, a solid disk: outer diameter D",
+     "заданный маховик — сплошной диск: наружный диаметр D"),
+    ("flywheel.given_disk.b", "given flywheel, a solid disk: width b",
+     "заданный маховик — сплошной диск: ширина b"),
+    ("flywheel.given_rim.D", "given flywheel, a rim: outer diameter D",
+     "заданный маховик — обод: наружный диаметр D"),
+    ("flywheel.given_rim.D_inner", "given flywheel, a rim: inner diameter D1",
+     "заданный маховик — обод: внутренний диаметр D₁"),
+    ("flywheel.given_rim.b", "given flywheel, a rim: width b",
+     "заданный маховик — обод: ширина b"),
+    ("machine.firing_order", "firing order of the cylinders", "порядок работы цилиндров"),
+    ("machine.balance", "the constant moment, found from the cycle balance",
+     "постоянный момент, определяемый из условия цикла"),
+    ("crank.rotation", "direction of the crank's rotation", "направление вращения кривошипа"),
+    ("cylinders.#.head", "cylinder {x}: dead centre at the head",
+     "цилиндр {x}: мёртвая точка у головки"),
+    ("flywheel.material", "@flywheel_material", ""),
+    ("forces.#.reference", "force {x}: its travel s measured from the dead centre",
+     "сила {x}: мёртвая точка начала отсчёта перемещения s"),
+    ("forces.#.stroke", "force {x}: acts while the slider moves",
+     "сила {x}: действует при движении ползуна"),
 ] + [entry for graph, en, ru in (("driving", "M_D", "M_Д"), ("resistance", "M_C", "M_С"))
      for entry in (
          (f"{graph}.points", f"{en}: points (φ, M)", f"{ru}: точки графика (φ, M)"),
@@ -1685,25 +1713,74 @@ def _sheet_pattern(p: str) -> re.Pattern:
 _SHEET_FIELD_RX = [(_sheet_pattern(p), en, ru) for p, en, ru in SHEET_FIELDS]
 
 
-def field_label(path: str, lang: str = "en", names: dict[str, str] | None = None) -> str:
+def field_label(path: str, lang: str = "en", names: dict[str, str] | None = None,
+                kinds: tuple[str, ...] = ()) -> str:
     """The label of a case file's input field on a task sheet ("links.2.mass" → "масса звена 2
     m_2"); ``names``: the element name of an indexed path ("cylinders.0" → "HP"), else the
-    element's number from 1; an unknown field by its dotted path as the case file spells it.
+    element's number from 1; ``kinds``: the case kind's entries to try first, in order ("run",
+    "task2"; "run,i" for a flywheel on a shaft of its own); an unknown field by its dotted path
+    as the case file spells it.
 
     >>> field_label("cylinders.0.bore", "ru", {"cylinders.0": "HP"}), field_label("crank.length")
     ('диаметр цилиндра HP d', 'crank length l1')
+    >>> field_label("flywheel.J", "ru", kinds=("run",)), field_label("flywheel.J", "ru")
+    ('момент инерции заданного маховика J_М', 'flywheel.J')
     """
-    for rx, en, ru in _SHEET_FIELD_RX:
-        m = rx.match(path)
-        if m:
-            if en.startswith("@"):
-                return name(en[1:], lang)
-            d = m.groupdict()
-            x = d.get("x") or ""
-            if not x and d.get("i") is not None:
-                x = (names or {}).get(path[:m.end("i")]) or str(int(d["i"]) + 1)
-            return (ru if lang == "ru" else en).format(x=x)
+    for key in (*(f"{k}:{path}" for k in kinds), path):
+        for rx, en, ru in _SHEET_FIELD_RX:
+            m = rx.match(key)
+            if m:
+                if en.startswith("@"):
+                    return name(en[1:], lang)
+                d = m.groupdict()
+                x = d.get("x") or ""
+                if not x and d.get("i") is not None:
+                    x = (names or {}).get(path[:m.end("i") - len(key) + len(path)]) or \
+                        str(int(d["i"]) + 1)
+                return (ru if lang == "ru" else en).format(x=x)
     return path
+
+
+#: the words of a case file's text fields on a task sheet: path pattern → value → (English,
+#: Russian); a value not listed is printed as it is
+SHEET_VALUES: dict[str, dict[str, tuple[str, str]]] = {
+    "machine.balance": {"driving": ("the driving moment M_D", "движущий момент M_Д"),
+                        "resistance": ("the resistance moment M_C", "момент сопротивления M_С")},
+    "crank.rotation": {"cw": ("clockwise", "по часовой стрелке"),
+                       "ccw": ("counter-clockwise", "против часовой стрелки")},
+    "cylinders.#.head": {"outer": ("outer (farther from the crank axis)",
+                                   "внешняя (дальняя от оси кривошипа)"),
+                         "inner": ("inner (nearer to the crank axis)",
+                                   "внутренняя (ближняя к оси кривошипа)")},
+    "flywheel.material": MATERIALS,
+    "forces.#.reference": {"outer": ("outer (farther from the crank axis)",
+                                     "внешняя (дальняя от оси кривошипа)"),
+                           "inner": ("inner (nearer to the crank axis)",
+                                     "внутренняя (ближняя к оси кривошипа)")},
+    "forces.#.stroke": {"towards": ("towards that dead centre", "к этой мёртвой точке"),
+                        "away": ("away from that dead centre", "от этой мёртвой точки"),
+                        "both": ("either way", "в обе стороны")},
+}
+_SHEET_VALUE_RX = [(_sheet_pattern(p), words) for p, words in SHEET_VALUES.items()]
+
+
+def field_value(path: str, value, lang: str = "en") -> str:
+    """A text field's value as a task sheet prints it: the words of :data:`SHEET_VALUES`
+    ("crank.rotation" "cw" → "по часовой стрелке"), an array of names as a sequence ("1-3-4-2",
+    a firing order; ", " between names that hold a hyphen themselves), any other text as it is.
+
+    >>> field_value("machine.firing_order", ("1", "3", "4", "2"))
+    '1-3-4-2'
+    >>> field_value("crank.rotation", "cw", "ru")
+    'по часовой стрелке'
+    """
+    if isinstance(value, (list, tuple)):
+        items = [field_value(path, v, lang) for v in value]
+        return (", " if any("-" in v for v in items) else "-").join(items)
+    for rx, words in _SHEET_VALUE_RX:
+        if rx.match(path):
+            return words[value][lang == "ru"] if value in words else value
+    return value
 
 
 def answer_words(kind: str, key: str, lang: str = "en") -> tuple[str, str, str]:

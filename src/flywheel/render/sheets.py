@@ -67,11 +67,21 @@ def plain(text: str) -> str:
 
 # -- words --------------------------------------------------------------------------------------
 
-def field_label(path: str, lang: str, names: dict[str, str] | None = None) -> str:
+def field_label(path: str, lang: str, names: dict[str, str] | None = None,
+                kinds: tuple[str, ...] = ()) -> str:
     """The label of an input field ("links.2.mass" → "масса звена 2 m_2": the nomenclature's
     :func:`~flywheel.render.nomenclature.field_label`), the subscript marked
     (:func:`subscripts`)."""
-    return subscripts(nm.field_label(path, lang, names))
+    return subscripts(nm.field_label(path, lang, names, kinds))
+
+
+def _kinds(sheet) -> tuple[str, ...]:
+    """The nomenclature's kinds of the sheet's fields: its case kind's; a run's flywheel on a
+    shaft of its own (speed ratio i ≠ 1) first as "run,i" (its J is J_M/i²)."""
+    if sheet.kind == "run" and any(g.path == "flywheel.speed_ratio" and g.value != 1
+                                   for g in sheet.given):
+        return ("run,i", "run")
+    return (sheet.kind,)
 
 
 def _num(v) -> str:
@@ -80,6 +90,16 @@ def _num(v) -> str:
     if isinstance(v, int):
         return str(v)
     return "%.6g" % (0.0 if v == 0 else v)
+
+
+def _value(g, lang: str) -> str:
+    """A datum as printed: a number or numbers (:func:`_num`), a text field in the
+    nomenclature's words (:func:`~flywheel.render.nomenclature.field_value`: "1-3-4-2",
+    "по часовой стрелке")."""
+    first = g.value[0] if isinstance(g.value, tuple) and g.value else g.value
+    if isinstance(first, str):
+        return subscripts(nm.field_value(g.path, g.value, lang))
+    return _num(g.value)
 
 
 def _answer_words(kind: str, key: str, lang: str) -> tuple[str, str, str]:
@@ -127,14 +147,14 @@ def build_sheet(sheet, lang: str = "ru", figure: str | None = None) -> Document:
         doc.blocks.append(Figure(1, caption, figure))
     doc.blocks.append(Heading(2, w["given"]))
     header = (w["quantity"], w["value"], w["unit"])
-    names = sheet.names
+    names, kinds = sheet.names, _kinds(sheet)
     number = 0
     for part, rows in (("drawn", [g for g in sheet.given if g.varied]),
                        ("fixed", [g for g in sheet.given if not g.varied])):
         if rows:
             number += 1
             doc.blocks.append(Table(number, w[part], header, tuple(
-                (field_label(g.path, lang, names), _num(g.value),
+                (field_label(g.path, lang, names, kinds), _value(g, lang),
                  nm.unit(g.unit, lang) if g.unit else "–") for g in rows)))
     doc.blocks.append(Heading(2, w["find"]))
     doc.blocks += [Paragraph(item) for item in find_items(sheet, lang)]
@@ -215,13 +235,13 @@ def draw(sheet, path: Path, lang: str) -> bool:
 
 def sheet_typst(doc: Document) -> str:
     """The sheet as typst source: the записка's (report_formats.typst_source) on one A4 page —
-    narrower margins, no page number, the drawing 62 mm high, tables tighter, the quantity's
+    narrower margins, no page number, the drawing 52 mm high, tables tighter, the quantity's
     name left-aligned."""
     from flywheel.render.report_formats import TypstLayout, typst_source
 
-    src = typst_source(doc, TypstLayout(page="margin: (x: 15mm, y: 12mm)",
+    src = typst_source(doc, TypstLayout(page="margin: (x: 15mm, y: 10mm)",
                                         table="inset: 2pt, align: (left, right, left)",
-                                        image="height: 62mm"))
+                                        image="height: 52mm"))
     # a marked subscript is inside one of the source's string literals (#"…"): close it
     return src.replace(SUB[0], '"#sub[#"').replace(SUB[1], '"]#"')
 
@@ -266,6 +286,7 @@ def write_sheets(sheets, folder: Path, lang: str = "ru", formats: str = "both",
     """Write ``folder``/sheets/<variant>.html and/or .pdf for every sheet, and with PDF the
     class set ``folder``/sheets.pdf (one page per sheet); the names written (relative)."""
     if formats not in FORMATS:
+        # library use only: no CLI input reaches this
         raise ValueError(f"sheet format {formats!r} (allowed: {', '.join(FORMATS)})")
     out = folder / FOLDER
     out.mkdir(exist_ok=True)
