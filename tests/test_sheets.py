@@ -179,9 +179,12 @@ def test_no_answer_and_no_command_on_a_sheet(request, which):
         assert ".toml" not in text
 
 
-def test_the_pdf_source_carries_the_same_values_and_no_answer(tmp_path):
-    """The PDF is typst's: its source (and the PDF's text where pypdf is installed) holds the
-    drawn values and none of the answers."""
+def test_the_pdf_carries_the_same_values_and_no_answer(tmp_path):
+    """The PDF is typst's: its source, and the text read back from the PDFs (pypdf), hold the
+    Russian headings, the variant's number, its drawn values and worded text data, and none of
+    the answers; the class set sheets.pdf has each variant on its own page."""
+    import pypdf
+
     from flywheel.render.sheets import build_sheet, sheet_typst
     from flywheel.teaching.sheets import sheets_of
     from flywheel.teaching.variants import generate, load_template
@@ -193,13 +196,28 @@ def test_the_pdf_source_carries_the_same_values_and_no_answer(tmp_path):
             assert f'[#"{"%.6g" % value}"]' in src, (path, value)
         for value in v.answers.values():
             assert "%.5g" % value not in src
-    pypdf = pytest.importorskip("pypdf")
     out = tmp_path / "v"
-    assert invoke(COMPRESSOR, "--count", 1, "--seed", 11, "--out", out, "--sheets",
-                  "--sheets-format", "pdf").exit_code == 0
-    text = pypdf.PdfReader(out / "sheets" / "variant_01.pdf").pages[0].extract_text()
-    for value in vs.variants[0].drawn.values():
-        assert "%.6g" % value in text
+    assert invoke(COMPRESSOR, "--count", 2, "--seed", 11, "--out", out, "--sheets",
+                  "--sheets-format", "pdf", "--lang", "ru").exit_code == 0
+    key = key_of(out)
+    combined = pypdf.PdfReader(out / "sheets.pdf").pages
+    assert len(combined) == 2
+    for n, v in enumerate(vs.variants, 1):
+        assert key["drawn"][v.id] == pytest.approx(v.drawn, rel=1e-12)    # the same variants
+        pages_of = pypdf.PdfReader(out / "sheets" / f"variant_{v.id}.pdf").pages
+        assert len(pages_of) == 1
+        for text in (pages_of[0].extract_text(), combined[n - 1].extract_text()):
+            lines = text.splitlines()
+            assert lines[0] == f"Вариант {n}"
+            assert {"Дано", "Определить", "Таблица 1 — Данные варианта"} <= set(lines)
+            assert any(ln.startswith("Студент ___") and "Группа ___" in ln for ln in lines)
+            for value in v.drawn.values():
+                assert "%.6g" % value in text, (n, value)
+            assert "направление вращения кривошипа по часовой стрелке" in text
+            assert "плотность материала маховика ρ 7800 кг/м³" in text
+            assert "(допуск ±2 %)" in text and "Определить момент инерции маховика" in text
+            for value in key["variants"][v.id].values():
+                assert "%.5g" % value not in text
 
 
 def test_byte_identical_on_rerun(tmp_path, compressor_dir):
@@ -321,3 +339,112 @@ def test_engine_and_shaper_sheets_name_every_field(tmp_path):
              if re.match(r"\d+\. ", p)]
     assert "4. Определить момент инерции маховика на его валу J_М/i², кг·м² (допуск ±1 %)." \
         in items                                 # the symbol once
+
+
+def rows_of(sh: Sheet) -> dict[str, list[str]]:
+    """label → [value, unit] over both data tables."""
+    return {r[0]: r[1:] for t in sh.tables for r in t[1:]}
+
+
+def test_text_data_are_on_the_sheet_in_words(tmp_path):
+    """A four-stroke engine's firing order, each cylinder's head, the crank's rotation and
+    which constant moment the cycle balance finds are data a student needs: on the sheet, in
+    words (the firing order as engines write it), not as the case file spells them."""
+    template = tmp_path / "inline4_variants.toml"
+    template.write_text((CASES / "engine_inline4.toml").read_text(encoding="utf-8")
+                        + '\n[variants]\n"machine.delta" = { values = [0.008, 0.01] }\n'
+                        'answers = ["J_required"]\n', encoding="utf-8")
+    for lang, order, head, turn, balance in (
+            ("ru", "порядок работы цилиндров", "цилиндр 3: мёртвая точка у головки",
+             ["направление вращения кривошипа", "по часовой стрелке"],
+             ["постоянный момент, определяемый из условия цикла", "момент сопротивления M_С"]),
+            ("en", "firing order of the cylinders", "cylinder 3: dead centre at the head",
+             ["direction of the crank's rotation", "clockwise"],
+             ["the constant moment, found from the cycle balance",
+              "the resistance moment M_C"])):
+        out = tmp_path / lang
+        res = invoke(template, "--count", 1, "--seed", 1, "--out", out, "--sheets",
+                     "--sheets-format", "html", "--lang", lang)
+        assert res.exit_code == 0, res.output
+        rows = rows_of(sheet_of(out, "01"))
+        assert rows[order] == ["1-3-4-2", "–"]
+        assert rows[head][0] == ("внешняя (дальняя от оси кривошипа)" if lang == "ru"
+                                 else "outer (farther from the crank axis)")
+        assert rows[turn[0]] == [turn[1], "–"]
+        assert rows[balance[0]] == [balance[1], "–"]
+        # the element names and the computing choices are not data of the task
+        values = [v[0] for v in rows.values()]
+        assert not {"outer", "cw", "resistance", "RRP", "p1", "r1"} & set(values)
+    shaper = tmp_path / "shaper"
+    assert invoke(CASES / "variants_shaper.toml", "--count", 1, "--seed", 2, "--out", shaper,
+                  "--sheets", "--sheets-format", "html", "--lang", "ru").exit_code == 0
+    rows = rows_of(sheet_of(shaper, "01"))
+    assert rows["материал маховика"] == ["чугун", "–"]
+    assert rows["сила cutting: действует при движении ползуна"] == ["к этой мёртвой точке", "–"]
+    assert rows["сила cutting: мёртвая точка начала отсчёта перемещения s"][0] == \
+        "внешняя (дальняя от оси кривошипа)"
+
+
+def test_flywheel_J_is_worded_by_the_case_kind(tmp_path):
+    """flywheel.J of a `flywheel run` case is the given flywheel's J on its own shaft (J_M, or
+    J_M/i² on a shaft of speed ratio i); of a task2 case, the reduced moment of inertia of the
+    whole machine (docs/case-format.md, docs/task2.md)."""
+    text = (CASES / "compressor_given_flywheel.toml").read_text(encoding="utf-8")
+    variants = '\n[variants]\n"flywheel.J" = { values = [3.0, 4.0, 5.0] }\nanswers = ["delta"]\n'
+    labels = {}
+    for name, body in (("given", text), ("geared", text.replace(
+            "[flywheel]                       # given", "[flywheel]\nspeed_ratio = 2.0\n#", 1))):
+        assert body != text or name == "given"
+        template = tmp_path / f"{name}.toml"
+        template.write_text(body + variants, encoding="utf-8")
+        for lang in ("ru", "en"):
+            out = tmp_path / f"{name}-{lang}"
+            res = invoke(template, "--count", 1, "--seed", 3, "--out", out, "--sheets",
+                         "--sheets-format", "html", "--lang", lang)
+            assert res.exit_code == 0, res.output
+            sh = sheet_of(out, "01")
+            labels[name, lang] = sh.tables[0][1][0]
+            assert sh.tables[0][1][1:] == ["%g" % key_of(out)["drawn"]["01"]["flywheel.J"],
+                                           "кг·м²" if lang == "ru" else "kg·m²"]
+    assert labels == {("given", "ru"): "момент инерции заданного маховика J_М",
+                      ("given", "en"): "moment of inertia of the given flywheel J_M",
+                      ("geared", "ru"): "момент инерции заданного маховика на его валу J_М/i²",
+                      ("geared", "en"): "moment of inertia of the given flywheel on its own "
+                                        "shaft J_M/i²"}
+    out = tmp_path / "task2"
+    assert invoke(TASK2, "--count", 1, "--seed", 5, "--out", out, "--sheets",
+                  "--sheets-format", "html", "--lang", "ru").exit_code == 0
+    assert rows_of(sheet_of(out, "01"))["приведённый момент инерции J_пр"][1] == "кг·м²"
+
+
+@pytest.mark.parametrize("lang", ["ru", "en"])
+def test_every_field_of_every_bundled_case_has_a_name(lang):
+    """Every datum a sheet would show of every bundled run and task2 case (a [tabulated]
+    table's aside, docs/teacher.md) has a label, not its dotted path, and every text datum is
+    in words of ``lang``."""
+    from flywheel.render import nomenclature as nm
+    from flywheel.teaching.sheets import element_names, given_rows
+
+    seen_text = set()
+    for path in sorted(CASES.glob("*.toml")):
+        if path.name.startswith(("aggregate", "duty", "variants")):
+            continue
+        doc = tomllib.loads(path.read_text(encoding="utf-8"))
+        kind = "task2" if path.name.startswith("task2") else "run"
+        names = element_names(doc)
+        for g in given_rows(kind, doc, []):
+            if g.path.startswith("tabulated."):
+                continue
+            label = nm.field_label(g.path, lang, names, (kind,))
+            assert label != g.path and not re.fullmatch(r"[\w.]+", label), (path.name, g.path)
+            first = g.value[0] if isinstance(g.value, tuple) else g.value
+            if isinstance(first, str):
+                pattern = re.sub(r"\.\d+\.", ".#.", g.path)
+                seen_text.add(pattern)
+                words = nm.field_value(g.path, g.value, lang)
+                if pattern != "machine.firing_order":      # names: as the case file has them
+                    assert g.value in nm.SHEET_VALUES[pattern], (path.name, g.path)
+                    assert lang == "en" or re.search("[а-я]", words), (path.name, words)
+    assert seen_text == {"machine.firing_order", "machine.balance", "crank.rotation",
+                         "cylinders.#.head", "flywheel.material", "forces.#.reference",
+                         "forces.#.stroke"}

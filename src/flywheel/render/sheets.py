@@ -5,10 +5,10 @@ the записка's path (a :class:`~flywheel.render.document.Document` written
 render/report_formats.py: Jinja2 for HTML, typst for PDF).
 
 What goes on a sheet is teaching/sheets.py's (:class:`~flywheel.teaching.sheets.Sheet`); this
-module only words, draws and typesets it. No answer and no solving hint is printed. Quantities
-of the results (the find-list's symbols and units) come from render/nomenclature.py; the input
-fields of a case file have no entry there, so their labels are the sentence templates of
-:data:`FIELDS` below.
+module only words, draws and typesets it. No answer and no solving hint is printed. The labels
+of the input fields and the find-list's words, symbols and units come from
+render/nomenclature.py (its block ``--- sheets ---``); this module keeps the sentence templates
+(:data:`WORDS`).
 """
 from __future__ import annotations
 
@@ -41,171 +41,11 @@ WORDS = {
            "        Группа ____________", "given": "Дано", "drawn": "Данные варианта",
            "fixed": "Прочие данные", "find": "Определить", "quantity": "Величина",
            "value": "Значение", "unit": "Ед. изм.",
-           "item": "{What}{sym}{unit} (допуск ±{tol} %).",
+           "item": "Определить {what}{sym}{unit} (допуск ±{tol} %).",
            "scheme": "Кинематическая схема механизма при φ = {a:g}°",
            "moments": "Заданные графики моментов {MD}(φ) и {MC}(φ)",
            "unknown": "{M} = ? (из условия установившегося движения)"},
 }
-
-#: input fields of a case file: a dotted-path pattern (``#`` an array index, ``*`` a name) →
-#: (English, Russian) label; ``{x}`` is the element's name (a link, a cylinder, a point);
-#: "@key" takes the name of a quantity the nomenclature has
-FIELDS: list[tuple[str, str, str]] = [
-    ("machine.speed_rps", "@crank_speed", ""),          # "@key": the nomenclature's name
-    ("machine.speed_rpm", "@crank_speed", ""),
-    ("machine.delta", "coefficient of speed fluctuation δ", "коэффициент неравномерности хода δ"),
-    ("machine.gravity", "gravity g (x, y)", "ускорение свободного падения g (x, y)"),
-    ("machine.cycle_deg", "cycle Φ", "цикл Φ"),
-    ("machine.first_group.*", "J of the {x} (reduced to the crank)",
-     "момент инерции: {x} (приведён к кривошипу)"),
-    ("design.mean_piston_speed", "mean piston speed V_m", "средняя скорость поршня V_ср"),
-    ("design.rod_to_crank", "rod to crank length ratio k", "отношение длин шатуна и кривошипа k"),
-    ("crank.length", "@crank_length", ""),
-    ("crank.pivot_at", "crank pivot (x, y)", "координаты опоры кривошипа (x, y)"),
-    ("crank.start_angle_deg", "crank angle at φ = 0, from +x",
-     "положение кривошипа при φ = 0 (от оси x)"),
-    ("dyads.#.rod_length", "rod length, joint {x}", "длина шатуна, шарнир {x}"),
-    ("dyads.#.length_from", "first link length, joint {x}", "длина первого звена, шарнир {x}"),
-    ("dyads.#.length_to", "second link length, joint {x}", "длина второго звена, шарнир {x}"),
-    ("dyads.#.offset", "slide line offset, joint {x}", "смещение линии ползуна, шарнир {x}"),
-    ("dyads.#.guide.through", "guide of {x}: a point (x, y)", "направляющая {x}: точка (x, y)"),
-    ("dyads.#.guide.angle_deg", "guide of {x}: angle from +x", "направляющая {x}: угол к оси x"),
-    ("dyads.#.guide.offset", "guide of {x}: offset", "направляющая {x}: смещение"),
-    ("points.*.fraction", "point {x}: share of its link's length",
-     "точка {x}: доля длины звена"),
-    ("points.*.distance", "point {x}: distance along its link", "точка {x}: расстояние по звену"),
-    ("points.*.across", "point {x}: offset across its link", "точка {x}: смещение поперёк звена"),
-    ("links.*.mass", "mass of link {x} m_{x}", "масса звена {x} m_{x}"),
-    ("links.*.J_S", "moment of inertia of link {x} about its centroid J_S{x}",
-     "момент инерции звена {x} относительно центра масс J_S{x}"),
-    ("cylinders.#.bore", "bore of cylinder {x} d", "диаметр цилиндра {x} d"),
-    ("cylinders.#.p_max", "maximum pressure in cylinder {x} p_max",
-     "максимальное давление в цилиндре {x} p_max"),
-    ("cylinders.#.s", "cylinder {x}: relative piston travel s",
-     "цилиндр {x}: относительное перемещение поршня s"),
-    ("cylinders.#.towards_head", "cylinder {x}: p/p_max, piston moving to the head",
-     "цилиндр {x}: p/p_max при движении поршня к головке"),
-    ("cylinders.#.away_from_head", "cylinder {x}: p/p_max, piston moving from the head",
-     "цилиндр {x}: p/p_max при движении поршня от головки"),
-    ("forces.#.magnitude", "force {x}", "сила {x}"),
-    ("forces.#.s_range", "force {x}: where it acts (relative travel)",
-     "сила {x}: участок действия (отн. перемещение)"),
-    ("flywheel.density", "density of the flywheel material ρ", "плотность материала маховика ρ"),
-    ("flywheel.width_ratio", "flywheel width to diameter b/D",
-     "отношение ширины маховика к диаметру b/D"),
-    ("flywheel.inner_ratio", "rim inner to outer diameter D1/D",
-     "отношение диаметров обода D₁/D"),
-    ("flywheel.speed_ratio", "flywheel shaft speed ratio i", "передаточное отношение к валу маховика i"),
-    # --- audit: engines (issue 13), a given flywheel and its rim (issues 13, 14) ---
-    ("machine.power", "mean power P", "средняя мощность P"),
-    ("crank.pins.#.angle_deg", "crank pin {x}: angle to the crank",
-     "шатунная шейка {x}: угол к кривошипу"),
-    ("crank.pins.#.length", "crank pin {x}: throw", "шатунная шейка {x}: радиус кривошипа"),
-    ("ground.*", "fixed point {x} (x, y)", "неподвижная точка {x} (x, y)"),
-    ("cylinders.#.fires_at_deg", "cylinder {x}: fires at φ", "цилиндр {x}: воспламенение при φ"),
-    ("cylinders.#.strokes.intake", "cylinder {x}: p/p_max on the intake stroke",
-     "цилиндр {x}: p/p_max на такте впуска"),
-    ("cylinders.#.strokes.compression", "cylinder {x}: p/p_max on the compression stroke",
-     "цилиндр {x}: p/p_max на такте сжатия"),
-    ("cylinders.#.strokes.expansion", "cylinder {x}: p/p_max on the expansion stroke",
-     "цилиндр {x}: p/p_max на такте расширения"),
-    ("cylinders.#.strokes.exhaust", "cylinder {x}: p/p_max on the exhaust stroke",
-     "цилиндр {x}: p/p_max на такте выпуска"),
-    ("cylinders.#.diagram.s", "cylinder {x}: indicator diagram, travel s",
-     "цилиндр {x}: индикаторная диаграмма, перемещение s"),
-    ("cylinders.#.diagram.p", "cylinder {x}: indicator diagram, p/p_max",
-     "цилиндр {x}: индикаторная диаграмма, p/p_max"),
-    ("flywheel.mass", "flywheel mass m", "масса маховика m"),
-    ("flywheel.radius_of_gyration", "radius of gyration of the flywheel k",
-     "радиус инерции маховика k"),
-    ("flywheel.allowable_stress", "allowable stress of the rim [σ]",
-     "допускаемое напряжение обода [σ]"),
-    ("flywheel.rim.share", "share of J carried by the rim", "доля J, приходящаяся на обод"),
-    ("flywheel.rim.width_to_thickness", "rim width to thickness b/t",
-     "отношение ширины обода к толщине b/t"),
-    ("flywheel.rim.width", "rim width b", "ширина обода b"),
-    ("flywheel.rim.speed", "rim speed v", "окружная скорость обода v"),
-    # task2 («Задача 2»)
-    ("cycle_deg", "cycle Φ", "цикл Φ"),
-    ("speed.omega0", "angular velocity at φ = 0, ω0", "угловая скорость при φ = 0, ω₀"),
-    ("speed.mean", "mean angular velocity ω_m", "средняя угловая скорость ω_ср"),
-    ("flywheel.J", "reduced moment of inertia J", "приведённый момент инерции J_пр"),
-    ("flywheel.delta", "coefficient of speed fluctuation asked δ",
-     "заданный коэффициент неравномерности хода δ"),
-    ("driving.value", "driving moment M_D", "движущий момент M_Д"),
-    ("driving.peak", "driving moment M_D, peak", "движущий момент M_Д, наибольший"),
-    ("resistance.value", "resistance moment M_C", "момент сопротивления M_С"),
-    ("resistance.peak", "resistance moment M_C, peak", "момент сопротивления M_С, наибольший"),
-    ("driving.from_deg", "M_D: start of its graph", "M_Д: начало участка"),
-    ("driving.to_deg", "M_D: end of its graph", "M_Д: конец участка"),
-    ("resistance.from_deg", "M_C: start of its graph", "M_С: начало участка"),
-    ("resistance.to_deg", "M_C: end of its graph", "M_С: конец участка"),
-    ("resistance.apex_deg", "M_C: angle of its peak", "M_С: угол вершины"),
-    ("resistance.base", "M_C outside its graph", "M_С вне участка"),
-    ("driving.base", "M_D outside its graph", "M_Д вне участка"),
-    # --- audit: task2 fields of the bundled cases (issue 14) ---
-    ("power", "mean power P", "средняя мощность P"),
-    ("at_deg", "angles asked φ", "заданные углы φ"),
-    ("speed.omega0_rpm", "speed at φ = 0, n0", "частота вращения при φ = 0, n₀"),
-    ("speed.mean_rpm", "mean speed n_m", "средняя частота вращения n_ср"),
-    ("speed.max_rpm", "greatest speed n_max", "наибольшая частота вращения n_max"),
-    ("speed.min_rpm", "least speed n_min", "наименьшая частота вращения n_min"),
-    ("flywheel.fluctuation_percent", "speed fluctuation ± % of the mean",
-     "колебание скорости, ± % от средней"),
-    ("flywheel.rim_radius", "rim radius R", "радиус обода R"),
-    ("diagram.areas", "areas of the turning-moment diagram", "площади диаграммы моментов"),
-    ("diagram.moment_scale", "diagram: moment scale", "диаграмма: масштаб моментов"),
-    ("diagram.angle_scale_deg", "diagram: angle scale", "диаграмма: масштаб углов"),
-    ("diagram.delta_E", "maximum fluctuation of energy ΔE", "наибольшее изменение энергии ΔE"),
-    ("diagram.energy_fluctuation_coefficient", "coefficient of fluctuation of energy C_E",
-     "коэффициент колебания энергии C_E"),
-    ("diagram.work_per_cycle", "work per cycle A", "работа за цикл A"),
-] + [entry for graph, en, ru in (("driving", "M_D", "M_Д"), ("resistance", "M_C", "M_С"))
-     for entry in (
-         (f"{graph}.points", f"{en}: points (φ, M)", f"{ru}: точки графика (φ, M)"),
-         (f"{graph}.scale", f"{en}: scale of the graph", f"{ru}: масштаб графика"),
-         (f"{graph}.a0", f"{en}: constant term a_0", f"{ru}: постоянная составляющая a_0"),
-         (f"{graph}.a", f"{en}: sine coefficients a_k", f"{ru}: коэффициенты при sin kφ a_k"),
-         (f"{graph}.b", f"{en}: cosine coefficients b_k", f"{ru}: коэффициенты при cos kφ b_k"),
-         (f"{graph}.orders", f"{en}: harmonic orders k", f"{ru}: порядки гармоник k"),
-         (f"{graph}.top_from_deg", f"{en}: start of the top", f"{ru}: начало верхнего участка"),
-         (f"{graph}.top_to_deg", f"{en}: end of the top", f"{ru}: конец верхнего участка"))]
-
-#: the answers as a task: key → (English, Russian) object of "Determine …" (the symbol and
-#: the unit are the nomenclature's; "{kind}"-specific entries first)
-ANSWERS: dict[str, tuple[str, str]] = {
-    "run:J_required": ("the required moment of inertia of the first group",
-                       "необходимый момент инерции первой группы звеньев"),
-    "task2:J_required": ("the moment of inertia that gives the asked δ,",
-                         "приведённый момент инерции, обеспечивающий заданный δ,"),
-    "task2:delta": ("the coefficient of speed fluctuation", "коэффициент неравномерности хода"),
-    "driving_moment": ("the driving moment that balances the cycle",
-                       "приведённый движущий момент из условия цикла"),
-    "delta_T_max": ("the largest fluctuation of kinetic energy",
-                    "наибольшее изменение кинетической энергии"),
-    "J_flywheel": ("the moment of inertia of the flywheel", "момент инерции маховика"),
-    "flywheel_disk.D": ("the outer diameter of the flywheel as a solid disk",
-                        "наружный диаметр маховика в виде сплошного диска"),
-    "flywheel_disk.b": ("the width of the flywheel as a solid disk",
-                        "ширину маховика в виде сплошного диска"),
-    "flywheel_disk.mass": ("the mass of the flywheel as a solid disk",
-                           "массу маховика в виде сплошного диска"),
-    "flywheel_rim.D": ("the outer diameter of the flywheel's rim", "наружный диаметр обода маховика"),
-    "flywheel_rim.mass": ("the mass of the flywheel's rim", "массу обода маховика"),
-    "M_C": ("the resistance moment", "момент сопротивления"),
-    "M_D": ("the driving moment", "движущий момент"),
-    "omega_max": ("the greatest angular velocity", "наибольшую угловую скорость"),
-    "omega_min": ("the least angular velocity", "наименьшую угловую скорость"),
-    "omega_mean": ("the mean angular velocity", "среднюю угловую скорость"),
-    "cycle_work_resistance": ("the work of the resistance over a cycle",
-                              "работу сил сопротивления за цикл"),
-    "balancing_moment": ("the constant moment that balances the cycle (with its sign)",
-                         "постоянный момент из условия цикла (со знаком)"),
-    "flywheel_J_on_its_shaft": ("the moment of inertia of the flywheel on its own shaft",
-                                "момент инерции маховика на его валу"),
-}
-#: answers whose nomenclature symbol differs between the two kinds (J_I of a run, J_пр of task2)
-_SYMBOLS = {"task2:J_required": ("J", "J_пр"), "task2:delta": ("δ", "δ")}
 
 #: a subscript as marked in a sheet's text (private-use characters, which no number or word of
 #: ours contains), typeset by :func:`sheet_html` (<sub>) and :func:`sheet_typst` (#sub[])
@@ -227,29 +67,21 @@ def plain(text: str) -> str:
 
 # -- words --------------------------------------------------------------------------------------
 
-def _pattern(p: str) -> re.Pattern:
-    rx = re.escape(p).replace("\\#", r"(?P<i>\d+)").replace("\\*", r"(?P<x>[^.]+)")
-    return re.compile("^" + rx + "$")
+def field_label(path: str, lang: str, names: dict[str, str] | None = None,
+                kinds: tuple[str, ...] = ()) -> str:
+    """The label of an input field ("links.2.mass" → "масса звена 2 m_2": the nomenclature's
+    :func:`~flywheel.render.nomenclature.field_label`), the subscript marked
+    (:func:`subscripts`)."""
+    return subscripts(nm.field_label(path, lang, names, kinds))
 
 
-_FIELD_RX = [(_pattern(p), en, ru) for p, en, ru in FIELDS]
-
-
-def field_label(path: str, lang: str, names: dict[str, str] | None = None) -> str:
-    """The label of an input field ("links.2.mass" → "масса звена 2 m_2", the subscript
-    marked: :func:`subscripts`); ``names``: the element name of an indexed path ("cylinders.0"
-    → "HP"); an unknown field by its dotted path as the case file spells it."""
-    for rx, en, ru in _FIELD_RX:
-        m = rx.match(path)
-        if m:
-            if en.startswith("@"):
-                return subscripts(nm.name(en[1:], lang))
-            d = m.groupdict()
-            x = d.get("x") or ""
-            if not x and d.get("i") is not None:
-                x = (names or {}).get(path[:m.end("i")]) or str(int(d["i"]) + 1)
-            return subscripts((ru if lang == "ru" else en).format(x=x))
-    return path
+def _kinds(sheet) -> tuple[str, ...]:
+    """The nomenclature's kinds of the sheet's fields: its case kind's; a run's flywheel on a
+    shaft of its own (speed ratio i ≠ 1) first as "run,i" (its J is J_M/i²)."""
+    if sheet.kind == "run" and any(g.path == "flywheel.speed_ratio" and g.value != 1
+                                   for g in sheet.given):
+        return ("run,i", "run")
+    return (sheet.kind,)
 
 
 def _num(v) -> str:
@@ -260,22 +92,21 @@ def _num(v) -> str:
     return "%.6g" % (0.0 if v == 0 else v)
 
 
+def _value(g, lang: str) -> str:
+    """A datum as printed: a number or numbers (:func:`_num`), a text field in the
+    nomenclature's words (:func:`~flywheel.render.nomenclature.field_value`: "1-3-4-2",
+    "по часовой стрелке")."""
+    first = g.value[0] if isinstance(g.value, tuple) and g.value else g.value
+    if isinstance(first, str):
+        return subscripts(nm.field_value(g.path, g.value, lang))
+    return _num(g.value)
+
+
 def _answer_words(kind: str, key: str, lang: str) -> tuple[str, str, str]:
-    """(what, symbol, unit) of an answer in ``lang``: the object of "Determine …", its symbol
-    and SI unit as printed (nomenclature; "" where it has none)."""
-    last = key.rsplit(".", 1)[-1]
-    words = ANSWERS.get(f"{kind}:{key}") or ANSWERS.get(key)
-    try:
-        sym, unit = nm.symbol(last, lang), nm.unit_of(last, lang)
-        name = nm.name(key if key in nm.TERMS else last, lang)
-    except KeyError:
-        sym, unit, name = "", "", key
-    if f"{kind}:{key}" in _SYMBOLS:
-        sym = _SYMBOLS[f"{kind}:{key}"][lang == "ru"]
-    what = words[lang == "ru"] if words else name
-    if sym and what.endswith(sym):          # a name that ends with its symbol: not twice
-        what = what[:-len(sym)].rstrip(" ,")
-    return subscripts(what), subscripts(sym), "" if unit in ("–", "") else unit
+    """(what, symbol, unit) of an answer in ``lang`` (the nomenclature's
+    :func:`~flywheel.render.nomenclature.answer_words`), the subscripts marked."""
+    what, sym, unit = nm.answer_words(kind, key, lang)
+    return subscripts(what), subscripts(sym), unit
 
 
 def _tol(t: float) -> str:
@@ -290,13 +121,10 @@ def find_items(sheet, lang: str) -> list[str]:
     out = []
     for k, f in enumerate(sheet.find, 1):
         what, sym, unit = _answer_words(sheet.kind, f.answer, lang)
-        if lang == "ru":
-            what = "Определить " + what
-            text = w["item"].format(What=what, sym=f" {sym}" if sym else "",
-                                    unit=f", {unit}" if unit else "", tol=_tol(f.tolerance))
-        else:
-            text = w["item"].format(what=what, sym=f" {sym}" if sym else "",
-                                    unit=f" [{unit}]" if unit else "", tol=_tol(f.tolerance))
+        if unit:
+            unit = f", {unit}" if lang == "ru" else f" [{unit}]"
+        text = w["item"].format(what=what, sym=f" {sym}" if sym else "", unit=unit,
+                                tol=_tol(f.tolerance))
         out.append(f"{k}. {text}")
     return out
 
@@ -319,14 +147,14 @@ def build_sheet(sheet, lang: str = "ru", figure: str | None = None) -> Document:
         doc.blocks.append(Figure(1, caption, figure))
     doc.blocks.append(Heading(2, w["given"]))
     header = (w["quantity"], w["value"], w["unit"])
-    names = sheet.names
+    names, kinds = sheet.names, _kinds(sheet)
     number = 0
     for part, rows in (("drawn", [g for g in sheet.given if g.varied]),
                        ("fixed", [g for g in sheet.given if not g.varied])):
         if rows:
             number += 1
             doc.blocks.append(Table(number, w[part], header, tuple(
-                (field_label(g.path, lang, names), _num(g.value),
+                (field_label(g.path, lang, names, kinds), _value(g, lang),
                  nm.unit(g.unit, lang) if g.unit else "–") for g in rows)))
     doc.blocks.append(Heading(2, w["find"]))
     doc.blocks += [Paragraph(item) for item in find_items(sheet, lang)]
@@ -407,13 +235,13 @@ def draw(sheet, path: Path, lang: str) -> bool:
 
 def sheet_typst(doc: Document) -> str:
     """The sheet as typst source: the записка's (report_formats.typst_source) on one A4 page —
-    narrower margins, no page number, the drawing 62 mm high, tables tighter, the quantity's
+    narrower margins, no page number, the drawing 52 mm high, tables tighter, the quantity's
     name left-aligned."""
     from flywheel.render.report_formats import TypstLayout, typst_source
 
-    src = typst_source(doc, TypstLayout(page="margin: (x: 15mm, y: 12mm)",
+    src = typst_source(doc, TypstLayout(page="margin: (x: 15mm, y: 10mm)",
                                         table="inset: 2pt, align: (left, right, left)",
-                                        image="height: 62mm"))
+                                        image="height: 52mm"))
     # a marked subscript is inside one of the source's string literals (#"…"): close it
     return src.replace(SUB[0], '"#sub[#"').replace(SUB[1], '"]#"')
 
@@ -458,6 +286,7 @@ def write_sheets(sheets, folder: Path, lang: str = "ru", formats: str = "both",
     """Write ``folder``/sheets/<variant>.html and/or .pdf for every sheet, and with PDF the
     class set ``folder``/sheets.pdf (one page per sheet); the names written (relative)."""
     if formats not in FORMATS:
+        # library use only: no CLI input reaches this
         raise ValueError(f"sheet format {formats!r} (allowed: {', '.join(FORMATS)})")
     out = folder / FOLDER
     out.mkdir(exist_ok=True)

@@ -21,6 +21,10 @@ from typing import Any
 
 #: top-level tables of a case that are not data of the task (how to report, the start-up motor)
 NOT_DATA = ("title", "source", "output", "motor", "force_analysis")
+#: text fields a student needs (the rest name the elements the drawing shows, or say how to
+#: compute): a dotted-path pattern, ``#`` an array index
+TEXT_DATA = ("machine.firing_order", "machine.balance", "crank.rotation", "cylinders.#.head",
+             "flywheel.material", "forces.#.reference", "forces.#.stroke")
 #: intervals of the φ grid of the drawing's kinematics (the drawing needs no finer one)
 DRAWING_POINTS = 360
 
@@ -28,7 +32,7 @@ DRAWING_POINTS = 360
 @dataclass(frozen=True)
 class Given:
     """One input of the variant: ``path`` in the case document ("links.2.mass"), its ``value``
-    (a number, or a tuple for an array), its SI ``unit`` from the schema ("" dimensionless or
+    (a number or a text, or a tuple for an array: "machine.firing_order"), its SI ``unit`` from the schema ("" dimensionless or
     not stated) and whether this variant drew it (``varied``)."""
 
     path: str
@@ -132,12 +136,18 @@ def _numeric(v) -> bool:
     return isinstance(v, list) and bool(v) and all(_numeric(x) for x in v)
 
 
+def _text(v) -> bool:
+    return isinstance(v, str) or (isinstance(v, list) and bool(v)
+                                  and all(isinstance(x, str) for x in v))
+
+
 def _leaves(node, prefix: str = ""):
-    """(path, value) of every number or array of numbers below ``node``, in document order."""
+    """(path, value) of every number or array of numbers below ``node``, and of every text
+    or array of texts of :data:`TEXT_DATA`, in document order."""
     items = node.items() if isinstance(node, dict) else enumerate(node)
     for k, v in items:
         path = f"{prefix}{k}"
-        if _numeric(v):
+        if _numeric(v) or (_text(v) and re.sub(r"\.\d+\.", ".#.", path) in TEXT_DATA):
             yield path, (_tuple(v) if isinstance(v, list) else v)
         elif isinstance(v, (dict, list)):
             yield from _leaves(v, path + ".")
@@ -149,8 +159,9 @@ def _tuple(v):
 
 def given_rows(kind: str, document: dict, varied) -> tuple[Given, ...]:
     """The inputs of a case document: the drawn values first (``varied``: their paths, in the
-    template's order), then the fixed numbers a student needs (every number of the case but
-    the report settings and the start-up motor, in document order)."""
+    template's order), then the fixed data a student needs (every number of the case but the
+    report settings and the start-up motor, and the text fields of :data:`TEXT_DATA`, in
+    document order)."""
     order = {p: i for i, p in enumerate(varied)}
     rows = [Given(p, v, unit_of_path(kind, p), p in order)
             for p, v in _leaves({k: v for k, v in document.items() if k not in NOT_DATA})]
