@@ -44,11 +44,12 @@ def _check_at(at, cycle_deg: float) -> None:
     """Each --at angle finite and within the cycle 0…cycle_deg [deg]."""
     import math
 
-    from flywheel.errors import InputError
+    from flywheel.errors import InputError, Notice
 
     for x in at or ():
         if not (math.isfinite(x) and 0.0 <= x <= cycle_deg):
-            raise InputError(f"--at {x:g}: must lie within the cycle 0…{cycle_deg:g}°")
+            raise InputError(Notice(f"--at {x:g}: must lie within the cycle 0…{cycle_deg:g}°",
+                                    "t2_at_option", x=x, cycle=cycle_deg))
 
 
 def task2_command(
@@ -126,8 +127,9 @@ def task2_command(
             blame = _case_numbers(c.model_dump())
             _check_at(at, c.cycle_deg)
             if at and c.diagram is not None:
-                raise InputError(f"--at: {case} gives a diagram by areas, which has no moments "
-                                 "between its crossings: ε, ω and t at an angle need graphs")
+                raise InputError(Notice(f"--at: {case} gives a diagram by areas, which has no "
+                                        "moments between its crossings: ε, ω and t at an angle "
+                                        "need graphs", "t2_at_diagram", case=str(case)))
 
             def run():
                 return solve_case(c, str(case), at_deg=at or ())
