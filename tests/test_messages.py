@@ -370,6 +370,9 @@ RUSSIAN_ERRORS.update({
     "task2/case-diagram-power-with-omega0": ["для работы за цикл P·Φ/ω_ср нужна средняя "
                                              "скорость"],
     "task2/case-diagram-power-unused": ["здесь её ничто не использует"],
+    "task2/case-points-plus-and-minus-1e308": ["work_driving — не конечное число (−inf + inf при "
+                                               "суммировании)"],
+    "task2/case-rim-radius-1e-300": ["результат — не конечное число (деление на ноль)"],
     "task2/case-at-option-with-a-diagram": ["задаёт диаграмму площадями, у неё нет моментов"],
     "task2/at-beyond-the-cycle": ["--at 400: должно лежать в пределах цикла 0…360°"],
     "task2/to-a-hair-beyond-360": ["углы графика не должны убывать: точка 4 при 360° идёт после "

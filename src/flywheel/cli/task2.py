@@ -176,7 +176,7 @@ def task2_command(
             doc_source = nm.name("t2_seed_source")
             title = nm.name("t2_seed_title", lang, profile=nm.name(profile, lang))
             source = nm.name("t2_seed_source", lang)
-        from flywheel.constant_inertia.solve import NotFiniteError
+        from flywheel.constant_inertia.solve import NotFiniteError, python_detail
 
         # inputs near the limits of double precision: no Infinity/NaN in the output (it is not
         # JSON), and no traceback from inf − inf inside the formulas (guard.not_finite)
@@ -191,7 +191,8 @@ def task2_command(
         except FlywheelError:
             raise
         except (ArithmeticError, ValueError) as exc:
-            hit = ("a result", f"{exc.args[-1] if exc.args else type(exc).__name__}")
+            hit = ("a result",
+                   python_detail(f"{exc.args[-1] if exc.args else type(exc).__name__}"))
         if hit is not None:
             if case is not None:     # "file: field, field" (the file alone if none stands out)
                 fields = [n for n, _ in _extreme(blame)]

@@ -49,12 +49,18 @@ class NotFiniteError(OverflowError):
         self.detail = detail
 
 
+def python_detail(text: str) -> Notice:
+    """What Python's arithmetic said ("-inf + inf in fsum"), the detail of a NotFiniteError: a
+    Notice, so that render/nomenclature.py can say the known ones in Russian."""
+    return Notice(text, "t2_python_error", words=text)
+
+
 def _cycle_work(m: Moment, quantity: str) -> float:
     """∮ M dφ [J]; NotFiniteError when the sum overflows (fsum raises on inf − inf)."""
     try:
         return m.work()
     except (OverflowError, ValueError) as exc:
-        raise NotFiniteError(quantity, str(exc)) from None
+        raise NotFiniteError(quantity, python_detail(str(exc))) from None
 
 
 def _J_for(delta_T_max: float, omega_mean: float, delta: float) -> float:

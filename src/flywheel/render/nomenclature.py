@@ -1591,7 +1591,17 @@ MESSAGES_RU.update({
     "t2_areas_sum": ("сумма площадей {total:.6g}, а не 0: за цикл установившегося движения "
                      "площади над средней линией и под ней равны"),
     "t2_crossings_increase": "углы пересечений со средней линией должны возрастать",
+    # constant_inertia/solve.py python_detail: what Python's arithmetic said (not_finite's detail)
+    "t2_python_error": "{t2_python_ru}",
 })
+#: Python's words for an arithmetic failure (math.fsum, math) in Russian; others stay as they are
+_T2_PYTHON_RU = {"-inf + inf in fsum": "−inf + inf при суммировании",
+                 "intermediate overflow in fsum": "переполнение промежуточной суммы",
+                 "math range error": "результат вне диапазона чисел",
+                 "Numerical result out of range": "результат вне диапазона чисел",
+                 "math domain error": "аргумент вне области определения функции",
+                 "float division by zero": "деление на ноль",
+                 "division by zero": "деление на ноль"}
 #: the moment whose value a task2 error speaks of, in the genitive ("значение движущего момента")
 _T2_WHICH_GEN = {"driving": "движущего момента", "resistance": "момента сопротивления"}
 
@@ -1600,6 +1610,8 @@ def _msgs_task2_ru_params(code: str, p: dict) -> dict:
     """The Russian words of the task2 errors: the moment in the genitive, why a balance fails."""
     if code.startswith("t2_") and "which" in p:
         p["t2_which_gen"] = _T2_WHICH_GEN.get(p["which"], p["which"])
+    if code == "t2_python_error":
+        p["t2_python_ru"] = _T2_PYTHON_RU.get(p["words"], p["words"])
     if code == "t2_balance_negative":
         p["t2_balance_why"] = (
             "движущий момент совершает больше работы, чем может поглотить график момента "
@@ -1610,4 +1622,4 @@ def _msgs_task2_ru_params(code: str, p: dict) -> dict:
 
 
 _PARAM_HOOKS.append(_msgs_task2_ru_params)
-_MSGS_DERIVED |= {"t2_which_gen", "t2_balance_why"}
+_MSGS_DERIVED |= {"t2_which_gen", "t2_balance_why", "t2_python_ru"}
