@@ -463,6 +463,84 @@ RUSSIAN_ERRORS.update({
     "aggregate/forcing-reverses-a-rotor": ["скорость ротора машина J_пр.I колебалась бы на ±358.758 рад/с", "вращалась в обратную сторону каждый период"],
     "aggregate/forcing-frequency-zero": ["амплитуды установившихся колебаний не конечны при частоте"],
 })
+# --- msgs_task2 --- flywheel task2: the cross-field checks of a case, the mean power, the cycle
+# balance, the area diagram, --at (the angles that coincide only in radians included)
+RUSSIAN_ERRORS.update({
+    "task2/case-speed-max-without-min": ["не задано: пределы скорости задаются парой (max с min)"],
+    "task2/case-speed-min-above-max": ["должно быть меньше max_rpm (задано 1900 об/мин, а max_rpm "
+                                       "= 1800 об/мин)"],
+    "task2/case-speed-limits-and-delta": ["пределы скорости уже дают δ = (max − min)/ω_ср: "
+                                          "задайте что-то одно"],
+    "task2/case-flywheel-gives-nothing": ["задайте J, или mass и radius_of_gyration, или "
+                                          "требуемое delta"],
+    "task2/case-at-deg-beyond-the-cycle": ["должно лежать в пределах цикла 0…360° (задано 400)"],
+    "task2/case-diagram-with-at-deg": ["у диаграммы, заданной площадями, нет моментов между "
+                                       "точками пересечения"],
+    "task2/case-resistance-missing": ["не задано: задайте графики [driving] и [resistance] или "
+                                      "[diagram]"],
+    "task2/case-points-one-point": ["нужно не меньше двух точек [угол, момент]"],
+    "task2/case-apex-outside-the-triangle": ["должно лежать в пределах 90…270° (задано 300)"],
+    "task2/case-interval-empty-in-radians": ["интервал графика 14.5…14.5° должен удовлетворять"],
+    "task2/case-two-powers": ['"power" может заменять лишь одно значение (другое уже задано так: '
+                              "driving.value)"],
+    "task2/case-power-value-without-power": ['для "power" нужна средняя мощность: задайте power '
+                                             "[Вт] на верхнем уровне"],
+    "task2/case-power-value-with-omega0": ["(средний момент M_ср = P/ω_ср) нужна средняя "
+                                           "скорость"],
+    "task2/case-power-unused": ['используется только значением графика "power" (M_ср = P/ω_ср)'],
+    "task2/case-power-value-does-no-work": ["значение движущего момента не меняет его работу: по "
+                                            "средней мощности его не найти"],
+    "task2/case-power-needs-a-negative-moment": ["средняя мощность 10 Вт требует отрицательного "
+                                                 "значения движущего момента (-692)",
+                                                 "P·Φ/ω_ср = 6.28319 Дж"],
+    "task2/case-balance-value-does-no-work": ["неизвестное значение движущего момента не меняет "
+                                              "его работу: по балансу работ"],
+    "task2/case-balance-needs-a-negative-resistance": [
+        "баланс работ за цикл требует отрицательного момента сопротивления (-240 Н·м): движущий "
+        "момент совершает больше работы"],
+    "task2/case-balance-needs-a-negative-driving": [
+        "баланс работ за цикл требует отрицательного движущего момента (-600 Н·м): момент "
+        "сопротивления совершает меньше работы"],
+    "task2/case-J-too-small-for-the-mean-speed": ["J = 0.001 кг·м² слишком мал для средней "
+                                                  "скорости 1 рад/с"],
+    "task2/case-delta-with-omega0": ["чтобы найти J по δ, задайте среднюю скорость, а не ω0"],
+    "task2/case-delta-without-fluctuation": ["энергия не колеблется: при любом J δ = 0"],
+    "task2/case-mean-speed-not-steady": ["средняя скорость требует установившегося движения "
+                                         "(работа за цикл 78.5398 Дж, а не 0)"],
+    "task2/case-fluctuation-percent-100": ["δ должно лежать между 0 и 2 (задано 2)"],
+    "task2/case-diagram-fluctuation-percent-100": ["δ должно лежать между 0 и 2 (задано 2)"],
+    "task2/case-speed-comes-too-close-to-zero": ["не удаётся найти на 90…270°: интеграл не "
+                                                 "сходится"],
+    "task2/case-diagram-two-forms": ["задайте что-то одно: areas (с moment_scale и "
+                                     "angle_scale_deg)", "(задано areas, energies)"],
+    "task2/case-diagram-empty": ["задайте что-то одно: areas (с moment_scale и angle_scale_deg)"],
+    "task2/case-diagram-work-per-cycle-with-areas": ["задаётся только вместе с "
+                                                     "energy_fluctuation_coefficient"],
+    "task2/case-diagram-crossings-with-delta-E": ["задаётся только с areas или energies (а не с "
+                                                  "delta_E)"],
+    "task2/case-diagram-areas-without-scale": ["не задано: для площадей нужны масштабы чертежа"],
+    "task2/case-diagram-one-area": ["нужно не меньше двух площадей"],
+    "task2/case-diagram-areas-close-only-in-mm2": ["сумма площадей -4.94066e-324, а не 0"],
+    "task2/case-diagram-crossings-one-short": ["углов должно быть на один больше, чем площадей: 8 "
+                                               "(задано 2)"],
+    "task2/case-diagram-crossings-go-back": ["углы должны возрастать"],
+    "task2/case-diagram-crossings-equal-in-radians": ["углы пересечений со средней линией должны "
+                                                      "возрастать"],
+    "task2/case-diagram-crossings-beyond-the-cycle": ["должны лежать в пределах 0…360°"],
+    "task2/case-diagram-coefficient-without-work": ["нужна работа за цикл: задайте "
+                                                    "diagram.work_per_cycle [Дж]"],
+    "task2/case-diagram-power-with-omega0": ["для работы за цикл P·Φ/ω_ср нужна средняя "
+                                             "скорость"],
+    "task2/case-diagram-power-unused": ["здесь её ничто не использует"],
+    "task2/case-points-plus-and-minus-1e308": ["work_driving — не конечное число (−inf + inf при "
+                                               "суммировании)"],
+    "task2/case-rim-radius-1e-300": ["результат — не конечное число (деление на ноль)"],
+    "task2/case-at-option-with-a-diagram": ["задаёт диаграмму площадями, у неё нет моментов"],
+    "task2/at-beyond-the-cycle": ["--at 400: должно лежать в пределах цикла 0…360°"],
+    "task2/to-a-hair-beyond-360": ["углы графика не должны убывать: точка 4 при 360° идёт после "
+                                   "360°"],
+    "task2/from-and-to-equal-in-radians": ["from (14.5°) должно быть меньше to (14.5°)"],
+})
 # English words that must not be left in a translated line (names the user gave aside)
 ENGLISH = re.compile(r"\b(the|is|not|must|be|allowed|out|of|range|given|cannot|no|such|should|"
                      r"input|valid|missing|required|unknown|key|file|folder|number|use|this)\b")

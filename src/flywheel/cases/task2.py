@@ -273,6 +273,7 @@ def _pos(field: str, v: float | None, unit: str) -> None:
 def _check(case: Task2Case) -> None:
     """Checks that pydantic's types do not express; each raises with its field path."""
     if not case.cycle_deg > 0:
+        # library use only: no CLI input reaches this
         raise FieldError("cycle_deg", f"must be positive (got {case.cycle_deg:g}°)")
     s = case.speed
     given = [k for k in ("omega0", "omega0_rpm", "mean", "mean_rpm", "max", "min", "max_rpm",
@@ -282,8 +283,9 @@ def _check(case: Task2Case) -> None:
         if len(given) == 1 and given[0] not in SINGLE_SPEEDS:
             other = {"max": "min", "min": "max", "max_rpm": "min_rpm",
                      "min_rpm": "max_rpm"}[given[0]]
-            raise FieldError(f"speed.{other}", f"missing: speed limits come in pairs "
-                                               f"({given[0]} with {other})")
+            raise FieldError(f"speed.{other}", Notice(
+                f"missing: speed limits come in pairs ({given[0]} with {other})",
+                "t2_limits_pair", first=given[0], other=other))
         raise FieldError("speed", Notice("give exactly one of omega0, omega0_rpm, mean, mean_rpm, "
                                          "or the limits max and min (or max_rpm and min_rpm)"
                                          + (f" (got {', '.join(given)})" if given else ""),
@@ -292,9 +294,10 @@ def _check(case: Task2Case) -> None:
         _pos(f"speed.{k}", getattr(s, k), "rad/s" if "rpm" not in k else "rpm")
     if len(given) == 2 and not getattr(s, given[1]) < getattr(s, given[0]):
         unit = "rpm" if "rpm" in given[0] else "rad/s"
-        raise FieldError(f"speed.{given[1]}", f"must be below {given[0]} "
-                         f"(got {getattr(s, given[1]):g} {unit} against "
-                         f"{getattr(s, given[0]):g} {unit})")
+        v, vo = getattr(s, given[1]), getattr(s, given[0])
+        raise FieldError(f"speed.{given[1]}", Notice(
+            f"must be below {given[0]} (got {v:g} {unit} against {vo:g} {unit})",
+            "t2_limit_below", limit=given[0], v=v, vo=vo, unit=unit))
     f = case.flywheel
     for name, unit in (("J", "kg·m²"), ("mass", "kg"), ("radius_of_gyration", "m"),
                        ("rim_radius", "m"), ("fluctuation_percent", "%")):
@@ -314,12 +317,14 @@ def _check(case: Task2Case) -> None:
     limits = len(given) == 2
     if limits and (f.delta is not None or f.fluctuation_percent is not None):
         which = "delta" if f.delta is not None else "fluctuation_percent"
-        raise FieldError(f"flywheel.{which}", "the speed limits already give δ = (max − min)/ω_ср: "
-                                              "give one or the other")
+        raise FieldError(f"flywheel.{which}", Notice(
+            "the speed limits already give δ = (max − min)/ω_ср: give one or the other",
+            "t2_limits_give_delta"))
     if f.J is None and f.mass is None and f.delta is None and f.fluctuation_percent is None \
             and not limits:
-        raise FieldError("flywheel", "give J, or mass and radius_of_gyration, or the asked delta "
-                   "(or fluctuation_percent, or the speed limits)")
+        raise FieldError("flywheel", Notice(
+            "give J, or mass and radius_of_gyration, or the asked delta (or "
+            "fluctuation_percent, or the speed limits)", "t2_flywheel_missing"))
     if f.rim is not None and f.rim.speed is not None:
         try:
             f.rim.check_speed(f.rho, f.sigma, f.material if f.density is None and
@@ -331,34 +336,37 @@ def _check(case: Task2Case) -> None:
     mean_known = given[0] in ("mean", "mean_rpm") or limits
     for i, x in enumerate(case.at_deg):
         if not 0 <= x <= case.cycle_deg:
-            raise FieldError(f"at_deg[{i}]", f"must lie within the cycle 0…{case.cycle_deg:g}° "
-                                             f"(got {x:g})")
+            raise FieldError(f"at_deg[{i}]", Notice(
+                f"must lie within the cycle 0…{case.cycle_deg:g}° (got {x:g})", "t2_at_in_cycle",
+                cycle=case.cycle_deg, x=x))
     if case.diagram is not None:
         if case.driving is not None or case.resistance is not None:
             raise FieldError("diagram", Notice("give either [diagram] or [driving] and [resistance], "
                                                 "not both", "diagram_or_graphs"))
         if case.at_deg:
-            raise FieldError("at_deg", "a diagram given by areas has no moments between its "
-                                       "crossings: ε, ω and t at an angle need [driving] and "
-                                       "[resistance] graphs")
+            raise FieldError("at_deg", Notice(
+                "a diagram given by areas has no moments between its crossings: ε, ω and t at "
+                "an angle need [driving] and [resistance] graphs", "t2_diagram_at"))
         _check_diagram(case.diagram, case.cycle_deg)
         d = case.diagram
         uses_power = d.energy_fluctuation_coefficient is not None and d.work_per_cycle is None
         if uses_power and case.power is None:
-            raise FieldError("diagram.energy_fluctuation_coefficient",
-                             "needs the work done per cycle: give diagram.work_per_cycle [J], or "
-                             "the mean power (top-level power [W]) with a mean speed")
+            raise FieldError("diagram.energy_fluctuation_coefficient", Notice(
+                "needs the work done per cycle: give diagram.work_per_cycle [J], or the mean "
+                "power (top-level power [W]) with a mean speed", "t2_efc_needs_work"))
         if uses_power and not mean_known:
-            raise FieldError("power", "the work per cycle P·Φ/ω_ср needs the mean speed: give "
-                                      "speed.mean, mean_rpm or the limits max/min")
+            raise FieldError("power", Notice(
+                "the work per cycle P·Φ/ω_ср needs the mean speed: give speed.mean, mean_rpm or "
+                "the limits max/min", "t2_work_needs_mean"))
         if case.power is not None and not uses_power:
-            raise FieldError("power", "is used by a graph value \"power\" or by "
-                                      "[diagram] energy_fluctuation_coefficient without "
-                                      "work_per_cycle; nothing here uses it")
+            raise FieldError("power", Notice(
+                'is used by a graph value "power" or by [diagram] energy_fluctuation_coefficient '
+                "without work_per_cycle; nothing here uses it", "t2_power_unused_diagram"))
         return
     for name in ("driving", "resistance"):
         if getattr(case, name) is None:
-            raise FieldError(name, "missing: give [driving] and [resistance] graphs, or a [diagram]")
+            raise FieldError(name, Notice("missing: give [driving] and [resistance] graphs, or a "
+                                          "[diagram]", "t2_graphs_missing"))
     unknowns = [(n, g.unknown_field()) for n, g in (("driving", case.driving),
                                                     ("resistance", case.resistance))
                 if g.unknown_field()]
@@ -371,19 +379,20 @@ def _check(case: Task2Case) -> None:
                                                  ("resistance", case.resistance))
                if g.power_field()]
     if len(powered) > 1:
-        raise FieldError(f"{powered[1][0]}.{powered[1][1]}",
-                         '"power" may stand for one value only (the other is '
-                         f"{powered[0][0]}.{powered[0][1]})")
+        raise FieldError(f"{powered[1][0]}.{powered[1][1]}", Notice(
+            '"power" may stand for one value only (the other is '
+            f"{powered[0][0]}.{powered[0][1]})", "t2_power_once",
+            other=f"{powered[0][0]}.{powered[0][1]}"))
     if powered and case.power is None:
-        raise FieldError(f"{powered[0][0]}.{powered[0][1]}",
-                         '"power" needs the mean power: give the top-level power [W]')
+        raise FieldError(f"{powered[0][0]}.{powered[0][1]}", Notice(
+            '"power" needs the mean power: give the top-level power [W]', "t2_power_needs_P"))
     if powered and not mean_known:
-        raise FieldError(f"{powered[0][0]}.{powered[0][1]}",
-                         '"power" (T_mean = P/ω_ср) needs the mean speed: give speed.mean, '
-                         "mean_rpm or the limits max/min")
+        raise FieldError(f"{powered[0][0]}.{powered[0][1]}", Notice(
+            '"power" (T_mean = P/ω_ср) needs the mean speed: give speed.mean, mean_rpm or the '
+            "limits max/min", "t2_power_needs_mean"))
     if case.power is not None and not powered:
-        raise FieldError("power", 'is used by a graph value "power" (T_mean = P/ω_ср); no graph '
-                                  "value is \"power\"")
+        raise FieldError("power", Notice('is used by a graph value "power" (T_mean = P/ω_ср); '
+                                         'no graph value is "power"', "t2_power_unused"))
     for name in ("driving", "resistance"):
         _check_graph(name, getattr(case, name), case.cycle_deg)
 
@@ -391,7 +400,8 @@ def _check(case: Task2Case) -> None:
 def _check_graph(name: str, g, cycle: float) -> None:
     if isinstance(g, PointsGraph):
         if len(g.points) < 2:
-            raise FieldError(f"{name}.points", "needs at least two [angle, moment] points")
+            raise FieldError(f"{name}.points", Notice("needs at least two [angle, moment] points",
+                                                      "t2_points_two"))
         for i in range(1, len(g.points)):
             if g.points[i][0] < g.points[i - 1][0]:
                 raise FieldError(f"{name}.points[{i}]", Notice(
@@ -414,8 +424,9 @@ def _check_graph(name: str, g, cycle: float) -> None:
                 "from_to_deg", cycle=cycle, start=g.from_deg, end=g.to_deg))
         if isinstance(g, TriangleGraph) and g.apex_deg is not None \
                 and not g.from_deg <= g.apex_deg <= g.to_deg:
-            raise FieldError(f"{name}.apex_deg", f"must lie within {g.from_deg:g}…{g.to_deg:g}° "
-                       f"(got {g.apex_deg:g})")
+            raise FieldError(f"{name}.apex_deg", Notice(
+                f"must lie within {g.from_deg:g}…{g.to_deg:g}° (got {g.apex_deg:g})",
+                "t2_apex_within", start=g.from_deg, end=g.to_deg, apex=g.apex_deg))
         if isinstance(g, TrapezoidGraph) and not (
                 g.from_deg <= g.top_from_deg <= g.top_to_deg <= g.to_deg):
             raise FieldError(f"{name}.top_from_deg", Notice(
@@ -428,6 +439,7 @@ def _check_graph(name: str, g, cycle: float) -> None:
                                                           "orders_for_terms", orders=len(g.orders),
                                                           terms=n))
             if any(not k > 0 for k in g.orders):
+                # library use only: no CLI input reaches this
                 raise FieldError(f"{name}.orders", "orders must be positive")
 
 
@@ -435,28 +447,32 @@ def _check_diagram(d: Diagram, cycle: float) -> None:
     forms = [k for k in ("areas", "energies", "delta_E", "energy_fluctuation_coefficient")
              if getattr(d, k) is not None]
     if len(forms) != 1:
-        raise FieldError("diagram", "give one of areas (with moment_scale and angle_scale_deg), "
-                                    "energies, delta_E, or energy_fluctuation_coefficient"
-                         + (f" (got {', '.join(forms)})" if forms else ""))
+        raise FieldError("diagram", Notice(
+            "give one of areas (with moment_scale and angle_scale_deg), energies, delta_E, or "
+            "energy_fluctuation_coefficient" + (f" (got {', '.join(forms)})" if forms else ""),
+            "t2_diagram_form", given=", ".join(forms)))
     if d.work_per_cycle is not None and forms[0] != "energy_fluctuation_coefficient":
-        raise FieldError("diagram.work_per_cycle", "only with energy_fluctuation_coefficient")
+        raise FieldError("diagram.work_per_cycle", Notice(
+            "only with energy_fluctuation_coefficient", "t2_work_only_efc"))
     if forms[0] in ("delta_E", "energy_fluctuation_coefficient"):
         for k in ("delta_E", "energy_fluctuation_coefficient", "work_per_cycle"):
             _pos(f"diagram.{k}", getattr(d, k), "J" if k != "energy_fluctuation_coefficient"
                  else "")
         for k in ("crossings_deg", "moment_scale", "angle_scale_deg"):
             if getattr(d, k) is not None:
-                raise FieldError(f"diagram.{k}", f"only with areas or energies (not with "
-                                                 f"{forms[0]})")
+                raise FieldError(f"diagram.{k}", Notice(
+                    f"only with areas or energies (not with {forms[0]})", "t2_only_areas",
+                    form=forms[0]))
         return
     vals, key = (d.areas, "areas") if d.areas is not None else (d.energies, "energies")
     if d.areas is not None:
         for k in ("moment_scale", "angle_scale_deg"):
             if getattr(d, k) is None:
-                raise FieldError(f"diagram.{k}", "missing: areas need the drawing's scales")
+                raise FieldError(f"diagram.{k}", Notice("missing: areas need the drawing's "
+                                                        "scales", "t2_areas_scales"))
             _pos(f"diagram.{k}", getattr(d, k), "")
     if len(vals) < 2:
-        raise FieldError(f"diagram.{key}", "needs at least two areas")
+        raise FieldError(f"diagram.{key}", Notice("needs at least two areas", "t2_two_areas"))
     total, size = math.fsum(vals), math.fsum(abs(v) for v in vals)
     if abs(total) > BALANCE_RTOL * size:
         raise FieldError(f"diagram.{key}", Notice(
@@ -465,13 +481,16 @@ def _check_diagram(d: Diagram, cycle: float) -> None:
     if d.crossings_deg is not None:
         c = d.crossings_deg
         if len(c) != len(vals) + 1:
-            raise FieldError("diagram.crossings_deg",
-                       f"needs {len(vals) + 1} angles for {len(vals)} areas (got {len(c)})")
+            raise FieldError("diagram.crossings_deg", Notice(
+                f"needs {len(vals) + 1} angles for {len(vals)} areas (got {len(c)})",
+                "t2_crossings_count", n=len(vals) + 1, areas=len(vals), count=len(c)))
         for i in range(1, len(c)):
             if not c[i] > c[i - 1]:
-                raise FieldError(f"diagram.crossings_deg[{i}]", "angles must increase")
+                raise FieldError(f"diagram.crossings_deg[{i}]", Notice("angles must increase",
+                                                                       "t2_angles_increase"))
         if c[0] < 0 or c[-1] > cycle:
-            raise FieldError("diagram.crossings_deg", f"must lie within 0…{cycle:g}°")
+            raise FieldError("diagram.crossings_deg", Notice(f"must lie within 0…{cycle:g}°",
+                                                             "t2_crossings_within", cycle=cycle))
 
 
 # -- loading and solving --------------------------------------------------------------------------

@@ -44,11 +44,12 @@ def _check_at(at, cycle_deg: float) -> None:
     """Each --at angle finite and within the cycle 0…cycle_deg [deg]."""
     import math
 
-    from flywheel.errors import InputError
+    from flywheel.errors import InputError, Notice
 
     for x in at or ():
         if not (math.isfinite(x) and 0.0 <= x <= cycle_deg):
-            raise InputError(f"--at {x:g}: must lie within the cycle 0…{cycle_deg:g}°")
+            raise InputError(Notice(f"--at {x:g}: must lie within the cycle 0…{cycle_deg:g}°",
+                                    "t2_at_option", x=x, cycle=cycle_deg))
 
 
 def task2_command(
@@ -126,8 +127,9 @@ def task2_command(
             blame = _case_numbers(c.model_dump())
             _check_at(at, c.cycle_deg)
             if at and c.diagram is not None:
-                raise InputError(f"--at: {case} gives a diagram by areas, which has no moments "
-                                 "between its crossings: ε, ω and t at an angle need graphs")
+                raise InputError(Notice(f"--at: {case} gives a diagram by areas, which has no "
+                                        "moments between its crossings: ε, ω and t at an angle "
+                                        "need graphs", "t2_at_diagram", case=str(case)))
 
             def run():
                 return solve_case(c, str(case), at_deg=at or ())
@@ -174,7 +176,7 @@ def task2_command(
             doc_source = nm.name("t2_seed_source")
             title = nm.name("t2_seed_title", lang, profile=nm.name(profile, lang))
             source = nm.name("t2_seed_source", lang)
-        from flywheel.constant_inertia.solve import NotFiniteError
+        from flywheel.constant_inertia.solve import NotFiniteError, python_detail
 
         # inputs near the limits of double precision: no Infinity/NaN in the output (it is not
         # JSON), and no traceback from inf − inf inside the formulas (guard.not_finite)
@@ -189,7 +191,8 @@ def task2_command(
         except FlywheelError:
             raise
         except (ArithmeticError, ValueError) as exc:
-            hit = ("a result", f"{exc.args[-1] if exc.args else type(exc).__name__}")
+            hit = ("a result",
+                   python_detail(f"{exc.args[-1] if exc.args else type(exc).__name__}"))
         if hit is not None:
             if case is not None:     # "file: field, field" (the file alone if none stands out)
                 fields = [n for n, _ in _extreme(blame)]

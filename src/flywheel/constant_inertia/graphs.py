@@ -14,7 +14,7 @@ import math
 from dataclasses import dataclass
 from typing import Sequence
 
-from flywheel.errors import InputError
+from flywheel.errors import InputError, Notice
 
 TWO_PI = 2.0 * math.pi
 
@@ -121,6 +121,7 @@ def size(m: Moment) -> float:
 
 def _check_cycle(cycle: float) -> None:
     if not (math.isfinite(cycle) and cycle > 0):
+        # library use only: no CLI input reaches this
         raise InputError(f"the cycle must be a positive angle (got {cycle!r} rad)")
 
 
@@ -144,14 +145,17 @@ def piecewise_linear(points: Sequence[tuple[float, float]], cycle: float = TWO_P
     _check_cycle(cycle)
     pts = [(float(p), float(m)) for p, m in points]
     if len(pts) < 2:
+        # library use only: no CLI input reaches this
         raise InputError("a graph needs at least two points")
     for i in range(1, len(pts)):
         if pts[i][0] < pts[i - 1][0]:
-            raise InputError(
-                f"graph angles must not decrease: point {i} at {math.degrees(pts[i][0]):g}° "
-                f"comes after {math.degrees(pts[i - 1][0]):g}°")
+            at, before = math.degrees(pts[i][0]), math.degrees(pts[i - 1][0])
+            raise InputError(Notice(
+                f"graph angles must not decrease: point {i} at {at:g}° comes after {before:g}°",
+                "t2_graph_angles_back", i=i, at=at, before=before))
     scale = max(cycle, 1.0) * 1e-12
     if abs(pts[0][0]) > scale or abs(pts[-1][0] - cycle) > scale:
+        # library use only: no CLI input reaches this
         raise InputError(
             f"the graph must span the cycle 0…{math.degrees(cycle):g}° "
             f"(it spans {math.degrees(pts[0][0]):g}…{math.degrees(pts[-1][0]):g}°)")
@@ -162,6 +166,7 @@ def piecewise_linear(points: Sequence[tuple[float, float]], cycle: float = TWO_P
         if p1 > p0:
             pieces.append(Piece(p0, p1, m0, (m1 - m0) / (p1 - p0)))
     if not pieces:
+        # library use only: no CLI input reaches this
         raise InputError("the graph has no length")
     if nominal is None:
         nominal = max(m for _, m in pts)
@@ -170,9 +175,10 @@ def piecewise_linear(points: Sequence[tuple[float, float]], cycle: float = TWO_P
 
 def _check_span(start: float, end: float, cycle: float) -> None:
     if not (0.0 <= start < end <= cycle * (1 + 1e-12)):
-        raise InputError(
-            f"the graph's interval {math.degrees(start):g}…{math.degrees(end):g}° must satisfy "
-            f"0 ≤ from < to ≤ {math.degrees(cycle):g}°")
+        a, b, c = math.degrees(start), math.degrees(end), math.degrees(cycle)
+        raise InputError(Notice(
+            f"the graph's interval {a:g}…{b:g}° must satisfy 0 ≤ from < to ≤ {c:g}°",
+            "t2_graph_interval", start=a, end=b, cycle=c))
 
 
 def _frame(start: float, inner: list[tuple[float, float]], end: float, cycle: float,
@@ -193,6 +199,7 @@ def triangle(peak: float, start: float, end: float, cycle: float = TWO_PI,
     _check_span(start, end, cycle)
     apex = 0.5 * (start + end) if apex is None else apex
     if not start <= apex <= end:
+        # library use only: no CLI input reaches this
         raise InputError(f"the triangle's apex {math.degrees(apex):g}° lies outside "
                          f"{math.degrees(start):g}…{math.degrees(end):g}°")
     return piecewise_linear(_frame(start, [(apex, peak)], end, cycle, base), cycle,
@@ -220,6 +227,7 @@ def trapezoid(peak: float, start: float, top_start: float, top_end: float, end: 
     _check_cycle(cycle)
     _check_span(start, end, cycle)
     if not start <= top_start <= top_end <= end:
+        # library use only: no CLI input reaches this
         raise InputError("a trapezoid needs from ≤ top_from ≤ top_to ≤ to")
     return piecewise_linear(_frame(start, [(top_start, peak), (top_end, peak)], end, cycle,
                                    base), cycle, nominal=peak, kind="trapezoid")
@@ -239,8 +247,10 @@ def harmonic(a0: float, a: Sequence[float] = (), b: Sequence[float] = (),
     b = list(b) + [0.0] * (n - len(b))
     ks = list(orders) if orders is not None else list(range(1, n + 1))
     if len(ks) != n:
+        # library use only: no CLI input reaches this
         raise InputError(f"{len(ks)} orders given for {n} harmonic terms")
     if any(not (k > 0) for k in ks):
+        # library use only: no CLI input reaches this
         raise InputError("harmonic orders must be positive")
     terms = tuple((float(k), float(ak), float(bk)) for k, ak, bk in zip(ks, a, b)
                   if ak != 0.0 or bk != 0.0)
@@ -256,6 +266,7 @@ def _sub_piece(p: Piece, x0: float, x1: float) -> Piece:
 def net_pieces(M_D: Moment, M_C: Moment) -> list[Piece]:
     """``M_D − M_C`` as pieces on the merged breakpoints of both graphs."""
     if abs(M_D.cycle - M_C.cycle) > 1e-12 * M_D.cycle:
+        # library use only: no CLI input reaches this
         raise InputError("the driving and resistance graphs span different cycles")
     cuts = sorted(set(M_D.breakpoints()) | set(M_C.breakpoints()))
     out = []

@@ -31,13 +31,15 @@ def seed_task(profile: str = "triangle", *, M_D: float = 15.0, J: float = 12.0,
     199.980363
     """
     if profile not in SEED_SPANS_DEG:
+        # library use only: no CLI input reaches this
         raise InputError(f"profile must be triangle or rectangle (got {profile!r})")
     d0, d1 = SEED_SPANS_DEG[profile]
     start = math.radians(d0) if start is None else start
     end = math.radians(d1) if end is None else end
     if not start < end:
-        raise InputError(f"from ({math.degrees(start):g}°) must be less than to "
-                         f"({math.degrees(end):g}°)")
+        a, b = math.degrees(start), math.degrees(end)
+        raise InputError(Notice(f"from ({a:g}°) must be less than to ({b:g}°)",
+                                "t2_from_below_to", start=a, end=b))
     if start < 0 or end > TWO_PI * (1 + 1e-12):
         raise InputError(Notice(f"from and to must lie within 0…360° (got "
                                 f"{math.degrees(start):g}°, {math.degrees(end):g}°)",

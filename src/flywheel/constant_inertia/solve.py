@@ -49,12 +49,18 @@ class NotFiniteError(OverflowError):
         self.detail = detail
 
 
+def python_detail(text: str) -> Notice:
+    """What Python's arithmetic said ("-inf + inf in fsum"), the detail of a NotFiniteError: a
+    Notice, so that render/nomenclature.py can say the known ones in Russian."""
+    return Notice(text, "t2_python_error", words=text)
+
+
 def _cycle_work(m: Moment, quantity: str) -> float:
     """∮ M dφ [J]; NotFiniteError when the sum overflows (fsum raises on inf − inf)."""
     try:
         return m.work()
     except (OverflowError, ValueError) as exc:
-        raise NotFiniteError(quantity, str(exc)) from None
+        raise NotFiniteError(quantity, python_detail(str(exc))) from None
 
 
 def _J_for(delta_T_max: float, omega_mean: float, delta: float) -> float:
@@ -343,8 +349,10 @@ def integrate(f: Callable[[float], float], a: float, b: float,
             parts.append(v)
             continue
         if len(parts) + len(todo) > _MAX_INTERVALS:
-            raise InputError(f"the time law did not converge on {math.degrees(a):.6g}…"
-                             f"{math.degrees(b):.6g}° (the speed comes too close to zero)")
+            a_deg, b_deg = math.degrees(a), math.degrees(b)
+            raise InputError(Notice(f"the time law did not converge on {a_deg:.6g}…{b_deg:.6g}° "
+                                    "(the speed comes too close to zero)", "t2_time_law",
+                                    a=a_deg, b=b_deg))
         todo.append((mid, x1))
         todo.append((x0, mid))
     return math.fsum(parts)
@@ -447,6 +455,7 @@ def check_angles(at: Sequence[float], cycle: float) -> list[float]:
     out = []
     for x in at:
         if not math.isfinite(x) or x < -1e-12 * cycle or x > cycle * (1 + 1e-12):
+            # library use only: no CLI input reaches this
             raise InputError(f"the angle {math.degrees(x):g}° lies outside the cycle "
                              f"0…{math.degrees(cycle):g}°")
         out.append(min(max(x, 0.0), cycle))
@@ -470,8 +479,8 @@ def power_value(make: Callable[[float], Moment], power: float, omega_mean: float
     w0 = _cycle_work(m0, "work_driving" if which == "driving" else "work_resistance")
     w1 = _cycle_work(m1, "work_driving" if which == "driving" else "work_resistance")
     if w1 == w0:
-        raise InputError(f"the {which} moment's value does not change its work: the mean "
-                         "power cannot find it")
+        raise InputError(Notice(f"the {which} moment's value does not change its work: the "
+                                "mean power cannot find it", "t2_power_no_change", which=which))
     target = power * m0.cycle / omega_mean
     x = (target - w0) / (w1 - w0)
     x = float(round(x, 12)) if abs(x - round(x, 12)) < 1e-12 * max(1.0, abs(x)) else x
@@ -481,9 +490,10 @@ def power_value(make: Callable[[float], Moment], power: float, omega_mean: float
                                               f"{x!r} N·m", "nf_power_moment", which=which,
                                               x=repr(x)))
     if x < 0.0:
-        raise InputError(f"the mean power {power:.6g} W needs a negative {which} moment value "
-                         f"({x:.6g}): the graph's fixed part alone does more work than "
-                         f"P·Φ/ω_ср = {target:.6g} J")
+        raise InputError(Notice(f"the mean power {power:.6g} W needs a negative {which} moment "
+                                f"value ({x:.6g}): the graph's fixed part alone does more work "
+                                f"than P·Φ/ω_ср = {target:.6g} J", "t2_power_negative",
+                                power=power, which=which, x=x, target=target))
     return x
 
 
@@ -506,14 +516,16 @@ def balance(make_D: Callable[[float], Moment], make_C: Callable[[float], Moment]
     elif unknown == "driving":
         known, make = make_C(1.0), make_D
     else:
+        # library use only: no CLI input reaches this
         raise InputError(f"unknown moment must be 'driving' or 'resistance' (got {unknown!r})")
     mine, theirs = (("work_resistance", "work_driving") if unknown == "resistance"
                     else ("work_driving", "work_resistance"))
     other = _cycle_work(known, theirs)
     w0, w1 = _cycle_work(make(0.0), mine), _cycle_work(make(1.0), mine)
     if w1 == w0:
-        raise InputError(f"the {unknown} moment's unknown value does not change its work: "
-                         "the cycle balance cannot find it")
+        raise InputError(Notice(f"the {unknown} moment's unknown value does not change its "
+                                "work: the cycle balance cannot find it", "t2_balance_no_change",
+                                which=unknown))
     # a net work within round-off of zero (zero-mean harmonics leave 1e-13 J) balances with
     # x = 0; the same tolerance as the steadiness test of ``solve``
     if math.isfinite(other - w0) and \
@@ -527,11 +539,12 @@ def balance(make_D: Callable[[float], Moment], make_C: Callable[[float], Moment]
                              Notice(f"the cycle balance gives a {unknown} moment of {x!r} N·m",
                                     "nf_balance_moment", which=unknown, x=repr(x)))
     if x < 0.0:
-        raise InputError(
+        raise InputError(Notice(
             f"the cycle balance needs a negative {unknown} moment ({x:.6g} N·m): "
             f"the {'resistance' if unknown == 'driving' else 'driving'} graph does "
             f"{'more' if unknown == 'resistance' else 'less'} work than the "
-            f"{unknown} graph can {'absorb' if unknown == 'resistance' else 'supply'}")
+            f"{unknown} graph can {'absorb' if unknown == 'resistance' else 'supply'}",
+            "t2_balance_negative", which=unknown, x=x))
     return x
 
 
@@ -542,14 +555,23 @@ def _speed_from_mean(A_max: float, A_min: float, J: float, omega_mean: float) ->
     w_max = omega_mean + dT / (2 * J * omega_mean)
     w_min = omega_mean - dT / (2 * J * omega_mean)
     if w_min <= 0.0:
-        raise InputError(
+        raise InputError(Notice(
             f"J = {J:.6g} kg·m² is too small for a mean speed of {omega_mean:.6g} rad/s: the "
-            f"energy fluctuation {dT:.6g} J would stop the machine")
+            f"energy fluctuation {dT:.6g} J would stop the machine", "t2_J_too_small", J=J,
+            omega=omega_mean, dT=dT))
     return w_max * w_max - 2 * A_max / J
+
+
+def _check_delta(delta: float | None) -> None:
+    """δ, when asked, within 0 < δ < 2 (ω_min = ω_ср·(1 − δ/2) > 0)."""
+    if delta is not None and not (0.0 < delta < 2.0):
+        raise InputError(Notice(f"δ must lie between 0 and 2 (got {delta:g})", "t2_delta_0_2",
+                                delta=delta))
 
 
 def check_positive(name: str, value: float | None, unit: str) -> None:
     if value is not None and not (math.isfinite(value) and value > 0):
+        # library use only: no CLI input reaches this
         raise InputError(f"{name} must be positive (got {value:g} {unit})")
 
 
@@ -589,16 +611,20 @@ def _motion(bounds: list[float], kinds: list[str], A: list[float], J: float | No
     dT = A_max - A_min
     if J is None:
         if delta is None:
+            # library use only: no CLI input reaches this
             raise InputError("give the flywheel: J, or mass and radius of gyration, or δ")
         if omega_mean is None:
-            raise InputError("to find J from δ give the mean speed, not ω0")
+            raise InputError(Notice("to find J from δ give the mean speed, not ω0",
+                                    "t2_delta_needs_mean"))
         if dT <= 0.0:
-            raise InputError("the energy does not fluctuate: any J gives δ = 0")
+            raise InputError(Notice("the energy does not fluctuate: any J gives δ = 0",
+                                    "t2_no_fluctuation"))
         J = _J_for(dT, omega_mean, delta)
     if omega_mean is not None:
         if not steady:
-            raise InputError("a mean speed needs steady motion (the work over the cycle "
-                             f"is {A[-1]:.6g} J, not 0): give ω0 instead")
+            raise InputError(Notice("a mean speed needs steady motion (the work over the "
+                                    f"cycle is {A[-1]:.6g} J, not 0): give ω0 instead",
+                                    "t2_mean_needs_steady", work=A[-1]))
         w0sq = _speed_from_mean(A_max, A_min, J, omega_mean)
     else:
         w0sq = omega0 * omega0
@@ -691,14 +717,14 @@ def solve(M_D: Moment, M_C: Moment, J: float | None = None, *, omega0: float | N
     (200.011044, 199.988955, '0.000110447')
     """
     if (omega0 is None) == (omega_mean is None):
+        # library use only: no CLI input reaches this
         raise InputError("give exactly one speed: ω0 or the mean speed")
     check_positive("J", J, "kg·m²")
     check_positive("ω0", omega0, "rad/s")
     check_positive("the mean speed", omega_mean, "rad/s")
     check_positive("the rim radius", rim_radius, "m")
     check_positive("the radius of gyration", radius_of_gyration, "m")
-    if delta is not None and not (0.0 < delta < 2.0):
-        raise InputError(f"δ must lie between 0 and 2 (got {delta:g})")
+    _check_delta(delta)
     at = check_angles(at, M_D.cycle)
     pieces = net_pieces(M_D, M_C)
     bounds: list[float] = []
@@ -773,20 +799,23 @@ def solve_areas(energies: Sequence[float], J: float | None = None, *, cycle: flo
     check_positive("ω0", omega0, "rad/s")
     check_positive("the mean speed", omega_mean, "rad/s")
     if (omega0 is None) == (omega_mean is None):
+        # library use only: no CLI input reaches this
         raise InputError("give exactly one speed: ω0 or the mean speed")
-    if delta is not None and not (0.0 < delta < 2.0):
-        raise InputError(f"δ must lie between 0 and 2 (got {delta:g})")
+    _check_delta(delta)
     check_positive("the radius of gyration", radius_of_gyration, "m")
     if len(at):
+        # library use only: no CLI input reaches this
         raise InputError("a diagram given by areas has no moments between its crossings: "
                          "ε(φ), ω(φ) and t(φ) at an angle are unknown (give the graphs)")
     e = [float(x) for x in energies]
     if len(e) < 2:
+        # library use only: no CLI input reaches this
         raise InputError("a diagram needs at least two areas")
     total, size = math.fsum(e), math.fsum(abs(x) for x in e)
     if abs(total) > BALANCE_RTOL * size:
-        raise InputError(f"the areas sum to {total:.6g}, not 0: over a cycle of steady motion "
-                         "the areas above and below the mean line are equal")
+        raise InputError(Notice(f"the areas sum to {total:.6g}, not 0: over a cycle of steady "
+                                "motion the areas above and below the mean line are equal",
+                                "t2_areas_sum", total=total))
     A = [0.0]
     for x in e[:-1]:
         A.append(A[-1] + x)
@@ -794,10 +823,11 @@ def solve_areas(energies: Sequence[float], J: float | None = None, *, cycle: flo
     if crossings_at is not None:
         bounds = [float(x) for x in crossings_at]
         if len(bounds) != len(e) + 1:
+            # library use only: no CLI input reaches this
             raise InputError(f"{len(e)} areas need {len(e) + 1} crossing angles "
                              f"(got {len(bounds)})")
         if any(b1 <= b0 for b0, b1 in zip(bounds, bounds[1:])):
-            raise InputError("crossing angles must increase")
+            raise InputError(Notice("crossing angles must increase", "t2_crossings_increase"))
     else:
         bounds = [cycle * i / len(e) for i in range(len(e) + 1)]
     res = _motion(bounds, ["crossing"] * len(A), A, J, omega0, omega_mean, True, delta,
@@ -816,6 +846,7 @@ def sample(result: Task2Result, n: int = 1441) -> dict[str, list[float]]:
     Only for results from graphs (``solve``); an area diagram has no curves between rows.
     """
     if result.driving is None or result.resistance is None:
+        # library use only: no CLI input reaches this
         raise InputError("a diagram given by areas has no moment curves to sample")
     pieces = net_pieces(result.driving, result.resistance)
     xs = sorted({result.cycle * i / (n - 1) for i in range(n)} | {r.phi for r in result.rows}

@@ -1826,6 +1826,8 @@ def _msgs_aggregate_ru_params(code: str, p: dict) -> dict:
 
 
 _PARAM_HOOKS.append(_msgs_aggregate_ru_params)
+
+
 # --- sheets ---
 # The task sheets of `flywheel variants … --sheets` (render/sheets.py, which adds only the
 # sentence templates and the typesetting): the labels of a case file's input fields and the
@@ -2119,3 +2121,117 @@ def answer_words(kind: str, key: str, lang: str = "en") -> tuple[str, str, str]:
     if sym and what.endswith(sym):          # a name that ends with its symbol: not twice
         what = what[:-len(sym)].rstrip(" ,")
     return what, sym, "" if u in ("–", "") else u
+
+
+# --- msgs_task2 ---
+# The errors of flywheel task2 (cases/task2.py's cross-field checks, constant_inertia's solvers,
+# cli/task2.py's --at) in Russian.
+MESSAGES_RU.update({
+    # cases/task2.py: [speed], [flywheel], at_deg
+    "t2_limits_pair": "не задано: пределы скорости задаются парой ({first} с {other})",
+    "t2_limit_below": "должно быть меньше {limit} (задано {v:g} {unit_ru}, а {limit} = {vo:g} "
+                      "{unit_ru})",
+    "t2_limits_give_delta": ("пределы скорости уже дают δ = (max − min)/ω_ср: задайте что-то "
+                             "одно"),
+    "t2_flywheel_missing": ("задайте J, или mass и radius_of_gyration, или требуемое delta (или "
+                            "fluctuation_percent, или пределы скорости)"),
+    "t2_at_in_cycle": "должно лежать в пределах цикла 0…{cycle:g}° (задано {x:g})",
+    # cases/task2.py: the graphs and the mean power
+    "t2_graphs_missing": "не задано: задайте графики [driving] и [resistance] или [diagram]",
+    "t2_power_once": ("\"power\" может заменять лишь одно значение (другое уже задано так: "
+                      "{other})"),
+    "t2_power_needs_P": ("для \"power\" нужна средняя мощность: задайте power [Вт] на верхнем "
+                         "уровне"),
+    "t2_power_needs_mean": ("для \"power\" (средний момент M_ср = P/ω_ср) нужна средняя скорость: "
+                            "задайте speed.mean, mean_rpm или пределы max/min"),
+    "t2_power_unused": ("используется только значением графика \"power\" (M_ср = P/ω_ср), а "
+                        "ни одно значение графика не равно \"power\""),
+    "t2_points_two": "нужно не меньше двух точек [угол, момент]",
+    "t2_apex_within": "должно лежать в пределах {start:g}…{end:g}° (задано {apex:g})",
+    # cases/task2.py: [diagram]
+    "t2_diagram_at": ("у диаграммы, заданной площадями, нет моментов между точками пересечения "
+                      "со средней линией: для ε, ω и t при заданном угле нужны графики [driving] "
+                      "и [resistance]"),
+    "t2_efc_needs_work": ("нужна работа за цикл: задайте diagram.work_per_cycle [Дж] или среднюю "
+                          "мощность (power верхнего уровня [Вт]) вместе со средней скоростью"),
+    "t2_work_needs_mean": ("для работы за цикл P·Φ/ω_ср нужна средняя скорость: задайте "
+                           "speed.mean, mean_rpm или пределы max/min"),
+    "t2_power_unused_diagram": ("используется только значением графика \"power\" или "
+                                "[diagram] energy_fluctuation_coefficient без work_per_cycle; "
+                                "здесь её ничто не использует"),
+    "t2_diagram_form": ("задайте что-то одно: areas (с moment_scale и angle_scale_deg), "
+                        "energies, delta_E или energy_fluctuation_coefficient{given_ru}"),
+    "t2_work_only_efc": "задаётся только вместе с energy_fluctuation_coefficient",
+    "t2_only_areas": "задаётся только с areas или energies (а не с {form})",
+    "t2_areas_scales": "не задано: для площадей нужны масштабы чертежа",
+    "t2_two_areas": "нужно не меньше двух площадей",
+    "t2_crossings_count": ("углов должно быть на один больше, чем площадей: {n} (задано "
+                           "{count})"),
+    "t2_angles_increase": "углы должны возрастать",
+    "t2_crossings_within": "должны лежать в пределах 0…{cycle:g}°",
+    # cli/task2.py
+    "t2_at_option": "--at {x:g}: должно лежать в пределах цикла 0…{cycle:g}°",
+    "t2_at_diagram": ("--at: {case} задаёт диаграмму площадями, у неё нет моментов между точками "
+                      "пересечения со средней линией: для ε, ω и t при заданном угле нужны "
+                      "графики"),
+    # constant_inertia/graphs.py, preset.py (angles that coincide only after the conversion
+    # to radians)
+    "t2_graph_angles_back": ("углы графика не должны убывать: точка {i} при {at:g}° идёт после "
+                             "{before:g}°"),
+    "t2_graph_interval": ("интервал графика {start:g}…{end:g}° должен удовлетворять 0 ≤ from < "
+                          "to ≤ {cycle:g}°"),
+    "t2_from_below_to": "from ({start:g}°) должно быть меньше to ({end:g}°)",
+    # constant_inertia/solve.py: the mean power, the cycle balance, the motion
+    "t2_power_no_change": ("значение {t2_which_gen} не меняет его работу: по средней мощности "
+                           "его не найти"),
+    "t2_power_negative": ("средняя мощность {power:.6g} Вт требует отрицательного значения "
+                          "{t2_which_gen} ({x:.6g}): одна лишь постоянная часть графика "
+                          "совершает больше работы, чем P·Φ/ω_ср = {target:.6g} Дж"),
+    "t2_balance_no_change": ("неизвестное значение {t2_which_gen} не меняет его работу: по "
+                             "балансу работ за цикл его не найти"),
+    "t2_balance_negative": ("баланс работ за цикл требует отрицательного {t2_which_gen} "
+                            "({x:.6g} Н·м): {t2_balance_why}"),
+    "t2_J_too_small": ("J = {J:.6g} кг·м² слишком мал для средней скорости {omega:.6g} рад/с: "
+                       "колебание энергии {dT:.6g} Дж остановило бы машину"),
+    "t2_delta_needs_mean": "чтобы найти J по δ, задайте среднюю скорость, а не ω0",
+    "t2_no_fluctuation": "энергия не колеблется: при любом J δ = 0",
+    "t2_mean_needs_steady": ("средняя скорость требует установившегося движения (работа за цикл "
+                             "{work:.6g} Дж, а не 0): задайте ω0"),
+    "t2_delta_0_2": "δ должно лежать между 0 и 2 (задано {delta:g})",
+    "t2_time_law": ("время t(φ) = ∫dφ/ω не удаётся найти на {a:.6g}…{b:.6g}°: интеграл не "
+                    "сходится (скорость слишком близка к нулю)"),
+    "t2_areas_sum": ("сумма площадей {total:.6g}, а не 0: за цикл установившегося движения "
+                     "площади над средней линией и под ней равны"),
+    "t2_crossings_increase": "углы пересечений со средней линией должны возрастать",
+    # constant_inertia/solve.py python_detail: what Python's arithmetic said (not_finite's detail)
+    "t2_python_error": "{t2_python_ru}",
+})
+#: Python's words for an arithmetic failure (math.fsum, math) in Russian; others stay as they are
+_T2_PYTHON_RU = {"-inf + inf in fsum": "−inf + inf при суммировании",
+                 "intermediate overflow in fsum": "переполнение промежуточной суммы",
+                 "math range error": "результат вне диапазона чисел",
+                 "Numerical result out of range": "результат вне диапазона чисел",
+                 "math domain error": "аргумент вне области определения функции",
+                 "float division by zero": "деление на ноль",
+                 "division by zero": "деление на ноль"}
+#: the moment whose value a task2 error speaks of, in the genitive ("значение движущего момента")
+_T2_WHICH_GEN = {"driving": "движущего момента", "resistance": "момента сопротивления"}
+
+
+def _msgs_task2_ru_params(code: str, p: dict) -> dict:
+    """The Russian words of the task2 errors: the moment in the genitive, why a balance fails."""
+    if code.startswith("t2_") and "which" in p:
+        p["t2_which_gen"] = _T2_WHICH_GEN.get(p["which"], p["which"])
+    if code == "t2_python_error":
+        p["t2_python_ru"] = _T2_PYTHON_RU.get(p["words"], p["words"])
+    if code == "t2_balance_negative":
+        p["t2_balance_why"] = (
+            "движущий момент совершает больше работы, чем может поглотить график момента "
+            "сопротивления" if p["which"] == "resistance" else
+            "момент сопротивления совершает меньше работы, чем может дать график движущего "
+            "момента")
+    return p
+
+
+_PARAM_HOOKS.append(_msgs_task2_ru_params)
+_MSGS_DERIVED |= {"t2_which_gen", "t2_balance_why", "t2_python_ru"}
