@@ -537,8 +537,6 @@ RUSSIAN_ERRORS.update({
     "task2/case-rim-radius-1e-300": ["результат — не конечное число (деление на ноль)"],
     "task2/case-at-option-with-a-diagram": ["задаёт диаграмму площадями, у неё нет моментов"],
     "task2/at-beyond-the-cycle": ["--at 400: должно лежать в пределах цикла 0…360°"],
-    "task2/to-a-hair-beyond-360": ["углы графика не должны убывать: точка 4 при 360° идёт после "
-                                   "360°"],
     "task2/from-and-to-equal-in-radians": ["from (14.5°) должно быть меньше to (14.5°)"],
 })
 # English words that must not be left in a translated line (names the user gave aside)

@@ -424,3 +424,15 @@ def test_lang_unknown_is_one_line():
     res = run("--lang", "de")
     assert res.exit_code == 2
     assert err_text(res) == "error: --lang: 'de' is not a language (allowed: en, ru)\n"
+
+
+@pytest.mark.parametrize("profile", ["triangle", "rectangle"])
+def test_to_a_rounding_hair_beyond_the_cycle_is_the_cycles_end(profile):
+    """--to 360.0000000001 passes the range check (its 1e-12 tolerance) and is the cycle's end:
+    the same answer as --to 360 (it once failed with "graph angles must not decrease")."""
+    hair = run("--json", "--profile", profile, "--to", "360.0000000001")
+    exact = run("--json", "--profile", profile, "--to", 360)
+    assert hair.exit_code == 0, hair.output
+    a, b = json.loads(hair.stdout), json.loads(exact.stdout)
+    assert a["M_C"] == pytest.approx(b["M_C"], rel=1e-9)
+    assert a["omega_max"] == pytest.approx(b["omega_max"], rel=1e-12)

@@ -173,12 +173,15 @@ def piecewise_linear(points: Sequence[tuple[float, float]], cycle: float = TWO_P
     return Moment(tuple(pieces), cycle, float(nominal), kind)
 
 
-def _check_span(start: float, end: float, cycle: float) -> None:
+def _check_span(start: float, end: float, cycle: float) -> float:
+    """Refuse an interval outside 0 ≤ from < to ≤ cycle; returns ``end``, a hair beyond the
+    cycle's end (rounding: 360.0000000001°) taken as the cycle's end."""
     if not (0.0 <= start < end <= cycle * (1 + 1e-12)):
         a, b, c = math.degrees(start), math.degrees(end), math.degrees(cycle)
         raise InputError(Notice(
             f"the graph's interval {a:g}…{b:g}° must satisfy 0 ≤ from < to ≤ {c:g}°",
             "t2_graph_interval", start=a, end=b, cycle=c))
+    return min(end, cycle)
 
 
 def _frame(start: float, inner: list[tuple[float, float]], end: float, cycle: float,
@@ -196,7 +199,7 @@ def triangle(peak: float, start: float, end: float, cycle: float = TWO_PI,
     30.0
     """
     _check_cycle(cycle)
-    _check_span(start, end, cycle)
+    end = _check_span(start, end, cycle)
     apex = 0.5 * (start + end) if apex is None else apex
     if not start <= apex <= end:
         # library use only: no CLI input reaches this
@@ -214,7 +217,7 @@ def rectangle(peak: float, start: float, end: float, cycle: float = TWO_PI,
     30.0
     """
     _check_cycle(cycle)
-    _check_span(start, end, cycle)
+    end = _check_span(start, end, cycle)
     return piecewise_linear(_frame(start, [(start, peak), (end, peak)], end, cycle, base),
                             cycle, nominal=peak, kind="rectangle")
 
@@ -225,7 +228,7 @@ def trapezoid(peak: float, start: float, top_start: float, top_end: float, end: 
     back to ``base`` on [top_end, end]. Angles [rad] (Khurmi & Gupta, Example 16.6).
     """
     _check_cycle(cycle)
-    _check_span(start, end, cycle)
+    end = _check_span(start, end, cycle)
     if not start <= top_start <= top_end <= end:
         # library use only: no CLI input reaches this
         raise InputError("a trapezoid needs from ≤ top_from ≤ top_to ≤ to")
