@@ -625,7 +625,7 @@ def solve_case(case: Task2Case, source: str = "<case>", at_deg=()) -> Task2Resul
         field = "flywheel"
         return solve(make_D(x), make_C(x), J, unknown=unknown, at=at, power_found=powered, **kw)
     except InputError as exc:
-        msg = str(exc)
-        if msg.startswith(("a mean speed needs", "to find J from δ", "the machine stops")):
+        if getattr(said(exc), "code", "") in ("t2_mean_needs_steady", "t2_delta_needs_mean",
+                                               "machine_stops"):
             field = "speed"
         raise CaseFileError(led(f"{source}: {field}: ", said(exc))) from None
