@@ -539,6 +539,52 @@ RUSSIAN_ERRORS.update({
     "task2/at-beyond-the-cycle": ["--at 400: должно лежать в пределах цикла 0…360°"],
     "task2/from-and-to-equal-in-radians": ["from (14.5°) должно быть меньше to (14.5°)"],
 })
+# --- msgs_run --- the run case's points, cylinders (a four-stroke diagram over the cycle) and
+# firing order, the dynamics and the force analysis, files the system will not read or write
+RUSSIAN_ERRORS.update({
+    "run/point-fraction-with-distance": ["points.S3: `fraction` и `across` задаются с `to`, а не с"],
+    "run/point-angle-with-to": ["points.S2: `angle_deg` задаётся с `distance`, а не с `to`"],
+    "run/point-from-not-on-its-link": ["точка 'A' не лежит на звене 3 (его точки: B, D): точка, "
+                                       "закреплённая на звене, строится по точкам"],
+    "run/centroid-not-on-its-link": ["точка 'S2' не лежит на звене 3 (его точки: B, D, S3)"],
+    "run/rod-length-missing": ["не задано: укажите rod_length или design.rod_to_crank"],
+    "run/tabulated-with-ground": ["ground: не допускается вместе с [tabulated]: задайте массы"],
+    "run/diagram-too-short": ["нужно не меньше 5 значений (0, 1, 0, 1, 0: четыре такта)"],
+    "run/diagram-p-one-short": ["нужно 5 значений, по одному на каждое s (задано 4)"],
+    "run/diagram-s-outside-the-stroke": ["1.5 выходит за пределы хода (допустимо: 0 … 1)"],
+    "run/diagram-starts-off-the-head": ["0.5: диаграмма начинается в верхней мёртвой точке"],
+    "run/diagram-steps-at-a-dead-centre": ["p/p_max меняется скачком с 0.1 до 0.5 при s = 1, где "
+                                           "такт расширения кончается, а такт выпуска "
+                                           "начинается: такты не смыкаются (скачок 0.4;"],
+    "run/diagram-does-not-close": ["где такт сжатия кончается, а такт расширения начинался"],
+    "run/diagram-ends-inside-a-stroke": ["обрывается внутри такта впуска (допустимо: s проходит"],
+    "run/diagram-goes-back": ["0.3 после 0.5: на такте расширения s должно расти до 1"],
+    "run/diagram-goes-on-after-the-cycle": ["продолжается после того, как такт сжатия замкнул"],
+    "run/diagram-and-strokes": ["задайте что-то одно: diagram (одна таблица на весь цикл) или s"],
+    "run/cylinder-s-missing": ["cylinders[0].s: не задано обязательное поле (или задайте diagram"],
+    "run/cylinder-s-one-value": ["cylinders[0].s: нужно не меньше 2 значений"],
+    "run/cylinder-s-short-of-1": ["должно охватывать [0, 1] (задано 0.0 … 0.95)"],
+    "run/cylinder-one-table": ["не задано: укажите towards_head и away_from_head или strokes"],
+    "run/two-table-cylinder-fires-at": ["задаётся только со strokes (четырёхтактной диаграммой)"],
+    "run/two-tables-and-strokes": ["задайте что-то одно: towards_head и away_from_head"],
+    "run/firing-order-unknown-cylinder": ["нет цилиндра '9' (четырёхтактные цилиндры: 1, 2, 3, 4)"],
+    "run/firing-order-of-a-compressor": ["у цилиндра 'HP' нет четырёхтактной диаграммы",
+                                         "(четырёхтактные цилиндры: нет)"],
+    "run/firing-order-cylinder-twice": ["цилиндр '3' уже есть в порядке работы"],
+    "run/firing-order-and-fires-at": ["machine.firing_order задаёт, где срабатывает цилиндр '2'"],
+    "run/fires-at-far-from-a-dead-centre": ["cylinders[0].fires_at_deg: 100° отстоит на 100° от "
+                                            "ближайшей верхней мёртвой точки поршня 3 (0°, 360°)"],
+    "run/piston-that-does-not-move": ["у поршня 3 нет пары мёртвых положений"],
+    "run/link-named-like-the-frame": ["силовой анализ: звено названо '0', а это имя стойки"],
+    "run/no-inertia": ["у машины нет инерции: нагрузки не вызывают колебаний энергии"],
+    "run/given-flywheel-vanishes-on-the-crank-shaft": ["у машины нет инерции (допустимо: "
+                                                       "flywheel.J > 0"],
+    "run/given-flywheel-and-no-fluctuation": ["заданный маховик (J = 1 кг·м²) слишком мал"],
+    "run/tabulated-masses-overflow": ["результаты переполняются"],
+    "run/case-path-through-a-file": ["не удаётся прочитать (часть пути — не папка)"],
+    "run/out-name-too-long": ["не удаётся записать (слишком длинное имя файла)"],
+    "run/out-a-folder-where-a-file-goes": ["forces.csv — папка, а flywheel записывает туда файл"],
+})
 # English words that must not be left in a translated line (names the user gave aside)
 ENGLISH = re.compile(r"\b(the|is|not|must|be|allowed|out|of|range|given|cannot|no|such|should|"
                      r"input|valid|missing|required|unknown|key|file|folder|number|use|this)\b")
@@ -874,3 +920,54 @@ def test_the_progress_bar_names_its_stages_in_the_users_language():
     for st in stages:
         assert nm.stage_name(st, "en") == st and re.search("[а-я]", nm.stage_name(st, "ru")), st
     assert nm.stage_name("anything", "ru") == "anything"
+
+
+# every user error is a Notice: a raise of a FlywheelError, a FieldError or a validator's
+# ValueError passes an errors.Notice (or a variable holding one), so --lang ru says it; an internal
+# guard no command-line input reaches says so in a comment on the line above the raise
+_USER_ERRORS = {"CaseFileError", "InputError", "AssemblyError", "FlywheelError", "ValueError",
+                "DutyCycleError", "TableError", "SheetError", "NotFiniteError",
+                "FieldError", "PydanticCustomError", "BadParameter"}
+_LIBRARY_ONLY = "# library use only: no CLI input reaches this"
+
+
+def _notice_builders() -> set[str]:
+    """Names of the package's functions that return an errors.Notice (``needs_out``, …)."""
+    names = set()
+    for path in SRC.rglob("*.py"):
+        for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+            if isinstance(node, ast.FunctionDef) and any(
+                    isinstance(r, ast.Return) and r.value is not None
+                    and "Notice(" in ast.unparse(r.value) for r in ast.walk(node)):
+                names.add(node.name)
+    return names
+
+
+def _english_raises():
+    """(file:line, source) of every raise of a user error whose message is a plain string."""
+    builders = _notice_builders()
+    for path in sorted(SRC.rglob("*.py")):
+        text = path.read_text(encoding="utf-8")
+        lines = text.splitlines()
+        for node in ast.walk(ast.parse(text)):
+            if not (isinstance(node, ast.Raise) and isinstance(node.exc, ast.Call)):
+                continue
+            fn = node.exc.func
+            kind = fn.id if isinstance(fn, ast.Name) else getattr(fn, "attr", "")
+            if kind not in _USER_ERRORS or not node.exc.args:
+                continue
+            args = node.exc.args
+            msg = args[1] if kind in ("FieldError", "TableError", "DutyCycleError", "NotFiniteError") and len(args) > 1 else args[0]
+            called = msg.func.id if isinstance(msg, ast.Call) and isinstance(msg.func, ast.Name) \
+                else ""
+            if isinstance(msg, ast.Name) or called in builders or "Notice(" in ast.unparse(msg) \
+                    or "led(" in ast.unparse(msg):
+                continue
+            if lines[node.lineno - 2].strip() == _LIBRARY_ONLY:
+                continue
+            yield f"{path.relative_to(SRC)}:{node.lineno}", ast.unparse(msg)[:100]
+
+
+def test_every_user_error_is_raised_with_a_notice():
+    left = list(_english_raises())
+    assert not left, "\n".join(f"{w}: {m}" for w, m in left)

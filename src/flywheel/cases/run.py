@@ -201,9 +201,11 @@ class PointSpec(StrictModel):
             raise ValueError(Notice("give either `to` (with fraction) or `distance` (with angle_deg)",
                                     "point_to_or_distance"))
         if self.distance is not None and (self.fraction or self.across):
-            raise ValueError("`fraction` and `across` go with `to`, not with `distance`")
+            raise ValueError(Notice("`fraction` and `across` go with `to`, not with `distance`",
+                                    "run_point_fraction_with_distance"))
         if self.to is not None and self.angle_deg:
-            raise ValueError("`angle_deg` goes with `distance`, not with `to`")
+            raise ValueError(Notice("`angle_deg` goes with `distance`, not with `to`",
+                                    "run_point_angle_with_to"))
         return self
 
 
@@ -244,6 +246,11 @@ class DiagramSpec(StrictModel):
 STROKE_ORDER = ("expansion", "exhaust", "intake", "compression")   # from the firing
 
 
+def _values_per_s(n: int, count: int) -> Notice:
+    """The error of a table whose length is not that of its s."""
+    return Notice(f"needs {n} values, one per s (got {count})", "values_per_s", n=n, count=count)
+
+
 def _split_cycle(s: list[float], p: list[float], tol: float) -> dict[str, tuple[list, list]]:
     """The strokes of a diagram given as one table over the cycle (:class:`DiagramSpec`):
     {stroke: (s increasing, p/p_max)}. The travel grows to 1 on expansion, falls to 0 on
@@ -253,21 +260,27 @@ def _split_cycle(s: list[float], p: list[float], tol: float) -> dict[str, tuple[
     step between the end and the start. Raises FieldError at diagram.s[i] / diagram.p[i]."""
     n = len(s)
     if len(p) != n:
-        raise FieldError(("diagram", "p"), f"needs {n} values, one per s (got {len(p)})")
+        raise FieldError(("diagram", "p"), _values_per_s(n, len(p)))
     if n < 5:
-        raise FieldError(("diagram", "s"), "needs at least 5 values (0, 1, 0, 1, 0: four strokes)")
+        raise FieldError(("diagram", "s"), Notice("needs at least 5 values (0, 1, 0, 1, 0: four "
+                                                  "strokes)", "run_diagram_too_short"))
     for i, v in enumerate(s):
         if not 0.0 <= v <= 1.0:
-            raise FieldError(("diagram", "s", i), f"{v:g} is outside the stroke (allowed: 0 … 1)")
+            raise FieldError(("diagram", "s", i), Notice(f"{v:g} is outside the stroke (allowed: "
+                                                         f"0 … 1)", "run_s_outside", v=v))
     if s[0] != 0.0:
-        raise FieldError(("diagram", "s", 0), f"{s[0]:g}: the diagram begins at the head dead "
-                                              f"centre where the cylinder fires (allowed: 0)")
+        raise FieldError(("diagram", "s", 0), Notice(
+            f"{s[0]:g}: the diagram begins at the head dead centre where the cylinder fires "
+            f"(allowed: 0)", "run_diagram_start", s0=s[0]))
 
-    def step(at: int, what: str, p0: float, p1: float) -> None:
-        if abs(p1 - p0) > tol:
-            raise FieldError(("diagram", "p", at), f"steps from p/p_max = {p0:g} to {p1:g} at "
-                             f"s = {s[at]:g}, {what}: the strokes do not meet (a jump of "
-                             f"{abs(p1 - p0):.4g}; allowed: at most join_tolerance = {tol:g})")
+    def step(at: int, end: str, begin: str, p0: float, p1: float, closing: bool = False) -> None:
+        if abs(p1 - p0) > tol:          # closing: the step from the end back to the start
+            raise FieldError(("diagram", "p", at), Notice(
+                f"steps from p/p_max = {p0:g} to {p1:g} at s = {s[at]:g}, where {end} ends and "
+                f"{begin} {'began' if closing else 'begins'}: the strokes do not meet (a jump of "
+                f"{abs(p1 - p0):.4g}; allowed: at most join_tolerance = {tol:g})",
+                "run_diagram_step", p0=p0, p1=p1, at=s[at], end=end, begin=begin,
+                closing=closing, jump=abs(p1 - p0), tol=tol))
 
     out: dict[str, tuple[list, list]] = {}
     i = 0
@@ -278,17 +291,20 @@ def _split_cycle(s: list[float], p: list[float], tol: float) -> dict[str, tuple[
         while k and start + 1 < n and s[start + 1] == s[i]:      # a vertical step
             start += 1
         if start > i:
-            step(start, f"where {STROKE_ORDER[k - 1]} ends and {name} begins", p[i], p[start])
+            step(start, STROKE_ORDER[k - 1], name, p[i], p[start])
         m = start
         while True:
             if m + 1 >= n:
-                raise FieldError(("diagram", "s"), f"ends inside the {name} stroke (allowed: "
-                                 f"s runs 0 → 1 → 0 → 1 → 0 over expansion, exhaust, intake, "
-                                 f"compression)")
+                raise FieldError(("diagram", "s"), Notice(
+                    f"ends inside the {name} stroke (allowed: s runs 0 → 1 → 0 → 1 → 0 over "
+                    f"expansion, exhaust, intake, compression)", "run_diagram_ends_inside",
+                    stroke=name))
             a, b = s[m], s[m + 1]
             if (b <= a) if up else (b >= a):
-                raise FieldError(("diagram", "s", m + 1), f"{b:g} after {a:g}: on the {name} "
-                                 f"stroke s must {'grow' if up else 'fall'} to {target:g}")
+                raise FieldError(("diagram", "s", m + 1), Notice(
+                    f"{b:g} after {a:g}: on the {name} stroke s must "
+                    f"{'grow' if up else 'fall'} to {target:g}", "run_diagram_direction",
+                    b=b, a=a, stroke=name, up=up, target=target))
             m += 1
             if s[m] == target:
                 break
@@ -296,9 +312,10 @@ def _split_cycle(s: list[float], p: list[float], tol: float) -> dict[str, tuple[
         out[name] = (seg_s, seg_p) if up else (seg_s[::-1], seg_p[::-1])
         i = m
     if i != n - 1:
-        raise FieldError(("diagram", "s", i + 1), "goes on after compression closed the cycle "
-                                                  "at s = 0 (allowed: four strokes)")
-    step(n - 1, "where compression ends and expansion began", p[0], p[-1])
+        raise FieldError(("diagram", "s", i + 1), Notice(
+            "goes on after compression closed the cycle at s = 0 (allowed: four strokes)",
+            "run_diagram_goes_on"))
+    step(n - 1, "compression", "expansion", p[0], p[-1], closing=True)
     return out
 
 
@@ -343,38 +360,42 @@ class CylinderSpec(StrictModel):
             given = [k for k in ("s", "towards_head", "away_from_head", "strokes")
                      if getattr(self, k) is not None]
             if given:
-                raise FieldError((given[0],), "give either diagram (one table over the cycle) "
-                                              "or s with its tables, not both")
+                raise FieldError((given[0],), Notice("give either diagram (one table over the "
+                                                     "cycle) or s with its tables, not both",
+                                                     "run_diagram_or_tables"))
             self._loop = _split_cycle(self.diagram.s, self.diagram.p, self.join_tolerance)
             return self
         s = self.s
         if s is None:
-            raise FieldError(("s",), "missing required field (or give diagram: one table over "
-                                     "a four-stroke cycle)")
+            raise FieldError(("s",), Notice("missing required field (or give diagram: one table "
+                                            "over a four-stroke cycle)", "run_s_missing"))
         if len(s) < 2:
-            raise FieldError(("s",), "needs at least 2 values")
+            raise FieldError(("s",), Notice("needs at least 2 values", "run_s_too_short"))
         if any(b <= a for a, b in zip(s, s[1:])):
             raise FieldError(("s",), Notice("must be strictly increasing", "strictly_increasing"))
         if abs(s[0]) > 1e-12 or abs(s[-1] - 1) > 1e-12:
-            raise FieldError(("s",), f"must span [0, 1] (got {s[0]} … {s[-1]})")
+            raise FieldError(("s",), Notice(f"must span [0, 1] (got {s[0]} … {s[-1]})",
+                                            "run_s_span", first=s[0], last=s[-1]))
         two = [k for k in ("towards_head", "away_from_head") if getattr(self, k) is not None]
         if self.strokes is None:
             for key in ("towards_head", "away_from_head"):
                 if key not in two:
-                    raise FieldError((key,), "missing: give towards_head and away_from_head, or "
-                                             "strokes (a four-stroke diagram)")
+                    raise FieldError((key,), Notice("missing: give towards_head and "
+                                                    "away_from_head, or strokes (a four-stroke "
+                                                    "diagram)", "run_two_tables_missing"))
             if self.fires_at_deg is not None:
-                raise FieldError(("fires_at_deg",), "goes with strokes (a four-stroke diagram); "
-                                                    "a two-table cylinder repeats every revolution")
+                raise FieldError(("fires_at_deg",), Notice(
+                    "goes with strokes (a four-stroke diagram); a two-table cylinder repeats "
+                    "every revolution", "run_fires_at_needs_strokes"))
         elif two:
-            raise FieldError((two[0],), "give either towards_head and away_from_head (a "
-                                        "compressor, a two-stroke engine) or strokes (a "
-                                        "four-stroke engine), not both")
+            raise FieldError((two[0],), Notice("give either towards_head and away_from_head (a "
+                                               "compressor, a two-stroke engine) or strokes (a "
+                                               "four-stroke engine), not both",
+                                               "run_two_tables_or_strokes"))
         for key, values in self.tables().items():
             if len(values) != len(s):
                 loc = ("strokes", key) if self.strokes is not None else (key,)
-                raise FieldError(loc, Notice(f"needs {len(s)} values, one per s (got {len(values)})",
-                                              "values_per_s", n=len(s), count=len(values)))
+                raise FieldError(loc, _values_per_s(len(s), len(values)))
         if self.strokes is not None:
             from flywheel.dynamics.loads import stroke_joins
 
@@ -651,8 +672,9 @@ def _check_references(case: Case) -> None:
     if case.tabulated is not None:   # no linkage: masses and loads live in [tabulated]
         for key in ("ground", "dyads", "points", "links", "cylinders", "forces", "couples"):
             if getattr(case, key):
-                raise FieldError((key,), "not allowed with [tabulated]: give masses and loads in "
-                                        "[tabulated] (docs/tabulated.md)")
+                raise FieldError((key,), Notice("not allowed with [tabulated]: give masses and "
+                                                "loads in [tabulated] (docs/tabulated.md)",
+                                                "run_not_with_tabulated"))
         return
     if case.crank.length is None and case.design.mean_piston_speed is None:
         raise FieldError(("crank", "length"), Notice("missing: give crank.length or "
@@ -700,10 +722,8 @@ def _check_references(case: Case) -> None:
                 if p.link in links and p.from_ in points and (p.to is None or p.to in points):
                     for key, q in (("from", p.from_), ("to", p.to)):
                         if q is not None and q not in on[p.link]:
-                            raise FieldError(("points", name, key), f"point {q!r} is not on link "
-                                            f"{p.link} (its points: {', '.join(sorted(on[p.link]))}): "
-                                            f"a point fixed on a link is placed from that link's "
-                                            f"own points")
+                            raise FieldError(("points", name, key),
+                                             _not_on_link(q, p.link, on[p.link], placed=True))
                     new_point(name, ("points", name))
                     on[p.link].add(name)
                     del pending[name]
@@ -715,7 +735,8 @@ def _check_references(case: Case) -> None:
         known(d.from_, ("dyads", i, "from"))
         if isinstance(d, RRPSpec):
             if d.rod_length is None and case.design.rod_to_crank is None:
-                raise FieldError(("dyads", i, "rod_length"), "missing: give rod_length or design.rod_to_crank")
+                raise FieldError(("dyads", i, "rod_length"), Notice(
+                    "missing: give rod_length or design.rod_to_crank", "run_rod_length_missing"))
             new_link(d.rod, ("dyads", i, "rod"))
             new_link(d.slider, ("dyads", i, "slider"))
             new_point(d.joint, ("dyads", i, "joint"))
@@ -750,8 +771,8 @@ def _check_references(case: Case) -> None:
             raise FieldError(("links", name, "centroid"), Notice(
                 f"point {link.centroid!r} is not defined", "point_not_defined", name=link.centroid))
         if link.centroid is not None and link.centroid not in on[name]:
-            raise FieldError(("links", name, "centroid"), f"point {link.centroid!r} is not on link "
-                            f"{name} (its points: {', '.join(sorted(on[name]))})")
+            raise FieldError(("links", name, "centroid"),
+                             _not_on_link(link.centroid, name, on[name]))
     for i, c in enumerate(case.cylinders):
         if c.piston not in sliders:
             raise FieldError(("cylinders", i, "piston"), Notice(
@@ -797,6 +818,15 @@ def _check_references(case: Case) -> None:
         seen.add(n)
 
 
+def _not_on_link(point: str, link: str, its: set[str], placed: bool = False) -> Notice:
+    """The error of a point named on a link that does not carry it; ``placed``: the point is
+    one the case places on that link (``[points]``)."""
+    return Notice(f"point {point!r} is not on link {link} (its points: {', '.join(sorted(its))})"
+                  + (": a point fixed on a link is placed from that link's own points"
+                     if placed else ""), "run_point_not_on_link", point=point, link=link,
+                  points=", ".join(sorted(its)), placed=placed)
+
+
 def _check_pins(case: Case) -> None:
     """Two pins of one crankshaft at the same angle and throw are one point of the plane
     mechanism: they must have one name (rods of an in-line engine's cylinders 1 and 4 share a
@@ -836,15 +866,18 @@ def _check_engine(case: Case) -> None:
     for k, name in enumerate(order):
         loc = ("machine", "firing_order", k)
         if name not in names:
-            raise FieldError(loc, f"no cylinder named {name!r} (four-stroke cylinders: "
-                                  f"{', '.join(four) or 'none'})")
+            raise FieldError(loc, Notice(f"no cylinder named {name!r} (four-stroke cylinders: "
+                                         f"{', '.join(four) or 'none'})", "run_firing_no_cylinder",
+                                         name=name, four=", ".join(four)))
         if not names[name].four_stroke:
-            raise FieldError(loc, f"cylinder {name!r} has no four-stroke diagram (strokes): only "
-                                  f"four-stroke cylinders fire in an order (four-stroke "
-                                  f"cylinders: {', '.join(four) or 'none'})")
+            raise FieldError(loc, Notice(f"cylinder {name!r} has no four-stroke diagram (strokes): "
+                                         f"only four-stroke cylinders fire in an order (four-stroke "
+                                         f"cylinders: {', '.join(four) or 'none'})",
+                                         "run_firing_not_four_stroke", name=name,
+                                         four=", ".join(four)))
         if name in seen:
-            raise FieldError(loc, f"cylinder {name!r} is already in the order (each fires once "
-                                  f"per cycle)")
+            raise FieldError(loc, Notice(f"cylinder {name!r} is already in the order (each fires "
+                                         f"once per cycle)", "run_firing_twice", name=name))
         seen.add(name)
     missing = [n for n in four if n not in seen]
     if missing:
@@ -854,9 +887,10 @@ def _check_engine(case: Case) -> None:
             four=", ".join(four)))
     for i, c in enumerate(case.cylinders):
         if c.fires_at_deg is not None and c.name != order[0]:
-            raise FieldError(("cylinders", i, "fires_at_deg"), f"machine.firing_order sets where "
-                             f"cylinder {c.name!r} fires (allowed: fires_at_deg on the first "
-                             f"cylinder of the order, {order[0]!r}, only)")
+            raise FieldError(("cylinders", i, "fires_at_deg"), Notice(
+                f"machine.firing_order sets where cylinder {c.name!r} fires (allowed: "
+                f"fires_at_deg on the first cylinder of the order, {order[0]!r}, only)",
+                "run_fires_at_with_order", name=c.name, first=order[0]))
 
 
 # -- plausibility: allowed, but a careful engineer would look twice --------------------------------

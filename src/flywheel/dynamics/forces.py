@@ -51,7 +51,7 @@ from typing import Any, Mapping
 import numpy as np
 
 from flywheel.dynamics.reduction import link_inertia
-from flywheel.errors import InputError
+from flywheel.errors import InputError, Notice
 from flywheel.linkage.mechanism import RPR, RRP, RRR, Mechanism
 from flywheel.linkage.solve import Kinematics
 
@@ -337,6 +337,7 @@ def _grid_array(value, n: int, what: str) -> np.ndarray:
     if a.ndim == 0:
         return np.full(n, float(a))
     if a.shape != (n,):
+        # library use only: no CLI input reaches this
         raise InputError(f"force analysis: {what} has shape {a.shape}, the grid has {n} points")
     return a
 
@@ -346,6 +347,7 @@ def _force_array(F, n: int, what: str) -> np.ndarray:
     if a.shape == (2,):
         return np.broadcast_to(a, (n, 2))
     if a.shape != (n, 2):
+        # library use only: no CLI input reaches this
         raise InputError(f"force analysis: {what} has shape {a.shape}, expected (2,) or ({n}, 2)")
     return a
 
@@ -358,12 +360,14 @@ def _motion(kin: Kinematics, omega, eps) -> tuple[np.ndarray, np.ndarray]:
 def _check_names(kin: Kinematics, loads: Loads) -> None:
     def need(kind: str, name: str, table: dict, where: str) -> None:
         if name not in table:
+            # library use only: no CLI input reaches this
             raise InputError(f"force analysis: {where}: no {kind} named {name!r} "
                              f"(allowed: {', '.join(sorted(table))})")
 
     for name, m in loads.masses.items():
         need("link", name, kin.links, "masses")
         if m.mass != 0 and m.centroid is None:
+            # library use only: no CLI input reaches this
             raise InputError(f"force analysis: masses.{name}: a link with mass needs a centroid")
         if m.centroid is not None:
             need("point", m.centroid, kin.points, f"masses.{name}.centroid")
@@ -400,8 +404,9 @@ def _load_list(mech: Mechanism, kin: Kinematics, w: np.ndarray, e: np.ndarray, l
     first-group couple. Weights and inertia loads have no reaction on the frame."""
     _check_names(kin, loads)
     if FRAME in kin.links:
-        raise InputError(f"force analysis: a link is named {FRAME!r}, the name of the frame in "
-                         f"the reactions (allowed: any other name)")
+        raise InputError(Notice(f"force analysis: a link is named {FRAME!r}, the name of the "
+                                f"frame in the reactions (allowed: any other name)",
+                                "run_link_named_frame", frame=FRAME))
     n = kin.phi.size
     inertia = _inertia(mech, kin, w, e, loads)
     g = np.asarray(loads.gravity, float)
@@ -429,6 +434,7 @@ def _load_list(mech: Mechanism, kin: Kinematics, w: np.ndarray, e: np.ndarray, l
 def _singular(bad: np.ndarray, phi: np.ndarray, what: str) -> None:
     if np.any(bad):
         deg = math.degrees(float(phi[np.argmax(bad)]))
+        # library use only: no CLI input reaches this
         raise InputError(f"force analysis: {what} at crank angle φ = {deg:.2f}° (its reactions "
                          f"are indeterminate there: give a grid that avoids this angle)")
 

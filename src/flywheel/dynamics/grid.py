@@ -10,7 +10,7 @@ from dataclasses import replace
 import numpy as np
 
 from flywheel.dynamics import loads
-from flywheel.errors import InputError, Notice
+from flywheel.errors import InputError, Notice, led
 from flywheel.linkage import Kinematics, LinkMotion, PointMotion, solve
 from flywheel.linkage.deadcentres import dead_centres, guide_frame, slider_dyad
 
@@ -89,7 +89,10 @@ def slider_frame(mech, dcs: dict, slider: str, near: str, what: str) -> tuple:
     u, base = guide_frame(d)
     kinds = {dc.kind: dc for dc in dcs[slider]}
     if set(kinds) != {"outer", "inner"}:
-        raise InputError(f"{what} {slider} has no pair of dead centres")
+        lead, sep, role = what.rpartition(": ")        # "cylinders HP: piston"
+        raise InputError(led(lead + sep, Notice(
+            f"{role} {slider} has no pair of dead centres", "run_no_dead_centres", role=role,
+            slider=slider)))
     a, b = kinds["outer"], kinds["inner"]
     return (d, u, base, a, b) if near == "outer" else (d, u, base, b, a)
 

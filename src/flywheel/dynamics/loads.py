@@ -56,6 +56,7 @@ def interpolate_table(s: np.ndarray, p: np.ndarray, sq: np.ndarray, method: str)
         return PchipInterpolator(s, p)(sq)
     if method == "natural-spline":
         return natural_spline(s, p, sq)
+    # library use only: no CLI input reaches this
     raise ValueError(f"unknown interpolation {method!r}")
 
 

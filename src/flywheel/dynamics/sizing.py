@@ -187,12 +187,14 @@ def design_rim(J: float, omega: float, density: float, allowable_stress: float, 
     from flywheel.errors import InputError, Notice
 
     if not 0.0 < share <= 1.0:
+        # library use only: no CLI input reaches this
         raise InputError(f"flywheel.rim.share: {share:g} is not a share (allowed: 0 < share ≤ 1)")
     v_max = rim_speed_limit(allowable_stress, density)
     if speed is None:
         v, speed_from = v_max, "allowable stress"
     else:
         if density * speed ** 2 > allowable_stress * (1 + 1e-12):
+            # library use only: no CLI input reaches this
             raise InputError(
                 f"flywheel.rim.speed: {speed:g} m/s gives the hoop stress ρ·v² = "
                 f"{density * speed ** 2 / 1e6:.6g} MPa above the allowable "

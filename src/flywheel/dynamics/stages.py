@@ -171,6 +171,12 @@ def size_flywheel(phi: np.ndarray, en: EnergyResult, red: ReductionResult, machi
         J_flywheel_given=None if J_given is None else float(J_given), warnings=tuple(warnings))
 
 
+def _overflow() -> Notice:
+    """The error of results beyond double precision."""
+    return Notice("the results overflow: the case's values are out of range (allowed: SI units, "
+                  "m, kg, N, Pa)", "run_overflow")
+
+
 def true_motion(phi: np.ndarray, en: EnergyResult, red: ReductionResult,
                 sz: SizingResult) -> MotionResult:
     """ω(φ), ε(φ), t(φ) with J_I = max(J_required, J_first_group) on the crank shaft, and ω(φ)
@@ -179,16 +185,18 @@ def true_motion(phi: np.ndarray, en: EnergyResult, red: ReductionResult,
     A, J_II = en.A, red.J_II
     J_I = max(sz.J_required, sz.J_first_group)            # what is really on the crank shaft
     if not J_I + float(J_II.min()) > 0:
-        raise InputError("the machine has no inertia: the loads cause no fluctuation of energy "
-                         "(ΔT_нб = 0, so no flywheel is sized), no link carries mass and nothing "
-                         "is on the crank shaft, so ω(φ) is undefined (allowed: masses in [links] "
-                         "or machine.first_group)")
+        raise InputError(Notice("the machine has no inertia: the loads cause no fluctuation of "
+                                "energy (ΔT_нб = 0, so no flywheel is sized), no link carries "
+                                "mass and nothing is on the crank shaft, so ω(φ) is undefined "
+                                "(allowed: masses in [links] or machine.first_group)",
+                                "run_no_inertia"))
     if not all(np.isfinite(x) for x in (J_I, en.delta_T_max, float(np.max(np.abs(J_II))),
                                           float(np.max(np.abs(A))))):
-        raise InputError("the results overflow: the case's values are out of range (allowed: SI "
-                         "units, m, kg, N, Pa)")
+        raise InputError(_overflow())
     T0 = motion.T0_for_mean_speed(A, J_I, J_II, sz.omega_mean)
     omega = motion.omega_from_energy(T0, A, J_I, J_II)
+    if not np.all(np.isfinite(omega)):    # finite energies, but ½·J·ω² beyond double precision
+        raise InputError(_overflow())
     w_max, w_min, _, delta_ach = motion.speed_fluctuation(omega)
     eps = motion.angular_acceleration(en.M_sum, omega, J_I + J_II, red.dJ_II)
     t = motion.time_law(omega, phi)
@@ -239,8 +247,8 @@ def given_flywheel_delta(en: EnergyResult, red: ReductionResult, machine, J_give
     inertia at all."""
     J_I = float(sum(machine.first_group.values())) + J_given * speed_ratio ** 2
     if not J_I + float(red.J_II.min()) > 0:
-        raise InputError("the machine has no inertia (allowed: a flywheel.J > 0, masses in "
-                         "[links] or machine.first_group)")
+        raise InputError(Notice("the machine has no inertia (allowed: a flywheel.J > 0, masses "
+                                "in [links] or machine.first_group)", "run_given_no_inertia"))
     T0 = motion.T0_for_mean_speed(en.A, J_I, red.J_II, machine.omega_mean)
     _, _, wm, delta = motion.speed_fluctuation(motion.omega_from_energy(T0, en.A, J_I, red.J_II))
     if not abs(wm - machine.omega_mean) <= 1e-6 * machine.omega_mean:
@@ -262,17 +270,20 @@ def dynamics(phi: np.ndarray, loads: LoadsResult, red: ReductionResult, machine,
     """Energy → sizing → motion → rim speeds: everything that follows from the loads and J_II.
     A given flywheel (``fw.given_J``) is not sized: its δ comes from the motion
     (:func:`given_flywheel_delta`)."""
-    en = work_and_energy(phi, loads, red, machine)
-    J_given = getattr(fw, "given_J", None)
-    if J_given is None:
-        sz = size_flywheel(phi, en, red, machine, fw)
-    else:
-        delta = given_flywheel_delta(en, red, machine, J_given, fw.speed_ratio)
-        if not 0 < delta < 2:
-            raise InputError(f"the given flywheel (J = {J_given:.6g} kg·m²) is too small: the "
-                             f"speed fluctuates by δ = {delta:.6g} (allowed: a larger flywheel.J)")
-        sz = size_flywheel(phi, en, red, machine, fw, delta=delta, J_given=J_given)
-    mo = true_motion(phi, en, red, sz)
+    with np.errstate(over="ignore", invalid="ignore"):  # an overflow: true_motion's one line
+        en = work_and_energy(phi, loads, red, machine)
+        J_given = getattr(fw, "given_J", None)
+        if J_given is None:
+            sz = size_flywheel(phi, en, red, machine, fw)
+        else:
+            delta = given_flywheel_delta(en, red, machine, J_given, fw.speed_ratio)
+            if not 0 < delta < 2:
+                raise InputError(Notice(
+                    f"the given flywheel (J = {J_given:.6g} kg·m²) is too small: the speed "
+                    f"fluctuates by δ = {delta:.6g} (allowed: a larger flywheel.J)",
+                    "run_given_delta", J=J_given, delta=delta))
+            sz = size_flywheel(phi, en, red, machine, fw, delta=delta, J_given=J_given)
+        mo = true_motion(phi, en, red, sz)
     return en, with_rim_speeds(sz, mo, fw), mo
 
 
@@ -300,6 +311,7 @@ def force_analysis(phi: np.ndarray, red: ReductionResult, en: EnergyResult, mo: 
     from flywheel.dynamics import forces as fo
 
     if motion not in MOTIONS:
+        # library use only: no CLI input reaches this
         raise InputError(f"force analysis: motion {motion!r} (allowed: {', '.join(MOTIONS)})")
     true_w, true_e = mo.omega, mo.epsilon
     if motion == "true":

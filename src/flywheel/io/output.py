@@ -33,6 +33,13 @@ _PID = ".flywheel-writer-pid"          # inside a temporary folder while it is b
 _WRITTEN_BY = "flywheel"
 
 
+def cannot_write(option: str, path, exc: OSError) -> Notice:
+    """The error of a file or folder the system refuses to write (``exc.strerror``, the
+    system's own words; its errno lets a renderer say them in another language)."""
+    return Notice(f"{option} {path}: cannot be written ({exc.strerror})", "run_cannot_write",
+                  option=option, path=str(path), reason=exc.strerror, errno=exc.errno)
+
+
 def _sha256(path: Path) -> str:
     h = hashlib.sha256()
     with open(path, "rb") as f:
@@ -177,10 +184,14 @@ def write_folder(target: Path, build, marker: str, kind: str = "output",
     folder flywheel did not write.
     """
     target = Path(target)
-    for p in (target, *target.parents):
-        if p.exists() and not p.is_dir():
-            raise InputError(Notice(f"--out {target}: {p} is a file, not a folder",
-                                    "out_is_a_file", target=str(target), file=str(p)))
+    try:                                    # a name too long for the system: no stat at all
+        a_file = next((p for p in (target, *target.parents) if p.exists() and not p.is_dir()),
+                      None)
+    except OSError as exc:
+        raise InputError(cannot_write("--out", target, exc)) from None
+    if a_file is not None:
+        raise InputError(Notice(f"--out {target}: {a_file} is a file, not a folder",
+                                "out_is_a_file", target=str(target), file=str(a_file)))
     earlier: _Earlier | None = None
     if target.is_dir() and any(target.iterdir()):
         earlier = _read_manifest(target, kind)
@@ -199,7 +210,7 @@ def write_folder(target: Path, build, marker: str, kind: str = "output",
         remove_stale_temporaries(parent, target.name)
         tmp = Path(tempfile.mkdtemp(prefix=f".{target.name}.tmp-", dir=parent))
     except OSError as exc:
-        raise InputError(f"--out {target}: cannot be written ({exc.strerror})") from None
+        raise InputError(cannot_write("--out", target, exc)) from None
     try:
         (tmp / _PID).write_text(str(os.getpid()), encoding="ascii")
         build(tmp)
@@ -219,7 +230,7 @@ def write_folder(target: Path, build, marker: str, kind: str = "output",
                 shutil.rmtree(tmp, ignore_errors=True)
     except OSError as exc:
         shutil.rmtree(tmp, ignore_errors=True)
-        raise InputError(f"--out {target}: cannot be written ({exc.strerror})") from None
+        raise InputError(cannot_write("--out", target, exc)) from None
     except BaseException:
         shutil.rmtree(tmp, ignore_errors=True)
         raise
@@ -241,7 +252,9 @@ def _merge(tmp: Path, target: Path, earlier: _Earlier, new: dict[str, str], mani
         dst = target / rel
         dst.parent.mkdir(parents=True, exist_ok=True)
         if dst.is_dir():
-            raise InputError(f"--out {target}: {rel} is a folder, where flywheel writes a file")
+            raise InputError(Notice(f"--out {target}: {rel} is a folder, where flywheel writes a "
+                                    f"file", "run_out_folder_in_the_way", target=str(target),
+                                    rel=rel))
         os.replace(tmp / rel, dst)
     for rel in sorted(set(earlier.files) - set(new)):
         p = target / rel
@@ -272,7 +285,11 @@ def write_file(path: Path, text: str, option: str = "--out", expected: str = "a 
     renamed into place. Raises InputError naming ``option`` if ``path`` is a folder or cannot
     be written."""
     path = Path(path)
-    if path.is_dir():
+    try:
+        is_dir = path.is_dir()
+    except OSError as exc:                  # a name too long for the system
+        raise InputError(cannot_write(option, path, exc)) from None
+    if is_dir:
         raise InputError(Notice(f"{option} {path}: is a folder, expected {expected}",
                                 "option_is_a_folder", option=option, path=str(path),
                                 expected=expected))
@@ -287,7 +304,7 @@ def write_file(path: Path, text: str, option: str = "--out", expected: str = "a 
     except OSError as exc:
         if tmp is not None and os.path.exists(tmp):
             os.unlink(tmp)
-        raise InputError(f"{option} {path}: cannot be written ({exc.strerror})") from None
+        raise InputError(cannot_write(option, path, exc)) from None
     except BaseException:
         if tmp is not None and os.path.exists(tmp):
             os.unlink(tmp)

@@ -24,7 +24,9 @@ def read_toml(path, what: str = "a TOML case file") -> dict:
                                    "not_utf8", path=str(path), reason=exc.reason,
                                    byte=exc.start)) from None
     except OSError as exc:
-        raise CaseFileError(f"{path}: cannot be read ({exc.strerror})") from None
+        raise CaseFileError(Notice(f"{path}: cannot be read ({exc.strerror})", "run_cannot_read",
+                                   path=str(path), reason=exc.strerror,
+                                   errno=exc.errno)) from None
     try:
         return tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:

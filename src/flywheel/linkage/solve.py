@@ -360,6 +360,7 @@ def solve(mech: Mechanism, phi: np.ndarray) -> Kinematics:
     """
     phi = np.atleast_1d(np.asarray(phi, dtype=float))   # a single angle is a grid of one
     if phi.ndim != 1:
+        # library use only: no CLI input reaches this
         raise ValueError(f"phi must be a 1-D grid of crank angles, got shape {phi.shape}")
     points: dict[str, PointMotion] = {}
     links: dict[str, LinkMotion] = {}
@@ -388,5 +389,6 @@ def solve(mech: Mechanism, phi: np.ndarray) -> Kinematics:
     place_ready()
     if pending:
         p = pending[0]
+        # library use only: no CLI input reaches this
         raise AssemblyError(f"point {p.name} on link {p.link} needs points or links that are never defined")
     return Kinematics(phi, points, links)

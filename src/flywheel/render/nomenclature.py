@@ -2235,3 +2235,118 @@ def _msgs_task2_ru_params(code: str, p: dict) -> dict:
 
 _PARAM_HOOKS.append(_msgs_task2_ru_params)
 _MSGS_DERIVED |= {"t2_which_gen", "t2_balance_why", "t2_python_ru"}
+
+
+# --- msgs_run ---
+# The run case's cylinders, points and firing order, the dynamics' and the force analysis's
+# errors, files that cannot be read or written (cases/run.py, dynamics/*.py, io/*.py) in Russian.
+MESSAGES_RU.update({
+    # cases/run.py: [points]
+    "run_point_fraction_with_distance": "`fraction` и `across` задаются с `to`, а не с `distance`",
+    "run_point_angle_with_to": "`angle_deg` задаётся с `distance`, а не с `to`",
+    "run_point_not_on_link": "точка {point!r} не лежит на звене {link} (его точки: {points}){placed_ru}",
+    "run_rod_length_missing": "не задано: укажите rod_length или design.rod_to_crank",
+    "run_not_with_tabulated": ("не допускается вместе с [tabulated]: задайте массы и нагрузки в "
+                               "[tabulated] (docs/tabulated.md)"),
+    # cases/run.py: [[cylinders]], a four-stroke diagram over the cycle
+    "run_diagram_too_short": "нужно не меньше 5 значений (0, 1, 0, 1, 0: четыре такта)",
+    "run_s_outside": "{v:g} выходит за пределы хода (допустимо: 0 … 1)",
+    "run_diagram_start": ("{s0:g}: диаграмма начинается в верхней мёртвой точке, где происходит "
+                          "вспышка в цилиндре (допустимо: 0)"),
+    "run_diagram_step": ("p/p_max меняется скачком с {p0:g} до {p1:g} при s = {at:g}, где такт "
+                         "{end_ru} кончается, а такт {begin_ru} {begins_ru}: такты не смыкаются "
+                         "(скачок {jump:.4g}; допустимо: не больше join_tolerance = {tol:g})"),
+    "run_diagram_ends_inside": ("обрывается внутри такта {stroke_ru} (допустимо: s проходит "
+                                "0 → 1 → 0 → 1 → 0 за такты расширения, выпуска, впуска и "
+                                "сжатия)"),
+    "run_diagram_direction": "{b:g} после {a:g}: на такте {stroke_ru} s должно {way_ru} до {target:g}",
+    "run_diagram_goes_on": ("продолжается после того, как такт сжатия замкнул цикл при s = 0 "
+                            "(допустимо: четыре такта)"),
+    "run_diagram_or_tables": ("задайте что-то одно: diagram (одна таблица на весь цикл) или s с "
+                              "её таблицами"),
+    "run_s_missing": ("не задано обязательное поле (или задайте diagram: одну таблицу на весь "
+                      "четырёхтактный цикл)"),
+    "run_s_too_short": "нужно не меньше 2 значений",
+    "run_s_span": "должно охватывать [0, 1] (задано {first} … {last})",
+    "run_two_tables_missing": ("не задано: укажите towards_head и away_from_head или strokes "
+                               "(четырёхтактную диаграмму)"),
+    "run_fires_at_needs_strokes": ("задаётся только со strokes (четырёхтактной диаграммой): "
+                                   "цилиндр с двумя таблицами повторяет цикл каждый оборот"),
+    "run_two_tables_or_strokes": ("задайте что-то одно: towards_head и away_from_head "
+                                  "(компрессор, двухтактный двигатель) или strokes "
+                                  "(четырёхтактный двигатель)"),
+    # cases/run.py, dynamics/engine.py, dynamics/grid.py: the firing order, the dead centres
+    "run_firing_no_cylinder": "нет цилиндра {name!r} (четырёхтактные цилиндры: {four_ru})",
+    "run_firing_not_four_stroke": ("у цилиндра {name!r} нет четырёхтактной диаграммы (strokes): "
+                                   "в порядке работы участвуют только четырёхтактные цилиндры "
+                                   "(четырёхтактные цилиндры: {four_ru})"),
+    "run_firing_twice": ("цилиндр {name!r} уже есть в порядке работы (каждый срабатывает один "
+                         "раз за цикл)"),
+    "run_fires_at_with_order": ("machine.firing_order задаёт, где срабатывает цилиндр {name!r} "
+                                "(допустимо: fires_at_deg только у первого цилиндра порядка, "
+                                "{first!r})"),
+    "run_fires_far": ("{deg:g}° отстоит на {gap:.4g}° от ближайшей верхней мёртвой точки поршня "
+                      "{piston} ({h1}, {h2}): вспышка в цилиндре происходит в верхней мёртвой "
+                      "точке (допустимо: не дальше 90° от неё)"),
+    "run_no_dead_centres": "у {role_ru} {slider} нет пары мёртвых положений",
+    # dynamics/forces.py, dynamics/stages.py
+    "run_link_named_frame": ("силовой анализ: звено названо {frame!r}, а это имя стойки в "
+                             "реакциях (допустимо: любое другое имя)"),
+    "run_no_inertia": ("у машины нет инерции: нагрузки не вызывают колебаний энергии (ΔT_нб = 0, "
+                       "поэтому маховик не подбирается), ни одно звено не имеет массы и на валу "
+                       "кривошипа ничего нет, так что ω(φ) не определена (допустимо: массы в "
+                       "[links] или machine.first_group)"),
+    "run_overflow": ("результаты переполняются: значения случая вне допустимого диапазона "
+                     "(допустимо: единицы СИ — м, кг, Н, Па)"),
+    "run_given_no_inertia": ("у машины нет инерции (допустимо: flywheel.J > 0, массы в [links] "
+                             "или machine.first_group)"),
+    "run_given_delta": ("заданный маховик (J = {J:.6g} кг·м²) слишком мал: коэффициент "
+                        "неравномерности хода δ = {delta:.6g} (допустимо: больший flywheel.J)"),
+    # io/output.py, io/toml.py: the system's refusal (its words by errno, else as it said them)
+    "run_cannot_write": "{option} {path}: не удаётся записать ({reason_ru})",
+    "run_cannot_read": "{path}: не удаётся прочитать ({reason_ru})",
+    "run_out_folder_in_the_way": "--out {target}: {rel} — папка, а flywheel записывает туда файл",
+})
+#: the strokes of a four-stroke cycle in the genitive («такт расширения»)
+_STROKES_RU = {"expansion": "расширения", "exhaust": "выпуска", "intake": "впуска",
+               "compression": "сжатия"}
+#: what a slider is to the load on it, in the genitive («у поршня 3»)
+_ROLES_RU = {"piston": "поршня", "slider": "ползуна"}
+#: the system's reasons (OSError.strerror) by errno
+_OS_REASONS_RU = {"ENOENT": "нет такого файла или папки", "EACCES": "нет доступа",
+                  "EPERM": "операция не разрешена", "ENOTDIR": "часть пути — не папка",
+                  "EISDIR": "это папка", "ENAMETOOLONG": "слишком длинное имя файла",
+                  "EROFS": "файловая система только для чтения",
+                  "ENOSPC": "на устройстве нет места", "EDQUOT": "превышена дисковая квота",
+                  "EEXIST": "файл уже существует", "EIO": "ошибка ввода-вывода",
+                  "ELOOP": "слишком много символических ссылок", "EBUSY": "устройство занято",
+                  "ETXTBSY": "файл занят", "EINVAL": "недопустимый аргумент",
+                  "EFBIG": "файл слишком велик", "EMFILE": "открыто слишком много файлов"}
+
+
+def _msgs_run_ru_params(code: str, p: dict) -> dict:
+    """The Russian words of the msgs_run errors' parameters."""
+    if code == "run_point_not_on_link":
+        p["placed_ru"] = (": точка, закреплённая на звене, строится по точкам самого этого звена"
+                          if p["placed"] else "")
+    if code == "run_diagram_step":
+        p["end_ru"], p["begin_ru"] = _STROKES_RU[p["end"]], _STROKES_RU[p["begin"]]
+        p["begins_ru"] = "начинался" if p["closing"] else "начинается"
+    if code in ("run_diagram_ends_inside", "run_diagram_direction"):
+        p["stroke_ru"] = _STROKES_RU[p["stroke"]]
+    if code == "run_diagram_direction":
+        p["way_ru"] = "расти" if p["up"] else "убывать"
+    if code in ("run_firing_no_cylinder", "run_firing_not_four_stroke"):
+        p["four_ru"] = p["four"] or "нет"
+    if code == "run_no_dead_centres":
+        p["role_ru"] = _ROLES_RU.get(p["role"], p["role"])
+    if code in ("run_cannot_write", "run_cannot_read"):
+        import errno as _errno
+
+        p["reason_ru"] = _OS_REASONS_RU.get(_errno.errorcode.get(p["errno"], ""), p["reason"])
+    return p
+
+
+_PARAM_HOOKS.append(_msgs_run_ru_params)
+_MSGS_DERIVED |= {"placed_ru", "end_ru", "begin_ru", "begins_ru", "stroke_ru", "way_ru",
+                  "four_ru", "role_ru", "reason_ru"}
