@@ -583,6 +583,8 @@ RUSSIAN_ERRORS.update({
     "run/tabulated-masses-overflow": ["результаты переполняются"],
     "run/case-path-through-a-file": ["не удаётся прочитать (часть пути — не папка)"],
     "run/out-name-too-long": ["не удаётся записать (слишком длинное имя файла)"],
+    "grade/out-name-too-long": ["не удаётся записать (слишком длинное имя файла)"],
+    "grade/gradebook-name-too-long": ["не удаётся записать (слишком длинное имя файла)"],
     "run/out-a-folder-where-a-file-goes": ["forces.csv — папка, а flywheel записывает туда файл"],
 })
 # English words that must not be left in a translated line (names the user gave aside)

@@ -85,7 +85,7 @@ def variants_command(
                              f"{message(why, lang)}\n")
 
         def extra(folder):
-            with Progress(TextColumn("sheets"), BarColumn(), MofNCompleteColumn(),
+            with Progress(TextColumn(stage_name("sheets", lang)), BarColumn(), MofNCompleteColumn(),
                           console=console, transient=True, disable=not console.is_terminal) as b:
                 t = b.add_task("sheets", total=len(pages))
                 write_sheets(pages, folder, lang, sheets_format,
@@ -126,13 +126,20 @@ def grade_command(
     from flywheel.cli.guard import _guard, check_lang, choice, fail
     from flywheel.errors import Notice
     from flywheel.io.output import write_file
+    from flywheel.render.nomenclature import stage_name
     from flywheel.teaching.grading import grade, load_key, report_csv, report_dict
 
     check_lang(lang)
     if csv_style not in ("plain", "excel-ru"):
         fail(choice("--csv", csv_style, "a CSV dialect", "plain, excel-ru"))
+    def is_dir(path: Path) -> bool:         # a name too long for the system is no folder:
+        try:                                # write_file says it cannot be written
+            return path.is_dir()
+        except OSError:
+            return False
+
     for option, path in (("--out", out), ("--gradebook", gradebook)):
-        if path is not None and not path.is_dir() and not path.parent.is_dir():
+        if path is not None and not is_dir(path) and not is_dir(path.parent):
             fail(Notice(f"{option} {path}: the folder {path.parent} does not exist (allowed: a "
                         "CSV file name in an existing folder)", "csv_folder_missing",
                         option=option, path=str(path), parent=str(path.parent)))
@@ -143,7 +150,7 @@ def grade_command(
     console = Console(stderr=True)
 
     def grade_with_bar():               # the bar is gone before an error line is printed
-        with Progress(TextColumn("sheets"), BarColumn(), MofNCompleteColumn(), console=console,
+        with Progress(TextColumn(stage_name("sheets", lang)), BarColumn(), MofNCompleteColumn(), console=console,
                       transient=True, disable=not console.is_terminal) as bar:
             task = bar.add_task("sheets", total=None)
             return grade(k, answers, tolerance,
