@@ -139,3 +139,31 @@ def test_khurmi_16_14_rim_of_the_fluctuation():
     assert rim.mass == pytest.approx(m, rel=1e-13)
     assert rim.thickness == pytest.approx(t, rel=1e-13) and math.floor(t * 1000) == 84
     assert rim.width == pytest.approx(5 * t, rel=1e-13) and math.floor(5 * t * 1000) == 424
+
+
+@pytest.mark.parametrize("rim", [{}, {"width": 0.05}])
+def test_a_hoop_thin_rim_is_warned_with_the_speed_that_makes_it_a_rim(rim):
+    """The press (n = 1 rev/s) with the default rim speed √(σ/ρ): a rim 2 mm thick on 6.9 m
+    (t/D ≈ 3e-4) is warned about; the hint's rim speed, given back, gives t/D = 0.05 exactly
+    (design_rim's own scaling t/D ∝ D^(−5/2) for b = ratio·t, ∝ D⁻⁴ for a given width)."""
+    from flywheel.dynamics.sizing import THIN_RIM_AIM, rim_speed_for_thickness
+
+    data = read_toml(CASES / "press.toml")
+    data.setdefault("flywheel", {})["rim"] = dict(rim)
+    res = analyze(parse_case(data, "c.toml"), n_points=360)
+    d = res.sizing.rim_design
+    assert d.thickness / d.D_mean < 0.01
+    (w,) = [w for w in res.warnings if getattr(w, "code", "") == "rim_thin"]
+    v_aim = rim_speed_for_thickness(d)
+    assert f"about {v_aim:.3g} m/s gives t/D = 0.05" in w
+    data["flywheel"]["rim"] = dict(rim, speed=v_aim)
+    again = analyze(parse_case(data, "c.toml"), n_points=360)
+    d2 = again.sizing.rim_design
+    assert d2.thickness / d2.D_mean == pytest.approx(THIN_RIM_AIM, rel=1e-12)
+    assert not [w for w in again.warnings if getattr(w, "code", "") == "rim_thin"]
+    # the in-line four's rim (t/D ≈ 0.031 at 3000 rpm) is a rim: no warning
+    data = read_toml(CASES / "engine_inline4.toml")
+    data["flywheel"]["rim"] = {}
+    ok = analyze(parse_case(data, "c.toml"), n_points=720)
+    assert 0.01 < ok.sizing.rim_design.thickness / ok.sizing.rim_design.D_mean
+    assert not [w for w in ok.warnings if getattr(w, "code", "") == "rim_thin"]

@@ -148,6 +148,7 @@ class RimDesign:
     J_rim: float                 # thin ring m·R² = share·J [kg·m²]
     J_rim_exact: float           # thick annulus m·(R² + t²/4) [kg·m²]
     stress_at_omega_max: float | None = None   # ρ·(ω_max·R)² after the motion [Pa]
+    width_given: bool = False    # b given (flywheel.rim.width), not b = ratio·t
 
     def as_dict(self) -> dict:
         """summary.json's results.flywheel_rim (and ``task2 --json``'s flywheel_rim): the
@@ -162,6 +163,33 @@ class RimDesign:
         if self.stress_at_omega_max is not None:
             out["stress_at_omega_max"] = self.stress_at_omega_max
         return out
+
+
+#: t/D_mean below which a designed rim is too thin to make (a plausibility bound of flywheel's:
+#: a rolled or cast rim of 1 % of its diameter is a hoop, no flywheel), and the t/D_mean the
+#: hint's rim speed gives
+THIN_RIM = 0.01
+THIN_RIM_AIM = 0.05
+
+
+def rim_speed_for_thickness(rim: RimDesign, aim: float = THIN_RIM_AIM) -> float:
+    """The rim speed [m/s] at which :func:`design_rim`'s rim (same J, share, ω, ρ and the same
+    width rule) comes out with t/D_mean = ``aim``.
+
+    From design_rim's own relations, with D = 2·v/ω and m = share·J/R² ∝ D⁻²: for b = ratio·t,
+    t = √(m/(π·D·ratio·ρ)) ∝ D^(−3/2), so t/D ∝ D^(−5/2); for a given width b,
+    t = m/(π·D·b·ρ) ∝ D⁻³, so t/D ∝ D⁻⁴. Hence v_aim = v·((t/D)/aim)^(1/k), k = 5/2 or 4.
+
+    >>> r = design_rim(100.0, 5.0, 7200.0, 7e6, share=1.0, width_to_thickness=2.0)
+    >>> round(r.thickness / r.D_mean, 5), round(r.D_mean, 3)   # a hoop 12.5 m across
+    (0.00017, 12.472)
+    >>> v = rim_speed_for_thickness(r, 0.05)
+    >>> s = design_rim(100.0, 5.0, 7200.0, 7e6, share=1.0, speed=v, width_to_thickness=2.0)
+    >>> round(s.thickness / s.D_mean, 12), round(s.D_mean, 3)
+    (0.05, 1.287)
+    """
+    k = 4.0 if rim.width_given else 2.5
+    return rim.rim_speed * (rim.thickness / rim.D_mean / aim) ** (1.0 / k)
 
 
 def design_rim(J: float, omega: float, density: float, allowable_stress: float, *,
@@ -220,4 +248,5 @@ def design_rim(J: float, omega: float, density: float, allowable_stress: float, 
     return RimDesign(J=float(J), share=float(share), omega=float(omega), density=float(density),
                      allowable_stress=float(allowable_stress), speed_from=speed_from,
                      D_mean=D, rim_speed=v, stress=density * v ** 2, mass=m, thickness=t,
-                     width=b, J_rim=m * R ** 2, J_rim_exact=m * (R ** 2 + t ** 2 / 4))
+                     width=b, J_rim=m * R ** 2, J_rim_exact=m * (R ** 2 + t ** 2 / 4),
+                     width_given=width is not None)

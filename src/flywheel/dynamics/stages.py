@@ -235,6 +235,20 @@ def with_rim_speeds(sz: SizingResult, mo: MotionResult, fw) -> SizingResult:
     if designed is not None:          # its hoop stress at ω_max, ρ·(ω_max·i·D_mean/2)²
         v_top = mo.omega_max * sz.speed_ratio * designed.D_mean / 2
         designed = replace(designed, stress_at_omega_max=designed.density * v_top ** 2)
+        ratio = designed.thickness / designed.D_mean
+        if ratio < sizing.THIN_RIM:
+            v_aim = sizing.rim_speed_for_thickness(designed)
+            warnings.append(Notice(
+                f"flywheel.rim: the designed rim is {designed.thickness * 1e3:.3g} mm thick on a "
+                f"mean diameter of {designed.D_mean:.4g} m (t/D = {ratio:.2g}, below "
+                f"{sizing.THIN_RIM:g}): a hoop, not a flywheel rim; its rim speed "
+                f"{designed.rim_speed:.4g} m/s ("
+                f"{'given' if designed.speed_from == 'given' else 'the largest the allowable stress allows'}"
+                f") is too high for a shaft this slow: give flywheel.rim.speed (about "
+                f"{v_aim:.3g} m/s gives "
+                f"t/D = {sizing.THIN_RIM_AIM:g})", "rim_thin", t_mm=designed.thickness * 1e3,
+                D=designed.D_mean, ratio=ratio, least=sizing.THIN_RIM, v=designed.rim_speed,
+                given=designed.speed_from == "given", v_aim=v_aim, aim=sizing.THIN_RIM_AIM))
     return replace(sz, disk=shapes["disk"], rim=shapes["rim"], rim_design=designed,
                    warnings=tuple(warnings))
 

@@ -2351,3 +2351,22 @@ def _msgs_run_ru_params(code: str, p: dict) -> dict:
 _PARAM_HOOKS.append(_msgs_run_ru_params)
 _MSGS_DERIVED |= {"placed_ru", "end_ru", "begin_ru", "begins_ru", "stroke_ru", "way_ru",
                   "four_ru", "role_ru", "reason_ru"}
+
+
+# --- msgs_rim ---
+# The designed rim's plausibility warning (dynamics/stages.py with_rim_speeds) in Russian.
+MESSAGES_RU["rim_thin"] = (
+    "flywheel.rim: спроектированный обод толщиной {t_mm:.3g} мм при среднем диаметре {D:.4g} м "
+    "(t/D = {ratio:.2g}, меньше {least:g}) — обруч, а не обод маховика; его окружная скорость "
+    "{v:.4g} м/с ({from_ru}) слишком велика для такого медленного вала: задайте "
+    "flywheel.rim.speed (около {v_aim:.3g} м/с даёт t/D = {aim:g})")
+_MSGS_DERIVED |= {"from_ru"}
+
+
+def _msgs_rim_ru_params(code: str, p: dict) -> dict:
+    if code == "rim_thin":
+        p["from_ru"] = "задана" if p["given"] else "наибольшая, какую допускает напряжение"
+    return p
+
+
+_PARAM_HOOKS.append(_msgs_rim_ru_params)
