@@ -922,6 +922,12 @@ def test_the_progress_bar_names_its_stages_in_the_users_language():
     for st in stages:
         assert nm.stage_name(st, "en") == st and re.search("[а-я]", nm.stage_name(st, "ru")), st
     assert nm.stage_name("anything", "ru") == "anything"
+    # the teaching commands' bars: every stage they name is in the table, English as before
+    named = re.findall(r'stage_name\("([^"]+)", lang\)',
+                       (SRC / "cli" / "teaching.py").read_text(encoding="utf-8"))
+    assert set(named) == {"variants", "task sheets", "answer sheets"}
+    assert [nm.stage_name(n) for n in named] == ["variants", "sheets", "sheets"]
+    assert all(re.search("[а-я]", nm.stage_name(n, "ru")) for n in named)
 
 
 # every user error is a Notice: a raise of a FlywheelError, a FieldError or a validator's

@@ -56,6 +56,8 @@ def variants_command(
     from rich.console import Console
     from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn
 
+    from flywheel.render.nomenclature import stage_name
+
     from flywheel.render.grading import print_variants
     from flywheel.render.nomenclature import message, prefix
     from flywheel.teaching.variants import generate, load_template, write_variants
@@ -66,7 +68,7 @@ def variants_command(
     console = Console(stderr=True)
 
     def generate_with_bar():            # the bar is gone before an error line is printed
-        with Progress(TextColumn("variants"), BarColumn(), MofNCompleteColumn(), console=console,
+        with Progress(TextColumn(stage_name("variants", lang)), BarColumn(), MofNCompleteColumn(), console=console,
                       transient=True, disable=not console.is_terminal) as bar:
             task = bar.add_task("variants", total=count)
             return generate(t, count, seed, points, lambda i: bar.update(task, completed=i))
@@ -85,7 +87,7 @@ def variants_command(
                              f"{message(why, lang)}\n")
 
         def extra(folder):
-            with Progress(TextColumn(stage_name("sheets", lang)), BarColumn(), MofNCompleteColumn(),
+            with Progress(TextColumn(stage_name("task sheets", lang)), BarColumn(), MofNCompleteColumn(),
                           console=console, transient=True, disable=not console.is_terminal) as b:
                 t = b.add_task("sheets", total=len(pages))
                 write_sheets(pages, folder, lang, sheets_format,
@@ -150,8 +152,9 @@ def grade_command(
     console = Console(stderr=True)
 
     def grade_with_bar():               # the bar is gone before an error line is printed
-        with Progress(TextColumn(stage_name("sheets", lang)), BarColumn(), MofNCompleteColumn(), console=console,
-                      transient=True, disable=not console.is_terminal) as bar:
+        with Progress(TextColumn(stage_name("answer sheets", lang)), BarColumn(),
+                      MofNCompleteColumn(), console=console, transient=True,
+                      disable=not console.is_terminal) as bar:
             task = bar.add_task("sheets", total=None)
             return grade(k, answers, tolerance,
                          lambda done, total: bar.update(task, completed=done, total=total))

@@ -1703,7 +1703,8 @@ _PARAM_HOOKS.append(_msgs_tabulated_ru_params)
 #: the stages of the long computations as the progress bar names them (cli/progress.py)
 STAGES = {"start-up": ("start-up", "разгон"), "run-down": ("run-down", "выбег"),
           "steady check": ("steady check", "проверка установившегося режима"),
-          "sheets": ("sheets", "листы ответов")}
+          "variants": ("variants", "варианты"), "task sheets": ("sheets", "листы заданий"),
+          "answer sheets": ("sheets", "листы ответов")}
 
 
 def stage_name(stage: str, lang: str = "en") -> str:
