@@ -126,7 +126,13 @@ RUSSIAN_ERRORS = {
     "run/folder-given-as-case": ["это папка, а нужен файл случая TOML"],
     "run/empty-file": ["machine: не задано обязательное поле"],
     "run/binary-png": ["текст не в кодировке UTF-8"],
-    "run/toml-decimal-comma": ["синтаксическая ошибка TOML", "(строка 11, столбец 14)"],
+    "run/toml-decimal-comma": ["синтаксическая ошибка TOML: после инструкции ожидается перевод "
+                               "строки или конец документа (строка 11, столбец 14)"],
+    "check/toml-syntax-error": ["синтаксическая ошибка TOML: в конце объявления таблицы "
+                                "ожидается ']' (строка 33, столбец 8)"],
+    "aggregate/toml-syntax-error": ["синтаксическая ошибка TOML: недопустимый первый символ "
+                                    "ключа (строка 38, столбец 24)"],
+    "variants/template-toml-syntax-error": ["синтаксическая ошибка TOML: после инструкции"],
     "run/misspelt-table": ["machin: неизвестный ключ; может быть, 'machine'?", "допустимы:"],
     "run/speed-quoted": ["machine.speed_rps: должно быть числом (задано '10.0')"],
     "run/speed-nan": ["machine.speed_rps: должно быть конечным числом (задано nan)"],
@@ -267,13 +273,13 @@ RUSSIAN_ERRORS.update({
     "grade/key-missing": ['нет такого файла'],
     "grade/key-folder": ['это папка, а нужен answers.json команды flywheel variants'],
     "grade/key-binary": ['текст не в кодировке UTF-8 (invalid start byte в байте 0)'],
-    "grade/key-not-json": ['не JSON: Expecting property name enclosed in double quotes'],
-    "grade/key-truncated": ['не JSON: Unterminated string starting at (строка 3, столбец'],
+    "grade/key-not-json": ['не JSON: ожидается имя свойства в двойных кавычках (строка'],
+    "grade/key-truncated": ['не JSON: незакрытая строка, её начало (строка 3, столбец'],
     "grade/key-a-list": ['должно быть объектом JSON {вариант: {ответ: значение}}'],
     "grade/key-no-variants": ['должно быть непустым объектом {вариант: {ответ: значение}}'],
     "grade/key-tolerances-zero": ['должно быть объектом {ответ: положительное число} (задано'],
-    "grade/key-is-a-case-file": ['не JSON: Expecting value (строка 1, столбец 1)'],
-    "grade/key-and-sheet-swapped": ['не JSON: Expecting value (строка 1, столбец 1)'],
+    "grade/key-is-a-case-file": ['не JSON: ожидается значение (строка 1, столбец 1)'],
+    "grade/key-and-sheet-swapped": ['не JSON: ожидается значение (строка 1, столбец 1)'],
     "grade/out-is-a-folder": ['это папка, а нужно имя файла CSV'],
     "grade/gradebook-is-a-folder": ['это папка, а нужно имя файла CSV'],
     "grade/out-inside-a-file": ['не существует (допустимо: имя файла CSV в существующей папке)'],
@@ -617,8 +623,6 @@ def test_errors_are_russian_with_lang_ru(eid, tmp_path):
         if "/" in f or "." in f and " " not in f:
             assert f in line, (f, line)
     said = re.sub(r"\S*[/.]\S*|'[^']*'|`[^`]*`|\([a-z_, ]+\)$|--[a-z-]+", "", line)
-    if "TOML" in said:                      # tomllib's own words stay English: its place is Russian
-        said = said.split("TOML: ")[0]
     said = re.sub(r"допустимы: [\w, ]+", "", said)
     assert not ENGLISH.search(said), line
 
@@ -979,3 +983,29 @@ def _english_raises():
 def test_every_user_error_is_raised_with_a_notice():
     left = list(_english_raises())
     assert not left, "\n".join(f"{w}: {m}" for w, m in left)
+
+
+@pytest.mark.parametrize("text", ["a = 1,5", "[a\nb = 1", "a = [1, 2", "= 3", "a = 1\na = 2",
+                                  "a = \"x", "[t]\n[t]", "a = tru", "a = {b = 1, b = 2}",
+                                  "a = \"\\q\"", "[[a]\n", "a = 1979-13-01"])
+def test_tomllibs_own_words_are_said_in_russian(text):
+    """Every message Python 3.11's tomllib raises has its Russian form (render/nomenclature.py
+    _TOML_RU); its place «(строка N, столбец M)» or «(в конце документа)»."""
+    import tomllib
+
+    with pytest.raises(tomllib.TOMLDecodeError) as e:
+        tomllib.loads(text)
+    ru = nm._toml_detail_ru(str(e.value))
+    assert not re.search(r"[A-Za-z]{3,}", re.sub(r"'[^']*'|\([^)]*'[^)]*\)", "", ru)), ru
+    assert re.search(r"\((строка \d+, столбец \d+|в конце документа)\)$", ru), ru
+
+
+@pytest.mark.parametrize("text", ['{a:1}', '{"a" 1}', '[1 2]', '', '{} x', '"abc', '"a\\qb"',
+                                  '"\\u12"', '"a\tb"'])
+def test_jsons_own_words_are_said_in_russian(text):
+    import json
+
+    with pytest.raises(json.JSONDecodeError) as e:
+        json.loads(text)
+    ru = nm._said_ru(e.value.msg, nm._JSON_RU)
+    assert ru != e.value.msg and not re.search(r"[A-Za-z]{4,}", ru.replace("escape", "").replace("uXXXX", "")), ru
