@@ -273,6 +273,10 @@ RUSSIAN_ERRORS.update({
     "grade/key-missing": ['нет такого файла'],
     "grade/key-folder": ['это папка, а нужен answers.json команды flywheel variants'],
     "grade/key-binary": ['текст не в кодировке UTF-8 (invalid start byte в байте 0)'],
+    "task2/plot-unknown-format": ["не удаётся записать изображение (формат 'xyz' не "
+                                  "поддерживается (поддерживаются: "],
+    "task2/plot-in-a-missing-folder": ["не удаётся записать изображение (нет такого файла или "
+                                       "папки)"],
     "grade/key-not-json": ['не JSON: ожидается имя свойства в двойных кавычках (строка'],
     "grade/key-truncated": ['не JSON: незакрытая строка, её начало (строка 3, столбец'],
     "grade/key-a-list": ['должно быть объектом JSON {вариант: {ответ: значение}}'],

@@ -43,7 +43,7 @@ def aggregate_command(
     natural frequencies, steady forced vibration, start-up."""
     import math
 
-    from flywheel.cli.guard import check_lang, guarded, needs_out, refuse_nonfinite
+    from flywheel.cli.guard import check_lang, guarded, needs_out, plot_failed, refuse_nonfinite
     from flywheel.errors import InputError, Notice
 
     with guarded(source=case):      # an error of the analysis is prefixed with the case file
@@ -80,9 +80,7 @@ def aggregate_command(
             try:
                 draw(result, plot, c.title, lang)
             except (OSError, ValueError) as exc:
-                raise InputError(Notice(f"--plot {plot}: cannot write the image ({exc})",
-                                        "plot_cannot_write", plot=str(plot),
-                                        reason=str(exc))) from None
+                raise InputError(plot_failed(plot, exc)) from None
         if out is not None:
             written = _write_out(out, result, formats, c.title, c.source, lang)
     if json:

@@ -65,6 +65,17 @@ def check_lang(lang: str) -> None:
         fail(choice("--lang", lang, "a language", "en, ru"))
 
 
+def plot_failed(plot: Path, exc: Exception):
+    """The error of a --plot image that cannot be written (task2, aggregate): the system's
+    reason (an OSError, said in Russian by its errno) or matplotlib's (a format it does not
+    know), an errors.Notice."""
+    from flywheel.errors import Notice
+
+    return Notice(f"--plot {plot}: cannot write the image ({exc})", "plot_cannot_write",
+                  plot=str(plot), reason=str(exc), errno=getattr(exc, "errno", None),
+                  strerror=getattr(exc, "strerror", None))
+
+
 def needs_out():
     """The error of --report without --out (task2, aggregate, duty-cycle)."""
     from flywheel.errors import Notice

@@ -97,6 +97,7 @@ def task2_command(
     import math
 
     from flywheel.cli.guard import check_lang, first_nonfinite, guarded, needs_out, not_finite
+    from flywheel.cli.guard import plot_failed
     from flywheel.errors import FlywheelError, InputError, Notice
 
     title = source = ""
@@ -206,9 +207,7 @@ def task2_command(
             try:
                 draw(result, plot, title, lang)
             except (OSError, ValueError) as exc:
-                raise InputError(Notice(f"--plot {plot}: cannot write the image ({exc})",
-                                        "plot_cannot_write", plot=str(plot),
-                                        reason=str(exc))) from None
+                raise InputError(plot_failed(plot, exc)) from None
         if out is not None:
             written = _write_out(out, result, formats, title, source, doc_title, doc_source, lang)
     if as_json:

@@ -1373,7 +1373,7 @@ MESSAGES_RU.update({
                        "больше предела {top}: {fix_ru}"),
     "plot_needs_motor": "--plot требует [motor]: у цепочки без двигателя нет движения во времени",
     "plot_is_a_folder": "--plot {plot}: это папка, а нужен файл изображения",
-    "plot_cannot_write": "--plot {plot}: не удаётся записать изображение ({reason})",
+    "plot_cannot_write": "--plot {plot}: не удаётся записать изображение ({reason_ru})",
     "case_drops_options": "--case берёт данные из файла; уберите {used}",
     "profile_choice": "--profile должно быть triangle или rectangle (задано {value})",
     "from_to_cycle": "from и to должны лежать в пределах 0…360° (задано {start:g}°, {end:g}°)",
@@ -1632,15 +1632,6 @@ MESSAGES_RU.update({
 })
 
 
-#: the system's reasons a file cannot be read (OSError.errno; another one keeps its own words)
-_OS_ERRORS_RU = {errno.ENAMETOOLONG: "слишком длинное имя файла",
-                 errno.ENOTDIR: "часть пути — не папка",
-                 errno.EACCES: "нет прав на чтение",
-                 errno.EPERM: "нет прав на чтение",
-                 errno.EIO: "ошибка ввода-вывода",
-                 errno.ELOOP: "слишком много символических ссылок"}
-
-
 def _msgs_duty_ru_params(code: str, p: dict) -> dict:
     """The motor that is too weak (its power, or its torque and the power it gives); why a
     file cannot be read."""
@@ -1648,7 +1639,7 @@ def _msgs_duty_ru_params(code: str, p: dict) -> dict:
         p["have_ru"] = (f"мощность двигателя {p['P']:.6g} Вт" if p["by"] == "power" else
                         f"момент двигателя {p['T']:.6g} Н·м (P = M_Д·ω_ср = {p['P']:.6g} Вт)")
     if code in ("grade_key_unreadable", "sheet_unreadable"):
-        p["reason_ru"] = _OS_ERRORS_RU.get(p.get("errno"), p["reason"])
+        p["reason_ru"] = os_reason_ru(p.get("errno"), p["reason"])
         if code == "sheet_unreadable":          # its template (block msgs) says {reason}
             p["reason"] = p["reason_ru"]
     return p
@@ -2326,6 +2317,11 @@ _OS_REASONS_RU = {"ENOENT": "нет такого файла или папки", 
                   "EFBIG": "файл слишком велик", "EMFILE": "открыто слишком много файлов"}
 
 
+def os_reason_ru(code: int | None, reason: str) -> str:
+    """The system's reason (OSError.strerror) in Russian by its errno; another as it said it."""
+    return _OS_REASONS_RU.get(errno.errorcode.get(code, ""), reason) if code else reason
+
+
 def _msgs_run_ru_params(code: str, p: dict) -> dict:
     """The Russian words of the msgs_run errors' parameters."""
     if code == "run_point_not_on_link":
@@ -2343,9 +2339,7 @@ def _msgs_run_ru_params(code: str, p: dict) -> dict:
     if code == "run_no_dead_centres":
         p["role_ru"] = _ROLES_RU.get(p["role"], p["role"])
     if code in ("run_cannot_write", "run_cannot_read"):
-        import errno as _errno
-
-        p["reason_ru"] = _OS_REASONS_RU.get(_errno.errorcode.get(p["errno"], ""), p["reason"])
+        p["reason_ru"] = os_reason_ru(p["errno"], p["reason"])
     return p
 
 
@@ -2373,9 +2367,11 @@ def _msgs_rim_ru_params(code: str, p: dict) -> dict:
 _PARAM_HOOKS.append(_msgs_rim_ru_params)
 
 
-# --- msgs_toml ---
-# tomllib's own words (Python 3.11's tomllib/_parser.py, every message it raises) in Russian; a
-# message not listed (another Python's wording) keeps tomllib's English words.
+# --- msgs_libraries ---
+# The words of the libraries and of the system inside an error line, in Russian: tomllib's
+# (Python 3.11's tomllib/_parser.py, every message it raises), json's, matplotlib's savefig and
+# the system's reasons (os_reason_ru); a message not listed (another version's wording) keeps
+# its English words.
 _TOML_RU = [
     (r"Invalid statement", "недопустимая инструкция"),
     (r"Expected newline or end of document after a statement",
@@ -2444,12 +2440,22 @@ def _said_ru(text: str, table: list) -> str:
     return text
 
 
-def _msgs_toml_ru_params(code: str, p: dict) -> dict:
-    if code == "toml_syntax":
+#: matplotlib's reasons an image cannot be saved (savefig's ValueError)
+_MATPLOTLIB_RU = [
+    (r"Format '(?P<x>.*)' is not supported \(supported formats: (?P<y>.*)\)",
+     "формат '{x}' не поддерживается (поддерживаются: {y})"),
+]
+
+
+def _msgs_libraries_ru_params(code: str, p: dict) -> dict:
+    if code == "plot_cannot_write":
+        p["reason_ru"] = (os_reason_ru(p["errno"], p["strerror"]) if p.get("strerror")
+                          else _said_ru(p["reason"], _MATPLOTLIB_RU))
+    elif code == "toml_syntax":
         p["detail_ru"] = _toml_detail_ru(p["detail"])
     elif code == "not_json":
         p["msg"] = _said_ru(p["msg"], _JSON_RU)
     return p
 
 
-_PARAM_HOOKS.append(_msgs_toml_ru_params)
+_PARAM_HOOKS.append(_msgs_libraries_ru_params)
