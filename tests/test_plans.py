@@ -380,9 +380,18 @@ def test_position_numbers_match_the_drawing(name, tmp_path):
             assert on_grid or "d.c." in label
     numbers = [int(row[1]) for row in tables[0][1:] if row[1]]
     assert numbers == list(range(24 if name == "engine_4stroke" else 12))
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+
     with fg.style():                                   # the numbers drawn, at crank pin and sliders
         fig = pp.figure_positions_plan(r)
-        drawn = {int(x) for t in fig.axes[0].texts for x in t.get_text().split(", ")}
+        texts = fig.axes[0].texts
+        drawn = {int(x) for t in texts for x in t.get_text().split(", ")}
+        canvas = FigureCanvasAgg(fig)
+        canvas.draw()
+        boxes = [t.get_window_extent(canvas.get_renderer()) for t in texts]
+        for i, a in enumerate(boxes):                  # none on another (the sliders' crowd)
+            for j in range(i):
+                assert not a.overlaps(boxes[j]), (texts[i].get_text(), texts[j].get_text())
         fig.clear()
     assert drawn == set(numbers)
     from flywheel.render.document import build_document

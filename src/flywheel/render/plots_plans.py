@@ -780,23 +780,38 @@ def figure_positions_plan(results, lang: str = "en", scheme=None):
             if line not in guides and lm.ref != tip:
                 guides.add(line)
                 sliders[lm.ref] = th              # the guide's direction [rad]
+    # (a number that would sit on one placed before moves out, 9 pt a step: the sliders'
+    # positions crowd near their dead centres)
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+    ax.set_aspect("equal", adjustable="datalim")
+    ax.get_xlim()                      # the limits autoscaled and fitted: the page's pixels
+    ax.apply_aspect()
+    renderer = FigureCanvasAgg(fig).get_renderer()
+    boxes = []
     for p in [tip, *sliders]:
         for k, ks in numbers.items():
             i = results.index_of(math.radians(30 * k))
             c = P[p].r[i]
             if p == tip:
                 d = c - P[pivot].r[i]
-                n = d / (np.hypot(*d) or 1.0)
-                off = (11 * n[0], 11 * n[1])
+                n, dist = d / (np.hypot(*d) or 1.0), 11.0
             else:        # the side of the guide the crank pin is on: strokes apart
                 th = sliders[p]
                 u = (math.cos(th), math.sin(th))
                 rel = P[tip].r[i] - c
                 side = -1 if u[0] * rel[1] - u[1] * rel[0] < -1e-12 else 1
-                off = (-20 * side * u[1], 20 * side * u[0])
-            ax.annotate(", ".join(str(x) for x in ks), c, xytext=off, textcoords="offset points",
-                        ha="center", va="center", fontsize=7.5, color="C0", zorder=8)
-    ax.set_aspect("equal", adjustable="datalim")
+                n, dist = np.array([-side * u[1], side * u[0]]), 20.0
+            for step in range(6):
+                a = ax.annotate(", ".join(str(x) for x in ks), c,
+                                xytext=((dist + 9 * step) * n[0], (dist + 9 * step) * n[1]),
+                                textcoords="offset points", ha="center", va="center",
+                                fontsize=7.5, color="C0", zorder=8)
+                b = a.get_window_extent(renderer)
+                if step == 5 or not any(b.overlaps(q) for q in boxes):
+                    break
+                a.remove()
+            boxes.append(b)
     ax.set_xlabel(nm.axis("x", lang))
     ax.set_ylabel(nm.axis("y", lang))
     handles = [Line2D([], [], color="0.35", linewidth=0.8,
