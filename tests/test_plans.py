@@ -355,6 +355,39 @@ def test_force_polygon_panels_fit_a4_apart(name):
             fig.clear()
 
 
+@pytest.mark.parametrize("name", NAMES)
+def test_no_label_sits_on_another_on_any_plan(name):
+    """Every text on the axes of the velocity and acceleration plans, the force polygons and
+    Zhukovsky's lever at every report angle, measured as drawn on the A4-wide page: no two
+    meet (issue 15; the crowded corners of the in-line four's polygons and the slotted link's
+    group E had their values drawn over each other), and none leaves the page."""
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+    from flywheel.render import figure as fg
+    from flywheel.render import plots_plans as pp
+
+    r = analyze(load_case(CASES / f"{name}.toml"), n_points=360)
+    with fg.style():
+        for ps in r.plans:
+            for build in (pp.figure_velocity_plan, pp.figure_acceleration_plan,
+                          pp.figure_force_polygons, pp.figure_lever):
+                fig = build(r, ps)
+                canvas = FigureCanvasAgg(fig)
+                canvas.draw()
+                ren = canvas.get_renderer()
+                W = fig.get_size_inches()[0] * fig.dpi
+                for ax in fig.axes:
+                    texts = [t for t in ax.texts if t.get_text()]
+                    boxes = [t.get_window_extent(ren) for t in texts]
+                    for i, a in enumerate(boxes):
+                        assert 0 <= a.x0 and a.x1 <= W, (build.__name__, texts[i].get_text())
+                        for j in range(i):
+                            assert not a.overlaps(boxes[j]), (build.__name__, ps.phi_deg,
+                                                              texts[i].get_text(),
+                                                              texts[j].get_text())
+                fig.clear()
+
+
 @pytest.mark.parametrize("name", ["compressor", "slotted_link", "engine_4stroke"])
 def test_position_numbers_match_the_drawing(name, tmp_path):
     """The course's position numbers: positions.csv and forces_positions.csv number each row

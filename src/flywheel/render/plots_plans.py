@@ -279,14 +279,14 @@ class _Labels:
         c = 0.0
         if self.frame is not None:          # out of the axes: over the tick labels, and the
             lo, hi = self.frame             # farther out the worse (off the page at last)
-            out = max(lo[0] - x0, lo[1] - y0, x1 - hi[0], y1 - hi[1])
-            if out > 0:
-                c += 150.0 + 5.0 * out * self.ppm
+            out = max(lo[0] - x0, lo[1] - y0, x1 - hi[0], y1 - hi[1]) * self.ppm   # [pt]
+            if out > 0:             # past 8 pt: over the next panel's tick labels
+                c += 150.0 + 5.0 * out + (2000.0 if out > 8.0 else 0.0)
         for q in self.boxes:
             dx = min(x1, q[2]) - max(x0, q[0])
             dy = min(y1, q[3]) - max(y0, q[1])
             if dx > 0 and dy > 0:
-                c += 100.0 + dx * dy
+                c += 300.0 + dx * dy
         if len(self.cloud):
             p = self.cloud
             c += float(np.count_nonzero((p[:, 0] > x0) & (p[:, 0] < x1)
@@ -303,7 +303,7 @@ class _Labels:
         """``text`` (bold) beside the point ``xy`` [mm]: at ``first`` [pt] up right of it
         unless that place sits on a line or a label placed before, else at the corner or side
         that sits on the fewest (the same search as :meth:`along`, around the point)."""
-        w = _CHAR_W * fontsize * len(text) / self.ppm
+        w = (_CHAR_W * len(text) + 0.3) * fontsize / self.ppm      # + 0.3 em: a margin
         h = 1.25 * fontsize / self.ppm
         cands = ((first[0], first[1], "left", "bottom"),) + self._AROUND[1:]
         best = None
@@ -324,12 +324,12 @@ class _Labels:
         d = np.asarray(head, float) - np.asarray(tail, float)
         L = float(np.hypot(*d))
         n = np.array([-d[1], d[0]]) / L if L > 1e-12 else np.array([0.0, 1.0])
-        w = _CHAR_W * fontsize * len(text) / self.ppm
+        w = (_CHAR_W * len(text) + 0.3) * fontsize / self.ppm      # + 0.3 em: a margin
         h = 1.25 * fontsize / self.ppm
         best = None
         for t in (0.5, 0.35, 0.65, 0.2, 0.8):
             for side in (1.0, -1.0):
-                for dist in (2.5, 8.0, 16.0, 26.0):
+                for dist in (2.5, 8.0, 16.0, 26.0, 40.0):
                     m = side * n
                     ha = "left" if m[0] > 0.35 else "right" if m[0] < -0.35 else "center"
                     va = "bottom" if m[1] > 0.35 else "top" if m[1] < -0.35 else "center"
@@ -342,6 +342,16 @@ class _Labels:
                     break
             if best[0] < 0.2:
                 break
+        if best[0] >= 300.0:        # on a label wherever beside the vector: farther round it
+            mid = np.asarray(tail, float) + 0.5 * d
+            for dist in (30.0, 45.0, 60.0):
+                for k in range(16):
+                    m = np.array([math.cos(k * math.pi / 8), math.sin(k * math.pi / 8)])
+                    xy = mid + m * dist / self.ppm
+                    b = self._box(xy[0], xy[1], w, h, "center", "center")
+                    c = self._cost(b) + 0.01 * dist
+                    if c < best[0] - 1e-12:
+                        best = (c, xy, "center", "center", b)
         _, xy, ha, va, b = best
         self.boxes.append(b)
         self.ax.text(float(xy[0]), float(xy[1]), text, ha=ha, va=va, fontsize=fontsize,
