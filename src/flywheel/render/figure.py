@@ -1,8 +1,8 @@
 """The figure toolkit every plot of ``flywheel run`` is drawn with (render/plots.py,
 plots_forces.py, plots_engine.py, animate.py; plots_extra.py's figures are drawn inside
 :func:`style`): the fixed style, pyplot-free figures with fixed margins, the legends below the
-axes (figures as wide as A4's text, :data:`A4_W`: no width lost to a legend), the φ axis and
-the titles.
+axes (figures as wide as A4's text, :data:`A4_W`: no width lost to a legend), the φ axis,
+the titles and :func:`label_points` (points' labels none over another: the hodographs' angles).
 
 The figures are plain :class:`matplotlib.figure.Figure` objects rendered by the Agg canvas:
 they never go through pyplot, so they need no display, register no global state (nothing to

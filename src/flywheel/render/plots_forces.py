@@ -3,9 +3,10 @@ three ways with the constant moment of the dynamics, and the polar diagrams (hod
 the crank-pin load, the main-bearing load and the shaking force.
 
 Drawn with render/figure.py's toolkit, as render/plots.py draws — pyplot-free figures with
-fixed margins in inches and the legend outside the axes — and saved by plots.py's pool of
-workers in the fixed style (:func:`figures` is registered in ``plots.all_figures``; this module does not
-import render/plots.py, which imports it). Quantities are named by
+fixed margins in inches, A4's text width, the legend below the axes or in a free cell, the
+hodographs' angle labels none over another (figure.label_points) — and saved by plots.py's
+pool of workers in the fixed style (:func:`figures` is registered in ``plots.all_figures``;
+this module does not import render/plots.py, which imports it). Quantities are named by
 :mod:`flywheel.render.nomenclature`, and so are the titles. Nothing is computed here but
 degrees and the axis limits; matplotlib is imported inside the functions.
 """
