@@ -291,14 +291,15 @@ def test_forces_csv_agrees_with_summary_json(tmp_path, name):
         same("crank_pin_F", a["crank_pin_load"]["F"])
         same("shaking_F", a["shaking_force"]["F"])
         same("shaking_M", a["shaking_moment"])
-    # forces_positions.csv: the rows of forces.csv at the standard positions, labelled as in
-    # positions.csv
+    # forces_positions.csv: the rows of forces.csv at the standard positions, labelled and
+    # numbered as in positions.csv
     pheader, prows, plabels = _csv(out / "forces_positions.csv")
-    _, _, labels = _csv(out / "positions.csv")
-    assert pheader == ["position"] + header and plabels == labels
+    _, posrows, labels = _csv(out / "positions.csv")
+    assert pheader == ["position", "number"] + header and plabels == labels
+    assert [r[1] for r in prows] == [r[1] for r in posrows]
     for r in prows:
-        match = [k for k, row in enumerate(rows) if row[0] == r[1]]
-        assert match and rows[match[0]] == r[1:]
+        match = [k for k, row in enumerate(rows) if row[0] == r[2]]
+        assert match and rows[match[0]] == r[2:]
 
 
 def test_forces_csv_is_byte_identical_between_runs(tmp_path):
@@ -376,6 +377,69 @@ def test_force_figures(lang):
     np.testing.assert_array_equal(fig.axes[0].lines[0].get_xdata(), res.forces.crank_pin_tangential)
     fig.clear()
     assert [n for n, _ in pf.figures(results_of("press"), lang)] == ["balancing_moment.png"]
+
+
+@pytest.mark.parametrize("name", ["shaper", "slotted_link", "compressor", "engine_inline4"])
+@pytest.mark.parametrize("lang", ["en", "ru"])
+def test_hodograph_angle_labels_do_not_overlap(name, lang):
+    """The 30° labels along each hodograph: measured on the drawn page, no label's box meets
+    another's, 0° is always labelled and every label names a mark it sits beside; where the
+    marks crowd (the shaper's shaking force: twelve marks within 400 N of a 460 N offset)
+    some labels are left out rather than drawn over each other (issue 15)."""
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+    from flywheel.render import figure as fg
+    from flywheel.render import plots_forces as pf
+
+    res = results_of(name)
+    with fg.style():
+        fig = pf.figure_hodographs(res, lang)
+        canvas = FigureCanvasAgg(fig)
+        canvas.draw()
+        ren = canvas.get_renderer()
+        counts = []
+        for ax in fig.axes:
+            texts = list(ax.texts)
+            boxes = [t.get_window_extent(ren) for t in texts]
+            for i, a in enumerate(boxes):
+                for j in range(i):
+                    assert not a.overlaps(boxes[j]), (ax.get_title(), texts[i].get_text(),
+                                                      texts[j].get_text())
+            angles = [t.get_text() for t in texts]
+            assert "0" in angles and set(angles) <= {f"{a}" for a in range(0, 360, 30)}
+            marks = ax.lines[2]                     # the curve, the origin, the 30° marks
+            xy = np.column_stack([marks.get_xdata(), marks.get_ydata()])
+            for t in texts:                         # beside its own mark: within 12 pt
+                p = ax.transData.transform(xy[int(t.get_text()) // 30])
+                b = t.get_window_extent(ren)
+                gap = np.hypot(max(b.x0 - p[0], 0, p[0] - b.x1), max(b.y0 - p[1], 0, p[1] - b.y1))
+                assert gap <= 12 * fig.dpi / 72, (t.get_text(), gap)
+            counts.append(len(texts))
+        fig.clear()
+    if name == "shaper":
+        assert min(counts) < 12            # crowded: some left out
+
+
+def test_label_points_leaves_out_a_label_with_no_room_but_keeps_the_first():
+    """figure.label_points on three points at the same place: the first (kept) is placed, the
+    other two find a free corner each, a fourth… until the eight places round it are used;
+    labels never overlap."""
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+    from flywheel.render import figure as fg
+
+    with fg.style():
+        fig, ax = fg.figure((4.0, 3.0), right=0.3)
+        ax.set_xlim(0, 1)
+        ax.set_ylim(0, 1)
+        n = 12
+        placed = fg.label_points(ax, np.full(n, 0.5), np.full(n, 0.5),
+                                 [f"{30 * k}" for k in range(n)], keep=(0,))
+        ren = FigureCanvasAgg(fig).get_renderer()
+        boxes = [t.get_window_extent(ren) for t in placed]
+        assert placed[0].get_text() == "0" and 1 < len(placed) < n
+        assert not any(a.overlaps(boxes[j]) for i, a in enumerate(boxes) for j in range(i))
+        fig.clear()
 
 
 def test_round_off_is_not_magnified_on_the_balancing_moment_plot():

@@ -314,12 +314,131 @@ def test_plans_are_drawn(name, tmp_path):
         for k in idx:
             data = (tmp_path / f"{lang}1" / specs[k][0]).read_bytes()
             assert data.startswith(b"\x89PNG\r\n\x1a\n") and len(data) > 10_000
+            # A4's text width at most (issue 15): the PNG's width [px] from its IHDR at 120 dpi
+            assert int.from_bytes(data[16:20], "big") <= 7.5 * 120, specs[k][0]
             if (tmp_path / f"{lang}2").exists():
                 assert data == (tmp_path / f"{lang}2" / specs[k][0]).read_bytes(), specs[k][0]
 
 
 def _fmt(a: float) -> str:
     return f"{a:g}".replace("-", "m").replace(".", "_")
+
+
+@pytest.mark.parametrize("name", NAMES)
+def test_force_polygon_panels_fit_a4_apart(name):
+    """The force polygons at every report angle on A4's text width (≤ 7.5 in): each panel,
+    measured with its title and tick labels as drawn, inside the page and clear of every other
+    panel (rows as fit, the rest stacked); the legend below them all."""
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+    from flywheel.render import figure as fg
+    from flywheel.render import plots_plans as pp
+
+    r = analyze(load_case(CASES / f"{name}.toml"), n_points=360)
+    with fg.style():
+        for ps in r.plans:
+            fig = pp.figure_force_polygons(r, ps)
+            W, H = fig.get_size_inches()
+            assert W <= 7.5 and H <= 11.0
+            canvas = FigureCanvasAgg(fig)
+            canvas.draw()
+            ren = canvas.get_renderer()
+            boxes = [ax.get_tightbbox(ren) for ax in fig.axes]
+            assert len(boxes) == len(ps.polygons)
+            for i, b in enumerate(boxes):
+                assert b.x0 >= 0 and b.x1 <= W * fig.dpi and b.y0 >= 0 and b.y1 <= H * fig.dpi
+                for j in range(i):
+                    assert not b.overlaps(boxes[j]), (name, ps.phi_deg, i, j)
+            leg = fig.legends[0].get_window_extent(ren)
+            assert leg.x0 >= 0 and leg.x1 <= W * fig.dpi and leg.y0 >= 0
+            assert leg.y1 <= min(b.y0 for b in boxes)
+            fig.clear()
+
+
+@pytest.mark.parametrize("name", NAMES)
+def test_no_label_sits_on_another_on_any_plan(name):
+    """Every text on the axes of the velocity and acceleration plans, the force polygons and
+    Zhukovsky's lever at every report angle, measured as drawn on the A4-wide page: no two
+    meet (issue 15; the crowded corners of the in-line four's polygons and the slotted link's
+    group E had their values drawn over each other), and none leaves the page."""
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+    from flywheel.render import figure as fg
+    from flywheel.render import plots_plans as pp
+
+    r = analyze(load_case(CASES / f"{name}.toml"), n_points=360)
+    with fg.style():
+        for ps in r.plans:
+            for build in (pp.figure_velocity_plan, pp.figure_acceleration_plan,
+                          pp.figure_force_polygons, pp.figure_lever):
+                fig = build(r, ps)
+                canvas = FigureCanvasAgg(fig)
+                canvas.draw()
+                ren = canvas.get_renderer()
+                W = fig.get_size_inches()[0] * fig.dpi
+                for ax in fig.axes:
+                    texts = [t for t in ax.texts if t.get_text()]
+                    boxes = [t.get_window_extent(ren) for t in texts]
+                    for i, a in enumerate(boxes):
+                        assert 0 <= a.x0 and a.x1 <= W, (build.__name__, texts[i].get_text())
+                        for j in range(i):
+                            assert not a.overlaps(boxes[j]), (build.__name__, ps.phi_deg,
+                                                              texts[i].get_text(),
+                                                              texts[j].get_text())
+                fig.clear()
+
+
+@pytest.mark.parametrize("name", ["compressor", "slotted_link", "engine_4stroke"])
+def test_position_numbers_match_the_drawing(name, tmp_path):
+    """The course's position numbers: positions.csv and forces_positions.csv number each row
+    as plan_positions.png numbers the crank's positions (0 … 11 every 30° from φ = 0, 0 … 23
+    over the four-stroke's 720°); a dead centre between two 30° positions (the slotted link's)
+    has no number, one on a 30° position shares its row's."""
+    import csv as csv_
+
+    from flywheel.render import figure as fg
+    from flywheel.render import plots_plans as pp
+    from flywheel.render.forces import forces_positions_csv
+    from flywheel.render.tables import positions_csv
+
+    r = analyze(load_case(CASES / f"{name}.toml"), n_points=360)
+    tables = [list(csv_.reader(text.splitlines())) for text in (positions_csv(r),
+                                                                forces_positions_csv(r))]
+    for rows in tables:
+        assert rows[0][:3] == ["position", "number", "phi_deg [deg]"]
+        for label, number, phi, *_ in rows[1:]:
+            k = float(phi) / 30.0                       # the course: position k at 30°·k
+            on_grid = abs(k - round(k)) < 1e-9
+            assert number == (str(round(k)) if on_grid else ""), (label, phi)
+            assert on_grid or "d.c." in label
+    numbers = [int(row[1]) for row in tables[0][1:] if row[1]]
+    assert numbers == list(range(24 if name == "engine_4stroke" else 12))
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+    with fg.style():                                   # the numbers drawn, at crank pin and sliders
+        fig = pp.figure_positions_plan(r)
+        texts = fig.axes[0].texts
+        drawn = {int(x) for t in texts for x in t.get_text().split(", ")}
+        canvas = FigureCanvasAgg(fig)
+        canvas.draw()
+        boxes = [t.get_window_extent(canvas.get_renderer()) for t in texts]
+        for i, a in enumerate(boxes):                  # none on another (the sliders' crowd)
+            for j in range(i):
+                assert not a.overlaps(boxes[j]), (texts[i].get_text(), texts[j].get_text())
+        fig.clear()
+    assert drawn == set(numbers)
+    from flywheel.render.document import build_document
+
+    want = [(row[0], row[1]) for row in tables[0][1:]]  # the report's tables: the same numbers
+    for lang, no in (("en", "no."), ("ru", "№")):
+        at_positions = [tb for tb in build_document(r, lang).tables if no in tb.header]
+        assert len(at_positions) >= 4         # kinematics, reduction, energy, reactions
+        for tb in at_positions:
+            k = tb.header.index(no)
+            assert [row[k] for row in tb.rows] == [n for _, n in want], tb.caption
+    from flywheel.render import nomenclature as nm
+
+    assert [row[0] for row in tb.rows] == [nm.position_label(lab, "ru") for lab, _ in want]
 
 
 def test_point_letters_do_not_touch_on_a_crowded_plan():

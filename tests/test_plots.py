@@ -140,8 +140,7 @@ def test_every_figure_has_title_labels_legend_and_fits(results, made, lang):
         made(fig)
         _check_common(fig, results, lang)
         _check_layout(fig)
-        if not name.startswith("plan_"):          # A4's text width, no width lost (issue 15)
-            assert fig.get_size_inches()[0] <= 7.5, name
+        assert fig.get_size_inches()[0] <= 7.5, name       # A4's text width (issue 15)
 
 
 # -- one figure at a time -----------------------------------------------------------------------------

@@ -59,6 +59,14 @@ def report_index(phi: np.ndarray, a_deg: float) -> int:
     return int(np.argmin(np.abs(phi - math.radians(a_deg) % (phi[-1] - phi[0]))))
 
 
+def position_number(phi: float) -> int | None:
+    """The course's number of the standard position at ``phi`` [rad]: k for φ = 30°·k (0 … 11,
+    0 … 23 over a 720° cycle), as plan_positions.png numbers the crank's positions; None off
+    the 30° grid (a slider's dead centre between two positions: drawn, not numbered)."""
+    k = math.degrees(phi) / 30.0
+    return int(round(k)) if abs(k - round(k)) < 1e-6 else None
+
+
 def standard_positions(mech, cycle: float = 2 * np.pi) -> tuple[list[tuple[str, float]], dict]:
     """The standard positions over the cycle ``cycle`` [rad], by angle: every 30° (12 over 360°,
     24 over 720°, as course projects number them) and the dead centres of every slider in every

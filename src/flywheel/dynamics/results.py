@@ -369,6 +369,16 @@ class Results:
         """The cycle Φ [deg]: 360, 720 …"""
         return int(round(math.degrees(self.cycle)))
 
+    def position_numbers(self) -> tuple[int | None, ...]:
+        """The course's number of each of ``position_angles`` (:func:`flywheel.dynamics.grid.
+        position_number`: 0 … 11 every 30°, as plan_positions.png numbers them); None for a
+        dead centre between them and for every position of a tabulated case (no drawing)."""
+        from flywheel.dynamics.grid import position_number
+
+        if self.kinematics is None:
+            return (None,) * len(self.position_angles)
+        return tuple(position_number(phi) for _, phi in self.position_angles)
+
     def index_of(self, phi: float) -> int:
         """Grid index of the node at angle ``phi`` [rad] (report angles are grid nodes)."""
         return int(np.argmin(np.abs(self.phi - phi)))

@@ -34,6 +34,7 @@ def write_animation(results, path: Path, lang: str = "en", frames: int = FRAMES,
     """Write the animation of a linkage case's mechanism to ``path`` (GIF). Raises ValueError
     for a case without geometry (tabulated kinematics: nothing to draw)."""
     if results.kinematics is None:
+        # library use only: no CLI input reaches this
         raise ValueError("tabulated kinematics have no geometry to animate")
     from PIL import Image
 

@@ -28,6 +28,7 @@ def csv_text(rows: Iterable[Sequence], style: str = "plain",
              fmt: Callable[[float], str] = repr) -> str:
     """The rows as CSV text in ``style`` (see the module's docstring)."""
     if style not in STYLES:
+        # library use only: no CLI input reaches this
         raise ValueError(f"unknown CSV style {style!r} (allowed: {', '.join(STYLES)})")
     ru = style == "excel-ru"
     buf = io.StringIO()

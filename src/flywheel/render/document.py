@@ -47,7 +47,7 @@ T = {
         "points_caption": "Points at φ = {a}°", "links_caption": "Links at φ = {a}°",
         "warn": "Warnings", "figures": "Figures", "sources": "Sources",
         "no_plots": "The figures were not drawn (run with --no-plots).",
-        "pos": "position", "qty": "quantity", "val": "value", "unit": "unit", "point": "point",
+        "pos": "position", "no": "no.", "qty": "quantity", "val": "value", "unit": "unit", "point": "point",
         "link": "link", "name": "name", "piston": "piston", "head": "head dead centre",
         "first_group": "first group", "centroid": "centroid",
         "balance_word": {"driving": "driving", "resistance": "resistance"},
@@ -137,7 +137,7 @@ T = {
         "points_caption": "Точки при φ = {a}°", "links_caption": "Звенья при φ = {a}°",
         "warn": "Предупреждения", "figures": "Рисунки", "sources": "Источники",
         "no_plots": "Рисунки не построены (запуск с --no-plots).",
-        "pos": "положение", "qty": "величина", "val": "значение", "unit": "ед.", "point": "точка",
+        "pos": "положение", "no": "№", "qty": "величина", "val": "значение", "unit": "ед.", "point": "точка",
         "link": "звено", "name": "имя", "piston": "поршень", "head": "мёртвая точка у головки",
         "first_group": "первая группа", "centroid": "центр масс",
         "balance_word": {"driving": "движущий", "resistance": "сопротивления"},
@@ -328,15 +328,22 @@ def build_document(results, lang: str = "en", plots: list[str] | None = None,
         b.add(Paragraph(t["tabulated"]))
 
     # 2. kinematics ---------------------------------------------------------------------------
-    idx = [(nm.position_label(label, lang), results.index_of(phi))
-           for label, phi in results.position_angles]
+    # each position's label, then its number as plan_positions.png draws it (a tabulated
+    # case's table has no drawing: no number column)
+    nums = results.position_numbers()
+    numbered = any(k is not None for k in nums)
+    pos = [t["pos"], t["no"]] if numbered else [t["pos"]]
+    idx = [([nm.position_label(label, lang)] + ([] if not numbered else
+                                                 ["" if k is None else str(k)]),
+            results.index_of(phi))
+           for (label, phi), k in zip(results.position_angles, nums)]
     vq = [k for k in cols if k.startswith("vq_") and not k.startswith(("vqx_", "vqy_"))]
     wq = [k for k in cols if k.startswith("omega_q_")]
     if vq or wq:
         b.add(Heading(2, t["kin"]))
         b.add(Paragraph(t["kin_note"].format(vq=sym("v_q"), u=u("v_q"), wq=sym("omega_q"))))
-        header = [t["pos"], h("phi_deg")] + [f"{sym(k)}{nm.member(k, lang)}" for k in vq + wq]
-        body = [[lab, g(cols["phi_deg"].values[i], 6)] + [g(cols[k].values[i], 4) for k in vq + wq]
+        header = pos + [h("phi_deg")] + [f"{sym(k)}{nm.member(k, lang)}" for k in vq + wq]
+        body = [[*lab, g(cols["phi_deg"].values[i], 6)] + [g(cols[k].values[i], 4) for k in vq + wq]
                 for lab, i in idx]
         b.table(t["kin_caption"], header, body)
         b.figures_of("kin")
@@ -347,9 +354,9 @@ def build_document(results, lang: str = "en", plots: list[str] | None = None,
     b.add(Formula(_mt("J_II", lang) + r" = \sum (m_{i} v_{qSi}^{2} + J_{Si} \omega_{qi}^{2})"))
     b.add(Formula(r"M_{F} = F \cdot v_{q}"))
     mk = [k for k in cols if k.startswith("M ")]
-    header = ([t["pos"], h("phi_deg"), h("J_II"), h("dJ_II")]
+    header = (pos + [h("phi_deg"), h("J_II"), h("dJ_II")]
               + [h(k, label=nm.member(k, lang)) for k in mk] + [h("M_sum")])
-    body = [[lab, g(cols["phi_deg"].values[i], 6), g(cols["J_II"].values[i], 4), g(cols["dJ_II"].values[i], 4)]
+    body = [[*lab, g(cols["phi_deg"].values[i], 6), g(cols["J_II"].values[i], 4), g(cols["dJ_II"].values[i], 4)]
             + [g(cols[k].values[i], 5) for k in mk] + [g(cols["M_sum"].values[i], 5)] for lab, i in idx]
     b.table(t["red_caption"], header, body)
     b.figures_of("red")
@@ -371,8 +378,8 @@ def build_document(results, lang: str = "en", plots: list[str] | None = None,
                              span=sym("delta_T_max"), v=g(s["delta_T_max"], 6), uJ=u("delta_T_max"))[2:],
     )))
     energy = ("A_D", "A_C", "A", "T_II", "dT_I", "omega", "epsilon")
-    header = [t["pos"], h("phi_deg")] + [h(k) for k in energy]
-    body = [[lab, g(cols["phi_deg"].values[i], 6)] + [g(cols[k].values[i], 6) for k in energy]
+    header = pos + [h("phi_deg")] + [h(k) for k in energy]
+    body = [[*lab, g(cols["phi_deg"].values[i], 6)] + [g(cols[k].values[i], 6) for k in energy]
             for lab, i in idx]
     b.table(t["energy_caption"], header, body)
     b.figures_of("energy")

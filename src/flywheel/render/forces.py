@@ -32,7 +32,7 @@ T = {
         "joints": "Joint reactions at φ = {a}° (R_ij: the force of link i on link j)",
         "sc": "Slider-crank quantities at φ = {a}°",
         "joint": "joint", "point": "point", "by": "by", "on": "on", "angle": "angle",
-        "slider": "slider", "pos": "position",
+        "slider": "slider", "pos": "position", "no": "no.",
         "intro": ("Loads on every moving link: the given forces (gas, technological, weights), "
                   "the couples, d'Alembert's inertia force −m·a_S at the centroid and couple "
                   "−J_S·ε_i, and −J_I·ε on the crank (the first group as the flywheel sizing left "
@@ -69,7 +69,7 @@ T = {
                   "на звено j)",
         "sc": "Силы в кривошипно-ползунном механизме при φ = {a}°",
         "joint": "пара", "point": "точка", "by": "звено i", "on": "звено j", "angle": "угол",
-        "slider": "ползун", "pos": "положение",
+        "slider": "ползун", "pos": "положение", "no": "№",
         "intro": ("Нагрузки на каждое подвижное звено: заданные силы (давления газа, полезного "
                   "сопротивления, тяжести), пары сил, сила инерции −m·a_S в центре масс и момент "
                   "сил инерции −J_S·ε_i (принцип Даламбера), на кривошипе −J_I·ε (первая группа "
@@ -162,12 +162,15 @@ def forces_csv(results) -> str:
 def forces_positions_csv(results) -> str:
     """forces_positions.csv: the columns of forces.csv at the standard positions (every 30° and
     the sliders' dead centres; the table's positions for a tabulated case), a ``position``
-    label first, as positions.csv."""
+    label and ``number`` first, as positions.csv."""
+    from flywheel.render.tables import number_cell
+
     cols = force_columns(results)
     idx = [results.index_of(phi) for _, phi in results.position_angles]
-    labels = [label for label, _ in results.position_angles]
+    labels = [f"{label},{number_cell(k)}"
+              for (label, _), k in zip(results.position_angles, results.position_numbers())]
     rows = _rows(cols, idx)
-    header = "position," + ",".join(csv_header(k) for k in cols)
+    header = "position,number," + ",".join(csv_header(k) for k in cols)
     return "\n".join([header] + [f"{lab},{row}" for lab, row in zip(labels, rows)]) + "\n"
 
 
@@ -301,11 +304,11 @@ def add_report_section(b, results, lang: str = "en") -> None:
         table(t["moments"], [deg, t["power"]], _moment_rows(results))
         return
     keys = list(f.joints)
-    header = [t["pos"], deg, My] + [f"R {k}" for k in keys]
+    header = [t["pos"], t["no"], deg, My] + [f"R {k}" for k in keys]
     body = []
-    for lab, p in results.position_angles:
+    for (lab, p), k in zip(results.position_angles, results.position_numbers()):
         i = results.index_of(p)
-        body.append([position_label(lab, lang), _g(math.degrees(p), 6),
+        body.append([position_label(lab, lang), "" if k is None else str(k), _g(math.degrees(p), 6),
                      _g(float(fa.balancing_moment[i]), 6)]
                     + [_g(float(fa.joints[k].magnitude[i]), 5) for k in keys])
     table(t["positions"], header, body)

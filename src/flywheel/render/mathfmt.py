@@ -95,6 +95,7 @@ class _Parser:
         while True:
             t = self.take()
             if t is None:
+                # library use only: no CLI input reaches this
                 raise ValueError(f"unclosed \\text in {self.src!r}")
             depth += (t == "{") - (t == "}")
             if depth == 0:
@@ -104,6 +105,7 @@ class _Parser:
     def atom(self) -> Node:
         t = self.take()
         if t is None:
+            # library use only: no CLI input reaches this
             raise ValueError(f"formula ends too early: {self.src!r}")
         if t.startswith("\\") and len(t) > 1:
             name = t[1:]
@@ -118,6 +120,7 @@ class _Parser:
             if name in ("{", "}"):
                 return Node("o", name)
             if name not in SYMBOLS:
+                # library use only: no CLI input reaches this
                 raise ValueError(f"unknown command \\{name} in {self.src!r}")
             s = SYMBOLS[name]
             return Node("o" if s in _OPERATORS else "i", s)

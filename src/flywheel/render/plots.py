@@ -694,8 +694,10 @@ def write_plots(results, folder: Path, lang: str = "en", jobs: int = 1, fmt: str
     import multiprocessing as mp
 
     if lang not in ("en", "ru"):
+        # library use only: no CLI input reaches this
         raise ValueError(f"lang {lang!r}: allowed 'en' or 'ru'")
     if fmt not in fg.FORMATS:
+        # library use only: no CLI input reaches this
         raise ValueError(f"fmt {fmt!r}: allowed {', '.join(fg.FORMATS)}")
     folder = Path(folder)
     folder.mkdir(parents=True, exist_ok=True)

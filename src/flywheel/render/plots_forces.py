@@ -3,9 +3,10 @@ three ways with the constant moment of the dynamics, and the polar diagrams (hod
 the crank-pin load, the main-bearing load and the shaking force.
 
 Drawn with render/figure.py's toolkit, as render/plots.py draws — pyplot-free figures with
-fixed margins in inches and the legend outside the axes — and saved by plots.py's pool of
-workers in the fixed style (:func:`figures` is registered in ``plots.all_figures``; this module does not
-import render/plots.py, which imports it). Quantities are named by
+fixed margins in inches, A4's text width, the legend below the axes or in a free cell, the
+hodographs' angle labels none over another (figure.label_points) — and saved by plots.py's
+pool of workers in the fixed style (:func:`figures` is registered in ``plots.all_figures``;
+this module does not import render/plots.py, which imports it). Quantities are named by
 :mod:`flywheel.render.nomenclature`, and so are the titles. Nothing is computed here but
 degrees and the axis limits; matplotlib is imported inside the functions.
 """
@@ -78,14 +79,26 @@ def figure_balancing_moment(results, lang: str = "en"):
 
 
 def _hodograph(ax, x: np.ndarray, y: np.ndarray, results, lang: str, color: str) -> None:
-    """A closed curve over the cycle with the 30° positions marked and labelled [deg]."""
+    """A closed curve over the cycle with the 30° positions marked (labelled [deg] by
+    :func:`_angle_labels` once the figure has its size)."""
     ax.plot(x, y, color=color, linewidth=1.3, label=_t(lang, "curve"))
     ax.plot([0.0], [0.0], "+", color="k", markersize=9, label=_t(lang, "origin"))
-    marks = [results.index_of(math.radians(a)) for a in range(0, 360, 30)]
+    marks = _marks(results)
     ax.plot(x[marks], y[marks], "o", color=color, markersize=3.5)
-    for a, i in zip(range(0, 360, 30), marks):
-        ax.annotate(f"{a}", (x[i], y[i]), xytext=(3, 3), textcoords="offset points", fontsize=7)
     ax.set_aspect("equal", adjustable="datalim")
+
+
+def _marks(results) -> list[int]:
+    """Grid nodes of the 30° positions a hodograph marks."""
+    return [results.index_of(math.radians(a)) for a in range(0, 360, 30)]
+
+
+def _angle_labels(ax, x: np.ndarray, y: np.ndarray, results) -> list:
+    """The marks' angles [deg] beside them, none over another (figure.label_points: a label
+    with no free place is left out; 0° always kept). Called once the figure has its size."""
+    marks = _marks(results)
+    return fg.label_points(ax, x[marks], y[marks], [f"{a}" for a in range(0, 360, 30)],
+                           keep=(0,), lines=[np.column_stack([x, y])])
 
 
 def figure_hodographs(results, lang: str = "en"):
@@ -114,6 +127,8 @@ def figure_hodographs(results, lang: str = "en"):
         ax.set_xlabel(axis(kx, lang))
         ax.set_ylabel(axis(ky, lang))
         ax.set_title(_t(lang, title))
+    for ax, (x, y, *_) in zip(axes, panels):      # the figure's size is final: label the marks
+        _angle_labels(ax, x, y, results)
     axes[0].legend(loc="center", bbox_to_anchor=((cell.x0 + cell.x1) / 2, (cell.y0 + cell.y1) / 2),
                    bbox_transform=fig.transFigure)
     return fig

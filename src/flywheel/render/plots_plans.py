@@ -21,6 +21,7 @@ import re
 import numpy as np
 
 from flywheel.render import nomenclature as nm
+from flywheel.render.figure import A4_W, DPI
 
 _TEXT = {
     "en": {
@@ -95,7 +96,6 @@ _TEXT = {
     },
 }
 
-DPI = 120                   # as render/plots.py
 _COLOURS = {"absolute": "k", "relative": "C0", "normal": "C0", "tangential": "C3",
             "coriolis": "C2", "sliding": "C4", "weight": "C2", "inertia": "C3", "given": "C1",
             "known": "C4", "reaction": "k", "reaction_n": "k", "reaction_t": "k"}
@@ -277,15 +277,16 @@ class _Labels:
     def _cost(self, b) -> float:
         x0, y0, x1, y1 = b
         c = 0.0
-        if self.frame is not None:          # out of the axes: over the tick labels
-            lo, hi = self.frame
-            if x0 < lo[0] or y0 < lo[1] or x1 > hi[0] or y1 > hi[1]:
-                c += 50.0
+        if self.frame is not None:          # out of the axes: over the tick labels, and the
+            lo, hi = self.frame             # farther out the worse (off the page at last)
+            out = max(lo[0] - x0, lo[1] - y0, x1 - hi[0], y1 - hi[1]) * self.ppm   # [pt]
+            if out > 0:             # past 8 pt: over the next panel's tick labels
+                c += 150.0 + 5.0 * out + (2000.0 if out > 8.0 else 0.0)
         for q in self.boxes:
             dx = min(x1, q[2]) - max(x0, q[0])
             dy = min(y1, q[3]) - max(y0, q[1])
             if dx > 0 and dy > 0:
-                c += 10.0 + dx * dy
+                c += 300.0 + dx * dy
         if len(self.cloud):
             p = self.cloud
             c += float(np.count_nonzero((p[:, 0] > x0) & (p[:, 0] < x1)
@@ -302,7 +303,7 @@ class _Labels:
         """``text`` (bold) beside the point ``xy`` [mm]: at ``first`` [pt] up right of it
         unless that place sits on a line or a label placed before, else at the corner or side
         that sits on the fewest (the same search as :meth:`along`, around the point)."""
-        w = _CHAR_W * fontsize * len(text) / self.ppm
+        w = (_CHAR_W * len(text) + 0.3) * fontsize / self.ppm      # + 0.3 em: a margin
         h = 1.25 * fontsize / self.ppm
         cands = ((first[0], first[1], "left", "bottom"),) + self._AROUND[1:]
         best = None
@@ -323,12 +324,12 @@ class _Labels:
         d = np.asarray(head, float) - np.asarray(tail, float)
         L = float(np.hypot(*d))
         n = np.array([-d[1], d[0]]) / L if L > 1e-12 else np.array([0.0, 1.0])
-        w = _CHAR_W * fontsize * len(text) / self.ppm
+        w = (_CHAR_W * len(text) + 0.3) * fontsize / self.ppm      # + 0.3 em: a margin
         h = 1.25 * fontsize / self.ppm
         best = None
         for t in (0.5, 0.35, 0.65, 0.2, 0.8):
             for side in (1.0, -1.0):
-                for dist in (2.5, 8.0):
+                for dist in (2.5, 8.0, 16.0, 26.0, 40.0):
                     m = side * n
                     ha = "left" if m[0] > 0.35 else "right" if m[0] < -0.35 else "center"
                     va = "bottom" if m[1] > 0.35 else "top" if m[1] < -0.35 else "center"
@@ -341,30 +342,79 @@ class _Labels:
                     break
             if best[0] < 0.2:
                 break
+        if best[0] >= 300.0:        # on a label wherever beside the vector: farther round it
+            mid = np.asarray(tail, float) + 0.5 * d
+            for dist in (30.0, 45.0, 60.0):
+                for k in range(16):
+                    m = np.array([math.cos(k * math.pi / 8), math.sin(k * math.pi / 8)])
+                    xy = mid + m * dist / self.ppm
+                    b = self._box(xy[0], xy[1], w, h, "center", "center")
+                    c = self._cost(b) + 0.01 * dist
+                    if c < best[0] - 1e-12:
+                        best = (c, xy, "center", "center", b)
         _, xy, ha, va, b = best
         self.boxes.append(b)
         self.ax.text(float(xy[0]), float(xy[1]), text, ha=ha, va=va, fontsize=fontsize,
                      color=colour, zorder=6)
 
 
+_COL_GAP = 0.25             # between two columns of a table [in]
+
+
+def _text_width(line: str, fontsize: float) -> float:
+    """A line's width [in] at ``fontsize``, estimated from its characters (no renderer)."""
+    return len(line) * _CHAR_W * fontsize / _PT
+
+
+def _column_layout(lines: list[str], width: float, fontsize: float = 7.5,
+                   max_cols: int = 4) -> tuple[int, list[float]]:
+    """The most columns (up to ``max_cols``) :func:`_columns` can set ``lines`` in within
+    ``width`` [in], each column as wide as its longest line: (rows, each column's left edge
+    [in from the table's left])."""
+    n = len(lines)
+    for ncol in range(min(max_cols, max(n, 1)), 0, -1):
+        rows = math.ceil(n / ncol) if n else 0
+        xs, x = [], 0.0
+        for c in range(ncol):
+            chunk = lines[c * rows:(c + 1) * rows]
+            if not chunk:
+                break
+            xs.append(x)
+            x += max(_text_width(t, fontsize) for t in chunk) + _COL_GAP
+        if x - _COL_GAP <= width or ncol == 1:
+            return rows, xs
+    return 0, []
+
+
+def _legend_cols(labels: list[str], width: float, fontsize: float = 8.0,
+                 max_cols: int = 6) -> int:
+    """The most columns (up to ``max_cols``) a legend of ``labels`` fits in within ``width``
+    [in], every column as wide as the widest entry (its line and padding: 0.55 in)."""
+    entry = max([_text_width(t, fontsize) for t in labels] + [0.0]) + 0.55
+    return max(1, min(max_cols, len(labels), int(width // entry)))
+
+
+def _legend_height(n: int, ncols: int) -> float:
+    """The height [in] of a legend of n entries (8 pt) in ``ncols`` columns."""
+    return math.ceil(n / max(ncols, 1)) * 0.2 + 0.1
+
+
 def _columns(fig, lines: list[str], x0: float, y0: float, width: float, H: float, W: float,
-             fontsize: float = 7.5, col_w: float = 2.3) -> None:
+             fontsize: float = 7.5) -> None:
     """``lines`` as a compact table in columns below y0 [in from the bottom], from x0 [in]
-    across ``width`` [in]: one text per column (a text object per cell would cost a layout
-    each)."""
-    ncol = max(1, int(width // col_w))
-    rows = math.ceil(len(lines) / ncol)
-    for c in range(ncol):
+    across ``width`` [in] (:func:`_column_layout`): one text per column (a text object per
+    cell would cost a layout each)."""
+    rows, xs = _column_layout(lines, width, fontsize)
+    for c, x in enumerate(xs):
         chunk = lines[c * rows:(c + 1) * rows]
-        if chunk:
-            fig.text((x0 + c * width / ncol) / W, y0 / H, "\n".join(chunk), va="top", ha="left",
-                     fontsize=fontsize, linespacing=1.3)
+        fig.text((x0 + x) / W, y0 / H, "\n".join(chunk), va="top", ha="left",
+                 fontsize=fontsize, linespacing=1.3)
 
 
-def _table_height(n: int, width: float, fontsize: float = 7.5, col_w: float = 2.3) -> float:
-    """The height [in] of :func:`_columns`'s table of n lines."""
-    ncol = max(1, int(width // col_w))
-    return math.ceil(n / ncol) * 1.3 * fontsize / _PT + 0.05
+def _table_height(lines: list[str], width: float, fontsize: float = 7.5) -> float:
+    """The height [in] of :func:`_columns`'s table of ``lines``."""
+    rows, _ = _column_layout(lines, width, fontsize)
+    return rows * 1.3 * fontsize / _PT + 0.05
 
 
 # -- the kinematic plans --------------------------------------------------------------------------
@@ -399,7 +449,7 @@ def _plan_box(lo, hi, max_w: float, max_h: float) -> tuple[float, float]:
 def _kinematic_plan(results, ps, which: str, lang: str):
     """The velocity (``which`` "velocity") or the acceleration plan at one report angle: the
     plan to its scale, the legend in one row below it, then its values as a compact table
-    (A4 width: 8 in, the height what the plan needs)."""
+    (A4 text width, :data:`A4_W`; the height what the plan needs)."""
     from matplotlib.figure import Figure
     from matplotlib.lines import Line2D
 
@@ -423,7 +473,7 @@ def _kinematic_plan(results, ps, which: str, lang: str):
             lines.append(f"{_vec_label(plan, v)} = {_num(val)} {_unit(u, lang)}, "
                          f"{val / mu:.1f} {_unit('mm', lang)}")
     lo, hi = _limits(np.array(pts))
-    W, left, right = 8.0, 0.7, 0.3
+    W, left, right = A4_W, 0.7, 0.3
     aw, ah = _plan_box(lo, hi, W - left - right, 6.2)
     lw = plan.links
     wmax = max([abs(float(x)) for x in lw.values()] + [0.0])
@@ -431,8 +481,12 @@ def _kinematic_plan(results, ps, which: str, lang: str):
     head = (f"{_t(lang, 'omega', w=plan.omega, e=plan.epsilon)}; "
             f"{_t(lang, name, x=', '.join(f'{n} {_num(_clean(lw[n], wmax))}' for n in lw))}")
     head = _wrap([head], int((W - left - right) / (_CHAR_W * 7.5 / _PT)))
-    top, below, leg = 0.55, 0.5, 0.3
-    t_h = _table_height(len(lines), W - left - right)
+    handles = [Line2D([], [], color=_COLOURS[k], linewidth=1.8 if k == "absolute" else 1.2,
+                      linestyle="--" if k == "relative" else "-", label=_t(lang, k))
+               for k, *_ in groups]
+    ncols = _legend_cols([h.get_label() for h in handles], W - 0.2)
+    top, below, leg = 0.55, 0.5, _legend_height(len(handles), ncols)
+    t_h = _table_height(lines, W - left - right)
     h_h = len(head) * 1.3 * 7.5 / _PT + 0.08
     H = top + ah + below + leg + h_h + t_h + 0.1
     fig = Figure(figsize=(W, H), dpi=DPI)
@@ -465,12 +519,9 @@ def _kinematic_plan(results, ps, which: str, lang: str):
                 if float(np.hypot(*(h - t))) >= 2.0:   # shorter than 2 mm: in the table only
                     labels.along(t, h, _ON_PLAN[kind], _COLOURS[kind], 8.0)
     _set_frame(ax, lo, hi, lang)
-    handles = [Line2D([], [], color=_COLOURS[k], linewidth=1.8 if k == "absolute" else 1.2,
-                      linestyle="--" if k == "relative" else "-", label=_t(lang, k))
-               for k, *_ in groups]
     y = y_ax - below
     fig.legend(handles=handles, loc="upper center", bbox_to_anchor=(0.5, y / H),
-               ncols=len(handles), fontsize=8, frameon=False)
+               ncols=ncols, fontsize=8, frameon=False)
     y -= leg
     fig.text(left / W, y / H, "\n".join(head), va="top", ha="left", fontsize=7.5,
              linespacing=1.3)
@@ -528,8 +579,9 @@ def _rows_of(aspects: list[float], width: float, gap: float, max_h: float,
 def figure_force_polygons(results, ps, lang: str = "en"):
     """The force polygon of every Assur group and of the crank at one report angle, each to
     its own μ_F (one panel each; the panels in rows of one height, each as wide as its polygon
-    needs, A4 width: 10 in), the values beside the vectors (4 significant digits), the legend
-    in one row below."""
+    needs, A4 text width :data:`A4_W`: as many a row as fit, the rest stacked below), the
+    values beside the vectors (4 significant digits), the legend below in as many columns as
+    fit."""
     from matplotlib.figure import Figure
     from matplotlib.lines import Line2D
 
@@ -542,18 +594,25 @@ def figure_force_polygons(results, ps, lang: str = "en"):
                        + [np.array(v.head) / mu for v in vecs])
         frames.append(_limits(pts))
     aspects = [float((hi - lo)[1] / (hi - lo)[0]) for lo, hi in frames]
-    W, left, right, gap = 10.0, 0.1, 0.15, 0.6       # gap: each panel's y tick labels [in]
+    W, left, right, gap = A4_W, 0.1, 0.15, 0.6       # gap: each panel's y tick labels [in]
     title_h, row_extra = 0.75, 1.5          # title above, tick labels and x label below [in]
     for _ in range(2):      # each panel at least as wide as its title (1.9 in)
-        rows, ah = _rows_of(aspects, W - left - right, gap, 4.5, 11.0, row_extra)
+        rows, ah = _rows_of(aspects, W - left - right, gap, 4.5, 9.0, row_extra)
         aspects = [min(a, ah / 1.9) for a in aspects]
     for k, (lo, hi) in enumerate(frames):        # a frame widened to its panel's aspect
         extra = (float(hi[1] - lo[1]) / aspects[k] - float(hi[0] - lo[0])) / 2
         frames[k] = (lo - (extra, 0.0), hi + (extra, 0.0))
-    top, leg = 0.6, 0.35
+    order = ("weight", "inertia", "given", "known", "reaction", "chord")
+    used = {"reaction" if v.kind.startswith("reaction") else v.kind
+            for pg in polys for v in pg.vectors} | ({"chord"} if any(pg.chords for pg in polys)
+                                                    else set())
+    handles = [Line2D([], [], color=_COLOURS.get(k, "0.45"), linewidth=1.5,
+                      linestyle="--" if k == "chord" else "-", label=_t(lang, k))
+               for k in order if k in used]
+    ncols = _legend_cols([h.get_label() for h in handles], W - 0.2, max_cols=3)
+    top, leg = 0.6, _legend_height(len(handles), ncols)
     H = top + len(rows) * (ah + row_extra) + leg
     fig = Figure(figsize=(W, H), dpi=DPI)
-    used = set()
     for r, row in enumerate(rows):
         widths = [ah / aspects[k] for k in row]
         x = left + (W - left - right - sum(widths) - gap * len(row)) / 2
@@ -571,13 +630,11 @@ def figure_force_polygons(results, ps, lang: str = "en"):
                 vs = [v for v in pg.vectors if v.kind == kind]
                 if not vs:
                     continue
-                used.add("reaction" if kind.startswith("reaction") else kind)
                 tails = np.array([v.tail for v in vs]) / mu
                 heads = np.array([v.head for v in vs]) / mu
                 segs += list(zip(tails, heads))
                 _arrows(ax, tails, heads, _COLOURS[kind], 1.5)
             if pg.chords:
-                used.add("chord")
                 tails = np.array([v.tail for v in pg.chords]) / mu
                 heads = np.array([v.head for v in pg.chords]) / mu
                 segs += list(zip(tails, heads))
@@ -594,12 +651,8 @@ def figure_force_polygons(results, ps, lang: str = "en"):
             scale = _scale_text("mu_F", mu, lang)
             ax.set_title(f"{what}\n{scale}\n{_t(lang, 'closes', c=pg.closure)}", fontsize=8.5,
                          y=1.01)   # a fixed place: no layout pass for it
-    order = ("weight", "inertia", "given", "known", "reaction", "chord")
-    handles = [Line2D([], [], color=_COLOURS.get(k, "0.45"), linewidth=1.5,
-                      linestyle="--" if k == "chord" else "-", label=_t(lang, k))
-               for k in order if k in used]
     fig.legend(handles=handles, loc="lower center", bbox_to_anchor=(0.5, 0.05 / H),
-               ncols=min(3, len(handles)), fontsize=8, frameon=False)
+               ncols=ncols, fontsize=8, frameon=False)
     what = _t(lang, "forces", p=nm.name("force_polygon", lang), a=ps.phi_deg)
     fig.suptitle(f"{_title(results, what)} ({_unit('N', lang)})", fontsize=10,
                  y=1 - 0.1 / H, va="top")
@@ -612,7 +665,7 @@ def figure_lever(results, ps, lang: str = "en"):
     """Zhukovsky's lever at one report angle: the turned velocity plan to μ_v, every force at
     its point's image (drawn to μ_F), and below it the forces' arms and powers, the couples'
     powers, the sum of the moments about the pole and M_y from it beside M_y of the
-    kinetostatics (A4 width: 8 in)."""
+    kinetostatics (A4 text width, :data:`A4_W`)."""
     from matplotlib.collections import LineCollection
     from matplotlib.figure import Figure
 
@@ -642,10 +695,10 @@ def figure_lever(results, ps, lang: str = "en"):
             _plain(_t(lang, "lever_My", m=lv.balancing_moment, k=k)),
             _plain(_t(lang, "lever_Py", p=Py))]
     lo, hi = _limits(np.array(pts))
-    W, left, right = 8.0, 0.7, 0.3
+    W, left, right = A4_W, 0.7, 0.3
     aw, ah = _plan_box(lo, hi, W - left - right, 6.2)
     top, below = 0.75, 0.55
-    t_h = _table_height(len(lines), W - left - right, col_w=3.5)
+    t_h = _table_height(lines, W - left - right)
     s_h = len(sums) * 1.3 * 7.5 / _PT + 0.1
     H = top + ah + below + t_h + s_h + 0.1
     fig = Figure(figsize=(W, H), dpi=DPI)
@@ -672,7 +725,7 @@ def figure_lever(results, ps, lang: str = "en"):
         labels.along(tail, head, _force_label(f.name, lang), colour, 8.0)
     _set_frame(ax, lo, hi, lang)
     y = y_ax - below
-    _columns(fig, lines, left, y, W - left - right, H, W, col_w=3.5)
+    _columns(fig, lines, left, y, W - left - right, H, W)
     fig.text(left / W, (y - t_h - 0.05) / H, "\n".join(sums), va="top", ha="left",
              fontsize=7.5, linespacing=1.3)
     what = _t(lang, "lever", p=nm.name("zhukovsky_lever", lang), a=ps.phi_deg)
@@ -693,24 +746,21 @@ def figure_positions_plan(results, lang: str = "en", scheme=None):
     from matplotlib.lines import Line2D
 
     P = results.kinematics.points
-    fig, axes = _figure((8.0, 8.0), left=0.75, right=0.25, top=0.6, bottom=0.95)
+    fig, axes = _figure((A4_W, A4_W), left=0.75, right=0.25, top=0.6, bottom=0.95)
     ax = axes[0, 0]
     allr = np.concatenate([pm.r for pm in P.values()])
     size = 0.035 * float(max(np.ptp(allr[:, 0]), np.ptp(allr[:, 1]), 1e-9))
-    def every_30(phi: float) -> bool:
-        k = math.degrees(phi) / 30
-        return abs(k - round(k)) < 1e-6
-
-    std = [(lab, phi) for lab, phi in results.position_angles if every_30(phi)]
-    dcs = [(lab, phi) for lab, phi in results.position_angles if (lab, phi) not in std]
+    nums = results.position_numbers()          # the one numbering: the CSVs and the report's
+    std = [(lab, phi) for (lab, phi), k in zip(results.position_angles, nums) if k is not None]
+    dcs = [(lab, phi) for (lab, phi), k in zip(results.position_angles, nums) if k is None]
     i0 = results.index_of(std[0][1]) if std else 0
     if scheme is not None:
         _scheme(ax, results, i0, size, scheme)
     links = results.links_drawn
     numbers: dict[int, list[int]] = {}
-    for lab, phi in std:
-        k = int(round(math.degrees(phi) / 30))
-        numbers.setdefault(k % 12, []).append(k)
+    for k in nums:
+        if k is not None:
+            numbers.setdefault(k % 12, []).append(k)
     segs, dsegs, drawn = [], [], set()
     for lab, phi in std + dcs:
         once = round(math.degrees(phi) % 360.0, 6)    # a 720° cycle repeats the geometry
@@ -740,23 +790,38 @@ def figure_positions_plan(results, lang: str = "en", scheme=None):
             if line not in guides and lm.ref != tip:
                 guides.add(line)
                 sliders[lm.ref] = th              # the guide's direction [rad]
+    # (a number that would sit on one placed before moves out, 9 pt a step: the sliders'
+    # positions crowd near their dead centres)
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+    ax.set_aspect("equal", adjustable="datalim")
+    ax.get_xlim()                      # the limits autoscaled and fitted: the page's pixels
+    ax.apply_aspect()
+    renderer = FigureCanvasAgg(fig).get_renderer()
+    boxes = []
     for p in [tip, *sliders]:
         for k, ks in numbers.items():
             i = results.index_of(math.radians(30 * k))
             c = P[p].r[i]
             if p == tip:
                 d = c - P[pivot].r[i]
-                n = d / (np.hypot(*d) or 1.0)
-                off = (11 * n[0], 11 * n[1])
+                n, dist = d / (np.hypot(*d) or 1.0), 11.0
             else:        # the side of the guide the crank pin is on: strokes apart
                 th = sliders[p]
                 u = (math.cos(th), math.sin(th))
                 rel = P[tip].r[i] - c
                 side = -1 if u[0] * rel[1] - u[1] * rel[0] < -1e-12 else 1
-                off = (-20 * side * u[1], 20 * side * u[0])
-            ax.annotate(", ".join(str(x) for x in ks), c, xytext=off, textcoords="offset points",
-                        ha="center", va="center", fontsize=7.5, color="C0", zorder=8)
-    ax.set_aspect("equal", adjustable="datalim")
+                n, dist = np.array([-side * u[1], side * u[0]]), 20.0
+            for step in range(6):
+                a = ax.annotate(", ".join(str(x) for x in ks), c,
+                                xytext=((dist + 9 * step) * n[0], (dist + 9 * step) * n[1]),
+                                textcoords="offset points", ha="center", va="center",
+                                fontsize=7.5, color="C0", zorder=8)
+                b = a.get_window_extent(renderer)
+                if step == 5 or not any(b.overlaps(q) for q in boxes):
+                    break
+                a.remove()
+            boxes.append(b)
     ax.set_xlabel(nm.axis("x", lang))
     ax.set_ylabel(nm.axis("y", lang))
     handles = [Line2D([], [], color="0.35", linewidth=0.8,

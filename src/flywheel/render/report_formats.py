@@ -301,6 +301,7 @@ def write_reports(doc: Document, folder: Path, formats, plots_dir: Path | None) 
         elif f == "docx":
             (folder / name).write_bytes(docx(doc, plots_dir))
         else:
+            # library use only: no CLI input reaches this
             raise ValueError(f"report format {f!r} (allowed: {', '.join(FORMATS)})")
         names.append(name)
     return names

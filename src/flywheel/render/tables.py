@@ -37,14 +37,22 @@ def _rows(data: np.ndarray) -> list[str]:
 
 
 def positions_csv(results) -> str:
-    """The standard positions (every 30° and the sliders' dead centres): every column there."""
+    """The standard positions (every 30° and the sliders' dead centres): their label, their
+    number as plan_positions.png draws it (:func:`number_cell`), every column there."""
     cols = results.columns
-    header = "position," + ",".join(csv_header(key) for key in cols)
+    header = "position,number," + ",".join(csv_header(key) for key in cols)
     lines = [header]
-    for label, phi in results.position_angles:
+    for (label, phi), k in zip(results.position_angles, results.position_numbers()):
         i = results.index_of(phi)
-        lines.append(label + "," + ",".join(_fmt(c.values[i]) for c in cols.values()))
+        lines.append(f"{label},{number_cell(k)},"
+                     + ",".join(_fmt(c.values[i]) for c in cols.values()))
     return "\n".join(lines) + "\n"
+
+
+def number_cell(k: int | None) -> str:
+    """A position's number in the CSVs (``Results.position_numbers``): empty where the
+    position has none (a dead centre between the 30° positions, a tabulated case)."""
+    return "" if k is None else str(k)
 
 
 def summary_json(results) -> str:
