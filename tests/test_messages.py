@@ -589,7 +589,8 @@ RUSSIAN_ERRORS.update({
     "run/no-inertia": ["у машины нет инерции: нагрузки не вызывают колебаний энергии"],
     "run/given-flywheel-vanishes-on-the-crank-shaft": ["у машины нет инерции (допустимо: "
                                                        "flywheel.J > 0"],
-    "run/given-flywheel-and-no-fluctuation": ["заданный маховик (J = 1 кг·м²) слишком мал"],
+    "run/given-flywheel-and-no-fluctuation": ["заданный маховик (J = 1 кг·м²) не проверить: "
+                                              "скорость не колеблется вовсе (δ = 0"],
     "run/tabulated-masses-overflow": ["результаты переполняются"],
     "run/case-path-through-a-file": ["не удаётся прочитать (часть пути — не папка)"],
     "run/out-name-too-long": ["не удаётся записать (слишком длинное имя файла)"],

@@ -291,6 +291,12 @@ def dynamics(phi: np.ndarray, loads: LoadsResult, red: ReductionResult, machine,
             sz = size_flywheel(phi, en, red, machine, fw)
         else:
             delta = given_flywheel_delta(en, red, machine, J_given, fw.speed_ratio)
+            if delta == 0:
+                raise InputError(Notice(
+                    f"the given flywheel (J = {J_given:.6g} kg·m²) is not checked: the speed "
+                    "does not fluctuate at all (δ = 0: no load does work and no link's mass "
+                    "moves, so the kinetic energy is constant) (allowed: a case with loads or "
+                    "masses)", "run_given_no_fluctuation", J=J_given))
             if not 0 < delta < 2:
                 raise InputError(Notice(
                     f"the given flywheel (J = {J_given:.6g} kg·m²) is too small: the speed "
