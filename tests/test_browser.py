@@ -112,3 +112,29 @@ def test_report_html_in_headless_chromium(tmp_path):
         assert {(round(min(w, h)), round(max(w, h))) for w, h, _, _ in pages} == {(595, 842)}
         for w, h, right, _ in pages:
             assert right <= w - 10 / 25.4 * 72, (w, right)     # inside the page's 15 mm margin
+
+
+@pytest.mark.parametrize("template", ["variants_compressor.toml", "variants_engine.toml",
+                                      "variants_task2.toml"])
+def test_a_task_sheet_prints_on_one_a4_page(tmp_path, template):
+    """A teacher prints the HTML sheets from a browser: each variant's sheet is one A4 page,
+    a run template's 40-odd data rows too (docs/teacher.md); read back with pypdf."""
+    from pypdf import PdfReader
+
+    browser = _browser()
+    out = tmp_path / "v"
+    res = CliRunner().invoke(app, ["variants", str(CASES / template), "--count", "2", "--seed",
+                                   "7", "--sheets", "--sheets-format", "html", "--lang", "ru",
+                                   "--out", str(out)])
+    assert res.exit_code == 0, res.output
+    for sheet in sorted((out / "sheets").glob("variant_*.html")):
+        printed = tmp_path / (sheet.stem + ".pdf")
+        run = _chromium(browser, tmp_path, "--no-pdf-header-footer",
+                        f"--print-to-pdf={printed}", sheet.as_uri())
+        assert run.returncode == 0 and printed.read_bytes()[:4] == b"%PDF", run.stderr[-2000:]
+        pdf = PdfReader(printed)
+        assert len(pdf.pages) == 1, (sheet.name, len(pdf.pages))
+        box = pdf.pages[0].mediabox
+        assert (round(float(box.width)), round(float(box.height))) == (595, 842)
+        text = pdf.pages[0].extract_text()
+        assert "Дано" in text and "Определить" in text, text[:300]

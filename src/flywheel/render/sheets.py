@@ -20,10 +20,16 @@ from flywheel.render import nomenclature as nm
 from flywheel.render.document import Document, Figure, Heading, Paragraph, Table
 
 FORMATS = ("both", "html", "pdf")
-#: the sheet's own print style, after the записка's: the drawing small enough for one A4 page
-_CSS = ("figure img { max-height: 68mm; width: auto; } "
-        "@media print { body { font-size: 9.5pt; } table { font-size: 0.8em; } "
-        "td, th { padding: 0.05em 0.35em; } } td:nth-child(2) { white-space: normal; }")
+#: the sheet's own print style, after the записка's and as the PDF sheet's layout (typst_sheet:
+#: margins 15 × 10 mm, the drawing 52 mm high): one A4 page for a run template's 40-odd data
+#: rows too; a table longer than what is left of a page breaks rather than moving whole
+_CSS = ("figure img { max-height: 52mm; width: auto; } "
+        "@page { size: A4; margin: 10mm 15mm; } "
+        "@media print { body { font-size: 9pt; line-height: 1.25; } h1 { font-size: 1.3em; "
+        "margin: 0 0 0.3em; } h2 { margin: 0.6em 0 0.3em; } figure { margin: 0.3em 0; } "
+        "table { font-size: 0.78em; break-inside: auto; page-break-inside: auto; } "
+        "td, th { padding: 0 0.35em; } p { margin: 0.3em 0; } .caption { margin: 0.4em 0 0.1em; } "
+        "li { margin: 0.1em 0; } } td:nth-child(2) { white-space: normal; }")
 #: the combined file of all sheets, one per page, for printing the class set
 COMBINED = "sheets.pdf"
 FOLDER = "sheets"
