@@ -448,3 +448,26 @@ def test_every_field_of_every_bundled_case_has_a_name(lang):
     assert seen_text == {"machine.firing_order", "machine.balance", "crank.rotation",
                          "cylinders.#.head", "flywheel.material", "forces.#.reference",
                          "forces.#.stroke"}
+
+
+def test_the_sheet_gives_the_defaults_a_flywheels_diameter_needs(tmp_path):
+    """The engine template asks flywheel_disk.D but leaves the material out (cases/run.py's
+    default: steel, ρ = 7800 kg/m³): the sheet gives ρ and b/D, and from them and the key's
+    J_flywheel a student's D = (32·J/(π·ρ·b/D))^(1/5) (a solid disk) is the key's D. The
+    compressor template gives its density: no second row."""
+    out = tmp_path / "e"
+    res = invoke(CASES / "variants_engine.toml", "--count", 2, "--seed", 3, "--out", out,
+                 "--sheets", "--sheets-format", "html", "--lang", "en")
+    assert res.exit_code == 0, res.output
+    key = key_of(out)["variants"]
+    for vid, answers in key.items():
+        rows = {r[0]: r for t in sheet_of(out, vid).tables for r in t}
+        (rho,) = [numbers(r[1])[0] for label, r in rows.items() if "density" in label]
+        (ratio,) = [numbers(r[1])[0] for label, r in rows.items() if "b/D" in label]
+        assert rho == 7800.0
+        D = (32 * answers["J_flywheel"] / (3.141592653589793 * rho * ratio)) ** 0.2
+        assert D == pytest.approx(answers["flywheel_disk.D"], rel=1e-9)
+    res = invoke(COMPRESSOR, "--count", 1, "--seed", 3, "--out", tmp_path / "c", "--sheets",
+                 "--sheets-format", "html", "--lang", "en")
+    rows = [r[0] for t in sheet_of(tmp_path / "c", "01").tables for r in t]
+    assert sum("density" in label for label in rows) == 1

@@ -169,6 +169,31 @@ def given_rows(kind: str, document: dict, varied) -> tuple[Given, ...]:
     return tuple(drawn + [g for g in rows if not g.varied])
 
 
+#: answers that depend on the flywheel's material and proportions (summary.json keys' first part)
+_FLYWHEEL_DIMENSIONS = ("flywheel_disk", "flywheel_rim")
+
+
+def default_rows(document: dict, source: str, answers) -> tuple[Given, ...]:
+    """The defaults an answer depends on that the case leaves out, as given data: a flywheel's
+    diameter (``flywheel_disk.D``, ``flywheel_rim.*``) needs ρ of its material and b/D (and the
+    rim's D_inner/D), which cases/run.py defaults (steel, 0.2, 0.8) when [flywheel] does not
+    say them; a student cannot find D without them. Only for the first-principles formulas
+    (the course's formulas take none of them)."""
+    if not any(a.split(".")[0] in _FLYWHEEL_DIMENSIONS for a in answers):
+        return ()
+    from flywheel.cases.run import parse_case
+
+    fw = parse_case(document, source).flywheel
+    if fw.formulas == "course":
+        return ()
+    given = document.get("flywheel", {}) if isinstance(document.get("flywheel"), dict) else {}
+    wanted = [("density", fw.rho, "kg/m³"), ("width_ratio", fw.width_ratio, "")]
+    if any(a.split(".")[0] == "flywheel_rim" for a in answers):
+        wanted.append(("inner_ratio", fw.inner_ratio, ""))
+    return tuple(Given(f"flywheel.{k}", float(v), u, False) for k, v, u in wanted
+                 if k not in given)
+
+
 def element_names(document: dict, prefix: str = "") -> dict[str, str]:
     """The name of each table of an array of tables ("cylinders.0" → "HP", "crank.pins.0" →
     "A2"): its ``name``, else its ``joint`` (a dyad is named by its joint); arrays inside a
@@ -254,8 +279,11 @@ def sheets_of(vs, progress=None) -> list[Sheet]:
             graphs, why = _moments(doc, v.filename)
             kw.update(moments=graphs, no_drawing=why)
         title = doc.get("title", "") if isinstance(doc.get("title", ""), str) else ""
-        out.append(Sheet(n, v.id, stem, t.kind, title, given_rows(t.kind, doc, varied),
-                         find, names=element_names(doc), **kw))
+        given = given_rows(t.kind, doc, varied)
+        if t.kind == "run":
+            given += default_rows(doc, v.filename, t.answers)
+        out.append(Sheet(n, v.id, stem, t.kind, title, given, find, names=element_names(doc),
+                         **kw))
         if progress is not None:
             progress(n)
     return out
