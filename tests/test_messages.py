@@ -591,7 +591,8 @@ RUSSIAN_ERRORS.update({
                                                        "flywheel.J > 0"],
     "run/given-flywheel-and-no-fluctuation": ["заданный маховик (J = 1 кг·м²) не проверить: "
                                               "скорость не колеблется вовсе (δ = 0"],
-    "run/tabulated-masses-overflow": ["результаты переполняются"],
+    "run/tabulated-mass-out-of-range": ["tabulated.links.2.mass: 1e+308 кг вне допустимого "
+                                        "диапазона (0 … 1e+06 кг)"],
     "run/case-path-through-a-file": ["не удаётся прочитать (часть пути — не папка)"],
     "run/out-name-too-long": ["не удаётся записать (слишком длинное имя файла)"],
     "grade/out-name-too-long": ["не удаётся записать (слишком длинное имя файла)"],

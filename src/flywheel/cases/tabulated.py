@@ -11,7 +11,7 @@ import numpy as np
 from pydantic import Field, PrivateAttr, ValidationInfo, model_validator
 
 from flywheel.errors import Notice
-from flywheel.io.schema import FieldError, StrictModel
+from flywheel.io.schema import FieldError, StrictModel, within
 
 MIN_POSITIONS = 6
 MAX_GAP_DEG = 360.0 / MIN_POSITIONS      # the widest allowed gap between neighbouring positions
@@ -34,15 +34,16 @@ class TableError(FieldError):
 class TabLink(StrictModel):
     """Mass data of one link and the table rows it uses: J share = mass·V_q² + J·ω_q²."""
 
-    mass: float = Field(0.0, gt=0, description="mass m [kg], > 0, at `point` (leave it out for "
-                                               "a link that only turns)")
+    # the same ranges as a [links] entry of a mechanism (cases/run.py Mass, Inertia)
+    mass: Annotated[float, Field(gt=0), within(0.0, 1e6, "kg")] = Field(
+        0.0, description="mass m [kg], > 0, at `point` (leave it out for a link that only turns)")
     point: str | None = Field(None, description="row of [tabulated.points] whose |V_q| the mass "
                                                 "moves with (its centroid, or the point the "
                                                 "course uses for it)")
-    J: float = Field(0.0, ge=0, description="moment of inertia [kg·m²] multiplied by ω_q²: about "
-                                            "the centroid for a link in plane motion (with its "
-                                            "mass at the centroid), about the fixed pivot for a "
-                                            "link that only turns (then no mass)")
+    J: Annotated[float, Field(ge=0), within(0.0, 1e6, "kg·m²")] = Field(
+        0.0, description="moment of inertia [kg·m²] multiplied by ω_q²: about the centroid for "
+                         "a link in plane motion (with its mass at the centroid), about the fixed "
+                         "pivot for a link that only turns (then no mass)")
     omega_q: str | None = Field(None, description="row of [tabulated.omega_q] (default: the link's "
                                                   "own name)")
 
