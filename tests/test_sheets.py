@@ -383,6 +383,8 @@ def test_text_data_are_on_the_sheet_in_words(tmp_path):
     assert rows["сила cutting: действует при движении ползуна"] == ["к этой мёртвой точке", "–"]
     assert rows["сила cutting: мёртвая точка начала отсчёта перемещения s"][0] == \
         "внешняя (дальняя от оси кривошипа)"
+    # a force's magnitude is worded as its other rows are (its name is the case's)
+    assert [k for k in rows if k.startswith("сила cutting")][0] == "сила cutting: модуль F"
 
 
 def test_flywheel_J_is_worded_by_the_case_kind(tmp_path):

@@ -1866,7 +1866,7 @@ SHEET_FIELDS: list[tuple[str, str, str]] = [
      "цилиндр {x}: p/p_max при движении поршня к головке"),
     ("cylinders.#.away_from_head", "cylinder {x}: p/p_max, piston moving from the head",
      "цилиндр {x}: p/p_max при движении поршня от головки"),
-    ("forces.#.magnitude", "force {x}", "сила {x}"),
+    ("forces.#.magnitude", "force {x}: magnitude F", "сила {x}: модуль F"),
     ("forces.#.s_range", "force {x}: where it acts (relative travel)",
      "сила {x}: участок действия (отн. перемещение)"),
     ("flywheel.density", "density of the flywheel material ρ", "плотность материала маховика ρ"),
