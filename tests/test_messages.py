@@ -227,7 +227,7 @@ RUSSIAN_ERRORS.update({
     "task2/case-points-do-not-reach-the-cycle-end": ['должно охватывать цикл 0…360° (охвачено 0…300°)'],
     "task2/case-triangle-reversed": ['нужно 0 ≤ from_deg < to_deg ≤ 360 (задано 300, 270)'],
     "task2/case-trapezoid-top-outside": ['нужно from_deg ≤ top_from_deg ≤ top_to_deg ≤ to_deg'],
-    "task2/case-harmonic-lengths-differ": ['порядков гармоник на 1 членов ряда'],
+    "task2/case-harmonic-lengths-differ": ['задано порядков гармоник: 2, а членов ряда: 1'],
     "task2/case-diagram-areas-do-not-close": ['сумма 1, а не 0: за цикл площади над средней линией и под'],
     "task2/case-diagram-and-graphs": ['задайте что-то одно: [diagram] или [driving] и [resistance]'],
     "task2/case-diagram-scale-zero": ['должно быть положительным (задано 0)'],
@@ -243,7 +243,7 @@ RUSSIAN_ERRORS.update({
     "aggregate/flywheel-on-II-without-i21": ['не задано: маховику на валу II нужно i21 = ω_II/ω_I'],
     "aggregate/J-III-missing": ['не задано: укажите J_III (J_пр.III, кг·м²) или J_III_0 с'],
     "aggregate/one-rotor": ['цепочке нужно не меньше двух роторов (задано 1)'],
-    "aggregate/shafts-one-short": ['роторам нужно 2 валов между ними (задано 1)'],
+    "aggregate/shafts-one-short": ['роторов: 3, поэтому валов между ними нужно 2 вала (задано 1)'],
     "aggregate/rotor-names-repeat": ['имена роторов должны различаться'],
     "aggregate/shaft-G-missing": ['не задано: с d и L нужен модуль сдвига G (например, 8.0e10'],
     "aggregate/load-without-motor": ['не задано: для [load] нужен [motor] на первом роторе'],
@@ -371,7 +371,7 @@ RUSSIAN_ERRORS.update({
     "variants/variants-not-a-table": ["variants: должно быть таблицей (задано 3)"],
     "variants/nothing-to-vary": ["variants: нечего менять (добавьте, например,"],
     "variants/grid-without-step": ["не задано step (задайте min, max и step или values)"],
-    "variants/grid-too-fine": ["2000001 значений сетки — слишком много (допустимо: не больше "
+    "variants/grid-too-fine": ["значений сетки 2000001 — слишком много (допустимо: не больше "
                                "100000"],
     "variants/spec-unknown-key": ["неизвестный ключ 'vals'"],
     "variants/values-and-a-grid": ["задайте что-то одно: values или min, max, step"],
@@ -680,7 +680,7 @@ def test_variants_and_grade_say_their_warnings_and_problems_in_russian(tmp_path)
     ru = runner.invoke(app, [*args, "--out", str(tmp_path / "v"), "--lang", "ru"])
     assert ru.exit_code == 0, ru.output
     text = " ".join(ru.stdout.split())
-    assert ("предупреждение: возможно лишь 2 разных вариантов; запрошено 3, поэтому некоторые "
+    assert ("предупреждение: различных вариантов возможно лишь 2; запрошено 3, поэтому некоторые "
             "повторяются") in text
     assert "seed 1 (тот же seed даёт те же файлы)" in text
     assert f"записано: {tmp_path / 'v'}/" in text
@@ -908,7 +908,7 @@ def test_variants_without_a_new_combination_and_a_students_infinity(tmp_path, mo
         "fewer variants\n")
     ru = runner.invoke(app, [*args, "--lang", "ru"])
     assert ru.exit_code == 2 and ru.stderr == (
-        "ошибка: вариант 2: за 2 попыток не найдено новой комбинации; расширьте диапазоны или "
+        "ошибка: вариант 2: за 2 попытки не найдено новой комбинации; расширьте диапазоны или "
         "запросите меньше вариантов\n")
     assert not (tmp_path / "v").exists()
     with pytest.raises(ValueError) as exc:

@@ -967,7 +967,7 @@ MESSAGES_RU = {
                             "(интерполяция 'pchip' не даёт выбросов)"),
     "startup_stall": ("разгон: двигатель не может разогнать машину, она останавливается при "
                       "φ = {phi_deg:.1f}°"),
-    "startup_not_steady": ("разгон: установившийся режим не достигнут за {cycles} циклов "
+    "startup_not_steady": ("разгон: установившийся режим не достигнут за {cycles_ru} "
                            "({t:.4g} с); средняя скорость последнего цикла {omega:.5g} рад/с, "
                            "установившаяся скорость по характеристике двигателя {target}"),
     "duty_motor_alone": ("двигатель один даёт операции её энергию (P·t_оп ≥ E): маховик не "
@@ -1167,7 +1167,7 @@ MESSAGES_RU.update({
                      "за один запуск (проверяйте листы по частям)"),
     "nothing_graded": "нечего проверить (замечаний: {n}; первое: {detail_ru})",
     # teaching/variants.py, teaching/sheets.py
-    "variants_repeat": ("возможно лишь {possible} разных вариантов; запрошено {count}, поэтому "
+    "variants_repeat": ("различных вариантов возможно лишь {possible}; запрошено {count}, поэтому "
                         "некоторые повторяются"),
     "sheet_no_drawing_tabulated": ("кинематика задана таблицей ([tabulated]): на листе задания "
                                    "нет чертежа механизма"),
@@ -1259,7 +1259,7 @@ MESSAGES_RU.update({
     "point_to_or_distance": "задайте что-то одно: `to` (с fraction) или `distance` (с angle_deg)",
     "link_mass_centroid": "у звена с массой должен быть задан `centroid`",
     "strictly_increasing": "значения должны строго возрастать",
-    "values_per_s": "нужно {n} значений, по одному на каждое s (задано {count})",
+    "values_per_s": "нужно {n_values_ru}, по одному на каждое s (задано {count})",
     "strokes_do_not_meet": ("начинается с p/p_max = {p_begin:g} при s = {at:g}, где {end} "
                             "кончается на {p_end:g}: такты не смыкаются (скачок {jump:.4g}; "
                             "допустимо: не больше join_tolerance = {tol:g}; подъём при вспышке "
@@ -1320,12 +1320,12 @@ MESSAGES_RU.update({
     "points_span": "должно охватывать цикл 0…{cycle:g}° (охвачено {first:g}…{last:g}°)",
     "from_to_deg": "нужно 0 ≤ from_deg < to_deg ≤ {cycle:g} (задано {start:g}, {end:g})",
     "trapezoid_top": "нужно from_deg ≤ top_from_deg ≤ top_to_deg ≤ to_deg",
-    "orders_for_terms": "{orders} порядков гармоник на {terms} членов ряда",
+    "orders_for_terms": "задано порядков гармоник: {orders}, а членов ряда: {terms}",
     "areas_do_not_close": ("сумма {total:.6g}, а не 0: за цикл площади над средней линией и под "
                            "ней должны быть равны"),
     # cases/tabulated.py
     "positions_increase": "{at:g}° после {before:g}°: положения должны возрастать",
-    "values_per_position": ("нужно {n} значений, по одному на каждое положение positions_deg "
+    "values_per_position": ("нужно {n_values_ru}, по одному на каждое положение positions_deg "
                             "(задано {count})"),
     "analogues_missing": ("аналогов скоростей точки {name!r} нет в [tabulated.points] (строки: "
                           "{rows})"),
@@ -1346,7 +1346,7 @@ MESSAGES_RU.update({
     "aggregate_form": ("не задано: задайте двухмассовый агрегат ([motor], [coupling], [machine]) "
                        "или цепочку ([[rotors]] и [[shafts]])"),
     "two_rotors": "цепочке нужно не меньше двух роторов (задано {count})",
-    "shafts_count": "{rotors} роторам нужно {shafts} валов между ними (задано {count})",
+    "shafts_count": "роторов: {rotors}, поэтому валов между ними нужно {shafts_ru} (задано {count})",
     "rotor_names": "имена роторов должны различаться",
     "load_needs_motor": "не задано: для [load] нужен [motor] на первом роторе",
     # cases/duty_cycle.py, duty_cycle/solve.py
@@ -1605,7 +1605,7 @@ MESSAGES_RU.update({
     "var_inside_a_value": ("{value} — значение, а не таблица; внутри него нет ничего с именем "
                            "{name!r}"),
     "var_grid_missing": "не задано {key} (задайте min, max и step или values)",
-    "var_grid_too_many": ("{n} значений сетки — слишком много (допустимо: не больше 100000; "
+    "var_grid_too_many": ("значений сетки {n} — слишком много (допустимо: не больше 100000; "
                           "возьмите шаг больше)"),
     "var_unknown_key": "неизвестный ключ {key!r} (допустимы: values или min, max, step)",
     "var_values_or_grid": "задайте что-то одно: values или min, max, step",
@@ -1622,7 +1622,7 @@ MESSAGES_RU.update({
     "var_nothing_to_vary": ("нечего менять (добавьте, например, \"machine.speed_rps\" = "
                             "{{ values = [8, 10, 12] }})"),
     "var_overlap": "пересекается с {other}",
-    "var_no_new_combination": ("вариант {number}: за {draws} попыток не найдено новой "
+    "var_no_new_combination": ("вариант {number}: за {draws_ru} не найдено новой "
                                "комбинации; расширьте диапазоны или запросите меньше вариантов"),
     # teaching/grading.py: the answer key, a student's number
     "grade_answers_object": "должно быть объектом {{ответ: значение}}{got_ru}",
@@ -2463,3 +2463,41 @@ def _msgs_libraries_ru_params(code: str, p: dict) -> dict:
 
 
 _PARAM_HOOKS.append(_msgs_libraries_ru_params)
+
+
+
+# --- msgs_plural ---
+# Russian numerals agree with their noun (1 цикл, 2 цикла, 5 циклов): the counts of the
+# templates above, with their noun in the form the number asks for.
+
+
+def ru_count(n: int, one: str, few: str, many: str) -> str:
+    """``n`` with its noun in the form Russian gives it after that number: 1, 21 → ``one``;
+    2–4, 22–24 → ``few``; 0, 5–20, 25 … → ``many``.
+
+    >>> [ru_count(k, "вал", "вала", "валов") for k in (1, 2, 5, 11, 21, 112)]
+    ['1 вал', '2 вала', '5 валов', '11 валов', '21 вал', '112 валов']
+    """
+    n = int(n)
+    tens, last = n % 100, n % 10
+    word = (many if 11 <= tens <= 14 else one if last == 1 else few if 2 <= last <= 4 else many)
+    return f"{n} {word}"
+
+
+_VALUES = ("значение", "значения", "значений")
+
+
+def _msgs_plural_ru_params(code: str, p: dict) -> dict:
+    if code == "startup_not_steady":
+        p["cycles_ru"] = ru_count(p["cycles"], "цикл", "цикла", "циклов")
+    elif code in ("values_per_s", "values_per_position"):
+        p["n_values_ru"] = ru_count(p["n"], *_VALUES)
+    elif code == "shafts_count":
+        p["shafts_ru"] = ru_count(p["shafts"], "вал", "вала", "валов")
+    elif code == "var_no_new_combination":
+        p["draws_ru"] = ru_count(p["draws"], "попытку", "попытки", "попыток")
+    return p
+
+
+_PARAM_HOOKS.append(_msgs_plural_ru_params)
+_MSGS_DERIVED |= {"cycles_ru", "n_values_ru", "shafts_ru", "draws_ru"}
