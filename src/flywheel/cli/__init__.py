@@ -112,14 +112,11 @@ def _stopped(exc: Stopped) -> None:
     import sys
 
     signal.signal(signal.SIGINT, signal.SIG_IGN)     # a second Ctrl-C: no traceback
-    from flywheel.cli.guard import lang
+    from flywheel.cli.guard import say_error
     from flywheel.errors import Notice
-    from flywheel.render.nomenclature import message, prefix
 
-    name = (Notice("interrupted (Ctrl-C)", "stopped_interrupted") if exc.signum == signal.SIGINT
-            else Notice("terminated (SIGTERM)", "stopped_terminated"))
-    ln = lang()
-    sys.stderr.write(f"{prefix('error', ln)}: {message(name, ln)}\n")
+    say_error(Notice("interrupted (Ctrl-C)", "stopped_interrupted") if exc.signum == signal.SIGINT
+              else Notice("terminated (SIGTERM)", "stopped_terminated"))
     sys.exit(128 + exc.signum)
 
 
@@ -169,21 +166,17 @@ def main() -> None:
             if type(exc).__name__ == "NoArgsIsHelpError":
                 sys.exit(0)                   # the help is printed already
             ctx = getattr(exc, "ctx", None)
-            from flywheel.cli.guard import lang
+            from flywheel.cli.guard import lang, say_error
             from flywheel.cli.usage import usage_notice
-            from flywheel.render.nomenclature import message, prefix
 
-            ln = lang()
             where = f"{ctx.command_path}: " if ctx is not None else ""
-            see = (f" ({'см.' if ln == 'ru' else 'see'} {ctx.command_path} --help)"
+            see = (f" ({'см.' if lang() == 'ru' else 'see'} {ctx.command_path} --help)"
                    if ctx is not None else "")
-            msg = message(usage_notice(exc), ln)
-            sys.stderr.write(f"{prefix('error', ln)}: {where}{msg}{see}\n")
+            say_error(usage_notice(exc), where, see)
             sys.exit(2)
         from flywheel import __version__
-        from flywheel.cli.guard import lang
+        from flywheel.cli.guard import say_error
         from flywheel.errors import Notice
-        from flywheel.render.nomenclature import message, prefix
 
         if _Options.debug:
             import traceback
@@ -194,8 +187,7 @@ def main() -> None:
                       f"{what}; please report it with the command and its input files"
                       f"{'' if _Options.debug else ' (--debug shows the traceback)'}",
                       "internal_error", version=__version__, what=what, debug=_Options.debug)
-        ln = lang()
-        sys.stderr.write(f"{prefix('error', ln)}: {message(text, ln)}\n")
+        say_error(text)
         sys.exit(1)
     finally:
         # the command is over (its outputs whole, or none): a Ctrl-C during the interpreter's

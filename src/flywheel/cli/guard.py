@@ -39,14 +39,19 @@ def lang() -> str:
     return "en"
 
 
-def fail(message: str) -> None:
-    """Print one line to stderr and exit 2 (bad input); under ``--lang ru`` the prefix is
-    «ошибка:» and a message that is an errors.Notice with a Russian template is Russian (the
-    rest stays English)."""
+def say_error(text: str, lead: str = "", tail: str = "") -> None:
+    """Write the one error line to stderr in the user's --lang: «error:» / «ошибка:», ``lead``,
+    the message (an errors.Notice with a Russian template is said in Russian, the rest as it
+    is), ``tail``. Every error line of the command line is written here."""
     from flywheel.render.nomenclature import message as say, prefix
 
     ln = lang()
-    sys.stderr.write(f"{prefix('error', ln)}: {say(message, ln)}\n")
+    sys.stderr.write(f"{prefix('error', ln)}: {lead}{say(text, ln)}{tail}\n")
+
+
+def fail(message: str) -> None:
+    """Print one line to stderr (:func:`say_error`) and exit 2 (bad input)."""
+    say_error(message)
     raise typer.Exit(code=2)
 
 

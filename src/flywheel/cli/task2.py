@@ -96,8 +96,8 @@ def task2_command(
     """Task 2: ω_max, ω_min, ω_ср and δ of a machine with constant J under given M_D(φ), M_C(φ)."""
     import math
 
-    from flywheel.cli.guard import check_lang, first_nonfinite, guarded, needs_out, not_finite
-    from flywheel.cli.guard import plot_failed
+    from flywheel.cli.guard import (check_lang, first_nonfinite, guarded, needs_out, not_finite,
+                                    plot_failed)
     from flywheel.errors import FlywheelError, InputError, Notice
 
     title = source = ""
