@@ -1229,9 +1229,6 @@ def _msgs_ru_params(p: dict) -> dict:
     if "kind" in p and "expected" in p:
         p["kind_ru"] = _CASE_KINDS_RU.get(p["kind"], p["kind"])
         p["expected_ru"] = _CASE_KINDS_RU.get(p["expected"], p["expected"])
-    if "detail" in p and "path" in p:                  # tomllib's own words stay, not its place
-        p["detail_ru"] = re.sub(r"\(at line (\d+), column (\d+)\)", r"(строка \1, столбец \2)",
-                                p["detail"])
     if "as_kind" in p:
         p["as_kind_ru"] = _CASE_KINDS_RU.get(p["as_kind"], p["as_kind"])
     if "sheet" in p:
