@@ -14,11 +14,7 @@ app = typer.Typer(
 )
 
 
-class _Options:
-    """The global options, set by the root callback before a command runs."""
-
-    debug = False
-    quiet = False
+from flywheel.cli.options import be_quiet, lang_of_argv, state  # noqa: E402
 
 
 def _version(value: bool) -> None:
@@ -39,41 +35,9 @@ def _root(
                                "are written as usual; --json still prints its JSON)."),
 ) -> None:
     """Dynamic analysis of machines: kinematics, reduction, flywheel sizing, true motion."""
-    _Options.debug = debug
-    _Options.quiet = quiet
+    state.lang, state.quiet, state.debug, state.stdout = state.argv_lang, False, debug, None
     if quiet:
-        import os
-        import sys
-
-        if "--json" not in sys.argv[1:]:
-            sys.stdout = open(os.devnull, "w", encoding="utf-8")
-        sys.stderr = _ErrorsOnly(sys.stderr)
-
-
-class _ErrorsOnly:
-    """stderr under --quiet: only lines that start with "error:" ("ошибка:" under --lang ru)
-    get through."""
-
-    def __init__(self, stream):
-        self._stream = stream
-        self._line = ""
-
-    def write(self, text: str) -> int:
-        self._line += text
-        *done, self._line = self._line.split("\n")
-        for ln in done:
-            if ln.startswith(("error:", "ошибка:")):
-                self._stream.write(ln + "\n")
-        return len(text)
-
-    def flush(self) -> None:
-        self._stream.flush()
-
-    def isatty(self) -> bool:
-        return False
-
-    def __getattr__(self, name):
-        return getattr(self._stream, name)
+        be_quiet()
 
 
 from flywheel.cli.aggregate import aggregate_command  # noqa: E402
@@ -147,6 +111,7 @@ def main() -> None:
 
     signal.signal(signal.SIGINT, _stop)
     signal.signal(signal.SIGTERM, _stop)
+    state.lang = state.argv_lang = lang_of_argv(sys.argv[1:])   # an error of the parser itself
     try:
         code = app(standalone_mode=False)
         if isinstance(code, int) and code:
@@ -178,15 +143,15 @@ def main() -> None:
         from flywheel.cli.guard import say_error
         from flywheel.errors import Notice
 
-        if _Options.debug:
+        if state.debug:
             import traceback
 
             traceback.print_exc()
         what = f"{type(exc).__name__}: {exc}".splitlines()[0][:300]
         text = Notice(f"internal error in flywheel {__version__} (a bug, not your input): "
                       f"{what}; please report it with the command and its input files"
-                      f"{'' if _Options.debug else ' (--debug shows the traceback)'}",
-                      "internal_error", version=__version__, what=what, debug=_Options.debug)
+                      f"{'' if state.debug else ' (--debug shows the traceback)'}",
+                      "internal_error", version=__version__, what=what, debug=state.debug)
         say_error(text)
         sys.exit(1)
     finally:

@@ -10,13 +10,15 @@ from typing import Optional
 
 import typer
 
+from flywheel.cli.options import Json, Lang, Reports, note
+
 
 MAX_T_END = 600.0     # s: ten minutes of simulated start-up (about 15 s of computing)
 
 
 def aggregate_command(
     case: Path = typer.Argument(..., help="Aggregate case file (TOML), see docs/aggregate.md."),
-    json: bool = typer.Option(False, "--json", help="Print the results as JSON."),
+    json: Json = False,
     plot: Optional[Path] = typer.Option(None, "--plot", help="Write speeds and the elastic "
                                         "moment against time (start-up, steady state) to this "
                                         "image file (.png, .svg, .pdf).", dir_okay=False),
@@ -25,8 +27,7 @@ def aggregate_command(
                                           "the motor or 20 forcing periods, whichever is longer, "
                                           "at most 2000 periods of the highest natural "
                                           "frequency)."),
-    lang: str = typer.Option("en", "--lang", help="Language of the summary and the plot: en | ru "
-                             "(the JSON is the same in every language)."),
+    lang: Lang = "en",
     modes: bool = typer.Option(False, "--modes", help="Also show every mode's frequency in Hz and "
                                "vibrations per minute with its nodes (positions along the "
                                "shafts), and each shaft's equivalent length (the JSON always "
@@ -35,9 +36,7 @@ def aggregate_command(
                                        "summary.json (as --json), plots/aggregate.png (with a "
                                        "[motor]) and the report (see --report); a rerun replaces "
                                        "only its own files."),
-    report: Optional[list[str]] = typer.Option(None, "--report", help="Report format with --out: "
-                                               "md, html, pdf, docx; repeatable (default: md and "
-                                               "html)."),
+    report: Reports = None,
 ) -> None:
     """Two-mass machine aggregate (Ефанов ch. 9) or a chain of rotors: coefficients a_ij, c_ij,
     natural frequencies, steady forced vibration, start-up."""
@@ -105,8 +104,6 @@ def aggregate_command(
 def _write_out(out: Path, result, formats, title: str, source: str, lang: str) -> list[str]:
     """The --out folder (render/report_folder.py): summary.json, plots/aggregate.png (with a
     motor), the report. Notes of a rerun go to stderr; returns the names written."""
-    import sys
-
     from flywheel.render.aggregate import plot as draw
     from flywheel.render.aggregate import to_json
     from flywheel.render.report_aggregate import FIGURE, build_aggregate_document
@@ -117,8 +114,6 @@ def _write_out(out: Path, result, formats, title: str, source: str, lang: str) -
         lambda path: draw(result, path, title, lang),
         FIGURE if result.startup is not None else None,
         lambda fig: build_aggregate_document(result, title, source, lang, fig), formats)
-    from flywheel.render.nomenclature import message, prefix
-
     for n in notes:
-        sys.stderr.write(f"{prefix('note', lang)}: {message(n, lang)}\n")
+        note(n)
     return names

@@ -5,23 +5,18 @@ hand the result to :mod:`flywheel.render.duty_cycle`. Heavy imports live inside 
 """
 from __future__ import annotations
 
-import sys
 from pathlib import Path
-from typing import Optional
-
 import typer
+
+from flywheel.cli.options import Json, Lang, OutFolder, Reports, note, warn
 
 
 def duty_cycle_command(
     case: Path = typer.Argument(..., help="Duty-cycle case file (TOML), see docs/duty-cycle.md."),
-    as_json: bool = typer.Option(False, "--json", help="Print the results as JSON."),
-    lang: str = typer.Option("en", "--lang", help="Language of the summary: en | ru."),
-    out: Optional[Path] = typer.Option(None, "--out", "-o", help="Also write an output folder: "
-                                       "summary.json (as --json) and the report (see --report); "
-                                       "a rerun replaces only its own files."),
-    report: Optional[list[str]] = typer.Option(None, "--report", help="Report format with --out: "
-                                               "md, html, pdf, docx; repeatable (default: md and "
-                                               "html)."),
+    as_json: Json = False,
+    lang: Lang = "en",
+    out: OutFolder = None,
+    report: Reports = None,
 ) -> None:
     """Duty-cycle machines (punching, riveting, shearing presses): the motor's power and torque,
     the energy the flywheel gives, its J and mass, the speed at the end of the operation, the
@@ -38,7 +33,7 @@ def duty_cycle_command(
 
     c = guard(load_duty_case, case)
     result = guard(solve_case, c, str(case))
-    from flywheel.render.nomenclature import message, prefix
+    from flywheel.render.nomenclature import prefix
 
     written = None
     if out is not None:
@@ -51,9 +46,9 @@ def duty_cycle_command(
                                lambda fig: build_duty_cycle_document(result, c.title, c.source,
                                                                      lang), formats)
         for n in notes:
-            sys.stderr.write(f"{prefix('note', lang)}: {message(n, lang)}\n")
+            note(n)
     for w in result.warnings:
-        sys.stderr.write(f"{prefix('warning', lang)}: {message(w, lang)}\n")
+        warn(w)
     if as_json:
         from flywheel.render.duty_cycle import to_json
 

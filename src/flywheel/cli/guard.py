@@ -20,23 +20,11 @@ import typer
 
 
 def lang() -> str:
-    """The ``--lang`` of the command line: the running command's parsed option, else the raw
-    arguments (an error may come before the option is parsed), else "en"."""
-    from typer._click.globals import get_current_context
+    """The user's ``--lang``: as the parser read it, else as the entry point found it among its
+    arguments (an error may come before the option is parsed), else "en" (cli/options.py)."""
+    from flywheel.cli.options import state
 
-    ctx = get_current_context(silent=True)
-    while ctx is not None:
-        given = ctx.params.get("lang")
-        if isinstance(given, str):
-            return "ru" if given == "ru" else "en"
-        ctx = ctx.parent
-    argv = sys.argv[1:]
-    for i, a in enumerate(argv):
-        if a == "--lang" and i + 1 < len(argv):
-            return "ru" if argv[i + 1] == "ru" else "en"
-        if a.startswith("--lang="):
-            return "ru" if a == "--lang=ru" else "en"
-    return "en"
+    return state.lang
 
 
 def say_error(text: str, lead: str = "", tail: str = "") -> None:

@@ -18,13 +18,14 @@ def stage_bar(lang: str = "en") -> Iterator[Callable[[str, float], None]]:
     from rich.console import Console
     from rich.progress import BarColumn, Progress, TaskProgressColumn, TextColumn, TimeElapsedColumn
 
+    from flywheel.cli.options import state
     from flywheel.render.nomenclature import stage_name
 
     console = Console(stderr=True)
     tasks: dict[str, int] = {}
     with Progress(TextColumn("{task.description}"), BarColumn(), TaskProgressColumn(),
                   TimeElapsedColumn(), console=console, transient=True,
-                  disable=not console.is_terminal) as bar:
+                  disable=state.quiet or not console.is_terminal) as bar:
 
         def progress(stage: str, fraction: float) -> None:
             if stage not in tasks:

@@ -13,6 +13,7 @@ from typing import Optional
 import typer
 
 from flywheel.cli.guard import _guard, check_lang, choice, fail
+from flywheel.cli.options import CsvStyle, Json, Lang, Reports, note, warn
 from flywheel.errors import Notice
 
 
@@ -26,8 +27,7 @@ def schema_command() -> None:
 
 
 def check_command(case: Path = typer.Argument(..., help="Case file (TOML)."),
-                  lang: str = typer.Option("en", "--lang", help="Language of the printout and "
-                                           "of the error line: en | ru.")) -> None:
+                  lang: Lang = "en") -> None:
     """Validate a case file and print what it describes; exit 0 if valid, 2 if not."""
     from flywheel.cases.run import load_case
     from flywheel.dynamics.check import check_case
@@ -48,9 +48,8 @@ def run_command(
     at: Optional[list[float]] = typer.Option(None, "--at", help="Report angle \\[deg]; repeatable "
                                              "(default: the case's output.at_deg, else 120)."),
     no_plots: bool = typer.Option(False, "--no-plots", help="Skip the PNG plots (faster)."),
-    as_json: bool = typer.Option(False, "--json", help="Print summary.json to stdout instead of "
-                                                       "the rich summary."),
-    lang: str = typer.Option("en", "--lang", help="Language of the summary and plots: en | ru."),
+    as_json: Json = False,
+    lang: Lang = "en",
     transients: bool = typer.Option(False, "--transients", help="Also integrate the equation of "
                                     "motion in time: check ω(φ), start-up (needs \\[motor]), run-down."),
     animate: bool = typer.Option(False, "--animate", help="Also write mechanism.gif: the linkage "
@@ -59,11 +58,8 @@ def run_command(
                                          "analysis: true (ω(φ), ε(φ) of the dynamics) | steady "
                                          "(ω_m, ε = 0); default: the case's force_analysis.motion, "
                                          "else true."),
-    report: Optional[list[str]] = typer.Option(None, "--report", help="Report format: md, html, "
-                                               "pdf, docx; repeatable (default: md and html)."),
-    csv_style: str = typer.Option("plain", "--csv", help="CSV dialect of the tables: plain, or "
-                                  "excel-ru (';', decimal commas, BOM: opens in a Russian "
-                                  "Excel)."),
+    report: Reports = None,
+    csv_style: CsvStyle = "plain",
     figure_format: str = typer.Option("png", "--figure-format", help="Format of plots/*: png, svg "
                                       "or pdf (svg, pdf: written beside the PNGs the reports embed)."),
     dpi: int = typer.Option(120, "--dpi", help="Resolution of the plots [dots per inch], 50…600."),
@@ -135,12 +131,12 @@ def run_command(
 
     notes: list[str] = []
     _guard(write_folder, out, build, "summary.json", notes=notes)
-    from flywheel.render.nomenclature import message, prefix
+    from flywheel.render.nomenclature import prefix
 
     for n in notes:
-        sys.stderr.write(f"{prefix('note', lang)}: {message(n, lang)}\n")
+        note(n)
     for w in results.warnings:              # on stderr too: `2>/dev/null` and pipes behave
-        sys.stderr.write(f"{prefix('warning', lang)}: {message(w, lang)}\n")
+        warn(w)
     if as_json:
         sys.stdout.write(text_json)
     else:

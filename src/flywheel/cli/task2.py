@@ -15,6 +15,8 @@ from typing import List, Optional
 
 import typer
 
+from flywheel.cli.options import Json, Lang, OutFolder, Reports, note
+
 PROFILES = ("triangle", "rectangle")
 
 # |x| outside this range is a suspect when the results overflow double precision
@@ -82,16 +84,10 @@ def task2_command(
                                  "speed in the summary (the JSON always has them)."),
     plot: Optional[Path] = typer.Option(None, "--plot", help="Write a plot of M_D, M_C, A, "
                                         "ω(φ) and ε(φ) to this image file (.png, .svg, .pdf)."),
-    as_json: bool = typer.Option(False, "--json", help="Print the results as JSON (the same "
-                                 "document in every language)."),
-    lang: str = typer.Option("en", "--lang", help="Language of the summary and the plot: en | ru."),
-    out: Optional[Path] = typer.Option(None, "--out", "-o", help="Also write an output folder: "
-                                       "summary.json (as --json), plots/task2.png and the "
-                                       "report (see --report); a rerun replaces only its own "
-                                       "files."),
-    report: Optional[List[str]] = typer.Option(None, "--report", help="Report format with --out: "
-                                               "md, html, pdf, docx; repeatable (default: md and "
-                                               "html)."),
+    as_json: Json = False,
+    lang: Lang = "en",
+    out: OutFolder = None,
+    report: Reports = None,
 ) -> None:
     """Task 2: ω_max, ω_min, ω_ср and δ of a machine with constant J under given M_D(φ), M_C(φ)."""
     import math
@@ -232,8 +228,6 @@ def task2_command(
 def _write_out(out: Path, result, formats, title, source, doc_title, doc_source, lang):
     """The --out folder (render/report_folder.py): summary.json, plots/task2.png, the report.
     Notes of a rerun go to stderr; returns the names written."""
-    import sys
-
     from flywheel.render.report_folder import write_report_folder
     from flywheel.render.report_task2 import FIGURE, build_task2_document
     from flywheel.render.task2 import plot as draw
@@ -243,8 +237,6 @@ def _write_out(out: Path, result, formats, title, source, doc_title, doc_source,
         out, "task2", to_json(result, doc_title, doc_source) + "\n",
         lambda path: draw(result, path, title, lang), FIGURE,
         lambda fig: build_task2_document(result, title, source, lang, fig), formats)
-    from flywheel.render.nomenclature import message, prefix
-
     for n in notes:
-        sys.stderr.write(f"{prefix('note', lang)}: {message(n, lang)}\n")
+        note(n)
     return names

@@ -11,6 +11,8 @@ from typing import Optional
 
 import typer
 
+from flywheel.cli.options import CsvStyle, Json, Lang, note, state
+
 
 def variants_command(
     template: Path = typer.Argument(..., help="Template: a run or task2 case file plus a "
@@ -29,14 +31,13 @@ def variants_command(
                                 "them all): the drawing, the data, what to find; no answers."),
     sheets_format: str = typer.Option("both", "--sheets-format", help="Formats of --sheets: "
                                       "both | html | pdf."),
-    lang: str = typer.Option("en", "--lang", help="Language of the task sheets: en | ru "
-                             "(ru: the wording of a Russian course sheet)."),
+    lang: Lang = "en",
 ) -> None:
     """Individual variants of a task from a template, with the answer key (answers.json,
     answers.csv), a blank answer sheet (students.csv) and, with --sheets, a printable task
     sheet per variant."""
     from flywheel.cli.guard import _guard, check_lang, choice, fail
-    from flywheel.errors import Notice
+    from flywheel.errors import Notice, led
 
     if not 1 <= count <= 9999:
         fail(Notice(f"--count: {count} is not allowed (allowed: 1…9999)", "option_not_allowed",
@@ -51,7 +52,6 @@ def variants_command(
     if sheets_format not in ("both", "html", "pdf"):
         fail(choice("--sheets-format", sheets_format, "a sheet format", "both, html, pdf"))
     import secrets
-    import sys
 
     from rich.console import Console
     from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn
@@ -59,7 +59,6 @@ def variants_command(
     from flywheel.render.nomenclature import stage_name
 
     from flywheel.render.grading import print_variants
-    from flywheel.render.nomenclature import message, prefix
     from flywheel.teaching.variants import generate, load_template, write_variants
 
     if seed is None:
@@ -69,7 +68,7 @@ def variants_command(
 
     def generate_with_bar():            # the bar is gone before an error line is printed
         with Progress(TextColumn(stage_name("variants", lang)), BarColumn(), MofNCompleteColumn(), console=console,
-                      transient=True, disable=not console.is_terminal) as bar:
+                      transient=True, disable=state.quiet or not console.is_terminal) as bar:
             task = bar.add_task("variants", total=count)
             return generate(t, count, seed, points, lambda i: bar.update(task, completed=i))
 
@@ -83,18 +82,17 @@ def variants_command(
         pages = _guard(sheets_of, vs)
         missing = sorted({p.no_drawing for p in pages if p.no_drawing})
         for why in missing:                 # one line for the batch, not one per sheet
-            sys.stderr.write(f"{prefix('note', lang)}: --sheets: {template}: "
-                             f"{message(why, lang)}\n")
+            note(led(f"--sheets: {template}: ", why))
 
         def extra(folder):
             with Progress(TextColumn(stage_name("task sheets", lang)), BarColumn(), MofNCompleteColumn(),
-                          console=console, transient=True, disable=not console.is_terminal) as b:
+                          console=console, transient=True, disable=state.quiet or not console.is_terminal) as b:
                 t = b.add_task("sheets", total=len(pages))
                 write_sheets(pages, folder, lang, sheets_format,
                              lambda i: b.update(t, completed=i))
     _guard(write_variants, vs, out, notes, extra)
     for n in notes:
-        sys.stderr.write(f"{prefix('note', lang)}: {message(n, lang)}\n")
+        note(n)
     print_variants(vs, out, sheets=sheets_format if sheets else None, lang=lang)
 
 
@@ -113,12 +111,9 @@ def grade_command(
     summary: bool = typer.Option(False, "--summary", help="Print only the class summary (score "
                                  "distribution, answers most often wrong, who handed in "
                                  "nothing)."),
-    csv_style: str = typer.Option("plain", "--csv", help="CSV dialect of --out and "
-                                  "--gradebook: plain, or excel-ru (';', decimal commas, BOM: "
-                                  "opens in a Russian Excel)."),
-    lang: str = typer.Option("en", "--lang", help="Language of the report, the summary and the "
-                             "gradebook's headers: en | ru."),
-    as_json: bool = typer.Option(False, "--json", help="Print the report as JSON."),
+    csv_style: CsvStyle = "plain",
+    lang: Lang = "en",
+    as_json: Json = False,
 ) -> None:
     """Grade students' answers against an answer key: per student each answer's error and
     pass/fail, the score, group statistics; broken files and rows are reported and skipped.
@@ -154,7 +149,7 @@ def grade_command(
     def grade_with_bar():               # the bar is gone before an error line is printed
         with Progress(TextColumn(stage_name("answer sheets", lang)), BarColumn(),
                       MofNCompleteColumn(), console=console, transient=True,
-                      disable=not console.is_terminal) as bar:
+                      disable=state.quiet or not console.is_terminal) as bar:
             task = bar.add_task("sheets", total=None)
             return grade(k, answers, tolerance,
                          lambda done, total: bar.update(task, completed=done, total=total))

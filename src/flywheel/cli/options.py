@@ -1,0 +1,117 @@
+"""The options every command shares, declared once, and the state of the running command.
+
+Each shared option is an ``Annotated`` alias: ``lang: Lang = "en"``; ``as_json: Json = False``.
+Their help texts say what the option means in every command; a command's own help (its
+docstring) says what it prints. The callbacks record what the command line gave into
+:data:`state`, so the error guard says its line in the user's ``--lang`` and ``--quiet`` lets
+a command's ``--json`` through without anyone reading ``sys.argv`` or typer's internals:
+
+* ``--lang`` is recorded as soon as the parser reads it (an error raised later, inside the
+  command, is said in that language; an error of the parser itself, before the option is read,
+  takes the language the entry point found in its own arguments, :func:`lang_of_argv`);
+* ``--quiet`` (the root callback) silences stdout and every note and warning; a ``--json``
+  of the command restores stdout, since JSON is what the caller asked for.
+
+Lines on stderr other than the error line go through :func:`note` and :func:`warn` (one
+place, so ``--quiet`` needs no filter on what was written).
+"""
+from __future__ import annotations
+
+import sys
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Annotated, Optional
+
+import typer
+
+
+@dataclass
+class State:
+    """What the command line gave, as the parser reads it (one process runs one command)."""
+
+    lang: str = "en"
+    argv_lang: str = "en"      # the entry point's own reading of its arguments (lang_of_argv)
+    quiet: bool = False
+    debug: bool = False
+    stdout: object = None      # the real stdout while --quiet has silenced it
+
+
+state = State()
+
+
+def lang_of_argv(argv: list[str]) -> str:
+    """The ``--lang`` among the entry point's arguments, for an error of the parser itself (the
+    option is not parsed yet): "ru" or "en".
+
+    >>> lang_of_argv(["run", "c.toml", "--lang", "ru"]), lang_of_argv(["--lang=ru"])
+    ('ru', 'ru')
+    >>> lang_of_argv(["run", "--lang"]), lang_of_argv([])
+    ('en', 'en')
+    """
+    for i, a in enumerate(argv):
+        if a == "--lang" and i + 1 < len(argv):
+            return "ru" if argv[i + 1] == "ru" else "en"
+        if a.startswith("--lang="):
+            return "ru" if a == "--lang=ru" else "en"
+    return "en"
+
+
+def _lang(value: str) -> str:
+    state.lang = "ru" if value == "ru" else "en"
+    return value
+
+
+def _json(value: bool) -> bool:
+    if value and state.stdout is not None:       # --quiet --json: the JSON is still printed
+        sys.stdout = state.stdout
+        state.stdout = None
+    return value
+
+
+def be_quiet() -> None:
+    """``--quiet``: stdout silenced (until a ``--json`` asks for it back), notes and warnings
+    not written, and Python's own warnings (a library's) ignored."""
+    import os
+    import warnings
+
+    state.quiet = True
+    state.stdout = sys.stdout
+    sys.stdout = open(os.devnull, "w", encoding="utf-8")
+    warnings.simplefilter("ignore")
+
+
+def _line(kind: str, text: str) -> None:
+    if state.quiet:
+        return
+    from flywheel.render.nomenclature import message, prefix
+
+    sys.stderr.write(f"{prefix(kind, state.lang)}: {message(text, state.lang)}\n")
+
+
+def note(text: str) -> None:
+    """A note on stderr in the user's ``--lang`` («note:» / «примечание:»), not under --quiet."""
+    _line("note", text)
+
+
+def warn(text: str) -> None:
+    """A warning on stderr in the user's ``--lang``, not under --quiet."""
+    _line("warning", text)
+
+
+Lang = Annotated[str, typer.Option(
+    "--lang", callback=_lang,
+    help="Language of what is printed and written (summary, plots, report, error line): "
+         "en | ru.")]
+Json = Annotated[bool, typer.Option(
+    "--json", callback=_json,
+    help="Print the results as JSON instead of the summary (the same document in every "
+         "language).")]
+OutFolder = Annotated[Optional[Path], typer.Option(
+    "--out", "-o",
+    help="Also write an output folder: summary.json (as --json), the plots and the report "
+         "(see --report); a rerun replaces only its own files.")]
+Reports = Annotated[Optional[list[str]], typer.Option(
+    "--report", help="Report format: md, html, pdf, docx; repeatable (default: md and html).")]
+CsvStyle = Annotated[str, typer.Option(
+    "--csv", help="CSV dialect: plain, or excel-ru (';', decimal commas, BOM: opens in a "
+                  "Russian Excel).")]
