@@ -160,3 +160,60 @@ def refuse_nonfinite(document, who: str = "") -> None:
     hit = first_nonfinite(document)
     if hit is not None:
         not_finite(hit[0], repr(hit[1]), who)
+
+
+# |x| outside this range is a suspect when the results overflow double precision
+_SANE = (1e-100, 1e100)
+
+
+def _extreme(numbers: list[tuple[str, float]]) -> list[tuple[str, float]]:
+    """The (name, value) pairs of extreme magnitude: the likely cause of an overflow."""
+    return [(n, v) for n, v in numbers if v != 0 and not _SANE[0] <= abs(v) <= _SANE[1]]
+
+
+def case_numbers(data, path: str = "") -> list[tuple[str, float]]:
+    """(field path, number) of every number in a case's fields, e.g. ("driving.value", 1e308).
+
+    >>> case_numbers({"a": {"b": [1, 2.5]}, "c": True, "d": "x"})
+    [('a.b[0]', 1.0), ('a.b[1]', 2.5)]
+    """
+    out: list[tuple[str, float]] = []
+    if isinstance(data, dict):
+        for k, v in data.items():
+            out += case_numbers(v, f"{path}.{k}" if path else str(k))
+    elif isinstance(data, (list, tuple)):
+        for i, v in enumerate(data):
+            out += case_numbers(v, f"{path}[{i}]")
+    elif isinstance(data, (int, float)) and not isinstance(data, bool):
+        out.append((path, float(data)))
+    return out
+
+
+def solve_finite(run, blame: list[tuple[str, float]], case: Path | None = None):
+    """``run()``'s result, refused by :func:`not_finite` when it overflows: a NotFiniteError of
+    the solver, an arithmetic error, or an inf/NaN in its document. The line blames the inputs
+    of extreme magnitude among ``blame`` — "file: field, field" for a case file (the file alone
+    if none stands out), "--md 1e+308" for options (every given option if none stands out)."""
+    from flywheel.constant_inertia.solve import NotFiniteError, python_detail
+    from flywheel.errors import FlywheelError
+
+    hit = None
+    try:
+        result = run()
+        found = first_nonfinite(result.to_document())
+        if found is not None:
+            hit = (found[0], repr(found[1]))
+    except NotFiniteError as exc:
+        hit = (exc.quantity, exc.detail)
+    except FlywheelError:
+        raise
+    except (ArithmeticError, ValueError) as exc:
+        hit = ("a result", python_detail(f"{exc.args[-1] if exc.args else type(exc).__name__}"))
+    if hit is None:
+        return result
+    if case is not None:
+        fields = [n for n, _ in _extreme(blame)]
+        who = f"{case}: {', '.join(fields)}" if fields else str(case)
+    else:
+        who = ", ".join(f"{n} {v:g}" for n, v in (_extreme(blame) or blame))
+    not_finite(*hit, who=who)

@@ -10,6 +10,8 @@ capital and is no tag, so it stays as it is.
 """
 from __future__ import annotations
 
+from collections.abc import Callable
+from dataclasses import dataclass
 from pathlib import Path
 from typing import List, Optional
 
@@ -18,29 +20,6 @@ import typer
 from flywheel.cli.options import Json, Lang, OutFolder, Reports, note
 
 PROFILES = ("triangle", "rectangle")
-
-# |x| outside this range is a suspect when the results overflow double precision
-_SANE = (1e-100, 1e100)
-
-
-def _extreme(numbers: list[tuple[str, float]]) -> list[tuple[str, float]]:
-    """The (name, value) pairs of extreme magnitude: the likely cause of an overflow."""
-    return [(n, v) for n, v in numbers if v != 0 and not _SANE[0] <= abs(v) <= _SANE[1]]
-
-
-def _case_numbers(data, path: str = "") -> list[tuple[str, float]]:
-    """(field path, number) of every number in a case's fields, e.g. ("driving.value", 1e308)."""
-    out: list[tuple[str, float]] = []
-    if isinstance(data, dict):
-        for k, v in data.items():
-            out += _case_numbers(v, f"{path}.{k}" if path else str(k))
-    elif isinstance(data, (list, tuple)):
-        for i, v in enumerate(data):
-            out += _case_numbers(v, f"{path}[{i}]")
-    elif isinstance(data, (int, float)) and not isinstance(data, bool):
-        out.append((path, float(data)))
-    return out
-
 
 def _check_at(at, cycle_deg: float) -> None:
     """Each --at angle finite and within the cycle 0…cycle_deg [deg]."""
@@ -90,142 +69,135 @@ def task2_command(
     report: Reports = None,
 ) -> None:
     """Task 2: ω_max, ω_min, ω_ср and δ of a machine with constant J under given M_D(φ), M_C(φ)."""
-    import math
+    from flywheel.cli.guard import check_lang, guarded, needs_out, plot_failed, solve_finite
+    from flywheel.errors import InputError, Notice
 
-    from flywheel.cli.guard import (check_lang, first_nonfinite, guarded, needs_out, not_finite,
-                                    plot_failed)
-    from flywheel.errors import FlywheelError, InputError, Notice
-
-    title = source = ""
     given = [(name, v) for name, v in (("--md", md), ("--j", j), ("--omega0", omega0),
                                        ("--from", start), ("--to", end), ("--mc", mc),
                                        ("--delta", delta)) if v is not None]
     with guarded():
-        from flywheel.render import nomenclature as nm
-
         check_lang(lang)
         if plot is not None and plot.is_dir():
             raise InputError(Notice(f"--plot {plot}: is a folder, expected an image file",
-                                        "plot_is_a_folder", plot=str(plot)))
+                                    "plot_is_a_folder", plot=str(plot)))
         from flywheel.render.report_folder import check_formats
 
         formats = check_formats(report)
         if report and out is None:
             raise InputError(needs_out())
-        if case is not None:
-            used = (["--profile"] if profile is not None else []) + [n for n, _ in given]
-            if used:
-                raise InputError(Notice(f"--case takes its data from the file; drop "
-                                        f"{', '.join(used)}", "case_drops_options",
-                                        used=", ".join(used)))
-            from flywheel.cases.task2 import load_task2_case, solve_case
-
-            c = load_task2_case(case)
-            blame = _case_numbers(c.model_dump())
-            _check_at(at, c.cycle_deg)
-            if at and c.diagram is not None:
-                raise InputError(Notice(f"--at: {case} gives a diagram by areas, which has no "
-                                        "moments between its crossings: ε, ω and t at an angle "
-                                        "need graphs", "t2_at_diagram", case=str(case)))
-
-            def run():
-                return solve_case(c, str(case), at_deg=at or ())
-
-            title, source = c.title, c.source
-            doc_title, doc_source = title, source
-        else:
-            from flywheel.constant_inertia.preset import SEED_DEFAULTS, seed_task
-
-            profile = "triangle" if profile is None else profile
-            if profile not in PROFILES:
-                raise InputError(Notice(f"--profile must be triangle or rectangle (got {profile!r})",
-                                        "profile_choice", value=repr(profile)))
-            for name, v in given:
-                if not math.isfinite(v):
-                    raise InputError(Notice(f"{name} must be a finite number (got {v})",
-                                            "option_not_finite", option=name, got=str(v)))
-            for name, v, unit in (("--md", md, "N·m"), ("--j", j, "kg·m²"),
-                                  ("--omega0", omega0, "rad/s"), ("--mc", mc, "N·m")):
-                if v is not None and v <= 0:
-                    raise InputError(Notice(f"{name} must be positive (got {v:g} {unit})",
-                                            "option_not_positive", option=name, v=v, unit=unit))
-            if delta is not None and not 0 < delta < 2:
-                raise InputError(Notice(f"--delta must lie between 0 and 2 (got {delta:g})",
-                                        "option_delta", delta=delta))
-            if start is not None and end is not None and start >= end:
-                raise InputError(Notice(f"--from ({start:g}°) must be less than --to ({end:g}°)",
-                                        "option_from_to", start=start, end=end))
-            _check_at(at, 360.0)
-            blame = given
-
-            def run():
-                return seed_task(
-                    profile,
-                    M_D=SEED_DEFAULTS["M_D"] if md is None else md,
-                    J=SEED_DEFAULTS["J"] if j is None else j,
-                    omega0=SEED_DEFAULTS["omega0"] if omega0 is None else omega0,
-                    start=None if start is None else math.radians(start),
-                    end=None if end is None else math.radians(end),
-                    M_C=mc, delta=delta, at=[math.radians(x) for x in at or ()])
-
-            # the JSON document is the same in every language; the summary and plot speak lang
-            doc_title = nm.name("t2_seed_title", profile=profile)
-            doc_source = nm.name("t2_seed_source")
-            title = nm.name("t2_seed_title", lang, profile=nm.name(profile, lang))
-            source = nm.name("t2_seed_source", lang)
-        from flywheel.constant_inertia.solve import NotFiniteError, python_detail
-
-        # inputs near the limits of double precision: no Infinity/NaN in the output (it is not
-        # JSON), and no traceback from inf − inf inside the formulas (guard.not_finite)
-        hit = None
-        try:
-            result = run()
-            found = first_nonfinite(result.to_document())
-            if found is not None:
-                hit = (found[0], repr(found[1]))
-        except NotFiniteError as exc:
-            hit = (exc.quantity, exc.detail)
-        except FlywheelError:
-            raise
-        except (ArithmeticError, ValueError) as exc:
-            hit = ("a result",
-                   python_detail(f"{exc.args[-1] if exc.args else type(exc).__name__}"))
-        if hit is not None:
-            if case is not None:     # "file: field, field" (the file alone if none stands out)
-                fields = [n for n, _ in _extreme(blame)]
-                who = f"{case}: {', '.join(fields)}" if fields else str(case)
-            else:                    # "--md 1e+308" (every given option if none stands out)
-                who = ", ".join(f"{n} {v:g}" for n, v in (_extreme(blame) or blame))
-            not_finite(*hit, who=who)
+        job = (_from_case(case, at, profile, given) if case is not None else
+               _from_options(profile, given, dict(md=md, j=j, omega0=omega0, start=start,
+                                                  end=end, mc=mc, delta=delta), at, lang))
+        result = solve_finite(job.run, job.blame, job.who)
         if plot is not None:
             from flywheel.render.task2 import plot as draw
 
             try:
-                draw(result, plot, title, lang)
+                draw(result, plot, job.title, lang)
             except (OSError, ValueError) as exc:
                 raise InputError(plot_failed(plot, exc)) from None
         if out is not None:
-            written = _write_out(out, result, formats, title, source, doc_title, doc_source, lang)
+            written = _write_out(out, result, formats, job, lang)
     if as_json:
         from flywheel.render.task2 import to_json
 
-        typer.echo(to_json(result, doc_title, doc_source))
-    else:
-        from flywheel.render.task2 import print_summary
+        typer.echo(to_json(result, job.doc_title, job.doc_source))
+        return
+    from flywheel.render import nomenclature as nm
+    from flywheel.render.task2 import print_summary
 
-        print_summary(result, title, source, lang=lang, motion=epsilon or bool(at))
-        from flywheel.render import nomenclature as nm
-
-        if plot is not None:
-            typer.echo(nm.name("plot_written", lang, path=plot))
-        if out is not None:
-            from flywheel.render.nomenclature import prefix
-
-            typer.echo(f"{prefix('written', lang)}: {out}/ "
-                       f"({', '.join(written)})")
+    print_summary(result, job.title, job.source, lang=lang, motion=epsilon or bool(at))
+    if plot is not None:
+        typer.echo(nm.name("plot_written", lang, path=plot))
+    if out is not None:
+        typer.echo(f"{nm.prefix('written', lang)}: {out}/ ({', '.join(written)})")
 
 
-def _write_out(out: Path, result, formats, title, source, doc_title, doc_source, lang):
+@dataclass(frozen=True)
+class _Job:
+    """What the command solves: ``run()`` gives the result; ``blame`` the (name, value) of the
+    inputs an overflow may come from, ``who`` the case file (None: the options); the title and
+    source in the user's language and in the JSON's (English) one."""
+
+    run: Callable
+    blame: list
+    who: Optional[Path]
+    title: str
+    source: str
+    doc_title: str
+    doc_source: str
+
+
+def _from_case(case: Path, at, profile, given) -> _Job:
+    """A task-2 case file (cases/task2.py): it gives all the data, so no other option."""
+    from flywheel.cases.task2 import load_task2_case, solve_case
+    from flywheel.cli.guard import case_numbers
+    from flywheel.errors import InputError, Notice
+
+    used = (["--profile"] if profile is not None else []) + [n for n, _ in given]
+    if used:
+        raise InputError(Notice(f"--case takes its data from the file; drop "
+                                f"{', '.join(used)}", "case_drops_options",
+                                used=", ".join(used)))
+    c = load_task2_case(case)
+    _check_at(at, c.cycle_deg)
+    if at and c.diagram is not None:
+        raise InputError(Notice(f"--at: {case} gives a diagram by areas, which has no "
+                                "moments between its crossings: ε, ω and t at an angle "
+                                "need graphs", "t2_at_diagram", case=str(case)))
+    return _Job(lambda: solve_case(c, str(case), at_deg=at or ()), case_numbers(c.model_dump()),
+                case, c.title, c.source, c.title, c.source)
+
+
+def _from_options(profile, given, v: dict, at, lang: str) -> _Job:
+    """The textbook task «Задача 2» (constant_inertia/preset.py) with the options' values:
+    each finite, the moments, J and ω positive, 0 < δ < 2, --from before --to."""
+    import math
+
+    from flywheel.constant_inertia.preset import SEED_DEFAULTS, seed_task
+    from flywheel.errors import InputError, Notice
+    from flywheel.render import nomenclature as nm
+
+    profile = "triangle" if profile is None else profile
+    if profile not in PROFILES:
+        raise InputError(Notice(f"--profile must be triangle or rectangle (got {profile!r})",
+                                "profile_choice", value=repr(profile)))
+    for name, x in given:
+        if not math.isfinite(x):
+            raise InputError(Notice(f"{name} must be a finite number (got {x})",
+                                    "option_not_finite", option=name, got=str(x)))
+    for name, x, unit in (("--md", v["md"], "N·m"), ("--j", v["j"], "kg·m²"),
+                          ("--omega0", v["omega0"], "rad/s"), ("--mc", v["mc"], "N·m")):
+        if x is not None and x <= 0:
+            raise InputError(Notice(f"{name} must be positive (got {x:g} {unit})",
+                                    "option_not_positive", option=name, v=x, unit=unit))
+    delta, start, end = v["delta"], v["start"], v["end"]
+    if delta is not None and not 0 < delta < 2:
+        raise InputError(Notice(f"--delta must lie between 0 and 2 (got {delta:g})",
+                                "option_delta", delta=delta))
+    if start is not None and end is not None and start >= end:
+        raise InputError(Notice(f"--from ({start:g}°) must be less than --to ({end:g}°)",
+                                "option_from_to", start=start, end=end))
+    _check_at(at, 360.0)
+
+    def run():
+        return seed_task(
+            profile,
+            M_D=SEED_DEFAULTS["M_D"] if v["md"] is None else v["md"],
+            J=SEED_DEFAULTS["J"] if v["j"] is None else v["j"],
+            omega0=SEED_DEFAULTS["omega0"] if v["omega0"] is None else v["omega0"],
+            start=None if start is None else math.radians(start),
+            end=None if end is None else math.radians(end),
+            M_C=v["mc"], delta=delta, at=[math.radians(x) for x in at or ()])
+
+    # the JSON document is the same in every language; the summary and plot speak lang
+    return _Job(run, given, None,
+                nm.name("t2_seed_title", lang, profile=nm.name(profile, lang)),
+                nm.name("t2_seed_source", lang),
+                nm.name("t2_seed_title", profile=profile), nm.name("t2_seed_source"))
+
+
+def _write_out(out: Path, result, formats, job: _Job, lang: str):
     """The --out folder (render/report_folder.py): summary.json, plots/task2.png, the report.
     Notes of a rerun go to stderr; returns the names written."""
     from flywheel.render.report_folder import write_report_folder
@@ -234,9 +206,9 @@ def _write_out(out: Path, result, formats, title, source, doc_title, doc_source,
     from flywheel.render.task2 import to_json
 
     names, notes = write_report_folder(
-        out, "task2", to_json(result, doc_title, doc_source) + "\n",
-        lambda path: draw(result, path, title, lang), FIGURE,
-        lambda fig: build_task2_document(result, title, source, lang, fig), formats)
+        out, "task2", to_json(result, job.doc_title, job.doc_source) + "\n",
+        lambda path: draw(result, path, job.title, lang), FIGURE,
+        lambda fig: build_task2_document(result, job.title, job.source, lang, fig), formats)
     for n in notes:
         note(n)
     return names
