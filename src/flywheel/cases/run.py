@@ -18,6 +18,7 @@ from flywheel.errors import CaseFileError, Notice, led
 from flywheel.io.schema import FieldError, StrictModel, within, clean_loc, describe, load, loc_str, pick, validate
 from flywheel.cases.rim import MATERIALS, RimSpec  # shared with the task2 format
 from flywheel.cases.tabulated import TabulatedSpec
+from flywheel.units import PA_PER_MPA, RPM_PER_RAD_S, SECONDS_PER_MINUTE, TWO_PI
 
 Pos = Annotated[float, Field(gt=0)]
 NonNeg = Annotated[float, Field(ge=0)]
@@ -664,11 +665,11 @@ def _check_references(case: Case) -> None:
             "missing: give machine.delta (the flywheel is sized for it) or a given flywheel "
             "(flywheel.J, mass with radius_of_gyration, given_disk or given_rim)",
             "delta_missing"))
-    if case.motor is not None and case.motor.no_load_speed_rpm * 2 * math.pi / 60 <= case.machine.omega_mean:
+    if case.motor is not None and case.motor.no_load_speed_rpm * TWO_PI / SECONDS_PER_MINUTE <= case.machine.omega_mean:
         raise FieldError(("motor", "no_load_speed_rpm"), Notice(
             f"{case.motor.no_load_speed_rpm:g} rpm is not above the mean speed "
-            f"{case.machine.omega_mean * 30 / math.pi:g} rpm", "motor_too_slow",
-            n0=case.motor.no_load_speed_rpm, n=case.machine.omega_mean * 30 / math.pi))
+            f"{case.machine.omega_mean * RPM_PER_RAD_S:g} rpm", "motor_too_slow",
+            n0=case.motor.no_load_speed_rpm, n=case.machine.omega_mean * RPM_PER_RAD_S))
     if case.tabulated is not None:   # no linkage: masses and loads live in [tabulated]
         for key in ("ground", "dyads", "points", "links", "cylinders", "forces", "couples"):
             if getattr(case, key):
@@ -791,10 +792,10 @@ def _check_references(case: Case) -> None:
             if low * c.p_max < -ATM:
                 raise FieldError(("cylinders", i) + c.table_loc(key),
                                  Notice(f"p/p_max = {low:g} gives "
-                                        f"{low * c.p_max / 1e6:.4g} MPa gauge, below absolute "
+                                        f"{low * c.p_max / PA_PER_MPA:.4g} MPa gauge, below absolute "
                                         f"vacuum (allowed: p ≥ −0.101325 MPa gauge)",
                                         "pressure_below_vacuum", low=low,
-                                        mpa=low * c.p_max / 1e6))
+                                        mpa=low * c.p_max / PA_PER_MPA))
     _check_engine(case)
     for i, f in enumerate(case.forces):
         if f.slider not in sliders:
@@ -918,7 +919,7 @@ def plausibility_warnings(case: Case) -> list[str]:
                           f"({DELTA_USUAL[0]:.4f} … {DELTA_USUAL[1]:.1f}; Артоболевский's table: "
                           "presses 1/5 … 1/20, engines 1/80 … 1/150, generators 1/200 … 1/300)",
                           "delta_unusual", delta=d, lo=DELTA_USUAL[0], hi=DELTA_USUAL[1]))
-    rpm = case.machine.omega_mean * 30 / math.pi
+    rpm = case.machine.omega_mean * RPM_PER_RAD_S
     if not 1.0 <= rpm <= 20_000.0:
         out.append(Notice(f"machine: the crank speed {rpm:.6g} rpm is outside the usual 1 … "
                           "20 000 rpm", "rpm_unusual", rpm=rpm))
@@ -929,10 +930,10 @@ def plausibility_warnings(case: Case) -> list[str]:
                 # charge below atmospheric pressure, and compresses it from there
                 where = ".".join(c.table_loc(key))
                 out.append(Notice(f"cylinders[{i}].{where}: p/p_max down to {low:g} "
-                                  f"({low * c.p_max / 1e6:.4g} MPa gauge, a vacuum): the tables "
+                                  f"({low * c.p_max / PA_PER_MPA:.4g} MPa gauge, a vacuum): the tables "
                                   "are gauge pressures relative to p_max; check the sign",
                                   "cylinder_vacuum", where=f"cylinders[{i}].{where}", low=low,
-                                  p=low * c.p_max / 1e6))
+                                  p=low * c.p_max / PA_PER_MPA))
     return out
 
 

@@ -44,9 +44,8 @@ import math
 from dataclasses import dataclass
 
 from flywheel.errors import InputError, Notice
+from flywheel.units import RPM_PER_RAD_S, TWO_PI
 
-TWO_PI = 2.0 * math.pi
-RPM = 30.0 / math.pi           # rad/s → rev/min
 _TOL = 1e-12                   # relative slack of the "motor strong enough" and "op fits" tests
 
 
@@ -175,7 +174,7 @@ class DutyCycleResult:
         """The JSON document (SI; angles in degrees where the key ends ``_deg``; speeds also in
         rev/min where it ends ``_rpm``). Keys: see docs/duty-cycle.md "Results"."""
         deg = (lambda x: None if x is None else math.degrees(x))
-        rpm = (lambda x: None if x is None else x * RPM)
+        rpm = (lambda x: None if x is None else x * RPM_PER_RAD_S)
         w = self.work
         return {
             "energy": self.energy,

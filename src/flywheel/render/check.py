@@ -5,6 +5,7 @@ from __future__ import annotations
 import math
 
 from flywheel.render import nomenclature as nm
+from flywheel.units import PA_PER_MPA
 
 # the words of `flywheel check` (the quantities' names, symbols and units: the nomenclature)
 W = {
@@ -159,7 +160,7 @@ def print_check(report, console=None, lang: str = "en") -> None:
                                     nm.heading("p_max", lang, si="MPa"), w["head"],
                                     w["interpolation"], w["points"]))
         for cy in case.cylinders:
-            t.add_row(cy.name, cy.piston, f"{cy.bore:g}", f"{cy.p_max / 1e6:g}",
+            t.add_row(cy.name, cy.piston, f"{cy.bore:g}", f"{cy.p_max / PA_PER_MPA:g}",
                       w.get(cy.head, cy.head),
                       cy.interpolation, str(len(cy.s if cy.s is not None else cy.diagram.s)))
         console.print(t)
