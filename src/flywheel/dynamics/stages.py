@@ -339,14 +339,10 @@ def force_analysis(phi: np.ndarray, red: ReductionResult, en: EnergyResult, mo: 
     else:
         w, e = np.full_like(phi, omega_mean), np.zeros_like(phi)
     M_const = float(en.balancing_moment)
-    J_eps = mo.J_I * np.abs(true_e)
+    J_eps = mo.J_I * np.abs(true_e)     # |J_I·ε|, the first-group couple's size
 
     def closure(M_true: np.ndarray) -> tuple[float, str]:
-        dev = float(np.max(np.abs(M_true - M_const)))
-        if M_const != 0:
-            return dev / abs(M_const), "M_D"
-        scale = float(np.max(J_eps))
-        return (dev / scale, "J_I·ε") if scale > 0 else (dev, "absolute")
+        return fo.closure_of(M_true, M_const, J_eps)
 
     def mean(M: np.ndarray) -> float:
         return float(np.sum(energy.trapezoid_areas(M, phi)) / (phi[-1] - phi[0]))
