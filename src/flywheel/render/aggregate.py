@@ -13,6 +13,7 @@ motor drives the machine; the moment the coupling transmits is c·(φ1 − φ2) 
 from __future__ import annotations
 
 from flywheel.render import nomenclature as nm
+from flywheel.render.numbers import fmt as _number
 from flywheel.units import RPM_PER_RAD_S, TWO_PI
 
 
@@ -25,9 +26,7 @@ def to_json(r, title: str = "", source: str = "") -> str:
 
 
 def _g(x, fmt: str = ".6g") -> str:
-    if x is None:
-        return "—"
-    return format(0.0 if abs(x) < 1e-300 else float(x), fmt)
+    return _number(x, spec=fmt, zero=1e-300, nonfinite="show")
 
 
 def _matrix(name: str, m, unit: str, lang: str = "en"):

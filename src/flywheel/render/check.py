@@ -5,6 +5,7 @@ from __future__ import annotations
 import math
 
 from flywheel.render import nomenclature as nm
+from flywheel.render.numbers import fmt as _number
 from flywheel.units import PA_PER_MPA
 
 # the words of `flywheel check` (the quantities' names, symbols and units: the nomenclature)
@@ -58,7 +59,7 @@ W = {
 
 def _g(x: float) -> str:
     """6 significant digits; round-off below 1e-12 shown as 0."""
-    return f"{0.0 if abs(x) < 1e-12 else x:.6g}"
+    return _number(x, 6, zero=1e-12, nonfinite="show")
 
 
 def _crank_line(report, m, lang: str = "en") -> str:

@@ -14,6 +14,7 @@ import math
 from flywheel.render import nomenclature as nm
 from flywheel.render.blocks import (  # noqa: F401  (the model, re-exported)
     Bullets, Document, Figure, Formula, Heading, Paragraph, Table)
+from flywheel.render.numbers import fmt as _number
 from flywheel.units import PA_PER_MPA
 
 
@@ -216,9 +217,7 @@ _FIGURE_SECTION = {"positions": "kin", "scheme": "kin", "velocity_analogues": "k
 
 def g(x, digits: int = 5) -> str:
     """A number as the report prints it (``digits`` significant; −0 → 0; None → "—")."""
-    if x is None or (isinstance(x, float) and not math.isfinite(x)):
-        return "—"
-    return f"{0.0 if abs(x) < 1e-13 else x:.{digits}g}"
+    return _number(x, digits, zero=1e-13, nonfinite="dash")
 
 
 def _figure_caption(file: str, lang: str) -> str:

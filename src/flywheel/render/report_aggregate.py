@@ -11,10 +11,9 @@ labels come from render/nomenclature.py, this module keeps the section titles.
 """
 from __future__ import annotations
 
-import math
-
 from flywheel.render.document import Bullets, Document, Figure, Formula, Heading, Paragraph
 from flywheel.render.nomenclature import name as text, rotor_name, unit
+from flywheel.render.numbers import fmt as _number
 from flywheel.units import RPM_PER_RAD_S, TWO_PI
 
 FIGURE = "aggregate.png"
@@ -83,9 +82,7 @@ T = {
 
 def g(x, fmt: str = ".6g") -> str:
     """A number as the report prints it (tiny → 0; None or non-finite → "—")."""
-    if x is None or not math.isfinite(float(x)):
-        return "—"
-    return format(0.0 if abs(x) < 1e-300 else float(x), fmt)
+    return _number(x, spec=fmt, zero=1e-300, nonfinite="dash")
 
 
 def _clean(label: str) -> str:

@@ -9,6 +9,7 @@ from __future__ import annotations
 import math
 
 from flywheel.render import nomenclature as nm
+from flywheel.render.numbers import fmt as _number
 from flywheel.units import PA_PER_MPA, RPM_PER_RAD_S
 
 
@@ -25,9 +26,7 @@ def to_json(r, title: str = "", source: str = "") -> str:
 
 
 def _g(x: float | None, fmt: str = ".6g") -> str:
-    if x is None or (isinstance(x, float) and math.isnan(x)):
-        return "—"
-    return format(0.0 if abs(x) < 1e-12 else x, fmt)
+    return _number(x, spec=fmt, zero=1e-12, nonfinite="dash-nan")
 
 
 def _angle(phi: float | None, lang: str = "en") -> str:
