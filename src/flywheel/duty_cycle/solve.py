@@ -345,7 +345,7 @@ def solve(d: DutyCycle) -> DutyCycleResult:
     Khurmi & Gupta, *Theory of Machines*, Ex. 16.19: 720 holes an hour, 15 kN·m and 2 s each,
     225 → 200 rpm, k = 0.5 m (the book: P = 3 kW, m = 618 kg):
 
-    >>> rpm = math.pi / 30
+    >>> from flywheel.units import RAD_S_PER_RPM as rpm
     >>> r = solve(DutyCycle(work=Work(15e3), duration=2.0, period=3600 / 720,
     ...                     speed_max=225 * rpm, speed_min=200 * rpm, radius=0.5))
     >>> round(r.motor_power, 9), round(r.delta_E, 6), round(r.mass, 3)
