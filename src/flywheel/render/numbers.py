@@ -57,6 +57,7 @@ def fmt(x, sig: int = 6, *, zero: float | None = 1e-12, spec: str | None = None,
             return format(x, spec or f".{sig}g")
         if nonfinite in ("dash", "dash-nan"):
             return DASH
+        # library use only: no CLI input reaches this
         raise ValueError(f"a non-finite number ({x}) to format: it should have been refused "
                          f"where it entered")
     if zero is not None and (x == 0 or abs(x) < zero):
