@@ -598,3 +598,12 @@ def test_case_without_masses_gives_reactions_of_the_given_forces_alone():
     fast = fo.kinetostatics(mech, kin, 500.0, 3.0, loads)
     for key in slow.joints:
         np.testing.assert_allclose(slow.joints[key].vector, fast.joints[key].vector, atol=1e-12)
+
+
+def test_closure_of_its_three_references():
+    """One closure for both routes (stages.force_analysis and forces.closure): relative to M_D,
+    else to max|J_I·ε|, else absolute — checked by hand on three-node grids."""
+    M_y = np.array([10.0, 10.5, 9.0])
+    assert fo.closure_of(M_y, 10.0, np.zeros(3)) == (0.1, "M_D")
+    assert fo.closure_of(M_y - 10.0, 0.0, np.array([2.0, -4.0, 1.0])) == (0.25, "J_I·ε")
+    assert fo.closure_of(M_y - 10.0, 0.0, np.zeros(3)) == (1.0, "absolute")

@@ -24,6 +24,7 @@ from pydantic import Field
 
 from flywheel.errors import CaseFileError, FlywheelError, Notice, led, said
 from flywheel.io.schema import FieldError, StrictModel, load, validate, within, clean_loc, describe, pick
+from flywheel.units import RAD_S_PER_RPM
 
 Pos = Annotated[float, Field(gt=0)]
 NonNeg = Annotated[float, Field(ge=0)]
@@ -37,7 +38,6 @@ Torque = Annotated[float, Field(gt=0), within(1e-6, 1e9, "N·m")]
 Moment = Annotated[float, Field(ge=0), within(0.0, 1e9, "N·m")]
 Rpm = Annotated[float, Field(gt=0), within(10.0, 1e5, "rpm")]
 Ratio = Annotated[float, Field(gt=0), within(1e-3, 1e3, "")]
-RPM = math.pi / 30.0  # rev/min → rad/s
 
 
 
@@ -249,7 +249,7 @@ def _motor(m: Motor, M0: float, forcing_ratio: float, amplitude: float, chain_fo
                 f"resistance reduced to shaft I, {M0:g} N·m", "ag_motor_too_weak",
                 M_start=M_start, M0=M0))
         return Drive("linear", M0, amplitude, forcing_ratio, M_start=M_start,
-                     omega_x=m.synchronous_rpm * RPM)
+                     omega_x=m.synchronous_rpm * RAD_S_PER_RPM)
     for k in ("synchronous_rpm", "starting_torque", "rated_torque", "rated_slip"):
         if getattr(m, k) is not None:
             raise FieldError(f"motor.{k}", Notice("only for characteristic = \"linear\"",
@@ -257,7 +257,7 @@ def _motor(m: Motor, M0: float, forcing_ratio: float, amplitude: float, chain_fo
     if m.speed_rpm is None:
         raise FieldError("motor.speed_rpm", Notice("missing: a constant-torque motor needs the "
                                                    "steady speed of shaft I", "ag_speed_missing"))
-    return Drive("constant", M0, amplitude, forcing_ratio, omega_nominal=m.speed_rpm * RPM)
+    return Drive("constant", M0, amplitude, forcing_ratio, omega_nominal=m.speed_rpm * RAD_S_PER_RPM)
 
 
 def build(case: AggregateCase):

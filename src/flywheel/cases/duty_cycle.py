@@ -20,8 +20,7 @@ from flywheel.duty_cycle.solve import (DutyCycle, DutyCycleError, DutyCycleResul
                                        nonfinite, solve)
 from flywheel.errors import CaseFileError, Notice, led, said
 from flywheel.io.schema import FieldError, StrictModel, describe, load, pick, validate
-
-RPM = math.pi / 30.0            # rev/min → rad/s
+from flywheel.units import RAD_S_PER_RPM
 
 
 def _within(lo: float, hi: float, unit: str, lo_open: bool = False, hi_open: bool = False,
@@ -392,7 +391,7 @@ def to_duty_cycle(c: DutyCase) -> DutyCycle:
     speeds = {SPEEDS[k][0]: getattr(sp, k) for k in _given(sp, SPEEDS)}
     unit = {SPEEDS[k][1] for k in _given(sp, SPEEDS)}.pop()
     if unit == "rpm":
-        speeds = {k: v * RPM for k, v in speeds.items()}
+        speeds = {k: v * RAD_S_PER_RPM for k, v in speeds.items()}
     linear = unit == "rim"
     if linear and radius is not None:          # v = ω·k
         speeds = {k: v / radius for k, v in speeds.items()}

@@ -9,6 +9,7 @@ from pydantic import Field, model_validator
 
 from flywheel.errors import Notice
 from flywheel.io.schema import FieldError, StrictModel, within
+from flywheel.units import PA_PER_MPA
 
 MATERIALS = {  # density [kg/m³], allowable hoop stress of a rotating rim [Pa]
     "steel": (7800.0, 20e6),
@@ -53,13 +54,13 @@ class RimSpec(StrictModel):
         if density * self.speed ** 2 > allowable_stress * (1 + 1e-12):
             raise FieldError(("rim", "speed"),
                              Notice(f"{self.speed:g} m/s gives the hoop stress ρ·v² = "
-                                    f"{density * self.speed ** 2 / 1e6:.6g} MPa above the "
-                                    f"allowable {allowable_stress / 1e6:.6g} MPa ({material}, "
+                                    f"{density * self.speed ** 2 / PA_PER_MPA:.6g} MPa above the "
+                                    f"allowable {allowable_stress / PA_PER_MPA:.6g} MPa ({material}, "
                                     f"ρ = {density:g} kg/m³), whatever the diameter (allowed: at "
                                     f"most √(σ/ρ) = {(allowable_stress / density) ** 0.5:.6g} m/s)",
                                     "rim_speed_stress", speed=self.speed,
-                                    stress=density * self.speed ** 2 / 1e6,
-                                    allowable=allowable_stress / 1e6, material=material,
+                                    stress=density * self.speed ** 2 / PA_PER_MPA,
+                                    allowable=allowable_stress / PA_PER_MPA, material=material,
                                     density=density, top=(allowable_stress / density) ** 0.5))
 
     def design(self, J: float, omega: float, density: float, allowable_stress: float):

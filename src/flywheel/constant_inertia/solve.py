@@ -33,6 +33,7 @@ from typing import Callable, Sequence
 from flywheel.constant_inertia.crossings import bisect_root, crossings, stationary_points
 from flywheel.constant_inertia.graphs import TWO_PI, Moment, Piece, net_pieces, size
 from flywheel.errors import InputError, Notice
+from flywheel.units import RPM_PER_RAD_S
 
 # relative tolerance of the cycle balance (steady motion) and of the sum of areas
 BALANCE_RTOL = 1e-9
@@ -113,10 +114,6 @@ class Phase:
     t_start: float
     duration: float
     trend: str   # "up" | "down" | "steady"
-
-
-#: rad/s → rev/min
-RPM = 30.0 / math.pi
 
 
 def _deg(x: float | None) -> float | None:
@@ -227,8 +224,10 @@ class Task2Result:
             "omega_end": self.omega_end,
             "work_end": self.work_end,
             "cycle_deg": math.degrees(self.cycle),
-            "rpm": {"omega0": self.omega0 * RPM, "omega_max": self.omega_max * RPM,
-                    "omega_min": self.omega_min * RPM, "omega_mean": self.omega_mean * RPM},
+            "rpm": {"omega0": self.omega0 * RPM_PER_RAD_S,
+                    "omega_max": self.omega_max * RPM_PER_RAD_S,
+                    "omega_min": self.omega_min * RPM_PER_RAD_S,
+                    "omega_mean": self.omega_mean * RPM_PER_RAD_S},
             "work_driving": self.work_driving,
             "work_resistance": self.work_resistance,
             "power": self.power,

@@ -44,9 +44,8 @@ import math
 from dataclasses import dataclass
 
 from flywheel.errors import InputError, Notice
+from flywheel.units import RPM_PER_RAD_S, TWO_PI
 
-TWO_PI = 2.0 * math.pi
-RPM = 30.0 / math.pi           # rad/s → rev/min
 _TOL = 1e-12                   # relative slack of the "motor strong enough" and "op fits" tests
 
 
@@ -175,7 +174,7 @@ class DutyCycleResult:
         """The JSON document (SI; angles in degrees where the key ends ``_deg``; speeds also in
         rev/min where it ends ``_rpm``). Keys: see docs/duty-cycle.md "Results"."""
         deg = (lambda x: None if x is None else math.degrees(x))
-        rpm = (lambda x: None if x is None else x * RPM)
+        rpm = (lambda x: None if x is None else x * RPM_PER_RAD_S)
         w = self.work
         return {
             "energy": self.energy,
@@ -346,7 +345,7 @@ def solve(d: DutyCycle) -> DutyCycleResult:
     Khurmi & Gupta, *Theory of Machines*, Ex. 16.19: 720 holes an hour, 15 kN·m and 2 s each,
     225 → 200 rpm, k = 0.5 m (the book: P = 3 kW, m = 618 kg):
 
-    >>> rpm = math.pi / 30
+    >>> from flywheel.units import RAD_S_PER_RPM as rpm
     >>> r = solve(DutyCycle(work=Work(15e3), duration=2.0, period=3600 / 720,
     ...                     speed_max=225 * rpm, speed_min=200 * rpm, radius=0.5))
     >>> round(r.motor_power, 9), round(r.delta_E, 6), round(r.mass, 3)

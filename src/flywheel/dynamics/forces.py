@@ -741,14 +741,20 @@ def power_balance_moment(mech: Mechanism, kin: Kinematics, omega, epsilon, loads
 
 
 def closure(fa: ForceAnalysis, M_D: float) -> float:
-    """The largest relative deviation of M_y from the constant moment M_D [N·m] of the
-    dynamics over the grid: max |M_y − M_D| / |M_D|. With the true motion and the
-    first-group couple on the crank, M_y = M_D at every φ — the equation of motion
-    J·ε + ½·J′·ω² = M_D + M_C read backwards (design.md §9) — so this is round-off.
-    A machine whose loads do no net work has M_D = 0: then the deviation is taken relative
-    to the largest first-group couple |J_I·ε| (what M_y = 0 balances), or returned as is."""
-    dev = float(np.max(np.abs(fa.balancing_moment - M_D)))
+    """The closure of a force analysis, :func:`closure_of` its M_y and first-group couple."""
+    return closure_of(fa.balancing_moment, M_D, fa.first_group_couple)[0]
+
+
+def closure_of(M_y: np.ndarray, M_D: float, first_group_couple: np.ndarray) -> tuple[float, str]:
+    """The largest relative deviation of M_y [N·m] from the constant moment M_D [N·m] of the
+    dynamics over the grid, max |M_y − M_D| / |M_D|, and what it is relative to ("M_D").
+    With the true motion and the first-group couple on the crank, M_y = M_D at every φ — the
+    equation of motion J·ε + ½·J′·ω² = M_D + M_C read backwards (design.md §9) — so this is
+    round-off. A machine whose loads do no net work has M_D = 0: then the deviation is taken
+    relative to the largest first-group couple |J_I·ε| [N·m] (what M_y = 0 balances;
+    "J_I·ε"), or returned as is ("absolute")."""
+    dev = float(np.max(np.abs(M_y - M_D)))
     if M_D != 0:
-        return dev / abs(M_D)
-    scale = float(np.max(np.abs(fa.first_group_couple)))
-    return dev / scale if scale > 0 else dev
+        return dev / abs(M_D), "M_D"
+    scale = float(np.max(np.abs(first_group_couple)))
+    return (dev / scale, "J_I·ε") if scale > 0 else (dev, "absolute")

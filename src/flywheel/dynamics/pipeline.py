@@ -25,6 +25,7 @@ from flywheel.dynamics.results import (CylinderResult, EnergyResult, LoadsResult
                                        ReductionResult, Results, warnings_of)
 from flywheel.errors import InputError, Notice
 from flywheel.linkage.drawing import describe, links_drawn
+from flywheel.units import PA_PER_MPA
 
 
 def analyze(case, n_points: int = DEFAULT_POINTS, at_deg: list[float] | None = None,
@@ -129,7 +130,7 @@ def linkage_loads(case, mech, dcs: dict, kin) -> LoadsResult:
         M = L.gas_moment(F, x_dot, head.x, far.x)
         if np.min(p) < 0:
             i = int(np.argmin(p))
-            p_mpa, at = float(p[i]) / 1e6, math.degrees(phi[i])
+            p_mpa, at = float(p[i]) / PA_PER_MPA, math.degrees(phi[i])
             warnings.append(Notice(f"cylinder {cy.name}: the {cy.interpolation} interpolation of its "
                                    f"indicator table gives negative pressure, down to {p_mpa:.4g} "
                                    f"MPa at φ = {at:.1f}° (use 'pchip' to avoid overshoot)",

@@ -5,6 +5,7 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
+from flywheel.units import PA_PER_MPA
 
 
 def J_required_merzalov(delta_T_max: float, omega_mean: float, delta: float) -> float:
@@ -225,8 +226,8 @@ def design_rim(J: float, omega: float, density: float, allowable_stress: float, 
             # library use only: no CLI input reaches this
             raise InputError(
                 f"flywheel.rim.speed: {speed:g} m/s gives the hoop stress ρ·v² = "
-                f"{density * speed ** 2 / 1e6:.6g} MPa above the allowable "
-                f"{allowable_stress / 1e6:.6g} MPa, whatever the diameter (allowed: at most "
+                f"{density * speed ** 2 / PA_PER_MPA:.6g} MPa above the allowable "
+                f"{allowable_stress / PA_PER_MPA:.6g} MPa, whatever the diameter (allowed: at most "
                 f"√(σ/ρ) = {v_max:.6g} m/s for ρ = {density:g} kg/m³)")
         v, speed_from = speed, "given"
     D = 2 * v / omega

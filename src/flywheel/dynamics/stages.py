@@ -9,7 +9,6 @@ know; input that cannot be analysed raises :class:`~flywheel.errors.InputError`.
 """
 from __future__ import annotations
 
-import math
 from dataclasses import replace
 
 import numpy as np
@@ -19,6 +18,7 @@ from flywheel.dynamics.results import (EnergyResult, FlywheelShape, ForceResult,
                                        MotionResult, ReductionResult, SizingResult,
                                        TimeDomainResult)
 from flywheel.errors import InputError, Notice, said
+from flywheel.units import PA_PER_MPA, SECONDS_PER_MINUTE, TWO_PI
 
 
 POWER_RTOL = 0.01
@@ -227,10 +227,10 @@ def with_rim_speeds(sz: SizingResult, mo: MotionResult, fw) -> SizingResult:
                 f"flywheel as a {shape}: rim speed {v:.1f} m/s exceeds "
                 f"the safe {sz.rim_speed_limit:.1f} m/s = √(σ/ρ) of a thin rotating ring (hoop "
                 f"stress σ = ρ·v², Timoshenko, Strength of Materials, part II) for "
-                f"{material}: σ = {fw.sigma / 1e6:g} MPa, ρ = {fw.rho:g} kg/m³ (set "
+                f"{material}: σ = {fw.sigma / PA_PER_MPA:g} MPa, ρ = {fw.rho:g} kg/m³ (set "
                 f"flywheel.allowable_stress, or a wider flywheel: width_ratio)", "rim_speed",
                 shape=shape, v=v, limit=sz.rim_speed_limit, material=material,
-                sigma=fw.sigma / 1e6, rho=fw.rho))
+                sigma=fw.sigma / PA_PER_MPA, rho=fw.rho))
     designed = sz.rim_design
     if designed is not None:          # its hoop stress at ω_max, ρ·(ω_max·i·D_mean/2)²
         v_top = mo.omega_max * sz.speed_ratio * designed.D_mean / 2
@@ -339,14 +339,10 @@ def force_analysis(phi: np.ndarray, red: ReductionResult, en: EnergyResult, mo: 
     else:
         w, e = np.full_like(phi, omega_mean), np.zeros_like(phi)
     M_const = float(en.balancing_moment)
-    J_eps = mo.J_I * np.abs(true_e)
+    J_eps = mo.J_I * np.abs(true_e)     # |J_I·ε|, the first-group couple's size
 
     def closure(M_true: np.ndarray) -> tuple[float, str]:
-        dev = float(np.max(np.abs(M_true - M_const)))
-        if M_const != 0:
-            return dev / abs(M_const), "M_D"
-        scale = float(np.max(J_eps))
-        return (dev / scale, "J_I·ε") if scale > 0 else (dev, "absolute")
+        return fo.closure_of(M_true, M_const, J_eps)
 
     def mean(M: np.ndarray) -> float:
         return float(np.sum(energy.trapezoid_areas(M, phi)) / (phi[-1] - phi[0]))
@@ -442,7 +438,7 @@ def time_domain(case, phi: np.ndarray, red: ReductionResult, en: EnergyResult,
     motor = None
     delta = machine.delta if machine.delta is not None else mo.delta_achieved
     if case.motor is not None:
-        w_x = case.motor.no_load_speed_rpm * 2 * math.pi / 60
+        w_x = case.motor.no_load_speed_rpm * TWO_PI / SECONDS_PER_MINUTE
         M_p = case.motor.starting_torque or en.driving_moment / (1 - machine.omega_mean / w_x)
         motor = timedomain.linear_motor(M_p, w_x)
         n_up = timedomain.startup_cycles(phi, J, en.M_known, motor, machine.omega_mean,

@@ -117,11 +117,6 @@ def integrate(phi_grid: np.ndarray, J: np.ndarray, dJ: np.ndarray, M: np.ndarray
     return TimeHistory(sol.t, sol.y[0], sol.y[1])
 
 
-def omega_at_phi(history: TimeHistory, phi: np.ndarray) -> np.ndarray:
-    """ω of a time history at crank angles ``phi`` (unwrapped, inside its range)."""
-    return np.interp(phi, history.phi, history.omega)
-
-
 def linear_motor(starting_torque: float, no_load_speed: float):
     """The course's model of an asynchronous motor on its working branch:
     M_Д = M_п·(1 − ω/ω_x), with the starting torque M_п and the synchronous (no-load) speed ω_x

@@ -59,9 +59,7 @@ from flywheel.elastic.timedomain import (CHECK_FAST_PERIODS, MAX_FAST_PERIODS, H
                                          start_up,
                                          start_up_duration, steady_method, steady_run)
 from flywheel.errors import InputError
-
-TWO_PI = 2.0 * math.pi
-RPM = 30.0 / math.pi  # rad/s → rev/min (vibrations per minute)
+from flywheel.units import RPM_PER_RAD_S, TWO_PI
 
 
 @dataclass(frozen=True)
@@ -186,9 +184,9 @@ class AggregateResult:
             "c": self.c.tolist(),
             "mode_shapes": self.modes.elastic_shapes.T.tolist(),
         })
-        d["natural_frequencies_rpm"] = [float(w) * RPM for w in self.modes.elastic]
+        d["natural_frequencies_rpm"] = [float(w) * RPM_PER_RAD_S for w in self.modes.elastic]
         d["modes"] = [
-            {"natural_hz": float(w) / TWO_PI, "natural_rpm": float(w) * RPM,
+            {"natural_hz": float(w) / TWO_PI, "natural_rpm": float(w) * RPM_PER_RAD_S,
              "natural_rad_s": float(w), "shape": [float(x) for x in shape],
              "nodes": [{"shaft": n.shaft, "between": None if n.between is None else list(n.between),
                         "fraction": n.fraction, "distance": n.distance, "rotor": n.rotor}

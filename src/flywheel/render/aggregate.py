@@ -12,12 +12,9 @@ motor drives the machine; the moment the coupling transmits is c·(φ1 − φ2) 
 """
 from __future__ import annotations
 
-import math
-
 from flywheel.render import nomenclature as nm
-
-TWO_PI = 2.0 * math.pi
-RPM = 30.0 / math.pi  # rad/s → rev/min
+from flywheel.render.numbers import fmt as _number
+from flywheel.units import RPM_PER_RAD_S, TWO_PI
 
 
 def to_json(r, title: str = "", source: str = "") -> str:
@@ -29,9 +26,7 @@ def to_json(r, title: str = "", source: str = "") -> str:
 
 
 def _g(x, fmt: str = ".6g") -> str:
-    if x is None:
-        return "—"
-    return format(0.0 if abs(x) < 1e-300 else float(x), fmt)
+    return _number(x, spec=fmt, zero=1e-300, nonfinite="show")
 
 
 def _matrix(name: str, m, unit: str, lang: str = "en"):
@@ -112,7 +107,7 @@ def print_summary(r, title: str = "", source: str = "", console=None, lang: str 
         console.print(e(L("ag_no_motor")))
         return
     console.print(e(L("ag_forcing", w=_g(st.omega_forcing), f=_g(st.omega_forcing / TWO_PI),
-                      omega=_g(st.omega_mean), n=_g(st.omega_mean * RPM))))
+                      omega=_g(st.omega_mean), n=_g(st.omega_mean * RPM_PER_RAD_S))))
     t = table(L("ag_resonance"), (L("mode"), L("f_n_col"), L("ratio"), L("margin")))
     for k, x in enumerate(r.resonance):
         row(t, k + 1, _g(x.omega_n / TWO_PI), _g(x.ratio, ".4f"), _g(x.margin, ".4f"))
@@ -179,7 +174,7 @@ def _print_modes(r, console, lang: str) -> None:
                 parts.append(L("node_frame", name=nm.rotor_name(name, lang)))
             else:
                 parts.append(_node_text(node, lang))
-        t.add_row(str(k + 1), e(_g(w / TWO_PI)), e(_g(w * RPM)), e("; ".join(parts) or "—"))
+        t.add_row(str(k + 1), e(_g(w / TWO_PI)), e(_g(w * RPM_PER_RAD_S)), e("; ".join(parts) or "—"))
     console.print(t)
     t = Table(title=e(L("ag_shafts")))
     for col in ("#", L("between"), L("gear_ratio"), L("c_input"), L("length"),

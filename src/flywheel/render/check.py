@@ -5,6 +5,8 @@ from __future__ import annotations
 import math
 
 from flywheel.render import nomenclature as nm
+from flywheel.render.numbers import fmt as _number
+from flywheel.units import PA_PER_MPA
 
 # the words of `flywheel check` (the quantities' names, symbols and units: the nomenclature)
 W = {
@@ -57,7 +59,7 @@ W = {
 
 def _g(x: float) -> str:
     """6 significant digits; round-off below 1e-12 shown as 0."""
-    return f"{0.0 if abs(x) < 1e-12 else x:.6g}"
+    return _number(x, 6, zero=1e-12, nonfinite="show")
 
 
 def _crank_line(report, m, lang: str = "en") -> str:
@@ -159,7 +161,7 @@ def print_check(report, console=None, lang: str = "en") -> None:
                                     nm.heading("p_max", lang, si="MPa"), w["head"],
                                     w["interpolation"], w["points"]))
         for cy in case.cylinders:
-            t.add_row(cy.name, cy.piston, f"{cy.bore:g}", f"{cy.p_max / 1e6:g}",
+            t.add_row(cy.name, cy.piston, f"{cy.bore:g}", f"{cy.p_max / PA_PER_MPA:g}",
                       w.get(cy.head, cy.head),
                       cy.interpolation, str(len(cy.s if cy.s is not None else cy.diagram.s)))
         console.print(t)

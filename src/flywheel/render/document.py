@@ -14,6 +14,8 @@ import math
 from flywheel.render import nomenclature as nm
 from flywheel.render.blocks import (  # noqa: F401  (the model, re-exported)
     Bullets, Document, Figure, Formula, Heading, Paragraph, Table)
+from flywheel.render.numbers import fmt as _number
+from flywheel.units import PA_PER_MPA
 
 
 # -- words ----------------------------------------------------------------------------------------
@@ -215,9 +217,7 @@ _FIGURE_SECTION = {"positions": "kin", "scheme": "kin", "velocity_analogues": "k
 
 def g(x, digits: int = 5) -> str:
     """A number as the report prints it (``digits`` significant; −0 → 0; None → "—")."""
-    if x is None or (isinstance(x, float) and not math.isfinite(x)):
-        return "—"
-    return f"{0.0 if abs(x) < 1e-13 else x:.{digits}g}"
+    return _number(x, digits, zero=1e-13, nonfinite="dash")
 
 
 def _figure_caption(file: str, lang: str) -> str:
@@ -477,7 +477,7 @@ def _sizing_lines(s: dict, t: dict, lang: str) -> list[str]:
         t["rim"].format(dims=dims(r, ("D", "D_inner", "b", "mass"), (4, 4, 4, 5)),
                         speed=nm.name("rim_speed", lang), v=g(r.get("rim_speed"), 4), u=u("rim_speed"),
                         lim=g(s.get("flywheel_rim_speed_limit"), 3)),
-        *([t["rim_design"].format(share=g(r["share"], 4), sigma=g(r["stress"] / 1e6, 4),
+        *([t["rim_design"].format(share=g(r["share"], 4), sigma=g(r["stress"] / PA_PER_MPA, 4),
                                   dims=dims(r, ("D_mean", "thickness", "width", "mass", "rim_speed"),
                                             (4, 4, 4, 5, 4)))] if "D_mean" in r else []),
         t["omega_extremes"].format(wmax=sym("omega_max"), vmax=g(s["omega_max"], 6),

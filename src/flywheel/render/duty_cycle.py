@@ -10,6 +10,7 @@ from __future__ import annotations
 import json
 
 from flywheel.render import nomenclature as nm
+from flywheel.render.numbers import fmt as _number
 
 L10N = {
     "en": {
@@ -51,11 +52,9 @@ def to_json(r, title: str = "", source: str = "") -> str:
 
 
 def _g(x, digits: int = 6) -> str:
-    if x is None:
-        return "—"
     if isinstance(x, str):
         return x
-    return f"{0.0 if abs(x) < 1e-300 else x:.{digits}g}"
+    return _number(x, digits, zero=1e-300, nonfinite="show")
 
 
 def _rows(keys_values, lang: str) -> list[tuple[str, str, str, str]]:

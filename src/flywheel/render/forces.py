@@ -13,6 +13,7 @@ import numpy as np
 
 from flywheel.render.blocks import Bullets, Heading, Paragraph
 from flywheel.render.nomenclature import csv_header, name, position_label, symbol, unit, unit_of
+from flywheel.render.numbers import fmt as _number, fmt_rows
 
 T = {
     "en": {
@@ -98,15 +99,8 @@ SLIDER_CRANK = ("piston_effort", "side_thrust", "rod_thrust", "crank_pin_tangent
 CLOSURE_OK = 1e-9           # a closure above this is not round-off
 
 
-def _fmt(x: float) -> str:
-    """A number as render/tables.py writes it: 12 significant digits, no negative zero."""
-    return "%.12g" % (0.0 if x == 0 else x)
-
-
 def _g(x, digits: int = 5) -> str:
-    if x is None or (isinstance(x, float) and not math.isfinite(x)):
-        return "—"
-    return f"{0.0 if abs(x) < 1e-13 else x:.{digits}g}"
+    return _number(x, digits, zero=1e-13, nonfinite="dash")
 
 
 # -- the columns ------------------------------------------------------------------------------------
@@ -143,11 +137,10 @@ def force_columns(results) -> dict[str, np.ndarray]:
 
 
 def _rows(cols: dict[str, np.ndarray], index=None) -> list[str]:
-    data = np.column_stack(list(cols.values())) + 0.0        # + 0.0: no negative zero
+    data = np.column_stack(list(cols.values()))
     if index is not None:
         data = data[index]
-    fmt = ",".join(["%.12g"] * data.shape[1])
-    return [fmt % tuple(row) for row in data.tolist()]
+    return fmt_rows(data, 12)
 
 
 def forces_csv(results) -> str:

@@ -2,6 +2,8 @@
 only, no computation)."""
 from __future__ import annotations
 
+from flywheel.render.numbers import fmt as _number
+
 # sentence templates of the class summary and the gradebook (the quantities' names are
 # answers' keys, which stay as the key spells them)
 TEXT = {
@@ -122,7 +124,7 @@ def _g(x, fmt: str = ".6g") -> str:
     if x is None:
         return "—"
     if isinstance(x, float):
-        return format(x, fmt)
+        return _number(x, spec=fmt, zero=None, nonfinite="show")
     return str(x)
 
 
@@ -160,7 +162,7 @@ def print_variants(vs, out, console=None, sheets: str | None = None, lang: str =
 
 
 def _pct(x: float | None) -> str:
-    return "—" if x is None else f"{100 * x:.0f} %"
+    return "—" if x is None else _number(100 * x, spec=".0f", zero=None, nonfinite="show") + " %"
 
 
 DETAIL_STUDENTS = 60      # a class: per student a table of the answers; more: the group table only

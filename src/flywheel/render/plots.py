@@ -22,6 +22,7 @@ import numpy as np
 
 from flywheel.render import figure as fg
 from flywheel.render import nomenclature as nm
+from flywheel.units import PA_PER_MPA
 
 _SCHEME_LEGEND_COLS = 4     # columns of the scheme's legend (below the panels)
 
@@ -232,8 +233,8 @@ def figure_indicator(results, cylinder, lang: str = "en"):
         ax.set_xlabel(nm.axis("s_{cylinder}", lang))
         ax.set_ylabel(nm.axis("p_rel", lang))
         p_max = float(cylinder.p_max)
-        sec = ax.secondary_yaxis("right", functions=(lambda r: r * p_max / 1e6,
-                                                     lambda p: p * 1e6 / p_max))
+        sec = ax.secondary_yaxis("right", functions=(lambda r: r * p_max / PA_PER_MPA,
+                                                     lambda p: p * PA_PER_MPA / p_max))
         sec.set_ylabel(nm.axis("p_{cylinder}", lang, si="MPa"))
         ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.13), ncols=2)
         ax.set_title(fg.title(results, _t(lang, "indicator", c=cylinder.name)))

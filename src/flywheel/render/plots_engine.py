@@ -14,6 +14,7 @@ import numpy as np
 
 from flywheel.render import figure as fg
 from flywheel.render import nomenclature as nm
+from flywheel.units import PA_PER_MPA
 
 _COLORS = ("C0", "C2", "C3", "C1")     # intake, compression, expansion, exhaust
 
@@ -42,14 +43,14 @@ def figure_indicator_strokes(results, cylinder, lang: str = "en"):
             ax.plot(s[mask][order], rel[mask][order], color=_COLORS[k], label=t(name))
             ax.plot(cylinder.stroke_s[name], cylinder.stroke_tables[name], "o", color=_COLORS[k],
                     markersize=4, markerfacecolor="none", label=t("table", k=t(name)))
-            bx.plot(np.where(mask, deg, np.nan), np.where(mask, cylinder.p / 1e6, np.nan),
+            bx.plot(np.where(mask, deg, np.nan), np.where(mask, cylinder.p / PA_PER_MPA, np.nan),
                     color=_COLORS[k], label=t(name))
         ax.axhline(0.0, color="0.3", linewidth=0.6)
         ax.set_xlim(0.0, 1.0)
         ax.set_xlabel(t("s_axis"))
         ax.set_ylabel(sub_mathtext(t("p_axis")))
-        sec = ax.secondary_yaxis("right", functions=(lambda r: r * p_max / 1e6,
-                                                     lambda p: p * 1e6 / p_max))
+        sec = ax.secondary_yaxis("right", functions=(lambda r: r * p_max / PA_PER_MPA,
+                                                     lambda p: p * PA_PER_MPA / p_max))
         sec.set_ylabel(t("p_MPa"))
         ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.15), ncols=4, frameon=False)
         bx.axhline(0.0, color="0.3", linewidth=0.6)

@@ -22,6 +22,7 @@ import numpy as np
 
 from flywheel.render import nomenclature as nm
 from flywheel.render.figure import A4_W, DPI
+from flywheel.render.numbers import fmt as _number
 
 _TEXT = {
     "en": {
@@ -206,12 +207,7 @@ def _scale_text(key: str, mu: float, lang: str) -> str:
 def _num(v: float, sig: int = 4) -> str:
     """A value to ``sig`` significant digits, never in exponent form above 1 (12345.6 →
     "12346", 253.92 → "253.9", 5.8861 → "5.886")."""
-    v = float(v)
-    if v == 0.0 or not math.isfinite(v):
-        return f"{v:g}"
-    if abs(v) >= 10.0 ** sig:
-        return f"{v:.0f}"
-    return f"{v:.{sig}g}"
+    return _number(v, sig, zero=None, nonfinite="show", integers_above=True)
 
 
 def _clean(v: float, largest: float) -> float:

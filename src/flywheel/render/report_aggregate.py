@@ -11,14 +11,12 @@ labels come from render/nomenclature.py, this module keeps the section titles.
 """
 from __future__ import annotations
 
-import math
-
 from flywheel.render.document import Bullets, Document, Figure, Formula, Heading, Paragraph
 from flywheel.render.nomenclature import name as text, rotor_name, unit
+from flywheel.render.numbers import fmt as _number
+from flywheel.units import RPM_PER_RAD_S, TWO_PI
 
 FIGURE = "aggregate.png"
-TWO_PI = 2.0 * math.pi
-RPM = 30.0 / math.pi
 
 T = {
     "en": {
@@ -84,9 +82,7 @@ T = {
 
 def g(x, fmt: str = ".6g") -> str:
     """A number as the report prints it (tiny → 0; None or non-finite → "—")."""
-    if x is None or not math.isfinite(float(x)):
-        return "—"
-    return format(0.0 if abs(x) < 1e-300 else float(x), fmt)
+    return _number(x, spec=fmt, zero=1e-300, nonfinite="dash")
 
 
 def _clean(label: str) -> str:
@@ -156,7 +152,7 @@ def build_aggregate_document(r, title: str, source: str, lang: str = "en",
     rigid = r.modes.rigid
     table(t["modes_caption"], [L("mode"), f"ω, {U('rad/s')}", f"f, {U('Hz')}",
                                f"n, {U('rpm')}", L("shape")],
-          [[L("rigid_body") if k < rigid else k - rigid + 1, g(w), g(w / TWO_PI), g(w * RPM),
+          [[L("rigid_body") if k < rigid else k - rigid + 1, g(w), g(w / TWO_PI), g(w * RPM_PER_RAD_S),
             ", ".join(g(x, ".4g") for x in r.modes.shapes[:, k])]
            for k, w in enumerate(r.modes.omega)])
 
@@ -167,7 +163,7 @@ def build_aggregate_document(r, title: str, source: str, lang: str = "en",
         add(Paragraph(t["no_motor"]))
     else:
         add(Paragraph(L("ag_forcing", w=g(st.omega_forcing), f=g(st.omega_forcing / TWO_PI),
-                        omega=g(st.omega_mean), n=g(st.omega_mean * RPM))))
+                        omega=g(st.omega_mean), n=g(st.omega_mean * RPM_PER_RAD_S))))
         table(t["resonance_caption"], [L("mode"), f"f_n, {U('Hz')}", L("ratio"), L("margin")],
               [[k + 1, g(x.omega_n / TWO_PI), g(x.ratio, ".4f"), g(x.margin, ".4f")]
                for k, x in enumerate(r.resonance)])

@@ -18,6 +18,7 @@ import math
 
 from flywheel.render.document import Bullets, Document, Figure, Formula, Heading, Paragraph
 from flywheel.render.nomenclature import name as text, symbol, unit
+from flywheel.render.numbers import fmt as _number
 
 FIGURE = "task2.png"
 
@@ -93,9 +94,7 @@ KINDS = {"en": {"constant": "(constant)", "triangle": "(triangle, peak)",
 
 def g(x, fmt: str = ".6g") -> str:
     """A number as the report prints it (−0 → 0; None or NaN → "—")."""
-    if x is None or (isinstance(x, float) and not math.isfinite(x)):
-        return "—"
-    return format(0.0 if abs(x) < 1e-12 else x, fmt)
+    return _number(x, spec=fmt, zero=1e-12, nonfinite="dash")
 
 
 def _deg(phi) -> str:

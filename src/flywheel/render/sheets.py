@@ -18,6 +18,7 @@ from pathlib import Path
 
 from flywheel.render import nomenclature as nm
 from flywheel.render.document import Document, Figure, Heading, Paragraph, Table
+from flywheel.render.numbers import fmt as _number
 
 FORMATS = ("both", "html", "pdf")
 #: the sheet's own print style, after the записка's and as the PDF sheet's layout (typst_sheet:
@@ -95,7 +96,7 @@ def _num(v) -> str:
         return ", ".join(_num(x) for x in v)
     if isinstance(v, int):
         return str(v)
-    return "%.6g" % (0.0 if v == 0 else v)
+    return _number(v, 6, zero=0.0, nonfinite="show")
 
 
 def _value(g, lang: str) -> str:

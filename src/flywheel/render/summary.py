@@ -3,6 +3,7 @@ from __future__ import annotations
 
 from flywheel.render import nomenclature as nm
 from flywheel.render.forces import print_forces
+from flywheel.render.numbers import fmt as _number
 
 # Sentence templates and table words only: every quantity's name, symbol and unit comes from
 # the nomenclature (render/nomenclature.py), filled in where the templates say {…}.
@@ -45,7 +46,7 @@ L10N = {
 
 
 def _g(x: float, digits: int = 6) -> str:
-    return f"{0.0 if abs(x) < 1e-13 else x:.{digits}g}"
+    return _number(x, digits, zero=1e-13, nonfinite="show")
 
 
 def time_domain_lines(td: dict | None, lang: str = "en") -> list[str]:

@@ -10,10 +10,11 @@ import json
 import numpy as np
 
 from flywheel.render.nomenclature import csv_header
+from flywheel.render.numbers import fmt as _number, fmt_rows
 
 
 def _fmt(x: float) -> str:
-    return "%.12g" % (0.0 if x == 0 else x)
+    return _number(x, 12, zero=0.0, nonfinite="show")
 
 
 def table_csv(results) -> str:
@@ -31,9 +32,7 @@ def _rows(data: np.ndarray) -> list[str]:
     """Each row of ``data`` as :func:`_fmt` writes its numbers, joined by commas: one format
     operation per row (half the time of one per number; the in-line four's table has 150
     columns), the same text."""
-    data = np.where(data == 0, 0.0, data)          # −0.0 is written 0, as _fmt does
-    fmt = ",".join(["%.12g"] * data.shape[1])
-    return [fmt % tuple(row) for row in data.tolist()]
+    return fmt_rows(data, 12)
 
 
 def positions_csv(results) -> str:

@@ -8,8 +8,9 @@ from __future__ import annotations
 
 import math
 
-from flywheel.constant_inertia.solve import RPM
 from flywheel.render import nomenclature as nm
+from flywheel.render.numbers import fmt as _number
+from flywheel.units import PA_PER_MPA, RPM_PER_RAD_S
 
 
 def to_dict(r, title: str = "", source: str = "") -> dict:
@@ -25,9 +26,7 @@ def to_json(r, title: str = "", source: str = "") -> str:
 
 
 def _g(x: float | None, fmt: str = ".6g") -> str:
-    if x is None or (isinstance(x, float) and math.isnan(x)):
-        return "—"
-    return format(0.0 if abs(x) < 1e-12 else x, fmt)
+    return _number(x, spec=fmt, zero=1e-12, nonfinite="dash-nan")
 
 
 def _angle(phi: float | None, lang: str = "en") -> str:
@@ -82,10 +81,10 @@ def print_summary(r, title: str = "", source: str = "", console=None, lang: str 
     console.print(t)
 
     def rpm(x: float) -> str:
-        return L("rpm", n=_g(x * RPM))
+        return L("rpm", n=_g(x * RPM_PER_RAD_S))
 
     def rpm_at(x: float, phi: float | None) -> str:
-        return L("rpm_at", n=_g(x * RPM), angle=_angle(phi, lang))
+        return L("rpm_at", n=_g(x * RPM_PER_RAD_S), angle=_angle(phi, lang))
 
     t = Table(title=L("results"))
     for col in (L("quantity"), L("value"), L("unit"), ""):
@@ -115,7 +114,7 @@ def print_summary(r, title: str = "", source: str = "", console=None, lang: str 
                     if d.thickness > 0 else "—"),
                   L("rim_design_dims", D=_g(d.D_mean, ".4g"), t=_g(d.thickness, ".4g"),
                     b=_g(d.width, ".4g"), m=_g(d.mass, ".5g")), "",
-                  L("rim_design_how", v=_g(d.rim_speed, ".4g"), sigma=_g(d.stress / 1e6, ".4g"),
+                  L("rim_design_how", v=_g(d.rim_speed, ".4g"), sigma=_g(d.stress / PA_PER_MPA, ".4g"),
                     src=L("rim_from_stress" if d.speed_from == "allowable stress"
                           else "rim_from_given")))
     if r.driving is None and r.energy_fluctuation_coefficient is not None:
