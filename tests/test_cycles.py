@@ -40,20 +40,20 @@ def one_and_two():
 def test_two_revolutions_of_a_one_revolution_machine(one_and_two):
     one, two = one_and_two
     s1, s2 = one.scalars, two.scalars
-    assert (s1["cycle_deg"], s2["cycle_deg"]) == (360, 720)
+    assert (s1.cycle_deg, s2.cycle_deg) == (360, 720)
     for key in ("driving_moment", "balancing_moment", "delta_T_max", "J_II_mean", "J_II_min",
                 "J_II_max", "J_required", "J_required_exact", "delta_achieved",
                 "delta_achieved_exact", "omega_max", "omega_min", "T0"):
-        assert s2[key] == pytest.approx(s1[key], rel=1e-11, abs=1e-12), key
+        assert getattr(s2, key) == pytest.approx(getattr(s1, key), rel=1e-11, abs=1e-12), key
     for key in ("cycle_work_resistance", "cycle_time"):          # totals over the cycle
-        assert s2[key] == pytest.approx(2 * s1[key], rel=1e-11), key
+        assert getattr(s2, key) == pytest.approx(2 * getattr(s1, key), rel=1e-11), key
     # ω(φ) repeats: the second revolution equals the first
     w1 = one.columns["omega"].values
     w2 = two.columns["omega"].values
     n = w1.size
     assert np.allclose(w2[:n], w1, rtol=1e-11) and np.allclose(w2[n - 1:], w1, rtol=1e-11)
     # extremes over the whole cycle: in the first or the second revolution, same place
-    assert s2["phi_omega_max_deg"] % 360 == pytest.approx(s1["phi_omega_max_deg"], abs=1e-9)
+    assert s2.phi_omega_max_deg % 360 == pytest.approx(s1.phi_omega_max_deg, abs=1e-9)
     assert two.phi[-1] == 4 * math.pi
 
 

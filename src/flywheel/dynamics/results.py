@@ -9,9 +9,11 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
+from functools import cached_property
 
 import numpy as np
 
+from flywheel.dynamics.serialize import to_json
 from flywheel.dynamics.sizing import RimDesign
 from flywheel.linkage.drawing import Drawing
 
@@ -117,13 +119,11 @@ class FlywheelShape:
     D_inner: float | None = None      # inner diameter of a rim [m]
     rim_speed: float | None = None    # peripheral speed at ω_max [m/s] (after the motion)
 
+    DOCUMENT = ("D", "D_inner", "b", "mass", "rim_speed")   # summary.json's flywheel_disk / _rim
+
     def as_dict(self) -> dict:
         """summary.json's flywheel_disk / flywheel_rim."""
-        out = {"D": self.D} if self.D_inner is None else {"D": self.D, "D_inner": self.D_inner}
-        out.update(b=self.b, mass=self.mass)
-        if self.rim_speed is not None:
-            out["rim_speed"] = self.rim_speed
-        return out
+        return to_json(self)
 
 
 @dataclass(frozen=True)
@@ -192,9 +192,11 @@ class TimeDomainResult:
     startup_cycle_means: tuple | None = None   # (t [s], cycle-mean ω [rad/s]) of the start-up
     warnings: tuple[str, ...] = ()
 
+    DOCUMENT = ("verification", "startup", "rundown")      # summary.json's results.time_domain
+
     def as_dict(self) -> dict:
         """summary.json's results.time_domain."""
-        return {"verification": self.verification, "startup": self.startup, "rundown": self.rundown}
+        return to_json(self)
 
 
 @dataclass(frozen=True)
@@ -259,25 +261,24 @@ class ForceResult:
             return {}
         return dict(reversed(self.analysis.slider_crank.items()))
 
+    def summary(self) -> ForceSummary:
+        """summary.json's results.force_analysis, typed."""
+        M = self.M_y
+        fa = self.analysis
+        return ForceSummary(
+            motion=self.motion, omega=float(self.omega[0]) if self.motion == "steady" else None,
+            closure_reference=self.closure_reference,
+            balancing_moment_cycle_mean=self.M_y_cycle_mean,
+            balancing_moment_max=float(np.max(M)), balancing_moment_min=float(np.min(M)),
+            main_bearing_load_max=None if fa is None else float(np.max(fa.main_bearing_load.magnitude)),
+            crank_pin_load_max=None if fa is None else float(np.max(np.hypot(*self.crank_pin_load.T))),
+            shaking_force_max=None if fa is None else float(np.max(np.hypot(*fa.shaking_force.T))),
+            shaking_moment_max=None if fa is None else float(np.max(np.abs(fa.shaking_moment))),
+            note=self.note or None)
+
     def as_dict(self) -> dict:
         """summary.json's results.force_analysis."""
-        M = self.M_y
-        out: dict = {"motion": self.motion}
-        if self.motion == "steady":
-            out["omega"] = float(self.omega[0])
-        out.update(closure_reference=self.closure_reference,
-                   balancing_moment_cycle_mean=self.M_y_cycle_mean,
-                   balancing_moment_max=float(np.max(M)), balancing_moment_min=float(np.min(M)))
-        fa = self.analysis
-        if fa is not None:
-            out.update(
-                main_bearing_load_max=float(np.max(fa.main_bearing_load.magnitude)),
-                crank_pin_load_max=float(np.max(np.hypot(*self.crank_pin_load.T))),
-                shaking_force_max=float(np.max(np.hypot(*fa.shaking_force.T))),
-                shaking_moment_max=float(np.max(np.abs(fa.shaking_moment))))
-        if self.note:
-            out["note"] = self.note
-        return out
+        return to_json(self.summary())
 
     def at_entry(self, i: int) -> dict:
         """What summary.json's results.at[k] gains at grid node i (docs/results.md)."""
@@ -313,6 +314,94 @@ class ForceResult:
         out["shaking_force"] = _vector_entry(float(Sx), float(Sy))
         out["shaking_moment"] = float(fa.shaking_moment[i])
         return out
+
+
+@dataclass(frozen=True, kw_only=True)
+class ForceSummary:
+    """summary.json's results.force_analysis: the force analysis over the cycle (docs/results.md).
+    Moments [N·m], forces [N]; the joint-reaction maxima are None for a tabulated case."""
+
+    motion: str                          # "true" or "steady"
+    omega: float | None = None           # steady motion: the constant ω used [rad/s]
+    closure_reference: str               # "M_D" or "J_I·ε" (ForceResult.closure_reference)
+    balancing_moment_cycle_mean: float   # (1/Φ)∮M_y dφ [N·m]
+    balancing_moment_max: float          # [N·m]
+    balancing_moment_min: float          # [N·m]
+    main_bearing_load_max: float | None = None   # [N]
+    crank_pin_load_max: float | None = None      # [N]
+    shaking_force_max: float | None = None       # [N]
+    shaking_moment_max: float | None = None      # [N·m]
+    note: str | None = None              # why there are no joint reactions (tabulated case)
+
+
+@dataclass(frozen=True, kw_only=True)
+class Headline:
+    """summary.json's "results" without "at": the run's headline scalars, in the document's
+    order (docs/results.md; the keys are the field names). A group that does not apply is None
+    and left out of the document: the tabulated kinematics, the firing angles of four-stroke
+    cylinders, a given flywheel's J and ε extremes, the given power, the time domain, the
+    force analysis. SI units; angles ``*_deg`` in degrees."""
+
+    crank_length: float                          # [m]; NaN (null) if a table gives none
+    kinematics: str | None = None                # "tabulated"
+    tabulated_interpolation: str | None = None   # J_II's interpolation kind
+    tabulated_positions_deg: tuple[float, ...] | None = None   # the table's positions [deg]
+    omega_mean: float                            # ω_m [rad/s]
+    n_points: int                                # grid nodes
+    cycle_deg: int                               # the cycle Φ [deg]: 360, 720
+    firing_deg: dict[str, float] | None = None   # cylinder → where it fires [deg], firing order
+    cycle_work_resistance: float                 # A_C over the cycle [J]
+    driving_moment: float                        # M_D [N·m]
+    balancing_moment: float                      # the constant moment closing the work [N·m]
+    balance: str                                 # "driving" or "resistance"
+    delta: float                                 # δ [-] (given flywheel: the δ it gives)
+    flywheel_given: bool | None = None           # True when the flywheel was given
+    J_flywheel_given: float | None = None        # [kg·m²] on its own shaft
+    epsilon_max: float | None = None             # given flywheel: ε's extremes [rad/s²] …
+    phi_epsilon_max_deg: float | None = None     # … and their first angles [deg]
+    epsilon_min: float | None = None
+    phi_epsilon_min_deg: float | None = None
+    power: float | None = None                   # the given mean power [W]
+    power_moment: float | None = None            # P/ω_m [N·m]
+    power_from_loads: float | None = None        # |balancing_moment|·ω_m [W]
+    delta_T_max: float                           # ΔT_нб [J]
+    delta_T_I_max: float                         # [J]
+    phi_delta_T_I_max_deg: float                 # [deg]
+    delta_T_I_min: float                         # [J]
+    phi_delta_T_I_min_deg: float                 # [deg]
+    J_II_mean: float                             # [kg·m²]
+    J_II_min: float
+    J_II_max: float
+    J_first_group: float
+    J_required: float
+    J_required_exact: float
+    J_flywheel: float
+    J_flywheel_exact: float
+    delta_achieved: float                        # [-]
+    delta_achieved_exact: float
+    omega_max: float                             # [rad/s]
+    phi_omega_max_deg: float                     # [deg]
+    omega_min: float
+    phi_omega_min_deg: float
+    T0: float                                    # [J]
+    cycle_time: float                            # [s]
+    flywheel_disk: FlywheelShape
+    flywheel_rim: FlywheelShape | RimDesign      # RimDesign: the rim of [flywheel.rim]
+    flywheel_material: str
+    flywheel_material_density: float             # [kg/m³]
+    flywheel_speed_ratio: float                  # [-]
+    flywheel_J_on_its_shaft: float               # [kg·m²]
+    flywheel_rim_share: float                    # [-]
+    flywheel_rim_speed_limit: float              # [m/s]
+    flywheel_formulas: str                       # "first-principles" or "course"
+    time_domain: TimeDomainResult | None = None  # --transients
+    balancing_moment_closure: float | None = None   # ForceResult.closure [-]
+    force_analysis: ForceSummary | None = None
+
+    @property
+    def rim_designed(self) -> bool:
+        """The rim is the designed rim of [flywheel.rim] (a RimDesign), not the plain one."""
+        return isinstance(self.flywheel_rim, RimDesign)
 
 
 def warnings_of(*stages) -> tuple[str, ...]:
@@ -399,62 +488,46 @@ class Results:
     def cylinders(self) -> tuple[CylinderResult, ...]:
         return self.loads.cylinders
 
-    @property
-    def scalars(self) -> dict:
-        """summary.json's "results" without "at", by its names, before JSON cleaning (NaN kept)."""
+    @cached_property
+    def scalars(self) -> Headline:
+        """summary.json's "results" without "at", typed (NaN kept), built once."""
         e, r, s, m = self.energy, self.reduction, self.sizing, self.motion
-        out: dict = {"crank_length": self.crank_length}
-        if self.tabulated is not None:
-            out.update(kinematics="tabulated", tabulated_interpolation=self.tabulated.interpolation,
-                       tabulated_positions_deg=list(self.tabulated.positions_deg))
-        out.update({
-            "omega_mean": s.omega_mean,
-            "n_points": int(self.phi.size),
-            "cycle_deg": self.cycle_deg,
-            **self._firing(),
-            "cycle_work_resistance": e.cycle_work_resistance,
-            "driving_moment": e.driving_moment,
-            "balancing_moment": e.balancing_moment,
-            "balance": e.balance,
-            "delta": s.delta,
-            **({"flywheel_given": True, "J_flywheel_given": s.J_flywheel_given,
-                **self._epsilon_extremes()} if s.flywheel_given else {}),
-            **({"power": e.power, "power_moment": e.power_moment,
-                "power_from_loads": e.power_from_loads} if e.power is not None else {}),
-            "delta_T_max": e.delta_T_max,
-            "delta_T_I_max": e.delta_T_I_max, "phi_delta_T_I_max_deg": math.degrees(e.phi_delta_T_I_max),
-            "delta_T_I_min": e.delta_T_I_min, "phi_delta_T_I_min_deg": math.degrees(e.phi_delta_T_I_min),
-            "J_II_mean": r.J_II_mean,
-            "J_II_min": r.J_II_min, "J_II_max": r.J_II_max,
-            "J_first_group": s.J_first_group,
-            "J_required": s.J_required,
-            "J_required_exact": s.J_required_exact,
-            "J_flywheel": s.J_flywheel,
-            "J_flywheel_exact": s.J_flywheel_exact,
-            "delta_achieved": m.delta_achieved,
-            "delta_achieved_exact": m.delta_achieved_exact,
-            "omega_max": m.omega_max, "phi_omega_max_deg": math.degrees(m.phi_omega_max),
-            "omega_min": m.omega_min, "phi_omega_min_deg": math.degrees(m.phi_omega_min),
-            "T0": m.T0,
-            "cycle_time": m.cycle_time,
-            "flywheel_disk": s.disk.as_dict(),
-            "flywheel_rim": (s.rim.as_dict() if s.rim_design is None
-                             else s.rim_design.as_dict()),
-            "flywheel_material": s.material,
-            "flywheel_material_density": s.material_density,
-            "flywheel_speed_ratio": s.speed_ratio,
-            "flywheel_J_on_its_shaft": s.J_on_its_shaft,
-            "flywheel_rim_share": (s.rim_share if s.rim_design is None
-                                   else s.rim_design.share),
-            "flywheel_rim_speed_limit": s.rim_speed_limit,
-            "flywheel_formulas": s.formulas,
-        })
-        if self.time_domain is not None:
-            out["time_domain"] = self.time_domain.as_dict()
-        if self.forces is not None:
-            out["balancing_moment_closure"] = self.forces.closure
-            out["force_analysis"] = self.forces.as_dict()
-        return out
+        tab, fo = self.tabulated, self.forces
+        eps = self._epsilon_extremes() if s.flywheel_given else {}
+        return Headline(
+            crank_length=self.crank_length,
+            kinematics=None if tab is None else "tabulated",
+            tabulated_interpolation=None if tab is None else tab.interpolation,
+            tabulated_positions_deg=None if tab is None else tuple(tab.positions_deg),
+            omega_mean=s.omega_mean, n_points=int(self.phi.size), cycle_deg=self.cycle_deg,
+            firing_deg=self._firing(),
+            cycle_work_resistance=e.cycle_work_resistance, driving_moment=e.driving_moment,
+            balancing_moment=e.balancing_moment, balance=e.balance, delta=s.delta,
+            flywheel_given=True if s.flywheel_given else None,
+            J_flywheel_given=s.J_flywheel_given if s.flywheel_given else None, **eps,
+            power=e.power,
+            power_moment=e.power_moment if e.power is not None else None,
+            power_from_loads=e.power_from_loads if e.power is not None else None,
+            delta_T_max=e.delta_T_max,
+            delta_T_I_max=e.delta_T_I_max, phi_delta_T_I_max_deg=math.degrees(e.phi_delta_T_I_max),
+            delta_T_I_min=e.delta_T_I_min, phi_delta_T_I_min_deg=math.degrees(e.phi_delta_T_I_min),
+            J_II_mean=r.J_II_mean, J_II_min=r.J_II_min, J_II_max=r.J_II_max,
+            J_first_group=s.J_first_group, J_required=s.J_required,
+            J_required_exact=s.J_required_exact, J_flywheel=s.J_flywheel,
+            J_flywheel_exact=s.J_flywheel_exact,
+            delta_achieved=m.delta_achieved, delta_achieved_exact=m.delta_achieved_exact,
+            omega_max=m.omega_max, phi_omega_max_deg=math.degrees(m.phi_omega_max),
+            omega_min=m.omega_min, phi_omega_min_deg=math.degrees(m.phi_omega_min),
+            T0=m.T0, cycle_time=m.cycle_time,
+            flywheel_disk=s.disk,
+            flywheel_rim=s.rim if s.rim_design is None else s.rim_design,
+            flywheel_material=s.material, flywheel_material_density=s.material_density,
+            flywheel_speed_ratio=s.speed_ratio, flywheel_J_on_its_shaft=s.J_on_its_shaft,
+            flywheel_rim_share=s.rim_share if s.rim_design is None else s.rim_design.share,
+            flywheel_rim_speed_limit=s.rim_speed_limit, flywheel_formulas=s.formulas,
+            time_domain=self.time_domain,
+            balancing_moment_closure=None if fo is None else fo.closure,
+            force_analysis=None if fo is None else fo.summary())
 
     def at_document(self) -> list[dict]:
         """summary.json's results.at: the report angles' entries, each with the force
@@ -476,11 +549,11 @@ class Results:
                 "epsilon_min": float(eps[i_min]),
                 "phi_epsilon_min_deg": math.degrees(self.phi[i_min])}
 
-    def _firing(self) -> dict:
-        """{"firing_deg": {cylinder: where it fires [deg]}} of the four-stroke cylinders, in
-        firing order; {} if there are none."""
+    def _firing(self) -> dict[str, float] | None:
+        """{cylinder: where it fires [deg]} of the four-stroke cylinders, in firing order;
+        None if there are none."""
         fires = sorted((c.fires_at, c.name) for c in self.cylinders if c.fires_at is not None)
-        return {"firing_deg": {n: math.degrees(a) for a, n in fires}} if fires else {}
+        return {n: math.degrees(a) for a, n in fires} if fires else None
 
     def to_document(self) -> dict:
         """The summary.json document, JSON-ready (:func:`json_ready`)."""
@@ -488,6 +561,6 @@ class Results:
             "title": self.title,
             "source": self.source,
             "units": UNITS,
-            "results": {**self.scalars, "at": self.at_document()},
+            "results": {**to_json(self.scalars), "at": self.at_document()},
             "warnings": list(self.warnings),
         })

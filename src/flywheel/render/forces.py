@@ -204,7 +204,7 @@ def summary_lines(results, lang: str = "en") -> list[str]:
         lines.append(t["closure"].format(ref=ref, c=f"{f.closure:.2e}", n=n, ok=ok))
     else:
         lines.append(t["closure_J"].format(c=f"{f.closure:.2e}", n=n, ok=ok))
-    lines.append(t["mean"].format(m=_g(f.M_y_cycle_mean, 8), d=_g(s["balancing_moment"], 8)))
+    lines.append(t["mean"].format(m=_g(f.M_y_cycle_mean, 8), d=_g(s.balancing_moment, 8)))
     return lines
 
 

@@ -105,7 +105,7 @@ def print_summary(results, console=None, lang: str = "en") -> None:
 
     def at(key: str) -> str:
         """The value of ``key`` and where (φ) it is."""
-        return f"{_g(s[key])} {t['at']} {s[f'phi_{key}_deg']:.2f}°"
+        return f"{_g(getattr(s, key))} {t['at']} {getattr(s, f'phi_{key}_deg'):.2f}°"
 
     console.print(f"[bold]{results.title}[/bold]" + (f"  ({results.source})" if results.source else ""))
     tab = Table(title=t["title_main"])
@@ -114,48 +114,46 @@ def print_summary(results, console=None, lang: str = "en") -> None:
     tab.add_column(t["unit"])
     for key in ("crank_length", "omega_mean", "cycle_work_resistance", "driving_moment",
                 "J_II_mean", "delta_T_max"):
-        tab.add_row(nm.name(key, lang), _g(s[key]), u(key))
+        tab.add_row(nm.name(key, lang), _g(getattr(s, key)), u(key))
     tab.add_row(f"{nm.symbol('dT_I', lang)} max / min", f"{at('delta_T_I_max')} / {at('delta_T_I_min')}",
                 u("dT_I"))
-    given = s.get("flywheel_given", False)          # a given flywheel: δ is its answer
+    given = bool(s.flywheel_given)          # a given flywheel: δ is its answer
     if given:
-        tab.add_row(nm.name("J_flywheel_given", lang), _g(s["J_flywheel_given"]),
+        tab.add_row(nm.name("J_flywheel_given", lang), _g(s.J_flywheel_given),
                     u("J_flywheel_given"))
     for key in ("J_required", "J_required_exact", "J_first_group", "J_flywheel", "delta",
                 "delta_achieved", "delta_achieved_exact"):
         tab.add_row(nm.name("delta_given" if given and key == "delta" else key, lang),
-                    _g(s[key]), u(key))
-    for key in ("power", "power_moment", "power_from_loads"):
-        if key in s:
-            tab.add_row(nm.name(key, lang), _g(s[key]), u(key))
+                    _g(getattr(s, key)), u(key))
+    if s.power is not None:
+        for key in ("power", "power_moment", "power_from_loads"):
+            tab.add_row(nm.name(key, lang), _g(getattr(s, key)), u(key))
     for key in ("omega_max", "omega_min", *(("epsilon_max", "epsilon_min") if given else ())):
         tab.add_row(nm.name(key, lang), at(key), u(key))
-    if "flywheel_speed_ratio" in s:
-        tab.add_row(t["fw_shaft"].format(i=nm.symbol("flywheel_speed_ratio", lang),
-                                         J=nm.symbol("flywheel_J_on_its_shaft", lang)),
-                    f"{nm.symbol('flywheel_speed_ratio', lang)} = {_g(s['flywheel_speed_ratio'])}, "
-                    f"{_g(s['flywheel_J_on_its_shaft'])}",
-                    u("flywheel_speed_ratio", "flywheel_J_on_its_shaft"))
-    if "flywheel_material" in s:
-        lim = s.get("flywheel_rim_speed_limit")
-        tab.add_row(nm.name("flywheel_material", lang),
-                    f"{nm.material(s['flywheel_material'], lang)}, "
-                    f"{nm.symbol('flywheel_material_density', lang)} = "
-                    f"{_g(s['flywheel_material_density'], 5)}"
-                    + (f"; {nm.name('flywheel_rim_speed_limit', lang)} {_g(lim, 3)}" if lim else ""),
-                    u("flywheel_material_density", *(["flywheel_rim_speed_limit"] if lim else [])))
-    share = s["flywheel_rim_share"]
+    tab.add_row(t["fw_shaft"].format(i=nm.symbol("flywheel_speed_ratio", lang),
+                                     J=nm.symbol("flywheel_J_on_its_shaft", lang)),
+                f"{nm.symbol('flywheel_speed_ratio', lang)} = {_g(s.flywheel_speed_ratio)}, "
+                f"{_g(s.flywheel_J_on_its_shaft)}",
+                u("flywheel_speed_ratio", "flywheel_J_on_its_shaft"))
+    lim = s.flywheel_rim_speed_limit
+    tab.add_row(nm.name("flywheel_material", lang),
+                f"{nm.material(s.flywheel_material, lang)}, "
+                f"{nm.symbol('flywheel_material_density', lang)} = "
+                f"{_g(s.flywheel_material_density, 5)}"
+                + (f"; {nm.name('flywheel_rim_speed_limit', lang)} {_g(lim, 3)}" if lim else ""),
+                u("flywheel_material_density", *(["flywheel_rim_speed_limit"] if lim else [])))
+    share = s.flywheel_rim_share
     if share < 1 - 1e-9:
         tab.add_row(nm.name("flywheel_rim_share", lang), _g(share, 4), u("flywheel_rim_share"))
-    designed = "D_mean" in s["flywheel_rim"]          # [flywheel.rim]: the designed rim
+    designed = s.rim_designed          # [flywheel.rim]: the designed rim
     rim_fields = (("D_mean", "thickness", "width", "mass", "rim_speed", "stress"),
                   (4, 4, 4, 5, 4, 4)) if designed else (("D", "D_inner", "b", "mass"), (4, 4, 4, 5))
     for key, fields, digits in (("flywheel_disk", ("D", "b", "mass"), (4, 4, 5)),
                                 ("flywheel_rim", *rim_fields)):
-        d = s[key]
+        d = getattr(s, key)
         tab.add_row(nm.name("flywheel_rim_design" if key == "flywheel_rim" and designed else key,
                             lang),
-                    ", ".join(f"{nm.symbol(f, lang)} = {_g(d[f], n)}"
+                    ", ".join(f"{nm.symbol(f, lang)} = {_g(getattr(d, f), n)}"
                               for f, n in zip(fields, digits)), u(*fields))
     console.print(tab)
     for a in results.at:
@@ -176,7 +174,7 @@ def print_summary(results, console=None, lang: str = "en") -> None:
             lt.add_row(name, *(_g(lk[k], 5) if k in lk else "—" for k in link_keys))
         console.print(lt)
     print_forces(results, console, lang)            # the force analysis (render/forces.py)
-    for line in time_domain_lines(s.get("time_domain"), lang):
+    for line in time_domain_lines(s.time_domain and s.time_domain.as_dict(), lang):
         console.print(line, markup=False)
     for w in results.warnings:
         console.print(f"[yellow]{t['warning']}:[/yellow] {escape(nm.message(w, lang))}")
