@@ -203,7 +203,7 @@ def test_technological_force_and_couple():
     F = r.columns["F_punch"].values
     assert F.max() == 1000.0 and F.min() == 0.0
     # at 120° the slider moves away, past half its travel: the punch acts, and summary.json says so
-    assert r.at[0]["phi_deg"] == 120.0 and r.at[0]["forces"] == {"punch": 1000.0}
+    assert r.at[0].phi_deg == 120.0 and r.at[0].forces == {"punch": 1000.0}
 
 
 def test_python_dash_m(tmp_path):

@@ -72,9 +72,9 @@ def test_standard_positions_and_dead_centres_over_the_cycle(one_and_two):
 def test_report_angles_beyond_one_revolution():
     r = analyze(_compressor(720), n_points=7200, at_deg=[120.0, 480.0, 840.0])
     a120, a480, a840 = r.at
-    assert a480["phi_deg"] == 480.0
-    assert a480["omega"] == pytest.approx(a120["omega"], rel=1e-11)   # loads repeat each turn
-    assert a840["omega"] == a120["omega"]                              # 840° = 120° of the cycle
+    assert a480.phi_deg == 480.0
+    assert a480.omega == pytest.approx(a120.omega, rel=1e-11)   # loads repeat each turn
+    assert a840.omega == a120.omega                              # 840° = 120° of the cycle
     i = r.index_of(math.radians(480.0))
     assert r.phi[i] == pytest.approx(math.radians(480.0), abs=1e-12)
 

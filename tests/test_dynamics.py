@@ -54,11 +54,11 @@ def test_link_lengths_and_mean_speed(printed):
 
 def test_forces_and_their_moments_at_120_deg(printed):
     a = printed.at[0]
-    assert a["phi_deg"] == 120.0
-    assert a["forces"]["HP"] == pytest.approx(2993, abs=0.5)         # seed: F_B(f) = 2.993·10³
-    assert a["forces"]["LP"] == pytest.approx(3957, abs=0.5)         # seed: F_C(f) = 3.957·10³
-    assert a["moments"]["gas HP"] == pytest.approx(225.981, abs=5e-4)  # seed: M_PRFB(f) = 225.981
-    assert a["moments"]["gas LP"] == pytest.approx(241.04, abs=5e-3)   # seed: M_PRFC(f) = 241.04
+    assert a.phi_deg == 120.0
+    assert a.forces["HP"] == pytest.approx(2993, abs=0.5)         # seed: F_B(f) = 2.993·10³
+    assert a.forces["LP"] == pytest.approx(3957, abs=0.5)         # seed: F_C(f) = 3.957·10³
+    assert a.moments["gas HP"] == pytest.approx(225.981, abs=5e-4)  # seed: M_PRFB(f) = 225.981
+    assert a.moments["gas LP"] == pytest.approx(241.04, abs=5e-3)   # seed: M_PRFC(f) = 241.04
 
 
 def test_linear_interpolation_would_not_give_the_seeds_force():
@@ -71,7 +71,7 @@ def test_linear_interpolation_would_not_give_the_seeds_force():
     for cy in data["cylinders"]:
         cy["interpolation"] = "linear"
     r = analyze(parse_case(data), n_points=720)
-    assert r.at[0]["forces"]["LP"] == pytest.approx(4120.2, abs=0.05)
+    assert r.at[0].forces["LP"] == pytest.approx(4120.2, abs=0.05)
 
 
 def test_cycle_work_and_driving_moment_with_the_worksheet_column(worksheet):
@@ -175,7 +175,7 @@ def test_gravity_moments_seed_formula_and_the_correct_one(printed):
     P, phi = printed.kinematics.points, printed.phi
     for point, mass, seed in (("S2", 0.8, 0.089), ("S4", 0.8, -0.124), ("B", 0.6, 0.222), ("C", 1.0, -0.517)):
         assert mass * G * _seed_projection(P[point].v_q, phi)[i] == pytest.approx(seed, abs=5e-4)
-    ours = printed.at[0]["moments"]
+    ours = printed.at[0].moments
     assert ours["gravity 2"] == pytest.approx(0.8 * -G * P["S2"].v_q[i, 1], rel=1e-12)
     assert ours["gravity 5"] == 0.0                      # piston 5 moves horizontally
     assert max(abs(v) for k, v in ours.items() if k.startswith("gravity")) < 1
@@ -264,12 +264,12 @@ def test_what_follows_from_the_seeds_J_PRI(worksheet):
     assert (rim["D"], rim["mass"]) == (pytest.approx(0.5330, abs=5e-5), pytest.approx(66.745, abs=5e-4))
     # at 120°: seed ω1 = −62.732, ε = 152.592 (defect 8); program −62.9015, 140.04 from the
     # energy equation with the sized flywheel
-    assert a["phi_deg"] == 120.0
-    assert a["links"]["1"]["omega"] == pytest.approx(-62.9015, abs=5e-4)
-    assert a["epsilon"] == pytest.approx(140.04, abs=5e-3)
+    assert a.phi_deg == 120.0
+    assert a.links["1"].omega == pytest.approx(-62.9015, abs=5e-4)
+    assert a.epsilon == pytest.approx(140.04, abs=5e-3)
     # the rods: seed ω2 = −8.032, ω4 = 13.689; program −8.0537, 13.7262 (only ω differs)
-    assert a["links"]["2"]["omega"] == pytest.approx(-8.0537, abs=5e-4)
-    assert a["links"]["4"]["omega"] == pytest.approx(13.7262, abs=5e-4)
+    assert a.links["2"].omega == pytest.approx(-8.0537, abs=5e-4)
+    assert a.links["4"].omega == pytest.approx(13.7262, abs=5e-4)
 
 
 def test_seed_flywheel_gives_more_than_its_delta(fine_worksheet):

@@ -8,7 +8,7 @@ are on the run's closed φ grid (``Results.phi``).
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from functools import cached_property
 
 import numpy as np
@@ -212,9 +212,140 @@ class TabulatedResult:
     M_dyn: np.ndarray                 # dynamic moment Мдин = ω_m²/2·dJ_II/dφ [N·m]
 
 
-def _vector_entry(x: float, y: float) -> dict:
-    """{"F": |F|, "Fx", "Fy", "angle_deg"} of a force [N] (angle from +x, ccw, in (−180°, 180°])."""
-    return {"F": math.hypot(x, y), "Fx": x, "Fy": y, "angle_deg": math.degrees(math.atan2(y, x))}
+@dataclass(frozen=True, kw_only=True)
+class PointAt:
+    """A point at a report angle (summary.json's results.at[k].points): position [m], the
+    analogues |v_q| [m/rad] and |a_q| [m/rad²], the true speed [m/s] and acceleration [m/s²] and
+    their components. A tabulated case gives only v_q and v (the rest None, left out)."""
+
+    x: float | None = None
+    y: float | None = None
+    v_q: float
+    a_q: float | None = None
+    v: float
+    a: float | None = None
+    v_x: float | None = None
+    v_y: float | None = None
+    a_x: float | None = None
+    a_y: float | None = None
+
+
+@dataclass(frozen=True, kw_only=True)
+class LinkAt:
+    """A link at a report angle: the analogues ω_q [-], ε_q [1/rad] and the true ω [rad/s],
+    ε [rad/s²]. A tabulated case gives only omega_q and omega."""
+
+    omega_q: float
+    epsilon_q: float | None = None
+    omega: float
+    epsilon: float | None = None
+
+
+@dataclass(frozen=True)
+class VectorAt:
+    """A force at a report angle: magnitude |F| [N], components [N], its angle from +x,
+    counter-clockwise, in (−180°, 180°] [deg]."""
+
+    F: float
+    Fx: float
+    Fy: float
+    angle_deg: float
+
+    @classmethod
+    def of(cls, x: float, y: float) -> VectorAt:
+        """The force (x, y) [N]."""
+        return cls(math.hypot(x, y), x, y, math.degrees(math.atan2(y, x)))
+
+
+@dataclass(frozen=True, kw_only=True)
+class JointAt:
+    """A joint reaction at a report angle (docs/forces.md): at ``point``, of link ``by`` on
+    link ``on``; for a sliding pair also the normal force [N] and its offset along the guide [m]."""
+
+    point: str
+    by: str
+    on: str
+    F: float
+    Fx: float
+    Fy: float
+    angle_deg: float
+    normal: float | None = None
+    offset: float | None = None
+
+
+@dataclass(frozen=True, kw_only=True)
+class CrankPinAt:
+    """The links' force on the crank pin [N] with its parts along the pin's velocity
+    (tangential, positive drives) and along the crank towards the shaft (radial)."""
+
+    F: float
+    Fx: float
+    Fy: float
+    angle_deg: float
+    tangential: float
+    radial: float
+
+
+@dataclass(frozen=True, kw_only=True)
+class SliderCrankAt:
+    """The slider-crank quantities of one slider at a report angle [N; N·m] (forces.SliderCrank)."""
+
+    rod: str
+    piston_effort: float
+    side_thrust: float
+    rod_thrust: float
+    crank_pin_x: float
+    crank_pin_y: float
+    crank_pin_tangential: float
+    crank_pin_radial: float
+    turning_moment: float
+
+
+@dataclass(frozen=True, kw_only=True)
+class BalancingMomentAt:
+    """M_y at a report angle [N·m]: kinetostatic, by Zhukovsky's lever, by the power balance
+    (a tabulated case: the power balance only)."""
+
+    kinetostatic: float | None = None
+    zhukovsky: float | None = None
+    power: float
+
+
+@dataclass(frozen=True, kw_only=True)
+class AtAngle:
+    """One report angle (summary.json's results.at[k], docs/results.md): the crank's ω [rad/s]
+    and ε [rad/s²], J_II [kg·m²] and dJ_II/dφ, M_Σ and each load's reduced moment [N·m]
+    (by load name), the given forces [N], every point and link; a tabulated case adds the
+    seed's M_st and M_dyn and has no forces. With a force analysis: M_y three ways, the joint
+    reactions from the crank outwards, the slider-crank quantities, the main bearing's and the
+    crank pin's loads, the shaking force and moment."""
+
+    phi_deg: float
+    omega: float
+    epsilon: float
+    J_II: float
+    dJ_II: float
+    M_sum: float
+    M_st: float | None = None
+    M_dyn: float | None = None
+    moments: dict[str, float]
+    forces: dict[str, float] | None = None
+    points: dict[str, PointAt]
+    links: dict[str, LinkAt]
+    balancing_moment: BalancingMomentAt | None = None
+    joints: dict[str, JointAt] | None = None
+    slider_crank: dict[str, SliderCrankAt] | None = None
+    main_bearing_load: VectorAt | None = None
+    crank_pin_load: CrankPinAt | None = None
+    shaking_force: VectorAt | None = None
+    shaking_moment: float | None = None
+
+
+def with_forces(at: tuple[AtAngle, ...], forces: ForceResult, phi: np.ndarray) -> tuple[AtAngle, ...]:
+    """The report angles ``at`` with the force analysis at each one's node of the grid ``phi``."""
+    cycle = float(phi[-1] - phi[0])
+    return tuple(replace(a, **forces.at_entry(
+        int(np.argmin(np.abs(phi - math.radians(a.phi_deg) % cycle))))) for a in at)
 
 
 @dataclass(frozen=True)
@@ -281,37 +412,39 @@ class ForceResult:
         return to_json(self.summary())
 
     def at_entry(self, i: int) -> dict:
-        """What summary.json's results.at[k] gains at grid node i (docs/results.md)."""
+        """What a report angle (:class:`AtAngle`) gains at grid node i: its force-analysis
+        fields, by name (docs/results.md)."""
         fa = self.analysis
         if fa is None:
-            return {"balancing_moment": {"power": float(self.M_y_power[i])}}
-        out: dict = {"balancing_moment": {"kinetostatic": float(fa.balancing_moment[i]),
-                                          "zhukovsky": float(self.M_y_zhukovsky[i]),
-                                          "power": float(self.M_y_power[i])}}
+            return {"balancing_moment": BalancingMomentAt(power=float(self.M_y_power[i]))}
+        out: dict = {"balancing_moment": BalancingMomentAt(
+            kinetostatic=float(fa.balancing_moment[i]), zhukovsky=float(self.M_y_zhukovsky[i]),
+            power=float(self.M_y_power[i]))}
         joints = {}
         for key, r in self.joints.items():
-            e = {"point": r.joint, "by": r.by, "on": r.on, **_vector_entry(float(r.x[i]), float(r.y[i]))}
-            s = fa.slides.get(key)
-            if s is not None:
-                e.update(normal=float(s.normal[i]), offset=float(s.offset[i]))
-            joints[key] = e
+            v = VectorAt.of(float(r.x[i]), float(r.y[i]))
+            sl = fa.slides.get(key)
+            joints[key] = JointAt(point=r.joint, by=r.by, on=r.on, F=v.F, Fx=v.Fx, Fy=v.Fy,
+                                  angle_deg=v.angle_deg,
+                                  normal=None if sl is None else float(sl.normal[i]),
+                                  offset=None if sl is None else float(sl.offset[i]))
         out["joints"] = joints
         if fa.slider_crank:
-            out["slider_crank"] = {name: {
-                "rod": sc.rod, "piston_effort": float(sc.piston_effort[i]),
-                "side_thrust": float(sc.side_thrust[i]), "rod_thrust": float(sc.rod_thrust[i]),
-                "crank_pin_x": float(sc.crank_pin_x[i]), "crank_pin_y": float(sc.crank_pin_y[i]),
-                "crank_pin_tangential": float(sc.crank_pin_tangential[i]),
-                "crank_pin_radial": float(sc.crank_pin_radial[i]),
-                "turning_moment": float(sc.turning_moment[i])} for name, sc in self.slider_crank.items()}
+            out["slider_crank"] = {name: SliderCrankAt(
+                rod=sc.rod, piston_effort=float(sc.piston_effort[i]),
+                side_thrust=float(sc.side_thrust[i]), rod_thrust=float(sc.rod_thrust[i]),
+                crank_pin_x=float(sc.crank_pin_x[i]), crank_pin_y=float(sc.crank_pin_y[i]),
+                crank_pin_tangential=float(sc.crank_pin_tangential[i]),
+                crank_pin_radial=float(sc.crank_pin_radial[i]),
+                turning_moment=float(sc.turning_moment[i])) for name, sc in self.slider_crank.items()}
         mb = fa.main_bearing_load
-        out["main_bearing_load"] = _vector_entry(float(mb.x[i]), float(mb.y[i]))
-        P = self.crank_pin_load[i]
-        out["crank_pin_load"] = {**_vector_entry(float(P[0]), float(P[1])),
-                                 "tangential": float(self.crank_pin_tangential[i]),
-                                 "radial": float(self.crank_pin_radial[i])}
+        out["main_bearing_load"] = VectorAt.of(float(mb.x[i]), float(mb.y[i]))
+        P = VectorAt.of(float(self.crank_pin_load[i][0]), float(self.crank_pin_load[i][1]))
+        out["crank_pin_load"] = CrankPinAt(F=P.F, Fx=P.Fx, Fy=P.Fy, angle_deg=P.angle_deg,
+                                           tangential=float(self.crank_pin_tangential[i]),
+                                           radial=float(self.crank_pin_radial[i]))
         Sx, Sy = fa.shaking_force[i]
-        out["shaking_force"] = _vector_entry(float(Sx), float(Sy))
+        out["shaking_force"] = VectorAt.of(float(Sx), float(Sy))
         out["shaking_moment"] = float(fa.shaking_moment[i])
         return out
 
@@ -437,7 +570,7 @@ class Results:
     sizing: SizingResult
     motion: MotionResult
     columns: dict[str, Column]               # table.csv, in order
-    at: tuple[dict, ...]                     # summary.json "results.at" (JSON-ready)
+    at: tuple[AtAngle, ...]                  # summary.json "results.at", with the force analysis
     position_angles: tuple[tuple[str, float], ...]   # (label, φ [rad]) of the standard positions
     links_drawn: tuple[tuple[str, tuple[str, ...]], ...]  # (link, its points) for the scheme
     crank_length: float                      # [m]; NaN if a table gives none
@@ -530,11 +663,8 @@ class Results:
             force_analysis=None if fo is None else fo.summary())
 
     def at_document(self) -> list[dict]:
-        """summary.json's results.at: the report angles' entries, each with the force
-        analysis at its node (ForceResult.at_entry) when there is one."""
-        if self.forces is None:
-            return list(self.at)
-        return [{**a, **self.forces.at_entry(self.at_index(a["phi_deg"]))} for a in self.at]
+        """summary.json's results.at: the report angles' entries."""
+        return to_json(self.at)
 
     def at_index(self, phi_deg: float) -> int:
         """Grid index of the report angle ``phi_deg`` [deg] (a node, taken mod the cycle)."""

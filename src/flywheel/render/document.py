@@ -409,15 +409,15 @@ def build_document(results, lang: str = "en", plots: list[str] | None = None,
                   r"\omega_{i} = \omega_{qi} \omega, \varepsilon_{i} = \varepsilon_{qi} \omega^{2} + \omega_{qi} \varepsilon"))
     point_keys, link_keys = ("v_q", "v", "a_q", "a"), ("omega_q", "omega", "epsilon_q", "epsilon")
     for k, a in enumerate(results.at, 1):
-        b.add(Heading(3, f"6.{k}. φ = {g(a['phi_deg'], 6)}°"))
-        b.add(Paragraph(t["at"].format(w=g(a["omega"], 6), uw=u("omega"), e=g(a["epsilon"], 6),
+        b.add(Heading(3, f"6.{k}. φ = {g(a.phi_deg, 6)}°"))
+        b.add(Paragraph(t["at"].format(w=g(a.omega, 6), uw=u("omega"), e=g(a.epsilon, 6),
                                        ue=u("epsilon"))))
-        if a.get("points"):
-            b.table(t["points_caption"].format(a=g(a["phi_deg"], 6)), [t["point"], *(h(x) for x in point_keys)],
-                    [[n] + [g(p.get(x), 5) for x in point_keys] for n, p in a["points"].items()])
-        if a.get("links"):
-            b.table(t["links_caption"].format(a=g(a["phi_deg"], 6)), [t["link"], *(h(x) for x in link_keys)],
-                    [[n] + [g(lk.get(x), 5) for x in link_keys] for n, lk in a["links"].items()])
+        if a.points:
+            b.table(t["points_caption"].format(a=g(a.phi_deg, 6)), [t["point"], *(h(x) for x in point_keys)],
+                    [[n] + [g(getattr(p, x), 5) for x in point_keys] for n, p in a.points.items()])
+        if a.links:
+            b.table(t["links_caption"].format(a=g(a.phi_deg, 6)), [t["link"], *(h(x) for x in link_keys)],
+                    [[n] + [g(getattr(lk, x), 5) for x in link_keys] for n, lk in a.links.items()])
     b.figures_of("motion")
 
     td = s.time_domain and s.time_domain.as_dict()

@@ -214,11 +214,11 @@ def _moment_rows(results) -> list[list[str]]:
     f = results.forces
     rows = []
     for a in results.at:
-        i = results.at_index(a["phi_deg"])
+        i = results.at_index(a.phi_deg)
         if f.analysis is None:
-            rows.append([_g(a["phi_deg"], 6), _g(float(f.M_y_power[i]), 8)])
+            rows.append([_g(a.phi_deg, 6), _g(float(f.M_y_power[i]), 8)])
         else:
-            rows.append([_g(a["phi_deg"], 6), _g(float(f.analysis.balancing_moment[i]), 8),
+            rows.append([_g(a.phi_deg, 6), _g(float(f.analysis.balancing_moment[i]), 8),
                          _g(float(f.M_y_zhukovsky[i]), 8), _g(float(f.M_y_power[i]), 8)])
     return rows
 
@@ -248,9 +248,9 @@ def print_forces(results, console, lang: str = "en") -> None:
     if f.analysis is None:
         return
     for a in results.at:
-        i = results.at_index(a["phi_deg"])
+        i = results.at_index(a.phi_deg)
         if f.slider_crank:
-            st = Table(title=t["sc"].format(a=_g(a["phi_deg"], 6)))
+            st = Table(title=t["sc"].format(a=_g(a.phi_deg, 6)))
             st.add_column(t["slider"], justify="right")
             for q in SLIDER_CRANK:
                 st.add_column(_h(symbol(q, lang), unit_of(q, lang), lang), justify="right")
@@ -315,19 +315,19 @@ def add_report_section(b, results, lang: str = "en") -> None:
     table(t["moments"], [deg, t["kin"], t["zhuk"], t["power"]], _moment_rows(results))
     N = unit("N", lang)
     for a in results.at:
-        i = results.at_index(a["phi_deg"])
-        b.add(Heading(3, t["at"].format(a=_g(a["phi_deg"], 6)).strip()))
+        i = results.at_index(a.phi_deg)
+        b.add(Heading(3, t["at"].format(a=_g(a.phi_deg, 6)).strip()))
         rows = [[k, r.joint, r.by, r.on, _g(float(r.x[i]), 6), _g(float(r.y[i]), 6),
                  _g(float(r.magnitude[i]), 6), _g(math.degrees(float(r.angle[i])), 5)]
                 for k, r in f.joints.items()]
-        table(t["joints"].format(a=_g(a["phi_deg"], 6)),
+        table(t["joints"].format(a=_g(a.phi_deg, 6)),
               [t["joint"], t["point"], t["by"], t["on"], _h("R_x", N, lang), _h("R_y", N, lang),
                _h("R", N, lang), _h(t["angle"], unit("deg", lang), lang)], rows)
         if f.slider_crank:
             head = [t["slider"]] + [_h(symbol(q, lang), unit_of(q, lang), lang) for q in SLIDER_CRANK]
             rows = [[s] + [_g(float(getattr(sc, q)[i]), 6) for q in SLIDER_CRANK]
                     for s, sc in f.slider_crank.items()]
-            table(f"{t['sc'].format(a=_g(a['phi_deg'], 6))}: "
+            table(f"{t['sc'].format(a=_g(a.phi_deg, 6))}: "
                   + "; ".join(f"{symbol(q, lang)} — {name(q, lang)}" for q in SLIDER_CRANK),
                   head, rows)
         P, S = f.crank_pin_load[i], fa.shaking_force[i]

@@ -252,9 +252,9 @@ def figure_piston_forces(results, lang: str = "en"):
             line, = ax.plot(deg, c.F, color=f"C{k}",
                             label=_t(lang, "F_gas", p=c.piston, c=c.name))
             for a in results.at:
-                i = results.index_of(math.radians(a["phi_deg"]) % results.cycle)
+                i = results.index_of(math.radians(a.phi_deg) % results.cycle)
                 ax.plot(deg[i], c.F[i], "o", color=line.get_color(),
-                        label=_t(lang, "F_at", c=c.name, a=a["phi_deg"], v=float(c.F[i]),
+                        label=_t(lang, "F_at", c=c.name, a=a.phi_deg, v=float(c.F[i]),
                                  u=nm.unit_of(f"F_{c.name}", lang)))
         for key, col in results.columns.items():
             if key.startswith("F_") and key not in names:
@@ -529,7 +529,7 @@ def figure_scheme(results, lang: str = "en"):
     links, joints, fixed pivots, sliders on their guides, named points, and the trajectories
     of all moving points over the cycle."""
     def build():
-        angles = [float(a["phi_deg"]) for a in results.at] or [0.0]
+        angles = [float(a.phi_deg) for a in results.at] or [0.0]
         n = len(angles)
         ncols = min(n, 2)
         nrows = math.ceil(n / ncols)

@@ -157,21 +157,21 @@ def print_summary(results, console=None, lang: str = "en") -> None:
                               for f, n in zip(fields, digits)), u(*fields))
     console.print(tab)
     for a in results.at:
-        pt = Table(title=t["title_at"].format(phi=_g(a["phi_deg"]), w=_g(a["omega"]), e=_g(a["epsilon"]),
+        pt = Table(title=t["title_at"].format(phi=_g(a.phi_deg), w=_g(a.omega), e=_g(a.epsilon),
                                               uw=nm.unit_of("omega", lang),
                                               ue=nm.unit_of("epsilon", lang)))
         point_keys = ("x", "y", "v_q", "a_q", "v", "a")
         for col in (t["point"], *(nm.heading(k, lang) for k in point_keys)):
             pt.add_column(escape(col), justify="right")
-        for name, p in a["points"].items():
-            pt.add_row(name, *(_g(p[k], 5) if k in p else "—" for k in point_keys))
+        for name, p in a.points.items():
+            pt.add_row(name, *(_g(getattr(p, k), 5) if getattr(p, k) is not None else "—" for k in point_keys))
         console.print(pt)
         lt = Table()
         link_keys = ("omega_q", "epsilon_q", "omega", "epsilon")
         for col in (t["link"], *(nm.heading(k, lang) for k in link_keys)):
             lt.add_column(escape(col), justify="right")
-        for name, lk in a["links"].items():
-            lt.add_row(name, *(_g(lk[k], 5) if k in lk else "—" for k in link_keys))
+        for name, lk in a.links.items():
+            lt.add_row(name, *(_g(getattr(lk, k), 5) if getattr(lk, k) is not None else "—" for k in link_keys))
         console.print(lt)
     print_forces(results, console, lang)            # the force analysis (render/forces.py)
     for line in time_domain_lines(s.time_domain and s.time_domain.as_dict(), lang):
