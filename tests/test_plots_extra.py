@@ -101,8 +101,8 @@ def test_transients_plot_marks_the_steady_state(results):
     try:
         (ax,) = fig.axes
         labels = " ".join(x.get_text() for x in ax.get_legend().get_texts())
-        assert rf"$\omega_s$ = {st['omega_final_predicted']:.5g}" in labels
-        assert f"{st['time_to_steady']:.4g}" in labels
+        assert rf"$\omega_s$ = {st.omega_final_predicted:.5g}" in labels
+        assert f"{st.time_to_steady:.4g}" in labels
     finally:
         plots_extra._plt().close(fig)
 

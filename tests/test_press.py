@@ -327,7 +327,7 @@ def test_check_prints_the_table():
 
 def test_transients_run(press):
     r = analyze(press, n_points=720, transients=True)
-    assert r.scalars.time_domain.verification["max_deviation"] < 1e-3
+    assert r.scalars.time_domain.verification.max_deviation < 1e-3
 
 
 # -- bad input: one line, exit 2 ----------------------------------------------------------------

@@ -180,14 +180,96 @@ class MotionResult:
     warnings: tuple[str, ...] = ()
 
 
+@dataclass(frozen=True, kw_only=True)
+class Verification:
+    """The steady motion integrated in time (timedomain.verify_steady): over ``cycles`` cycles,
+    the relative repeat error of the cycle start speeds [-], the largest relative deviation
+    from ω(φ) [-], and the period [s]."""
+
+    cycles: int
+    repeat_error: float
+    max_deviation: float
+    period: float
+
+
+@dataclass(frozen=True, kw_only=True)
+class StartupNotComputed:
+    """No start-up: the case has no [motor] (``reason`` says why)."""
+
+    computed: bool = False
+    reason: str
+
+
+@dataclass(frozen=True, kw_only=True)
+class StartupStalled:
+    """The motor cannot start the machine: it stops at ``stall_angle_deg`` [deg] after
+    ``time`` [s] (timedomain.startup); the motor line's M_п [N·m] and ω_x [rad/s]."""
+
+    stalled: bool = True
+    converged: bool = False
+    stall_angle_deg: float
+    time: float
+    omega_final_predicted: float | None      # the motor line's steady speed [rad/s]
+    time_constant: float | None              # τ = J̄/(M_п/ω_x) [s]
+    warning: str
+    starting_torque: float
+    no_load_speed: float
+
+    KEEP_NONE = ("omega_final_predicted", "time_constant")
+
+    @property
+    def computed(self) -> bool:
+        return True
+
+
+@dataclass(frozen=True, kw_only=True)
+class StartupRun:
+    """The start-up from rest (timedomain.startup): the cycles run and their time [s], the last
+    cycle-mean speed [rad/s]; converged: when [s] and after how many cycles the cycle means
+    enter the band ±δ/10 for good and their limit [rad/s] (None when not converged, then
+    ``warning`` says how far it got); the motor line's M_п [N·m] and ω_x [rad/s]."""
+
+    stalled: bool = False
+    converged: bool
+    omega_final_predicted: float | None
+    time_constant: float | None
+    omega_mean_last: float
+    cycles_run: int
+    time_run: float
+    time_to_steady: float | None = None
+    cycles_to_steady: int | None = None
+    omega_mean_steady: float | None = None
+    warning: str | None = None
+    starting_torque: float
+    no_load_speed: float
+
+    KEEP_NONE = ("omega_final_predicted", "time_constant", "time_to_steady", "cycles_to_steady",
+                 "omega_mean_steady")
+
+    @property
+    def computed(self) -> bool:
+        return True
+
+
+@dataclass(frozen=True, kw_only=True)
+class Rundown:
+    """The run-down after the drive is cut (timedomain.rundown): time [s] and crank rotation
+    [deg] to standstill; ``reason`` why it never runs down (then ``stopped`` is False)."""
+
+    stopped: bool
+    time: float
+    angle_deg: float
+    reason: str | None = None
+
+
 @dataclass(frozen=True)
 class TimeDomainResult:
-    """--transients: the equation of motion integrated in time (JSON-ready dicts, see
+    """--transients: the equation of motion integrated in time (see
     :mod:`flywheel.dynamics.timedomain`) and the histories for the plots."""
 
-    verification: dict           # of verify_steady: cycles, repeat_error, max_deviation, period [s]
-    startup: dict                # of startup (or why not computed), with the motor's M_п, ω_x
-    rundown: dict                # of rundown: time [s], angle_deg, stopped
+    verification: Verification
+    startup: StartupNotComputed | StartupStalled | StartupRun
+    rundown: Rundown
     histories: dict              # "startup" / "rundown" → (t [s], ω [rad/s])
     startup_cycle_means: tuple | None = None   # (t [s], cycle-mean ω [rad/s]) of the start-up
     warnings: tuple[str, ...] = ()

@@ -420,8 +420,8 @@ def build_document(results, lang: str = "en", plots: list[str] | None = None,
                     [[n] + [g(getattr(lk, x), 5) for x in link_keys] for n, lk in a.links.items()])
     b.figures_of("motion")
 
-    td = s.time_domain and s.time_domain.as_dict()
-    if td:
+    td = s.time_domain
+    if td is not None:
         b.add(Heading(2, t["time"]))
         b.add(Paragraph(t["time_note"]))
         b.add(Bullets(tuple(x[2:] for x in _time_lines(td, s, t, lang))))
@@ -567,35 +567,35 @@ def _structure(b: _Builder, case, t: dict, lang: str) -> None:
     b.add(Formula(rf"W = 3n - 2p_{{5}} - p_{{4}} = 3 \cdot {n} - 2 \cdot {p5} - {p4} = {3 * n - 2 * p5 - p4}"))
 
 
-def _time_lines(td: dict, s, t: dict, lang: str = "en") -> list[str]:
-    """The bullet lines of the "Motion in time" section (--transients)."""
-    v, st, rd = td["verification"], td["startup"], td["rundown"]
+def _time_lines(td, s, t: dict, lang: str = "en") -> list[str]:
+    """The bullet lines of the "Motion in time" section (--transients): ``td`` the
+    TimeDomainResult, ``s`` the headline scalars."""
+    v, st, rd = td.verification, td.startup, td.rundown
     lines = [
-        "- " + t["verify"].format(n=v["cycles"], rep=f"{v['repeat_error']:.1e}", dev=f"{v['max_deviation']:.1e}"),
-        "- " + t["period"].format(T=g(v["period"], 6), Te=g(s.cycle_time, 6)),
+        "- " + t["verify"].format(n=v.cycles, rep=f"{v.repeat_error:.1e}", dev=f"{v.max_deviation:.1e}"),
+        "- " + t["period"].format(T=g(v.period, 6), Te=g(s.cycle_time, 6)),
     ]
-    if st.get("computed") is False:
-        return lines + ["- " + t["st_none"].format(reason=nm.message(st["reason"], lang)),
+    if not st.computed:
+        return lines + ["- " + t["st_none"].format(reason=nm.message(st.reason, lang)),
                         _rundown_line(rd, t, lang)]
-    if "starting_torque" in st:
-        lines.append("- " + t["motor"].format(Mp=g(st["starting_torque"], 5), wx=g(st["no_load_speed"], 5),
-                                              ws=g(st.get("omega_final_predicted"), 6),
-                                              tau=g(st.get("time_constant"), 3)))
-    if st.get("stalled"):
-        lines.append("- " + t["st_stall"].format(a=f"{st['stall_angle_deg']:.1f}"))
-    elif st.get("converged", True) and st.get("time_to_steady") is not None:
-        lines.append("- " + t["st_ok"].format(t=g(st["time_to_steady"], 4), n=st["cycles_to_steady"],
-                                              w=g(st["omega_mean_steady"], 6)))
+    lines.append("- " + t["motor"].format(Mp=g(st.starting_torque, 5), wx=g(st.no_load_speed, 5),
+                                          ws=g(st.omega_final_predicted, 6),
+                                          tau=g(st.time_constant, 3)))
+    if st.stalled:
+        lines.append("- " + t["st_stall"].format(a=f"{st.stall_angle_deg:.1f}"))
+    elif st.converged and st.time_to_steady is not None:
+        lines.append("- " + t["st_ok"].format(t=g(st.time_to_steady, 4), n=st.cycles_to_steady,
+                                              w=g(st.omega_mean_steady, 6)))
     else:
-        lines.append("- " + t["st_no"].format(n=st.get("cycles_run"), t=g(st.get("time_run"), 4),
-                                              w=g(st.get("omega_mean_last"), 6)))
-        if st.get("warning"):
-            lines.append(f"- **{nm.message(st['warning'], lang)}**")
+        lines.append("- " + t["st_no"].format(n=st.cycles_run, t=g(st.time_run, 4),
+                                              w=g(st.omega_mean_last, 6)))
+        if st.warning:
+            lines.append(f"- **{nm.message(st.warning, lang)}**")
     return lines + [_rundown_line(rd, t, lang)]
 
 
-def _rundown_line(rd: dict, t: dict, lang: str = "en") -> str:
-    if rd.get("reason"):                # English: the fixed line; Russian: the reason itself
-        return "- " + t["rd_never"].format(reason=nm.message(rd["reason"], lang))
-    return "- " + t["rd"].format(t=g(rd["time"], 4), rev=f"{rd['angle_deg'] / 360:.2f}") + (
-        "" if rd["stopped"] else t["rd_not"])
+def _rundown_line(rd, t: dict, lang: str = "en") -> str:
+    if rd.reason:                # English: the fixed line; Russian: the reason itself
+        return "- " + t["rd_never"].format(reason=nm.message(rd.reason, lang))
+    return "- " + t["rd"].format(t=g(rd.time, 4), rev=f"{rd.angle_deg / 360:.2f}") + (
+        "" if rd.stopped else t["rd_not"])

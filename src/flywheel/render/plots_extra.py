@@ -237,16 +237,18 @@ def figure_transients(results, lang: str = "en"):
         mids, means = results.time_domain.startup_cycle_means
         if len(means):
             ax.plot(mids, means, ".", color="tab:blue", ms=4, label=_f(t, "means"))
-        ws = st.get("omega_final_predicted")
+        ws = st.omega_final_predicted
         if ws:
             band = results.scalars.delta / 10
             ax.axhspan(ws * (1 - band), ws * (1 + band), color="tab:blue", alpha=0.12,
                        label=_f(t, "band", w=nm.tex("omega_final_predicted", lang), v=ws,
                                 u=nm.unit_of("omega_final_predicted", lang)))
-        if st.get("time_to_steady") is not None:
-            ax.axvline(st["time_to_steady"], color="tab:blue", ls=":", lw=1.0,
-                       label=_f(t, "steady", time=st["time_to_steady"], u=nm.unit_of("t", lang)))
-        elif not st.get("stalled"):
+        if st.stalled:
+            pass
+        elif st.time_to_steady is not None:
+            ax.axvline(st.time_to_steady, color="tab:blue", ls=":", lw=1.0,
+                       label=_f(t, "steady", time=st.time_to_steady, u=nm.unit_of("t", lang)))
+        else:
             ax.plot([], [], " ", label=_f(t, "not_reached"))
     ax.plot(*hist["rundown"], lw=0.8, label=_f(t, "run"))
     ax.set_xlabel(nm.axis("t", lang))

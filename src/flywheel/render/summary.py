@@ -48,13 +48,17 @@ def _g(x: float, digits: int = 6) -> str:
     return f"{0.0 if abs(x) < 1e-13 else x:.{digits}g}"
 
 
-def time_domain_lines(td: dict | None, lang: str = "en") -> list[str]:
-    """The --transients results as lines of text (verification, start-up, run-down).
+def time_domain_lines(td, lang: str = "en") -> list[str]:
+    """The --transients results (a :class:`~flywheel.dynamics.results.TimeDomainResult`, or
+    None) as lines of text (verification, start-up, run-down).
 
-    >>> td = {"verification": {"cycles": 3, "repeat_error": 1e-9, "max_deviation": 2e-9, "period": 0.1},
-    ...       "startup": {"stalled": False, "converged": False, "cycles_run": 2000, "time_run": 150.0,
-    ...                   "omega_mean_last": 60.0, "omega_final_predicted": 62.8},
-    ...       "rundown": {"time": 2.5, "angle_deg": 720.0, "stopped": True}}
+    >>> from flywheel.dynamics.results import Rundown, StartupRun, TimeDomainResult, Verification
+    >>> td = TimeDomainResult(
+    ...     Verification(cycles=3, repeat_error=1e-9, max_deviation=2e-9, period=0.1),
+    ...     StartupRun(converged=False, cycles_run=2000, time_run=150.0, omega_mean_last=60.0,
+    ...                omega_final_predicted=62.8, time_constant=None, starting_torque=100.0,
+    ...                no_load_speed=70.0),
+    ...     Rundown(time=2.5, angle_deg=720.0, stopped=True), histories={})
     >>> print("\\n".join(time_domain_lines(td, "ru")))  # doctest: +NORMALIZE_WHITESPACE
     интегрирование во времени (solve_ivp, циклов: 3): движение повторяется с точностью 1.0e-09,
     совпадает с ω(φ) до 2.0e-09, период 0.1 с
@@ -62,31 +66,31 @@ def time_domain_lines(td: dict | None, lang: str = "en") -> list[str]:
     скорость последнего цикла 60 рад/с, по характеристике двигателя 62.8 рад/с
     выбег после отключения привода: 2.5 с, оборотов: 2.00
     """
-    if not td:
+    if td is None:
         return []
     t = L10N[lang]
-    v = td["verification"]
-    out = [t["td_verify"].format(n=v["cycles"], rep=f"{v['repeat_error']:.1e}",
-                                 dev=f"{v['max_deviation']:.1e}", T=_g(v["period"]))]
-    st = td["startup"]
-    if st.get("computed") is False:
-        out.append(t["st_none"].format(reason=nm.message(st["reason"], lang)))
-    elif st.get("stalled"):
-        out.append(t["st_stall"].format(a=f"{st['stall_angle_deg']:.1f}"))
-    elif st.get("converged", True) and st.get("time_to_steady") is not None:
-        out.append(t["st_ok"].format(t=_g(st["time_to_steady"], 4), n=st["cycles_to_steady"],
-                                     w=_g(st["omega_mean_steady"])))
+    v = td.verification
+    out = [t["td_verify"].format(n=v.cycles, rep=f"{v.repeat_error:.1e}",
+                                 dev=f"{v.max_deviation:.1e}", T=_g(v.period))]
+    st = td.startup
+    if not st.computed:
+        out.append(t["st_none"].format(reason=nm.message(st.reason, lang)))
+    elif st.stalled:
+        out.append(t["st_stall"].format(a=f"{st.stall_angle_deg:.1f}"))
+    elif st.converged and st.time_to_steady is not None:
+        out.append(t["st_ok"].format(t=_g(st.time_to_steady, 4), n=st.cycles_to_steady,
+                                     w=_g(st.omega_mean_steady)))
     else:
-        wp = st.get("omega_final_predicted")
-        out.append(t["st_no"].format(n=st.get("cycles_run"), t=_g(st.get("time_run", 0.0), 4),
-                                     w=_g(st.get("omega_mean_last", 0.0)),
+        wp = st.omega_final_predicted
+        out.append(t["st_no"].format(n=st.cycles_run, t=_g(st.time_run, 4),
+                                     w=_g(st.omega_mean_last),
                                      wp=_g(wp) if wp is not None else "—"))
-    rd = td["rundown"]
-    if rd.get("reason"):                # English: the fixed line; Russian: the reason itself
-        out.append(t["rd_never"].format(reason=nm.message(rd["reason"], lang)))
+    rd = td.rundown
+    if rd.reason:                # English: the fixed line; Russian: the reason itself
+        out.append(t["rd_never"].format(reason=nm.message(rd.reason, lang)))
         return out
-    out.append(t["rd"].format(t=_g(rd["time"], 4), rev=f"{rd['angle_deg'] / 360:.2f}")
-               + ("" if rd["stopped"] else t["rd_not"]))
+    out.append(t["rd"].format(t=_g(rd.time, 4), rev=f"{rd.angle_deg / 360:.2f}")
+               + ("" if rd.stopped else t["rd_not"]))
     return out
 
 
@@ -174,7 +178,7 @@ def print_summary(results, console=None, lang: str = "en") -> None:
             lt.add_row(name, *(_g(getattr(lk, k), 5) if getattr(lk, k) is not None else "—" for k in link_keys))
         console.print(lt)
     print_forces(results, console, lang)            # the force analysis (render/forces.py)
-    for line in time_domain_lines(s.time_domain and s.time_domain.as_dict(), lang):
+    for line in time_domain_lines(s.time_domain, lang):
         console.print(line, markup=False)
     for w in results.warnings:
         console.print(f"[yellow]{t['warning']}:[/yellow] {escape(nm.message(w, lang))}")
