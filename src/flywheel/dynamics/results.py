@@ -13,7 +13,7 @@ from functools import cached_property
 
 import numpy as np
 
-from flywheel.dynamics.serialize import to_json
+from flywheel.dynamics.serialize import json_schema, to_json
 from flywheel.dynamics.sizing import RimDesign
 from flywheel.linkage.drawing import Drawing
 
@@ -776,3 +776,21 @@ class Results:
             "results": {**to_json(self.scalars), "at": self.at_document()},
             "warnings": list(self.warnings),
         })
+
+
+def summary_json_schema() -> dict:
+    """The JSON Schema of summary.json (``flywheel schema --results``), read off the result
+    dataclasses by :func:`flywheel.dynamics.serialize.json_schema`: ``results`` is the
+    :class:`Headline` with ``at``, a list of :class:`AtAngle`. Floats may be null (a
+    non-finite value is written as null)."""
+    results = json_schema(Headline)
+    results["properties"]["at"] = {"type": "array", "items": json_schema(AtAngle)}
+    results["required"].append("at")
+    return {"$schema": "https://json-schema.org/draft/2020-12/schema",
+            "title": "flywheel run: summary.json", "description": UNITS,
+            "type": "object",
+            "properties": {"title": {"type": "string"}, "source": {"type": "string"},
+                           "units": {"type": "string"}, "results": results,
+                           "warnings": {"type": "array", "items": {"type": "string"}}},
+            "required": ["title", "source", "units", "results", "warnings"],
+            "additionalProperties": False}
