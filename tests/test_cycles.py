@@ -59,8 +59,8 @@ def test_two_revolutions_of_a_one_revolution_machine(one_and_two):
 
 def test_standard_positions_and_dead_centres_over_the_cycle(one_and_two):
     one, two = one_and_two
-    labels = [lab for lab, _ in two.position_angles]
-    angles = [round(math.degrees(p), 9) for _, p in two.position_angles]
+    labels = [p.label for p in two.position_angles]
+    angles = [round(math.degrees(p.phi), 9) for p in two.position_angles]
     assert len([lab for lab in labels if lab.endswith("°") or "° =" in lab]) == 24   # every 30°
     assert angles[:3] == [0.0, 30.0, 60.0] and angles[-1] == 690.0
     # each dead centre once per revolution: the compressor's four fall on 30° positions

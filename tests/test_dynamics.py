@@ -518,7 +518,7 @@ def test_switch_angle_nodes_are_solved_alone_yet_equal_a_whole_solve():
     case = load_case(CASES / "slotted_link.toml")
     mech = to_mechanism(case)
     positions, dcs = standard_positions(mech)
-    extra = [p for _, p in positions]
+    extra = [p.phi for p in positions]
     first = closed_grid(720, extra)
     switch = force_switch_angles(case.forces, mech, dcs, first, solve(mech, first))
     phi, kin = linkage_grid(case, mech, dcs, 720, extra)

@@ -246,7 +246,7 @@ def test_dynamic_moment_by_finite_differences(press):
     case = press.model_copy(update={"tabulated": spec})
     r = analyze(case, n_points=720)
     col = r.columns["M_dyn"].values
-    got = [col[r.index_of(phi)] for _, phi in r.position_angles[:12]]
+    got = [col[r.index_of(phi)] for phi in (p.phi for p in r.position_angles[:12])]
     np.testing.assert_allclose(got, mdyn[:12], rtol=1e-9)
 
 
@@ -257,7 +257,7 @@ def test_dynamic_moment_by_periodic_spline(press):
     r = analyze(press, n_points=720)
     mdyn = tabulated.dynamic_moments(press.tabulated, OMEGA1)
     col = r.columns["M_dyn"].values
-    got = np.array([col[r.index_of(phi)] for _, phi in r.position_angles])
+    got = np.array([col[r.index_of(phi)] for phi in (p.phi for p in r.position_angles)])
     np.testing.assert_allclose(got, mdyn, rtol=1e-9, atol=1e-9)
     I = np.array(IPR_EXACT)
     central = OMEGA1**2 / 2 * (np.roll(I, -1) - np.roll(I, 1)) / (math.pi / 3)

@@ -50,7 +50,7 @@ def analyze(case, n_points: int = DEFAULT_POINTS, at_deg: list[float] | None = N
     mech = case.mechanism()
     positions, dcs = standard_positions(mech, case.machine.cycle)
     phi, kin = linkage_grid(case, mech, dcs, n_points,
-                            [p for _, p in positions] + [math.radians(a) for a in at_deg])
+                            [p.phi for p in positions] + [math.radians(a) for a in at_deg])
     ld = linkage_loads(case, mech, dcs, kin)
     red = linkage_reduction(case, kin)
     en, sz, mo = stages.dynamics(phi, ld, red, case.machine, case.flywheel)

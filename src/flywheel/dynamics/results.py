@@ -294,6 +294,45 @@ class TabulatedResult:
     M_dyn: np.ndarray                 # dynamic moment Мдин = ω_m²/2·dJ_II/dφ [N·m]
 
 
+@dataclass(frozen=True)
+class DeadCentre:
+    """A slider's dead centre at a standard position: the slider link and which end of its
+    travel, "outer" or "inner" (flywheel.linkage.deadcentres)."""
+
+    slider: str
+    kind: str
+
+
+@dataclass(frozen=True, kw_only=True)
+class Position:
+    """A standard position of the run (positions.csv, the report's tables, plan_positions.png):
+    the crank angle φ [rad]; the course's number (:func:`flywheel.dynamics.grid.position_number`:
+    0 … 11 every 30°, 0 … 23 over 720°; None off the 30° grid and for a tabulated case); the
+    30° position's angle [deg] it is (None for a dead centre between them); the sliders' dead
+    centres there; a tabulated case's row (1-based) and its angle [deg] instead."""
+
+    phi: float
+    number: int | None = None
+    standard_deg: int | None = None
+    dead_centres: tuple[DeadCentre, ...] = ()
+    table_row: int | None = None
+    table_deg: float | None = None
+
+    def parts(self) -> tuple[str | DeadCentre, ...]:
+        """What the position is, in order: the angle ("90°") or the table's row ("2 (30°)"),
+        then each dead centre; the label joins them with " = "."""
+        head = (() if self.standard_deg is None else (f"{self.standard_deg}°",)) + (
+            () if self.table_row is None else (f"{self.table_row} ({self.table_deg:g}°)",))
+        return head + self.dead_centres
+
+    @property
+    def label(self) -> str:
+        """The English label, positions.csv's ``position``: "90°", "90° = 3 outer d.c.",
+        "5 inner d.c.", a table's "2 (30°)"."""
+        return " = ".join(p if isinstance(p, str) else f"{p.slider} {p.kind} d.c."
+                          for p in self.parts())
+
+
 @dataclass(frozen=True, kw_only=True)
 class PointAt:
     """A point at a report angle (summary.json's results.at[k].points): position [m], the
@@ -653,7 +692,7 @@ class Results:
     motion: MotionResult
     columns: dict[str, Column]               # table.csv, in order
     at: tuple[AtAngle, ...]                  # summary.json "results.at", with the force analysis
-    position_angles: tuple[tuple[str, float], ...]   # (label, φ [rad]) of the standard positions
+    position_angles: tuple[Position, ...]    # the standard positions, by φ
     links_drawn: tuple[tuple[str, tuple[str, ...]], ...]  # (link, its points) for the scheme
     crank_length: float                      # [m]; NaN if a table gives none
     tabulated: TabulatedResult | None = None
@@ -674,14 +713,10 @@ class Results:
         return int(round(math.degrees(self.cycle)))
 
     def position_numbers(self) -> tuple[int | None, ...]:
-        """The course's number of each of ``position_angles`` (:func:`flywheel.dynamics.grid.
-        position_number`: 0 … 11 every 30°, as plan_positions.png numbers them); None for a
-        dead centre between them and for every position of a tabulated case (no drawing)."""
-        from flywheel.dynamics.grid import position_number
-
-        if self.kinematics is None:
-            return (None,) * len(self.position_angles)
-        return tuple(position_number(phi) for _, phi in self.position_angles)
+        """The course's number of each of ``position_angles`` (Position.number: 0 … 11 every
+        30°, as plan_positions.png numbers them); None for a dead centre between them and for
+        every position of a tabulated case (no drawing)."""
+        return tuple(p.number for p in self.position_angles)
 
     def index_of(self, phi: float) -> int:
         """Grid index of the node at angle ``phi`` [rad] (report angles are grid nodes)."""

@@ -35,7 +35,7 @@ from flywheel.dynamics.columns import tabulated_columns
 from flywheel.dynamics.grid import DEFAULT_POINTS, closed_grid, grid_options, report_index
 from flywheel.dynamics.periodic import periodic_linear
 from flywheel.dynamics.results import (AtAngle, EnergyResult, LinkAt, LoadsResult, MotionResult,
-                                       PointAt, ReductionResult, Results, TabulatedResult,
+                                       PointAt, Position, ReductionResult, Results, TabulatedResult,
                                        warnings_of, with_forces)
 from flywheel.errors import Notice
 
@@ -188,8 +188,9 @@ def analyze_tabulated(case, n_points: int = DEFAULT_POINTS, at_deg: list[float] 
     return Results(
         title=case.title, source=case.source, phi=phi, kinematics=None, loads=ld, reduction=red,
         energy=en, sizing=sz, motion=mo, columns=tabulated_columns(phi, tab, ld, red, en, mo),
-        at=with_forces(at, fo, phi), position_angles=tuple((f"{k + 1} ({p:g}°)", math.radians(p))
-                                     for k, p in enumerate(spec.positions_deg)),
+        at=with_forces(at, fo, phi), position_angles=tuple(
+            Position(phi=math.radians(p), table_row=k + 1, table_deg=p)
+            for k, p in enumerate(spec.positions_deg)),
         links_drawn=(), crank_length=float(spec.crank_length) if spec.crank_length else float("nan"),
         tabulated=tab, time_domain=td, forces=fo,
         warnings=tuple(case.plausibility_warnings()) + warnings_of(red, ld, en, sz, mo, fo, td))

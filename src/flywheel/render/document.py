@@ -330,13 +330,12 @@ def build_document(results, lang: str = "en", plots: list[str] | None = None,
     # 2. kinematics ---------------------------------------------------------------------------
     # each position's label, then its number as plan_positions.png draws it (a tabulated
     # case's table has no drawing: no number column)
-    nums = results.position_numbers()
-    numbered = any(k is not None for k in nums)
+    numbered = any(p.number is not None for p in results.position_angles)
     pos = [t["pos"], t["no"]] if numbered else [t["pos"]]
-    idx = [([nm.position_label(label, lang)] + ([] if not numbered else
-                                                 ["" if k is None else str(k)]),
-            results.index_of(phi))
-           for (label, phi), k in zip(results.position_angles, nums)]
+    idx = [([nm.position_label(p, lang)] + ([] if not numbered else
+                                             ["" if p.number is None else str(p.number)]),
+            results.index_of(p.phi))
+           for p in results.position_angles]
     vq = [k for k in cols if k.startswith("vq_") and not k.startswith(("vqx_", "vqy_"))]
     wq = [k for k in cols if k.startswith("omega_q_")]
     if vq or wq:

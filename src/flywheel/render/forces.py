@@ -166,9 +166,8 @@ def forces_positions_csv(results) -> str:
     from flywheel.render.tables import number_cell
 
     cols = force_columns(results)
-    idx = [results.index_of(phi) for _, phi in results.position_angles]
-    labels = [f"{label},{number_cell(k)}"
-              for (label, _), k in zip(results.position_angles, results.position_numbers())]
+    idx = [results.index_of(pos.phi) for pos in results.position_angles]
+    labels = [f"{pos.label},{number_cell(pos.number)}" for pos in results.position_angles]
     rows = _rows(cols, idx)
     header = "position,number," + ",".join(csv_header(k) for k in cols)
     return "\n".join([header] + [f"{lab},{row}" for lab, row in zip(labels, rows)]) + "\n"
@@ -295,9 +294,9 @@ def add_report_section(b, results, lang: str = "en") -> None:
         parts_of = [k for k in ("M_st", "M_dyn") if k in results.columns]    # seed 004's Мст, Мдин
         header = [t["pos"], deg] + [_h(symbol(k, lang), unit_of(k, lang), lang) for k in parts_of] + [My]
         body = []
-        for lab, p in results.position_angles:
-            i = results.index_of(p)
-            body.append([position_label(lab, lang), _g(math.degrees(p), 6)]
+        for pos in results.position_angles:
+            i = results.index_of(pos.phi)
+            body.append([position_label(pos, lang), _g(math.degrees(pos.phi), 6)]
                         + [_g(float(results.columns[k].values[i]), 6) for k in parts_of]
                         + [_g(float(f.M_y_power[i]), 6)])
         table(t["tab_positions"], header, body)
@@ -306,9 +305,10 @@ def add_report_section(b, results, lang: str = "en") -> None:
     keys = list(f.joints)
     header = [t["pos"], t["no"], deg, My] + [f"R {k}" for k in keys]
     body = []
-    for (lab, p), k in zip(results.position_angles, results.position_numbers()):
-        i = results.index_of(p)
-        body.append([position_label(lab, lang), "" if k is None else str(k), _g(math.degrees(p), 6),
+    for pos in results.position_angles:
+        i = results.index_of(pos.phi)
+        body.append([position_label(pos, lang), "" if pos.number is None else str(pos.number),
+                     _g(math.degrees(pos.phi), 6),
                      _g(float(fa.balancing_moment[i]), 6)]
                     + [_g(float(fa.joints[k].magnitude[i]), 5) for k in keys])
     table(t["positions"], header, body)
