@@ -40,13 +40,13 @@ def case_setup(name: str) -> dict:
         F = res.columns[f"F_{f.name}"].values
         pf.append(fo.PointForce(f.name, f.slider, d.joint, (-F * np.sign(x_dot))[:, None] * u))
     s = res.scalars
-    J_I = max(s["J_required"], s["J_first_group"])
+    J_I = max(s.J_required, s.J_first_group)
     loads = fo.Loads(case.links, tuple(pf),
                      tuple(fo.Couple(c.name, c.link, c.moment) for c in case.couples),
                      tuple(case.machine.gravity), J_I)
     return {"case": case, "res": res, "mech": mech, "kin": kin, "loads": loads,
             "omega": res.columns["omega"].values, "eps": res.columns["epsilon"].values,
-            "M_D": s["balancing_moment"], "J_I": J_I}
+            "M_D": s.balancing_moment, "J_I": J_I}
 
 
 # numerical derivatives: 8th-order central differences (as tests/test_kinematics.py)

@@ -191,7 +191,7 @@ def test_technological_force_and_couple():
     # the force's work is integrated exactly (−F·travel in each interval) and the angle where it
     # switches on is a grid node, so even a coarse grid gives the closed form (the trapezoid rule
     # on M = −F·|v_q| was first-order: 2.5·10⁻⁴ relative on 7200 intervals)
-    assert r.scalars["cycle_work_resistance"] == pytest.approx(-1000 * 0.2 / 2, rel=1e-8)  # the
+    assert r.scalars.cycle_work_resistance == pytest.approx(-1000 * 0.2 / 2, rel=1e-8)  # the
     # dead centres (interval ends) are found numerically: 6·10⁻¹⁰ is left
     # s = 0.5 of the stroke away from the outer dead centre (φ = 0): x = l + r at φ = 0, so
     # x(φ) = r·cos φ + √(l² − r²·sin² φ) = l: cos φ = r/(2l)... solved here by bisection
@@ -203,7 +203,7 @@ def test_technological_force_and_couple():
     F = r.columns["F_punch"].values
     assert F.max() == 1000.0 and F.min() == 0.0
     # at 120° the slider moves away, past half its travel: the punch acts, and summary.json says so
-    assert r.at[0]["phi_deg"] == 120.0 and r.at[0]["forces"] == {"punch": 1000.0}
+    assert r.at[0].phi_deg == 120.0 and r.at[0].forces == {"punch": 1000.0}
 
 
 def test_python_dash_m(tmp_path):
@@ -219,6 +219,6 @@ def test_conservative_loads_need_no_balancing_moment():
     from flywheel.cases.run import load_case
 
     r = analyze(load_case(CASES / "fourbar.toml"), n_points=720)
-    assert r.scalars["balancing_moment"] == 0.0
+    assert r.scalars.balancing_moment == 0.0
     assert any("no net work" in w for w in r.warnings)
-    assert r.scalars["delta_T_max"] > 0
+    assert r.scalars.delta_T_max > 0

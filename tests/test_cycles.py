@@ -40,27 +40,27 @@ def one_and_two():
 def test_two_revolutions_of_a_one_revolution_machine(one_and_two):
     one, two = one_and_two
     s1, s2 = one.scalars, two.scalars
-    assert (s1["cycle_deg"], s2["cycle_deg"]) == (360, 720)
+    assert (s1.cycle_deg, s2.cycle_deg) == (360, 720)
     for key in ("driving_moment", "balancing_moment", "delta_T_max", "J_II_mean", "J_II_min",
                 "J_II_max", "J_required", "J_required_exact", "delta_achieved",
                 "delta_achieved_exact", "omega_max", "omega_min", "T0"):
-        assert s2[key] == pytest.approx(s1[key], rel=1e-11, abs=1e-12), key
+        assert getattr(s2, key) == pytest.approx(getattr(s1, key), rel=1e-11, abs=1e-12), key
     for key in ("cycle_work_resistance", "cycle_time"):          # totals over the cycle
-        assert s2[key] == pytest.approx(2 * s1[key], rel=1e-11), key
+        assert getattr(s2, key) == pytest.approx(2 * getattr(s1, key), rel=1e-11), key
     # ω(φ) repeats: the second revolution equals the first
     w1 = one.columns["omega"].values
     w2 = two.columns["omega"].values
     n = w1.size
     assert np.allclose(w2[:n], w1, rtol=1e-11) and np.allclose(w2[n - 1:], w1, rtol=1e-11)
     # extremes over the whole cycle: in the first or the second revolution, same place
-    assert s2["phi_omega_max_deg"] % 360 == pytest.approx(s1["phi_omega_max_deg"], abs=1e-9)
+    assert s2.phi_omega_max_deg % 360 == pytest.approx(s1.phi_omega_max_deg, abs=1e-9)
     assert two.phi[-1] == 4 * math.pi
 
 
 def test_standard_positions_and_dead_centres_over_the_cycle(one_and_two):
     one, two = one_and_two
-    labels = [lab for lab, _ in two.position_angles]
-    angles = [round(math.degrees(p), 9) for _, p in two.position_angles]
+    labels = [p.label for p in two.position_angles]
+    angles = [round(math.degrees(p.phi), 9) for p in two.position_angles]
     assert len([lab for lab in labels if lab.endswith("°") or "° =" in lab]) == 24   # every 30°
     assert angles[:3] == [0.0, 30.0, 60.0] and angles[-1] == 690.0
     # each dead centre once per revolution: the compressor's four fall on 30° positions
@@ -72,9 +72,9 @@ def test_standard_positions_and_dead_centres_over_the_cycle(one_and_two):
 def test_report_angles_beyond_one_revolution():
     r = analyze(_compressor(720), n_points=7200, at_deg=[120.0, 480.0, 840.0])
     a120, a480, a840 = r.at
-    assert a480["phi_deg"] == 480.0
-    assert a480["omega"] == pytest.approx(a120["omega"], rel=1e-11)   # loads repeat each turn
-    assert a840["omega"] == a120["omega"]                              # 840° = 120° of the cycle
+    assert a480.phi_deg == 480.0
+    assert a480.omega == pytest.approx(a120.omega, rel=1e-11)   # loads repeat each turn
+    assert a840.omega == a120.omega                              # 840° = 120° of the cycle
     i = r.index_of(math.radians(480.0))
     assert r.phi[i] == pytest.approx(math.radians(480.0), abs=1e-12)
 

@@ -48,17 +48,17 @@ def at(results, deg):
 
 def test_link_lengths_and_mean_speed(printed):
     s = printed.scalars
-    assert s["crank_length"] == pytest.approx(0.1, abs=1e-12)       # seed: l1 = 0.1
-    assert s["omega_mean"] == pytest.approx(62.832, abs=5e-4)        # seed: ω_1ср = 62.832
+    assert s.crank_length == pytest.approx(0.1, abs=1e-12)       # seed: l1 = 0.1
+    assert s.omega_mean == pytest.approx(62.832, abs=5e-4)        # seed: ω_1ср = 62.832
 
 
 def test_forces_and_their_moments_at_120_deg(printed):
     a = printed.at[0]
-    assert a["phi_deg"] == 120.0
-    assert a["forces"]["HP"] == pytest.approx(2993, abs=0.5)         # seed: F_B(f) = 2.993·10³
-    assert a["forces"]["LP"] == pytest.approx(3957, abs=0.5)         # seed: F_C(f) = 3.957·10³
-    assert a["moments"]["gas HP"] == pytest.approx(225.981, abs=5e-4)  # seed: M_PRFB(f) = 225.981
-    assert a["moments"]["gas LP"] == pytest.approx(241.04, abs=5e-3)   # seed: M_PRFC(f) = 241.04
+    assert a.phi_deg == 120.0
+    assert a.forces["HP"] == pytest.approx(2993, abs=0.5)         # seed: F_B(f) = 2.993·10³
+    assert a.forces["LP"] == pytest.approx(3957, abs=0.5)         # seed: F_C(f) = 3.957·10³
+    assert a.moments["gas HP"] == pytest.approx(225.981, abs=5e-4)  # seed: M_PRFB(f) = 225.981
+    assert a.moments["gas LP"] == pytest.approx(241.04, abs=5e-3)   # seed: M_PRFC(f) = 241.04
 
 
 def test_linear_interpolation_would_not_give_the_seeds_force():
@@ -71,22 +71,22 @@ def test_linear_interpolation_would_not_give_the_seeds_force():
     for cy in data["cylinders"]:
         cy["interpolation"] = "linear"
     r = analyze(parse_case(data), n_points=720)
-    assert r.at[0]["forces"]["LP"] == pytest.approx(4120.2, abs=0.05)
+    assert r.at[0].forces["LP"] == pytest.approx(4120.2, abs=0.05)
 
 
 def test_cycle_work_and_driving_moment_with_the_worksheet_column(worksheet):
     s = worksheet.scalars
-    assert s["cycle_work_resistance"] == pytest.approx(-1204, abs=0.5)  # seed: A_C = −1.204·10³
-    assert s["driving_moment"] == pytest.approx(191.6, abs=0.05)        # seed: M_PRD = 191.6
+    assert s.cycle_work_resistance == pytest.approx(-1204, abs=0.5)  # seed: A_C = −1.204·10³
+    assert s.driving_moment == pytest.approx(191.6, abs=0.05)        # seed: M_PRD = 191.6
 
 
 def test_cycle_work_with_the_printed_column(printed):
     """Seeds README, defect 2: with the printed p_ВВЕРХ1 column A_C ≈ −1237.4 J, M_PRD ≈ 196.94."""
     s = printed.scalars
-    assert s["cycle_work_resistance"] == pytest.approx(-1237.4, abs=0.05)
-    assert s["driving_moment"] == pytest.approx(196.94, abs=0.005)
+    assert s.cycle_work_resistance == pytest.approx(-1237.4, abs=0.05)
+    assert s.driving_moment == pytest.approx(196.94, abs=0.005)
     # the printed column is 2.8 % more work than the worksheet's results
-    assert s["cycle_work_resistance"] / -1204 - 1 == pytest.approx(0.0278, abs=5e-4)
+    assert s.cycle_work_resistance / -1204 - 1 == pytest.approx(0.0278, abs=5e-4)
 
 
 def test_flywheel_dimensions_by_the_course_formulas():
@@ -123,8 +123,8 @@ def test_course_formulas_option_in_a_case():
     data["flywheel"] = {"formulas": "course"}
     r = analyze(parse_case(data), n_points=360)
     s = r.scalars
-    assert sizing.disk_course(s["J_flywheel"]).items() <= s["flywheel_disk"].items()
-    assert sizing.rim_course(s["J_flywheel"]).items() <= s["flywheel_rim"].items()
+    assert sizing.disk_course(s.J_flywheel).items() <= s.flywheel_disk.as_dict().items()
+    assert sizing.rim_course(s.J_flywheel).items() <= s.flywheel_rim.as_dict().items()
 
 
 def test_flywheel_on_a_faster_shaft_and_its_rim_speed():
@@ -135,11 +135,11 @@ def test_flywheel_on_a_faster_shaft_and_its_rim_speed():
     data = tomllib.loads((CASES / "compressor.toml").read_text(encoding="utf-8"))
     data["flywheel"] = {"speed_ratio": 4.0, "material": "cast-iron"}
     s = analyze(parse_case(data), n_points=720).scalars
-    assert s["flywheel_J_on_its_shaft"] == pytest.approx(s["J_flywheel"] / 16, rel=1e-12)
-    d = s["flywheel_disk"]
-    assert math.pi * 7200 * d["b"] * d["D"] ** 4 / 32 == pytest.approx(s["J_flywheel"] / 16, rel=1e-12)
-    assert d["rim_speed"] == pytest.approx(s["omega_max"] * 4 * d["D"] / 2, rel=1e-12)
-    assert s["flywheel_rim_speed_limit"] == pytest.approx(math.sqrt(7e6 / 7200), rel=1e-12)  # 31.2 m/s
+    assert s.flywheel_J_on_its_shaft == pytest.approx(s.J_flywheel / 16, rel=1e-12)
+    d = s.flywheel_disk
+    assert math.pi * 7200 * d.b * d.D ** 4 / 32 == pytest.approx(s.J_flywheel / 16, rel=1e-12)
+    assert d.rim_speed == pytest.approx(s.omega_max * 4 * d.D / 2, rel=1e-12)
+    assert s.flywheel_rim_speed_limit == pytest.approx(math.sqrt(7e6 / 7200), rel=1e-12)  # 31.2 m/s
 
 
 def test_rim_speed_warning_states_the_limit_its_source_and_the_material():
@@ -175,7 +175,7 @@ def test_gravity_moments_seed_formula_and_the_correct_one(printed):
     P, phi = printed.kinematics.points, printed.phi
     for point, mass, seed in (("S2", 0.8, 0.089), ("S4", 0.8, -0.124), ("B", 0.6, 0.222), ("C", 1.0, -0.517)):
         assert mass * G * _seed_projection(P[point].v_q, phi)[i] == pytest.approx(seed, abs=5e-4)
-    ours = printed.at[0]["moments"]
+    ours = printed.at[0].moments
     assert ours["gravity 2"] == pytest.approx(0.8 * -G * P["S2"].v_q[i, 1], rel=1e-12)
     assert ours["gravity 5"] == 0.0                      # piston 5 moves horizontally
     assert max(abs(v) for k, v in ours.items() if k.startswith("gravity")) < 1
@@ -242,9 +242,9 @@ def test_seed_energy_extremes_reproduced_with_its_defects_and_corrected(fine_wor
     assert dT[near0][i_min] - dT.min() == pytest.approx(61.6, abs=0.1)
     # the program (all defects corrected): ΔT_нб = 902.6 J, J_I = 4.5726, +8.3 % on the seed
     s = r.scalars
-    assert s["delta_T_max"] == pytest.approx(902.6, abs=0.05)
-    assert s["J_required"] == pytest.approx(4.5726, abs=5e-4)
-    assert s["J_required"] / 4.223 - 1 == pytest.approx(0.083, abs=1e-3)
+    assert s.delta_T_max == pytest.approx(902.6, abs=0.05)
+    assert s.J_required == pytest.approx(4.5726, abs=5e-4)
+    assert s.J_required / 4.223 - 1 == pytest.approx(0.083, abs=1e-3)
 
 
 def test_what_follows_from_the_seeds_J_PRI(worksheet):
@@ -254,22 +254,22 @@ def test_what_follows_from_the_seeds_J_PRI(worksheet):
     moves ω and ε at 120°."""
     s, a = worksheet.scalars, worksheet.at[0]
     # J_доп = J_PRI − J_10 − J_ред: seed 3.548, program 3.8986 (+9.9 %, defect 6)
-    assert s["J_flywheel"] == pytest.approx(3.8986, abs=5e-4)
-    assert s["J_flywheel"] / 3.548 - 1 == pytest.approx(0.099, abs=1e-3)
+    assert s.J_flywheel == pytest.approx(3.8986, abs=5e-4)
+    assert s.J_flywheel / 3.548 - 1 == pytest.approx(0.099, abs=1e-3)
     # the course's disk for it: seed D = 0.471 m, m = 127.67 kg; program 0.4805 m, 135.10 kg
-    disk = sizing.disk_course(s["J_flywheel"])
+    disk = sizing.disk_course(s.J_flywheel)
     assert (disk["D"], disk["mass"]) == (pytest.approx(0.4805, abs=5e-5), pytest.approx(135.10, abs=5e-3))
     # the rim: seed D = 0.523 m, m = 63.072 kg; program 0.5330 m, 66.745 kg
-    rim = sizing.rim_course(s["J_flywheel"])
+    rim = sizing.rim_course(s.J_flywheel)
     assert (rim["D"], rim["mass"]) == (pytest.approx(0.5330, abs=5e-5), pytest.approx(66.745, abs=5e-4))
     # at 120°: seed ω1 = −62.732, ε = 152.592 (defect 8); program −62.9015, 140.04 from the
     # energy equation with the sized flywheel
-    assert a["phi_deg"] == 120.0
-    assert a["links"]["1"]["omega"] == pytest.approx(-62.9015, abs=5e-4)
-    assert a["epsilon"] == pytest.approx(140.04, abs=5e-3)
+    assert a.phi_deg == 120.0
+    assert a.links["1"].omega == pytest.approx(-62.9015, abs=5e-4)
+    assert a.epsilon == pytest.approx(140.04, abs=5e-3)
     # the rods: seed ω2 = −8.032, ω4 = 13.689; program −8.0537, 13.7262 (only ω differs)
-    assert a["links"]["2"]["omega"] == pytest.approx(-8.0537, abs=5e-4)
-    assert a["links"]["4"]["omega"] == pytest.approx(13.7262, abs=5e-4)
+    assert a.links["2"].omega == pytest.approx(-8.0537, abs=5e-4)
+    assert a.links["4"].omega == pytest.approx(13.7262, abs=5e-4)
 
 
 def test_seed_flywheel_gives_more_than_its_delta(fine_worksheet):
@@ -331,8 +331,8 @@ def test_cycle_work_is_the_area_of_the_indicator_diagrams(name):
         up = CubicSpline(cy.s, cy.towards_head, bc_type="natural").integrate(0, 1)
         down = CubicSpline(cy.s, cy.away_from_head, bc_type="natural").integrate(0, 1)
         area += -cy.p_max * math.pi * cy.bore**2 / 4 * stroke * (up - down)
-    assert r.scalars["cycle_work_resistance"] == pytest.approx(area, rel=1e-6)
-    assert r.scalars["driving_moment"] == pytest.approx(-area / (2 * math.pi), rel=1e-6)
+    assert r.scalars.cycle_work_resistance == pytest.approx(area, rel=1e-6)
+    assert r.scalars.driving_moment == pytest.approx(-area / (2 * math.pi), rel=1e-6)
     A = r.columns["A"].values
     assert abs(A[-1]) < 1e-9 * np.max(np.abs(A))
 
@@ -363,11 +363,11 @@ def test_delta_achieved(printed):
     s = printed.scalars
     # the exact size gives the target δ; Merzalov's (ω_m² in place of the varying ω²) gives
     # 0.7 % less fluctuation on this machine
-    assert s["delta_achieved_exact"] == pytest.approx(0.05, rel=1e-4)
-    assert s["delta_achieved"] == pytest.approx(0.05, rel=0.02)
-    assert s["delta_achieved"] < 0.05
+    assert s.delta_achieved_exact == pytest.approx(0.05, rel=1e-4)
+    assert s.delta_achieved == pytest.approx(0.05, rel=0.02)
+    assert s.delta_achieved < 0.05
     # both ways give a mean speed of ω_m
-    assert 0.5 * (s["omega_max"] + s["omega_min"]) == pytest.approx(s["omega_mean"], rel=1e-9)
+    assert 0.5 * (s.omega_max + s.omega_min) == pytest.approx(s.omega_mean, rel=1e-9)
 
 
 @pytest.mark.parametrize("name", ["compressor.toml", "slotted_link.toml", "fourbar.toml"])
@@ -378,7 +378,7 @@ def test_convergence_with_a_finer_grid(name):
     a, b = analyze(case).scalars, analyze(case, n_points=4 * 3600).scalars
     for key in ("cycle_work_resistance", "driving_moment", "delta_T_max", "J_II_mean", "J_required",
                 "J_required_exact", "J_flywheel", "delta_achieved", "delta_achieved_exact"):
-        assert a[key] == pytest.approx(b[key], rel=1e-4), key
+        assert getattr(a, key) == pytest.approx(getattr(b, key), rel=1e-4), key
 
 
 # -- closed forms ------------------------------------------------------------------------------
@@ -395,7 +395,7 @@ def test_cutting_force_work_is_force_times_travel():
     stroke = max(xs) - min(xs)
     assert stroke == pytest.approx(0.541667, abs=5e-7)        # the case's comment: 0.541667 m
     # exact up to the dead centres' own precision (6·10⁻¹⁰ relative)
-    assert r.scalars["cycle_work_resistance"] == pytest.approx(-1500 * 0.9 * stroke, rel=1e-8)
+    assert r.scalars.cycle_work_resistance == pytest.approx(-1500 * 0.9 * stroke, rel=1e-8)
 
 def _slider_crank_case(balance="driving", masses=False, towards=1.0, away=0.0):
     """A centric horizontal slider-crank r = 0.05, l = 0.2, one cylinder with constant p/p_max
@@ -423,18 +423,18 @@ def test_constant_force_on_one_stroke_closed_form():
     res = analyze(_slider_crank_case(), n_points=7200)
     s = res.scalars
     # the trapezoid rule on 7200 intervals: 6·10⁻⁸ relative
-    assert s["cycle_work_resistance"] == pytest.approx(-F * 2 * r_, rel=1e-6)
+    assert s.cycle_work_resistance == pytest.approx(-F * 2 * r_, rel=1e-6)
     M_D = F * 2 * r_ / (2 * math.pi)
-    assert s["driving_moment"] == pytest.approx(M_D, rel=1e-6)
+    assert s.driving_moment == pytest.approx(M_D, rel=1e-6)
     phi = res.phi
     x = r_ * np.cos(phi) + np.sqrt(l_ ** 2 - r_ ** 2 * np.sin(phi) ** 2)
     # head outer at φ = 0; the piston moves towards the head for φ in (π, 2π)
     A_exact = M_D * phi - np.where(phi > math.pi, F * (x - x[np.argmin(np.abs(phi - math.pi))]), 0.0)
     assert np.max(np.abs(res.columns["A"].values - A_exact)) < 1e-5 * F * r_
     # no second-group inertia: J_II = 0 and Merzalov's size is exact: ΔT_нб/(δ·ω_m²)
-    assert s["J_required_exact"] == pytest.approx(s["J_required"], rel=1e-12)
+    assert s.J_required_exact == pytest.approx(s.J_required, rel=1e-12)
     dT = A_exact.max() - A_exact.min()
-    assert s["delta_T_max"] == pytest.approx(dT, rel=1e-6)
+    assert s.delta_T_max == pytest.approx(dT, rel=1e-6)
 
 
 def test_engine_balance_takes_a_resistance_moment():
@@ -442,8 +442,8 @@ def test_engine_balance_takes_a_resistance_moment():
     resistance moment balances it: M_C = −F·2r/2π."""
     r_, F = 0.05, 1e6 * math.pi * 0.1 ** 2 / 4
     res = analyze(_slider_crank_case("resistance", towards=0.0, away=1.0), n_points=3600)
-    assert res.scalars["balancing_moment"] == pytest.approx(-F * 2 * r_ / (2 * math.pi), rel=1e-6)
-    assert res.scalars["cycle_work_resistance"] == pytest.approx(-F * 2 * r_, rel=1e-6)
+    assert res.scalars.balancing_moment == pytest.approx(-F * 2 * r_ / (2 * math.pi), rel=1e-6)
+    assert res.scalars.cycle_work_resistance == pytest.approx(-F * 2 * r_, rel=1e-6)
 
 
 def test_wrong_balance_sign_is_an_input_error():
@@ -466,10 +466,10 @@ def test_loads_without_net_work_need_no_constant_moment_whichever_the_balance(ba
     doc["machine"]["balance"] = balance
     res = analyze(parse_case(doc, "fourbar.toml"), n_points=720)
     s = res.scalars
-    assert s["balancing_moment"] == 0.0 and s["driving_moment"] == 0.0
-    assert s["cycle_work_resistance"] == 0.0
+    assert s.balancing_moment == 0.0 and s.driving_moment == 0.0
+    assert s.cycle_work_resistance == 0.0
     for key in ("delta_T_max", "J_required", "J_required_exact", "omega_max", "omega_min"):
-        assert s[key] == base[key], key
+        assert getattr(s, key) == getattr(base, key), key
     assert any("no net work" in w for w in res.warnings)
 
 
@@ -518,7 +518,7 @@ def test_switch_angle_nodes_are_solved_alone_yet_equal_a_whole_solve():
     case = load_case(CASES / "slotted_link.toml")
     mech = to_mechanism(case)
     positions, dcs = standard_positions(mech)
-    extra = [p for _, p in positions]
+    extra = [p.phi for p in positions]
     first = closed_grid(720, extra)
     switch = force_switch_angles(case.forces, mech, dcs, first, solve(mech, first))
     phi, kin = linkage_grid(case, mech, dcs, 720, extra)

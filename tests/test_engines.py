@@ -69,10 +69,10 @@ def test_cycle_work_is_the_indicator_diagram_area(method):
     stroke = 2 * data["crank"]["length"]
     W = cy["p_max"] * diagram_area(cy, method) * math.pi * cy["bore"] ** 2 / 4 * stroke
     assert W > 0                                                   # the gas drives
-    assert r.scalars["cycle_work_resistance"] == pytest.approx(-W, rel=2e-6)
-    assert r.scalars["balancing_moment"] == pytest.approx(-W / (4 * math.pi), rel=2e-6)
-    assert r.scalars["driving_moment"] == pytest.approx(W / (4 * math.pi), rel=2e-6)
-    assert r.scalars["balance"] == "resistance" and r.scalars["cycle_deg"] == 720
+    assert r.scalars.cycle_work_resistance == pytest.approx(-W, rel=2e-6)
+    assert r.scalars.balancing_moment == pytest.approx(-W / (4 * math.pi), rel=2e-6)
+    assert r.scalars.driving_moment == pytest.approx(W / (4 * math.pi), rel=2e-6)
+    assert r.scalars.balance == "resistance" and r.scalars.cycle_deg == 720
 
 
 def test_two_stroke_engine_is_two_tables_over_one_revolution():
@@ -88,8 +88,8 @@ def test_two_stroke_engine_is_two_tables_over_one_revolution():
     s = np.asarray(cy["s"])
     W = (cy["p_max"] * (np.trapezoid(st["expansion"], s) - np.trapezoid(st["compression"], s))
          * math.pi * cy["bore"] ** 2 / 4 * 2 * data["crank"]["length"])
-    assert r.scalars["cycle_work_resistance"] == pytest.approx(-W, rel=2e-6)
-    assert r.scalars["driving_moment"] == pytest.approx(W / (2 * math.pi), rel=2e-6)
+    assert r.scalars.cycle_work_resistance == pytest.approx(-W, rel=2e-6)
+    assert r.scalars.driving_moment == pytest.approx(W / (2 * math.pi), rel=2e-6)
 
 
 def test_pressure_stroke_by_stroke_at_the_closed_form_travel():
@@ -125,7 +125,7 @@ def test_firing_in_the_second_revolution_shifts_the_cycle_by_360():
     assert a.phi.size == 721                                # 1° nodes: 360° is 360 nodes
     assert np.allclose(Mb[360:], Ma[:361], **tol) and np.allclose(Mb[:361], Ma[360:], **tol)
     assert b.cylinders[0].fires_at == pytest.approx(2 * math.pi)
-    assert b.scalars["delta_T_max"] == pytest.approx(a.scalars["delta_T_max"], rel=1e-9)
+    assert b.scalars.delta_T_max == pytest.approx(a.scalars.delta_T_max, rel=1e-9)
 
 
 def test_engine_case_runs_end_to_end(tmp_path):
@@ -247,7 +247,7 @@ def test_inline_four_reciprocating_inertia_torque_closed_form():
     d["machine"].pop("firing_order")
     d["machine"]["balance"] = "driving"       # no work to balance (a "resistance" would refuse it)
     r = analyze(parsed(d), n_points=720)
-    phi, w = r.phi, r.scalars["omega_mean"]
+    phi, w = r.phi, r.scalars.omega_mean
     m, rr, ll = 0.45, 0.04, 0.16
     lam, unit = rr / ll, m * rr ** 2 * w ** 2
     M = -0.5 * w ** 2 * r.reduction.dJ_II
@@ -281,11 +281,11 @@ def test_delta_T_falls_as_cylinders_are_added_in_a_balanced_firing_order():
     dT, work = {}, {}
     for keep in (("1",), ("1", "4"), ("1", "2", "3", "4")):
         s = analyze(parsed(inline4(keep))).scalars
-        dT[len(keep)], work[len(keep)] = s["delta_T_max"], -s["cycle_work_resistance"]
+        dT[len(keep)], work[len(keep)] = s.delta_T_max, -s.cycle_work_resistance
     assert dT[1] > dT[2] > dT[4] and dT[4] < 0.25 * dT[1]
     assert work[2] == pytest.approx(2 * work[1], rel=1e-9)
     assert work[4] == pytest.approx(4 * work[1], rel=1e-9)
-    uneven = analyze(parsed(inline4(("1", "2"), order=["1", "2"]))).scalars["delta_T_max"]
+    uneven = analyze(parsed(inline4(("1", "2"), order=["1", "2"]))).scalars.delta_T_max
     assert uneven > dT[2]
 
 
@@ -384,8 +384,8 @@ def test_inline_four_case_runs_end_to_end(tmp_path):
     r = json.loads(res.stdout)["results"]
     one = analyze(load_case(CASES / "engine_4stroke.toml")).scalars
     assert r["cycle_deg"] == 720 and r["balance"] == "resistance"
-    assert r["cycle_work_resistance"] == pytest.approx(4 * one["cycle_work_resistance"], rel=1e-9)
-    assert r["delta_T_max"] < 0.25 * one["delta_T_max"]
+    assert r["cycle_work_resistance"] == pytest.approx(4 * one.cycle_work_resistance, rel=1e-9)
+    assert r["delta_T_max"] < 0.25 * one.delta_T_max
     header = (tmp_path / "o" / "table.csv").read_text(encoding="utf-8").splitlines()[0]
     assert all(f"stroke_{c} [-]" in header for c in "1234")
     rows = (tmp_path / "o" / "positions.csv").read_text(encoding="utf-8").splitlines()[1:]
@@ -433,9 +433,9 @@ def test_kinetostatics_closes_on_the_engines(name):
     mech, kin, w, e, loads = st["mech"], st["kin"], st["omega"], st["eps"], st["loads"]
     s = st["res"].scalars
     fa = fo.kinetostatics(mech, kin, w, e, loads)
-    assert fo.closure(fa, s["balancing_moment"]) < 1e-10
+    assert fo.closure(fa, s.balancing_moment) < 1e-10
     lever = fo.zhukovsky_moment(mech, kin, w, e, loads)
-    assert np.max(np.abs(lever - fa.balancing_moment)) < 1e-10 * abs(s["balancing_moment"])
+    assert np.max(np.abs(lever - fa.balancing_moment)) < 1e-10 * abs(s.balancing_moment)
 
 
 def _twin(layout: str) -> dict:
@@ -472,7 +472,7 @@ def test_v_twin_and_boxer_fire_where_their_cranks_point_up_their_cylinders(layou
     got = tuple(math.degrees(c.fires_at) for c in r.cylinders)
     assert got == pytest.approx(fires, abs=1e-9)
     one = analyze(parsed(single()), n_points=7200).scalars
-    assert r.scalars["cycle_work_resistance"] == pytest.approx(2 * one["cycle_work_resistance"],
+    assert r.scalars.cycle_work_resistance == pytest.approx(2 * one.cycle_work_resistance,
                                                                rel=1e-6)
 
 
@@ -488,7 +488,7 @@ def test_offset_engine_and_a_cycle_of_four_revolutions():
     stroke = math.sqrt((l_ + r_) ** 2 - e ** 2) - math.sqrt((l_ - r_) ** 2 - e ** 2)
     W = cy["p_max"] * diagram_area(cy) * math.pi * cy["bore"] ** 2 / 4 * stroke
     res = analyze(parsed(data), n_points=7200)
-    assert res.scalars["cycle_work_resistance"] == pytest.approx(-W, rel=2e-6)
+    assert res.scalars.cycle_work_resistance == pytest.approx(-W, rel=2e-6)
     # the dead centres of this offset slider-crank (guide x = −e, crank clockwise from the
     # vertical): outer at −asin(e/(l + r)), inner at 180° − asin(e/(l − r)); fires_at_deg = 0
     # picks the outer one nearest to 0°, −3.44° ≡ 716.56°
@@ -504,9 +504,9 @@ def test_offset_engine_and_a_cycle_of_four_revolutions():
     assert first["compression"] == pytest.approx(360.0 + inner, abs=1e-9)
     data["machine"]["cycle_deg"] = 1440
     res4 = analyze(parsed(data), n_points=14400)
-    assert res4.scalars["cycle_work_resistance"] == pytest.approx(-2 * W, rel=2e-6)
-    assert res4.scalars["balancing_moment"] == pytest.approx(res.scalars["balancing_moment"], rel=1e-9)
-    assert res4.scalars["delta_T_max"] == pytest.approx(res.scalars["delta_T_max"], rel=1e-9)
+    assert res4.scalars.cycle_work_resistance == pytest.approx(-2 * W, rel=2e-6)
+    assert res4.scalars.balancing_moment == pytest.approx(res.scalars.balancing_moment, rel=1e-9)
+    assert res4.scalars.delta_T_max == pytest.approx(res.scalars.delta_T_max, rel=1e-9)
 
 
 # -- a four-stroke diagram as one table over the cycle --------------------------------------------
@@ -537,9 +537,9 @@ def test_one_table_over_the_cycle_equals_the_four_strokes():
     s, p = np.asarray(cy["diagram"]["s"]), np.asarray(cy["diagram"]["p"])
     area = 0.5 * abs(np.sum(s * np.roll(p, -1) - np.roll(s, -1) * p))
     W = cy["p_max"] * area * math.pi * cy["bore"] ** 2 / 4 * 2 * data["crank"]["length"]
-    assert b.scalars["cycle_work_resistance"] == pytest.approx(-W, rel=2e-6)
+    assert b.scalars.cycle_work_resistance == pytest.approx(-W, rel=2e-6)
     assert np.array_equal(a.cylinders[0].p, b.cylinders[0].p)
-    assert b.scalars["delta_T_max"] == a.scalars["delta_T_max"]
+    assert b.scalars.delta_T_max == a.scalars.delta_T_max
 
 
 @pytest.mark.parametrize("change, words", [

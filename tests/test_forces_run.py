@@ -104,12 +104,14 @@ def test_existing_keys_unchanged_by_the_force_analysis():
     """summary.json without the new keys is what the run gave before (results.forces = None)."""
     res = results_of("compressor")
     new = json.loads(json.dumps(res.to_document()))
-    old = json.loads(json.dumps(replace(res, forces=None).to_document()))
+    force_keys = ("balancing_moment", "joints", "slider_crank", "main_bearing_load",
+                  "crank_pin_load", "shaking_force", "shaking_moment")
+    bare = tuple(replace(a, **dict.fromkeys(force_keys)) for a in res.at)
+    old = json.loads(json.dumps(replace(res, forces=None, at=bare).to_document()))
     for k in ("balancing_moment_closure", "force_analysis"):
         new["results"].pop(k)
     for a in new["results"]["at"]:
-        for k in ("balancing_moment", "joints", "slider_crank", "main_bearing_load",
-                  "crank_pin_load", "shaking_force", "shaking_moment"):
+        for k in force_keys:
             a.pop(k, None)
     assert new == old
 

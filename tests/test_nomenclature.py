@@ -58,8 +58,8 @@ def test_russian_labels_say_nothing_in_english(results):
             if key.startswith(("M ", "F_")):       # load names: "газ HP", "сила punch"
                 text = text.replace(nm.term(key)[1].partition(" ")[2] or nm.term(key)[1], "")
             assert not latin_word.search(text), (key, text)
-    for label, _ in results.position_angles:
-        assert "d.c." not in nm.position_label(label, "ru")
+    for pos in results.position_angles:
+        assert "d.c." not in nm.position_label(pos, "ru")
 
 
 def test_units_in_russian():
@@ -96,7 +96,11 @@ def test_families_and_headings():
     assert nm.axis("omega_mean", "ru") == r"$\omega_{ср}$, рад/с"
     assert nm.legend("A_D", "ru") == "$A_Д$: работа движущих сил"
     assert nm.name_tex("J_II", "en") == r"reduced moment of inertia of the second group $J_{II}$"
-    assert nm.position_label("0° = 3 outer d.c.", "en") == "0° = 3 outer d.c."
+    from flywheel.dynamics.results import DeadCentre, Position
+
+    pos = Position(phi=0.0, number=0, standard_deg=0, dead_centres=(DeadCentre("3", "outer"),))
+    assert nm.position_label(pos, "en") == pos.label == "0° = 3 outer d.c."
+    assert nm.position_label(pos, "ru") == "0° = ползун 3: внешняя мёртвая точка"
     with pytest.raises(KeyError, match="not in the nomenclature"):
         nm.term("no such quantity")
 

@@ -438,7 +438,8 @@ def test_position_numbers_match_the_drawing(name, tmp_path):
             assert [row[k] for row in tb.rows] == [n for _, n in want], tb.caption
     from flywheel.render import nomenclature as nm
 
-    assert [row[0] for row in tb.rows] == [nm.position_label(lab, "ru") for lab, _ in want]
+    assert [lab for lab, _ in want] == [p.label for p in r.position_angles]
+    assert [row[0] for row in tb.rows] == [nm.position_label(p, "ru") for p in r.position_angles]
 
 
 def test_point_letters_do_not_touch_on_a_crowded_plan():

@@ -158,7 +158,7 @@ def test_positions(results, made):
     for line in ax_s.lines:                           # each travel spans the stroke 2·l1
         y = line.get_ydata()
         assert min(y) == pytest.approx(0.0, abs=1e-12)
-        assert max(y) == pytest.approx(2 * results.scalars["crank_length"], rel=1e-9)
+        assert max(y) == pytest.approx(2 * results.scalars.crank_length, rel=1e-9)
     assert ax_x.get_xlim() == (0.0, 360.0)
 
 
@@ -222,7 +222,7 @@ def test_reduced_moments(results, made):
     texts = [t.get_text() for t in top.get_legend().get_texts()]
     assert texts[:2] == ["gas HP", "gas LP"]
     assert texts[-1] == r"$M_\Sigma$: total"
-    m_d = results.scalars["balancing_moment"]
+    m_d = results.scalars.balancing_moment
     assert any(t.startswith(f"$M_D$ = {m_d:.5g} N·m") for t in texts)
     assert len(bottom.get_legend().get_texts()) == 4   # gravity of links 2..5
     assert top.get_ylabel().endswith(" [N·m]")
@@ -235,12 +235,12 @@ def test_works_marks_the_extremes_of_delta_T_I(results, made):
     texts = _legend_texts(fig)
     assert len(texts) == 7                            # A_D, A_C, T_II, ΔT_I, A, max, min
     sc = results.scalars
-    assert (rf"$\Delta T_{{I\,max}}$ = {sc['delta_T_I_max']:.5g} J at φ = "
-            rf"{sc['phi_delta_T_I_max_deg']:.1f}°") in texts
-    assert (rf"$\Delta T_{{I\,min}}$ = {sc['delta_T_I_min']:.5g} J at φ = "
-            rf"{sc['phi_delta_T_I_min_deg']:.1f}°") in texts
+    assert (rf"$\Delta T_{{I\,max}}$ = {sc.delta_T_I_max:.5g} J at φ = "
+            rf"{sc.phi_delta_T_I_max_deg:.1f}°") in texts
+    assert (rf"$\Delta T_{{I\,min}}$ = {sc.delta_T_I_min:.5g} J at φ = "
+            rf"{sc.phi_delta_T_I_min_deg:.1f}°") in texts
     marker = next(ln for ln in ax.lines if ln.get_marker() == "^")
-    assert marker.get_xdata()[0] == pytest.approx(sc["phi_delta_T_I_max_deg"])
+    assert marker.get_xdata()[0] == pytest.approx(sc.phi_delta_T_I_max_deg)
     assert ax.get_ylabel() == "work, energy [J]"
 
 
@@ -252,7 +252,7 @@ def test_omega(results, made):
     assert sum(ln.get_linestyle() == "--" for ln in ax.lines) == 1   # ω exact, dashed
     levels = sorted(ln.get_ydata()[0] for ln in ax.lines if len(ln.get_ydata()) == 2)
     sc = results.scalars
-    assert levels == pytest.approx(sorted([sc["omega_min"], sc["omega_mean"], sc["omega_max"]]))
+    assert levels == pytest.approx(sorted([sc.omega_min, sc.omega_mean, sc.omega_max]))
     assert ax.get_ylabel() == r"$\omega$ [rad/s]"
 
 

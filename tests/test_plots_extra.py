@@ -46,7 +46,7 @@ def _check_energy_mass(results, lang="en"):
         (x0, x1), (a0, a1) = tmax.get_xdata(), tmax.get_ydata()
         (y0, y1), (b0, b1) = tmin.get_xdata(), tmin.get_ydata()
         k_max, k_min = (a1 - a0) / (x1 - x0), (b1 - b0) / (y1 - y0)
-        w_m, d = s["omega_mean"], s["delta"]
+        w_m, d = s.omega_mean, s.delta
         assert k_max == pytest.approx(w_m**2 * (1 + d / 2) ** 2 / 2, rel=1e-9)
         assert k_min == pytest.approx(w_m**2 * (1 - d / 2) ** 2 / 2, rel=1e-9)
         # the tangents touch the curve from above and below
@@ -55,15 +55,15 @@ def _check_energy_mass(results, lang="en"):
             assert gap.min() == pytest.approx(0, abs=1e-9 * np.ptp(A))
         # they meet at J_II = −J_I (exact): the origin of the full-energy axes, drawn there
         x_meet = ((b0 - k_min * y0) - (a0 - k_max * x0)) / (k_max - k_min)
-        assert x_meet == pytest.approx(-s["J_required_exact"], rel=1e-6)
-        assert origin.get_xdata()[0] == pytest.approx(-s["J_required_exact"], rel=1e-6)
+        assert x_meet == pytest.approx(-s.J_required_exact, rel=1e-6)
+        assert origin.get_xdata()[0] == pytest.approx(-s.J_required_exact, rel=1e-6)
         assert origin.get_ydata()[0] == pytest.approx(a0 + k_max * (x_meet - x0), rel=1e-6)
         assert min(x0, y0) <= x_meet * (1 - 1e-9)           # drawn all the way to it
         # the dimension arrow J_I from the meeting point to J_II = 0, and its label
         dims = [a for a in full.texts if getattr(a, "arrow_patch", None) is not None
                 and a.xy[0] == 0.0 and a.xyann[0] == pytest.approx(x_meet, rel=1e-6)]
         assert len(dims) == 1
-        assert any(x.get_text().startswith(f"$J_I$ = {s['J_required_exact']:.5g}") for x in full.texts)
+        assert any(x.get_text().startswith(f"$J_I$ = {s.J_required_exact:.5g}") for x in full.texts)
         assert zoom.get_xlabel() == J_axis
         assert merz.get_xlabel() == nm.axis("phi_deg", lang) == (r"$\varphi$, °" if lang == "ru" else r"$\varphi$ [deg]")
         assert r"$\Delta T_{нб}$" in " ".join(x.get_text() for x in merz.get_legend().get_texts())
@@ -96,13 +96,13 @@ def test_energy_mass_diagram_constant_inertia():
 
 
 def test_transients_plot_marks_the_steady_state(results):
-    st = results.scalars["time_domain"]["startup"]
+    st = results.scalars.time_domain.startup
     fig = plots_extra.figure_transients(results)
     try:
         (ax,) = fig.axes
         labels = " ".join(x.get_text() for x in ax.get_legend().get_texts())
-        assert rf"$\omega_s$ = {st['omega_final_predicted']:.5g}" in labels
-        assert f"{st['time_to_steady']:.4g}" in labels
+        assert rf"$\omega_s$ = {st.omega_final_predicted:.5g}" in labels
+        assert f"{st.time_to_steady:.4g}" in labels
     finally:
         plots_extra._plt().close(fig)
 

@@ -246,7 +246,7 @@ def test_dynamic_moment_by_finite_differences(press):
     case = press.model_copy(update={"tabulated": spec})
     r = analyze(case, n_points=720)
     col = r.columns["M_dyn"].values
-    got = [col[r.index_of(phi)] for _, phi in r.position_angles[:12]]
+    got = [col[r.index_of(phi)] for phi in (p.phi for p in r.position_angles[:12])]
     np.testing.assert_allclose(got, mdyn[:12], rtol=1e-9)
 
 
@@ -257,7 +257,7 @@ def test_dynamic_moment_by_periodic_spline(press):
     r = analyze(press, n_points=720)
     mdyn = tabulated.dynamic_moments(press.tabulated, OMEGA1)
     col = r.columns["M_dyn"].values
-    got = np.array([col[r.index_of(phi)] for _, phi in r.position_angles])
+    got = np.array([col[r.index_of(phi)] for phi in (p.phi for p in r.position_angles)])
     np.testing.assert_allclose(got, mdyn, rtol=1e-9, atol=1e-9)
     I = np.array(IPR_EXACT)
     central = OMEGA1**2 / 2 * (np.roll(I, -1) - np.roll(I, 1)) / (math.pi / 3)
@@ -283,8 +283,8 @@ def test_positions_carry_static_moment_and_inertia(press):
     # cycle balance: the driving moment is the mean of Мст (trapezoid over the linear punch
     # moment, spline over the weights): the punch alone absorbs
     # (π/6)·(87,5 + 232,68) = 167,64 J, the weights' sampled moments almost nothing
-    assert r.scalars["driving_moment"] == pytest.approx(-r.scalars["cycle_work_resistance"] / (2 * math.pi))
-    assert -r.scalars["cycle_work_resistance"] == pytest.approx(167.64, rel=0.02)
+    assert r.scalars.driving_moment == pytest.approx(-r.scalars.cycle_work_resistance / (2 * math.pi))
+    assert -r.scalars.cycle_work_resistance == pytest.approx(167.64, rel=0.02)
 
 
 def test_run_json_contract(tmp_path):
@@ -327,7 +327,7 @@ def test_check_prints_the_table():
 
 def test_transients_run(press):
     r = analyze(press, n_points=720, transients=True)
-    assert r.scalars["time_domain"]["verification"]["max_deviation"] < 1e-3
+    assert r.scalars.time_domain.verification.max_deviation < 1e-3
 
 
 # -- bad input: one line, exit 2 ----------------------------------------------------------------
@@ -515,13 +515,13 @@ def test_graphical_method_cost_on_the_compressor():
 
     def pct(n, loads="linear"):
         r = analyze(parse_case(_compressor_as_table(case, exact, n, loads)))
-        return r, 100 * (r.scalars["J_required"] / e["J_required"] - 1)
+        return r, 100 * (r.scalars.J_required / e.J_required - 1)
 
     r12, p12 = pct(12)
     _, p12s = pct(12, "periodic-spline")
     _, p24 = pct(24)
     _, p72 = pct(72)
-    J_err = np.max(np.abs(r12.columns["J_II"].values - exact.columns["J_II"].values)) / e["J_II_max"]
+    J_err = np.max(np.abs(r12.columns["J_II"].values - exact.columns["J_II"].values)) / e.J_II_max
     report = (f"J_required, tabulated vs exact: 12 positions {p12:+.2f} % (loads linear), "
               f"{p12s:+.2f} % (loads spline); 24: {p24:+.2f} %; 72: {p72:+.2f} %; "
               f"J_II max error at 12 positions {100 * J_err:.2f} % of its max")
@@ -529,5 +529,5 @@ def test_graphical_method_cost_on_the_compressor():
     assert -8.0 < p12 < -6.0, report
     assert -6.0 < p12s < -4.0, report
     assert abs(p24) < 1.5 and abs(p72) < 0.2 and abs(p72) < abs(p24) < abs(p12), report
-    assert r12.scalars["J_II_mean"] == pytest.approx(e["J_II_mean"], rel=1e-3), report
+    assert r12.scalars.J_II_mean == pytest.approx(e.J_II_mean, rel=1e-3), report
     assert J_err < 0.005, report

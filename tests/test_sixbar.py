@@ -55,8 +55,8 @@ def test_shaper_cuts_on_the_slow_stroke_only(tmp_path):
     res = analyze(load_case(CASES / "shaper.toml"))
     stroke = 2 * 0.36 * math.sin(math.pi / 2 - math.acos(0.075 / 0.2))
     W = 2500.0 * 0.9 * stroke
-    assert res.scalars["cycle_work_resistance"] == pytest.approx(-W, rel=1e-9)
-    assert res.scalars["driving_moment"] == pytest.approx(W / (2 * math.pi), rel=1e-9)
+    assert res.scalars.cycle_work_resistance == pytest.approx(-W, rel=1e-9)
+    assert res.scalars.driving_moment == pytest.approx(W / (2 * math.pi), rel=1e-9)
     F = res.columns["F_cutting"].values
     phi = np.degrees(res.phi)
     out = math.degrees(math.pi / 2 - math.acos(0.075 / 0.2))        # outer dead centre, 22.02°

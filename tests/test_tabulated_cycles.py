@@ -52,13 +52,13 @@ def press_720(doc: dict, punch_every_revolution: bool = True) -> dict:
 def test_the_360_table_twice_over_720_is_the_same_flywheel(press_doc):
     r1 = analyze(parse_case(press_doc, "press.toml"), n_points=3600).scalars
     r2 = analyze(parse_case(press_720(press_doc), "press720.toml"), n_points=7200).scalars
-    assert r1["cycle_deg"] == 360 and r2["cycle_deg"] == 720
+    assert r1.cycle_deg == 360 and r2.cycle_deg == 720
     for key in ("driving_moment", "delta_T_max", "J_required", "J_required_exact", "J_flywheel",
                 "omega_max", "omega_min", "delta_achieved", "delta_achieved_exact", "J_II_mean"):
-        assert r2[key] == pytest.approx(r1[key], rel=1e-12), key
+        assert getattr(r2, key) == pytest.approx(getattr(r1, key), rel=1e-12), key
     # the works over the cycle double; the extremes of ω repeat, the first one is reported
-    assert r2["cycle_work_resistance"] == pytest.approx(2 * r1["cycle_work_resistance"], rel=1e-12)
-    assert r2["phi_omega_max_deg"] == pytest.approx(r1["phi_omega_max_deg"], abs=1e-9)
+    assert r2.cycle_work_resistance == pytest.approx(2 * r1.cycle_work_resistance, rel=1e-12)
+    assert r2.phi_omega_max_deg == pytest.approx(r1.phi_omega_max_deg, abs=1e-9)
 
 
 def test_a_press_that_punches_every_second_revolution_balances_its_720_cycle(press_doc):
@@ -80,14 +80,14 @@ def test_a_press_that_punches_every_second_revolution_balances_its_720_cycle(pre
             work += CubicSpline(x, M, bc_type="periodic").integrate(x[0], x[-1])
         else:
             work += float(np.sum((M[1:] + M[:-1]) / 2 * np.diff(x)))
-    assert r["driving_moment"] * 4 * math.pi == pytest.approx(-work, rel=1e-9)
+    assert r.driving_moment * 4 * math.pi == pytest.approx(-work, rel=1e-9)
     # half the punching: less than the 360° press's driving moment, more than half of it
     # (the weights' small net work is per revolution)
     r360 = analyze(parse_case(press_doc, "press.toml"), n_points=3600).scalars
-    assert 0.45 * r360["driving_moment"] < r["driving_moment"] < 0.55 * r360["driving_moment"]
+    assert 0.45 * r360.driving_moment < r.driving_moment < 0.55 * r360.driving_moment
     # one punch per 720° stores the energy of the whole idle revolution: ΔT_нб is larger
-    assert r["delta_T_max"] > r360["delta_T_max"]
-    assert r["cycle_deg"] == 720
+    assert r.delta_T_max > r360.delta_T_max
+    assert r.cycle_deg == 720
 
 
 def test_run_and_check_on_a_720_table(press_doc, tmp_path):

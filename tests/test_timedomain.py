@@ -21,40 +21,40 @@ def compressor():
 
 
 def test_time_integration_repeats_and_matches_the_energy_solution(compressor):
-    v = compressor.scalars["time_domain"]["verification"]
-    assert v["repeat_error"] < 1e-6          # the motion repeats cycle after cycle
-    assert v["max_deviation"] < 1e-6         # and follows ω(φ) of the energy equation
-    assert v["period"] == pytest.approx(compressor.scalars["cycle_time"], rel=1e-6)
+    v = compressor.scalars.time_domain.verification
+    assert v.repeat_error < 1e-6          # the motion repeats cycle after cycle
+    assert v.max_deviation < 1e-6         # and follows ω(φ) of the energy equation
+    assert v.period == pytest.approx(compressor.scalars.cycle_time, rel=1e-6)
 
 
 def test_rundown_energy(compressor):
     """Cut the drive: the loads alone stop the crank. Over whole cycles the loads absorb
     |A_C| per cycle, so the kinetic energy at the cut lasts about T/|A_C| cycles."""
-    rd = compressor.scalars["time_domain"]["rundown"]
-    assert rd["stopped"]
+    rd = compressor.scalars.time_domain.rundown
+    assert rd.stopped
     s = compressor.scalars
-    T_cut = compressor.scalars["T0"]          # total kinetic energy at φ = 0
-    cycles = rd["angle_deg"] / 360
-    assert cycles == pytest.approx(T_cut / -s["cycle_work_resistance"], abs=1.0)
+    T_cut = compressor.scalars.T0          # total kinetic energy at φ = 0
+    cycles = rd.angle_deg / 360
+    assert cycles == pytest.approx(T_cut / -s.cycle_work_resistance, abs=1.0)
 
 
 def test_startup_needs_a_motor():
     r = analyze(_constant_inertia_case(), n_points=360, transients=True)
-    assert r.scalars["time_domain"]["startup"]["computed"] is False
+    assert r.scalars.time_domain.startup.computed is False
 
 
 def test_compressor_case_starts_up_with_its_motor(compressor):
     """cases/compressor.toml has an assumed motor: ω_x = 625 rpm reduced to the crank, so the
     mean speed 600 rpm is at 4 % slip and M_п = M_D/0.04 balances the cycle at ω_m."""
     s = compressor.scalars
-    st = s["time_domain"]["startup"]
-    assert st["converged"] and not st["stalled"]
-    assert 1 - s["omega_mean"] / st["no_load_speed"] == pytest.approx(0.04, rel=1e-12)
-    assert st["omega_final_predicted"] == pytest.approx(s["omega_mean"], rel=1e-9)
-    assert st["omega_mean_steady"] == pytest.approx(s["omega_mean"], abs=s["delta"] / 50 * s["omega_mean"])
+    st = s.time_domain.startup
+    assert st.converged and not st.stalled
+    assert 1 - s.omega_mean / st.no_load_speed == pytest.approx(0.04, rel=1e-12)
+    assert st.omega_final_predicted == pytest.approx(s.omega_mean, rel=1e-9)
+    assert st.omega_mean_steady == pytest.approx(s.omega_mean, abs=s.delta / 50 * s.omega_mean)
     # a fast motor (τ ≈ 0.06 s, less than a cycle of 0.1 s): steady within a few cycles
-    assert st["time_constant"] < s["cycle_time"]
-    assert 0 < st["time_to_steady"] < 1.0 and 1 <= st["cycles_to_steady"] <= 10
+    assert st.time_constant < s.cycle_time
+    assert 0 < st.time_to_steady < 1.0 and 1 <= st.cycles_to_steady <= 10
 
 
 def _constant_inertia_case(motor=None):
@@ -76,17 +76,17 @@ def _constant_inertia_case(motor=None):
 
 def test_constant_inertia_both_methods_agree_and_reach_delta():
     s = analyze(_constant_inertia_case(), n_points=3600).scalars
-    assert s["J_required"] == pytest.approx(s["J_required_exact"], rel=1e-12)
-    assert s["delta_achieved_exact"] == pytest.approx(0.04, rel=1e-4)
+    assert s.J_required == pytest.approx(s.J_required_exact, rel=1e-12)
+    assert s.delta_achieved_exact == pytest.approx(0.04, rel=1e-4)
     # Merzalov takes ω_max² − ω_min² = 2δω_m², true here, so its δ is right to δ²/4-order terms
-    assert s["delta_achieved"] == pytest.approx(0.04, rel=1e-3)
+    assert s.delta_achieved == pytest.approx(0.04, rel=1e-3)
 
 
 def test_exact_size_reaches_delta_on_the_compressor(compressor):
     s = compressor.scalars
-    assert s["delta_achieved_exact"] == pytest.approx(s["delta"], rel=1e-4)
+    assert s.delta_achieved_exact == pytest.approx(s.delta, rel=1e-4)
     # Merzalov's size on the compressor: 0.7 % below the target δ (it overestimates J_I)
-    assert s["delta_achieved"] / s["delta"] - 1 == pytest.approx(-0.0070, abs=5e-4)
+    assert s.delta_achieved / s.delta - 1 == pytest.approx(-0.0070, abs=5e-4)
 
 
 def test_startup_with_a_linear_motor_reaches_the_steady_state():
@@ -94,14 +94,14 @@ def test_startup_with_a_linear_motor_reaches_the_steady_state():
     settles at the speed where the mean motor torque balances the loads (≈ ω_m)."""
     case = _constant_inertia_case(motor={"no_load_speed_rpm": 630.0})
     r = analyze(case, n_points=1440, transients=True)
-    st = r.scalars["time_domain"]["startup"]
-    assert not st["stalled"] and st["converged"]
+    st = r.scalars.time_domain.startup
+    assert not st.stalled and st.converged
     w_m = 2 * math.pi * 10
-    assert st["omega_mean_steady"] == pytest.approx(w_m, rel=2e-3)
-    assert st["time_to_steady"] > 0 and st["cycles_to_steady"] >= 1
+    assert st.omega_mean_steady == pytest.approx(w_m, rel=2e-3)
+    assert st.time_to_steady > 0 and st.cycles_to_steady >= 1
     # M_п from the balance: M_п·(1 − ω_m/ω_x) = M_D
-    assert st["starting_torque"] * (1 - w_m / st["no_load_speed"]) == pytest.approx(
-        r.scalars["driving_moment"], rel=1e-12)
+    assert st.starting_torque * (1 - w_m / st.no_load_speed) == pytest.approx(
+        r.scalars.driving_moment, rel=1e-12)
 
 
 @pytest.mark.parametrize("starting_torque, expected_cycles", [(2000.0, (2, 6)), (50.0, (70, 120))],
@@ -159,12 +159,12 @@ def test_slow_motor_on_a_pulsating_load_reaches_the_motor_line_speed():
     r = analyze(_constant_inertia_case(motor={"no_load_speed_rpm": 1200.0}), n_points=720,
                 transients=True)
     s = r.scalars
-    st = s["time_domain"]["startup"]
-    assert st["converged"]
-    assert st["omega_mean_steady"] == pytest.approx(s["omega_mean"], abs=s["delta"] / 50 * s["omega_mean"])
-    tau = s["J_required"] * st["no_load_speed"] / st["starting_torque"]
-    assert st["time_constant"] == pytest.approx(tau, rel=1e-9)
-    assert st["time_to_steady"] == pytest.approx(tau * math.log(10 / s["delta"]), rel=0.05)
+    st = s.time_domain.startup
+    assert st.converged
+    assert st.omega_mean_steady == pytest.approx(s.omega_mean, abs=s.delta / 50 * s.omega_mean)
+    tau = s.J_required * st.no_load_speed / st.starting_torque
+    assert st.time_constant == pytest.approx(tau, rel=1e-9)
+    assert st.time_to_steady == pytest.approx(tau * math.log(10 / s.delta), rel=0.05)
 
 
 def test_rundown_closed_form_for_constant_resistance():
@@ -199,15 +199,15 @@ def test_rundown_without_net_resistance_is_reported_as_none():
 def test_report_has_the_motion_in_time_section(compressor):
     from flywheel.render.report import report_markdown
 
-    st = compressor.scalars["time_domain"]["startup"]
+    st = compressor.scalars.time_domain.startup
     en = report_markdown(compressor, "en")
     sec = en[en.index("## 7. Motion in time"):en.index("## Warnings")]
     assert "repeats from cycle to cycle to" in sec and "follows ω(φ)" in sec and "cycle time:" in sec
-    assert f"after **{st['time_to_steady']:.4g} s** ({st['cycles_to_steady']} cycles)" in sec
+    assert f"after **{st.time_to_steady:.4g} s** ({st.cycles_to_steady} cycles)" in sec
     assert "run-down after the drive is cut" in sec and "revolutions" in sec
     ru = report_markdown(compressor, "ru")
     sec = ru[ru.index("## 7. Движение во времени"):ru.index("## Предупреждения")]
-    assert f"через **{st['time_to_steady']:.4g} с** (циклов: {st['cycles_to_steady']})" in sec
+    assert f"через **{st.time_to_steady:.4g} с** (циклов: {st.cycles_to_steady})" in sec
     assert "выбег после отключения привода" in sec
     assert "start-up" not in sec and "run-down" not in sec
     # without --transients: no such section
@@ -220,13 +220,16 @@ def test_report_and_summary_say_when_the_steady_state_is_not_reached():
     from flywheel.render.summary import time_domain_lines
 
     r = analyze(_constant_inertia_case(motor={"no_load_speed_rpm": 630.0}), n_points=360, transients=True)
-    st = r.scalars["time_domain"]["startup"]
-    st.update(converged=False, time_to_steady=None, cycles_to_steady=None, omega_mean_steady=None,
-              cycles_run=2000, time_run=150.0, omega_mean_last=60.0,
-              warning="start-up: no steady state after 2000 cycles")
+    from dataclasses import replace
+
+    td = r.time_domain
+    st = replace(td.startup, converged=False, time_to_steady=None, cycles_to_steady=None,
+                 omega_mean_steady=None, cycles_run=2000, time_run=150.0, omega_mean_last=60.0,
+                 warning="start-up: no steady state after 2000 cycles")
+    r = replace(r, time_domain=replace(td, startup=st))
     assert "not reached** within 2000 cycles (150 s)" in report_markdown(r, "en")
     assert "не достигнут** за 2000 циклов" in report_markdown(r, "ru")
-    (line,) = [x for x in time_domain_lines(r.scalars["time_domain"], "en") if x.startswith("start-up")]
+    (line,) = [x for x in time_domain_lines(r.scalars.time_domain, "en") if x.startswith("start-up")]
     assert "NOT reached" in line and "2000 cycles" in line
 
 
@@ -247,7 +250,7 @@ def test_summary_shows_the_flywheel_placement_and_translates_the_time_domain(tmp
         buf = io.StringIO()
         print_summary(r, console=Console(file=buf, width=250), lang=lang)
         out[lang] = buf.getvalue()
-    assert f"i = 4, {s['J_flywheel'] / 16:.6g}" in out["en"]             # J_M/i² on its shaft
+    assert f"i = 4, {s.J_flywheel / 16:.6g}" in out["en"]             # J_M/i² on its shaft
     assert "cast iron, ρ = 7200" in out["en"] and "чугун, ρ = 7200" in out["ru"]
     assert "rim share of J_M" in out["en"] and "0.85" in out["en"]
     assert "start-up from rest" in out["en"] and "run-down after the drive is cut" in out["en"]

@@ -99,7 +99,7 @@ def test_answer_key_equals_a_direct_run_of_each_variant(compressor_dir):
     for vid, answers in key["variants"].items():
         r = analyze(load_case(compressor_dir / f"variant_{vid}.toml"), n_points=RUN_POINTS)
         for name, value in answers.items():
-            assert answer_value(r.scalars, name) == value, (vid, name)
+            assert answer_value(r.to_document()["results"], name) == value, (vid, name)
 
 
 def test_answer_key_equals_task2_of_each_variant(task2_dir):
@@ -121,7 +121,7 @@ def test_the_answer_grid_is_fine_enough(compressor_dir):
     for vid, answers in key["variants"].items():
         r = analyze(load_case(compressor_dir / f"variant_{vid}.toml"))   # default grid
         for name, value in answers.items():
-            assert answer_value(r.scalars, name) == pytest.approx(value, rel=1e-4), (vid, name)
+            assert answer_value(r.to_document()["results"], name) == pytest.approx(value, rel=1e-4), (vid, name)
 
 
 def test_same_seed_same_bytes_other_seed_other_variants(tmp_path, task2_dir):

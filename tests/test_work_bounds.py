@@ -105,12 +105,12 @@ def test_estimates_of_the_bundled_cases_agree_with_their_integration(name):
     J = r.motion.J_I + r.reduction.J_II
     td = r.time_domain
     n_down = timedomain.rundown_cycles(r.phi, J, r.energy.M_known, float(r.motion.omega[0]))
-    assert n_down == pytest.approx(td.rundown["angle_deg"] / 360, rel=0.25)
+    assert n_down == pytest.approx(td.rundown.angle_deg / 360, rel=0.25)
     if c.motor is not None:
         m = c.machine
-        motor = timedomain.linear_motor(td.startup["starting_torque"], td.startup["no_load_speed"])
+        motor = timedomain.linear_motor(td.startup.starting_torque, td.startup.no_load_speed)
         n_up = timedomain.startup_cycles(r.phi, J, r.energy.M_known, motor, m.omega_mean, m.delta)
-        assert n_up == pytest.approx(td.startup["cycles_to_steady"], rel=0.25)
+        assert n_up == pytest.approx(td.startup.cycles_to_steady, rel=0.25)
 
 
 def test_aggregate_step_estimate_against_the_solver():

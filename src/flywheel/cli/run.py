@@ -17,10 +17,17 @@ from flywheel.cli.options import CsvStyle, Json, Lang, Reports, note, warn
 from flywheel.errors import Notice
 
 
-def schema_command() -> None:
-    """Print the JSON Schema of case files (for editors: completion and checking)."""
+def schema_command(results: bool = typer.Option(
+        False, "--results", help="The JSON Schema of a run's summary.json instead (docs/results.md).")) -> None:
+    """Print the JSON Schema of case files (for editors: completion and checking), or with
+    --results that of summary.json."""
     import json
 
+    if results:
+        from flywheel.dynamics.results import summary_json_schema
+
+        typer.echo(json.dumps(summary_json_schema(), indent=2, ensure_ascii=False))
+        return
     from flywheel.cases.run import case_json_schema
 
     typer.echo(json.dumps(case_json_schema(), indent=2, ensure_ascii=False))

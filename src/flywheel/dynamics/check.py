@@ -54,7 +54,7 @@ def check_case(case) -> CheckReport:
     from flywheel.dynamics.pipeline import analyze
 
     n1 = case.machine.omega_mean / (2 * math.pi)
-    firing = analyze(case, n_points=360).scalars.get("firing_deg")
+    firing = analyze(case, n_points=360).scalars.firing_deg
     if case.tabulated is not None:
         return CheckReport(case=case, crank_speed_rps=n1, tabulated=_tabulated(case))
 

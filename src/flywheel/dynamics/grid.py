@@ -10,6 +10,7 @@ from dataclasses import replace
 import numpy as np
 
 from flywheel.dynamics import loads
+from flywheel.dynamics.results import DeadCentre, Position
 from flywheel.errors import InputError, Notice, led
 from flywheel.linkage import Kinematics, LinkMotion, PointMotion, solve
 from flywheel.linkage.deadcentres import dead_centres, guide_frame, slider_dyad
@@ -67,25 +68,27 @@ def position_number(phi: float) -> int | None:
     return int(round(k)) if abs(k - round(k)) < 1e-6 else None
 
 
-def standard_positions(mech, cycle: float = 2 * np.pi) -> tuple[list[tuple[str, float]], dict]:
+def standard_positions(mech, cycle: float = 2 * np.pi) -> tuple[list[Position], dict]:
     """The standard positions over the cycle ``cycle`` [rad], by angle: every 30° (12 over 360°,
     24 over 720°, as course projects number them) and the dead centres of every slider in every
-    revolution, a dead centre on a 30° position sharing its row (label "90° = 3 outer d.c.").
-    Returns ([(label, φ [rad])], {slider: [DeadCentre] of one revolution})."""
+    revolution, a dead centre on a 30° position (or on another dead centre) sharing its row
+    (label "90° = 3 outer d.c."). Returns ([Position], {slider: [DeadCentre] of one revolution})."""
     sliders = [d.slider for d in mech.dyads if hasattr(d, "guide")]
     dcs = {s: dead_centres(mech, s) for s in sliders}
     revs = int(round(cycle / (2 * np.pi)))
-    positions = [(f"{k * 30}°", math.radians(k * 30)) for k in range(12 * revs)]
+    positions = [Position(phi=math.radians(k * 30), number=position_number(math.radians(k * 30)),
+                          standard_deg=k * 30) for k in range(12 * revs)]
     for s, lst in dcs.items():
         for dc in (replace(dc, phi=dc.phi + 2 * np.pi * r) for r in range(revs) for dc in lst):
-            label = f"{s} {dc.kind} d.c."
-            same = [i for i, (_, ph) in enumerate(positions) if abs(ph - dc.phi) < 1e-9]
+            mark = DeadCentre(s, dc.kind)
+            same = [i for i, p in enumerate(positions) if abs(p.phi - dc.phi) < 1e-9]
             if same:     # a dead centre on a standard position: one row, both names
                 i = same[0]
-                positions[i] = (f"{positions[i][0]} = {label}", positions[i][1])
+                positions[i] = replace(positions[i], dead_centres=positions[i].dead_centres + (mark,))
             else:
-                positions.append((label, dc.phi))
-    positions.sort(key=lambda p: p[1])
+                positions.append(Position(phi=dc.phi, number=position_number(dc.phi),
+                                          dead_centres=(mark,)))
+    positions.sort(key=lambda p: p.phi)
     return positions, dcs
 
 

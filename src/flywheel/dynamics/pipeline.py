@@ -21,8 +21,9 @@ from flywheel.dynamics.columns import linkage_columns
 from flywheel.dynamics.engine import firing_angles, four_stroke_cylinder
 from flywheel.dynamics.grid import (DEFAULT_POINTS, grid_options, linkage_grid, report_index,
                                     slider_frame, standard_positions)
-from flywheel.dynamics.results import (CylinderResult, EnergyResult, LoadsResult, MotionResult,
-                                       ReductionResult, Results, warnings_of)
+from flywheel.dynamics.results import (AtAngle, CylinderResult, EnergyResult, LinkAt, LoadsResult,
+                                       MotionResult, PointAt, ReductionResult, Results,
+                                       warnings_of, with_forces)
 from flywheel.errors import InputError, Notice
 from flywheel.linkage.drawing import describe, links_drawn
 from flywheel.units import PA_PER_MPA
@@ -50,7 +51,7 @@ def analyze(case, n_points: int = DEFAULT_POINTS, at_deg: list[float] | None = N
     mech = case.mechanism()
     positions, dcs = standard_positions(mech, case.machine.cycle)
     phi, kin = linkage_grid(case, mech, dcs, n_points,
-                            [p for _, p in positions] + [math.radians(a) for a in at_deg])
+                            [p.phi for p in positions] + [math.radians(a) for a in at_deg])
     ld = linkage_loads(case, mech, dcs, kin)
     red = linkage_reduction(case, kin)
     en, sz, mo = stages.dynamics(phi, ld, red, case.machine, case.flywheel)
@@ -62,7 +63,8 @@ def analyze(case, n_points: int = DEFAULT_POINTS, at_deg: list[float] | None = N
     return Results(
         title=case.title, source=case.source, phi=phi, kinematics=kin, loads=ld, reduction=red,
         energy=en, sizing=sz, motion=mo,
-        columns=linkage_columns(phi, kin, mech.crank.name, ld, red, en, mo), at=at,
+        columns=linkage_columns(phi, kin, mech.crank.name, ld, red, en, mo),
+        at=with_forces(at, fo, phi),
         position_angles=tuple(positions), links_drawn=links_drawn(mech),
         crank_length=float(mech.crank.length), time_domain=td, forces=fo, plans=pl,
         drawing=describe(mech, kin),
@@ -176,8 +178,8 @@ def linkage_reduction(case, kin) -> ReductionResult:
 
 
 def report_angles(at_deg: list[float], kin, ld: LoadsResult, red: ReductionResult,
-                  en: EnergyResult, mo: MotionResult) -> tuple[dict, ...]:
-    """summary.json's "at": at each report angle [deg] the crank's ω and ε, J_II, the moments
+                  en: EnergyResult, mo: MotionResult) -> tuple[AtAngle, ...]:
+    """summary.json's "at" (without the force analysis: :func:`results.with_forces`): at each report angle [deg] the crank's ω and ε, J_II, the moments
     and forces, and every point's and link's true velocity and acceleration
     (v = v_q·ω, a = a_q·ω² + v_q·ε; ω_i = ω_q·ω, ε_i = ε_q·ω² + ω_q·ε)."""
     out = []
@@ -188,28 +190,25 @@ def report_angles(at_deg: list[float], kin, ld: LoadsResult, red: ReductionResul
         for name, pm in kin.points.items():
             v_vec = pm.v_q[i] * w
             a_vec = pm.a_q[i] * w**2 + pm.v_q[i] * e
-            pts[name] = {
-                "x": float(pm.r[i, 0]), "y": float(pm.r[i, 1]),
-                "v_q": float(np.hypot(*pm.v_q[i])), "a_q": float(np.hypot(*pm.a_q[i])),
-                "v": float(np.hypot(*v_vec)), "a": float(np.hypot(*a_vec)),
-                "v_x": float(v_vec[0]), "v_y": float(v_vec[1]),
-                "a_x": float(a_vec[0]), "a_y": float(a_vec[1]),
-            }
+            pts[name] = PointAt(
+                x=float(pm.r[i, 0]), y=float(pm.r[i, 1]),
+                v_q=float(np.hypot(*pm.v_q[i])), a_q=float(np.hypot(*pm.a_q[i])),
+                v=float(np.hypot(*v_vec)), a=float(np.hypot(*a_vec)),
+                v_x=float(v_vec[0]), v_y=float(v_vec[1]),
+                a_x=float(a_vec[0]), a_y=float(a_vec[1]))
         lks = {}
         for name, lm in kin.links.items():
-            lks[name] = {
-                "omega_q": float(lm.omega_q[i]), "epsilon_q": float(lm.eps_q[i]),
-                "omega": float(lm.omega_q[i] * w),
-                "epsilon": float(lm.eps_q[i] * w**2 + lm.omega_q[i] * e),
-            }
-        out.append({
-            "phi_deg": float(a), "omega": w, "epsilon": e,
-            "J_II": float(red.J_II[i]), "dJ_II": float(red.dJ_II[i]), "M_sum": float(en.M_sum[i]),
-            "moments": {k: float(v[i]) for k, v in ld.M_parts.items()},
-            "forces": {**{c.name: float(c.F[i]) for c in ld.cylinders},     # gas, then technological
-                       **{k: float(F[i]) for k, F in ld.forces.items()}},
-            "points": pts, "links": lks,
-        })
+            lks[name] = LinkAt(
+                omega_q=float(lm.omega_q[i]), epsilon_q=float(lm.eps_q[i]),
+                omega=float(lm.omega_q[i] * w),
+                epsilon=float(lm.eps_q[i] * w**2 + lm.omega_q[i] * e))
+        out.append(AtAngle(
+            phi_deg=float(a), omega=w, epsilon=e,
+            J_II=float(red.J_II[i]), dJ_II=float(red.dJ_II[i]), M_sum=float(en.M_sum[i]),
+            moments={k: float(v[i]) for k, v in ld.M_parts.items()},
+            forces={**{c.name: float(c.F[i]) for c in ld.cylinders},     # gas, then technological
+                    **{k: float(F[i]) for k, F in ld.forces.items()}},
+            points=pts, links=lks))
     return tuple(out)
 
 

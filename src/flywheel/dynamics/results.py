@@ -8,10 +8,12 @@ are on the run's closed φ grid (``Results.phi``).
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
+from functools import cached_property
 
 import numpy as np
 
+from flywheel.dynamics.serialize import json_schema, to_json
 from flywheel.dynamics.sizing import RimDesign
 from flywheel.linkage.drawing import Drawing
 
@@ -117,13 +119,11 @@ class FlywheelShape:
     D_inner: float | None = None      # inner diameter of a rim [m]
     rim_speed: float | None = None    # peripheral speed at ω_max [m/s] (after the motion)
 
+    DOCUMENT = ("D", "D_inner", "b", "mass", "rim_speed")   # summary.json's flywheel_disk / _rim
+
     def as_dict(self) -> dict:
         """summary.json's flywheel_disk / flywheel_rim."""
-        out = {"D": self.D} if self.D_inner is None else {"D": self.D, "D_inner": self.D_inner}
-        out.update(b=self.b, mass=self.mass)
-        if self.rim_speed is not None:
-            out["rim_speed"] = self.rim_speed
-        return out
+        return to_json(self)
 
 
 @dataclass(frozen=True)
@@ -180,21 +180,105 @@ class MotionResult:
     warnings: tuple[str, ...] = ()
 
 
+@dataclass(frozen=True, kw_only=True)
+class Verification:
+    """The steady motion integrated in time (timedomain.verify_steady): over ``cycles`` cycles,
+    the relative repeat error of the cycle start speeds [-], the largest relative deviation
+    from ω(φ) [-], and the period [s]."""
+
+    cycles: int
+    repeat_error: float
+    max_deviation: float
+    period: float
+
+
+@dataclass(frozen=True, kw_only=True)
+class StartupNotComputed:
+    """No start-up: the case has no [motor] (``reason`` says why)."""
+
+    computed: bool = False
+    reason: str
+
+
+@dataclass(frozen=True, kw_only=True)
+class StartupStalled:
+    """The motor cannot start the machine: it stops at ``stall_angle_deg`` [deg] after
+    ``time`` [s] (timedomain.startup); the motor line's M_п [N·m] and ω_x [rad/s]."""
+
+    stalled: bool = True
+    converged: bool = False
+    stall_angle_deg: float
+    time: float
+    omega_final_predicted: float | None      # the motor line's steady speed [rad/s]
+    time_constant: float | None              # τ = J̄/(M_п/ω_x) [s]
+    warning: str
+    starting_torque: float
+    no_load_speed: float
+
+    KEEP_NONE = ("omega_final_predicted", "time_constant")
+
+    @property
+    def computed(self) -> bool:
+        return True
+
+
+@dataclass(frozen=True, kw_only=True)
+class StartupRun:
+    """The start-up from rest (timedomain.startup): the cycles run and their time [s], the last
+    cycle-mean speed [rad/s]; converged: when [s] and after how many cycles the cycle means
+    enter the band ±δ/10 for good and their limit [rad/s] (None when not converged, then
+    ``warning`` says how far it got); the motor line's M_п [N·m] and ω_x [rad/s]."""
+
+    stalled: bool = False
+    converged: bool
+    omega_final_predicted: float | None
+    time_constant: float | None
+    omega_mean_last: float
+    cycles_run: int
+    time_run: float
+    time_to_steady: float | None = None
+    cycles_to_steady: int | None = None
+    omega_mean_steady: float | None = None
+    warning: str | None = None
+    starting_torque: float
+    no_load_speed: float
+
+    KEEP_NONE = ("omega_final_predicted", "time_constant", "time_to_steady", "cycles_to_steady",
+                 "omega_mean_steady")
+
+    @property
+    def computed(self) -> bool:
+        return True
+
+
+@dataclass(frozen=True, kw_only=True)
+class Rundown:
+    """The run-down after the drive is cut (timedomain.rundown): time [s] and crank rotation
+    [deg] to standstill; ``reason`` why it never runs down (then ``stopped`` is False)."""
+
+    stopped: bool
+    time: float
+    angle_deg: float
+    reason: str | None = None
+
+
 @dataclass(frozen=True)
 class TimeDomainResult:
-    """--transients: the equation of motion integrated in time (JSON-ready dicts, see
+    """--transients: the equation of motion integrated in time (see
     :mod:`flywheel.dynamics.timedomain`) and the histories for the plots."""
 
-    verification: dict           # of verify_steady: cycles, repeat_error, max_deviation, period [s]
-    startup: dict                # of startup (or why not computed), with the motor's M_п, ω_x
-    rundown: dict                # of rundown: time [s], angle_deg, stopped
+    verification: Verification
+    startup: StartupNotComputed | StartupStalled | StartupRun
+    rundown: Rundown
     histories: dict              # "startup" / "rundown" → (t [s], ω [rad/s])
     startup_cycle_means: tuple | None = None   # (t [s], cycle-mean ω [rad/s]) of the start-up
     warnings: tuple[str, ...] = ()
 
+    DOCUMENT = ("verification", "startup", "rundown")      # summary.json's results.time_domain
+
     def as_dict(self) -> dict:
         """summary.json's results.time_domain."""
-        return {"verification": self.verification, "startup": self.startup, "rundown": self.rundown}
+        return to_json(self)
 
 
 @dataclass(frozen=True)
@@ -210,9 +294,179 @@ class TabulatedResult:
     M_dyn: np.ndarray                 # dynamic moment Мдин = ω_m²/2·dJ_II/dφ [N·m]
 
 
-def _vector_entry(x: float, y: float) -> dict:
-    """{"F": |F|, "Fx", "Fy", "angle_deg"} of a force [N] (angle from +x, ccw, in (−180°, 180°])."""
-    return {"F": math.hypot(x, y), "Fx": x, "Fy": y, "angle_deg": math.degrees(math.atan2(y, x))}
+@dataclass(frozen=True)
+class DeadCentre:
+    """A slider's dead centre at a standard position: the slider link and which end of its
+    travel, "outer" or "inner" (flywheel.linkage.deadcentres)."""
+
+    slider: str
+    kind: str
+
+
+@dataclass(frozen=True, kw_only=True)
+class Position:
+    """A standard position of the run (positions.csv, the report's tables, plan_positions.png):
+    the crank angle φ [rad]; the course's number (:func:`flywheel.dynamics.grid.position_number`:
+    0 … 11 every 30°, 0 … 23 over 720°; None off the 30° grid and for a tabulated case); the
+    30° position's angle [deg] it is (None for a dead centre between them); the sliders' dead
+    centres there; a tabulated case's row (1-based) and its angle [deg] instead."""
+
+    phi: float
+    number: int | None = None
+    standard_deg: int | None = None
+    dead_centres: tuple[DeadCentre, ...] = ()
+    table_row: int | None = None
+    table_deg: float | None = None
+
+    def parts(self) -> tuple[str | DeadCentre, ...]:
+        """What the position is, in order: the angle ("90°") or the table's row ("2 (30°)"),
+        then each dead centre; the label joins them with " = "."""
+        head = (() if self.standard_deg is None else (f"{self.standard_deg}°",)) + (
+            () if self.table_row is None else (f"{self.table_row} ({self.table_deg:g}°)",))
+        return head + self.dead_centres
+
+    @property
+    def label(self) -> str:
+        """The English label, positions.csv's ``position``: "90°", "90° = 3 outer d.c.",
+        "5 inner d.c.", a table's "2 (30°)"."""
+        return " = ".join(p if isinstance(p, str) else f"{p.slider} {p.kind} d.c."
+                          for p in self.parts())
+
+
+@dataclass(frozen=True, kw_only=True)
+class PointAt:
+    """A point at a report angle (summary.json's results.at[k].points): position [m], the
+    analogues |v_q| [m/rad] and |a_q| [m/rad²], the true speed [m/s] and acceleration [m/s²] and
+    their components. A tabulated case gives only v_q and v (the rest None, left out)."""
+
+    x: float | None = None
+    y: float | None = None
+    v_q: float
+    a_q: float | None = None
+    v: float
+    a: float | None = None
+    v_x: float | None = None
+    v_y: float | None = None
+    a_x: float | None = None
+    a_y: float | None = None
+
+
+@dataclass(frozen=True, kw_only=True)
+class LinkAt:
+    """A link at a report angle: the analogues ω_q [-], ε_q [1/rad] and the true ω [rad/s],
+    ε [rad/s²]. A tabulated case gives only omega_q and omega."""
+
+    omega_q: float
+    epsilon_q: float | None = None
+    omega: float
+    epsilon: float | None = None
+
+
+@dataclass(frozen=True)
+class VectorAt:
+    """A force at a report angle: magnitude |F| [N], components [N], its angle from +x,
+    counter-clockwise, in (−180°, 180°] [deg]."""
+
+    F: float
+    Fx: float
+    Fy: float
+    angle_deg: float
+
+    @classmethod
+    def of(cls, x: float, y: float) -> VectorAt:
+        """The force (x, y) [N]."""
+        return cls(math.hypot(x, y), x, y, math.degrees(math.atan2(y, x)))
+
+
+@dataclass(frozen=True, kw_only=True)
+class JointAt:
+    """A joint reaction at a report angle (docs/forces.md): at ``point``, of link ``by`` on
+    link ``on``; for a sliding pair also the normal force [N] and its offset along the guide [m]."""
+
+    point: str
+    by: str
+    on: str
+    F: float
+    Fx: float
+    Fy: float
+    angle_deg: float
+    normal: float | None = None
+    offset: float | None = None
+
+
+@dataclass(frozen=True, kw_only=True)
+class CrankPinAt:
+    """The links' force on the crank pin [N] with its parts along the pin's velocity
+    (tangential, positive drives) and along the crank towards the shaft (radial)."""
+
+    F: float
+    Fx: float
+    Fy: float
+    angle_deg: float
+    tangential: float
+    radial: float
+
+
+@dataclass(frozen=True, kw_only=True)
+class SliderCrankAt:
+    """The slider-crank quantities of one slider at a report angle [N; N·m] (forces.SliderCrank)."""
+
+    rod: str
+    piston_effort: float
+    side_thrust: float
+    rod_thrust: float
+    crank_pin_x: float
+    crank_pin_y: float
+    crank_pin_tangential: float
+    crank_pin_radial: float
+    turning_moment: float
+
+
+@dataclass(frozen=True, kw_only=True)
+class BalancingMomentAt:
+    """M_y at a report angle [N·m]: kinetostatic, by Zhukovsky's lever, by the power balance
+    (a tabulated case: the power balance only)."""
+
+    kinetostatic: float | None = None
+    zhukovsky: float | None = None
+    power: float
+
+
+@dataclass(frozen=True, kw_only=True)
+class AtAngle:
+    """One report angle (summary.json's results.at[k], docs/results.md): the crank's ω [rad/s]
+    and ε [rad/s²], J_II [kg·m²] and dJ_II/dφ, M_Σ and each load's reduced moment [N·m]
+    (by load name), the given forces [N], every point and link; a tabulated case adds the
+    seed's M_st and M_dyn and has no forces. With a force analysis: M_y three ways, the joint
+    reactions from the crank outwards, the slider-crank quantities, the main bearing's and the
+    crank pin's loads, the shaking force and moment."""
+
+    phi_deg: float
+    omega: float
+    epsilon: float
+    J_II: float
+    dJ_II: float
+    M_sum: float
+    M_st: float | None = None
+    M_dyn: float | None = None
+    moments: dict[str, float]
+    forces: dict[str, float] | None = None
+    points: dict[str, PointAt]
+    links: dict[str, LinkAt]
+    balancing_moment: BalancingMomentAt | None = None
+    joints: dict[str, JointAt] | None = None
+    slider_crank: dict[str, SliderCrankAt] | None = None
+    main_bearing_load: VectorAt | None = None
+    crank_pin_load: CrankPinAt | None = None
+    shaking_force: VectorAt | None = None
+    shaking_moment: float | None = None
+
+
+def with_forces(at: tuple[AtAngle, ...], forces: ForceResult, phi: np.ndarray) -> tuple[AtAngle, ...]:
+    """The report angles ``at`` with the force analysis at each one's node of the grid ``phi``."""
+    cycle = float(phi[-1] - phi[0])
+    return tuple(replace(a, **forces.at_entry(
+        int(np.argmin(np.abs(phi - math.radians(a.phi_deg) % cycle))))) for a in at)
 
 
 @dataclass(frozen=True)
@@ -259,60 +513,149 @@ class ForceResult:
             return {}
         return dict(reversed(self.analysis.slider_crank.items()))
 
+    def summary(self) -> ForceSummary:
+        """summary.json's results.force_analysis, typed."""
+        M = self.M_y
+        fa = self.analysis
+        return ForceSummary(
+            motion=self.motion, omega=float(self.omega[0]) if self.motion == "steady" else None,
+            closure_reference=self.closure_reference,
+            balancing_moment_cycle_mean=self.M_y_cycle_mean,
+            balancing_moment_max=float(np.max(M)), balancing_moment_min=float(np.min(M)),
+            main_bearing_load_max=None if fa is None else float(np.max(fa.main_bearing_load.magnitude)),
+            crank_pin_load_max=None if fa is None else float(np.max(np.hypot(*self.crank_pin_load.T))),
+            shaking_force_max=None if fa is None else float(np.max(np.hypot(*fa.shaking_force.T))),
+            shaking_moment_max=None if fa is None else float(np.max(np.abs(fa.shaking_moment))),
+            note=self.note or None)
+
     def as_dict(self) -> dict:
         """summary.json's results.force_analysis."""
-        M = self.M_y
-        out: dict = {"motion": self.motion}
-        if self.motion == "steady":
-            out["omega"] = float(self.omega[0])
-        out.update(closure_reference=self.closure_reference,
-                   balancing_moment_cycle_mean=self.M_y_cycle_mean,
-                   balancing_moment_max=float(np.max(M)), balancing_moment_min=float(np.min(M)))
-        fa = self.analysis
-        if fa is not None:
-            out.update(
-                main_bearing_load_max=float(np.max(fa.main_bearing_load.magnitude)),
-                crank_pin_load_max=float(np.max(np.hypot(*self.crank_pin_load.T))),
-                shaking_force_max=float(np.max(np.hypot(*fa.shaking_force.T))),
-                shaking_moment_max=float(np.max(np.abs(fa.shaking_moment))))
-        if self.note:
-            out["note"] = self.note
-        return out
+        return to_json(self.summary())
 
     def at_entry(self, i: int) -> dict:
-        """What summary.json's results.at[k] gains at grid node i (docs/results.md)."""
+        """What a report angle (:class:`AtAngle`) gains at grid node i: its force-analysis
+        fields, by name (docs/results.md)."""
         fa = self.analysis
         if fa is None:
-            return {"balancing_moment": {"power": float(self.M_y_power[i])}}
-        out: dict = {"balancing_moment": {"kinetostatic": float(fa.balancing_moment[i]),
-                                          "zhukovsky": float(self.M_y_zhukovsky[i]),
-                                          "power": float(self.M_y_power[i])}}
+            return {"balancing_moment": BalancingMomentAt(power=float(self.M_y_power[i]))}
+        out: dict = {"balancing_moment": BalancingMomentAt(
+            kinetostatic=float(fa.balancing_moment[i]), zhukovsky=float(self.M_y_zhukovsky[i]),
+            power=float(self.M_y_power[i]))}
         joints = {}
         for key, r in self.joints.items():
-            e = {"point": r.joint, "by": r.by, "on": r.on, **_vector_entry(float(r.x[i]), float(r.y[i]))}
-            s = fa.slides.get(key)
-            if s is not None:
-                e.update(normal=float(s.normal[i]), offset=float(s.offset[i]))
-            joints[key] = e
+            v = VectorAt.of(float(r.x[i]), float(r.y[i]))
+            sl = fa.slides.get(key)
+            joints[key] = JointAt(point=r.joint, by=r.by, on=r.on, F=v.F, Fx=v.Fx, Fy=v.Fy,
+                                  angle_deg=v.angle_deg,
+                                  normal=None if sl is None else float(sl.normal[i]),
+                                  offset=None if sl is None else float(sl.offset[i]))
         out["joints"] = joints
         if fa.slider_crank:
-            out["slider_crank"] = {name: {
-                "rod": sc.rod, "piston_effort": float(sc.piston_effort[i]),
-                "side_thrust": float(sc.side_thrust[i]), "rod_thrust": float(sc.rod_thrust[i]),
-                "crank_pin_x": float(sc.crank_pin_x[i]), "crank_pin_y": float(sc.crank_pin_y[i]),
-                "crank_pin_tangential": float(sc.crank_pin_tangential[i]),
-                "crank_pin_radial": float(sc.crank_pin_radial[i]),
-                "turning_moment": float(sc.turning_moment[i])} for name, sc in self.slider_crank.items()}
+            out["slider_crank"] = {name: SliderCrankAt(
+                rod=sc.rod, piston_effort=float(sc.piston_effort[i]),
+                side_thrust=float(sc.side_thrust[i]), rod_thrust=float(sc.rod_thrust[i]),
+                crank_pin_x=float(sc.crank_pin_x[i]), crank_pin_y=float(sc.crank_pin_y[i]),
+                crank_pin_tangential=float(sc.crank_pin_tangential[i]),
+                crank_pin_radial=float(sc.crank_pin_radial[i]),
+                turning_moment=float(sc.turning_moment[i])) for name, sc in self.slider_crank.items()}
         mb = fa.main_bearing_load
-        out["main_bearing_load"] = _vector_entry(float(mb.x[i]), float(mb.y[i]))
-        P = self.crank_pin_load[i]
-        out["crank_pin_load"] = {**_vector_entry(float(P[0]), float(P[1])),
-                                 "tangential": float(self.crank_pin_tangential[i]),
-                                 "radial": float(self.crank_pin_radial[i])}
+        out["main_bearing_load"] = VectorAt.of(float(mb.x[i]), float(mb.y[i]))
+        P = VectorAt.of(float(self.crank_pin_load[i][0]), float(self.crank_pin_load[i][1]))
+        out["crank_pin_load"] = CrankPinAt(F=P.F, Fx=P.Fx, Fy=P.Fy, angle_deg=P.angle_deg,
+                                           tangential=float(self.crank_pin_tangential[i]),
+                                           radial=float(self.crank_pin_radial[i]))
         Sx, Sy = fa.shaking_force[i]
-        out["shaking_force"] = _vector_entry(float(Sx), float(Sy))
+        out["shaking_force"] = VectorAt.of(float(Sx), float(Sy))
         out["shaking_moment"] = float(fa.shaking_moment[i])
         return out
+
+
+@dataclass(frozen=True, kw_only=True)
+class ForceSummary:
+    """summary.json's results.force_analysis: the force analysis over the cycle (docs/results.md).
+    Moments [N·m], forces [N]; the joint-reaction maxima are None for a tabulated case."""
+
+    motion: str                          # "true" or "steady"
+    omega: float | None = None           # steady motion: the constant ω used [rad/s]
+    closure_reference: str               # "M_D" or "J_I·ε" (ForceResult.closure_reference)
+    balancing_moment_cycle_mean: float   # (1/Φ)∮M_y dφ [N·m]
+    balancing_moment_max: float          # [N·m]
+    balancing_moment_min: float          # [N·m]
+    main_bearing_load_max: float | None = None   # [N]
+    crank_pin_load_max: float | None = None      # [N]
+    shaking_force_max: float | None = None       # [N]
+    shaking_moment_max: float | None = None      # [N·m]
+    note: str | None = None              # why there are no joint reactions (tabulated case)
+
+
+@dataclass(frozen=True, kw_only=True)
+class Headline:
+    """summary.json's "results" without "at": the run's headline scalars, in the document's
+    order (docs/results.md; the keys are the field names). A group that does not apply is None
+    and left out of the document: the tabulated kinematics, the firing angles of four-stroke
+    cylinders, a given flywheel's J and ε extremes, the given power, the time domain, the
+    force analysis. SI units; angles ``*_deg`` in degrees."""
+
+    crank_length: float                          # [m]; NaN (null) if a table gives none
+    kinematics: str | None = None                # "tabulated"
+    tabulated_interpolation: str | None = None   # J_II's interpolation kind
+    tabulated_positions_deg: tuple[float, ...] | None = None   # the table's positions [deg]
+    omega_mean: float                            # ω_m [rad/s]
+    n_points: int                                # grid nodes
+    cycle_deg: int                               # the cycle Φ [deg]: 360, 720
+    firing_deg: dict[str, float] | None = None   # cylinder → where it fires [deg], firing order
+    cycle_work_resistance: float                 # A_C over the cycle [J]
+    driving_moment: float                        # M_D [N·m]
+    balancing_moment: float                      # the constant moment closing the work [N·m]
+    balance: str                                 # "driving" or "resistance"
+    delta: float                                 # δ [-] (given flywheel: the δ it gives)
+    flywheel_given: bool | None = None           # True when the flywheel was given
+    J_flywheel_given: float | None = None        # [kg·m²] on its own shaft
+    epsilon_max: float | None = None             # given flywheel: ε's extremes [rad/s²] …
+    phi_epsilon_max_deg: float | None = None     # … and their first angles [deg]
+    epsilon_min: float | None = None
+    phi_epsilon_min_deg: float | None = None
+    power: float | None = None                   # the given mean power [W]
+    power_moment: float | None = None            # P/ω_m [N·m]
+    power_from_loads: float | None = None        # |balancing_moment|·ω_m [W]
+    delta_T_max: float                           # ΔT_нб [J]
+    delta_T_I_max: float                         # [J]
+    phi_delta_T_I_max_deg: float                 # [deg]
+    delta_T_I_min: float                         # [J]
+    phi_delta_T_I_min_deg: float                 # [deg]
+    J_II_mean: float                             # [kg·m²]
+    J_II_min: float
+    J_II_max: float
+    J_first_group: float
+    J_required: float
+    J_required_exact: float
+    J_flywheel: float
+    J_flywheel_exact: float
+    delta_achieved: float                        # [-]
+    delta_achieved_exact: float
+    omega_max: float                             # [rad/s]
+    phi_omega_max_deg: float                     # [deg]
+    omega_min: float
+    phi_omega_min_deg: float
+    T0: float                                    # [J]
+    cycle_time: float                            # [s]
+    flywheel_disk: FlywheelShape
+    flywheel_rim: FlywheelShape | RimDesign      # RimDesign: the rim of [flywheel.rim]
+    flywheel_material: str
+    flywheel_material_density: float             # [kg/m³]
+    flywheel_speed_ratio: float                  # [-]
+    flywheel_J_on_its_shaft: float               # [kg·m²]
+    flywheel_rim_share: float                    # [-]
+    flywheel_rim_speed_limit: float              # [m/s]
+    flywheel_formulas: str                       # "first-principles" or "course"
+    time_domain: TimeDomainResult | None = None  # --transients
+    balancing_moment_closure: float | None = None   # ForceResult.closure [-]
+    force_analysis: ForceSummary | None = None
+
+    @property
+    def rim_designed(self) -> bool:
+        """The rim is the designed rim of [flywheel.rim] (a RimDesign), not the plain one."""
+        return isinstance(self.flywheel_rim, RimDesign)
 
 
 def warnings_of(*stages) -> tuple[str, ...]:
@@ -348,8 +691,8 @@ class Results:
     sizing: SizingResult
     motion: MotionResult
     columns: dict[str, Column]               # table.csv, in order
-    at: tuple[dict, ...]                     # summary.json "results.at" (JSON-ready)
-    position_angles: tuple[tuple[str, float], ...]   # (label, φ [rad]) of the standard positions
+    at: tuple[AtAngle, ...]                  # summary.json "results.at", with the force analysis
+    position_angles: tuple[Position, ...]    # the standard positions, by φ
     links_drawn: tuple[tuple[str, tuple[str, ...]], ...]  # (link, its points) for the scheme
     crank_length: float                      # [m]; NaN if a table gives none
     tabulated: TabulatedResult | None = None
@@ -370,14 +713,10 @@ class Results:
         return int(round(math.degrees(self.cycle)))
 
     def position_numbers(self) -> tuple[int | None, ...]:
-        """The course's number of each of ``position_angles`` (:func:`flywheel.dynamics.grid.
-        position_number`: 0 … 11 every 30°, as plan_positions.png numbers them); None for a
-        dead centre between them and for every position of a tabulated case (no drawing)."""
-        from flywheel.dynamics.grid import position_number
-
-        if self.kinematics is None:
-            return (None,) * len(self.position_angles)
-        return tuple(position_number(phi) for _, phi in self.position_angles)
+        """The course's number of each of ``position_angles`` (Position.number: 0 … 11 every
+        30°, as plan_positions.png numbers them); None for a dead centre between them and for
+        every position of a tabulated case (no drawing)."""
+        return tuple(p.number for p in self.position_angles)
 
     def index_of(self, phi: float) -> int:
         """Grid index of the node at angle ``phi`` [rad] (report angles are grid nodes)."""
@@ -399,69 +738,50 @@ class Results:
     def cylinders(self) -> tuple[CylinderResult, ...]:
         return self.loads.cylinders
 
-    @property
-    def scalars(self) -> dict:
-        """summary.json's "results" without "at", by its names, before JSON cleaning (NaN kept)."""
+    @cached_property
+    def scalars(self) -> Headline:
+        """summary.json's "results" without "at", typed (NaN kept), built once."""
         e, r, s, m = self.energy, self.reduction, self.sizing, self.motion
-        out: dict = {"crank_length": self.crank_length}
-        if self.tabulated is not None:
-            out.update(kinematics="tabulated", tabulated_interpolation=self.tabulated.interpolation,
-                       tabulated_positions_deg=list(self.tabulated.positions_deg))
-        out.update({
-            "omega_mean": s.omega_mean,
-            "n_points": int(self.phi.size),
-            "cycle_deg": self.cycle_deg,
-            **self._firing(),
-            "cycle_work_resistance": e.cycle_work_resistance,
-            "driving_moment": e.driving_moment,
-            "balancing_moment": e.balancing_moment,
-            "balance": e.balance,
-            "delta": s.delta,
-            **({"flywheel_given": True, "J_flywheel_given": s.J_flywheel_given,
-                **self._epsilon_extremes()} if s.flywheel_given else {}),
-            **({"power": e.power, "power_moment": e.power_moment,
-                "power_from_loads": e.power_from_loads} if e.power is not None else {}),
-            "delta_T_max": e.delta_T_max,
-            "delta_T_I_max": e.delta_T_I_max, "phi_delta_T_I_max_deg": math.degrees(e.phi_delta_T_I_max),
-            "delta_T_I_min": e.delta_T_I_min, "phi_delta_T_I_min_deg": math.degrees(e.phi_delta_T_I_min),
-            "J_II_mean": r.J_II_mean,
-            "J_II_min": r.J_II_min, "J_II_max": r.J_II_max,
-            "J_first_group": s.J_first_group,
-            "J_required": s.J_required,
-            "J_required_exact": s.J_required_exact,
-            "J_flywheel": s.J_flywheel,
-            "J_flywheel_exact": s.J_flywheel_exact,
-            "delta_achieved": m.delta_achieved,
-            "delta_achieved_exact": m.delta_achieved_exact,
-            "omega_max": m.omega_max, "phi_omega_max_deg": math.degrees(m.phi_omega_max),
-            "omega_min": m.omega_min, "phi_omega_min_deg": math.degrees(m.phi_omega_min),
-            "T0": m.T0,
-            "cycle_time": m.cycle_time,
-            "flywheel_disk": s.disk.as_dict(),
-            "flywheel_rim": (s.rim.as_dict() if s.rim_design is None
-                             else s.rim_design.as_dict()),
-            "flywheel_material": s.material,
-            "flywheel_material_density": s.material_density,
-            "flywheel_speed_ratio": s.speed_ratio,
-            "flywheel_J_on_its_shaft": s.J_on_its_shaft,
-            "flywheel_rim_share": (s.rim_share if s.rim_design is None
-                                   else s.rim_design.share),
-            "flywheel_rim_speed_limit": s.rim_speed_limit,
-            "flywheel_formulas": s.formulas,
-        })
-        if self.time_domain is not None:
-            out["time_domain"] = self.time_domain.as_dict()
-        if self.forces is not None:
-            out["balancing_moment_closure"] = self.forces.closure
-            out["force_analysis"] = self.forces.as_dict()
-        return out
+        tab, fo = self.tabulated, self.forces
+        eps = self._epsilon_extremes() if s.flywheel_given else {}
+        return Headline(
+            crank_length=self.crank_length,
+            kinematics=None if tab is None else "tabulated",
+            tabulated_interpolation=None if tab is None else tab.interpolation,
+            tabulated_positions_deg=None if tab is None else tuple(tab.positions_deg),
+            omega_mean=s.omega_mean, n_points=int(self.phi.size), cycle_deg=self.cycle_deg,
+            firing_deg=self._firing(),
+            cycle_work_resistance=e.cycle_work_resistance, driving_moment=e.driving_moment,
+            balancing_moment=e.balancing_moment, balance=e.balance, delta=s.delta,
+            flywheel_given=True if s.flywheel_given else None,
+            J_flywheel_given=s.J_flywheel_given if s.flywheel_given else None, **eps,
+            power=e.power,
+            power_moment=e.power_moment if e.power is not None else None,
+            power_from_loads=e.power_from_loads if e.power is not None else None,
+            delta_T_max=e.delta_T_max,
+            delta_T_I_max=e.delta_T_I_max, phi_delta_T_I_max_deg=math.degrees(e.phi_delta_T_I_max),
+            delta_T_I_min=e.delta_T_I_min, phi_delta_T_I_min_deg=math.degrees(e.phi_delta_T_I_min),
+            J_II_mean=r.J_II_mean, J_II_min=r.J_II_min, J_II_max=r.J_II_max,
+            J_first_group=s.J_first_group, J_required=s.J_required,
+            J_required_exact=s.J_required_exact, J_flywheel=s.J_flywheel,
+            J_flywheel_exact=s.J_flywheel_exact,
+            delta_achieved=m.delta_achieved, delta_achieved_exact=m.delta_achieved_exact,
+            omega_max=m.omega_max, phi_omega_max_deg=math.degrees(m.phi_omega_max),
+            omega_min=m.omega_min, phi_omega_min_deg=math.degrees(m.phi_omega_min),
+            T0=m.T0, cycle_time=m.cycle_time,
+            flywheel_disk=s.disk,
+            flywheel_rim=s.rim if s.rim_design is None else s.rim_design,
+            flywheel_material=s.material, flywheel_material_density=s.material_density,
+            flywheel_speed_ratio=s.speed_ratio, flywheel_J_on_its_shaft=s.J_on_its_shaft,
+            flywheel_rim_share=s.rim_share if s.rim_design is None else s.rim_design.share,
+            flywheel_rim_speed_limit=s.rim_speed_limit, flywheel_formulas=s.formulas,
+            time_domain=self.time_domain,
+            balancing_moment_closure=None if fo is None else fo.closure,
+            force_analysis=None if fo is None else fo.summary())
 
     def at_document(self) -> list[dict]:
-        """summary.json's results.at: the report angles' entries, each with the force
-        analysis at its node (ForceResult.at_entry) when there is one."""
-        if self.forces is None:
-            return list(self.at)
-        return [{**a, **self.forces.at_entry(self.at_index(a["phi_deg"]))} for a in self.at]
+        """summary.json's results.at: the report angles' entries."""
+        return to_json(self.at)
 
     def at_index(self, phi_deg: float) -> int:
         """Grid index of the report angle ``phi_deg`` [deg] (a node, taken mod the cycle)."""
@@ -476,11 +796,11 @@ class Results:
                 "epsilon_min": float(eps[i_min]),
                 "phi_epsilon_min_deg": math.degrees(self.phi[i_min])}
 
-    def _firing(self) -> dict:
-        """{"firing_deg": {cylinder: where it fires [deg]}} of the four-stroke cylinders, in
-        firing order; {} if there are none."""
+    def _firing(self) -> dict[str, float] | None:
+        """{cylinder: where it fires [deg]} of the four-stroke cylinders, in firing order;
+        None if there are none."""
         fires = sorted((c.fires_at, c.name) for c in self.cylinders if c.fires_at is not None)
-        return {"firing_deg": {n: math.degrees(a) for a, n in fires}} if fires else {}
+        return {n: math.degrees(a) for a, n in fires} if fires else None
 
     def to_document(self) -> dict:
         """The summary.json document, JSON-ready (:func:`json_ready`)."""
@@ -488,6 +808,24 @@ class Results:
             "title": self.title,
             "source": self.source,
             "units": UNITS,
-            "results": {**self.scalars, "at": self.at_document()},
+            "results": {**to_json(self.scalars), "at": self.at_document()},
             "warnings": list(self.warnings),
         })
+
+
+def summary_json_schema() -> dict:
+    """The JSON Schema of summary.json (``flywheel schema --results``), read off the result
+    dataclasses by :func:`flywheel.dynamics.serialize.json_schema`: ``results`` is the
+    :class:`Headline` with ``at``, a list of :class:`AtAngle`. Floats may be null (a
+    non-finite value is written as null)."""
+    results = json_schema(Headline)
+    results["properties"]["at"] = {"type": "array", "items": json_schema(AtAngle)}
+    results["required"].append("at")
+    return {"$schema": "https://json-schema.org/draft/2020-12/schema",
+            "title": "flywheel run: summary.json", "description": UNITS,
+            "type": "object",
+            "properties": {"title": {"type": "string"}, "source": {"type": "string"},
+                           "units": {"type": "string"}, "results": results,
+                           "warnings": {"type": "array", "items": {"type": "string"}}},
+            "required": ["title", "source", "units", "results", "warnings"],
+            "additionalProperties": False}

@@ -151,19 +151,32 @@ class RimDesign:
     stress_at_omega_max: float | None = None   # ρ·(ω_max·R)² after the motion [Pa]
     width_given: bool = False    # b given (flywheel.rim.width), not b = ratio·t
 
+    DOCUMENT = ("D_mean", "thickness", "width", "mass", "rim_speed", "stress", "share", "D",
+                "D_inner", "b", "allowable_stress", ("rim_speed_from", "speed_from"), "J_rim",
+                "J_rim_exact", "stress_at_omega_max")
+
+    @property
+    def D(self) -> float:
+        """Outer diameter D_mean + t [m]."""
+        return self.D_mean + self.thickness
+
+    @property
+    def D_inner(self) -> float:
+        """Inner diameter D_mean − t [m]."""
+        return self.D_mean - self.thickness
+
+    @property
+    def b(self) -> float:
+        """The width under the plain rim's name [m]."""
+        return self.width
+
     def as_dict(self) -> dict:
         """summary.json's results.flywheel_rim (and ``task2 --json``'s flywheel_rim): the
         contract keys D_mean, thickness, width, mass, rim_speed, stress, share, then the outer
         and inner diameters and the width under the plain rim's names (D, D_inner, b)."""
-        out = {"D_mean": self.D_mean, "thickness": self.thickness, "width": self.width,
-               "mass": self.mass, "rim_speed": self.rim_speed, "stress": self.stress,
-               "share": self.share, "D": self.D_mean + self.thickness,
-               "D_inner": self.D_mean - self.thickness, "b": self.width,
-               "allowable_stress": self.allowable_stress, "rim_speed_from": self.speed_from,
-               "J_rim": self.J_rim, "J_rim_exact": self.J_rim_exact}
-        if self.stress_at_omega_max is not None:
-            out["stress_at_omega_max"] = self.stress_at_omega_max
-        return out
+        from flywheel.dynamics.serialize import to_json
+
+        return to_json(self)
 
 
 #: t/D_mean below which a designed rim is too thin to make (a plausibility bound of flywheel's:

@@ -15,8 +15,9 @@ import numpy as np
 
 from flywheel.dynamics import energy, motion, reduction, sizing
 from flywheel.dynamics.results import (EnergyResult, FlywheelShape, ForceResult, LoadsResult,
-                                       MotionResult, ReductionResult, SizingResult,
-                                       TimeDomainResult)
+                                       MotionResult, ReductionResult, Rundown, SizingResult,
+                                       StartupNotComputed, StartupRun, StartupStalled,
+                                       TimeDomainResult, Verification)
 from flywheel.errors import InputError, Notice, said
 from flywheel.units import PA_PER_MPA, SECONDS_PER_MINUTE, TWO_PI
 
@@ -466,23 +467,23 @@ def time_domain(case, phi: np.ndarray, red: ReductionResult, en: EnergyResult,
     if motor is not None:
         st = timedomain.startup(phi, J, dJ, en.M_known, motor,
                                 machine.omega_mean, delta, progress=stage("start-up"))
-        startup = {k: v for k, v in st.items() if not isinstance(v, np.ndarray)}
-        startup["starting_torque"] = float(M_p)
-        startup["no_load_speed"] = float(w_x)
+        scalars = {k: v for k, v in st.items() if not isinstance(v, np.ndarray)}
+        startup = (StartupStalled if st["stalled"] else StartupRun)(
+            **scalars, starting_torque=float(M_p), no_load_speed=float(w_x))
         if st.get("warning"):
             warnings.append(st["warning"])
         if "t" in st:
             histories["startup"] = (st["t"], st["omega"])
             means = timedomain.history_cycle_means(st["t"], st["omega"], float(phi[-1] - phi[0]))
     else:
-        startup = {"computed": False,
-                   "reason": Notice("no [motor] in the case: under a constant driving moment "
-                                    "the work over a cycle is zero at any speed, so there is no "
-                                    "start-up to a steady state", "startup_no_motor")}
+        startup = StartupNotComputed(
+            reason=Notice("no [motor] in the case: under a constant driving moment the work over "
+                          "a cycle is zero at any speed, so there is no start-up to a steady state",
+                          "startup_no_motor"))
     rd = timedomain.rundown(phi, J, dJ, en.M_known, float(mo.omega[0]),
                             progress=stage("run-down"))
     histories["rundown"] = (rd["t"], rd["omega"])
     return TimeDomainResult(
-        verification=verification, startup=startup,
-        rundown={k: v for k, v in rd.items() if not isinstance(v, np.ndarray)},
+        verification=Verification(**verification), startup=startup,
+        rundown=Rundown(**{k: v for k, v in rd.items() if not isinstance(v, np.ndarray)}),
         histories=histories, startup_cycle_means=means, warnings=tuple(warnings))

@@ -34,8 +34,9 @@ from flywheel.dynamics import stages
 from flywheel.dynamics.columns import tabulated_columns
 from flywheel.dynamics.grid import DEFAULT_POINTS, closed_grid, grid_options, report_index
 from flywheel.dynamics.periodic import periodic_linear
-from flywheel.dynamics.results import (EnergyResult, LoadsResult, MotionResult, ReductionResult,
-                                       Results, TabulatedResult, warnings_of)
+from flywheel.dynamics.results import (AtAngle, EnergyResult, LinkAt, LoadsResult, MotionResult,
+                                       PointAt, Position, ReductionResult, Results, TabulatedResult,
+                                       warnings_of, with_forces)
 from flywheel.errors import Notice
 
 # -- per-position values: the table's own arithmetic (seed 004, eq. 7 and Мст), used by the
@@ -187,8 +188,9 @@ def analyze_tabulated(case, n_points: int = DEFAULT_POINTS, at_deg: list[float] 
     return Results(
         title=case.title, source=case.source, phi=phi, kinematics=None, loads=ld, reduction=red,
         energy=en, sizing=sz, motion=mo, columns=tabulated_columns(phi, tab, ld, red, en, mo),
-        at=at, position_angles=tuple((f"{k + 1} ({p:g}°)", math.radians(p))
-                                     for k, p in enumerate(spec.positions_deg)),
+        at=with_forces(at, fo, phi), position_angles=tuple(
+            Position(phi=math.radians(p), table_row=k + 1, table_deg=p)
+            for k, p in enumerate(spec.positions_deg)),
         links_drawn=(), crank_length=float(spec.crank_length) if spec.crank_length else float("nan"),
         tabulated=tab, time_domain=td, forces=fo,
         warnings=tuple(case.plausibility_warnings()) + warnings_of(red, ld, en, sz, mo, fo, td))
@@ -248,19 +250,19 @@ def tabulated_kinematics(spec, phi: np.ndarray, red: ReductionResult,
 
 
 def report_angles(at_deg: list[float], phi: np.ndarray, tab: TabulatedResult, ld: LoadsResult,
-                  red: ReductionResult, en: EnergyResult, mo: MotionResult) -> tuple[dict, ...]:
+                  red: ReductionResult, en: EnergyResult, mo: MotionResult) -> tuple[AtAngle, ...]:
     """summary.json's "at" of the tabulated route: ω, ε, J_II, Мст, Мдин, the moments, and the
     table's points and links with their true speeds (v = |V_q|·ω, ω_i = ω_q·ω)."""
     out = []
     for a in at_deg:
         i = report_index(phi, a)
         w, e = float(mo.omega[i]), float(mo.epsilon[i])
-        out.append({
-            "phi_deg": float(a), "omega": w, "epsilon": e,
-            "J_II": float(red.J_II[i]), "dJ_II": float(red.dJ_II[i]),
-            "M_sum": float(en.M_sum[i]), "M_st": float(tab.M_st[i]), "M_dyn": float(tab.M_dyn[i]),
-            "moments": {k: float(v[i]) for k, v in ld.M_parts.items()},
-            "points": {k: {"v_q": float(v[i]), "v": float(v[i] * w)} for k, v in tab.v_q.items()},
-            "links": {k: {"omega_q": float(v[i]), "omega": float(v[i] * w)} for k, v in tab.omega_q.items()},
-        })
+        out.append(AtAngle(
+            phi_deg=float(a), omega=w, epsilon=e,
+            J_II=float(red.J_II[i]), dJ_II=float(red.dJ_II[i]),
+            M_sum=float(en.M_sum[i]), M_st=float(tab.M_st[i]), M_dyn=float(tab.M_dyn[i]),
+            moments={k: float(v[i]) for k, v in ld.M_parts.items()},
+            points={k: PointAt(v_q=float(v[i]), v=float(v[i] * w)) for k, v in tab.v_q.items()},
+            links={k: LinkAt(omega_q=float(v[i]), omega=float(v[i] * w))
+                   for k, v in tab.omega_q.items()}))
     return tuple(out)

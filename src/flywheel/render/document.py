@@ -302,11 +302,11 @@ def build_document(results, lang: str = "en", plots: list[str] | None = None,
     b.add(Heading(2, t["input"]))
     head = [t["qty"], t["val"], t["unit"]]
     rows = [
-        [f"{sym('omega_mean')} = 2π·{sym('crank_speed')}", g(s["omega_mean"], 6), u("omega_mean")],
-        [sym("crank_speed"), g(s["omega_mean"] / (2 * math.pi), 6), u("crank_speed")],
-        [sym("delta"), g(s["delta"], 6), u("delta")],
-        [sym("crank_length"), g(s.get("crank_length"), 6), u("crank_length")],
-        [f"{sym('J_first_group')} ({t['first_group']})", g(s["J_first_group"], 6), u("J_first_group")],
+        [f"{sym('omega_mean')} = 2π·{sym('crank_speed')}", g(s.omega_mean, 6), u("omega_mean")],
+        [sym("crank_speed"), g(s.omega_mean / (2 * math.pi), 6), u("crank_speed")],
+        [sym("delta"), g(s.delta, 6), u("delta")],
+        [sym("crank_length"), g(s.crank_length, 6), u("crank_length")],
+        [f"{sym('J_first_group')} ({t['first_group']})", g(s.J_first_group, 6), u("J_first_group")],
     ]
     if case is not None:
         for k, v in case.machine.first_group.items():
@@ -314,10 +314,10 @@ def build_document(results, lang: str = "en", plots: list[str] | None = None,
         rows.append([t["balance_row"], t["balance_word"][case.machine.balance], ""])
         rows.append([f"{sym('gravity')} (x, y)", ", ".join(g(x, 4) for x in case.machine.gravity), u("gravity")])
     rows += [
-        [nm.name("flywheel_material", lang), nm.material(s.get("flywheel_material", "steel"), lang), ""],
-        [f"{sym('flywheel_material_density')}", g(s["flywheel_material_density"], 6),
+        [nm.name("flywheel_material", lang), nm.material(s.flywheel_material, lang), ""],
+        [f"{sym('flywheel_material_density')}", g(s.flywheel_material_density, 6),
          u("flywheel_material_density")],
-        [sym("flywheel_speed_ratio"), g(s["flywheel_speed_ratio"], 6), u("flywheel_speed_ratio")],
+        [sym("flywheel_speed_ratio"), g(s.flywheel_speed_ratio, 6), u("flywheel_speed_ratio")],
     ]
     b.add(Heading(3, f"1.1. {t['machine']}"))
     b.table(t["machine"], head, rows)
@@ -330,13 +330,12 @@ def build_document(results, lang: str = "en", plots: list[str] | None = None,
     # 2. kinematics ---------------------------------------------------------------------------
     # each position's label, then its number as plan_positions.png draws it (a tabulated
     # case's table has no drawing: no number column)
-    nums = results.position_numbers()
-    numbered = any(k is not None for k in nums)
+    numbered = any(p.number is not None for p in results.position_angles)
     pos = [t["pos"], t["no"]] if numbered else [t["pos"]]
-    idx = [([nm.position_label(label, lang)] + ([] if not numbered else
-                                                 ["" if k is None else str(k)]),
-            results.index_of(phi))
-           for (label, phi), k in zip(results.position_angles, nums)]
+    idx = [([nm.position_label(p, lang)] + ([] if not numbered else
+                                             ["" if p.number is None else str(p.number)]),
+            results.index_of(p.phi))
+           for p in results.position_angles]
     vq = [k for k in cols if k.startswith("vq_") and not k.startswith(("vqx_", "vqy_"))]
     wq = [k for k in cols if k.startswith("omega_q_")]
     if vq or wq:
@@ -365,17 +364,17 @@ def build_document(results, lang: str = "en", plots: list[str] | None = None,
     b.add(Heading(2, t["energy"]))
     AC, MC, MD = _mt("cycle_work_resistance", lang), _mt("M_C", lang), _mt("driving_moment", lang)
     dTI, TII, wm = _mt("dT_I", lang), _mt("T_II", lang), _mt("omega_mean", lang)
-    b.add(Formula(rf"{AC} = \oint {MC} d\varphi = {g(s['cycle_work_resistance'], 6)}\,\text{{{u('cycle_work_resistance')}}}"))
-    b.add(Formula(rf"{MD} = -\frac{{{AC}}}{{2\pi}} = {g(s['driving_moment'], 6)}\,\text{{{u('driving_moment')}}}"))
+    b.add(Formula(rf"{AC} = \oint {MC} d\varphi = {g(s.cycle_work_resistance, 6)}\,\text{{{u('cycle_work_resistance')}}}"))
+    b.add(Formula(rf"{MD} = -\frac{{{AC}}}{{2\pi}} = {g(s.driving_moment, 6)}\,\text{{{u('driving_moment')}}}"))
     b.add(Formula(rf"{dTI} = A - ({TII} - {TII}(0)), {TII} = \frac{{{_mt('J_II', lang)} {wm}^{{2}}}}{{2}}"))
     b.add(Bullets((
         t["balance"].format(A_C=sym("cycle_work_resistance"), M_C=sym("M_C"), M_D=sym("driving_moment"),
-                            A=g(s["cycle_work_resistance"], 6), uJ=u("cycle_work_resistance"),
-                            M=g(s["driving_moment"], 6), uM=u("driving_moment"),
-                            cycle=g(s.get("cycle_deg", 360.0), 6))[2:],
-        t["extremes"].format(dT=sym("dT_I"), vmax=g(s["delta_T_I_max"], 6), amax=f"{s['phi_delta_T_I_max_deg']:.2f}",
-                             vmin=g(s["delta_T_I_min"], 6), amin=f"{s['phi_delta_T_I_min_deg']:.2f}",
-                             span=sym("delta_T_max"), v=g(s["delta_T_max"], 6), uJ=u("delta_T_max"))[2:],
+                            A=g(s.cycle_work_resistance, 6), uJ=u("cycle_work_resistance"),
+                            M=g(s.driving_moment, 6), uM=u("driving_moment"),
+                            cycle=g(s.cycle_deg, 6))[2:],
+        t["extremes"].format(dT=sym("dT_I"), vmax=g(s.delta_T_I_max, 6), amax=f"{s.phi_delta_T_I_max_deg:.2f}",
+                             vmin=g(s.delta_T_I_min, 6), amin=f"{s.phi_delta_T_I_min_deg:.2f}",
+                             span=sym("delta_T_max"), v=g(s.delta_T_max, 6), uJ=u("delta_T_max"))[2:],
     )))
     energy = ("A_D", "A_C", "A", "T_II", "dT_I", "omega", "epsilon")
     header = pos + [h("phi_deg")] + [h(k) for k in energy]
@@ -387,20 +386,20 @@ def build_document(results, lang: str = "en", plots: list[str] | None = None,
     # 5. flywheel -----------------------------------------------------------------------------
     b.add(Heading(2, t["sizing"]))
     JI, dT = _mt("J_required", lang), _mt("delta_T_max", lang)
-    b.add(Formula(rf"{JI} = \frac{{{dT}}}{{\delta \cdot {wm}^{{2}}}} = {g(s['J_required'], 6)}\,\text{{{u('J_required')}}}"))
+    b.add(Formula(rf"{JI} = \frac{{{dT}}}{{\delta \cdot {wm}^{{2}}}} = {g(s.J_required, 6)}\,\text{{{u('J_required')}}}"))
     b.add(Formula(rf"{_mt('J_flywheel', lang)} = {JI} - ({_mt('J_first_group', lang)}) = "
-                  rf"{g(s['J_flywheel'], 6)}\,\text{{{u('J_flywheel')}}}"))
+                  rf"{g(s.J_flywheel, 6)}\,\text{{{u('J_flywheel')}}}"))
     b.add(Bullets(tuple(x[2:] for x in _sizing_lines(s, t, lang))))
     b.table(t["sizing_caption"], [t["method"], nm.heading("J_required", lang), nm.heading("J_flywheel", lang),
                                   nm.heading("delta_achieved", lang)],
-            [[t["m_merzalov"], g(s["J_required"], 6), g(s["J_flywheel"], 6), g(s["delta_achieved"], 6)],
-             [t["m_exact"], g(s["J_required_exact"], 6), g(s["J_flywheel_exact"], 6),
-              g(s["delta_achieved_exact"], 6)]])
-    d, r = s["flywheel_disk"], s["flywheel_rim"]
+            [[t["m_merzalov"], g(s.J_required, 6), g(s.J_flywheel, 6), g(s.delta_achieved, 6)],
+             [t["m_exact"], g(s.J_required_exact, 6), g(s.J_flywheel_exact, 6),
+              g(s.delta_achieved_exact, 6)]])
+    d, r = s.flywheel_disk, s.flywheel_rim
     b.table(t["dims_caption"], [t["shape"], h("D"), h("D_inner"), h("b"), h("mass"), h("rim_speed")],
-            [[t["disk_word"], g(d["D"], 4), "—", g(d["b"], 4), g(d["mass"], 5), g(d.get("rim_speed"), 4)],
-             [t["rim_word"], g(r["D"], 4), g(r.get("D_inner"), 4), g(r["b"], 4), g(r["mass"], 5),
-              g(r.get("rim_speed"), 4)]])
+            [[t["disk_word"], g(d.D, 4), "—", g(d.b, 4), g(d.mass, 5), g(d.rim_speed, 4)],
+             [t["rim_word"], g(r.D, 4), g(r.D_inner, 4), g(r.b, 4), g(r.mass, 5),
+              g(r.rim_speed, 4)]])
     b.figures_of("sizing")
 
     # 6. motion at the report angles ----------------------------------------------------------
@@ -409,19 +408,19 @@ def build_document(results, lang: str = "en", plots: list[str] | None = None,
                   r"\omega_{i} = \omega_{qi} \omega, \varepsilon_{i} = \varepsilon_{qi} \omega^{2} + \omega_{qi} \varepsilon"))
     point_keys, link_keys = ("v_q", "v", "a_q", "a"), ("omega_q", "omega", "epsilon_q", "epsilon")
     for k, a in enumerate(results.at, 1):
-        b.add(Heading(3, f"6.{k}. φ = {g(a['phi_deg'], 6)}°"))
-        b.add(Paragraph(t["at"].format(w=g(a["omega"], 6), uw=u("omega"), e=g(a["epsilon"], 6),
+        b.add(Heading(3, f"6.{k}. φ = {g(a.phi_deg, 6)}°"))
+        b.add(Paragraph(t["at"].format(w=g(a.omega, 6), uw=u("omega"), e=g(a.epsilon, 6),
                                        ue=u("epsilon"))))
-        if a.get("points"):
-            b.table(t["points_caption"].format(a=g(a["phi_deg"], 6)), [t["point"], *(h(x) for x in point_keys)],
-                    [[n] + [g(p.get(x), 5) for x in point_keys] for n, p in a["points"].items()])
-        if a.get("links"):
-            b.table(t["links_caption"].format(a=g(a["phi_deg"], 6)), [t["link"], *(h(x) for x in link_keys)],
-                    [[n] + [g(lk.get(x), 5) for x in link_keys] for n, lk in a["links"].items()])
+        if a.points:
+            b.table(t["points_caption"].format(a=g(a.phi_deg, 6)), [t["point"], *(h(x) for x in point_keys)],
+                    [[n] + [g(getattr(p, x), 5) for x in point_keys] for n, p in a.points.items()])
+        if a.links:
+            b.table(t["links_caption"].format(a=g(a.phi_deg, 6)), [t["link"], *(h(x) for x in link_keys)],
+                    [[n] + [g(getattr(lk, x), 5) for x in link_keys] for n, lk in a.links.items()])
     b.figures_of("motion")
 
-    td = s.get("time_domain")
-    if td:
+    td = s.time_domain
+    if td is not None:
         b.add(Heading(2, t["time"]))
         b.add(Paragraph(t["time_note"]))
         b.add(Bullets(tuple(x[2:] for x in _time_lines(td, s, t, lang))))
@@ -447,7 +446,7 @@ def build_document(results, lang: str = "en", plots: list[str] | None = None,
     return b.doc
 
 
-def _sizing_lines(s: dict, t: dict, lang: str) -> list[str]:
+def _sizing_lines(s, t: dict, lang: str) -> list[str]:
     def sym(key):
         return nm.symbol(key, lang)
 
@@ -455,36 +454,36 @@ def _sizing_lines(s: dict, t: dict, lang: str) -> list[str]:
         return nm.unit_of(key, lang)
 
     def dims(d: dict, keys, digits) -> str:
-        return ", ".join(f"{sym(k)} = {g(d[k], n)} {u(k)}" for k, n in zip(keys, digits))
+        return ", ".join(f"{sym(k)} = {g(getattr(d, k), n)} {u(k)}" for k, n in zip(keys, digits))
 
-    d, r = s["flywheel_disk"], s["flywheel_rim"]
+    d, r = s.flywheel_disk, s.flywheel_rim
     uI = u("J_required")
     fw = t["flywheel"].format(JM=sym("J_flywheel"), J=sym("J_required"), J1=sym("J_first_group"),
-                              v=g(s["J_flywheel"], 6), uI=uI)
-    if s.get("flywheel_speed_ratio", 1) != 1:
-        fw += t["shaft"].format(i=s["flywheel_speed_ratio"], v=g(s["flywheel_J_on_its_shaft"], 6), uI=uI)
+                              v=g(s.J_flywheel, 6), uI=uI)
+    if s.flywheel_speed_ratio != 1:
+        fw += t["shaft"].format(i=s.flywheel_speed_ratio, v=g(s.flywheel_J_on_its_shaft, 6), uI=uI)
     return [
-        t["given"].format(J=sym("J_required"), v=g(s["J_required"], 6), uI=uI,
-                          d=g(s["delta_achieved"], 6)) if s.get("flywheel_given") else
+        t["given"].format(J=sym("J_required"), v=g(s.J_required, 6), uI=uI,
+                          d=g(s.delta_achieved, 6)) if s.flywheel_given else
         t["merzalov"].format(J=sym("J_required"), span=sym("delta_T_max"), w=sym("omega_mean"),
-                             v=g(s["J_required"], 6), uI=uI, d=g(s["delta_achieved"], 6)),
-        t["exact"].format(J=sym("J_required_exact"), v=g(s["J_required_exact"], 6), uI=uI,
-                          d=g(s["delta_achieved_exact"], 6)),
+                             v=g(s.J_required, 6), uI=uI, d=g(s.delta_achieved, 6)),
+        t["exact"].format(J=sym("J_required_exact"), v=g(s.J_required_exact, 6), uI=uI,
+                          d=g(s.delta_achieved_exact, 6)),
         fw,
-        t["disk"].format(mat=nm.material(s.get("flywheel_material", "steel"), lang),
+        t["disk"].format(mat=nm.material(s.flywheel_material, lang),
                          dims=dims(d, ("D", "b", "mass"), (4, 4, 5)), speed=nm.name("rim_speed", lang),
-                         v=g(d.get("rim_speed"), 4), u=u("rim_speed")),
+                         v=g(d.rim_speed, 4), u=u("rim_speed")),
         t["rim"].format(dims=dims(r, ("D", "D_inner", "b", "mass"), (4, 4, 4, 5)),
-                        speed=nm.name("rim_speed", lang), v=g(r.get("rim_speed"), 4), u=u("rim_speed"),
-                        lim=g(s.get("flywheel_rim_speed_limit"), 3)),
-        *([t["rim_design"].format(share=g(r["share"], 4), sigma=g(r["stress"] / PA_PER_MPA, 4),
+                        speed=nm.name("rim_speed", lang), v=g(r.rim_speed, 4), u=u("rim_speed"),
+                        lim=g(s.flywheel_rim_speed_limit, 3)),
+        *([t["rim_design"].format(share=g(r.share, 4), sigma=g(r.stress / PA_PER_MPA, 4),
                                   dims=dims(r, ("D_mean", "thickness", "width", "mass", "rim_speed"),
-                                            (4, 4, 4, 5, 4)))] if "D_mean" in r else []),
-        t["omega_extremes"].format(wmax=sym("omega_max"), vmax=g(s["omega_max"], 6),
-                                   amax=f"{s['phi_omega_max_deg']:.2f}", wmin=sym("omega_min"),
-                                   vmin=g(s["omega_min"], 6), amin=f"{s['phi_omega_min_deg']:.2f}",
+                                            (4, 4, 4, 5, 4)))] if s.rim_designed else []),
+        t["omega_extremes"].format(wmax=sym("omega_max"), vmax=g(s.omega_max, 6),
+                                   amax=f"{s.phi_omega_max_deg:.2f}", wmin=sym("omega_min"),
+                                   vmin=g(s.omega_min, 6), amin=f"{s.phi_omega_min_deg:.2f}",
                                    uw=u("omega_max"), T=nm.name("cycle_time", lang),
-                                   v=g(s["cycle_time"], 6), uT=u("cycle_time")),
+                                   v=g(s.cycle_time, 6), uT=u("cycle_time")),
     ]
 
 
@@ -567,35 +566,35 @@ def _structure(b: _Builder, case, t: dict, lang: str) -> None:
     b.add(Formula(rf"W = 3n - 2p_{{5}} - p_{{4}} = 3 \cdot {n} - 2 \cdot {p5} - {p4} = {3 * n - 2 * p5 - p4}"))
 
 
-def _time_lines(td: dict, s: dict, t: dict, lang: str = "en") -> list[str]:
-    """The bullet lines of the "Motion in time" section (--transients)."""
-    v, st, rd = td["verification"], td["startup"], td["rundown"]
+def _time_lines(td, s, t: dict, lang: str = "en") -> list[str]:
+    """The bullet lines of the "Motion in time" section (--transients): ``td`` the
+    TimeDomainResult, ``s`` the headline scalars."""
+    v, st, rd = td.verification, td.startup, td.rundown
     lines = [
-        "- " + t["verify"].format(n=v["cycles"], rep=f"{v['repeat_error']:.1e}", dev=f"{v['max_deviation']:.1e}"),
-        "- " + t["period"].format(T=g(v["period"], 6), Te=g(s["cycle_time"], 6)),
+        "- " + t["verify"].format(n=v.cycles, rep=f"{v.repeat_error:.1e}", dev=f"{v.max_deviation:.1e}"),
+        "- " + t["period"].format(T=g(v.period, 6), Te=g(s.cycle_time, 6)),
     ]
-    if st.get("computed") is False:
-        return lines + ["- " + t["st_none"].format(reason=nm.message(st["reason"], lang)),
+    if not st.computed:
+        return lines + ["- " + t["st_none"].format(reason=nm.message(st.reason, lang)),
                         _rundown_line(rd, t, lang)]
-    if "starting_torque" in st:
-        lines.append("- " + t["motor"].format(Mp=g(st["starting_torque"], 5), wx=g(st["no_load_speed"], 5),
-                                              ws=g(st.get("omega_final_predicted"), 6),
-                                              tau=g(st.get("time_constant"), 3)))
-    if st.get("stalled"):
-        lines.append("- " + t["st_stall"].format(a=f"{st['stall_angle_deg']:.1f}"))
-    elif st.get("converged", True) and st.get("time_to_steady") is not None:
-        lines.append("- " + t["st_ok"].format(t=g(st["time_to_steady"], 4), n=st["cycles_to_steady"],
-                                              w=g(st["omega_mean_steady"], 6)))
+    lines.append("- " + t["motor"].format(Mp=g(st.starting_torque, 5), wx=g(st.no_load_speed, 5),
+                                          ws=g(st.omega_final_predicted, 6),
+                                          tau=g(st.time_constant, 3)))
+    if st.stalled:
+        lines.append("- " + t["st_stall"].format(a=f"{st.stall_angle_deg:.1f}"))
+    elif st.converged and st.time_to_steady is not None:
+        lines.append("- " + t["st_ok"].format(t=g(st.time_to_steady, 4), n=st.cycles_to_steady,
+                                              w=g(st.omega_mean_steady, 6)))
     else:
-        lines.append("- " + t["st_no"].format(n=st.get("cycles_run"), t=g(st.get("time_run"), 4),
-                                              w=g(st.get("omega_mean_last"), 6)))
-        if st.get("warning"):
-            lines.append(f"- **{nm.message(st['warning'], lang)}**")
+        lines.append("- " + t["st_no"].format(n=st.cycles_run, t=g(st.time_run, 4),
+                                              w=g(st.omega_mean_last, 6)))
+        if st.warning:
+            lines.append(f"- **{nm.message(st.warning, lang)}**")
     return lines + [_rundown_line(rd, t, lang)]
 
 
-def _rundown_line(rd: dict, t: dict, lang: str = "en") -> str:
-    if rd.get("reason"):                # English: the fixed line; Russian: the reason itself
-        return "- " + t["rd_never"].format(reason=nm.message(rd["reason"], lang))
-    return "- " + t["rd"].format(t=g(rd["time"], 4), rev=f"{rd['angle_deg'] / 360:.2f}") + (
-        "" if rd["stopped"] else t["rd_not"])
+def _rundown_line(rd, t: dict, lang: str = "en") -> str:
+    if rd.reason:                # English: the fixed line; Russian: the reason itself
+        return "- " + t["rd_never"].format(reason=nm.message(rd.reason, lang))
+    return "- " + t["rd"].format(t=g(rd.time, 4), rev=f"{rd.angle_deg / 360:.2f}") + (
+        "" if rd.stopped else t["rd_not"])

@@ -63,18 +63,22 @@ def _rows(keys_values, lang: str) -> list[tuple[str, str, str, str]]:
             for k, v in keys_values if v is not None]
 
 
-def summary_tables(d: dict, lang: str = "en") -> list[tuple[str, tuple, list, str, tuple]]:
-    """The summary's tables from the result's document ``d``: (title, header, rows, a note
-    after it or "", the columns' justification), empty tables included (the caller skips them).
-    The rich summary and the записка (render/report_duty_cycle.py) print the same."""
+def summary_tables(r, lang: str = "en") -> list[tuple[str, tuple, list, str, tuple]]:
+    """The summary's tables of the result ``r`` (its document, and its Work: how the work of
+    an operation was found, None if E was given): (title, header, rows, a note after it or "",
+    the columns' justification), empty tables included (the caller skips them). The rich
+    summary and the записка (render/report_duty_cycle.py) print the same."""
     t = L10N[lang]
     head = (t["quantity"], t["symbol"], t["value"], t["unit"])
     just = ("left", "left", "right", "left")
-    w = d["work"] or {}
-    shape = w.get("shape")
+    d, w = r.to_document(), r.work
+
+    def work(name: str):
+        return None if w is None else getattr(w, name)
+    shape = work("shape")
     out = [(t["operation"], head, _rows([
-        ("sheared_area", w.get("sheared_area")), ("energy_per_area", w.get("energy_per_area")),
-        ("force_max", w.get("force_max")), ("plate_thickness", w.get("thickness")),
+        ("sheared_area", work("sheared_area")), ("energy_per_area", work("energy_per_area")),
+        ("force_max", work("force_max")), ("plate_thickness", work("thickness")),
         ("energy_per_operation", d["energy"]), ("delta_E", d["delta_E"]),
         ("energy_fluctuation_coefficient", d["energy_fluctuation_coefficient"]),
         ("operation_moment", d["operation_moment"])], lang)
@@ -124,7 +128,7 @@ def print_summary(r, title: str = "", source: str = "", lang: str = "en", consol
     d = r.to_document()
     if title:
         console.print(f"[bold]{escape(title)}[/bold]" + (f"  ({escape(source)})" if source else ""))
-    for head, columns, rows, note, just in summary_tables(d, lang):
+    for head, columns, rows, note, just in summary_tables(r, lang):
         if rows:
             tab = Table(title=escape(head), title_justify="left")
             for col, j in zip(columns, just):

@@ -159,9 +159,8 @@ def forces_positions_csv(results) -> str:
     from flywheel.render.tables import number_cell
 
     cols = force_columns(results)
-    idx = [results.index_of(phi) for _, phi in results.position_angles]
-    labels = [f"{label},{number_cell(k)}"
-              for (label, _), k in zip(results.position_angles, results.position_numbers())]
+    idx = [results.index_of(pos.phi) for pos in results.position_angles]
+    labels = [f"{pos.label},{number_cell(pos.number)}" for pos in results.position_angles]
     rows = _rows(cols, idx)
     header = "position,number," + ",".join(csv_header(k) for k in cols)
     return "\n".join([header] + [f"{lab},{row}" for lab, row in zip(labels, rows)]) + "\n"
@@ -197,7 +196,7 @@ def summary_lines(results, lang: str = "en") -> list[str]:
         lines.append(t["closure"].format(ref=ref, c=f"{f.closure:.2e}", n=n, ok=ok))
     else:
         lines.append(t["closure_J"].format(c=f"{f.closure:.2e}", n=n, ok=ok))
-    lines.append(t["mean"].format(m=_g(f.M_y_cycle_mean, 8), d=_g(s["balancing_moment"], 8)))
+    lines.append(t["mean"].format(m=_g(f.M_y_cycle_mean, 8), d=_g(s.balancing_moment, 8)))
     return lines
 
 
@@ -207,11 +206,11 @@ def _moment_rows(results) -> list[list[str]]:
     f = results.forces
     rows = []
     for a in results.at:
-        i = results.at_index(a["phi_deg"])
+        i = results.at_index(a.phi_deg)
         if f.analysis is None:
-            rows.append([_g(a["phi_deg"], 6), _g(float(f.M_y_power[i]), 8)])
+            rows.append([_g(a.phi_deg, 6), _g(float(f.M_y_power[i]), 8)])
         else:
-            rows.append([_g(a["phi_deg"], 6), _g(float(f.analysis.balancing_moment[i]), 8),
+            rows.append([_g(a.phi_deg, 6), _g(float(f.analysis.balancing_moment[i]), 8),
                          _g(float(f.M_y_zhukovsky[i]), 8), _g(float(f.M_y_power[i]), 8)])
     return rows
 
@@ -241,9 +240,9 @@ def print_forces(results, console, lang: str = "en") -> None:
     if f.analysis is None:
         return
     for a in results.at:
-        i = results.at_index(a["phi_deg"])
+        i = results.at_index(a.phi_deg)
         if f.slider_crank:
-            st = Table(title=t["sc"].format(a=_g(a["phi_deg"], 6)))
+            st = Table(title=t["sc"].format(a=_g(a.phi_deg, 6)))
             st.add_column(t["slider"], justify="right")
             for q in SLIDER_CRANK:
                 st.add_column(_h(symbol(q, lang), unit_of(q, lang), lang), justify="right")
@@ -288,9 +287,9 @@ def add_report_section(b, results, lang: str = "en") -> None:
         parts_of = [k for k in ("M_st", "M_dyn") if k in results.columns]    # seed 004's Мст, Мдин
         header = [t["pos"], deg] + [_h(symbol(k, lang), unit_of(k, lang), lang) for k in parts_of] + [My]
         body = []
-        for lab, p in results.position_angles:
-            i = results.index_of(p)
-            body.append([position_label(lab, lang), _g(math.degrees(p), 6)]
+        for pos in results.position_angles:
+            i = results.index_of(pos.phi)
+            body.append([position_label(pos, lang), _g(math.degrees(pos.phi), 6)]
                         + [_g(float(results.columns[k].values[i]), 6) for k in parts_of]
                         + [_g(float(f.M_y_power[i]), 6)])
         table(t["tab_positions"], header, body)
@@ -299,28 +298,29 @@ def add_report_section(b, results, lang: str = "en") -> None:
     keys = list(f.joints)
     header = [t["pos"], t["no"], deg, My] + [f"R {k}" for k in keys]
     body = []
-    for (lab, p), k in zip(results.position_angles, results.position_numbers()):
-        i = results.index_of(p)
-        body.append([position_label(lab, lang), "" if k is None else str(k), _g(math.degrees(p), 6),
+    for pos in results.position_angles:
+        i = results.index_of(pos.phi)
+        body.append([position_label(pos, lang), "" if pos.number is None else str(pos.number),
+                     _g(math.degrees(pos.phi), 6),
                      _g(float(fa.balancing_moment[i]), 6)]
                     + [_g(float(fa.joints[k].magnitude[i]), 5) for k in keys])
     table(t["positions"], header, body)
     table(t["moments"], [deg, t["kin"], t["zhuk"], t["power"]], _moment_rows(results))
     N = unit("N", lang)
     for a in results.at:
-        i = results.at_index(a["phi_deg"])
-        b.add(Heading(3, t["at"].format(a=_g(a["phi_deg"], 6)).strip()))
+        i = results.at_index(a.phi_deg)
+        b.add(Heading(3, t["at"].format(a=_g(a.phi_deg, 6)).strip()))
         rows = [[k, r.joint, r.by, r.on, _g(float(r.x[i]), 6), _g(float(r.y[i]), 6),
                  _g(float(r.magnitude[i]), 6), _g(math.degrees(float(r.angle[i])), 5)]
                 for k, r in f.joints.items()]
-        table(t["joints"].format(a=_g(a["phi_deg"], 6)),
+        table(t["joints"].format(a=_g(a.phi_deg, 6)),
               [t["joint"], t["point"], t["by"], t["on"], _h("R_x", N, lang), _h("R_y", N, lang),
                _h("R", N, lang), _h(t["angle"], unit("deg", lang), lang)], rows)
         if f.slider_crank:
             head = [t["slider"]] + [_h(symbol(q, lang), unit_of(q, lang), lang) for q in SLIDER_CRANK]
             rows = [[s] + [_g(float(getattr(sc, q)[i]), 6) for q in SLIDER_CRANK]
                     for s, sc in f.slider_crank.items()]
-            table(f"{t['sc'].format(a=_g(a['phi_deg'], 6))}: "
+            table(f"{t['sc'].format(a=_g(a.phi_deg, 6))}: "
                   + "; ".join(f"{symbol(q, lang)} — {name(q, lang)}" for q in SLIDER_CRANK),
                   head, rows)
         P, S = f.crank_pin_load[i], fa.shaking_force[i]

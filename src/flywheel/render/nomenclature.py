@@ -762,7 +762,6 @@ LOAD_KINDS = {"gas": ("gas {x}", "газ {x}"), "gravity": ("gravity, link {x}",
 # dynamics.grid.standard_positions writes them in English
 DEAD_CENTRES = {"outer": ("outer", "внешняя"), "inner": ("inner", "внутренняя")}
 DEAD_CENTRE_LABEL = ("{s} {kind} d.c.", "ползун {s}: {kind} мёртвая точка")
-_DEAD_CENTRE_RX = re.compile(r"^(?P<s>.+) (?P<kind>outer|inner) d\.c\.$")
 
 # the flywheel's materials (case [flywheel] material)
 MATERIALS = {"steel": ("steel", "сталь"), "cast-iron": ("cast iron", "чугун")}
@@ -928,22 +927,17 @@ def material(m: str, lang: str = "en") -> str:
     return MATERIALS[m][lang == "ru"] if m in MATERIALS else m
 
 
-def position_label(label: str, lang: str = "en") -> str:
-    """A standard position's label in ``lang``: "0° = 3 outer d.c." → "0° = ползун 3: внешняя
-    мёртвая точка"; other parts (angles, a table's "2 (30°)") as they are.
+def position_label(position, lang: str = "en") -> str:
+    """A standard position's label in ``lang`` (a :class:`flywheel.dynamics.results.Position`):
+    "0° = 3 outer d.c." → "0° = ползун 3: внешняя мёртвая точка"; the angle, a table's
+    "2 (30°)" as they are.
 
-    >>> position_label("90° = 5 inner d.c.", "ru")
+    >>> from flywheel.dynamics.results import DeadCentre, Position
+    >>> position_label(Position(phi=1.5708, standard_deg=90, dead_centres=(DeadCentre("5", "inner"),)), "ru")
     '90° = ползун 5: внутренняя мёртвая точка'
     """
-    if lang != "ru":
-        return label
-    out = []
-    for part in label.split(" = "):
-        m = _DEAD_CENTRE_RX.match(part)
-        if m:
-            part = DEAD_CENTRE_LABEL[1].format(s=m.group("s"), kind=DEAD_CENTRES[m.group("kind")][1])
-        out.append(part)
-    return " = ".join(out)
+    return " = ".join(p if isinstance(p, str) else DEAD_CENTRE_LABEL[lang == "ru"].format(
+        s=p.slider, kind=DEAD_CENTRES[p.kind][lang == "ru"]) for p in position.parts())
 
 
 def csv_header(key: str) -> str:

@@ -198,10 +198,9 @@ def figure_J_II(results, lang: str = "en"):
                  label=nm.tex("J_II", lang))
         for name, J in results.J_parts.items():
             ax1.plot(deg, J, label=_t(lang, "link", n=name))
-        if "J_II_mean" in results.scalars:
-            ax1.axhline(results.scalars["J_II_mean"], color="k", linestyle=":", linewidth=1.0,
-                        label=_t(lang, "J_mean", J=nm.tex("J_II", lang),
-                                 v=results.scalars["J_II_mean"], u=nm.unit_of("J_II_mean", lang)))
+        ax1.axhline(results.scalars.J_II_mean, color="k", linestyle=":", linewidth=1.0,
+                    label=_t(lang, "J_mean", J=nm.tex("J_II", lang),
+                             v=results.scalars.J_II_mean, u=nm.unit_of("J_II_mean", lang)))
         ax1.set_ylabel(nm.axis("J_II", lang))
         ax2.plot(deg, results.columns["dJ_II"].values, color="k", label=nm.tex("dJ_II", lang))
         ax2.axhline(0.0, color="0.3", linewidth=0.6)
@@ -254,9 +253,9 @@ def figure_piston_forces(results, lang: str = "en"):
             line, = ax.plot(deg, c.F, color=f"C{k}",
                             label=_t(lang, "F_gas", p=c.piston, c=c.name))
             for a in results.at:
-                i = results.index_of(math.radians(a["phi_deg"]) % results.cycle)
+                i = results.index_of(math.radians(a.phi_deg) % results.cycle)
                 ax.plot(deg[i], c.F[i], "o", color=line.get_color(),
-                        label=_t(lang, "F_at", c=c.name, a=a["phi_deg"], v=float(c.F[i]),
+                        label=_t(lang, "F_at", c=c.name, a=a.phi_deg, v=float(c.F[i]),
                                  u=nm.unit_of(f"F_{c.name}", lang)))
         for key, col in results.columns.items():
             if key.startswith("F_") and key not in names:
@@ -287,13 +286,11 @@ def figure_reduced_moments(results, lang: str = "en"):
             ax.plot(deg, results.M_parts[name], label=nm.load_name(name, lang))
         ax.plot(deg, results.columns["M_known"].values, color="0.4", linestyle="--",
                 label=_t(lang, "M_known", M=nm.tex("M_known", lang)))
-        m_const = results.scalars.get("balancing_moment")
-        if m_const is not None:
-            key = "driving_moment" if results.scalars.get("balance", "driving") == "driving" \
-                else "M_C"
-            ax.axhline(m_const, color="C3", linestyle="-.",
-                       label=_t(lang, "M_const", M=nm.tex(key, lang), v=m_const,
-                                u=nm.unit_of(key, lang)))
+        m_const = results.scalars.balancing_moment
+        key = "driving_moment" if results.scalars.balance == "driving" else "M_C"
+        ax.axhline(m_const, color="C3", linestyle="-.",
+                   label=_t(lang, "M_const", M=nm.tex(key, lang), v=m_const,
+                            u=nm.unit_of(key, lang)))
         ax.plot(deg, results.columns["M_sum"].values, color="k", linewidth=2.0,
                 label=_t(lang, "M_sum", M=nm.tex("M_sum", lang)))
         ax.axhline(0.0, color="0.3", linewidth=0.6)
@@ -324,12 +321,11 @@ def figure_works(results, lang: str = "en"):
         sc = results.scalars
         for tag, marker in (("max", "^"), ("min", "v")):
             key = f"delta_T_I_{tag}"
-            v, a = sc.get(key), sc.get(f"phi_delta_T_I_{tag}_deg")
-            if v is not None and a is not None:
-                ax.plot(a, v, marker, color="C3", markersize=8,
-                        label=_t(lang, "extreme", s=nm.tex(key, lang), v=v,
-                                 u=nm.unit_of(key, lang), a=a))
-                ax.axvline(a, color="C3", linestyle=":", linewidth=0.8)
+            v, a = getattr(sc, key), getattr(sc, f"phi_delta_T_I_{tag}_deg")
+            ax.plot(a, v, marker, color="C3", markersize=8,
+                    label=_t(lang, "extreme", s=nm.tex(key, lang), v=v,
+                             u=nm.unit_of(key, lang), a=a))
+            ax.axvline(a, color="C3", linestyle=":", linewidth=0.8)
         ax.axhline(0.0, color="0.3", linewidth=0.6)
         ax.set_ylabel(_t(lang, "W_axis", u=nm.unit_of("A", lang)))
         fg.phi_axis(ax, lang, cycle_deg=results.cycle_deg)
@@ -348,18 +344,17 @@ def figure_omega(results, lang: str = "en"):
         sc = results.scalars
         ax.plot(deg, results.columns["omega"].values, color="k", linewidth=1.8,
                 label=_t(lang, "w", J=nm.tex("J_required", lang),
-                         d=sc.get("delta_achieved", float("nan"))))
+                         d=sc.delta_achieved))
         if "omega_exact" in results.columns:
             ax.plot(deg, results.columns["omega_exact"].values, color="C0", linestyle="--",
                     label=_t(lang, "w_exact", J=nm.tex("J_required_exact", lang),
-                             d=sc.get("delta_achieved_exact", float("nan"))))
+                             d=sc.delta_achieved_exact))
         for key, color in (("omega_max", "C3"), ("omega_min", "C2")):
-            if key in sc:
-                ax.axhline(sc[key], color=color, linestyle=":",
-                           label=_t(lang, "extreme", s=nm.tex(key, lang), v=sc[key],
-                                    u=nm.unit_of(key, lang), a=sc.get(f"phi_{key}_deg", 0)))
-        ax.axhline(sc["omega_mean"], color="0.4", linestyle="-.",
-                   label=_t(lang, "value", s=nm.tex("omega_mean", lang), v=sc["omega_mean"],
+            ax.axhline(getattr(sc, key), color=color, linestyle=":",
+                       label=_t(lang, "extreme", s=nm.tex(key, lang), v=getattr(sc, key),
+                                u=nm.unit_of(key, lang), a=getattr(sc, f"phi_{key}_deg")))
+        ax.axhline(sc.omega_mean, color="0.4", linestyle="-.",
+                   label=_t(lang, "value", s=nm.tex("omega_mean", lang), v=sc.omega_mean,
                             u=nm.unit_of("omega_mean", lang)))
         ax.set_ylabel(nm.axis("omega", lang))
         fg.phi_axis(ax, lang, cycle_deg=results.cycle_deg)
@@ -535,7 +530,7 @@ def figure_scheme(results, lang: str = "en"):
     links, joints, fixed pivots, sliders on their guides, named points, and the trajectories
     of all moving points over the cycle."""
     def build():
-        angles = [float(a["phi_deg"]) for a in results.at] or [0.0]
+        angles = [float(a.phi_deg) for a in results.at] or [0.0]
         n = len(angles)
         ncols = min(n, 2)
         nrows = math.ceil(n / ncols)

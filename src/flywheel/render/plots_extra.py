@@ -183,13 +183,13 @@ def figure_energy_mass(results, lang: str = "en"):
     # -- (c) Merzalov --------------------------------------------------------------------------
     dT = results.columns["dT_I"].values
     bx.plot(phi_deg, dT, label=f"{dT_sym}(φ)")
-    bx.axhline(s["delta_T_I_max"], color="tab:red", lw=0.8, ls=":")
-    bx.axhline(s["delta_T_I_min"], color="tab:green", lw=0.8, ls=":")
-    bx.annotate("", xy=(s["phi_delta_T_I_max_deg"], s["delta_T_I_max"]),
-                xytext=(s["phi_delta_T_I_max_deg"], s["delta_T_I_min"]),
+    bx.axhline(s.delta_T_I_max, color="tab:red", lw=0.8, ls=":")
+    bx.axhline(s.delta_T_I_min, color="tab:green", lw=0.8, ls=":")
+    bx.annotate("", xy=(s.phi_delta_T_I_max_deg, s.delta_T_I_max),
+                xytext=(s.phi_delta_T_I_max_deg, s.delta_T_I_min),
                 arrowprops={"arrowstyle": "<->"})
-    bx.plot([], [], " ", label=_f(t, "span", span=nm.tex("delta_T_max", lang), v=s["delta_T_max"],
-                                  uJ=uJ, J=J_sym, w=w_m, J_v=s["J_required"], uI=uI))
+    bx.plot([], [], " ", label=_f(t, "span", span=nm.tex("delta_T_max", lang), v=s.delta_T_max,
+                                  uJ=uJ, J=J_sym, w=w_m, J_v=s.J_required, uI=uI))
     bx.set_xlabel(nm.axis("phi_deg", lang))
     bx.set_ylabel(nm.axis("dT_I", lang))
     cycle = results.cycle_deg
@@ -216,7 +216,7 @@ def figure_time_law(results, lang: str = "en"):
         a.grid(True, alpha=0.3)
         a.legend(fontsize=8, loc="best", framealpha=0.85)
     a1.set_title(f"{results.title}\n" + _f(t, "time", T=nm.tex("cycle_time", lang),
-                                             v=results.scalars["cycle_time"],
+                                             v=results.scalars.cycle_time,
                                              u=nm.unit_of("cycle_time", lang)),
                  fontsize=10)
     return fig
@@ -237,16 +237,18 @@ def figure_transients(results, lang: str = "en"):
         mids, means = results.time_domain.startup_cycle_means
         if len(means):
             ax.plot(mids, means, ".", color="tab:blue", ms=4, label=_f(t, "means"))
-        ws = st.get("omega_final_predicted")
+        ws = st.omega_final_predicted
         if ws:
-            band = results.scalars["delta"] / 10
+            band = results.scalars.delta / 10
             ax.axhspan(ws * (1 - band), ws * (1 + band), color="tab:blue", alpha=0.12,
                        label=_f(t, "band", w=nm.tex("omega_final_predicted", lang), v=ws,
                                 u=nm.unit_of("omega_final_predicted", lang)))
-        if st.get("time_to_steady") is not None:
-            ax.axvline(st["time_to_steady"], color="tab:blue", ls=":", lw=1.0,
-                       label=_f(t, "steady", time=st["time_to_steady"], u=nm.unit_of("t", lang)))
-        elif not st.get("stalled"):
+        if st.stalled:
+            pass
+        elif st.time_to_steady is not None:
+            ax.axvline(st.time_to_steady, color="tab:blue", ls=":", lw=1.0,
+                       label=_f(t, "steady", time=st.time_to_steady, u=nm.unit_of("t", lang)))
+        else:
             ax.plot([], [], " ", label=_f(t, "not_reached"))
     ax.plot(*hist["rundown"], lw=0.8, label=_f(t, "run"))
     ax.set_xlabel(nm.axis("t", lang))

@@ -747,8 +747,8 @@ def figure_positions_plan(results, lang: str = "en", scheme=None):
     allr = np.concatenate([pm.r for pm in P.values()])
     size = 0.035 * float(max(np.ptp(allr[:, 0]), np.ptp(allr[:, 1]), 1e-9))
     nums = results.position_numbers()          # the one numbering: the CSVs and the report's
-    std = [(lab, phi) for (lab, phi), k in zip(results.position_angles, nums) if k is not None]
-    dcs = [(lab, phi) for (lab, phi), k in zip(results.position_angles, nums) if k is None]
+    std = [(p.label, p.phi) for p in results.position_angles if p.number is not None]
+    dcs = [(p.label, p.phi) for p in results.position_angles if p.number is None]
     i0 = results.index_of(std[0][1]) if std else 0
     if scheme is not None:
         _scheme(ax, results, i0, size, scheme)

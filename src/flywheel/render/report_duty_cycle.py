@@ -60,7 +60,7 @@ def build_duty_cycle_document(r, title: str, source: str, lang: str = "en") -> D
     add(Formula(rf"t_{{\text{{{'вос' if lang == 'ru' else 'rec'}}}}} = \frac{{\Delta E}}{{P}}"))
 
     add(Heading(2, t["results"]))
-    for caption, header, rows, note, _ in summary_tables(d, lang):
+    for caption, header, rows, note, _ in summary_tables(r, lang):
         if rows:
             table(caption, header, rows)
         if note:

@@ -49,13 +49,17 @@ def _g(x: float, digits: int = 6) -> str:
     return _number(x, digits, zero=1e-13, nonfinite="show")
 
 
-def time_domain_lines(td: dict | None, lang: str = "en") -> list[str]:
-    """The --transients results as lines of text (verification, start-up, run-down).
+def time_domain_lines(td, lang: str = "en") -> list[str]:
+    """The --transients results (a :class:`~flywheel.dynamics.results.TimeDomainResult`, or
+    None) as lines of text (verification, start-up, run-down).
 
-    >>> td = {"verification": {"cycles": 3, "repeat_error": 1e-9, "max_deviation": 2e-9, "period": 0.1},
-    ...       "startup": {"stalled": False, "converged": False, "cycles_run": 2000, "time_run": 150.0,
-    ...                   "omega_mean_last": 60.0, "omega_final_predicted": 62.8},
-    ...       "rundown": {"time": 2.5, "angle_deg": 720.0, "stopped": True}}
+    >>> from flywheel.dynamics.results import Rundown, StartupRun, TimeDomainResult, Verification
+    >>> td = TimeDomainResult(
+    ...     Verification(cycles=3, repeat_error=1e-9, max_deviation=2e-9, period=0.1),
+    ...     StartupRun(converged=False, cycles_run=2000, time_run=150.0, omega_mean_last=60.0,
+    ...                omega_final_predicted=62.8, time_constant=None, starting_torque=100.0,
+    ...                no_load_speed=70.0),
+    ...     Rundown(time=2.5, angle_deg=720.0, stopped=True), histories={})
     >>> print("\\n".join(time_domain_lines(td, "ru")))  # doctest: +NORMALIZE_WHITESPACE
     интегрирование во времени (solve_ivp, циклов: 3): движение повторяется с точностью 1.0e-09,
     совпадает с ω(φ) до 2.0e-09, период 0.1 с
@@ -63,31 +67,31 @@ def time_domain_lines(td: dict | None, lang: str = "en") -> list[str]:
     скорость последнего цикла 60 рад/с, по характеристике двигателя 62.8 рад/с
     выбег после отключения привода: 2.5 с, оборотов: 2.00
     """
-    if not td:
+    if td is None:
         return []
     t = L10N[lang]
-    v = td["verification"]
-    out = [t["td_verify"].format(n=v["cycles"], rep=f"{v['repeat_error']:.1e}",
-                                 dev=f"{v['max_deviation']:.1e}", T=_g(v["period"]))]
-    st = td["startup"]
-    if st.get("computed") is False:
-        out.append(t["st_none"].format(reason=nm.message(st["reason"], lang)))
-    elif st.get("stalled"):
-        out.append(t["st_stall"].format(a=f"{st['stall_angle_deg']:.1f}"))
-    elif st.get("converged", True) and st.get("time_to_steady") is not None:
-        out.append(t["st_ok"].format(t=_g(st["time_to_steady"], 4), n=st["cycles_to_steady"],
-                                     w=_g(st["omega_mean_steady"])))
+    v = td.verification
+    out = [t["td_verify"].format(n=v.cycles, rep=f"{v.repeat_error:.1e}",
+                                 dev=f"{v.max_deviation:.1e}", T=_g(v.period))]
+    st = td.startup
+    if not st.computed:
+        out.append(t["st_none"].format(reason=nm.message(st.reason, lang)))
+    elif st.stalled:
+        out.append(t["st_stall"].format(a=f"{st.stall_angle_deg:.1f}"))
+    elif st.converged and st.time_to_steady is not None:
+        out.append(t["st_ok"].format(t=_g(st.time_to_steady, 4), n=st.cycles_to_steady,
+                                     w=_g(st.omega_mean_steady)))
     else:
-        wp = st.get("omega_final_predicted")
-        out.append(t["st_no"].format(n=st.get("cycles_run"), t=_g(st.get("time_run", 0.0), 4),
-                                     w=_g(st.get("omega_mean_last", 0.0)),
+        wp = st.omega_final_predicted
+        out.append(t["st_no"].format(n=st.cycles_run, t=_g(st.time_run, 4),
+                                     w=_g(st.omega_mean_last),
                                      wp=_g(wp) if wp is not None else "—"))
-    rd = td["rundown"]
-    if rd.get("reason"):                # English: the fixed line; Russian: the reason itself
-        out.append(t["rd_never"].format(reason=nm.message(rd["reason"], lang)))
+    rd = td.rundown
+    if rd.reason:                # English: the fixed line; Russian: the reason itself
+        out.append(t["rd_never"].format(reason=nm.message(rd.reason, lang)))
         return out
-    out.append(t["rd"].format(t=_g(rd["time"], 4), rev=f"{rd['angle_deg'] / 360:.2f}")
-               + ("" if rd["stopped"] else t["rd_not"]))
+    out.append(t["rd"].format(t=_g(rd.time, 4), rev=f"{rd.angle_deg / 360:.2f}")
+               + ("" if rd.stopped else t["rd_not"]))
     return out
 
 
@@ -106,7 +110,7 @@ def print_summary(results, console=None, lang: str = "en") -> None:
 
     def at(key: str) -> str:
         """The value of ``key`` and where (φ) it is."""
-        return f"{_g(s[key])} {t['at']} {s[f'phi_{key}_deg']:.2f}°"
+        return f"{_g(getattr(s, key))} {t['at']} {getattr(s, f'phi_{key}_deg'):.2f}°"
 
     console.print(f"[bold]{results.title}[/bold]" + (f"  ({results.source})" if results.source else ""))
     tab = Table(title=t["title_main"])
@@ -115,69 +119,67 @@ def print_summary(results, console=None, lang: str = "en") -> None:
     tab.add_column(t["unit"])
     for key in ("crank_length", "omega_mean", "cycle_work_resistance", "driving_moment",
                 "J_II_mean", "delta_T_max"):
-        tab.add_row(nm.name(key, lang), _g(s[key]), u(key))
+        tab.add_row(nm.name(key, lang), _g(getattr(s, key)), u(key))
     tab.add_row(f"{nm.symbol('dT_I', lang)} max / min", f"{at('delta_T_I_max')} / {at('delta_T_I_min')}",
                 u("dT_I"))
-    given = s.get("flywheel_given", False)          # a given flywheel: δ is its answer
+    given = bool(s.flywheel_given)          # a given flywheel: δ is its answer
     if given:
-        tab.add_row(nm.name("J_flywheel_given", lang), _g(s["J_flywheel_given"]),
+        tab.add_row(nm.name("J_flywheel_given", lang), _g(s.J_flywheel_given),
                     u("J_flywheel_given"))
     for key in ("J_required", "J_required_exact", "J_first_group", "J_flywheel", "delta",
                 "delta_achieved", "delta_achieved_exact"):
         tab.add_row(nm.name("delta_given" if given and key == "delta" else key, lang),
-                    _g(s[key]), u(key))
-    for key in ("power", "power_moment", "power_from_loads"):
-        if key in s:
-            tab.add_row(nm.name(key, lang), _g(s[key]), u(key))
+                    _g(getattr(s, key)), u(key))
+    if s.power is not None:
+        for key in ("power", "power_moment", "power_from_loads"):
+            tab.add_row(nm.name(key, lang), _g(getattr(s, key)), u(key))
     for key in ("omega_max", "omega_min", *(("epsilon_max", "epsilon_min") if given else ())):
         tab.add_row(nm.name(key, lang), at(key), u(key))
-    if "flywheel_speed_ratio" in s:
-        tab.add_row(t["fw_shaft"].format(i=nm.symbol("flywheel_speed_ratio", lang),
-                                         J=nm.symbol("flywheel_J_on_its_shaft", lang)),
-                    f"{nm.symbol('flywheel_speed_ratio', lang)} = {_g(s['flywheel_speed_ratio'])}, "
-                    f"{_g(s['flywheel_J_on_its_shaft'])}",
-                    u("flywheel_speed_ratio", "flywheel_J_on_its_shaft"))
-    if "flywheel_material" in s:
-        lim = s.get("flywheel_rim_speed_limit")
-        tab.add_row(nm.name("flywheel_material", lang),
-                    f"{nm.material(s['flywheel_material'], lang)}, "
-                    f"{nm.symbol('flywheel_material_density', lang)} = "
-                    f"{_g(s['flywheel_material_density'], 5)}"
-                    + (f"; {nm.name('flywheel_rim_speed_limit', lang)} {_g(lim, 3)}" if lim else ""),
-                    u("flywheel_material_density", *(["flywheel_rim_speed_limit"] if lim else [])))
-    share = s["flywheel_rim_share"]
+    tab.add_row(t["fw_shaft"].format(i=nm.symbol("flywheel_speed_ratio", lang),
+                                     J=nm.symbol("flywheel_J_on_its_shaft", lang)),
+                f"{nm.symbol('flywheel_speed_ratio', lang)} = {_g(s.flywheel_speed_ratio)}, "
+                f"{_g(s.flywheel_J_on_its_shaft)}",
+                u("flywheel_speed_ratio", "flywheel_J_on_its_shaft"))
+    lim = s.flywheel_rim_speed_limit
+    tab.add_row(nm.name("flywheel_material", lang),
+                f"{nm.material(s.flywheel_material, lang)}, "
+                f"{nm.symbol('flywheel_material_density', lang)} = "
+                f"{_g(s.flywheel_material_density, 5)}"
+                + (f"; {nm.name('flywheel_rim_speed_limit', lang)} {_g(lim, 3)}" if lim else ""),
+                u("flywheel_material_density", *(["flywheel_rim_speed_limit"] if lim else [])))
+    share = s.flywheel_rim_share
     if share < 1 - 1e-9:
         tab.add_row(nm.name("flywheel_rim_share", lang), _g(share, 4), u("flywheel_rim_share"))
-    designed = "D_mean" in s["flywheel_rim"]          # [flywheel.rim]: the designed rim
+    designed = s.rim_designed          # [flywheel.rim]: the designed rim
     rim_fields = (("D_mean", "thickness", "width", "mass", "rim_speed", "stress"),
                   (4, 4, 4, 5, 4, 4)) if designed else (("D", "D_inner", "b", "mass"), (4, 4, 4, 5))
     for key, fields, digits in (("flywheel_disk", ("D", "b", "mass"), (4, 4, 5)),
                                 ("flywheel_rim", *rim_fields)):
-        d = s[key]
+        d = getattr(s, key)
         tab.add_row(nm.name("flywheel_rim_design" if key == "flywheel_rim" and designed else key,
                             lang),
-                    ", ".join(f"{nm.symbol(f, lang)} = {_g(d[f], n)}"
+                    ", ".join(f"{nm.symbol(f, lang)} = {_g(getattr(d, f), n)}"
                               for f, n in zip(fields, digits)), u(*fields))
     console.print(tab)
     for a in results.at:
-        pt = Table(title=t["title_at"].format(phi=_g(a["phi_deg"]), w=_g(a["omega"]), e=_g(a["epsilon"]),
+        pt = Table(title=t["title_at"].format(phi=_g(a.phi_deg), w=_g(a.omega), e=_g(a.epsilon),
                                               uw=nm.unit_of("omega", lang),
                                               ue=nm.unit_of("epsilon", lang)))
         point_keys = ("x", "y", "v_q", "a_q", "v", "a")
         for col in (t["point"], *(nm.heading(k, lang) for k in point_keys)):
             pt.add_column(escape(col), justify="right")
-        for name, p in a["points"].items():
-            pt.add_row(name, *(_g(p[k], 5) if k in p else "—" for k in point_keys))
+        for name, p in a.points.items():
+            pt.add_row(name, *(_g(getattr(p, k), 5) if getattr(p, k) is not None else "—" for k in point_keys))
         console.print(pt)
         lt = Table()
         link_keys = ("omega_q", "epsilon_q", "omega", "epsilon")
         for col in (t["link"], *(nm.heading(k, lang) for k in link_keys)):
             lt.add_column(escape(col), justify="right")
-        for name, lk in a["links"].items():
-            lt.add_row(name, *(_g(lk[k], 5) if k in lk else "—" for k in link_keys))
+        for name, lk in a.links.items():
+            lt.add_row(name, *(_g(getattr(lk, k), 5) if getattr(lk, k) is not None else "—" for k in link_keys))
         console.print(lt)
     print_forces(results, console, lang)            # the force analysis (render/forces.py)
-    for line in time_domain_lines(s.get("time_domain"), lang):
+    for line in time_domain_lines(s.time_domain, lang):
         console.print(line, markup=False)
     for w in results.warnings:
         console.print(f"[yellow]{t['warning']}:[/yellow] {escape(nm.message(w, lang))}")

@@ -41,9 +41,9 @@ def positions_csv(results) -> str:
     cols = results.columns
     header = "position,number," + ",".join(csv_header(key) for key in cols)
     lines = [header]
-    for (label, phi), k in zip(results.position_angles, results.position_numbers()):
-        i = results.index_of(phi)
-        lines.append(f"{label},{number_cell(k)},"
+    for pos in results.position_angles:
+        i = results.index_of(pos.phi)
+        lines.append(f"{pos.label},{number_cell(pos.number)},"
                      + ",".join(_fmt(c.values[i]) for c in cols.values()))
     return "\n".join(lines) + "\n"
 

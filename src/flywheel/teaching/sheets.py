@@ -233,7 +233,7 @@ def _linkage(document: dict, source: str):
         return None, Notice("the kinematics are given as a table ([tabulated]): the sheet has "
                             "no drawing of the mechanism", "sheet_no_drawing_tabulated")
     results = analyze(case, n_points=DRAWING_POINTS)
-    angles = [float(a["phi_deg"]) for a in results.at] or [0.0]
+    angles = [float(a.phi_deg) for a in results.at] or [0.0]
     return results, angles[0]
 
 
