@@ -97,14 +97,18 @@ def test_a_manifest_cannot_reach_outside_its_folder(tmp_path):
     assert victim.read_text() == "keep"
 
 
-def test_folder_of_the_version_before_manifests_is_recognised_by_its_content(tmp_path):
+def test_a_folder_without_its_manifest_is_the_users_whatever_it_holds(tmp_path):
+    """A summary.json with "results" and "units" does not make a folder flywheel's (issue 23):
+    without a manifest the folder is refused in one line, every file as it was."""
     old = tmp_path / "old"
     old.mkdir()
     (old / "summary.json").write_text('{"results": {}, "units": "SI"}')
-    (old / "mine.txt").write_text("keep")
-    write_folder(old, _builder(RUN2), "summary.json")
-    assert (old / "mine.txt").read_text() == "keep"
-    assert (old / "table.csv").read_text() == RUN2["table.csv"]
+    (old / "table.csv").write_text("my own table")
+    with pytest.raises(InputError, match="not an earlier output folder"):
+        write_folder(old, _builder(RUN2), "summary.json")
+    assert (old / "table.csv").read_text() == "my own table"
+    assert sorted(p.name for p in old.iterdir()) == ["summary.json", "table.csv"]
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["old"]
 
 
 def test_a_failed_build_leaves_everything_as_it_was(tmp_path):
@@ -161,7 +165,7 @@ def test_an_interrupted_run_leaves_the_output_folder_as_it_was(tmp_path, sig):
     assert proc.returncode == (130 if sig == signal.SIGINT else 143), err
     assert "Traceback" not in err and len(err.strip().splitlines()) == 1, err
     assert {p: p.read_bytes() for p in out.rglob("*") if p.is_file()} == before
-    assert sorted(p.name for p in tmp_path.iterdir()) == ["o"]
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["o"], list(tmp_path.rglob("*"))
 
 
 def _alive(pid: int) -> bool:
