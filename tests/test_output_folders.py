@@ -301,6 +301,27 @@ def test_a_ctrl_c_while_the_interpreter_exits_prints_no_traceback():
     assert json.loads(res.stdout)
 
 
+@pytest.mark.parametrize("lang, line", [("en", "error: terminated (SIGTERM)"),
+                                        ("ru", "ошибка: остановлено (SIGTERM)")])
+def test_a_sigterm_after_the_output_is_whole_is_one_line_and_143(tmp_path, lang, line):
+    """A SIGTERM that comes after the command is over (its output folder whole, Python running
+    its exit handlers): one line and exit 143, the output and stdout kept (before: a silent
+    death by the signal, exit −15)."""
+    code = ("import atexit, os, signal, sys\n"
+            "sys.argv = ['flywheel', 'task2', '--case', sys.argv[1], '--out', sys.argv[2],\n"
+            "            '--json', '--lang', sys.argv[3]]\n"
+            "from flywheel.cli import main\n"
+            "atexit.register(lambda: os.kill(os.getpid(), signal.SIGTERM))\n"
+            "main()\n")
+    out = tmp_path / "t2"
+    res = subprocess.run([sys.executable, "-c", code, str(CASES / "task2_seed_triangle.toml"),
+                          str(out), lang], capture_output=True, text=True, timeout=120)
+    assert res.returncode == 143, res.stderr
+    assert res.stderr.strip().splitlines() == [line], res.stderr
+    assert json.loads(res.stdout) == json.loads((out / "summary.json").read_text("utf-8"))
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["t2"]
+
+
 def test_an_error_raised_while_a_ctrl_c_unwinds_is_the_interruption(monkeypatch, capsys):
     """A library's clean-up that fails while a Ctrl-C unwinds it (matplotlib: "Invalid bounding
     box" in a sheet's figure, seen once by hand) is the interruption: one line, exit 130, not

@@ -8,13 +8,15 @@ flywheel wrote there with its SHA-256, and a *seal*.
 **Which files are flywheel's.** A file is flywheel's to replace or remove only if all hold:
 
 * the folder's manifest is flywheel's and *sealed*: its ``seal`` is the SHA-256 of a fixed
-  label, the kind of folder, the folder's own name and the list of files (:func:`_seal`). A
-  manifest written by hand, edited, copied from a folder of another name or written by an older
-  flywheel (no seal) fails; the folder still counts as an output folder (flywheel writes into
-  it), but nothing the manifest lists is replaced or removed: those files are the user's (a
-  note says so). The seal holds no secret (the manifest stays byte-identical for the same
-  input); it is not proof against someone who computes it on purpose — who could as well
-  delete the file — but no accident, stale copy or hand-made list can pass it;
+  label, the kind of folder and the list of files with their hashes (:func:`_seal`). A
+  manifest written by hand, edited, or written by an older flywheel (no seal) fails; the
+  folder still counts as an output folder (flywheel writes into it), but nothing the manifest
+  lists is replaced or removed: those files are the user's (a note says so). The seal holds
+  no secret and nothing of the folder's identity (its name, its inode), so the manifest stays
+  byte-identical for the same input wherever it is written; it cannot tell a verbatim copy of
+  a genuine manifest from the original — but then every file it lets flywheel replace or
+  remove holds, byte for byte, what flywheel wrote (the hash below), and no hand-made list,
+  edit or stale format passes it;
 * the file is listed there with a path inside the folder, and every folder on the way to it is
   a real folder (never a symbolic link: flywheel never descends through a link in an output
   folder);
@@ -47,7 +49,6 @@ import re
 import shutil
 import stat
 import tempfile
-import unicodedata
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -100,17 +101,15 @@ def _files(folder: Path) -> list[str]:
     return sorted(out)
 
 
-def _seal(kind: str, folder_name: str, files: dict[str, str]) -> str:
-    """The manifest's seal: SHA-256 of the label, the kind, the folder's name (NFC, casefolded:
-    the same folder on a case-insensitive system) and the files with their hashes."""
-    name = unicodedata.normalize("NFC", folder_name).casefold()
+def _seal(kind: str, files: dict[str, str]) -> str:
+    """The manifest's seal: SHA-256 of the label, the kind and the files with their hashes."""
     body = json.dumps(files, sort_keys=True, ensure_ascii=True, separators=(",", ":"))
-    return hashlib.sha256(f"{_SEAL_LABEL}\n{kind}\n{name}\n{body}".encode()).hexdigest()
+    return hashlib.sha256(f"{_SEAL_LABEL}\n{kind}\n{body}".encode()).hexdigest()
 
 
-def _manifest_text(kind: str, folder_name: str, files: dict[str, str]) -> str:
+def _manifest_text(kind: str, files: dict[str, str]) -> str:
     return json.dumps({"written_by": _WRITTEN_BY, "format": _FORMAT, "kind": kind,
-                       "files": files, "seal": _seal(kind, folder_name, files)},
+                       "files": files, "seal": _seal(kind, files)},
                       indent=1, sort_keys=True) + "\n"
 
 
@@ -149,7 +148,7 @@ def _read_manifest(folder: Path, kind: str) -> _Earlier | None:
     files = doc["files"]
     trusted = (doc.get("format") == _FORMAT and isinstance(doc.get("seal"), str)
                and all(isinstance(k, str) and isinstance(v, str) for k, v in files.items())
-               and doc["seal"] == _seal(kind, folder.name, files)
+               and doc["seal"] == _seal(kind, files)
                and all(_inside(k) for k in files))
     return _Earlier({k: v for k, v in files.items() if isinstance(k, str)
                      and isinstance(v, str) and _inside(k)} if trusted else {}, trusted)
@@ -335,7 +334,7 @@ def write_folder(target: Path, build, marker: str, kind: str = "output",
             tmp = Path(tempfile.mkdtemp(prefix=f".{real.name}.tmp-{os.getpid()}-", dir=parent))
         build(tmp)
         new = {rel: _sha256(tmp / rel) for rel in _files(tmp)}
-        (tmp / MANIFEST).write_text(_manifest_text(kind, real.name, new), encoding="utf-8")
+        (tmp / MANIFEST).write_text(_manifest_text(kind, new), encoding="utf-8")
         if earlier is None:
             os.chmod(tmp, 0o755)
             with _signals_held():           # Ctrl-C now: the old folder stays as it was
