@@ -186,8 +186,13 @@ def _tmp_pid(d: Path, name: str) -> int | None:
         return None
 
 
-def _restore_failed(target: Path, tmp: Path, exc: OSError | None) -> InputError:
-    reason = exc.strerror if exc is not None and exc.strerror else "a path changed since"
+_CHANGED = "a path changed since"
+_NOT_A_JOURNAL = "its journal is not one flywheel wrote"
+
+
+def _restore_failed(target: Path, tmp: Path, exc: OSError | None,
+                    why: str = _CHANGED) -> InputError:
+    reason = exc.strerror if exc is not None and exc.strerror else why
     return InputError(Notice(
         f"--out {target}: a run killed while replacing its files left the earlier files in "
         f"{tmp}, and they cannot be put back ({reason}); move them back by hand or give "
@@ -195,12 +200,15 @@ def _restore_failed(target: Path, tmp: Path, exc: OSError | None) -> InputError:
         reason=reason, errno=getattr(exc, "errno", None)))
 
 
-def remove_stale_temporaries(parent: Path, name: str, notes: list | None = None) -> list[Path]:
+def remove_stale_temporaries(parent: Path, name: str, notes: list | None = None,
+                             shown: Path | None = None) -> list[Path]:
     """Remove the temporary folders ``.NAME.tmp-*`` in ``parent`` whose writer is no longer
     running (a run killed with SIGKILL leaves one); one killed while swapping its files into
     ``parent/NAME`` first has that swap undone (its journal). Returns those removed. A folder
     that is not flywheel's (no pid in its name or pid file) is left alone; one whose swap
-    cannot be undone is kept (it holds the user's earlier files) and refused."""
+    cannot be undone is kept (it holds the user's earlier files) and refused (naming the target
+    as ``shown``, by default ``parent/name``)."""
+    shown = shown if shown is not None else parent / name
     removed = []
     try:
         candidates = sorted(parent.glob(f".{glob_escape(name)}.tmp-*"))
@@ -223,16 +231,15 @@ def remove_stale_temporaries(parent: Path, name: str, notes: list | None = None)
             except (OSError, ValueError, KeyError, TypeError):
                 steps = None
             if steps is None or doc.get("target") != name or not _valid_steps(steps):
-                raise _restore_failed(parent / name, d, None)
+                raise _restore_failed(shown, d, None, _NOT_A_JOURNAL)
             bad = _undo(parent / name, d, steps)
             if bad is not None:
-                raise _restore_failed(parent / name, d, bad if isinstance(bad, OSError)
-                                      else None)
+                raise _restore_failed(shown, d, bad if isinstance(bad, OSError) else None)
             journal.unlink()
             if notes is not None:
-                notes.append(Notice(f"{parent / name}: put back as it was before a run that was "
+                notes.append(Notice(f"{shown}: put back as it was before a run that was "
                                     "killed while replacing its files", "out_restored",
-                                    target=str(parent / name)))
+                                    target=str(shown)))
         shutil.rmtree(d, ignore_errors=True)
         removed.append(d)
     return removed
@@ -311,7 +318,7 @@ def write_folder(target: Path, build, marker: str, kind: str = "output",
     parent = real.parent
     try:
         parent.mkdir(parents=True, exist_ok=True)
-        remove_stale_temporaries(parent, real.name, notes)
+        remove_stale_temporaries(parent, real.name, notes, target)
         exists = real.is_dir()
         nonempty = exists and any(real.iterdir())
     except OSError as exc:
@@ -589,10 +596,9 @@ def _swap(out: Path, tmp: Path, steps) -> None:
 def _say(plan: _Plan, earlier: _Earlier, target: Path, notes: list) -> None:
     if not earlier.trusted:
         notes.append(Notice(f"{target}: its {MANIFEST} is not the one flywheel wrote for this "
-                            "folder (edited, copied from another folder or written by an older "
-                            "flywheel): the files it lists are treated as yours, none is "
-                            "replaced or removed", "out_manifest_untrusted", target=str(target),
-                            manifest=MANIFEST))
+                            "folder (edited, written by hand or by an older flywheel): the files "
+                            "it lists are treated as yours, none is replaced or removed",
+                            "out_manifest_untrusted", target=str(target), manifest=MANIFEST))
     if plan.edited:
         notes.append(Notice(f"{target}: kept the files you edited since the earlier run: "
                             f"{', '.join(plan.edited)}", "out_kept", target=str(target),

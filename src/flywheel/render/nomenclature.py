@@ -2504,11 +2504,11 @@ _MSGS_DERIVED |= {"cycles_ru", "n_values_ru", "shafts_ru", "draws_ru"}
 # io/output.py: output folders that cannot reach outside themselves (issue 23, item 1).
 MESSAGES_RU.update({
     "out_manifest_untrusted": ("{target}: {manifest} — не тот, что flywheel записал для этой "
-                               "папки (изменён, скопирован из другой папки или записан прежней "
-                               "версией flywheel): перечисленные в нём файлы считаются вашими, "
-                               "ни один не заменён и не удалён"),
+                               "папки (изменён, написан вручную или прежней версией flywheel): "
+                               "перечисленные в нём файлы считаются вашими, ни один не заменён "
+                               "и не удалён"),
     "out_user_kept": "{target}: ваши файлы там, куда этот запуск пишет свои, сохранены: {files_ru}",
-    "out_restored": ("{target}: восстановлена такой, какой была до запуска, прерванного "
+    "out_restored": ("{target}: папка восстановлена такой, какой была до запуска, прерванного "
                      "посреди замены файлов"),
     "out_restore_failed": ("--out {target}: запуск, прерванный посреди замены файлов, оставил "
                            "прежние файлы в {tmp}, и вернуть их не удаётся ({reason_ru}); "
@@ -2524,8 +2524,9 @@ def _msgs_safe_out_ru_params(code: str, p: dict) -> dict:
             names[-1] = f"{more[0]} и ещё {more[1][:-len(' more')]}"
         p["files_ru"] = ", ".join(names)
     elif code == "out_restore_failed":
-        p["reason_ru"] = ("с тех пор изменился путь" if p["reason"] == "a path changed since"
-                          else os_reason_ru(p.get("errno"), p["reason"]))
+        p["reason_ru"] = {"a path changed since": "с тех пор изменился путь",
+                          "its journal is not one flywheel wrote": "его журнал записан не flywheel",
+                          }.get(p["reason"]) or os_reason_ru(p.get("errno"), p["reason"])
     return p
 
 
