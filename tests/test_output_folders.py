@@ -97,14 +97,18 @@ def test_a_manifest_cannot_reach_outside_its_folder(tmp_path):
     assert victim.read_text() == "keep"
 
 
-def test_folder_of_the_version_before_manifests_is_recognised_by_its_content(tmp_path):
+def test_a_folder_without_its_manifest_is_the_users_whatever_it_holds(tmp_path):
+    """A summary.json with "results" and "units" does not make a folder flywheel's (issue 23):
+    without a manifest the folder is refused in one line, every file as it was."""
     old = tmp_path / "old"
     old.mkdir()
     (old / "summary.json").write_text('{"results": {}, "units": "SI"}')
-    (old / "mine.txt").write_text("keep")
-    write_folder(old, _builder(RUN2), "summary.json")
-    assert (old / "mine.txt").read_text() == "keep"
-    assert (old / "table.csv").read_text() == RUN2["table.csv"]
+    (old / "table.csv").write_text("my own table")
+    with pytest.raises(InputError, match="not an earlier output folder"):
+        write_folder(old, _builder(RUN2), "summary.json")
+    assert (old / "table.csv").read_text() == "my own table"
+    assert sorted(p.name for p in old.iterdir()) == ["summary.json", "table.csv"]
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["old"]
 
 
 def test_a_failed_build_leaves_everything_as_it_was(tmp_path):
@@ -161,7 +165,7 @@ def test_an_interrupted_run_leaves_the_output_folder_as_it_was(tmp_path, sig):
     assert proc.returncode == (130 if sig == signal.SIGINT else 143), err
     assert "Traceback" not in err and len(err.strip().splitlines()) == 1, err
     assert {p: p.read_bytes() for p in out.rglob("*") if p.is_file()} == before
-    assert sorted(p.name for p in tmp_path.iterdir()) == ["o"]
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["o"], list(tmp_path.rglob("*"))
 
 
 def _alive(pid: int) -> bool:
@@ -295,6 +299,27 @@ def test_a_ctrl_c_while_the_interpreter_exits_prints_no_traceback():
                          capture_output=True, text=True, timeout=60)
     assert res.returncode == 0 and "Traceback" not in res.stderr, res.stderr
     assert json.loads(res.stdout)
+
+
+@pytest.mark.parametrize("lang, line", [("en", "error: terminated (SIGTERM)"),
+                                        ("ru", "ошибка: остановлено (SIGTERM)")])
+def test_a_sigterm_after_the_output_is_whole_is_one_line_and_143(tmp_path, lang, line):
+    """A SIGTERM that comes after the command is over (its output folder whole, Python running
+    its exit handlers): one line and exit 143, the output and stdout kept (before: a silent
+    death by the signal, exit −15)."""
+    code = ("import atexit, os, signal, sys\n"
+            "sys.argv = ['flywheel', 'task2', '--case', sys.argv[1], '--out', sys.argv[2],\n"
+            "            '--json', '--lang', sys.argv[3]]\n"
+            "from flywheel.cli import main\n"
+            "atexit.register(lambda: os.kill(os.getpid(), signal.SIGTERM))\n"
+            "main()\n")
+    out = tmp_path / "t2"
+    res = subprocess.run([sys.executable, "-c", code, str(CASES / "task2_seed_triangle.toml"),
+                          str(out), lang], capture_output=True, text=True, timeout=120)
+    assert res.returncode == 143, res.stderr
+    assert res.stderr.strip().splitlines() == [line], res.stderr
+    assert json.loads(res.stdout) == json.loads((out / "summary.json").read_text("utf-8"))
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["t2"]
 
 
 def test_an_error_raised_while_a_ctrl_c_unwinds_is_the_interruption(monkeypatch, capsys):

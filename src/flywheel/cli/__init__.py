@@ -70,18 +70,48 @@ def _stop(signum, frame) -> None:
     raise Stopped(signum)
 
 
+def _stop_line(signum: int) -> None:
+    """The one line of an interruption (Ctrl-C) or a termination (SIGTERM)."""
+    import signal
+
+    from flywheel.cli.guard import say_error
+    from flywheel.errors import Notice
+
+    say_error(Notice("interrupted (Ctrl-C)", "stopped_interrupted") if signum == signal.SIGINT
+              else Notice("terminated (SIGTERM)", "stopped_terminated"))
+
+
 def _stopped(exc: Stopped) -> None:
     """One line and exit 130 (Ctrl-C) or 143 (SIGTERM)."""
     import signal
     import sys
 
-    signal.signal(signal.SIGINT, signal.SIG_IGN)     # a second Ctrl-C: no traceback
-    from flywheel.cli.guard import say_error
-    from flywheel.errors import Notice
-
-    say_error(Notice("interrupted (Ctrl-C)", "stopped_interrupted") if exc.signum == signal.SIGINT
-              else Notice("terminated (SIGTERM)", "stopped_terminated"))
+    signal.signal(signal.SIGINT, signal.SIG_IGN)     # a second Ctrl-C or a SIGTERM now: the
+    signal.signal(signal.SIGTERM, signal.SIG_IGN)    # line is said once, no traceback
+    _Late.said = True
+    _stop_line(exc.signum)
     sys.exit(128 + exc.signum)
+
+
+class _Late:
+    """A SIGTERM after the command is over (its outputs whole, or none), while Python exits
+    (atexit: the plot workers joined): too late to stop anything, still one line and exit
+    143 (not a silent death by the signal, exit −15)."""
+
+    said = False            # the interruption's line is said already: nothing more to say
+
+    @staticmethod
+    def terminated(signum, frame) -> None:
+        import os
+        import sys
+
+        try:
+            _stop_line(signum)
+            for stream in (sys.stdout, sys.stderr):
+                stream.flush()
+        except Exception:                     # a stream busy or closed: the exit code tells
+            pass
+        os._exit(128 + signum)
 
 
 def _stop_in_chain(exc: BaseException) -> Stopped | None:
@@ -157,9 +187,16 @@ def main() -> None:
     finally:
         # the command is over (its outputs whole, or none): a Ctrl-C during the interpreter's
         # exit (atexit: the plot workers joined) is too late to stop anything and would print
-        # "Exception ignored in atexit callback" with a traceback; SIGTERM ends it silently
+        # "Exception ignored in atexit callback" with a traceback: ignored; a SIGTERM is said
+        # in one line and exits 143 at once (_Late)
         signal.signal(signal.SIGINT, signal.SIG_IGN)
-        signal.signal(signal.SIGTERM, signal.SIG_DFL)
+        if _Late.said:
+            signal.signal(signal.SIGTERM, signal.SIG_IGN)
+        else:
+            import importlib
+
+            importlib.import_module("flywheel.cli.guard")    # now, not in the handler
+            signal.signal(signal.SIGTERM, _Late.terminated)
 
 
 if __name__ == "__main__":  # pragma: no cover

@@ -2492,3 +2492,37 @@ def _msgs_plural_ru_params(code: str, p: dict) -> dict:
 
 _PARAM_HOOKS.append(_msgs_plural_ru_params)
 _MSGS_DERIVED |= {"cycles_ru", "n_values_ru", "shafts_ru", "draws_ru"}
+
+
+# --- msgs_safe_out ---
+# io/output.py: output folders that cannot reach outside themselves (issue 23, item 1).
+MESSAGES_RU.update({
+    "out_manifest_untrusted": ("{target}: {manifest} — не тот, что flywheel записал для этой "
+                               "папки (изменён, написан вручную или прежней версией flywheel): "
+                               "перечисленные в нём файлы считаются вашими, ни один не заменён "
+                               "и не удалён"),
+    "out_user_kept": "{target}: ваши файлы там, куда этот запуск пишет свои, сохранены: {files_ru}",
+    "out_restored": ("{target}: папка восстановлена такой, какой была до запуска, прерванного "
+                     "посреди замены файлов"),
+    "out_restore_failed": ("--out {target}: запуск, прерванный посреди замены файлов, оставил "
+                           "прежние файлы в {tmp}, и вернуть их не удаётся ({reason_ru}); "
+                           "верните их вручную или укажите другую папку"),
+})
+
+
+def _msgs_safe_out_ru_params(code: str, p: dict) -> dict:
+    if code == "out_user_kept":
+        names = p["files"].split(", ")
+        more = names[-1].rsplit(" and ", 1)
+        if len(more) == 2 and more[1].endswith(" more"):
+            names[-1] = f"{more[0]} и ещё {more[1][:-len(' more')]}"
+        p["files_ru"] = ", ".join(names)
+    elif code == "out_restore_failed":
+        p["reason_ru"] = {"a path changed since": "с тех пор изменился путь",
+                          "its journal is not one flywheel wrote": "его журнал записан не flywheel",
+                          }.get(p["reason"]) or os_reason_ru(p.get("errno"), p["reason"])
+    return p
+
+
+_PARAM_HOOKS.append(_msgs_safe_out_ru_params)
+_MSGS_DERIVED |= {"files_ru", "reason_ru"}
