@@ -27,8 +27,9 @@ def variants_command(
     sheets: bool = typer.Option(False, "--sheets", help="Also write a printable task sheet per "
                                 "variant (sheets/variant_NN.html and .pdf, and sheets.pdf with "
                                 "them all): the drawing, the data, what to find; no answers."),
-    sheets_format: str = typer.Option("both", "--sheets-format", help="Formats of --sheets: "
-                                      "both | html | pdf."),
+    sheets_format: Optional[str] = typer.Option(None, "--sheets-format", help="Formats of "
+                                                "--sheets: both | html | pdf (default both; "
+                                                "only with --sheets)."),
     lang: str = typer.Option("en", "--lang", help="Language of the task sheets: en | ru "
                              "(ru: the wording of a Russian course sheet)."),
 ) -> None:
@@ -48,6 +49,12 @@ def variants_command(
         fail(Notice(f"--points: {points} is too few (allowed: 36 or more)", "points_too_few",
                     n=points))
     check_lang(lang)
+    if sheets_format is not None and not sheets:
+        fail(Notice(f"--sheets-format {sheets_format}: given without --sheets (it says the "
+                    "format of the task sheets; allowed: --sheets --sheets-format FORMAT, or "
+                    "neither)", "sheets_format_without_sheets", got=sheets_format))
+    if sheets_format is None:
+        sheets_format = "both"
     if sheets_format not in ("both", "html", "pdf"):
         fail(choice("--sheets-format", sheets_format, "a sheet format", "both, html, pdf"))
     import secrets
@@ -129,7 +136,8 @@ def grade_command(
     from flywheel.errors import Notice
     from flywheel.io.output import write_file
     from flywheel.render.nomenclature import stage_name
-    from flywheel.teaching.grading import grade, load_key, report_csv, report_dict
+    from flywheel.teaching.grading import (check_outputs, grade, load_key, report_csv,
+                                           report_dict)
 
     check_lang(lang)
     if csv_style not in ("plain", "excel-ru"):
@@ -145,6 +153,7 @@ def grade_command(
             fail(Notice(f"{option} {path}: the folder {path.parent} does not exist (allowed: a "
                         "CSV file name in an existing folder)", "csv_folder_missing",
                         option=option, path=str(path), parent=str(path.parent)))
+    _guard(check_outputs, key, answers, [("--out", out), ("--gradebook", gradebook)])
     k = _guard(load_key, key)
     from rich.console import Console
     from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn

@@ -28,6 +28,7 @@ import functools
 import io
 import json
 import math
+import os
 import re
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -35,6 +36,8 @@ from pathlib import Path
 from flywheel.errors import CaseFileError, InputError, Notice, led, said
 
 DEFAULT_TOLERANCE = 0.01
+#: the largest --tolerance: a relative error of 100 % (any answer of the right sign passes)
+MAX_TOLERANCE = 1.0
 #: round-off allowance: an error of tolerance·(1 + SLACK) still passes (0.01 typed for 1 %)
 SLACK = 1e-9
 
@@ -80,7 +83,13 @@ class Key:
 
 
 def _number(v) -> bool:
-    return isinstance(v, (int, float)) and not isinstance(v, bool) and math.isfinite(v)
+    """A finite JSON number (an integer too large for a float is not: 10**400)."""
+    if not isinstance(v, (int, float)) or isinstance(v, bool):
+        return False
+    try:
+        return math.isfinite(v)
+    except OverflowError:
+        return False
 
 
 def _positive(v) -> bool:
@@ -156,13 +165,66 @@ def load_key(path) -> Key:
         raise CaseFileError(Notice(f"{path}: cannot be read ({exc.strerror})",
                                    "grade_key_unreadable", path=str(path),
                                    reason=exc.strerror, errno=exc.errno)) from None
+    depth = json_depth(text)
+    if depth > MAX_KEY_DEPTH:
+        raise CaseFileError(Notice(f"{path}: nested too deep ({depth} levels of [] and {{}}; "
+                                   f"allowed: up to {MAX_KEY_DEPTH})", "key_too_deep",
+                                   path=str(path), depth=depth, top=MAX_KEY_DEPTH))
     try:
-        doc = json.loads(text)
+        doc = json.loads(text, parse_int=_key_int)
     except json.JSONDecodeError as exc:
         raise CaseFileError(Notice(f"{path}: not JSON: {exc.msg} at line {exc.lineno} column "
                                    f"{exc.colno}", "not_json", path=str(path), msg=exc.msg,
                                    line=exc.lineno, col=exc.colno)) from None
+    except _LongNumber as exc:
+        raise CaseFileError(Notice(f"{path}: a number of {exc.digits} digits is too long "
+                                   f"(allowed: up to {MAX_KEY_DIGITS} digits)", "key_number_too_long",
+                                   path=str(path), digits=exc.digits, top=MAX_KEY_DIGITS)) from None
+    except RecursionError:                  # json_depth bounds the nesting: not reached
+        raise CaseFileError(Notice(f"{path}: nested too deep (allowed: up to {MAX_KEY_DEPTH} "
+                                   "levels of [] and {})", "key_too_deep_at", path=str(path),
+                                   top=MAX_KEY_DEPTH)) from None
     return parse_key(doc, str(path))
+
+
+#: the deepest nesting of [] and {} in a key (answers.json has 3 levels)
+MAX_KEY_DEPTH = 64
+#: the longest integer in a key (a float holds at most 309 digits; Python refuses 4300+)
+MAX_KEY_DIGITS = 400
+_STRING_OR_BRACKET = re.compile(r'"(?:[^"\\]|\\.)*"?|[\[\]{}]')
+
+
+class _LongNumber(ValueError):
+    def __init__(self, digits: int):
+        super().__init__(digits)
+        self.digits = digits
+
+
+def _key_int(text: str) -> int:
+    """json's parse_int of a key: an integer of more than MAX_KEY_DIGITS digits is refused
+    before Python's int() (which raises at 4300)."""
+    digits = len(text.lstrip("-"))
+    if digits > MAX_KEY_DIGITS:
+        raise _LongNumber(digits)
+    return int(text)
+
+
+def json_depth(text: str) -> int:
+    """The deepest nesting of [] and {} in JSON text, counted without recursion (brackets
+    inside strings skipped; unbalanced text is json's to refuse).
+
+    >>> json_depth('{"a": [1, {"b": "[[["}]}'), json_depth("[]" * 3), json_depth("1")
+    (3, 1, 0)
+    """
+    depth = top = 0
+    for m in _STRING_OR_BRACKET.finditer(text):
+        c = m.group()
+        if c in "[{":
+            depth += 1
+            top = max(top, depth)
+        elif c in "]}":
+            depth -= 1
+    return top
 
 
 # -- numbers ------------------------------------------------------------------------------------
@@ -389,6 +451,46 @@ def sheet_files(paths) -> tuple[list[Path], list[Problem]]:
     return files, problems
 
 
+def _same_file(a: Path, b: Path) -> bool:
+    """Whether ``a`` and ``b`` name one file: the same resolved path (``./x`` and ``x``, a
+    symbolic link and its target), or, when both exist, the same file on the disc
+    (os.path.samefile: a hard link, another spelling on a case-insensitive system)."""
+    try:
+        if a.resolve() == b.resolve():
+            return True
+        return a.exists() and b.exists() and os.path.samefile(a, b)
+    except (OSError, RuntimeError):        # a name too long, a loop of links: not provably one
+        return False
+
+
+def check_outputs(key, answers, outputs) -> None:
+    """Refuse, before anything is read, an output of ``flywheel grade`` that would write over
+    one of its inputs (the key, a sheet, a sheet in a folder of sheets) or over the other
+    output. ``outputs``: [(option, path or None)]. Raises InputError, one line naming both."""
+    named = [(o, Path(p)) for o, p in outputs if p is not None]
+    inputs = [("the answer key", Path(key))]
+    for a in map(Path, answers):
+        try:
+            found = sorted(q for q in a.iterdir() if q.suffix.lower() == ".csv") \
+                if a.is_dir() else [a]
+        except OSError:
+            found = [a]
+        inputs += [("the answer sheet", q) for q in found]
+    for i, (option, path) in enumerate(named):
+        for what, given in inputs:
+            if _same_file(path, given):
+                raise InputError(Notice(
+                    f"{option} {path}: is {what} {given} (flywheel grade never writes over its "
+                    "inputs; allowed: another file name)", "grade_output_is_input",
+                    option=option, path=str(path), what=what, given=str(given)))
+        for other, there in named[i + 1:]:
+            if _same_file(path, there):
+                raise InputError(Notice(
+                    f"{option} {path} and {other} {there}: the same file (allowed: two "
+                    "different file names)", "grade_outputs_same", option=option,
+                    path=str(path), other=other, there=str(there)))
+
+
 def grade_sheet(key: Key, path, tolerance: float | None = None
                 ) -> tuple[list[StudentGrade], list[Problem]]:
     """Grade every student row of one CSV file; broken rows become Problems."""
@@ -498,6 +600,11 @@ def grade(key: Key, paths, tolerance: float | None = None, progress=None) -> Rep
         raise InputError(Notice(f"--tolerance: must be a positive number (got {tolerance!r})",
                                 "option_not_positive_number", option="--tolerance",
                                 got=repr(tolerance)))
+    if tolerance is not None and tolerance > MAX_TOLERANCE:
+        raise InputError(Notice(f"--tolerance: {tolerance!r} is too large (allowed: 0 < "
+                                f"tolerance ≤ {MAX_TOLERANCE:g}, a relative error: 0.01 is 1 %)",
+                                "grade_tolerance_too_large", got=repr(tolerance),
+                                top=MAX_TOLERANCE))
     files, problems = sheet_files(paths)
     students: list[StudentGrade] = []
     for i, f in enumerate(files):
