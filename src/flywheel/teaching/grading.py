@@ -23,15 +23,19 @@ Computation only: no typer, no rich.
 """
 from __future__ import annotations
 
+import codecs
 import csv
 import functools
 import io
+import itertools
 import json
 import math
 import os
 import re
+from array import array
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import Iterator
 
 from flywheel.errors import CaseFileError, InputError, Notice, led, said
 
@@ -286,20 +290,57 @@ class AnswerGrade:
 
 
 @dataclass(frozen=True)
+class Marking:
+    """How one variant is marked: its answers in the key's order, their key values and
+    tolerances (one object shared by every student of that variant)."""
+
+    names: tuple[str, ...]
+    keys: tuple[float, ...]
+    tolerances: tuple[float, ...]
+
+    def verdicts(self, given: array) -> int:
+        """The answers passed as a bit mask (bit j: answer j); ``given`` NaN = no answer."""
+        mask = 0
+        for j, (g, k, tol) in enumerate(zip(given, self.keys, self.tolerances)):
+            if g == g and rel_error(g, k)[0] <= tol * (1 + SLACK):
+                mask |= 1 << j
+        return mask
+
+
+@dataclass(frozen=True, slots=True)
 class StudentGrade:
+    """One graded row, kept small (a class of 200 000 rows fits in tens of MB): the values
+    given (NaN: no answer), the passed answers as a bit mask and the variant's shared
+    :class:`Marking`; :attr:`answers` builds the full grades when asked."""
+
     student: str
     variant: str                 # the key's id
     file: str
     row: int
-    answers: tuple[AnswerGrade, ...]
+    given: array                 # array('d'), NaN = no answer
+    mask: int                    # bit j set: answer j passed
+    marking: Marking
+
+    @property
+    def answers(self) -> tuple[AnswerGrade, ...]:
+        out = []
+        for j, (a, k, tol, g) in enumerate(zip(self.marking.names, self.marking.keys,
+                                               self.marking.tolerances, self.given)):
+            if g != g:
+                out.append(AnswerGrade(a, None, k, None, "relative" if k else "absolute", tol,
+                                       False))
+                continue
+            err, kind = rel_error(g, k)
+            out.append(AnswerGrade(a, g, k, err, kind, tol, bool(self.mask >> j & 1)))
+        return tuple(out)
 
     @property
     def passed(self) -> int:
-        return sum(a.passed for a in self.answers)
+        return self.mask.bit_count()
 
     @property
     def total(self) -> int:
-        return len(self.answers)
+        return len(self.marking.names)
 
     @property
     def score(self) -> float:
@@ -307,7 +348,11 @@ class StudentGrade:
 
     @property
     def wrong(self) -> list[str]:
-        return [a.answer for a in self.answers if not a.passed]
+        return [a for j, a in enumerate(self.marking.names) if not self.mask >> j & 1]
+
+    @property
+    def nothing_given(self) -> bool:
+        return all(g != g for g in self.given)
 
 
 @dataclass(frozen=True)
@@ -330,16 +375,16 @@ class Report:
         for a in self.key.answers:
             out[a] = [0, 0]
         for s in self.students:
-            for a in s.answers:
-                c = out.setdefault(a.answer, [0, 0])
-                c[0] += not a.passed
+            for j, a in enumerate(s.marking.names):
+                c = out.setdefault(a, [0, 0])
+                c[0] += not s.mask >> j & 1
                 c[1] += 1
         return {k: (w, n) for k, (w, n) in out.items() if n}
 
     @property
     def handed_in_nothing(self) -> list[StudentGrade]:
         """Students on a sheet whose answers are all empty (missing work)."""
-        return [s for s in self.students if all(a.given is None for a in s.answers)]
+        return [s for s in self.students if s.nothing_given]
 
     def score_distribution(self) -> dict[int, int]:
         """{answers passed: students} from 0 to the most answers any variant asks."""
@@ -370,56 +415,158 @@ MAX_ROWS = 200_000                 # per grading run, over all sheets
 ENCODINGS = ("utf_8", "utf_16", "utf_32", "cp1251", "cp866", "koi8_r", "cp1252")
 _BOMS = ((b"\xef\xbb\xbf", "utf-8-sig"), (b"\xff\xfe\x00\x00", "utf-32"),
          (b"\x00\x00\xfe\xff", "utf-32"), (b"\xff\xfe", "utf-16"), (b"\xfe\xff", "utf-16"))
+#: a sheet is read in pieces of this many bytes (its memory does not grow with its size)
+READ_BYTES = 1 << 16
+#: charset-normalizer guesses the encoding from at most this many bytes of the sheet's start
+DETECT_BYTES = 1 << 20
+#: the bytes Windows-1251 leaves undefined: a cp1251 sheet holding one is refused, not
+#: guessed as DOS or koi8-r text (garbled names)
+_NOT_CP1251 = b"\x98"
 
 
 class SheetError(ValueError):
     """A sheet that cannot be read as text: one problem row for the whole file."""
 
 
+def _chunks(source) -> "Iterator[bytes]":
+    """The bytes of ``source`` (a path, or bytes) in pieces of READ_BYTES."""
+    if isinstance(source, (bytes, bytearray)):
+        for i in range(0, len(source), READ_BYTES):
+            yield bytes(source[i:i + READ_BYTES])
+        return
+    with open(source, "rb") as f:
+        while piece := f.read(READ_BYTES):
+            yield piece
+
+
+def _head(source, n: int) -> bytes:
+    """The first ``n`` bytes of ``source``."""
+    if isinstance(source, (bytes, bytearray)):
+        return bytes(source[:n])
+    with open(source, "rb") as f:
+        return f.read(n)
+
+
+def _text_chunks(source, codec: str) -> "Iterator[str]":
+    """The text of ``source`` decoded strictly with ``codec``, piece by piece; a
+    UnicodeDecodeError carries ``byte``, its place counted from the file's start."""
+    decoder = codecs.getincrementaldecoder(codec)("strict")
+    done = 0
+    for piece in itertools.chain(_chunks(source), [b""]):
+        try:
+            text = decoder.decode(piece, final=not piece)
+        except UnicodeDecodeError as exc:    # exc.object: the bytes kept back, then the piece
+            exc.byte = done - (len(exc.object) - len(piece)) + exc.start
+            raise
+        done += len(piece)
+        if text:
+            yield text
+
+
+def _scan(source, codec: str) -> tuple[int | None, bool]:
+    """(the first byte that is not ``codec`` text or None, whether the text holds a NUL),
+    the whole of ``source`` read piece by piece (nothing kept)."""
+    nul = False
+    try:
+        for text in _text_chunks(source, codec):
+            nul = nul or "\x00" in text
+    except UnicodeDecodeError as exc:
+        return exc.byte, nul
+    return None, nul
+
+
+def sheet_codec(source) -> str:
+    """The codec a sheet is read with (``source``: a path or bytes), checked over the whole
+    file without keeping it: a byte-order mark decides (UTF-8, UTF-16, UTF-32: Excel's
+    "Unicode text"), else strict UTF-8, else the most plausible of :data:`ENCODINGS` by
+    charset-normalizer on the first DETECT_BYTES (cp1251 of a Russian Excel, cp866 of DOS,
+    koi8-r). Raises SheetError for binary data (an image renamed .csv), text in none of those
+    encodings, a guess the rest of the file does not decode in, or a Windows-1251 sheet with
+    a stray byte it leaves undefined (which charset-normalizer would read as DOS or koi8-r
+    text, garbling every name).
+
+    >>> sheet_codec("student;вариант".encode("cp1251"))
+    'cp1251'
+    """
+    head = _head(source, 4)
+    for bom, enc in _BOMS:
+        if head.startswith(bom):
+            if _scan(source, enc)[0] is not None:
+                raise SheetError(Notice(f"starts with a {enc} byte-order mark but is not {enc} "
+                                        "text", "sheet_bad_bom", enc=enc))
+            return enc
+    bad, nul = _scan(source, "utf-8")
+    if bad is None:
+        if nul:
+            raise SheetError(Notice("binary data, not a CSV text file", "sheet_binary"))
+        return "utf-8"
+    from charset_normalizer import from_bytes
+
+    sample = _head(source, DETECT_BYTES)
+    best = from_bytes(sample, cp_isolation=list(ENCODINGS)).best()
+    codec = None if best is None else best.encoding
+    if codec != "cp1251" and _NOT_CP1251 in sample:
+        clean = sample.replace(_NOT_CP1251, b"")
+        again = from_bytes(clean, cp_isolation=list(ENCODINGS)).best()
+        if again is not None and again.encoding == "cp1251":
+            at = sample.index(_NOT_CP1251)
+            raise SheetError(Notice(
+                f"Windows-1251 text with a stray byte 0x{sample[at]:02X} at byte {at} (not a "
+                "Windows-1251 character: the sheet would be read garbled or not at all; "
+                "allowed: the sheet saved again as UTF-8 or Windows-1251)", "sheet_stray_byte",
+                byte=f"0x{sample[at]:02X}", at=at))
+    if best is None:
+        raise SheetError(Notice("binary data, not a CSV text file (no text encoding fits: "
+                                "UTF-8, UTF-16, cp1251, cp866, koi8-r)", "sheet_no_encoding"))
+    at, nul = _scan(source, codec)
+    if at is not None:
+        raise SheetError(Notice(
+            f"not {codec} text at byte {at} (the encoding guessed from the sheet's start; "
+            "allowed: one encoding for the whole sheet: UTF-8, Windows-1251, cp866, koi8-r)",
+            "sheet_undecodable", codec=codec, at=at))
+    if nul:
+        raise SheetError(Notice("binary data, not a CSV text file", "sheet_binary"))
+    return codec
+
+
 def decode_sheet(data: bytes) -> tuple[str, str]:
-    """(text, encoding) of a sheet's bytes: a byte-order mark decides (UTF-8, UTF-16, UTF-32:
-    Excel's "Unicode text"), else strict UTF-8, else the most plausible of :data:`ENCODINGS`
-    by charset-normalizer (cp1251 of a Russian Excel, cp866 of DOS, koi8-r). Raises
-    SheetError for binary data (an image renamed .csv) or text in none of those encodings.
+    """(text, encoding) of a sheet's bytes (see :func:`sheet_codec`; the whole text, for a
+    library user: the grader reads a sheet in pieces).
 
     >>> decode_sheet("student;вариант".encode("cp1251"))
     ('student;вариант', 'cp1251')
     """
-    for bom, enc in _BOMS:
-        if data.startswith(bom):
-            try:
-                return data.decode(enc), enc.replace("-sig", "")
-            except UnicodeDecodeError:
-                raise SheetError(Notice(f"starts with a {enc} byte-order mark but is not {enc} "
-                                        "text", "sheet_bad_bom", enc=enc)) from None
-    try:
-        text = data.decode("utf-8")
-    except UnicodeDecodeError:
-        pass
-    else:
-        if "\x00" in text:
-            raise SheetError(Notice("binary data, not a CSV text file", "sheet_binary"))
-        return text, "utf-8"
-    from charset_normalizer import from_bytes
-
-    best = from_bytes(data, cp_isolation=list(ENCODINGS)).best()
-    if best is None:
-        raise SheetError(Notice("binary data, not a CSV text file (no text encoding fits: "
-                                "UTF-8, UTF-16, cp1251, cp866, koi8-r)", "sheet_no_encoding"))
-    text = str(best)
-    if "\x00" in text:
-        raise SheetError(Notice("binary data, not a CSV text file", "sheet_binary"))
-    return text, best.encoding
+    codec = sheet_codec(data)
+    return "".join(_text_chunks(data, codec)), codec.replace("-sig", "")
 
 
-def _read_text(path: Path) -> str:
-    """The text of a sheet (see :func:`decode_sheet`); SheetError if too large or not text."""
+def _lines(pieces) -> "Iterator[str]":
+    """Lines ending at "\\n" (kept), as io.StringIO gives them to the csv module, from pieces
+    of text; a line never holds more than itself."""
+    pending: list[str] = []
+    for piece in pieces:
+        start = 0
+        while (end := piece.find("\n", start)) >= 0:
+            if pending:
+                pending.append(piece[start:end + 1])
+                yield "".join(pending)
+                pending = []
+            else:
+                yield piece[start:end + 1]
+            start = end + 1
+        if start < len(piece):
+            pending.append(piece[start:])
+    if pending:
+        yield "".join(pending)
+
+
+def _check_size(path: Path) -> None:
+    """SheetError if the sheet is larger than MAX_SHEET_BYTES."""
     size = path.stat().st_size
     if size > MAX_SHEET_BYTES:
         raise SheetError(Notice(f"{size / 1e6:.0f} MB is too large for an answer sheet (allowed: "
                                 f"up to {MAX_SHEET_BYTES / 1e6:.0f} MB)", "sheet_too_large",
                                 mb=size / 1e6, top=MAX_SHEET_BYTES / 1e6))
-    return decode_sheet(path.read_bytes())[0]
 
 
 def _delimiter(header: str) -> str:
@@ -494,33 +641,64 @@ def check_outputs(key, answers, outputs) -> None:
 def grade_sheet(key: Key, path, tolerance: float | None = None
                 ) -> tuple[list[StudentGrade], list[Problem]]:
     """Grade every student row of one CSV file; broken rows become Problems."""
+    graded, problems, _, _ = _grade_sheet(key, path, tolerance, None)
+    return graded, problems
+
+
+def _grade_sheet(key: Key, path, tolerance: float | None, limit: int | None
+                 ) -> tuple[list[StudentGrade], list[Problem], int, int | None]:
+    """(graded, problems, rows past ``limit``, the first of them) of one CSV file, read as a
+    stream of rows: at most ``limit`` graded rows are kept (None: all); the rows past it are
+    still read for their problems and counted."""
     path = Path(path)
     name = str(path)
     try:
-        text = _read_text(path)
+        _check_size(path)
+        codec = sheet_codec(path)               # the whole file checked, nothing kept
+        return _grade_rows(key, name, _lines(_text_chunks(path, codec)), tolerance, limit)
     except OSError as exc:
         return [], [Problem(name, None, Notice(f"cannot be read ({exc.strerror})",
                                                "sheet_unreadable", reason=exc.strerror,
-                                               errno=exc.errno))]
+                                               errno=exc.errno))], 0, None
     except SheetError as exc:
-        return [], [Problem(name, None, said(exc))]
-    lines = text.splitlines()
-    if not lines or not lines[0].strip():
+        return [], [Problem(name, None, said(exc))], 0, None
+    except UnicodeDecodeError as exc:           # the file changed since it was checked
+        return [], [Problem(name, None, Notice(
+            f"not {exc.encoding} text at byte {exc.byte} (the encoding guessed from the "
+            "sheet's start; allowed: one encoding for the whole sheet: UTF-8, Windows-1251, "
+            "cp866, koi8-r)", "sheet_undecodable", codec=exc.encoding, at=exc.byte))], 0, None
+
+
+def _grade_rows(key: Key, name: str, lines, tolerance: float | None, limit: int | None
+                ) -> tuple[list[StudentGrade], list[Problem], int, int | None]:
+    """Grade the rows of a sheet given as its lines (see :func:`_grade_sheet`). A CSV error
+    anywhere refuses the whole sheet, as before any row is graded."""
+    first = next(lines, "")
+    head = first.splitlines()
+    if not head or not head[0].strip():
         return [], [Problem(name, None, Notice("empty file (expected a header "
-                                               "student,variant,…)", "sheet_empty"))]
+                                               "student,variant,…)", "sheet_empty"))], 0, None
+    rows = csv.reader(itertools.chain([first], lines), delimiter=_delimiter(head[0]))
     try:
-        rows = list(csv.reader(io.StringIO(text), delimiter=_delimiter(lines[0])))
+        return _graded(key, name, rows, tolerance, limit)
     except csv.Error as exc:
         return [], [Problem(name, None, Notice(f"not a readable CSV file ({exc})",
-                                               "sheet_not_csv", detail=str(exc)))]
-    header = [h.strip() for h in rows[0]]
+                                               "sheet_not_csv", detail=str(exc)))], 0, None
+
+
+def _graded(key: Key, name: str, rows, tolerance: float | None, limit: int | None
+            ) -> tuple[list[StudentGrade], list[Problem], int, int | None]:
+    header = [h.strip() for h in next(rows)]
     lower = [h.lower() for h in header]
     missing = [c for c in ("student", "variant") if c not in lower]
     if missing:
+        for _ in rows:                          # a CSV error further on says more
+            pass
         return [], [Problem(name, 1, Notice(
             f"no {' and no '.join(repr(c) for c in missing)} column (the header must be "
             f"student,variant,<answers…>; got {_short(','.join(header))})", "sheet_no_column",
-            columns=' и '.join(repr(c) for c in missing), header=_short(','.join(header))))]
+            columns=' и '.join(repr(c) for c in missing),
+            header=_short(','.join(header))))], 0, None
     col_student, col_variant = lower.index("student"), lower.index("variant")
     columns = {h: i for i, h in enumerate(header) if i not in (col_student, col_variant) and h}
     problems: list[Problem] = []
@@ -536,8 +714,10 @@ def grade_sheet(key: Key, path, tolerance: float | None = None
         problems.append(Problem(name, 1, Notice(
             f"no column for {', '.join(map(repr, absent))}: those answers count as not given",
             "sheet_absent_columns", columns=', '.join(map(repr, absent)))))
+    markings: dict[str, Marking] = {}
     graded: list[StudentGrade] = []
-    for n, row in enumerate(rows[1:], start=2):
+    over, first_over = 0, None
+    for n, row in enumerate(rows, start=2):
         cells = [c.strip() for c in row]
         if not any(cells):
             continue
@@ -560,15 +740,15 @@ def grade_sheet(key: Key, path, tolerance: float | None = None
                 f"{who}{what} (allowed: {allowed}); row skipped", "row_variant",
                 student=student, variant=variant, allowed=allowed)))
             continue
-        values: dict[str, float | None] = {}
+        values = array("d")
         bad = []
         for a in key.variants[vid]:
             t = given.get(a, "")
             if not t:
-                values[a] = None
+                values.append(math.nan)
                 continue
             try:
-                values[a] = parse_number(t)
+                values.append(parse_number(t))
             except ValueError:
                 bad.append(f"{a} = {t!r}")
         if bad:
@@ -576,25 +756,27 @@ def grade_sheet(key: Key, path, tolerance: float | None = None
                                                     "row skipped", "row_not_a_number",
                                                     student=student, bad='; '.join(bad))))
             continue
-        grades = []
-        for a, k in key.variants[vid].items():
-            tol = key.tolerance_of(a, tolerance)
-            g = values[a]
-            if g is None:
-                grades.append(AnswerGrade(a, None, k, None, "relative" if k else "absolute",
-                                          tol, False))
-                continue
-            err, kind = rel_error(g, k)
-            grades.append(AnswerGrade(a, g, k, err, kind, tol, err <= tol * (1 + SLACK)))
-        graded.append(StudentGrade(student, vid, name, n, tuple(grades)))
-    return graded, problems
+        if limit is not None and len(graded) >= limit:
+            over += 1                           # past the run's limit: counted, not kept
+            first_over = n if first_over is None else first_over
+            continue
+        marking = markings.get(vid)
+        if marking is None:
+            answers = key.variants[vid]
+            marking = markings[vid] = Marking(
+                tuple(answers), tuple(answers.values()),
+                tuple(key.tolerance_of(a, tolerance) for a in answers))
+        graded.append(StudentGrade(student, vid, name, n, values, marking.verdicts(values),
+                                   marking))
+    return graded, problems, over, first_over
 
 
 def grade(key: Key, paths, tolerance: float | None = None, progress=None) -> Report:
     """Grade every CSV file (or folder of them) in ``paths``; never stops at a broken one.
 
     ``tolerance`` replaces the key's default tolerance (a per-answer one of the key stays);
-    ``progress(done, total)`` is called after each sheet (a progress bar).
+    ``progress(done, total)`` is called after each sheet (a progress bar). Each sheet is read
+    as a stream of rows; what is kept is one small record per graded row (at most MAX_ROWS).
     """
     if tolerance is not None and not _positive(tolerance):
         raise InputError(Notice(f"--tolerance: must be a positive number (got {tolerance!r})",
@@ -614,14 +796,12 @@ def grade(key: Key, paths, tolerance: float | None = None, progress=None) -> Rep
                 "parts)", "run_rows_reached", top=MAX_ROWS))
                          for g in files[i:]]
             break
-        s, p = grade_sheet(key, f, tolerance)
-        if len(students) + len(s) > MAX_ROWS:
-            keep = MAX_ROWS - len(students)
-            p.append(Problem(str(f), s[keep].row, Notice(
-                f"this row and the {len(s) - keep - 1} after it not graded: at most {MAX_ROWS} "
+        s, p, over, first_over = _grade_sheet(key, f, tolerance, MAX_ROWS - len(students))
+        if over:
+            p.append(Problem(str(f), first_over, Notice(
+                f"this row and the {over - 1} after it not graded: at most {MAX_ROWS} "
                 "student rows per run (grade the sheets in parts)", "run_rows_cut",
-                n=len(s) - keep - 1, top=MAX_ROWS)))
-            s = s[:keep]
+                n=over - 1, top=MAX_ROWS)))
         students += s
         problems += p
         if progress is not None:
@@ -647,19 +827,30 @@ def grade(key: Key, paths, tolerance: float | None = None, progress=None) -> Rep
 
 def report_dict(r: Report) -> dict:
     """The report as a JSON-ready document (``flywheel grade --json``)."""
+    doc = _report_frame(r)
+    doc["students"] = [_student_dict(s) for s in r.students]
+    return doc
+
+
+def _student_dict(s: StudentGrade) -> dict:
+    return {
+        "student": s.student, "variant": s.variant, "file": s.file, "row": s.row,
+        "score": s.score, "passed": s.passed, "total": s.total, "wrong": s.wrong,
+        "answers": [{"answer": a.answer, "given": a.given, "key": a.key, "error": a.error,
+                     "error_kind": a.error_kind, "tolerance": a.tolerance,
+                     "pass": a.passed} for a in s.answers],
+    }
+
+
+def _report_frame(r: Report) -> dict:
+    """The report's document with ``students`` empty (filled by the callers)."""
     worst = r.most_often_wrong()
     return {
         "key": r.key.source,
         "tolerance": r.tolerance,
         "tolerances": {a: r.key.tolerance_of(a, r.tolerance) for a in r.key.answers},
         "files": list(r.files),
-        "students": [{
-            "student": s.student, "variant": s.variant, "file": s.file, "row": s.row,
-            "score": s.score, "passed": s.passed, "total": s.total, "wrong": s.wrong,
-            "answers": [{"answer": a.answer, "given": a.given, "key": a.key, "error": a.error,
-                         "error_kind": a.error_kind, "tolerance": a.tolerance,
-                         "pass": a.passed} for a in s.answers],
-        } for s in r.students],
+        "students": [],
         "summary": {
             "graded": len(r.students),
             "mean_score": r.mean_score,
@@ -678,17 +869,53 @@ def report_dict(r: Report) -> dict:
     }
 
 
+def report_json(r: Report) -> Iterator[str]:
+    """The text of ``json.dumps(report_dict(r), indent=2, ensure_ascii=False)`` and a newline,
+    in pieces: one student's document at a time (a class of 200 000 never held whole).
+
+    json's indented text of a nested value is its own indented text with every line after the
+    first moved right by the indentation of its place, which this relies on."""
+    def dumps(value, depth: int) -> str:
+        return json.dumps(value, indent=2, ensure_ascii=False).replace("\n", "\n" + "  " * depth)
+
+    frame = _report_frame(r)
+    yield "{"
+    for i, (name, value) in enumerate(frame.items()):
+        yield ("," if i else "") + "\n  " + json.dumps(name, ensure_ascii=False) + ": "
+        if name != "students" or not r.students:
+            yield dumps(value, 1)
+            continue
+        yield "["
+        for j, s in enumerate(r.students):
+            yield ("," if j else "") + "\n    " + dumps(_student_dict(s), 2)
+        yield "\n  ]"
+    yield "\n}\n"
+
+
+#: rows of a CSV report formatted per piece of text (report_csv_pieces, gradebook pieces)
+CSV_ROWS_PER_PIECE = 2000
+
+
 def report_csv(r: Report) -> str:
     """One line per student and answer: student, variant, file, row, answer, given, key,
     error, error_kind, tolerance, pass (1/0), score."""
+    return "".join(report_csv_pieces(r))
+
+
+def report_csv_pieces(r: Report) -> Iterator[str]:
+    """The text of :func:`report_csv` in pieces of CSV_ROWS_PER_PIECE students."""
     buf = io.StringIO()
     w = csv.writer(buf, lineterminator="\n")
     w.writerow(["student", "variant", "file", "row", "answer", "given", "key", "error",
                 "error_kind", "tolerance", "pass", "score"])
-    for s in r.students:
+    for i, s in enumerate(r.students, start=1):
         for a in s.answers:
             w.writerow([s.student, s.variant, s.file, s.row, a.answer,
                         "" if a.given is None else repr(a.given), repr(a.key),
                         "" if a.error is None else f"{a.error:.6g}", a.error_kind,
                         repr(a.tolerance), int(a.passed), f"{s.score:.4f}"])
-    return buf.getvalue()
+        if i % CSV_ROWS_PER_PIECE == 0:
+            yield buf.getvalue()
+            buf.seek(0)
+            buf.truncate()
+    yield buf.getvalue()
