@@ -10,6 +10,7 @@ sheets are generated (seeded) in a temporary folder: a key of 40 variants × 6 a
   cp1251   the same in Windows-1251 with Russian names (the charset-normalizer path)
   many     the UTF-8 rows in 20 sheets of 2.5 MB (the memory must not grow with the sheets)
   small    a class of 30 (what an interpreter with flywheel's imports takes anyway)
+  wrongkey the UTF-8 sheet graded against another class's key (every row a problem)
 each graded with the default report, `--json`, and `--summary --out --gradebook`.
 """
 from __future__ import annotations
@@ -63,6 +64,8 @@ def make_class(d: Path) -> None:
     for j in range(20):
         (many / f"s{j:02d}.csv").write_text(head + "".join(lines[j * per:(j + 1) * per]))
     (d / "small.csv").write_text(head + "".join(lines[:30]))
+    other = {f"{i:02d}": {a: 1.0 for a in ANSWERS} for i in range(41, 81)}
+    (d / "other.json").write_text(json.dumps({"answers": ANSWERS, "variants": other}))
 
 
 def measure(d: Path, argv: list[str]) -> tuple[int, float, float]:
@@ -80,8 +83,9 @@ def main(only: list[str]) -> None:
     with tempfile.TemporaryDirectory() as tmp:
         d = Path(tmp)
         make_class(d)
-        for sheet in ("utf8", "cp1251", "many", "small"):
-            given = "many" if sheet == "many" else f"{sheet}.csv"
+        for sheet in ("utf8", "cp1251", "many", "small", "wrongkey"):
+            given = {"many": "many", "wrongkey": "utf8.csv"}.get(sheet, f"{sheet}.csv")
+            key = "other.json" if sheet == "wrongkey" else "k.json"
             size = sum(p.stat().st_size for p in (d / given).rglob("*")) if sheet == "many" \
                 else (d / given).stat().st_size
             for how, extra in (("default", []), ("json", ["--json"]),
@@ -90,7 +94,7 @@ def main(only: list[str]) -> None:
                 name = f"{sheet}-{how}"
                 if only and name not in only:
                     continue
-                code, mb, s = measure(d, ["grade", "k.json", given, *extra])
+                code, mb, s = measure(d, ["grade", key, given, *extra])
                 print(f"{name:16s} {size / 1e6:5.1f} MB of sheets: exit {code}, peak RSS "
                       f"{mb:7.0f} MB, {s:6.1f} s", flush=True)
 

@@ -257,7 +257,7 @@ def rel_error(given: float, key: float) -> tuple[float, str]:
 
 # -- grading ------------------------------------------------------------------------------------
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, slots=True)
 class Problem:
     """Something that could not be graded: file, row (1 = the header; None: the whole file);
     ``message`` an errors.Notice (said in Russian under ``grade --lang ru``)."""
