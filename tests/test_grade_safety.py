@@ -272,3 +272,17 @@ def test_the_json_report_in_pieces_is_json_dumps_of_the_whole(class_dir):
         assert "".join(pieces) == json.dumps(report_dict(r), indent=2,
                                              ensure_ascii=False) + "\n"
     assert len(pieces) > 3
+
+
+def test_problems_past_the_run_limit_are_counted_not_kept(class_dir, monkeypatch):
+    """A sheet graded against another class's key: every row a problem."""
+    from flywheel.teaching import grading
+
+    monkeypatch.setattr(grading, "MAX_PROBLEMS", 5)
+    (class_dir / "wrong.csv").write_text("student,variant,M_C,J_required\n" + "".join(
+        f"s{i},07,1,2\n" for i in range(12)))
+    r = grading.grade(load_key(class_dir / "k.json"), [class_dir / "wrong.csv",
+                                                      class_dir / "s.csv"])
+    assert [s.student for s in r.students] == ["Ivanov"]
+    assert [p.row for p in r.problems[:5]] == [2, 3, 4, 5, 6]
+    assert len(r.problems) == 6 and "7 more problem(s)" in r.problems[5].message

@@ -638,6 +638,26 @@ def check_outputs(key, answers, outputs) -> None:
                     path=str(path), other=other, there=str(there)))
 
 
+class _Kept(list):
+    """A list of problems that keeps at most ``room`` and counts the rest (``dropped``): a
+    sheet of 10⁵ broken rows (graded against another class's key) is not 10⁵ records."""
+
+    def __init__(self, room: int | None = None):
+        super().__init__()
+        self.room = room
+        self.dropped = 0
+
+    def append(self, problem) -> None:
+        if self.room is not None and len(self) >= self.room:
+            self.dropped += 1
+        else:
+            super().append(problem)
+
+
+#: problems kept per run (the rest counted and named in one last problem)
+MAX_PROBLEMS = 10_000
+
+
 def grade_sheet(key: Key, path, tolerance: float | None = None
                 ) -> tuple[list[StudentGrade], list[Problem]]:
     """Grade every student row of one CSV file; broken rows become Problems."""
@@ -645,7 +665,8 @@ def grade_sheet(key: Key, path, tolerance: float | None = None
     return graded, problems
 
 
-def _grade_sheet(key: Key, path, tolerance: float | None, limit: int | None
+def _grade_sheet(key: Key, path, tolerance: float | None, limit: int | None,
+                 room: int | None = None
                  ) -> tuple[list[StudentGrade], list[Problem], int, int | None]:
     """(graded, problems, rows past ``limit``, the first of them) of one CSV file, read as a
     stream of rows: at most ``limit`` graded rows are kept (None: all); the rows past it are
@@ -655,7 +676,8 @@ def _grade_sheet(key: Key, path, tolerance: float | None, limit: int | None
     try:
         _check_size(path)
         codec = sheet_codec(path)               # the whole file checked, nothing kept
-        return _grade_rows(key, name, _lines(_text_chunks(path, codec)), tolerance, limit)
+        return _grade_rows(key, name, _lines(_text_chunks(path, codec)), tolerance, limit,
+                           room)
     except OSError as exc:
         return [], [Problem(name, None, Notice(f"cannot be read ({exc.strerror})",
                                                "sheet_unreadable", reason=exc.strerror,
@@ -669,7 +691,8 @@ def _grade_sheet(key: Key, path, tolerance: float | None, limit: int | None
             "cp866, koi8-r)", "sheet_undecodable", codec=exc.encoding, at=exc.byte))], 0, None
 
 
-def _grade_rows(key: Key, name: str, lines, tolerance: float | None, limit: int | None
+def _grade_rows(key: Key, name: str, lines, tolerance: float | None, limit: int | None,
+                room: int | None = None
                 ) -> tuple[list[StudentGrade], list[Problem], int, int | None]:
     """Grade the rows of a sheet given as its lines (see :func:`_grade_sheet`). A CSV error
     anywhere refuses the whole sheet, as before any row is graded."""
@@ -680,13 +703,14 @@ def _grade_rows(key: Key, name: str, lines, tolerance: float | None, limit: int 
                                                "student,variant,…)", "sheet_empty"))], 0, None
     rows = csv.reader(itertools.chain([first], lines), delimiter=_delimiter(head[0]))
     try:
-        return _graded(key, name, rows, tolerance, limit)
+        return _graded(key, name, rows, tolerance, limit, room)
     except csv.Error as exc:
         return [], [Problem(name, None, Notice(f"not a readable CSV file ({exc})",
                                                "sheet_not_csv", detail=str(exc)))], 0, None
 
 
-def _graded(key: Key, name: str, rows, tolerance: float | None, limit: int | None
+def _graded(key: Key, name: str, rows, tolerance: float | None, limit: int | None,
+            room: int | None = None
             ) -> tuple[list[StudentGrade], list[Problem], int, int | None]:
     header = [h.strip() for h in next(rows)]
     lower = [h.lower() for h in header]
@@ -701,7 +725,7 @@ def _graded(key: Key, name: str, rows, tolerance: float | None, limit: int | Non
             header=_short(','.join(header))))], 0, None
     col_student, col_variant = lower.index("student"), lower.index("variant")
     columns = {h: i for i, h in enumerate(header) if i not in (col_student, col_variant) and h}
-    problems: list[Problem] = []
+    problems: list[Problem] = _Kept(room)
     known = set(key.answers) | {a for v in key.variants.values() for a in v}
     unknown = [h for h in columns if h not in known]
     if unknown:
@@ -787,23 +811,29 @@ def grade(key: Key, paths, tolerance: float | None = None, progress=None) -> Rep
                                 f"tolerance ≤ {MAX_TOLERANCE:g}, a relative error: 0.01 is 1 %)",
                                 "grade_tolerance_too_large", got=repr(tolerance),
                                 top=MAX_TOLERANCE))
-    files, problems = sheet_files(paths)
+    files, found = sheet_files(paths)
+    problems = _Kept(MAX_PROBLEMS)
+    for p in found:
+        problems.append(p)
     students: list[StudentGrade] = []
     for i, f in enumerate(files):
         if len(students) >= MAX_ROWS:
-            problems += [Problem(str(g), None, Notice(
-                f"not graded: the run has reached {MAX_ROWS} student rows (grade the sheets in "
-                "parts)", "run_rows_reached", top=MAX_ROWS))
-                         for g in files[i:]]
+            for g in files[i:]:
+                problems.append(Problem(str(g), None, Notice(
+                    f"not graded: the run has reached {MAX_ROWS} student rows (grade the sheets "
+                    "in parts)", "run_rows_reached", top=MAX_ROWS)))
             break
-        s, p, over, first_over = _grade_sheet(key, f, tolerance, MAX_ROWS - len(students))
+        s, p, over, first_over = _grade_sheet(key, f, tolerance, MAX_ROWS - len(students),
+                                              MAX_PROBLEMS - len(problems))
         if over:
             p.append(Problem(str(f), first_over, Notice(
                 f"this row and the {over - 1} after it not graded: at most {MAX_ROWS} "
                 "student rows per run (grade the sheets in parts)", "run_rows_cut",
                 n=over - 1, top=MAX_ROWS)))
+        problems.dropped += getattr(p, "dropped", 0)
         students += s
-        problems += p
+        for x in p:
+            problems.append(x)
         if progress is not None:
             progress(i + 1, len(files))
     # a student graded twice: the later row counts (a corrected resubmission), in the place
@@ -819,6 +849,11 @@ def grade(key: Key, paths, tolerance: float | None = None, progress=None) -> Rep
         latest[s.student] = s
     order = list(dict.fromkeys(s.student for s in students))
     students = [latest[name] for name in order]
+    if problems.dropped:
+        list.append(problems, Problem(str(files[-1]) if files else "", None, Notice(
+            f"… and {problems.dropped} more problem(s) up to this sheet not listed (at most "
+            f"{MAX_PROBLEMS} per run; grade the sheets in parts)", "run_problems_cut", n=problems.dropped,
+            top=MAX_PROBLEMS)))
     return Report(key, key.tolerance if tolerance is None else tolerance, tuple(students),
                   tuple(problems), tuple(map(str, files)))
 
