@@ -29,8 +29,9 @@ def variants_command(
     sheets: bool = typer.Option(False, "--sheets", help="Also write a printable task sheet per "
                                 "variant (sheets/variant_NN.html and .pdf, and sheets.pdf with "
                                 "them all): the drawing, the data, what to find; no answers."),
-    sheets_format: str = typer.Option("both", "--sheets-format", help="Formats of --sheets: "
-                                      "both | html | pdf."),
+    sheets_format: Optional[str] = typer.Option(None, "--sheets-format", help="Formats of "
+                                                "--sheets: both | html | pdf (default both; "
+                                                "only with --sheets)."),
     lang: Lang = "en",
 ) -> None:
     """Individual variants of a task from a template, with the answer key (answers.json,
@@ -49,6 +50,12 @@ def variants_command(
         fail(Notice(f"--points: {points} is too few (allowed: 36 or more)", "points_too_few",
                     n=points))
     check_lang(lang)
+    if sheets_format is not None and not sheets:
+        fail(Notice(f"--sheets-format {sheets_format}: given without --sheets (it says the "
+                    "format of the task sheets; allowed: --sheets --sheets-format FORMAT, or "
+                    "neither)", "sheets_format_without_sheets", got=sheets_format))
+    if sheets_format is None:
+        sheets_format = "both"
     if sheets_format not in ("both", "html", "pdf"):
         fail(choice("--sheets-format", sheets_format, "a sheet format", "both, html, pdf"))
     import secrets
@@ -122,9 +129,9 @@ def grade_command(
 
     from flywheel.cli.guard import _guard, check_lang, choice, fail
     from flywheel.errors import Notice
-    from flywheel.io.output import write_file
     from flywheel.render.nomenclature import stage_name
-    from flywheel.teaching.grading import grade, load_key, report_csv, report_dict
+    from flywheel.teaching.grading import (check_outputs, grade, load_key,
+                                           report_csv_pieces, report_json)
 
     check_lang(lang)
     if csv_style not in ("plain", "excel-ru"):
@@ -140,6 +147,7 @@ def grade_command(
             fail(Notice(f"{option} {path}: the folder {path.parent} does not exist (allowed: a "
                         "CSV file name in an existing folder)", "csv_folder_missing",
                         option=option, path=str(path), parent=str(path.parent)))
+    _guard(check_outputs, key, answers, [("--out", out), ("--gradebook", gradebook)])
     k = _guard(load_key, key)
     from rich.console import Console
     from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn
@@ -165,26 +173,18 @@ def grade_command(
         fail(Notice(f"{files}: nothing could be graded: no filled-in student rows (a row needs "
                     "a student name and a variant)", "no_student_rows", files=files))
     if out is not None:
-        text = report_csv(report)
+        pieces = report_csv_pieces(report)
         if csv_style == "excel-ru":
-            import csv
-            import io
-
-            from flywheel.render.csvfmt import csv_text
-
-            rows = list(csv.reader(io.StringIO(text)))
-            text = csv_text([[_number_or_text(c) for c in row] for row in rows], csv_style,
-                            fmt=lambda x: f"{x!r}")
-        _guard(write_file, out, text, expected="a CSV file name")
+            pieces = _excel_ru(pieces)
+        _guard(write_pieces, out, pieces, expected="a CSV file name")
     if gradebook is not None:
-        from flywheel.render.grading import gradebook_csv
+        from flywheel.render.grading import gradebook_pieces
 
-        _guard(write_file, gradebook, gradebook_csv(report, csv_style, lang), "--gradebook",
+        _guard(write_pieces, gradebook, gradebook_pieces(report, csv_style, lang), "--gradebook",
                expected="a CSV file name")
     if as_json:
-        import json
-
-        sys.stdout.write(json.dumps(report_dict(report), indent=2, ensure_ascii=False) + "\n")
+        for piece in report_json(report):
+            sys.stdout.write(piece)
     else:
         from flywheel.render.grading import print_class_summary, print_report
 
@@ -205,3 +205,57 @@ def _number_or_text(cell: str):
         return float(cell) if cell.strip() and cell.strip()[0] in "-0123456789" else cell
     except ValueError:
         return cell
+
+
+def _excel_ru(pieces):
+    """The pieces of the --out report restyled for a Russian Excel (';', decimal commas, a
+    BOM at the start only; render/csvfmt.py), piece by piece."""
+    import csv
+    import io
+
+    from flywheel.render.csvfmt import csv_text
+
+    for i, text in enumerate(pieces):
+        rows = list(csv.reader(io.StringIO(text)))
+        out = csv_text([[_number_or_text(c) for c in row] for row in rows], "excel-ru",
+                       fmt=lambda x: f"{x!r}")
+        yield out if i == 0 else out.removeprefix("\ufeff")
+
+
+def write_pieces(path: Path, pieces, option: str = "--out", expected: str = "a file name"):
+    """Write the text ``pieces`` (UTF-8) to ``path`` whole or not at all, as
+    io.output.write_file does with one text: a temporary file beside it, renamed into place;
+    InputError naming ``option`` if ``path`` is a folder or cannot be written."""
+    import os
+    import tempfile
+
+    from flywheel.errors import InputError, Notice
+    from flywheel.io.output import cannot_write
+
+    path = Path(path)
+    try:
+        is_dir = path.is_dir()
+    except OSError as exc:                  # a name too long for the system
+        raise InputError(cannot_write(option, path, exc)) from None
+    if is_dir:
+        raise InputError(Notice(f"{option} {path}: is a folder, expected {expected}",
+                                "option_is_a_folder", option=option, path=str(path),
+                                expected=expected))
+    tmp = None
+    try:
+        path.parent.mkdir(parents=True, exist_ok=True)
+        fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", dir=path.parent)
+        with os.fdopen(fd, "w", encoding="utf-8", newline="") as f:
+            for piece in pieces:
+                f.write(piece)
+        os.chmod(tmp, 0o644)
+        os.replace(tmp, path)
+    except OSError as exc:
+        if tmp is not None and os.path.exists(tmp):
+            os.unlink(tmp)
+        raise InputError(cannot_write(option, path, exc)) from None
+    except BaseException:
+        if tmp is not None and os.path.exists(tmp):
+            os.unlink(tmp)
+        raise
+    return path

@@ -60,12 +60,17 @@ TEXT = {
 def gradebook_rows(r, lang: str = "en") -> list[list]:
     """The gradebook: one row per student in the order of the sheets — student, variant, per
     answer its verdict and relative (or absolute) error, passed, total, score."""
+    return list(_gradebook_rows(r, lang))
+
+
+def _gradebook_rows(r, lang: str = "en"):
+    """The rows of :func:`gradebook_rows`, one at a time."""
     t = TEXT[lang]
     answers = list(r.key.answers) or sorted({a.answer for s in r.students for a in s.answers})
     head = [t["student"], t["variant"]]
     for a in answers:
         head += [f"{a} {t['verdict']}", f"{a} {t['error']}"]
-    rows = [head + [t["passed"], t["total"], t["score"]]]
+    yield head + [t["passed"], t["total"], t["score"]]
     for s in r.students:
         by = {a.answer: a for a in s.answers}
         row = [s.student, s.variant]
@@ -76,15 +81,31 @@ def gradebook_rows(r, lang: str = "en") -> list[list]:
                 continue
             row += [t["pass"] if g.passed else (t["fail"] if g.given is not None
                                                  else t["no_answer"]), g.error]
-        rows.append(row + [s.passed, s.total, round(s.score, 4)])
-    return rows
+        yield row + [s.passed, s.total, round(s.score, 4)]
 
 
 def gradebook_csv(r, style: str = "plain", lang: str = "en") -> str:
     """The gradebook as CSV text (``plain`` or ``excel-ru``: see render/csvfmt.py)."""
+    return "".join(gradebook_pieces(r, style, lang))
+
+
+#: gradebook rows formatted per piece of text
+ROWS_PER_PIECE = 2000
+
+
+def gradebook_pieces(r, style: str = "plain", lang: str = "en"):
+    """The text of :func:`gradebook_csv` in pieces of ROWS_PER_PIECE rows (a class of 200 000
+    is never held whole); the BOM of excel-ru only at the start."""
+    from itertools import islice
+
     from flywheel.render.csvfmt import csv_text
 
-    return csv_text(gradebook_rows(r, lang), style, fmt=lambda x: f"{x:.6g}")
+    rows = _gradebook_rows(r, lang)
+    first = True
+    while chunk := list(islice(rows, ROWS_PER_PIECE)):
+        text = csv_text(chunk, style, fmt=lambda x: f"{x:.6g}")
+        yield text if first else text.removeprefix("\ufeff")
+        first = False
 
 
 def print_class_summary(r, lang: str = "en", console=None) -> None:

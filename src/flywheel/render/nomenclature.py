@@ -2526,3 +2526,46 @@ def _msgs_safe_out_ru_params(code: str, p: dict) -> dict:
 
 _PARAM_HOOKS.append(_msgs_safe_out_ru_params)
 _MSGS_DERIVED |= {"files_ru", "reason_ru"}
+
+# --- msgs_safe_grade ---
+# flywheel grade's refusals of issue 23 (teaching/grading.py, cli/teaching.py) in Russian: an
+# output over an input, --tolerance too large, a key nested too deep or with too long a number,
+# a sheet whose encoding cannot be trusted; and variants' --sheets-format without --sheets.
+_GRADE_INPUTS_RU = {"the answer key": "ключ ответов", "the answer sheet": "лист ответов"}
+MESSAGES_RU.update({
+    "grade_output_is_input": ("{option} {path}: это {what_ru} {given} (flywheel grade никогда не "
+                              "записывает поверх своих входных файлов; допустимо: другое имя "
+                              "файла)"),
+    "grade_outputs_same": ("{option} {path} и {other} {there}: один и тот же файл (допустимо: "
+                           "два разных имени файла)"),
+    "grade_tolerance_too_large": ("--tolerance: {got} — слишком большой допуск (допустимо: "
+                                  "0 < допуск ≤ 1, относительная погрешность: 0,01 — это 1 %)"),
+    "sheets_format_without_sheets": ("--sheets-format {got}: задан без --sheets (он задаёт "
+                                     "формат листов заданий; допустимо: --sheets "
+                                     "--sheets-format ФОРМАТ или ни то, ни другое)"),
+    "key_too_deep": ("{path}: слишком глубокая вложенность [] и {{}}: уровней — {depth} "
+                     "(допустимо: не более {top})"),
+    "key_too_deep_at": ("{path}: слишком глубокая вложенность [] и {{}} (допустимо: не более "
+                        "{top} уровней)"),
+    "key_number_too_long": ("{path}: слишком длинное число: цифр — {digits} (допустимо: не "
+                            "более {top})"),
+    "sheet_stray_byte": ("текст в кодировке Windows-1251 с лишним байтом {byte} на позиции "
+                         "{at} (такого символа в Windows-1251 нет: лист прочитался бы искажённым "
+                         "или не прочитался бы вовсе; допустимо: лист, заново сохранённый "
+                         "в UTF-8 или Windows-1251)"),
+    "run_problems_cut": ("… и ещё замечаний до этого листа включительно, не перечисленных: {n} "
+                         "(не более {top} за один запуск; проверяйте листы частями)"),
+    "sheet_undecodable": ("не текст в кодировке {codec} на позиции {at} (кодировка определена "
+                          "по началу листа; допустимо: одна кодировка на весь лист: UTF-8, "
+                          "Windows-1251, cp866, koi8-r)"),
+})
+
+
+def _msgs_safe_grade_ru_params(code: str, p: dict) -> dict:
+    if code == "grade_output_is_input":
+        p["what_ru"] = _GRADE_INPUTS_RU.get(p["what"], p["what"])
+    return p
+
+
+_PARAM_HOOKS.append(_msgs_safe_grade_ru_params)
+_MSGS_DERIVED |= {"what_ru"}

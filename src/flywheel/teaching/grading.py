@@ -23,18 +23,25 @@ Computation only: no typer, no rich.
 """
 from __future__ import annotations
 
+import codecs
 import csv
 import functools
 import io
+import itertools
 import json
 import math
+import os
 import re
+from array import array
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import Iterator
 
 from flywheel.errors import CaseFileError, InputError, Notice, led, said
 
 DEFAULT_TOLERANCE = 0.01
+#: the largest --tolerance: a relative error of 100 % (any answer of the right sign passes)
+MAX_TOLERANCE = 1.0
 #: round-off allowance: an error of tolerance·(1 + SLACK) still passes (0.01 typed for 1 %)
 SLACK = 1e-9
 
@@ -80,7 +87,13 @@ class Key:
 
 
 def _number(v) -> bool:
-    return isinstance(v, (int, float)) and not isinstance(v, bool) and math.isfinite(v)
+    """A finite JSON number (an integer too large for a float is not: 10**400)."""
+    if not isinstance(v, (int, float)) or isinstance(v, bool):
+        return False
+    try:
+        return math.isfinite(v)
+    except OverflowError:
+        return False
 
 
 def _positive(v) -> bool:
@@ -156,13 +169,66 @@ def load_key(path) -> Key:
         raise CaseFileError(Notice(f"{path}: cannot be read ({exc.strerror})",
                                    "grade_key_unreadable", path=str(path),
                                    reason=exc.strerror, errno=exc.errno)) from None
+    depth = json_depth(text)
+    if depth > MAX_KEY_DEPTH:
+        raise CaseFileError(Notice(f"{path}: nested too deep ({depth} levels of [] and {{}}; "
+                                   f"allowed: up to {MAX_KEY_DEPTH})", "key_too_deep",
+                                   path=str(path), depth=depth, top=MAX_KEY_DEPTH))
     try:
-        doc = json.loads(text)
+        doc = json.loads(text, parse_int=_key_int)
     except json.JSONDecodeError as exc:
         raise CaseFileError(Notice(f"{path}: not JSON: {exc.msg} at line {exc.lineno} column "
                                    f"{exc.colno}", "not_json", path=str(path), msg=exc.msg,
                                    line=exc.lineno, col=exc.colno)) from None
+    except _LongNumber as exc:
+        raise CaseFileError(Notice(f"{path}: a number of {exc.digits} digits is too long "
+                                   f"(allowed: up to {MAX_KEY_DIGITS} digits)", "key_number_too_long",
+                                   path=str(path), digits=exc.digits, top=MAX_KEY_DIGITS)) from None
+    except RecursionError:                  # json_depth bounds the nesting: not reached
+        raise CaseFileError(Notice(f"{path}: nested too deep (allowed: up to {MAX_KEY_DEPTH} "
+                                   "levels of [] and {})", "key_too_deep_at", path=str(path),
+                                   top=MAX_KEY_DEPTH)) from None
     return parse_key(doc, str(path))
+
+
+#: the deepest nesting of [] and {} in a key (answers.json has 3 levels)
+MAX_KEY_DEPTH = 64
+#: the longest integer in a key (a float holds at most 309 digits; Python refuses 4300+)
+MAX_KEY_DIGITS = 400
+_STRING_OR_BRACKET = re.compile(r'"(?:[^"\\]|\\.)*"?|[\[\]{}]')
+
+
+class _LongNumber(ValueError):
+    def __init__(self, digits: int):
+        super().__init__(digits)
+        self.digits = digits
+
+
+def _key_int(text: str) -> int:
+    """json's parse_int of a key: an integer of more than MAX_KEY_DIGITS digits is refused
+    before Python's int() (which raises at 4300)."""
+    digits = len(text.lstrip("-"))
+    if digits > MAX_KEY_DIGITS:
+        raise _LongNumber(digits)
+    return int(text)
+
+
+def json_depth(text: str) -> int:
+    """The deepest nesting of [] and {} in JSON text, counted without recursion (brackets
+    inside strings skipped; unbalanced text is json's to refuse).
+
+    >>> json_depth('{"a": [1, {"b": "[[["}]}'), json_depth("[]" * 3), json_depth("1")
+    (3, 1, 0)
+    """
+    depth = top = 0
+    for m in _STRING_OR_BRACKET.finditer(text):
+        c = m.group()
+        if c in "[{":
+            depth += 1
+            top = max(top, depth)
+        elif c in "]}":
+            depth -= 1
+    return top
 
 
 # -- numbers ------------------------------------------------------------------------------------
@@ -191,7 +257,7 @@ def rel_error(given: float, key: float) -> tuple[float, str]:
 
 # -- grading ------------------------------------------------------------------------------------
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, slots=True)
 class Problem:
     """Something that could not be graded: file, row (1 = the header; None: the whole file);
     ``message`` an errors.Notice (said in Russian under ``grade --lang ru``)."""
@@ -224,20 +290,57 @@ class AnswerGrade:
 
 
 @dataclass(frozen=True)
+class Marking:
+    """How one variant is marked: its answers in the key's order, their key values and
+    tolerances (one object shared by every student of that variant)."""
+
+    names: tuple[str, ...]
+    keys: tuple[float, ...]
+    tolerances: tuple[float, ...]
+
+    def verdicts(self, given: array) -> int:
+        """The answers passed as a bit mask (bit j: answer j); ``given`` NaN = no answer."""
+        mask = 0
+        for j, (g, k, tol) in enumerate(zip(given, self.keys, self.tolerances)):
+            if g == g and rel_error(g, k)[0] <= tol * (1 + SLACK):
+                mask |= 1 << j
+        return mask
+
+
+@dataclass(frozen=True, slots=True)
 class StudentGrade:
+    """One graded row, kept small (a class of 200 000 rows fits in tens of MB): the values
+    given (NaN: no answer), the passed answers as a bit mask and the variant's shared
+    :class:`Marking`; :attr:`answers` builds the full grades when asked."""
+
     student: str
     variant: str                 # the key's id
     file: str
     row: int
-    answers: tuple[AnswerGrade, ...]
+    given: array                 # array('d'), NaN = no answer
+    mask: int                    # bit j set: answer j passed
+    marking: Marking
+
+    @property
+    def answers(self) -> tuple[AnswerGrade, ...]:
+        out = []
+        for j, (a, k, tol, g) in enumerate(zip(self.marking.names, self.marking.keys,
+                                               self.marking.tolerances, self.given)):
+            if g != g:
+                out.append(AnswerGrade(a, None, k, None, "relative" if k else "absolute", tol,
+                                       False))
+                continue
+            err, kind = rel_error(g, k)
+            out.append(AnswerGrade(a, g, k, err, kind, tol, bool(self.mask >> j & 1)))
+        return tuple(out)
 
     @property
     def passed(self) -> int:
-        return sum(a.passed for a in self.answers)
+        return self.mask.bit_count()
 
     @property
     def total(self) -> int:
-        return len(self.answers)
+        return len(self.marking.names)
 
     @property
     def score(self) -> float:
@@ -245,7 +348,11 @@ class StudentGrade:
 
     @property
     def wrong(self) -> list[str]:
-        return [a.answer for a in self.answers if not a.passed]
+        return [a for j, a in enumerate(self.marking.names) if not self.mask >> j & 1]
+
+    @property
+    def nothing_given(self) -> bool:
+        return all(g != g for g in self.given)
 
 
 @dataclass(frozen=True)
@@ -268,16 +375,16 @@ class Report:
         for a in self.key.answers:
             out[a] = [0, 0]
         for s in self.students:
-            for a in s.answers:
-                c = out.setdefault(a.answer, [0, 0])
-                c[0] += not a.passed
+            for j, a in enumerate(s.marking.names):
+                c = out.setdefault(a, [0, 0])
+                c[0] += not s.mask >> j & 1
                 c[1] += 1
         return {k: (w, n) for k, (w, n) in out.items() if n}
 
     @property
     def handed_in_nothing(self) -> list[StudentGrade]:
         """Students on a sheet whose answers are all empty (missing work)."""
-        return [s for s in self.students if all(a.given is None for a in s.answers)]
+        return [s for s in self.students if s.nothing_given]
 
     def score_distribution(self) -> dict[int, int]:
         """{answers passed: students} from 0 to the most answers any variant asks."""
@@ -308,56 +415,158 @@ MAX_ROWS = 200_000                 # per grading run, over all sheets
 ENCODINGS = ("utf_8", "utf_16", "utf_32", "cp1251", "cp866", "koi8_r", "cp1252")
 _BOMS = ((b"\xef\xbb\xbf", "utf-8-sig"), (b"\xff\xfe\x00\x00", "utf-32"),
          (b"\x00\x00\xfe\xff", "utf-32"), (b"\xff\xfe", "utf-16"), (b"\xfe\xff", "utf-16"))
+#: a sheet is read in pieces of this many bytes (its memory does not grow with its size)
+READ_BYTES = 1 << 16
+#: charset-normalizer guesses the encoding from at most this many bytes of the sheet's start
+DETECT_BYTES = 1 << 20
+#: the bytes Windows-1251 leaves undefined: a cp1251 sheet holding one is refused, not
+#: guessed as DOS or koi8-r text (garbled names)
+_NOT_CP1251 = b"\x98"
 
 
 class SheetError(ValueError):
     """A sheet that cannot be read as text: one problem row for the whole file."""
 
 
+def _chunks(source) -> "Iterator[bytes]":
+    """The bytes of ``source`` (a path, or bytes) in pieces of READ_BYTES."""
+    if isinstance(source, (bytes, bytearray)):
+        for i in range(0, len(source), READ_BYTES):
+            yield bytes(source[i:i + READ_BYTES])
+        return
+    with open(source, "rb") as f:
+        while piece := f.read(READ_BYTES):
+            yield piece
+
+
+def _head(source, n: int) -> bytes:
+    """The first ``n`` bytes of ``source``."""
+    if isinstance(source, (bytes, bytearray)):
+        return bytes(source[:n])
+    with open(source, "rb") as f:
+        return f.read(n)
+
+
+def _text_chunks(source, codec: str) -> "Iterator[str]":
+    """The text of ``source`` decoded strictly with ``codec``, piece by piece; a
+    UnicodeDecodeError carries ``byte``, its place counted from the file's start."""
+    decoder = codecs.getincrementaldecoder(codec)("strict")
+    done = 0
+    for piece in itertools.chain(_chunks(source), [b""]):
+        try:
+            text = decoder.decode(piece, final=not piece)
+        except UnicodeDecodeError as exc:    # exc.object: the bytes kept back, then the piece
+            exc.byte = done - (len(exc.object) - len(piece)) + exc.start
+            raise
+        done += len(piece)
+        if text:
+            yield text
+
+
+def _scan(source, codec: str) -> tuple[int | None, bool]:
+    """(the first byte that is not ``codec`` text or None, whether the text holds a NUL),
+    the whole of ``source`` read piece by piece (nothing kept)."""
+    nul = False
+    try:
+        for text in _text_chunks(source, codec):
+            nul = nul or "\x00" in text
+    except UnicodeDecodeError as exc:
+        return exc.byte, nul
+    return None, nul
+
+
+def sheet_codec(source) -> str:
+    """The codec a sheet is read with (``source``: a path or bytes), checked over the whole
+    file without keeping it: a byte-order mark decides (UTF-8, UTF-16, UTF-32: Excel's
+    "Unicode text"), else strict UTF-8, else the most plausible of :data:`ENCODINGS` by
+    charset-normalizer on the first DETECT_BYTES (cp1251 of a Russian Excel, cp866 of DOS,
+    koi8-r). Raises SheetError for binary data (an image renamed .csv), text in none of those
+    encodings, a guess the rest of the file does not decode in, or a Windows-1251 sheet with
+    a stray byte it leaves undefined (which charset-normalizer would read as DOS or koi8-r
+    text, garbling every name).
+
+    >>> sheet_codec("student;вариант".encode("cp1251"))
+    'cp1251'
+    """
+    head = _head(source, 4)
+    for bom, enc in _BOMS:
+        if head.startswith(bom):
+            if _scan(source, enc)[0] is not None:
+                raise SheetError(Notice(f"starts with a {enc} byte-order mark but is not {enc} "
+                                        "text", "sheet_bad_bom", enc=enc))
+            return enc
+    bad, nul = _scan(source, "utf-8")
+    if bad is None:
+        if nul:
+            raise SheetError(Notice("binary data, not a CSV text file", "sheet_binary"))
+        return "utf-8"
+    from charset_normalizer import from_bytes
+
+    sample = _head(source, DETECT_BYTES)
+    best = from_bytes(sample, cp_isolation=list(ENCODINGS)).best()
+    codec = None if best is None else best.encoding
+    if codec != "cp1251" and _NOT_CP1251 in sample:
+        clean = sample.replace(_NOT_CP1251, b"")
+        again = from_bytes(clean, cp_isolation=list(ENCODINGS)).best()
+        if again is not None and again.encoding == "cp1251":
+            at = sample.index(_NOT_CP1251)
+            raise SheetError(Notice(
+                f"Windows-1251 text with a stray byte 0x{sample[at]:02X} at byte {at} (not a "
+                "Windows-1251 character: the sheet would be read garbled or not at all; "
+                "allowed: the sheet saved again as UTF-8 or Windows-1251)", "sheet_stray_byte",
+                byte=f"0x{sample[at]:02X}", at=at))
+    if best is None:
+        raise SheetError(Notice("binary data, not a CSV text file (no text encoding fits: "
+                                "UTF-8, UTF-16, cp1251, cp866, koi8-r)", "sheet_no_encoding"))
+    at, nul = _scan(source, codec)
+    if at is not None:
+        raise SheetError(Notice(
+            f"not {codec} text at byte {at} (the encoding guessed from the sheet's start; "
+            "allowed: one encoding for the whole sheet: UTF-8, Windows-1251, cp866, koi8-r)",
+            "sheet_undecodable", codec=codec, at=at))
+    if nul:
+        raise SheetError(Notice("binary data, not a CSV text file", "sheet_binary"))
+    return codec
+
+
 def decode_sheet(data: bytes) -> tuple[str, str]:
-    """(text, encoding) of a sheet's bytes: a byte-order mark decides (UTF-8, UTF-16, UTF-32:
-    Excel's "Unicode text"), else strict UTF-8, else the most plausible of :data:`ENCODINGS`
-    by charset-normalizer (cp1251 of a Russian Excel, cp866 of DOS, koi8-r). Raises
-    SheetError for binary data (an image renamed .csv) or text in none of those encodings.
+    """(text, encoding) of a sheet's bytes (see :func:`sheet_codec`; the whole text, for a
+    library user: the grader reads a sheet in pieces).
 
     >>> decode_sheet("student;вариант".encode("cp1251"))
     ('student;вариант', 'cp1251')
     """
-    for bom, enc in _BOMS:
-        if data.startswith(bom):
-            try:
-                return data.decode(enc), enc.replace("-sig", "")
-            except UnicodeDecodeError:
-                raise SheetError(Notice(f"starts with a {enc} byte-order mark but is not {enc} "
-                                        "text", "sheet_bad_bom", enc=enc)) from None
-    try:
-        text = data.decode("utf-8")
-    except UnicodeDecodeError:
-        pass
-    else:
-        if "\x00" in text:
-            raise SheetError(Notice("binary data, not a CSV text file", "sheet_binary"))
-        return text, "utf-8"
-    from charset_normalizer import from_bytes
-
-    best = from_bytes(data, cp_isolation=list(ENCODINGS)).best()
-    if best is None:
-        raise SheetError(Notice("binary data, not a CSV text file (no text encoding fits: "
-                                "UTF-8, UTF-16, cp1251, cp866, koi8-r)", "sheet_no_encoding"))
-    text = str(best)
-    if "\x00" in text:
-        raise SheetError(Notice("binary data, not a CSV text file", "sheet_binary"))
-    return text, best.encoding
+    codec = sheet_codec(data)
+    return "".join(_text_chunks(data, codec)), codec.replace("-sig", "")
 
 
-def _read_text(path: Path) -> str:
-    """The text of a sheet (see :func:`decode_sheet`); SheetError if too large or not text."""
+def _lines(pieces) -> "Iterator[str]":
+    """Lines ending at "\\n" (kept), as io.StringIO gives them to the csv module, from pieces
+    of text; a line never holds more than itself."""
+    pending: list[str] = []
+    for piece in pieces:
+        start = 0
+        while (end := piece.find("\n", start)) >= 0:
+            if pending:
+                pending.append(piece[start:end + 1])
+                yield "".join(pending)
+                pending = []
+            else:
+                yield piece[start:end + 1]
+            start = end + 1
+        if start < len(piece):
+            pending.append(piece[start:])
+    if pending:
+        yield "".join(pending)
+
+
+def _check_size(path: Path) -> None:
+    """SheetError if the sheet is larger than MAX_SHEET_BYTES."""
     size = path.stat().st_size
     if size > MAX_SHEET_BYTES:
         raise SheetError(Notice(f"{size / 1e6:.0f} MB is too large for an answer sheet (allowed: "
                                 f"up to {MAX_SHEET_BYTES / 1e6:.0f} MB)", "sheet_too_large",
                                 mb=size / 1e6, top=MAX_SHEET_BYTES / 1e6))
-    return decode_sheet(path.read_bytes())[0]
 
 
 def _delimiter(header: str) -> str:
@@ -389,39 +598,134 @@ def sheet_files(paths) -> tuple[list[Path], list[Problem]]:
     return files, problems
 
 
+def _same_file(a: Path, b: Path) -> bool:
+    """Whether ``a`` and ``b`` name one file: the same resolved path (``./x`` and ``x``, a
+    symbolic link and its target), or, when both exist, the same file on the disc
+    (os.path.samefile: a hard link, another spelling on a case-insensitive system)."""
+    try:
+        if a.resolve() == b.resolve():
+            return True
+        return a.exists() and b.exists() and os.path.samefile(a, b)
+    except (OSError, RuntimeError):        # a name too long, a loop of links: not provably one
+        return False
+
+
+def check_outputs(key, answers, outputs) -> None:
+    """Refuse, before anything is read, an output of ``flywheel grade`` that would write over
+    one of its inputs (the key, a sheet, a sheet in a folder of sheets) or over the other
+    output. ``outputs``: [(option, path or None)]. Raises InputError, one line naming both."""
+    named = [(o, Path(p)) for o, p in outputs if p is not None]
+    inputs = [("the answer key", Path(key))]
+    for a in map(Path, answers):
+        try:
+            found = sorted(q for q in a.iterdir() if q.suffix.lower() == ".csv") \
+                if a.is_dir() else [a]
+        except OSError:
+            found = [a]
+        inputs += [("the answer sheet", q) for q in found]
+    for i, (option, path) in enumerate(named):
+        for what, given in inputs:
+            if _same_file(path, given):
+                raise InputError(Notice(
+                    f"{option} {path}: is {what} {given} (flywheel grade never writes over its "
+                    "inputs; allowed: another file name)", "grade_output_is_input",
+                    option=option, path=str(path), what=what, given=str(given)))
+        for other, there in named[i + 1:]:
+            if _same_file(path, there):
+                raise InputError(Notice(
+                    f"{option} {path} and {other} {there}: the same file (allowed: two "
+                    "different file names)", "grade_outputs_same", option=option,
+                    path=str(path), other=other, there=str(there)))
+
+
+class _Kept(list):
+    """A list of problems that keeps at most ``room`` and counts the rest (``dropped``): a
+    sheet of 10⁵ broken rows (graded against another class's key) is not 10⁵ records."""
+
+    def __init__(self, room: int | None = None):
+        super().__init__()
+        self.room = room
+        self.dropped = 0
+
+    def append(self, problem) -> None:
+        if self.room is not None and len(self) >= self.room:
+            self.dropped += 1
+        else:
+            super().append(problem)
+
+
+#: problems kept per run (the rest counted and named in one last problem)
+MAX_PROBLEMS = 10_000
+
+
 def grade_sheet(key: Key, path, tolerance: float | None = None
                 ) -> tuple[list[StudentGrade], list[Problem]]:
     """Grade every student row of one CSV file; broken rows become Problems."""
+    graded, problems, _, _ = _grade_sheet(key, path, tolerance, None)
+    return graded, problems
+
+
+def _grade_sheet(key: Key, path, tolerance: float | None, limit: int | None,
+                 room: int | None = None
+                 ) -> tuple[list[StudentGrade], list[Problem], int, int | None]:
+    """(graded, problems, rows past ``limit``, the first of them) of one CSV file, read as a
+    stream of rows: at most ``limit`` graded rows are kept (None: all); the rows past it are
+    still read for their problems and counted."""
     path = Path(path)
     name = str(path)
     try:
-        text = _read_text(path)
+        _check_size(path)
+        codec = sheet_codec(path)               # the whole file checked, nothing kept
+        return _grade_rows(key, name, _lines(_text_chunks(path, codec)), tolerance, limit,
+                           room)
     except OSError as exc:
         return [], [Problem(name, None, Notice(f"cannot be read ({exc.strerror})",
                                                "sheet_unreadable", reason=exc.strerror,
-                                               errno=exc.errno))]
+                                               errno=exc.errno))], 0, None
     except SheetError as exc:
-        return [], [Problem(name, None, said(exc))]
-    lines = text.splitlines()
-    if not lines or not lines[0].strip():
+        return [], [Problem(name, None, said(exc))], 0, None
+    except UnicodeDecodeError as exc:           # the file changed since it was checked
+        return [], [Problem(name, None, Notice(
+            f"not {exc.encoding} text at byte {exc.byte} (the encoding guessed from the "
+            "sheet's start; allowed: one encoding for the whole sheet: UTF-8, Windows-1251, "
+            "cp866, koi8-r)", "sheet_undecodable", codec=exc.encoding, at=exc.byte))], 0, None
+
+
+def _grade_rows(key: Key, name: str, lines, tolerance: float | None, limit: int | None,
+                room: int | None = None
+                ) -> tuple[list[StudentGrade], list[Problem], int, int | None]:
+    """Grade the rows of a sheet given as its lines (see :func:`_grade_sheet`). A CSV error
+    anywhere refuses the whole sheet, as before any row is graded."""
+    first = next(lines, "")
+    head = first.splitlines()
+    if not head or not head[0].strip():
         return [], [Problem(name, None, Notice("empty file (expected a header "
-                                               "student,variant,…)", "sheet_empty"))]
+                                               "student,variant,…)", "sheet_empty"))], 0, None
+    rows = csv.reader(itertools.chain([first], lines), delimiter=_delimiter(head[0]))
     try:
-        rows = list(csv.reader(io.StringIO(text), delimiter=_delimiter(lines[0])))
+        return _graded(key, name, rows, tolerance, limit, room)
     except csv.Error as exc:
         return [], [Problem(name, None, Notice(f"not a readable CSV file ({exc})",
-                                               "sheet_not_csv", detail=str(exc)))]
-    header = [h.strip() for h in rows[0]]
+                                               "sheet_not_csv", detail=str(exc)))], 0, None
+
+
+def _graded(key: Key, name: str, rows, tolerance: float | None, limit: int | None,
+            room: int | None = None
+            ) -> tuple[list[StudentGrade], list[Problem], int, int | None]:
+    header = [h.strip() for h in next(rows)]
     lower = [h.lower() for h in header]
     missing = [c for c in ("student", "variant") if c not in lower]
     if missing:
+        for _ in rows:                          # a CSV error further on says more
+            pass
         return [], [Problem(name, 1, Notice(
             f"no {' and no '.join(repr(c) for c in missing)} column (the header must be "
             f"student,variant,<answers…>; got {_short(','.join(header))})", "sheet_no_column",
-            columns=' и '.join(repr(c) for c in missing), header=_short(','.join(header))))]
+            columns=' и '.join(repr(c) for c in missing),
+            header=_short(','.join(header))))], 0, None
     col_student, col_variant = lower.index("student"), lower.index("variant")
     columns = {h: i for i, h in enumerate(header) if i not in (col_student, col_variant) and h}
-    problems: list[Problem] = []
+    problems: list[Problem] = _Kept(room)
     known = set(key.answers) | {a for v in key.variants.values() for a in v}
     unknown = [h for h in columns if h not in known]
     if unknown:
@@ -434,8 +738,10 @@ def grade_sheet(key: Key, path, tolerance: float | None = None
         problems.append(Problem(name, 1, Notice(
             f"no column for {', '.join(map(repr, absent))}: those answers count as not given",
             "sheet_absent_columns", columns=', '.join(map(repr, absent)))))
+    markings: dict[str, Marking] = {}
     graded: list[StudentGrade] = []
-    for n, row in enumerate(rows[1:], start=2):
+    over, first_over = 0, None
+    for n, row in enumerate(rows, start=2):
         cells = [c.strip() for c in row]
         if not any(cells):
             continue
@@ -458,15 +764,15 @@ def grade_sheet(key: Key, path, tolerance: float | None = None
                 f"{who}{what} (allowed: {allowed}); row skipped", "row_variant",
                 student=student, variant=variant, allowed=allowed)))
             continue
-        values: dict[str, float | None] = {}
+        values = array("d")
         bad = []
         for a in key.variants[vid]:
             t = given.get(a, "")
             if not t:
-                values[a] = None
+                values.append(math.nan)
                 continue
             try:
-                values[a] = parse_number(t)
+                values.append(parse_number(t))
             except ValueError:
                 bad.append(f"{a} = {t!r}")
         if bad:
@@ -474,49 +780,60 @@ def grade_sheet(key: Key, path, tolerance: float | None = None
                                                     "row skipped", "row_not_a_number",
                                                     student=student, bad='; '.join(bad))))
             continue
-        grades = []
-        for a, k in key.variants[vid].items():
-            tol = key.tolerance_of(a, tolerance)
-            g = values[a]
-            if g is None:
-                grades.append(AnswerGrade(a, None, k, None, "relative" if k else "absolute",
-                                          tol, False))
-                continue
-            err, kind = rel_error(g, k)
-            grades.append(AnswerGrade(a, g, k, err, kind, tol, err <= tol * (1 + SLACK)))
-        graded.append(StudentGrade(student, vid, name, n, tuple(grades)))
-    return graded, problems
+        if limit is not None and len(graded) >= limit:
+            over += 1                           # past the run's limit: counted, not kept
+            first_over = n if first_over is None else first_over
+            continue
+        marking = markings.get(vid)
+        if marking is None:
+            answers = key.variants[vid]
+            marking = markings[vid] = Marking(
+                tuple(answers), tuple(answers.values()),
+                tuple(key.tolerance_of(a, tolerance) for a in answers))
+        graded.append(StudentGrade(student, vid, name, n, values, marking.verdicts(values),
+                                   marking))
+    return graded, problems, over, first_over
 
 
 def grade(key: Key, paths, tolerance: float | None = None, progress=None) -> Report:
     """Grade every CSV file (or folder of them) in ``paths``; never stops at a broken one.
 
     ``tolerance`` replaces the key's default tolerance (a per-answer one of the key stays);
-    ``progress(done, total)`` is called after each sheet (a progress bar).
+    ``progress(done, total)`` is called after each sheet (a progress bar). Each sheet is read
+    as a stream of rows; what is kept is one small record per graded row (at most MAX_ROWS).
     """
     if tolerance is not None and not _positive(tolerance):
         raise InputError(Notice(f"--tolerance: must be a positive number (got {tolerance!r})",
                                 "option_not_positive_number", option="--tolerance",
                                 got=repr(tolerance)))
-    files, problems = sheet_files(paths)
+    if tolerance is not None and tolerance > MAX_TOLERANCE:
+        raise InputError(Notice(f"--tolerance: {tolerance!r} is too large (allowed: 0 < "
+                                f"tolerance ≤ {MAX_TOLERANCE:g}, a relative error: 0.01 is 1 %)",
+                                "grade_tolerance_too_large", got=repr(tolerance),
+                                top=MAX_TOLERANCE))
+    files, found = sheet_files(paths)
+    problems = _Kept(MAX_PROBLEMS)
+    for p in found:
+        problems.append(p)
     students: list[StudentGrade] = []
     for i, f in enumerate(files):
         if len(students) >= MAX_ROWS:
-            problems += [Problem(str(g), None, Notice(
-                f"not graded: the run has reached {MAX_ROWS} student rows (grade the sheets in "
-                "parts)", "run_rows_reached", top=MAX_ROWS))
-                         for g in files[i:]]
+            for g in files[i:]:
+                problems.append(Problem(str(g), None, Notice(
+                    f"not graded: the run has reached {MAX_ROWS} student rows (grade the sheets "
+                    "in parts)", "run_rows_reached", top=MAX_ROWS)))
             break
-        s, p = grade_sheet(key, f, tolerance)
-        if len(students) + len(s) > MAX_ROWS:
-            keep = MAX_ROWS - len(students)
-            p.append(Problem(str(f), s[keep].row, Notice(
-                f"this row and the {len(s) - keep - 1} after it not graded: at most {MAX_ROWS} "
+        s, p, over, first_over = _grade_sheet(key, f, tolerance, MAX_ROWS - len(students),
+                                              MAX_PROBLEMS - len(problems))
+        if over:
+            p.append(Problem(str(f), first_over, Notice(
+                f"this row and the {over - 1} after it not graded: at most {MAX_ROWS} "
                 "student rows per run (grade the sheets in parts)", "run_rows_cut",
-                n=len(s) - keep - 1, top=MAX_ROWS)))
-            s = s[:keep]
+                n=over - 1, top=MAX_ROWS)))
+        problems.dropped += getattr(p, "dropped", 0)
         students += s
-        problems += p
+        for x in p:
+            problems.append(x)
         if progress is not None:
             progress(i + 1, len(files))
     # a student graded twice: the later row counts (a corrected resubmission), in the place
@@ -532,6 +849,11 @@ def grade(key: Key, paths, tolerance: float | None = None, progress=None) -> Rep
         latest[s.student] = s
     order = list(dict.fromkeys(s.student for s in students))
     students = [latest[name] for name in order]
+    if problems.dropped:
+        list.append(problems, Problem(str(files[-1]) if files else "", None, Notice(
+            f"… and {problems.dropped} more problem(s) up to this sheet not listed (at most "
+            f"{MAX_PROBLEMS} per run; grade the sheets in parts)", "run_problems_cut", n=problems.dropped,
+            top=MAX_PROBLEMS)))
     return Report(key, key.tolerance if tolerance is None else tolerance, tuple(students),
                   tuple(problems), tuple(map(str, files)))
 
@@ -540,19 +862,30 @@ def grade(key: Key, paths, tolerance: float | None = None, progress=None) -> Rep
 
 def report_dict(r: Report) -> dict:
     """The report as a JSON-ready document (``flywheel grade --json``)."""
+    doc = _report_frame(r)
+    doc["students"] = [_student_dict(s) for s in r.students]
+    return doc
+
+
+def _student_dict(s: StudentGrade) -> dict:
+    return {
+        "student": s.student, "variant": s.variant, "file": s.file, "row": s.row,
+        "score": s.score, "passed": s.passed, "total": s.total, "wrong": s.wrong,
+        "answers": [{"answer": a.answer, "given": a.given, "key": a.key, "error": a.error,
+                     "error_kind": a.error_kind, "tolerance": a.tolerance,
+                     "pass": a.passed} for a in s.answers],
+    }
+
+
+def _report_frame(r: Report) -> dict:
+    """The report's document with ``students`` empty (filled by the callers)."""
     worst = r.most_often_wrong()
     return {
         "key": r.key.source,
         "tolerance": r.tolerance,
         "tolerances": {a: r.key.tolerance_of(a, r.tolerance) for a in r.key.answers},
         "files": list(r.files),
-        "students": [{
-            "student": s.student, "variant": s.variant, "file": s.file, "row": s.row,
-            "score": s.score, "passed": s.passed, "total": s.total, "wrong": s.wrong,
-            "answers": [{"answer": a.answer, "given": a.given, "key": a.key, "error": a.error,
-                         "error_kind": a.error_kind, "tolerance": a.tolerance,
-                         "pass": a.passed} for a in s.answers],
-        } for s in r.students],
+        "students": [],
         "summary": {
             "graded": len(r.students),
             "mean_score": r.mean_score,
@@ -571,17 +904,53 @@ def report_dict(r: Report) -> dict:
     }
 
 
+def report_json(r: Report) -> Iterator[str]:
+    """The text of ``json.dumps(report_dict(r), indent=2, ensure_ascii=False)`` and a newline,
+    in pieces: one student's document at a time (a class of 200 000 never held whole).
+
+    json's indented text of a nested value is its own indented text with every line after the
+    first moved right by the indentation of its place, which this relies on."""
+    def dumps(value, depth: int) -> str:
+        return json.dumps(value, indent=2, ensure_ascii=False).replace("\n", "\n" + "  " * depth)
+
+    frame = _report_frame(r)
+    yield "{"
+    for i, (name, value) in enumerate(frame.items()):
+        yield ("," if i else "") + "\n  " + json.dumps(name, ensure_ascii=False) + ": "
+        if name != "students" or not r.students:
+            yield dumps(value, 1)
+            continue
+        yield "["
+        for j, s in enumerate(r.students):
+            yield ("," if j else "") + "\n    " + dumps(_student_dict(s), 2)
+        yield "\n  ]"
+    yield "\n}\n"
+
+
+#: rows of a CSV report formatted per piece of text (report_csv_pieces, gradebook pieces)
+CSV_ROWS_PER_PIECE = 2000
+
+
 def report_csv(r: Report) -> str:
     """One line per student and answer: student, variant, file, row, answer, given, key,
     error, error_kind, tolerance, pass (1/0), score."""
+    return "".join(report_csv_pieces(r))
+
+
+def report_csv_pieces(r: Report) -> Iterator[str]:
+    """The text of :func:`report_csv` in pieces of CSV_ROWS_PER_PIECE students."""
     buf = io.StringIO()
     w = csv.writer(buf, lineterminator="\n")
     w.writerow(["student", "variant", "file", "row", "answer", "given", "key", "error",
                 "error_kind", "tolerance", "pass", "score"])
-    for s in r.students:
+    for i, s in enumerate(r.students, start=1):
         for a in s.answers:
             w.writerow([s.student, s.variant, s.file, s.row, a.answer,
                         "" if a.given is None else repr(a.given), repr(a.key),
                         "" if a.error is None else f"{a.error:.6g}", a.error_kind,
                         repr(a.tolerance), int(a.passed), f"{s.score:.4f}"])
-    return buf.getvalue()
+        if i % CSV_ROWS_PER_PIECE == 0:
+            yield buf.getvalue()
+            buf.seek(0)
+            buf.truncate()
+    yield buf.getvalue()
