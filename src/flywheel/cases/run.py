@@ -15,13 +15,13 @@ from typing import Annotated, Literal, Union
 from pydantic import BaseModel, Field, PrivateAttr, Strict, model_validator
 
 from flywheel.errors import CaseFileError, Notice, led
-from flywheel.io.schema import FieldError, StrictModel, within, clean_loc, describe, load, loc_str, pick, validate
+from flywheel.io.schema import MAX_TEXT, FieldError, StrictModel, at_most, text_field, within, clean_loc, describe, load, loc_str, pick, validate
 from flywheel.cases.rim import MATERIALS, RimSpec  # shared with the task2 format
 from flywheel.cases.tabulated import TabulatedSpec
 
 Pos = Annotated[float, Field(gt=0)]
 NonNeg = Annotated[float, Field(ge=0)]
-Name = Annotated[str, Field(min_length=1)]
+Name = Annotated[str, Field(min_length=1, max_length=MAX_TEXT)]
 
 
 _within = within
@@ -76,7 +76,12 @@ class Machine(StrictModel):
         if (self.speed_rps is None) == (self.speed_rpm is None):
             raise ValueError(Notice("give exactly one of speed_rps, speed_rpm", "speed_rps_or_rpm"))
         revs = self.cycle_deg / 360.0
-        if not (1 <= revs <= CYCLE_REVS_MAX and revs == round(revs)):
+        if not 1 <= revs <= CYCLE_REVS_MAX:      # 3.6e9° is whole, but out of range
+            raise FieldError(("cycle_deg",), Notice(
+                f"{self.cycle_deg:g}° is out of range (allowed: 360, 720, 1080 … "
+                f"{360 * CYCLE_REVS_MAX}°)", "cycle_out_of_range", cycle=self.cycle_deg,
+                top=360 * CYCLE_REVS_MAX))
+        if revs != round(revs):
             raise FieldError(("cycle_deg",), Notice(
                 f"{self.cycle_deg:g}° is not a whole number of revolutions (allowed: 360, 720, "
                 f"1080 … {360 * CYCLE_REVS_MAX}°)", "cycle_not_whole", cycle=self.cycle_deg,
@@ -142,7 +147,7 @@ class RRPSpec(StrictModel):
     """Connecting rod + slider on a fixed guide."""
 
     kind: Literal["RRP"]
-    name: str | None = Field(None, description="dyad name (default: the joint's)")
+    name: str | None = Field(None, max_length=MAX_TEXT, description="dyad name (default: the joint's)")
     from_: Name = Field(alias="from", description="known point the rod starts from")
     joint: Name = Field(description="name of the rod–slider joint (new point)")
     rod: Name = Field(description="link name of the rod")
@@ -157,7 +162,7 @@ class RRRSpec(StrictModel):
     """Two links, three revolute joints."""
 
     kind: Literal["RRR"]
-    name: str | None = None
+    name: str | None = Field(None, max_length=MAX_TEXT)
     from_: Name = Field(alias="from", description="known point of the first link")
     link_from: Name = Field(description="link name from `from` to the joint")
     length_from: Length = Field(description="its length [m]")
@@ -172,7 +177,7 @@ class RPRSpec(StrictModel):
     """Slotted link (кулиса): a block at a known point slides on a rocker about a pivot."""
 
     kind: Literal["RPR"]
-    name: str | None = None
+    name: str | None = Field(None, max_length=MAX_TEXT)
     from_: Name = Field(alias="from", description="known point carrying the block")
     pivot: Name = Field(description="known point the rocker turns about")
     rocker: Name = Field(description="link name of the rocker")
@@ -584,7 +589,7 @@ class MotorSpec(StrictModel):
 class OutputSpec(StrictModel):
     """What to report."""
 
-    at_deg: list[float] = Field(default_factory=lambda: [120.0],
+    at_deg: Annotated[list[float], at_most(72, "angles"), within(-1e6, 1e6, "deg")] = Field(default_factory=lambda: [120.0],
                                 description="report angles [deg]")
 
 
@@ -600,8 +605,8 @@ class ForceAnalysisSpec(StrictModel):
 class Case(StrictModel):
     """A whole case file."""
 
-    title: str = ""
-    source: str = ""
+    title: str = text_field()
+    source: str = text_field()
     machine: Machine
     design: Design = Field(default_factory=Design)
     crank: CrankSpec | None = Field(None, description="the driving link of a linkage")
