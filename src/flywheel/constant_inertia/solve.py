@@ -771,6 +771,9 @@ def solve(M_D: Moment, M_C: Moment, J: float | None = None, *, omega0: float | N
     # relative to the size of the moments (``size``), not to W_D, W_C: zero-mean moments
     # have works of pure round-off and are steady all the same
     scale = max(abs(W_D), abs(W_C), size(M_D) + size(M_C), 1e-300)
+    if not math.isfinite(scale):    # 1e308·sin 2φ: no crossing can be certified, nothing said
+        which = "work_driving" if not math.isfinite(size(M_D)) else "work_resistance"
+        raise NotFiniteError(which, Notice("the moment's size ∮|M| dφ overflows", "nf_moment_size"))
     steady = abs(acc) <= BALANCE_RTOL * scale
     if steady:
         acc = 0.0
