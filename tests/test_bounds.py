@@ -197,14 +197,28 @@ def test_a_long_title_is_refused_and_its_echo_cut(tmp_path):
     assert len(line) < 300 and "…" in line
 
 
-def test_a_title_at_the_limit_is_cut_on_the_terminal(tmp_path):
+def test_a_title_at_the_limit_is_shown_whole_and_a_longer_one_cut(tmp_path):
+    """A case's title of 1000 characters reaches the terminal whole; a longer one given through
+    the library (no case file to refuse it) is cut with «…» at 1000."""
+    import io
+
+    from rich.console import Console
+
+    from flywheel.cases.task2 import load_task2_case, solve_case
+    from flywheel.render.task2 import print_summary
+
     text = (CASES / "task2_seed_triangle.toml").read_text(encoding="utf-8")
-    text = text.replace('title = "', 'title = "' + "y" * 900, 1)
+    title = next(ln for ln in text.splitlines() if ln.startswith("title"))
     path = tmp_path / "c.toml"
-    path.write_text(text, encoding="utf-8")
+    path.write_text(text.replace(title, 'title = "' + "y" * 1000 + '"'), encoding="utf-8")
     res = runner.invoke(app, ["task2", "--case", str(path)])
-    assert res.exit_code == 0
-    assert "…" in res.stdout and 150 < res.stdout.count("y") < 250    # rich may wrap it
+    assert res.exit_code == 0 and res.stdout.count("y" * 40) >= 1
+    assert "…" not in res.stdout.split("\n\n")[0]
+    r = solve_case(load_task2_case(path), str(path))
+    out = io.StringIO()
+    print_summary(r, "z" * 5000, "", console=Console(file=out, width=120))
+    shown = out.getvalue()
+    assert shown.count("z") == 999 and "…" in shown
 
 
 def test_every_error_line_keeps_its_path_and_cuts_the_value(tmp_path):
@@ -223,7 +237,7 @@ def test_every_error_line_keeps_its_path_and_cuts_the_value(tmp_path):
 
 def test_cut_helpers():
     assert cut("a" * 200) == "a" * 39 + "…" + "a" * 40 and len(cut("a" * 200)) == 80
-    assert cut_end("b" * 300) == "b" * 199 + "…"
+    assert cut_end("b" * 3000) == "b" * 999 + "…" and cut_end("b" * 1000) == "b" * 1000
     assert cut_echoes("f.toml: x: " + "z" * 1000) == "f.toml: x: " + cut("z" * 1000)
     path = "/tmp/" + "d" * 150 + "/c.toml"
     assert cut_echoes(f"{path}: bad") == f"{path}: bad"      # a path up to 400 characters

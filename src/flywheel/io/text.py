@@ -25,9 +25,10 @@ def cut(text: str, width: int = ECHO) -> str:
     return text[:head] + "…" + text[len(text) - (width - 1 - head):]
 
 
-def cut_end(text: str, width: int = 200) -> str:
-    """``text`` cut to at most ``width`` characters with «…» at the end (a title on the
-    terminal)."""
+def cut_end(text: str, width: int = 1000) -> str:
+    """``text`` cut to at most ``width`` characters with «…» at the end: a title or source on
+    the terminal (a case's are refused beyond 1000 characters; this catches what reaches a
+    summary another way, e.g. through the library)."""
     text = str(text)
     return text if len(text) <= width else text[:width - 1] + "…"
 
