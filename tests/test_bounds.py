@@ -342,3 +342,20 @@ def test_run_at_within_the_bound_is_taken_modulo_the_cycle(tmp_path):
     assert docs[0]["phi_deg"] == 1e6 and docs[1]["phi_deg"] == 280.0
     assert docs[0]["omega"] == pytest.approx(docs[1]["omega"], rel=1e-12)
     assert docs[0]["M_sum"] == pytest.approx(docs[1]["M_sum"], rel=1e-9)
+
+
+@pytest.mark.parametrize("lang, words", [
+    ("en", "c.toml: resistance: with the driving graph: 3000 pieces × 1000 harmonic terms is too "
+           "much work (allowed: pieces × (1 + terms) ≤ 2e+06"),
+    ("ru", "c.toml: resistance: вместе с графиком движущего момента: 3000 участков × 1000 "
+           "гармоник — слишком большая работа"),
+])
+def test_a_long_series_against_a_long_points_graph_is_refused(tmp_path, lang, words):
+    """The pieces of M_D − M_C each carry every term: 3000 points against 1000 terms would be
+    6e6 piece-terms, beyond 2e6."""
+    n = 3000
+    pts = ", ".join(f"[{360.0 * i / (n - 1)!r}, 5000.0]" for i in range(n))
+    a = ", ".join(["1.0"] * 1000)
+    text = (f'[speed]\nomega0 = 15.0\n[flywheel]\nJ = 10.0\n[driving]\nkind = "harmonic"\n'
+            f'a0 = 5000.0\na = [{a}]\n[resistance]\nkind = "points"\npoints = [{pts}]\n')
+    assert words in _one_line(_task2(tmp_path, text, "--lang", lang))

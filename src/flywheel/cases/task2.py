@@ -33,6 +33,8 @@ MAX_MOMENT = 1e9
 MAX_ENERGY = 1e15
 #: the most angles of at_deg, areas of a diagram
 MAX_ANGLES = 1000
+#: the most work of the two graphs together: pieces of M_D − M_C × (1 + its terms) (about 10 s)
+MAX_WORK = 2_000_000
 
 
 
@@ -421,6 +423,30 @@ def _check(case: Task2Case) -> None:
                                          'no graph value is "power"', "t2_power_unused"))
     for name in ("driving", "resistance"):
         _check_graph(name, getattr(case, name), case.cycle_deg)
+    _check_work(case.driving, case.resistance)
+
+
+def _pieces_and_terms(g) -> tuple[int, int]:
+    """(pieces, terms of its series) of a graph: the points graph's pieces, a preset's at most
+    four, a series' one piece."""
+    if isinstance(g, PointsGraph):
+        return max(len(g.points) - 1, 1), 0
+    if isinstance(g, HarmonicGraph):
+        return 1, max(len(g.a), len(g.b))
+    return (1 if isinstance(g, ConstantGraph) else 4), 0
+
+
+def _check_work(driving, resistance) -> None:
+    """M_D − M_C has the pieces of both graphs, each carrying the terms of both series: its work
+    (pieces × (1 + terms)) bounded by MAX_WORK, so a long series against a long points graph
+    is refused in one line instead of running for minutes."""
+    (pd, td), (pc, tc) = _pieces_and_terms(driving), _pieces_and_terms(resistance)
+    work = (pd + pc) * (1 + td + tc)
+    if work > MAX_WORK:
+        raise FieldError("resistance", Notice(
+            f"with the driving graph: {pd + pc} pieces × {td + tc} harmonic terms is too much "
+            f"work (allowed: pieces × (1 + terms) ≤ {MAX_WORK:g}; give fewer points or fewer "
+            "terms)", "t2_graphs_too_big", pieces=pd + pc, terms=td + tc, most=MAX_WORK))
 
 
 def _check_graph(name: str, g, cycle: float) -> None:

@@ -770,10 +770,12 @@ def solve(M_D: Moment, M_C: Moment, J: float | None = None, *, omega0: float | N
     W_D, W_C = _cycle_work(M_D, "work_driving"), _cycle_work(M_C, "work_resistance")
     # relative to the size of the moments (``size``), not to W_D, W_C: zero-mean moments
     # have works of pure round-off and are steady all the same
-    scale = max(abs(W_D), abs(W_C), size(M_D) + size(M_C), 1e-300)
-    if not math.isfinite(scale):    # 1e308·sin 2φ: no crossing can be certified, nothing said
-        which = "work_driving" if not math.isfinite(size(M_D)) else "work_resistance"
-        raise NotFiniteError(which, Notice("the moment's size ∮|M| dφ overflows", "nf_moment_size"))
+    size_D, size_C = size(M_D), size(M_C)
+    if not math.isfinite(size_D + size_C):   # 1e308·sin 2φ: no crossing can be certified, and
+        # A stays 0: "the energy does not fluctuate" would be said (issue 23)
+        raise NotFiniteError("work_driving" if not math.isfinite(size_D) else "work_resistance",
+                             Notice("the moment's size ∮|M| dφ overflows", "nf_moment_size"))
+    scale = max(abs(W_D), abs(W_C), size_D + size_C, 1e-300)
     steady = abs(acc) <= BALANCE_RTOL * scale
     if steady:
         acc = 0.0

@@ -2533,6 +2533,9 @@ MESSAGES_RU.update({
     "t2_order_not_periodic": ("порядок {k_ru} не повторяется за цикл {cycle_ru}° (допустимо: "
                               "целые кратные 360/cycle_deg = {step_ru})"),
     "nf_moment_size": "размер момента ∮|M| dφ переполняется",
+    "t2_graphs_too_big": ("вместе с графиком движущего момента: {pieces} участков × {terms} "
+                          "гармоник — слишком большая работа (допустимо: участки × (1 + "
+                          "гармоники) ≤ {most_ru}; задайте меньше точек или меньше гармоник)"),
     "at_too_many": "--at: {count_angles_ru} — слишком много (допустимо не больше {most})",
     "at_out_of_range": ("--at: {a_ru}° вне допустимого диапазона (допустимо: {lo_ru} … {hi_ru}°, "
                         "угол берётся по модулю цикла)"),
@@ -2547,6 +2550,8 @@ def _msgs_bounds_ru_params(code: str, p: dict) -> dict:
         p["count_angles_ru"] = ru_count(p["count"], *_BOUNDS_ITEMS_RU["angles"])
     if code in ("doc_too_deep", "doc_number_too_long"):
         p["where_at_ru"] = f"{p['where']}: " if p.get("where") else ""
+    if code == "t2_graphs_too_big":
+        p["most_ru"] = _bounds_num_ru(float(p["most"]))
     for k in ("cycle", "k", "step", "a", "lo", "hi"):
         if k in p and code in ("cycle_out_of_range", "t2_cycle_not_whole",
                                "t2_order_not_periodic", "at_out_of_range",
@@ -2556,5 +2561,5 @@ def _msgs_bounds_ru_params(code: str, p: dict) -> dict:
 
 
 _PARAM_HOOKS.append(_msgs_bounds_ru_params)
-_MSGS_DERIVED |= {"count_items_ru", "count_angles_ru", "where_at_ru", "cycle_ru", "k_ru",
+_MSGS_DERIVED |= {"count_items_ru", "count_angles_ru", "where_at_ru", "cycle_ru", "k_ru", "most_ru",
                   "step_ru", "a_ru", "lo_ru", "hi_ru"}
