@@ -10,7 +10,6 @@ from __future__ import annotations
 
 import json
 import math
-import time
 from pathlib import Path
 
 import numpy as np
@@ -361,18 +360,31 @@ def test_existing_keys_unchanged_and_new_keys_present():
                                                          rel=1e-14)
 
 
-def test_a_fixed_end_is_as_fast_as_a_free_end():
-    # the boundary condition removes a row and a column; nothing iterates (best of 5 runs each)
-    free, fixed = _chain_doc(False, 1e8), _chain_doc(True)
+def test_a_fixed_end_costs_no_more_than_a_free_end(monkeypatch):
+    """The boundary condition removes a row and a column; nothing iterates. The work counted:
+    one generalized eigenproblem each (scipy.linalg.eigh), the fixed chain's one order smaller
+    than the free chain with a huge inertia instead, and no time integration in either (the
+    timing of the two is in benchmarks/README.md, never asserted)."""
+    import scipy.integrate
+    import scipy.linalg
 
-    def best(doc):
+    sizes: dict[str, list[int]] = {}
+    eigh, solve_ivp = scipy.linalg.eigh, scipy.integrate.solve_ivp
+    which = ["?"]
+
+    def counting_eigh(K, M=None, *args, **kwargs):
+        sizes.setdefault(which[0], []).append(K.shape[0])
+        return eigh(K, M, *args, **kwargs)
+
+    def no_integration(*args, **kwargs):
+        sizes.setdefault(which[0] + " solve_ivp", []).append(1)
+        return solve_ivp(*args, **kwargs)
+
+    monkeypatch.setattr(scipy.linalg, "eigh", counting_eigh)
+    monkeypatch.setattr(scipy.integrate, "solve_ivp", no_integration)
+    for name, doc in (("free", _chain_doc(False, 1e8)), ("fixed", _chain_doc(True))):
+        which[0] = name
         ch, drive = model(doc)
-        times = []
-        for _ in range(5):
-            t = time.perf_counter()
-            analyze(ch, drive)
-            times.append(time.perf_counter() - t)
-        return min(times)
-
-    assert best(fixed) < 2.0 * best(free) + 2e-3
+        analyze(ch, drive)
+    assert sizes == {"free": [4], "fixed": [3]}
     assert natural_frequencies(model(_chain_doc(True))[0]).rigid == 0

@@ -118,8 +118,10 @@ def test_a_720_degree_run_writes_every_output(tmp_path):
 
 @pytest.mark.parametrize("value, words", [
     (500, "500° is not a whole number of revolutions (allowed: 360, 720"),
-    (0, "0° is not a whole number"),
-    (7200, "7200° is not a whole number of revolutions (allowed: 360, 720, 1080 … 3600°)"),
+    (0, "0° is out of range (allowed: 360, 720"),
+    (540.5, "540.5° is not a whole number of revolutions"),
+    (7200, "7200° is out of range (allowed: 360, 720, 1080 … 3600°)"),
+    (3.6e9, "3.6e+09° is out of range (allowed: 360, 720, 1080 … 3600°)"),
 ])
 def test_cycle_that_is_not_whole_revolutions(tmp_path, value, words):
     case = tmp_path / "bad.toml"

@@ -22,7 +22,13 @@ speed, width or width_to_thickness; ``flywheel.J``, mass, radius_of_gyration, de
 allowable_stress; ``machine.power`` / task-2 ``power``; duty-cycle ``flywheel.J``/``delta``),
 give a run case a flywheel (:data:`GIVEN`: J, mass with radius_of_gyration, given_disk,
 given_rim) in place of machine.delta, and scale a number of those (``scale-new``: under
-[flywheel], power, delta). The next edits mutate what an insert added like any field.
+[flywheel], power, delta). The next edits mutate what an insert added like any field. And the
+limits of issue 23: nest a value in arrays (``deepen``: 5, 40 or 200 levels; the limit is 32),
+make a string or a number long (``lengthen``: a string of 1001 or 100 000 characters, the limit
+is 1000; an integer of 30 or 4000 digits, beyond 64 bits), and give a task-2 graph many terms
+or points (``grow``: a harmonic series of 200, 1000 or 1001 terms, a points graph of 2000,
+20 000 or 100 001 points; the limits are 1000 and 100 000). An error line longer than
+:data:`LINE_LIMIT` characters fails (an echoed value is cut to ~80).
 
 Whatever the mutant, the command must end with exit code 0 or 2, never 1 and never an uncaught
 exception; on exit 2 stderr holds one ``error:`` line (other lines only ``warning:``/``note:``
@@ -199,6 +205,10 @@ class Edit:
             return f"insert {where} = {self.arg!r}"
         if self.op == "give":
             return f"give flywheel {self.arg!r}"
+        if self.op in ("deepen", "grow"):
+            return f"{self.op} {where} {self.arg!r}"
+        if self.op == "lengthen":
+            return f"lengthen {where} to {self.arg}"
         return f"{self.op} {where}"
 
     def apply(self, doc) -> None:
@@ -229,6 +239,17 @@ class Edit:
         elif self.op == "duplicate-name":     # parent: the element; its array one level up
             array = _parent(doc, self.path[:-1])
             parent[key] = array[self.arg][key]
+        elif self.op == "deepen":             # the value inside arg levels of arrays
+            v = parent[key]
+            for _ in range(self.arg):
+                v = [v]
+            parent[key] = v
+        elif self.op == "lengthen":           # a string of arg characters, an int of arg digits
+            v = parent[key]
+            parent[key] = ((v or "x") * self.arg)[:self.arg] if isinstance(v, str) \
+                else int("9" * self.arg)
+        elif self.op == "grow":               # a task-2 graph of many terms or points
+            parent[key] = _big_graph(*self.arg, parent[key], doc.get("cycle_deg", 360.0))
         else:  # pragma: no cover
             raise ValueError(self.op)
 
@@ -255,6 +276,13 @@ def _candidates(doc, op: str, kind: str = "run") -> list[tuple]:
             out.append(p)
         elif op == "duplicate" and isinstance(key, int):
             out.append(p)
+        elif op == "deepen":
+            out.append(p)
+        elif op == "lengthen" and (isinstance(v, str) or _number(v)):
+            out.append(p)
+        elif (op == "grow" and kind == "task2" and p in (("driving",), ("resistance",))
+              and isinstance(v, dict) and _number(doc.get("cycle_deg", 360.0))):
+            out.append(p)
         elif (op == "duplicate-name" and len(p) >= 2 and isinstance(p[-2], int)
               and isinstance(v, str) and isinstance(key, str)):
             array = _parent(doc, p[:-1])
@@ -265,7 +293,13 @@ def _candidates(doc, op: str, kind: str = "run") -> list[tuple]:
 
 
 OPS = ("delete", "scale", "swap", "rename", "drop", "duplicate", "duplicate-name", "insert",
-       "give", "scale-new")
+       "give", "scale-new", "deepen", "lengthen", "grow")
+DEPTHS = (5, 40, 200)                  # levels of arrays around a value (the limit: 32)
+LENGTHS = (1001, 100_000)              # characters of a string (the limit: 1000)
+DIGITS = (30, 4000)                    # digits of an integer (the limit: 64 bits)
+GROWTH = (("harmonic", 200), ("harmonic", 1000), ("harmonic", 1001), ("points", 2000),
+          ("points", 20_000), ("points", 100_001))
+LINE_LIMIT = 1200                      # characters of an error line
 
 # The newer optional inputs, added to a case that lacks them (and then, by the next edits,
 # scaled, swapped, deleted like any field): a designed rim ([flywheel.rim]: share, speed,
@@ -287,6 +321,18 @@ INSERTS = {
 GIVEN = ({"J": 4.0}, {"mass": 100.0, "radius_of_gyration": 0.2},
          {"given_disk": {"D": 0.8, "b": 0.15}}, {"given_rim": {"D": 1.0, "D_inner": 0.8, "b": 0.15}})
 NEW = ("flywheel", "power", "delta", "given_disk", "given_rim", "rim")
+
+
+def _big_graph(kind: str, n: int, old, cycle_deg) -> dict:
+    """A task-2 graph of n terms (a_k = 100/k² N·m, order k, a0 kept) or n points (a sine of
+    amplitude 10 N·m about 50 N·m over the cycle), to try the limits of the work."""
+    if kind == "harmonic":
+        a0 = old.get("a0", old.get("value", 100.0)) if isinstance(old, dict) else 100.0
+        return {"kind": "harmonic", "a0": a0, "a": [100.0 / k ** 2 for k in range(1, n + 1)]}
+    step = float(cycle_deg) / (n - 1)
+    pts = [[min(i * step, float(cycle_deg)), 50.0 + 10.0 * math.sin(i / 50.0)] for i in range(n)]
+    pts[-1][0] = float(cycle_deg)
+    return {"kind": "points", "points": pts}
 
 
 def _is_new(path: tuple) -> bool:
@@ -327,6 +373,12 @@ def edits(draw, doc, kind: str = "run") -> list[Edit]:
             op, arg = "scale", draw(st.sampled_from(FACTORS))
         elif op == "scale":
             arg = draw(st.sampled_from(FACTORS))
+        elif op == "deepen":
+            arg = draw(st.sampled_from(DEPTHS))
+        elif op == "lengthen":
+            arg = draw(st.sampled_from(LENGTHS if isinstance(value, str) else DIGITS))
+        elif op == "grow":
+            arg = draw(st.sampled_from(GROWTH))
         elif op == "swap":
             arg = draw(st.sampled_from([s for s in SWAPS if _type(s) != _type(value)]))
         elif op == "rename":
@@ -483,6 +535,8 @@ def problem_of(o: Outcome) -> str | None:
                                                           "примечание: "))]
         if len(errors) != 1 or other:
             return f"exit 2 without one error line: {o.stderr[:300]!r}"
+        if len(errors[0]) > LINE_LIMIT:
+            return f"an error line of {len(errors[0])} characters: {errors[0][:200]!r}"
         return None
     if o.code != 0:
         return f"exit {o.code}: {o.stderr[:300]!r}"
@@ -666,3 +720,38 @@ def test_a_mutant_is_checked():
     assert problem_of(Outcome(1, "", "", ZeroDivisionError("x"), None, 0.0)).startswith("Zero")
     assert problem_of(Outcome(2, "", "error: a\nerror: b\n", None, None, 0.0)) is not None
     assert problem_of(Outcome(0, "", "", None, None, 0.0)) == "exit 0 without its JSON"
+
+
+# The mutation classes of issue 23's limits, each at and beyond its limit, run on every test run
+# (the random draw may or may not pick them): exit 0 with finite JSON, or one short error line.
+LIMIT_MUTANTS = (
+    ("task2", "task2_khurmi_16_12", (Edit("deepen", ("speed", "mean_rpm"), 200),)),
+    ("task2", "task2_khurmi_16_12", (Edit("deepen", ("flywheel",), 40),)),
+    ("run", "compressor", (Edit("deepen", ("machine", "delta"), 40),)),
+    ("aggregate", "aggregate", (Edit("deepen", ("title",), 200),)),
+    ("task2", "task2_khurmi_16_12", (Edit("lengthen", ("title",), 100_000),)),
+    ("run", "compressor", (Edit("lengthen", ("crank", "name"), 100_000),)),
+    ("duty_cycle", "duty_readme_press", (Edit("lengthen", ("title",), 1001),)),
+    ("run", "compressor", (Edit("lengthen", ("machine", "speed_rps"), 4000),)),
+    ("task2", "task2_seed_triangle", (Edit("lengthen", ("speed", "omega0"), 30),)),
+    ("task2", "task2_khurmi_16_12", (Edit("grow", ("driving",), ("harmonic", 1000)),)),
+    ("task2", "task2_khurmi_16_12", (Edit("grow", ("resistance",), ("harmonic", 1001)),)),
+    ("task2", "task2_seed_triangle", (Edit("grow", ("resistance",), ("points", 20_000)),)),
+    ("task2", "task2_seed_triangle", (Edit("grow", ("driving",), ("points", 100_001)),)),
+)
+
+
+@pytest.mark.parametrize("kind, case, eds", LIMIT_MUTANTS,
+                         ids=[f"{k}-{c}-{e[0]}" for k, c, e in LIMIT_MUTANTS])
+def test_limit_mutants(kind, case, eds):
+    o = run_mutant(kind, mutant(case, list(eds)))
+    assert problem_of(o) is None, problem_of(o)
+
+
+def test_the_limit_classes_are_drawn():
+    """Each new operation finds candidates in the cases it is meant for."""
+    doc = DOCS["task2_khurmi_16_12"]
+    assert ("driving",) in _candidates(doc, "grow", "task2")
+    assert not _candidates(DOCS["compressor"], "grow", "run")
+    assert ("title",) in _candidates(doc, "lengthen", "task2")
+    assert ("speed", "mean_rpm") in _candidates(doc, "deepen", "task2")

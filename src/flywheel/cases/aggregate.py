@@ -23,7 +23,7 @@ from typing import Annotated, Literal
 from pydantic import Field
 
 from flywheel.errors import CaseFileError, FlywheelError, Notice, led, said
-from flywheel.io.schema import FieldError, StrictModel, load, validate, within, clean_loc, describe, pick
+from flywheel.io.schema import MAX_TEXT, FieldError, StrictModel, load, text_field, validate, within, clean_loc, describe, pick
 from flywheel.units import RAD_S_PER_RPM
 
 Pos = Annotated[float, Field(gt=0)]
@@ -110,7 +110,7 @@ class Machine(StrictModel):
 
 
 class Rotor(StrictModel):
-    name: str | None = None
+    name: str | None = Field(None, max_length=MAX_TEXT)
     J: Inertia | None = Field(None, description="moment of inertia [kg·m²] (not for a fixed end)")
     fixed: bool = Field(False, description="true: the frame, a shaft end built in (no J)")
 
@@ -124,8 +124,8 @@ class Load(StrictModel):
 
 
 class AggregateCase(StrictModel):
-    title: str = ""
-    source: str = ""
+    title: str = text_field()
+    source: str = text_field()
     motor: Motor | None = None
     coupling: Shaft | None = None
     machine: Machine | None = None

@@ -19,7 +19,7 @@ from flywheel.duty_cycle import work as wk
 from flywheel.duty_cycle.solve import (DutyCycle, DutyCycleError, DutyCycleResult, Work,
                                        nonfinite, solve)
 from flywheel.errors import CaseFileError, Notice, led, said
-from flywheel.io.schema import FieldError, StrictModel, describe, load, pick, validate
+from flywheel.io.schema import FieldError, StrictModel, describe, load, pick, text_field, validate
 from flywheel.units import RAD_S_PER_RPM
 
 
@@ -146,9 +146,9 @@ class Flywheel(StrictModel):
 class DutyCase(StrictModel):
     """A duty-cycle problem."""
 
-    title: str = Field("", description="what the case is")
-    source: str = Field("", description="where it comes from (book, problem)")
-    notes: str = Field("", description="anything else")
+    title: str = text_field(description="what the case is")
+    source: str = text_field(description="where it comes from (book, problem)")
+    notes: str = text_field(description="anything else")
     operation: Operation
     cycle: Cycle | None = None
     motor: Motor | None = None

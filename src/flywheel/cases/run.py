@@ -15,7 +15,7 @@ from typing import Annotated, Literal, Union
 from pydantic import BaseModel, Field, Strict, model_validator
 
 from flywheel.errors import CaseFileError, Notice, led
-from flywheel.io.schema import FieldError, StrictModel, clean_loc, describe, load, loc_str, pick, validate
+from flywheel.io.schema import FieldError, StrictModel, at_most, text_field, within, clean_loc, describe, load, loc_str, pick, validate
 from flywheel.cases.rim import MATERIALS, RimSpec  # shared with the task2 format
 from flywheel.cases.tabulated import TabulatedSpec
 # the parts of the format in their own modules, re-exported: flywheel.cases.run keeps every name
@@ -63,7 +63,12 @@ class Machine(StrictModel):
         if (self.speed_rps is None) == (self.speed_rpm is None):
             raise ValueError(Notice("give exactly one of speed_rps, speed_rpm", "speed_rps_or_rpm"))
         revs = self.cycle_deg / 360.0
-        if not (1 <= revs <= CYCLE_REVS_MAX and revs == round(revs)):
+        if not 1 <= revs <= CYCLE_REVS_MAX:      # 3.6e9° is whole, but out of range
+            raise FieldError(("cycle_deg",), Notice(
+                f"{self.cycle_deg:g}° is out of range (allowed: 360, 720, 1080 … "
+                f"{360 * CYCLE_REVS_MAX}°)", "cycle_out_of_range", cycle=self.cycle_deg,
+                top=360 * CYCLE_REVS_MAX))
+        if revs != round(revs):
             raise FieldError(("cycle_deg",), Notice(
                 f"{self.cycle_deg:g}° is not a whole number of revolutions (allowed: 360, 720, "
                 f"1080 … {360 * CYCLE_REVS_MAX}°)", "cycle_not_whole", cycle=self.cycle_deg,
@@ -235,7 +240,7 @@ class MotorSpec(StrictModel):
 class OutputSpec(StrictModel):
     """What to report."""
 
-    at_deg: list[float] = Field(default_factory=lambda: [120.0],
+    at_deg: Annotated[list[float], at_most(72, "angles"), within(-1e6, 1e6, "deg")] = Field(default_factory=lambda: [120.0],
                                 description="report angles [deg]")
 
 
@@ -251,8 +256,8 @@ class ForceAnalysisSpec(StrictModel):
 class Case(StrictModel):
     """A whole case file."""
 
-    title: str = ""
-    source: str = ""
+    title: str = text_field()
+    source: str = text_field()
     machine: Machine
     design: Design = Field(default_factory=Design)
     crank: CrankSpec | None = Field(None, description="the driving link of a linkage")

@@ -7,12 +7,12 @@ from typing import Annotated
 
 from pydantic import Field, Strict
 
-from flywheel.io.schema import within
+from flywheel.io.schema import MAX_TEXT, within
 
 
 Pos = Annotated[float, Field(gt=0)]
 NonNeg = Annotated[float, Field(ge=0)]
-Name = Annotated[str, Field(min_length=1)]
+Name = Annotated[str, Field(min_length=1, max_length=MAX_TEXT)]
 
 
 _within = within

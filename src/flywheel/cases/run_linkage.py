@@ -8,7 +8,7 @@ from typing import Annotated, Literal, Union
 from pydantic import Field, model_validator
 
 from flywheel.errors import Notice
-from flywheel.io.schema import StrictModel
+from flywheel.io.schema import MAX_TEXT, StrictModel
 from flywheel.cases.run_fields import XY, Angle, Coord, Inertia, Length, Mass, Name, _within
 
 
@@ -50,7 +50,7 @@ class RRPSpec(StrictModel):
     """Connecting rod + slider on a fixed guide."""
 
     kind: Literal["RRP"]
-    name: str | None = Field(None, description="dyad name (default: the joint's)")
+    name: str | None = Field(None, max_length=MAX_TEXT, description="dyad name (default: the joint's)")
     from_: Name = Field(alias="from", description="known point the rod starts from")
     joint: Name = Field(description="name of the rod–slider joint (new point)")
     rod: Name = Field(description="link name of the rod")
@@ -65,7 +65,7 @@ class RRRSpec(StrictModel):
     """Two links, three revolute joints."""
 
     kind: Literal["RRR"]
-    name: str | None = None
+    name: str | None = Field(None, max_length=MAX_TEXT)
     from_: Name = Field(alias="from", description="known point of the first link")
     link_from: Name = Field(description="link name from `from` to the joint")
     length_from: Length = Field(description="its length [m]")
@@ -80,7 +80,7 @@ class RPRSpec(StrictModel):
     """Slotted link (кулиса): a block at a known point slides on a rocker about a pivot."""
 
     kind: Literal["RPR"]
-    name: str | None = None
+    name: str | None = Field(None, max_length=MAX_TEXT)
     from_: Name = Field(alias="from", description="known point carrying the block")
     pivot: Name = Field(description="known point the rocker turns about")
     rocker: Name = Field(description="link name of the rocker")

@@ -11,7 +11,7 @@ import numpy as np
 from pydantic import Field, PrivateAttr, ValidationInfo, model_validator
 
 from flywheel.errors import Notice
-from flywheel.io.schema import FieldError, StrictModel, within
+from flywheel.io.schema import MAX_TEXT, FieldError, StrictModel, within
 
 MIN_POSITIONS = 6
 MAX_GAP_DEG = 360.0 / MIN_POSITIONS      # the widest allowed gap between neighbouring positions
@@ -19,7 +19,7 @@ CYCLE_DEG = 360.0                        # the cycle when the validation context
 _TOL = 1e-9
 
 Row = list[float]
-Name = Annotated[str, Field(min_length=1)]
+Name = Annotated[str, Field(min_length=1, max_length=MAX_TEXT)]
 
 
 

@@ -23,10 +23,18 @@ from flywheel.constant_inertia import graphs
 from flywheel.constant_inertia.solve import (BALANCE_RTOL, Task2Result, balance, power_value, solve,
                                             solve_areas)
 from flywheel.errors import CaseFileError, InputError, Notice, led, said
-from flywheel.io.schema import FieldError, StrictModel, load, validate, within, clean_loc, describe, loc_str, pick
+from flywheel.io.schema import FieldError, StrictModel, at_most, load, text_field, validate, within, clean_loc, describe, loc_str, pick
 
 BALANCE = "balance"
 POWER = "power"
+#: the largest harmonic amplitude or mean term [N·m] (the largest engines give 1e7)
+MAX_MOMENT = 1e9
+#: the largest area [mm²] or energy [J] of a diagram
+MAX_ENERGY = 1e15
+#: the most angles of at_deg, areas of a diagram
+MAX_ANGLES = 1000
+#: the most work of the two graphs together: pieces of M_D − M_C × (1 + its terms) (about 10 s)
+MAX_WORK = 2_000_000
 
 
 
@@ -79,7 +87,8 @@ class PointsGraph(_Graph):
 
     _AMOUNTS: ClassVar[tuple[str, ...]] = ("scale",)
     kind: Literal["points"]
-    points: list[Annotated[tuple[float, float], Strict(False)]] = Field(
+    points: Annotated[list[Annotated[tuple[float, float], Strict(False)]],
+                      at_most(graphs.MAX_POINTS, "points")] = Field(
         description="[[φ (deg), M (N·m)], …] from 0 to cycle_deg, angles never decreasing; "
                     "a repeated angle is a jump")
     scale: Amount = Field(1.0, description='multiplier of every ordinate, or "balance" or '
@@ -127,11 +136,18 @@ class HarmonicGraph(_Graph):
 
     _AMOUNTS: ClassVar[tuple[str, ...]] = ("a0",)
     kind: Literal["harmonic"]
-    a0: Amount = Field(0.0, description='the mean term [N·m], or "balance" or "power"')
-    a: list[float] = Field(default_factory=list, description="sine amplitudes a_k [N·m]")
-    b: list[float] = Field(default_factory=list, description="cosine amplitudes b_k [N·m]")
-    orders: Annotated[list[float], within(1e-3, 1000.0, "")] | None = Field(
-        None, description="the orders k of the terms; default 1, 2, … (at most 1000)")
+    a0: Annotated[Amount, within(-MAX_MOMENT, MAX_MOMENT, "N·m")] = Field(
+        0.0, description='the mean term [N·m], or "balance" or "power"')
+    a: Annotated[list[float], at_most(graphs.MAX_TERMS, "terms"),
+                 within(-MAX_MOMENT, MAX_MOMENT, "N·m")] = Field(
+        default_factory=list, description="sine amplitudes a_k [N·m] (at most 1000 terms)")
+    b: Annotated[list[float], at_most(graphs.MAX_TERMS, "terms"),
+                 within(-MAX_MOMENT, MAX_MOMENT, "N·m")] = Field(
+        default_factory=list, description="cosine amplitudes b_k [N·m] (at most 1000 terms)")
+    orders: Annotated[list[float], at_most(graphs.MAX_TERMS, "orders"),
+                      within(1e-3, 1000.0, "")] | None = Field(
+        None, description="the orders k of the terms; default 1, 2, … (at most 1000); each "
+                          "repeats over the cycle: k·cycle_deg/360 a whole number")
 
 
 KINDS = {"constant": ConstantGraph, "points": PointsGraph, "triangle": TriangleGraph,
@@ -185,33 +201,40 @@ class Flywheel(StrictModel):
 class Diagram(StrictModel):
     """A turning-moment diagram by its areas between crossings with the mean line."""
 
-    areas: list[float] | None = Field(None, description="signed areas in order [mm²]")
-    moment_scale: float | None = Field(None, description="moment per mm of drawing [N·m/mm]")
-    angle_scale_deg: float | None = Field(None, description="angle per mm of drawing [deg/mm]")
-    energies: list[float] | None = Field(None, description="signed energies instead [J]")
-    crossings_deg: list[float] | None = Field(
+    areas: Annotated[list[float], at_most(MAX_ANGLES, "areas"),
+                     within(-MAX_ENERGY, MAX_ENERGY, "mm²")] | None = Field(
+        None, description="signed areas in order [mm²]")
+    moment_scale: Annotated[float, within(-MAX_MOMENT, MAX_MOMENT, "N·m")] | None = Field(
+        None, description="moment per mm of drawing [N·m/mm]")
+    angle_scale_deg: Annotated[float, within(-36000.0, 36000.0, "deg")] | None = Field(
+        None, description="angle per mm of drawing [deg/mm]")
+    energies: Annotated[list[float], at_most(MAX_ANGLES, "energies"),
+                        within(-MAX_ENERGY, MAX_ENERGY, "J")] | None = Field(
+        None, description="signed energies instead [J]")
+    crossings_deg: Annotated[list[float], at_most(MAX_ANGLES + 1, "angles")] | None = Field(
         None, description="angles of the crossings, one more than the areas [deg]")
-    delta_E: float | None = Field(None, description="the maximum fluctuation of energy ΔE "
+    delta_E: Annotated[float, within(-MAX_ENERGY, MAX_ENERGY, "J")] | None = Field(None, description="the maximum fluctuation of energy ΔE "
                                                     "itself [J] (the diagram [ΔE, −ΔE])")
     energy_fluctuation_coefficient: float | None = Field(
         None, description="C_E = ΔE / work done per cycle, with work_per_cycle or the top-level "
                           "power")
-    work_per_cycle: float | None = Field(None, description="work done per cycle [J] (with "
+    work_per_cycle: Annotated[float, within(-MAX_ENERGY, MAX_ENERGY, "J")] | None = Field(
+        None, description="work done per cycle [J] (with "
                                                            "energy_fluctuation_coefficient)")
 
 
 class Task2Case(StrictModel):
     """A task-2 problem."""
 
-    title: str = Field("", description="what the case is")
-    source: str = Field("", description="where it comes from (book, problem)")
-    notes: str = Field("", description="anything else")
+    title: str = text_field(description="what the case is")
+    source: str = text_field(description="where it comes from (book, problem)")
+    notes: str = text_field(description="anything else")
     cycle_deg: Annotated[float, within(1e-3, 36000.0, "deg")] = Field(
         360.0, description="length of the cycle [deg]: 360, 720, 1080 … (at most 100 revolutions)")
     power: float | None = Field(None, description="mean power [W]: a graph value \"power\" is "
                                                   "found from T_mean = P/ω_ср; with [diagram] "
                                                   "energy_fluctuation_coefficient, W = P·Φ/ω_ср")
-    at_deg: list[float] = Field(default_factory=list,
+    at_deg: Annotated[list[float], at_most(MAX_ANGLES, "angles")] = Field(default_factory=list,
                                 description="angles [deg] where ω, ε and t are reported")
     speed: Speed
     flywheel: Flywheel
@@ -275,6 +298,11 @@ def _check(case: Task2Case) -> None:
     if not case.cycle_deg > 0:
         # library use only: no CLI input reaches this
         raise FieldError("cycle_deg", f"must be positive (got {case.cycle_deg:g}°)")
+    if not (_whole(case.cycle_deg / 360.0) or _whole(360.0 / case.cycle_deg)):
+        raise FieldError("cycle_deg", Notice(
+            f"{case.cycle_deg:g}° is neither whole revolutions nor a whole part of one "
+            "(allowed: 360, 720, 1080 … 36000°, or 180, 120, 90 … a diagram that repeats within "
+            "a revolution)", "t2_cycle_not_whole", cycle=case.cycle_deg))
     s = case.speed
     given = [k for k in ("omega0", "omega0_rpm", "mean", "mean_rpm", "max", "min", "max_rpm",
                          "min_rpm") if getattr(s, k) is not None]
@@ -395,6 +423,30 @@ def _check(case: Task2Case) -> None:
                                          'no graph value is "power"', "t2_power_unused"))
     for name in ("driving", "resistance"):
         _check_graph(name, getattr(case, name), case.cycle_deg)
+    _check_work(case.driving, case.resistance)
+
+
+def _pieces_and_terms(g) -> tuple[int, int]:
+    """(pieces, terms of its series) of a graph: the points graph's pieces, a preset's at most
+    four, a series' one piece."""
+    if isinstance(g, PointsGraph):
+        return max(len(g.points) - 1, 1), 0
+    if isinstance(g, HarmonicGraph):
+        return 1, max(len(g.a), len(g.b))
+    return (1 if isinstance(g, ConstantGraph) else 4), 0
+
+
+def _check_work(driving, resistance) -> None:
+    """M_D − M_C has the pieces of both graphs, each carrying the terms of both series: its work
+    (pieces × (1 + terms)) bounded by MAX_WORK, so a long series against a long points graph
+    is refused in one line instead of running for minutes."""
+    (pd, td), (pc, tc) = _pieces_and_terms(driving), _pieces_and_terms(resistance)
+    work = (pd + pc) * (1 + td + tc)
+    if work > MAX_WORK:
+        raise FieldError("resistance", Notice(
+            f"with the driving graph: {pd + pc} pieces × {td + tc} harmonic terms is too much "
+            f"work (allowed: pieces × (1 + terms) ≤ {MAX_WORK:g}; give fewer points or fewer "
+            "terms)", "t2_graphs_too_big", pieces=pd + pc, terms=td + tc, most=MAX_WORK))
 
 
 def _check_graph(name: str, g, cycle: float) -> None:
@@ -441,6 +493,21 @@ def _check_graph(name: str, g, cycle: float) -> None:
             if any(not k > 0 for k in g.orders):
                 # library use only: no CLI input reaches this
                 raise FieldError(f"{name}.orders", "orders must be positive")
+        # sin kφ repeats over the cycle Φ only when k·Φ is a whole number of turns
+        revs = cycle / 360.0
+        for i, k in enumerate(g.orders if g.orders is not None else range(1, n + 1)):
+            if not _whole(k * revs):
+                where = f"{name}.orders[{i}]" if g.orders is not None else f"{name}.orders"
+                step = 1.0 / revs
+                raise FieldError(where, Notice(
+                    f"order {k:g} does not repeat over the cycle of {cycle:g}° (allowed: whole "
+                    f"multiples of 360/cycle_deg = {step:g})", "t2_order_not_periodic", k=k,
+                    cycle=cycle, step=step))
+
+
+def _whole(x: float) -> bool:
+    """x is a whole number to round-off (1e-9 relative): 720/360, 3·(1080/360)."""
+    return abs(x - round(x)) <= 1e-9 * max(1.0, abs(x)) and round(x) >= 1
 
 
 def _check_diagram(d: Diagram, cycle: float) -> None:

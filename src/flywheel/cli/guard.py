@@ -31,10 +31,19 @@ def say_error(text: str, lead: str = "", tail: str = "") -> None:
     """Write the one error line to stderr in the user's --lang: «error:» / «ошибка:», ``lead``,
     the message (an errors.Notice with a Russian template is said in Russian, the rest as it
     is), ``tail``. Every error line of the command line is written here."""
+    from flywheel.io.text import cut_echoes
     from flywheel.render.nomenclature import message as say, prefix
 
     ln = lang()
-    sys.stderr.write(f"{prefix('error', ln)}: {lead}{say(text, ln)}{tail}\n")
+    line = say(text, ln)
+    # the file and field path (the Notice's lead) whole; a value echoed after it cut to about
+    # 80 characters (io.schema.cut_echoes), whatever message echoed it
+    known = getattr(text, "lead", "")
+    if ln == "ru":
+        known = known.replace(": (top level): ", ": (верхний уровень): ")
+    keep = len(known) if known and line.startswith(known) else 0
+    line = line[:keep] + cut_echoes(line[keep:])
+    sys.stderr.write(f"{prefix('error', ln)}: {lead}{line}{tail}\n")
 
 
 def fail(message: str) -> None:

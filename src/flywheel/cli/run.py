@@ -5,6 +5,7 @@ inside the functions.
 """
 from __future__ import annotations
 
+import math
 import os
 import sys
 from pathlib import Path
@@ -86,6 +87,7 @@ def run_command(
     if not DPI_RANGE[0] <= dpi <= DPI_RANGE[1]:
         fail(Notice(f"--dpi: {dpi} is out of range (allowed: {DPI_RANGE[0]} to {DPI_RANGE[1]})",
                     "option_range", option="--dpi", got=dpi, lo=DPI_RANGE[0], hi=DPI_RANGE[1]))
+    _check_at(at)
     formats = report or ["md", "html"]
     for f in formats:
         if f not in FORMATS:
@@ -156,3 +158,25 @@ def run_command(
                    + ("" if no_plots else ", plots/*.png"
                       + ("" if figure_format == "png" else f", plots/*.{figure_format}"))
                    + (", mechanism.gif" if animate else "") + ")")
+
+
+#: the report angles --at takes: at most AT_MOST of them, each within ±AT_LIMIT_DEG [deg] (an
+#: angle is taken modulo the cycle, so a larger one says nothing more, and its own digits
+#: would be printed as the report angle φ)
+AT_LIMIT_DEG = 1e6
+AT_MOST = 72
+
+
+def _check_at(at: list[float] | None) -> None:
+    """Refuse a --at angle outside ±AT_LIMIT_DEG or not finite, or more than AT_MOST of them:
+    one error line, exit 2."""
+    if not at:
+        return
+    if len(at) > AT_MOST:
+        fail(Notice(f"--at: {len(at)} angles given (allowed: at most {AT_MOST})",
+                    "at_too_many", count=len(at), most=AT_MOST))
+    for a in at:
+        if math.isfinite(a) and not -AT_LIMIT_DEG <= a <= AT_LIMIT_DEG:   # NaN: grid_options
+            fail(Notice(f"--at: {a:g}° is out of range (allowed: {-AT_LIMIT_DEG:g} … "
+                        f"{AT_LIMIT_DEG:g}°, taken modulo the cycle)", "at_out_of_range",
+                        a=a, lo=-AT_LIMIT_DEG, hi=AT_LIMIT_DEG))

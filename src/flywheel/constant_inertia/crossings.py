@@ -35,6 +35,8 @@ def bisect_root(f: Callable[[float], float], lo: float, hi: float, flo: float) -
 
 def _derivative(p: Piece, phi: float) -> float:
     """dM/dφ of the piece's formula [N·m/rad]: slope + Σ k·(a·cos kφ − b·sin kφ)."""
+    if p.arrays is not None:
+        return p.value_and_slope(phi)[1]
     d = p.slope
     for k, a, b in p.harmonics:
         d += k * (a * math.cos(k * phi) - b * math.sin(k * phi))
@@ -82,7 +84,7 @@ def _harmonic_crossings(p: Piece) -> list[float]:
 
     def visit(lo: float, hi: float, flo: float, fhi: float, depth: int) -> None:
         m, r = 0.5 * (lo + hi), 0.5 * (hi - lo)
-        fm, dm = f(m), _derivative(p, m)
+        fm, dm = p.value_and_slope(m)
         if abs(fm) - abs(dm) * r - 0.5 * L2 * r * r > err:          # no zero here
             s = 1 if fm > 0.0 else -1
             segs.append((lo, hi, s, s, None))
@@ -99,7 +101,10 @@ def _harmonic_crossings(p: Piece) -> list[float]:
         visit(lo, m, flo, fm, depth + 1)
         visit(m, hi, fm, fhi, depth + 1)
 
-    visit(p.phi0, p.phi1, f(p.phi0), f(p.phi1), 0)
+    if p.arrays is None:
+        visit(p.phi0, p.phi1, f(p.phi0), f(p.phi1), 0)
+    else:
+        segs = _segments_batched(p, L2, err, err1, sign)
 
     roots: list[float] = []
     last = 0                                   # the last known sign
@@ -123,6 +128,75 @@ def _harmonic_crossings(p: Piece) -> list[float]:
             last, unknown = s1, []
         see(hi, s1)
     return [r for r in roots if p.phi0 < r < p.phi1]
+
+
+def _segments_batched(p: Piece, L2: float, err: float, err1: float,
+                      sign: Callable[[float], int]) -> list:
+    """The segments of ``_harmonic_crossings``'s subdivision for a long series, found level by
+    level: every interval of a level is tested with one evaluation of the series at all their
+    midpoints (:meth:`Piece.values_and_slopes`), and the roots of all monotone segments are
+    bisected together (:func:`bisect_roots`). The same tests as the recursive ``visit``, so the
+    same segments; the work is (number of intervals) × (terms), in a few numpy calls per level."""
+    segs = []
+    brackets = []                 # (index in segs, lo, hi, f(lo)) of the roots to bisect
+    f = p.value
+    todo = [(p.phi0, p.phi1, f(p.phi0), f(p.phi1), 0)]
+    while todo:
+        mids = [0.5 * (lo + hi) for lo, hi, *_ in todo]
+        fms, dms = p.values_and_slopes(mids)
+        nxt = []
+        for (lo, hi, flo, fhi, depth), m, fm, dm in zip(todo, mids, fms.tolist(), dms.tolist()):
+            r = 0.5 * (hi - lo)
+            if abs(fm) - abs(dm) * r - 0.5 * L2 * r * r > err:
+                s = 1 if fm > 0.0 else -1
+                segs.append((lo, hi, s, s, None))
+            elif abs(dm) - L2 * r > err1:
+                s0, s1 = sign(flo), sign(fhi)
+                if s0 * s1 < 0:
+                    brackets.append((len(segs), lo, hi, flo))
+                segs.append((lo, hi, s0, s1, None))
+            elif (abs(fm) + abs(dm) * r + 0.5 * L2 * r * r <= err or depth >= 64
+                    or not lo < m < hi):
+                segs.append((lo, hi, 0, 0, None))
+            else:
+                nxt.append((lo, m, flo, fm, depth + 1))
+                nxt.append((m, hi, fm, fhi, depth + 1))
+        todo = nxt
+    if brackets:
+        roots = bisect_roots(p, [b[1] for b in brackets], [b[2] for b in brackets],
+                             [b[3] for b in brackets])
+        for (i, *_), root in zip(brackets, roots):
+            segs[i] = segs[i][:4] + (root,)
+    segs.sort(key=lambda seg: seg[0])
+    return segs
+
+
+def bisect_roots(p: Piece, lo, hi, flo) -> list[float]:
+    """:func:`bisect_root` of the piece's moment on many brackets at once (a long series: one
+    evaluation of the series at all the brackets' midpoints per step); each bracket takes the
+    same steps as :func:`bisect_root` alone."""
+    import numpy as np
+
+    lo, hi, flo = (np.array(v, dtype=float) for v in (lo, hi, flo))
+    out = np.full_like(lo, np.nan)
+    active = np.arange(len(lo))
+    for _ in range(200):
+        if not len(active):
+            break
+        l, h = lo[active], hi[active]
+        mid = 0.5 * (l + h)
+        stuck = (mid <= l) | (mid >= h)
+        out[active[stuck]] = mid[stuck]
+        active, mid = active[~stuck], mid[~stuck]
+        fm = p.values_and_slopes(mid)[0]
+        zero = fm == 0.0
+        out[active[zero]] = mid[zero]
+        active, mid, fm = active[~zero], mid[~zero], fm[~zero]
+        same = (fm < 0.0) == (flo[active] < 0.0)
+        lo[active[same]], flo[active[same]] = mid[same], fm[same]
+        hi[active[~same]] = mid[~same]
+    out[active] = 0.5 * (lo[active] + hi[active])
+    return out.tolist()
 
 
 def crossings(p: Piece) -> list[float]:

@@ -6,17 +6,48 @@ A graph is a chain of contiguous pieces on ``[0, Φ]`` [rad], each ``M(φ) = m0 
 the triangle and the rectangle) and the textbook's (R.S. Khurmi & J.K. Gupta, *Theory of
 Machines*, ch. 16: the trapezoid, harmonic series of a turning-moment diagram).
 
-Pure functions on plain floats (``math`` only): importing this module is cheap.
+Pure functions on plain floats (``math`` only at import): importing this module is cheap. A
+series longer than ``LONG_SERIES`` terms is summed by numpy (imported then), one dot product per
+evaluation instead of a Python loop over its terms; a short one term by term, as always.
+
+Limits (stated in docs/task2.md, refused by the case schema): ``MAX_TERMS`` terms of a series,
+``MAX_POINTS`` points of a piecewise-linear graph.
 """
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from bisect import bisect_left, bisect_right
+from dataclasses import dataclass, field
 from typing import Sequence
 
 from flywheel.errors import InputError, Notice
 
 TWO_PI = 2.0 * math.pi
+
+#: the most terms of a harmonic series and points of a piecewise-linear graph a case may give
+MAX_TERMS = 1000
+MAX_POINTS = 100_000
+#: a series of more terms than this is summed by numpy (:class:`Piece`)
+LONG_SERIES = 16
+#: the most entries of one terms × angles matrix of :meth:`Piece.values_and_slopes` (8 bytes each)
+CHUNK = 250_000
+
+_SERIES: dict[int, tuple] = {}
+
+
+def _series_arrays(harmonics: tuple) -> tuple:
+    """(k, a, b) of a series as numpy arrays, kept for the last few series (a graph's pieces and
+    the pieces cut from them share one tuple of terms)."""
+    import numpy as np
+
+    hit = _SERIES.get(id(harmonics))
+    if hit is not None and hit[0] is harmonics:
+        return hit[1]
+    if len(_SERIES) > 32:
+        _SERIES.clear()
+    arrays = tuple(np.array(c, dtype=float) for c in zip(*harmonics))
+    _SERIES[id(harmonics)] = (harmonics, arrays)
+    return arrays
 
 
 @dataclass(frozen=True)
@@ -33,13 +64,69 @@ class Piece:
     m0: float
     slope: float = 0.0
     harmonics: tuple[tuple[float, float, float], ...] = ()
+    #: a long series (> LONG_SERIES terms) as numpy arrays (k, a, b, cos kφ0, sin kφ0), else None
+    arrays: tuple | None = field(default=None, init=False, repr=False, compare=False)
+
+    def __post_init__(self):
+        if len(self.harmonics) > LONG_SERIES:
+            import numpy as np
+
+            k, a, b = _series_arrays(self.harmonics)
+            object.__setattr__(self, "arrays", (k, a, b, np.cos(k * self.phi0),
+                                                np.sin(k * self.phi0)))
+
+    def values_and_slopes(self, phis) -> tuple:
+        """(M, dM/dφ) at many angles at once (numpy arrays): the series summed as matrix
+        products over terms × angles, in chunks of at most ``CHUNK`` entries (bounded memory).
+        Only for a long series (``arrays`` set); the short one is summed by :meth:`value_and_slope`."""
+        import numpy as np
+
+        k, a, b = self.arrays[:3]
+        x = np.asarray(phis, dtype=float)
+        m = self.m0 + self.slope * (x - self.phi0)
+        d = np.full_like(x, self.slope)
+        ka, kb = k * a, k * b
+        step = max(1, CHUNK // len(k))
+        for i in range(0, len(x), step):
+            kx = np.outer(x[i:i + step], k)
+            s, c = np.sin(kx), np.cos(kx)
+            m[i:i + step] += s @ a + c @ b
+            d[i:i + step] += c @ ka - s @ kb
+        return m, d
 
     def value(self, phi: float) -> float:
         """M(φ) [N·m] (the formula of this piece, also outside its interval)."""
         m = self.m0 + self.slope * (phi - self.phi0)
+        if self.arrays is not None:
+            import numpy as np
+
+            k, a, b = self.arrays[:3]
+            kx = k * phi
+            return m + float(np.dot(a, np.sin(kx)) + np.dot(b, np.cos(kx)))
         for k, a, b in self.harmonics:
             m += a * math.sin(k * phi) + b * math.cos(k * phi)
         return m
+
+    def value_and_slope(self, phi: float) -> tuple[float, float]:
+        """(M(φ) [N·m], dM/dφ [N·m/rad]) with one sine and one cosine per term::
+
+            dM/dφ = slope + Σ k·(a·cos kφ − b·sin kφ)
+        """
+        m = self.m0 + self.slope * (phi - self.phi0)
+        d = self.slope
+        if self.arrays is not None:
+            import numpy as np
+
+            k, a, b = self.arrays[:3]
+            kx = k * phi
+            s, c = np.sin(kx), np.cos(kx)
+            return (m + float(np.dot(a, s) + np.dot(b, c)),
+                    d + float(np.dot(k, a * c - b * s)))
+        for k, a, b in self.harmonics:
+            s, c = math.sin(k * phi), math.cos(k * phi)
+            m += a * s + b * c
+            d += k * (a * c - b * s)
+        return m, d
 
     def work(self, phi: float) -> float:
         """∫_{phi0}^{φ} M dφ [J], in closed form::
@@ -53,9 +140,32 @@ class Piece:
         """
         h = phi - self.phi0
         w = self.m0 * h + 0.5 * self.slope * h * h
+        if self.arrays is not None:
+            import numpy as np
+
+            k, a, b, c0, s0 = self.arrays
+            kx = k * phi
+            return w + float(np.sum((a * (c0 - np.cos(kx)) + b * (np.sin(kx) - s0)) / k))
         for k, a, b in self.harmonics:
             w += (a * (math.cos(k * self.phi0) - math.cos(k * phi))
                   + b * (math.sin(k * phi) - math.sin(k * self.phi0))) / k
+        return w
+
+    def works(self, phis):
+        """:meth:`work` at many angles at once (a numpy array), for a long series (``arrays``
+        set): the closed form summed as matrix products over terms × angles, in chunks."""
+        import numpy as np
+
+        k, a, b, c0, s0 = self.arrays
+        x = np.asarray(phis, dtype=float)
+        h = x - self.phi0
+        w = self.m0 * h + 0.5 * self.slope * h * h
+        const = float(np.sum((a * c0 - b * s0) / k))
+        ak, bk = a / k, b / k
+        step = max(1, CHUNK // len(k))
+        for i in range(0, len(x), step):
+            kx = np.outer(x[i:i + step], k)
+            w[i:i + step] += const - np.cos(kx) @ ak + np.sin(kx) @ bk
         return w
 
     def linear_at(self, phi: float) -> float:
@@ -77,17 +187,24 @@ class Moment:
     kind: str = "points"
 
     def value(self, phi: float, side: int = +1) -> float:
-        """M(φ) [N·m]; at a jump the value just after (``side=+1``) or before (``-1``)."""
+        """M(φ) [N·m]; at a jump the value just after (``side=+1``) or before (``-1``). The
+        piece is found by bisection of the breakpoints (log of the number of pieces)."""
         pcs = self.pieces
-        if side > 0:
-            for p in pcs:
-                if phi < p.phi1:
-                    return p.value(phi)
-            return pcs[-1].value(phi)
-        for p in reversed(pcs):
-            if phi > p.phi0:
-                return p.value(phi)
-        return pcs[0].value(phi)
+        if side > 0:    # the first piece with phi < phi1
+            i = bisect_right(self._ends(), phi)
+            return pcs[min(i, len(pcs) - 1)].value(phi)
+        i = bisect_left(self._starts(), phi) - 1     # the last piece with phi0 < phi
+        return pcs[max(i, 0)].value(phi)
+
+    def _starts(self) -> list[float]:
+        if "_phi0s" not in self.__dict__:
+            object.__setattr__(self, "_phi0s", [p.phi0 for p in self.pieces])
+        return self.__dict__["_phi0s"]
+
+    def _ends(self) -> list[float]:
+        if "_phi1s" not in self.__dict__:
+            object.__setattr__(self, "_phi1s", [p.phi1 for p in self.pieces])
+        return self.__dict__["_phi1s"]
 
     def work(self) -> float:
         """Work over the cycle ∮ M dφ [J]."""

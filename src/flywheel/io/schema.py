@@ -13,6 +13,7 @@ from typing import TypeVar
 from pydantic import BaseModel, ConfigDict, ValidationError
 
 from flywheel.errors import CaseFileError, Notice, led, said
+from flywheel.io.text import ECHO, cut, cut_echoes, cut_end  # noqa: F401  (the formatter's)
 
 
 class StrictModel(BaseModel):
@@ -55,6 +56,30 @@ def within(lo: float, hi: float, unit: str = ""):
                                         "out_of_range", x=x, lo=lo, hi=hi, unit=unit))
         return v
     return AfterValidator(check)
+
+
+#: the longest title, source, note or name a case may give [characters]
+MAX_TEXT = 1000
+
+def at_most(n: int, what: str):
+    """A pydantic validator (run before the items are validated) refusing a list of more than
+    ``n`` items in one line: "has 100001 points (allowed: at most 100000)"."""
+    from pydantic import BeforeValidator
+
+    def check(v):
+        if isinstance(v, (list, tuple)) and len(v) > n:
+            raise ValueError(Notice(f"has {len(v)} {what} (allowed: at most {n})",
+                                    "too_many_items", count=len(v), items=what, most=n))
+        return v
+    return BeforeValidator(check)
+
+
+def text_field(default: str = "", description: str = ""):
+    """A title, source, note or name: a string of at most MAX_TEXT characters, refused in one
+    line beyond (its value not echoed whole)."""
+    from pydantic import Field
+
+    return Field(default, max_length=MAX_TEXT, description=description)
 
 
 M = TypeVar("M", bound=BaseModel)
@@ -108,7 +133,7 @@ def loc_str(loc: Iterable) -> str:
         if isinstance(part, int):
             out += f"[{part}]"
         else:
-            out += ("." if out else "") + str(part)
+            out += ("." if out else "") + cut(str(part))
     return out or "(top level)"
 
 
@@ -148,7 +173,7 @@ def describe(err: dict, allowed: Callable[[tuple], list[str]], drop: Iterable[st
         code = "not_a_table"
     elif kind == "finite_number":
         code = "not_finite_number"
-    out = Notice(text[len(where) + 2:], code, got=repr(got) if not isinstance(got, (dict, list))
+    out = Notice(text[len(where) + 2:], code, got=cut(repr(got)) if not isinstance(got, (dict, list))
                  else "", **ctx)
     return led(f"{where}: ", out)
 
@@ -158,7 +183,7 @@ def _describe(err, allowed, drop, messages) -> str:
     kind, msg = err["type"], err["msg"]
     where = loc_str(loc)
     got = err.get("input")
-    got_s = f" (got {got!r})" if not isinstance(got, (dict, list)) else ""
+    got_s = f" (got {cut(repr(got))})" if not isinstance(got, (dict, list)) else ""
     if kind == "extra_forbidden":
         key = str(loc[-1])
         keys = allowed(tuple(err["loc"][:-1]))

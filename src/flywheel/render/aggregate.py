@@ -70,7 +70,10 @@ def print_summary(r, title: str = "", source: str = "", console=None, lang: str 
 
     console = console or Console()
     if title:
-        console.print(f"[bold]{e(title)}[/bold]" + (f"  ({e(source)})" if source else ""))
+        from flywheel.io.text import cut_end   # a long title or source cut with «…»
+
+        console.print(f"[bold]{e(cut_end(title))}[/bold]"
+                      + (f"  ({e(cut_end(source))})" if source else ""))
     ch = r.chain
     names = [nm.rotor_name(n, lang) for n in ch.names]
     t = table(L("ag_rotors"), ("#", L("rotor"), L("J_reduced"), L("u")))

@@ -127,7 +127,10 @@ def print_summary(r, title: str = "", source: str = "", lang: str = "en", consol
     t = L10N[lang]
     d = r.to_document()
     if title:
-        console.print(f"[bold]{escape(title)}[/bold]" + (f"  ({escape(source)})" if source else ""))
+        from flywheel.io.text import cut_end   # a long title or source cut with «…»
+
+        console.print(f"[bold]{escape(cut_end(title))}[/bold]"
+                      + (f"  ({escape(cut_end(source))})" if source else ""))
     for head, columns, rows, note, just in summary_tables(r, lang):
         if rows:
             tab = Table(title=escape(head), title_justify="left")

@@ -2569,3 +2569,67 @@ def _msgs_safe_grade_ru_params(code: str, p: dict) -> dict:
 
 _PARAM_HOOKS.append(_msgs_safe_grade_ru_params)
 _MSGS_DERIVED |= {"what_ru"}
+
+# --- msgs_bounds ---
+# The limits of the work (issue 23) in Russian: too many items, text too long, nesting too deep,
+# integers too long, cycles and orders that do not repeat, report angles out of range.
+_BOUNDS_ITEMS_RU = {"points": ("точку", "точки", "точек"), "terms": ("член", "члена", "членов"),
+                    "orders": ("порядок", "порядка", "порядков"),
+                    "angles": ("угол", "угла", "углов"),
+                    "areas": ("площадь", "площади", "площадей"),
+                    "energies": ("энергию", "энергии", "энергий")}
+
+
+def _bounds_num_ru(x) -> str:
+    """A number as a Russian line writes it: decimal comma, true minus (−1e+06 → −1e+06)."""
+    text = f"{x:g}" if isinstance(x, float) else str(x)
+    return text.replace(".", ",").replace("-", "−")
+
+
+MESSAGES_RU.update({
+    "too_many_items": "{count_items_ru} — слишком много (допустимо не больше {most})",
+    "pydantic_string_too_long": ("слишком длинная строка: допустимо не больше {max_length} "
+                                 "символов{got_ru}"),
+    "doc_too_deep": ("{path}: {where_at_ru}таблицы и массивы вложены слишком глубоко "
+                     "(допустимо не больше {most} уровней)"),
+    "doc_number_too_long": ("{path}: {where_at_ru}слишком длинное целое число (допустимо: "
+                            "{lo_ru} … {hi_ru}, 64-битные целые TOML; большее число запишите "
+                            "как дробное, например 1e30)"),
+    "cycle_out_of_range": ("{cycle_ru}° вне допустимого диапазона (допустимо: 360, 720, 1080 … "
+                           "{top}°)"),
+    "t2_cycle_not_whole": ("{cycle_ru}° — ни целое число оборотов, ни целая доля оборота "
+                           "(допустимо: 360, 720, 1080 … 36000° или 180, 120, 90 … — диаграмма, "
+                           "повторяющаяся за оборот)"),
+    "t2_order_not_periodic": ("порядок {k_ru} не повторяется за цикл {cycle_ru}° (допустимо: "
+                              "целые кратные 360/cycle_deg = {step_ru})"),
+    "nf_moment_size": "размер момента ∮|M| dφ переполняется",
+    "t2_graphs_too_big": ("вместе с графиком движущего момента: {pieces} участков × {terms} "
+                          "гармоник — слишком большая работа (допустимо: участки × (1 + "
+                          "гармоники) ≤ {most_ru}; задайте меньше точек или меньше гармоник)"),
+    "at_too_many": "--at: {count_angles_ru} — слишком много (допустимо не больше {most})",
+    "at_out_of_range": ("--at: {a_ru}° вне допустимого диапазона (допустимо: {lo_ru} … {hi_ru}°, "
+                        "угол берётся по модулю цикла)"),
+})
+
+
+def _msgs_bounds_ru_params(code: str, p: dict) -> dict:
+    if code == "too_many_items":
+        p["count_items_ru"] = ru_count(p["count"], *_BOUNDS_ITEMS_RU.get(
+            p["items"], ("элемент", "элемента", "элементов")))
+    elif code == "at_too_many":
+        p["count_angles_ru"] = ru_count(p["count"], *_BOUNDS_ITEMS_RU["angles"])
+    if code in ("doc_too_deep", "doc_number_too_long"):
+        p["where_at_ru"] = f"{p['where']}: " if p.get("where") else ""
+    if code == "t2_graphs_too_big":
+        p["most_ru"] = _bounds_num_ru(float(p["most"]))
+    for k in ("cycle", "k", "step", "a", "lo", "hi"):
+        if k in p and code in ("cycle_out_of_range", "t2_cycle_not_whole",
+                               "t2_order_not_periodic", "at_out_of_range",
+                               "doc_number_too_long"):
+            p[k + "_ru"] = _bounds_num_ru(p[k])
+    return p
+
+
+_PARAM_HOOKS.append(_msgs_bounds_ru_params)
+_MSGS_DERIVED |= {"count_items_ru", "count_angles_ru", "where_at_ru", "cycle_ru", "k_ru", "most_ru",
+                  "step_ru", "a_ru", "lo_ru", "hi_ru"}

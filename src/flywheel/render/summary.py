@@ -112,7 +112,10 @@ def print_summary(results, console=None, lang: str = "en") -> None:
         """The value of ``key`` and where (φ) it is."""
         return f"{_g(getattr(s, key))} {t['at']} {getattr(s, f'phi_{key}_deg'):.2f}°"
 
-    console.print(f"[bold]{results.title}[/bold]" + (f"  ({results.source})" if results.source else ""))
+    from flywheel.io.text import cut_end   # a long title or source cut with «…» (issue 23)
+
+    console.print(f"[bold]{cut_end(results.title)}[/bold]"
+                  + (f"  ({cut_end(results.source)})" if results.source else ""))
     tab = Table(title=t["title_main"])
     tab.add_column(t["quantity"])
     tab.add_column(t["value"], justify="right")

@@ -53,7 +53,10 @@ def print_summary(r, title: str = "", source: str = "", console=None, lang: str 
     if title:
         from rich.markup import escape
 
-        console.print(f"[bold]{escape(title)}[/bold]" + (f"  ({escape(source)})" if source else ""))
+        from flywheel.io.text import cut_end   # a long title or source cut with «…»
+
+        console.print(f"[bold]{escape(cut_end(title))}[/bold]"
+                      + (f"  ({escape(cut_end(source))})" if source else ""))
     if r.unknown:
         name = nm.symbol({"resistance": "t2_M_C", "driving": "t2_M_D"}[r.unknown], lang)
         val = r.M_C if r.unknown == "resistance" else r.M_D
