@@ -770,8 +770,9 @@ def solve(M_D: Moment, M_C: Moment, J: float | None = None, *, omega0: float | N
     # relative to the size of the moments (``size``), not to W_D, W_C: zero-mean moments
     # have works of pure round-off and are steady all the same
     size_D, size_C = size(M_D), size(M_C)
-    if not math.isfinite(size_D + size_C):   # 1e308·sin 2φ: no crossing can be certified, and
-        # A stays 0: "the energy does not fluctuate" would be said (issue 23)
+    if not math.isfinite(size_D + size_C) and any(p.harmonics for p in pieces):
+        # 1e308·sin 2φ: no crossing can be certified and A stays 0, so "the energy does not
+        # fluctuate" would be said (issue 23); linear pieces overflow A itself (_motion)
         raise NotFiniteError("work_driving" if not math.isfinite(size_D) else "work_resistance",
                              Notice("the moment's size ∮|M| dφ overflows", "nf_moment_size"))
     scale = max(abs(W_D), abs(W_C), size_D + size_C, 1e-300)
