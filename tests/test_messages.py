@@ -18,16 +18,19 @@ from typer.testing import CliRunner
 
 from flywheel.cli import app
 from flywheel.errors import Notice
-from flywheel.render import nomenclature as nm
+from flywheel.render import library_ru, message_params
+from flywheel.render import messages as nm
 
 SRC = Path(__file__).resolve().parents[1] / "src" / "flywheel"
 CASES = Path(__file__).resolve().parents[1] / "cases"
 runner = CliRunner()
 # fields a template may take that render/nomenclature.py derives from the Notice's own
-DERIVED = {"target", "shape_ru", "material_ru", "files_ru"} | nm._MSGS_DERIVED
+DERIVED = message_params.DERIVED
+# the Russian templates of the catalogue (locale/ru/LC_MESSAGES/flywheel.po) by the Notice's code
+RU = {code: nm.entry(code, "ru") for code in nm.notice_codes()}
 # the errors io/schema.py.describe makes from pydantic's (code made from pydantic's error type;
 # fields: pydantic's ctx and the value given)
-DESCRIBED = {c for c in nm.MESSAGES_RU if c.startswith("pydantic_")} | {
+DESCRIBED = {c for c in RU if c.startswith("pydantic_")} | {
     "missing", "not_a_table", "not_finite_number"}
 
 
@@ -44,10 +47,10 @@ def test_every_notice_has_a_russian_template_with_its_fields():
     found = list(_notices())
     assert len(found) >= 15
     for file, code, keys in found:
-        assert code in nm.MESSAGES_RU, (file, code)
-        fields = {f for _, f, _, _ in string.Formatter().parse(nm.MESSAGES_RU[code]) if f}
+        assert code in RU, (file, code)
+        fields = {f for _, f, _, _ in string.Formatter().parse(RU[code]) if f}
         assert fields <= keys | DERIVED, (file, code, fields - keys)
-    assert {c for _, c, _ in found} | DESCRIBED == set(nm.MESSAGES_RU)
+    assert {c for _, c, _ in found} | DESCRIBED == set(RU)
 
 
 def test_a_notice_is_its_english_text_and_survives_pickling():
@@ -1001,7 +1004,7 @@ def test_tomllibs_own_words_are_said_in_russian(text):
 
     with pytest.raises(tomllib.TOMLDecodeError) as e:
         tomllib.loads(text)
-    ru = nm._toml_detail_ru(str(e.value))
+    ru = library_ru.toml_detail_ru(str(e.value))
     assert not re.search(r"[A-Za-z]{3,}", re.sub(r"'[^']*'|\([^)]*'[^)]*\)", "", ru)), ru
     assert re.search(r"\((строка \d+, столбец \d+|в конце документа)\)$", ru), ru
 
@@ -1013,5 +1016,5 @@ def test_jsons_own_words_are_said_in_russian(text):
 
     with pytest.raises(json.JSONDecodeError) as e:
         json.loads(text)
-    ru = nm._said_ru(e.value.msg, nm._JSON_RU)
+    ru = library_ru.said_ru(e.value.msg, library_ru.JSON_RU)
     assert ru != e.value.msg and not re.search(r"[A-Za-z]{4,}", ru.replace("escape", "").replace("uXXXX", "")), ru

@@ -96,7 +96,7 @@ def aggregate_command(
         if plot is not None:
             typer.echo(nm.name("plot_written", lang, path=plot))
         if out is not None:
-            from flywheel.render.nomenclature import prefix
+            from flywheel.render.messages import prefix
 
             typer.echo(f"{prefix('written', lang)}: {out}/ "
                        f"({', '.join(written)})")
@@ -117,7 +117,7 @@ def _write_out(out: Path, result, formats, title: str, source: str, lang: str) -
         lambda path: draw(result, path, title, lang),
         FIGURE if result.startup is not None else None,
         lambda fig: build_aggregate_document(result, title, source, lang, fig), formats)
-    from flywheel.render.nomenclature import message, prefix
+    from flywheel.render.messages import message, prefix
 
     for n in notes:
         sys.stderr.write(f"{prefix('note', lang)}: {message(n, lang)}\n")

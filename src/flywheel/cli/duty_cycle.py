@@ -38,7 +38,7 @@ def duty_cycle_command(
 
     c = guard(load_duty_case, case)
     result = guard(solve_case, c, str(case))
-    from flywheel.render.nomenclature import message, prefix
+    from flywheel.render.messages import message, prefix
 
     written = None
     if out is not None:

@@ -43,7 +43,7 @@ def say_error(text: str, lead: str = "", tail: str = "") -> None:
     """Write the one error line to stderr in the user's --lang: «error:» / «ошибка:», ``lead``,
     the message (an errors.Notice with a Russian template is said in Russian, the rest as it
     is), ``tail``. Every error line of the command line is written here."""
-    from flywheel.render.nomenclature import message as say, prefix
+    from flywheel.render.messages import message as say, prefix
 
     ln = lang()
     sys.stderr.write(f"{prefix('error', ln)}: {lead}{say(text, ln)}{tail}\n")

@@ -18,7 +18,7 @@ def stage_bar(lang: str = "en") -> Iterator[Callable[[str, float], None]]:
     from rich.console import Console
     from rich.progress import BarColumn, Progress, TaskProgressColumn, TextColumn, TimeElapsedColumn
 
-    from flywheel.render.nomenclature import stage_name
+    from flywheel.render.messages import stage_name
 
     console = Console(stderr=True)
     tasks: dict[str, int] = {}

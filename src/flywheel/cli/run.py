@@ -135,7 +135,7 @@ def run_command(
 
     notes: list[str] = []
     _guard(write_folder, out, build, "summary.json", notes=notes)
-    from flywheel.render.nomenclature import message, prefix
+    from flywheel.render.messages import message, prefix
 
     for n in notes:
         sys.stderr.write(f"{prefix('note', lang)}: {message(n, lang)}\n")

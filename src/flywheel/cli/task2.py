@@ -223,7 +223,7 @@ def task2_command(
         if plot is not None:
             typer.echo(nm.name("plot_written", lang, path=plot))
         if out is not None:
-            from flywheel.render.nomenclature import prefix
+            from flywheel.render.messages import prefix
 
             typer.echo(f"{prefix('written', lang)}: {out}/ "
                        f"({', '.join(written)})")
@@ -243,7 +243,7 @@ def _write_out(out: Path, result, formats, title, source, doc_title, doc_source,
         out, "task2", to_json(result, doc_title, doc_source) + "\n",
         lambda path: draw(result, path, title, lang), FIGURE,
         lambda fig: build_task2_document(result, title, source, lang, fig), formats)
-    from flywheel.render.nomenclature import message, prefix
+    from flywheel.render.messages import message, prefix
 
     for n in notes:
         sys.stderr.write(f"{prefix('note', lang)}: {message(n, lang)}\n")

@@ -56,10 +56,10 @@ def variants_command(
     from rich.console import Console
     from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn
 
-    from flywheel.render.nomenclature import stage_name
+    from flywheel.render.messages import stage_name
 
     from flywheel.render.grading import print_variants
-    from flywheel.render.nomenclature import message, prefix
+    from flywheel.render.messages import message, prefix
     from flywheel.teaching.variants import generate, load_template, write_variants
 
     if seed is None:
@@ -128,7 +128,7 @@ def grade_command(
     from flywheel.cli.guard import _guard, check_lang, choice, fail
     from flywheel.errors import Notice
     from flywheel.io.output import write_file
-    from flywheel.render.nomenclature import stage_name
+    from flywheel.render.messages import stage_name
     from flywheel.teaching.grading import grade, load_key, report_csv, report_dict
 
     check_lang(lang)
@@ -199,7 +199,7 @@ def grade_command(
             print_report(report, lang=lang)
         for path in (out, gradebook):
             if path is not None and report.students:
-                from flywheel.render.nomenclature import prefix
+                from flywheel.render.messages import prefix
 
                 typer.echo(f"{prefix('written', lang)}: {path}")
 

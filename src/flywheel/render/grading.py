@@ -132,7 +132,7 @@ def print_variants(vs, out, console=None, sheets: str | None = None, lang: str =
     from rich.console import Console
     from rich.table import Table
 
-    from flywheel.render.nomenclature import message, prefix
+    from flywheel.render.messages import message, prefix
 
     console = console or Console()
     t = vs.template
@@ -172,7 +172,7 @@ def print_report(r, console=None, lang: str = "en") -> None:
     group table, statistics and problems, each cut at GROUP_ROWS lines with a note where the
     whole report is (--out, --json): the terminal gets a readable page, not megabytes. The
     wording in ``lang`` (the problems too: render/nomenclature.py MESSAGES_RU)."""
-    from flywheel.render.nomenclature import message
+    from flywheel.render.messages import message
 
     from rich.console import Console
     from rich.table import Table
