@@ -21,7 +21,8 @@ class Notice(str):
     """A warning or message of the computation: the English text itself (a ``str``, so results,
     summary.json and every English output hold it unchanged), with a ``code`` and the
     ``params`` its text was made from, so that a renderer can say it in another language
-    (render/nomenclature.py, ``message``; the Russian templates in MESSAGES).
+    (render/messages.py, ``message``; the Russian templates in the catalogue,
+    locale/ru/LC_MESSAGES/flywheel.po, msgctxt = the code).
 
     >>> w = Notice("δ = 0.5: too much", "delta_swing", delta=0.5)
     >>> w == "δ = 0.5: too much", w.code, w.params

@@ -51,7 +51,7 @@ class NotFiniteError(OverflowError):
 
 def python_detail(text: str) -> Notice:
     """What Python's arithmetic said ("-inf + inf in fsum"), the detail of a NotFiniteError: a
-    Notice, so that render/nomenclature.py can say the known ones in Russian."""
+    Notice, so that render/messages.py can say the known ones in Russian."""
     return Notice(text, "t2_python_error", words=text)
 
 

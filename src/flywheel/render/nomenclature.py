@@ -2,9 +2,12 @@
 Russian name. CSV headers, plot axes and legends, the rich summary and the report take their
 names from here; the renderers keep only sentence templates.
 
-The commands other than ``run`` (task2, aggregate) and the plots take their row labels,
-headings and sentence templates from the same table (the block marked ``--- nom`` at its end);
-a name may be a template with ``{fields}`` that :func:`name` fills.
+The commands other than ``run`` (task2, aggregate) and the plots take their row labels and
+headings from the same table (the block marked ``--- nom``); their labels and sentences that
+have no symbol and no unit are entries of the catalogue (locale/ru/LC_MESSAGES/flywheel.po,
+msgctxt "term:<key>") that :func:`term` finds like the others. A name may be a template with
+``{fields}`` that :func:`name` fills. Every other sentence (warnings, errors, prefixes) is the
+catalogue's too (render/messages.py).
 
 Symbols are the course's (Артоболевский, «Теория механизмов и машин», ch. 16–17; the course
 worksheet on the two-stage compressor): ω_ср, M_Д, A_С, ΔT_нб, J_I, J_II. ``symbol`` is the
@@ -464,7 +467,6 @@ TERMS: dict[str, Term] = {
     # --- flywheel (task2's designed rim; were in render/nomenclature_ci.py) ---
     "rim_design_dims": _ci("", "m", "D_mean = {D}, t = {t}, b = {b} m; m = {m} kg",
                            "D_ср = {D}, t = {t}, b = {b} м; m = {m} кг"),
-    # -- task 2: headings and sentences -------------------------------------------------------
     # -- task 2: angular acceleration and time (shown with --epsilon or --at) -------------------
     "t2_epsilon": _ci("ε", "rad/s²", "ε", "ε"),
     "t2_epsilon_max": _ci("ε_max", "rad/s²", "ε_max (largest over the cycle)",
@@ -551,8 +553,7 @@ TERMS: dict[str, Term] = {
     "engine_p_MPa": _ci("p", "MPa", "p, MPa (gauge)", "p, МПа (избыточное)"),
     "engine_phi": _ci("φ", "deg", "crank angle φ [deg]", "угол поворота кривошипа φ, °"),
     "engine_fires": _ci("", "deg", "fires at {a:.1f}°", "воспламенение при {a:.1f}°"),
-    # -- the force analysis's plots (render/plots_forces.py) ------------------------------------
-    # --- mut ---
+    # (the labels and sentences without a symbol or a unit: the catalogue, "term:<key>", below)
 }
 
 # the load names inside "M {load}": "gas HP", "gravity 2", "force punch", "couple c", "moment m"
