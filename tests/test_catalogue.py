@@ -67,9 +67,12 @@ def _raise_sites():
     """(file, code, keyword names) of every Notice(text, "code", …) in the package."""
     for path in i18n.PACKAGE.rglob("*.py"):
         for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
-            if (isinstance(node, ast.Call) and getattr(node.func, "id", None) == "Notice"
-                    and len(node.args) >= 2 and isinstance(node.args[1], ast.Constant)):
-                yield path.name, node.args[1].value, {k.arg for k in node.keywords}
+            if not isinstance(node, ast.Call) or len(node.args) < 2:
+                continue
+            code = (node.args[0] if ast.unparse(node.func) == "Notice.of" else node.args[1]
+                    if getattr(node.func, "id", None) == "Notice" else None)
+            if isinstance(code, ast.Constant):
+                yield path.name, code.value, {k.arg for k in node.keywords}
 
 
 def test_each_russian_template_takes_only_fields_its_notice_gives():

@@ -38,9 +38,12 @@ def _notices():
     """(file, code, keyword names) of every Notice(…) call in the package."""
     for path in SRC.rglob("*.py"):
         for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
-            if (isinstance(node, ast.Call) and getattr(node.func, "id", None) == "Notice"
-                    and len(node.args) >= 2 and isinstance(node.args[1], ast.Constant)):
-                yield path.name, node.args[1].value, {k.arg for k in node.keywords}
+            if not isinstance(node, ast.Call) or len(node.args) < 2:
+                continue
+            code = (node.args[0] if ast.unparse(node.func) == "Notice.of" else node.args[1]
+                    if getattr(node.func, "id", None) == "Notice" else None)
+            if isinstance(code, ast.Constant):
+                yield path.name, code.value, {k.arg for k in node.keywords}
 
 
 def test_every_notice_has_a_russian_template_with_its_fields():
@@ -884,7 +887,8 @@ def _notice_builders() -> set[str]:
         for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
             if isinstance(node, ast.FunctionDef) and any(
                     isinstance(r, ast.Return) and r.value is not None
-                    and "Notice(" in ast.unparse(r.value) for r in ast.walk(node)):
+                    and ("Notice(" in ast.unparse(r.value) or "Notice.of(" in ast.unparse(r.value))
+                    for r in ast.walk(node)):
                 names.add(node.name)
     return names
 
@@ -907,6 +911,7 @@ def _english_raises():
             called = msg.func.id if isinstance(msg, ast.Call) and isinstance(msg.func, ast.Name) \
                 else ""
             if isinstance(msg, ast.Name) or called in builders or "Notice(" in ast.unparse(msg) \
+                    or "Notice.of(" in ast.unparse(msg) \
                     or "led(" in ast.unparse(msg):
                 continue
             if lines[node.lineno - 2].strip() == _LIBRARY_ONLY:

@@ -65,19 +65,27 @@ def _template(node: ast.expr, params: dict[str, str]) -> tuple[str, bool]:
 
 
 def extract_notices(package: Path = PACKAGE) -> dict[str, dict]:
-    """Every ``Notice(text, "code", **params)`` of the package: code → its English template
-    (the first raise site's), where it is raised, whether every placeholder is a parameter."""
+    """Every ``Notice.of("code", template, **params)`` and ``Notice(text, "code", **params)`` of
+    the package: code → its English template (the first raise site's; an f-string's fields
+    named by the parameters), where it is raised, the fields that are no parameter."""
     found: dict[str, dict] = {}
     for path in sorted(package.rglob("*.py")):
         tree = ast.parse(path.read_text(encoding="utf-8"))
         for node in ast.walk(tree):
-            if not (isinstance(node, ast.Call) and getattr(node.func, "id", "") == "Notice"):
+            if not isinstance(node, ast.Call) or len(node.args) < 2:
                 continue
-            if len(node.args) < 2 or not isinstance(node.args[1], ast.Constant):
+            if ast.unparse(node.func) == "Notice.of":              # Notice.of(code, template, …)
+                code_arg, text = node.args
+                msgid, unclean = text.value, []
+            elif getattr(node.func, "id", "") == "Notice":         # Notice(f"…", code, …)
+                text, code_arg = node.args[:2]
+                params = {ast.unparse(k.value): k.arg for k in node.keywords if k.arg}
+                msgid, unclean = _template(text, params)
+            else:
                 continue
-            code = node.args[1].value
-            params = {ast.unparse(k.value): k.arg for k in node.keywords if k.arg}
-            msgid, unclean = _template(node.args[0], params)
+            if not isinstance(code_arg, ast.Constant):
+                continue
+            code = code_arg.value
             loc = (str(path.relative_to(package.parent.parent)), node.lineno)
             entry = found.setdefault(code, {"msgid": msgid, "unclean": unclean, "locs": [],
                                             "params": set()})

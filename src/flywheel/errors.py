@@ -36,11 +36,25 @@ class Notice(str):
     code: str
     params: dict
     lead: str = ""
+    template: str = ""
 
     def __new__(cls, text: str, code: str = "", **params):
         self = super().__new__(cls, text)
         self.code = code
         self.params = params
+        return self
+
+    @classmethod
+    def of(cls, code: str, template: str, **params) -> "Notice":
+        """The Notice whose English is ``template`` (``str.format`` fields of ``params``): the
+        gettext msgid of its entry in the catalogue (msgctxt ``code``), written once, here.
+
+        >>> n = Notice.of("no_such_file", "{path}: no such file", path="c.toml")
+        >>> n, n.code, n.params, n.template
+        ('c.toml: no such file', 'no_such_file', {'path': 'c.toml'}, '{path}: no such file')
+        """
+        self = cls(template.format(**params), code, **params)
+        self.template = template
         return self
 
 
@@ -55,6 +69,7 @@ def led(lead: str, text) -> str:
         return lead + str(text)
     out = Notice(lead + str(text), text.code, **text.params)
     out.lead = lead + text.lead
+    out.template = text.template
     return out
 
 

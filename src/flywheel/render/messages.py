@@ -17,7 +17,8 @@ sentences that have no symbol and no unit ("term:<key>").
 """
 from __future__ import annotations
 
-from flywheel.render.catalogue import entry, has, notice_codes, plural  # noqa: F401
+from flywheel.render.catalogue import (_english, catalogue, entry, has,  # noqa: F401
+                                       notice_codes, plural)
 from flywheel.render.message_params import russian_params
 
 
@@ -28,7 +29,11 @@ def message(text: str, lang: str = "en") -> str:
     if lang != "ru" or not code or not has(code):
         return str(text)
     lead = getattr(text, "lead", "").replace(": (top level): ", ": (верхний уровень): ")
-    return lead + entry(code, "ru").format(**russian_params(code, text.params, message))
+    english = getattr(text, "template", "") or _english()[code]    # Notice.of gives its msgid
+    russian = catalogue("ru").pgettext(code, english)
+    if russian == english:                          # an English changed, not yet in the .po
+        russian = entry(code, "ru")
+    return lead + russian.format(**russian_params(code, text.params, message))
 
 
 def prefix(key: str, lang: str = "en") -> str:
