@@ -6,6 +6,12 @@ check. English is the msgid, the Notice's code the msgctxt.
     python tools/i18n.py update    # merge the .pot into the .po (new entries untranslated)
     python tools/i18n.py compile   # the .po → flywheel.mo (committed; read at run time by gettext)
     python tools/i18n.py check     # every entry translated, no fuzzy, placeholders agree, .mo up to date
+    python tools/i18n.py todo      # the raise sites still written Notice(f"…", code) (not Notice.of)
+    python tools/i18n.py adopt F   # F: an old-style block of Russian templates (``MESSAGES_RU.update
+                                   #   ({code: template})``, ``MESSAGES_RU[code] = …``) cut from
+                                   #   render/nomenclature.py: its templates become the msgstrs of
+                                   #   their codes (run update first; a block's function of Russian
+                                   #   words goes to render/message_params.py HOOKS by hand)
 
 Babel (the test extra) does the reading and writing of the catalogue; at run time only the
 standard library's gettext reads the compiled .mo (render/messages.py).
@@ -55,6 +61,8 @@ def _template(node: ast.expr, params: dict[str, str]) -> tuple[str, bool]:
                 spec = ":" + "".join(v.value if isinstance(v, ast.Constant) else
                                      "{" + ast.unparse(v.value) + "}"
                                      for v in part.format_spec.values)
+                if not all(isinstance(v, ast.Constant) for v in part.format_spec.values):
+                    unclean.append(src + spec)
             out.append("{" + name + conv + spec + "}")
         return "".join(out), unclean
     if isinstance(node, ast.BinOp) and isinstance(node.op, ast.Add):
@@ -233,6 +241,30 @@ def main(argv: list[str]) -> int:
             bad.append(f"{MO.name} is not the compiled {PO.name}: run `python tools/i18n.py compile`")
         print("\n".join(bad) or "ok")
         return 1 if bad else 0
+    elif cmd == "adopt":
+        space = {"MESSAGES_RU": {}, "_PARAM_HOOKS": [], "_MSGS_DERIVED": set()}
+        exec("from flywheel.render.nomenclature import *\n" + Path(argv[2]).read_text(
+            encoding="utf-8"), space)
+        po, left = read_po(), dict(space["MESSAGES_RU"])
+        for m in po:
+            if m.context in left:
+                m.string = left.pop(m.context)
+                m.flags.discard("fuzzy")
+        write_po(po)
+        print(f"written: {PO}" + (f"; not raised anywhere (left out): {', '.join(left)}"
+                                  if left else ""))
+        if space["_PARAM_HOOKS"] or space["_MSGS_DERIVED"]:
+            print("move by hand to render/message_params.py (HOOKS, DERIVED): "
+                  + ", ".join(f.__name__ for f in space["_PARAM_HOOKS"]))
+    elif cmd == "todo":
+        for path in sorted(PACKAGE.rglob("*.py")):
+            for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+                if (isinstance(node, ast.Call) and getattr(node.func, "id", "") == "Notice"
+                        and len(node.args) >= 2 and isinstance(node.args[1], ast.Constant)):
+                    _, unclean = _template(node.args[0], {ast.unparse(k.value): k.arg
+                                                          for k in node.keywords if k.arg})
+                    print(f"{path.relative_to(ROOT)}:{node.lineno}: {node.args[1].value}: "
+                          f"not a parameter: {' | '.join(unclean) or '(layout)'}")
     else:
         print(__doc__)
         return 2

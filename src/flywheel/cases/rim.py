@@ -39,12 +39,12 @@ class RimSpec(StrictModel):
     @model_validator(mode="after")
     def _check(self):
         if not 0.0 < self.share <= 1.0:
-            raise FieldError(("share",), Notice(f"{self.share:g} is not a share of the flywheel's "
-                                                f"J (allowed: 0 < share ≤ 1)", "rim_share",
-                                                share=self.share))
+            raise FieldError(("share",), Notice.of(
+                "rim_share", "{share:g} is not a share of the flywheel's J (allowed: 0 < share ≤ 1)",
+                share=self.share))
         if self.width is not None and self.width_to_thickness is not None:
-            raise FieldError((), Notice("give width or width_to_thickness, not both",
-                                        "rim_width_or_ratio"))
+            raise FieldError((), Notice.of(
+                "rim_width_or_ratio", "give width or width_to_thickness, not both"))
         return self
 
     def check_speed(self, density: float, allowable_stress: float, material: str) -> None:
@@ -52,15 +52,14 @@ class RimSpec(StrictModel):
         rim.speed saying the largest speed allowed (no diameter helps: σ depends on v alone)."""
         if density * self.speed ** 2 > allowable_stress * (1 + 1e-12):
             raise FieldError(("rim", "speed"),
-                             Notice(f"{self.speed:g} m/s gives the hoop stress ρ·v² = "
-                                    f"{density * self.speed ** 2 / 1e6:.6g} MPa above the "
-                                    f"allowable {allowable_stress / 1e6:.6g} MPa ({material}, "
-                                    f"ρ = {density:g} kg/m³), whatever the diameter (allowed: at "
-                                    f"most √(σ/ρ) = {(allowable_stress / density) ** 0.5:.6g} m/s)",
-                                    "rim_speed_stress", speed=self.speed,
-                                    stress=density * self.speed ** 2 / 1e6,
-                                    allowable=allowable_stress / 1e6, material=material,
-                                    density=density, top=(allowable_stress / density) ** 0.5))
+                             Notice.of(
+                                 "rim_speed_stress", "{speed:g} m/s gives the hoop stress ρ·v² = "
+                                 "{stress:.6g} MPa above the allowable {allowable:.6g} MPa "
+                                 "({material}, ρ = {density:g} kg/m³), whatever the diameter "
+                                 "(allowed: at most √(σ/ρ) = {top:.6g} m/s)", speed=self.speed,
+                                 stress=density * self.speed ** 2 / 1e6,
+                                 allowable=allowable_stress / 1e6, material=material,
+                                 density=density, top=(allowable_stress / density) ** 0.5))
 
     def design(self, J: float, omega: float, density: float, allowable_stress: float):
         """The rim (:class:`flywheel.dynamics.sizing.RimDesign`) for J [kg·m²] at ω [rad/s]."""

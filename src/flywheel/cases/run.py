@@ -74,13 +74,13 @@ class Machine(StrictModel):
     @model_validator(mode="after")
     def _check(self):
         if (self.speed_rps is None) == (self.speed_rpm is None):
-            raise ValueError(Notice("give exactly one of speed_rps, speed_rpm", "speed_rps_or_rpm"))
+            raise ValueError(Notice.of(
+                "speed_rps_or_rpm", "give exactly one of speed_rps, speed_rpm"))
         revs = self.cycle_deg / 360.0
         if not (1 <= revs <= CYCLE_REVS_MAX and revs == round(revs)):
-            raise FieldError(("cycle_deg",), Notice(
-                f"{self.cycle_deg:g}° is not a whole number of revolutions (allowed: 360, 720, "
-                f"1080 … {360 * CYCLE_REVS_MAX}°)", "cycle_not_whole", cycle=self.cycle_deg,
-                top=360 * CYCLE_REVS_MAX))
+            raise FieldError(("cycle_deg",), Notice.of(
+                "cycle_not_whole", "{cycle:g}° is not a whole number of revolutions (allowed: 360, "
+                "720, 1080 … {top}°)", cycle=self.cycle_deg, top=360 * CYCLE_REVS_MAX))
         return self
 
     @property
@@ -198,14 +198,16 @@ class PointSpec(StrictModel):
     @model_validator(mode="after")
     def _one_way(self):
         if (self.to is None) == (self.distance is None):
-            raise ValueError(Notice("give either `to` (with fraction) or `distance` (with angle_deg)",
-                                    "point_to_or_distance"))
+            raise ValueError(Notice.of(
+                "point_to_or_distance", "give either `to` (with fraction) or `distance` (with "
+                "angle_deg)"))
         if self.distance is not None and (self.fraction or self.across):
-            raise ValueError(Notice("`fraction` and `across` go with `to`, not with `distance`",
-                                    "run_point_fraction_with_distance"))
+            raise ValueError(Notice.of(
+                "run_point_fraction_with_distance", "`fraction` and `across` go with `to`, not "
+                "with `distance`"))
         if self.to is not None and self.angle_deg:
-            raise ValueError(Notice("`angle_deg` goes with `distance`, not with `to`",
-                                    "run_point_angle_with_to"))
+            raise ValueError(Notice.of(
+                "run_point_angle_with_to", "`angle_deg` goes with `distance`, not with `to`"))
         return self
 
 
@@ -219,7 +221,7 @@ class LinkSpec(StrictModel):
     @model_validator(mode="after")
     def _centroid(self):
         if self.mass > 0 and self.centroid is None:
-            raise ValueError(Notice("a link with mass needs `centroid`", "link_mass_centroid"))
+            raise ValueError(Notice.of("link_mass_centroid", "a link with mass needs `centroid`"))
         return self
 
 
@@ -248,7 +250,7 @@ STROKE_ORDER = ("expansion", "exhaust", "intake", "compression")   # from the fi
 
 def _values_per_s(n: int, count: int) -> Notice:
     """The error of a table whose length is not that of its s."""
-    return Notice(f"needs {n} values, one per s (got {count})", "values_per_s", n=n, count=count)
+    return Notice.of("values_per_s", "needs {n} values, one per s (got {count})", n=n, count=count)
 
 
 def _split_cycle(s: list[float], p: list[float], tol: float) -> dict[str, tuple[list, list]]:
@@ -262,16 +264,16 @@ def _split_cycle(s: list[float], p: list[float], tol: float) -> dict[str, tuple[
     if len(p) != n:
         raise FieldError(("diagram", "p"), _values_per_s(n, len(p)))
     if n < 5:
-        raise FieldError(("diagram", "s"), Notice("needs at least 5 values (0, 1, 0, 1, 0: four "
-                                                  "strokes)", "run_diagram_too_short"))
+        raise FieldError(("diagram", "s"), Notice.of(
+            "run_diagram_too_short", "needs at least 5 values (0, 1, 0, 1, 0: four strokes)"))
     for i, v in enumerate(s):
         if not 0.0 <= v <= 1.0:
-            raise FieldError(("diagram", "s", i), Notice(f"{v:g} is outside the stroke (allowed: "
-                                                         f"0 … 1)", "run_s_outside", v=v))
+            raise FieldError(("diagram", "s", i), Notice.of(
+                "run_s_outside", "{v:g} is outside the stroke (allowed: 0 … 1)", v=v))
     if s[0] != 0.0:
-        raise FieldError(("diagram", "s", 0), Notice(
-            f"{s[0]:g}: the diagram begins at the head dead centre where the cylinder fires "
-            f"(allowed: 0)", "run_diagram_start", s0=s[0]))
+        raise FieldError(("diagram", "s", 0), Notice.of(
+            "run_diagram_start", "{s0:g}: the diagram begins at the head dead centre where the "
+            "cylinder fires (allowed: 0)", s0=s[0]))
 
     def step(at: int, end: str, begin: str, p0: float, p1: float, closing: bool = False) -> None:
         if abs(p1 - p0) > tol:          # closing: the step from the end back to the start
@@ -295,10 +297,9 @@ def _split_cycle(s: list[float], p: list[float], tol: float) -> dict[str, tuple[
         m = start
         while True:
             if m + 1 >= n:
-                raise FieldError(("diagram", "s"), Notice(
-                    f"ends inside the {name} stroke (allowed: s runs 0 → 1 → 0 → 1 → 0 over "
-                    f"expansion, exhaust, intake, compression)", "run_diagram_ends_inside",
-                    stroke=name))
+                raise FieldError(("diagram", "s"), Notice.of(
+                    "run_diagram_ends_inside", "ends inside the {stroke} stroke (allowed: s runs 0 "
+                    "→ 1 → 0 → 1 → 0 over expansion, exhaust, intake, compression)", stroke=name))
             a, b = s[m], s[m + 1]
             if (b <= a) if up else (b >= a):
                 raise FieldError(("diagram", "s", m + 1), Notice(
@@ -312,9 +313,9 @@ def _split_cycle(s: list[float], p: list[float], tol: float) -> dict[str, tuple[
         out[name] = (seg_s, seg_p) if up else (seg_s[::-1], seg_p[::-1])
         i = m
     if i != n - 1:
-        raise FieldError(("diagram", "s", i + 1), Notice(
-            "goes on after compression closed the cycle at s = 0 (allowed: four strokes)",
-            "run_diagram_goes_on"))
+        raise FieldError(("diagram", "s", i + 1), Notice.of(
+            "run_diagram_goes_on", "goes on after compression closed the cycle at s = 0 (allowed: "
+            "four strokes)"))
     step(n - 1, "compression", "expansion", p[0], p[-1], closing=True)
     return out
 
@@ -360,38 +361,39 @@ class CylinderSpec(StrictModel):
             given = [k for k in ("s", "towards_head", "away_from_head", "strokes")
                      if getattr(self, k) is not None]
             if given:
-                raise FieldError((given[0],), Notice("give either diagram (one table over the "
-                                                     "cycle) or s with its tables, not both",
-                                                     "run_diagram_or_tables"))
+                raise FieldError((given[0],), Notice.of(
+                    "run_diagram_or_tables", "give either diagram (one table over the cycle) or s "
+                    "with its tables, not both"))
             self._loop = _split_cycle(self.diagram.s, self.diagram.p, self.join_tolerance)
             return self
         s = self.s
         if s is None:
-            raise FieldError(("s",), Notice("missing required field (or give diagram: one table "
-                                            "over a four-stroke cycle)", "run_s_missing"))
+            raise FieldError(("s",), Notice.of(
+                "run_s_missing", "missing required field (or give diagram: one table over a "
+                "four-stroke cycle)"))
         if len(s) < 2:
-            raise FieldError(("s",), Notice("needs at least 2 values", "run_s_too_short"))
+            raise FieldError(("s",), Notice.of("run_s_too_short", "needs at least 2 values"))
         if any(b <= a for a, b in zip(s, s[1:])):
-            raise FieldError(("s",), Notice("must be strictly increasing", "strictly_increasing"))
+            raise FieldError(("s",), Notice.of(
+                "strictly_increasing", "must be strictly increasing"))
         if abs(s[0]) > 1e-12 or abs(s[-1] - 1) > 1e-12:
-            raise FieldError(("s",), Notice(f"must span [0, 1] (got {s[0]} … {s[-1]})",
-                                            "run_s_span", first=s[0], last=s[-1]))
+            raise FieldError(("s",), Notice.of(
+                "run_s_span", "must span [0, 1] (got {first} … {last})", first=s[0], last=s[-1]))
         two = [k for k in ("towards_head", "away_from_head") if getattr(self, k) is not None]
         if self.strokes is None:
             for key in ("towards_head", "away_from_head"):
                 if key not in two:
-                    raise FieldError((key,), Notice("missing: give towards_head and "
-                                                    "away_from_head, or strokes (a four-stroke "
-                                                    "diagram)", "run_two_tables_missing"))
+                    raise FieldError((key,), Notice.of(
+                        "run_two_tables_missing", "missing: give towards_head and away_from_head, "
+                        "or strokes (a four-stroke diagram)"))
             if self.fires_at_deg is not None:
-                raise FieldError(("fires_at_deg",), Notice(
-                    "goes with strokes (a four-stroke diagram); a two-table cylinder repeats "
-                    "every revolution", "run_fires_at_needs_strokes"))
+                raise FieldError(("fires_at_deg",), Notice.of(
+                    "run_fires_at_needs_strokes", "goes with strokes (a four-stroke diagram); a "
+                    "two-table cylinder repeats every revolution"))
         elif two:
-            raise FieldError((two[0],), Notice("give either towards_head and away_from_head (a "
-                                               "compressor, a two-stroke engine) or strokes (a "
-                                               "four-stroke engine), not both",
-                                               "run_two_tables_or_strokes"))
+            raise FieldError((two[0],), Notice.of(
+                "run_two_tables_or_strokes", "give either towards_head and away_from_head (a "
+                "compressor, a two-stroke engine) or strokes (a four-stroke engine), not both"))
         for key, values in self.tables().items():
             if len(values) != len(s):
                 loc = ("strokes", key) if self.strokes is not None else (key,)
@@ -404,13 +406,13 @@ class CylinderSpec(StrictModel):
                 if abs(p_begin - p_end) > self.join_tolerance:
                     raise FieldError(
                         ("strokes", begin),
-                        Notice(f"begins at p/p_max = {p_begin:g} at s = {at:g}, where {end} ends at "
-                               f"{p_end:g}: the strokes do not meet (a jump of "
-                               f"{abs(p_begin - p_end):.4g}; allowed: at most join_tolerance = "
-                               f"{self.join_tolerance:g}; a rise at firing belongs inside the "
-                               f"expansion table, just after s = 0)", "strokes_do_not_meet",
-                               p_begin=p_begin, at=at, end=end, p_end=p_end,
-                               jump=abs(p_begin - p_end), tol=self.join_tolerance))
+                        Notice.of(
+                            "strokes_do_not_meet", "begins at p/p_max = {p_begin:g} at s = {at:g}, "
+                            "where {end} ends at {p_end:g}: the strokes do not meet (a jump of "
+                            "{jump:.4g}; allowed: at most join_tolerance = {tol:g}; a rise at "
+                            "firing belongs inside the expansion table, just after s = 0)",
+                            p_begin=p_begin, at=at, end=end, p_end=p_end, jump=abs(p_begin - p_end),
+                            tol=self.join_tolerance))
         return self
 
     def tables(self) -> dict[str, list[float]]:
@@ -481,9 +483,9 @@ class GivenRim(StrictModel):
     @model_validator(mode="after")
     def _check(self):
         if not self.D_inner < self.D:
-            raise FieldError(("D_inner",), Notice(f"{self.D_inner:g} m is not below D = {self.D:g} m",
-                                                  "rim_inner_above_outer", inner=self.D_inner,
-                                                  D=self.D))
+            raise FieldError(("D_inner",), Notice.of(
+                "rim_inner_above_outer", "{inner:g} m is not below D = {D:g} m", inner=self.D_inner,
+                D=self.D))
         return self
 
 
@@ -526,18 +528,19 @@ class FlywheelSpec(StrictModel):
     @model_validator(mode="after")
     def _rim_share_once(self):
         if self.rim is not None and "rim_share" in self.model_fields_set:
-            raise FieldError(("rim_share",), Notice("with [flywheel.rim] the share is "
-                                                    "flywheel.rim.share (give it there)",
-                                                    "rim_share_twice"))
+            raise FieldError(("rim_share",), Notice.of(
+                "rim_share_twice", "with [flywheel.rim] the share is flywheel.rim.share (give it "
+                "there)"))
         forms = [k for k in ("J", "mass", "given_disk", "given_rim") if getattr(self, k) is not None]
         if len(forms) > 1:
-            raise FieldError((forms[1],), Notice(f"a given flywheel is one of J, mass with "
-                             f"radius_of_gyration, given_disk, given_rim (got {', '.join(forms)})",
-                             "given_flywheel_forms", forms=", ".join(forms)))
+            raise FieldError((forms[1],), Notice.of(
+                "given_flywheel_forms", "a given flywheel is one of J, mass with "
+                "radius_of_gyration, given_disk, given_rim (got {forms})", forms=", ".join(forms)))
         if (self.mass is None) != (self.radius_of_gyration is None):
             which = "radius_of_gyration" if self.mass is not None else "mass"
-            raise FieldError((which,), Notice("missing: mass and radius_of_gyration go together "
-                                              "(J = m·k²)", "mass_radius_missing"))
+            raise FieldError((which,), Notice.of(
+                "mass_radius_missing", "missing: mass and radius_of_gyration go together (J = m·k²)"
+            ))
         if self.rim is not None and self.rim.speed is not None:
             self.rim.check_speed(self.rho, self.sigma, self.material
                                  if self.density is None and self.allowable_stress is None
@@ -651,55 +654,53 @@ class Case(StrictModel):
 def _check_references(case: Case) -> None:
     """Names are unique and defined before use; lengths can be derived."""
     if (case.crank is None) == (case.tabulated is None):
-        raise FieldError((), Notice("give exactly one of [crank] (a linkage) and [tabulated] "
-                                    "(kinematics from a table)", "crank_or_tabulated"))
+        raise FieldError((), Notice.of(
+            "crank_or_tabulated", "give exactly one of [crank] (a linkage) and [tabulated] "
+            "(kinematics from a table)"))
     given = case.flywheel.given_J is not None
     if given and case.machine.delta is not None:
-        raise FieldError(("machine", "delta"), Notice(
-            "give exactly one of machine.delta (the flywheel is sized for it) and a given flywheel "
-            "(flywheel.J, mass with radius_of_gyration, given_disk or given_rim), not both",
-            "delta_and_given_flywheel"))
+        raise FieldError(("machine", "delta"), Notice.of(
+            "delta_and_given_flywheel", "give exactly one of machine.delta (the flywheel is sized "
+            "for it) and a given flywheel (flywheel.J, mass with radius_of_gyration, given_disk or "
+            "given_rim), not both"))
     if not given and case.machine.delta is None:
-        raise FieldError(("machine", "delta"), Notice(
-            "missing: give machine.delta (the flywheel is sized for it) or a given flywheel "
-            "(flywheel.J, mass with radius_of_gyration, given_disk or given_rim)",
-            "delta_missing"))
+        raise FieldError(("machine", "delta"), Notice.of(
+            "delta_missing", "missing: give machine.delta (the flywheel is sized for it) or a "
+            "given flywheel (flywheel.J, mass with radius_of_gyration, given_disk or given_rim)"))
     if case.motor is not None and case.motor.no_load_speed_rpm * 2 * math.pi / 60 <= case.machine.omega_mean:
-        raise FieldError(("motor", "no_load_speed_rpm"), Notice(
-            f"{case.motor.no_load_speed_rpm:g} rpm is not above the mean speed "
-            f"{case.machine.omega_mean * 30 / math.pi:g} rpm", "motor_too_slow",
+        raise FieldError(("motor", "no_load_speed_rpm"), Notice.of(
+            "motor_too_slow", "{n0:g} rpm is not above the mean speed {n:g} rpm",
             n0=case.motor.no_load_speed_rpm, n=case.machine.omega_mean * 30 / math.pi))
     if case.tabulated is not None:   # no linkage: masses and loads live in [tabulated]
         for key in ("ground", "dyads", "points", "links", "cylinders", "forces", "couples"):
             if getattr(case, key):
-                raise FieldError((key,), Notice("not allowed with [tabulated]: give masses and "
-                                                "loads in [tabulated] (docs/tabulated.md)",
-                                                "run_not_with_tabulated"))
+                raise FieldError((key,), Notice.of(
+                    "run_not_with_tabulated", "not allowed with [tabulated]: give masses and loads "
+                    "in [tabulated] (docs/tabulated.md)"))
         return
     if case.crank.length is None and case.design.mean_piston_speed is None:
-        raise FieldError(("crank", "length"), Notice("missing: give crank.length or "
-                                                     "design.mean_piston_speed", "crank_length_missing"))
+        raise FieldError(("crank", "length"), Notice.of(
+            "crank_length_missing", "missing: give crank.length or design.mean_piston_speed"))
     points: set[str] = set()
     links: set[str] = set()
 
     def new_point(name: str, loc: tuple) -> None:
         if name in points:
-            raise FieldError(loc, Notice(f"point name {name!r} is already defined", "point_twice",
-                                         name=name))
+            raise FieldError(loc, Notice.of(
+                "point_twice", "point name {name!r} is already defined", name=name))
         points.add(name)
 
     def new_link(name: str, loc: tuple) -> None:
         if name in links:
-            raise FieldError(loc, Notice(f"link name {name!r} is already defined", "link_twice",
-                                         name=name))
+            raise FieldError(loc, Notice.of(
+                "link_twice", "link name {name!r} is already defined", name=name))
         links.add(name)
 
     def known(name: str, loc: tuple) -> None:
         if name not in points:
-            raise FieldError(loc, Notice(f"point {name!r} is used before it is defined "
-                                         f"(defined so far: {', '.join(sorted(points))})",
-                                         "point_used_before", name=name,
-                                         so_far=", ".join(sorted(points))))
+            raise FieldError(loc, Notice.of(
+                "point_used_before", "point {name!r} is used before it is defined (defined so far: "
+                "{so_far})", name=name, so_far=", ".join(sorted(points))))
 
     for name in case.ground:
         new_point(name, ("ground", name))
@@ -735,8 +736,8 @@ def _check_references(case: Case) -> None:
         known(d.from_, ("dyads", i, "from"))
         if isinstance(d, RRPSpec):
             if d.rod_length is None and case.design.rod_to_crank is None:
-                raise FieldError(("dyads", i, "rod_length"), Notice(
-                    "missing: give rod_length or design.rod_to_crank", "run_rod_length_missing"))
+                raise FieldError(("dyads", i, "rod_length"), Notice.of(
+                    "run_rod_length_missing", "missing: give rod_length or design.rod_to_crank"))
             new_link(d.rod, ("dyads", i, "rod"))
             new_link(d.slider, ("dyads", i, "slider"))
             new_point(d.joint, ("dyads", i, "joint"))
@@ -756,20 +757,20 @@ def _check_references(case: Case) -> None:
     place_points()
     for name, p in pending.items():
         if p.link not in links:
-            raise FieldError(("points", name, "link"), Notice(
-                f"link {p.link!r} is not defined (links: {', '.join(sorted(links))})",
-                "link_not_defined", name=p.link, links=", ".join(sorted(links))))
+            raise FieldError(("points", name, "link"), Notice.of(
+                "link_not_defined", "link {name!r} is not defined (links: {links})", name=p.link,
+                links=", ".join(sorted(links))))
         missing = p.from_ if p.from_ not in points else p.to
-        raise FieldError(("points", name), Notice(f"point {missing!r} is never defined",
-                                                  "point_never_defined", name=missing))
+        raise FieldError(("points", name), Notice.of(
+            "point_never_defined", "point {name!r} is never defined", name=missing))
     for name, link in case.links.items():
         if name not in links:
-            raise FieldError(("links", name), Notice(
-                f"no link named {name!r} (links: {', '.join(sorted(links))})", "no_link_named",
-                name=name, links=", ".join(sorted(links))))
+            raise FieldError(("links", name), Notice.of(
+                "no_link_named", "no link named {name!r} (links: {links})", name=name,
+                links=", ".join(sorted(links))))
         if link.centroid is not None and link.centroid not in points:
-            raise FieldError(("links", name, "centroid"), Notice(
-                f"point {link.centroid!r} is not defined", "point_not_defined", name=link.centroid))
+            raise FieldError(("links", name, "centroid"), Notice.of(
+                "point_not_defined", "point {name!r} is not defined", name=link.centroid))
         if link.centroid is not None and link.centroid not in on[name]:
             raise FieldError(("links", name, "centroid"),
                              _not_on_link(link.centroid, name, on[name]))
@@ -784,37 +785,38 @@ def _check_references(case: Case) -> None:
             low, high = min(values), max(values)
             if not high <= 1 + 1e-9:          # (mut) 1e300 here overflowed the energy silently
                 raise FieldError(("cylinders", i) + c.table_loc(key),
-                                 Notice(f"p/p_max = {high:g} is above 1: p_max = {c.p_max:g} Pa "
-                                        f"is the largest pressure of the diagram (allowed: "
-                                        f"−0.101325 MPa/p_max … 1; to go higher, raise p_max)",
-                                        "pressure_above_p_max", high=high, p_max=c.p_max))
+                                 Notice.of(
+                                     "pressure_above_p_max", "p/p_max = {high:g} is above 1: p_max "
+                                     "= {p_max:g} Pa is the largest pressure of the diagram "
+                                     "(allowed: −0.101325 MPa/p_max … 1; to go higher, raise p_max)",
+                                     high=high, p_max=c.p_max))
             if low * c.p_max < -ATM:
                 raise FieldError(("cylinders", i) + c.table_loc(key),
-                                 Notice(f"p/p_max = {low:g} gives "
-                                        f"{low * c.p_max / 1e6:.4g} MPa gauge, below absolute "
-                                        f"vacuum (allowed: p ≥ −0.101325 MPa gauge)",
-                                        "pressure_below_vacuum", low=low,
-                                        mpa=low * c.p_max / 1e6))
+                                 Notice.of(
+                                     "pressure_below_vacuum", "p/p_max = {low:g} gives {mpa:.4g} "
+                                     "MPa gauge, below absolute vacuum (allowed: p ≥ −0.101325 MPa "
+                                     "gauge)", low=low, mpa=low * c.p_max / 1e6))
     _check_engine(case)
     for i, f in enumerate(case.forces):
         if f.slider not in sliders:
-            raise FieldError(("forces", i, "slider"), Notice(
-                f"{f.slider!r} is not the slider of an RRP dyad", "not_a_slider", name=f.slider))
+            raise FieldError(("forces", i, "slider"), Notice.of(
+                "not_a_slider", "{name!r} is not the slider of an RRP dyad", name=f.slider))
         lo, hi = f.s_range
         if not 0 <= lo < hi <= 1:
-            raise FieldError(("forces", i, "s_range"), Notice(
-                f"must satisfy 0 ≤ from < to ≤ 1 (got {lo}, {hi})", "s_range", lo=lo, hi=hi))
+            raise FieldError(("forces", i, "s_range"), Notice.of(
+                "s_range", "must satisfy 0 ≤ from < to ≤ 1 (got {lo}, {hi})", lo=lo, hi=hi))
     for i, c in enumerate(case.couples):
         if c.link not in links:
-            raise FieldError(("couples", i, "link"), Notice(f"no link named {c.link!r}",
-                                                             "no_link", name=c.link))
+            raise FieldError(("couples", i, "link"), Notice.of(
+                "no_link", "no link named {name!r}", name=c.link))
     names = ([(("cylinders", i, "name"), c.name) for i, c in enumerate(case.cylinders)]
              + [(("forces", i, "name"), f.name) for i, f in enumerate(case.forces)]
              + [(("couples", i, "name"), c.name) for i, c in enumerate(case.couples)])
     seen: set[str] = set()
     for loc, n in names:
         if n in seen:
-            raise FieldError(loc, Notice(f"load name {n!r} is used twice", "load_twice", name=n))
+            raise FieldError(loc, Notice.of(
+                "load_twice", "load name {name!r} is used twice", name=n))
         seen.add(n)
 
 
@@ -838,11 +840,12 @@ def _check_pins(case: Case) -> None:
             gap = abs((where[0] - angle + 180.0) % 360.0 - 180.0)
             if gap < 1e-9 and abs(where[1] - length) <= 1e-12 * length:
                 raise FieldError(("crank", "pins", i, "angle_deg"),
-                                 Notice(f"{pin.angle_deg:g}° puts pin {pin.name!r} where {what} "
-                                        f"{name!r} is (same angle and throw): pins at the same "
-                                        f"angle are one pin with one name (allowed: attach the "
-                                        f"rods to {name!r}, or give another angle)", "pin_twice",
-                                        angle=pin.angle_deg, pin=pin.name, whom=what, name=name))
+                                 Notice.of(
+                                     "pin_twice", "{angle:g}° puts pin {pin!r} where {whom} "
+                                     "{name!r} is (same angle and throw): pins at the same angle "
+                                     "are one pin with one name (allowed: attach the rods to "
+                                     "{name!r}, or give another angle)", angle=pin.angle_deg,
+                                     pin=pin.name, whom=what, name=name))
         seen.append((where, pin.name, f"pin (crank.pins[{i}])"))
 
 
@@ -854,10 +857,10 @@ def _check_engine(case: Case) -> None:
     for i, c in enumerate(case.cylinders):
         if c.four_stroke and round(cycle) % 720:
             raise FieldError(("cylinders", i, "diagram" if c.diagram is not None else "strokes"),
-                             Notice(f"a four-stroke diagram spans 720° of "
-                                    f"crank angle, the machine's cycle is {cycle:g}° (allowed: "
-                                    f"machine.cycle_deg = 720, or a multiple of 720)",
-                                    "four_stroke_cycle", cycle=cycle))
+                             Notice.of(
+                                 "four_stroke_cycle", "a four-stroke diagram spans 720° of crank "
+                                 "angle, the machine's cycle is {cycle:g}° (allowed: "
+                                 "machine.cycle_deg = 720, or a multiple of 720)", cycle=cycle))
     order = case.machine.firing_order
     if order is None:
         return
@@ -876,21 +879,21 @@ def _check_engine(case: Case) -> None:
                                          "run_firing_not_four_stroke", name=name,
                                          four=", ".join(four)))
         if name in seen:
-            raise FieldError(loc, Notice(f"cylinder {name!r} is already in the order (each fires "
-                                         f"once per cycle)", "run_firing_twice", name=name))
+            raise FieldError(loc, Notice.of(
+                "run_firing_twice", "cylinder {name!r} is already in the order (each fires once "
+                "per cycle)", name=name))
         seen.add(name)
     missing = [n for n in four if n not in seen]
     if missing:
-        raise FieldError(("machine", "firing_order"), Notice(
-            f"cylinder {missing[0]!r} is missing (a firing order lists every four-stroke "
-            f"cylinder once: {', '.join(four)})", "firing_order_missing", name=missing[0],
-            four=", ".join(four)))
+        raise FieldError(("machine", "firing_order"), Notice.of(
+            "firing_order_missing", "cylinder {name!r} is missing (a firing order lists every "
+            "four-stroke cylinder once: {four})", name=missing[0], four=", ".join(four)))
     for i, c in enumerate(case.cylinders):
         if c.fires_at_deg is not None and c.name != order[0]:
-            raise FieldError(("cylinders", i, "fires_at_deg"), Notice(
-                f"machine.firing_order sets where cylinder {c.name!r} fires (allowed: "
-                f"fires_at_deg on the first cylinder of the order, {order[0]!r}, only)",
-                "run_fires_at_with_order", name=c.name, first=order[0]))
+            raise FieldError(("cylinders", i, "fires_at_deg"), Notice.of(
+                "run_fires_at_with_order", "machine.firing_order sets where cylinder {name!r} "
+                "fires (allowed: fires_at_deg on the first cylinder of the order, {first!r}, only)",
+                name=c.name, first=order[0]))
 
 
 # -- plausibility: allowed, but a careful engineer would look twice --------------------------------
@@ -909,19 +912,20 @@ def plausibility_warnings(case: Case) -> list[str]:
     indicator table. Values that cannot be right are refused by the schema instead."""
     out = []
     if case.crank is not None and case.crank_length < 5e-3:
-        out.append(Notice(f"crank.length: {case.crank_length:g} m is unusually short (cranks: "
-                          "5 mm … 2 m); lengths are in metres", "crank_short",
-                          length=case.crank_length))
+        out.append(Notice.of(
+            "crank_short", "crank.length: {length:g} m is unusually short (cranks: 5 mm … 2 m); "
+            "lengths are in metres", length=case.crank_length))
     d = case.machine.delta
     if d is not None and not DELTA_USUAL[0] <= d <= DELTA_USUAL[1]:
-        out.append(Notice(f"machine.delta: δ = {d:g} is outside the usual 1/300 … 1/5 "
-                          f"({DELTA_USUAL[0]:.4f} … {DELTA_USUAL[1]:.1f}; Артоболевский's table: "
-                          "presses 1/5 … 1/20, engines 1/80 … 1/150, generators 1/200 … 1/300)",
-                          "delta_unusual", delta=d, lo=DELTA_USUAL[0], hi=DELTA_USUAL[1]))
+        out.append(Notice.of(
+            "delta_unusual", "machine.delta: δ = {delta:g} is outside the usual 1/300 … 1/5 "
+            "({lo:.4f} … {hi:.1f}; Артоболевский's table: presses 1/5 … 1/20, engines 1/80 … "
+            "1/150, generators 1/200 … 1/300)", delta=d, lo=DELTA_USUAL[0], hi=DELTA_USUAL[1]))
     rpm = case.machine.omega_mean * 30 / math.pi
     if not 1.0 <= rpm <= 20_000.0:
-        out.append(Notice(f"machine: the crank speed {rpm:.6g} rpm is outside the usual 1 … "
-                          "20 000 rpm", "rpm_unusual", rpm=rpm))
+        out.append(Notice.of(
+            "rpm_unusual", "machine: the crank speed {rpm:.6g} rpm is outside the usual 1 … 20 000 "
+            "rpm", rpm=rpm))
     for i, c in enumerate(case.cylinders):
         for key, values in c.tables().items():
             low = min(values)
@@ -983,7 +987,7 @@ def _fields_at(loc: tuple) -> list[str]:
 def _describe(err: dict) -> str:
     if err["type"] in ("union_tag_invalid", "union_tag_not_found"):
         return led(f"{loc_str(clean_loc(err['loc'], _DYAD_TAGS))}: ",
-                   Notice("kind must be one of RRP, RRR, RPR", "dyad_kind"))
+                   Notice.of("dyad_kind", "kind must be one of RRP, RRR, RPR"))
     return describe(err, _fields_at, _DYAD_TAGS)
 
 

@@ -115,8 +115,9 @@ def _stopped(exc: Stopped) -> None:
     from flywheel.cli.guard import say_error
     from flywheel.errors import Notice
 
-    say_error(Notice("interrupted (Ctrl-C)", "stopped_interrupted") if exc.signum == signal.SIGINT
-              else Notice("terminated (SIGTERM)", "stopped_terminated"))
+    say_error(Notice.of(
+        "stopped_interrupted", "interrupted (Ctrl-C)") if exc.signum == signal.SIGINT
+              else Notice.of("stopped_terminated", "terminated (SIGTERM)"))
     sys.exit(128 + exc.signum)
 
 

@@ -81,8 +81,9 @@ def run_command(
     if figure_format not in FIGURE_FORMATS:
         fail(choice("--figure-format", figure_format, "a figure format", ", ".join(FIGURE_FORMATS)))
     if not DPI_RANGE[0] <= dpi <= DPI_RANGE[1]:
-        fail(Notice(f"--dpi: {dpi} is out of range (allowed: {DPI_RANGE[0]} to {DPI_RANGE[1]})",
-                    "option_range", option="--dpi", got=dpi, lo=DPI_RANGE[0], hi=DPI_RANGE[1]))
+        fail(Notice.of(
+            "option_range", "--dpi: {got} is out of range (allowed: {lo} to {hi})", option="--dpi",
+            got=dpi, lo=DPI_RANGE[0], hi=DPI_RANGE[1]))
     formats = report or ["md", "html"]
     for f in formats:
         if f not in FORMATS:

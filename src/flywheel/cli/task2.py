@@ -48,8 +48,9 @@ def _check_at(at, cycle_deg: float) -> None:
 
     for x in at or ():
         if not (math.isfinite(x) and 0.0 <= x <= cycle_deg):
-            raise InputError(Notice(f"--at {x:g}: must lie within the cycle 0…{cycle_deg:g}°",
-                                    "t2_at_option", x=x, cycle=cycle_deg))
+            raise InputError(Notice.of(
+                "t2_at_option", "--at {x:g}: must lie within the cycle 0…{cycle:g}°", x=x,
+                cycle=cycle_deg))
 
 
 def task2_command(
@@ -119,9 +120,9 @@ def task2_command(
         if case is not None:
             used = (["--profile"] if profile is not None else []) + [n for n, _ in given]
             if used:
-                raise InputError(Notice(f"--case takes its data from the file; drop "
-                                        f"{', '.join(used)}", "case_drops_options",
-                                        used=", ".join(used)))
+                raise InputError(Notice.of(
+                    "case_drops_options", "--case takes its data from the file; drop {used}",
+                    used=", ".join(used)))
             from flywheel.cases.task2 import load_task2_case, solve_case
 
             c = load_task2_case(case)
@@ -151,14 +152,17 @@ def task2_command(
             for name, v, unit in (("--md", md, "N·m"), ("--j", j, "kg·m²"),
                                   ("--omega0", omega0, "rad/s"), ("--mc", mc, "N·m")):
                 if v is not None and v <= 0:
-                    raise InputError(Notice(f"{name} must be positive (got {v:g} {unit})",
-                                            "option_not_positive", option=name, v=v, unit=unit))
+                    raise InputError(Notice.of(
+                        "option_not_positive", "{option} must be positive (got {v:g} {unit})",
+                        option=name, v=v, unit=unit))
             if delta is not None and not 0 < delta < 2:
-                raise InputError(Notice(f"--delta must lie between 0 and 2 (got {delta:g})",
-                                        "option_delta", delta=delta))
+                raise InputError(Notice.of(
+                    "option_delta", "--delta must lie between 0 and 2 (got {delta:g})", delta=delta
+                ))
             if start is not None and end is not None and start >= end:
-                raise InputError(Notice(f"--from ({start:g}°) must be less than --to ({end:g}°)",
-                                        "option_from_to", start=start, end=end))
+                raise InputError(Notice.of(
+                    "option_from_to", "--from ({start:g}°) must be less than --to ({end:g}°)",
+                    start=start, end=end))
             _check_at(at, 360.0)
             blame = given
 

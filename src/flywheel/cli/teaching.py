@@ -39,14 +39,16 @@ def variants_command(
     from flywheel.errors import Notice
 
     if not 1 <= count <= 9999:
-        fail(Notice(f"--count: {count} is not allowed (allowed: 1…9999)", "option_not_allowed",
-                    option="--count", got=count, allowed="1…9999"))
+        fail(Notice.of(
+            "option_not_allowed", "--count: {got} is not allowed (allowed: 1…9999)",
+            option="--count", got=count, allowed="1…9999"))
     if seed is not None and not 0 <= seed < 2 ** 63:
-        fail(Notice(f"--seed: {seed} is not allowed (allowed: 0 … 2^63 − 1)",
-                    "option_not_allowed", option="--seed", got=seed, allowed="0 … 2^63 − 1"))
+        fail(Notice.of(
+            "option_not_allowed", "--seed: {got} is not allowed (allowed: 0 … 2^63 − 1)",
+            option="--seed", got=seed, allowed="0 … 2^63 − 1"))
     if points < 36:
-        fail(Notice(f"--points: {points} is too few (allowed: 36 or more)", "points_too_few",
-                    n=points))
+        fail(Notice.of(
+            "points_too_few", "--points: {n} is too few (allowed: 36 or more)", n=points))
     check_lang(lang)
     if sheets_format not in ("both", "html", "pdf"):
         fail(choice("--sheets-format", sheets_format, "a sheet format", "both, html, pdf"))
@@ -163,12 +165,13 @@ def grade_command(
     if not report.students:                 # an error: one line, nothing else written
         if report.problems:
             first = report.problems[0].said()
-            fail(Notice(f"nothing could be graded ({len(report.problems)} problem(s); the "
-                        f"first: {first})", "nothing_graded", n=len(report.problems),
-                        detail=first))
+            fail(Notice.of(
+                "nothing_graded", "nothing could be graded ({n} problem(s); the first: {detail})",
+                n=len(report.problems), detail=first))
         files = ", ".join(report.files) or ", ".join(map(str, answers))
-        fail(Notice(f"{files}: nothing could be graded: no filled-in student rows (a row needs "
-                    "a student name and a variant)", "no_student_rows", files=files))
+        fail(Notice.of(
+            "no_student_rows", "{files}: nothing could be graded: no filled-in student rows (a row "
+            "needs a student name and a variant)", files=files))
     if out is not None:
         text = report_csv(report)
         if csv_style == "excel-ru":

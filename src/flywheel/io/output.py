@@ -36,8 +36,9 @@ _WRITTEN_BY = "flywheel"
 def cannot_write(option: str, path, exc: OSError) -> Notice:
     """The error of a file or folder the system refuses to write (``exc.strerror``, the
     system's own words; its errno lets a renderer say them in another language)."""
-    return Notice.of("run_cannot_write", "{option} {path}: cannot be written ({reason})",
-                     option=option, path=str(path), reason=exc.strerror, errno=exc.errno)
+    return Notice.of(
+        "run_cannot_write", "{option} {path}: cannot be written ({reason})", option=option,
+        path=str(path), reason=exc.strerror, errno=exc.errno)
 
 
 def _sha256(path: Path) -> str:
@@ -191,8 +192,8 @@ def write_folder(target: Path, build, marker: str, kind: str = "output",
         raise InputError(cannot_write("--out", target, exc)) from None
     if a_file is not None:
         raise InputError(Notice.of(
-            "out_is_a_file", "--out {target}: {file} is a file, not a folder",
-            target=str(target), file=str(a_file)))
+            "out_is_a_file", "--out {target}: {file} is a file, not a folder", target=str(target),
+            file=str(a_file)))
     earlier: _Earlier | None = None
     if target.is_dir() and any(target.iterdir()):
         earlier = _read_manifest(target, kind)
@@ -268,12 +269,13 @@ def _merge(tmp: Path, target: Path, earlier: _Earlier, new: dict[str, str], mani
                 d = d.parent
     write_file(target / MANIFEST, manifest)
     if edited:
-        notes.append(Notice.of("out_kept", "{target}: kept the files you edited since the earlier "
-                               "run: {files}", target=str(target), files=", ".join(edited)))
+        notes.append(Notice.of(
+            "out_kept", "{target}: kept the files you edited since the earlier run: {files}",
+            target=str(target), files=", ".join(edited)))
     if removed:
-        notes.append(Notice.of("out_removed", "{target}: removed {n} file(s) of the earlier run "
-                               "that this run does not write: {files}", target=str(target),
-                               n=len(removed), files=_summarise(removed)))
+        notes.append(Notice.of(
+            "out_removed", "{target}: removed {n} file(s) of the earlier run that this run does "
+            "not write: {files}", target=str(target), n=len(removed), files=_summarise(removed)))
 
 
 def _summarise(names: list[str], n: int = 4) -> str:
@@ -290,9 +292,9 @@ def write_file(path: Path, text: str, option: str = "--out", expected: str = "a 
     except OSError as exc:                  # a name too long for the system
         raise InputError(cannot_write(option, path, exc)) from None
     if is_dir:
-        raise InputError(Notice.of("option_is_a_folder", "{option} {path}: is a folder, expected "
-                                   "{expected}", option=option, path=str(path),
-                                   expected=expected))
+        raise InputError(Notice.of(
+            "option_is_a_folder", "{option} {path}: is a folder, expected {expected}",
+            option=option, path=str(path), expected=expected))
     tmp = None
     try:
         path.parent.mkdir(parents=True, exist_ok=True)

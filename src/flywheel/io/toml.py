@@ -15,11 +15,12 @@ def read_toml(path, what: str = "a TOML case file") -> dict:
     try:
         text = path.read_bytes().decode("utf-8-sig")   # a BOM (Windows editors) is no error
     except FileNotFoundError:
-        raise CaseFileError(Notice.of("no_such_file", "{path}: no such file",
-                                      path=str(path))) from None
+        raise CaseFileError(Notice.of(
+            "no_such_file", "{path}: no such file", path=str(path))) from None
     except IsADirectoryError:
-        raise CaseFileError(Notice.of("is_a_folder", "{path}: is a folder, expected {what}",
-                                      path=str(path), what=what)) from None
+        raise CaseFileError(Notice.of(
+            "is_a_folder", "{path}: is a folder, expected {what}", path=str(path), what=what
+        )) from None
     except UnicodeDecodeError as exc:
         raise CaseFileError(Notice.of(
             "not_utf8", "{path}: not UTF-8 text ({reason} at byte {byte})", path=str(path),
@@ -31,5 +32,6 @@ def read_toml(path, what: str = "a TOML case file") -> dict:
     try:
         return tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
-        raise CaseFileError(Notice.of("toml_syntax", "{path}: TOML syntax error: {detail}",
-                                      path=str(path), detail=str(exc))) from None
+        raise CaseFileError(Notice.of(
+            "toml_syntax", "{path}: TOML syntax error: {detail}", path=str(path), detail=str(exc)
+        )) from None

@@ -90,9 +90,9 @@ def _positive(v) -> bool:
 def parse_key(doc, source: str = "<key>") -> Key:
     """Check a parsed answers.json document (one CaseFileError line if it is not a key)."""
     if not isinstance(doc, dict):
-        raise CaseFileError(led(f"{source}: ", Notice(
-            f"must be a JSON object {{variant: {{answer: value}}}} (got {type(doc).__name__})",
-            "key_not_object", type=type(doc).__name__)))
+        raise CaseFileError(led(f"{source}: ", Notice.of(
+            "key_not_object", "must be a JSON object {{variant: {{answer: value}}}} (got {type})",
+            type=type(doc).__name__)))
     if "variants" in doc:
         table = doc["variants"]
         where = "variants"
@@ -178,7 +178,7 @@ def parse_number(text: str) -> float:
         t = t.replace(",", ".")
     x = float(t)
     if not math.isfinite(x):
-        raise ValueError(Notice(f"{text!r} is not finite", "grade_not_finite", value=text))
+        raise ValueError(Notice.of("grade_not_finite", "{value!r} is not finite", value=text))
     return x
 
 
@@ -328,25 +328,27 @@ def decode_sheet(data: bytes) -> tuple[str, str]:
             try:
                 return data.decode(enc), enc.replace("-sig", "")
             except UnicodeDecodeError:
-                raise SheetError(Notice(f"starts with a {enc} byte-order mark but is not {enc} "
-                                        "text", "sheet_bad_bom", enc=enc)) from None
+                raise SheetError(Notice.of(
+                    "sheet_bad_bom", "starts with a {enc} byte-order mark but is not {enc} text",
+                    enc=enc)) from None
     try:
         text = data.decode("utf-8")
     except UnicodeDecodeError:
         pass
     else:
         if "\x00" in text:
-            raise SheetError(Notice("binary data, not a CSV text file", "sheet_binary"))
+            raise SheetError(Notice.of("sheet_binary", "binary data, not a CSV text file"))
         return text, "utf-8"
     from charset_normalizer import from_bytes
 
     best = from_bytes(data, cp_isolation=list(ENCODINGS)).best()
     if best is None:
-        raise SheetError(Notice("binary data, not a CSV text file (no text encoding fits: "
-                                "UTF-8, UTF-16, cp1251, cp866, koi8-r)", "sheet_no_encoding"))
+        raise SheetError(Notice.of(
+            "sheet_no_encoding", "binary data, not a CSV text file (no text encoding fits: UTF-8, "
+            "UTF-16, cp1251, cp866, koi8-r)"))
     text = str(best)
     if "\x00" in text:
-        raise SheetError(Notice("binary data, not a CSV text file", "sheet_binary"))
+        raise SheetError(Notice.of("sheet_binary", "binary data, not a CSV text file"))
     return text, best.encoding
 
 
@@ -354,9 +356,9 @@ def _read_text(path: Path) -> str:
     """The text of a sheet (see :func:`decode_sheet`); SheetError if too large or not text."""
     size = path.stat().st_size
     if size > MAX_SHEET_BYTES:
-        raise SheetError(Notice(f"{size / 1e6:.0f} MB is too large for an answer sheet (allowed: "
-                                f"up to {MAX_SHEET_BYTES / 1e6:.0f} MB)", "sheet_too_large",
-                                mb=size / 1e6, top=MAX_SHEET_BYTES / 1e6))
+        raise SheetError(Notice.of(
+            "sheet_too_large", "{mb:.0f} MB is too large for an answer sheet (allowed: up to "
+            "{top:.0f} MB)", mb=size / 1e6, top=MAX_SHEET_BYTES / 1e6))
     return decode_sheet(path.read_bytes())[0]
 
 
@@ -378,14 +380,14 @@ def sheet_files(paths) -> tuple[list[Path], list[Problem]]:
         if p.is_dir():
             found = sorted(q for q in p.iterdir() if q.suffix.lower() == ".csv" and q.is_file())
             if not found:
-                problems.append(Problem(str(p), None, Notice("folder without *.csv files",
-                                                             "sheet_folder_empty")))
+                problems.append(Problem(str(p), None, Notice.of(
+                    "sheet_folder_empty", "folder without *.csv files")))
             files += found
         elif p.exists():
             files.append(p)
         else:
-            problems.append(Problem(str(p), None, Notice("no such file or folder",
-                                                         "sheet_missing")))
+            problems.append(Problem(str(p), None, Notice.of(
+                "sheet_missing", "no such file or folder")))
     return files, problems
 
 
@@ -397,15 +399,14 @@ def grade_sheet(key: Key, path, tolerance: float | None = None
     try:
         text = _read_text(path)
     except OSError as exc:
-        return [], [Problem(name, None, Notice(f"cannot be read ({exc.strerror})",
-                                               "sheet_unreadable", reason=exc.strerror,
-                                               errno=exc.errno))]
+        return [], [Problem(name, None, Notice.of(
+            "sheet_unreadable", "cannot be read ({reason})", reason=exc.strerror, errno=exc.errno))]
     except SheetError as exc:
         return [], [Problem(name, None, said(exc))]
     lines = text.splitlines()
     if not lines or not lines[0].strip():
-        return [], [Problem(name, None, Notice("empty file (expected a header "
-                                               "student,variant,…)", "sheet_empty"))]
+        return [], [Problem(name, None, Notice.of(
+            "sheet_empty", "empty file (expected a header student,variant,…)"))]
     try:
         rows = list(csv.reader(io.StringIO(text), delimiter=_delimiter(lines[0])))
     except csv.Error as exc:
@@ -425,15 +426,15 @@ def grade_sheet(key: Key, path, tolerance: float | None = None
     known = set(key.answers) | {a for v in key.variants.values() for a in v}
     unknown = [h for h in columns if h not in known]
     if unknown:
-        problems.append(Problem(name, 1, Notice(
-            f"column(s) {', '.join(map(repr, unknown))} are not answers of the key (ignored; "
-            f"answers: {', '.join(key.answers)})", "sheet_unknown_columns",
-            columns=', '.join(map(repr, unknown)), answers=', '.join(key.answers))))
+        problems.append(Problem(name, 1, Notice.of(
+            "sheet_unknown_columns", "column(s) {columns} are not answers of the key (ignored; "
+            "answers: {answers})", columns=', '.join(map(repr, unknown)),
+            answers=', '.join(key.answers))))
     absent = [a for a in key.answers if a not in columns]
     if absent:
-        problems.append(Problem(name, 1, Notice(
-            f"no column for {', '.join(map(repr, absent))}: those answers count as not given",
-            "sheet_absent_columns", columns=', '.join(map(repr, absent)))))
+        problems.append(Problem(name, 1, Notice.of(
+            "sheet_absent_columns", "no column for {columns}: those answers count as not given",
+            columns=', '.join(map(repr, absent)))))
     graded: list[StudentGrade] = []
     for n, row in enumerate(rows[1:], start=2):
         cells = [c.strip() for c in row]
@@ -445,8 +446,8 @@ def grade_sheet(key: Key, path, tolerance: float | None = None
         if not student and not any(given.values()):
             continue  # a row of the blank sheet nobody filled in
         if not student:
-            problems.append(Problem(name, n, Notice("no student name; row skipped",
-                                                    "row_no_student")))
+            problems.append(Problem(name, n, Notice.of(
+                "row_no_student", "no student name; row skipped")))
             continue
         who = f"{student!r}: "
         vid = key.find(variant)
@@ -502,18 +503,17 @@ def grade(key: Key, paths, tolerance: float | None = None, progress=None) -> Rep
     students: list[StudentGrade] = []
     for i, f in enumerate(files):
         if len(students) >= MAX_ROWS:
-            problems += [Problem(str(g), None, Notice(
-                f"not graded: the run has reached {MAX_ROWS} student rows (grade the sheets in "
-                "parts)", "run_rows_reached", top=MAX_ROWS))
+            problems += [Problem(str(g), None, Notice.of(
+                "run_rows_reached", "not graded: the run has reached {top} student rows (grade the "
+                "sheets in parts)", top=MAX_ROWS))
                          for g in files[i:]]
             break
         s, p = grade_sheet(key, f, tolerance)
         if len(students) + len(s) > MAX_ROWS:
             keep = MAX_ROWS - len(students)
-            p.append(Problem(str(f), s[keep].row, Notice(
-                f"this row and the {len(s) - keep - 1} after it not graded: at most {MAX_ROWS} "
-                "student rows per run (grade the sheets in parts)", "run_rows_cut",
-                n=len(s) - keep - 1, top=MAX_ROWS)))
+            p.append(Problem(str(f), s[keep].row, Notice.of(
+                "run_rows_cut", "this row and the {n} after it not graded: at most {top} student "
+                "rows per run (grade the sheets in parts)", n=len(s) - keep - 1, top=MAX_ROWS)))
             s = s[:keep]
         students += s
         problems += p
@@ -525,10 +525,10 @@ def grade(key: Key, paths, tolerance: float | None = None, progress=None) -> Rep
     for s in students:
         if s.student in latest:
             first = latest[s.student]
-            problems.append(Problem(s.file, s.row, Notice(
-                f"{s.student!r} appears again (first at {first.file}, row {first.row}): the "
-                "later row counts, the earlier is not graded", "row_again",
-                student=s.student, file=first.file, row=first.row)))
+            problems.append(Problem(s.file, s.row, Notice.of(
+                "row_again", "{student!r} appears again (first at {file}, row {row}): the later "
+                "row counts, the earlier is not graded", student=s.student, file=first.file,
+                row=first.row)))
         latest[s.student] = s
     order = list(dict.fromkeys(s.student for s in students))
     students = [latest[name] for name in order]
