@@ -18,16 +18,19 @@ from typer.testing import CliRunner
 
 from flywheel.cli import app
 from flywheel.errors import Notice
-from flywheel.render import nomenclature as nm
+from flywheel.render import library_ru, message_params
+from flywheel.render import messages as nm
 
 SRC = Path(__file__).resolve().parents[1] / "src" / "flywheel"
 CASES = Path(__file__).resolve().parents[1] / "cases"
 runner = CliRunner()
 # fields a template may take that render/nomenclature.py derives from the Notice's own
-DERIVED = {"target", "shape_ru", "material_ru", "files_ru"} | nm._MSGS_DERIVED
+DERIVED = message_params.DERIVED
+# the Russian templates of the catalogue (locale/ru/LC_MESSAGES/flywheel.po) by the Notice's code
+RU = {code: nm.entry(code, "ru") for code in nm.notice_codes()}
 # the errors io/schema.py.describe makes from pydantic's (code made from pydantic's error type;
 # fields: pydantic's ctx and the value given)
-DESCRIBED = {c for c in nm.MESSAGES_RU if c.startswith("pydantic_")} | {
+DESCRIBED = {c for c in RU if c.startswith("pydantic_")} | {
     "missing", "not_a_table", "not_finite_number"}
 
 
@@ -35,19 +38,22 @@ def _notices():
     """(file, code, keyword names) of every Notice(…) call in the package."""
     for path in SRC.rglob("*.py"):
         for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
-            if (isinstance(node, ast.Call) and getattr(node.func, "id", None) == "Notice"
-                    and len(node.args) >= 2 and isinstance(node.args[1], ast.Constant)):
-                yield path.name, node.args[1].value, {k.arg for k in node.keywords}
+            if not isinstance(node, ast.Call) or len(node.args) < 2:
+                continue
+            code = (node.args[0] if ast.unparse(node.func) == "Notice.of" else node.args[1]
+                    if getattr(node.func, "id", None) == "Notice" else None)
+            if isinstance(code, ast.Constant):
+                yield path.name, code.value, {k.arg for k in node.keywords}
 
 
 def test_every_notice_has_a_russian_template_with_its_fields():
     found = list(_notices())
     assert len(found) >= 15
     for file, code, keys in found:
-        assert code in nm.MESSAGES_RU, (file, code)
-        fields = {f for _, f, _, _ in string.Formatter().parse(nm.MESSAGES_RU[code]) if f}
+        assert code in RU, (file, code)
+        fields = {f for _, f, _, _ in string.Formatter().parse(RU[code]) if f}
         assert fields <= keys | DERIVED, (file, code, fields - keys)
-    assert {c for _, c, _ in found} | DESCRIBED == set(nm.MESSAGES_RU)
+    assert {c for _, c, _ in found} | DESCRIBED == set(RU)
 
 
 def test_a_notice_is_its_english_text_and_survives_pickling():
@@ -119,290 +125,360 @@ def test_task2_and_aggregate_written_lines_are_russian(tmp_path):
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 import test_bad_inputs as bad  # noqa: E402
 
-# catalogue entries (tests/bad_inputs/catalogue.toml) run again with --lang ru: the Russian words
-# the one `ошибка:` line must hold (besides the entry's file and field path)
-RUSSIAN_ERRORS = {
-    "run/missing-file": ["нет такого файла"],
-    "run/folder-given-as-case": ["это папка, а нужен файл случая TOML"],
-    "run/empty-file": ["machine: не задано обязательное поле"],
-    "run/binary-png": ["текст не в кодировке UTF-8"],
-    "run/toml-decimal-comma": ["синтаксическая ошибка TOML: после инструкции ожидается перевод "
-                               "строки или конец документа (строка 11, столбец 14)"],
-    "check/toml-syntax-error": ["синтаксическая ошибка TOML: в конце объявления таблицы "
-                                "ожидается ']' (строка 33, столбец 8)"],
-    "aggregate/toml-syntax-error": ["синтаксическая ошибка TOML: недопустимый первый символ "
-                                    "ключа (строка 38, столбец 24)"],
-    "variants/template-toml-syntax-error": ["синтаксическая ошибка TOML: после инструкции"],
-    "run/misspelt-table": ["machin: неизвестный ключ; может быть, 'machine'?", "допустимы:"],
-    "run/speed-quoted": ["machine.speed_rps: должно быть числом (задано '10.0')"],
-    "run/speed-nan": ["machine.speed_rps: должно быть конечным числом (задано nan)"],
-    "run/speed-negative": ["machine.speed_rps: должно быть больше 0 (задано -10.0)"],
-    "run/speed-1e308": ["machine.speed_rps", "вне допустимого диапазона"],
-    "run/balance-unknown": ["machine.balance: должно быть одним из: 'driving' или 'resistance'"],
-    "run/machine-not-a-table": ["machine: должно быть таблицей ключей"],
-    "run/rrr-cannot-assemble": ["dyads[0]: группа B (RRR, звенья 2–3) не собирается при угле "
-                                "кривошипа φ = "],
-    "run/rpr-rocker-pivot-on-crank-circle": ["dyads[0]: группа 3 (RPR, кулиса 3) имеет особое "
-                                             "положение"],
-    "run/task2-case": ["это случай задачи 2", "используйте `flywheel task2 --case"],
-    "run/out-is-a-file": ["— это файл, а не папка"],
-    "run/points-zero": ["--points: 0 вне допустимого диапазона (допустимо: 36 … 100000"],
-    "task2/md-negative": ["--md должно быть положительным (задано -15 Н·м)"],
-    "run/csv-dialect-unknown": ["--csv: 'excel' — недопустимое значение (допустимы: plain, "
-                                "excel-ru)"],
-    "run/dpi-too-small": ["--dpi: 10 вне допустимого диапазона (допустимо: 50 … 600)"],
-    "task2/report-without-out": ["--report пишет в папку вывода: укажите также --out DIR"],
-    "aggregate/report-unknown": ["--report: 'html5' — недопустимое значение"],
-    "grade/tolerance-negative": ["--tolerance: должно быть положительным числом (задано -0.01)"],
-    "variants/count-zero": ["--count: 0 — недопустимое значение (допустимо: 1…9999)"],
-    "run/delta-missing": ["machine.delta: не задано: укажите machine.delta"],
-    "run/crank-missing": ["(верхний уровень): задайте что-то одно: [crank] (механизм) или "
-                          "[tabulated]"],
-    "task2/case-delta-two": ["flywheel.delta: должно лежать между 0 и 2 (задано 2)"],
-    "grade/key-answer-a-string": ["variants.01.J_required: должно быть конечным числом (задано "
-                                  "'30.2')"],
-    "task2/case-misspelt-key": ["неизвестный ключ"],
-    "aggregate/misspelt-key": ["неизвестный ключ"],
-    "variants/template-does-not-solve": ["сам шаблон не удаётся рассчитать", "не собирается"],
-    "variants/template-does-not-validate": ["machine.delta: должно быть больше 0",
-                                            "[проверено как случай для flywheel run]"],
-}
-# --- msgs2 --- the cross-field checks of the case files, the non-finite policy, --t-end, --at,
-# --plot, the variants template's paths and answers, the answer key (json's own words stay English)
-RUSSIAN_ERRORS.update({
-    "run/aggregate-case": ['это случай агрегата (упругие муфты), а не случай для'],
-    "run/variants-template": ['это шаблон вариантов, а не случай для flywheel run:'],
-    "run/two-speeds": ['задайте что-то одно: speed_rps или speed_rpm'],
-    "run/no-speed": ['задайте что-то одно: speed_rps или speed_rpm'],
-    "run/no-crank-length": ['не задано: укажите crank.length или design.mean_piston_speed'],
-    "run/ground-point-undefined": ["точка 'D' используется раньше, чем задана (заданы: A, O)"],
-    "run/dyads-missing": ["звено '2' не задано (звенья: 1)"],
-    "run/dyad-kind-unknown": ['должно быть одним из: RRP, RRR, RPR'],
-    "run/dyad-from-undefined": ["точка 'Z' используется раньше, чем задана (заданы: A, B, O,"],
-    "run/dyad-joint-reused": ["имя точки 'B' уже занято"],
-    "run/dyad-link-reused": ["имя звена '2' уже занято"],
-    "run/point-on-undefined-link": ["звено '9' не задано (звенья: 1, 2, 3, 4, 5)"],
-    "run/point-from-undefined-point": ["точка 'Q' нигде не задана"],
-    "run/point-to-and-distance": ['задайте что-то одно: `to` (с fraction) или `distance` (с'],
-    "run/link-centroid-undefined": ["точка 'S9' не задана"],
-    "run/link-undefined": ["нет звена '7' (звенья: 1, 2, 3)"],
-    "run/link-mass-without-centroid": ['у звена с массой должен быть задан `centroid`'],
-    "run/cylinder-table-one-short": ['нужно 11 значений, по одному на каждое s (задано 10)'],
-    "run/cylinder-s-not-increasing": ['значения должны строго возрастать'],
-    "run/cylinder-piston-undefined": ['не ползун группы RRP (ползуны: 3, 5)'],
-    "run/cylinder-pressure-below-vacuum": ['даёт -17.64 МПа избыточного давления, ниже абсолютного'],
-    "run/cylinder-pressure-above-p-max": ['больше 1: p_max = 882000 Па — наибольшее давление диаграммы'],
-    "run/given-flywheel-too-small-no-steady-motion": ['заданный маховик (J = 0.001 кг·м²) слишком мал для этих'],
-    "run/force-on-undefined-slider": ['не ползун группы RRP'],
-    "run/force-range-reversed": ['должно быть 0 ≤ from < to ≤ 1 (задано 0.95, 0.05)'],
-    "run/force-name-duplicate": ["имя нагрузки 'cutting' встречается дважды"],
-    "run/couple-on-undefined-link": ["нет звена '8'"],
-    "run/tabulated-row-one-short": ['нужно 13 значений, по одному на каждое положение'],
-    "run/tabulated-positions-not-increasing": ['после 60°: положения должны возрастать'],
-    "run/tabulated-force-at-undefined-point": ["аналогов скоростей точки 'B9' нет в [tabulated.points]"],
-    "run/tabulated-link-at-undefined-point": ["аналогов скоростей точки 'B5' нет в [tabulated.points]"],
-    "run/at-nan": ['не конечный угол в градусах'],
-    "run/at-inf": ['не конечный угол в градусах'],
-    "run/transients-rundown-too-long": ['выбег для --transients занял бы около 1.51e+03 циклов'],
-    "run/transients-startup-too-long": ['разгон для --transients занял бы около 8.74e+03 циклов'],
-    "check/task2-case": ['это случай задачи 2 (заданные графики моментов), а не'],
-    "check/aggregate-chain": ['это случай агрегата (упругие муфты), а не случай для'],
-    "check/point-from-undefined": ["точка 'X' нигде не задана"],
-    "task2/profile-unknown": ["должно быть triangle или rectangle (задано 'square')"],
-    "task2/md-1e308": ['не конечное число (баланс работ за цикл даёт момент'],
-    "task2/to-beyond-the-cycle": ['и to должны лежать в пределах 0…360° (задано 90°, 720°)'],
-    "task2/case-and-options": ['берёт данные из файла; уберите --md'],
-    "task2/plot-is-a-folder": ['это папка, а нужен файл изображения'],
-    "task2/case-run-case": ['это случай для flywheel run, а не случай задачи 2 (заданные'],
-    "task2/case-aggregate-case": ['это случай агрегата (упругие муфты), а не случай задачи 2'],
-    "task2/case-variants-template": ['это шаблон вариантов, а не случай задачи 2 (заданные'],
-    "task2/case-two-speeds": ['задайте что-то одно: omega0, omega0_rpm, mean, mean_rpm или'],
-    "task2/case-J-negative": ['должно быть положительным (задано -12 кг·м²)'],
-    "task2/case-mass-without-radius": ['и radius_of_gyration задаются вместе (J = m·k²)'],
-    "task2/case-driving-kind-unknown": ["неизвестный вид 'linear' (допустимы: constant, points,"],
-    "task2/case-value-not-balance": ['должно быть числом, "balance" или "power" (задано'],
-    "task2/case-two-balances": ['может заменять лишь одно значение (другое уже задано так:'],
-    "task2/case-points-go-back": ['угол 200° идёт после 270°: углы не должны убывать'],
-    "task2/case-points-three-at-one-angle": ['третье значение при 90°: у скачка их два (значение до и'],
-    "task2/case-points-do-not-reach-the-cycle-end": ['должно охватывать цикл 0…360° (охвачено 0…300°)'],
-    "task2/case-triangle-reversed": ['нужно 0 ≤ from_deg < to_deg ≤ 360 (задано 300, 270)'],
-    "task2/case-trapezoid-top-outside": ['нужно from_deg ≤ top_from_deg ≤ top_to_deg ≤ to_deg'],
-    "task2/case-harmonic-lengths-differ": ['задано порядков гармоник: 2, а членов ряда: 1'],
-    "task2/case-diagram-areas-do-not-close": ['сумма 1, а не 0: за цикл площади над средней линией и под'],
-    "task2/case-diagram-and-graphs": ['задайте что-то одно: [diagram] или [driving] и [resistance]'],
-    "task2/case-diagram-scale-zero": ['должно быть положительным (задано 0)'],
-    "task2/case-driving-1e308": ['не конечное число (баланс работ за цикл даёт момент'],
-    "aggregate/empty-file": ['не задано: задайте двухмассовый агрегат ([motor],'],
-    "aggregate/run-case": ['это случай для flywheel run, а не случай агрегата (упругие'],
-    "aggregate/task2-case": ['это случай задачи 2 (заданные графики моментов), а не'],
-    "aggregate/variants-template": ['это шаблон вариантов, а не случай агрегата (упругие муфты):'],
-    "aggregate/motor-J-missing": ['не задано обязательное поле (J_Д, момент инерции ротора'],
-    "aggregate/motor-slip-without-torque": ['задайте что-то одно: starting_torque или rated_torque с'],
-    "aggregate/coupling-c-and-d-L": ['задайте что-то одно: c или d и L (с G)'],
-    "aggregate/coupling-missing": ['не задано: двухмассовому агрегату нужны [motor], [coupling]'],
-    "aggregate/flywheel-on-II-without-i21": ['не задано: маховику на валу II нужно i21 = ω_II/ω_I'],
-    "aggregate/J-III-missing": ['не задано: укажите J_III (J_пр.III, кг·м²) или J_III_0 с'],
-    "aggregate/one-rotor": ['цепочке нужно не меньше двух роторов (задано 1)'],
-    "aggregate/shafts-one-short": ['роторов: 3, поэтому валов между ними нужно 2 вала (задано 1)'],
-    "aggregate/rotor-names-repeat": ['имена роторов должны различаться'],
-    "aggregate/shaft-G-missing": ['не задано: с d и L нужен модуль сдвига G (например, 8.0e10'],
-    "aggregate/load-without-motor": ['не задано: для [load] нужен [motor] на первом роторе'],
-    "aggregate/chain-and-two-mass": ['случай — либо двухмассовый агрегат ([coupling], [machine]),'],
-    "aggregate/t-end-zero": ['с вне допустимого диапазона (допустимо: 0 … 600 с; разгон'],
-    "aggregate/t-end-nan": ['с вне допустимого диапазона (допустимо: 0 … 600 с; разгон'],
-    "aggregate/t-end-1e6": ['с вне допустимого диапазона (допустимо: 0 … 600 с; разгон'],
-    "aggregate/t-end-too-many-steps": ['разгон потребовал бы около 1.88e+07 шагов интегрирования'],
-    "aggregate/startup-stiff-motor-t-end": ['разгон потребовал бы около 3.99e+06 шагов интегрирования'],
-    "aggregate/plot-without-motor": ['требует [motor]: у цепочки без двигателя нет движения во'],
-    "variants/points-too-few": ['слишком мало (допустимо: 36 и больше)'],
-    "variants/points-too-many": ['сам шаблон не удаётся рассчитать: --points: 100000000 вне'],
-    "variants/template-empty": ['нет таблицы [variants] (в ней сказано, что менять и какие'],
-    "variants/no-variants-table": ['нет таблицы [variants] (в ней сказано, что менять и какие'],
-    "variants/path-misspelt": ["нет в [speed] (там есть: omega0); может быть, 'omega0'? —"],
-    "variants/path-into-a-missing-table": ['нет в верхнем уровне (там есть: title, source, cycle_deg,'],
-    "variants/answers-missing": ['не задано (ключи результатов для ключа ответов, например'],
-    "variants/answers-empty": ['должно быть непустым списком имён результатов (задано [])'],
-    "variants/answer-misspelt": ['не является результатом (числовые результаты: omega_max,'],
-    "variants/answer-not-a-number": ['не является результатом (числовые результаты: omega_max,'],
-    "variants/min-above-max": ['меньше min (30.0)'],
-    "variants/step-zero": ['должно быть положительным (задано 0.0)'],
-    "variants/values-empty": ['должно быть непустым списком (задано [])'],
-    "variants/spec-a-bare-number": ['должно быть таблицей { values = [...] } или { min = …, max'],
-    "variants/tolerance-for-unknown-answer": ['не является одним из ответов (допустимы: M_C, omega_max,'],
-    "variants/every-draw-fails": ['вариант 1: 50 попыток подряд не прошли проверку или расчёт;'],
-    "grade/key-missing": ['нет такого файла'],
-    "grade/key-folder": ['это папка, а нужен answers.json команды flywheel variants'],
-    "grade/key-binary": ['текст не в кодировке UTF-8 (invalid start byte в байте 0)'],
-    "task2/plot-unknown-format": ["не удаётся записать изображение (формат 'xyz' не "
-                                  "поддерживается (поддерживаются: "],
-    "task2/plot-in-a-missing-folder": ["не удаётся записать изображение (нет такого файла или "
-                                       "папки)"],
-    "grade/key-not-json": ['не JSON: ожидается имя свойства в двойных кавычках (строка'],
-    "grade/key-truncated": ['не JSON: незакрытая строка, её начало (строка 3, столбец'],
-    "grade/key-a-list": ['должно быть объектом JSON {вариант: {ответ: значение}}'],
-    "grade/key-no-variants": ['должно быть непустым объектом {вариант: {ответ: значение}}'],
-    "grade/key-tolerances-zero": ['должно быть объектом {ответ: положительное число} (задано'],
-    "grade/key-is-a-case-file": ['не JSON: ожидается значение (строка 1, столбец 1)'],
-    "grade/key-and-sheet-swapped": ['не JSON: ожидается значение (строка 1, столбец 1)'],
-    "grade/out-is-a-folder": ['это папка, а нужно имя файла CSV'],
-    "grade/gradebook-is-a-folder": ['это папка, а нужно имя файла CSV'],
-    "grade/out-inside-a-file": ['не существует (допустимо: имя файла CSV в существующей папке)'],
-    "grade/sheet-blank-rows-only": ['нечего проверить: нет заполненных строк студентов (в строке'],
-    "run/rim-share-zero": ['не доля J маховика (допустимо: 0 < share ≤ 1)'],
-    "run/rim-share-above-one": ['не доля J маховика (допустимо: 0 < share ≤ 1)'],
-    "run/rim-speed-above-the-allowable-stress": ['м/с даёт окружное напряжение ρ·v² = 49.92 МПа больше'],
-    "run/rim-width-and-ratio": ['задайте что-то одно: width или width_to_thickness'],
-    "run/rim-share-twice": ['при [flywheel.rim] доля задаётся как flywheel.rim.share'],
-    "run/rim-thicker-than-its-diameter": ['обод получается толщиной 3009 м при среднем диаметре'],
-    "task2/rim-share-zero": ['не доля J маховика (допустимо: 0 < share ≤ 1)'],
-    "task2/rim-speed-above-the-allowable-stress": ['м/с даёт окружное напряжение ρ·v² = 11.6 МПа больше'],
-    "run/given-flywheel-mass-without-radius": ['не задано: mass и radius_of_gyration задаются вместе (J ='],
-    "run/given-flywheel-two-forms": ['заданный маховик — что-то одно из: J, mass с'],
-    "run/given-rim-inner-above-outer": ['м — не меньше D = 0.5 м'],
-    "run/pins-at-the-same-angle": ["ставит шейку 'A3' туда, где уже шейка (crank.pins[0]) 'A2'"],
-    "run/firing-order-misses-a-cylinder": ["нет цилиндра '2' (порядок работы перечисляет каждый"],
-    "run/firing-order-does-not-fit-the-crankshaft": ['не укладывается в один цикл 720°: цилиндр 4 (позиция 4)'],
-    "run/four-stroke-diagram-on-a-360-cycle": ['четырёхтактная диаграмма занимает 720° угла кривошипа, а'],
-    "run/strokes-do-not-meet": ['начинается с p/p_max = 0.5 при s = 0, где compression'],
-    "run/animate-a-tabulated-case": ['задаёт кинематику таблицей ([tabulated]): анимировать'],
-    "aggregate/fixed-end-without-a-shaft": ['не задано: неподвижный конец rotors[0] связан валом с'],
-    "grade/gradebook-in-a-missing-folder": ['не существует (допустимо: имя файла CSV в существующей папке)'],
-    "duty-cycle/speed-drop-beyond-the-speed": ['вне допустимого диапазона: скорость упала бы до нуля или'],
-    "duty-cycle/min-speed-above-the-max": ['не меньше max_rpm = 225 (допустимо: 0 < min_rpm < max_rpm)'],
-    "duty-cycle/given-flywheel-would-stop": ['маховик слишком мал: чтобы отдать 97000 Дж (ΔE) на каждую'],
-})
-# --- msgs_duty --- the duty cycle's case checks and solution, the variants template's paths,
-# ranges and answers, the answer key's variants and answers
-RUSSIAN_ERRORS.update({
-    "duty-cycle/hole-without-thickness": ["operation.thickness: не задано: для hole_diameter "
-                                          "нужна толщина листа (A = π·d·t)"],
-    "duty-cycle/sheared-area-with-the-energy": ["operation.hole_diameter: задаётся только "
-                                                "вместе с energy_per_area или shear_strength"],
-    "duty-cycle/shape-with-the-energy": ["operation.shape: задаётся только вместе с force или "
-                                         "shear_strength"],
-    "duty-cycle/stroke-without-thickness": ["operation.thickness: не задано: ход задаёт долю "
-                                            "цикла t/(2·s)"],
-    "duty-cycle/stroke-shorter-than-half-the-thickness": [
-        "0.01 м — меньше половины толщины 0.032 м", "(допустимо: stroke ≥ 0.016 м)"],
-    "duty-cycle/delta-E-above-the-work": ["20000 Дж — больше работы операции E = 15000 Дж "
-                                          "(допустимо: ΔE ≤ E)"],
-    "duty-cycle/cycle-with-delta-E-alone": ["cycle: требует работы одной операции",
-                                            "при одном delta_E подбирается только маховик"],
-    "duty-cycle/speeds-in-two-units": ["задайте скорости в одних единицах (задано max_rpm, "
-                                       "min_omega)"],
-    "duty-cycle/given-flywheel-two-speeds": ["при заданном маховике задайте одну скорость",
-                                             "(задано max_rpm, min_rpm)"],
-    "duty-cycle/given-mass-without-radius": ["flywheel.mass: нужен радиус"],
-    "duty-cycle/given-J-with-rim-speeds-without-radius": ["flywheel.J: при скоростях на радиусе "
-                                                          "(м/с) задайте и радиус"],
-    "duty-cycle/two-fluctuations": ["задайте что-то одно из: percent, total_percent, delta, "
-                                    "drop_percent (задано percent, delta)"],
-    "duty-cycle/one-speed-only": ["задайте две скорости (две из max, min, mean)",
-                                  "(задано max_rpm)"],
-    "duty-cycle/revolutions-with-rim-speeds-without-radius": [
-        "cycle.every_revolutions: нужна скорость вала", "скорости в об/мин"],
-    "duty-cycle/max-speed-twice-the-mean": ["225 при mean_rpm = 100 даёт min = 2·mean − max = "
-                                            "-25 (допустимо: 100 < max_rpm < 200)"],
-    "duty-cycle/drop-without-the-top-speed": ["flywheel.drop_percent: это падение от "
-                                              "наибольшей скорости"],
-    "duty-cycle/speeds-equal-in-rad-per-s": ["не дают её падения (допустимо: ω_max > ω_min > "
-                                             "0)"],
-    "duty-cycle/motor-power-too-small": ["motor.power: мощность двигателя 2000 Вт меньше "
-                                         "средней мощности операций E/T_c = 3000 Вт"],
-    "duty-cycle/motor-torque-too-small-for-the-rate": [
-        "motor.torque: момент двигателя 1 Н·м (P = M_Д·ω_ср = 22.2529 Вт) меньше средней "
-        "мощности операций"],
-    "duty-cycle/motor-torque-too-small-for-the-revolutions": [
-        "момент двигателя 100 Н·м меньше среднего момента операций E/(2π·k) = 212.207 Н·м",
-        "(допустимо: не меньше 212.207 Н·м)"],
-    "duty-cycle/operation-longer-than-the-cycle": ["операция длится 6 с — дольше цикла T_c = "
-                                                   "5 с (допустимо: не дольше цикла)"],
-    "variants/path-index-not-a-number": ["cylinders — массив; 'x' — не индекс (допустимо: "
-                                         "0…1)"],
-    "variants/path-index-out-of-range": ["в cylinders элементов: 2; индекс 7 вне допустимого "
-                                         "диапазона (допустимо: 0…1)"],
-    "variants/path-inside-a-number": ["speed.omega0 — значение, а не таблица; внутри него нет "
-                                      "ничего с именем 'rpm'"],
-    "variants/path-overlaps-another": ['variants."speed.omega0": пересекается с '
-                                       'variants."speed.omega0"'],
-    "variants/path-is-a-table": ["это таблица; меняйте её поля по одному"],
-    "variants/values-are-tables": ["таблицы нельзя выбирать целиком"],
-    "variants/vary-the-variants-table": ["нельзя менять саму таблицу [variants]"],
-    "variants/variants-not-a-table": ["variants: должно быть таблицей (задано 3)"],
-    "variants/nothing-to-vary": ["variants: нечего менять (добавьте, например,"],
-    "variants/grid-without-step": ["не задано step (задайте min, max и step или values)"],
-    "variants/grid-too-fine": ["значений сетки 2000001 — слишком много (допустимо: не больше "
-                               "100000"],
-    "variants/spec-unknown-key": ["неизвестный ключ 'vals'"],
-    "variants/values-and-a-grid": ["задайте что-то одно: values или min, max, step"],
-    "variants/grid-on-a-word": ["для min/max/step в шаблоне нужно число (там 'balance')"],
-    "variants/answer-twice": ["variants.answers: 'M_C' указан дважды"],
-    "variants/answer-with-a-semicolon": ["'M_C;delta' содержит символ, недопустимый в имени "
-                                         "столбца CSV"],
-    "variants/tolerances-a-number": ["variants.tolerances: должно быть таблицей { ответ = "
-                                     "допуск } (задано 0.01)"],
-    "grade/key-variant-not-an-object": ["variants.01: должно быть объектом {ответ: значение} "
-                                        "(задано 150.0)"],
-    "grade/key-answers-not-a-list": ["answers: должно быть списком имён ответов (задано "
-                                     "'M_C')"],
-    "grade/key-name-too-long": ["не удаётся прочитать (слишком длинное имя файла)"],
-})
-# --- msgs_tabulated --- the checks of a [tabulated] section (cases/tabulated.py)
-RUSSIAN_ERRORS.update({
-    "run/tabulated-position-outside-the-cycle": ["400° вне цикла (допустимо: 0 … 360)"],
-    "run/tabulated-position-duplicated": ["угол 30° повторяется (положения 2 и 3)"],
-    "run/tabulated-too-few-positions": ["различных положений 2 — слишком мало (допустимо: 6"],
-    "run/tabulated-positions-leave-a-gap": ["между 3° и 120° нет ни одного (промежуток 117°;"],
-    "run/tabulated-analogue-negative": ["-0.05 < 0: аналоги скоростей — модули |V_q| ≥ 0"],
-    "run/tabulated-row-does-not-close": ["значение при 360° (0.03) должно повторять значение"],
-    "run/tabulated-link-mass-without-point": ["у звена 3 масса 81.6 кг, но нет аналогов"],
-    "run/tabulated-link-J-without-omega-row": ["в [tabulated.omega_q] нет строки '7' (строки: 2,"],
-    "run/tabulated-load-name-twice": ["имя нагрузки 'G2' встречается дважды"],
-    "run/tabulated-inertia-overflows": ["переполняется в положении 4 (90°): значения вне"],
-    "run/tabulated-moment-overflows": ["приведённый момент нагрузки «сила G5» переполняется"],
-})
-# --- msgs_aggregate --- the aggregate's case checks across fields, the chain reduced to
-# shaft I (gear pairs in series), the natural frequencies and the steady state
+# catalogue entries (tests/bad_inputs/catalogue.toml) run again with --lang ru, one for each way a
+# Russian line is made (a template, a parameter said in Russian, a library's or the system's
+# words): the line is Russian and says what the English line says (test below)
+RUSSIAN_ERRORS = (
+    "run/missing-file",
+    "run/folder-given-as-case",
+    "run/empty-file",
+    "run/binary-png",
+    "run/toml-decimal-comma",
+    "check/toml-syntax-error",
+    "aggregate/toml-syntax-error",
+    "variants/template-toml-syntax-error",
+    "run/misspelt-table",
+    "run/speed-quoted",
+    "run/speed-nan",
+    "run/speed-negative",
+    "run/speed-1e308",
+    "run/balance-unknown",
+    "run/machine-not-a-table",
+    "run/rrr-cannot-assemble",
+    "run/rpr-rocker-pivot-on-crank-circle",
+    "run/task2-case",
+    "run/out-is-a-file",
+    "run/points-zero",
+    "task2/md-negative",
+    "run/csv-dialect-unknown",
+    "run/dpi-too-small",
+    "task2/report-without-out",
+    "aggregate/report-unknown",
+    "grade/tolerance-negative",
+    "variants/count-zero",
+    "run/delta-missing",
+    "run/crank-missing",
+    "task2/case-delta-two",
+    "grade/key-answer-a-string",
+    "task2/case-misspelt-key",
+    "aggregate/misspelt-key",
+    "variants/template-does-not-solve",
+    "variants/template-does-not-validate",
+    "run/aggregate-case",
+    "run/variants-template",
+    "run/two-speeds",
+    "run/no-speed",
+    "run/no-crank-length",
+    "run/ground-point-undefined",
+    "run/dyads-missing",
+    "run/dyad-kind-unknown",
+    "run/dyad-from-undefined",
+    "run/dyad-joint-reused",
+    "run/dyad-link-reused",
+    "run/point-on-undefined-link",
+    "run/point-from-undefined-point",
+    "run/point-to-and-distance",
+    "run/link-centroid-undefined",
+    "run/link-undefined",
+    "run/link-mass-without-centroid",
+    "run/cylinder-table-one-short",
+    "run/cylinder-s-not-increasing",
+    "run/cylinder-piston-undefined",
+    "run/cylinder-pressure-below-vacuum",
+    "run/cylinder-pressure-above-p-max",
+    "run/given-flywheel-too-small-no-steady-motion",
+    "run/force-on-undefined-slider",
+    "run/force-range-reversed",
+    "run/force-name-duplicate",
+    "run/couple-on-undefined-link",
+    "run/tabulated-row-one-short",
+    "run/tabulated-positions-not-increasing",
+    "run/tabulated-force-at-undefined-point",
+    "run/tabulated-link-at-undefined-point",
+    "run/at-nan",
+    "run/at-inf",
+    "run/transients-rundown-too-long",
+    "run/transients-startup-too-long",
+    "check/task2-case",
+    "check/aggregate-chain",
+    "check/point-from-undefined",
+    "task2/profile-unknown",
+    "task2/md-1e308",
+    "task2/to-beyond-the-cycle",
+    "task2/case-and-options",
+    "task2/plot-is-a-folder",
+    "task2/case-run-case",
+    "task2/case-aggregate-case",
+    "task2/case-variants-template",
+    "task2/case-two-speeds",
+    "task2/case-J-negative",
+    "task2/case-mass-without-radius",
+    "task2/case-driving-kind-unknown",
+    "task2/case-value-not-balance",
+    "task2/case-two-balances",
+    "task2/case-points-go-back",
+    "task2/case-points-three-at-one-angle",
+    "task2/case-points-do-not-reach-the-cycle-end",
+    "task2/case-triangle-reversed",
+    "task2/case-trapezoid-top-outside",
+    "task2/case-harmonic-lengths-differ",
+    "task2/case-diagram-areas-do-not-close",
+    "task2/case-diagram-and-graphs",
+    "task2/case-diagram-scale-zero",
+    "task2/case-driving-1e308",
+    "aggregate/empty-file",
+    "aggregate/run-case",
+    "aggregate/task2-case",
+    "aggregate/variants-template",
+    "aggregate/motor-J-missing",
+    "aggregate/motor-slip-without-torque",
+    "aggregate/coupling-c-and-d-L",
+    "aggregate/coupling-missing",
+    "aggregate/flywheel-on-II-without-i21",
+    "aggregate/J-III-missing",
+    "aggregate/one-rotor",
+    "aggregate/shafts-one-short",
+    "aggregate/rotor-names-repeat",
+    "aggregate/shaft-G-missing",
+    "aggregate/load-without-motor",
+    "aggregate/chain-and-two-mass",
+    "aggregate/t-end-zero",
+    "aggregate/t-end-nan",
+    "aggregate/t-end-1e6",
+    "aggregate/t-end-too-many-steps",
+    "aggregate/startup-stiff-motor-t-end",
+    "aggregate/plot-without-motor",
+    "variants/points-too-few",
+    "variants/points-too-many",
+    "variants/template-empty",
+    "variants/no-variants-table",
+    "variants/path-misspelt",
+    "variants/path-into-a-missing-table",
+    "variants/answers-missing",
+    "variants/answers-empty",
+    "variants/answer-misspelt",
+    "variants/answer-not-a-number",
+    "variants/min-above-max",
+    "variants/step-zero",
+    "variants/values-empty",
+    "variants/spec-a-bare-number",
+    "variants/tolerance-for-unknown-answer",
+    "variants/every-draw-fails",
+    "grade/key-missing",
+    "grade/key-folder",
+    "grade/key-binary",
+    "task2/plot-unknown-format",
+    "task2/plot-in-a-missing-folder",
+    "grade/key-not-json",
+    "grade/key-truncated",
+    "grade/key-a-list",
+    "grade/key-no-variants",
+    "grade/key-tolerances-zero",
+    "grade/key-is-a-case-file",
+    "grade/key-and-sheet-swapped",
+    "grade/out-is-a-folder",
+    "grade/gradebook-is-a-folder",
+    "grade/out-inside-a-file",
+    "grade/sheet-blank-rows-only",
+    "run/rim-share-zero",
+    "run/rim-share-above-one",
+    "run/rim-speed-above-the-allowable-stress",
+    "run/rim-width-and-ratio",
+    "run/rim-share-twice",
+    "run/rim-thicker-than-its-diameter",
+    "task2/rim-share-zero",
+    "task2/rim-speed-above-the-allowable-stress",
+    "run/given-flywheel-mass-without-radius",
+    "run/given-flywheel-two-forms",
+    "run/given-rim-inner-above-outer",
+    "run/pins-at-the-same-angle",
+    "run/firing-order-misses-a-cylinder",
+    "run/firing-order-does-not-fit-the-crankshaft",
+    "run/four-stroke-diagram-on-a-360-cycle",
+    "run/strokes-do-not-meet",
+    "run/animate-a-tabulated-case",
+    "aggregate/fixed-end-without-a-shaft",
+    "grade/gradebook-in-a-missing-folder",
+    "duty-cycle/speed-drop-beyond-the-speed",
+    "duty-cycle/min-speed-above-the-max",
+    "duty-cycle/given-flywheel-would-stop",
+    "duty-cycle/hole-without-thickness",
+    "duty-cycle/sheared-area-with-the-energy",
+    "duty-cycle/shape-with-the-energy",
+    "duty-cycle/stroke-without-thickness",
+    "duty-cycle/stroke-shorter-than-half-the-thickness",
+    "duty-cycle/delta-E-above-the-work",
+    "duty-cycle/cycle-with-delta-E-alone",
+    "duty-cycle/speeds-in-two-units",
+    "duty-cycle/given-flywheel-two-speeds",
+    "duty-cycle/given-mass-without-radius",
+    "duty-cycle/given-J-with-rim-speeds-without-radius",
+    "duty-cycle/two-fluctuations",
+    "duty-cycle/one-speed-only",
+    "duty-cycle/revolutions-with-rim-speeds-without-radius",
+    "duty-cycle/max-speed-twice-the-mean",
+    "duty-cycle/drop-without-the-top-speed",
+    "duty-cycle/speeds-equal-in-rad-per-s",
+    "duty-cycle/motor-power-too-small",
+    "duty-cycle/motor-torque-too-small-for-the-rate",
+    "duty-cycle/motor-torque-too-small-for-the-revolutions",
+    "duty-cycle/operation-longer-than-the-cycle",
+    "variants/path-index-not-a-number",
+    "variants/path-index-out-of-range",
+    "variants/path-inside-a-number",
+    "variants/path-overlaps-another",
+    "variants/path-is-a-table",
+    "variants/values-are-tables",
+    "variants/vary-the-variants-table",
+    "variants/variants-not-a-table",
+    "variants/nothing-to-vary",
+    "variants/grid-without-step",
+    "variants/grid-too-fine",
+    "variants/spec-unknown-key",
+    "variants/values-and-a-grid",
+    "variants/grid-on-a-word",
+    "variants/answer-twice",
+    "variants/answer-with-a-semicolon",
+    "variants/tolerances-a-number",
+    "grade/key-variant-not-an-object",
+    "grade/key-answers-not-a-list",
+    "grade/key-name-too-long",
+    "run/tabulated-position-outside-the-cycle",
+    "run/tabulated-position-duplicated",
+    "run/tabulated-too-few-positions",
+    "run/tabulated-positions-leave-a-gap",
+    "run/tabulated-analogue-negative",
+    "run/tabulated-row-does-not-close",
+    "run/tabulated-link-mass-without-point",
+    "run/tabulated-link-J-without-omega-row",
+    "run/tabulated-load-name-twice",
+    "run/tabulated-inertia-overflows",
+    "run/tabulated-moment-overflows",
+    "aggregate/shaft-stiffness-and-segments",
+    "aggregate/shaft-segments-empty",
+    "aggregate/shaft-L-missing",
+    "aggregate/chain-motor-with-J",
+    "aggregate/motor-linear-with-speed",
+    "aggregate/motor-synchronous-missing",
+    "aggregate/motor-rated-slip-missing",
+    "aggregate/motor-slip-with-starting-torque",
+    "aggregate/motor-cannot-drive",
+    "aggregate/motor-constant-with-synchronous",
+    "aggregate/motor-constant-without-speed",
+    "aggregate/two-mass-without-motor",
+    "aggregate/J-III-and-its-positions",
+    "aggregate/J-III-positions-empty",
+    "aggregate/J-III-positions-zero",
+    "aggregate/coupling-gear-pair",
+    "aggregate/coupling-between",
+    "aggregate/fixed-rotor-with-J",
+    "aggregate/rotor-J-missing",
+    "aggregate/motor-on-a-fixed-system",
+    "aggregate/motor-on-a-branched-system",
+    "aggregate/between-for-one-shaft-only",
+    "aggregate/between-one-name",
+    "aggregate/between-unknown-rotor",
+    "aggregate/between-to-itself",
+    "aggregate/fixed-end-in-the-middle",
+    "aggregate/every-rotor-fixed",
+    "aggregate/rotors-in-a-loop",
+    "aggregate/damping-of-a-shaft-to-the-frame",
+    "aggregate/reduced-J-overflows",
+    "aggregate/reduced-stiffness-to-the-frame-overflows",
+    "aggregate/reduced-stiffness-to-the-frame-underflows",
+    "aggregate/reduced-J-underflows",
+    "aggregate/reduced-stiffness-underflows",
+    "aggregate/natural-frequencies-overflow",
+    "aggregate/resonance-undamped",
+    "aggregate/forcing-swings-the-rigid-body",
+    "aggregate/forcing-reverses-a-rotor",
+    "aggregate/forcing-frequency-zero",
+    "task2/case-speed-max-without-min",
+    "task2/case-speed-min-above-max",
+    "task2/case-speed-limits-and-delta",
+    "task2/case-flywheel-gives-nothing",
+    "task2/case-at-deg-beyond-the-cycle",
+    "task2/case-diagram-with-at-deg",
+    "task2/case-resistance-missing",
+    "task2/case-points-one-point",
+    "task2/case-apex-outside-the-triangle",
+    "task2/case-interval-empty-in-radians",
+    "task2/case-two-powers",
+    "task2/case-power-value-without-power",
+    "task2/case-power-value-with-omega0",
+    "task2/case-power-unused",
+    "task2/case-power-value-does-no-work",
+    "task2/case-power-needs-a-negative-moment",
+    "task2/case-balance-value-does-no-work",
+    "task2/case-balance-needs-a-negative-resistance",
+    "task2/case-balance-needs-a-negative-driving",
+    "task2/case-J-too-small-for-the-mean-speed",
+    "task2/case-delta-with-omega0",
+    "task2/case-delta-without-fluctuation",
+    "task2/case-mean-speed-not-steady",
+    "task2/case-fluctuation-percent-100",
+    "task2/case-diagram-fluctuation-percent-100",
+    "task2/case-speed-comes-too-close-to-zero",
+    "task2/case-diagram-two-forms",
+    "task2/case-diagram-empty",
+    "task2/case-diagram-work-per-cycle-with-areas",
+    "task2/case-diagram-crossings-with-delta-E",
+    "task2/case-diagram-areas-without-scale",
+    "task2/case-diagram-one-area",
+    "task2/case-diagram-areas-close-only-in-mm2",
+    "task2/case-diagram-crossings-one-short",
+    "task2/case-diagram-crossings-go-back",
+    "task2/case-diagram-crossings-equal-in-radians",
+    "task2/case-diagram-crossings-beyond-the-cycle",
+    "task2/case-diagram-coefficient-without-work",
+    "task2/case-diagram-power-with-omega0",
+    "task2/case-diagram-power-unused",
+    "task2/case-points-plus-and-minus-1e308",
+    "task2/case-rim-radius-1e-300",
+    "task2/case-at-option-with-a-diagram",
+    "task2/at-beyond-the-cycle",
+    "task2/from-and-to-equal-in-radians",
+    "run/point-fraction-with-distance",
+    "run/point-angle-with-to",
+    "run/point-from-not-on-its-link",
+    "run/centroid-not-on-its-link",
+    "run/rod-length-missing",
+    "run/tabulated-with-ground",
+    "run/diagram-too-short",
+    "run/diagram-p-one-short",
+    "run/diagram-s-outside-the-stroke",
+    "run/diagram-starts-off-the-head",
+    "run/diagram-steps-at-a-dead-centre",
+    "run/diagram-does-not-close",
+    "run/diagram-ends-inside-a-stroke",
+    "run/diagram-goes-back",
+    "run/diagram-goes-on-after-the-cycle",
+    "run/diagram-and-strokes",
+    "run/cylinder-s-missing",
+    "run/cylinder-s-one-value",
+    "run/cylinder-s-short-of-1",
+    "run/cylinder-one-table",
+    "run/two-table-cylinder-fires-at",
+    "run/two-tables-and-strokes",
+    "run/firing-order-unknown-cylinder",
+    "run/firing-order-of-a-compressor",
+    "run/firing-order-cylinder-twice",
+    "run/firing-order-and-fires-at",
+    "run/fires-at-far-from-a-dead-centre",
+    "run/piston-that-does-not-move",
+    "run/link-named-like-the-frame",
+    "run/no-inertia",
+    "run/given-flywheel-vanishes-on-the-crank-shaft",
+    "run/given-flywheel-and-no-fluctuation",
+    "run/tabulated-mass-out-of-range",
+    "run/case-path-through-a-file",
+    "run/out-name-too-long",
+    "grade/out-name-too-long",
+    "grade/gradebook-name-too-long",
+    "run/out-a-folder-where-a-file-goes",
+)
+
+
 def test_aggregate_integration_failure_is_russian(monkeypatch):
     # no case file is known to make solve_ivp fail (the steps are bounded first): a failed
     # result stands in for it; scipy's own words stay English, as tomllib's do
@@ -432,173 +508,6 @@ def test_aggregate_integration_failure_is_russian(monkeypatch):
     assert ru.stderr.endswith("с: решение не конечно\n"), ru.stderr
 
 
-RUSSIAN_ERRORS.update({
-    "aggregate/shaft-stiffness-and-segments": ["задайте что-то одно: жёсткость прямо (c или d и L) или"],
-    "aggregate/shaft-segments-empty": ["нужен хотя бы один отрезок вала"],
-    "aggregate/shaft-L-missing": ["не задано: задайте c или d и L (с G)"],
-    "aggregate/chain-motor-with-J": ["в цепочке двигатель — это первый ротор: задайте его J в"],
-    "aggregate/motor-linear-with-speed": ["только при characteristic = \"constant\" (двигатель с линейной"],
-    "aggregate/motor-synchronous-missing": ["не задано: линейной характеристике нужна синхронная скорость"],
-    "aggregate/motor-rated-slip-missing": ["не задано: нужно вместе с rated_torque (M_п = M_н/s_н)"],
-    "aggregate/motor-slip-with-starting-torque": ["задаётся только вместе с rated_torque"],
-    "aggregate/motor-cannot-drive": ["двигатель не может привести машину в движение: M_п = 4191.17"],
-    "aggregate/motor-constant-with-synchronous": ["только при characteristic = \"linear\""],
-    "aggregate/motor-constant-without-speed": ["не задано: двигателю с постоянным моментом нужна"],
-    "aggregate/two-mass-without-motor": ["не задано: двухмассовому агрегату нужен [motor] с J (J_Д)"],
-    "aggregate/J-III-and-its-positions": ["задайте что-то одно: J_III или J_III_0 с J_III_positions"],
-    "aggregate/J-III-positions-empty": ["нужно хотя бы одно значение"],
-    "aggregate/J-III-positions-zero": ["J_пр.III получается равным нулю: должен быть положительным"],
-    "aggregate/coupling-gear-pair": ["муфта соединяет двигатель с валом I: зубчатой пары в ней нет"],
-    "aggregate/coupling-between": ["муфта соединяет двигатель с машиной: between задаётся только"],
-    "aggregate/fixed-rotor-with-J": ["неподвижный конец (fixed = true) — это стойка: момента"],
-    "aggregate/rotor-J-missing": ["не задано обязательное поле (момент инерции, кг·м²; или fixed"],
-    "aggregate/motor-on-a-fixed-system": ["вал, закреплённый в стойке, не может вращаться непрерывно:"],
-    "aggregate/motor-on-a-branched-system": ["вынужденные колебания и пуск рассчитываются для", "требуют свободной неразветвлённой цепочки"],
-    "aggregate/between-for-one-shaft-only": ["не задано: задайте between для каждого вала или ни для одного"],
-    "aggregate/between-one-name": ["нужны имена двух роторов, первым — со стороны входа (задано 1)"],
-    "aggregate/between-unknown-rotor": ["нет ротора 'X' (роторы: A, B, C)"],
-    "aggregate/between-to-itself": ["соединяет ротор 'A' с ним самим"],
-    "aggregate/fixed-end-in-the-middle": ["неподвижный конец — конец системы: к нему подходит один вал"],
-    "aggregate/every-rotor-fixed": ["все роторы неподвижны: хотя бы один должен вращаться"],
-    "aggregate/rotors-in-a-loop": ["роторы и валы должны образовывать одну связную систему без"],
-    "aggregate/damping-of-a-shaft-to-the-frame": ["вал к стойке: его демпфирование в модели не учитывается"],
-    "aggregate/reduced-J-overflows": ["ротор 51: приведённое к валу I значение момента инерции — не", "оно выходит за пределы двойной точности"],
-    "aggregate/reduced-stiffness-to-the-frame-overflows": ["ротор 56: жёсткость связи со стойкой, приведённая к валу I,"],
-    "aggregate/reduced-stiffness-to-the-frame-underflows": ["системе, закреплённой в стойке, нужен вал к стойке"],
-    "aggregate/reduced-J-underflows": ["ротор 54: момент инерции должен быть положительным (получено"],
-    "aggregate/reduced-stiffness-underflows": ["соединение 55: жёсткость должна быть положительной (получено"],
-    "aggregate/natural-frequencies-overflow": ["собственные частоты не конечны: задача K·x = ω²·M·x выходит"],
-    "aggregate/resonance-undamped": ["частота возмущения 31.4159 рад/с (5 Гц) совпадает с", "амплитуда установившихся колебаний неограниченна"],
-    "aggregate/forcing-swings-the-rigid-body": ["частота возмущения 1.0472e-07 рад/с намного ниже низшей", "которую двигатель с постоянным моментом не удерживает"],
-    "aggregate/forcing-reverses-a-rotor": ["скорость ротора машина J_пр.I колебалась бы на ±358.758 рад/с", "вращалась в обратную сторону каждый период"],
-    "aggregate/forcing-frequency-zero": ["амплитуды установившихся колебаний не конечны при частоте"],
-})
-# --- msgs_task2 --- flywheel task2: the cross-field checks of a case, the mean power, the cycle
-# balance, the area diagram, --at (the angles that coincide only in radians included)
-RUSSIAN_ERRORS.update({
-    "task2/case-speed-max-without-min": ["не задано: пределы скорости задаются парой (max с min)"],
-    "task2/case-speed-min-above-max": ["должно быть меньше max_rpm (задано 1900 об/мин, а max_rpm "
-                                       "= 1800 об/мин)"],
-    "task2/case-speed-limits-and-delta": ["пределы скорости уже дают δ = (max − min)/ω_ср: "
-                                          "задайте что-то одно"],
-    "task2/case-flywheel-gives-nothing": ["задайте J, или mass и radius_of_gyration, или "
-                                          "требуемое delta"],
-    "task2/case-at-deg-beyond-the-cycle": ["должно лежать в пределах цикла 0…360° (задано 400)"],
-    "task2/case-diagram-with-at-deg": ["у диаграммы, заданной площадями, нет моментов между "
-                                       "точками пересечения"],
-    "task2/case-resistance-missing": ["не задано: задайте графики [driving] и [resistance] или "
-                                      "[diagram]"],
-    "task2/case-points-one-point": ["нужно не меньше двух точек [угол, момент]"],
-    "task2/case-apex-outside-the-triangle": ["должно лежать в пределах 90…270° (задано 300)"],
-    "task2/case-interval-empty-in-radians": ["интервал графика 14.5…14.5° должен удовлетворять"],
-    "task2/case-two-powers": ['"power" может заменять лишь одно значение (другое уже задано так: '
-                              "driving.value)"],
-    "task2/case-power-value-without-power": ['для "power" нужна средняя мощность: задайте power '
-                                             "[Вт] на верхнем уровне"],
-    "task2/case-power-value-with-omega0": ["(средний момент M_ср = P/ω_ср) нужна средняя "
-                                           "скорость"],
-    "task2/case-power-unused": ['используется только значением графика "power" (M_ср = P/ω_ср)'],
-    "task2/case-power-value-does-no-work": ["значение движущего момента не меняет его работу: по "
-                                            "средней мощности его не найти"],
-    "task2/case-power-needs-a-negative-moment": ["средняя мощность 10 Вт требует отрицательного "
-                                                 "значения движущего момента (-692)",
-                                                 "P·Φ/ω_ср = 6.28319 Дж"],
-    "task2/case-balance-value-does-no-work": ["неизвестное значение движущего момента не меняет "
-                                              "его работу: по балансу работ"],
-    "task2/case-balance-needs-a-negative-resistance": [
-        "баланс работ за цикл требует отрицательного момента сопротивления (-240 Н·м): движущий "
-        "момент совершает больше работы"],
-    "task2/case-balance-needs-a-negative-driving": [
-        "баланс работ за цикл требует отрицательного движущего момента (-600 Н·м): момент "
-        "сопротивления совершает меньше работы"],
-    "task2/case-J-too-small-for-the-mean-speed": ["J = 0.001 кг·м² слишком мал для средней "
-                                                  "скорости 1 рад/с"],
-    "task2/case-delta-with-omega0": ["чтобы найти J по δ, задайте среднюю скорость, а не ω0"],
-    "task2/case-delta-without-fluctuation": ["энергия не колеблется: при любом J δ = 0"],
-    "task2/case-mean-speed-not-steady": ["средняя скорость требует установившегося движения "
-                                         "(работа за цикл 78.5398 Дж, а не 0)"],
-    "task2/case-fluctuation-percent-100": ["δ должно лежать между 0 и 2 (задано 2)"],
-    "task2/case-diagram-fluctuation-percent-100": ["δ должно лежать между 0 и 2 (задано 2)"],
-    "task2/case-speed-comes-too-close-to-zero": ["не удаётся найти на 90…270°: интеграл не "
-                                                 "сходится"],
-    "task2/case-diagram-two-forms": ["задайте что-то одно: areas (с moment_scale и "
-                                     "angle_scale_deg)", "(задано areas, energies)"],
-    "task2/case-diagram-empty": ["задайте что-то одно: areas (с moment_scale и angle_scale_deg)"],
-    "task2/case-diagram-work-per-cycle-with-areas": ["задаётся только вместе с "
-                                                     "energy_fluctuation_coefficient"],
-    "task2/case-diagram-crossings-with-delta-E": ["задаётся только с areas или energies (а не с "
-                                                  "delta_E)"],
-    "task2/case-diagram-areas-without-scale": ["не задано: для площадей нужны масштабы чертежа"],
-    "task2/case-diagram-one-area": ["нужно не меньше двух площадей"],
-    "task2/case-diagram-areas-close-only-in-mm2": ["сумма площадей -4.94066e-324, а не 0"],
-    "task2/case-diagram-crossings-one-short": ["углов должно быть на один больше, чем площадей: 8 "
-                                               "(задано 2)"],
-    "task2/case-diagram-crossings-go-back": ["углы должны возрастать"],
-    "task2/case-diagram-crossings-equal-in-radians": ["углы пересечений со средней линией должны "
-                                                      "возрастать"],
-    "task2/case-diagram-crossings-beyond-the-cycle": ["должны лежать в пределах 0…360°"],
-    "task2/case-diagram-coefficient-without-work": ["нужна работа за цикл: задайте "
-                                                    "diagram.work_per_cycle [Дж]"],
-    "task2/case-diagram-power-with-omega0": ["для работы за цикл P·Φ/ω_ср нужна средняя "
-                                             "скорость"],
-    "task2/case-diagram-power-unused": ["здесь её ничто не использует"],
-    "task2/case-points-plus-and-minus-1e308": ["work_driving — не конечное число (−inf + inf при "
-                                               "суммировании)"],
-    "task2/case-rim-radius-1e-300": ["результат — не конечное число (деление на ноль)"],
-    "task2/case-at-option-with-a-diagram": ["задаёт диаграмму площадями, у неё нет моментов"],
-    "task2/at-beyond-the-cycle": ["--at 400: должно лежать в пределах цикла 0…360°"],
-    "task2/from-and-to-equal-in-radians": ["from (14.5°) должно быть меньше to (14.5°)"],
-})
-# --- msgs_run --- the run case's points, cylinders (a four-stroke diagram over the cycle) and
-# firing order, the dynamics and the force analysis, files the system will not read or write
-RUSSIAN_ERRORS.update({
-    "run/point-fraction-with-distance": ["points.S3: `fraction` и `across` задаются с `to`, а не с"],
-    "run/point-angle-with-to": ["points.S2: `angle_deg` задаётся с `distance`, а не с `to`"],
-    "run/point-from-not-on-its-link": ["точка 'A' не лежит на звене 3 (его точки: B, D): точка, "
-                                       "закреплённая на звене, строится по точкам"],
-    "run/centroid-not-on-its-link": ["точка 'S2' не лежит на звене 3 (его точки: B, D, S3)"],
-    "run/rod-length-missing": ["не задано: укажите rod_length или design.rod_to_crank"],
-    "run/tabulated-with-ground": ["ground: не допускается вместе с [tabulated]: задайте массы"],
-    "run/diagram-too-short": ["нужно не меньше 5 значений (0, 1, 0, 1, 0: четыре такта)"],
-    "run/diagram-p-one-short": ["нужно 5 значений, по одному на каждое s (задано 4)"],
-    "run/diagram-s-outside-the-stroke": ["1.5 выходит за пределы хода (допустимо: 0 … 1)"],
-    "run/diagram-starts-off-the-head": ["0.5: диаграмма начинается в верхней мёртвой точке"],
-    "run/diagram-steps-at-a-dead-centre": ["p/p_max меняется скачком с 0.1 до 0.5 при s = 1, где "
-                                           "такт расширения кончается, а такт выпуска "
-                                           "начинается: такты не смыкаются (скачок 0.4;"],
-    "run/diagram-does-not-close": ["где такт сжатия кончается, а такт расширения начинался"],
-    "run/diagram-ends-inside-a-stroke": ["обрывается внутри такта впуска (допустимо: s проходит"],
-    "run/diagram-goes-back": ["0.3 после 0.5: на такте расширения s должно расти до 1"],
-    "run/diagram-goes-on-after-the-cycle": ["продолжается после того, как такт сжатия замкнул"],
-    "run/diagram-and-strokes": ["задайте что-то одно: diagram (одна таблица на весь цикл) или s"],
-    "run/cylinder-s-missing": ["cylinders[0].s: не задано обязательное поле (или задайте diagram"],
-    "run/cylinder-s-one-value": ["cylinders[0].s: нужно не меньше 2 значений"],
-    "run/cylinder-s-short-of-1": ["должно охватывать [0, 1] (задано 0.0 … 0.95)"],
-    "run/cylinder-one-table": ["не задано: укажите towards_head и away_from_head или strokes"],
-    "run/two-table-cylinder-fires-at": ["задаётся только со strokes (четырёхтактной диаграммой)"],
-    "run/two-tables-and-strokes": ["задайте что-то одно: towards_head и away_from_head"],
-    "run/firing-order-unknown-cylinder": ["нет цилиндра '9' (четырёхтактные цилиндры: 1, 2, 3, 4)"],
-    "run/firing-order-of-a-compressor": ["у цилиндра 'HP' нет четырёхтактной диаграммы",
-                                         "(четырёхтактные цилиндры: нет)"],
-    "run/firing-order-cylinder-twice": ["цилиндр '3' уже есть в порядке работы"],
-    "run/firing-order-and-fires-at": ["machine.firing_order задаёт, где срабатывает цилиндр '2'"],
-    "run/fires-at-far-from-a-dead-centre": ["cylinders[0].fires_at_deg: 100° отстоит на 100° от "
-                                            "ближайшей верхней мёртвой точки поршня 3 (0°, 360°)"],
-    "run/piston-that-does-not-move": ["у поршня 3 нет пары мёртвых положений"],
-    "run/link-named-like-the-frame": ["силовой анализ: звено названо '0', а это имя стойки"],
-    "run/no-inertia": ["у машины нет инерции: нагрузки не вызывают колебаний энергии"],
-    "run/given-flywheel-vanishes-on-the-crank-shaft": ["у машины нет инерции (допустимо: "
-                                                       "flywheel.J > 0"],
-    "run/given-flywheel-and-no-fluctuation": ["заданный маховик (J = 1 кг·м²) не проверить: "
-                                              "скорость не колеблется вовсе (δ = 0"],
-    "run/tabulated-mass-out-of-range": ["tabulated.links.2.mass: 1e+308 кг вне допустимого "
-                                        "диапазона (0 … 1e+06 кг)"],
-    "run/case-path-through-a-file": ["не удаётся прочитать (часть пути — не папка)"],
-    "run/out-name-too-long": ["не удаётся записать (слишком длинное имя файла)"],
-    "grade/out-name-too-long": ["не удаётся записать (слишком длинное имя файла)"],
-    "grade/gradebook-name-too-long": ["не удаётся записать (слишком длинное имя файла)"],
-    "run/out-a-folder-where-a-file-goes": ["forces.csv — папка, а flywheel записывает туда файл"],
-})
 # English words that must not be left in a translated line (names the user gave aside)
 ENGLISH = re.compile(r"\b(the|is|not|must|be|allowed|out|of|range|given|cannot|no|such|should|"
                      r"input|valid|missing|required|unknown|key|file|folder|number|use|this)\b")
@@ -608,17 +517,39 @@ def _entry(eid):
     return next(e for e in bad.load_catalogue() if e.id == eid)
 
 
-@pytest.mark.parametrize("eid", sorted(RUSSIAN_ERRORS))
+#: a number as an error line says it (not inside a file name or a path)
+NUMBER = re.compile(r"(?<![\w.])[-+]?\d+(?:\.\d+)?(?:e[-+]?\d+)?(?![\w])")
+
+
+#: entries whose Russian line leaves out a number the English says (known, not yet fixed: the
+#: outputs of this restructure stay byte-identical)
+SAYS_LESS = {"task2/case-diagram-crossings-one-short": "the Russian omits the count of areas"}
+
+
+def _numbers(line: str) -> list[str]:
+    """The numbers of an error line (the system's "[Errno 2]" aside: Russian says its words)."""
+    return sorted(NUMBER.findall(re.sub(r"\S*/\S*|\[Errno \d+\]", "", line)))
+
+
+@pytest.mark.parametrize("eid", RUSSIAN_ERRORS)
 def test_errors_are_russian_with_lang_ru(eid, tmp_path):
+    """The Russian line of a bad input: one `ошибка:` line, the file and field path kept, no
+    English word left, and the same numbers as the English line (the value, the limits, a line
+    and column of a TOML file): the translation says what the English says, not other words
+    pasted here (the wording itself is the catalogue's, tests/test_catalogue.py)."""
     entry = _entry(eid)
     bad.build_files(entry, tmp_path)
+    en = bad.invoke(entry, tmp_path)
     o = bad.invoke(replace(entry, args=[*entry.args, "--lang", "ru"]), tmp_path)
     assert o.code == 2 and o.stdout == "", o
     lines = o.stderr.splitlines()
     assert len(lines) == 1 and lines[0].startswith("ошибка: "), lines
     line = lines[0]
-    for f in RUSSIAN_ERRORS[eid]:
-        assert f in line, (f, line)
+    assert re.search("[а-яё]{3,}", line.removeprefix("ошибка: ")), line
+    if eid in SAYS_LESS:
+        assert set(_numbers(line)) < set(_numbers(en.stderr.strip())), SAYS_LESS[eid]
+    else:
+        assert _numbers(line) == _numbers(en.stderr.strip()), (en.stderr, line)
     # the entry's file and field path (its fragments that are no English words) are kept
     for f in entry.fragments:
         if re.search(r"\b[a-z]{2,}\b", re.sub(r"\S*[/.]\S*", "", f)):  # English words: files only
@@ -950,7 +881,8 @@ def _notice_builders() -> set[str]:
         for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
             if isinstance(node, ast.FunctionDef) and any(
                     isinstance(r, ast.Return) and r.value is not None
-                    and "Notice(" in ast.unparse(r.value) for r in ast.walk(node)):
+                    and ("Notice(" in ast.unparse(r.value) or "Notice.of(" in ast.unparse(r.value))
+                    for r in ast.walk(node)):
                 names.add(node.name)
     return names
 
@@ -973,6 +905,7 @@ def _english_raises():
             called = msg.func.id if isinstance(msg, ast.Call) and isinstance(msg.func, ast.Name) \
                 else ""
             if isinstance(msg, ast.Name) or called in builders or "Notice(" in ast.unparse(msg) \
+                    or "Notice.of(" in ast.unparse(msg) \
                     or "led(" in ast.unparse(msg):
                 continue
             if lines[node.lineno - 2].strip() == _LIBRARY_ONLY:
@@ -995,7 +928,7 @@ def test_tomllibs_own_words_are_said_in_russian(text):
 
     with pytest.raises(tomllib.TOMLDecodeError) as e:
         tomllib.loads(text)
-    ru = nm._toml_detail_ru(str(e.value))
+    ru = library_ru.toml_detail_ru(str(e.value))
     assert not re.search(r"[A-Za-z]{3,}", re.sub(r"'[^']*'|\([^)]*'[^)]*\)", "", ru)), ru
     assert re.search(r"\((строка \d+, столбец \d+|в конце документа)\)$", ru), ru
 
@@ -1007,5 +940,5 @@ def test_jsons_own_words_are_said_in_russian(text):
 
     with pytest.raises(json.JSONDecodeError) as e:
         json.loads(text)
-    ru = nm._said_ru(e.value.msg, nm._JSON_RU)
+    ru = library_ru.said_ru(e.value.msg, library_ru.JSON_RU)
     assert ru != e.value.msg and not re.search(r"[A-Za-z]{4,}", ru.replace("escape", "").replace("uXXXX", "")), ru

@@ -424,7 +424,7 @@ def test_every_field_of_every_bundled_case_has_a_name(lang):
     """Every datum a sheet would show of every bundled run and task2 case (a [tabulated]
     table's aside, docs/teacher.md) has a label, not its dotted path, and every text datum is
     in words of ``lang``."""
-    from flywheel.render import nomenclature as nm
+    from flywheel.render import nomenclature as nm, sheet_labels
     from flywheel.teaching.sheets import element_names, given_rows
 
     seen_text = set()
@@ -437,15 +437,15 @@ def test_every_field_of_every_bundled_case_has_a_name(lang):
         for g in given_rows(kind, doc, []):
             if g.path.startswith("tabulated."):
                 continue
-            label = nm.field_label(g.path, lang, names, (kind,))
+            label = sheet_labels.field_label(g.path, lang, names, (kind,))
             assert label != g.path and not re.fullmatch(r"[\w.]+", label), (path.name, g.path)
             first = g.value[0] if isinstance(g.value, tuple) else g.value
             if isinstance(first, str):
                 pattern = re.sub(r"\.\d+\.", ".#.", g.path)
                 seen_text.add(pattern)
-                words = nm.field_value(g.path, g.value, lang)
+                words = sheet_labels.field_value(g.path, g.value, lang)
                 if pattern != "machine.firing_order":      # names: as the case file has them
-                    assert g.value in nm.SHEET_VALUES[pattern], (path.name, g.path)
+                    assert g.value in sheet_labels.SHEET_VALUES[pattern], (path.name, g.path)
                     assert lang == "en" or re.search("[а-я]", words), (path.name, words)
     assert seen_text == {"machine.firing_order", "machine.balance", "crank.rotation",
                          "cylinders.#.head", "flywheel.material", "forces.#.reference",

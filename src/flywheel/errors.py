@@ -21,7 +21,8 @@ class Notice(str):
     """A warning or message of the computation: the English text itself (a ``str``, so results,
     summary.json and every English output hold it unchanged), with a ``code`` and the
     ``params`` its text was made from, so that a renderer can say it in another language
-    (render/nomenclature.py, ``message``; the Russian templates in MESSAGES).
+    (render/messages.py, ``message``; the Russian templates in the catalogue,
+    locale/ru/LC_MESSAGES/flywheel.po, msgctxt = the code).
 
     >>> w = Notice("δ = 0.5: too much", "delta_swing", delta=0.5)
     >>> w == "δ = 0.5: too much", w.code, w.params
@@ -35,11 +36,25 @@ class Notice(str):
     code: str
     params: dict
     lead: str = ""
+    template: str = ""
 
     def __new__(cls, text: str, code: str = "", **params):
         self = super().__new__(cls, text)
         self.code = code
         self.params = params
+        return self
+
+    @classmethod
+    def of(cls, code: str, template: str, **params) -> "Notice":
+        """The Notice whose English is ``template`` (``str.format`` fields of ``params``): the
+        gettext msgid of its entry in the catalogue (msgctxt ``code``), written once, here.
+
+        >>> n = Notice.of("no_such_file", "{path}: no such file", path="c.toml")
+        >>> n, n.code, n.params, n.template
+        ('c.toml: no such file', 'no_such_file', {'path': 'c.toml'}, '{path}: no such file')
+        """
+        self = cls(template.format(**params), code, **params)
+        self.template = template
         return self
 
 
@@ -54,6 +69,7 @@ def led(lead: str, text) -> str:
         return lead + str(text)
     out = Notice(lead + str(text), text.code, **text.params)
     out.lead = lead + text.lead
+    out.template = text.template
     return out
 
 

@@ -169,31 +169,32 @@ def _stiffness_pieces(s: Shaft, where: str) -> tuple[float, float, list]:
 
     direct = [k for k in ("c", "d", "L") if getattr(s, k) is not None]
     if s.segments is not None and direct:
-        raise FieldError(f"{where}.{direct[0]}", Notice("give the stiffness either directly or as "
-                                                        "segments, not both", "ag_stiffness_twice"))
+        raise FieldError(f"{where}.{direct[0]}", Notice.of(
+            "ag_stiffness_twice", "give the stiffness either directly or as segments, not both"))
     pieces = s.segments if s.segments is not None else [Segment(c=s.c, d=s.d, L=s.L)]
     if not pieces:
-        raise FieldError(f"{where}.segments", Notice("needs at least one segment",
-                                                     "ag_no_segments"))
+        raise FieldError(f"{where}.segments", Notice.of(
+            "ag_no_segments", "needs at least one segment"))
     cs = []
     info = []
     for k, p in enumerate(pieces):
         at = f"{where}.segments[{k}]" if s.segments is not None else where
         if p.c is not None:
             if p.d is not None or p.L is not None:
-                raise FieldError(f"{at}.c", Notice("give c, or d and L (with G), not both",
-                                                    "coupling_c_or_dL"))
+                raise FieldError(f"{at}.c", Notice.of(
+                    "coupling_c_or_dL", "give c, or d and L (with G), not both"))
             c = p.c
             G = None
         else:
             if p.d is None or p.L is None:
                 missing = "d" if p.d is None else "L"
-                raise FieldError(f"{at}.{missing}", Notice("missing: give c, or d and L with G",
-                                                           "ag_c_or_dL_missing"))
+                raise FieldError(f"{at}.{missing}", Notice.of(
+                    "ag_c_or_dL_missing", "missing: give c, or d and L with G"))
             G = p.G if p.G is not None else s.G
             if G is None:
-                raise FieldError(f"{at}.G", Notice("missing: the shear modulus is needed with d "
-                                                   "and L (e.g. 8.0e10 Pa for steel)", "shaft_G"))
+                raise FieldError(f"{at}.G", Notice.of(
+                    "shaft_G", "missing: the shear modulus is needed with d and L (e.g. 8.0e10 Pa "
+                    "for steel)"))
             c = shaft_stiffness(G, p.d, p.L)
         u = s.i if p.side == "out" else 1.0   # speed of the piece over the input speed
         cs.append(c * u * u)
@@ -216,11 +217,11 @@ def _motor(m: Motor, M0: float, forcing_ratio: float, amplitude: float, chain_fo
     from flywheel.elastic.chain import Drive, starting_torque_from_rated
 
     if chain_form and m.J is not None:
-        raise FieldError("motor.J", Notice("in a chain the first rotor is the motor: give its J in "
-                                           "rotors[0]", "ag_chain_motor_J"))
+        raise FieldError("motor.J", Notice.of(
+            "ag_chain_motor_J", "in a chain the first rotor is the motor: give its J in rotors[0]"))
     if not chain_form and m.J is None:
-        raise FieldError("motor.J", Notice("missing required field (J_Д, the motor's rotor "
-                                            "[kg·m²])", "motor_J_missing"))
+        raise FieldError("motor.J", Notice.of(
+            "motor_J_missing", "missing required field (J_Д, the motor's rotor [kg·m²])"))
     if m.characteristic == "linear":
         for k in ("speed_rpm",):
             if getattr(m, k) is not None:
@@ -228,26 +229,26 @@ def _motor(m: Motor, M0: float, forcing_ratio: float, amplitude: float, chain_fo
                                                       "linear motor finds its own speed)",
                                                       "ag_only_constant"))
         if m.synchronous_rpm is None:
-            raise FieldError("motor.synchronous_rpm", Notice("missing: the linear characteristic "
-                                                             "needs ω_x", "ag_omega_x_missing"))
+            raise FieldError("motor.synchronous_rpm", Notice.of(
+                "ag_omega_x_missing", "missing: the linear characteristic needs ω_x"))
         given = [k for k in ("starting_torque", "rated_torque") if getattr(m, k) is not None]
         if len(given) != 1:
-            raise FieldError("motor.starting_torque", Notice(
-                "give exactly one of starting_torque, or rated_torque with rated_slip",
-                "motor_torque_one_of"))
+            raise FieldError("motor.starting_torque", Notice.of(
+                "motor_torque_one_of", "give exactly one of starting_torque, or rated_torque with "
+                "rated_slip"))
         if m.rated_torque is not None and m.rated_slip is None:
-            raise FieldError("motor.rated_slip", Notice("missing: needed with rated_torque "
-                                                        "(M_п = M_н/s_н)", "ag_slip_missing"))
+            raise FieldError("motor.rated_slip", Notice.of(
+                "ag_slip_missing", "missing: needed with rated_torque (M_п = M_н/s_н)"))
         if m.starting_torque is not None and m.rated_slip is not None:
-            raise FieldError("motor.rated_slip", Notice("only with rated_torque",
-                                                        "ag_slip_only_rated"))
+            raise FieldError("motor.rated_slip", Notice.of(
+                "ag_slip_only_rated", "only with rated_torque"))
         M_start = (m.starting_torque if m.starting_torque is not None
                    else starting_torque_from_rated(m.rated_torque, m.rated_slip))
         if not M0 < M_start:
-            raise FieldError("motor.starting_torque", Notice(
-                f"the motor cannot drive the machine: M_п = {M_start:g} N·m is not above the mean "
-                f"resistance reduced to shaft I, {M0:g} N·m", "ag_motor_too_weak",
-                M_start=M_start, M0=M0))
+            raise FieldError("motor.starting_torque", Notice.of(
+                "ag_motor_too_weak", "the motor cannot drive the machine: M_п = {M_start:g} N·m is "
+                "not above the mean resistance reduced to shaft I, {M0:g} N·m", M_start=M_start,
+                M0=M0))
         return Drive("linear", M0, amplitude, forcing_ratio, M_start=M_start,
                      omega_x=m.synchronous_rpm * RAD_S_PER_RPM)
     for k in ("synchronous_rpm", "starting_torque", "rated_torque", "rated_slip"):
@@ -267,49 +268,50 @@ def build(case: AggregateCase):
     two_mass = [k for k in ("coupling", "machine") if getattr(case, k) is not None]
     chain_keys = [k for k in ("rotors", "shafts", "load") if getattr(case, k) is not None]
     if two_mass and chain_keys:
-        raise FieldError(chain_keys[0], Notice("a case is either the two-mass aggregate "
-                                               "([coupling], [machine]) or a chain ([[rotors]], "
-                                               "[[shafts]]), not both", "chain_or_two_mass"))
+        raise FieldError(chain_keys[0], Notice.of(
+            "chain_or_two_mass", "a case is either the two-mass aggregate ([coupling], [machine]) "
+            "or a chain ([[rotors]], [[shafts]]), not both"))
     if two_mass:
         for k in ("coupling", "machine"):
             if getattr(case, k) is None:
-                raise FieldError(k, Notice("missing: the two-mass aggregate needs [motor], "
-                                           "[coupling] and [machine]", "two_mass_needs"))
+                raise FieldError(k, Notice.of(
+                    "two_mass_needs", "missing: the two-mass aggregate needs [motor], [coupling] "
+                    "and [machine]"))
         if case.motor is None:
-            raise FieldError("motor", Notice("missing: the two-mass aggregate needs [motor] with J "
-                                             "(J_Д)", "ag_two_mass_motor"))
+            raise FieldError("motor", Notice.of(
+                "ag_two_mass_motor", "missing: the two-mass aggregate needs [motor] with J (J_Д)"))
         m = case.machine
         if m.J_III is not None and (m.J_III_0 is not None or m.J_III_positions is not None):
-            raise FieldError("machine.J_III", Notice("give J_III, or J_III_0 with J_III_positions, "
-                                                     "not both", "ag_J_III_twice"))
+            raise FieldError("machine.J_III", Notice.of(
+                "ag_J_III_twice", "give J_III, or J_III_0 with J_III_positions, not both"))
         if m.J_III is None:
             if m.J_III_positions is None:
-                raise FieldError("machine.J_III", Notice(
-                    "missing: give J_III (J_пр.III [kg·m²]), or J_III_0 with J_III_positions",
-                    "J_III_missing"))
+                raise FieldError("machine.J_III", Notice.of(
+                    "J_III_missing", "missing: give J_III (J_пр.III [kg·m²]), or J_III_0 with "
+                    "J_III_positions"))
             if not m.J_III_positions:
-                raise FieldError("machine.J_III_positions", Notice("needs at least one value",
-                                                                   "ag_no_positions"))
+                raise FieldError("machine.J_III_positions", Notice.of(
+                    "ag_no_positions", "needs at least one value"))
             J_III = mean_reduced_inertia(m.J_III_0 or 0.0, m.J_III_positions)
             if not J_III > 0:
-                raise FieldError("machine.J_III_positions", Notice(
-                    "J_пр.III comes out zero: must be positive", "ag_J_III_zero"))
+                raise FieldError("machine.J_III_positions", Notice.of(
+                    "ag_J_III_zero", "J_пр.III comes out zero: must be positive"))
         else:
             J_III = m.J_III
         if m.flywheel is not None and m.flywheel.shaft == "II" and m.i21 is None:
-            raise FieldError("machine.i21", Notice("missing: a flywheel on shaft II needs i21 = "
-                                                   "ω_II/ω_I", "i21_missing"))
+            raise FieldError("machine.i21", Notice.of(
+                "i21_missing", "missing: a flywheel on shaft II needs i21 = ω_II/ω_I"))
         J_I = reduced_inertia_I(J_III, m.i31, m.flywheel.J if m.flywheel else 0.0,
                                 m.flywheel.shaft if m.flywheel else "I", m.i21)
         c, i = _stiffness(case.coupling, "coupling")
         if case.coupling.i != 1.0:
-            raise FieldError("coupling.i", Notice("the coupling joins the motor to shaft I: no "
-                                                  "gear pair (the machine's gears are i21, i31)",
-                                                  "ag_coupling_gear"))
+            raise FieldError("coupling.i", Notice.of(
+                "ag_coupling_gear", "the coupling joins the motor to shaft I: no gear pair (the "
+                "machine's gears are i21, i31)"))
         if case.coupling.between is not None:
-            raise FieldError("coupling.between", Notice("the coupling joins the motor to the "
-                                                        "machine: between is for the shafts of a "
-                                                        "chain", "ag_coupling_between"))
+            raise FieldError("coupling.between", Notice.of(
+                "ag_coupling_between", "the coupling joins the motor to the machine: between is "
+                "for the shafts of a chain"))
         # the motor first: its checks (motor.J missing …) name the field before J_Д enters the chain
         drive = _motor(case.motor, m.M0 * m.i31, m.i31 * m.order, m.M_amplitude * m.i31, False)
         names = ("motor J_Д", "machine J_пр.I")
@@ -318,18 +320,18 @@ def build(case: AggregateCase):
         return ch, drive
     frames = [k for k, r in enumerate(case.rotors or []) if r.fixed]
     if frames and not case.shafts:
-        raise FieldError("shafts", Notice(f"missing: the fixed end rotors[{frames[0]}] holds a "
-                                          "rotor through a shaft to the frame; give [[shafts]] (N "
-                                          "rotors need N − 1 shafts)", "fixed_end_shafts",
-                                          k=frames[0]))
+        raise FieldError("shafts", Notice.of(
+            "fixed_end_shafts", "missing: the fixed end rotors[{k}] holds a rotor through a shaft "
+            "to the frame; give [[shafts]] (N rotors need N − 1 shafts)", k=frames[0]))
     if case.rotors is None or case.shafts is None:
         raise FieldError("rotors" if case.rotors is None else "shafts",
-                   Notice("missing: give the two-mass aggregate ([motor], [coupling], "
-                          "[machine]) or a chain ([[rotors]] and [[shafts]])", "aggregate_form"))
+                   Notice.of(
+                       "aggregate_form", "missing: give the two-mass aggregate ([motor], "
+                       "[coupling], [machine]) or a chain ([[rotors]] and [[shafts]])"))
     if len(case.rotors) < 2:
-        raise FieldError("rotors", Notice(f"a chain needs at least two rotors (got "
-                                          f"{len(case.rotors)})", "two_rotors",
-                                          count=len(case.rotors)))
+        raise FieldError("rotors", Notice.of(
+            "two_rotors", "a chain needs at least two rotors (got {count})", count=len(case.rotors)
+        ))
     if len(case.shafts) != len(case.rotors) - 1:
         raise FieldError("shafts", Notice(f"{len(case.rotors)} rotors need "
                                           f"{len(case.rotors) - 1} shafts between them (got "
@@ -337,15 +339,16 @@ def build(case: AggregateCase):
                                           rotors=len(case.rotors), count=len(case.shafts)))
     for k, r in enumerate(case.rotors):
         if r.fixed and r.J is not None:
-            raise FieldError(f"rotors[{k}].J", Notice("a fixed end (fixed = true) is the frame: it "
-                                                      "has no moment of inertia", "ag_fixed_J"))
+            raise FieldError(f"rotors[{k}].J", Notice.of(
+                "ag_fixed_J", "a fixed end (fixed = true) is the frame: it has no moment of inertia"
+            ))
         if not r.fixed and r.J is None:
-            raise FieldError(f"rotors[{k}].J", Notice("missing required field (moment of inertia "
-                                                      "[kg·m²]; or fixed = true for the frame)",
-                                                      "ag_rotor_J_missing"))
+            raise FieldError(f"rotors[{k}].J", Notice.of(
+                "ag_rotor_J_missing", "missing required field (moment of inertia [kg·m²]; or fixed "
+                "= true for the frame)"))
     names = [r.name or str(k + 1) for k, r in enumerate(case.rotors)]
     if len(set(names)) != len(names):
-        raise FieldError("rotors", Notice("rotor names must differ", "rotor_names"))
+        raise FieldError("rotors", Notice.of("rotor_names", "rotor names must differ"))
     given = [k for k, sh in enumerate(case.shafts) if sh.between is not None]
     if frames or given:
         ch = _tree(case, names, frames, given)
@@ -364,8 +367,8 @@ def build(case: AggregateCase):
                 u *= i
         ch = chain(J, cs, bs, us, names, lines=lines)
     if case.load is not None and case.motor is None:
-        raise FieldError("motor", Notice("missing: a [load] needs a [motor] on the first rotor",
-                                          "load_needs_motor"))
+        raise FieldError("motor", Notice.of(
+            "load_needs_motor", "missing: a [load] needs a [motor] on the first rotor"))
     if case.motor is None:
         return ch, None
     if not ch.is_line:
@@ -401,30 +404,28 @@ def _tree(case: AggregateCase, names: list[str], frames: list[int], given: list[
     n = len(case.rotors)
     if given and len(given) != len(case.shafts):
         k = next(k for k in range(len(case.shafts)) if k not in given)
-        raise FieldError(f"shafts[{k}].between", Notice("missing: give between for every shaft or "
-                                                        "for none (then shaft k joins rotors k and "
-                                                        "k + 1)", "ag_between_all_or_none"))
+        raise FieldError(f"shafts[{k}].between", Notice.of(
+            "ag_between_all_or_none", "missing: give between for every shaft or for none (then "
+            "shaft k joins rotors k and k + 1)"))
     ends = []
     for k, sh in enumerate(case.shafts):
         if sh.between is None:
             ends.append((k, k + 1))
             continue
         if len(sh.between) != 2:
-            raise FieldError(f"shafts[{k}].between", Notice(f"needs two rotor names, input side "
-                                                            f"first (got {len(sh.between)})",
-                                                            "ag_between_two",
-                                                            count=len(sh.between)))
+            raise FieldError(f"shafts[{k}].between", Notice.of(
+                "ag_between_two", "needs two rotor names, input side first (got {count})",
+                count=len(sh.between)))
         idx = []
         for name in sh.between:
             if name not in names:
-                raise FieldError(f"shafts[{k}].between", Notice(
-                    f"unknown rotor {name!r} (rotors: {', '.join(names)})", "ag_unknown_rotor",
-                    name=name, rotors=", ".join(names)))
+                raise FieldError(f"shafts[{k}].between", Notice.of(
+                    "ag_unknown_rotor", "unknown rotor {name!r} (rotors: {rotors})", name=name,
+                    rotors=", ".join(names)))
             idx.append(names.index(name))
         if idx[0] == idx[1]:
-            raise FieldError(f"shafts[{k}].between", Notice(f"joins rotor {names[idx[0]]!r} to "
-                                                            "itself", "ag_shaft_to_itself",
-                                                            name=names[idx[0]]))
+            raise FieldError(f"shafts[{k}].between", Notice.of(
+                "ag_shaft_to_itself", "joins rotor {name!r} to itself", name=names[idx[0]]))
         ends.append((idx[0], idx[1]))
     adj: dict[int, list[tuple[int, int]]] = {r: [] for r in range(n)}
     for k, (a, b) in enumerate(ends):
@@ -432,13 +433,13 @@ def _tree(case: AggregateCase, names: list[str], frames: list[int], given: list[
         adj[b].append((a, k))
     for f in frames:
         if len(adj[f]) != 1:
-            raise FieldError(f"rotors[{f}]", Notice(f"a fixed end is an end of the system: one "
-                                                    f"shaft to it (got {len(adj[f])})",
-                                                    "ag_fixed_one_shaft", count=len(adj[f])))
+            raise FieldError(f"rotors[{f}]", Notice.of(
+                "ag_fixed_one_shaft", "a fixed end is an end of the system: one shaft to it (got "
+                "{count})", count=len(adj[f])))
     free = [r for r in range(n) if r not in frames]
     if not free:
-        raise FieldError("rotors", Notice("every rotor is fixed: at least one must turn",
-                                          "ag_all_fixed"))
+        raise FieldError("rotors", Notice.of(
+            "ag_all_fixed", "every rotor is fixed: at least one must turn"))
     # speed ratios from the first free rotor, through the tree (frames are leaves)
     u: dict[int, float] = {free[0]: 1.0}
     todo = [free[0]]
@@ -453,10 +454,10 @@ def _tree(case: AggregateCase, names: list[str], frames: list[int], given: list[
                 todo.append(nxt)
     missing = [r for r in range(n) if r not in u]
     if missing:
-        raise FieldError("shafts", Notice(f"the rotors and shafts must form one connected system "
-                                          f"without loops: {names[missing[0]]!r} is not joined to "
-                                          f"{names[free[0]]!r}", "ag_not_connected",
-                                          name=names[missing[0]], first=names[free[0]]))
+        raise FieldError("shafts", Notice.of(
+            "ag_not_connected", "the rotors and shafts must form one connected system without "
+            "loops: {name!r} is not joined to {first!r}", name=names[missing[0]],
+            first=names[free[0]]))
     pos = {r: j for j, r in enumerate(free)}
     J = [case.rotors[r].J * _sq(u[r]) for r in free]
     cs, bs, pairs, lines = [], [], [], []
@@ -469,9 +470,9 @@ def _tree(case: AggregateCase, names: list[str], frames: list[int], given: list[
                            (names[a], names[b])))
         if a in frames or b in frames:
             if case.shafts[k].damping:
-                raise FieldError(f"{where}.damping", Notice("a shaft to the frame: its damping is "
-                                                            "not modelled (natural frequencies "
-                                                            "only)", "ag_frame_damping"))
+                raise FieldError(f"{where}.damping", Notice.of(
+                    "ag_frame_damping", "a shaft to the frame: its damping is not modelled "
+                    "(natural frequencies only)"))
             ground[pos[b if a in frames else a]] += c_red
             continue
         cs.append(c_red)

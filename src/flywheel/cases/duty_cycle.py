@@ -173,7 +173,7 @@ def _one_of(table: str, model, keys, required: bool = True) -> str | None:
 
 def _goes_with(loc: str, a: str, b: str) -> FieldError:
     """A key given without the keys it belongs to ("goes with a or b")."""
-    return FieldError(loc, Notice(f"goes with {a} or {b}", "dc_goes_with", a=a, b=b))
+    return FieldError(loc, Notice.of("dc_goes_with", "goes with {a} or {b}", a=a, b=b))
 
 
 def _check(c: DutyCase) -> None:
@@ -183,23 +183,22 @@ def _check(c: DutyCase) -> None:
     # the work of the operation
     routes = _given(op, ("energy", "energy_per_area", "force", "shear_strength"))
     if len(routes) > 1:
-        raise FieldError("operation", Notice(
-            "give the work one way: energy, or energy_per_area with "
-            f"the sheared area, or force (or shear_strength) with thickness and "
-            f"shape (got {', '.join(routes)})", "duty_work_one_way", given=", ".join(routes)))
+        raise FieldError("operation", Notice.of(
+            "duty_work_one_way", "give the work one way: energy, or energy_per_area with the "
+            "sheared area, or force (or shear_strength) with thickness and shape (got {given})",
+            given=", ".join(routes)))
     route = routes[0] if routes else None
     if route is None and op.delta_E is None:
-        raise FieldError("operation", Notice(
-            "missing: give the work of one operation (energy, "
-            "energy_per_area with the sheared area, or force with thickness and "
-            "shape), or delta_E", "duty_work_missing"))
+        raise FieldError("operation", Notice.of(
+            "duty_work_missing", "missing: give the work of one operation (energy, energy_per_area "
+            "with the sheared area, or force with thickness and shape), or delta_E"))
     area_keys = ("sheared_area", "hole_diameter", "cut_length")
     if route in ("energy_per_area", "shear_strength"):
         a = _one_of("operation", op, area_keys)
         if a != "sheared_area" and op.thickness is None:
             area = "π·d·t" if a == "hole_diameter" else "L·t"
-            raise FieldError("operation.thickness", Notice(
-                f"missing: {a} needs the plate's thickness (A = {area})", "dc_area_thickness",
+            raise FieldError("operation.thickness", Notice.of(
+                "dc_area_thickness", "missing: {key} needs the plate's thickness (A = {area})",
                 key=a, area=area))
     else:
         for k in area_keys:
@@ -207,13 +206,13 @@ def _check(c: DutyCase) -> None:
                 raise _goes_with(f"operation.{k}", "energy_per_area", "shear_strength")
     if route in ("force", "shear_strength"):
         if op.thickness is None:
-            raise FieldError("operation.thickness", Notice(
-                "missing: the force's travel (the plate's thickness) sets the work",
-                "duty_thickness_missing"))
+            raise FieldError("operation.thickness", Notice.of(
+                "duty_thickness_missing", "missing: the force's travel (the plate's thickness) "
+                "sets the work"))
         if op.shape is None:
-            raise FieldError("operation.shape", Notice(
-                "missing: state the force over the travel (allowed: constant, falling, "
-                "triangle)", "duty_shape_missing"))
+            raise FieldError("operation.shape", Notice.of(
+                "duty_shape_missing", "missing: state the force over the travel (allowed: "
+                "constant, falling, triangle)"))
     elif op.shape is not None:
         raise _goes_with("operation.shape", "force", "shear_strength")
     # the timing
@@ -224,21 +223,20 @@ def _check(c: DutyCase) -> None:
                          "C_E = ΔE/E needs the work of one operation E")
     if timing == "stroke":
         if op.thickness is None:
-            raise FieldError("operation.thickness", Notice(
-                "missing: the stroke gives the share t/(2·s) of the cycle, which needs the "
-                "plate's thickness t", "dc_stroke_thickness"))
+            raise FieldError("operation.thickness", Notice.of(
+                "dc_stroke_thickness", "missing: the stroke gives the share t/(2·s) of the cycle, "
+                "which needs the plate's thickness t"))
         if op.thickness > 2 * op.stroke:
-            raise FieldError("operation.stroke", Notice(
-                f"{op.stroke:g} m is less than half the thickness {op.thickness:g} m: the share "
-                f"t/(2·s) would exceed 1 (allowed: stroke ≥ {op.thickness / 2:g} m)",
-                "dc_stroke_short", stroke=op.stroke, thickness=op.thickness,
-                half=op.thickness / 2))
+            raise FieldError("operation.stroke", Notice.of(
+                "dc_stroke_short", "{stroke:g} m is less than half the thickness {thickness:g} m: "
+                "the share t/(2·s) would exceed 1 (allowed: stroke ≥ {half:g} m)", stroke=op.stroke,
+                thickness=op.thickness, half=op.thickness / 2))
     if timing == "delta_E" and route is not None:
         E = _work(op).energy
         if op.delta_E > E:
-            raise FieldError("operation.delta_E", Notice(
-                f"{op.delta_E:g} J is more than the work of the operation E = {E:.6g} J "
-                "(allowed: ΔE ≤ E)", "dc_delta_E_above_E", delta_E=op.delta_E, E=E))
+            raise FieldError("operation.delta_E", Notice.of(
+                "dc_delta_E_above_E", "{delta_E:g} J is more than the work of the operation E = "
+                "{E:.6g} J (allowed: ΔE ≤ E)", delta_E=op.delta_E, E=E))
     # cycle and motor
     if c.cycle is not None:
         _one_of("cycle", c.cycle, CYCLES)
@@ -247,26 +245,25 @@ def _check(c: DutyCase) -> None:
     if route is None:
         for name in ("cycle", "motor"):
             if getattr(c, name) is not None:
-                raise FieldError(name, Notice(
-                    "needs the work of one operation (operation.energy, energy_per_area or "
-                    "force); with only delta_E the flywheel alone is sized", "dc_needs_work"))
+                raise FieldError(name, Notice.of(
+                    "dc_needs_work", "needs the work of one operation (operation.energy, "
+                    "energy_per_area or force); with only delta_E the flywheel alone is sized"))
     elif c.cycle is None and motor is None:
-        raise FieldError("cycle", Notice(
-            "missing: give [cycle] (how often), or the motor's power or "
-            "torque to find the largest rate it can keep", "duty_cycle_missing"))
+        raise FieldError("cycle", Notice.of(
+            "duty_cycle_missing", "missing: give [cycle] (how often), or the motor's power or "
+            "torque to find the largest rate it can keep"))
     # the flywheel
     radius = _one_of("flywheel", fw, ("radius_of_gyration", "rim_radius", "rim_diameter"),
                      required=False)
     if fw.J is not None and fw.mass is not None:
-        raise FieldError("flywheel", Notice("give J or mass, not both", "duty_J_or_mass"))
+        raise FieldError("flywheel", Notice.of("duty_J_or_mass", "give J or mass, not both"))
     # the speeds
     speeds = _given(sp, SPEEDS)
     flucts = _given(sp, FLUCTUATIONS)
     units = {SPEEDS[k][1] for k in speeds}
     if len(units) > 1:
-        raise FieldError("flywheel", Notice(f"give the speeds in one unit (got "
-                                            f"{', '.join(speeds)})", "dc_speed_units",
-                                            given=", ".join(speeds)))
+        raise FieldError("flywheel", Notice.of(
+            "dc_speed_units", "give the speeds in one unit (got {given})", given=", ".join(speeds)))
     linear = units == {"rim"}
     given = fw.J is not None or fw.mass is not None
     if given:
@@ -277,17 +274,17 @@ def _check(c: DutyCase) -> None:
                 "fluctuation: the program finds the others" + (f" (got {got})" if got else ""),
                 "dc_given_one_speed", given=got))
         if fw.mass is not None and radius is None and not linear:
-            raise FieldError("flywheel.mass", Notice(
-                "needs the radius (radius_of_gyration, rim_radius or rim_diameter): J = m·k²",
-                "dc_mass_radius"))
+            raise FieldError("flywheel.mass", Notice.of(
+                "dc_mass_radius", "needs the radius (radius_of_gyration, rim_radius or "
+                "rim_diameter): J = m·k²"))
         if fw.J is not None and linear and radius is None:
-            raise FieldError("flywheel.J", Notice(
-                "with speeds at the radius (m/s), give the radius too", "dc_J_radius"))
+            raise FieldError("flywheel.J", Notice.of(
+                "dc_J_radius", "with speeds at the radius (m/s), give the radius too"))
     else:
         if len(flucts) > 1:
-            raise FieldError("flywheel", Notice(
-                f"give one of {', '.join(FLUCTUATIONS)} (got {', '.join(flucts)})",
-                "one_of_keys", keys=", ".join(FLUCTUATIONS), given=", ".join(flucts)))
+            raise FieldError("flywheel", Notice.of(
+                "one_of_keys", "give one of {keys} (got {given})", keys=", ".join(FLUCTUATIONS),
+                given=", ".join(flucts)))
         if len(speeds) + len(flucts) != 2 or len(speeds) == 0:
             got = ", ".join(speeds + flucts)
             raise FieldError("flywheel", Notice(
@@ -301,9 +298,9 @@ def _check(c: DutyCase) -> None:
                          ("cycle.every_revolutions", c.cycle and c.cycle.every_revolutions),
                          ("motor.torque", c.motor and c.motor.torque)):
             if bad is not None:
-                raise FieldError(loc, Notice(
-                    "needs the shaft's speed: with speeds at the radius (m/s) give the "
-                    "flywheel's radius too, or the speeds in rpm", "dc_shaft_speed"))
+                raise FieldError(loc, Notice.of(
+                    "dc_shaft_speed", "needs the shaft's speed: with speeds at the radius (m/s) "
+                    "give the flywheel's radius too, or the speeds in rpm"))
 
 
 def _check_speed_pair(sp: Flywheel, speeds: list[str], flucts: list[str]) -> None:
@@ -319,10 +316,10 @@ def _check_speed_pair(sp: Flywheel, speeds: list[str], flucts: list[str]) -> Non
     if "mean" in level and "max" in level:
         (km, vm), (kx, vx) = level["mean"], level["max"]
         if not vm < vx < 2 * vm:
-            raise FieldError(f"flywheel.{kx}", Notice(
-                f"{vx:g} with {km} = {vm:g} gives min = 2·mean − max = {2 * vm - vx:g} "
-                f"(allowed: {vm:g} < {kx} < {2 * vm:g})", "dc_max_mean", v=vx, mean_key=km,
-                mean=vm, low=2 * vm - vx, key=kx, top=2 * vm))
+            raise FieldError(f"flywheel.{kx}", Notice.of(
+                "dc_max_mean", "{v:g} with {mean_key} = {mean:g} gives min = 2·mean − max = "
+                "{low:g} (allowed: {mean:g} < {key} < {top:g})", v=vx, mean_key=km, mean=vm,
+                low=2 * vm - vx, key=kx, top=2 * vm))
     if "mean" in level and "min" in level:
         (km, vm), (kn, vn) = level["mean"], level["min"]
         if not vn < vm:
@@ -331,9 +328,9 @@ def _check_speed_pair(sp: Flywheel, speeds: list[str], flucts: list[str]) -> Non
                                                       "speed_not_below", v=vn, other=km, vo=vm,
                                                       allowed=f"0 < {kn} < {vm:g}"))
     if flucts == ["drop_percent"] and "max" not in level:
-        raise FieldError("flywheel.drop_percent", Notice(
-            "is a drop from the top speed: give it with max_rpm, max_omega or max_rim_speed",
-            "dc_drop_needs_max"))
+        raise FieldError("flywheel.drop_percent", Notice.of(
+            "dc_drop_needs_max", "is a drop from the top speed: give it with max_rpm, max_omega or "
+            "max_rim_speed"))
 
 
 def _describe(err: dict) -> str:
@@ -442,7 +439,7 @@ def solve_case(c: DutyCase, source: str = "<case>") -> DutyCycleResult:
             "dc_double_precision", detail=str(exc)))) from None
     bad = nonfinite(result)
     if bad is not None:
-        raise CaseFileError(led(f"{source}: ", Notice(
-            f"{bad} is not a finite number: the values are too large or too small for double "
-            "precision", "dc_result_not_finite", result=bad)))
+        raise CaseFileError(led(f"{source}: ", Notice.of(
+            "dc_result_not_finite", "{result} is not a finite number: the values are too large or "
+            "too small for double precision", result=bad)))
     return result

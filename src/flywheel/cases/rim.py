@@ -40,12 +40,12 @@ class RimSpec(StrictModel):
     @model_validator(mode="after")
     def _check(self):
         if not 0.0 < self.share <= 1.0:
-            raise FieldError(("share",), Notice(f"{self.share:g} is not a share of the flywheel's "
-                                                f"J (allowed: 0 < share ≤ 1)", "rim_share",
-                                                share=self.share))
+            raise FieldError(("share",), Notice.of(
+                "rim_share", "{share:g} is not a share of the flywheel's J (allowed: 0 < share ≤ 1)",
+                share=self.share))
         if self.width is not None and self.width_to_thickness is not None:
-            raise FieldError((), Notice("give width or width_to_thickness, not both",
-                                        "rim_width_or_ratio"))
+            raise FieldError((), Notice.of(
+                "rim_width_or_ratio", "give width or width_to_thickness, not both"))
         return self
 
     def check_speed(self, density: float, allowable_stress: float, material: str) -> None:

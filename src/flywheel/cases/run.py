@@ -61,7 +61,8 @@ class Machine(StrictModel):
     @model_validator(mode="after")
     def _check(self):
         if (self.speed_rps is None) == (self.speed_rpm is None):
-            raise ValueError(Notice("give exactly one of speed_rps, speed_rpm", "speed_rps_or_rpm"))
+            raise ValueError(Notice.of(
+                "speed_rps_or_rpm", "give exactly one of speed_rps, speed_rpm"))
         revs = self.cycle_deg / 360.0
         if not 1 <= revs <= CYCLE_REVS_MAX:      # 3.6e9° is whole, but out of range
             raise FieldError(("cycle_deg",), Notice(
@@ -137,9 +138,9 @@ class GivenRim(StrictModel):
     @model_validator(mode="after")
     def _check(self):
         if not self.D_inner < self.D:
-            raise FieldError(("D_inner",), Notice(f"{self.D_inner:g} m is not below D = {self.D:g} m",
-                                                  "rim_inner_above_outer", inner=self.D_inner,
-                                                  D=self.D))
+            raise FieldError(("D_inner",), Notice.of(
+                "rim_inner_above_outer", "{inner:g} m is not below D = {D:g} m", inner=self.D_inner,
+                D=self.D))
         return self
 
 
@@ -182,18 +183,19 @@ class FlywheelSpec(StrictModel):
     @model_validator(mode="after")
     def _rim_share_once(self):
         if self.rim is not None and "rim_share" in self.model_fields_set:
-            raise FieldError(("rim_share",), Notice("with [flywheel.rim] the share is "
-                                                    "flywheel.rim.share (give it there)",
-                                                    "rim_share_twice"))
+            raise FieldError(("rim_share",), Notice.of(
+                "rim_share_twice", "with [flywheel.rim] the share is flywheel.rim.share (give it "
+                "there)"))
         forms = [k for k in ("J", "mass", "given_disk", "given_rim") if getattr(self, k) is not None]
         if len(forms) > 1:
-            raise FieldError((forms[1],), Notice(f"a given flywheel is one of J, mass with "
-                             f"radius_of_gyration, given_disk, given_rim (got {', '.join(forms)})",
-                             "given_flywheel_forms", forms=", ".join(forms)))
+            raise FieldError((forms[1],), Notice.of(
+                "given_flywheel_forms", "a given flywheel is one of J, mass with "
+                "radius_of_gyration, given_disk, given_rim (got {forms})", forms=", ".join(forms)))
         if (self.mass is None) != (self.radius_of_gyration is None):
             which = "radius_of_gyration" if self.mass is not None else "mass"
-            raise FieldError((which,), Notice("missing: mass and radius_of_gyration go together "
-                                              "(J = m·k²)", "mass_radius_missing"))
+            raise FieldError((which,), Notice.of(
+                "mass_radius_missing", "missing: mass and radius_of_gyration go together (J = m·k²)"
+            ))
         if self.rim is not None and self.rim.speed is not None:
             self.rim.check_speed(self.rho, self.sigma, self.material
                                  if self.density is None and self.allowable_stress is None
@@ -349,7 +351,7 @@ def _fields_at(loc: tuple) -> list[str]:
 def _describe(err: dict) -> str:
     if err["type"] in ("union_tag_invalid", "union_tag_not_found"):
         return led(f"{loc_str(clean_loc(err['loc'], _DYAD_TAGS))}: ",
-                   Notice("kind must be one of RRP, RRR, RPR", "dyad_kind"))
+                   Notice.of("dyad_kind", "kind must be one of RRP, RRR, RPR"))
     return describe(err, _fields_at, _DYAD_TAGS)
 
 

@@ -139,9 +139,9 @@ def _validate(t: TabulatedSpec, cycle: float = CYCLE_DEG) -> None:
     p = t.positions_deg
     n = len(p)
     if n == 0:
-        raise TableError(("positions_deg",), Notice(
-            f"no positions (allowed: {MIN_POSITIONS} or more distinct angles within 0 … "
-            f"{cycle:g})", "tab_no_positions", min=MIN_POSITIONS, cycle=cycle))
+        raise TableError(("positions_deg",), Notice.of(
+            "tab_no_positions", "no positions (allowed: {min} or more distinct angles within 0 … "
+            "{cycle:g})", min=MIN_POSITIONS, cycle=cycle))
     for i, a in enumerate(p):
         if not 0.0 <= a <= cycle:
             raise TableError(("positions_deg", i), Notice(
@@ -149,18 +149,18 @@ def _validate(t: TabulatedSpec, cycle: float = CYCLE_DEG) -> None:
                 "tab_outside_cycle", a=a, cycle=cycle, own_cycle=cycle != CYCLE_DEG))
     for i in range(1, n):
         if abs(p[i] - p[i - 1]) < _TOL:
-            raise TableError(("positions_deg", i), Notice(
-                f"duplicated angle {p[i]:g}° (positions {i} and {i + 1})", "tab_duplicated",
-                a=p[i], i=i, j=i + 1))
+            raise TableError(("positions_deg", i), Notice.of(
+                "tab_duplicated", "duplicated angle {a:g}° (positions {i} and {j})", a=p[i], i=i,
+                j=i + 1))
         if p[i] < p[i - 1]:
-            raise TableError(("positions_deg", i), Notice(
-                f"{p[i]:g}° after {p[i - 1]:g}°: positions must increase", "positions_increase",
-                at=p[i], before=p[i - 1]))
+            raise TableError(("positions_deg", i), Notice.of(
+                "positions_increase", "{at:g}° after {before:g}°: positions must increase", at=p[i],
+                before=p[i - 1]))
     distinct = n - 1 if t.closed else n
     if distinct < MIN_POSITIONS:
-        raise TableError(("positions_deg",), Notice(
-            f"{distinct} distinct positions are too few (allowed: {MIN_POSITIONS} or more)",
-            "tab_too_few", n=distinct, min=MIN_POSITIONS))
+        raise TableError(("positions_deg",), Notice.of(
+            "tab_too_few", "{n} distinct positions are too few (allowed: {min} or more)",
+            n=distinct, min=MIN_POSITIONS))
     nodes = np.asarray(p[:distinct], float)
     gaps = np.diff(np.append(nodes, nodes[0] + cycle))
     k = int(np.argmax(gaps))
@@ -174,19 +174,18 @@ def _validate(t: TabulatedSpec, cycle: float = CYCLE_DEG) -> None:
 
     def row(values, loc: tuple, nonneg: bool = False) -> None:
         if len(values) != n:
-            raise TableError(loc, Notice(f"needs {n} values, one per position in positions_deg "
-                                         f"(got {len(values)})", "values_per_position", n=n,
-                                         count=len(values)))
+            raise TableError(loc, Notice.of(
+                "values_per_position", "needs {n} values, one per position in positions_deg (got "
+                "{count})", n=n, count=len(values)))
         if nonneg and min(values) < 0:
             i = int(np.argmin(values))
-            raise TableError(loc + (i,), Notice(
-                f"{values[i]:g} < 0: velocity analogues are magnitudes |V_q| ≥ 0 (the direction "
-                "is in a force's angle_deg)", "tab_negative_analogue", v=values[i]))
+            raise TableError(loc + (i,), Notice.of(
+                "tab_negative_analogue", "{v:g} < 0: velocity analogues are magnitudes |V_q| ≥ 0 "
+                "(the direction is in a force's angle_deg)", v=values[i]))
         if t.closed and abs(values[-1] - values[0]) > _TOL * max(1.0, abs(values[0])):
-            raise TableError(loc + (n - 1,), Notice(
-                f"the value at {cycle:g}° ({values[-1]:g}) must repeat the value at 0° "
-                f"({values[0]:g}): the cycle closes", "tab_not_closed", cycle=cycle,
-                last=values[-1], first=values[0]))
+            raise TableError(loc + (n - 1,), Notice.of(
+                "tab_not_closed", "the value at {cycle:g}° ({last:g}) must repeat the value at 0° "
+                "({first:g}): the cycle closes", cycle=cycle, last=values[-1], first=values[0]))
 
     for name, v in t.points.items():
         row(v, ("points", name), nonneg=True)
@@ -196,41 +195,40 @@ def _validate(t: TabulatedSpec, cycle: float = CYCLE_DEG) -> None:
     for name, lk in t.links.items():
         if lk.mass > 0:
             if lk.point is None:
-                raise TableError(("links", name, "point"), Notice(
-                    f"link {name} has mass {lk.mass:g} kg but no velocity analogues: give point "
-                    f"= a row of [tabulated.points] (rows: {known_points})", "tab_mass_no_point",
-                    link=name, mass=lk.mass, rows=known_points))
+                raise TableError(("links", name, "point"), Notice.of(
+                    "tab_mass_no_point", "link {link} has mass {mass:g} kg but no velocity "
+                    "analogues: give point = a row of [tabulated.points] (rows: {rows})", link=name,
+                    mass=lk.mass, rows=known_points))
         if lk.point is not None and lk.point not in t.points:
-            raise TableError(("links", name, "point"), Notice(
-                f"velocity analogues of {lk.point!r} are missing from [tabulated.points] (rows: "
-                f"{known_points})", "analogues_missing", name=lk.point, rows=known_points))
+            raise TableError(("links", name, "point"), Notice.of(
+                "analogues_missing", "velocity analogues of {name!r} are missing from "
+                "[tabulated.points] (rows: {rows})", name=lk.point, rows=known_points))
         if lk.J > 0:
             key = lk.omega_q or name
             if key not in t.omega_q:
-                raise TableError(("links", name, "omega_q"), Notice(
-                    f"link {name} has J = {lk.J:g} kg·m² but [tabulated.omega_q] has no row "
-                    f"{key!r} (rows: {', '.join(sorted(t.omega_q)) or 'none'})",
-                    "tab_J_no_omega_q", link=name, J=lk.J, key=key,
+                raise TableError(("links", name, "omega_q"), Notice.of(
+                    "tab_J_no_omega_q", "link {link} has J = {J:g} kg·m² but [tabulated.omega_q] "
+                    "has no row {key!r} (rows: {rows})", link=name, J=lk.J, key=key,
                     rows=", ".join(sorted(t.omega_q)) or "none"))
     names: set[str] = set()
     for i, f in enumerate(t.forces):
         if f.point not in t.points:
-            raise TableError(("forces", i, "point"), Notice(
-                f"velocity analogues of {f.point!r} are missing from [tabulated.points] (rows: "
-                f"{known_points})", "analogues_missing", name=f.point, rows=known_points))
+            raise TableError(("forces", i, "point"), Notice.of(
+                "analogues_missing", "velocity analogues of {name!r} are missing from "
+                "[tabulated.points] (rows: {rows})", name=f.point, rows=known_points))
         for key in ("magnitude", "angle_deg"):
             v = getattr(f, key)
             if isinstance(v, list):
                 row(v, ("forces", i, key))
         if f.name in names:
-            raise TableError(("forces", i, "name"), Notice(
-                f"load name {f.name!r} is used twice", "load_twice", name=f.name))
+            raise TableError(("forces", i, "name"), Notice.of(
+                "load_twice", "load name {name!r} is used twice", name=f.name))
         names.add(f.name)
     for i, m in enumerate(t.moments):
         row(m.values, ("moments", i, "values"))
         if m.name in names:
-            raise TableError(("moments", i, "name"), Notice(
-                f"load name {m.name!r} is used twice", "load_twice", name=m.name))
+            raise TableError(("moments", i, "name"), Notice.of(
+                "load_twice", "load name {name!r} is used twice", name=m.name))
         names.add(m.name)
     _check_finite(t)
 
@@ -247,15 +245,14 @@ def _check_finite(t: TabulatedSpec) -> None:
         for name, J in link_inertia_at_positions(t).items():
             if not np.all(np.isfinite(J)):
                 i = int(np.argmin(np.isfinite(J)))
-                raise TableError(("links", name), Notice(
-                    f"m·V_q² + J·ω_q² overflows at position {i + 1} ({t.positions_deg[i]:g}°): "
-                    "the values are out of range (allowed: SI values, m and kg·m²)",
-                    "tab_inertia_overflow", k=i + 1, a=t.positions_deg[i]))
+                raise TableError(("links", name), Notice.of(
+                    "tab_inertia_overflow", "m·V_q² + J·ω_q² overflows at position {k} ({a:g}°): "
+                    "the values are out of range (allowed: SI values, m and kg·m²)", k=i + 1,
+                    a=t.positions_deg[i]))
         for name, M in load_moments_at_positions(t).items():
             if not np.all(np.isfinite(M)):
                 i = int(np.argmin(np.isfinite(M)))
-                raise TableError((), Notice(
-                    f"the reduced moment of {name} overflows at position {i + 1} "
-                    f"({t.positions_deg[i]:g}°): the values are out of range (allowed: SI "
-                    "values, N and m)", "tab_moment_overflow", load=name, k=i + 1,
-                    a=t.positions_deg[i]))
+                raise TableError((), Notice.of(
+                    "tab_moment_overflow", "the reduced moment of {load} overflows at position {k} "
+                    "({a:g}°): the values are out of range (allowed: SI values, N and m)",
+                    load=name, k=i + 1, a=t.positions_deg[i]))

@@ -289,8 +289,8 @@ def _describe(err: dict, data: dict) -> str:
 
 def _pos(field: str, v: float | None, unit: str) -> None:
     if v is not None and not v > 0:
-        raise FieldError(field, Notice(f"must be positive (got {v:g} {unit})", "must_be_positive",
-                                       v=v, unit=unit))
+        raise FieldError(field, Notice.of(
+            "must_be_positive", "must be positive (got {v:g} {unit})", v=v, unit=unit))
 
 
 def _check(case: Task2Case) -> None:
@@ -311,9 +311,9 @@ def _check(case: Task2Case) -> None:
         if len(given) == 1 and given[0] not in SINGLE_SPEEDS:
             other = {"max": "min", "min": "max", "max_rpm": "min_rpm",
                      "min_rpm": "max_rpm"}[given[0]]
-            raise FieldError(f"speed.{other}", Notice(
-                f"missing: speed limits come in pairs ({given[0]} with {other})",
-                "t2_limits_pair", first=given[0], other=other))
+            raise FieldError(f"speed.{other}", Notice.of(
+                "t2_limits_pair", "missing: speed limits come in pairs ({first} with {other})",
+                first=given[0], other=other))
         raise FieldError("speed", Notice("give exactly one of omega0, omega0_rpm, mean, mean_rpm, "
                                          "or the limits max and min (or max_rpm and min_rpm)"
                                          + (f" (got {', '.join(given)})" if given else ""),
@@ -323,36 +323,36 @@ def _check(case: Task2Case) -> None:
     if len(given) == 2 and not getattr(s, given[1]) < getattr(s, given[0]):
         unit = "rpm" if "rpm" in given[0] else "rad/s"
         v, vo = getattr(s, given[1]), getattr(s, given[0])
-        raise FieldError(f"speed.{given[1]}", Notice(
-            f"must be below {given[0]} (got {v:g} {unit} against {vo:g} {unit})",
-            "t2_limit_below", limit=given[0], v=v, vo=vo, unit=unit))
+        raise FieldError(f"speed.{given[1]}", Notice.of(
+            "t2_limit_below", "must be below {limit} (got {v:g} {unit} against {vo:g} {unit})",
+            limit=given[0], v=v, vo=vo, unit=unit))
     f = case.flywheel
     for name, unit in (("J", "kg·m²"), ("mass", "kg"), ("radius_of_gyration", "m"),
                        ("rim_radius", "m"), ("fluctuation_percent", "%")):
         _pos(f"flywheel.{name}", getattr(f, name), unit)
     if f.delta is not None and not 0 < f.delta < 2:
-        raise FieldError("flywheel.delta", Notice(f"must lie between 0 and 2 (got {f.delta:g})",
-                                                  "delta_0_2", delta=f.delta))
+        raise FieldError("flywheel.delta", Notice.of(
+            "delta_0_2", "must lie between 0 and 2 (got {delta:g})", delta=f.delta))
     if f.J is not None and f.mass is not None:
-        raise FieldError("flywheel", Notice("give J or mass with radius_of_gyration, not both",
-                                             "task2_J_or_mass"))
+        raise FieldError("flywheel", Notice.of(
+            "task2_J_or_mass", "give J or mass with radius_of_gyration, not both"))
     if f.mass is not None and f.radius_of_gyration is None:
-        raise FieldError("flywheel", Notice("mass and radius_of_gyration go together (J = m·k²)",
-                                             "mass_radius_together"))
+        raise FieldError("flywheel", Notice.of(
+            "mass_radius_together", "mass and radius_of_gyration go together (J = m·k²)"))
     if f.delta is not None and f.fluctuation_percent is not None:
-        raise FieldError("flywheel", Notice("give delta or fluctuation_percent, not both",
-                                             "task2_delta_or_percent"))
+        raise FieldError("flywheel", Notice.of(
+            "task2_delta_or_percent", "give delta or fluctuation_percent, not both"))
     limits = len(given) == 2
     if limits and (f.delta is not None or f.fluctuation_percent is not None):
         which = "delta" if f.delta is not None else "fluctuation_percent"
-        raise FieldError(f"flywheel.{which}", Notice(
-            "the speed limits already give δ = (max − min)/ω_ср: give one or the other",
-            "t2_limits_give_delta"))
+        raise FieldError(f"flywheel.{which}", Notice.of(
+            "t2_limits_give_delta", "the speed limits already give δ = (max − min)/ω_ср: give one "
+            "or the other"))
     if f.J is None and f.mass is None and f.delta is None and f.fluctuation_percent is None \
             and not limits:
-        raise FieldError("flywheel", Notice(
-            "give J, or mass and radius_of_gyration, or the asked delta (or "
-            "fluctuation_percent, or the speed limits)", "t2_flywheel_missing"))
+        raise FieldError("flywheel", Notice.of(
+            "t2_flywheel_missing", "give J, or mass and radius_of_gyration, or the asked delta (or "
+            "fluctuation_percent, or the speed limits)"))
     if f.rim is not None and f.rim.speed is not None:
         try:
             f.rim.check_speed(f.rho, f.sigma, f.material if f.density is None and
@@ -364,28 +364,29 @@ def _check(case: Task2Case) -> None:
     mean_known = given[0] in ("mean", "mean_rpm") or limits
     for i, x in enumerate(case.at_deg):
         if not 0 <= x <= case.cycle_deg:
-            raise FieldError(f"at_deg[{i}]", Notice(
-                f"must lie within the cycle 0…{case.cycle_deg:g}° (got {x:g})", "t2_at_in_cycle",
+            raise FieldError(f"at_deg[{i}]", Notice.of(
+                "t2_at_in_cycle", "must lie within the cycle 0…{cycle:g}° (got {x:g})",
                 cycle=case.cycle_deg, x=x))
     if case.diagram is not None:
         if case.driving is not None or case.resistance is not None:
-            raise FieldError("diagram", Notice("give either [diagram] or [driving] and [resistance], "
-                                                "not both", "diagram_or_graphs"))
+            raise FieldError("diagram", Notice.of(
+                "diagram_or_graphs", "give either [diagram] or [driving] and [resistance], not both"
+            ))
         if case.at_deg:
-            raise FieldError("at_deg", Notice(
-                "a diagram given by areas has no moments between its crossings: ε, ω and t at "
-                "an angle need [driving] and [resistance] graphs", "t2_diagram_at"))
+            raise FieldError("at_deg", Notice.of(
+                "t2_diagram_at", "a diagram given by areas has no moments between its crossings: "
+                "ε, ω and t at an angle need [driving] and [resistance] graphs"))
         _check_diagram(case.diagram, case.cycle_deg)
         d = case.diagram
         uses_power = d.energy_fluctuation_coefficient is not None and d.work_per_cycle is None
         if uses_power and case.power is None:
-            raise FieldError("diagram.energy_fluctuation_coefficient", Notice(
-                "needs the work done per cycle: give diagram.work_per_cycle [J], or the mean "
-                "power (top-level power [W]) with a mean speed", "t2_efc_needs_work"))
+            raise FieldError("diagram.energy_fluctuation_coefficient", Notice.of(
+                "t2_efc_needs_work", "needs the work done per cycle: give diagram.work_per_cycle "
+                "[J], or the mean power (top-level power [W]) with a mean speed"))
         if uses_power and not mean_known:
-            raise FieldError("power", Notice(
-                "the work per cycle P·Φ/ω_ср needs the mean speed: give speed.mean, mean_rpm or "
-                "the limits max/min", "t2_work_needs_mean"))
+            raise FieldError("power", Notice.of(
+                "t2_work_needs_mean", "the work per cycle P·Φ/ω_ср needs the mean speed: give "
+                "speed.mean, mean_rpm or the limits max/min"))
         if case.power is not None and not uses_power:
             raise FieldError("power", Notice(
                 'is used by a graph value "power" or by [diagram] energy_fluctuation_coefficient '
@@ -393,8 +394,9 @@ def _check(case: Task2Case) -> None:
         return
     for name in ("driving", "resistance"):
         if getattr(case, name) is None:
-            raise FieldError(name, Notice("missing: give [driving] and [resistance] graphs, or a "
-                                          "[diagram]", "t2_graphs_missing"))
+            raise FieldError(name, Notice.of(
+                "t2_graphs_missing", "missing: give [driving] and [resistance] graphs, or a "
+                "[diagram]"))
     unknowns = [(n, g.unknown_field()) for n, g in (("driving", case.driving),
                                                     ("resistance", case.resistance))
                 if g.unknown_field()]
@@ -452,44 +454,42 @@ def _check_work(driving, resistance) -> None:
 def _check_graph(name: str, g, cycle: float) -> None:
     if isinstance(g, PointsGraph):
         if len(g.points) < 2:
-            raise FieldError(f"{name}.points", Notice("needs at least two [angle, moment] points",
-                                                      "t2_points_two"))
+            raise FieldError(f"{name}.points", Notice.of(
+                "t2_points_two", "needs at least two [angle, moment] points"))
         for i in range(1, len(g.points)):
             if g.points[i][0] < g.points[i - 1][0]:
-                raise FieldError(f"{name}.points[{i}]", Notice(
-                    f"angle {g.points[i][0]:g}° comes after {g.points[i - 1][0]:g}°: "
-                    "angles must not decrease", "points_go_back", at=g.points[i][0],
-                    before=g.points[i - 1][0]))
+                raise FieldError(f"{name}.points[{i}]", Notice.of(
+                    "points_go_back", "angle {at:g}° comes after {before:g}°: angles must not "
+                    "decrease", at=g.points[i][0], before=g.points[i - 1][0]))
             if i >= 2 and g.points[i][0] == g.points[i - 1][0] == g.points[i - 2][0]:
-                raise FieldError(f"{name}.points[{i}]", Notice(
-                    f"a third value at {g.points[i][0]:g}°: a jump has two (the value "
-                    "before and the value after it)", "points_third_value", at=g.points[i][0]))
+                raise FieldError(f"{name}.points[{i}]", Notice.of(
+                    "points_third_value", "a third value at {at:g}°: a jump has two (the value "
+                    "before and the value after it)", at=g.points[i][0]))
         if g.points[0][0] != 0 or g.points[-1][0] != cycle:
-            raise FieldError(f"{name}.points", Notice(
-                f"must span the cycle 0…{cycle:g}° (spans "
-                f"{g.points[0][0]:g}…{g.points[-1][0]:g}°)", "points_span", cycle=cycle,
-                first=g.points[0][0], last=g.points[-1][0]))
+            raise FieldError(f"{name}.points", Notice.of(
+                "points_span", "must span the cycle 0…{cycle:g}° (spans {first:g}…{last:g}°)",
+                cycle=cycle, first=g.points[0][0], last=g.points[-1][0]))
     elif isinstance(g, (TriangleGraph, RectangleGraph, TrapezoidGraph)):
         if not 0 <= g.from_deg < g.to_deg <= cycle:
-            raise FieldError(f"{name}.from_deg", Notice(
-                f"need 0 ≤ from_deg < to_deg ≤ {cycle:g} (got {g.from_deg:g}, {g.to_deg:g})",
-                "from_to_deg", cycle=cycle, start=g.from_deg, end=g.to_deg))
+            raise FieldError(f"{name}.from_deg", Notice.of(
+                "from_to_deg", "need 0 ≤ from_deg < to_deg ≤ {cycle:g} (got {start:g}, {end:g})",
+                cycle=cycle, start=g.from_deg, end=g.to_deg))
         if isinstance(g, TriangleGraph) and g.apex_deg is not None \
                 and not g.from_deg <= g.apex_deg <= g.to_deg:
-            raise FieldError(f"{name}.apex_deg", Notice(
-                f"must lie within {g.from_deg:g}…{g.to_deg:g}° (got {g.apex_deg:g})",
-                "t2_apex_within", start=g.from_deg, end=g.to_deg, apex=g.apex_deg))
+            raise FieldError(f"{name}.apex_deg", Notice.of(
+                "t2_apex_within", "must lie within {start:g}…{end:g}° (got {apex:g})",
+                start=g.from_deg, end=g.to_deg, apex=g.apex_deg))
         if isinstance(g, TrapezoidGraph) and not (
                 g.from_deg <= g.top_from_deg <= g.top_to_deg <= g.to_deg):
-            raise FieldError(f"{name}.top_from_deg", Notice(
-                "need from_deg ≤ top_from_deg ≤ top_to_deg ≤ to_deg", "trapezoid_top"))
+            raise FieldError(f"{name}.top_from_deg", Notice.of(
+                "trapezoid_top", "need from_deg ≤ top_from_deg ≤ top_to_deg ≤ to_deg"))
     elif isinstance(g, HarmonicGraph):
         n = max(len(g.a), len(g.b))
         if g.orders is not None:
             if len(g.orders) != n:
-                raise FieldError(f"{name}.orders", Notice(f"{len(g.orders)} orders for {n} terms",
-                                                          "orders_for_terms", orders=len(g.orders),
-                                                          terms=n))
+                raise FieldError(f"{name}.orders", Notice.of(
+                    "orders_for_terms", "{orders} orders for {terms} terms", orders=len(g.orders),
+                    terms=n))
             if any(not k > 0 for k in g.orders):
                 # library use only: no CLI input reaches this
                 raise FieldError(f"{name}.orders", "orders must be positive")
@@ -519,45 +519,45 @@ def _check_diagram(d: Diagram, cycle: float) -> None:
             "energy_fluctuation_coefficient" + (f" (got {', '.join(forms)})" if forms else ""),
             "t2_diagram_form", given=", ".join(forms)))
     if d.work_per_cycle is not None and forms[0] != "energy_fluctuation_coefficient":
-        raise FieldError("diagram.work_per_cycle", Notice(
-            "only with energy_fluctuation_coefficient", "t2_work_only_efc"))
+        raise FieldError("diagram.work_per_cycle", Notice.of(
+            "t2_work_only_efc", "only with energy_fluctuation_coefficient"))
     if forms[0] in ("delta_E", "energy_fluctuation_coefficient"):
         for k in ("delta_E", "energy_fluctuation_coefficient", "work_per_cycle"):
             _pos(f"diagram.{k}", getattr(d, k), "J" if k != "energy_fluctuation_coefficient"
                  else "")
         for k in ("crossings_deg", "moment_scale", "angle_scale_deg"):
             if getattr(d, k) is not None:
-                raise FieldError(f"diagram.{k}", Notice(
-                    f"only with areas or energies (not with {forms[0]})", "t2_only_areas",
-                    form=forms[0]))
+                raise FieldError(f"diagram.{k}", Notice.of(
+                    "t2_only_areas", "only with areas or energies (not with {form})", form=forms[0]
+                ))
         return
     vals, key = (d.areas, "areas") if d.areas is not None else (d.energies, "energies")
     if d.areas is not None:
         for k in ("moment_scale", "angle_scale_deg"):
             if getattr(d, k) is None:
-                raise FieldError(f"diagram.{k}", Notice("missing: areas need the drawing's "
-                                                        "scales", "t2_areas_scales"))
+                raise FieldError(f"diagram.{k}", Notice.of(
+                    "t2_areas_scales", "missing: areas need the drawing's scales"))
             _pos(f"diagram.{k}", getattr(d, k), "")
     if len(vals) < 2:
-        raise FieldError(f"diagram.{key}", Notice("needs at least two areas", "t2_two_areas"))
+        raise FieldError(f"diagram.{key}", Notice.of("t2_two_areas", "needs at least two areas"))
     total, size = math.fsum(vals), math.fsum(abs(v) for v in vals)
     if abs(total) > BALANCE_RTOL * size:
-        raise FieldError(f"diagram.{key}", Notice(
-            f"sum to {total:.6g}, not 0: over a cycle the areas above "
-            "and below the mean line must be equal", "areas_do_not_close", total=total))
+        raise FieldError(f"diagram.{key}", Notice.of(
+            "areas_do_not_close", "sum to {total:.6g}, not 0: over a cycle the areas above and "
+            "below the mean line must be equal", total=total))
     if d.crossings_deg is not None:
         c = d.crossings_deg
         if len(c) != len(vals) + 1:
-            raise FieldError("diagram.crossings_deg", Notice(
-                f"needs {len(vals) + 1} angles for {len(vals)} areas (got {len(c)})",
-                "t2_crossings_count", n=len(vals) + 1, areas=len(vals), count=len(c)))
+            raise FieldError("diagram.crossings_deg", Notice.of(
+                "t2_crossings_count", "needs {n} angles for {areas} areas (got {count})",
+                n=len(vals) + 1, areas=len(vals), count=len(c)))
         for i in range(1, len(c)):
             if not c[i] > c[i - 1]:
-                raise FieldError(f"diagram.crossings_deg[{i}]", Notice("angles must increase",
-                                                                       "t2_angles_increase"))
+                raise FieldError(f"diagram.crossings_deg[{i}]", Notice.of(
+                    "t2_angles_increase", "angles must increase"))
         if c[0] < 0 or c[-1] > cycle:
-            raise FieldError("diagram.crossings_deg", Notice(f"must lie within 0…{cycle:g}°",
-                                                             "t2_crossings_within", cycle=cycle))
+            raise FieldError("diagram.crossings_deg", Notice.of(
+                "t2_crossings_within", "must lie within 0…{cycle:g}°", cycle=cycle))
 
 
 # -- loading and solving --------------------------------------------------------------------------

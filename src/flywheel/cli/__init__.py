@@ -178,10 +178,10 @@ def main() -> None:
 
             traceback.print_exc()
         what = f"{type(exc).__name__}: {exc}".splitlines()[0][:300]
-        text = Notice(f"internal error in flywheel {__version__} (a bug, not your input): "
-                      f"{what}; please report it with the command and its input files"
-                      f"{'' if state.debug else ' (--debug shows the traceback)'}",
-                      "internal_error", version=__version__, what=what, debug=state.debug)
+        text = Notice.of("internal_error", "internal error in flywheel {version} (a bug, not "
+                         "your input): {what}; please report it with the command and its input "
+                         "files{hint}", version=__version__, what=what, debug=state.debug,
+                         hint="" if state.debug else " (--debug shows the traceback)")
         say_error(text)
         sys.exit(1)
     finally:

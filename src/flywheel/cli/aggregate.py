@@ -50,10 +50,10 @@ def aggregate_command(
 
         check_lang(lang)
         if t_end is not None and not (math.isfinite(t_end) and 0 < t_end <= MAX_T_END):
-            raise InputError(Notice(f"--t-end: {t_end:g} s is out of range (allowed: 0 … "
-                                    f"{MAX_T_END:g} s; a start-up is over in seconds to a "
-                                    "minute, and the integration time grows with it)",
-                                    "t_end_range", t=t_end, top=MAX_T_END))
+            raise InputError(Notice.of(
+                "t_end_range", "--t-end: {t:g} s is out of range (allowed: 0 … {top:g} s; a "
+                "start-up is over in seconds to a minute, and the integration time grows with it)",
+                t=t_end, top=MAX_T_END))
         from flywheel.render.report_folder import check_formats
 
         formats = check_formats(report)
@@ -65,8 +65,9 @@ def aggregate_command(
         c = load_aggregate_case(case)
         ch, drive = to_model(c, str(case))
         if plot is not None and drive is None:
-            raise InputError(Notice("--plot needs a [motor]: a chain without one has no motion "
-                                    "in time", "plot_needs_motor"))
+            raise InputError(Notice.of(
+                "plot_needs_motor", "--plot needs a [motor]: a chain without one has no motion in "
+                "time"))
         from flywheel.cli.progress import stage_bar
 
         with stage_bar(lang) as progress:   # a bar on a terminal only (a long --t-end takes seconds)
@@ -95,7 +96,7 @@ def aggregate_command(
         if plot is not None:
             typer.echo(nm.name("plot_written", lang, path=plot))
         if out is not None:
-            from flywheel.render.nomenclature import prefix
+            from flywheel.render.messages import prefix
 
             typer.echo(f"{prefix('written', lang)}: {out}/ "
                        f"({', '.join(written)})")

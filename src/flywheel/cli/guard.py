@@ -82,8 +82,8 @@ def needs_out():
     """The error of --report without --out (task2, aggregate, duty-cycle)."""
     from flywheel.errors import Notice
 
-    return Notice("--report writes into the output folder: give --out DIR as well",
-                  "report_needs_out")
+    return Notice.of(
+        "report_needs_out", "--report writes into the output folder: give --out DIR as well")
 
 
 def guard(func, *args, source: Path | None = None, case=None, **kwargs):

@@ -14,7 +14,7 @@ from contextlib import contextmanager
 def stage_bar(lang: str = "en") -> Iterator[Callable[[str, float], None]]:
     """``with stage_bar(lang) as progress: compute(progress=progress)``: one bar per stage on
     stderr while a terminal shows it, removed when done (``transient``); the stage's name
-    ("start-up") in ``lang`` (render/nomenclature.py ``stage_name``)."""
+    ("start-up") in ``lang`` (render/messages.py ``stage_name``)."""
     from rich.console import Console
     from rich.progress import BarColumn, Progress, TaskProgressColumn, TextColumn, TimeElapsedColumn
 

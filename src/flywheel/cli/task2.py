@@ -29,8 +29,9 @@ def _check_at(at, cycle_deg: float) -> None:
 
     for x in at or ():
         if not (math.isfinite(x) and 0.0 <= x <= cycle_deg):
-            raise InputError(Notice(f"--at {x:g}: must lie within the cycle 0…{cycle_deg:g}°",
-                                    "t2_at_option", x=x, cycle=cycle_deg))
+            raise InputError(Notice.of(
+                "t2_at_option", "--at {x:g}: must lie within the cycle 0…{cycle:g}°", x=x,
+                cycle=cycle_deg))
 
 
 def task2_command(
@@ -164,8 +165,8 @@ def _from_options(profile, given, v: dict, at, lang: str) -> _Job:
                                 "profile_choice", value=repr(profile)))
     for name, x in given:
         if not math.isfinite(x):
-            raise InputError(Notice(f"{name} must be a finite number (got {x})",
-                                    "option_not_finite", option=name, got=str(x)))
+            raise InputError(Notice.of("option_not_finite", "{option} must be a finite number "
+                                       "(got {got})", option=name, got=str(x)))
     for name, x, unit in (("--md", v["md"], "N·m"), ("--j", v["j"], "kg·m²"),
                           ("--omega0", v["omega0"], "rad/s"), ("--mc", v["mc"], "N·m")):
         if x is not None and x <= 0:

@@ -41,14 +41,16 @@ def variants_command(
     from flywheel.errors import Notice, led
 
     if not 1 <= count <= 9999:
-        fail(Notice(f"--count: {count} is not allowed (allowed: 1…9999)", "option_not_allowed",
-                    option="--count", got=count, allowed="1…9999"))
+        fail(Notice.of(
+            "option_not_allowed", "--count: {got} is not allowed (allowed: 1…9999)",
+            option="--count", got=count, allowed="1…9999"))
     if seed is not None and not 0 <= seed < 2 ** 63:
-        fail(Notice(f"--seed: {seed} is not allowed (allowed: 0 … 2^63 − 1)",
-                    "option_not_allowed", option="--seed", got=seed, allowed="0 … 2^63 − 1"))
+        fail(Notice.of(
+            "option_not_allowed", "--seed: {got} is not allowed (allowed: 0 … 2^63 − 1)",
+            option="--seed", got=seed, allowed="0 … 2^63 − 1"))
     if points < 36:
-        fail(Notice(f"--points: {points} is too few (allowed: 36 or more)", "points_too_few",
-                    n=points))
+        fail(Notice.of(
+            "points_too_few", "--points: {n} is too few (allowed: 36 or more)", n=points))
     check_lang(lang)
     if sheets_format is not None and not sheets:
         fail(Notice(f"--sheets-format {sheets_format}: given without --sheets (it says the "
@@ -63,7 +65,7 @@ def variants_command(
     from rich.console import Console
     from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn
 
-    from flywheel.render.nomenclature import stage_name
+    from flywheel.render.messages import stage_name
 
     from flywheel.render.grading import print_variants
     from flywheel.teaching.variants import generate, load_template, write_variants
@@ -166,12 +168,13 @@ def grade_command(
     if not report.students:                 # an error: one line, nothing else written
         if report.problems:
             first = report.problems[0].said()
-            fail(Notice(f"nothing could be graded ({len(report.problems)} problem(s); the "
-                        f"first: {first})", "nothing_graded", n=len(report.problems),
-                        detail=first))
+            fail(Notice.of(
+                "nothing_graded", "nothing could be graded ({n} problem(s); the first: {detail})",
+                n=len(report.problems), detail=first))
         files = ", ".join(report.files) or ", ".join(map(str, answers))
-        fail(Notice(f"{files}: nothing could be graded: no filled-in student rows (a row needs "
-                    "a student name and a variant)", "no_student_rows", files=files))
+        fail(Notice.of(
+            "no_student_rows", "{files}: nothing could be graded: no filled-in student rows (a row "
+            "needs a student name and a variant)", files=files))
     if out is not None:
         pieces = report_csv_pieces(report)
         if csv_style == "excel-ru":
@@ -194,7 +197,7 @@ def grade_command(
             print_report(report, lang=lang)
         for path in (out, gradebook):
             if path is not None and report.students:
-                from flywheel.render.nomenclature import prefix
+                from flywheel.render.messages import prefix
 
                 typer.echo(f"{prefix('written', lang)}: {path}")
 

@@ -1,6 +1,6 @@
 """The command-line parser's own errors (typer's vendored click: an unknown option or command, a
 missing argument, an option's value of the wrong type) as one errors.Notice, so that the one
-`error:` line is said in the user's --lang (render/nomenclature.py, block ``msgs_cli``).
+`error:` line is said in the user's --lang (render/messages.py, the catalogue).
 
 The English text is the parser's own, unchanged; the Russian one is made from the exception's
 fields (the option's name, its possibilities, the pydantic error type of a value that does not

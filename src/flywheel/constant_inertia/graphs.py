@@ -267,9 +267,9 @@ def piecewise_linear(points: Sequence[tuple[float, float]], cycle: float = TWO_P
     for i in range(1, len(pts)):
         if pts[i][0] < pts[i - 1][0]:
             at, before = math.degrees(pts[i][0]), math.degrees(pts[i - 1][0])
-            raise InputError(Notice(
-                f"graph angles must not decrease: point {i} at {at:g}° comes after {before:g}°",
-                "t2_graph_angles_back", i=i, at=at, before=before))
+            raise InputError(Notice.of(
+                "t2_graph_angles_back", "graph angles must not decrease: point {i} at {at:g}° "
+                "comes after {before:g}°", i=i, at=at, before=before))
     scale = max(cycle, 1.0) * 1e-12
     if abs(pts[0][0]) > scale or abs(pts[-1][0] - cycle) > scale:
         # library use only: no CLI input reaches this
@@ -295,9 +295,9 @@ def _check_span(start: float, end: float, cycle: float) -> float:
     cycle's end (rounding: 360.0000000001°) taken as the cycle's end."""
     if not (0.0 <= start < end <= cycle * (1 + 1e-12)):
         a, b, c = math.degrees(start), math.degrees(end), math.degrees(cycle)
-        raise InputError(Notice(
-            f"the graph's interval {a:g}…{b:g}° must satisfy 0 ≤ from < to ≤ {c:g}°",
-            "t2_graph_interval", start=a, end=b, cycle=c))
+        raise InputError(Notice.of(
+            "t2_graph_interval", "the graph's interval {start:g}…{end:g}° must satisfy 0 ≤ from < "
+            "to ≤ {cycle:g}°", start=a, end=b, cycle=c))
     return min(end, cycle)
 
 

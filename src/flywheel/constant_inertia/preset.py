@@ -38,13 +38,13 @@ def seed_task(profile: str = "triangle", *, M_D: float = 15.0, J: float = 12.0,
     end = math.radians(d1) if end is None else end
     if not start < end:
         a, b = math.degrees(start), math.degrees(end)
-        raise InputError(Notice(f"from ({a:g}°) must be less than to ({b:g}°)",
-                                "t2_from_below_to", start=a, end=b))
+        raise InputError(Notice.of(
+            "t2_from_below_to", "from ({start:g}°) must be less than to ({end:g}°)", start=a, end=b
+        ))
     if start < 0 or end > TWO_PI * (1 + 1e-12):
-        raise InputError(Notice(f"from and to must lie within 0…360° (got "
-                                f"{math.degrees(start):g}°, {math.degrees(end):g}°)",
-                                "from_to_cycle", start=math.degrees(start),
-                                end=math.degrees(end)))
+        raise InputError(Notice.of(
+            "from_to_cycle", "from and to must lie within 0…360° (got {start:g}°, {end:g}°)",
+            start=math.degrees(start), end=math.degrees(end)))
     check_positive("M_D", M_D, "N·m")
     check_positive("J", J, "kg·m²")
     check_positive("ω0", omega0, "rad/s")

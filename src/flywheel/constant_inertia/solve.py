@@ -52,7 +52,7 @@ class NotFiniteError(OverflowError):
 
 def python_detail(text: str) -> Notice:
     """What Python's arithmetic said ("-inf + inf in fsum"), the detail of a NotFiniteError: a
-    Notice, so that render/nomenclature.py can say the known ones in Russian."""
+    Notice, so that render/messages.py can say the known ones in Russian."""
     return Notice(text, "t2_python_error", words=text)
 
 
@@ -362,9 +362,9 @@ def integrate(f: Callable[[float], float], a: float, b: float,
             continue
         if len(parts) + len(todo) > _MAX_INTERVALS:
             a_deg, b_deg = math.degrees(a), math.degrees(b)
-            raise InputError(Notice(f"the time law did not converge on {a_deg:.6g}…{b_deg:.6g}° "
-                                    "(the speed comes too close to zero)", "t2_time_law",
-                                    a=a_deg, b=b_deg))
+            raise InputError(Notice.of(
+                "t2_time_law", "the time law did not converge on {a:.6g}…{b:.6g}° (the speed comes "
+                "too close to zero)", a=a_deg, b=b_deg))
         todo.append((mid, x1))
         todo.append((x0, mid))
     return math.fsum(parts)
@@ -497,8 +497,9 @@ def power_value(make: Callable[[float], Moment], power: float, omega_mean: float
     w0 = _cycle_work(m0, "work_driving" if which == "driving" else "work_resistance")
     w1 = _cycle_work(m1, "work_driving" if which == "driving" else "work_resistance")
     if w1 == w0:
-        raise InputError(Notice(f"the {which} moment's value does not change its work: the "
-                                "mean power cannot find it", "t2_power_no_change", which=which))
+        raise InputError(Notice.of(
+            "t2_power_no_change", "the {which} moment's value does not change its work: the mean "
+            "power cannot find it", which=which))
     target = power * m0.cycle / omega_mean
     x = (target - w0) / (w1 - w0)
     x = float(round(x, 12)) if abs(x - round(x, 12)) < 1e-12 * max(1.0, abs(x)) else x
@@ -508,10 +509,10 @@ def power_value(make: Callable[[float], Moment], power: float, omega_mean: float
                                               f"{x!r} N·m", "nf_power_moment", which=which,
                                               x=repr(x)))
     if x < 0.0:
-        raise InputError(Notice(f"the mean power {power:.6g} W needs a negative {which} moment "
-                                f"value ({x:.6g}): the graph's fixed part alone does more work "
-                                f"than P·Φ/ω_ср = {target:.6g} J", "t2_power_negative",
-                                power=power, which=which, x=x, target=target))
+        raise InputError(Notice.of(
+            "t2_power_negative", "the mean power {power:.6g} W needs a negative {which} moment "
+            "value ({x:.6g}): the graph's fixed part alone does more work than P·Φ/ω_ср = "
+            "{target:.6g} J", power=power, which=which, x=x, target=target))
     return x
 
 
@@ -541,9 +542,9 @@ def balance(make_D: Callable[[float], Moment], make_C: Callable[[float], Moment]
     other = _cycle_work(known, theirs)
     w0, w1 = _cycle_work(make(0.0), mine), _cycle_work(make(1.0), mine)
     if w1 == w0:
-        raise InputError(Notice(f"the {unknown} moment's unknown value does not change its "
-                                "work: the cycle balance cannot find it", "t2_balance_no_change",
-                                which=unknown))
+        raise InputError(Notice.of(
+            "t2_balance_no_change", "the {which} moment's unknown value does not change its work: "
+            "the cycle balance cannot find it", which=unknown))
     # a net work within round-off of zero (zero-mean harmonics leave 1e-13 J) balances with
     # x = 0; the same tolerance as the steadiness test of ``solve``
     if math.isfinite(other - w0) and \
@@ -573,9 +574,9 @@ def _speed_from_mean(A_max: float, A_min: float, J: float, omega_mean: float) ->
     w_max = omega_mean + dT / (2 * J * omega_mean)
     w_min = omega_mean - dT / (2 * J * omega_mean)
     if w_min <= 0.0:
-        raise InputError(Notice(
-            f"J = {J:.6g} kg·m² is too small for a mean speed of {omega_mean:.6g} rad/s: the "
-            f"energy fluctuation {dT:.6g} J would stop the machine", "t2_J_too_small", J=J,
+        raise InputError(Notice.of(
+            "t2_J_too_small", "J = {J:.6g} kg·m² is too small for a mean speed of {omega:.6g} "
+            "rad/s: the energy fluctuation {dT:.6g} J would stop the machine", J=J,
             omega=omega_mean, dT=dT))
     return w_max * w_max - 2 * A_max / J
 
@@ -583,8 +584,8 @@ def _speed_from_mean(A_max: float, A_min: float, J: float, omega_mean: float) ->
 def _check_delta(delta: float | None) -> None:
     """δ, when asked, within 0 < δ < 2 (ω_min = ω_ср·(1 − δ/2) > 0)."""
     if delta is not None and not (0.0 < delta < 2.0):
-        raise InputError(Notice(f"δ must lie between 0 and 2 (got {delta:g})", "t2_delta_0_2",
-                                delta=delta))
+        raise InputError(Notice.of(
+            "t2_delta_0_2", "δ must lie between 0 and 2 (got {delta:g})", delta=delta))
 
 
 def check_positive(name: str, value: float | None, unit: str) -> None:
@@ -632,17 +633,17 @@ def _motion(bounds: list[float], kinds: list[str], A: list[float], J: float | No
             # library use only: no CLI input reaches this
             raise InputError("give the flywheel: J, or mass and radius of gyration, or δ")
         if omega_mean is None:
-            raise InputError(Notice("to find J from δ give the mean speed, not ω0",
-                                    "t2_delta_needs_mean"))
+            raise InputError(Notice.of(
+                "t2_delta_needs_mean", "to find J from δ give the mean speed, not ω0"))
         if dT <= 0.0:
-            raise InputError(Notice("the energy does not fluctuate: any J gives δ = 0",
-                                    "t2_no_fluctuation"))
+            raise InputError(Notice.of(
+                "t2_no_fluctuation", "the energy does not fluctuate: any J gives δ = 0"))
         J = _J_for(dT, omega_mean, delta)
     if omega_mean is not None:
         if not steady:
-            raise InputError(Notice("a mean speed needs steady motion (the work over the "
-                                    f"cycle is {A[-1]:.6g} J, not 0): give ω0 instead",
-                                    "t2_mean_needs_steady", work=A[-1]))
+            raise InputError(Notice.of(
+                "t2_mean_needs_steady", "a mean speed needs steady motion (the work over the cycle "
+                "is {work:.6g} J, not 0): give ω0 instead", work=A[-1]))
         w0sq = _speed_from_mean(A_max, A_min, J, omega_mean)
     else:
         w0sq = omega0 * omega0
@@ -837,9 +838,9 @@ def solve_areas(energies: Sequence[float], J: float | None = None, *, cycle: flo
         raise InputError("a diagram needs at least two areas")
     total, size = math.fsum(e), math.fsum(abs(x) for x in e)
     if abs(total) > BALANCE_RTOL * size:
-        raise InputError(Notice(f"the areas sum to {total:.6g}, not 0: over a cycle of steady "
-                                "motion the areas above and below the mean line are equal",
-                                "t2_areas_sum", total=total))
+        raise InputError(Notice.of(
+            "t2_areas_sum", "the areas sum to {total:.6g}, not 0: over a cycle of steady motion "
+            "the areas above and below the mean line are equal", total=total))
     A = [0.0]
     for x in e[:-1]:
         A.append(A[-1] + x)
@@ -851,7 +852,7 @@ def solve_areas(energies: Sequence[float], J: float | None = None, *, cycle: flo
             raise InputError(f"{len(e)} areas need {len(e) + 1} crossing angles "
                              f"(got {len(bounds)})")
         if any(b1 <= b0 for b0, b1 in zip(bounds, bounds[1:])):
-            raise InputError(Notice("crossing angles must increase", "t2_crossings_increase"))
+            raise InputError(Notice.of("t2_crossings_increase", "crossing angles must increase"))
     else:
         bounds = [cycle * i / len(e) for i in range(len(e) + 1)]
     res = _motion(bounds, ["crossing"] * len(A), A, J, omega0, omega_mean, True, delta,

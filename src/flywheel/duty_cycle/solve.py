@@ -328,11 +328,11 @@ def _speeds_from_flywheel(d: DutyCycle, J: float) -> _Timeline:
         need = _timeline(d, w1, 0.0).dE
         what = "½·m·v²" if d.linear_speeds else "½·J·ω²"
         raise DutyCycleError(d.field("flywheel", "flywheel"),
-                             Notice(f"the flywheel is too small: to give the {need:.6g} J (ΔE) "
-                                    f"of each operation its speed would fall to zero ({what} = "
-                                    f"{0.5 * J * w1 ** 2:.6g} J at most); give a larger flywheel",
-                                    "duty_flywheel_small", need=need, energy=what,
-                                    top=0.5 * J * w1 ** 2))
+                             Notice.of(
+                                 "duty_flywheel_small", "the flywheel is too small: to give the "
+                                 "{need:.6g} J (ΔE) of each operation its speed would fall to zero "
+                                 "({energy} = {top:.6g} J at most); give a larger flywheel",
+                                 need=need, energy=what, top=0.5 * J * w1 ** 2))
     x = _bisect(f, 0.0, top)
     return _timeline(d, *pair(x))
 
@@ -364,9 +364,9 @@ def solve(d: DutyCycle) -> DutyCycleResult:
     else:
         w1, w2 = _speed_pair(d)
         if not w1 > w2 > 0:
-            raise DutyCycleError(d.field("speed", "flywheel"), Notice(
-                f"the speed limits {w1:.17g} and {w2:.17g} leave no drop (allowed: ω_max > "
-                "ω_min > 0)", "dc_no_drop", w1=w1, w2=w2))
+            raise DutyCycleError(d.field("speed", "flywheel"), Notice.of(
+                "dc_no_drop", "the speed limits {w1:.17g} and {w2:.17g} leave no drop (allowed: "
+                "ω_max > ω_min > 0)", w1=w1, w2=w2))
         tl = _timeline(d, w1, w2)
         J = 2.0 * tl.dE / ((w1 - w2) * (w1 + w2))
     _check_timeline(d, tl)
@@ -394,14 +394,14 @@ def _check_timeline(d: DutyCycle, tl: _Timeline) -> None:
             need=E / d.period))
     if d.revolutions is not None and tl.T < E / (TWO_PI * d.revolutions) * (1 - _TOL):
         need = E / (TWO_PI * d.revolutions)
-        raise DutyCycleError(d.field("motor", "motor.torque"), Notice(
-            f"the motor's torque {tl.T:.6g} N·m is less than the mean moment of the operations "
-            f"E/(2π·k) = {need:.6g} N·m: the flywheel would never recover (allowed: at least "
-            f"{need:.6g} N·m)", "dc_torque_weak", T=tl.T, need=need))
+        raise DutyCycleError(d.field("motor", "motor.torque"), Notice.of(
+            "dc_torque_weak", "the motor's torque {T:.6g} N·m is less than the mean moment of the "
+            "operations E/(2π·k) = {need:.6g} N·m: the flywheel would never recover (allowed: at "
+            "least {need:.6g} N·m)", T=tl.T, need=need))
     if tl.t_op is not None and tl.Tc is not None and tl.t_op > tl.Tc * (1 + _TOL):
-        raise DutyCycleError(d.field("operation", "operation"), Notice(
-            f"the operation takes {tl.t_op:.6g} s, longer than the cycle T_c = {tl.Tc:.6g} s "
-            "(allowed: at most the cycle)", "dc_operation_too_long", t_op=tl.t_op, Tc=tl.Tc))
+        raise DutyCycleError(d.field("operation", "operation"), Notice.of(
+            "dc_operation_too_long", "the operation takes {t_op:.6g} s, longer than the cycle T_c "
+            "= {Tc:.6g} s (allowed: at most the cycle)", t_op=tl.t_op, Tc=tl.Tc))
     if tl.t_op is not None and tl.t_op < 0:
         # library use only: no CLI input reaches this
         raise DutyCycleError(d.field("operation", "operation"),
@@ -444,17 +444,19 @@ def _result(d: DutyCycle, tl: _Timeline, J: float) -> DutyCycleResult:
         if not lin and tl.T > 0:
             checks.append(("recovery_time_two_ways", J * (w1 - w2) / tl.T - tl.t_rec))
         if dE == 0.0:
-            warnings.append(Notice("the motor alone gives the operation its energy (P·t_op ≥ E): "
-                                   "the flywheel gives nothing, ΔE = 0", "duty_motor_alone"))
+            warnings.append(Notice.of(
+                "duty_motor_alone", "the motor alone gives the operation its energy (P·t_op ≥ E): "
+                "the flywheel gives nothing, ΔE = 0"))
         if tl.t_idle > tl.Tc * 1e-9:
-            warnings.append(Notice(f"the motor is stronger than the operations need: it works "
-                                   f"{tl.t_op + tl.t_rec:.6g} s of each {tl.Tc:.6g} s cycle and "
-                                   f"idles {tl.t_idle:.6g} s at ω_max (its torque taken to fall to "
-                                   f"zero there)", "duty_motor_idles", t_work=tl.t_op + tl.t_rec,
-                                   t_cycle=tl.Tc, t_idle=tl.t_idle))
+            warnings.append(Notice.of(
+                "duty_motor_idles", "the motor is stronger than the operations need: it works "
+                "{t_work:.6g} s of each {t_cycle:.6g} s cycle and idles {t_idle:.6g} s at ω_max "
+                "(its torque taken to fall to zero there)", t_work=tl.t_op + tl.t_rec,
+                t_cycle=tl.Tc, t_idle=tl.t_idle))
     if not 0 < delta <= 0.3 and dE > 0:
-        warnings.append(Notice(f"δ = {delta:.4g}: the speed swings by more than 30 % of the mean",
-                               "duty_delta_large", delta=delta))
+        warnings.append(Notice.of(
+            "duty_delta_large", "δ = {delta:.4g}: the speed swings by more than 30 % of the mean",
+            delta=delta))
     return DutyCycleResult(
         work=d.work, energy=E, delta_E=dE,
         energy_fluctuation_coefficient=None if not E else dE / E,

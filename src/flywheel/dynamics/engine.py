@@ -56,12 +56,11 @@ def firing_angles(case, mech, dcs: dict) -> dict[str, float]:
         best = min((h, h + 2 * np.pi), key=lambda a: abs((want - a + np.pi * 2) % _TWO_REV - 2 * np.pi))
         gap = abs((want - best + 2 * np.pi) % _TWO_REV - 2 * np.pi)
         if gap > np.pi / 2 + 1e-12:
-            raise InputError(led(f"cylinders[{idx[c.name]}].fires_at_deg: ", Notice(
-                f"{c.fires_at_deg:g}° is {math.degrees(gap):.4g}° from the nearest head dead "
-                f"centre of piston {c.piston} ({_deg(h)}, {_deg(h + 2 * np.pi)}): a cylinder "
-                f"fires at its head dead centre (allowed: within 90° of one)", "run_fires_far",
-                deg=c.fires_at_deg, gap=math.degrees(gap), piston=c.piston, h1=_deg(h),
-                h2=_deg(h + 2 * np.pi))))
+            raise InputError(led(f"cylinders[{idx[c.name]}].fires_at_deg: ", Notice.of(
+                "run_fires_far", "{deg:g}° is {gap:.4g}° from the nearest head dead centre of "
+                "piston {piston} ({h1}, {h2}): a cylinder fires at its head dead centre (allowed: "
+                "within 90° of one)", deg=c.fires_at_deg, gap=math.degrees(gap), piston=c.piston,
+                h1=_deg(h), h2=_deg(h + 2 * np.pi))))
         return best
 
     order = case.machine.firing_order

@@ -404,9 +404,9 @@ def _load_list(mech: Mechanism, kin: Kinematics, w: np.ndarray, e: np.ndarray, l
     first-group couple. Weights and inertia loads have no reaction on the frame."""
     _check_names(kin, loads)
     if FRAME in kin.links:
-        raise InputError(Notice(f"force analysis: a link is named {FRAME!r}, the name of the "
-                                f"frame in the reactions (allowed: any other name)",
-                                "run_link_named_frame", frame=FRAME))
+        raise InputError(Notice.of(
+            "run_link_named_frame", "force analysis: a link is named {frame!r}, the name of the "
+            "frame in the reactions (allowed: any other name)", frame=FRAME))
     n = kin.phi.size
     inertia = _inertia(mech, kin, w, e, loads)
     g = np.asarray(loads.gravity, float)

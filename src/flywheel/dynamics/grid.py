@@ -42,10 +42,10 @@ def closed_grid(n_points: int, extra: list[float], cycle: float = 2 * np.pi) -> 
 def grid_options(case, n_points: int, at_deg: list[float] | None) -> list[float]:
     """Check --points and --at; the report angles [deg] (default: the case's output.at_deg)."""
     if not 36 <= n_points <= MAX_POINTS:
-        raise InputError(Notice(
-            f"--points: {n_points} is out of range (allowed: 36 … {MAX_POINTS}; results converge "
-            f"well before: the default {DEFAULT_POINTS} is within 1e-4 of a 4× finer grid)",
-            "points_range", n=n_points, top=MAX_POINTS, default=DEFAULT_POINTS))
+        raise InputError(Notice.of(
+            "points_range", "--points: {n} is out of range (allowed: 36 … {top}; results converge "
+            "well before: the default {default} is within 1e-4 of a 4× finer grid)", n=n_points,
+            top=MAX_POINTS, default=DEFAULT_POINTS))
     at_deg = list(case.output.at_deg if at_deg is None else at_deg)
     for a in at_deg:
         if not math.isfinite(a):
@@ -101,8 +101,8 @@ def slider_frame(mech, dcs: dict, slider: str, near: str, what: str) -> tuple:
     kinds = {dc.kind: dc for dc in dcs[slider]}
     if set(kinds) != {"outer", "inner"}:
         lead, sep, role = what.rpartition(": ")        # "cylinders HP: piston"
-        raise InputError(led(lead + sep, Notice(
-            f"{role} {slider} has no pair of dead centres", "run_no_dead_centres", role=role,
+        raise InputError(led(lead + sep, Notice.of(
+            "run_no_dead_centres", "{role} {slider} has no pair of dead centres", role=role,
             slider=slider)))
     a, b = kinds["outer"], kinds["inner"]
     return (d, u, base, a, b) if near == "outer" else (d, u, base, b, a)

@@ -255,10 +255,10 @@ def design_rim(J: float, omega: float, density: float, allowable_stress: float, 
         t = math.sqrt(m / (math.pi * D * ratio * density))
         b = ratio * t
     if not t < D:
-        raise InputError(Notice(
-            f"flywheel.rim: the rim comes out {t:.4g} m thick on a mean diameter of {D:.4g} m, "
-            f"so it has no hole (allowed: thickness < mean diameter: a higher rim speed, a wider "
-            f"rim, or a smaller share)", "rim_no_hole", t=t, D=D))
+        raise InputError(Notice.of(
+            "rim_no_hole", "flywheel.rim: the rim comes out {t:.4g} m thick on a mean diameter of "
+            "{D:.4g} m, so it has no hole (allowed: thickness < mean diameter: a higher rim speed, "
+            "a wider rim, or a smaller share)", t=t, D=D))
     return RimDesign(J=float(J), share=float(share), omega=float(omega), density=float(density),
                      allowable_stress=float(allowable_stress), speed_from=speed_from,
                      D_mean=D, rim_speed=v, stress=density * v ** 2, mass=m, thickness=t,

@@ -63,8 +63,9 @@ def work_and_energy(phi: np.ndarray, loads: LoadsResult, red: ReductionResult,
     if abs(work_known) <= 1e-9 * float(energy.cumulative_work(np.abs(M_known), phi)[-1]):
         # only conservative loads (gravity, say): nothing to balance, round-off aside
         M_const, work_known = 0.0, 0.0
-        warnings.append(Notice("the loads do no net work over a cycle: the balancing moment is 0 "
-                               "(the flywheel only smooths the loads' periodic part)", "no_net_work"))
+        warnings.append(Notice.of(
+            "no_net_work", "the loads do no net work over a cycle: the balancing moment is 0 (the "
+            "flywheel only smooths the loads' periodic part)"))
     elif machine.balance == "driving" and not M_const > 0:
         raise InputError(Notice(
             f"the loads do {work_known:+.6g} J of work over a cycle: a constant driving moment "
@@ -137,9 +138,9 @@ def size_flywheel(phi: np.ndarray, en: EnergyResult, red: ReductionResult, machi
         J_req = J_first + J_given * fw.speed_ratio ** 2
     J_fly = J_req - J_first if J_given is None else J_given * fw.speed_ratio ** 2
     if J_given is None and J_fly <= 0:
-        warnings.append(Notice(f"the first group already has {J_first:.6g} kg·m² ≥ J_required = "
-                               f"{J_req:.6g} kg·m²: no flywheel is needed", "no_flywheel_needed",
-                               J_first=J_first, J_required=J_req))
+        warnings.append(Notice.of(
+            "no_flywheel_needed", "the first group already has {J_first:.6g} kg·m² ≥ J_required = "
+            "{J_required:.6g} kg·m²: no flywheel is needed", J_first=J_first, J_required=J_req))
     J_exact, T0_exact = sizing.J_required_exact(en.A, red.J_II, omega_m, delta)
     k_plus, k_minus = sizing.tangent_slopes(omega_m, delta)
     i_max, i_min = sizing.tangency_points(en.A, red.J_II, omega_m, delta)
@@ -174,8 +175,9 @@ def size_flywheel(phi: np.ndarray, en: EnergyResult, red: ReductionResult, machi
 
 def _overflow() -> Notice:
     """The error of results beyond double precision."""
-    return Notice("the results overflow: the case's values are out of range (allowed: SI units, "
-                  "m, kg, N, Pa)", "run_overflow")
+    return Notice.of(
+        "run_overflow", "the results overflow: the case's values are out of range (allowed: SI "
+        "units, m, kg, N, Pa)")
 
 
 def true_motion(phi: np.ndarray, en: EnergyResult, red: ReductionResult,
@@ -186,11 +188,11 @@ def true_motion(phi: np.ndarray, en: EnergyResult, red: ReductionResult,
     A, J_II = en.A, red.J_II
     J_I = max(sz.J_required, sz.J_first_group)            # what is really on the crank shaft
     if not J_I + float(J_II.min()) > 0:
-        raise InputError(Notice("the machine has no inertia: the loads cause no fluctuation of "
-                                "energy (ΔT_нб = 0, so no flywheel is sized), no link carries "
-                                "mass and nothing is on the crank shaft, so ω(φ) is undefined "
-                                "(allowed: masses in [links] or machine.first_group)",
-                                "run_no_inertia"))
+        raise InputError(Notice.of(
+            "run_no_inertia", "the machine has no inertia: the loads cause no fluctuation of "
+            "energy (ΔT_нб = 0, so no flywheel is sized), no link carries mass and nothing is on "
+            "the crank shaft, so ω(φ) is undefined (allowed: masses in [links] or "
+            "machine.first_group)"))
     if not all(np.isfinite(x) for x in (J_I, en.delta_T_max, float(np.max(np.abs(J_II))),
                                           float(np.max(np.abs(A))))):
         raise InputError(_overflow())
@@ -262,21 +264,20 @@ def given_flywheel_delta(en: EnergyResult, red: ReductionResult, machine, J_give
     inertia at all."""
     J_I = float(sum(machine.first_group.values())) + J_given * speed_ratio ** 2
     if not J_I + float(red.J_II.min()) > 0:
-        raise InputError(Notice("the machine has no inertia (allowed: a flywheel.J > 0, masses "
-                                "in [links] or machine.first_group)", "run_given_no_inertia"))
+        raise InputError(Notice.of(
+            "run_given_no_inertia", "the machine has no inertia (allowed: a flywheel.J > 0, masses "
+            "in [links] or machine.first_group)"))
     T0 = motion.T0_for_mean_speed(en.A, J_I, red.J_II, machine.omega_mean)
     _, _, wm, delta = motion.speed_fluctuation(motion.omega_from_energy(T0, en.A, J_I, red.J_II))
     if not abs(wm - machine.omega_mean) <= 1e-6 * machine.omega_mean:
         # ω_min → 0 and still (ω_max + ω_min)/2 > ω_m: no steady motion at this mean speed
         swing, need = float(np.ptp(en.A)), float(np.ptp(en.A)) / (2 * machine.omega_mean ** 2)
-        raise InputError(Notice(
-            f"the given flywheel (J = {J_given:.6g} kg·m²) is too small for these "
-            f"loads: the energy change over the cycle, {swing:.4g} J, "
-            f"stops the machine before it can average ω_m = "
-            f"{machine.omega_mean:.6g} rad/s — no steady motion exists (allowed: a "
-            f"J_I + J_II of at least about {need:.4g} kg·m² on "
-            f"the crank shaft: a larger flywheel.J, or smaller loads)", "given_flywheel_small",
-            J=J_given, swing=swing, omega=machine.omega_mean, need=need))
+        raise InputError(Notice.of(
+            "given_flywheel_small", "the given flywheel (J = {J:.6g} kg·m²) is too small for these "
+            "loads: the energy change over the cycle, {swing:.4g} J, stops the machine before it "
+            "can average ω_m = {omega:.6g} rad/s — no steady motion exists (allowed: a J_I + J_II "
+            "of at least about {need:.4g} kg·m² on the crank shaft: a larger flywheel.J, or "
+            "smaller loads)", J=J_given, swing=swing, omega=machine.omega_mean, need=need))
     return float(delta)
 
 
@@ -293,16 +294,16 @@ def dynamics(phi: np.ndarray, loads: LoadsResult, red: ReductionResult, machine,
         else:
             delta = given_flywheel_delta(en, red, machine, J_given, fw.speed_ratio)
             if delta == 0:
-                raise InputError(Notice(
-                    f"the given flywheel (J = {J_given:.6g} kg·m²) is not checked: the speed "
-                    "does not fluctuate at all (δ = 0: no load does work and no link's mass "
-                    "moves, so the kinetic energy is constant) (allowed: a case with loads or "
-                    "masses)", "run_given_no_fluctuation", J=J_given))
+                raise InputError(Notice.of(
+                    "run_given_no_fluctuation", "the given flywheel (J = {J:.6g} kg·m²) is not "
+                    "checked: the speed does not fluctuate at all (δ = 0: no load does work and no "
+                    "link's mass moves, so the kinetic energy is constant) (allowed: a case with "
+                    "loads or masses)", J=J_given))
             if not 0 < delta < 2:
-                raise InputError(Notice(
-                    f"the given flywheel (J = {J_given:.6g} kg·m²) is too small: the speed "
-                    f"fluctuates by δ = {delta:.6g} (allowed: a larger flywheel.J)",
-                    "run_given_delta", J=J_given, delta=delta))
+                raise InputError(Notice.of(
+                    "run_given_delta", "the given flywheel (J = {J:.6g} kg·m²) is too small: the "
+                    "speed fluctuates by δ = {delta:.6g} (allowed: a larger flywheel.J)", J=J_given,
+                    delta=delta))
             sz = size_flywheel(phi, en, red, machine, fw, delta=delta, J_given=J_given)
         mo = true_motion(phi, en, red, sz)
     return en, with_rim_speeds(sz, mo, fw), mo
@@ -365,8 +366,9 @@ def force_analysis(phi: np.ndarray, red: ReductionResult, en: EnergyResult, mo: 
     fa_true = fa if motion == "true" else fo.kinetostatics(mech, kin, true_w, true_e, loads)
     warnings = []
     if not any(getattr(m, "mass", 0) or getattr(m, "J_S", 0) for m in loads.masses.values()):
-        warnings.append(Notice("force analysis: no link has mass or J_S, so the reactions are those "
-                               "of the given forces alone (no inertia forces)", "forces_massless"))
+        warnings.append(Notice.of(
+            "forces_massless", "force analysis: no link has mass or J_S, so the reactions are "
+            "those of the given forces alone (no inertia forces)"))
     P, Ft, Fr = crank_pin_load(mech, kin, fa)
     c, ref = closure(fa_true.balancing_moment)
     return ForceResult(
@@ -445,22 +447,20 @@ def time_domain(case, phi: np.ndarray, red: ReductionResult, en: EnergyResult,
         n_up = timedomain.startup_cycles(phi, J, en.M_known, motor, machine.omega_mean,
                                          delta)
         if n_up is not None and n_up > timedomain.MAX_STARTUP_CYCLES:
-            raise InputError(Notice(
-                f"motor: the start-up of --transients would take about {n_up:.3g} cycles "
-                f"(ω̄·τ·(ln(50/δ) − 1)/Φ with the time constant τ = J̄·ω_x/M_п), more than the limit "
-                f"of {timedomain.MAX_STARTUP_CYCLES} cycles: the motor (motor.starting_torque, "
+            raise InputError(Notice.of(
+                "startup_too_long", "motor: the start-up of --transients would take about {n:.3g} "
+                "cycles (ω̄·τ·(ln(50/δ) − 1)/Φ with the time constant τ = J̄·ω_x/M_п), more than "
+                "the limit of {top} cycles: the motor (motor.starting_torque, "
                 "motor.no_load_speed_rpm) is too weak for these masses; run without --transients",
-                "startup_too_long", n=n_up, top=timedomain.MAX_STARTUP_CYCLES))
+                n=n_up, top=timedomain.MAX_STARTUP_CYCLES))
     n_down = timedomain.rundown_cycles(phi, J, en.M_known, float(mo.omega[0]))
     if n_down is not None and n_down > timedomain.MAX_RUNDOWN_CYCLES:
         work = 0.5 * float(J[0]) * float(mo.omega[0]) ** 2 / n_down
-        raise InputError(Notice(
-            f"the run-down of --transients would take about {n_down:.3g} cycles (the kinetic "
-            f"energy ½·J·ω² over the work the loads take per cycle, "
-            f"{work:.3g} J), more "
-            f"than the limit of {timedomain.MAX_RUNDOWN_CYCLES} cycles: the loads are very small "
-            "for the masses; run without --transients", "rundown_too_long", n=n_down, work=work,
-            top=timedomain.MAX_RUNDOWN_CYCLES))
+        raise InputError(Notice.of(
+            "rundown_too_long", "the run-down of --transients would take about {n:.3g} cycles (the "
+            "kinetic energy ½·J·ω² over the work the loads take per cycle, {work:.3g} J), more "
+            "than the limit of {top} cycles: the loads are very small for the masses; run without "
+            "--transients", n=n_down, work=work, top=timedomain.MAX_RUNDOWN_CYCLES))
     verification = timedomain.verify_steady(phi, J, dJ, en.M_sum, mo.omega,
                                             progress=stage("steady check"))
     histories, means = {}, None

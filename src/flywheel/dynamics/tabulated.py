@@ -210,10 +210,10 @@ def tabulated_reduction(spec, phi: np.ndarray) -> ReductionResult:
         if J_parts[name].min() < -0.01 * Jd.max():
             i = int(np.argmin(J_parts[name]))
             J_low, at = float(J_parts[name][i]), math.degrees(phi[i])
-            warnings.append(Notice(f"tabulated: the {kind} interpolation of link {name}'s share of "
-                                   f"J_II dips below zero ({J_low:.3g} kg·m² at φ = {at:.1f}°): "
-                                   "give more positions near there", "tabulated_negative_J",
-                                   kind=kind, link=name, J=J_low, phi_deg=at))
+            warnings.append(Notice.of(
+                "tabulated_negative_J", "tabulated: the {kind} interpolation of link {link}'s "
+                "share of J_II dips below zero ({J:.3g} kg·m² at φ = {phi_deg:.1f}°): give more "
+                "positions near there", kind=kind, link=name, J=J_low, phi_deg=at))
     return stages.reduced_inertia(phi, J_parts, dJ_parts, warnings)
 
 

@@ -367,10 +367,12 @@ def rundown(phi_grid: np.ndarray, J: np.ndarray, dJ: np.ndarray, M_loads: np.nda
            "t": h.t, "omega": h.omega, "phi": h.phi}
     if conservative and not stopped:
         out["reason"] = (
-            Notice(f"the loads do no net work over a cycle ({work:.3g} J): without the drive the "
-                   f"machine keeps turning", "rundown_no_work", work=work)
+            Notice.of(
+                "rundown_no_work", "the loads do no net work over a cycle ({work:.3g} J): without "
+                "the drive the machine keeps turning", work=work)
             if not work > 1e-9 * scale else
-            Notice(f"the loads do positive work over a cycle ({work:+.3g} J: they drive, as an "
-                   f"engine's gas does): without the constant resistance the machine speeds up, "
-                   f"there is no run-down", "rundown_positive_work", work=work))
+            Notice.of(
+                "rundown_positive_work", "the loads do positive work over a cycle ({work:+.3g} J: "
+                "they drive, as an engine's gas does): without the constant resistance the machine "
+                "speeds up, there is no run-down", work=work))
     return out

@@ -203,13 +203,13 @@ class Chain:
                 raise InputError("the ground stiffness needs one value per rotor")
             for k, v in enumerate(self.ground):
                 if not (math.isfinite(v) and v >= 0):
-                    raise InputError(Notice(
-                        f"rotor {self.names[k]}: the stiffness to the frame reduced to shaft I must "
-                        f"be finite and not negative (got {v:g} N·m/rad)", "ag_ground_not_finite",
+                    raise InputError(Notice.of(
+                        "ag_ground_not_finite", "rotor {name}: the stiffness to the frame reduced "
+                        "to shaft I must be finite and not negative (got {v:g} N·m/rad)",
                         name=self.names[k], v=v))
             if not np.any(self.ground > 0):      # every one underflows to 0 (gear ratios ≪ 1)
-                raise InputError(Notice("a system fixed to the frame needs a shaft to it",
-                                        "ag_ground_zero"))
+                raise InputError(Notice.of(
+                    "ag_ground_zero", "a system fixed to the frame needs a shaft to it"))
         for what, vals, unit, rotor in (("moment of inertia", self.J, " kg·m²", True),
                                         ("speed ratio", self.ratio, "", True),
                                         ("stiffness", self.c, " N·m/rad", False),
@@ -226,14 +226,14 @@ class Chain:
         # a reduced J or c of 0: the product J·u² or c·u² underflows (gear ratios ≪ 1)
         for k, v in enumerate(self.J):
             if not v > 0:
-                raise InputError(Notice(f"rotor {self.names[k]}: moment of inertia must be "
-                                        f"positive (got {v:g} kg·m²)", "ag_J_not_positive",
-                                        name=self.names[k], v=v))
+                raise InputError(Notice.of(
+                    "ag_J_not_positive", "rotor {name}: moment of inertia must be positive (got "
+                    "{v:g} kg·m²)", name=self.names[k], v=v))
         for k, v in enumerate(self.c):
             if not v > 0:
-                raise InputError(Notice(f"connection {k + 1}: stiffness must be positive "
-                                        f"(got {v:g} N·m/rad)", "ag_c_not_positive",
-                                        connection=k + 1, v=v))
+                raise InputError(Notice.of(
+                    "ag_c_not_positive", "connection {connection}: stiffness must be positive (got "
+                    "{v:g} N·m/rad)", connection=k + 1, v=v))
         for k, v in enumerate(self.damping):
             if not v >= 0:
                 # library use only: no CLI input reaches this

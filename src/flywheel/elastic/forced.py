@@ -99,17 +99,17 @@ def steady_state(ch: Chain, drive: Drive, modes: Modes | None = None) -> Steady:
         k = resonant_mode(ch, drive, modes, w)
         if k is not None:
             wn = float(modes.elastic[k])
-            raise InputError(Notice(
-                f"the forcing frequency {w:.6g} rad/s ({w / (2 * math.pi):.6g} Hz) equals the "
-                f"natural frequency {wn:.6g} rad/s of torsional mode {k + 1} (within "
-                f"{RESONANCE_TOL:g}) and nothing damps it: the steady amplitude is unbounded (give "
-                f"a coupling damping, a linear motor characteristic, or change the speed)",
-                "ag_resonance", w=w, hz=w / (2 * math.pi), wn=wn, mode=k + 1, tol=RESONANCE_TOL))
+            raise InputError(Notice.of(
+                "ag_resonance", "the forcing frequency {w:.6g} rad/s ({hz:.6g} Hz) equals the "
+                "natural frequency {wn:.6g} rad/s of torsional mode {mode} (within {tol:g}) and "
+                "nothing damps it: the steady amplitude is unbounded (give a coupling damping, a "
+                "linear motor characteristic, or change the speed)", w=w, hz=w / (2 * math.pi),
+                wn=wn, mode=k + 1, tol=RESONANCE_TOL))
         X, t = _harmonic(ch, drive, w)
         if not (np.all(np.isfinite(X)) and np.all(np.isfinite(t))):
-            raise InputError(Notice(f"the steady amplitudes are not finite at the forcing "
-                                    f"frequency {w:.6g} rad/s: the harmonic solution overflows "
-                                    "double precision", "ag_amplitudes_not_finite", w=w))
+            raise InputError(Notice.of(
+                "ag_amplitudes_not_finite", "the steady amplitudes are not finite at the forcing "
+                "frequency {w:.6g} rad/s: the harmonic solution overflows double precision", w=w))
     twist_mean = -drive.M0 / ch.c
     theta = np.concatenate([[0.0], np.cumsum(twist_mean)])
     twist_amp = np.abs(t)

@@ -81,11 +81,10 @@ def natural_frequencies(ch: Chain) -> Modes:
     if not (finite and np.all(np.isfinite(lam)) and np.all(np.isfinite(vec))):
         c_top, J_low = float(np.max(ch.c)), float(np.min(ch.J))
         ratio = c_top / J_low
-        raise InputError(Notice(
-            f"the natural frequencies are not finite: the eigenproblem K·x = ω²·M·x overflows "
-            f"double precision (stiffness up to {c_top:g} N·m/rad against inertia down to "
-            f"{J_low:g} kg·m², c/J = {ratio:g} 1/s²)", "ag_eigen_not_finite",
-            c=c_top, J=J_low, ratio=ratio))
+        raise InputError(Notice.of(
+            "ag_eigen_not_finite", "the natural frequencies are not finite: the eigenproblem K·x = "
+            "ω²·M·x overflows double precision (stiffness up to {c:g} N·m/rad against inertia down "
+            "to {J:g} kg·m², c/J = {ratio:g} 1/s²)", c=c_top, J=J_low, ratio=ratio))
     if not ch.fixed:
         scale = max(abs(lam[-1]), 1e-300)
         lam = np.where(np.abs(lam) < RIGID_TOL * scale, 0.0, lam)

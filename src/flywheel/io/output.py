@@ -67,8 +67,9 @@ _MANIFEST_MAX = 64 << 20               # a manifest larger than this is nobody's
 def cannot_write(option: str, path, exc: OSError) -> Notice:
     """The error of a file or folder the system refuses to write (``exc.strerror``, the
     system's own words; its errno lets a renderer say them in another language)."""
-    return Notice(f"{option} {path}: cannot be written ({exc.strerror})", "run_cannot_write",
-                  option=option, path=str(path), reason=exc.strerror, errno=exc.errno)
+    return Notice.of(
+        "run_cannot_write", "{option} {path}: cannot be written ({reason})", option=option,
+        path=str(path), reason=exc.strerror, errno=exc.errno)
 
 
 def _sha256_fd(fd: int) -> str:
@@ -312,8 +313,9 @@ def write_folder(target: Path, build, marker: str, kind: str = "output",
     except OSError as exc:
         raise InputError(cannot_write("--out", target, exc)) from None
     if a_file is not None:
-        raise InputError(Notice(f"--out {target}: {a_file} is a file, not a folder",
-                                "out_is_a_file", target=str(target), file=str(a_file)))
+        raise InputError(Notice.of(
+            "out_is_a_file", "--out {target}: {file} is a file, not a folder", target=str(target),
+            file=str(a_file)))
     real = _real_target(target)
     parent = real.parent
     try:

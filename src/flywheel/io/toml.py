@@ -15,23 +15,26 @@ def read_toml(path, what: str = "a TOML case file") -> dict:
     try:
         text = path.read_bytes().decode("utf-8-sig")   # a BOM (Windows editors) is no error
     except FileNotFoundError:
-        raise CaseFileError(Notice(f"{path}: no such file", "no_such_file", path=str(path))) from None
+        raise CaseFileError(Notice.of(
+            "no_such_file", "{path}: no such file", path=str(path))) from None
     except IsADirectoryError:
-        raise CaseFileError(Notice(f"{path}: is a folder, expected {what}", "is_a_folder",
-                                   path=str(path), what=what)) from None
+        raise CaseFileError(Notice.of(
+            "is_a_folder", "{path}: is a folder, expected {what}", path=str(path), what=what
+        )) from None
     except UnicodeDecodeError as exc:
-        raise CaseFileError(Notice(f"{path}: not UTF-8 text ({exc.reason} at byte {exc.start})",
-                                   "not_utf8", path=str(path), reason=exc.reason,
-                                   byte=exc.start)) from None
+        raise CaseFileError(Notice.of(
+            "not_utf8", "{path}: not UTF-8 text ({reason} at byte {byte})", path=str(path),
+            reason=exc.reason, byte=exc.start)) from None
     except OSError as exc:
-        raise CaseFileError(Notice(f"{path}: cannot be read ({exc.strerror})", "run_cannot_read",
-                                   path=str(path), reason=exc.strerror,
-                                   errno=exc.errno)) from None
+        raise CaseFileError(Notice.of(
+            "run_cannot_read", "{path}: cannot be read ({reason})", path=str(path),
+            reason=exc.strerror, errno=exc.errno)) from None
     try:
         doc = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
-        raise CaseFileError(Notice(f"{path}: TOML syntax error: {exc}", "toml_syntax",
-                                   path=str(path), detail=str(exc))) from None
+        raise CaseFileError(Notice.of(
+            "toml_syntax", "{path}: TOML syntax error: {detail}", path=str(path), detail=str(exc)
+        )) from None
     except RecursionError:      # tomllib parses nested arrays and tables by recursion
         raise too_deep(path) from None
     except ValueError as exc:   # Python's limit on the digits of an int (4300)

@@ -120,23 +120,23 @@ def _rrp(d: RRP, phi: np.ndarray, points: dict, links: dict) -> None:
     q = A.r - base
     qu, qn = q @ u, q @ nrm
     disc = d.rod_length**2 - qn**2
-    _fail_where(disc < 0, phi, Notice(f"dyad {d.name} (RRP, rod {d.rod})", "dyad_rrp",
-                                      name=d.name, rod=d.rod), d.name,
-                lambda: Notice(f"the rod ({d.rod_length:.6g} m) must be at least "
-                               f"{np.max(np.abs(qn)):.6g} m, the largest distance of {d.origin} "
-                               f"from the guide over the cycle", "need_rod",
-                               rod_length=d.rod_length, reach=np.max(np.abs(qn)),
-                               origin=d.origin))
+    _fail_where(disc < 0, phi, Notice.of(
+        "dyad_rrp", "dyad {name} (RRP, rod {rod})", name=d.name, rod=d.rod), d.name,
+                lambda: Notice.of(
+                    "need_rod", "the rod ({rod_length:.6g} m) must be at least {reach:.6g} m, the "
+                    "largest distance of {origin} from the guide over the cycle",
+                    rod_length=d.rod_length, reach=np.max(np.abs(qn)), origin=d.origin))
     x = qu + d.branch * np.sqrt(disc)
     B = base + x[:, None] * u
     rel = B - A.r
     denom = rel @ u
     _fail_where(np.abs(denom) < 1e-12 * d.rod_length, phi,
-                Notice(f"dyad {d.name} (RRP, rod {d.rod} perpendicular to the guide)",
-                       "dyad_rrp_perpendicular", name=d.name, rod=d.rod), d.name,
-                lambda: Notice("a dead position: make the rod longer than the largest distance "
-                               f"of {d.origin} from the guide", "need_rod_dead",
-                               origin=d.origin))
+                Notice.of(
+                    "dyad_rrp_perpendicular", "dyad {name} (RRP, rod {rod} perpendicular to the "
+                    "guide)", name=d.name, rod=d.rod), d.name,
+                lambda: Notice.of(
+                    "need_rod_dead", "a dead position: make the rod longer than the largest "
+                    "distance of {origin} from the guide", origin=d.origin))
     x1 = _dot(rel, A.v_q) / denom
     B1 = x1[:, None] * u
     rel1 = B1 - A.v_q
@@ -167,27 +167,28 @@ def _rrr(d: RRR, phi: np.ndarray, points: dict, links: dict) -> None:
     A, C = points[d.point_a], points[d.point_b]
     g = C.r - A.r
     D = np.sqrt(_dot(g, g))
-    what = Notice(f"dyad {d.name} (RRR, links {d.link_a}–{d.link_b})", "dyad_rrr", name=d.name,
-                  a=d.link_a, b=d.link_b)
-    inline = Notice(f"{what} (links in line: a dead position)", "dyad_in_line", what=what)
+    what = Notice.of(
+        "dyad_rrr", "dyad {name} (RRR, links {a}–{b})", name=d.name, a=d.link_a, b=d.link_b)
+    inline = Notice.of("dyad_in_line", "{what} (links in line: a dead position)", what=what)
     a, b = d.length_a, d.length_b
     def need():
         lo, hi = abs(a - b), a + b
         tol = 1e-9 * hi
         if D.max() == 0:
-            return Notice(f"{d.point_a} and {d.point_b} coincide: the group has no base (move "
-                          f"the pivot)", "need_base", a=d.point_a, b=d.point_b)
+            return Notice.of(
+                "need_base", "{a} and {b} coincide: the group has no base (move the pivot)",
+                a=d.point_a, b=d.point_b)
         if abs(D.min() - lo) <= tol or abs(D.max() - hi) <= tol:
             edge = f"|{a:.6g} − {b:.6g}| = {lo:.6g}" if abs(D.min() - lo) <= tol else \
                 f"{a:.6g} + {b:.6g} = {hi:.6g}"
-            return Notice(f"the distance {d.point_a}–{d.point_b} reaches {edge} m: the links lie "
-                          f"in line (a dead position; change a length so that the distance stays "
-                          f"strictly between {lo:.6g} and {hi:.6g} m)", "need_in_line",
-                          a=d.point_a, b=d.point_b, edge=edge, lo=lo, hi=hi)
-        return Notice(f"the distance {d.point_a}–{d.point_b} ranges over {D.min():.6g} … "
-                      f"{D.max():.6g} m, the links ({a:.6g} and {b:.6g} m) reach only {lo:.6g} "
-                      f"… {hi:.6g} m", "need_reach", a=d.point_a, b=d.point_b, dmin=D.min(),
-                      dmax=D.max(), la=a, lb=b, lo=lo, hi=hi)
+            return Notice.of(
+                "need_in_line", "the distance {a}–{b} reaches {edge} m: the links lie in line (a "
+                "dead position; change a length so that the distance stays strictly between "
+                "{lo:.6g} and {hi:.6g} m)", a=d.point_a, b=d.point_b, edge=edge, lo=lo, hi=hi)
+        return Notice.of(
+            "need_reach", "the distance {a}–{b} ranges over {dmin:.6g} … {dmax:.6g} m, the links "
+            "({la:.6g} and {lb:.6g} m) reach only {lo:.6g} … {hi:.6g} m", a=d.point_a, b=d.point_b,
+            dmin=D.min(), dmax=D.max(), la=a, lb=b, lo=lo, hi=hi)
 
     _fail_where(D == 0, phi, what, d.name, need)
     edge = 1e-9 * (a + b)                   # in line within round-off: a dead position
@@ -222,22 +223,21 @@ def _rpr(d: RPR, phi: np.ndarray, points: dict, links: dict) -> None:
     dr, d1, d2 = A.r - P.r, A.v_q - P.v_q, A.a_q - P.a_q
     rho2 = _dot(dr, dr)
     disc = rho2 - d.offset**2
-    what = Notice(f"dyad {d.name} (RPR, rocker {d.rocker})", "dyad_rpr", name=d.name,
-                  rocker=d.rocker)
+    what = Notice.of(
+        "dyad_rpr", "dyad {name} (RPR, rocker {rocker})", name=d.name, rocker=d.rocker)
     _fail_where(disc <= 0, phi, what, d.name,
-                lambda: Notice(f"the slide line's offset ({abs(d.offset):.6g} m) must be smaller "
-                               f"than the distance {d.pivot}–{d.origin}, which falls to "
-                               f"{np.sqrt(rho2.min()):.6g} m", "need_offset",
-                               offset=abs(d.offset), pivot=d.pivot, origin=d.origin,
-                               dmin=np.sqrt(rho2.min())))
+                lambda: Notice.of(
+                    "need_offset", "the slide line's offset ({offset:.6g} m) must be smaller than "
+                    "the distance {pivot}–{origin}, which falls to {dmin:.6g} m",
+                    offset=abs(d.offset), pivot=d.pivot, origin=d.origin, dmin=np.sqrt(rho2.min())))
     through = _passes_through(dr, d1, d2, phi, d.offset)
     if np.any(through):
         deg = np.degrees(phi[np.argmax(through)])
-        err = AssemblyError(Notice(
-            f"{what} has a singular position near crank angle φ = {deg:.2f}°: {d.origin} passes "
-            f"through the rocker's pivot {d.pivot}, where the rocker's direction is undefined "
-            f"(move {d.pivot} off the path of {d.origin}, or change the slide line's offset)",
-            "singular_rpr", what=what, deg=deg, origin=d.origin, pivot=d.pivot))
+        err = AssemblyError(Notice.of(
+            "singular_rpr", "{what} has a singular position near crank angle φ = {deg:.2f}°: "
+            "{origin} passes through the rocker's pivot {pivot}, where the rocker's direction is "
+            "undefined (move {pivot} off the path of {origin}, or change the slide line's offset)",
+            what=what, deg=deg, origin=d.origin, pivot=d.pivot))
         err.dyad = d.name
         raise err
     s = d.branch * np.sqrt(disc)

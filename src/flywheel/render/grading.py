@@ -155,7 +155,7 @@ def print_variants(vs, out, console=None, sheets: str | None = None, lang: str =
     from rich.console import Console
     from rich.table import Table
 
-    from flywheel.render.nomenclature import message, prefix
+    from flywheel.render.messages import message, prefix
 
     console = console or Console()
     t = vs.template
@@ -194,8 +194,8 @@ def print_report(r, console=None, lang: str = "en") -> None:
     """Per student a table of the answers (for a class of up to DETAIL_STUDENTS); then the
     group table, statistics and problems, each cut at GROUP_ROWS lines with a note where the
     whole report is (--out, --json): the terminal gets a readable page, not megabytes. The
-    wording in ``lang`` (the problems too: render/nomenclature.py MESSAGES_RU)."""
-    from flywheel.render.nomenclature import message
+    wording in ``lang`` (the problems too: render/messages.py, the catalogue)."""
+    from flywheel.render.messages import message
 
     from rich.console import Console
     from rich.table import Table

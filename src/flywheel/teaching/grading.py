@@ -103,9 +103,9 @@ def _positive(v) -> bool:
 def parse_key(doc, source: str = "<key>") -> Key:
     """Check a parsed answers.json document (one CaseFileError line if it is not a key)."""
     if not isinstance(doc, dict):
-        raise CaseFileError(led(f"{source}: ", Notice(
-            f"must be a JSON object {{variant: {{answer: value}}}} (got {type(doc).__name__})",
-            "key_not_object", type=type(doc).__name__)))
+        raise CaseFileError(led(f"{source}: ", Notice.of(
+            "key_not_object", "must be a JSON object {{variant: {{answer: value}}}} (got {type})",
+            type=type(doc).__name__)))
     if "variants" in doc:
         table = doc["variants"]
         where = "variants"
@@ -244,7 +244,7 @@ def parse_number(text: str) -> float:
         t = t.replace(",", ".")
     x = float(t)
     if not math.isfinite(x):
-        raise ValueError(Notice(f"{text!r} is not finite", "grade_not_finite", value=text))
+        raise ValueError(Notice.of("grade_not_finite", "{value!r} is not finite", value=text))
     return x
 
 
@@ -587,14 +587,14 @@ def sheet_files(paths) -> tuple[list[Path], list[Problem]]:
         if p.is_dir():
             found = sorted(q for q in p.iterdir() if q.suffix.lower() == ".csv" and q.is_file())
             if not found:
-                problems.append(Problem(str(p), None, Notice("folder without *.csv files",
-                                                             "sheet_folder_empty")))
+                problems.append(Problem(str(p), None, Notice.of(
+                    "sheet_folder_empty", "folder without *.csv files")))
             files += found
         elif p.exists():
             files.append(p)
         else:
-            problems.append(Problem(str(p), None, Notice("no such file or folder",
-                                                         "sheet_missing")))
+            problems.append(Problem(str(p), None, Notice.of(
+                "sheet_missing", "no such file or folder")))
     return files, problems
 
 
@@ -729,10 +729,10 @@ def _graded(key: Key, name: str, rows, tolerance: float | None, limit: int | Non
     known = set(key.answers) | {a for v in key.variants.values() for a in v}
     unknown = [h for h in columns if h not in known]
     if unknown:
-        problems.append(Problem(name, 1, Notice(
-            f"column(s) {', '.join(map(repr, unknown))} are not answers of the key (ignored; "
-            f"answers: {', '.join(key.answers)})", "sheet_unknown_columns",
-            columns=', '.join(map(repr, unknown)), answers=', '.join(key.answers))))
+        problems.append(Problem(name, 1, Notice.of(
+            "sheet_unknown_columns", "column(s) {columns} are not answers of the key (ignored; "
+            "answers: {answers})", columns=', '.join(map(repr, unknown)),
+            answers=', '.join(key.answers))))
     absent = [a for a in key.answers if a not in columns]
     if absent:
         problems.append(Problem(name, 1, Notice(
@@ -751,8 +751,8 @@ def _graded(key: Key, name: str, rows, tolerance: float | None, limit: int | Non
         if not student and not any(given.values()):
             continue  # a row of the blank sheet nobody filled in
         if not student:
-            problems.append(Problem(name, n, Notice("no student name; row skipped",
-                                                    "row_no_student")))
+            problems.append(Problem(name, n, Notice.of(
+                "row_no_student", "no student name; row skipped")))
             continue
         who = f"{student!r}: "
         vid = key.find(variant)
@@ -842,10 +842,10 @@ def grade(key: Key, paths, tolerance: float | None = None, progress=None) -> Rep
     for s in students:
         if s.student in latest:
             first = latest[s.student]
-            problems.append(Problem(s.file, s.row, Notice(
-                f"{s.student!r} appears again (first at {first.file}, row {first.row}): the "
-                "later row counts, the earlier is not graded", "row_again",
-                student=s.student, file=first.file, row=first.row)))
+            problems.append(Problem(s.file, s.row, Notice.of(
+                "row_again", "{student!r} appears again (first at {file}, row {row}): the later "
+                "row counts, the earlier is not graded", student=s.student, file=first.file,
+                row=first.row)))
         latest[s.student] = s
     order = list(dict.fromkeys(s.student for s in students))
     students = [latest[name] for name in order]

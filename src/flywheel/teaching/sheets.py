@@ -230,8 +230,9 @@ def _linkage(document: dict, source: str):
     if case.tabulated is not None:
         from flywheel.errors import Notice
 
-        return None, Notice("the kinematics are given as a table ([tabulated]): the sheet has "
-                            "no drawing of the mechanism", "sheet_no_drawing_tabulated")
+        return None, Notice.of(
+            "sheet_no_drawing_tabulated", "the kinematics are given as a table ([tabulated]): the "
+            "sheet has no drawing of the mechanism")
     results = analyze(case, n_points=DRAWING_POINTS)
     angles = [float(a.phi_deg) for a in results.at] or [0.0]
     return results, angles[0]
@@ -247,8 +248,9 @@ def _moments(document: dict, source: str) -> tuple[MomentGraphs | None, str]:
     if r.driving is None or r.resistance is None:
         from flywheel.errors import Notice
 
-        return None, Notice("the task is given as an area diagram, not as moment graphs: the "
-                            "sheet has no drawing", "sheet_no_drawing_areas")
+        return None, Notice.of(
+            "sheet_no_drawing_areas", "the task is given as an area diagram, not as moment graphs: "
+            "the sheet has no drawing")
     s = sample(r, n=721)
     breaks = sorted({round(math.degrees(x), 9) for m in (r.driving, r.resistance)
                      for x in m.breakpoints()})

@@ -140,22 +140,20 @@ def _resolve(doc, path: str, where: str) -> tuple[tuple[str | int, ...], Any]:
             node = node[name]
         elif isinstance(node, list):
             if not name.isdigit():
-                raise CaseFileError(led(f"{where}: ", Notice(
-                    f"{walked} is an array; {name!r} is not an index (allowed: "
-                    f"0…{len(node) - 1})", "var_not_an_index", array=walked, name=name,
-                    last=len(node) - 1)))
+                raise CaseFileError(led(f"{where}: ", Notice.of(
+                    "var_not_an_index", "{array} is an array; {name!r} is not an index (allowed: "
+                    "0…{last})", array=walked, name=name, last=len(node) - 1)))
             i = int(name)
             if i >= len(node):
-                raise CaseFileError(led(f"{where}: ", Notice(
-                    f"{walked} has {len(node)} entries; index {i} is out of range (allowed: "
-                    f"0…{len(node) - 1})", "var_index_range", array=walked, n=len(node), i=i,
-                    last=len(node) - 1)))
+                raise CaseFileError(led(f"{where}: ", Notice.of(
+                    "var_index_range", "{array} has {n} entries; index {i} is out of range "
+                    "(allowed: 0…{last})", array=walked, n=len(node), i=i, last=len(node) - 1)))
             parts.append(i)
             node = node[i]
         else:
-            raise CaseFileError(led(f"{where}: ", Notice(
-                f"{walked} is a value, not a table; nothing inside it is called {name!r}",
-                "var_inside_a_value", value=walked, name=name)))
+            raise CaseFileError(led(f"{where}: ", Notice.of(
+                "var_inside_a_value", "{value} is a value, not a table; nothing inside it is "
+                "called {name!r}", value=walked, name=name)))
         walked = f"{walked}.{name}" if walked else name
     return tuple(parts), node
 
@@ -164,9 +162,8 @@ def _grid(spec: dict, where: str) -> tuple:
     """The values min, min + step, …, ≤ max (rounded to 12 decimals; integers stay integers)."""
     for k in ("min", "max", "step"):
         if k not in spec:
-            raise CaseFileError(led(f"{where}: ", Notice(
-                f"{k} is missing (give min, max and step, or values)", "var_grid_missing",
-                key=k)))
+            raise CaseFileError(led(f"{where}: ", Notice.of(
+                "var_grid_missing", "{key} is missing (give min, max and step, or values)", key=k)))
         if not _is_number(spec[k]):
             raise CaseFileError(led(f"{where}.{k}: ", Notice(
                 f"must be a finite number (got {spec[k]!r})", "not_finite_number",
@@ -180,9 +177,9 @@ def _grid(spec: dict, where: str) -> tuple:
                                                      "max_below_min", hi=repr(hi), lo=repr(lo))))
     n = math.floor((hi - lo) / step * (1 + 1e-12) + 1e-9) + 1
     if n > 100_000:
-        raise CaseFileError(led(f"{where}: ", Notice(
-            f"{n} grid values are too many (allowed: up to 100000; use a larger step)",
-            "var_grid_too_many", n=n)))
+        raise CaseFileError(led(f"{where}: ", Notice.of(
+            "var_grid_too_many", "{n} grid values are too many (allowed: up to 100000; use a "
+            "larger step)", n=n)))
     if all(isinstance(spec[k], int) for k in ("min", "max", "step")):
         return tuple(lo + k * step for k in range(n))
     return tuple(round(lo + k * step, 12) + 0.0 for k in range(n))
@@ -195,20 +192,20 @@ def _choices(spec, where: str, current) -> tuple:
             f"(got {spec!r})", "spec_not_table", got=repr(spec))))
     unknown = [k for k in spec if k not in SPEC_KEYS]
     if unknown:
-        raise CaseFileError(led(f"{where}: ", Notice(
-            f"unknown key {unknown[0]!r} (allowed: values, or min, max, step)",
-            "var_unknown_key", key=unknown[0])))
+        raise CaseFileError(led(f"{where}: ", Notice.of(
+            "var_unknown_key", "unknown key {key!r} (allowed: values, or min, max, step)",
+            key=unknown[0])))
     if "values" in spec:
         if set(spec) - {"values"}:
-            raise CaseFileError(led(f"{where}: ", Notice(
-                "give either values or min, max, step, not both", "var_values_or_grid")))
+            raise CaseFileError(led(f"{where}: ", Notice.of(
+                "var_values_or_grid", "give either values or min, max, step, not both")))
         vals = spec["values"]
         if not isinstance(vals, list) or not vals:
             raise CaseFileError(led(f"{where}.values: ", Notice(
                 f"must be a non-empty array (got {vals!r})", "nonempty_array", got=repr(vals))))
         if any(isinstance(v, dict) for v in vals):
-            raise CaseFileError(led(f"{where}.values: ", Notice(
-                "tables cannot be drawn (vary their fields)", "var_values_tables")))
+            raise CaseFileError(led(f"{where}.values: ", Notice.of(
+                "var_values_tables", "tables cannot be drawn (vary their fields)")))
         return tuple(vals)
     if not _is_number(current):
         raise CaseFileError(led(f"{where}: ", Notice(
@@ -230,8 +227,8 @@ def _answers(table: dict, where: str) -> tuple[tuple[str, ...], float, dict[str,
             got=repr(ans))))
     for a in ans:
         if ans.count(a) > 1:
-            raise CaseFileError(led(f"{where}.answers: ", Notice(
-                f"{a!r} is listed twice", "var_answer_twice", name=a)))
+            raise CaseFileError(led(f"{where}.answers: ", Notice.of(
+                "var_answer_twice", "{name!r} is listed twice", name=a)))
         if any(c in a for c in ',;"\n'):
             raise CaseFileError(led(f"{where}.answers: ", Notice(
                 f"{a!r} has a character not allowed in a CSV column name (, ; \" or a line "
@@ -248,8 +245,8 @@ def _answers(table: dict, where: str) -> tuple[tuple[str, ...], float, dict[str,
             got=repr(tols))))
     for k, v in tols.items():
         if k not in ans:
-            raise CaseFileError(led(f"{where}.tolerances.{k}: ", Notice(
-                f"not one of the answers (allowed: {', '.join(ans)})", "not_an_answer",
+            raise CaseFileError(led(f"{where}.tolerances.{k}: ", Notice.of(
+                "not_an_answer", "not one of the answers (allowed: {allowed})",
                 allowed=", ".join(ans))))
         if not _is_number(v) or v <= 0:
             raise CaseFileError(led(f"{where}.tolerances.{k}: ", Notice(
@@ -352,9 +349,9 @@ def parse_template(data: dict, source: str = "<template>", n_points: int = RUN_P
     """Check a template document: its case validates and solves, [variants] is well formed,
     every path exists and every answer is a numeric result of the template itself."""
     if "variants" not in data:
-        raise CaseFileError(led(f"{source}: ", Notice(
-            "no [variants] table (it says what to vary and which results are the answers; see "
-            "docs/teacher.md)", "no_variants_table")))
+        raise CaseFileError(led(f"{source}: ", Notice.of(
+            "no_variants_table", "no [variants] table (it says what to vary and which results are "
+            "the answers; see docs/teacher.md)")))
     table = data["variants"]
     if not isinstance(table, dict):
         raise CaseFileError(led(f"{source}: variants: ", Notice(
@@ -366,12 +363,12 @@ def parse_template(data: dict, source: str = "<template>", n_points: int = RUN_P
     for path, spec in _flatten(table, doc):
         where = f"{source}: {_q(path)}"
         if path.split(".")[0] == "variants":
-            raise CaseFileError(led(f"{where}: ", Notice(
-                "cannot vary the [variants] table itself", "var_vary_variants")))
+            raise CaseFileError(led(f"{where}: ", Notice.of(
+                "var_vary_variants", "cannot vary the [variants] table itself")))
         parts, current = _resolve(doc, path, where)
         if isinstance(current, dict):
-            raise CaseFileError(led(f"{where}: ", Notice(
-                "is a table; vary its fields one by one", "var_path_is_table")))
+            raise CaseFileError(led(f"{where}: ", Notice.of(
+                "var_path_is_table", "is a table; vary its fields one by one")))
         varied.append(Varied(path, parts, _choices(spec, where, current)))
     if not varied:
         raise CaseFileError(led(f"{source}: variants: ", Notice(
@@ -381,8 +378,8 @@ def parse_template(data: dict, source: str = "<template>", n_points: int = RUN_P
         for w in varied[:i]:
             short, long_ = sorted((v.parts, w.parts), key=len)
             if long_[:len(short)] == short:
-                raise CaseFileError(led(f"{source}: {_q(v.path)}: ", Notice(
-                    f"overlaps {_q(w.path)}", "var_overlap", other=_q(w.path))))
+                raise CaseFileError(led(f"{source}: {_q(v.path)}: ", Notice.of(
+                    "var_overlap", "overlaps {other}", other=_q(w.path))))
     try:
         base = results_of(kind, doc, source, n_points)
     except FlywheelError as exc:
@@ -456,9 +453,9 @@ def generate(template: Template, count: int, seed: int, n_points: int = RUN_POIN
     distinct = count <= template.combinations
     warnings = []
     if not distinct:
-        warnings.append(Notice(f"only {template.combinations} different variants are possible; "
-                               f"{count} asked, so some repeat", "variants_repeat",
-                               possible=template.combinations, count=count))
+        warnings.append(Notice.of(
+            "variants_repeat", "only {possible} different variants are possible; {count} asked, so "
+            "some repeat", possible=template.combinations, count=count))
     seen: set[str] = set()
     variants = []
     failed_total = 0
@@ -472,10 +469,10 @@ def generate(template: Template, count: int, seed: int, n_points: int = RUN_POIN
             if distinct and signature in seen:
                 dupes += 1
                 if dupes > MAX_DUPLICATE_DRAWS:
-                    raise InputError(Notice(
-                        f"variant {number}: no new combination found in {MAX_DUPLICATE_DRAWS} "
-                        "draws; widen the ranges or ask for fewer variants",
-                        "var_no_new_combination", number=number, draws=MAX_DUPLICATE_DRAWS))
+                    raise InputError(Notice.of(
+                        "var_no_new_combination", "variant {number}: no new combination found in "
+                        "{draws} draws; widen the ranges or ask for fewer variants", number=number,
+                        draws=MAX_DUPLICATE_DRAWS))
                 continue
             doc = copy.deepcopy(template.document)
             for v, i in zip(template.varied, idx):
@@ -492,11 +489,10 @@ def generate(template: Template, count: int, seed: int, n_points: int = RUN_POIN
                 failed_total += 1
                 last_error = said(exc)
                 if failed >= MAX_FAILED_DRAWS:
-                    raise InputError(led(f"{template.source}: ", Notice(
-                        f"variant {number}: {failed} draws in a row failed "
-                        f"validation or analysis; narrow the ranges in [variants] (the last: "
-                        f"{last_error})", "draws_failed", number=number, failed=failed,
-                        detail=last_error))) from None
+                    raise InputError(led(f"{template.source}: ", Notice.of(
+                        "draws_failed", "variant {number}: {failed} draws in a row failed "
+                        "validation or analysis; narrow the ranges in [variants] (the last: "
+                        "{detail})", number=number, failed=failed, detail=last_error))) from None
                 continue
             seen.add(signature)
             variants.append(Variant(vid, filename, drawn, text, answers))

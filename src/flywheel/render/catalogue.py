@@ -1,0 +1,61 @@
+"""The catalogue of every sentence a person reads (src/flywheel/locale/ru/LC_MESSAGES/flywheel.po,
+compiled to flywheel.mo; tools/i18n.py extracts, updates, compiles and checks it), read with the
+standard library's gettext. English is the msgid; the msgctxt says what an entry is: a Notice's
+code (render/messages.py), "count" (a number and its noun, Russian's three plural forms),
+"prefix:<key>", "stage:<key>", "term:<key>" (the nomenclature's labels and sentences that have
+no symbol and no unit).
+
+>>> plural("count", "{n} cycle", "{n} cycles", 22, "ru").format(n=22)
+'22 цикла'
+>>> entry("prefix:warning"), entry("prefix:warning", "ru")
+('warning', 'предупреждение')
+"""
+from __future__ import annotations
+
+import gettext
+from functools import lru_cache
+from pathlib import Path
+
+LOCALE = Path(__file__).resolve().parents[1] / "locale"
+DOMAIN = "flywheel"
+
+
+@lru_cache(maxsize=None)
+def catalogue(lang: str = "ru") -> gettext.NullTranslations:
+    """The compiled catalogue of ``lang`` (gettext; English: the msgids themselves)."""
+    if lang == "en":
+        return gettext.NullTranslations()
+    return gettext.translation(DOMAIN, localedir=str(LOCALE), languages=[lang])
+
+
+@lru_cache(maxsize=None)
+def _english() -> dict[str, str]:
+    """msgctxt → msgid of the catalogue's singular entries: the English template of a Notice's
+    code, the English label of a "term:"/"prefix:"/"stage:" key (what ``pgettext`` needs)."""
+    out = {}
+    for key in catalogue("ru")._catalog:       # gettext keeps "msgctxt\x04msgid" keys
+        if isinstance(key, str) and "\x04" in key:
+            ctx, msgid = key.split("\x04", 1)
+            out[ctx] = msgid
+    return out
+
+
+def has(context: str) -> bool:
+    """Whether the catalogue has an entry of this msgctxt (a Notice's code, "term:J_I", …)."""
+    return context in _english()
+
+
+def notice_codes() -> set[str]:
+    """The codes of the Notices the catalogue says (its msgctxts that are no "kind:key")."""
+    return {ctx for ctx in _english() if ":" not in ctx}
+
+
+def entry(context: str, lang: str = "en") -> str:
+    """The entry of msgctxt ``context`` in ``lang``: its msgid in English, its msgstr else."""
+    english = _english()[context]
+    return english if lang != "ru" else catalogue("ru").pgettext(context, english)
+
+
+def plural(context: str, one: str, many: str, n: int, lang: str = "en") -> str:
+    """The plural entry ``one``/``many`` in the form ``lang`` gives it after ``n``."""
+    return catalogue("ru" if lang == "ru" else "en").npgettext(context, one, many, n)

@@ -1,0 +1,300 @@
+"""The task sheets' labels (`flywheel variants … --sheets`, render/sheets.py, which adds only
+the sentence templates and the typesetting): the labels of a case file's input fields, the
+words of their values and the answers worded as a task, by the field's dotted path. A field that
+is a quantity of the nomenclature takes its name from there ("@key").
+"""
+from __future__ import annotations
+
+import re
+
+from flywheel.render.nomenclature import MATERIALS, TERMS, name, symbol, unit_of
+
+
+#: input fields of a case file: a dotted-path pattern (``#`` an array index, ``*`` a name) →
+#: (English, Russian) label; ``{x}`` is the element's name (a link, a cylinder, a point);
+#: "@key" takes the name of the term ``key`` (the same quantity in the same words)
+SHEET_FIELDS: list[tuple[str, str, str]] = [
+    ("machine.speed_rps", "@crank_speed", ""),          # "@key": the nomenclature's name
+    ("machine.speed_rpm", "@crank_speed", ""),
+    ("machine.delta", "coefficient of speed fluctuation δ", "коэффициент неравномерности хода δ"),
+    ("machine.gravity", "gravity g (x, y)", "ускорение свободного падения g (x, y)"),
+    ("machine.cycle_deg", "cycle Φ", "цикл Φ"),
+    ("machine.first_group.*", "J of the {x} (reduced to the crank)",
+     "момент инерции: {x} (приведён к кривошипу)"),
+    ("design.mean_piston_speed", "mean piston speed V_m", "средняя скорость поршня V_ср"),
+    ("design.rod_to_crank", "rod to crank length ratio k", "отношение длин шатуна и кривошипа k"),
+    ("crank.length", "@crank_length", ""),
+    ("crank.pivot_at", "crank pivot (x, y)", "координаты опоры кривошипа (x, y)"),
+    ("crank.start_angle_deg", "crank angle at φ = 0, from +x",
+     "положение кривошипа при φ = 0 (от оси x)"),
+    ("dyads.#.rod_length", "rod length, joint {x}", "длина шатуна, шарнир {x}"),
+    ("dyads.#.length_from", "first link length, joint {x}", "длина первого звена, шарнир {x}"),
+    ("dyads.#.length_to", "second link length, joint {x}", "длина второго звена, шарнир {x}"),
+    ("dyads.#.offset", "slide line offset, joint {x}", "смещение линии ползуна, шарнир {x}"),
+    ("dyads.#.guide.through", "guide of {x}: a point (x, y)", "направляющая {x}: точка (x, y)"),
+    ("dyads.#.guide.angle_deg", "guide of {x}: angle from +x", "направляющая {x}: угол к оси x"),
+    ("dyads.#.guide.offset", "guide of {x}: offset", "направляющая {x}: смещение"),
+    ("points.*.fraction", "point {x}: share of its link's length",
+     "точка {x}: доля длины звена"),
+    ("points.*.distance", "point {x}: distance along its link", "точка {x}: расстояние по звену"),
+    ("points.*.across", "point {x}: offset across its link", "точка {x}: смещение поперёк звена"),
+    ("links.*.mass", "mass of link {x} m_{x}", "масса звена {x} m_{x}"),
+    ("links.*.J_S", "moment of inertia of link {x} about its centroid J_S{x}",
+     "момент инерции звена {x} относительно центра масс J_S{x}"),
+    ("cylinders.#.bore", "bore of cylinder {x} d", "диаметр цилиндра {x} d"),
+    ("cylinders.#.p_max", "maximum pressure in cylinder {x} p_max",
+     "максимальное давление в цилиндре {x} p_max"),
+    ("cylinders.#.s", "cylinder {x}: relative piston travel s",
+     "цилиндр {x}: относительное перемещение поршня s"),
+    ("cylinders.#.towards_head", "cylinder {x}: p/p_max, piston moving to the head",
+     "цилиндр {x}: p/p_max при движении поршня к головке"),
+    ("cylinders.#.away_from_head", "cylinder {x}: p/p_max, piston moving from the head",
+     "цилиндр {x}: p/p_max при движении поршня от головки"),
+    ("forces.#.magnitude", "force {x}: magnitude F", "сила {x}: модуль F"),
+    ("forces.#.s_range", "force {x}: where it acts (relative travel)",
+     "сила {x}: участок действия (отн. перемещение)"),
+    ("flywheel.density", "density of the flywheel material ρ", "плотность материала маховика ρ"),
+    ("flywheel.width_ratio", "flywheel width to diameter b/D",
+     "отношение ширины маховика к диаметру b/D"),
+    ("flywheel.inner_ratio", "rim inner to outer diameter D1/D",
+     "отношение диаметров обода D₁/D"),
+    ("flywheel.speed_ratio", "@flywheel_speed_ratio", ""),
+    # --- audit: engines (issue 13), a given flywheel and its rim (issues 13, 14) ---
+    ("machine.power", "mean power P", "средняя мощность P"),
+    ("crank.pins.#.angle_deg", "crank pin {x}: angle to the crank",
+     "шатунная шейка {x}: угол к кривошипу"),
+    ("crank.pins.#.length", "crank pin {x}: throw", "шатунная шейка {x}: радиус кривошипа"),
+    ("ground.*", "fixed point {x} (x, y)", "неподвижная точка {x} (x, y)"),
+    ("cylinders.#.fires_at_deg", "cylinder {x}: fires at φ", "цилиндр {x}: воспламенение при φ"),
+    ("cylinders.#.strokes.intake", "cylinder {x}: p/p_max on the intake stroke",
+     "цилиндр {x}: p/p_max на такте впуска"),
+    ("cylinders.#.strokes.compression", "cylinder {x}: p/p_max on the compression stroke",
+     "цилиндр {x}: p/p_max на такте сжатия"),
+    ("cylinders.#.strokes.expansion", "cylinder {x}: p/p_max on the expansion stroke",
+     "цилиндр {x}: p/p_max на такте расширения"),
+    ("cylinders.#.strokes.exhaust", "cylinder {x}: p/p_max on the exhaust stroke",
+     "цилиндр {x}: p/p_max на такте выпуска"),
+    ("cylinders.#.diagram.s", "cylinder {x}: indicator diagram, travel s",
+     "цилиндр {x}: индикаторная диаграмма, перемещение s"),
+    ("cylinders.#.diagram.p", "cylinder {x}: indicator diagram, p/p_max",
+     "цилиндр {x}: индикаторная диаграмма, p/p_max"),
+    ("flywheel.mass", "flywheel mass m", "масса маховика m"),
+    ("flywheel.radius_of_gyration", "radius of gyration of the flywheel k",
+     "радиус инерции маховика k"),
+    ("flywheel.allowable_stress", "allowable stress of the rim [σ]",
+     "допускаемое напряжение обода [σ]"),
+    ("flywheel.rim.share", "share of J carried by the rim", "доля J, приходящаяся на обод"),
+    ("flywheel.rim.width_to_thickness", "rim width to thickness b/t",
+     "отношение ширины обода к толщине b/t"),
+    ("flywheel.rim.width", "rim width b", "ширина обода b"),
+    ("flywheel.rim.speed", "rim speed v", "окружная скорость обода v"),
+    # task2 («Задача 2»)
+    ("cycle_deg", "cycle Φ", "цикл Φ"),
+    ("speed.omega0", "angular velocity at φ = 0, ω0", "угловая скорость при φ = 0, ω₀"),
+    ("speed.mean", "mean angular velocity ω_m", "средняя угловая скорость ω_ср"),
+    # flywheel.J means two things (docs/case-format.md, docs/task2.md): "run:" and "task2:" below
+    ("flywheel.delta", "coefficient of speed fluctuation asked δ",
+     "заданный коэффициент неравномерности хода δ"),
+    ("driving.value", "driving moment M_D", "движущий момент M_Д"),
+    ("driving.peak", "driving moment M_D, peak", "движущий момент M_Д, наибольший"),
+    ("resistance.value", "resistance moment M_C", "момент сопротивления M_С"),
+    ("resistance.peak", "resistance moment M_C, peak", "момент сопротивления M_С, наибольший"),
+    ("driving.from_deg", "M_D: start of its graph", "M_Д: начало участка"),
+    ("driving.to_deg", "M_D: end of its graph", "M_Д: конец участка"),
+    ("resistance.from_deg", "M_C: start of its graph", "M_С: начало участка"),
+    ("resistance.to_deg", "M_C: end of its graph", "M_С: конец участка"),
+    ("resistance.apex_deg", "M_C: angle of its peak", "M_С: угол вершины"),
+    ("resistance.base", "M_C outside its graph", "M_С вне участка"),
+    ("driving.base", "M_D outside its graph", "M_Д вне участка"),
+    # --- audit: task2 fields of the bundled cases (issue 14) ---
+    ("power", "mean power P", "средняя мощность P"),
+    ("at_deg", "angles asked φ", "заданные углы φ"),
+    ("speed.omega0_rpm", "speed at φ = 0, n0", "частота вращения при φ = 0, n₀"),
+    ("speed.mean_rpm", "mean speed n_m", "средняя частота вращения n_ср"),
+    ("speed.max_rpm", "greatest speed n_max", "наибольшая частота вращения n_max"),
+    ("speed.min_rpm", "least speed n_min", "наименьшая частота вращения n_min"),
+    ("flywheel.fluctuation_percent", "speed fluctuation ± % of the mean",
+     "колебание скорости, ± % от средней"),
+    ("flywheel.rim_radius", "rim radius R", "радиус обода R"),
+    ("diagram.areas", "areas of the turning-moment diagram", "площади диаграммы моментов"),
+    ("diagram.moment_scale", "diagram: moment scale", "диаграмма: масштаб моментов"),
+    ("diagram.angle_scale_deg", "diagram: angle scale", "диаграмма: масштаб углов"),
+    ("diagram.delta_E", "maximum fluctuation of energy ΔE", "наибольшее изменение энергии ΔE"),
+    ("diagram.energy_fluctuation_coefficient", "coefficient of fluctuation of energy C_E",
+     "коэффициент колебания энергии C_E"),
+    ("diagram.work_per_cycle", "work per cycle A", "работа за цикл A"),
+    # --- sheets: the fields of one case kind ("kind:path"; a run's "run,i:" when the flywheel
+    # is on a shaft of its own, speed ratio i ≠ 1), the given flywheel's forms, the text fields ---
+    ("task2:flywheel.J", "reduced moment of inertia J", "приведённый момент инерции J_пр"),
+    ("run,i:flywheel.J", "moment of inertia of the given flywheel on its own shaft J_M/i²",
+     "момент инерции заданного маховика на его валу J_М/i²"),
+    ("run:flywheel.J", "moment of inertia of the given flywheel J_M",
+     "момент инерции заданного маховика J_М"),
+    ("flywheel.given_disk.D", "given flywheel, a solid disk: outer diameter D",
+     "заданный маховик — сплошной диск: наружный диаметр D"),
+    ("flywheel.given_disk.b", "given flywheel, a solid disk: width b",
+     "заданный маховик — сплошной диск: ширина b"),
+    ("flywheel.given_rim.D", "given flywheel, a rim: outer diameter D",
+     "заданный маховик — обод: наружный диаметр D"),
+    ("flywheel.given_rim.D_inner", "given flywheel, a rim: inner diameter D1",
+     "заданный маховик — обод: внутренний диаметр D₁"),
+    ("flywheel.given_rim.b", "given flywheel, a rim: width b",
+     "заданный маховик — обод: ширина b"),
+    ("machine.firing_order", "firing order of the cylinders", "порядок работы цилиндров"),
+    ("machine.balance", "the constant moment, found from the cycle balance",
+     "постоянный момент, определяемый из условия цикла"),
+    ("crank.rotation", "direction of the crank's rotation", "направление вращения кривошипа"),
+    ("cylinders.#.head", "cylinder {x}: dead centre at the head",
+     "цилиндр {x}: мёртвая точка у головки"),
+    ("flywheel.material", "@flywheel_material", ""),
+    ("forces.#.reference", "force {x}: its travel s measured from the dead centre",
+     "сила {x}: мёртвая точка начала отсчёта перемещения s"),
+    ("forces.#.stroke", "force {x}: acts while the slider moves",
+     "сила {x}: действует при движении ползуна"),
+] + [entry for graph, en, ru in (("driving", "M_D", "M_Д"), ("resistance", "M_C", "M_С"))
+     for entry in (
+         (f"{graph}.points", f"{en}: points (φ, M)", f"{ru}: точки графика (φ, M)"),
+         (f"{graph}.scale", f"{en}: scale of the graph", f"{ru}: масштаб графика"),
+         (f"{graph}.a0", f"{en}: constant term a_0", f"{ru}: постоянная составляющая a_0"),
+         (f"{graph}.a", f"{en}: sine coefficients a_k", f"{ru}: коэффициенты при sin kφ a_k"),
+         (f"{graph}.b", f"{en}: cosine coefficients b_k", f"{ru}: коэффициенты при cos kφ b_k"),
+         (f"{graph}.orders", f"{en}: harmonic orders k", f"{ru}: порядки гармоник k"),
+         (f"{graph}.top_from_deg", f"{en}: start of the top", f"{ru}: начало верхнего участка"),
+         (f"{graph}.top_to_deg", f"{en}: end of the top", f"{ru}: конец верхнего участка"))]
+
+#: the answers as a task: key → (English, Russian) object of "Determine …" (the symbol and
+#: the unit are the term's; "{kind}:key" entries, of one case kind, first)
+SHEET_ANSWERS: dict[str, tuple[str, str]] = {
+    "run:J_required": ("the required moment of inertia of the first group",
+                       "необходимый момент инерции первой группы звеньев"),
+    "task2:J_required": ("the moment of inertia that gives the asked δ,",
+                         "приведённый момент инерции, обеспечивающий заданный δ,"),
+    "task2:delta": ("the coefficient of speed fluctuation", "коэффициент неравномерности хода"),
+    "driving_moment": ("the driving moment that balances the cycle",
+                       "приведённый движущий момент из условия цикла"),
+    "delta_T_max": ("the largest fluctuation of kinetic energy",
+                    "наибольшее изменение кинетической энергии"),
+    "J_flywheel": ("the moment of inertia of the flywheel", "момент инерции маховика"),
+    "flywheel_disk.D": ("the outer diameter of the flywheel as a solid disk",
+                        "наружный диаметр маховика в виде сплошного диска"),
+    "flywheel_disk.b": ("the width of the flywheel as a solid disk",
+                        "ширину маховика в виде сплошного диска"),
+    "flywheel_disk.mass": ("the mass of the flywheel as a solid disk",
+                           "массу маховика в виде сплошного диска"),
+    "flywheel_rim.D": ("the outer diameter of the flywheel's rim", "наружный диаметр обода маховика"),
+    "flywheel_rim.mass": ("the mass of the flywheel's rim", "массу обода маховика"),
+    "M_C": ("the resistance moment", "момент сопротивления"),
+    "M_D": ("the driving moment", "движущий момент"),
+    "omega_max": ("the greatest angular velocity", "наибольшую угловую скорость"),
+    "omega_min": ("the least angular velocity", "наименьшую угловую скорость"),
+    "omega_mean": ("the mean angular velocity", "среднюю угловую скорость"),
+    "cycle_work_resistance": ("the work of the resistance over a cycle",
+                              "работу сил сопротивления за цикл"),
+    "balancing_moment": ("the constant moment that balances the cycle (with its sign)",
+                         "постоянный момент из условия цикла (со знаком)"),
+    "flywheel_J_on_its_shaft": ("the moment of inertia of the flywheel on its own shaft",
+                                "момент инерции маховика на его валу"),
+}
+#: answers whose symbol differs between the two kinds (J_I of a run, J_пр of task2)
+SHEET_SYMBOLS = {"task2:J_required": ("J", "J_пр"), "task2:delta": ("δ", "δ")}
+
+
+def _sheet_pattern(p: str) -> re.Pattern:
+    rx = re.escape(p).replace("\\#", r"(?P<i>\d+)").replace("\\*", r"(?P<x>[^.]+)")
+    return re.compile("^" + rx + "$")
+
+
+_SHEET_FIELD_RX = [(_sheet_pattern(p), en, ru) for p, en, ru in SHEET_FIELDS]
+
+
+def field_label(path: str, lang: str = "en", names: dict[str, str] | None = None,
+                kinds: tuple[str, ...] = ()) -> str:
+    """The label of a case file's input field on a task sheet ("links.2.mass" → "масса звена 2
+    m_2"); ``names``: the element name of an indexed path ("cylinders.0" → "HP"), else the
+    element's number from 1; ``kinds``: the case kind's entries to try first, in order ("run",
+    "task2"; "run,i" for a flywheel on a shaft of its own); an unknown field by its dotted path
+    as the case file spells it.
+
+    >>> field_label("cylinders.0.bore", "ru", {"cylinders.0": "HP"}), field_label("crank.length")
+    ('диаметр цилиндра HP d', 'crank length l1')
+    >>> field_label("flywheel.J", "ru", kinds=("run",)), field_label("flywheel.J", "ru")
+    ('момент инерции заданного маховика J_М', 'flywheel.J')
+    """
+    for key in (*(f"{k}:{path}" for k in kinds), path):
+        for rx, en, ru in _SHEET_FIELD_RX:
+            m = rx.match(key)
+            if m:
+                if en.startswith("@"):
+                    return name(en[1:], lang)
+                d = m.groupdict()
+                x = d.get("x") or ""
+                if not x and d.get("i") is not None:
+                    x = (names or {}).get(path[:m.end("i") - len(key) + len(path)]) or \
+                        str(int(d["i"]) + 1)
+                return (ru if lang == "ru" else en).format(x=x)
+    return path
+
+
+#: the words of a case file's text fields on a task sheet: path pattern → value → (English,
+#: Russian); a value not listed is printed as it is
+SHEET_VALUES: dict[str, dict[str, tuple[str, str]]] = {
+    "machine.balance": {"driving": ("the driving moment M_D", "движущий момент M_Д"),
+                        "resistance": ("the resistance moment M_C", "момент сопротивления M_С")},
+    "crank.rotation": {"cw": ("clockwise", "по часовой стрелке"),
+                       "ccw": ("counter-clockwise", "против часовой стрелки")},
+    "cylinders.#.head": {"outer": ("outer (farther from the crank axis)",
+                                   "внешняя (дальняя от оси кривошипа)"),
+                         "inner": ("inner (nearer to the crank axis)",
+                                   "внутренняя (ближняя к оси кривошипа)")},
+    "flywheel.material": MATERIALS,
+    "forces.#.reference": {"outer": ("outer (farther from the crank axis)",
+                                     "внешняя (дальняя от оси кривошипа)"),
+                           "inner": ("inner (nearer to the crank axis)",
+                                     "внутренняя (ближняя к оси кривошипа)")},
+    "forces.#.stroke": {"towards": ("towards that dead centre", "к этой мёртвой точке"),
+                        "away": ("away from that dead centre", "от этой мёртвой точки"),
+                        "both": ("either way", "в обе стороны")},
+}
+_SHEET_VALUE_RX = [(_sheet_pattern(p), words) for p, words in SHEET_VALUES.items()]
+
+
+def field_value(path: str, value, lang: str = "en") -> str:
+    """A text field's value as a task sheet prints it: the words of :data:`SHEET_VALUES`
+    ("crank.rotation" "cw" → "по часовой стрелке"), an array of names as a sequence ("1-3-4-2",
+    a firing order; ", " between names that hold a hyphen themselves), any other text as it is.
+
+    >>> field_value("machine.firing_order", ("1", "3", "4", "2"))
+    '1-3-4-2'
+    >>> field_value("crank.rotation", "cw", "ru")
+    'по часовой стрелке'
+    """
+    if isinstance(value, (list, tuple)):
+        items = [field_value(path, v, lang) for v in value]
+        return (", " if any("-" in v for v in items) else "-").join(items)
+    for rx, words in _SHEET_VALUE_RX:
+        if rx.match(path):
+            return words[value][lang == "ru"] if value in words else value
+    return value
+
+
+def answer_words(kind: str, key: str, lang: str = "en") -> tuple[str, str, str]:
+    """(what, symbol, unit) of an answer of a ``kind`` ("run", "task2") case as a task sheet
+    asks it: the object of "Determine …", the symbol and the unit as printed ("" where the
+    quantity has none; the result key itself if it is no term).
+
+    >>> answer_words("run", "J_flywheel", "ru")
+    ('момент инерции маховика', 'J_М', 'кг·м²')
+    """
+    last = key.rsplit(".", 1)[-1]
+    words = SHEET_ANSWERS.get(f"{kind}:{key}") or SHEET_ANSWERS.get(key)
+    try:
+        sym, u = symbol(last, lang), unit_of(last, lang)
+        label = name(key if key in TERMS else last, lang)
+    except KeyError:
+        sym, u, label = "", "", key
+    if f"{kind}:{key}" in SHEET_SYMBOLS:
+        sym = SHEET_SYMBOLS[f"{kind}:{key}"][lang == "ru"]
+    what = words[lang == "ru"] if words else label
+    if sym and what.endswith(sym):          # a name that ends with its symbol: not twice
+        what = what[:-len(sym)].rstrip(" ,")
+    return what, sym, "" if u in ("–", "") else u
