@@ -2,7 +2,7 @@
 limits (a harmonic series of 1000 terms, a piecewise-linear graph of 100 000 points), in-process
 and as whole processes, and the two aggregate timings the tests used to assert (a fixed end
 against a free end; the stiff start-ups by LSODA). The tests count the same work instead
-(tests/test_bounds.py, tests/test_work_bounds.py, tests/test_aggregate_modes.py)."""
+(tests/test_bounds.py, tests/test_work_bounds.py, tests/elastic/test_aggregate_modes.py)."""
 from __future__ import annotations
 
 import math

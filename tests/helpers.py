@@ -49,7 +49,7 @@ def case_setup(name: str) -> dict:
             "M_D": s.balancing_moment, "J_I": J_I}
 
 
-# numerical derivatives: 8th-order central differences (as tests/test_kinematics.py)
+# numerical derivatives: 8th-order central differences (as tests/linkage/test_kinematics.py)
 _D1 = np.array([1 / 280, -4 / 105, 1 / 5, -4 / 5, 0.0, 4 / 5, -1 / 5, 4 / 105, -1 / 280])
 _D2 = np.array([-1 / 560, 8 / 315, -1 / 5, 8 / 5, -205 / 72, 8 / 5, -1 / 5, 8 / 315, -1 / 560])
 

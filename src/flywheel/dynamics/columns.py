@@ -1,6 +1,6 @@
 """The columns of table.csv (and positions.csv): every array of a run by its key, with its SI
 unit — the one place where both routes list their quantities. Their names and symbols are the
-nomenclature's (render/nomenclature.py, by key); tests/test_nomenclature.py checks that every
+nomenclature's (render/nomenclature.py, by key); tests/render/test_nomenclature.py checks that every
 key resolves there with the same unit.
 """
 from __future__ import annotations

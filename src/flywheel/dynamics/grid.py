@@ -16,7 +16,7 @@ from flywheel.linkage import Kinematics, LinkMotion, PointMotion, solve
 from flywheel.linkage.deadcentres import dead_centres, guide_frame, slider_dyad
 
 DEFAULT_POINTS = 3600
-MAX_POINTS = 100_000      # ≈ 0.5 GB of arrays; far past convergence (tests/test_dynamics.py)
+MAX_POINTS = 100_000      # ≈ 0.5 GB of arrays; far past convergence (tests/dynamics/test_dynamics.py)
 
 
 def closed_grid(n_points: int, extra: list[float], cycle: float = 2 * np.pi) -> np.ndarray:
@@ -136,7 +136,7 @@ def force_switch_angles(forces, mech, dcs: dict, phi: np.ndarray, kin: Kinematic
 def refined(mech, kin: Kinematics, phi: np.ndarray) -> Kinematics:
     """``kin`` moved onto the grid ``phi``: the nodes it has already are copied, only the new
     ones are solved. Every quantity of :func:`~flywheel.linkage.solve` is computed node by node,
-    so this equals ``solve(mech, phi)`` bit for bit (tests/test_dynamics.py checks it)."""
+    so this equals ``solve(mech, phi)`` bit for bit (tests/dynamics/test_dynamics.py checks it)."""
     pos = np.minimum(np.searchsorted(kin.phi, phi), kin.phi.size - 1)
     have = kin.phi[pos] == phi
     if have.all():

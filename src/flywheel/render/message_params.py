@@ -3,7 +3,7 @@ locale/ru/LC_MESSAGES/flywheel.po) says that the English text did not need — a
 itself a Notice said in Russian, the kinds of file and case, a unit, a count with its noun
 (``count``: ngettext, the catalogue's three Russian plural forms), a clause that depends on a
 flag. ``russian_params(code, params, say)`` runs the functions of ``HOOKS`` in order; ``DERIVED``
-names every field they add (tests/test_catalogue.py checks each template's fields against the
+names every field they add (tests/render/test_catalogue.py checks each template's fields against the
 Notice's parameters and these).
 """
 from __future__ import annotations

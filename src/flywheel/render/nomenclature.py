@@ -674,7 +674,7 @@ def si_unit(key: str) -> str:
 def with_unit(label: str, u: str, lang: str = "en") -> str:
     """A figure's label and its unit in the figures' one style per language: Russian as the
     course writes it, "ω, рад/с"; English as the text tables and CSV headers do, "ω [rad/s]"
-    (tests/test_nomenclature.py holds every figure to it); ``u`` as printed in ``lang`` already."""
+    (tests/render/test_nomenclature.py holds every figure to it); ``u`` as printed in ``lang`` already."""
     if lang == "ru":
         return f"{label}, {u}"
     return f"{label} [{'deg' if u == '°' else u}]"

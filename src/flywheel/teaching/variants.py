@@ -42,7 +42,7 @@ from flywheel.errors import CaseFileError, FlywheelError, InputError, Notice, le
 from flywheel.io.toml import read_toml
 
 #: intervals of the φ grid for the answers of a run case (4 per degree; the answers differ from
-#: the default 3600-point grid by well under 1e-4 relative — tests/test_variants.py checks it)
+#: the default 3600-point grid by well under 1e-4 relative — tests/teaching/test_variants.py checks it)
 RUN_POINTS = 1440
 #: a variant whose draws fail validation or analysis this many times in a row is an error
 MAX_FAILED_DRAWS = 50

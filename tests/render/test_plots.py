@@ -1,0 +1,334 @@
+"""Plots: the files written, and the structure of each figure (lines, labels with units,
+legends, titles), never pixels (style.md: python-control). The figures are pyplot-free
+``matplotlib.figure.Figure`` objects; each test clears the ones it made."""
+from __future__ import annotations
+
+import subprocess
+import sys
+from pathlib import Path
+
+import re
+
+import pytest
+
+from flywheel import analyze, load_case
+from flywheel.render import figure as fg
+from flywheel.render import plots
+
+CASE = Path(__file__).resolve().parents[2] / "cases" / "compressor.toml"
+EXPECTED = {
+    "positions.png", "velocity_analogues.png", "acceleration_analogues.png", "J_II.png",
+    "indicator_HP.png", "indicator_LP.png", "piston_forces.png", "reduced_moments.png",
+    "works.png", "omega.png", "epsilon.png", "scheme.png", "energy_mass.png", "time_law.png",
+    "reactions.png", "balancing_moment.png", "hodographs.png",      # the force analysis
+    "plan_positions.png", "plan_velocity_120.png", "plan_acceleration_120.png",   # the plans
+    "plan_forces_120.png", "plan_lever_120.png",
+}
+
+
+@pytest.fixture(scope="module")
+def results():
+    return analyze(load_case(CASE), n_points=720)
+
+
+@pytest.fixture
+def made():
+    """Collects figures and clears them after the test."""
+    figs = []
+    yield figs.append
+    for f in figs:
+        f.clear()
+
+
+def _legend_texts(fig) -> list[str]:
+    out = []
+    for leg in [ax.get_legend() for ax in fig.axes] + list(fig.legends):
+        if leg is not None:
+            out += [t.get_text() for t in leg.get_texts()]
+    return out
+
+
+def _data_axes(fig):
+    """The visible axes that hold data (not secondary axes)."""
+    return [ax for ax in fig.axes if ax.get_visible() and ax.lines]
+
+
+def _check_common(fig, results, lang="en"):
+    """A title naming the case, a y label with a unit on every plot, the φ or other x label
+    with a unit on the bottom one, and a legend."""
+    axes = _data_axes(fig)
+    assert axes
+    titles = [ax.get_title() for ax in axes] + [fig.get_suptitle()]
+    assert any(results.title in t for t in titles)
+    unit = r".+ \[[^\]]+\]|.+, \S+"       # "name [unit]" (English), "name, unit" (Russian)
+    for ax in axes:
+        assert re.fullmatch(unit, ax.get_ylabel()), ax.get_ylabel()
+    assert any(re.fullmatch(unit, ax.get_xlabel()) for ax in axes)
+    assert _legend_texts(fig)
+    if lang == "ru":
+        assert any(any("а" <= ch <= "я" for ch in t) for t in titles)
+
+
+def _check_layout(fig):
+    """Drawn once: every legend and every axes' labels lie inside the figure, and no legend
+    covers the data area of any axes."""
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+    canvas = FigureCanvasAgg(fig)
+    canvas.draw()
+    r = canvas.get_renderer()
+    box = fig.bbox
+    legends = [ax.get_legend() for ax in fig.axes if ax.get_legend()] + list(fig.legends)
+    for leg in legends:
+        lb = leg.get_window_extent(r)
+        assert box.x0 - 1 <= lb.x0 and lb.x1 <= box.x1 + 1 and box.y0 - 1 <= lb.y0 and lb.y1 <= box.y1 + 1
+        for ax in _data_axes(fig):
+            assert not lb.overlaps(ax.get_window_extent(r)), "a legend covers an axes"
+    for ax in fig.axes:
+        if ax.get_visible():
+            tb = ax.get_tightbbox(r)
+            assert box.x0 - 1 <= tb.x0 and tb.x1 <= box.x1 + 1, ax.get_ylabel()
+            assert box.y0 - 1 <= tb.y0 and tb.y1 <= box.y1 + 1, ax.get_xlabel()
+
+
+# -- files ----------------------------------------------------------------------------------------
+def test_write_plots_files_and_bytes(results, tmp_path):
+    paths = plots.write_plots(results, tmp_path / "a")
+    assert {p.name for p in paths} == EXPECTED
+    assert {p.name for p in (tmp_path / "a").iterdir()} == EXPECTED
+    for p in paths:
+        assert p.read_bytes().startswith(b"\x89PNG\r\n\x1a\n")
+        assert b"Software" not in p.read_bytes()[:4096]
+    again = plots.write_plots(results, tmp_path / "b")
+    for p, q in zip(paths, again):
+        assert p.read_bytes() == q.read_bytes(), p.name
+
+
+def test_write_plots_russian(results, tmp_path):
+    paths = plots.write_plots(results, tmp_path, lang="ru")
+    assert {p.name for p in paths} == EXPECTED        # file names stay English
+
+
+def test_write_plots_rejects_unknown_language(results, tmp_path):
+    with pytest.raises(ValueError, match="lang 'de'"):
+        plots.write_plots(results, tmp_path, lang="de")
+
+
+def test_the_users_style_neither_changes_the_plots_nor_is_changed(results, made):
+    import matplotlib
+
+    with matplotlib.rc_context({"lines.linewidth": 7.0, "axes.grid": False}):
+        fig = plots.figure_epsilon(results)
+        made(fig)
+        assert matplotlib.rcParams["lines.linewidth"] == 7.0
+    ax = fig.axes[0]
+    assert ax.lines[0].get_linewidth() == fg.RC["lines.linewidth"]
+    assert ax.xaxis.get_gridlines()[0].get_visible()
+
+
+def test_importing_plots_does_not_import_matplotlib():
+    code = ("import sys, flywheel.render.plots; "
+            "sys.exit(1 if any(m.startswith('matplotlib') for m in sys.modules) else 0)")
+    assert subprocess.run([sys.executable, "-c", code], check=False).returncode == 0
+
+
+# -- every figure -----------------------------------------------------------------------------------
+@pytest.mark.parametrize("lang", ["en", "ru"])
+def test_every_figure_has_title_labels_legend_and_fits(results, made, lang):
+    for name, build in plots.figures(results, lang):
+        fig = build()
+        made(fig)
+        _check_common(fig, results, lang)
+        _check_layout(fig)
+        assert fig.get_size_inches()[0] <= 7.5, name       # A4's text width (issue 15)
+
+
+# -- one figure at a time -----------------------------------------------------------------------------
+def test_positions(results, made):
+    fig = plots.figure_positions(results)
+    made(fig)
+    ax_x, ax_y, ax_s = fig.axes
+    # x of B and y of C are constant (vertical and horizontal guides): left out
+    assert _legend_texts(fig)[:4] == ["$x_{A}$", "$x_{S2}$", "$x_{C}$", "$x_{S4}$"]
+    assert [t.get_text() for t in ax_y.get_legend().get_texts()] == [
+        "$y_{A}$", "$y_{B}$", "$y_{S2}$", "$y_{S4}$"]
+    assert ax_s.get_ylabel() == "$S$ [m]"
+    assert ax_s.get_xlabel() == r"$\varphi$ [deg]"
+    assert len(ax_s.lines) == 2                       # sliders 3 and 5
+    for line in ax_s.lines:                           # each travel spans the stroke 2·l1
+        y = line.get_ydata()
+        assert min(y) == pytest.approx(0.0, abs=1e-12)
+        assert max(y) == pytest.approx(2 * results.scalars.crank_length, rel=1e-9)
+    assert ax_x.get_xlim() == (0.0, 360.0)
+
+
+def test_analogues(results, made):
+    fig = plots.figure_velocity_analogues(results)
+    made(fig)
+    top, bottom = fig.axes
+    assert len(top.lines) == 5                        # A, B, S2, C, S4
+    assert top.get_ylabel().endswith(" [m/rad]")
+    assert [t.get_text() for t in bottom.get_legend().get_texts()] == [
+        r"$\omega_q$ link 2", r"$\omega_q$ link 4"]
+    fig = plots.figure_acceleration_analogues(results)
+    made(fig)
+    top, bottom = fig.axes
+    assert top.get_ylabel().endswith(" [m/rad²]")
+    assert bottom.get_ylabel().endswith(" [1/rad]")
+
+
+def test_J_II(results, made):
+    fig = plots.figure_J_II(results)
+    made(fig)
+    top, bottom = fig.axes
+    # J_II, the four links' shares, the mean
+    assert len(top.get_legend().get_texts()) == 1 + len(results.J_parts) + 1
+    assert top.get_ylabel().endswith(" [kg·m²]")
+    assert bottom.get_ylabel().endswith(" [kg·m²/rad]")
+
+
+def test_indicator(results, made):
+    cyl = results.cylinders[1]
+    fig = plots.figure_indicator(results, cyl)
+    made(fig)
+    ax = fig.axes[0]
+    assert "cylinder LP" in ax.get_title()
+    assert ax.get_xlabel() == "$s$ [–]"
+    texts = _legend_texts(fig)
+    assert texts == ["piston moving towards the head", "piston moving away from the head",
+                     "table points: towards the head", "table points: away from the head"]
+    markers = [ln for ln in ax.lines if ln.get_linestyle() == "None"]
+    assert [len(m.get_xdata()) for m in markers] == [cyl.table_s.size] * 2
+    # the curves are what the program used: the grid's p/p_max, every node once
+    curves = [ln for ln in ax.lines if ln.get_linestyle() == "-" and len(ln.get_xdata()) > 20]
+    assert sum(len(c.get_xdata()) for c in curves) == results.phi.size
+    assert [a.get_ylabel() for a in ax.child_axes] == ["$p$ [MPa]"]     # secondary axis
+
+
+def test_piston_forces_mark_the_report_angle(results, made):
+    fig = plots.figure_piston_forces(results)
+    made(fig)
+    texts = _legend_texts(fig)
+    # seed 000 prints F_B(120°) = 2993 N, F_C(120°) = 3957 N
+    assert "HP at φ = 120°: 2993 N" in texts
+    assert "LP at φ = 120°: 3957 N" in texts
+    assert fig.axes[0].get_ylabel() == "$F$ [N]"
+
+
+def test_reduced_moments(results, made):
+    fig = plots.figure_reduced_moments(results)
+    made(fig)
+    top, bottom = fig.axes
+    texts = [t.get_text() for t in top.get_legend().get_texts()]
+    assert texts[:2] == ["gas HP", "gas LP"]
+    assert texts[-1] == r"$M_\Sigma$: total"
+    m_d = results.scalars.balancing_moment
+    assert any(t.startswith(f"$M_D$ = {m_d:.5g} N·m") for t in texts)
+    assert len(bottom.get_legend().get_texts()) == 4   # gravity of links 2..5
+    assert top.get_ylabel().endswith(" [N·m]")
+
+
+def test_works_marks_the_extremes_of_delta_T_I(results, made):
+    fig = plots.figure_works(results)
+    made(fig)
+    ax = fig.axes[0]
+    texts = _legend_texts(fig)
+    assert len(texts) == 7                            # A_D, A_C, T_II, ΔT_I, A, max, min
+    sc = results.scalars
+    assert (rf"$\Delta T_{{I\,max}}$ = {sc.delta_T_I_max:.5g} J at φ = "
+            rf"{sc.phi_delta_T_I_max_deg:.1f}°") in texts
+    assert (rf"$\Delta T_{{I\,min}}$ = {sc.delta_T_I_min:.5g} J at φ = "
+            rf"{sc.phi_delta_T_I_min_deg:.1f}°") in texts
+    marker = next(ln for ln in ax.lines if ln.get_marker() == "^")
+    assert marker.get_xdata()[0] == pytest.approx(sc.phi_delta_T_I_max_deg)
+    assert ax.get_ylabel() == "work, energy [J]"
+
+
+def test_omega(results, made):
+    fig = plots.figure_omega(results)
+    made(fig)
+    ax = fig.axes[0]
+    assert len(ax.lines) == 5                          # ω, ω exact, ω_max, ω_min, ω_m
+    assert sum(ln.get_linestyle() == "--" for ln in ax.lines) == 1   # ω exact, dashed
+    levels = sorted(ln.get_ydata()[0] for ln in ax.lines if len(ln.get_ydata()) == 2)
+    sc = results.scalars
+    assert levels == pytest.approx(sorted([sc.omega_min, sc.omega_mean, sc.omega_max]))
+    assert ax.get_ylabel() == r"$\omega$ [rad/s]"
+
+
+def test_epsilon(results, made):
+    fig = plots.figure_epsilon(results)
+    made(fig)
+    assert fig.axes[0].get_ylabel() == r"$\varepsilon$ [rad/s²]"
+    assert len(fig.axes[0].lines) == 2                 # ε and the zero line
+
+
+def test_scheme(results, made):
+    fig = plots.figure_scheme(results)
+    made(fig)
+    (ax,) = _data_axes(fig)
+    assert ax.get_aspect() == 1.0
+    assert (ax.get_xlabel(), ax.get_ylabel()) == ("$x$ [m]", "$y$ [m]")
+    labels = {t.get_text() for t in ax.texts}
+    assert {"O", "A", "B", "C", "S2", "S4"} <= labels          # every named point
+    assert {"1", "2", "3", "4", "5"} <= labels                  # every link
+    texts = _legend_texts(fig)
+    assert sum(t.startswith("trajectory of ") for t in texts) == 5
+    # a closed trajectory for every moving point, over the whole cycle
+    full = [ln for ln in ax.lines if len(ln.get_xdata()) == results.phi.size]
+    assert len(full) == 5
+    assert len(ax.patches) >= 3                        # two slider blocks and a fixed pivot
+
+
+def test_scheme_at_several_angles(made):
+    r = analyze(load_case(CASE), n_points=360, at_deg=[30.0, 120.0, 250.0, 300.0])
+    fig = plots.figure_scheme(r)
+    made(fig)
+    shown = _data_axes(fig)
+    assert [ax.get_title() for ax in shown] == [
+        f"kinematic scheme at φ = {a:g}°" for a in (30, 120, 250, 300)]
+    assert r.title in fig.get_suptitle()
+    _check_layout(fig)
+
+
+# -- figure formats (run --figure-format, --dpi; task2/aggregate --plot by suffix) ----------------
+@pytest.mark.parametrize("fmt", ["svg", "pdf"])
+def test_svg_and_pdf_are_the_same_bytes_on_a_rerun(tmp_path, results, fmt):
+    """Two figures drawn from the same results, saved apart: the same bytes (no date, a fixed
+    SVG hash salt), and a real file of that format."""
+    paths = []
+    for k in range(2):
+        fig = plots.figure_J_II(results)
+        try:
+            path = tmp_path / f"J_II_{k}.{fmt}"
+            fg.save(fig, path, fmt)
+            paths.append(path)
+        finally:
+            fig.clear()
+    a, b = (p.read_bytes() for p in paths)
+    assert a == b
+    assert a.startswith(b"%PDF") if fmt == "pdf" else b"<svg" in a[:2000]
+
+
+def test_write_plots_svg_keeps_the_pngs_the_reports_embed(tmp_path, results):
+    out = plots.write_plots(results, tmp_path, fmt="svg", dpi=60)
+    assert out and all(p.suffix == ".svg" and p.is_file() for p in out)
+    assert all(p.with_suffix(".png").is_file() for p in out)
+    from PIL import Image
+
+    assert out[0].name == "positions.svg"
+    with Image.open(out[0].with_suffix(".png")) as im:      # the positions: 7.45 in (A4) at 60 dpi
+        assert im.size[0] == round(7.45 * 60)
+
+
+@pytest.mark.parametrize("suffix", [".svg", ".pdf"])
+def test_task2_plot_by_suffix_is_the_same_bytes_on_a_rerun(tmp_path, suffix):
+    from typer.testing import CliRunner
+
+    from flywheel.cli import app
+
+    paths = [tmp_path / f"a{suffix}", tmp_path / f"b{suffix}"]
+    for p in paths:
+        res = CliRunner().invoke(app, ["task2", "--profile", "triangle", "--plot", str(p)])
+        assert res.exit_code == 0, res.output
+    assert paths[0].read_bytes() == paths[1].read_bytes()

@@ -1,0 +1,280 @@
+"""`flywheel variants`: templates, deterministic draws, the answer key equal to a direct
+analysis of each variant file, the grid it uses, one-line errors for bad templates."""
+import csv
+import json
+import tomllib
+from pathlib import Path
+
+import pytest
+from typer.testing import CliRunner
+
+from flywheel.cases.run import load_case
+from flywheel.cli import app
+from flywheel.dynamics.pipeline import analyze
+from flywheel.render.task2 import to_dict
+from flywheel.cases.task2 import load_task2_case, solve_case
+from flywheel.teaching.variants import RUN_POINTS, answer_value, load_template
+from helpers import err_text  # a CliRunner result's stderr (tests/helpers.py)
+
+CASES = Path(__file__).resolve().parents[2] / "cases"
+COMPRESSOR = CASES / "variants_compressor.toml"
+TASK2 = CASES / "variants_task2.toml"
+
+runner = CliRunner()
+
+
+def invoke(*args):
+    return runner.invoke(app, ["variants", *map(str, args)])
+
+
+
+def one_line_error(res, *fragments):
+    assert res.exit_code == 2, res.output
+    err = err_text(res)
+    assert "Traceback" not in err and "Traceback" not in res.output
+    lines = [ln for ln in err.splitlines() if ln.strip()]
+    assert len(lines) == 1 and lines[0].startswith("error: "), err
+    for f in fragments:
+        assert f in lines[0], lines[0]
+    return lines[0]
+
+
+@pytest.fixture(scope="module")
+def compressor_dir(tmp_path_factory):
+    out = tmp_path_factory.mktemp("v") / "compressor"
+    res = invoke(COMPRESSOR, "--count", 3, "--seed", 11, "--out", out)
+    assert res.exit_code == 0, res.output
+    return out
+
+
+@pytest.fixture(scope="module")
+def task2_dir(tmp_path_factory):
+    out = tmp_path_factory.mktemp("v") / "task2"
+    res = invoke(TASK2, "--count", 4, "--seed", 5, "--out", out)
+    assert res.exit_code == 0, res.output
+    return out
+
+
+def test_writes_the_files(compressor_dir):
+    names = sorted(p.name for p in compressor_dir.iterdir())
+    assert names == [".flywheel-manifest.json", "answers.csv", "answers.json", "students.csv",
+                     "variant_01.toml", "variant_02.toml", "variant_03.toml"]
+    key = json.loads((compressor_dir / "answers.json").read_text())
+    assert key["kind"] == "run" and key["seed"] == 11 and key["n_points"] == RUN_POINTS
+    assert list(key["variants"]) == ["01", "02", "03"]
+    assert key["answers"] == ["driving_moment", "delta_T_max", "J_required", "J_flywheel",
+                              "flywheel_disk.D"]
+    assert key["tolerance"] == 0.01 and key["tolerances"] == {"flywheel_disk.D": 0.02}
+    with open(compressor_dir / "students.csv", newline="") as f:
+        rows = list(csv.reader(f))
+    assert rows[0] == ["student", "variant", *key["answers"]]
+    assert [r[1] for r in rows[1:]] == ["01", "02", "03"]
+    with open(compressor_dir / "answers.csv", newline="") as f:
+        rows = list(csv.DictReader(f))
+    assert len(rows) == 3
+    assert float(rows[1]["J_required"]) == key["variants"]["02"]["J_required"]
+
+
+def test_variant_file_is_the_template_with_the_drawn_values(compressor_dir):
+    template = tomllib.loads(COMPRESSOR.read_text())
+    key = json.loads((compressor_dir / "answers.json").read_text())
+    text = (compressor_dir / "variant_03.toml").read_text()
+    assert text.startswith("# variant 3 of 3, generated from variants_compressor.toml "
+                           "with seed 11\n")
+    doc = tomllib.loads(text)
+    assert "variants" not in doc
+    drawn = key["drawn"]["03"]
+    assert doc["machine"]["speed_rps"] == drawn["machine.speed_rps"] in [8, 9, 10, 11, 12]
+    assert doc["links"]["2"]["mass"] == drawn["links.2.mass"]
+    assert doc["cylinders"][0]["p_max"] == drawn["cylinders.0.p_max"]
+    assert round(drawn["machine.delta"] * 100) / 100 == drawn["machine.delta"]
+    assert 0.03 <= drawn["machine.delta"] <= 0.08
+    # everything not varied is the template's
+    assert doc["crank"] == template["crank"] and doc["dyads"] == template["dyads"]
+    assert doc["cylinders"][1]["s"] == template["cylinders"][1]["s"]
+
+
+def test_answer_key_equals_a_direct_run_of_each_variant(compressor_dir):
+    key = json.loads((compressor_dir / "answers.json").read_text())
+    for vid, answers in key["variants"].items():
+        r = analyze(load_case(compressor_dir / f"variant_{vid}.toml"), n_points=RUN_POINTS)
+        for name, value in answers.items():
+            assert answer_value(r.to_document()["results"], name) == value, (vid, name)
+
+
+def test_answer_key_equals_task2_of_each_variant(task2_dir):
+    key = json.loads((task2_dir / "answers.json").read_text())
+    assert key["kind"] == "task2" and key["n_points"] is None
+    assert len(key["variants"]) == 4
+    for vid, answers in key["variants"].items():
+        path = task2_dir / f"variant_{vid}.toml"
+        d = to_dict(solve_case(load_task2_case(path), str(path)))
+        for name, value in answers.items():
+            assert d[name] == value, (vid, name)
+        assert (task2_dir / f"variant_{vid}.toml").read_text().splitlines()[1] == \
+            "# solve with: flywheel task2 --case <this file>"
+
+
+def test_the_answer_grid_is_fine_enough(compressor_dir):
+    """1440 intervals (the answer key's grid) vs the default 3600: under 1e-4 relative."""
+    key = json.loads((compressor_dir / "answers.json").read_text())
+    for vid, answers in key["variants"].items():
+        r = analyze(load_case(compressor_dir / f"variant_{vid}.toml"))   # default grid
+        for name, value in answers.items():
+            assert answer_value(r.to_document()["results"], name) == pytest.approx(value, rel=1e-4), (vid, name)
+
+
+def test_same_seed_same_bytes_other_seed_other_variants(tmp_path, task2_dir):
+    again = tmp_path / "again"
+    assert invoke(TASK2, "--count", 4, "--seed", 5, "--out", again).exit_code == 0
+    for p in task2_dir.iterdir():
+        assert (again / p.name).read_bytes() == p.read_bytes(), p.name
+    other = tmp_path / "other"
+    assert invoke(TASK2, "--count", 4, "--seed", 6, "--out", other).exit_code == 0
+    assert (other / "answers.json").read_bytes() != (task2_dir / "answers.json").read_bytes()
+
+
+def test_variants_differ_and_stay_in_their_grids(task2_dir):
+    key = json.loads((task2_dir / "answers.json").read_text())
+    drawn = [tuple(d.values()) for d in key["drawn"].values()]
+    assert len(set(drawn)) == len(drawn)
+    for d in key["drawn"].values():
+        assert d["flywheel.J"] in (5.0, 8.0, 10.0, 12.0, 15.0, 20.0)
+        assert 100 <= d["speed.omega0"] <= 300 and d["speed.omega0"] % 10 == 0
+
+
+def test_default_seed_is_random_and_recorded(tmp_path):
+    res = invoke(TASK2, "--count", 1, "--out", tmp_path / "x")
+    assert res.exit_code == 0, res.output
+    seed = json.loads((tmp_path / "x" / "answers.json").read_text())["seed"]
+    assert f"with seed {seed}\n" in (tmp_path / "x" / "variant_01.toml").read_text()
+    assert f"seed {seed}" in res.output
+
+
+def write_template(tmp_path, variants: str, base: Path = TASK2, name="t.toml") -> Path:
+    text = base.read_text()
+    text = text[:text.index("\n[variants]\n")] + "\n[variants]\n" + variants
+    p = tmp_path / name
+    p.write_text(text, encoding="utf-8")
+    return p
+
+
+def test_nested_tables_and_integer_grids(tmp_path):
+    t = write_template(tmp_path, 'answers = ["M_C"]\n[variants.driving]\n'
+                                 'value = { min = 10, max = 12, step = 1 }\n')
+    tpl = load_template(t)
+    assert [v.path for v in tpl.varied] == ["driving.value"]
+    assert tpl.varied[0].choices == (10, 11, 12)
+    res = invoke(t, "--count", 3, "--seed", 1, "--out", tmp_path / "o")
+    assert res.exit_code == 0, res.output
+    key = json.loads((tmp_path / "o" / "answers.json").read_text())
+    assert sorted(d["driving.value"] for d in key["drawn"].values()) == [10, 11, 12]
+    # M_C = M_D·2π/(π/2) for the triangle over π/2…3π/2
+    assert sorted(v["M_C"] for v in key["variants"].values()) == pytest.approx([40, 44, 48])
+
+
+def test_more_variants_than_combinations_repeat_with_a_warning(tmp_path):
+    t = write_template(tmp_path, '"driving.value" = { values = [10.0, 20.0] }\n'
+                                 'answers = ["M_C"]\n')
+    res = invoke(t, "--count", 3, "--seed", 1, "--out", tmp_path / "o")
+    assert res.exit_code == 0, res.output
+    assert "only 2 different variants are possible" in res.output
+
+
+def test_failing_draws_are_redrawn_then_a_clear_error(tmp_path):
+    # a negative J fails validation: drawn again; J = -1 only: every draw fails
+    t = write_template(tmp_path, '"flywheel.J" = { values = [-1.0, 12.0] }\n'
+                                 'answers = ["M_C"]\n')
+    res = invoke(t, "--count", 1, "--seed", 3, "--out", tmp_path / "o")
+    assert res.exit_code == 0, res.output
+    assert json.loads((tmp_path / "o" / "answers.json").read_text())["drawn"]["01"] == \
+        {"flywheel.J": 12.0}
+    t = write_template(tmp_path, '"flywheel.J" = { values = [-1.0, -2.0] }\n'
+                                 'answers = ["M_C"]\n')
+    one_line_error(invoke(t, "--count", 2, "--seed", 3, "--out", tmp_path / "p"),
+                   "variant 1: 50 draws in a row failed", "flywheel.J")
+    assert not (tmp_path / "p").exists()
+
+
+def test_a_run_case_draw_that_cannot_assemble(tmp_path):
+    t = write_template(tmp_path, '"design.rod_to_crank" = { values = [0.5] }\n'
+                                 'answers = ["J_required"]\n', base=COMPRESSOR)
+    one_line_error(invoke(t, "--count", 1, "--seed", 3, "--out", tmp_path / "p"),
+                   "draws in a row failed")
+
+
+@pytest.mark.parametrize("variants, fragments", [
+    ('"speed.omega" = { values = [1.0] }\nanswers = ["M_C"]\n',
+     ["variants.\"speed.omega\"", "'omega' is not in [speed]", "did you mean 'omega0'"]),
+    ('"speed.omega0" = { values = [1.0] }\nanswers = ["M_CC"]\n',
+     ["variants.answers", "'M_CC' is not a result", "did you mean 'M_C'"]),
+    ('"speed.omega0" = { values = [1.0] }\nanswers = ["segments"]\n',
+     ["'segments' is not a finite number"]),
+    ('"speed.omega0" = { values = [1.0] }\n', ["variants.answers: missing"]),
+    ('answers = ["M_C"]\n', ["nothing to vary"]),
+    ('"speed.omega0" = { min = 300, max = 100, step = 10 }\nanswers = ["M_C"]\n',
+     ["max (100) is less than min (300)"]),
+    ('"speed.omega0" = { min = 100, max = 300 }\nanswers = ["M_C"]\n', ["step is missing"]),
+    ('"speed.omega0" = { low = 1 }\nanswers = ["M_C"]\n', ["unknown key 'low'"]),
+    ('"speed.omega0" = { values = [] }\nanswers = ["M_C"]\n', ["must be a non-empty array"]),
+    ('"speed" = { values = [1] }\nanswers = ["M_C"]\n', ["is a table"]),
+    ('"speed.omega0" = { values = [1.0] }\nanswers = ["M_C"]\ntolerance = -1\n',
+     ["variants.tolerance: must be a positive number"]),
+    ('"speed.omega0" = { values = [1.0] }\nanswers = ["M_C"]\ntolerances = { delta = 0.1 }\n',
+     ["tolerances.delta: not one of the answers"]),
+])
+def test_bad_variants_tables_fail_with_one_line(tmp_path, variants, fragments):
+    t = write_template(tmp_path, variants)
+    one_line_error(invoke(t, "--count", 2, "--out", tmp_path / "o"), str(t), *fragments)
+    assert not (tmp_path / "o").exists()
+
+
+def test_array_index_out_of_range(tmp_path):
+    t = write_template(tmp_path, '"cylinders.2.p_max" = { values = [1e6] }\n'
+                                 'answers = ["J_required"]\n', base=COMPRESSOR)
+    one_line_error(invoke(t, "--count", 1, "--out", tmp_path / "o"),
+                   "cylinders has 2 entries; index 2 is out of range (allowed: 0…1)")
+
+
+def test_bad_template_files(tmp_path):
+    one_line_error(invoke(tmp_path / "nope.toml", "--count", 1, "--out", tmp_path / "o"),
+                   "nope.toml: no such file")
+    no_table = tmp_path / "plain.toml"
+    no_table.write_text((CASES / "task2_seed_triangle.toml").read_text())
+    one_line_error(invoke(no_table, "--count", 1, "--out", tmp_path / "o"),
+                   "no [variants] table")
+    bad_case = write_template(tmp_path, '"speed.omega0" = { values = [1.0] }\n'
+                                        'answers = ["M_C"]\n')
+    bad_case.write_text(bad_case.read_text().replace("[flywheel]", "[flywheel]\nJJ = 1"))
+    one_line_error(invoke(bad_case, "--count", 1, "--out", tmp_path / "o"), "JJ",
+                   "checked as a flywheel task2 case")
+    bad_run = write_template(tmp_path, '"machine.delta" = { values = [0.05] }\n'
+                                       'answers = ["J_required"]\n', base=COMPRESSOR)
+    bad_run.write_text(bad_run.read_text().replace("speed_rps", "speed_rpz"))
+    one_line_error(invoke(bad_run, "--count", 1, "--out", tmp_path / "o"), "speed_rpz",
+                   "checked as a flywheel run case")
+    syntax = tmp_path / "syntax.toml"
+    syntax.write_text("[variants\n")
+    one_line_error(invoke(syntax, "--count", 1, "--out", tmp_path / "o"), "TOML syntax error")
+
+
+def test_bad_options(tmp_path):
+    one_line_error(invoke(TASK2, "--count", 0, "--out", tmp_path / "o"), "--count")
+    one_line_error(invoke(TASK2, "--count", 1, "--seed", -1, "--out", tmp_path / "o"), "--seed")
+    one_line_error(invoke(COMPRESSOR, "--count", 1, "--points", 10, "--out", tmp_path / "o"),
+                   "--points")
+
+
+def test_out_refuses_a_folder_that_is_not_a_variants_folder(tmp_path, task2_dir):
+    busy = tmp_path / "busy"
+    busy.mkdir()
+    (busy / "thesis.tex").write_text("keep me")
+    one_line_error(invoke(TASK2, "--count", 1, "--seed", 1, "--out", busy),
+                   "is not an earlier variants folder of flywheel (no .flywheel-manifest.json)")
+    assert (busy / "thesis.tex").read_text() == "keep me"
+    # in an earlier variants folder the variants of the earlier run are replaced
+    old = tmp_path / "old"
+    assert invoke(TASK2, "--count", 3, "--seed", 1, "--out", old).exit_code == 0
+    assert invoke(TASK2, "--count", 2, "--seed", 1, "--out", old).exit_code == 0
+    assert sorted(p.name for p in old.glob("variant_*")) == ["variant_01.toml",
+                                                             "variant_02.toml"]
