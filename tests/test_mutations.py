@@ -181,6 +181,10 @@ SWAPS = ("text", 1, 2.5, True, [], {}, [1.0, 2.0], {"x": 1.0})
 
 
 def _scaled(v, factor: float):
+    if isinstance(v, int) and abs(v) >= 2 ** 1000:     # a lengthened integer: no float holds it
+        from fractions import Fraction
+
+        return int(v * Fraction(factor))
     x = v * factor
     if isinstance(v, int) and math.isfinite(x) and abs(x) < 2 ** 63 and x == int(x):
         return int(x)                  # an integer stays one where TOML can hold it
