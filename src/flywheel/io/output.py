@@ -126,23 +126,12 @@ class _Earlier:
 def _read_manifest(folder: Path, kind: str) -> _Earlier | None:
     """The manifest of ``folder`` if it is flywheel's and of this kind (None: it has none, or
     it is a link, not JSON, or another kind's); trusted only if its seal holds."""
-    p = folder / MANIFEST
-    try:
-        fd = os.open(p, os.O_RDONLY | getattr(os, "O_NOFOLLOW", 0))
-    except OSError:
-        return None
-    try:
-        st = os.fstat(fd)
-        if not stat.S_ISREG(st.st_mode) or st.st_size > _MANIFEST_MAX:
-            return None
-        data = b""
-        while chunk := os.read(fd, 1 << 20):
-            data += chunk
-        doc = json.loads(data.decode("utf-8"))
+    from flywheel.io.jsonfile import read_json
+
+    try:                                    # a link, a folder, too large, too deep: not one
+        doc = read_json(folder / MANIFEST, follow_links=False, max_bytes=_MANIFEST_MAX)
     except (OSError, ValueError):
         return None
-    finally:
-        os.close(fd)
     if not (isinstance(doc, dict) and doc.get("written_by") == _WRITTEN_BY
             and doc.get("kind") == kind and isinstance(doc.get("files"), dict)):
         return None
