@@ -436,3 +436,24 @@ def test_to_a_rounding_hair_beyond_the_cycle_is_the_cycles_end(profile):
     a, b = json.loads(hair.stdout), json.loads(exact.stdout)
     assert a["M_C"] == pytest.approx(b["M_C"], rel=1e-9)
     assert a["omega_max"] == pytest.approx(b["omega_max"], rel=1e-12)
+
+
+def test_plot_that_fails_leaves_the_old_image_and_no_temporary(tmp_path, monkeypatch):
+    """--plot is written whole or not at all: savefig writes half a file and fails (a full
+    disk); the old image keeps its bytes, nothing else is left in the folder."""
+    from matplotlib.figure import Figure
+
+    out = tmp_path / "t2.png"
+    out.write_bytes(b"the old image")
+
+    def half(self, fname, **kw):
+        Path(fname).write_bytes(b"\x89PNG half")
+        raise OSError(28, "No space left on device")
+
+    monkeypatch.setattr(Figure, "savefig", half)
+    res = run("--plot", out)
+    assert res.exit_code == 2, res.output
+    assert err_text(res) == (f"error: --plot {out}: cannot write the image ([Errno 28] No space "
+                             f"left on device: '{out}')\n")
+    assert out.read_bytes() == b"the old image"
+    assert [p.name for p in tmp_path.iterdir()] == ["t2.png"]

@@ -672,3 +672,23 @@ def test_the_notes_print_what_the_results_state():
         assert TERMS[f"note_{kind}"].en == template
     assert name("note_radau", fast=12345.678, f_top=0.5, limit=500) == \
         NOTE_TEXT["radau"].format(fast=12345.678, f_top=0.5, limit=500)
+
+
+def test_cli_plot_that_fails_leaves_the_old_image_and_no_temporary(tmp_path, monkeypatch):
+    from matplotlib.figure import Figure
+
+    out = tmp_path / "agg.svg"
+    out.write_bytes(b"<svg>the old one</svg>")
+
+    def half(self, fname, **kw):
+        assert Path(fname).suffix == ".svg" and Path(fname).parent == tmp_path
+        Path(fname).write_bytes(b"<svg")
+        raise OSError(13, "Permission denied")
+
+    monkeypatch.setattr(Figure, "savefig", half)
+    res = cli(CASES / "aggregate.toml", "--plot", out, "--t-end", "0.2")
+    assert res.exit_code == 2, res.output
+    assert "--plot" in err_text(res) and "Permission denied" in err_text(res)
+    assert out.read_bytes() == b"<svg>the old one</svg>"
+    assert [p.name for p in tmp_path.iterdir()] == ["agg.svg"]
+

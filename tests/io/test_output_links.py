@@ -425,3 +425,59 @@ def test_write_file_through_a_link_keeps_the_link_and_removes_dead_temporaries(t
     write_file(link, "a,b\n")
     assert os.readlink(link) == "real.csv" and real.read_text() == "a,b\n"
     assert sorted(p.name for p in tmp_path.iterdir()) == ["grades.csv", "real.csv"]
+
+
+def test_write_file_with_a_failing_writer_leaves_the_old_file_and_no_temporary(tmp_path):
+    """A writer that writes half its file and fails: the old file keeps its bytes, no
+    temporary is left, the OSError is one InputError naming the option."""
+    from flywheel.errors import InputError
+    from flywheel.io.output import write_file_with
+
+    old = tmp_path / "plot.png"
+    old.write_bytes(b"old image \x00\xff")
+    seen = []
+
+    def half_then_fail(tmp):
+        seen.append(tmp)
+        tmp.write_bytes(b"half")
+        raise OSError(28, "No space left on device")
+
+    with pytest.raises(InputError) as e:
+        write_file_with(old, half_then_fail, "--plot", "an image file")
+    assert "--plot" in str(e.value) and "No space left on device" in str(e.value)
+    assert old.read_bytes() == b"old image \x00\xff"
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["plot.png"]
+    assert seen[0].parent == tmp_path and seen[0].suffix == ".png"   # the format's suffix kept
+
+    def wrong_format(tmp):
+        tmp.write_bytes(b"half")
+        raise ValueError("Format 'xyz' is not supported")
+
+    with pytest.raises(ValueError):                 # not an OSError: goes on as it is
+        write_file_with(old, wrong_format)
+    assert old.read_bytes() == b"old image \x00\xff"
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["plot.png"]
+
+
+def test_write_file_takes_pieces_and_a_writer_writes_through_a_link(tmp_path):
+    from flywheel.io.output import write_file_with
+
+    write_file(tmp_path / "a.csv", iter(["x,", "y\n", "1,2\n"]))
+    assert (tmp_path / "a.csv").read_bytes() == b"x,y\n1,2\n"
+    real = tmp_path / "real.png"
+    real.write_bytes(b"old")
+    link = tmp_path / "p.png"
+    link.symlink_to("real.png")
+    write_file_with(link, lambda tmp: tmp.write_bytes(b"new"))
+    assert os.readlink(link) == "real.png" and real.read_bytes() == b"new"
+
+
+def test_dead_temporaries_with_the_suffix_are_removed(tmp_path):
+    dead = subprocess.run([sys.executable, "-c", "import os; print(os.getpid())"],
+                          capture_output=True, text=True, check=True).stdout.strip()
+    stale = tmp_path / f".p.svg.tmp-{dead}-ab_9.svg"
+    stale.write_text("half")
+    other = tmp_path / f".p.svg.tmp-{dead}-ab_9.svg.mine"      # not flywheel's name: kept
+    other.write_text("mine")
+    write_file(tmp_path / "p.svg", "<svg/>")
+    assert sorted(p.name for p in tmp_path.iterdir()) == [other.name, "p.svg"]

@@ -9,7 +9,8 @@ from typer.testing import CliRunner
 
 from flywheel.cli import app
 from flywheel.errors import CaseFileError
-from flywheel.teaching.grading import MAX_KEY_DEPTH, json_depth, load_key
+from flywheel.io.jsonfile import json_depth
+from flywheel.teaching.grading import MAX_KEY_DEPTH, load_key
 from helpers import err_text
 
 runner = CliRunner()

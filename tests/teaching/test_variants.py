@@ -278,3 +278,21 @@ def test_out_refuses_a_folder_that_is_not_a_variants_folder(tmp_path, task2_dir)
     assert invoke(TASK2, "--count", 2, "--seed", 1, "--out", old).exit_code == 0
     assert sorted(p.name for p in old.glob("variant_*")) == ["variant_01.toml",
                                                              "variant_02.toml"]
+
+
+def test_variants_names_and_texts_at_most_1000_characters():
+    """[variants] keeps the case files' limit on texts (io.schema.MAX_TEXT): a varied path, an
+    answer, a drawn text of 1000 characters pass the check, of 1001 are refused, the echo cut."""
+    from flywheel.errors import CaseFileError
+    from flywheel.teaching.variants import _check_lengths
+
+    ok = {"a." + "p" * 998: {"values": ["t" * 1000]}, "answers": ["n" * 1000]}
+    _check_lengths(ok, "t.toml")
+    for table, where in (({"a." + "p" * 999: {"values": [1]}}, 'variants."a.ppp'),
+                         ({"s": {"values": [1, "t" * 1001]}}, "variants.s.values[1]: "),
+                         ({"answers": ["M_C", "n" * 1001]}, "variants.answers[1]: ")):
+        with pytest.raises(CaseFileError) as e:
+            _check_lengths(table, "t.toml")
+        line = str(e.value)
+        assert line.startswith(f"t.toml: {where}") and "1001 characters" in line
+        assert "at most 1000" in line and len(line) < 300

@@ -77,10 +77,16 @@ def aggregate_command(
         if plot is not None:
             from flywheel.render.aggregate import plot as draw
 
-            try:
-                draw(result, plot, c.title, lang)
-            except (OSError, ValueError) as exc:
-                raise InputError(plot_failed(plot, exc)) from None
+            from flywheel.io.output import write_file_with
+
+            def draw_to(tmp):               # a temporary beside the old image, renamed
+                try:
+                    draw(result, tmp, c.title, lang)
+                except ValueError as exc:   # a format matplotlib does not know
+                    raise InputError(plot_failed(plot, exc)) from None
+
+            write_file_with(plot, draw_to, "--plot", "an image file",
+                            failed=lambda exc: plot_failed(plot, exc), make_folder=False)
         if out is not None:
             written = _write_out(out, result, formats, c.title, c.source, lang)
     if json:

@@ -93,10 +93,16 @@ def task2_command(
         if plot is not None:
             from flywheel.render.task2 import plot as draw
 
-            try:
-                draw(result, plot, job.title, lang)
-            except (OSError, ValueError) as exc:
-                raise InputError(plot_failed(plot, exc)) from None
+            from flywheel.io.output import write_file_with
+
+            def draw_to(tmp):               # a temporary beside the old image, renamed
+                try:
+                    draw(result, tmp, job.title, lang)
+                except ValueError as exc:   # a format matplotlib does not know
+                    raise InputError(plot_failed(plot, exc)) from None
+
+            write_file_with(plot, draw_to, "--plot", "an image file",
+                            failed=lambda exc: plot_failed(plot, exc), make_folder=False)
         if out is not None:
             written = _write_out(out, result, formats, job, lang)
     if as_json:

@@ -131,6 +131,7 @@ def grade_command(
 
     from flywheel.cli.guard import _guard, check_lang, choice, fail
     from flywheel.errors import Notice
+    from flywheel.io.output import write_file
     from flywheel.render.nomenclature import stage_name
     from flywheel.teaching.grading import (check_outputs, grade, load_key,
                                            report_csv_pieces, report_json)
@@ -179,11 +180,11 @@ def grade_command(
         pieces = report_csv_pieces(report)
         if csv_style == "excel-ru":
             pieces = _excel_ru(pieces)
-        _guard(write_pieces, out, pieces, expected="a CSV file name")
+        _guard(write_file, out, pieces, expected="a CSV file name")
     if gradebook is not None:
         from flywheel.render.grading import gradebook_pieces
 
-        _guard(write_pieces, gradebook, gradebook_pieces(report, csv_style, lang), "--gradebook",
+        _guard(write_file, gradebook, gradebook_pieces(report, csv_style, lang), "--gradebook",
                expected="a CSV file name")
     if as_json:
         for piece in report_json(report):
@@ -224,41 +225,3 @@ def _excel_ru(pieces):
                        fmt=lambda x: f"{x!r}")
         yield out if i == 0 else out.removeprefix("\ufeff")
 
-
-def write_pieces(path: Path, pieces, option: str = "--out", expected: str = "a file name"):
-    """Write the text ``pieces`` (UTF-8) to ``path`` whole or not at all, as
-    io.output.write_file does with one text: a temporary file beside it, renamed into place;
-    InputError naming ``option`` if ``path`` is a folder or cannot be written."""
-    import os
-    import tempfile
-
-    from flywheel.errors import InputError, Notice
-    from flywheel.io.output import cannot_write
-
-    path = Path(path)
-    try:
-        is_dir = path.is_dir()
-    except OSError as exc:                  # a name too long for the system
-        raise InputError(cannot_write(option, path, exc)) from None
-    if is_dir:
-        raise InputError(Notice(f"{option} {path}: is a folder, expected {expected}",
-                                "option_is_a_folder", option=option, path=str(path),
-                                expected=expected))
-    tmp = None
-    try:
-        path.parent.mkdir(parents=True, exist_ok=True)
-        fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", dir=path.parent)
-        with os.fdopen(fd, "w", encoding="utf-8", newline="") as f:
-            for piece in pieces:
-                f.write(piece)
-        os.chmod(tmp, 0o644)
-        os.replace(tmp, path)
-    except OSError as exc:
-        if tmp is not None and os.path.exists(tmp):
-            os.unlink(tmp)
-        raise InputError(cannot_write(option, path, exc)) from None
-    except BaseException:
-        if tmp is not None and os.path.exists(tmp):
-            os.unlink(tmp)
-        raise
-    return path

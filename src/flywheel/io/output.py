@@ -126,23 +126,12 @@ class _Earlier:
 def _read_manifest(folder: Path, kind: str) -> _Earlier | None:
     """The manifest of ``folder`` if it is flywheel's and of this kind (None: it has none, or
     it is a link, not JSON, or another kind's); trusted only if its seal holds."""
-    p = folder / MANIFEST
-    try:
-        fd = os.open(p, os.O_RDONLY | getattr(os, "O_NOFOLLOW", 0))
-    except OSError:
-        return None
-    try:
-        st = os.fstat(fd)
-        if not stat.S_ISREG(st.st_mode) or st.st_size > _MANIFEST_MAX:
-            return None
-        data = b""
-        while chunk := os.read(fd, 1 << 20):
-            data += chunk
-        doc = json.loads(data.decode("utf-8"))
+    from flywheel.io.jsonfile import read_json
+
+    try:                                    # a link, a folder, too large, too deep: not one
+        doc = read_json(folder / MANIFEST, follow_links=False, max_bytes=_MANIFEST_MAX)
     except (OSError, ValueError):
         return None
-    finally:
-        os.close(fd)
     if not (isinstance(doc, dict) and doc.get("written_by") == _WRITTEN_BY
             and doc.get("kind") == kind and isinstance(doc.get("files"), dict)):
         return None
@@ -622,11 +611,30 @@ def _summarise(names: list[str], n: int = 4) -> str:
 
 # -- one file ------------------------------------------------------------------------------------
 
-def write_file(path: Path, text: str, option: str = "--out", expected: str = "a file name") -> Path:
-    """Write ``text`` (UTF-8) to ``path`` whole or not at all: a temporary file beside it
-    (``.NAME.tmp-PID-XXXX``), renamed into place; a symbolic link ``path`` stays a link (the
-    file it points to is written). Temporaries of killed writers are removed. Raises
-    InputError naming ``option`` if ``path`` is a folder or cannot be written."""
+def write_file(path: Path, text, option: str = "--out", expected: str = "a file name") -> Path:
+    """Write ``text`` (UTF-8; a str, or an iterable of str pieces written one after another,
+    so a streamed report is never held whole) to ``path`` as :func:`write_file_with` does."""
+    pieces = (text,) if isinstance(text, str) else text
+
+    def write(tmp: Path) -> None:
+        with open(tmp, "w", encoding="utf-8", newline="") as f:
+            for piece in pieces:
+                f.write(piece)
+
+    return write_file_with(path, write, option, expected)
+
+
+def write_file_with(path: Path, writer, option: str = "--out", expected: str = "a file name",
+                    failed=None, make_folder: bool = True) -> Path:
+    """Let ``writer(tmp)`` write a file whole or not at all: ``tmp`` is a temporary file beside
+    ``path`` (``.NAME.tmp-PID-XXXX`` ending in ``path``'s suffix, so a writer that picks its
+    format by the suffix, like matplotlib's savefig, picks the same), renamed into place once
+    ``writer`` returns; a symbolic link ``path`` stays a link (the file it points to is
+    written). If ``writer`` raises, the temporary is removed, the old file is untouched and
+    the exception goes on (an OSError as InputError: ``failed(exc)``, the error naming
+    ``path``, not the temporary; by default :func:`cannot_write` naming ``option``). Temporaries of killed writers are removed.
+    InputError naming ``option`` if ``path`` is a folder. A missing folder of ``path`` is made
+    unless ``make_folder`` is false (then it is the OSError of a missing folder)."""
     path = Path(path)
     try:
         is_dir = path.is_dir()
@@ -639,17 +647,23 @@ def write_file(path: Path, text: str, option: str = "--out", expected: str = "a 
     real = Path(os.path.realpath(path)) if os.path.islink(path) else path
     tmp = None
     try:
-        real.parent.mkdir(parents=True, exist_ok=True)
+        if make_folder:
+            real.parent.mkdir(parents=True, exist_ok=True)
         _remove_stale_files(real.parent, real.name)
-        fd, tmp = tempfile.mkstemp(prefix=f".{real.name}.tmp-{os.getpid()}-", dir=real.parent)
-        with os.fdopen(fd, "w", encoding="utf-8", newline="") as f:
-            f.write(text)
+        fd, tmp = tempfile.mkstemp(prefix=f".{real.name}.tmp-{os.getpid()}-",
+                                   suffix=_suffix(real), dir=real.parent)
+        os.close(fd)
+        writer(Path(tmp))
         os.chmod(tmp, 0o644)
         os.replace(tmp, real)
     except OSError as exc:
         if tmp is not None and os.path.lexists(tmp):
             os.unlink(tmp)
-        raise InputError(cannot_write(option, path, exc)) from None
+        if failed is None:
+            raise InputError(cannot_write(option, path, exc)) from None
+        if exc.errno is not None:           # the user's path in it, not the temporary's
+            exc = type(exc)(exc.errno, exc.strerror, str(path))
+        raise InputError(failed(exc)) from None
     except BaseException:
         if tmp is not None and os.path.lexists(tmp):
             os.unlink(tmp)
@@ -657,11 +671,18 @@ def write_file(path: Path, text: str, option: str = "--out", expected: str = "a 
     return path
 
 
+def _suffix(path: Path) -> str:
+    """The suffix a temporary of ``path`` ends in (letters and digits only, else none)."""
+    return path.suffix if re.fullmatch(r"\.[A-Za-z0-9]{1,16}", path.suffix) else ""
+
+
 def _remove_stale_files(parent: Path, name: str) -> None:
-    """Remove the temporary files ``.NAME.tmp-PID-XXXX`` of writers no longer running."""
+    """Remove the temporary files ``.NAME.tmp-PID-XXXX`` (or ``...-XXXX.SUFFIX``, NAME's own
+    suffix) of writers no longer running."""
     try:
         for p in parent.glob(f".{glob_escape(name)}.tmp-*"):
-            m = re.fullmatch(rf"\.{re.escape(name)}\.tmp-(\d+)-[A-Za-z0-9_]+", p.name)
+            m = re.fullmatch(rf"\.{re.escape(name)}\.tmp-(\d+)-[A-Za-z0-9_]+"
+                             rf"(?:{re.escape(_suffix(Path(name)))})?", p.name)
             if m and int(m.group(1)) != os.getpid() and not _pid_alive(int(m.group(1))) \
                     and stat.S_ISREG(os.lstat(p).st_mode):
                 p.unlink()

@@ -115,7 +115,8 @@ def _msgs2_ru_params(code: str, p: dict) -> dict:
         p["where_ru"] = p["where"] or "ключ"
     if code == "option_is_a_folder":
         p["expected_ru"] = {"a CSV file name": "имя файла CSV",
-                            "a file name": "имя файла"}.get(p["expected"], p["expected"])
+                            "a file name": "имя файла",
+                            "an image file": "файл изображения"}.get(p["expected"], p["expected"])
     if code == "must_be_positive":
         p["unit_sp_ru"] = f" {p['unit_ru']}" if p["unit"] else ""
     if code == "firing_order_fit":

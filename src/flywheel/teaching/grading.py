@@ -38,6 +38,9 @@ from pathlib import Path
 from typing import Iterator
 
 from flywheel.errors import CaseFileError, InputError, Notice, led, said
+# the key's limits are those of every JSON flywheel reads (io/jsonfile.py)
+from flywheel.io.jsonfile import MAX_DEPTH as MAX_KEY_DEPTH
+from flywheel.io.jsonfile import MAX_DIGITS as MAX_KEY_DIGITS
 
 DEFAULT_TOLERANCE = 0.01
 #: the largest --tolerance: a relative error of 100 % (any answer of the right sign passes)
@@ -153,9 +156,11 @@ def parse_key(doc, source: str = "<key>") -> Key:
 
 def load_key(path) -> Key:
     """Read an answers.json (see :func:`parse_key`)."""
+    from flywheel.io.jsonfile import JsonNumberTooLong, JsonTooDeep, read_json
+
     path = Path(path)
     try:
-        text = path.read_text(encoding="utf-8-sig")
+        doc = read_json(path)               # its limits: MAX_KEY_DEPTH, MAX_KEY_DIGITS
     except FileNotFoundError:
         raise CaseFileError(Notice(f"{path}: no such file", "no_such_file", path=str(path))) from None
     except IsADirectoryError:
@@ -169,66 +174,19 @@ def load_key(path) -> Key:
         raise CaseFileError(Notice(f"{path}: cannot be read ({exc.strerror})",
                                    "grade_key_unreadable", path=str(path),
                                    reason=exc.strerror, errno=exc.errno)) from None
-    depth = json_depth(text)
-    if depth > MAX_KEY_DEPTH:
-        raise CaseFileError(Notice(f"{path}: nested too deep ({depth} levels of [] and {{}}; "
+    except JsonTooDeep as exc:
+        raise CaseFileError(Notice(f"{path}: nested too deep ({exc.depth} levels of [] and {{}}; "
                                    f"allowed: up to {MAX_KEY_DEPTH})", "key_too_deep",
-                                   path=str(path), depth=depth, top=MAX_KEY_DEPTH))
-    try:
-        doc = json.loads(text, parse_int=_key_int)
+                                   path=str(path), depth=exc.depth, top=MAX_KEY_DEPTH)) from None
     except json.JSONDecodeError as exc:
         raise CaseFileError(Notice(f"{path}: not JSON: {exc.msg} at line {exc.lineno} column "
                                    f"{exc.colno}", "not_json", path=str(path), msg=exc.msg,
                                    line=exc.lineno, col=exc.colno)) from None
-    except _LongNumber as exc:
+    except JsonNumberTooLong as exc:
         raise CaseFileError(Notice(f"{path}: a number of {exc.digits} digits is too long "
                                    f"(allowed: up to {MAX_KEY_DIGITS} digits)", "key_number_too_long",
                                    path=str(path), digits=exc.digits, top=MAX_KEY_DIGITS)) from None
-    except RecursionError:                  # json_depth bounds the nesting: not reached
-        raise CaseFileError(Notice(f"{path}: nested too deep (allowed: up to {MAX_KEY_DEPTH} "
-                                   "levels of [] and {})", "key_too_deep_at", path=str(path),
-                                   top=MAX_KEY_DEPTH)) from None
     return parse_key(doc, str(path))
-
-
-#: the deepest nesting of [] and {} in a key (answers.json has 3 levels)
-MAX_KEY_DEPTH = 64
-#: the longest integer in a key (a float holds at most 309 digits; Python refuses 4300+)
-MAX_KEY_DIGITS = 400
-_STRING_OR_BRACKET = re.compile(r'"(?:[^"\\]|\\.)*"?|[\[\]{}]')
-
-
-class _LongNumber(ValueError):
-    def __init__(self, digits: int):
-        super().__init__(digits)
-        self.digits = digits
-
-
-def _key_int(text: str) -> int:
-    """json's parse_int of a key: an integer of more than MAX_KEY_DIGITS digits is refused
-    before Python's int() (which raises at 4300)."""
-    digits = len(text.lstrip("-"))
-    if digits > MAX_KEY_DIGITS:
-        raise _LongNumber(digits)
-    return int(text)
-
-
-def json_depth(text: str) -> int:
-    """The deepest nesting of [] and {} in JSON text, counted without recursion (brackets
-    inside strings skipped; unbalanced text is json's to refuse).
-
-    >>> json_depth('{"a": [1, {"b": "[[["}]}'), json_depth("[]" * 3), json_depth("1")
-    (3, 1, 0)
-    """
-    depth = top = 0
-    for m in _STRING_OR_BRACKET.finditer(text):
-        c = m.group()
-        if c in "[{":
-            depth += 1
-            top = max(top, depth)
-        elif c in "]}":
-            depth -= 1
-    return top
 
 
 # -- numbers ------------------------------------------------------------------------------------

@@ -32,6 +32,7 @@ import difflib
 import io
 import json
 import math
+import re
 import tomllib
 from collections.abc import Callable
 from dataclasses import dataclass, field
@@ -345,6 +346,31 @@ def pick_answers(results: dict, answers, where: str) -> dict[str, float]:
 
 # -- the template -------------------------------------------------------------------------------
 
+def _check_lengths(table: dict, source: str) -> None:
+    """Every name in [variants] (a varied path, an answer, a key of tolerances) and every text
+    it draws at most MAX_TEXT characters, as the texts of a case file (io.schema.text_field):
+    refused in one line, the name cut (io.text.cut), before anything is drawn. Iterative (the
+    table's nesting is bounded by io.toml.MAX_DEPTH)."""
+    from flywheel.io.schema import MAX_TEXT
+    from flywheel.io.text import cut
+
+    todo = [(table, "variants")]
+    while todo:
+        node, loc = todo.pop()
+        items = node.items() if isinstance(node, dict) else enumerate(node)
+        for k, v in items:
+            bare = isinstance(k, str) and re.fullmatch(r"[A-Za-z0-9_-]+", k)
+            here = (f"{loc}.{k}" if bare else f'{loc}."{cut(k)}"' if isinstance(k, str)
+                    else f"{loc}[{k}]")
+            too_long = next((t for t in (k, v) if isinstance(t, str) and len(t) > MAX_TEXT), None)
+            if too_long is not None:
+                raise CaseFileError(led(f"{source}: {here}: ", Notice.of(
+                    "var_text_too_long", "too long ({n} characters; allowed: at most {most}, as "
+                    "the texts of a case file)", n=len(too_long), most=MAX_TEXT)))
+            if isinstance(v, (dict, list)):
+                todo.append((v, here))
+
+
 def parse_template(data: dict, source: str = "<template>", n_points: int = RUN_POINTS) -> Template:
     """Check a template document: its case validates and solves, [variants] is well formed,
     every path exists and every answer is a numeric result of the template itself."""
@@ -356,6 +382,7 @@ def parse_template(data: dict, source: str = "<template>", n_points: int = RUN_P
     if not isinstance(table, dict):
         raise CaseFileError(led(f"{source}: variants: ", Notice(
             f"must be a table (got {table!r})", "var_not_a_table", got=repr(table))))
+    _check_lengths(table, source)
     doc = {k: v for k, v in data.items() if k != "variants"}
     kind = detect_kind(doc, source)
     answers, tol, tols = _answers(table, f"{source}: variants")
