@@ -184,6 +184,8 @@ def _scaled(v, factor: float):
     if isinstance(v, int) and abs(v) >= 2 ** 1000:     # a lengthened integer: no float holds it
         from fractions import Fraction
 
+        if not math.isfinite(factor):                  # nan, or ±inf times a huge number
+            return factor if math.isnan(factor) else math.copysign(math.inf, factor) * (1 if v > 0 else -1)
         return int(v * Fraction(factor))
     x = v * factor
     if isinstance(v, int) and math.isfinite(x) and abs(x) < 2 ** 63 and x == int(x):

@@ -2,7 +2,9 @@
 check. English is the msgid, the Notice's code the msgctxt.
 
     python tools/i18n.py extract   # the raise sites → build/flywheel.pot (msgctxt = code, msgid =
-                                   #   the English template, #: where it is raised)
+                                   #   the English template, #: where it is raised), and every
+                                   #   string of a renderer's words("kind", {key: english})
+                                   #   (msgctxt "kind:key")
     python tools/i18n.py update    # merge the .pot into the .po (new entries untranslated)
     python tools/i18n.py compile   # the .po → flywheel.mo (committed; read at run time by gettext)
     python tools/i18n.py check     # every entry translated, no fuzzy, placeholders agree, .mo up to date
@@ -36,6 +38,10 @@ PLURAL_FORMS = ("nplurals=3; plural=(n%10==1 && n%100!=11 ? 0 : n%10>=2 && n%10<
 #: the helpers of render/messages.py whose literal arguments are catalogue entries
 PLURAL_CALLS = {"plural": (0, 1, 2)}          # plural(context, singular, plural, n)
 LABEL_CALLS = {"label": (0, 1)}               # label(context, english)
+#: render/catalogue.py ``words(kind, {key: english})``: a renderer's sentences, msgctxt "kind:key"
+WORDS_CALLS = {"words"}
+#: the note an entry of ``words`` carries (update drops such an entry once its key is gone)
+WORDS_NOTE = "a sentence of a renderer: words("
 
 
 def _template(node: ast.expr, params: dict[str, str]) -> tuple[str, bool]:
@@ -102,6 +108,33 @@ def extract_notices(package: Path = PACKAGE) -> dict[str, dict]:
     return found
 
 
+def extract_words(package: Path = PACKAGE) -> dict[str, dict]:
+    """Every string of every ``words("kind", {key: "english", …})`` of the package (a nested
+    dict's keys joined by "."): msgctxt "kind:key" → its English (the msgid) and where it is."""
+    found: dict[str, dict] = {}
+
+    def walk(d: ast.Dict, ctx: str, loc):
+        for k, v in zip(d.keys, d.values):
+            if not (isinstance(k, ast.Constant) and isinstance(k.value, str)):
+                continue
+            if isinstance(v, ast.Dict):
+                walk(v, f"{ctx}{k.value}.", loc)
+            elif isinstance(v, ast.Constant) and isinstance(v.value, str) and v.value:
+                found[f"{ctx}{k.value}"] = {"msgid": v.value, "locs": [(loc[0], v.lineno)],
+                                            "kind": loc[1]}
+
+    for path in sorted(package.rglob("*.py")):
+        tree = ast.parse(path.read_text(encoding="utf-8"))
+        for node in ast.walk(tree):
+            if (isinstance(node, ast.Call) and len(node.args) == 2
+                    and getattr(node.func, "id", getattr(node.func, "attr", "")) in WORDS_CALLS
+                    and isinstance(node.args[0], ast.Constant)
+                    and isinstance(node.args[1], ast.Dict)):
+                rel = str(path.relative_to(package.parent.parent))
+                walk(node.args[1], node.args[0].value + ":", (rel, node.args[0].value))
+    return found
+
+
 def new_catalog():
     """An empty Russian catalogue with its header (Babel)."""
     from babel.messages.catalog import Catalog
@@ -159,14 +192,18 @@ def pot():
         if e["unclean"]:
             notes.append("not a parameter: " + " | ".join(e["unclean"]))
         cat.add(e["msgid"], "", locations=e["locs"], context=code, auto_comments=notes)
+    for ctx, e in extract_words().items():
+        cat.add(e["msgid"], "", locations=e["locs"], context=ctx,
+                auto_comments=[f"{WORDS_NOTE}\"{e['kind']}\", …)"])
     return cat
 
 
 def update(po=None, template=None):
     """The .po with the raise sites' English: a Notice's msgid, places and parameters as the
     source says them now (a changed English marks the entry fuzzy: check its Russian), a new
-    code untranslated, a code no longer raised dropped; the other entries (labels, counts, the
-    codes made by io/schema.py from pydantic's error types) kept as they are."""
+    code untranslated, a code no longer raised dropped; the same of the renderers' sentences
+    (``words``: msgctxt "kind:key"); the other entries (labels, counts, the codes made by
+    io/schema.py from pydantic's error types) kept as they are."""
     po = read_po() if po is None else po
     template = pot() if template is None else template
     codes = {m.context: m for m in template if m.id}
@@ -175,10 +212,11 @@ def update(po=None, template=None):
     for m in po:
         if not m.id:
             continue
-        new = codes.pop(m.context, None) if is_notice(m.context) else None
+        said = is_notice(m.context) or any(WORDS_NOTE in c for c in m.auto_comments)
+        new = codes.pop(m.context, None) if said or m.context in codes else None
         if new is None:
-            if is_notice(m.context) and not m.locations == [("src/flywheel/io/schema.py", 151)]:
-                continue                                   # no longer raised
+            if said and not m.locations == [("src/flywheel/io/schema.py", 151)]:
+                continue                                   # no longer raised or said
             out.add(m.id, m.string, locations=m.locations, flags=m.flags,
                     auto_comments=m.auto_comments, context=m.context)
             continue

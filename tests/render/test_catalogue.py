@@ -113,3 +113,61 @@ def test_a_russian_sentence_is_russian():
     for m in ENTRIES:
         if i18n.is_notice(m.context) and re.search("[a-z]{3,}", re.sub(r"\{[^{}]*\}", "", m.id)):
             assert re.search("[а-яё]{3,}", m.string, re.I), (m.context, m.string)
+
+
+def _flat(d: dict, prefix: str = "") -> dict[str, str]:
+    out = {}
+    for k, v in d.items():
+        if isinstance(v, dict):
+            out.update(_flat(v, f"{prefix}{k}."))
+        elif isinstance(v, str) and v:
+            out[f"{prefix}{k}"] = v
+    return out
+
+
+def test_every_sentence_of_a_renderer_is_its_catalogue_entry():
+    """Each string a renderer gives ``words(kind, {…})`` is found by tools/i18n.py (msgctxt
+    "kind:key", its English the msgid), and the Russian the renderer prints is that entry's
+    msgstr in the .po (never its English falling through)."""
+    import importlib
+
+    from flywheel.render import catalogue
+
+    for path in (i18n.PACKAGE / "render").glob("*.py"):
+        if "words(" in path.read_text(encoding="utf-8"):
+            importlib.import_module(f"flywheel.render.{path.stem}")
+    extracted = i18n.extract_words()
+    po = {m.context: m for m in ENTRIES}
+    assert "report" in catalogue.WORDS
+    seen = set()
+    for kind, english in catalogue.WORDS.items():
+        russian = _flat(catalogue.words(kind, english)["ru"])
+        for key, text in _flat(english).items():
+            ctx = f"{kind}:{key}"
+            seen.add(ctx)
+            assert extracted[ctx]["msgid"] == text, ctx
+            assert po[ctx].id == text and russian[key] == po[ctx].string, ctx
+    assert seen == set(extracted), set(extracted) ^ seen
+
+
+def test_update_follows_the_sentences_of_the_renderers():
+    """A renderer's sentence whose English changed turns fuzzy (its Russian kept to be checked),
+    one no longer said is dropped, a new one comes untranslated; a term stays as it is."""
+    po = i18n.new_catalog()
+    note = [i18n.WORDS_NOTE + '"report", …)']
+    po.add("Sources", "Источники", context="report:sources", auto_comments=note,
+           locations=[("src/flywheel/render/document.py", 1)])
+    po.add("Gone", "Нет", context="report:gone", auto_comments=note,
+           locations=[("src/flywheel/render/document.py", 2)])
+    po.add("flywheel material", "материал маховика", context="term:flywheel_material")
+    template = i18n.new_catalog()
+    template.add("Sources of the method", "", context="report:sources", auto_comments=note,
+                 locations=[("src/flywheel/render/document.py", 1)])
+    template.add("Figures", "", context="report:figures", auto_comments=note,
+                 locations=[("src/flywheel/render/document.py", 3)])
+    out = {m.context: m for m in i18n.update(po, template) if m.id}
+    assert set(out) == {"report:sources", "report:figures", "term:flywheel_material"}
+    assert out["report:sources"].id == "Sources of the method"
+    assert out["report:sources"].fuzzy and out["report:sources"].string == "Источники"
+    assert out["report:figures"].string == "" and not out["report:figures"].fuzzy
+    assert out["term:flywheel_material"].string == "материал маховика"

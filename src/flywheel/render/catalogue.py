@@ -3,7 +3,7 @@ compiled to flywheel.mo; tools/i18n.py extracts, updates, compiles and checks it
 standard library's gettext. English is the msgid; the msgctxt says what an entry is: a Notice's
 code (render/messages.py), "count" (a number and its noun, Russian's three plural forms),
 "prefix:<key>", "stage:<key>", "term:<key>" (the nomenclature's labels and sentences that have
-no symbol and no unit).
+no symbol and no unit), "<kind>:<key>" (a renderer's sentences: ``words``).
 
 >>> plural("count", "{n} cycle", "{n} cycles", 22, "ru").format(n=22)
 '22 цикла'
@@ -59,3 +59,27 @@ def entry(context: str, lang: str = "en") -> str:
 def plural(context: str, one: str, many: str, n: int, lang: str = "en") -> str:
     """The plural entry ``one``/``many`` in the form ``lang`` gives it after ``n``."""
     return catalogue("ru" if lang == "ru" else "en").npgettext(context, one, many, n)
+
+
+#: the renderers' sentences: kind → the English dict given to ``words`` (tests/render/test_catalogue.py)
+WORDS: dict[str, dict] = {}
+
+
+def words(kind: str, english: dict) -> dict[str, dict]:
+    """A renderer's sentences in both languages, ``{"en": english, "ru": …}``: each string of
+    ``english`` (a dict literal; a nested dict's keys joined by ".") is the msgid of msgctxt
+    ``"<kind>:<key>"`` (tools/i18n.py extracts the call), its Russian the msgstr.
+
+    >>> from flywheel.render.document import T     # T = words("report", {…, "fig": {"works": …}})
+    >>> T["en"]["fig"]["works"], T["ru"]["fig"]["works"]
+    ('Works and kinetic energy', 'Работы и кинетическая энергия')
+    """
+    WORDS.setdefault(kind, english)
+    ru = catalogue("ru")
+
+    def said(d: dict, prefix: str) -> dict:
+        return {k: said(v, f"{prefix}{k}.") if isinstance(v, dict) else
+                ru.pgettext(f"{kind}:{prefix}{k}", v) if isinstance(v, str) and v else v
+                for k, v in d.items()}
+
+    return {"en": english, "ru": said(english, "")}

@@ -5,56 +5,35 @@ from __future__ import annotations
 import math
 
 from flywheel.render import nomenclature as nm
+from flywheel.render.catalogue import words
 from flywheel.render.numbers import fmt as _number
 from flywheel.units import PA_PER_MPA
 
 # the words of `flywheel check` (the quantities' names, symbols and units: the nomenclature)
-W = {
-    "en": {"case": "case", "given_fw": "a given flywheel, ", "balance": "balance: constant {b} moment",
-           "cycle": "cycle Φ = {c}°",
-           "fires": "; fires: ", "fire_at": "{n} at {a}°", "mechanism": "Mechanism",
-           "group": "group", "links": "links", "points": "points", "data": "data",
-           "crank": "crank", "crank_pin": "crank pin", "cw": "cw", "ccw": "ccw",
-           "pin_at": "l = {l} m, at {a}° to {tip}",
-           "rrp": "rod {l} m; guide through {th} at {a}°, offset {o} m; branch {b}",
-           "rpr_where": "{o} on rocker about {p}", "rpr": "offset {o} m; branch {b}",
-           "rrr": "{a} m, {b} m; branch {br}", "point": "point", "of": "{f} of {o}→{t}",
-           "across": ", {a} m across", "from": "{d} m from {o} at {a}°", "Links": "Links",
-           "link": "link", "centroid": "centroid",
-           "first_group": "first group (on the crank shaft): ", "Cylinders": "Cylinders",
-           "name": "name", "piston": "piston", "head": "head", "interpolation": "interpolation",
-           "Dead centres": "Dead centres", "slider": "slider", "dead centre": "dead centre",
-           "x along guide": "x along guide", "stroke": "stroke", "outer": "outer",
-           "inner": "inner",
-           "pts_dc": "Points at the dead centres: {v} / {a}",
-           "links_dc": "Links at the dead centres: {w} / {e}", "valid": "case is valid",
-           "J_II_by": "{J} by {how}", "tab_kin": "Tabulated kinematics (one row per position)",
-           "tab_red": "Reduced to the crank ({M} = {w}²/2·{dJ}, {dJ} by {how})",
-           "loads": "loads: ", "force_at": "{n} at {p} ({how})", "moment": "moment {n} ({how})",
-           "at": "at", "row": "{w} row"},
-    "ru": {"case": "случай", "given_fw": "заданный маховик, ", "cycle": "цикл Φ = {c}°",
-           "fires": "; вспышки: ", "fire_at": "{n} при {a}°", "mechanism": "Механизм",
-           "group": "группа", "links": "звенья", "points": "точки", "data": "данные",
-           "crank": "кривошип", "crank_pin": "шейка кривошипа", "cw": "по часовой стрелке",
-           "ccw": "против часовой стрелки", "pin_at": "l = {l} м, под {a}° к {tip}",
-           "rrp": ("шатун {l} м; направляющая через {th} под {a}°, смещение {o} м; сборка {b}"),
-           "rpr_where": "{o} на кулисе с опорой {p}", "rpr": "смещение {o} м; сборка {b}",
-           "rrr": "{a} м, {b} м; сборка {br}", "point": "точка", "of": "{f} отрезка {o}→{t}",
-           "across": ", {a} м поперёк", "from": "{d} м от {o} под {a}°", "Links": "Звенья",
-           "link": "звено", "centroid": "центр масс",
-           "first_group": "первая группа (на валу кривошипа): ", "Cylinders": "Цилиндры",
-           "name": "имя", "piston": "поршень", "head": "головка", "interpolation": "интерполяция",
-           "Dead centres": "Мёртвые точки", "slider": "ползун", "dead centre": "мёртвая точка",
-           "x along guide": "x вдоль направляющей", "stroke": "ход", "outer": "внешняя",
-           "inner": "внутренняя",
-           "pts_dc": "Точки в мёртвых положениях: {v} / {a}",
-           "links_dc": "Звенья в мёртвых положениях: {w} / {e}", "valid": "случай корректен",
-           "J_II_by": "{J}: интерполяция {how}",
-           "tab_kin": "Кинематика по таблице (строка на положение)",
-           "tab_red": "Приведение к кривошипу ({M} = {w}²/2·{dJ}, {dJ}: интерполяция {how})",
-           "loads": "нагрузки: ", "force_at": "{n} в точке {p} ({how})",
-           "moment": "момент {n} ({how})", "at": "точка", "row": "строка {w}"},
-}
+W = words("check", {"case": "case", "given_fw": "a given flywheel, ",
+                    "balance_driving": "balance: constant driving moment",
+                    "balance_resistance": "balance: constant resistance moment",
+                    "cycle": "cycle Φ = {c}°",
+                    "fires": "; fires: ", "fire_at": "{n} at {a}°", "mechanism": "Mechanism",
+                    "group": "group", "links": "links", "points": "points", "data": "data",
+                    "crank": "crank", "crank_pin": "crank pin", "cw": "cw", "ccw": "ccw",
+                    "pin_at": "l = {l} m, at {a}° to {tip}",
+                    "rrp": "rod {l} m; guide through {th} at {a}°, offset {o} m; branch {b}",
+                    "rpr_where": "{o} on rocker about {p}", "rpr": "offset {o} m; branch {b}",
+                    "rrr": "{a} m, {b} m; branch {br}", "point": "point", "of": "{f} of {o}→{t}",
+                    "across": ", {a} m across", "from": "{d} m from {o} at {a}°", "Links": "Links",
+                    "link": "link", "centroid": "centroid",
+                    "first_group": "first group (on the crank shaft): ", "Cylinders": "Cylinders",
+                    "name": "name", "piston": "piston", "head": "head", "interpolation": "interpolation",
+                    "Dead centres": "Dead centres", "slider": "slider", "dead centre": "dead centre",
+                    "x along guide": "x along guide", "stroke": "stroke", "outer": "outer",
+                    "inner": "inner",
+                    "pts_dc": "Points at the dead centres: {v} / {a}",
+                    "links_dc": "Links at the dead centres: {w} / {e}", "valid": "case is valid",
+                    "J_II_by": "{J} by {how}", "tab_kin": "Tabulated kinematics (one row per position)",
+                    "tab_red": "Reduced to the crank ({M} = {w}²/2·{dJ}, {dJ} by {how})",
+                    "loads": "loads: ", "force_at": "{n} at {p} ({how})", "moment": "moment {n} ({how})",
+                    "at": "at", "row": "{w} row"})
 
 
 def _g(x: float) -> str:
@@ -65,11 +44,7 @@ def _g(x: float) -> str:
 def _crank_line(report, m, lang: str = "en") -> str:
     """n1, ω_m, δ and which constant moment balances the cycle."""
     w = W[lang]
-    if lang == "ru":
-        bal = ("уравновешивание: постоянный движущий момент" if m.balance == "driving" else
-               "уравновешивание: постоянный момент сопротивления")
-    else:
-        bal = w["balance"].format(b=m.balance)
+    bal = w["balance_driving" if m.balance == "driving" else "balance_resistance"]
     return (f"{nm.name('crank_speed', lang)} = {report.crank_speed_rps:.6g} "
             f"{nm.unit_of('crank_speed', lang)}, "
             f"{nm.symbol('omega_mean', lang)} = {m.omega_mean:.6g} {nm.unit_of('omega_mean', lang)}, "

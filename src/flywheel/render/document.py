@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import math
 from flywheel.render import nomenclature as nm
+from flywheel.render.catalogue import words
 from flywheel.render.blocks import (  # noqa: F401  (the model, re-exported)
     Bullets, Document, Figure, Formula, Heading, Paragraph, Table)
 from flywheel.render.numbers import fmt as _number
@@ -19,189 +20,95 @@ from flywheel.units import PA_PER_MPA
 
 
 # -- words ----------------------------------------------------------------------------------------
-T = {
-    "en": {
-        "title": "Dynamic analysis", "source": "Source", "input": "1. Input data",
-        "machine": "Machine, crank and flywheel", "lengths": "Lengths and guides",
-        "masses": "Masses and moments of inertia of the links", "cyl": "Cylinders",
-        "indicator": "Indicator table of cylinder {c}", "forces": "Technological forces and couples",
-        "structure": "Structure of the mechanism",
-        "structure_note": ("The mechanism is the input mechanism (crank {c} on the frame) with "
-                           "Assur groups attached in order:"),
-        "group": "Assur group of class II, kind {kind}: links {links}",
-        "chebyshev": ("Degree of freedom by Chebyshev's formula: n = {n} moving links, "
-                      "p₅ = {p5} lower pairs, p₄ = {p4} higher pairs:"),
-        "tabulated": "The kinematics are given as a table (no linkage to describe).",
-        "kin": "2. Kinematics at the standard positions",
-        "kin_caption": "Velocity analogues at the standard positions",
-        "kin_note": "Velocity analogues {vq} = dr/dφ [{u}] of the points, {wq} = dθ/dφ of the links.",
-        "red": "3. Reduction of masses and forces",
-        "red_caption": "Reduced inertia and moments at the standard positions",
-        "red_note": ("J_II is the links' kinetic energy per ½ω²; the reduced moment of a force is "
-                     "F·v_q, of a weight m·g⃗·v_qS."),
-        "energy": "4. Works and kinetic energy",
-        "energy_caption": "Works and kinetic energy at the standard positions",
-        "sizing": "5. Flywheel", "sizing_caption": "The flywheel by both methods",
-        "dims_caption": "Flywheel dimensions", "method": "method",
-        "m_merzalov": "Merzalov", "m_exact": "energy–mass diagram (exact)",
-        "shape": "shape", "disk_word": "disk", "rim_word": "rim",
-        "motion": "6. True velocities and accelerations",
-        "points_caption": "Points at φ = {a}°", "links_caption": "Links at φ = {a}°",
-        "warn": "Warnings", "figures": "Figures", "sources": "Sources",
-        "no_plots": "The figures were not drawn (run with --no-plots).",
-        "pos": "position", "no": "no.", "qty": "quantity", "val": "value", "unit": "unit", "point": "point",
-        "link": "link", "name": "name", "piston": "piston", "head": "head dead centre",
-        "first_group": "first group", "centroid": "centroid",
-        "balance_word": {"driving": "driving", "resistance": "resistance"},
-        "balance_row": "constant moment balancing the cycle",
-        "balance": "- {A_C} = ∮ {M_C} dφ = {A} {uJ}; {M_D} = −{A_C}/Φ = {M} {uM} (the cycle balance, Φ = {cycle}°)",
-        "extremes": ("- {dT} max = {vmax} {uJ} at {amax}°, min = {vmin} {uJ} at {amin}° (global "
-                     "extremes); {span} = {v} {uJ}"),
-        "merzalov": "- Merzalov: {J} = {span}/(δ·{w}²) = {v} {uI}, δ achieved {d}",
-        "given": "- the flywheel is given (not sized): {J} = {v} {uI} on the crank shaft gives δ = {d}",
-        "exact": "- exact (energy–mass diagram): {J} = {v} {uI}, δ achieved {d}",
-        "flywheel": "- flywheel {JM} = {J} − ({J1}) = {v} {uI}",
-        "shaft": "; on a shaft {i:g} times faster: {v} {uI}",
-        "disk": "- disk ({mat}): {dims}, {speed} {v} {u}",
-        "rim": "- rim: {dims}, {speed} {v} {u} (limit {lim} {u})",
-        "rim_design": ("- the rim as designed (share {share} of the flywheel's J; thin ring, Khurmi & "
-                       "Gupta ch. 16): {dims}; σ = ρ·v² = {sigma} MPa"),
-        "omega_extremes": "- {wmax} = {vmax} {uw} at {amax}°, {wmin} = {vmin} {uw} at {amin}°; {T} {v} {uT}",
-        "at": "ω = {w} {uw}, ε = {e} {ue}",
-        "time": "7. Motion in time",
-        "time_note": ("The equation of motion J(φ)·φ̈ + ½·J′(φ)·φ̇² = M(φ, φ̇), J = J_I + J_II(φ), "
-                      "integrated in time with scipy's solve_ivp; J, J′ and M are the tables of §3–4, "
-                      "so the integration is independent of the energy solution of §5."),
-        "verify": ("steady motion from the energy solution's state at φ = 0 over {n} cycles: ω repeats "
-                   "from cycle to cycle to {rep} (relative), and follows ω(φ) of the energy equation to "
-                   "{dev} (relative to ω_m)"),
-        "period": "cycle time: {T} s from the integration, {Te} s from t(φ) = ∫dφ/ω",
-        "motor": ("motor M_Д = M_п·(1 − ω/ω_x), reduced to the crank: M_п = {Mp} N·m, ω_x = {wx} rad/s; "
-                  "the steady cycle-mean speed that the motor line balances against the loads "
-                  "ω_s = {ws} rad/s; time constant τ = J/(M_п/ω_x) ≈ {tau} s"),
-        "st_ok": ("start-up from rest: the cycle-mean speed is within δ/10 of ω_s after **{t} s** "
-                  "({n} cycles); steady cycle-mean speed {w} rad/s"),
-        "st_no": ("start-up from rest: the steady state was **not reached** within {n} cycles ({t} s); "
-                  "the last cycle-mean speed is {w} rad/s"),
-        "st_stall": "start-up from rest: the motor cannot start the machine — it stops at φ = {a}°",
-        "st_none": "start-up: not computed ({reason})",
-        "rd": "run-down after the drive is cut at φ = 0: {t} s, {rev} revolutions of the crank",
-        "rd_not": " (not stopped within the integration limit)",
-        "rd_never": "run-down: none — {reason}",
-        "book": ("Artobolevsky I. I. Teoriya mekhanizmov i mashin (Theory of Mechanisms and "
-                 "Machines). 4th ed. Moscow: Nauka, 1988: ch. 2 (structure), ch. 16–17 (reduction, "
-                 "Merzalov's method, the energy–mass diagram)."),
-        "case_source": "Input data: {s}.",
-        "fig": {
-            "positions": "Position functions of the points x(φ), y(φ)", "scheme": "Scheme of the mechanism",
-            "reactions": "Reactions in the kinematic pairs",
-            "balancing_moment": "Balancing moment on the crank, three ways",
-            "hodographs": "Polar diagrams of the crank-pin, main-bearing and shaking loads",
-            "velocity_analogues": "Velocity analogues of the points",
-            "acceleration_analogues": "Acceleration analogues of the points",
-            "indicator": "Indicator diagram, cylinder {x}", "piston_forces": "Gas forces on the pistons",
-            "reduced_moments": "Reduced moments of the loads", "works": "Works and kinetic energy",
-            "energy_mass": "Energy–mass diagram (Wittenbauer)", "time_law": "Time law t(φ)",
-            "transients": "Start-up and run-down",
-            "plan_positions": "The mechanism in its standard positions",
-            "plan_velocity": "Velocity plan at φ = {a}°", "plan_acceleration": "Acceleration plan at φ = {a}°",
-            "plan_forces": "Force polygons of the Assur groups at φ = {a}°",
-            "plan_lever": "Zhukovsky's lever at φ = {a}°",
-        },
+T = words("report", {
+    "title": "Dynamic analysis", "source": "Source", "input": "1. Input data",
+    "machine": "Machine, crank and flywheel", "lengths": "Lengths and guides",
+    "masses": "Masses and moments of inertia of the links", "cyl": "Cylinders",
+    "indicator": "Indicator table of cylinder {c}", "forces": "Technological forces and couples",
+    "structure": "Structure of the mechanism",
+    "structure_note": ("The mechanism is the input mechanism (crank {c} on the frame) with "
+                       "Assur groups attached in order:"),
+    "group": "Assur group of class II, kind {kind}: links {links}",
+    "chebyshev": ("Degree of freedom by Chebyshev's formula: n = {n} moving links, "
+                  "p₅ = {p5} lower pairs, p₄ = {p4} higher pairs:"),
+    "tabulated": "The kinematics are given as a table (no linkage to describe).",
+    "kin": "2. Kinematics at the standard positions",
+    "kin_caption": "Velocity analogues at the standard positions",
+    "kin_note": "Velocity analogues {vq} = dr/dφ [{u}] of the points, {wq} = dθ/dφ of the links.",
+    "red": "3. Reduction of masses and forces",
+    "red_caption": "Reduced inertia and moments at the standard positions",
+    "red_note": ("J_II is the links' kinetic energy per ½ω²; the reduced moment of a force is "
+                 "F·v_q, of a weight m·g⃗·v_qS."),
+    "energy": "4. Works and kinetic energy",
+    "energy_caption": "Works and kinetic energy at the standard positions",
+    "sizing": "5. Flywheel", "sizing_caption": "The flywheel by both methods",
+    "dims_caption": "Flywheel dimensions", "method": "method",
+    "m_merzalov": "Merzalov", "m_exact": "energy–mass diagram (exact)",
+    "shape": "shape", "disk_word": "disk", "rim_word": "rim",
+    "motion": "6. True velocities and accelerations",
+    "points_caption": "Points at φ = {a}°", "links_caption": "Links at φ = {a}°",
+    "warn": "Warnings", "figures": "Figures", "sources": "Sources",
+    "no_plots": "The figures were not drawn (run with --no-plots).",
+    "pos": "position", "no": "no.", "qty": "quantity", "val": "value", "unit": "unit", "point": "point",
+    "link": "link", "name": "name", "piston": "piston", "head": "head dead centre",
+    "first_group": "first group", "centroid": "centroid",
+    "balance_word": {"driving": "driving", "resistance": "resistance"},
+    "balance_row": "constant moment balancing the cycle",
+    "balance": "- {A_C} = ∮ {M_C} dφ = {A} {uJ}; {M_D} = −{A_C}/Φ = {M} {uM} (the cycle balance, Φ = {cycle}°)",
+    "extremes": ("- {dT} max = {vmax} {uJ} at {amax}°, min = {vmin} {uJ} at {amin}° (global "
+                 "extremes); {span} = {v} {uJ}"),
+    "merzalov": "- Merzalov: {J} = {span}/(δ·{w}²) = {v} {uI}, δ achieved {d}",
+    "given": "- the flywheel is given (not sized): {J} = {v} {uI} on the crank shaft gives δ = {d}",
+    "exact": "- exact (energy–mass diagram): {J} = {v} {uI}, δ achieved {d}",
+    "flywheel": "- flywheel {JM} = {J} − ({J1}) = {v} {uI}",
+    "shaft": "; on a shaft {i:g} times faster: {v} {uI}",
+    "disk": "- disk ({mat}): {dims}, {speed} {v} {u}",
+    "rim": "- rim: {dims}, {speed} {v} {u} (limit {lim} {u})",
+    "rim_design": ("- the rim as designed (share {share} of the flywheel's J; thin ring, Khurmi & "
+                   "Gupta ch. 16): {dims}; σ = ρ·v² = {sigma} MPa"),
+    "omega_extremes": "- {wmax} = {vmax} {uw} at {amax}°, {wmin} = {vmin} {uw} at {amin}°; {T} {v} {uT}",
+    "at": "ω = {w} {uw}, ε = {e} {ue}",
+    "time": "7. Motion in time",
+    "time_note": ("The equation of motion J(φ)·φ̈ + ½·J′(φ)·φ̇² = M(φ, φ̇), J = J_I + J_II(φ), "
+                  "integrated in time with scipy's solve_ivp; J, J′ and M are the tables of §3–4, "
+                  "so the integration is independent of the energy solution of §5."),
+    "verify": ("steady motion from the energy solution's state at φ = 0 over {n} cycles: ω repeats "
+               "from cycle to cycle to {rep} (relative), and follows ω(φ) of the energy equation to "
+               "{dev} (relative to ω_m)"),
+    "period": "cycle time: {T} s from the integration, {Te} s from t(φ) = ∫dφ/ω",
+    "motor": ("motor M_Д = M_п·(1 − ω/ω_x), reduced to the crank: M_п = {Mp} N·m, ω_x = {wx} rad/s; "
+              "the steady cycle-mean speed that the motor line balances against the loads "
+              "ω_s = {ws} rad/s; time constant τ = J/(M_п/ω_x) ≈ {tau} s"),
+    "st_ok": ("start-up from rest: the cycle-mean speed is within δ/10 of ω_s after **{t} s** "
+              "({n} cycles); steady cycle-mean speed {w} rad/s"),
+    "st_no": ("start-up from rest: the steady state was **not reached** within {n} cycles ({t} s); "
+              "the last cycle-mean speed is {w} rad/s"),
+    "st_stall": "start-up from rest: the motor cannot start the machine — it stops at φ = {a}°",
+    "st_none": "start-up: not computed ({reason})",
+    "rd": "run-down after the drive is cut at φ = 0: {t} s, {rev} revolutions of the crank",
+    "rd_not": " (not stopped within the integration limit)",
+    "rd_never": "run-down: none — {reason}",
+    "book": ("Artobolevsky I. I. Teoriya mekhanizmov i mashin (Theory of Mechanisms and "
+             "Machines). 4th ed. Moscow: Nauka, 1988: ch. 2 (structure), ch. 16–17 (reduction, "
+             "Merzalov's method, the energy–mass diagram)."),
+    "case_source": "Input data: {s}.",
+    "fig": {
+        "positions": "Position functions of the points x(φ), y(φ)", "scheme": "Scheme of the mechanism",
+        "reactions": "Reactions in the kinematic pairs",
+        "balancing_moment": "Balancing moment on the crank, three ways",
+        "hodographs": "Polar diagrams of the crank-pin, main-bearing and shaking loads",
+        "velocity_analogues": "Velocity analogues of the points",
+        "acceleration_analogues": "Acceleration analogues of the points",
+        "indicator": "Indicator diagram, cylinder {x}", "piston_forces": "Gas forces on the pistons",
+        "reduced_moments": "Reduced moments of the loads", "works": "Works and kinetic energy",
+        "energy_mass": "Energy–mass diagram (Wittenbauer)", "time_law": "Time law t(φ)",
+        "transients": "Start-up and run-down",
+        "plan_positions": "The mechanism in its standard positions",
+        "plan_velocity": "Velocity plan at φ = {a}°", "plan_acceleration": "Acceleration plan at φ = {a}°",
+        "plan_forces": "Force polygons of the Assur groups at φ = {a}°",
+        "plan_lever": "Zhukovsky's lever at φ = {a}°",
     },
-    "ru": {
-        "title": "Динамический анализ", "source": "Источник", "input": "1. Исходные данные",
-        "machine": "Машина, кривошип и маховик", "lengths": "Длины звеньев и направляющие",
-        "masses": "Массы и моменты инерции звеньев", "cyl": "Цилиндры",
-        "indicator": "Индикаторная диаграмма цилиндра {c}",
-        "forces": "Технологические силы и пары сил",
-        "structure": "Структура механизма",
-        "structure_note": ("Механизм образован начальным механизмом (кривошип {c} и стойка) и "
-                           "присоединёнными к нему группами Ассура:"),
-        "group": "группа Ассура II класса вида {kind}: звенья {links}",
-        "chebyshev": ("Степень подвижности по формуле Чебышева: подвижных звеньев n = {n}, "
-                      "низших пар p₅ = {p5}, высших пар p₄ = {p4}:"),
-        "tabulated": "Кинематические характеристики заданы таблицей (схема механизма не задана).",
-        "kin": "2. Кинематика в стандартных положениях",
-        "kin_caption": "Аналоги скоростей в стандартных положениях",
-        "kin_note": "Аналоги скоростей точек {vq} = dr/dφ ({u}), звеньев {wq} = dθ/dφ.",
-        "red": "3. Приведение масс и сил",
-        "red_caption": "Приведённый момент инерции и приведённые моменты в стандартных положениях",
-        "red_note": ("J_II — кинетическая энергия звеньев на ½ω²; приведённый момент силы F·v_q, "
-                     "силы тяжести m·g⃗·v_qS."),
-        "energy": "4. Работы и кинетическая энергия",
-        "energy_caption": "Работы и кинетическая энергия в стандартных положениях",
-        "sizing": "5. Маховик", "sizing_caption": "Маховик по двум методам",
-        "dims_caption": "Размеры маховика", "method": "метод",
-        "m_merzalov": "Мерцалова", "m_exact": "диаграмма Виттенбауэра (точно)",
-        "shape": "форма", "disk_word": "диск", "rim_word": "обод",
-        "motion": "6. Истинные скорости и ускорения",
-        "points_caption": "Точки при φ = {a}°", "links_caption": "Звенья при φ = {a}°",
-        "warn": "Предупреждения", "figures": "Рисунки", "sources": "Источники",
-        "no_plots": "Рисунки не построены (запуск с --no-plots).",
-        "pos": "положение", "no": "№", "qty": "величина", "val": "значение", "unit": "ед.", "point": "точка",
-        "link": "звено", "name": "имя", "piston": "поршень", "head": "мёртвая точка у головки",
-        "first_group": "первая группа", "centroid": "центр масс",
-        "balance_word": {"driving": "движущий", "resistance": "сопротивления"},
-        "balance_row": "постоянный момент из условия цикла",
-        "balance": "- {A_C} = ∮ {M_C} dφ = {A} {uJ}; {M_D} = −{A_C}/Φ = {M} {uM} (из условия цикла, Φ = {cycle}°)",
-        "extremes": ("- {dT} max = {vmax} {uJ} при {amax}°, min = {vmin} {uJ} при {amin}° "
-                     "(глобальные экстремумы); {span} = {v} {uJ}"),
-        "merzalov": "- по Мерцалову: {J} = {span}/(δ·{w}²) = {v} {uI}, достигнутый δ {d}",
-        "given": "- маховик задан (не подбирается): {J} = {v} {uI} на валу кривошипа даёт δ = {d}",
-        "exact": "- точно (диаграмма Виттенбауэра): {J} = {v} {uI}, достигнутый δ {d}",
-        "flywheel": "- маховик {JM} = {J} − ({J1}) = {v} {uI}",
-        "shaft": "; на валу, вращающемся в {i:g} раз быстрее: {v} {uI}",
-        "disk": "- диск ({mat}): {dims}, {speed} {v} {u}",
-        "rim": "- обод: {dims}, {speed} {v} {u} (допускаемая {lim} {u})",
-        "rim_design": ("- спроектированный обод (доля {share} от J маховика; тонкое кольцо, Khurmi & "
-                       "Gupta, гл. 16): {dims}; σ = ρ·v² = {sigma} МПа"),
-        "omega_extremes": "- {wmax} = {vmax} {uw} при {amax}°, {wmin} = {vmin} {uw} при {amin}°; {T} {v} {uT}",
-        "at": "ω = {w} {uw}, ε = {e} {ue}",
-        "time": "7. Движение во времени",
-        "time_note": ("Уравнение движения J(φ)·φ̈ + ½·J′(φ)·φ̇² = M(φ, φ̇), J = J_I + J_II(φ), "
-                      "проинтегрировано во времени (solve_ivp из scipy); J, J′ и M взяты из таблиц "
-                      "§3–4, поэтому интегрирование не зависит от энергетического решения §5."),
-        "verify": ("установившееся движение из состояния энергетического решения при φ = 0, циклов: "
-                   "{n}: ω повторяется от цикла к циклу с точностью {rep} (относительно) и совпадает "
-                   "с ω(φ) уравнения энергии до {dev} (относительно ω_ср)"),
-        "period": "время цикла: {T} с по интегрированию, {Te} с по t(φ) = ∫dφ/ω",
-        "motor": ("двигатель M_Д = M_п·(1 − ω/ω_x), приведённый к кривошипу: M_п = {Mp} Н·м, "
-                  "ω_x = {wx} рад/с; средняя за цикл скорость, при которой характеристика "
-                  "уравновешивает нагрузку, ω_s = {ws} рад/с; постоянная времени τ = J/(M_п/ω_x) ≈ "
-                  "{tau} с"),
-        "st_ok": ("разгон из состояния покоя: средняя за цикл скорость отличается от ω_s меньше "
-                  "чем на δ/10 через **{t} с** (циклов: {n}); установившаяся средняя скорость {w} рад/с"),
-        "st_no": ("разгон из состояния покоя: установившийся режим **не достигнут** за {n} циклов "
-                  "({t} с); средняя скорость последнего цикла {w} рад/с"),
-        "st_stall": "разгон из состояния покоя: двигатель не может разогнать машину — остановка при φ = {a}°",
-        "st_none": "разгон: не рассчитан ({reason})",
-        "rd": "выбег после отключения привода при φ = 0: {t} с, оборотов кривошипа: {rev}",
-        "rd_not": " (не остановился в пределах интегрирования)",
-        "rd_never": "выбега нет: {reason}",
-        "book": ("Артоболевский И. И. Теория механизмов и машин. — 4-е изд. — М.: Наука, 1988: "
-                 "гл. 2 (структура), гл. 16–17 (приведение, метод Мерцалова, диаграмма "
-                 "Виттенбауэра)."),
-        "case_source": "Исходные данные: {s}.",
-        "fig": {
-            "positions": "Функции положения точек x(φ), y(φ)", "scheme": "Схема механизма",
-            "reactions": "Реакции в кинематических парах",
-            "balancing_moment": "Уравновешивающий момент на кривошипе тремя способами",
-            "hodographs": "Полярные диаграммы нагрузок на шатунную шейку, коренной подшипник и стойку",
-            "velocity_analogues": "Аналоги скоростей точек",
-            "acceleration_analogues": "Аналоги ускорений точек",
-            "indicator": "Индикаторная диаграмма цилиндра {x}",
-            "piston_forces": "Силы давления газа на поршни",
-            "reduced_moments": "Приведённые моменты сил", "works": "Работы и кинетическая энергия",
-            "energy_mass": "Диаграмма энергия–масса (Виттенбауэра)", "time_law": "Закон движения t(φ)",
-            "transients": "Разгон и выбег",
-            "plan_positions": "План положений механизма",
-            "plan_velocity": "План скоростей при φ = {a}°", "plan_acceleration": "План ускорений при φ = {a}°",
-            "plan_forces": "Планы сил групп Ассура при φ = {a}°",
-            "plan_lever": "Рычаг Жуковского при φ = {a}°",
-        },
-    },
-}
+})
 
 # which section a figure belongs to (the stem of its file, or its prefix before "_<name>")
 _FIGURE_SECTION = {"positions": "kin", "scheme": "kin", "velocity_analogues": "kin",

@@ -10,28 +10,18 @@ from __future__ import annotations
 import json
 
 from flywheel.render import nomenclature as nm
+from flywheel.render.catalogue import words
 from flywheel.render.numbers import fmt as _number
 
-L10N = {
-    "en": {
-        "operation": "Operation", "motor": "Motor", "speeds": "Speeds of the flywheel shaft",
-        "flywheel": "Flywheel", "timing": "Timing (the program converts time and angle at ω_m)",
-        "checks": "Checks (identities; residuals)", "quantity": "quantity", "symbol": "symbol",
-        "value": "value", "unit": "unit", "phase": "phase",
-        "no_radius": "the radius is not given: J, ω and angles are unknown (speeds at the radius)",
-        "shape": {"constant": "constant", "falling": "falling linearly to 0",
-                  "triangle": "triangle 0 → F_max → 0"},
-    },
-    "ru": {
-        "operation": "Операция", "motor": "Двигатель", "speeds": "Скорости вала маховика",
-        "flywheel": "Маховик", "timing": "Время и угол (программа переводит их при ω_ср)",
-        "checks": "Проверки (тождества; невязки)", "quantity": "величина", "symbol": "обозн.",
-        "value": "значение", "unit": "ед.", "phase": "этап",
-        "no_radius": "радиус не задан: J, ω и углы неизвестны (скорости на радиусе)",
-        "shape": {"constant": "постоянная", "falling": "линейно убывает до 0",
-                  "triangle": "треугольник 0 → F_max → 0"},
-    },
-}
+L10N = words("duty_cycle", {
+    "operation": "Operation", "motor": "Motor", "speeds": "Speeds of the flywheel shaft",
+    "flywheel": "Flywheel", "timing": "Timing (the program converts time and angle at ω_m)",
+    "checks": "Checks (identities; residuals)", "quantity": "quantity", "symbol": "symbol",
+    "value": "value", "unit": "unit", "phase": "phase",
+    "no_radius": "the radius is not given: J, ω and angles are unknown (speeds at the radius)",
+    "shape": {"constant": "constant", "falling": "falling linearly to 0",
+              "triangle": "triangle 0 → F_max → 0"},
+})
 
 
 def to_dict(r, title: str = "", source: str = "") -> dict:

@@ -12,87 +12,48 @@ import math
 import numpy as np
 
 from flywheel.render.blocks import Bullets, Heading, Paragraph
+from flywheel.render.catalogue import words
 from flywheel.render.nomenclature import csv_header, name, position_label, symbol, unit, unit_of
 from flywheel.render.numbers import fmt as _number, fmt_rows
 
-T = {
-    "en": {
-        "title": "Force analysis (kinetostatics)",
-        "motion_true": "motion: true — ω(φ), ε(φ) of the dynamics with the flywheel "
-                       "(J_I = {J} kg·m² on the crank shaft)",
-        "motion_steady": "motion: steady — ω = ω_m = {w} rad/s, ε = 0 (the crank turns uniformly)",
-        "closure": "closure with the dynamics (true motion): max|M_y − {ref}|/|{ref}| = {c} "
-                   "over the cycle ({n} nodes){ok}",
-        "closure_J": "closure with the dynamics (true motion): M_D = 0, max|M_y|/max|J_I·ε| = {c} "
-                     "over the cycle ({n} nodes){ok}",
-        "ok": " — M_y = M_D at every φ, the equation of motion read backwards",
-        "bad": " — NOT round-off: check the loads",
-        "mean": "cycle mean of M_y: {m} N·m (M_D = {d} N·m)",
-        "moments": "Balancing moment M_y at the report angles [N·m]",
-        "kin": "kinetostatics", "zhuk": "Zhukovsky's lever", "power": "power balance",
-        "joints": "Joint reactions at φ = {a}° (R_ij: the force of link i on link j)",
-        "sc": "Slider-crank quantities at φ = {a}°",
-        "joint": "joint", "point": "point", "by": "by", "on": "on", "angle": "angle",
-        "slider": "slider", "pos": "position", "no": "no.",
-        "intro": ("Loads on every moving link: the given forces (gas, technological, weights), "
-                  "the couples, d'Alembert's inertia force −m·a_S at the centroid and couple "
-                  "−J_S·ε_i, and −J_I·ε on the crank (the first group as the flywheel sizing left "
-                  "it). The Assur groups are solved from the last one back to the crank; R_ij is "
-                  "the force of link i on link j at their joint (the frame is 0), its angle from "
-                  "+x counter-clockwise. M_y is the moment the drive applies to the crank, "
-                  "positive in the direction of rotation, found three ways: kinetostatics, "
-                  "Zhukovsky's lever (Σ F·v_q + Σ M·ω_q with the inertia loads, M_y = −that "
-                  "sum) and the power balance (M_y = J·ε + ½·J′·ω² − Σ F·v_q − Σ M·ω_q). "
-                  "Conventions: docs/forces.md."),
-        "positions": "Reactions |R_ij| [N] and M_y [N·m] at the standard positions",
-        "at": "At φ = {a}°",
-        "frame": ("crank-pin load {P} N (F_T = {T} N, F_R = {R} N); main bearing {B} N; "
-                  "shaking force {S} N, shaking moment {M} N·m"),
-        "tab_positions": ("M_y by the power balance at the table's positions [N·m], beside the "
-                          "seed's static and dynamic moments at ω_m (with the steady motion "
-                          "M_y = M_st + M_dyn)"),
-    },
-    "ru": {
-        "title": "Силовой расчёт (кинетостатика)",
-        "motion_true": "движение: истинное — ω(φ), ε(φ) из динамического анализа с маховиком "
-                       "(J_I = {J} кг·м² на валу кривошипа)",
-        "motion_steady": "движение: установившееся равномерное — ω = ω_ср = {w} рад/с, ε = 0",
-        "closure": "сходимость с динамикой (истинное движение): max|M_у − {ref}|/|{ref}| = {c} "
-                   "за цикл (узлов: {n}){ok}",
-        "closure_J": "сходимость с динамикой (истинное движение): M_Д = 0, max|M_у|/max|J_I·ε| = "
-                     "{c} за цикл (узлов: {n}){ok}",
-        "ok": " — M_у = M_Д при каждом φ: уравнение движения, прочитанное в обратную сторону",
-        "bad": " — НЕ ошибка округления: проверьте нагрузки",
-        "mean": "среднее за цикл M_у: {m} Н·м (M_Д = {d} Н·м)",
-        "moments": "Уравновешивающий момент M_у в расчётных положениях, Н·м",
-        "kin": "кинетостатика", "zhuk": "рычаг Жуковского", "power": "баланс мощностей",
-        "joints": "Реакции в кинематических парах при φ = {a}° (R_ij — сила действия звена i "
-                  "на звено j)",
-        "sc": "Силы в кривошипно-ползунном механизме при φ = {a}°",
-        "joint": "пара", "point": "точка", "by": "звено i", "on": "звено j", "angle": "угол",
-        "slider": "ползун", "pos": "положение", "no": "№",
-        "intro": ("Нагрузки на каждое подвижное звено: заданные силы (давления газа, полезного "
-                  "сопротивления, тяжести), пары сил, сила инерции −m·a_S в центре масс и момент "
-                  "сил инерции −J_S·ε_i (принцип Даламбера), на кривошипе −J_I·ε (первая группа "
-                  "с маховиком). Структурные группы Ассура рассчитываются от последней к "
-                  "кривошипу; R_ij — сила действия звена i на звено j в их паре (стойка — 0), "
-                  "угол отсчитывается от оси x против часовой стрелки. M_у — момент, "
-                  "приложенный к кривошипу со стороны привода, положительный по направлению "
-                  "вращения; найден тремя способами: кинетостатикой, рычагом Жуковского "
-                  "(Σ F·v_q + Σ M·ω_q с силами инерции, M_у = −сумма) и из баланса мощностей "
-                  "(M_у = J·ε + ½·J′·ω² − Σ F·v_q − Σ M·ω_q). Правила знаков: docs/forces.md."),
-        "positions": "Реакции |R_ij| (Н) и M_у (Н·м) в стандартных положениях",
-        "at": "При φ = {a}°",
-        "frame": ("нагрузка на шатунную шейку {P} Н (F_T = {T} Н, F_R = {R} Н); на коренной "
-                  "подшипник {B} Н; сила, действующая на стойку, {S} Н, момент {M} Н·м"),
-        "tab_positions": ("M_у из баланса мощностей в положениях таблицы (Н·м) рядом с "
-                          "моментами статического и динамического сопротивления при ω_ср (при "
-                          "равномерном вращении M_у = M_ст + M_дин)"),
-        "note": ("реакции в кинематических парах требуют схемы механизма: кинематика задана "
-                 "таблицей, поэтому M_у найден только из баланса мощностей, "
-                 "M_у = (J_I + J_II)·ε + ½·dJ_II/dφ·ω² − M_изв"),
-    },
-}
+T = words("forces", {
+    "title": "Force analysis (kinetostatics)",
+    "motion_true": "motion: true — ω(φ), ε(φ) of the dynamics with the flywheel "
+                   "(J_I = {J} kg·m² on the crank shaft)",
+    "motion_steady": "motion: steady — ω = ω_m = {w} rad/s, ε = 0 (the crank turns uniformly)",
+    "closure": "closure with the dynamics (true motion): max|M_y − {ref}|/|{ref}| = {c} "
+               "over the cycle ({n} nodes){ok}",
+    "closure_J": "closure with the dynamics (true motion): M_D = 0, max|M_y|/max|J_I·ε| = {c} "
+                 "over the cycle ({n} nodes){ok}",
+    "ok": " — M_y = M_D at every φ, the equation of motion read backwards",
+    "bad": " — NOT round-off: check the loads",
+    "mean": "cycle mean of M_y: {m} N·m (M_D = {d} N·m)",
+    "moments": "Balancing moment M_y at the report angles [N·m]",
+    "kin": "kinetostatics", "zhuk": "Zhukovsky's lever", "power": "power balance",
+    "joints": "Joint reactions at φ = {a}° (R_ij: the force of link i on link j)",
+    "sc": "Slider-crank quantities at φ = {a}°",
+    "joint": "joint", "point": "point", "by": "by", "on": "on", "angle": "angle",
+    "slider": "slider", "pos": "position", "no": "no.",
+    "intro": ("Loads on every moving link: the given forces (gas, technological, weights), "
+              "the couples, d'Alembert's inertia force −m·a_S at the centroid and couple "
+              "−J_S·ε_i, and −J_I·ε on the crank (the first group as the flywheel sizing left "
+              "it). The Assur groups are solved from the last one back to the crank; R_ij is "
+              "the force of link i on link j at their joint (the frame is 0), its angle from "
+              "+x counter-clockwise. M_y is the moment the drive applies to the crank, "
+              "positive in the direction of rotation, found three ways: kinetostatics, "
+              "Zhukovsky's lever (Σ F·v_q + Σ M·ω_q with the inertia loads, M_y = −that "
+              "sum) and the power balance (M_y = J·ε + ½·J′·ω² − Σ F·v_q − Σ M·ω_q). "
+              "Conventions: docs/forces.md."),
+    "positions": "Reactions |R_ij| [N] and M_y [N·m] at the standard positions",
+    "at": "At φ = {a}°",
+    "frame": ("crank-pin load {P} N (F_T = {T} N, F_R = {R} N); main bearing {B} N; "
+              "shaking force {S} N, shaking moment {M} N·m"),
+    "tab_positions": ("M_y by the power balance at the table's positions [N·m], beside the "
+                      "seed's static and dynamic moments at ω_m (with the steady motion "
+                      "M_y = M_st + M_dyn)"),
+    "note": ("joint reactions need a linkage: the kinematics are a table, so M_y is given by "
+             "the power balance only, M_y = (J_I + J_II)·ε + ½·dJ_II/dφ·ω² − M_known"),
+})
 
 SLIDER_CRANK = ("piston_effort", "side_thrust", "rod_thrust", "crank_pin_tangential",
                 "crank_pin_radial", "turning_moment")
@@ -173,7 +134,7 @@ def note(results, lang: str) -> str:
     f = results.forces
     if not f.note:
         return ""
-    return T["ru"]["note"] if lang == "ru" else f.note
+    return T["ru"]["note"] if lang == "ru" else f.note     # T["en"]["note"]: dynamics/stages.py's
 
 
 def summary_lines(results, lang: str = "en") -> list[str]:

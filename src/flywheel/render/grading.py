@@ -2,59 +2,32 @@
 only, no computation)."""
 from __future__ import annotations
 
+from flywheel.render.catalogue import words
 from flywheel.render.numbers import fmt as _number
 
 # sentence templates of the class summary and the gradebook (the quantities' names are
 # answers' keys, which stay as the key spells them)
-TEXT = {
-    "en": {"summary": "Class summary: {n} graded, mean score {mean}", "dist": "Score distribution",
-           "passed": "answers passed", "students": "students", "wrong": "Most often wrong",
-           "none": "none", "nothing": "Handed in nothing ({n})", "unassigned":
-           "Variants nobody was graded on ({n})", "problems": "{n} problem(s) (skipped or not "
-           "graded); --json lists them", "verdict": "verdict", "error": "error", "score": "score",
-           "total": "total", "pass": "pass", "fail": "FAIL", "no_answer": "no answer",
-           "student": "student", "variant": "variant", "full": "full marks: {k} of {n}",
-           "each": "each", "of": "of",
-           "student_title": "{student} — variant {variant} — {passed}/{total} ({pct})",
-           "answer": "answer", "given": "given", "key": "key", "tolerance": "tolerance",
-           "abs": "abs", "group": "Group: {n} graded, mean score {mean}", "wrong_col": "wrong",
-           "more_students": "… and {n} more students (the whole report: --out REPORT.csv or "
-           "--json)", "by_answer": "By answer",
-           "stats": "mean score {mean}; full marks: {k} of {n}; most often wrong: {worst}",
-           "problem_list": "{n} problem(s)", "problem_note": "(skipped or not graded):",
-           "more_problems": "… and {n} more (all of them: --json)",
-           "v_title": "{n} variant(s) of {name} ({kind}{grid})", "v_run": "flywheel run case",
-           "v_task2": "flywheel task2 case", "v_grid": ", answers on a {n}-interval grid",
-           "v_variant": "variant", "v_drawn": "drawn", "v_answers": "answers (SI)",
-           "v_failed": "{n} draw(s) failed validation or analysis and were drawn again",
-           "v_seed": "seed {seed} (the same seed gives the same files)"},
-    "ru": {"summary": "Итоги группы: проверено {n}, средний балл {mean}",
-           "dist": "Распределение баллов", "passed": "верных ответов", "students": "студентов",
-           "wrong": "Чаще всего ошибались в", "none": "нет", "nothing": "Не сдали ответов ({n})",
-           "unassigned": "Варианты без проверенных студентов ({n})",
-           "problems": "Замечаний: {n} (пропущено или не проверено); полный список: --json",
-           "verdict": "оценка", "error": "погрешность", "score": "балл", "total": "всего",
-           "pass": "верно", "fail": "НЕВЕРНО", "no_answer": "нет ответа", "student": "студент",
-           "variant": "вариант", "full": "все ответы верны: {k} из {n}", "each": "каждый",
-           "of": "из",
-           "student_title": "{student} — вариант {variant} — {passed}/{total} ({pct})",
-           "answer": "ответ", "given": "дано", "key": "ключ", "tolerance": "допуск",
-           "abs": "абс.", "group": "Группа: проверено {n}, средний балл {mean}",
-           "wrong_col": "ошибки",
-           "more_students": "… и ещё студентов: {n} (весь отчёт: --out REPORT.csv или --json)",
-           "by_answer": "По ответам",
-           "stats": "средний балл {mean}; все ответы верны: {k} из {n}; чаще всего ошибались "
-                    "в: {worst}",
-           "problem_list": "Замечаний: {n}", "problem_note": "(пропущено или не проверено):",
-           "more_problems": "… и ещё {n} (все: --json)",
-           "v_title": "Варианты ({n}) по шаблону {name} ({kind}{grid})",
-           "v_run": "случай flywheel run", "v_task2": "случай flywheel task2",
-           "v_grid": ", ответы на сетке из {n} интервалов", "v_variant": "вариант",
-           "v_drawn": "выпало", "v_answers": "ответы (СИ)",
-           "v_failed": ("розыгрышей, не прошедших проверку или расчёт и разыгранных заново: "
-                        "{n}"),
-           "v_seed": "seed {seed} (тот же seed даёт те же файлы)"},
-}
+TEXT = words("grading", {"summary": "Class summary: {n} graded, mean score {mean}", "dist": "Score distribution",
+                         "passed": "answers passed", "students": "students", "wrong": "Most often wrong",
+                         "none": "none", "nothing": "Handed in nothing ({n})", "unassigned":
+                         "Variants nobody was graded on ({n})", "problems": "{n} problem(s) (skipped or not "
+                         "graded); --json lists them", "verdict": "verdict", "error": "error", "score": "score",
+                         "total": "total", "pass": "pass", "fail": "FAIL", "no_answer": "no answer",
+                         "student": "student", "variant": "variant", "full": "full marks: {k} of {n}",
+                         "each": "each", "of": "of",
+                         "student_title": "{student} — variant {variant} — {passed}/{total} ({pct})",
+                         "answer": "answer", "given": "given", "key": "key", "tolerance": "tolerance",
+                         "abs": "abs", "group": "Group: {n} graded, mean score {mean}", "wrong_col": "wrong",
+                         "more_students": "… and {n} more students (the whole report: --out REPORT.csv or "
+                         "--json)", "by_answer": "By answer",
+                         "stats": "mean score {mean}; full marks: {k} of {n}; most often wrong: {worst}",
+                         "problem_list": "{n} problem(s)", "problem_note": "(skipped or not graded):",
+                         "more_problems": "… and {n} more (all of them: --json)",
+                         "v_title": "{n} variant(s) of {name} ({kind}{grid})", "v_run": "flywheel run case",
+                         "v_task2": "flywheel task2 case", "v_grid": ", answers on a {n}-interval grid",
+                         "v_variant": "variant", "v_drawn": "drawn", "v_answers": "answers (SI)",
+                         "v_failed": "{n} draw(s) failed validation or analysis and were drawn again",
+                         "v_seed": "seed {seed} (the same seed gives the same files)"})
 
 
 def gradebook_rows(r, lang: str = "en") -> list[list]:

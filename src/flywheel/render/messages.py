@@ -18,8 +18,12 @@ sentences that have no symbol and no unit ("term:<key>").
 from __future__ import annotations
 
 from flywheel.render.catalogue import (_english, catalogue, entry, has,  # noqa: F401
-                                       notice_codes, plural)
+                                       notice_codes, plural, words)
 from flywheel.render.message_params import russian_params
+
+
+#: the words of a Notice's lead (the place it names)
+_LEAD = words("message_lead", {"top_level": ": (top level): "})
 
 
 def message(text: str, lang: str = "en") -> str:
@@ -28,7 +32,7 @@ def message(text: str, lang: str = "en") -> str:
     code = getattr(text, "code", "")
     if lang != "ru" or not code or not has(code):
         return str(text)
-    lead = getattr(text, "lead", "").replace(": (top level): ", ": (верхний уровень): ")
+    lead = getattr(text, "lead", "").replace(_LEAD["en"]["top_level"], _LEAD["ru"]["top_level"])
     english = getattr(text, "template", "") or _english()[code]    # Notice.of gives its msgid
     russian = catalogue("ru").pgettext(code, english)
     if russian == english:                          # an English changed, not yet in the .po

@@ -11,46 +11,27 @@ from __future__ import annotations
 import numpy as np
 
 from flywheel.render import nomenclature as nm
+from flywheel.render.catalogue import words
 
 # Sentence templates only; every quantity's symbol, name and unit comes from the nomenclature
 # (render/nomenclature.py), filled in where the templates say {…}.
-TEXT = {
-    "en": {"em": "Energy–mass diagram (Wittenbauer) and Merzalov's {dT}",
-           "T": r"$\Delta T = A(\varphi)$ [{u}]",
-           "curve": r"$\Delta T(J_{{II}})$ over the cycle", "tan_max": r"tangent at $\psi_{{max}}$",
-           "tan_min": r"tangent at $\psi_{{min}}$", "tan_slope": "{tan}: {w}²/2 = {k:.5g} {uJ}/({uI})",
-           "origin": "origin of the full-energy axes (−{J}, −{T})",
-           "full": "the whole construction: the tangents meet at O′ (−{J}, −{T})",
-           "zoom": "the curve enlarged: points of tangency", "merz": "Merzalov: {dT}(φ)",
-           "exact": "exact", "J_exact": "{J} ({exact}) = {v:.5g} {u}",
-           "J_dim": "{J} = {v:.5g} {u} ({exact})",
-           "kl": "kl = {kl:.5g} {uJ},  {J} = kl/(δ·{w}²)",
-           "span": "{span} = {v:.5g} {uJ}\n{J} = {span}/(δ·{w}²) = {J_v:.5g} {uI}",
-           "steady": "steady within δ/10 after {time:.4g} {u}",
-           "means": "cycle-mean speed (1/Φ)∮ω dφ", "band": "{w} = {v:.5g} {u} ± δ/10 (for the cycle mean)",
-           "not_reached": "steady state not reached (see summary)",
-           "axT": r"$T = T_0 + \Delta T$", "axJ": r"$J = J_I + J_{{II}}$",
-           "time": "Time law over one cycle: {T} = {v:.5g} {u}",
-           "tr": "Start-up and run-down", "start": "start-up (motor)", "run": "run-down (drive cut)"},
-    "ru": {"em": "Диаграмма энергомасс (Виттенбауэр) и {dT} по Мерцалову",
-           "T": r"$\Delta T = A(\varphi)$, {u}",
-           "curve": r"$\Delta T(J_{{II}})$ за цикл", "tan_max": r"касательная под $\psi_{{max}}$",
-           "tan_min": r"касательная под $\psi_{{min}}$", "tan_slope": "{tan}: {w}²/2 = {k:.5g} {uJ}/({uI})",
-           "origin": "начало осей полной энергии (−{J}, −{T})",
-           "full": "построение целиком: касательные пересекаются в O′ (−{J}, −{T})",
-           "zoom": "кривая в крупном масштабе: точки касания", "merz": "Мерцалов: {dT}(φ)",
-           "exact": "точно", "J_exact": "{J} ({exact}) = {v:.5g} {u}",
-           "J_dim": "{J} = {v:.5g} {u} ({exact})",
-           "kl": "kl = {kl:.5g} {uJ},  {J} = kl/(δ·{w}²)",
-           "span": "{span} = {v:.5g} {uJ}\n{J} = {span}/(δ·{w}²) = {J_v:.5g} {uI}",
-           "steady": "установившийся режим (δ/10) через {time:.4g} {u}",
-           "means": "средняя за цикл скорость (1/Φ)∮ω dφ",
-           "band": "{w} = {v:.5g} {u} ± δ/10 (для средней за цикл)",
-           "not_reached": "установившийся режим не достигнут",
-           "axT": r"$T = T_0 + \Delta T$", "axJ": r"$J = J_I + J_{{II}}$",
-           "time": "Закон движения за цикл: {T} = {v:.5g} {u}",
-           "tr": "Разгон и выбег", "start": "разгон (двигатель)", "run": "выбег (привод отключён)"},
-}
+TEXT = words("plots_extra", {"em": "Energy–mass diagram (Wittenbauer) and Merzalov's {dT}",
+                             "T": r"$\Delta T = A(\varphi)$ [{u}]",
+                             "curve": r"$\Delta T(J_{{II}})$ over the cycle", "tan_max": r"tangent at $\psi_{{max}}$",
+                             "tan_min": r"tangent at $\psi_{{min}}$", "tan_slope": "{tan}: {w}²/2 = {k:.5g} {uJ}/({uI})",
+                             "origin": "origin of the full-energy axes (−{J}, −{T})",
+                             "full": "the whole construction: the tangents meet at O′ (−{J}, −{T})",
+                             "zoom": "the curve enlarged: points of tangency", "merz": "Merzalov: {dT}(φ)",
+                             "exact": "exact", "J_exact": "{J} ({exact}) = {v:.5g} {u}",
+                             "J_dim": "{J} = {v:.5g} {u} ({exact})",
+                             "kl": "kl = {kl:.5g} {uJ},  {J} = kl/(δ·{w}²)",
+                             "span": "{span} = {v:.5g} {uJ}\n{J} = {span}/(δ·{w}²) = {J_v:.5g} {uI}",
+                             "steady": "steady within δ/10 after {time:.4g} {u}",
+                             "means": "cycle-mean speed (1/Φ)∮ω dφ", "band": "{w} = {v:.5g} {u} ± δ/10 (for the cycle mean)",
+                             "not_reached": "steady state not reached (see summary)",
+                             "axT": r"$T = T_0 + \Delta T$", "axJ": r"$J = J_I + J_{{II}}$",
+                             "time": "Time law over one cycle: {T} = {v:.5g} {u}",
+                             "tr": "Start-up and run-down", "start": "start-up (motor)", "run": "run-down (drive cut)"})
 
 
 def _f(t: dict, key: str, **kw) -> str:

@@ -7,8 +7,10 @@ from __future__ import annotations
 
 from flywheel.render.document import (Bullets, Document, Figure, Formula, Heading, Paragraph, Table,
                                       build_document)
+from flywheel.render.catalogue import words
 
-CAPTION = {"en": ("Table", "Figure"), "ru": ("Таблица", "Рис.")}
+_CAPTION = words("report_caption", {"table": "Table", "figure": "Figure"})
+CAPTION = {lang: (w["table"], w["figure"]) for lang, w in _CAPTION.items()}
 
 
 def _cell(x: str) -> str:

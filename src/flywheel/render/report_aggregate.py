@@ -11,6 +11,7 @@ labels come from render/nomenclature.py, this module keeps the section titles.
 """
 from __future__ import annotations
 
+from flywheel.render.catalogue import words
 from flywheel.render.document import Bullets, Document, Figure, Formula, Heading, Paragraph
 from flywheel.render.nomenclature import name as text, rotor_name, unit
 from flywheel.render.numbers import fmt as _number
@@ -18,66 +19,34 @@ from flywheel.units import RPM_PER_RAD_S, TWO_PI
 
 FIGURE = "aggregate.png"
 
-T = {
-    "en": {
-        "title": "Machine aggregate with elastic couplings", "source": "Source",
-        "given": "1. Given data", "rotors": "Rotors reduced to shaft I (J·u², u = ω/ω_I)",
-        "connections": "Connections reduced to shaft I (c·u²)", "drive": "Motor and load reduced to shaft I",
-        "method": "2. Method",
-        "method_note": ("The aggregate is a chain of rigid rotors joined by elastic shafts and "
-                        "couplings, every quantity reduced to shaft I. Lagrange's equations in "
-                        "the generalised coordinates give the inertia and stiffness coefficients "
-                        "a_ij, c_ij; the natural frequencies are the roots of the frequency "
-                        "equation; the steady forced vibration under the harmonic load is found "
-                        "in closed form and checked by integrating in time (solve_ivp)."),
-        "coefficients": "3. Coefficients of the equations", "frequencies": "4. Natural frequencies",
-        "modes_caption": "Natural frequencies and mode shapes",
-        "resonance": "5. Forced vibration and start-up",
-        "resonance_caption": "Resonance margins", "steady_caption": "Steady state and start-up",
-        "no_motor": "No [motor]: natural frequencies only.",
-        "figure": "Speeds and the elastic moment against time: start-up and steady state",
-        "sources": "Sources", "case_source": "Input data: {s}.",
-        "book": ("Efanov A. M. Teoriya mekhanizmov i mashin (Theory of Mechanisms and Machines), "
-                 "ch. 9: the machine aggregate with an elastic coupling (eqs. 9.20–9.25)."),
-        "kind": "motor characteristic", "linear": "linear M_D = M_s·(1 − ω/ω_x)",
-        "constant": "constant torque", "M_start": "starting torque M_s",
-        "omega_x": "synchronous speed ω_x", "omega_nominal": "speed ω_I",
-        "M0": "mean resistance M_0·i31", "amplitude": "amplitude of the load M̃·i31",
-        "forcing_ratio": "forcing frequency / ω_I",
-        "quantity": "quantity", "value": "value", "unit": "unit", "matrix": "{name}, {u}",
-        "check": "solve_ivp check",
-    },
-    "ru": {
-        "title": "Машинный агрегат с упругими связями", "source": "Источник",
-        "given": "1. Исходные данные", "rotors": "Массы, приведённые к валу I (J·u², u = ω/ω_I)",
-        "connections": "Упругие связи, приведённые к валу I (c·u²)",
-        "drive": "Двигатель и нагрузка, приведённые к валу I",
-        "method": "2. Метод решения",
-        "method_note": ("Агрегат — цепь жёстких масс, соединённых упругими валами и муфтами; все "
-                        "величины приведены к валу I. Уравнения Лагранжа в обобщённых координатах "
-                        "дают инерционные коэффициенты a_ij и коэффициенты жёсткости c_ij; "
-                        "собственные частоты — корни частотного уравнения; установившиеся "
-                        "вынужденные колебания при гармонической нагрузке найдены точно и "
-                        "проверены интегрированием во времени (solve_ivp)."),
-        "coefficients": "3. Коэффициенты уравнений", "frequencies": "4. Собственные частоты",
-        "modes_caption": "Собственные частоты и формы колебаний",
-        "resonance": "5. Вынужденные колебания и пуск",
-        "resonance_caption": "Отстройка от резонанса",
-        "steady_caption": "Установившийся режим и пуск",
-        "no_motor": "Нет раздела [motor]: только собственные частоты.",
-        "figure": "Скорости и упругий момент во времени: пуск и установившийся режим",
-        "sources": "Источники", "case_source": "Исходные данные: {s}.",
-        "book": ("Ефанов А. М. Теория механизмов и машин, гл. 9: машинный агрегат с упругой "
-                 "муфтой (формулы 9.20–9.25)."),
-        "kind": "характеристика двигателя", "linear": "линейная M_Д = M_п·(1 − ω/ω_x)",
-        "constant": "постоянный момент", "M_start": "пусковой момент M_п",
-        "omega_x": "синхронная скорость ω_x", "omega_nominal": "скорость ω_I",
-        "M0": "средний момент сопротивления M_0·i31", "amplitude": "амплитуда нагрузки M̃·i31",
-        "forcing_ratio": "частота возмущения / ω_I",
-        "quantity": "величина", "value": "значение", "unit": "ед.", "matrix": "{name}, {u}",
-        "check": "проверка solve_ivp",
-    },
-}
+T = words("report_aggregate", {
+    "title": "Machine aggregate with elastic couplings", "source": "Source",
+    "given": "1. Given data", "rotors": "Rotors reduced to shaft I (J·u², u = ω/ω_I)",
+    "connections": "Connections reduced to shaft I (c·u²)", "drive": "Motor and load reduced to shaft I",
+    "method": "2. Method",
+    "method_note": ("The aggregate is a chain of rigid rotors joined by elastic shafts and "
+                    "couplings, every quantity reduced to shaft I. Lagrange's equations in "
+                    "the generalised coordinates give the inertia and stiffness coefficients "
+                    "a_ij, c_ij; the natural frequencies are the roots of the frequency "
+                    "equation; the steady forced vibration under the harmonic load is found "
+                    "in closed form and checked by integrating in time (solve_ivp)."),
+    "coefficients": "3. Coefficients of the equations", "frequencies": "4. Natural frequencies",
+    "modes_caption": "Natural frequencies and mode shapes",
+    "resonance": "5. Forced vibration and start-up",
+    "resonance_caption": "Resonance margins", "steady_caption": "Steady state and start-up",
+    "no_motor": "No [motor]: natural frequencies only.",
+    "figure": "Speeds and the elastic moment against time: start-up and steady state",
+    "sources": "Sources", "case_source": "Input data: {s}.",
+    "book": ("Efanov A. M. Teoriya mekhanizmov i mashin (Theory of Mechanisms and Machines), "
+             "ch. 9: the machine aggregate with an elastic coupling (eqs. 9.20–9.25)."),
+    "kind": "motor characteristic", "linear": "linear M_D = M_s·(1 − ω/ω_x)",
+    "constant": "constant torque", "M_start": "starting torque M_s",
+    "omega_x": "synchronous speed ω_x", "omega_nominal": "speed ω_I",
+    "M0": "mean resistance M_0·i31", "amplitude": "amplitude of the load M̃·i31",
+    "forcing_ratio": "forcing frequency / ω_I",
+    "quantity": "quantity", "value": "value", "unit": "unit", "matrix": "{name}, {u}",
+    "check": "solve_ivp check",
+})
 
 
 def g(x, fmt: str = ".6g") -> str:

@@ -11,35 +11,22 @@ result's document (``DutyCycleResult.to_document()``).
 from __future__ import annotations
 
 from flywheel.render import nomenclature as nm
+from flywheel.render.catalogue import words
 from flywheel.render.document import Bullets, Document, Formula, Heading, Paragraph
 from flywheel.render.duty_cycle import summary_tables
 
-T = {
-    "en": {
-        "title": "Flywheel of a machine that works in operations", "source": "Source",
-        "method": "1. Method",
-        "method_note": ("One operation takes the energy E in the time t_op of each cycle T_c; the "
-                        "motor gives the constant torque M_D (power P) and the flywheel the rest, "
-                        "ΔE; its speed falls from ω_max to ω_min during the operation and the motor "
-                        "brings it back before the next one."),
-        "results": "2. Solution", "checks": "3. Checks", "warn": "Warnings", "sources": "Sources",
-        "case_source": "Input data: {s}.",
-        "book": ("Khurmi R. S., Gupta J. K. Theory of Machines, ch. 16: Turning Moment Diagrams "
-                 "and Flywheel, the section \"Flywheel in Punching Press\" (Ex. 16.19–16.23)."),
-    },
-    "ru": {
-        "title": "Маховик машины, работающей циклами операций", "source": "Источник",
-        "method": "1. Метод решения",
-        "method_note": ("Операция потребляет энергию E за время t_оп каждого цикла T_ц; двигатель "
-                        "даёт постоянный момент M_Д (мощность P), маховик — остальное, ΔE; за "
-                        "операцию его скорость падает от ω_max до ω_min, и двигатель восстанавливает "
-                        "её до следующей операции."),
-        "results": "2. Решение", "checks": "3. Проверки", "warn": "Предупреждения",
-        "sources": "Источники", "case_source": "Исходные данные: {s}.",
-        "book": ("Khurmi R. S., Gupta J. K. Theory of Machines, гл. 16: Turning Moment Diagrams "
-                 "and Flywheel, раздел «Flywheel in Punching Press» (примеры 16.19–16.23)."),
-    },
-}
+T = words("report_duty_cycle", {
+    "title": "Flywheel of a machine that works in operations", "source": "Source",
+    "method": "1. Method",
+    "method_note": ("One operation takes the energy E in the time t_op of each cycle T_c; the "
+                    "motor gives the constant torque M_D (power P) and the flywheel the rest, "
+                    "ΔE; its speed falls from ω_max to ω_min during the operation and the motor "
+                    "brings it back before the next one."),
+    "results": "2. Solution", "checks": "3. Checks", "warn": "Warnings", "sources": "Sources",
+    "case_source": "Input data: {s}.",
+    "book": ("Khurmi R. S., Gupta J. K. Theory of Machines, ch. 16: Turning Moment Diagrams "
+             "and Flywheel, the section \"Flywheel in Punching Press\" (Ex. 16.19–16.23)."),
+})
 
 
 def build_duty_cycle_document(r, title: str, source: str, lang: str = "en") -> Document:

@@ -16,80 +16,46 @@ from __future__ import annotations
 
 import math
 
+from flywheel.render.catalogue import words
 from flywheel.render.document import Bullets, Document, Figure, Formula, Heading, Paragraph
 from flywheel.render.nomenclature import name as text, symbol, unit
 from flywheel.render.numbers import fmt as _number
 
 FIGURE = "task2.png"
 
-T = {
-    "en": {
-        "title": "Steady motion with constant reduced inertia", "source": "Source",
-        "given": "1. Given data", "given_caption": "Given data",
-        "graphs_caption": "Moment graphs at their breakpoints (values just after the angle)",
-        "areas_caption": "Work of the moments between the crossings (area diagram)",
-        "method": "2. Method",
-        "method_note": ("The reduced inertia J is constant, so the kinetic energy theorem over "
-                        "the angle φ gives the speed directly; the extremes of ω lie where "
-                        "M_D = M_C, and the cycle is steady when ∮(M_D − M_C)dφ = 0."),
-        "solution": "3. Solution", "segments_caption": "Segments: works and speeds at the breakpoints and crossings",
-        "results_caption": "Results",
-        "motion": "4. Acceleration, phases and time", "motion_caption": "Acceleration and cycle time",
-        "phases_caption": "Phases between the extremes of ω",
-        "at_caption": "The motion at the asked angles",
-        "figure": "Moments M_D, M_C, work A, speed ω(φ) and acceleration ε(φ)",
-        "figure_areas": "Energy and speed at the crossings",
-        "sources": "Sources", "case_source": "Input data: {s}.",
-        "book": ("Artobolevsky I. I. Teoriya mekhanizmov i mashin (Theory of Mechanisms and "
-                 "Machines). 4th ed. Moscow: Nauka, 1988: ch. 16–17 (reduction, speed "
-                 "fluctuation, the flywheel)."),
-        "given_J": "reduced moment of inertia", "given_w0": "speed at φ = 0",
-        "given_cycle": "cycle", "given_MD": "driving moment {kind}",
-        "given_MC": "resistance moment {kind}", "found": "found from the cycle balance",
-        "given_delta": "asked coefficient of speed fluctuation",
-        "given_R": "mean radius of the rim", "given_k": "radius of gyration",
-        "steady_no": ("The motion is not steady: the work over the cycle is {work} J, ω after "
-                      "one cycle {omega_end} rad/s."),
-        "quantity": "quantity", "symbol": "symbol", "value": "value", "unit": "unit",
-    },
-    "ru": {
-        "title": "Установившееся движение при постоянном приведённом моменте инерции",
-        "source": "Источник",
-        "given": "1. Исходные данные", "given_caption": "Исходные данные",
-        "graphs_caption": "Графики моментов в точках излома (значения справа от угла)",
-        "areas_caption": "Работа моментов между точками пересечения (диаграмма площадей)",
-        "method": "2. Метод решения",
-        "method_note": ("Приведённый момент инерции J_пр постоянен, поэтому теорема об "
-                        "изменении кинетической энергии на угле φ сразу даёт скорость; экстремумы "
-                        "ω лежат там, где M_Д = M_С, а цикл установившийся, когда "
-                        "∮(M_Д − M_С)dφ = 0."),
-        "solution": "3. Решение",
-        "segments_caption": "Участки: работы и скорости в точках излома и пересечения",
-        "results_caption": "Результаты",
-        "motion": "4. Ускорение, фазы и время", "motion_caption": "Ускорение и время цикла",
-        "phases_caption": "Фазы между экстремумами ω",
-        "at_caption": "Движение в заданных положениях",
-        "figure": "Моменты M_Д, M_С, работа A, скорость ω(φ) и ускорение ε(φ)",
-        "figure_areas": "Энергия и скорость в точках пересечения",
-        "sources": "Источники", "case_source": "Исходные данные: {s}.",
-        "book": ("Артоболевский И. И. Теория механизмов и машин. — 4-е изд. — М.: Наука, 1988: "
-                 "гл. 16–17 (приведение, неравномерность хода, маховик)."),
-        "given_J": "приведённый момент инерции", "given_w0": "скорость при φ = 0",
-        "given_cycle": "цикл", "given_MD": "движущий момент {kind}",
-        "given_MC": "момент сопротивления {kind}", "found": "найден из условия цикла",
-        "given_delta": "заданный коэффициент неравномерности",
-        "given_R": "средний радиус обода", "given_k": "радиус инерции",
-        "steady_no": ("Движение не установившееся: работа за цикл {work} Дж, ω после цикла "
-                      "{omega_end} рад/с."),
-        "quantity": "величина", "symbol": "обозначение", "value": "значение", "unit": "ед.",
-    },
-}
+T = words("report_task2", {
+    "title": "Steady motion with constant reduced inertia", "source": "Source",
+    "given": "1. Given data", "given_caption": "Given data",
+    "graphs_caption": "Moment graphs at their breakpoints (values just after the angle)",
+    "areas_caption": "Work of the moments between the crossings (area diagram)",
+    "method": "2. Method",
+    "method_note": ("The reduced inertia J is constant, so the kinetic energy theorem over "
+                    "the angle φ gives the speed directly; the extremes of ω lie where "
+                    "M_D = M_C, and the cycle is steady when ∮(M_D − M_C)dφ = 0."),
+    "solution": "3. Solution", "segments_caption": "Segments: works and speeds at the breakpoints and crossings",
+    "results_caption": "Results",
+    "motion": "4. Acceleration, phases and time", "motion_caption": "Acceleration and cycle time",
+    "phases_caption": "Phases between the extremes of ω",
+    "at_caption": "The motion at the asked angles",
+    "figure": "Moments M_D, M_C, work A, speed ω(φ) and acceleration ε(φ)",
+    "figure_areas": "Energy and speed at the crossings",
+    "sources": "Sources", "case_source": "Input data: {s}.",
+    "book": ("Artobolevsky I. I. Teoriya mekhanizmov i mashin (Theory of Mechanisms and "
+             "Machines). 4th ed. Moscow: Nauka, 1988: ch. 16–17 (reduction, speed "
+             "fluctuation, the flywheel)."),
+    "given_J": "reduced moment of inertia", "given_w0": "speed at φ = 0",
+    "given_cycle": "cycle", "given_MD": "driving moment {kind}",
+    "given_MC": "resistance moment {kind}", "found": "found from the cycle balance",
+    "given_delta": "asked coefficient of speed fluctuation",
+    "given_R": "mean radius of the rim", "given_k": "radius of gyration",
+    "steady_no": ("The motion is not steady: the work over the cycle is {work} J, ω after "
+                  "one cycle {omega_end} rad/s."),
+    "quantity": "quantity", "symbol": "symbol", "value": "value", "unit": "unit",
+})
 
-KINDS = {"en": {"constant": "(constant)", "triangle": "(triangle, peak)",
-                "rectangle": "(rectangle)", "points": "(largest ordinate)", "series": "(a0)"},
-         "ru": {"constant": "(постоянный)", "triangle": "(треугольник, пик)",
-                "rectangle": "(прямоугольник)", "points": "(наибольшая ордината)",
-                "series": "(a0)"}}
+KINDS = words("report_task2_kinds", {"constant": "(constant)", "triangle": "(triangle, peak)",
+                                     "rectangle": "(rectangle)", "points": "(largest ordinate)",
+                                     "series": "(a0)"})
 
 
 def g(x, fmt: str = ".6g") -> str:

@@ -17,6 +17,7 @@ import tempfile
 from pathlib import Path
 
 from flywheel.render import nomenclature as nm
+from flywheel.render.catalogue import words
 from flywheel.render.document import Document, Figure, Heading, Paragraph, Table
 from flywheel.render.numbers import fmt as _number
 
@@ -35,24 +36,14 @@ _CSS = ("figure img { max-height: 52mm; width: auto; } "
 COMBINED = "sheets.pdf"
 FOLDER = "sheets"
 
-WORDS = {
-    "en": {"variant": "Variant {n}", "student": "Student ______________________________"
-           "        Group ____________", "given": "Given", "drawn": "Data of the variant",
-           "fixed": "Other data", "find": "Determine", "quantity": "Quantity",
-           "value": "Value", "unit": "Unit",
-           "item": "Determine {what}{sym}{unit}; accepted within ±{tol} %.",
-           "scheme": "Kinematic scheme of the mechanism at φ = {a:g}°",
-           "moments": "The given moment graphs {MD}(φ) and {MC}(φ)",
-           "unknown": "{M} = ? (from the cycle balance)"},
-    "ru": {"variant": "Вариант {n}", "student": "Студент ______________________________"
-           "        Группа ____________", "given": "Дано", "drawn": "Данные варианта",
-           "fixed": "Прочие данные", "find": "Определить", "quantity": "Величина",
-           "value": "Значение", "unit": "Ед. изм.",
-           "item": "Определить {what}{sym}{unit} (допуск ±{tol} %).",
-           "scheme": "Кинематическая схема механизма при φ = {a:g}°",
-           "moments": "Заданные графики моментов {MD}(φ) и {MC}(φ)",
-           "unknown": "{M} = ? (из условия установившегося движения)"},
-}
+WORDS = words("sheets", {"variant": "Variant {n}", "student": "Student ______________________________"
+                         "        Group ____________", "given": "Given", "drawn": "Data of the variant",
+                         "fixed": "Other data", "find": "Determine", "quantity": "Quantity",
+                         "value": "Value", "unit": "Unit",
+                         "item": "Determine {what}{sym}{unit}; accepted within ±{tol} %.",
+                         "scheme": "Kinematic scheme of the mechanism at φ = {a:g}°",
+                         "moments": "The given moment graphs {MD}(φ) and {MC}(φ)",
+                         "unknown": "{M} = ? (from the cycle balance)"})
 
 #: a subscript as marked in a sheet's text (private-use characters, which no number or word of
 #: ours contains), typeset by :func:`sheet_html` (<sub>) and :func:`sheet_typst` (#sub[])

@@ -2,47 +2,29 @@
 from __future__ import annotations
 
 from flywheel.render import nomenclature as nm
+from flywheel.render.catalogue import words
 from flywheel.render.forces import print_forces
 from flywheel.render.numbers import fmt as _number
 
 # Sentence templates and table words only: every quantity's name, symbol and unit comes from
 # the nomenclature (render/nomenclature.py), filled in where the templates say {…}.
-L10N = {
-    "en": {
-        "title_main": "Results", "title_at": "At φ = {phi}°: ω = {w} {uw}, ε = {e} {ue}",
-        "point": "point", "link": "link", "quantity": "quantity", "value": "value", "unit": "unit",
-        "warning": "warning", "at": "at",
-        "fw_shaft": "flywheel shaft: speed ratio {i}, {J}",
-        "td_verify": "time integration (solve_ivp, {n} cycles): repeats to {rep}, follows ω(φ) to "
-                     "{dev}, period {T} s",
-        "st_none": "start-up: not computed ({reason})",
-        "st_stall": "start-up: the motor stalls at φ = {a}°",
-        "st_ok": "start-up from rest: steady within δ/10 after {t} s ({n} cycles), mean speed "
-                 "{w} rad/s",
-        "st_no": "start-up from rest: steady state NOT reached within {n} cycles ({t} s); last "
-                 "cycle-mean speed {w} rad/s, the motor line predicts {wp} rad/s",
-        "rd": "run-down after the drive is cut: {t} s, {rev} revolutions",
-        "rd_not": " (not stopped)",
-        "rd_never": "run-down: none — {reason}",
-    },
-    "ru": {
-        "title_main": "Результаты", "title_at": "При φ = {phi}°: ω = {w} {uw}, ε = {e} {ue}",
-        "point": "точка", "link": "звено", "quantity": "величина", "value": "значение",
-        "unit": "ед.", "warning": "предупреждение", "at": "при",
-        "fw_shaft": "вал маховика: передаточное отношение {i}, {J}",
-        "td_verify": "интегрирование во времени (solve_ivp, циклов: {n}): движение повторяется с "
-                     "точностью {rep}, совпадает с ω(φ) до {dev}, период {T} с",
-        "st_none": "разгон: не рассчитан ({reason})",
-        "st_stall": "разгон: двигатель останавливается при φ = {a}°",
-        "st_ok": "разгон из состояния покоя: установившийся режим (в пределах δ/10) через {t} с "
-                 "(циклов: {n}), средняя скорость {w} рад/с",
-        "st_no": "разгон из состояния покоя: установившийся режим НЕ достигнут за {n} циклов ({t} с); "
-                 "средняя скорость последнего цикла {w} рад/с, по характеристике двигателя {wp} рад/с",
-        "rd": "выбег после отключения привода: {t} с, оборотов: {rev}",
-        "rd_not": " (не остановился)",
-        "rd_never": "выбега нет: {reason}",
-    },
-}
+L10N = words("summary", {
+    "title_main": "Results", "title_at": "At φ = {phi}°: ω = {w} {uw}, ε = {e} {ue}",
+    "point": "point", "link": "link", "quantity": "quantity", "value": "value", "unit": "unit",
+    "warning": "warning", "at": "at",
+    "fw_shaft": "flywheel shaft: speed ratio {i}, {J}",
+    "td_verify": "time integration (solve_ivp, {n} cycles): repeats to {rep}, follows ω(φ) to "
+                 "{dev}, period {T} s",
+    "st_none": "start-up: not computed ({reason})",
+    "st_stall": "start-up: the motor stalls at φ = {a}°",
+    "st_ok": "start-up from rest: steady within δ/10 after {t} s ({n} cycles), mean speed "
+             "{w} rad/s",
+    "st_no": "start-up from rest: steady state NOT reached within {n} cycles ({t} s); last "
+             "cycle-mean speed {w} rad/s, the motor line predicts {wp} rad/s",
+    "rd": "run-down after the drive is cut: {t} s, {rev} revolutions",
+    "rd_not": " (not stopped)",
+    "rd_never": "run-down: none — {reason}",
+})
 
 
 def _g(x: float, digits: int = 6) -> str:
