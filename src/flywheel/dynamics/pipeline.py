@@ -76,10 +76,10 @@ def force_motion(case, motion: str | None) -> str:
     case's force_analysis.motion; "true" or "steady" (InputError otherwise)."""
     motion = motion if motion is not None else case.force_analysis.motion
     if motion not in stages.MOTIONS:
-        raise InputError(Notice(f"--motion: {motion!r} is not a motion (allowed: "
-                                f"{', '.join(stages.MOTIONS)})", "option_choice",
-                                option="--motion", got=repr(motion),
-                                allowed=", ".join(stages.MOTIONS)))
+        raise InputError(Notice.of(
+            "option_choice", "{option}: {got} is not {what} (allowed: {allowed})",
+            option="--motion", got=repr(motion), what="a motion",
+            allowed=", ".join(stages.MOTIONS)))
     return motion
 
 
