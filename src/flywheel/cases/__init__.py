@@ -60,6 +60,7 @@ def wrong_kind(data, expected: str, source: str) -> str | None:
         return None
     from flywheel.errors import Notice
 
-    return Notice(f"{source}: this is {NAMES[kind]}, not {NAMES[expected]}: use "
-                  f"`{COMMANDS[kind].format(file=source)}`", "wrong_kind", source=source,
-                  kind=kind, expected=expected, command=COMMANDS[kind].format(file=source))
+    return Notice.of(
+        "wrong_kind", "{source}: this is {kind_name}, not {expected_name}: use `{command}`",
+        source=source, kind=kind, expected=expected, command=COMMANDS[kind].format(file=source),
+        kind_name=NAMES[kind], expected_name=NAMES[expected])

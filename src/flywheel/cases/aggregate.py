@@ -225,9 +225,9 @@ def _motor(m: Motor, M0: float, forcing_ratio: float, amplitude: float, chain_fo
     if m.characteristic == "linear":
         for k in ("speed_rpm",):
             if getattr(m, k) is not None:
-                raise FieldError(f"motor.{k}", Notice("only for characteristic = \"constant\" (a "
-                                                      "linear motor finds its own speed)",
-                                                      "ag_only_constant"))
+                raise FieldError(f"motor.{k}", Notice.of(
+                    "ag_only_constant", "only for characteristic = \"constant\" (a linear motor "
+                    "finds its own speed)"))
         if m.synchronous_rpm is None:
             raise FieldError("motor.synchronous_rpm", Notice.of(
                 "ag_omega_x_missing", "missing: the linear characteristic needs ω_x"))
@@ -253,11 +253,12 @@ def _motor(m: Motor, M0: float, forcing_ratio: float, amplitude: float, chain_fo
                      omega_x=m.synchronous_rpm * RAD_S_PER_RPM)
     for k in ("synchronous_rpm", "starting_torque", "rated_torque", "rated_slip"):
         if getattr(m, k) is not None:
-            raise FieldError(f"motor.{k}", Notice("only for characteristic = \"linear\"",
-                                                  "ag_only_linear"))
+            raise FieldError(f"motor.{k}", Notice.of(
+                "ag_only_linear", "only for characteristic = \"linear\""))
     if m.speed_rpm is None:
-        raise FieldError("motor.speed_rpm", Notice("missing: a constant-torque motor needs the "
-                                                   "steady speed of shaft I", "ag_speed_missing"))
+        raise FieldError("motor.speed_rpm", Notice.of(
+            "ag_speed_missing", "missing: a constant-torque motor needs the steady speed of shaft "
+            "I"))
     return Drive("constant", M0, amplitude, forcing_ratio, omega_nominal=m.speed_rpm * RAD_S_PER_RPM)
 
 
@@ -333,10 +334,9 @@ def build(case: AggregateCase):
             "two_rotors", "a chain needs at least two rotors (got {count})", count=len(case.rotors)
         ))
     if len(case.shafts) != len(case.rotors) - 1:
-        raise FieldError("shafts", Notice(f"{len(case.rotors)} rotors need "
-                                          f"{len(case.rotors) - 1} shafts between them (got "
-                                          f"{len(case.shafts)})", "shafts_count",
-                                          rotors=len(case.rotors), count=len(case.shafts)))
+        raise FieldError("shafts", Notice.of(
+            "shafts_count", "{rotors} rotors need {shafts} shafts between them (got {count})",
+            rotors=len(case.rotors), count=len(case.shafts), shafts=len(case.rotors) - 1))
     for k, r in enumerate(case.rotors):
         if r.fixed and r.J is not None:
             raise FieldError(f"rotors[{k}].J", Notice.of(
@@ -374,10 +374,10 @@ def build(case: AggregateCase):
     if not ch.is_line:
         what = ("a shaft fixed to the frame cannot turn continuously" if ch.fixed else
                 "the forced vibration and the start-up are computed for an unbranched chain")
-        raise FieldError("motor", Notice(f"{what}: a [motor] (and a [load]) need a free, "
-                                         "unbranched chain; this system gives its natural "
-                                         "frequencies and modes only", "ag_motor_needs_line",
-                                         fixed=ch.fixed))
+        raise FieldError("motor", Notice.of(
+            "ag_motor_needs_line", "{what}: a [motor] (and a [load]) need a free, unbranched "
+            "chain; this system gives its natural frequencies and modes only", fixed=ch.fixed,
+            what=what))
     u = float(ch.ratio[-1])
     ld = case.load or Load()
     drive = _motor(case.motor, ld.M0 * u, u * ld.order, ld.M_amplitude * u, True)

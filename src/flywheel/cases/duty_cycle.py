@@ -34,9 +34,10 @@ def _within(lo: float, hi: float, unit: str, lo_open: bool = False, hi_open: boo
             left = f"{lo:g} <" if lo_open else f"{lo:g} ≤"
             right = f"< {hi:g}" if hi_open else f"≤ {hi:g}"
             why = f": {above}" if above and v >= hi else ""
-            raise ValueError(Notice(f"{v:g}{u} is out of range{why} (allowed: {left} value "
-                                    f"{right}{u})", "duty_out_of_range", x=v, unit=unit,
-                                    left=left, right=right, below_zero=bool(why)))
+            raise ValueError(Notice.of(
+                "duty_out_of_range", "{x:g}{unit_shown} is out of range{why} (allowed: {left} "
+                "value {right}{unit_shown})", x=v, unit=unit, left=left, right=right,
+                below_zero=bool(why), unit_shown=u, why=why))
         return v
     return AfterValidator(check)
 
@@ -165,9 +166,9 @@ def _given(model, keys) -> list[str]:
 def _one_of(table: str, model, keys, required: bool = True) -> str | None:
     got = _given(model, keys)
     if len(got) > 1 or (required and not got):
-        raise FieldError(table, Notice(f"give exactly one of {', '.join(keys)}"
-                                       + (f" (got {', '.join(got)})" if got else ""),
-                                       "one_of_keys", keys=", ".join(keys), given=", ".join(got)))
+        raise FieldError(table, Notice.of(
+            "one_of_keys", "give exactly one of {keys}{got_note}", keys=", ".join(keys),
+            given=", ".join(got), got_note=f" (got {', '.join(got)})" if got else ''))
     return got[0] if got else None
 
 
@@ -269,10 +270,10 @@ def _check(c: DutyCase) -> None:
     if given:
         if len(speeds) != 1 or flucts:
             got = ", ".join(speeds + flucts)
-            raise FieldError("flywheel", Notice(
-                "with the flywheel given, give one speed (max, mean or min) and no "
-                "fluctuation: the program finds the others" + (f" (got {got})" if got else ""),
-                "dc_given_one_speed", given=got))
+            raise FieldError("flywheel", Notice.of(
+                "dc_given_one_speed", "with the flywheel given, give one speed (max, mean or min) "
+                "and no fluctuation: the program finds the others{got_note}", given=got,
+                got_note=f' (got {got})' if got else ''))
         if fw.mass is not None and radius is None and not linear:
             raise FieldError("flywheel.mass", Notice.of(
                 "dc_mass_radius", "needs the radius (radius_of_gyration, rim_radius or "
@@ -287,11 +288,11 @@ def _check(c: DutyCase) -> None:
                 given=", ".join(flucts)))
         if len(speeds) + len(flucts) != 2 or len(speeds) == 0:
             got = ", ".join(speeds + flucts)
-            raise FieldError("flywheel", Notice(
-                "give two speeds (two of max, min, mean) or one speed and the fluctuation "
-                "(percent, total_percent, delta, drop_percent), or give the flywheel (J or "
-                "mass) and one speed" + (f" (got {got})" if got else ""), "dc_two_speeds",
-                given=got))
+            raise FieldError("flywheel", Notice.of(
+                "dc_two_speeds", "give two speeds (two of max, min, mean) or one speed and the "
+                "fluctuation (percent, total_percent, delta, drop_percent), or give the flywheel "
+                "(J or mass) and one speed{got_note}", given=got,
+                got_note=f' (got {got})' if got else ''))
         _check_speed_pair(sp, speeds, flucts)
     if linear and radius is None:
         for loc, bad in (("operation.angle_deg", op.angle_deg),
@@ -309,10 +310,9 @@ def _check_speed_pair(sp: Flywheel, speeds: list[str], flucts: list[str]) -> Non
     if "max" in level and "min" in level:
         (kx, vx), (kn, vn) = level["max"], level["min"]
         if not vn < vx:
-            raise FieldError(f"flywheel.{kn}", Notice(f"{vn:g} is not below {kx} = {vx:g} "
-                                                      f"(allowed: 0 < {kn} < {kx})",
-                                                      "speed_not_below", v=vn, other=kx, vo=vx,
-                                                      allowed=f"0 < {kn} < {kx}"))
+            raise FieldError(f"flywheel.{kn}", Notice.of(
+                "speed_not_below", "{v:g} is not below {other} = {vo:g} (allowed: {allowed})", v=vn,
+                other=kx, vo=vx, allowed=f"0 < {kn} < {kx}"))
     if "mean" in level and "max" in level:
         (km, vm), (kx, vx) = level["mean"], level["max"]
         if not vm < vx < 2 * vm:
@@ -323,10 +323,9 @@ def _check_speed_pair(sp: Flywheel, speeds: list[str], flucts: list[str]) -> Non
     if "mean" in level and "min" in level:
         (km, vm), (kn, vn) = level["mean"], level["min"]
         if not vn < vm:
-            raise FieldError(f"flywheel.{kn}", Notice(f"{vn:g} is not below {km} = {vm:g} "
-                                                      f"(allowed: 0 < {kn} < {vm:g})",
-                                                      "speed_not_below", v=vn, other=km, vo=vm,
-                                                      allowed=f"0 < {kn} < {vm:g}"))
+            raise FieldError(f"flywheel.{kn}", Notice.of(
+                "speed_not_below", "{v:g} is not below {other} = {vo:g} (allowed: {allowed})", v=vn,
+                other=km, vo=vm, allowed=f"0 < {kn} < {vm:g}"))
     if flucts == ["drop_percent"] and "max" not in level:
         raise FieldError("flywheel.drop_percent", Notice.of(
             "dc_drop_needs_max", "is a drop from the top speed: give it with max_rpm, max_omega or "
@@ -434,9 +433,9 @@ def solve_case(c: DutyCase, source: str = "<case>") -> DutyCycleResult:
     except DutyCycleError as exc:
         raise CaseFileError(led(f"{source}: {exc.field}: ", said(exc))) from None
     except (ArithmeticError, ValueError) as exc:      # inputs near the limits of doubles
-        raise CaseFileError(led(f"{source}: ", Notice(
-            f"the values are too large or too small for double precision ({exc})",
-            "dc_double_precision", detail=str(exc)))) from None
+        raise CaseFileError(led(f"{source}: ", Notice.of(
+            "dc_double_precision", "the values are too large or too small for double precision "
+            "({detail})", detail=str(exc)))) from None
     bad = nonfinite(result)
     if bad is not None:
         raise CaseFileError(led(f"{source}: ", Notice.of(

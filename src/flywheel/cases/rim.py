@@ -53,15 +53,14 @@ class RimSpec(StrictModel):
         rim.speed saying the largest speed allowed (no diameter helps: σ depends on v alone)."""
         if density * self.speed ** 2 > allowable_stress * (1 + 1e-12):
             raise FieldError(("rim", "speed"),
-                             Notice(f"{self.speed:g} m/s gives the hoop stress ρ·v² = "
-                                    f"{density * self.speed ** 2 / PA_PER_MPA:.6g} MPa above the "
-                                    f"allowable {allowable_stress / PA_PER_MPA:.6g} MPa ({material}, "
-                                    f"ρ = {density:g} kg/m³), whatever the diameter (allowed: at "
-                                    f"most √(σ/ρ) = {(allowable_stress / density) ** 0.5:.6g} m/s)",
-                                    "rim_speed_stress", speed=self.speed,
-                                    stress=density * self.speed ** 2 / PA_PER_MPA,
-                                    allowable=allowable_stress / PA_PER_MPA, material=material,
-                                    density=density, top=(allowable_stress / density) ** 0.5))
+                             Notice.of(
+                                 "rim_speed_stress", "{speed:g} m/s gives the hoop stress ρ·v² = "
+                                 "{stress:.6g} MPa above the allowable {allowable:.6g} MPa "
+                                 "({material}, ρ = {density:g} kg/m³), whatever the diameter "
+                                 "(allowed: at most √(σ/ρ) = {top:.6g} m/s)", speed=self.speed,
+                                 stress=density * self.speed ** 2 / PA_PER_MPA,
+                                 allowable=allowable_stress / PA_PER_MPA, material=material,
+                                 density=density, top=(allowable_stress / density) ** 0.5))
 
     def design(self, J: float, omega: float, density: float, allowable_stress: float):
         """The rim (:class:`flywheel.dynamics.sizing.RimDesign`) for J [kg·m²] at ω [rad/s]."""

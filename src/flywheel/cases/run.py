@@ -65,15 +65,13 @@ class Machine(StrictModel):
                 "speed_rps_or_rpm", "give exactly one of speed_rps, speed_rpm"))
         revs = self.cycle_deg / 360.0
         if not 1 <= revs <= CYCLE_REVS_MAX:      # 3.6e9° is whole, but out of range
-            raise FieldError(("cycle_deg",), Notice(
-                f"{self.cycle_deg:g}° is out of range (allowed: 360, 720, 1080 … "
-                f"{360 * CYCLE_REVS_MAX}°)", "cycle_out_of_range", cycle=self.cycle_deg,
-                top=360 * CYCLE_REVS_MAX))
+            raise FieldError(("cycle_deg",), Notice.of(
+                "cycle_out_of_range", "{cycle:g}° is out of range (allowed: 360, 720, 1080 … "
+                "{top}°)", cycle=self.cycle_deg, top=360 * CYCLE_REVS_MAX))
         if revs != round(revs):
-            raise FieldError(("cycle_deg",), Notice(
-                f"{self.cycle_deg:g}° is not a whole number of revolutions (allowed: 360, 720, "
-                f"1080 … {360 * CYCLE_REVS_MAX}°)", "cycle_not_whole", cycle=self.cycle_deg,
-                top=360 * CYCLE_REVS_MAX))
+            raise FieldError(("cycle_deg",), Notice.of(
+                "cycle_not_whole", "{cycle:g}° is not a whole number of revolutions (allowed: "
+                "360, 720, 1080 … {top}°)", cycle=self.cycle_deg, top=360 * CYCLE_REVS_MAX))
         return self
 
     @property

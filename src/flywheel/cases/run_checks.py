@@ -12,55 +12,53 @@ from flywheel.units import PA_PER_MPA, RPM_PER_RAD_S, SECONDS_PER_MINUTE, TWO_PI
 def _check_references(case) -> None:
     """Names are unique and defined before use; lengths can be derived."""
     if (case.crank is None) == (case.tabulated is None):
-        raise FieldError((), Notice("give exactly one of [crank] (a linkage) and [tabulated] "
-                                    "(kinematics from a table)", "crank_or_tabulated"))
+        raise FieldError((), Notice.of(
+            "crank_or_tabulated", "give exactly one of [crank] (a linkage) and [tabulated] "
+            "(kinematics from a table)"))
     given = case.flywheel.given_J is not None
     if given and case.machine.delta is not None:
-        raise FieldError(("machine", "delta"), Notice(
-            "give exactly one of machine.delta (the flywheel is sized for it) and a given flywheel "
-            "(flywheel.J, mass with radius_of_gyration, given_disk or given_rim), not both",
-            "delta_and_given_flywheel"))
+        raise FieldError(("machine", "delta"), Notice.of(
+            "delta_and_given_flywheel", "give exactly one of machine.delta (the flywheel is sized "
+            "for it) and a given flywheel (flywheel.J, mass with radius_of_gyration, given_disk "
+            "or given_rim), not both"))
     if not given and case.machine.delta is None:
-        raise FieldError(("machine", "delta"), Notice(
-            "missing: give machine.delta (the flywheel is sized for it) or a given flywheel "
-            "(flywheel.J, mass with radius_of_gyration, given_disk or given_rim)",
-            "delta_missing"))
+        raise FieldError(("machine", "delta"), Notice.of(
+            "delta_missing", "missing: give machine.delta (the flywheel is sized for it) or a "
+            "given flywheel (flywheel.J, mass with radius_of_gyration, given_disk or given_rim)"))
     if case.motor is not None and case.motor.no_load_speed_rpm * TWO_PI / SECONDS_PER_MINUTE <= case.machine.omega_mean:
-        raise FieldError(("motor", "no_load_speed_rpm"), Notice(
-            f"{case.motor.no_load_speed_rpm:g} rpm is not above the mean speed "
-            f"{case.machine.omega_mean * RPM_PER_RAD_S:g} rpm", "motor_too_slow",
+        raise FieldError(("motor", "no_load_speed_rpm"), Notice.of(
+            "motor_too_slow", "{n0:g} rpm is not above the mean speed {n:g} rpm",
             n0=case.motor.no_load_speed_rpm, n=case.machine.omega_mean * RPM_PER_RAD_S))
     if case.tabulated is not None:   # no linkage: masses and loads live in [tabulated]
         for key in ("ground", "dyads", "points", "links", "cylinders", "forces", "couples"):
             if getattr(case, key):
-                raise FieldError((key,), Notice("not allowed with [tabulated]: give masses and "
-                                                "loads in [tabulated] (docs/tabulated.md)",
-                                                "run_not_with_tabulated"))
+                raise FieldError((key,), Notice.of(
+                    "run_not_with_tabulated", "not allowed with [tabulated]: give masses and "
+                    "loads in [tabulated] (docs/tabulated.md)"))
         return
     if case.crank.length is None and case.design.mean_piston_speed is None:
-        raise FieldError(("crank", "length"), Notice("missing: give crank.length or "
-                                                     "design.mean_piston_speed", "crank_length_missing"))
+        raise FieldError(("crank", "length"), Notice.of(
+            "crank_length_missing", "missing: give crank.length or design.mean_piston_speed"))
     points: set[str] = set()
     links: set[str] = set()
 
     def new_point(name: str, loc: tuple) -> None:
         if name in points:
-            raise FieldError(loc, Notice(f"point name {name!r} is already defined", "point_twice",
-                                         name=name))
+            raise FieldError(loc, Notice.of(
+                "point_twice", "point name {name!r} is already defined", name=name))
         points.add(name)
 
     def new_link(name: str, loc: tuple) -> None:
         if name in links:
-            raise FieldError(loc, Notice(f"link name {name!r} is already defined", "link_twice",
-                                         name=name))
+            raise FieldError(loc, Notice.of(
+                "link_twice", "link name {name!r} is already defined", name=name))
         links.add(name)
 
     def known(name: str, loc: tuple) -> None:
         if name not in points:
-            raise FieldError(loc, Notice(f"point {name!r} is used before it is defined "
-                                         f"(defined so far: {', '.join(sorted(points))})",
-                                         "point_used_before", name=name,
-                                         so_far=", ".join(sorted(points))))
+            raise FieldError(loc, Notice.of(
+                "point_used_before", "point {name!r} is used before it is defined (defined so "
+                "far: {so_far})", name=name, so_far=", ".join(sorted(points))))
 
     for name in case.ground:
         new_point(name, ("ground", name))
@@ -96,8 +94,8 @@ def _check_references(case) -> None:
         known(d.from_, ("dyads", i, "from"))
         if isinstance(d, RRPSpec):
             if d.rod_length is None and case.design.rod_to_crank is None:
-                raise FieldError(("dyads", i, "rod_length"), Notice(
-                    "missing: give rod_length or design.rod_to_crank", "run_rod_length_missing"))
+                raise FieldError(("dyads", i, "rod_length"), Notice.of(
+                    "run_rod_length_missing", "missing: give rod_length or design.rod_to_crank"))
             new_link(d.rod, ("dyads", i, "rod"))
             new_link(d.slider, ("dyads", i, "slider"))
             new_point(d.joint, ("dyads", i, "joint"))
@@ -117,75 +115,77 @@ def _check_references(case) -> None:
     place_points()
     for name, p in pending.items():
         if p.link not in links:
-            raise FieldError(("points", name, "link"), Notice(
-                f"link {p.link!r} is not defined (links: {', '.join(sorted(links))})",
-                "link_not_defined", name=p.link, links=", ".join(sorted(links))))
+            raise FieldError(("points", name, "link"), Notice.of(
+                "link_not_defined", "link {name!r} is not defined (links: {links})", name=p.link,
+                links=", ".join(sorted(links))))
         missing = p.from_ if p.from_ not in points else p.to
-        raise FieldError(("points", name), Notice(f"point {missing!r} is never defined",
-                                                  "point_never_defined", name=missing))
+        raise FieldError(("points", name), Notice.of(
+            "point_never_defined", "point {name!r} is never defined", name=missing))
     for name, link in case.links.items():
         if name not in links:
-            raise FieldError(("links", name), Notice(
-                f"no link named {name!r} (links: {', '.join(sorted(links))})", "no_link_named",
-                name=name, links=", ".join(sorted(links))))
+            raise FieldError(("links", name), Notice.of(
+                "no_link_named", "no link named {name!r} (links: {links})", name=name,
+                links=", ".join(sorted(links))))
         if link.centroid is not None and link.centroid not in points:
-            raise FieldError(("links", name, "centroid"), Notice(
-                f"point {link.centroid!r} is not defined", "point_not_defined", name=link.centroid))
+            raise FieldError(("links", name, "centroid"), Notice.of(
+                "point_not_defined", "point {name!r} is not defined", name=link.centroid))
         if link.centroid is not None and link.centroid not in on[name]:
             raise FieldError(("links", name, "centroid"),
                              _not_on_link(link.centroid, name, on[name]))
     for i, c in enumerate(case.cylinders):
         if c.piston not in sliders:
-            raise FieldError(("cylinders", i, "piston"), Notice(
-                f"{c.piston!r} is not the slider of an RRP dyad "
-                f"(sliders: {', '.join(sorted(sliders)) or 'none'})", "not_a_slider_of",
-                name=c.piston, sliders=", ".join(sorted(sliders))))
+            raise FieldError(("cylinders", i, "piston"), Notice.of(
+                "not_a_slider_of", "{name!r} is not the slider of an RRP dyad (sliders: "
+                "{sliders_or_none})", name=c.piston, sliders=", ".join(sorted(sliders)),
+                sliders_or_none=', '.join(sorted(sliders)) or 'none'))
     for i, c in enumerate(case.cylinders):
         for key, values in c.tables().items():
             low, high = min(values), max(values)
             if not high <= 1 + 1e-9:          # (mut) 1e300 here overflowed the energy silently
                 raise FieldError(("cylinders", i) + c.table_loc(key),
-                                 Notice(f"p/p_max = {high:g} is above 1: p_max = {c.p_max:g} Pa "
-                                        f"is the largest pressure of the diagram (allowed: "
-                                        f"−0.101325 MPa/p_max … 1; to go higher, raise p_max)",
-                                        "pressure_above_p_max", high=high, p_max=c.p_max))
+                                 Notice.of(
+                                     "pressure_above_p_max", "p/p_max = {high:g} is above 1: "
+                                     "p_max = {p_max:g} Pa is the largest pressure of the diagram "
+                                     "(allowed: −0.101325 MPa/p_max … 1; to go higher, raise "
+                                     "p_max)", high=high, p_max=c.p_max))
             if low * c.p_max < -ATM:
                 raise FieldError(("cylinders", i) + c.table_loc(key),
-                                 Notice(f"p/p_max = {low:g} gives "
-                                        f"{low * c.p_max / PA_PER_MPA:.4g} MPa gauge, below absolute "
-                                        f"vacuum (allowed: p ≥ −0.101325 MPa gauge)",
-                                        "pressure_below_vacuum", low=low,
-                                        mpa=low * c.p_max / PA_PER_MPA))
+                                 Notice.of(
+                                     "pressure_below_vacuum", "p/p_max = {low:g} gives {mpa:.4g} "
+                                     "MPa gauge, below absolute vacuum (allowed: p ≥ −0.101325 "
+                                     "MPa gauge)", low=low, mpa=low * c.p_max / PA_PER_MPA))
     _check_engine(case)
     for i, f in enumerate(case.forces):
         if f.slider not in sliders:
-            raise FieldError(("forces", i, "slider"), Notice(
-                f"{f.slider!r} is not the slider of an RRP dyad", "not_a_slider", name=f.slider))
+            raise FieldError(("forces", i, "slider"), Notice.of(
+                "not_a_slider", "{name!r} is not the slider of an RRP dyad", name=f.slider))
         lo, hi = f.s_range
         if not 0 <= lo < hi <= 1:
-            raise FieldError(("forces", i, "s_range"), Notice(
-                f"must satisfy 0 ≤ from < to ≤ 1 (got {lo}, {hi})", "s_range", lo=lo, hi=hi))
+            raise FieldError(("forces", i, "s_range"), Notice.of(
+                "s_range", "must satisfy 0 ≤ from < to ≤ 1 (got {lo}, {hi})", lo=lo, hi=hi))
     for i, c in enumerate(case.couples):
         if c.link not in links:
-            raise FieldError(("couples", i, "link"), Notice(f"no link named {c.link!r}",
-                                                             "no_link", name=c.link))
+            raise FieldError(("couples", i, "link"), Notice.of(
+                "no_link", "no link named {name!r}", name=c.link))
     names = ([(("cylinders", i, "name"), c.name) for i, c in enumerate(case.cylinders)]
              + [(("forces", i, "name"), f.name) for i, f in enumerate(case.forces)]
              + [(("couples", i, "name"), c.name) for i, c in enumerate(case.couples)])
     seen: set[str] = set()
     for loc, n in names:
         if n in seen:
-            raise FieldError(loc, Notice(f"load name {n!r} is used twice", "load_twice", name=n))
+            raise FieldError(loc, Notice.of(
+                "load_twice", "load name {name!r} is used twice", name=n))
         seen.add(n)
 
 
 def _not_on_link(point: str, link: str, its: set[str], placed: bool = False) -> Notice:
     """The error of a point named on a link that does not carry it; ``placed``: the point is
     one the case places on that link (``[points]``)."""
-    return Notice(f"point {point!r} is not on link {link} (its points: {', '.join(sorted(its))})"
-                  + (": a point fixed on a link is placed from that link's own points"
-                     if placed else ""), "run_point_not_on_link", point=point, link=link,
-                  points=", ".join(sorted(its)), placed=placed)
+    return Notice.of(
+        "run_point_not_on_link", "point {point!r} is not on link {link} (its points: "
+        "{points}){placed_note}", point=point, link=link, points=", ".join(sorted(its)),
+        placed=placed,
+        placed_note=": a point fixed on a link is placed from that link's own points" if placed else '')
 
 
 def _check_pins(case) -> None:
@@ -199,11 +199,12 @@ def _check_pins(case) -> None:
             gap = abs((where[0] - angle + 180.0) % 360.0 - 180.0)
             if gap < 1e-9 and abs(where[1] - length) <= 1e-12 * length:
                 raise FieldError(("crank", "pins", i, "angle_deg"),
-                                 Notice(f"{pin.angle_deg:g}° puts pin {pin.name!r} where {what} "
-                                        f"{name!r} is (same angle and throw): pins at the same "
-                                        f"angle are one pin with one name (allowed: attach the "
-                                        f"rods to {name!r}, or give another angle)", "pin_twice",
-                                        angle=pin.angle_deg, pin=pin.name, whom=what, name=name))
+                                 Notice.of(
+                                     "pin_twice", "{angle:g}° puts pin {pin!r} where {whom} "
+                                     "{name!r} is (same angle and throw): pins at the same angle "
+                                     "are one pin with one name (allowed: attach the rods to "
+                                     "{name!r}, or give another angle)", angle=pin.angle_deg,
+                                     pin=pin.name, whom=what, name=name))
         seen.append((where, pin.name, f"pin (crank.pins[{i}])"))
 
 
@@ -215,10 +216,10 @@ def _check_engine(case) -> None:
     for i, c in enumerate(case.cylinders):
         if c.four_stroke and round(cycle) % 720:
             raise FieldError(("cylinders", i, "diagram" if c.diagram is not None else "strokes"),
-                             Notice(f"a four-stroke diagram spans 720° of "
-                                    f"crank angle, the machine's cycle is {cycle:g}° (allowed: "
-                                    f"machine.cycle_deg = 720, or a multiple of 720)",
-                                    "four_stroke_cycle", cycle=cycle))
+                             Notice.of(
+                                 "four_stroke_cycle", "a four-stroke diagram spans 720° of crank "
+                                 "angle, the machine's cycle is {cycle:g}° (allowed: "
+                                 "machine.cycle_deg = 720, or a multiple of 720)", cycle=cycle))
     order = case.machine.firing_order
     if order is None:
         return
@@ -227,31 +228,32 @@ def _check_engine(case) -> None:
     for k, name in enumerate(order):
         loc = ("machine", "firing_order", k)
         if name not in names:
-            raise FieldError(loc, Notice(f"no cylinder named {name!r} (four-stroke cylinders: "
-                                         f"{', '.join(four) or 'none'})", "run_firing_no_cylinder",
-                                         name=name, four=", ".join(four)))
+            raise FieldError(loc, Notice.of(
+                "run_firing_no_cylinder", "no cylinder named {name!r} (four-stroke cylinders: "
+                "{four_or_none})", name=name, four=", ".join(four),
+                four_or_none=', '.join(four) or 'none'))
         if not names[name].four_stroke:
-            raise FieldError(loc, Notice(f"cylinder {name!r} has no four-stroke diagram (strokes): "
-                                         f"only four-stroke cylinders fire in an order (four-stroke "
-                                         f"cylinders: {', '.join(four) or 'none'})",
-                                         "run_firing_not_four_stroke", name=name,
-                                         four=", ".join(four)))
+            raise FieldError(loc, Notice.of(
+                "run_firing_not_four_stroke", "cylinder {name!r} has no four-stroke diagram "
+                "(strokes): only four-stroke cylinders fire in an order (four-stroke cylinders: "
+                "{four_or_none})", name=name, four=", ".join(four),
+                four_or_none=', '.join(four) or 'none'))
         if name in seen:
-            raise FieldError(loc, Notice(f"cylinder {name!r} is already in the order (each fires "
-                                         f"once per cycle)", "run_firing_twice", name=name))
+            raise FieldError(loc, Notice.of(
+                "run_firing_twice", "cylinder {name!r} is already in the order (each fires once "
+                "per cycle)", name=name))
         seen.add(name)
     missing = [n for n in four if n not in seen]
     if missing:
-        raise FieldError(("machine", "firing_order"), Notice(
-            f"cylinder {missing[0]!r} is missing (a firing order lists every four-stroke "
-            f"cylinder once: {', '.join(four)})", "firing_order_missing", name=missing[0],
-            four=", ".join(four)))
+        raise FieldError(("machine", "firing_order"), Notice.of(
+            "firing_order_missing", "cylinder {name!r} is missing (a firing order lists every "
+            "four-stroke cylinder once: {four})", name=missing[0], four=", ".join(four)))
     for i, c in enumerate(case.cylinders):
         if c.fires_at_deg is not None and c.name != order[0]:
-            raise FieldError(("cylinders", i, "fires_at_deg"), Notice(
-                f"machine.firing_order sets where cylinder {c.name!r} fires (allowed: "
-                f"fires_at_deg on the first cylinder of the order, {order[0]!r}, only)",
-                "run_fires_at_with_order", name=c.name, first=order[0]))
+            raise FieldError(("cylinders", i, "fires_at_deg"), Notice.of(
+                "run_fires_at_with_order", "machine.firing_order sets where cylinder {name!r} "
+                "fires (allowed: fires_at_deg on the first cylinder of the order, {first!r}, only)",
+                name=c.name, first=order[0]))
 
 
 # -- plausibility: allowed, but a careful engineer would look twice --------------------------------
@@ -270,29 +272,29 @@ def plausibility_warnings(case) -> list[str]:
     indicator table. Values that cannot be right are refused by the schema instead."""
     out = []
     if case.crank is not None and case.crank_length < 5e-3:
-        out.append(Notice(f"crank.length: {case.crank_length:g} m is unusually short (cranks: "
-                          "5 mm … 2 m); lengths are in metres", "crank_short",
-                          length=case.crank_length))
+        out.append(Notice.of(
+            "crank_short", "crank.length: {length:g} m is unusually short (cranks: 5 mm … 2 m); "
+            "lengths are in metres", length=case.crank_length))
     d = case.machine.delta
     if d is not None and not DELTA_USUAL[0] <= d <= DELTA_USUAL[1]:
-        out.append(Notice(f"machine.delta: δ = {d:g} is outside the usual 1/300 … 1/5 "
-                          f"({DELTA_USUAL[0]:.4f} … {DELTA_USUAL[1]:.1f}; Артоболевский's table: "
-                          "presses 1/5 … 1/20, engines 1/80 … 1/150, generators 1/200 … 1/300)",
-                          "delta_unusual", delta=d, lo=DELTA_USUAL[0], hi=DELTA_USUAL[1]))
+        out.append(Notice.of(
+            "delta_unusual", "machine.delta: δ = {delta:g} is outside the usual 1/300 … 1/5 "
+            "({lo:.4f} … {hi:.1f}; Артоболевский's table: presses 1/5 … 1/20, engines 1/80 … "
+            "1/150, generators 1/200 … 1/300)", delta=d, lo=DELTA_USUAL[0], hi=DELTA_USUAL[1]))
     rpm = case.machine.omega_mean * RPM_PER_RAD_S
     if not 1.0 <= rpm <= 20_000.0:
-        out.append(Notice(f"machine: the crank speed {rpm:.6g} rpm is outside the usual 1 … "
-                          "20 000 rpm", "rpm_unusual", rpm=rpm))
+        out.append(Notice.of(
+            "rpm_unusual", "machine: the crank speed {rpm:.6g} rpm is outside the usual 1 … 20 "
+            "000 rpm", rpm=rpm))
     for i, c in enumerate(case.cylinders):
         for key, values in c.tables().items():
             low = min(values)
             if low < 0 and key not in ("intake", "compression"):   # an engine draws its
                 # charge below atmospheric pressure, and compresses it from there
                 where = ".".join(c.table_loc(key))
-                out.append(Notice(f"cylinders[{i}].{where}: p/p_max down to {low:g} "
-                                  f"({low * c.p_max / PA_PER_MPA:.4g} MPa gauge, a vacuum): the tables "
-                                  "are gauge pressures relative to p_max; check the sign",
-                                  "cylinder_vacuum", where=f"cylinders[{i}].{where}", low=low,
-                                  p=low * c.p_max / PA_PER_MPA))
+                out.append(Notice.of(
+                    "cylinder_vacuum", "{where}: p/p_max down to {low:g} ({p:.4g} MPa gauge, a "
+                    "vacuum): the tables are gauge pressures relative to p_max; check the sign",
+                    where=f"cylinders[{i}].{where}", low=low, p=low * c.p_max / PA_PER_MPA))
     return out
 

@@ -37,7 +37,7 @@ STROKE_ORDER = ("expansion", "exhaust", "intake", "compression")   # from the fi
 
 def _values_per_s(n: int, count: int) -> Notice:
     """The error of a table whose length is not that of its s."""
-    return Notice(f"needs {n} values, one per s (got {count})", "values_per_s", n=n, count=count)
+    return Notice.of("values_per_s", "needs {n} values, one per s (got {count})", n=n, count=count)
 
 
 def _split_cycle(s: list[float], p: list[float], tol: float) -> dict[str, tuple[list, list]]:
@@ -51,25 +51,25 @@ def _split_cycle(s: list[float], p: list[float], tol: float) -> dict[str, tuple[
     if len(p) != n:
         raise FieldError(("diagram", "p"), _values_per_s(n, len(p)))
     if n < 5:
-        raise FieldError(("diagram", "s"), Notice("needs at least 5 values (0, 1, 0, 1, 0: four "
-                                                  "strokes)", "run_diagram_too_short"))
+        raise FieldError(("diagram", "s"), Notice.of(
+            "run_diagram_too_short", "needs at least 5 values (0, 1, 0, 1, 0: four strokes)"))
     for i, v in enumerate(s):
         if not 0.0 <= v <= 1.0:
-            raise FieldError(("diagram", "s", i), Notice(f"{v:g} is outside the stroke (allowed: "
-                                                         f"0 … 1)", "run_s_outside", v=v))
+            raise FieldError(("diagram", "s", i), Notice.of(
+                "run_s_outside", "{v:g} is outside the stroke (allowed: 0 … 1)", v=v))
     if s[0] != 0.0:
-        raise FieldError(("diagram", "s", 0), Notice(
-            f"{s[0]:g}: the diagram begins at the head dead centre where the cylinder fires "
-            f"(allowed: 0)", "run_diagram_start", s0=s[0]))
+        raise FieldError(("diagram", "s", 0), Notice.of(
+            "run_diagram_start", "{s0:g}: the diagram begins at the head dead centre where the "
+            "cylinder fires (allowed: 0)", s0=s[0]))
 
     def step(at: int, end: str, begin: str, p0: float, p1: float, closing: bool = False) -> None:
         if abs(p1 - p0) > tol:          # closing: the step from the end back to the start
-            raise FieldError(("diagram", "p", at), Notice(
-                f"steps from p/p_max = {p0:g} to {p1:g} at s = {s[at]:g}, where {end} ends and "
-                f"{begin} {'began' if closing else 'begins'}: the strokes do not meet (a jump of "
-                f"{abs(p1 - p0):.4g}; allowed: at most join_tolerance = {tol:g})",
-                "run_diagram_step", p0=p0, p1=p1, at=s[at], end=end, begin=begin,
-                closing=closing, jump=abs(p1 - p0), tol=tol))
+            raise FieldError(("diagram", "p", at), Notice.of(
+                "run_diagram_step", "steps from p/p_max = {p0:g} to {p1:g} at s = {at:g}, where "
+                "{end} ends and {begin} {begins}: the strokes do not meet (a jump of {jump:.4g}; "
+                "allowed: at most join_tolerance = {tol:g})", p0=p0, p1=p1, at=s[at], end=end,
+                begin=begin, closing=closing, jump=abs(p1 - p0), tol=tol,
+                begins='began' if closing else 'begins'))
 
     out: dict[str, tuple[list, list]] = {}
     i = 0
@@ -84,16 +84,15 @@ def _split_cycle(s: list[float], p: list[float], tol: float) -> dict[str, tuple[
         m = start
         while True:
             if m + 1 >= n:
-                raise FieldError(("diagram", "s"), Notice(
-                    f"ends inside the {name} stroke (allowed: s runs 0 → 1 → 0 → 1 → 0 over "
-                    f"expansion, exhaust, intake, compression)", "run_diagram_ends_inside",
-                    stroke=name))
+                raise FieldError(("diagram", "s"), Notice.of(
+                    "run_diagram_ends_inside", "ends inside the {stroke} stroke (allowed: s runs "
+                    "0 → 1 → 0 → 1 → 0 over expansion, exhaust, intake, compression)", stroke=name))
             a, b = s[m], s[m + 1]
             if (b <= a) if up else (b >= a):
-                raise FieldError(("diagram", "s", m + 1), Notice(
-                    f"{b:g} after {a:g}: on the {name} stroke s must "
-                    f"{'grow' if up else 'fall'} to {target:g}", "run_diagram_direction",
-                    b=b, a=a, stroke=name, up=up, target=target))
+                raise FieldError(("diagram", "s", m + 1), Notice.of(
+                    "run_diagram_direction", "{b:g} after {a:g}: on the {stroke} stroke s must "
+                    "{way} to {target:g}", b=b, a=a, stroke=name, up=up, target=target,
+                    way='grow' if up else 'fall'))
             m += 1
             if s[m] == target:
                 break
@@ -101,9 +100,9 @@ def _split_cycle(s: list[float], p: list[float], tol: float) -> dict[str, tuple[
         out[name] = (seg_s, seg_p) if up else (seg_s[::-1], seg_p[::-1])
         i = m
     if i != n - 1:
-        raise FieldError(("diagram", "s", i + 1), Notice(
-            "goes on after compression closed the cycle at s = 0 (allowed: four strokes)",
-            "run_diagram_goes_on"))
+        raise FieldError(("diagram", "s", i + 1), Notice.of(
+            "run_diagram_goes_on", "goes on after compression closed the cycle at s = 0 (allowed: "
+            "four strokes)"))
     step(n - 1, "compression", "expansion", p[0], p[-1], closing=True)
     return out
 
@@ -149,38 +148,39 @@ class CylinderSpec(StrictModel):
             given = [k for k in ("s", "towards_head", "away_from_head", "strokes")
                      if getattr(self, k) is not None]
             if given:
-                raise FieldError((given[0],), Notice("give either diagram (one table over the "
-                                                     "cycle) or s with its tables, not both",
-                                                     "run_diagram_or_tables"))
+                raise FieldError((given[0],), Notice.of(
+                    "run_diagram_or_tables", "give either diagram (one table over the cycle) or s "
+                    "with its tables, not both"))
             self._loop = _split_cycle(self.diagram.s, self.diagram.p, self.join_tolerance)
             return self
         s = self.s
         if s is None:
-            raise FieldError(("s",), Notice("missing required field (or give diagram: one table "
-                                            "over a four-stroke cycle)", "run_s_missing"))
+            raise FieldError(("s",), Notice.of(
+                "run_s_missing", "missing required field (or give diagram: one table over a "
+                "four-stroke cycle)"))
         if len(s) < 2:
-            raise FieldError(("s",), Notice("needs at least 2 values", "run_s_too_short"))
+            raise FieldError(("s",), Notice.of("run_s_too_short", "needs at least 2 values"))
         if any(b <= a for a, b in zip(s, s[1:])):
-            raise FieldError(("s",), Notice("must be strictly increasing", "strictly_increasing"))
+            raise FieldError(("s",), Notice.of(
+                "strictly_increasing", "must be strictly increasing"))
         if abs(s[0]) > 1e-12 or abs(s[-1] - 1) > 1e-12:
-            raise FieldError(("s",), Notice(f"must span [0, 1] (got {s[0]} … {s[-1]})",
-                                            "run_s_span", first=s[0], last=s[-1]))
+            raise FieldError(("s",), Notice.of(
+                "run_s_span", "must span [0, 1] (got {first} … {last})", first=s[0], last=s[-1]))
         two = [k for k in ("towards_head", "away_from_head") if getattr(self, k) is not None]
         if self.strokes is None:
             for key in ("towards_head", "away_from_head"):
                 if key not in two:
-                    raise FieldError((key,), Notice("missing: give towards_head and "
-                                                    "away_from_head, or strokes (a four-stroke "
-                                                    "diagram)", "run_two_tables_missing"))
+                    raise FieldError((key,), Notice.of(
+                        "run_two_tables_missing", "missing: give towards_head and away_from_head, "
+                        "or strokes (a four-stroke diagram)"))
             if self.fires_at_deg is not None:
-                raise FieldError(("fires_at_deg",), Notice(
-                    "goes with strokes (a four-stroke diagram); a two-table cylinder repeats "
-                    "every revolution", "run_fires_at_needs_strokes"))
+                raise FieldError(("fires_at_deg",), Notice.of(
+                    "run_fires_at_needs_strokes", "goes with strokes (a four-stroke diagram); a "
+                    "two-table cylinder repeats every revolution"))
         elif two:
-            raise FieldError((two[0],), Notice("give either towards_head and away_from_head (a "
-                                               "compressor, a two-stroke engine) or strokes (a "
-                                               "four-stroke engine), not both",
-                                               "run_two_tables_or_strokes"))
+            raise FieldError((two[0],), Notice.of(
+                "run_two_tables_or_strokes", "give either towards_head and away_from_head (a "
+                "compressor, a two-stroke engine) or strokes (a four-stroke engine), not both"))
         for key, values in self.tables().items():
             if len(values) != len(s):
                 loc = ("strokes", key) if self.strokes is not None else (key,)
@@ -193,13 +193,13 @@ class CylinderSpec(StrictModel):
                 if abs(p_begin - p_end) > self.join_tolerance:
                     raise FieldError(
                         ("strokes", begin),
-                        Notice(f"begins at p/p_max = {p_begin:g} at s = {at:g}, where {end} ends at "
-                               f"{p_end:g}: the strokes do not meet (a jump of "
-                               f"{abs(p_begin - p_end):.4g}; allowed: at most join_tolerance = "
-                               f"{self.join_tolerance:g}; a rise at firing belongs inside the "
-                               f"expansion table, just after s = 0)", "strokes_do_not_meet",
-                               p_begin=p_begin, at=at, end=end, p_end=p_end,
-                               jump=abs(p_begin - p_end), tol=self.join_tolerance))
+                        Notice.of(
+                            "strokes_do_not_meet", "begins at p/p_max = {p_begin:g} at s = "
+                            "{at:g}, where {end} ends at {p_end:g}: the strokes do not meet (a "
+                            "jump of {jump:.4g}; allowed: at most join_tolerance = {tol:g}; a "
+                            "rise at firing belongs inside the expansion table, just after s = 0)",
+                            p_begin=p_begin, at=at, end=end, p_end=p_end,
+                            jump=abs(p_begin - p_end), tol=self.join_tolerance))
         return self
 
     def tables(self) -> dict[str, list[float]]:

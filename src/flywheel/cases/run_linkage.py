@@ -106,14 +106,16 @@ class PointSpec(StrictModel):
     @model_validator(mode="after")
     def _one_way(self):
         if (self.to is None) == (self.distance is None):
-            raise ValueError(Notice("give either `to` (with fraction) or `distance` (with angle_deg)",
-                                    "point_to_or_distance"))
+            raise ValueError(Notice.of(
+                "point_to_or_distance", "give either `to` (with fraction) or `distance` (with "
+                "angle_deg)"))
         if self.distance is not None and (self.fraction or self.across):
-            raise ValueError(Notice("`fraction` and `across` go with `to`, not with `distance`",
-                                    "run_point_fraction_with_distance"))
+            raise ValueError(Notice.of(
+                "run_point_fraction_with_distance", "`fraction` and `across` go with `to`, not "
+                "with `distance`"))
         if self.to is not None and self.angle_deg:
-            raise ValueError(Notice("`angle_deg` goes with `distance`, not with `to`",
-                                    "run_point_angle_with_to"))
+            raise ValueError(Notice.of(
+                "run_point_angle_with_to", "`angle_deg` goes with `distance`, not with `to`"))
         return self
 
 
@@ -127,6 +129,6 @@ class LinkSpec(StrictModel):
     @model_validator(mode="after")
     def _centroid(self):
         if self.mass > 0 and self.centroid is None:
-            raise ValueError(Notice("a link with mass needs `centroid`", "link_mass_centroid"))
+            raise ValueError(Notice.of("link_mass_centroid", "a link with mass needs `centroid`"))
         return self
 

@@ -144,9 +144,10 @@ def _validate(t: TabulatedSpec, cycle: float = CYCLE_DEG) -> None:
             "{cycle:g})", min=MIN_POSITIONS, cycle=cycle))
     for i, a in enumerate(p):
         if not 0.0 <= a <= cycle:
-            raise TableError(("positions_deg", i), Notice(
-                f"{a:g}° is outside the cycle (allowed: 0 … {cycle:g}{_cycle_note(cycle)})",
-                "tab_outside_cycle", a=a, cycle=cycle, own_cycle=cycle != CYCLE_DEG))
+            raise TableError(("positions_deg", i), Notice.of(
+                "tab_outside_cycle", "{a:g}° is outside the cycle (allowed: 0 … "
+                "{cycle:g}{cycle_note})", a=a, cycle=cycle, own_cycle=cycle != CYCLE_DEG,
+                cycle_note=_cycle_note(cycle)))
     for i in range(1, n):
         if abs(p[i] - p[i - 1]) < _TOL:
             raise TableError(("positions_deg", i), Notice.of(
@@ -166,11 +167,12 @@ def _validate(t: TabulatedSpec, cycle: float = CYCLE_DEG) -> None:
     k = int(np.argmax(gaps))
     if gaps[k] > MAX_GAP_DEG + _TOL:
         end = nodes[(k + 1) % distinct]
-        raise TableError(("positions_deg",), Notice(
-            f"the positions do not cover the cycle: nothing between {nodes[k]:g}° and {end:g}° "
-            f"({gaps[k]:g}° gap; allowed: {MAX_GAP_DEG:g}° or less between neighbours, 0 … "
-            f"{cycle:g}{_cycle_note(cycle)})", "tab_gap", a=float(nodes[k]), b=float(end),
-            gap=float(gaps[k]), max_gap=MAX_GAP_DEG, cycle=cycle, own_cycle=cycle != CYCLE_DEG))
+        raise TableError(("positions_deg",), Notice.of(
+            "tab_gap", "the positions do not cover the cycle: nothing between {a:g}° and {b:g}° "
+            "({gap:g}° gap; allowed: {max_gap:g}° or less between neighbours, 0 … "
+            "{cycle:g}{cycle_note})", a=float(nodes[k]), b=float(end), gap=float(gaps[k]),
+            max_gap=MAX_GAP_DEG, cycle=cycle, own_cycle=cycle != CYCLE_DEG,
+            cycle_note=_cycle_note(cycle)))
 
     def row(values, loc: tuple, nonneg: bool = False) -> None:
         if len(values) != n:

@@ -43,8 +43,8 @@ def _amount(v):
     """A number, or the string "balance" (the unknown of the cycle balance) or "power" (the
     unknown of the mean power)."""
     if isinstance(v, str) and v not in (BALANCE, POWER):
-        raise ValueError(Notice(f'must be a number, "balance" or "power" (got {v!r})',
-                                "amount_word", value=repr(v)))
+        raise ValueError(Notice.of("amount_word", 'must be a number, "balance" or "power" '
+                                   "(got {value})", value=repr(v)))
     return v
 
 
@@ -274,9 +274,9 @@ def _describe(err: dict, data: dict) -> str:
         near = difflib.get_close_matches(str(tag), list(KINDS), n=1)
         hint = f"; did you mean {near[0]!r}?" if near and tag else ""
         what = f"unknown kind {tag!r}" if tag else "missing kind"
-        return led(f"{loc_str(clean_loc(loc))}.kind: ", Notice(
-            f"{what}{hint} (allowed: {', '.join(KINDS)})", "graph_kind", tag=str(tag),
-            near=near[0] if near and tag else "", allowed=", ".join(KINDS)))
+        return led(f"{loc_str(clean_loc(loc))}.kind: ", Notice.of(
+            "graph_kind", "{what}{hint} (allowed: {allowed})", tag=str(tag),
+            near=near[0] if near and tag else "", allowed=", ".join(KINDS), what=what, hint=hint))
 
     def allowed(parent: tuple) -> list[str]:
         model = _model_at(clean_loc(parent), data)
@@ -299,10 +299,10 @@ def _check(case: Task2Case) -> None:
         # library use only: no CLI input reaches this
         raise FieldError("cycle_deg", f"must be positive (got {case.cycle_deg:g}°)")
     if not (_whole(case.cycle_deg / 360.0) or _whole(360.0 / case.cycle_deg)):
-        raise FieldError("cycle_deg", Notice(
-            f"{case.cycle_deg:g}° is neither whole revolutions nor a whole part of one "
-            "(allowed: 360, 720, 1080 … 36000°, or 180, 120, 90 … a diagram that repeats within "
-            "a revolution)", "t2_cycle_not_whole", cycle=case.cycle_deg))
+        raise FieldError("cycle_deg", Notice.of(
+            "t2_cycle_not_whole", "{cycle:g}° is neither whole revolutions nor a whole part of "
+            "one (allowed: 360, 720, 1080 … 36000°, or 180, 120, 90 … a diagram that repeats "
+            "within a revolution)", cycle=case.cycle_deg))
     s = case.speed
     given = [k for k in ("omega0", "omega0_rpm", "mean", "mean_rpm", "max", "min", "max_rpm",
                          "min_rpm") if getattr(s, k) is not None]
@@ -314,10 +314,10 @@ def _check(case: Task2Case) -> None:
             raise FieldError(f"speed.{other}", Notice.of(
                 "t2_limits_pair", "missing: speed limits come in pairs ({first} with {other})",
                 first=given[0], other=other))
-        raise FieldError("speed", Notice("give exactly one of omega0, omega0_rpm, mean, mean_rpm, "
-                                         "or the limits max and min (or max_rpm and min_rpm)"
-                                         + (f" (got {', '.join(given)})" if given else ""),
-                                         "task2_speed_one_of", given=", ".join(given)))
+        raise FieldError("speed", Notice.of(
+            "task2_speed_one_of", "give exactly one of omega0, omega0_rpm, mean, mean_rpm, or the "
+            "limits max and min (or max_rpm and min_rpm){got_note}", given=", ".join(given),
+            got_note=f" (got {', '.join(given)})" if given else ''))
     for k in given:
         _pos(f"speed.{k}", getattr(s, k), "rad/s" if "rpm" not in k else "rpm")
     if len(given) == 2 and not getattr(s, given[1]) < getattr(s, given[0]):
@@ -388,9 +388,9 @@ def _check(case: Task2Case) -> None:
                 "t2_work_needs_mean", "the work per cycle P·Φ/ω_ср needs the mean speed: give "
                 "speed.mean, mean_rpm or the limits max/min"))
         if case.power is not None and not uses_power:
-            raise FieldError("power", Notice(
-                'is used by a graph value "power" or by [diagram] energy_fluctuation_coefficient '
-                "without work_per_cycle; nothing here uses it", "t2_power_unused_diagram"))
+            raise FieldError("power", Notice.of(
+                "t2_power_unused_diagram", "is used by a graph value \"power\" or by [diagram] "
+                "energy_fluctuation_coefficient without work_per_cycle; nothing here uses it"))
         return
     for name in ("driving", "resistance"):
         if getattr(case, name) is None:
@@ -401,28 +401,27 @@ def _check(case: Task2Case) -> None:
                                                     ("resistance", case.resistance))
                 if g.unknown_field()]
     if len(unknowns) > 1:
-        raise FieldError(f"{unknowns[1][0]}.{unknowns[1][1]}", Notice(
-            '"balance" may stand for one value only (the other is '
-            f"{unknowns[0][0]}.{unknowns[0][1]})", "balance_once",
+        raise FieldError(f"{unknowns[1][0]}.{unknowns[1][1]}", Notice.of(
+            "balance_once", '"balance" may stand for one value only (the other is {other})',
             other=f"{unknowns[0][0]}.{unknowns[0][1]}"))
     powered = [(n, g.power_field()) for n, g in (("driving", case.driving),
                                                  ("resistance", case.resistance))
                if g.power_field()]
     if len(powered) > 1:
-        raise FieldError(f"{powered[1][0]}.{powered[1][1]}", Notice(
-            '"power" may stand for one value only (the other is '
-            f"{powered[0][0]}.{powered[0][1]})", "t2_power_once",
+        raise FieldError(f"{powered[1][0]}.{powered[1][1]}", Notice.of(
+            "t2_power_once", '"power" may stand for one value only (the other is {other})',
             other=f"{powered[0][0]}.{powered[0][1]}"))
     if powered and case.power is None:
-        raise FieldError(f"{powered[0][0]}.{powered[0][1]}", Notice(
-            '"power" needs the mean power: give the top-level power [W]', "t2_power_needs_P"))
+        raise FieldError(f"{powered[0][0]}.{powered[0][1]}", Notice.of(
+            "t2_power_needs_P", "\"power\" needs the mean power: give the top-level power [W]"))
     if powered and not mean_known:
-        raise FieldError(f"{powered[0][0]}.{powered[0][1]}", Notice(
-            '"power" (T_mean = P/ω_ср) needs the mean speed: give speed.mean, mean_rpm or the '
-            "limits max/min", "t2_power_needs_mean"))
+        raise FieldError(f"{powered[0][0]}.{powered[0][1]}", Notice.of(
+            "t2_power_needs_mean", "\"power\" (T_mean = P/ω_ср) needs the mean speed: give "
+            "speed.mean, mean_rpm or the limits max/min"))
     if case.power is not None and not powered:
-        raise FieldError("power", Notice('is used by a graph value "power" (T_mean = P/ω_ср); '
-                                         'no graph value is "power"', "t2_power_unused"))
+        raise FieldError("power", Notice.of(
+            "t2_power_unused", "is used by a graph value \"power\" (T_mean = P/ω_ср); no graph "
+            "value is \"power\""))
     for name in ("driving", "resistance"):
         _check_graph(name, getattr(case, name), case.cycle_deg)
     _check_work(case.driving, case.resistance)
@@ -445,10 +444,10 @@ def _check_work(driving, resistance) -> None:
     (pd, td), (pc, tc) = _pieces_and_terms(driving), _pieces_and_terms(resistance)
     work = (pd + pc) * (1 + td + tc)
     if work > MAX_WORK:
-        raise FieldError("resistance", Notice(
-            f"with the driving graph: {pd + pc} pieces × {td + tc} harmonic terms is too much "
-            f"work (allowed: pieces × (1 + terms) ≤ {MAX_WORK:g}; give fewer points or fewer "
-            "terms)", "t2_graphs_too_big", pieces=pd + pc, terms=td + tc, most=MAX_WORK))
+        raise FieldError("resistance", Notice.of(
+            "t2_graphs_too_big", "with the driving graph: {pieces} pieces × {terms} harmonic "
+            "terms is too much work (allowed: pieces × (1 + terms) ≤ {most:g}; give fewer points "
+            "or fewer terms)", pieces=pd + pc, terms=td + tc, most=MAX_WORK))
 
 
 def _check_graph(name: str, g, cycle: float) -> None:
@@ -499,9 +498,9 @@ def _check_graph(name: str, g, cycle: float) -> None:
             if not _whole(k * revs):
                 where = f"{name}.orders[{i}]" if g.orders is not None else f"{name}.orders"
                 step = 1.0 / revs
-                raise FieldError(where, Notice(
-                    f"order {k:g} does not repeat over the cycle of {cycle:g}° (allowed: whole "
-                    f"multiples of 360/cycle_deg = {step:g})", "t2_order_not_periodic", k=k,
+                raise FieldError(where, Notice.of(
+                    "t2_order_not_periodic", "order {k:g} does not repeat over the cycle of "
+                    "{cycle:g}° (allowed: whole multiples of 360/cycle_deg = {step:g})", k=k,
                     cycle=cycle, step=step))
 
 
@@ -514,10 +513,10 @@ def _check_diagram(d: Diagram, cycle: float) -> None:
     forms = [k for k in ("areas", "energies", "delta_E", "energy_fluctuation_coefficient")
              if getattr(d, k) is not None]
     if len(forms) != 1:
-        raise FieldError("diagram", Notice(
-            "give one of areas (with moment_scale and angle_scale_deg), energies, delta_E, or "
-            "energy_fluctuation_coefficient" + (f" (got {', '.join(forms)})" if forms else ""),
-            "t2_diagram_form", given=", ".join(forms)))
+        raise FieldError("diagram", Notice.of(
+            "t2_diagram_form", "give one of areas (with moment_scale and angle_scale_deg), "
+            "energies, delta_E, or energy_fluctuation_coefficient{got_note}",
+            given=", ".join(forms), got_note=f" (got {', '.join(forms)})" if forms else ''))
     if d.work_per_cycle is not None and forms[0] != "energy_fluctuation_coefficient":
         raise FieldError("diagram.work_per_cycle", Notice.of(
             "t2_work_only_efc", "only with energy_fluctuation_coefficient"))

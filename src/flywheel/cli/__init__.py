@@ -77,8 +77,8 @@ def _stop_line(signum: int) -> None:
     from flywheel.cli.guard import say_error
     from flywheel.errors import Notice
 
-    say_error(Notice("interrupted (Ctrl-C)", "stopped_interrupted") if signum == signal.SIGINT
-              else Notice("terminated (SIGTERM)", "stopped_terminated"))
+    say_error(Notice.of("stopped_interrupted", "interrupted (Ctrl-C)") if signum == signal.SIGINT
+              else Notice.of("stopped_terminated", "terminated (SIGTERM)"))
 
 
 def _stopped(exc: Stopped) -> None:

@@ -57,8 +57,8 @@ def choice(option: str, got, what: str, allowed: str):
     CSV dialect (allowed: plain, excel-ru)", an errors.Notice (said in Russian too)."""
     from flywheel.errors import Notice
 
-    return Notice(f"{option}: {got!r} is not {what} (allowed: {allowed})", "option_choice",
-                  option=option, got=repr(got), allowed=allowed)
+    return Notice.of("option_choice", "{option}: {got} is not {what} (allowed: {allowed})",
+                     option=option, got=repr(got), allowed=allowed, what=what)
 
 
 def check_lang(lang: str) -> None:
@@ -73,9 +73,10 @@ def plot_failed(plot: Path, exc: Exception):
     know), an errors.Notice."""
     from flywheel.errors import Notice
 
-    return Notice(f"--plot {plot}: cannot write the image ({exc})", "plot_cannot_write",
-                  plot=str(plot), reason=str(exc), errno=getattr(exc, "errno", None),
-                  strerror=getattr(exc, "strerror", None))
+    return Notice.of(
+        "plot_cannot_write", "--plot {plot}: cannot write the image ({reason})", plot=str(plot),
+        reason=str(exc), errno=getattr(exc, "errno", None),
+        strerror=getattr(exc, "strerror", None))
 
 
 def needs_out():
@@ -159,9 +160,10 @@ def not_finite(quantity: str, detail: str, who: str = "") -> NoReturn:
     ``who`` names the inputs to blame (the case file and its fields, or the options given)."""
     from flywheel.errors import Notice
 
-    fail(Notice(f"{who + ': ' if who else ''}{quantity} is not finite ({detail}): the values "
-                "overflow double precision (the numbers are too large or too small)",
-                "not_finite", who=who, quantity=quantity, detail=detail))
+    fail(Notice.of(
+        "not_finite", "{who_lead}{quantity} is not finite ({detail}): the values overflow double "
+        "precision (the numbers are too large or too small)", who=who, quantity=quantity,
+        detail=detail, who_lead=who + ': ' if who else ''))
 
 
 def refuse_nonfinite(document, who: str = "") -> None:

@@ -85,8 +85,9 @@ def run_command(
     if figure_format not in FIGURE_FORMATS:
         fail(choice("--figure-format", figure_format, "a figure format", ", ".join(FIGURE_FORMATS)))
     if not DPI_RANGE[0] <= dpi <= DPI_RANGE[1]:
-        fail(Notice(f"--dpi: {dpi} is out of range (allowed: {DPI_RANGE[0]} to {DPI_RANGE[1]})",
-                    "option_range", option="--dpi", got=dpi, lo=DPI_RANGE[0], hi=DPI_RANGE[1]))
+        fail(Notice.of(
+            "option_range", "--dpi: {got} is out of range (allowed: {lo} to {hi})", option="--dpi",
+            got=dpi, lo=DPI_RANGE[0], hi=DPI_RANGE[1]))
     _check_at(at)
     formats = report or ["md", "html"]
     for f in formats:
@@ -100,9 +101,10 @@ def run_command(
 
     c = _guard(load_case, case)
     if animate and c.tabulated is not None:
-        fail(Notice(f"--animate: {case} gives its kinematics as a table ([tabulated]): there is "
-                    "no mechanism to animate (allowed: a case with [crank] and [[dyads]])",
-                    "animate_tabulated", case=str(case)))
+        fail(Notice.of(
+            "animate_tabulated", "--animate: {case} gives its kinematics as a table "
+            "([tabulated]): there is no mechanism to animate (allowed: a case with [crank] and "
+            "[[dyads]])", case=str(case)))
     from flywheel.cli.progress import stage_bar
 
     def analyze_with_bar():             # a bar on a terminal only (the transients take seconds),
@@ -173,10 +175,11 @@ def _check_at(at: list[float] | None) -> None:
     if not at:
         return
     if len(at) > AT_MOST:
-        fail(Notice(f"--at: {len(at)} angles given (allowed: at most {AT_MOST})",
-                    "at_too_many", count=len(at), most=AT_MOST))
+        fail(Notice.of(
+            "at_too_many", "--at: {count} angles given (allowed: at most {most})", count=len(at),
+            most=AT_MOST))
     for a in at:
         if math.isfinite(a) and not -AT_LIMIT_DEG <= a <= AT_LIMIT_DEG:   # NaN: grid_options
-            fail(Notice(f"--at: {a:g}° is out of range (allowed: {-AT_LIMIT_DEG:g} … "
-                        f"{AT_LIMIT_DEG:g}°, taken modulo the cycle)", "at_out_of_range",
-                        a=a, lo=-AT_LIMIT_DEG, hi=AT_LIMIT_DEG))
+            fail(Notice.of(
+                "at_out_of_range", "--at: {a:g}° is out of range (allowed: {lo:g} … {hi:g}°, "
+                "taken modulo the cycle)", a=a, lo=-AT_LIMIT_DEG, hi=AT_LIMIT_DEG))

@@ -79,8 +79,9 @@ def task2_command(
     with guarded():
         check_lang(lang)
         if plot is not None and plot.is_dir():
-            raise InputError(Notice(f"--plot {plot}: is a folder, expected an image file",
-                                    "plot_is_a_folder", plot=str(plot)))
+            raise InputError(Notice.of(
+                "plot_is_a_folder", "--plot {plot}: is a folder, expected an image file",
+                plot=str(plot)))
         from flywheel.render.report_folder import check_formats
 
         formats = check_formats(report)
@@ -143,15 +144,15 @@ def _from_case(case: Path, at, profile, given) -> _Job:
 
     used = (["--profile"] if profile is not None else []) + [n for n, _ in given]
     if used:
-        raise InputError(Notice(f"--case takes its data from the file; drop "
-                                f"{', '.join(used)}", "case_drops_options",
-                                used=", ".join(used)))
+        raise InputError(Notice.of(
+            "case_drops_options", "--case takes its data from the file; drop {used}",
+            used=", ".join(used)))
     c = load_task2_case(case)
     _check_at(at, c.cycle_deg)
     if at and c.diagram is not None:
-        raise InputError(Notice(f"--at: {case} gives a diagram by areas, which has no "
-                                "moments between its crossings: ε, ω and t at an angle "
-                                "need graphs", "t2_at_diagram", case=str(case)))
+        raise InputError(Notice.of(
+            "t2_at_diagram", "--at: {case} gives a diagram by areas, which has no moments between "
+            "its crossings: ε, ω and t at an angle need graphs", case=str(case)))
     return _Job(lambda: solve_case(c, str(case), at_deg=at or ()), case_numbers(c.model_dump()),
                 case, c.title, c.source, c.title, c.source)
 
@@ -167,8 +168,9 @@ def _from_options(profile, given, v: dict, at, lang: str) -> _Job:
 
     profile = "triangle" if profile is None else profile
     if profile not in PROFILES:
-        raise InputError(Notice(f"--profile must be triangle or rectangle (got {profile!r})",
-                                "profile_choice", value=repr(profile)))
+        raise InputError(Notice.of(
+            "profile_choice", "--profile must be triangle or rectangle (got {value})",
+            value=repr(profile)))
     for name, x in given:
         if not math.isfinite(x):
             raise InputError(Notice.of("option_not_finite", "{option} must be a finite number "
@@ -176,15 +178,17 @@ def _from_options(profile, given, v: dict, at, lang: str) -> _Job:
     for name, x, unit in (("--md", v["md"], "N·m"), ("--j", v["j"], "kg·m²"),
                           ("--omega0", v["omega0"], "rad/s"), ("--mc", v["mc"], "N·m")):
         if x is not None and x <= 0:
-            raise InputError(Notice(f"{name} must be positive (got {x:g} {unit})",
-                                    "option_not_positive", option=name, v=x, unit=unit))
+            raise InputError(Notice.of(
+                "option_not_positive", "{option} must be positive (got {v:g} {unit})", option=name,
+                v=x, unit=unit))
     delta, start, end = v["delta"], v["start"], v["end"]
     if delta is not None and not 0 < delta < 2:
-        raise InputError(Notice(f"--delta must lie between 0 and 2 (got {delta:g})",
-                                "option_delta", delta=delta))
+        raise InputError(Notice.of(
+            "option_delta", "--delta must lie between 0 and 2 (got {delta:g})", delta=delta))
     if start is not None and end is not None and start >= end:
-        raise InputError(Notice(f"--from ({start:g}°) must be less than --to ({end:g}°)",
-                                "option_from_to", start=start, end=end))
+        raise InputError(Notice.of(
+            "option_from_to", "--from ({start:g}°) must be less than --to ({end:g}°)", start=start,
+            end=end))
     _check_at(at, 360.0)
 
     def run():

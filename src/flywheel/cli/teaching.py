@@ -53,9 +53,10 @@ def variants_command(
             "points_too_few", "--points: {n} is too few (allowed: 36 or more)", n=points))
     check_lang(lang)
     if sheets_format is not None and not sheets:
-        fail(Notice(f"--sheets-format {sheets_format}: given without --sheets (it says the "
-                    "format of the task sheets; allowed: --sheets --sheets-format FORMAT, or "
-                    "neither)", "sheets_format_without_sheets", got=sheets_format))
+        fail(Notice.of(
+            "sheets_format_without_sheets", "--sheets-format {got}: given without --sheets (it "
+            "says the format of the task sheets; allowed: --sheets --sheets-format FORMAT, or "
+            "neither)", got=sheets_format))
     if sheets_format is None:
         sheets_format = "both"
     if sheets_format not in ("both", "html", "pdf"):
@@ -147,9 +148,10 @@ def grade_command(
 
     for option, path in (("--out", out), ("--gradebook", gradebook)):
         if path is not None and not is_dir(path) and not is_dir(path.parent):
-            fail(Notice(f"{option} {path}: the folder {path.parent} does not exist (allowed: a "
-                        "CSV file name in an existing folder)", "csv_folder_missing",
-                        option=option, path=str(path), parent=str(path.parent)))
+            fail(Notice.of(
+                "csv_folder_missing", "{option} {path}: the folder {parent} does not exist "
+                "(allowed: a CSV file name in an existing folder)", option=option, path=str(path),
+                parent=str(path.parent)))
     _guard(check_outputs, key, answers, [("--out", out), ("--gradebook", gradebook)])
     k = _guard(load_key, key)
     from rich.console import Console

@@ -45,37 +45,43 @@ def usage_notice(exc: BaseException) -> str:
     kind = type(exc).__name__
     if kind == "NoSuchOption":
         possible = ", ".join(sorted(exc.possibilities or ()))
-        return Notice(text, "usage_no_such_option", option=exc.option_name, possible=possible)
+        return Notice.of("usage_no_such_option", "{message}", message=text,
+                         option=exc.option_name, possible=possible)
     if kind == "BadOptionUsage":
         m = re.fullmatch(r"Option '(.+)' requires (an argument|(\d+) arguments)\.", text)
         if m:
-            return Notice(text, "usage_needs_value", option=m.group(1),
-                          count=int(m.group(3) or 1))
+            return Notice.of("usage_needs_value", "Option '{option}' requires {needs}.",
+                             option=m.group(1), needs=m.group(2), count=int(m.group(3) or 1))
         m = re.fullmatch(r"Option '(.+)' does not take a value\.", text)
         if m:
-            return Notice(text, "usage_takes_no_value", option=m.group(1))
+            return Notice.of("usage_takes_no_value", "Option '{option}' does not take a value.",
+                             option=m.group(1))
         return text
     if kind == "MissingParameter":
         m = re.fullmatch(r"Missing (argument|option) (\S+)\.", text)
         if m:
-            return Notice(text, "usage_missing", kind=m.group(1), name=m.group(2))
+            return Notice.of("usage_missing", "Missing {kind} {name}.", kind=m.group(1),
+                             name=m.group(2))
         return text
     if kind == "BadParameter":
         m = re.fullmatch(r"Invalid value for (.+?): (.*)", text)
         value_kind = _value_kind(exc)
         if m and value_kind:
             given = _given(exc)
-            return Notice(text, "usage_bad_value", hint=m.group(1).strip("'"),
-                          value_kind=value_kind, got=repr(given) if given else "")
+            return Notice.of("usage_bad_value", "Invalid value for {field}: {detail}",
+                             field=m.group(1), detail=m.group(2), hint=m.group(1).strip("'"),
+                             value_kind=value_kind, got=repr(given) if given else "")
         return text
     m = re.fullmatch(r"No such command '(.+)'\.", text)
     if m:
-        return Notice(text, "usage_no_such_command", command=m.group(1))
-    m = re.fullmatch(r"Got unexpected extra argument(?:\(s\)|s)? \((.*)\)", text)
+        return Notice.of("usage_no_such_command", "No such command '{command}'.",
+                         command=m.group(1))
+    m = re.fullmatch(r"Got unexpected extra (argument(?:\(s\)|s)?) \((.*)\)", text)
     if m:
-        return Notice(text, "usage_extra_arguments", args=m.group(1))
+        return Notice.of("usage_extra_arguments", "Got unexpected extra {noun} ({args})",
+                         noun=m.group(1), args=m.group(2))
     if text == "Missing command.":
-        return Notice(text, "usage_missing_command")
+        return Notice.of("usage_missing_command", "Missing command.")
     return text
 
 

@@ -53,7 +53,7 @@ class NotFiniteError(OverflowError):
 def python_detail(text: str) -> Notice:
     """What Python's arithmetic said ("-inf + inf in fsum"), the detail of a NotFiniteError: a
     Notice, so that render/messages.py can say the known ones in Russian."""
-    return Notice(text, "t2_python_error", words=text)
+    return Notice.of("t2_python_error", "{words}", words=text)
 
 
 def _cycle_work(m: Moment, quantity: str) -> float:
@@ -505,9 +505,9 @@ def power_value(make: Callable[[float], Moment], power: float, omega_mean: float
     x = float(round(x, 12)) if abs(x - round(x, 12)) < 1e-12 * max(1.0, abs(x)) else x
     x += 0.0
     if not math.isfinite(x):
-        raise NotFiniteError(quantity, Notice(f"the mean power gives a {which} moment of "
-                                              f"{x!r} N·m", "nf_power_moment", which=which,
-                                              x=repr(x)))
+        raise NotFiniteError(quantity, Notice.of(
+            "nf_power_moment", "the mean power gives a {which} moment of {x} N·m", which=which,
+            x=repr(x)))
     if x < 0.0:
         raise InputError(Notice.of(
             "t2_power_negative", "the mean power {power:.6g} W needs a negative {which} moment "
@@ -555,15 +555,17 @@ def balance(make_D: Callable[[float], Moment], make_C: Callable[[float], Moment]
     x += 0.0    # no −0.0
     if not math.isfinite(x):
         raise NotFiniteError("M_C" if unknown == "resistance" else "M_D",
-                             Notice(f"the cycle balance gives a {unknown} moment of {x!r} N·m",
-                                    "nf_balance_moment", which=unknown, x=repr(x)))
+                             Notice.of(
+                                 "nf_balance_moment", "the cycle balance gives a {which} moment "
+                                 "of {x} N·m", which=unknown, x=repr(x)))
     if x < 0.0:
-        raise InputError(Notice(
-            f"the cycle balance needs a negative {unknown} moment ({x:.6g} N·m): "
-            f"the {'resistance' if unknown == 'driving' else 'driving'} graph does "
-            f"{'more' if unknown == 'resistance' else 'less'} work than the "
-            f"{unknown} graph can {'absorb' if unknown == 'resistance' else 'supply'}",
-            "t2_balance_negative", which=unknown, x=x))
+        raise InputError(Notice.of(
+            "t2_balance_negative", "the cycle balance needs a negative {which} moment ({x:.6g} "
+            "N·m): the {other_graph} graph does {more_or_less} work than the {which} graph can "
+            "{absorb_or_supply}", which=unknown, x=x,
+            other_graph='resistance' if unknown == 'driving' else 'driving',
+            more_or_less='more' if unknown == 'resistance' else 'less',
+            absorb_or_supply='absorb' if unknown == 'resistance' else 'supply'))
     return x
 
 
@@ -620,8 +622,8 @@ def _motion(bounds: list[float], kinds: list[str], A: list[float], J: float | No
     """
     bad = next((i for i, a in enumerate(A) if not math.isfinite(a)), None)
     if bad is not None:
-        raise NotFiniteError(f"segments[{bad}].A", Notice(f"the work A(φ) = {A[bad]!r} J",
-                                                           "nf_work", x=repr(A[bad])))
+        raise NotFiniteError(f"segments[{bad}].A", Notice.of(
+            "nf_work", "the work A(φ) = {x} J", x=repr(A[bad])))
     # the first of equal extremes (equal to 1e-12 of the swing: round-off must not choose)
     A_max, A_min = max(A), min(A)
     tol = 1e-12 * (A_max - A_min)
@@ -655,12 +657,11 @@ def _motion(bounds: list[float], kinds: list[str], A: list[float], J: float | No
             where = f"at φ = {phi_stop:.6g}°"
         else:
             where = f"before row {i}"
-        raise InputError(Notice(f"the machine stops {where}: the kinetic energy "
-                                f"½·J·ω0² = {0.5 * J * w0sq:.6g} J cannot cover the deficit "
-                                f"{-min(A):.6g} J", "machine_stops",
-                                where_ru=(f"при φ = {phi_stop:.6g}°" if stop is not None
-                                          else f"до строки {i}"),
-                                T0=0.5 * J * w0sq, deficit=-min(A)))
+        raise InputError(Notice.of(
+            "machine_stops", "the machine stops {where}: the kinetic energy ½·J·ω0² = {T0:.6g} J "
+            "cannot cover the deficit {deficit:.6g} J",
+            where_ru=(f"при φ = {phi_stop:.6g}°" if stop is not None else f"до строки {i}"),
+            T0=0.5 * J * w0sq, deficit=-min(A), where=where))
     omega = [math.sqrt(w) for w in wsq]
     w_max, w_min = omega[i_max], omega[i_min]
     if omega_mean is not None:       # exact, free of round-off in the square roots
@@ -775,7 +776,7 @@ def solve(M_D: Moment, M_C: Moment, J: float | None = None, *, omega0: float | N
         # 1e308·sin 2φ: no crossing can be certified and A stays 0, so "the energy does not
         # fluctuate" would be said (issue 23); linear pieces overflow A itself (_motion)
         raise NotFiniteError("work_driving" if not math.isfinite(size_D) else "work_resistance",
-                             Notice("the moment's size ∮|M| dφ overflows", "nf_moment_size"))
+                             Notice.of("nf_moment_size", "the moment's size ∮|M| dφ overflows"))
     scale = max(abs(W_D), abs(W_C), size_D + size_C, 1e-300)
     steady = abs(acc) <= BALANCE_RTOL * scale
     if steady:

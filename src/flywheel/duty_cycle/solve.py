@@ -387,11 +387,10 @@ def _check_timeline(d: DutyCycle, tl: _Timeline) -> None:
         what = "power" if d.motor_torque is None else "torque"
         have = (f"{tl.P:.6g} W" if what == "power"
                 else f"{tl.T:.6g} N·m (P = M_Д·ω_ср = {tl.P:.6g} W)")
-        raise DutyCycleError(d.field("motor", f"motor.{what}"), Notice(
-            f"the motor's {have} is less than the mean power of the operations E/T_c = "
-            f"{E / d.period:.6g} W: the flywheel would never recover (allowed: at least "
-            f"{E / d.period:.6g} W)", "dc_motor_weak", by=what, P=tl.P, T=tl.T,
-            need=E / d.period))
+        raise DutyCycleError(d.field("motor", f"motor.{what}"), Notice.of(
+            "dc_motor_weak", "the motor's {have} is less than the mean power of the operations "
+            "E/T_c = {need:.6g} W: the flywheel would never recover (allowed: at least {need:.6g} "
+            "W)", by=what, P=tl.P, T=tl.T, need=E / d.period, have=have))
     if d.revolutions is not None and tl.T < E / (TWO_PI * d.revolutions) * (1 - _TOL):
         need = E / (TWO_PI * d.revolutions)
         raise DutyCycleError(d.field("motor", "motor.torque"), Notice.of(

@@ -78,15 +78,15 @@ def firing_angles(case, mech, dcs: dict) -> dict[str, float]:
         at = prev + step
         if at >= first + _TWO_REV - _SAME:
             listing = ", ".join(f"{n} at {_deg(heads[n])}/{_deg(heads[n] + 2 * np.pi)}" for n in order)
-            raise InputError(Notice(
-                f"machine.firing_order: {'-'.join(order)} does not fit in one 720° cycle: "
-                f"cylinder {name} (position {k + 1}) would fire at {_deg(at)}, not before cylinder "
-                f"{order[0]} fires again at {_deg(first + _TWO_REV)} (allowed: an order in which "
-                f"each cylinder reaches its head dead centre after the one before, all within "
-                f"720°; the head dead centres: {listing})", "firing_order_fit",
-                order="-".join(order), name=name, position=k + 1, at=_deg(at), first=order[0],
-                again=_deg(first + _TWO_REV),
-                heads=[(n, _deg(heads[n]), _deg(heads[n] + 2 * np.pi)) for n in order]))
+            raise InputError(Notice.of(
+                "firing_order_fit", "machine.firing_order: {order} does not fit in one 720° "
+                "cycle: cylinder {name} (position {position}) would fire at {at}, not before "
+                "cylinder {first} fires again at {again} (allowed: an order in which each "
+                "cylinder reaches its head dead centre after the one before, all within 720°; the "
+                "head dead centres: {listing})", order="-".join(order), name=name, position=k + 1,
+                at=_deg(at), first=order[0], again=_deg(first + _TWO_REV),
+                heads=[(n, _deg(heads[n]), _deg(heads[n] + 2 * np.pi)) for n in order],
+                listing=listing))
         out[name] = at
         prev = at
     return {n: a % _TWO_REV for n, a in out.items()}

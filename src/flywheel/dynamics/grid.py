@@ -49,8 +49,8 @@ def grid_options(case, n_points: int, at_deg: list[float] | None) -> list[float]
     at_deg = list(case.output.at_deg if at_deg is None else at_deg)
     for a in at_deg:
         if not math.isfinite(a):
-            raise InputError(Notice(f"--at: {a} is not a finite angle in degrees", "at_not_finite",
-                                    a=str(a)))
+            raise InputError(Notice.of(
+                "at_not_finite", "--at: {a} is not a finite angle in degrees", a=str(a)))
     return at_deg
 
 

@@ -76,10 +76,10 @@ def force_motion(case, motion: str | None) -> str:
     case's force_analysis.motion; "true" or "steady" (InputError otherwise)."""
     motion = motion if motion is not None else case.force_analysis.motion
     if motion not in stages.MOTIONS:
-        raise InputError(Notice(f"--motion: {motion!r} is not a motion (allowed: "
-                                f"{', '.join(stages.MOTIONS)})", "option_choice",
-                                option="--motion", got=repr(motion),
-                                allowed=", ".join(stages.MOTIONS)))
+        raise InputError(Notice.of(
+            "option_choice", "{option}: {got} is not {what} (allowed: {allowed})",
+            option="--motion", got=repr(motion), what="a motion",
+            allowed=", ".join(stages.MOTIONS)))
     return motion
 
 
@@ -133,11 +133,11 @@ def linkage_loads(case, mech, dcs: dict, kin) -> LoadsResult:
         if np.min(p) < 0:
             i = int(np.argmin(p))
             p_mpa, at = float(p[i]) / PA_PER_MPA, math.degrees(phi[i])
-            warnings.append(Notice(f"cylinder {cy.name}: the {cy.interpolation} interpolation of its "
-                                   f"indicator table gives negative pressure, down to {p_mpa:.4g} "
-                                   f"MPa at φ = {at:.1f}° (use 'pchip' to avoid overshoot)",
-                                   "cylinder_negative_p", cylinder=cy.name,
-                                   kind=cy.interpolation, p=p_mpa, phi_deg=at))
+            warnings.append(Notice.of(
+                "cylinder_negative_p", "cylinder {cylinder}: the {kind} interpolation of its "
+                "indicator table gives negative pressure, down to {p:.4g} MPa at φ = "
+                "{phi_deg:.1f}° (use 'pchip' to avoid overshoot)", cylinder=cy.name,
+                kind=cy.interpolation, p=p_mpa, phi_deg=at))
         M_parts[f"gas {cy.name}"] = M
         towards = x_dot * (head.x - far.x) > 0
         cylinders.append(CylinderResult(cy.name, cy.piston, s, towards, p, F, M, s_tab, up, down,

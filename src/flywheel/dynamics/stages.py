@@ -67,16 +67,16 @@ def work_and_energy(phi: np.ndarray, loads: LoadsResult, red: ReductionResult,
             "no_net_work", "the loads do no net work over a cycle: the balancing moment is 0 (the "
             "flywheel only smooths the loads' periodic part)"))
     elif machine.balance == "driving" and not M_const > 0:
-        raise InputError(Notice(
-            f"the loads do {work_known:+.6g} J of work over a cycle: a constant driving moment "
-            f"would have to be {M_const:.6g} N·m ≤ 0 (allowed: resistance must absorb work; "
-            f"for an engine set machine.balance = \"resistance\")", "balance_driving",
-            work=work_known, M=M_const))
+        raise InputError(Notice.of(
+            "balance_driving", "the loads do {work:+.6g} J of work over a cycle: a constant "
+            "driving moment would have to be {M:.6g} N·m ≤ 0 (allowed: resistance must absorb "
+            "work; for an engine set machine.balance = \"resistance\")", work=work_known,
+            M=M_const))
     elif machine.balance == "resistance" and not M_const < 0:
-        raise InputError(Notice(
-            f"the loads do {work_known:+.6g} J of work over a cycle: a constant resistance moment "
-            f"would have to be {-M_const:.6g} N·m ≤ 0 (allowed: driving forces must supply work; "
-            f"for a compressor or press set machine.balance = \"driving\")", "balance_resistance",
+        raise InputError(Notice.of(
+            "balance_resistance", "the loads do {work:+.6g} J of work over a cycle: a constant "
+            "resistance moment would have to be {M:.6g} N·m ≤ 0 (allowed: driving forces must "
+            "supply work; for a compressor or press set machine.balance = \"driving\")",
             work=work_known, M=-M_const))
     A_const = M_const * phi
     A = A_known + A_const
@@ -96,14 +96,13 @@ def work_and_energy(phi: np.ndarray, loads: LoadsResult, red: ReductionResult,
         power_from_loads = mean_moment * omega_m
         if abs(power_from_loads - power) > POWER_RTOL * power:
             which = "driving" if machine.balance == "driving" else "resistance"
-            warnings.append(Notice(
-                f"machine.power: P = {power:.6g} W at ω_m = {omega_m:.6g} rad/s means a mean "
-                f"{which} moment P/ω_m = {power_moment:.6g} N·m, but the case's loads balance "
-                f"with {mean_moment:.6g} N·m ({power_from_loads:.6g} W, "
-                f"{(power_from_loads / power - 1) * 100:+.3g} %): check the loads or the power",
-                "power_mismatch", power=power, omega=omega_m, driving=which == "driving",
+            warnings.append(Notice.of(
+                "power_mismatch", "machine.power: P = {power:.6g} W at ω_m = {omega:.6g} rad/s "
+                "means a mean {which} moment P/ω_m = {M_power:.6g} N·m, but the case's loads "
+                "balance with {M_loads:.6g} N·m ({P_loads:.6g} W, {pct:+.3g} %): check the loads "
+                "or the power", power=power, omega=omega_m, driving=which == "driving",
                 M_power=power_moment, M_loads=mean_moment, P_loads=power_from_loads,
-                pct=(power_from_loads / power - 1) * 100))
+                pct=(power_from_loads / power - 1) * 100, which=which))
     T_II, dT_I = energy.first_group_energy_change(A, red.J_II, omega_m)
     phi_max, dT_max = energy.extreme(dT_I, phi, "max")
     phi_min, dT_min = energy.extreme(dT_I, phi, "min")
@@ -157,8 +156,9 @@ def size_flywheel(phi: np.ndarray, en: EnergyResult, red: ReductionResult, machi
         try:
             designed = rim_spec.design(J_shaft, omega_m * fw.speed_ratio, fw.rho, fw.sigma)
         except InputError as exc:
-            raise InputError(Notice(f"{exc} (the flywheel's J = {J_shaft:.6g} kg·m² on its shaft)",
-                                    "with_flywheel_J", detail=said(exc), J=J_shaft)) from None
+            raise InputError(Notice.of(
+                "with_flywheel_J", "{detail} (the flywheel's J = {J:.6g} kg·m² on its shaft)",
+                detail=said(exc), J=J_shaft)) from None
     return SizingResult(
         omega_mean=float(omega_m), delta=float(delta), J_required=float(J_req),
         J_first_group=J_first, J_flywheel=float(J_fly), J_required_exact=float(J_exact),
@@ -226,12 +226,11 @@ def with_rim_speeds(sz: SizingResult, mo: MotionResult, fw) -> SizingResult:
         if v > sz.rim_speed_limit:
             material = fw.material if fw.density is None and fw.allowable_stress is None \
                 else "the given material"
-            warnings.append(Notice(
-                f"flywheel as a {shape}: rim speed {v:.1f} m/s exceeds "
-                f"the safe {sz.rim_speed_limit:.1f} m/s = √(σ/ρ) of a thin rotating ring (hoop "
-                f"stress σ = ρ·v², Timoshenko, Strength of Materials, part II) for "
-                f"{material}: σ = {fw.sigma / PA_PER_MPA:g} MPa, ρ = {fw.rho:g} kg/m³ (set "
-                f"flywheel.allowable_stress, or a wider flywheel: width_ratio)", "rim_speed",
+            warnings.append(Notice.of(
+                "rim_speed", "flywheel as a {shape}: rim speed {v:.1f} m/s exceeds the safe "
+                "{limit:.1f} m/s = √(σ/ρ) of a thin rotating ring (hoop stress σ = ρ·v², "
+                "Timoshenko, Strength of Materials, part II) for {material}: σ = {sigma:g} MPa, ρ "
+                "= {rho:g} kg/m³ (set flywheel.allowable_stress, or a wider flywheel: width_ratio)",
                 shape=shape, v=v, limit=sz.rim_speed_limit, material=material,
                 sigma=fw.sigma / PA_PER_MPA, rho=fw.rho))
     designed = sz.rim_design
@@ -241,17 +240,16 @@ def with_rim_speeds(sz: SizingResult, mo: MotionResult, fw) -> SizingResult:
         ratio = designed.thickness / designed.D_mean
         if ratio < sizing.THIN_RIM:
             v_aim = sizing.rim_speed_for_thickness(designed)
-            warnings.append(Notice(
-                f"flywheel.rim: the designed rim is {designed.thickness * 1e3:.3g} mm thick on a "
-                f"mean diameter of {designed.D_mean:.4g} m (t/D = {ratio:.2g}, below "
-                f"{sizing.THIN_RIM:g}): a hoop, not a flywheel rim; its rim speed "
-                f"{designed.rim_speed:.4g} m/s ("
-                f"{'given' if designed.speed_from == 'given' else 'the largest the allowable stress allows'}"
-                f") is too high for a shaft this slow: give flywheel.rim.speed (about "
-                f"{v_aim:.3g} m/s gives "
-                f"t/D = {sizing.THIN_RIM_AIM:g})", "rim_thin", t_mm=designed.thickness * 1e3,
-                D=designed.D_mean, ratio=ratio, least=sizing.THIN_RIM, v=designed.rim_speed,
-                given=designed.speed_from == "given", v_aim=v_aim, aim=sizing.THIN_RIM_AIM))
+            warnings.append(Notice.of(
+                "rim_thin", "flywheel.rim: the designed rim is {t_mm:.3g} mm thick on a mean "
+                "diameter of {D:.4g} m (t/D = {ratio:.2g}, below {least:g}): a hoop, not a "
+                "flywheel rim; its rim speed {v:.4g} m/s ({speed_source}) is too high for a shaft "
+                "this slow: give flywheel.rim.speed (about {v_aim:.3g} m/s gives t/D = {aim:g})",
+                t_mm=designed.thickness * 1e3, D=designed.D_mean, ratio=ratio,
+                least=sizing.THIN_RIM, v=designed.rim_speed, given=designed.speed_from == "given",
+                v_aim=v_aim, aim=sizing.THIN_RIM_AIM,
+                speed_source=("given" if designed.speed_from == "given"
+                              else "the largest the allowable stress allows")))
     return replace(sz, disk=shapes["disk"], rim=shapes["rim"], rim_design=designed,
                    warnings=tuple(warnings))
 
@@ -477,9 +475,9 @@ def time_domain(case, phi: np.ndarray, red: ReductionResult, en: EnergyResult,
             means = timedomain.history_cycle_means(st["t"], st["omega"], float(phi[-1] - phi[0]))
     else:
         startup = StartupNotComputed(
-            reason=Notice("no [motor] in the case: under a constant driving moment the work over "
-                          "a cycle is zero at any speed, so there is no start-up to a steady state",
-                          "startup_no_motor"))
+            reason=Notice.of(
+                "startup_no_motor", "no [motor] in the case: under a constant driving moment the "
+                "work over a cycle is zero at any speed, so there is no start-up to a steady state"))
     rd = timedomain.rundown(phi, J, dJ, en.M_known, float(mo.omega[0]),
                             progress=stage("run-down"))
     histories["rundown"] = (rd["t"], rd["omega"])

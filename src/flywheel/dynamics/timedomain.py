@@ -284,9 +284,9 @@ def startup(phi_grid: np.ndarray, J: np.ndarray, dJ: np.ndarray, M_loads: np.nda
             return {"stalled": True, "converged": False,
                     "stall_angle_deg": float(np.degrees(phi[-1])), "time": float(t0 + t[-1]),
                     "omega_final_predicted": w_pred, "time_constant": tau,
-                    "warning": Notice(f"start-up: the motor cannot start the machine, it stops "
-                                      f"at φ = {np.degrees(phi[-1]):.1f}°", "startup_stall",
-                                      phi_deg=float(np.degrees(phi[-1])))}
+                    "warning": Notice.of(
+                        "startup_stall", "start-up: the motor cannot start the machine, it stops "
+                        "at φ = {phi_deg:.1f}°", phi_deg=float(np.degrees(phi[-1])))}
         dt = float(t[-1])
         means.append(float(sol.y[2][-1]) / period)
         mids.append(t0 + dt / 2)
@@ -308,12 +308,12 @@ def startup(phi_grid: np.ndarray, J: np.ndarray, dJ: np.ndarray, M_loads: np.nda
         target = (f"{w_pred:.5g} rad/s" if w_pred is not None
                   else "none: the motor line cannot carry the mean load")
         out.update(time_to_steady=None, cycles_to_steady=None, omega_mean_steady=None,
-                   warning=Notice(f"start-up: no steady state after {len(means)} cycles ({t0:.4g} "
-                                  f"s); the last cycle-mean speed is {out['omega_mean_last']:.5g} "
-                                  f"rad/s, the steady speed predicted by the motor line {target}",
-                                  "startup_not_steady", cycles=len(means), t=float(t0),
-                                  omega=float(out["omega_mean_last"]),
-                                  omega_pred=None if w_pred is None else float(w_pred)))
+                   warning=Notice.of(
+                       "startup_not_steady", "start-up: no steady state after {cycles} cycles "
+                       "({t:.4g} s); the last cycle-mean speed is {omega:.5g} rad/s, the steady "
+                       "speed predicted by the motor line {prediction}", cycles=len(means),
+                       t=float(t0), omega=float(out["omega_mean_last"]),
+                       omega_pred=None if w_pred is None else float(w_pred), prediction=target))
         return out
     lo, hi = w_pred * (1 - band), w_pred * (1 + band)
     i = len(means)

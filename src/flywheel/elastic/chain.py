@@ -218,11 +218,12 @@ class Chain:
                 if not math.isfinite(v):
                     where = f"rotor {self.names[k]}" if rotor else f"connection {k + 1}"
                     why = ": it overflows double precision" if math.isinf(v) else ""
-                    raise InputError(Notice(f"{where}: the {what} reduced to shaft I is not finite "
-                                            f"(got {v:g}{unit}){why}", "ag_reduced_not_finite",
-                                            rotor=self.names[k] if rotor else None,
-                                            connection=k + 1, quantity=what, v=v,
-                                            unit=unit.strip(), overflow=math.isinf(v)))
+                    raise InputError(Notice.of(
+                        "ag_reduced_not_finite", "{where}: the {quantity} reduced to shaft I is "
+                        "not finite (got {v:g}{unit_shown}){why}",
+                        rotor=self.names[k] if rotor else None, connection=k + 1, quantity=what,
+                        v=v, unit=unit.strip(), overflow=math.isinf(v), where=where,
+                        unit_shown=unit, why=why))
         # a reduced J or c of 0: the product J·u² or c·u² underflows (gear ratios ≪ 1)
         for k, v in enumerate(self.J):
             if not v > 0:

@@ -129,16 +129,16 @@ def _reversal_message(ch, drive, modes, w, omega_s, X, k) -> Notice:
     if rigid >= 0.5 * amp and len(modes.elastic) and w < modes.elastic[0]:
         held = ("which a constant-torque motor does not hold" if drive.slope == 0
                 else "which the motor characteristic hardly holds")
-        return Notice(f"the forcing frequency {w:.6g} rad/s is far below the lowest natural "
-                      f"frequency {float(modes.elastic[0]):.6g} rad/s, so the load swings the "
-                      f"whole machine as a rigid body (the ω = 0 mode, {held}): the speed would "
-                      f"vary by ±{amp:.6g} rad/s about the mean {omega_s:.6g} rad/s, " + tail,
-                      "ag_reversal_rigid", w=w, wn=float(modes.elastic[0]),
-                      constant=drive.slope == 0, amp=amp, mean=omega_s)
-    return Notice(f"the speed of rotor {ch.names[k]} would vary by ±{amp:.6g} rad/s about the "
-                  f"mean {omega_s:.6g} rad/s (δ = {2 * amp / omega_s:.4g}), " + tail,
-                  "ag_reversal_rotor", name=ch.names[k], amp=amp, mean=omega_s,
-                  delta=2 * amp / omega_s)
+        return Notice.of(
+            "ag_reversal_rigid", "the forcing frequency {w:.6g} rad/s is far below the lowest "
+            "natural frequency {wn:.6g} rad/s, so the load swings the whole machine as a rigid "
+            "body (the ω = 0 mode, {held}): the speed would vary by ±{amp:.6g} rad/s about the "
+            "mean {mean:.6g} rad/s, {tail}", w=w, wn=float(modes.elastic[0]),
+            constant=drive.slope == 0, amp=amp, mean=omega_s, held=held, tail=tail)
+    return Notice.of(
+        "ag_reversal_rotor", "the speed of rotor {name} would vary by ±{amp:.6g} rad/s about the "
+        "mean {mean:.6g} rad/s (δ = {delta:.4g}), {tail}", name=ch.names[k], amp=amp, mean=omega_s,
+        delta=2 * amp / omega_s, tail=tail)
 
 
 def forced_twist_two_mass(J1: float, J2: float, c: float, amplitude: float, w: float) -> float:

@@ -156,12 +156,11 @@ def check_work(ch: Chain, drive: Drive | None, t_end: float, what: str, option: 
         cause = ""
         fix = "a damper or a shaft this stiff for these rotors makes the system stiff (damping, c)"
     rate = max(rho, _highest(ch, modes))
-    raise InputError(Notice(f"{cause}the {what} would take about {steps:.3g} integration steps "
-                            f"({t_end:.4g} s; highest rate of the system {rate:.4g} "
-                            f"1/s), more than the limit of {MAX_STEPS}: {fix}", "too_many_steps",
-                            cause=cause, task=what, steps=steps, t_end=t_end, rate=rate,
-                            top=MAX_STEPS, fix_kind=kind, option=option,
-                            motor_rate=motor_rate))
+    raise InputError(Notice.of(
+        "too_many_steps", "{cause}the {task} would take about {steps:.3g} integration steps "
+        "({t_end:.4g} s; highest rate of the system {rate:.4g} 1/s), more than the limit of "
+        "{top}: {fix}", cause=cause, task=what, steps=steps, t_end=t_end, rate=rate, top=MAX_STEPS,
+        fix_kind=kind, option=option, motor_rate=motor_rate, fix=fix))
 
 
 def simulate(ch: Chain, drive: Drive | None, phi0, omega0, t_end: float, n_samples: int = 2001,
@@ -209,10 +208,10 @@ def simulate(ch: Chain, drive: Drive | None, phi0, omega0, t_end: float, n_sampl
                         atol=atol, **opts)
     if not sol.success or not np.all(np.isfinite(sol.y)):
         reason = sol.message if not sol.success else ""      # scipy's own words
-        raise InputError(Notice(f"solve_ivp ({method}) failed over 0 … {t_end:.4g} s: "
-                                f"{reason or 'the solution is not finite'}",
-                                "ag_solve_ivp_failed", method=method, t_end=t_end,
-                                reason=reason))
+        raise InputError(Notice.of(
+            "ag_solve_ivp_failed", "solve_ivp ({method}) failed over 0 … {t_end:.4g} s: "
+            "{reason_text}", method=method, t_end=t_end, reason=reason,
+            reason_text=reason or 'the solution is not finite'))
     if progress is not None:
         progress(1.0)
     q1, twist, om = sol.y[0], sol.y[1:n], sol.y[n:]

@@ -183,11 +183,11 @@ _NOT_A_JOURNAL = "its journal is not one flywheel wrote"
 def _restore_failed(target: Path, tmp: Path, exc: OSError | None,
                     why: str = _CHANGED) -> InputError:
     reason = exc.strerror if exc is not None and exc.strerror else why
-    return InputError(Notice(
-        f"--out {target}: a run killed while replacing its files left the earlier files in "
-        f"{tmp}, and they cannot be put back ({reason}); move them back by hand or give "
-        "another folder", "out_restore_failed", target=str(target), tmp=str(tmp),
-        reason=reason, errno=getattr(exc, "errno", None)))
+    return InputError(Notice.of(
+        "out_restore_failed", "--out {target}: a run killed while replacing its files left the "
+        "earlier files in {tmp}, and they cannot be put back ({reason}); move them back by hand "
+        "or give another folder", target=str(target), tmp=str(tmp), reason=reason,
+        errno=getattr(exc, "errno", None)))
 
 
 def remove_stale_temporaries(parent: Path, name: str, notes: list | None = None,
@@ -227,9 +227,9 @@ def remove_stale_temporaries(parent: Path, name: str, notes: list | None = None,
                 raise _restore_failed(shown, d, bad if isinstance(bad, OSError) else None)
             journal.unlink()
             if notes is not None:
-                notes.append(Notice(f"{shown}: put back as it was before a run that was "
-                                    "killed while replacing its files", "out_restored",
-                                    target=str(shown)))
+                notes.append(Notice.of(
+                    "out_restored", "{target}: put back as it was before a run that was killed "
+                    "while replacing its files", target=str(shown)))
         shutil.rmtree(d, ignore_errors=True)
         removed.append(d)
     return removed
@@ -318,12 +318,12 @@ def write_folder(target: Path, build, marker: str, kind: str = "output",
     if nonempty:
         earlier = _read_manifest(real, kind)
         if earlier is None:
-            raise InputError(Notice(
-                f"--out {target}: the folder exists, is not empty and is not an earlier {kind} "
-                f"folder of flywheel (no {MANIFEST}); give a new or empty folder (in "
-                f"{'an' if kind[0] in 'aeiou' else 'a'} {kind} folder a rerun replaces only the "
-                f"files flywheel wrote)", "out_not_ours",
-                target=str(target), folder_kind=kind, manifest=MANIFEST))
+            raise InputError(Notice.of(
+                "out_not_ours", "--out {target}: the folder exists, is not empty and is not an "
+                "earlier {folder_kind} folder of flywheel (no {manifest}); give a new or empty "
+                "folder (in {article} {folder_kind} folder a rerun replaces only the files "
+                "flywheel wrote)", target=str(target), folder_kind=kind, manifest=MANIFEST,
+                article='an' if kind[0] in 'aeiou' else 'a'))
     elif exists:
         earlier = _Earlier({})              # an empty folder (or a link to one): swapped into
     tmp = None
@@ -438,9 +438,9 @@ def _plan(out: Path, tmp: Path, earlier: _Earlier, new: dict[str, str], target: 
             made.add(d)
         k = kind(rel)
         if k == "dir":                      # a real folder where a file goes: the user's
-            raise InputError(Notice(f"--out {target}: {rel} is a folder, where flywheel writes "
-                                    "a file", "run_out_folder_in_the_way", target=str(target),
-                                    rel=rel))
+            raise InputError(Notice.of(
+                "run_out_folder_in_the_way", "--out {target}: {rel} is a folder, where flywheel "
+                "writes a file", target=str(target), rel=rel))
         if k != "missing":
             clear(rel)
         plan.steps.append(("mv", ["tmp", rel], ["out", rel], new[rel]))
@@ -586,23 +586,25 @@ def _swap(out: Path, tmp: Path, steps) -> None:
 
 def _say(plan: _Plan, earlier: _Earlier, target: Path, notes: list) -> None:
     if not earlier.trusted:
-        notes.append(Notice(f"{target}: its {MANIFEST} is not the one flywheel wrote for this "
-                            "folder (edited, written by hand or by an older flywheel): the files "
-                            "it lists are treated as yours, none is replaced or removed",
-                            "out_manifest_untrusted", target=str(target), manifest=MANIFEST))
+        notes.append(Notice.of(
+            "out_manifest_untrusted", "{target}: its {manifest} is not the one flywheel wrote for "
+            "this folder (edited, written by hand or by an older flywheel): the files it lists "
+            "are treated as yours, none is replaced or removed", target=str(target),
+            manifest=MANIFEST))
     if plan.edited:
-        notes.append(Notice(f"{target}: kept the files you edited since the earlier run: "
-                            f"{', '.join(plan.edited)}", "out_kept", target=str(target),
-                            files=", ".join(plan.edited)))
+        notes.append(Notice.of(
+            "out_kept", "{target}: kept the files you edited since the earlier run: {files}",
+            target=str(target), files=", ".join(plan.edited)))
     if plan.users:
         files = _summarise(plan.users)
-        notes.append(Notice(f"{target}: kept your files where this run writes its own: {files}",
-                            "out_user_kept", target=str(target), files=files))
+        notes.append(Notice.of(
+            "out_user_kept", "{target}: kept your files where this run writes its own: {files}",
+            target=str(target), files=files))
     if plan.removed:
-        notes.append(Notice(f"{target}: removed {len(plan.removed)} file(s) of the earlier run "
-                            f"that this run does not write: {_summarise(plan.removed)}",
-                            "out_removed", target=str(target), n=len(plan.removed),
-                            files=_summarise(plan.removed)))
+        notes.append(Notice.of(
+            "out_removed", "{target}: removed {n} file(s) of the earlier run that this run does "
+            "not write: {files}", target=str(target), n=len(plan.removed),
+            files=_summarise(plan.removed)))
 
 
 def _summarise(names: list[str], n: int = 4) -> str:
@@ -641,9 +643,9 @@ def write_file_with(path: Path, writer, option: str = "--out", expected: str = "
     except OSError as exc:                  # a name too long for the system
         raise InputError(cannot_write(option, path, exc)) from None
     if is_dir:
-        raise InputError(Notice(f"{option} {path}: is a folder, expected {expected}",
-                                "option_is_a_folder", option=option, path=str(path),
-                                expected=expected))
+        raise InputError(Notice.of(
+            "option_is_a_folder", "{option} {path}: is a folder, expected {expected}",
+            option=option, path=str(path), expected=expected))
     real = Path(os.path.realpath(path)) if os.path.islink(path) else path
     tmp = None
     try:

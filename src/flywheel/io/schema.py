@@ -52,8 +52,9 @@ def within(lo: float, hi: float, unit: str = ""):
         for x in vals:
             if isinstance(x, (int, float)) and not lo <= x <= hi:
                 u = f" {unit}" if unit else ""
-                raise ValueError(Notice(f"{x:g}{u} is out of range (allowed: {lo:g} … {hi:g}{u})",
-                                        "out_of_range", x=x, lo=lo, hi=hi, unit=unit))
+                raise ValueError(Notice.of(
+                    "out_of_range", "{x:g}{unit_shown} is out of range (allowed: {lo:g} … "
+                    "{hi:g}{unit_shown})", x=x, lo=lo, hi=hi, unit=unit, unit_shown=u))
         return v
     return AfterValidator(check)
 
@@ -68,8 +69,9 @@ def at_most(n: int, what: str):
 
     def check(v):
         if isinstance(v, (list, tuple)) and len(v) > n:
-            raise ValueError(Notice(f"has {len(v)} {what} (allowed: at most {n})",
-                                    "too_many_items", count=len(v), items=what, most=n))
+            raise ValueError(Notice.of(
+                "too_many_items", "has {count} {items} (allowed: at most {most})", count=len(v),
+                items=what, most=n))
         return v
     return BeforeValidator(check)
 
@@ -190,9 +192,10 @@ def _describe(err, allowed, drop, messages) -> str:
         lower = {a.lower(): a for a in keys}
         near = difflib.get_close_matches(key.lower(), list(lower), n=1)
         hint = f"; did you mean {lower[near[0]]!r}?" if near else ""
-        return led(f"{where}: ", Notice(f"unknown key{hint} (allowed: {', '.join(keys)})",
-                                        "unknown_key", key=key, near=lower[near[0]] if near
-                                        else "", allowed=", ".join(keys)))
+        return led(f"{where}: ", Notice.of(
+            "unknown_key", "unknown key{hint} (allowed: {allowed})", key=key,
+            near=lower[near[0]] if near
+                                        else "", allowed=", ".join(keys), hint=hint))
     if kind == "missing":
         return f"{where}: missing required field"
     if kind == "finite_number":

@@ -55,18 +55,18 @@ def too_deep(path, where: str = "") -> CaseFileError:
 
     where = cut(where)
     at = f"{where}: " if where else ""
-    return CaseFileError(Notice(
-        f"{path}: {at}tables and arrays nested too deep (allowed: at most {MAX_DEPTH} levels)",
-        "doc_too_deep", path=str(path), where=where, most=MAX_DEPTH))
+    return CaseFileError(Notice.of(
+        "doc_too_deep", "{path}: {at}tables and arrays nested too deep (allowed: at most {most} "
+        "levels)", path=str(path), where=where, most=MAX_DEPTH, at=at))
 
 
 def too_long_number(path, detail: str = "", where: str = "") -> CaseFileError:
     """The error of an integer beyond 64 bits (or beyond Python's limit of digits)."""
     at = f"{where}: " if where else ""
-    return CaseFileError(Notice(
-        f"{path}: {at}an integer too long (allowed: {INT_MIN} … {INT_MAX}, TOML's 64-bit "
-        "integers; write a larger number as a float, e.g. 1e30)", "doc_number_too_long",
-        path=str(path), where=where, lo=INT_MIN, hi=INT_MAX))
+    return CaseFileError(Notice.of(
+        "doc_number_too_long", "{path}: {at}an integer too long (allowed: {lo} … {hi}, TOML's "
+        "64-bit integers; write a larger number as a float, e.g. 1e30)", path=str(path),
+        where=where, lo=INT_MIN, hi=INT_MAX, at=at))
 
 
 def check_document(doc, path) -> None:

@@ -76,10 +76,11 @@ def _fail_where(bad: np.ndarray, phi: np.ndarray, what: str, dyad: str | None = 
     if np.any(bad):
         deg = np.degrees(phi[np.argmax(bad)])
         need = need() if need is not None else ""
-        text = f"{what} cannot be assembled at crank angle φ = {deg:.2f}°" + (f": {need}" if need
-                                                                             else "")
-        err = AssemblyError(Notice(text, "cannot_assemble_need", what=what, deg=deg, need=need)
-                            if need else Notice(text, "cannot_assemble", what=what, deg=deg))
+        err = AssemblyError(
+            Notice.of("cannot_assemble_need", "{what} cannot be assembled at crank angle φ = "
+                      "{deg:.2f}°: {need}", what=what, deg=deg, need=need) if need else
+            Notice.of("cannot_assemble", "{what} cannot be assembled at crank angle φ = "
+                      "{deg:.2f}°", what=what, deg=deg))
         err.dyad = dyad
         raise err
 

@@ -18,9 +18,10 @@ def check_formats(formats) -> list[str]:
     formats = list(formats or ["md", "html"])
     for f in formats:
         if f not in FORMATS:
-            raise InputError(Notice(f"--report: {f!r} is not a report format (allowed: "
-                                    f"{', '.join(FORMATS)})", "option_choice", option="--report",
-                                    got=repr(f), allowed=", ".join(FORMATS)))
+            raise InputError(Notice.of(
+                "option_choice", "{option}: {got} is not {what} (allowed: {allowed})",
+                option="--report", got=repr(f), what="a report format",
+                allowed=", ".join(FORMATS)))
     return list(dict.fromkeys(formats))
 
 

@@ -118,28 +118,27 @@ def parse_key(doc, source: str = "<key>") -> Key:
     else:
         table, where, tol, tols, answers = doc, "", DEFAULT_TOLERANCE, {}, None
     if not isinstance(table, dict) or not table:
-        raise CaseFileError(led(f"{source}: ", Notice(
-            f"{where or 'the key'}: must be a non-empty object {{variant: {{answer: value}}}}",
-            "key_no_variants", where=where)))
+        raise CaseFileError(led(f"{source}: ", Notice.of(
+            "key_no_variants", "{where_shown}: must be a non-empty object {{variant: {{answer: "
+            "value}}}}", where=where, where_shown=where or 'the key')))
     if not _positive(tol):
-        raise CaseFileError(led(f"{source}: tolerance: ", Notice(
-            f"must be a positive number (got {tol!r})", "not_positive_number", got=repr(tol))))
+        raise CaseFileError(led(f"{source}: tolerance: ", Notice.of(
+            "not_positive_number", "must be a positive number (got {got})", got=repr(tol))))
     if not isinstance(tols, dict) or not all(_positive(v) for v in tols.values()):
-        raise CaseFileError(led(f"{source}: tolerances: ", Notice(
-            f"must be an object {{answer: positive number}} (got {tols!r})", "key_tolerances",
+        raise CaseFileError(led(f"{source}: tolerances: ", Notice.of(
+            "key_tolerances", "must be an object {{answer: positive number}} (got {got})",
             got=repr(tols))))
     variants: dict[str, dict[str, float]] = {}
     for vid, ans in table.items():
         at = f"{where}.{vid}" if where else str(vid)
         if not isinstance(ans, dict) or not ans:
-            raise CaseFileError(led(f"{source}: {at}: ", Notice(
-                f"must be an object {{answer: value}} (got {ans!r})", "grade_answers_object",
+            raise CaseFileError(led(f"{source}: {at}: ", Notice.of(
+                "grade_answers_object", "must be an object {{answer: value}} (got {got})",
                 got=repr(ans))))
         for name, value in ans.items():
             if not _number(value):
-                raise CaseFileError(led(f"{source}: {at}.{name}: ", Notice(
-                    f"must be a finite number (got {value!r})", "not_finite_number",
-                    got=repr(value))))
+                raise CaseFileError(led(f"{source}: {at}.{name}: ", Notice.of(
+                    "not_finite_number", "must be a finite number (got {got})", got=repr(value))))
         variants[str(vid)] = {str(k): float(v) for k, v in ans.items()}
     if answers is None:
         seen: dict[str, None] = {}
@@ -147,9 +146,8 @@ def parse_key(doc, source: str = "<key>") -> Key:
             seen.update(dict.fromkeys(ans))
         answers = list(seen)
     if not isinstance(answers, list) or not all(isinstance(a, str) for a in answers):
-        raise CaseFileError(led(f"{source}: answers: ", Notice(
-            f"must be a list of answer names (got {answers!r})", "grade_answers_list",
-            got=repr(answers))))
+        raise CaseFileError(led(f"{source}: answers: ", Notice.of(
+            "grade_answers_list", "must be a list of answer names (got {got})", got=repr(answers))))
     return Key(source, variants, float(tol), {str(k): float(v) for k, v in tols.items()},
                tuple(answers))
 
@@ -162,30 +160,32 @@ def load_key(path) -> Key:
     try:
         doc = read_json(path)               # its limits: MAX_KEY_DEPTH, MAX_KEY_DIGITS
     except FileNotFoundError:
-        raise CaseFileError(Notice(f"{path}: no such file", "no_such_file", path=str(path))) from None
+        raise CaseFileError(Notice.of(
+            "no_such_file", "{path}: no such file", path=str(path))) from None
     except IsADirectoryError:
-        raise CaseFileError(Notice(f"{path}: is a folder, expected the answers.json of "
-                                   "flywheel variants", "key_is_a_folder", path=str(path))) from None
+        raise CaseFileError(Notice.of(
+            "key_is_a_folder", "{path}: is a folder, expected the answers.json of flywheel "
+            "variants", path=str(path))) from None
     except UnicodeDecodeError as exc:
-        raise CaseFileError(Notice(f"{path}: not UTF-8 text ({exc.reason} at byte {exc.start})",
-                                   "not_utf8", path=str(path), reason=exc.reason,
-                                   byte=exc.start)) from None
+        raise CaseFileError(Notice.of(
+            "not_utf8", "{path}: not UTF-8 text ({reason} at byte {byte})", path=str(path),
+            reason=exc.reason, byte=exc.start)) from None
     except OSError as exc:
-        raise CaseFileError(Notice(f"{path}: cannot be read ({exc.strerror})",
-                                   "grade_key_unreadable", path=str(path),
-                                   reason=exc.strerror, errno=exc.errno)) from None
+        raise CaseFileError(Notice.of(
+            "grade_key_unreadable", "{path}: cannot be read ({reason})", path=str(path),
+            reason=exc.strerror, errno=exc.errno)) from None
     except JsonTooDeep as exc:
-        raise CaseFileError(Notice(f"{path}: nested too deep ({exc.depth} levels of [] and {{}}; "
-                                   f"allowed: up to {MAX_KEY_DEPTH})", "key_too_deep",
-                                   path=str(path), depth=exc.depth, top=MAX_KEY_DEPTH)) from None
+        raise CaseFileError(Notice.of(
+            "key_too_deep", "{path}: nested too deep ({depth} levels of [] and {{}}; allowed: up "
+            "to {top})", path=str(path), depth=exc.depth, top=MAX_KEY_DEPTH)) from None
     except json.JSONDecodeError as exc:
-        raise CaseFileError(Notice(f"{path}: not JSON: {exc.msg} at line {exc.lineno} column "
-                                   f"{exc.colno}", "not_json", path=str(path), msg=exc.msg,
-                                   line=exc.lineno, col=exc.colno)) from None
+        raise CaseFileError(Notice.of(
+            "not_json", "{path}: not JSON: {msg} at line {line} column {col}", path=str(path),
+            msg=exc.msg, line=exc.lineno, col=exc.colno)) from None
     except JsonNumberTooLong as exc:
-        raise CaseFileError(Notice(f"{path}: a number of {exc.digits} digits is too long "
-                                   f"(allowed: up to {MAX_KEY_DIGITS} digits)", "key_number_too_long",
-                                   path=str(path), digits=exc.digits, top=MAX_KEY_DIGITS)) from None
+        raise CaseFileError(Notice.of(
+            "key_number_too_long", "{path}: a number of {digits} digits is too long (allowed: up "
+            "to {top} digits)", path=str(path), digits=exc.digits, top=MAX_KEY_DIGITS)) from None
     return parse_key(doc, str(path))
 
 
@@ -232,8 +232,9 @@ class Problem:
         where = self.file if self.row is None else f"{self.file}, row {self.row}"
         if not getattr(self.message, "code", ""):
             return f"{where}: {self.message}"
-        return Notice(f"{where}: {self.message}", "sheet_problem", sheet=self.file, row=self.row,
-                      detail=self.message)
+        return Notice.of(
+            "sheet_problem", "{where}: {detail}", sheet=self.file, row=self.row,
+            detail=self.message, where=where)
 
 
 @dataclass(frozen=True)
@@ -450,13 +451,14 @@ def sheet_codec(source) -> str:
     for bom, enc in _BOMS:
         if head.startswith(bom):
             if _scan(source, enc)[0] is not None:
-                raise SheetError(Notice(f"starts with a {enc} byte-order mark but is not {enc} "
-                                        "text", "sheet_bad_bom", enc=enc))
+                raise SheetError(Notice.of(
+                    "sheet_bad_bom", "starts with a {enc} byte-order mark but is not {enc} text",
+                    enc=enc))
             return enc
     bad, nul = _scan(source, "utf-8")
     if bad is None:
         if nul:
-            raise SheetError(Notice("binary data, not a CSV text file", "sheet_binary"))
+            raise SheetError(Notice.of("sheet_binary", "binary data, not a CSV text file"))
         return "utf-8"
     from charset_normalizer import from_bytes
 
@@ -468,22 +470,23 @@ def sheet_codec(source) -> str:
         again = from_bytes(clean, cp_isolation=list(ENCODINGS)).best()
         if again is not None and again.encoding == "cp1251":
             at = sample.index(_NOT_CP1251)
-            raise SheetError(Notice(
-                f"Windows-1251 text with a stray byte 0x{sample[at]:02X} at byte {at} (not a "
-                "Windows-1251 character: the sheet would be read garbled or not at all; "
-                "allowed: the sheet saved again as UTF-8 or Windows-1251)", "sheet_stray_byte",
+            raise SheetError(Notice.of(
+                "sheet_stray_byte", "Windows-1251 text with a stray byte {byte} at byte {at} (not "
+                "a Windows-1251 character: the sheet would be read garbled or not at all; "
+                "allowed: the sheet saved again as UTF-8 or Windows-1251)",
                 byte=f"0x{sample[at]:02X}", at=at))
     if best is None:
-        raise SheetError(Notice("binary data, not a CSV text file (no text encoding fits: "
-                                "UTF-8, UTF-16, cp1251, cp866, koi8-r)", "sheet_no_encoding"))
+        raise SheetError(Notice.of(
+            "sheet_no_encoding", "binary data, not a CSV text file (no text encoding fits: UTF-8, "
+            "UTF-16, cp1251, cp866, koi8-r)"))
     at, nul = _scan(source, codec)
     if at is not None:
-        raise SheetError(Notice(
-            f"not {codec} text at byte {at} (the encoding guessed from the sheet's start; "
-            "allowed: one encoding for the whole sheet: UTF-8, Windows-1251, cp866, koi8-r)",
-            "sheet_undecodable", codec=codec, at=at))
+        raise SheetError(Notice.of(
+            "sheet_undecodable", "not {codec} text at byte {at} (the encoding guessed from the "
+            "sheet's start; allowed: one encoding for the whole sheet: UTF-8, Windows-1251, "
+            "cp866, koi8-r)", codec=codec, at=at))
     if nul:
-        raise SheetError(Notice("binary data, not a CSV text file", "sheet_binary"))
+        raise SheetError(Notice.of("sheet_binary", "binary data, not a CSV text file"))
     return codec
 
 
@@ -522,9 +525,9 @@ def _check_size(path: Path) -> None:
     """SheetError if the sheet is larger than MAX_SHEET_BYTES."""
     size = path.stat().st_size
     if size > MAX_SHEET_BYTES:
-        raise SheetError(Notice(f"{size / 1e6:.0f} MB is too large for an answer sheet (allowed: "
-                                f"up to {MAX_SHEET_BYTES / 1e6:.0f} MB)", "sheet_too_large",
-                                mb=size / 1e6, top=MAX_SHEET_BYTES / 1e6))
+        raise SheetError(Notice.of(
+            "sheet_too_large", "{mb:.0f} MB is too large for an answer sheet (allowed: up to "
+            "{top:.0f} MB)", mb=size / 1e6, top=MAX_SHEET_BYTES / 1e6))
 
 
 def _delimiter(header: str) -> str:
@@ -584,16 +587,16 @@ def check_outputs(key, answers, outputs) -> None:
     for i, (option, path) in enumerate(named):
         for what, given in inputs:
             if _same_file(path, given):
-                raise InputError(Notice(
-                    f"{option} {path}: is {what} {given} (flywheel grade never writes over its "
-                    "inputs; allowed: another file name)", "grade_output_is_input",
-                    option=option, path=str(path), what=what, given=str(given)))
+                raise InputError(Notice.of(
+                    "grade_output_is_input", "{option} {path}: is {what} {given} (flywheel grade "
+                    "never writes over its inputs; allowed: another file name)", option=option,
+                    path=str(path), what=what, given=str(given)))
         for other, there in named[i + 1:]:
             if _same_file(path, there):
-                raise InputError(Notice(
-                    f"{option} {path} and {other} {there}: the same file (allowed: two "
-                    "different file names)", "grade_outputs_same", option=option,
-                    path=str(path), other=other, there=str(there)))
+                raise InputError(Notice.of(
+                    "grade_outputs_same", "{option} {path} and {other} {there}: the same file "
+                    "(allowed: two different file names)", option=option, path=str(path),
+                    other=other, there=str(there)))
 
 
 class _Kept(list):
@@ -637,16 +640,16 @@ def _grade_sheet(key: Key, path, tolerance: float | None, limit: int | None,
         return _grade_rows(key, name, _lines(_text_chunks(path, codec)), tolerance, limit,
                            room)
     except OSError as exc:
-        return [], [Problem(name, None, Notice(f"cannot be read ({exc.strerror})",
-                                               "sheet_unreadable", reason=exc.strerror,
-                                               errno=exc.errno))], 0, None
+        return [], [Problem(name, None, Notice.of(
+            "sheet_unreadable", "cannot be read ({reason})", reason=exc.strerror,
+            errno=exc.errno))], 0, None
     except SheetError as exc:
         return [], [Problem(name, None, said(exc))], 0, None
     except UnicodeDecodeError as exc:           # the file changed since it was checked
-        return [], [Problem(name, None, Notice(
-            f"not {exc.encoding} text at byte {exc.byte} (the encoding guessed from the "
+        return [], [Problem(name, None, Notice.of(
+            "sheet_undecodable", "not {codec} text at byte {at} (the encoding guessed from the "
             "sheet's start; allowed: one encoding for the whole sheet: UTF-8, Windows-1251, "
-            "cp866, koi8-r)", "sheet_undecodable", codec=exc.encoding, at=exc.byte))], 0, None
+            "cp866, koi8-r)", codec=exc.encoding, at=exc.byte))], 0, None
 
 
 def _grade_rows(key: Key, name: str, lines, tolerance: float | None, limit: int | None,
@@ -657,14 +660,14 @@ def _grade_rows(key: Key, name: str, lines, tolerance: float | None, limit: int 
     first = next(lines, "")
     head = first.splitlines()
     if not head or not head[0].strip():
-        return [], [Problem(name, None, Notice("empty file (expected a header "
-                                               "student,variant,…)", "sheet_empty"))], 0, None
+        return [], [Problem(name, None, Notice.of(
+            "sheet_empty", "empty file (expected a header student,variant,…)"))], 0, None
     rows = csv.reader(itertools.chain([first], lines), delimiter=_delimiter(head[0]))
     try:
         return _graded(key, name, rows, tolerance, limit, room)
     except csv.Error as exc:
-        return [], [Problem(name, None, Notice(f"not a readable CSV file ({exc})",
-                                               "sheet_not_csv", detail=str(exc)))], 0, None
+        return [], [Problem(name, None, Notice.of(
+            "sheet_not_csv", "not a readable CSV file ({detail})", detail=str(exc)))], 0, None
 
 
 def _graded(key: Key, name: str, rows, tolerance: float | None, limit: int | None,
@@ -676,11 +679,11 @@ def _graded(key: Key, name: str, rows, tolerance: float | None, limit: int | Non
     if missing:
         for _ in rows:                          # a CSV error further on says more
             pass
-        return [], [Problem(name, 1, Notice(
-            f"no {' and no '.join(repr(c) for c in missing)} column (the header must be "
-            f"student,variant,<answers…>; got {_short(','.join(header))})", "sheet_no_column",
-            columns=' и '.join(repr(c) for c in missing),
-            header=_short(','.join(header))))], 0, None
+        return [], [Problem(name, 1, Notice.of(
+            "sheet_no_column", "no {missing_columns} column (the header must be "
+            "student,variant,<answers…>; got {header})",
+            columns=' и '.join(repr(c) for c in missing), header=_short(','.join(header)),
+            missing_columns=' and no '.join((repr(c) for c in missing))))], 0, None
     col_student, col_variant = lower.index("student"), lower.index("variant")
     columns = {h: i for i, h in enumerate(header) if i not in (col_student, col_variant) and h}
     problems: list[Problem] = _Kept(room)
@@ -693,9 +696,9 @@ def _graded(key: Key, name: str, rows, tolerance: float | None, limit: int | Non
             answers=', '.join(key.answers))))
     absent = [a for a in key.answers if a not in columns]
     if absent:
-        problems.append(Problem(name, 1, Notice(
-            f"no column for {', '.join(map(repr, absent))}: those answers count as not given",
-            "sheet_absent_columns", columns=', '.join(map(repr, absent)))))
+        problems.append(Problem(name, 1, Notice.of(
+            "sheet_absent_columns", "no column for {columns}: those answers count as not given",
+            columns=', '.join(map(repr, absent)))))
     markings: dict[str, Marking] = {}
     graded: list[StudentGrade] = []
     over, first_over = 0, None
@@ -718,9 +721,9 @@ def _graded(key: Key, name: str, rows, tolerance: float | None, limit: int | Non
             ids = list(key.variants)
             allowed = f"{ids[0]}…{ids[-1]}" if len(ids) > 3 else ", ".join(ids)
             what = "no variant" if not variant else f"variant {variant!r} is not in the key"
-            problems.append(Problem(name, n, Notice(
-                f"{who}{what} (allowed: {allowed}); row skipped", "row_variant",
-                student=student, variant=variant, allowed=allowed)))
+            problems.append(Problem(name, n, Notice.of(
+                "row_variant", "{who}{problem} (allowed: {allowed}); row skipped", student=student,
+                variant=variant, allowed=allowed, who=who, problem=what)))
             continue
         values = array("d")
         bad = []
@@ -734,9 +737,9 @@ def _graded(key: Key, name: str, rows, tolerance: float | None, limit: int | Non
             except ValueError:
                 bad.append(f"{a} = {t!r}")
         if bad:
-            problems.append(Problem(name, n, Notice(f"{who}not a number: {'; '.join(bad)}; "
-                                                    "row skipped", "row_not_a_number",
-                                                    student=student, bad='; '.join(bad))))
+            problems.append(Problem(name, n, Notice.of(
+                "row_not_a_number", "{who}not a number: {bad}; row skipped", student=student,
+                bad='; '.join(bad), who=who)))
             continue
         if limit is not None and len(graded) >= limit:
             over += 1                           # past the run's limit: counted, not kept
@@ -761,14 +764,13 @@ def grade(key: Key, paths, tolerance: float | None = None, progress=None) -> Rep
     as a stream of rows; what is kept is one small record per graded row (at most MAX_ROWS).
     """
     if tolerance is not None and not _positive(tolerance):
-        raise InputError(Notice(f"--tolerance: must be a positive number (got {tolerance!r})",
-                                "option_not_positive_number", option="--tolerance",
-                                got=repr(tolerance)))
+        raise InputError(Notice.of(
+            "option_not_positive_number", "--tolerance: must be a positive number (got {got})",
+            option="--tolerance", got=repr(tolerance)))
     if tolerance is not None and tolerance > MAX_TOLERANCE:
-        raise InputError(Notice(f"--tolerance: {tolerance!r} is too large (allowed: 0 < "
-                                f"tolerance ≤ {MAX_TOLERANCE:g}, a relative error: 0.01 is 1 %)",
-                                "grade_tolerance_too_large", got=repr(tolerance),
-                                top=MAX_TOLERANCE))
+        raise InputError(Notice.of(
+            "grade_tolerance_too_large", "--tolerance: {got} is too large (allowed: 0 < tolerance "
+            "≤ {top:g}, a relative error: 0.01 is 1 %)", got=repr(tolerance), top=MAX_TOLERANCE))
     files, found = sheet_files(paths)
     problems = _Kept(MAX_PROBLEMS)
     for p in found:
@@ -777,17 +779,16 @@ def grade(key: Key, paths, tolerance: float | None = None, progress=None) -> Rep
     for i, f in enumerate(files):
         if len(students) >= MAX_ROWS:
             for g in files[i:]:
-                problems.append(Problem(str(g), None, Notice(
-                    f"not graded: the run has reached {MAX_ROWS} student rows (grade the sheets "
-                    "in parts)", "run_rows_reached", top=MAX_ROWS)))
+                problems.append(Problem(str(g), None, Notice.of(
+                    "run_rows_reached", "not graded: the run has reached {top} student rows "
+                    "(grade the sheets in parts)", top=MAX_ROWS)))
             break
         s, p, over, first_over = _grade_sheet(key, f, tolerance, MAX_ROWS - len(students),
                                               MAX_PROBLEMS - len(problems))
         if over:
-            p.append(Problem(str(f), first_over, Notice(
-                f"this row and the {over - 1} after it not graded: at most {MAX_ROWS} "
-                "student rows per run (grade the sheets in parts)", "run_rows_cut",
-                n=over - 1, top=MAX_ROWS)))
+            p.append(Problem(str(f), first_over, Notice.of(
+                "run_rows_cut", "this row and the {n} after it not graded: at most {top} student "
+                "rows per run (grade the sheets in parts)", n=over - 1, top=MAX_ROWS)))
         problems.dropped += getattr(p, "dropped", 0)
         students += s
         for x in p:
@@ -808,10 +809,9 @@ def grade(key: Key, paths, tolerance: float | None = None, progress=None) -> Rep
     order = list(dict.fromkeys(s.student for s in students))
     students = [latest[name] for name in order]
     if problems.dropped:
-        list.append(problems, Problem(str(files[-1]) if files else "", None, Notice(
-            f"… and {problems.dropped} more problem(s) up to this sheet not listed (at most "
-            f"{MAX_PROBLEMS} per run; grade the sheets in parts)", "run_problems_cut", n=problems.dropped,
-            top=MAX_PROBLEMS)))
+        list.append(problems, Problem(str(files[-1]) if files else "", None, Notice.of(
+            "run_problems_cut", "… and {n} more problem(s) up to this sheet not listed (at most "
+            "{top} per run; grade the sheets in parts)", n=problems.dropped, top=MAX_PROBLEMS)))
     return Report(key, key.tolerance if tolerance is None else tolerance, tuple(students),
                   tuple(problems), tuple(map(str, files)))
 

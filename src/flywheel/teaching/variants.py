@@ -133,10 +133,10 @@ def _resolve(doc, path: str, where: str) -> tuple[tuple[str | int, ...], Any]:
                 near = difflib.get_close_matches(name, [str(k) for k in node], n=1)
                 hint = f"; did you mean {near[0]!r}?" if near else ""
                 keys = ", ".join(map(str, node)) or "nothing"
-                raise CaseFileError(led(f"{where}: ", Notice(
-                    f"{name!r} is not in {here} (it has: {keys}){hint}"
-                    " — a varied field must have a value in the template", "path_not_in",
-                    name=name, here=here, keys=keys, near=near[0] if near else "")))
+                raise CaseFileError(led(f"{where}: ", Notice.of(
+                    "path_not_in", "{name!r} is not in {here} (it has: {keys}){hint} — a varied "
+                    "field must have a value in the template", name=name, here=here, keys=keys,
+                    near=near[0] if near else "", hint=hint)))
             parts.append(name)
             node = node[name]
         elif isinstance(node, list):
@@ -166,16 +166,15 @@ def _grid(spec: dict, where: str) -> tuple:
             raise CaseFileError(led(f"{where}: ", Notice.of(
                 "var_grid_missing", "{key} is missing (give min, max and step, or values)", key=k)))
         if not _is_number(spec[k]):
-            raise CaseFileError(led(f"{where}.{k}: ", Notice(
-                f"must be a finite number (got {spec[k]!r})", "not_finite_number",
-                got=repr(spec[k]))))
+            raise CaseFileError(led(f"{where}.{k}: ", Notice.of(
+                "not_finite_number", "must be a finite number (got {got})", got=repr(spec[k]))))
     lo, hi, step = spec["min"], spec["max"], spec["step"]
     if step <= 0:
-        raise CaseFileError(led(f"{where}.step: ", Notice(f"must be positive (got {step!r})",
-                                                          "positive_got", got=repr(step))))
+        raise CaseFileError(led(f"{where}.step: ", Notice.of(
+            "positive_got", "must be positive (got {got})", got=repr(step))))
     if hi < lo:
-        raise CaseFileError(led(f"{where}: ", Notice(f"max ({hi!r}) is less than min ({lo!r})",
-                                                     "max_below_min", hi=repr(hi), lo=repr(lo))))
+        raise CaseFileError(led(f"{where}: ", Notice.of(
+            "max_below_min", "max ({hi}) is less than min ({lo})", hi=repr(hi), lo=repr(lo))))
     n = math.floor((hi - lo) / step * (1 + 1e-12) + 1e-9) + 1
     if n > 100_000:
         raise CaseFileError(led(f"{where}: ", Notice.of(
@@ -188,9 +187,9 @@ def _grid(spec: dict, where: str) -> tuple:
 
 def _choices(spec, where: str, current) -> tuple:
     if not isinstance(spec, dict):
-        raise CaseFileError(led(f"{where}: ", Notice(
-            f"must be a table {{ values = [...] }} or {{ min = …, max = …, step = … }} "
-            f"(got {spec!r})", "spec_not_table", got=repr(spec))))
+        raise CaseFileError(led(f"{where}: ", Notice.of(
+            "spec_not_table", "must be a table {{ values = [...] }} or {{ min = …, max = …, step "
+            "= … }} (got {got})", got=repr(spec))))
     unknown = [k for k in spec if k not in SPEC_KEYS]
     if unknown:
         raise CaseFileError(led(f"{where}: ", Notice.of(
@@ -202,47 +201,47 @@ def _choices(spec, where: str, current) -> tuple:
                 "var_values_or_grid", "give either values or min, max, step, not both")))
         vals = spec["values"]
         if not isinstance(vals, list) or not vals:
-            raise CaseFileError(led(f"{where}.values: ", Notice(
-                f"must be a non-empty array (got {vals!r})", "nonempty_array", got=repr(vals))))
+            raise CaseFileError(led(f"{where}.values: ", Notice.of(
+                "nonempty_array", "must be a non-empty array (got {got})", got=repr(vals))))
         if any(isinstance(v, dict) for v in vals):
             raise CaseFileError(led(f"{where}.values: ", Notice.of(
                 "var_values_tables", "tables cannot be drawn (vary their fields)")))
         return tuple(vals)
     if not _is_number(current):
-        raise CaseFileError(led(f"{where}: ", Notice(
-            f"min/max/step need a number in the template (it has {current!r}); use "
-            "values = [...]", "var_grid_needs_number", current=repr(current))))
+        raise CaseFileError(led(f"{where}: ", Notice.of(
+            "var_grid_needs_number", "min/max/step need a number in the template (it has "
+            "{current}); use values = [...]", current=repr(current))))
     return _grid(spec, where)
 
 
 def _answers(table: dict, where: str) -> tuple[tuple[str, ...], float, dict[str, float]]:
     if "answers" not in table:
-        raise CaseFileError(led(f"{where}.answers: ", Notice(
-            'missing (the result keys of the answer key, e.g. answers = ["J_required", '
-            '"delta_T_max"])', "answers_missing")))
+        raise CaseFileError(led(f"{where}.answers: ", Notice.of(
+            "answers_missing", "missing (the result keys of the answer key, e.g. answers = "
+            "[\"J_required\", \"delta_T_max\"])")))
     ans = table["answers"]
     if (not isinstance(ans, list) or not ans
             or not all(isinstance(a, str) and a.strip() for a in ans)):
-        raise CaseFileError(led(f"{where}.answers: ", Notice(
-            f"must be a non-empty array of result names (got {ans!r})", "answers_empty",
+        raise CaseFileError(led(f"{where}.answers: ", Notice.of(
+            "answers_empty", "must be a non-empty array of result names (got {got})",
             got=repr(ans))))
     for a in ans:
         if ans.count(a) > 1:
             raise CaseFileError(led(f"{where}.answers: ", Notice.of(
                 "var_answer_twice", "{name!r} is listed twice", name=a)))
         if any(c in a for c in ',;"\n'):
-            raise CaseFileError(led(f"{where}.answers: ", Notice(
-                f"{a!r} has a character not allowed in a CSV column name (, ; \" or a line "
-                "break)", "var_answer_csv", name=a)))
+            raise CaseFileError(led(f"{where}.answers: ", Notice.of(
+                "var_answer_csv", "{name!r} has a character not allowed in a CSV column name (, ; "
+                "\" or a line break)", name=a)))
     tol = table.get("tolerance", DEFAULT_TOLERANCE)
     if not _is_number(tol) or tol <= 0:
-        raise CaseFileError(led(f"{where}.tolerance: ", Notice(
-            f"must be a positive number, relative (got {tol!r})", "not_positive_relative",
+        raise CaseFileError(led(f"{where}.tolerance: ", Notice.of(
+            "not_positive_relative", "must be a positive number, relative (got {got})",
             got=repr(tol))))
     tols = table.get("tolerances", {})
     if not isinstance(tols, dict):
-        raise CaseFileError(led(f"{where}.tolerances: ", Notice(
-            f"must be a table {{ answer = tolerance }} (got {tols!r})", "var_tolerances_table",
+        raise CaseFileError(led(f"{where}.tolerances: ", Notice.of(
+            "var_tolerances_table", "must be a table {{ answer = tolerance }} (got {got})",
             got=repr(tols))))
     for k, v in tols.items():
         if k not in ans:
@@ -250,8 +249,8 @@ def _answers(table: dict, where: str) -> tuple[tuple[str, ...], float, dict[str,
                 "not_an_answer", "not one of the answers (allowed: {allowed})",
                 allowed=", ".join(ans))))
         if not _is_number(v) or v <= 0:
-            raise CaseFileError(led(f"{where}.tolerances.{k}: ", Notice(
-                f"must be a positive number (got {v!r})", "not_positive_number", got=repr(v))))
+            raise CaseFileError(led(f"{where}.tolerances.{k}: ", Notice.of(
+                "not_positive_number", "must be a positive number (got {got})", got=repr(v))))
     return tuple(ans), float(tol), {k: float(v) for k, v in tols.items()}
 
 
@@ -279,8 +278,9 @@ def detect_kind(doc: dict, source: str) -> str:
             errors[kind] = exc
     likely = "run" if "machine" in doc else "task2"
     what = "a flywheel run case" if likely == "run" else "a flywheel task2 case"
-    raise CaseFileError(Notice(f"{errors[likely]} [checked as {what}]", "checked_as",
-                               detail=said(errors[likely]), as_kind=likely))
+    raise CaseFileError(Notice.of(
+        "checked_as", "{detail} [checked as {checked_kind}]", detail=said(errors[likely]),
+        as_kind=likely, checked_kind=what))
 
 
 def results_of(kind: str, doc: dict, source: str, n_points: int = RUN_POINTS) -> dict:
@@ -336,10 +336,10 @@ def pick_answers(results: dict, answers, where: str) -> dict[str, float]:
             near = difflib.get_close_matches(a, names, n=1)
             hint = f"; did you mean {near[0]!r}?" if near else ""
             what = "is not a result" if v is None else f"is not a finite number (it is {v!r})"
-            raise CaseFileError(led(f"{where}: ", Notice(
-                f"{a!r} {what} (numbers available: {', '.join(names)}){hint}", "not_a_result",
-                name=a, value=None if v is None else repr(v), names=", ".join(names),
-                near=near[0] if near else "")))
+            raise CaseFileError(led(f"{where}: ", Notice.of(
+                "not_a_result", "{name!r} {verdict} (numbers available: {names}){hint}", name=a,
+                value=None if v is None else repr(v), names=", ".join(names),
+                near=near[0] if near else "", verdict=what, hint=hint)))
         out[a] = float(v)
     return out
 
@@ -380,8 +380,8 @@ def parse_template(data: dict, source: str = "<template>", n_points: int = RUN_P
             "the answers; see docs/teacher.md)")))
     table = data["variants"]
     if not isinstance(table, dict):
-        raise CaseFileError(led(f"{source}: variants: ", Notice(
-            f"must be a table (got {table!r})", "var_not_a_table", got=repr(table))))
+        raise CaseFileError(led(f"{source}: variants: ", Notice.of(
+            "var_not_a_table", "must be a table (got {got})", got=repr(table))))
     _check_lengths(table, source)
     doc = {k: v for k, v in data.items() if k != "variants"}
     kind = detect_kind(doc, source)
@@ -398,9 +398,9 @@ def parse_template(data: dict, source: str = "<template>", n_points: int = RUN_P
                 "var_path_is_table", "is a table; vary its fields one by one")))
         varied.append(Varied(path, parts, _choices(spec, where, current)))
     if not varied:
-        raise CaseFileError(led(f"{source}: variants: ", Notice(
-            'nothing to vary (add e.g. "machine.speed_rps" = { values = [8, 10, 12] })',
-            "var_nothing_to_vary")))
+        raise CaseFileError(led(f"{source}: variants: ", Notice.of(
+            "var_nothing_to_vary", "nothing to vary (add e.g. \"machine.speed_rps\" = {{ values = "
+            "[8, 10, 12] }})")))
     for i, v in enumerate(varied):
         for w in varied[:i]:
             short, long_ = sorted((v.parts, w.parts), key=len)
@@ -410,9 +410,9 @@ def parse_template(data: dict, source: str = "<template>", n_points: int = RUN_P
     try:
         base = results_of(kind, doc, source, n_points)
     except FlywheelError as exc:
-        raise CaseFileError(Notice(f"{source}: the template itself cannot be analysed: {exc}",
-                                   "template_not_analysed", source=source,
-                                   detail=said(exc))) from None
+        raise CaseFileError(Notice.of(
+            "template_not_analysed", "{source}: the template itself cannot be analysed: {detail}",
+            source=source, detail=said(exc))) from None
     pick_answers(base, answers, f"{source}: variants.answers")
     return Template(source, Path(source).name, kind, doc, tuple(varied), answers, tol, tols)
 
