@@ -637,6 +637,24 @@ def _worker(results, folder: Path, lang: str, order: list[int], counter, fmt: st
     _save_next(results, folder, lang, order, counter, fmt, dpi)
 
 
+def _join_all(children) -> None:
+    """Wait for every plotting process. A Ctrl-C or SIGTERM that arrives while waiting stops
+    them all first (a worker left running would go on writing into a temporary folder the run
+    is removing), then goes on up."""
+    stopped = None
+    for c in children:
+        while True:
+            try:
+                c.join()
+                break
+            except BaseException as exc:     # the signal's exception: terminate, keep waiting
+                stopped = stopped or exc
+                for d in children:
+                    d.terminate()
+    if stopped is not None:
+        raise stopped
+
+
 def write_plots(results, folder: Path, lang: str = "en", jobs: int = 1, fmt: str = "png",
                 dpi: int = fg.DPI) -> list[Path]:
     """Write every plot of ``results`` (:func:`all_figures`) into ``folder`` (created if
@@ -676,8 +694,7 @@ def write_plots(results, folder: Path, lang: str = "en", jobs: int = 1, fmt: str
                 c.terminate()
             raise
         finally:
-            for c in children:
-                c.join()
+            _join_all(children)
         if any(c.exitcode != 0 for c in children):
             raise RuntimeError("a plotting process failed")
     else:
