@@ -42,7 +42,7 @@ def aggregate_command(
     natural frequencies, steady forced vibration, start-up."""
     import math
 
-    from flywheel.cli.guard import check_lang, guarded, needs_out, plot_failed, refuse_nonfinite
+    from flywheel.cli.guard import check_lang, guarded, needs_out, refuse_nonfinite, write_plot
     from flywheel.errors import InputError, Notice
 
     with guarded(source=case):      # an error of the analysis is prefixed with the case file
@@ -77,16 +77,7 @@ def aggregate_command(
         if plot is not None:
             from flywheel.render.aggregate import plot as draw
 
-            from flywheel.io.output import write_file_with
-
-            def draw_to(tmp):               # a temporary beside the old image, renamed
-                try:
-                    draw(result, tmp, c.title, lang)
-                except ValueError as exc:   # a format matplotlib does not know
-                    raise InputError(plot_failed(plot, exc)) from None
-
-            write_file_with(plot, draw_to, "--plot", "an image file",
-                            failed=lambda exc: plot_failed(plot, exc), make_folder=False)
+            write_plot(plot, lambda tmp: draw(result, tmp, c.title, lang))
         if out is not None:
             written = _write_out(out, result, formats, c.title, c.source, lang)
     if json:

@@ -79,6 +79,23 @@ def plot_failed(plot: Path, exc: Exception):
         strerror=getattr(exc, "strerror", None))
 
 
+def write_plot(plot: Path, draw) -> None:
+    """The --plot image (task2, aggregate) whole or not at all: ``draw(path)`` draws into a
+    temporary beside it, renamed into place (io.output.write_file_with); a format matplotlib
+    does not know, or a file the system refuses, is one :func:`plot_failed` line."""
+    from flywheel.errors import InputError
+    from flywheel.io.output import write_file_with
+
+    def draw_to(tmp):
+        try:
+            draw(tmp)
+        except ValueError as exc:           # a format matplotlib does not know
+            raise InputError(plot_failed(plot, exc)) from None
+
+    write_file_with(plot, draw_to, "--plot", "an image file",
+                    failed=lambda exc: plot_failed(plot, exc), make_folder=False)
+
+
 def needs_out():
     """The error of --report without --out (task2, aggregate, duty-cycle)."""
     from flywheel.errors import Notice

@@ -70,7 +70,7 @@ def task2_command(
     report: Reports = None,
 ) -> None:
     """Task 2: ω_max, ω_min, ω_ср and δ of a machine with constant J under given M_D(φ), M_C(φ)."""
-    from flywheel.cli.guard import check_lang, guarded, needs_out, plot_failed, solve_finite
+    from flywheel.cli.guard import check_lang, guarded, needs_out, solve_finite, write_plot
     from flywheel.errors import InputError, Notice
 
     given = [(name, v) for name, v in (("--md", md), ("--j", j), ("--omega0", omega0),
@@ -94,16 +94,7 @@ def task2_command(
         if plot is not None:
             from flywheel.render.task2 import plot as draw
 
-            from flywheel.io.output import write_file_with
-
-            def draw_to(tmp):               # a temporary beside the old image, renamed
-                try:
-                    draw(result, tmp, job.title, lang)
-                except ValueError as exc:   # a format matplotlib does not know
-                    raise InputError(plot_failed(plot, exc)) from None
-
-            write_file_with(plot, draw_to, "--plot", "an image file",
-                            failed=lambda exc: plot_failed(plot, exc), make_folder=False)
+            write_plot(plot, lambda tmp: draw(result, tmp, job.title, lang))
         if out is not None:
             written = _write_out(out, result, formats, job, lang)
     if as_json:
