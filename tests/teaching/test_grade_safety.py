@@ -212,10 +212,10 @@ def test_the_stray_byte_message_names_the_byte_and_its_place(class_dir):
 def test_a_guess_the_rest_of_the_sheet_does_not_decode_in_is_refused(class_dir, monkeypatch):
     """The encoding is guessed from the sheet's start; a byte later on that the guess cannot
     decode refuses that sheet (naming the byte), the other sheets are graded."""
-    from flywheel.teaching import grading
+    from flywheel.teaching import grading, sheet_text
 
-    monkeypatch.setattr(grading, "DETECT_BYTES", 400)
-    monkeypatch.setattr(grading, "READ_BYTES", 64)
+    monkeypatch.setattr(sheet_text, "DETECT_BYTES", 400)
+    monkeypatch.setattr(sheet_text, "READ_BYTES", 64)
     data = _russian_sheet(40).encode("cp1251")
     at = len(data) - 20
     (class_dir / "bad.csv").write_bytes(data[:at] + b"\x98" + data[at:])
@@ -229,7 +229,7 @@ def test_a_guess_the_rest_of_the_sheet_does_not_decode_in_is_refused(class_dir, 
 # -- bounded memory: the structure (the figures are benchmarks/bench_grade_memory.py's) -----------
 
 def test_a_sheet_is_read_in_bounded_pieces_and_past_rows_are_not_kept(class_dir, monkeypatch):
-    from flywheel.teaching import grading
+    from flywheel.teaching import grading, sheet_text
 
     sizes = []
     real_open = open
@@ -248,9 +248,9 @@ def test_a_sheet_is_read_in_bounded_pieces_and_past_rows_are_not_kept(class_dir,
             sizes.append(n)
             return self.f.read(n)
 
-    monkeypatch.setattr(grading, "open", lambda *a, **k: Spy(real_open(*a, **k)),
+    monkeypatch.setattr(sheet_text, "open", lambda *a, **k: Spy(real_open(*a, **k)),
                         raising=False)
-    monkeypatch.setattr(grading, "READ_BYTES", 256)
+    monkeypatch.setattr(sheet_text, "READ_BYTES", 256)
     text = "student,variant,M_C,J_required\n" + "".join(
         f"s{i},01,150,30.2\n" for i in range(200)) + "late,99,1,2\n"
     (class_dir / "s.csv").write_text(text)
@@ -277,7 +277,7 @@ def test_the_json_report_in_pieces_is_json_dumps_of_the_whole(class_dir):
 
 def test_problems_past_the_run_limit_are_counted_not_kept(class_dir, monkeypatch):
     """A sheet graded against another class's key: every row a problem."""
-    from flywheel.teaching import grading
+    from flywheel.teaching import grading, sheet_text
 
     monkeypatch.setattr(grading, "MAX_PROBLEMS", 5)
     (class_dir / "wrong.csv").write_text("student,variant,M_C,J_required\n" + "".join(
