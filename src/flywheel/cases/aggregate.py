@@ -24,6 +24,7 @@ from pydantic import Field
 
 from flywheel.errors import CaseFileError, FlywheelError, Notice, led, said
 from flywheel.io.schema import MAX_TEXT, FieldError, StrictModel, load, text_field, validate, within, clean_loc, describe, pick
+from flywheel.cases.document import DocumentSpec
 from flywheel.units import RAD_S_PER_RPM
 
 Pos = Annotated[float, Field(gt=0)]
@@ -132,11 +133,13 @@ class AggregateCase(StrictModel):
     rotors: list[Rotor] | None = None
     shafts: list[Shaft] | None = None
     load: Load | None = None
+    document: DocumentSpec = Field(default_factory=DocumentSpec, description="names for the title page and the title block (docs/case-format.md, [document])")
 
 
 FIELDS = {"(top level)": AggregateCase, "motor": Motor, "coupling": Shaft, "machine": Machine,
           "machine.flywheel": Flywheel, "rotors": Rotor, "shafts": Shaft, "load": Load,
-          "shafts.segments": Segment, "coupling.segments": Segment}
+          "shafts.segments": Segment, "coupling.segments": Segment,
+          "document": DocumentSpec}
 
 
 # -- errors ---------------------------------------------------------------------------------------

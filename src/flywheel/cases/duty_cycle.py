@@ -20,6 +20,7 @@ from flywheel.duty_cycle.solve import (DutyCycle, DutyCycleError, DutyCycleResul
                                        nonfinite, solve)
 from flywheel.errors import CaseFileError, Notice, led, said
 from flywheel.io.schema import FieldError, StrictModel, describe, load, pick, text_field, validate
+from flywheel.cases.document import DocumentSpec
 from flywheel.units import RAD_S_PER_RPM
 
 
@@ -154,9 +155,11 @@ class DutyCase(StrictModel):
     cycle: Cycle | None = None
     motor: Motor | None = None
     flywheel: Flywheel
+    document: DocumentSpec = Field(default_factory=DocumentSpec, description="names for the title page and the title block (docs/case-format.md, [document])")
 
 
-TABLES = {"operation": Operation, "cycle": Cycle, "motor": Motor, "flywheel": Flywheel}
+TABLES = {"operation": Operation, "cycle": Cycle, "motor": Motor, "flywheel": Flywheel,
+          "document": DocumentSpec}
 
 
 def _given(model, keys) -> list[str]:

@@ -16,6 +16,7 @@ from pydantic import BaseModel, Field, Strict, model_validator
 
 from flywheel.errors import CaseFileError, Notice, led
 from flywheel.io.schema import FieldError, StrictModel, at_most, text_field, within, clean_loc, describe, load, loc_str, pick, validate
+from flywheel.cases.document import DocumentSpec
 from flywheel.cases.rim import MATERIALS, RimSpec  # shared with the task2 format
 from flywheel.cases.tabulated import TabulatedSpec
 # the parts of the format in their own modules, re-exported: flywheel.cases.run keeps every name
@@ -274,6 +275,7 @@ class Case(StrictModel):
     motor: MotorSpec | None = None
     output: OutputSpec = Field(default_factory=OutputSpec)
     force_analysis: ForceAnalysisSpec = Field(default_factory=ForceAnalysisSpec)
+    document: DocumentSpec = Field(default_factory=DocumentSpec, description="names for the title page and the title block (docs/case-format.md, [document])")
 
     # -- derived -------------------------------------------------------------------------
     @property

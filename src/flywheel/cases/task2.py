@@ -24,6 +24,7 @@ from flywheel.constant_inertia.solve import (BALANCE_RTOL, Task2Result, balance,
                                             solve_areas)
 from flywheel.errors import CaseFileError, InputError, Notice, led, said
 from flywheel.io.schema import FieldError, StrictModel, at_most, load, text_field, validate, within, clean_loc, describe, loc_str, pick
+from flywheel.cases.document import DocumentSpec
 
 BALANCE = "balance"
 POWER = "power"
@@ -241,9 +242,10 @@ class Task2Case(StrictModel):
     driving: Graph | None = None
     resistance: Graph | None = None
     diagram: Diagram | None = None
+    document: DocumentSpec = Field(default_factory=DocumentSpec, description="names for the title page and the title block (docs/case-format.md, [document])")
 
 
-TOP = {"speed": Speed, "flywheel": Flywheel, "diagram": Diagram}
+TOP = {"speed": Speed, "flywheel": Flywheel, "diagram": Diagram, "document": DocumentSpec}
 NESTED = {("flywheel", "rim"): RimSpec}
 SINGLE_SPEEDS = ("omega0", "omega0_rpm", "mean", "mean_rpm")
 
