@@ -91,6 +91,20 @@ class Row:
     omega: float
     t: float | None = None
 
+    DOCUMENT = (("phi_deg", "phi_deg"), ("phi", "phi_or_none"), "kind", "M_D", "M_C", "A",
+                "omega", "t")
+    KEEP_NONE = ("phi_deg", "phi", "M_D", "M_C", "t")
+
+    @property
+    def phi_deg(self) -> float | None:
+        """φ [deg] (None for no angle)."""
+        return _deg(self.phi)
+
+    @property
+    def phi_or_none(self) -> float | None:
+        """φ [rad], None for no angle."""
+        return None if math.isnan(self.phi) else self.phi
+
 
 @dataclass(frozen=True)
 class AtPoint:
@@ -102,6 +116,14 @@ class AtPoint:
     omega: float
     epsilon: float
     t: float
+
+    DOCUMENT = (("phi_deg", "phi_deg"), "omega", "epsilon", "t")
+    KEEP_NONE = ("phi_deg", "omega", "epsilon", "t")
+
+    @property
+    def phi_deg(self) -> float | None:
+        """φ [deg]."""
+        return _deg(self.phi)
 
 
 @dataclass(frozen=True)
@@ -116,6 +138,19 @@ class Phase:
     t_start: float
     duration: float
     trend: str   # "up" | "down" | "steady"
+
+    DOCUMENT = (("from_deg", "from_deg"), ("to_deg", "to_deg"), "t_start", "duration", "trend")
+    KEEP_NONE = ("from_deg", "to_deg", "t_start", "duration")
+
+    @property
+    def from_deg(self) -> float | None:
+        """Where the stretch starts [deg]."""
+        return _deg(self.phi_start)
+
+    @property
+    def to_deg(self) -> float | None:
+        """Where it ends [deg]."""
+        return _deg(self.phi_end)
 
 
 def _deg(x: float | None) -> float | None:
@@ -190,80 +225,84 @@ class Task2Result:
     rim: object | None = None    # the designed rim (flywheel.dynamics.sizing.RimDesign) of J
     #                              (J_required when δ is asked) at ω_ср
 
+    #: ``flywheel task2 --json``'s keys in order (dynamics/serialize.py); a None entry is left
+    #: out unless kept. Keys of the contract: omega_max, omega_min, omega_mean, delta,
+    #: phi_omega_max_deg, phi_omega_min_deg, delta_T_max, M_C, J_required (only when asked),
+    #: segments; epsilon_max, epsilon_min [rad/s²], phi_epsilon_max_deg, phi_epsilon_min_deg
+    #: [deg], cycle_time [s], at [{phi_deg, omega, epsilon, t}].
+    DOCUMENT = ("omega_max", "omega_min", "omega_mean", "delta",
+                ("phi_omega_max_deg", "phi_omega_max_deg"), ("phi_omega_min_deg", "phi_omega_min_deg"),
+                "delta_T_max", "M_C", "J_required", "M_D", ("balance_found", "unknown"), "J",
+                "omega0", "steady", "omega_end", "work_end", ("cycle_deg", "cycle_deg"),
+                ("rpm", "rpm"), "work_driving", "work_resistance", "power", "delta_target",
+                ("rim_radius", "rim_radius_shown"), "rim_mass",
+                ("radius_of_gyration", "radius_of_gyration_shown"), "flywheel_mass",
+                ("flywheel_rim", "rim"), "epsilon_max", "epsilon_min",
+                ("phi_epsilon_max_deg", "phi_epsilon_max_deg"),
+                ("phi_epsilon_min_deg", "phi_epsilon_min_deg"), "cycle_time", "at", "phases",
+                "work_per_cycle", "energy_fluctuation_coefficient", "power_found",
+                ("segments", "rows"))
+    KEEP_NONE = ("phi_omega_max_deg", "phi_omega_min_deg", "M_C", "M_D", "balance_found",
+                 "work_driving", "work_resistance", "power", "epsilon_max", "epsilon_min",
+                 "phi_epsilon_max_deg", "phi_epsilon_min_deg", "cycle_time", "work_per_cycle",
+                 "energy_fluctuation_coefficient", "power_found")
+
+    @property
+    def phi_omega_max_deg(self) -> float | None:
+        """φ of ω_max [deg] (None when the diagram gives no angle)."""
+        return _deg(self.phi_omega_max)
+
+    @property
+    def phi_omega_min_deg(self) -> float | None:
+        """φ of ω_min [deg]."""
+        return _deg(self.phi_omega_min)
+
+    @property
+    def phi_epsilon_max_deg(self) -> float | None:
+        """φ of ε_max [deg]."""
+        return _deg(self.phi_epsilon_max)
+
+    @property
+    def phi_epsilon_min_deg(self) -> float | None:
+        """φ of ε_min [deg]."""
+        return _deg(self.phi_epsilon_min)
+
+    @property
+    def cycle_deg(self) -> float:
+        """Φ [deg]."""
+        return math.degrees(self.cycle)
+
+    @property
+    def rpm(self) -> dict[str, float]:
+        """The speeds in rev/min: omega0, omega_max, omega_min, omega_mean."""
+        return {"omega0": self.omega0 * RPM_PER_RAD_S, "omega_max": self.omega_max * RPM_PER_RAD_S,
+                "omega_min": self.omega_min * RPM_PER_RAD_S,
+                "omega_mean": self.omega_mean * RPM_PER_RAD_S}
+
+    @property
+    def rim_radius_shown(self) -> float | None:
+        """The rim's mean radius [m], shown with the rim's mass only."""
+        return self.rim_radius if self.rim_mass is not None else None
+
+    @property
+    def radius_of_gyration_shown(self) -> float | None:
+        """k [m], shown with the flywheel's mass only."""
+        return self.radius_of_gyration if self.flywheel_mass is not None else None
+
     def to_document(self, title: str = "", source: str = "") -> dict:
         """The results document, the JSON of ``flywheel task2 --json`` (SI units; angles in
-        degrees where the key says ``_deg``; speeds in rev/min under ``rpm``).
+        degrees where the key says ``_deg``; speeds in rev/min under ``rpm``): ``title`` and
+        ``source`` when given, then :attr:`DOCUMENT` by the one serializer. An angle that is
+        not known (an area diagram without crossing angles) is None; so are ε and the times of
+        an area diagram."""
+        from flywheel.dynamics.serialize import to_json
 
-        Keys of the contract: omega_max, omega_min, omega_mean, delta, phi_omega_max_deg,
-        phi_omega_min_deg, delta_T_max, M_C, J_required (only when asked), segments;
-        epsilon_max, epsilon_min [rad/s²], phi_epsilon_max_deg, phi_epsilon_min_deg [deg],
-        cycle_time [s], at [{phi_deg, omega, epsilon, t}]. An angle that is not known (an area
-        diagram without crossing angles) is None; so are ε and the times of an area diagram.
-        """
         d: dict = {}
         if title:
             d["title"] = title
         if source:
             d["source"] = source
-        d.update({
-            "omega_max": self.omega_max,
-            "omega_min": self.omega_min,
-            "omega_mean": self.omega_mean,
-            "delta": self.delta,
-            "phi_omega_max_deg": _deg(self.phi_omega_max),
-            "phi_omega_min_deg": _deg(self.phi_omega_min),
-            "delta_T_max": self.delta_T_max,
-            "M_C": self.M_C,
-        })
-        if self.J_required is not None:
-            d["J_required"] = self.J_required
-        d.update({
-            "M_D": self.M_D,
-            "balance_found": self.unknown,
-            "J": self.J,
-            "omega0": self.omega0,
-            "steady": self.steady,
-            "omega_end": self.omega_end,
-            "work_end": self.work_end,
-            "cycle_deg": math.degrees(self.cycle),
-            "rpm": {"omega0": self.omega0 * RPM_PER_RAD_S,
-                    "omega_max": self.omega_max * RPM_PER_RAD_S,
-                    "omega_min": self.omega_min * RPM_PER_RAD_S,
-                    "omega_mean": self.omega_mean * RPM_PER_RAD_S},
-            "work_driving": self.work_driving,
-            "work_resistance": self.work_resistance,
-            "power": self.power,
-        })
-        if self.delta_target is not None:
-            d["delta_target"] = self.delta_target
-        if self.rim_mass is not None:
-            d["rim_radius"] = self.rim_radius
-            d["rim_mass"] = self.rim_mass
-        if self.flywheel_mass is not None:
-            d["radius_of_gyration"] = self.radius_of_gyration
-            d["flywheel_mass"] = self.flywheel_mass
-        if self.rim is not None:
-            d["flywheel_rim"] = self.rim.as_dict()
-        d.update({
-            "epsilon_max": self.epsilon_max,
-            "epsilon_min": self.epsilon_min,
-            "phi_epsilon_max_deg": _deg(self.phi_epsilon_max),
-            "phi_epsilon_min_deg": _deg(self.phi_epsilon_min),
-            "cycle_time": self.cycle_time,
-            "at": [{"phi_deg": _deg(a.phi), "omega": a.omega, "epsilon": a.epsilon, "t": a.t}
-                   for a in self.at],
-            "phases": [{"from_deg": _deg(ph.phi_start), "to_deg": _deg(ph.phi_end),
-                        "t_start": ph.t_start, "duration": ph.duration, "trend": ph.trend}
-                       for ph in self.phases],
-            "work_per_cycle": self.work_per_cycle,
-            "energy_fluctuation_coefficient": self.energy_fluctuation_coefficient,
-            "power_found": self.power_found,
-        })
-        d["segments"] = [
-            {"phi_deg": _deg(row.phi), "phi": None if math.isnan(row.phi) else row.phi,
-             "kind": row.kind, "M_D": row.M_D, "M_C": row.M_C, "A": row.A, "omega": row.omega,
-             "t": row.t}
-            for row in self.rows]
+        d.update(to_json(self))
         return d
 
 
