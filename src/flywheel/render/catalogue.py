@@ -33,10 +33,26 @@ def _english() -> dict[str, str]:
     """msgctxt → msgid of the catalogue's singular entries: the English template of a Notice's
     code, the English label of a "term:"/"prefix:"/"stage:" key (what ``pgettext`` needs)."""
     out = {}
-    for key in catalogue("ru")._catalog:       # gettext keeps "msgctxt\x04msgid" keys
-        if isinstance(key, str) and "\x04" in key:
+    for key in _mo_msgids(LOCALE / "ru" / "LC_MESSAGES" / f"{DOMAIN}.mo"):
+        if "\x04" in key and "\x00" not in key:     # "msgctxt\x04msgid"; plurals: "one\x00many"
             ctx, msgid = key.split("\x04", 1)
             out[ctx] = msgid
+    return out
+
+
+def _mo_msgids(path: Path) -> list[str]:
+    """The original strings of a compiled GNU catalogue, in its order (the .mo layout of the GNU
+    gettext manual, "The Format of GNU MO Files": a magic number, the revision, the count N, the
+    offset of the table of originals; each entry a length and an offset; UTF-8)."""
+    import struct
+
+    data = path.read_bytes()
+    order = "<" if struct.unpack("<I", data[:4])[0] == 0x950412DE else ">"
+    _magic, _revision, n, originals = struct.unpack(order + "4I", data[:16])
+    out = []
+    for i in range(n):
+        length, offset = struct.unpack(order + "II", data[originals + 8 * i: originals + 8 * i + 8])
+        out.append(data[offset: offset + length].decode("utf-8"))
     return out
 
 
