@@ -24,7 +24,7 @@ ALLOWED: dict[str, set[str]] = {
     "dynamics": {"errors", "io", "linkage"},
     "constant_inertia": {"errors", "io", "dynamics"},
     "elastic": {"errors", "io", "dynamics"},
-    "duty_cycle": {"errors"},
+    "duty_cycle": {"errors", "io"},
     "cases": {"errors", "io", "linkage", "dynamics", "constant_inertia", "elastic", "duty_cycle"},
     "teaching": {"errors", "io", "linkage", "dynamics", "constant_inertia", "elastic",
                  "duty_cycle", "cases"},

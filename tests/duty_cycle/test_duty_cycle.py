@@ -496,5 +496,5 @@ def test_the_domain_imports_no_presentation():
                   if isinstance(n, ast.ImportFrom)}
         assert not names & {"typer", "rich", "matplotlib", "pydantic"}, path
         mods = {n.module for n in ast.walk(tree) if isinstance(n, ast.ImportFrom) and n.module}
-        assert all(m.split(".")[1] in ("errors", "units", "duty_cycle") for m in mods
+        assert all(m.split(".")[1] in ("errors", "units", "duty_cycle", "io") for m in mods
                    if m.startswith("flywheel.")), path

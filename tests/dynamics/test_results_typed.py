@@ -1,4 +1,4 @@
-"""The typed results and their one serializer (dynamics/serialize.py): summary.json of every
+"""The typed results and their one serializer (io/serialize.py): summary.json of every
 bundled run case validates against `flywheel schema --results`, the serializer's None rules,
 and a missing quantity is an error where the result is built, not a silent default."""
 from __future__ import annotations
@@ -14,7 +14,7 @@ from flywheel.cases.run import load_case
 from flywheel.dynamics.pipeline import analyze
 from flywheel.dynamics.results import (FlywheelShape, Headline, Rundown, StartupRun,
                                        summary_json_schema)
-from flywheel.dynamics.serialize import to_json
+from flywheel.io.serialize import to_json
 
 CASES = Path(__file__).resolve().parents[2] / "cases"
 RUN_CASES = ["compressor", "compressor_given_flywheel", "compressor_worksheet", "engine_4stroke",

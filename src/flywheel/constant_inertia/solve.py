@@ -225,7 +225,7 @@ class Task2Result:
     rim: object | None = None    # the designed rim (flywheel.dynamics.sizing.RimDesign) of J
     #                              (J_required when δ is asked) at ω_ср
 
-    #: ``flywheel task2 --json``'s keys in order (dynamics/serialize.py); a None entry is left
+    #: ``flywheel task2 --json``'s keys in order (io/serialize.py); a None entry is left
     #: out unless kept. Keys of the contract: omega_max, omega_min, omega_mean, delta,
     #: phi_omega_max_deg, phi_omega_min_deg, delta_T_max, M_C, J_required (only when asked),
     #: segments; epsilon_max, epsilon_min [rad/s²], phi_epsilon_max_deg, phi_epsilon_min_deg
@@ -295,7 +295,7 @@ class Task2Result:
         ``source`` when given, then :attr:`DOCUMENT` by the one serializer. An angle that is
         not known (an area diagram without crossing angles) is None; so are ε and the times of
         an area diagram."""
-        from flywheel.dynamics.serialize import to_json
+        from flywheel.io.serialize import to_json
 
         d: dict = {}
         if title:

@@ -71,6 +71,10 @@ class Work:
     thickness: float | None = None
     shape: str | None = None
 
+    #: its document's keys (``work`` of the duty-cycle JSON; every None written as null)
+    DOCUMENT = ("sheared_area", "energy_per_area", "force_max", "thickness", "shape")
+    KEEP_NONE = DOCUMENT
+
 
 @dataclass(frozen=True)
 class DutyCycle:
@@ -170,55 +174,81 @@ class DutyCycleResult:
     checks: tuple[tuple[str, float], ...]
     warnings: tuple[str, ...]
 
+    #: the JSON document's keys in order (io/serialize.py; every None is written as null):
+    #: docs/duty-cycle.md "Results"
+    DOCUMENT = ("energy", "delta_E", "energy_fluctuation_coefficient", "motor_power",
+                "motor_input_power", "motor_torque", "mean_power", "efficiency", "omega_max",
+                "omega_min", "omega_mean", "rpm_max", "rpm_min", "rpm_mean", "rim_speed_max",
+                "rim_speed_min", "rim_speed_mean", "delta", "J", "mass", "radius",
+                "operation_time", "operation_angle_deg", "operation_share", "operation_moment",
+                "recovery_time", "recovery_angle_deg", "idle_time", "idle_angle_deg",
+                "cycle_time", "cycle_angle_deg", "revolutions_per_operation",
+                "operations_per_hour", "operations_per_minute", "flywheel_given", "work",
+                ("checks", "checks_by_name"), "warnings")
+    KEEP_NONE = DOCUMENT
+
+    @property
+    def rpm_max(self) -> float | None:
+        """ω_max [rev/min]."""
+        return _rpm(self.omega_max)
+
+    @property
+    def rpm_min(self) -> float | None:
+        """ω_min [rev/min]."""
+        return _rpm(self.omega_min)
+
+    @property
+    def rpm_mean(self) -> float | None:
+        """ω_ср [rev/min]."""
+        return _rpm(self.omega_mean)
+
+    @property
+    def operation_angle_deg(self) -> float | None:
+        """The operation's angle of the flywheel shaft [deg]."""
+        return _deg(self.operation_angle)
+
+    @property
+    def recovery_angle_deg(self) -> float | None:
+        """The recovery's angle [deg]."""
+        return _deg(self.recovery_angle)
+
+    @property
+    def idle_angle_deg(self) -> float | None:
+        """The idle run's angle [deg]."""
+        return _deg(self.idle_angle)
+
+    @property
+    def cycle_angle_deg(self) -> float | None:
+        """The cycle's angle [deg]."""
+        return _deg(self.cycle_angle)
+
+    @property
+    def operations_per_minute(self) -> float | None:
+        """Operations per minute [1/min]."""
+        return None if self.operations_per_hour is None else self.operations_per_hour / 60.0
+
+    @property
+    def checks_by_name(self) -> dict[str, float]:
+        """The identities' residuals by name [J or s]."""
+        return {name: value for name, value in self.checks}
+
     def to_document(self) -> dict:
         """The JSON document (SI; angles in degrees where the key ends ``_deg``; speeds also in
-        rev/min where it ends ``_rpm``). Keys: see docs/duty-cycle.md "Results"."""
-        deg = (lambda x: None if x is None else math.degrees(x))
-        rpm = (lambda x: None if x is None else x * RPM_PER_RAD_S)
-        w = self.work
-        return {
-            "energy": self.energy,
-            "delta_E": self.delta_E,
-            "energy_fluctuation_coefficient": self.energy_fluctuation_coefficient,
-            "motor_power": self.motor_power,
-            "motor_input_power": self.motor_input_power,
-            "motor_torque": self.motor_torque,
-            "mean_power": self.mean_power,
-            "efficiency": self.efficiency,
-            "omega_max": self.omega_max,
-            "omega_min": self.omega_min,
-            "omega_mean": self.omega_mean,
-            "rpm_max": rpm(self.omega_max),
-            "rpm_min": rpm(self.omega_min),
-            "rpm_mean": rpm(self.omega_mean),
-            "rim_speed_max": self.rim_speed_max,
-            "rim_speed_min": self.rim_speed_min,
-            "rim_speed_mean": self.rim_speed_mean,
-            "delta": self.delta,
-            "J": self.J,
-            "mass": self.mass,
-            "radius": self.radius,
-            "operation_time": self.operation_time,
-            "operation_angle_deg": deg(self.operation_angle),
-            "operation_share": self.operation_share,
-            "operation_moment": self.operation_moment,
-            "recovery_time": self.recovery_time,
-            "recovery_angle_deg": deg(self.recovery_angle),
-            "idle_time": self.idle_time,
-            "idle_angle_deg": deg(self.idle_angle),
-            "cycle_time": self.cycle_time,
-            "cycle_angle_deg": deg(self.cycle_angle),
-            "revolutions_per_operation": self.revolutions_per_operation,
-            "operations_per_hour": self.operations_per_hour,
-            "operations_per_minute": (None if self.operations_per_hour is None
-                                      else self.operations_per_hour / 60.0),
-            "flywheel_given": self.flywheel_given,
-            "work": None if w is None else {
-                "sheared_area": w.sheared_area, "energy_per_area": w.energy_per_area,
-                "force_max": w.force_max, "thickness": w.thickness, "shape": w.shape},
-            "checks": {name: value for name, value in self.checks},
-            "warnings": list(self.warnings),
-        }
+        rev/min where it ends ``_rpm``), by the one serializer. Keys: see docs/duty-cycle.md
+        "Results"."""
+        from flywheel.io.serialize import to_json
+
+        return to_json(self)
+
+
+def _deg(x: float | None) -> float | None:
+    """Radians → degrees; None stays None."""
+    return None if x is None else math.degrees(x)
+
+
+def _rpm(x: float | None) -> float | None:
+    """rad/s → rev/min; None stays None."""
+    return None if x is None else x * RPM_PER_RAD_S
 
 
 # -- the cycle for given speeds -----------------------------------------------------------------

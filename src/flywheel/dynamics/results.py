@@ -13,7 +13,7 @@ from functools import cached_property
 
 import numpy as np
 
-from flywheel.dynamics.serialize import json_schema, to_json
+from flywheel.io.serialize import json_schema, to_json
 from flywheel.dynamics.sizing import RimDesign
 from flywheel.linkage.drawing import Drawing
 
@@ -815,7 +815,7 @@ class Results:
 
 def summary_json_schema() -> dict:
     """The JSON Schema of summary.json (``flywheel schema --results``), read off the result
-    dataclasses by :func:`flywheel.dynamics.serialize.json_schema`: ``results`` is the
+    dataclasses by :func:`flywheel.io.serialize.json_schema`: ``results`` is the
     :class:`Headline` with ``at``, a list of :class:`AtAngle`. Floats may be null (a
     non-finite value is written as null)."""
     results = json_schema(Headline)

@@ -174,7 +174,7 @@ class RimDesign:
         """summary.json's results.flywheel_rim (and ``task2 --json``'s flywheel_rim): the
         contract keys D_mean, thickness, width, mass, rim_speed, stress, share, then the outer
         and inner diameters and the width under the plain rim's names (D, D_inner, b)."""
-        from flywheel.dynamics.serialize import to_json
+        from flywheel.io.serialize import to_json
 
         return to_json(self)
 

@@ -1,7 +1,7 @@
 """`flywheel duty-cycle` output: the JSON document and the rich summary.
 
 Renderers compute no physics: they format a :class:`flywheel.duty_cycle.solve.DutyCycleResult`
-(its ``to_document()``). Every label comes from :mod:`flywheel.render.nomenclature`; this module
+(by attribute). Every label comes from :mod:`flywheel.render.nomenclature`; this module
 keeps only the sentence templates. rich is imported inside the function that prints; every text
 handed to rich goes through :func:`rich.markup.escape`.
 """
@@ -61,7 +61,7 @@ def summary_tables(r, lang: str = "en") -> list[tuple[str, tuple, list, str, tup
     t = L10N[lang]
     head = (t["quantity"], t["symbol"], t["value"], t["unit"])
     just = ("left", "left", "right", "left")
-    d, w = r.to_document(), r.work
+    w = r.work
 
     def work(name: str):
         return None if w is None else getattr(w, name)
@@ -69,40 +69,40 @@ def summary_tables(r, lang: str = "en") -> list[tuple[str, tuple, list, str, tup
     out = [(t["operation"], head, _rows([
         ("sheared_area", work("sheared_area")), ("energy_per_area", work("energy_per_area")),
         ("force_max", work("force_max")), ("plate_thickness", work("thickness")),
-        ("energy_per_operation", d["energy"]), ("delta_E", d["delta_E"]),
-        ("energy_fluctuation_coefficient", d["energy_fluctuation_coefficient"]),
-        ("operation_moment", d["operation_moment"])], lang)
+        ("energy_per_operation", r.energy), ("delta_E", r.delta_E),
+        ("energy_fluctuation_coefficient", r.energy_fluctuation_coefficient),
+        ("operation_moment", r.operation_moment)], lang)
         + ([(nm.name("force_shape", lang), nm.symbol("force_shape", lang),
              t["shape"][shape], nm.unit_of("force_shape", lang))] if shape else []), "", just)]
     out.append((t["motor"], head, _rows([
-        ("motor_power", d["motor_power"]),
-        ("motor_efficiency", d["efficiency"] if d["efficiency"] != 1.0 else None),
-        ("motor_input_power", d["motor_input_power"] if d["efficiency"] != 1.0 else None),
-        ("motor_torque", d["motor_torque"]), ("mean_power", d["mean_power"]),
-        ("operations_per_hour", d["operations_per_hour"]),
-        ("operations_per_minute", d["operations_per_minute"]),
-        ("revolutions_per_operation", d["revolutions_per_operation"])], lang), "", just))
+        ("motor_power", r.motor_power),
+        ("motor_efficiency", r.efficiency if r.efficiency != 1.0 else None),
+        ("motor_input_power", r.motor_input_power if r.efficiency != 1.0 else None),
+        ("motor_torque", r.motor_torque), ("mean_power", r.mean_power),
+        ("operations_per_hour", r.operations_per_hour),
+        ("operations_per_minute", r.operations_per_minute),
+        ("revolutions_per_operation", r.revolutions_per_operation)], lang), "", just))
     out.append((t["speeds"], head, _rows([
-        ("rpm_max", d["rpm_max"]), ("rpm_min", d["rpm_min"]), ("rpm_mean", d["rpm_mean"]),
-        ("omega_max", d["omega_max"]), ("omega_min", d["omega_min"]),
-        ("omega_mean", d["omega_mean"]),
-        ("rim_speed_max", d["rim_speed_max"]), ("rim_speed_min", d["rim_speed_min"]),
-        ("rim_speed_mean", d["rim_speed_mean"]), ("speed_fluctuation", d["delta"])], lang), "",
+        ("rpm_max", r.rpm_max), ("rpm_min", r.rpm_min), ("rpm_mean", r.rpm_mean),
+        ("omega_max", r.omega_max), ("omega_min", r.omega_min),
+        ("omega_mean", r.omega_mean),
+        ("rim_speed_max", r.rim_speed_max), ("rim_speed_min", r.rim_speed_min),
+        ("rim_speed_mean", r.rim_speed_mean), ("speed_fluctuation", r.delta)], lang), "",
         just))
     out.append((t["flywheel"], head, _rows([
-        ("flywheel_J", d["J"]), ("flywheel_radius", d["radius"]), ("flywheel_mass", d["mass"])],
-        lang), t["no_radius"] if d["omega_max"] is None else "", just))
-    if d["cycle_time"] is not None:
+        ("flywheel_J", r.J), ("flywheel_radius", r.radius), ("flywheel_mass", r.mass)],
+        lang), t["no_radius"] if r.omega_max is None else "", just))
+    if r.cycle_time is not None:
         rows = [(f"{nm.name(k, lang)} ({nm.symbol(k, lang)})", _g(time), _g(angle))
                 for k, time, angle in (
-                    ("operation_time", d["operation_time"], d["operation_angle_deg"]),
-                    ("recovery_time", d["recovery_time"], d["recovery_angle_deg"]),
-                    ("idle_time", d["idle_time"], d["idle_angle_deg"]),
-                    ("cycle_phase", d["cycle_time"], d["cycle_angle_deg"]))]
+                    ("operation_time", r.operation_time, r.operation_angle_deg),
+                    ("recovery_time", r.recovery_time, r.recovery_angle_deg),
+                    ("idle_time", r.idle_time, r.idle_angle_deg),
+                    ("cycle_phase", r.cycle_time, r.cycle_angle_deg))]
         out.append((t["timing"], (t["phase"], *(f"{nm.symbol(k, lang)}, {nm.unit_of(k, lang)}"
                                                 for k in ("phase_time", "phase_angle_deg"))),
                     rows, f"{nm.name('operation_share', lang)}: "
-                          f"{nm.symbol('operation_share', lang)} = {_g(d['operation_share'])}",
+                          f"{nm.symbol('operation_share', lang)} = {_g(r.operation_share)}",
                     ("left", "right", "right")))
     return out
 
@@ -115,7 +115,6 @@ def print_summary(r, title: str = "", source: str = "", lang: str = "en", consol
 
     console = console or Console()
     t = L10N[lang]
-    d = r.to_document()
     if title:
         from flywheel.io.text import cut_end   # a long title or source cut with «…»
 
@@ -131,11 +130,11 @@ def print_summary(r, title: str = "", source: str = "", lang: str = "en", consol
             console.print(tab)
         if note:
             console.print(escape(note))
-    if d["checks"]:
+    if r.checks:
         tab = Table(title=escape(t["checks"]), title_justify="left")
         tab.add_column(t["quantity"])
         tab.add_column(t["value"], justify="right")
         tab.add_column(t["unit"])
-        for k, v in d["checks"].items():
+        for k, v in r.checks:
             tab.add_row(escape(nm.name(k, lang)), f"{v:.1e}", nm.unit_of(k, lang))
         console.print(tab)

@@ -6,7 +6,7 @@ report.md/.html/.pdf/.docx like the one of `flywheel run`.
 Sections: the method with its formulas, the operation, the motor, the speeds, the flywheel and
 the timing (the same tables as the summary, render/duty_cycle.py ``summary_tables``), the checks,
 the warnings and the sources. There is no figure (the command draws none). Every number is the
-result's document (``DutyCycleResult.to_document()``).
+result (``DutyCycleResult``, by attribute).
 """
 from __future__ import annotations
 
@@ -32,7 +32,6 @@ T = words("report_duty_cycle", {
 def build_duty_cycle_document(r, title: str, source: str, lang: str = "en") -> Document:
     """The записка of one duty-cycle result."""
     t = T[lang]
-    d = r.to_document()
     doc = Document.titled(t["title"], title, source, t["source"], lang)
     add, table = doc.blocks.append, doc.add_table
     add(Heading(2, t["method"]))
@@ -52,13 +51,13 @@ def build_duty_cycle_document(r, title: str, source: str, lang: str = "en") -> D
             table(caption, header, rows)
         if note:
             add(Paragraph(note))
-    if d["checks"]:
+    if r.checks:
         from flywheel.render.duty_cycle import L10N
 
         add(Heading(2, t["checks"]))
         L = L10N[lang]
         table(L["checks"], (L["quantity"], L["value"], L["unit"]),
-              [(nm.name(k, lang), f"{v:.1e}", nm.unit_of(k, lang)) for k, v in d["checks"].items()])
+              [(nm.name(k, lang), f"{v:.1e}", nm.unit_of(k, lang)) for k, v in r.checks])
     if r.warnings:
         add(Heading(2, t["warn"]))
         add(Bullets(tuple(nm.message(w, lang) for w in r.warnings)))
