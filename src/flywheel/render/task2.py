@@ -222,12 +222,19 @@ def plot(r, path, title: str = "", lang: str = "en") -> None:
         ax = axes[2]
         ax.axhline(r.omega_mean, color="grey", linestyle="--", linewidth=0.8,
                    label=L("t2_plot_omega_mean"))
+        for value, phi, key, marker in ((r.omega_max, r.phi_omega_max, "t2_plot_omega_max", "^"),
+                                        (r.omega_min, r.phi_omega_min, "t2_plot_omega_min", "v")):
+            if phi is not None and not math.isnan(phi):      # an area diagram may give no angle
+                ax.plot([math.degrees(phi)], [value], marker, color="tab:red",
+                        label=L(key, value=f"{value:.6g}", deg=f"{math.degrees(phi):.4g}"))
         ax.set_ylabel(L("t2_plot_omega_axis"))
         ax.ticklabel_format(axis="y", useOffset=False)      # 200.01, not "+2e2" and 0.01
         phi_known = r.driving is not None or not math.isnan(r.rows[0].phi)
         axes[-1].set_xlabel(L("t2_plot_phi_axis") if phi_known else L("t2_plot_crossing_no"))
         if phi_known:
-            axes[-1].set_xticks(range(0, 361, 30))
+            cycle_deg = round(math.degrees(r.cycle))
+            step = 30 if cycle_deg <= 360 else 60 if cycle_deg <= 720 else 90 * (cycle_deg // 1080 + 1)
+            axes[-1].set_xticks(range(0, cycle_deg + 1, step))
         ax.legend()
         for a in axes:
             if a is not None:
