@@ -34,7 +34,7 @@ def aggregate_command(
                                "has them)."),
     out: Optional[Path] = typer.Option(None, "--out", "-o", help="Also write an output folder: "
                                        "summary.json (as --json), plots/aggregate.png (with a "
-                                       "[motor]) and the report (see --report); a rerun replaces "
+                                       "\\[motor]) and the report (see --report); a rerun replaces "
                                        "only its own files."),
     report: Reports = None,
 ) -> None:
