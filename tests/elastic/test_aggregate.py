@@ -692,3 +692,19 @@ def test_cli_plot_that_fails_leaves_the_old_image_and_no_temporary(tmp_path, mon
     assert out.read_bytes() == b"<svg>the old one</svg>"
     assert [p.name for p in tmp_path.iterdir()] == ["agg.svg"]
 
+
+
+@pytest.mark.parametrize("case", sorted(p.name for p in CASES.glob("aggregate*.toml")))
+def test_the_json_document_fits_the_schema_of_its_typed_entries(case):
+    """aggregate --json is written by the one serializer from elastic/document.py's typed
+    entries: every bundled case's document (with the start-up run) validates against the JSON
+    Schema read off them, so a renamed key or a changed type fails here."""
+    from dynamics.test_results_typed import errors
+    from flywheel.elastic.document import AggregateDocument
+    from flywheel.io.serialize import json_schema
+
+    res = cli(CASES / case, "--json", "--t-end", "0.2")
+    assert res.exit_code == 0, err_text(res)
+    doc = json.loads(res.stdout)
+    doc.pop("title", None), doc.pop("source", None)
+    assert errors(doc, json_schema(AggregateDocument)) == []

@@ -59,7 +59,6 @@ from flywheel.elastic.timedomain import (CHECK_FAST_PERIODS, MAX_FAST_PERIODS, H
                                          start_up,
                                          start_up_duration, steady_method, steady_run)
 from flywheel.errors import InputError
-from flywheel.units import RPM_PER_RAD_S, TWO_PI
 
 
 @dataclass(frozen=True)
@@ -107,10 +106,6 @@ class Note:
     def text(self) -> str:
         """The note in English, as the results document has it."""
         return NOTE_TEXT[self.kind].format(**dict(self.values))
-
-
-def _f(x):
-    return None if x is None else float(x)
 
 
 @dataclass(frozen=True)
@@ -163,78 +158,15 @@ class AggregateResult:
         reference_diameter [m] and shear_modulus [Pa] (null without a geometry); fixed_ends:
         the names of the rotors fixed to the frame.
         """
-        ch, st = self.chain, self.steady
+        from flywheel.elastic.document import document
+        from flywheel.io.serialize import to_json
+
         d: dict = {}
         if title:
             d["title"] = title
         if source:
             d["source"] = source
-        d.update({
-            "natural_frequencies_hz": [float(w) / TWO_PI for w in self.modes.elastic],
-            "twist_amplitude": _f(st.twist_amplitude[0]) if st else None,
-            "elastic_moment_amplitude": _f(st.moment_amplitude[0]) if st else None,
-            "delta_motor": _f(st.delta[0]) if st else None,
-            "delta_machine": _f(st.delta[-1]) if st else None,
-            "natural_frequencies_rad_s": [float(w) for w in self.modes.elastic],
-            "rotors": [{"name": n, "J_reduced": float(j), "speed_ratio": float(u)}
-                       for n, j, u in zip(ch.names, ch.J, ch.ratio)],
-            "connections": [{"c_reduced": float(c), "damping_reduced": float(b)}
-                            for c, b in zip(ch.c, ch.damping)],
-            "a": self.a.tolist(),
-            "c": self.c.tolist(),
-            "mode_shapes": self.modes.elastic_shapes.T.tolist(),
-        })
-        d["natural_frequencies_rpm"] = [float(w) * RPM_PER_RAD_S for w in self.modes.elastic]
-        d["modes"] = [
-            {"natural_hz": float(w) / TWO_PI, "natural_rpm": float(w) * RPM_PER_RAD_S,
-             "natural_rad_s": float(w), "shape": [float(x) for x in shape],
-             "nodes": [{"shaft": n.shaft, "between": None if n.between is None else list(n.between),
-                        "fraction": n.fraction, "distance": n.distance, "rotor": n.rotor}
-                       for n in nodes]}
-            for w, shape, nodes in zip(self.modes.elastic, self.modes.elastic_shapes.T, self.nodes)]
-        u = {n: float(x) for n, x in zip(ch.names, ch.ratio)}
-        d["shafts"] = [
-            {"between": list(line.names), "gear_ratio": line.gear, "c": line.c_input,
-             "c_reduced": line.c_input * (u[line.names[0]] if line.ends[0] >= 0
-                                          else u[line.names[1]] / line.gear) ** 2,
-             "length": line.total_length, "equivalent_length": line.equivalent_length,
-             "reference_diameter": line.d_ref, "shear_modulus": line.G_ref}
-            for line in ch.lines]
-        d["fixed_ends"] = list(ch.frames)
-        if st is not None:
-            dr = self.drive
-            u_last = float(ch.ratio[-1])
-            d["motor"] = {"characteristic": dr.kind, "starting_torque": dr.M_start,
-                          "synchronous_speed": dr.omega_x, "M0_reduced": dr.M0,
-                          "amplitude_reduced": dr.amplitude}
-            d["steady"] = {
-                "omega_motor": st.omega_mean,
-                "omega_machine": st.omega_mean * u_last,
-                "omega_forcing": st.omega_forcing,
-                "forcing_hz": st.omega_forcing / TWO_PI,
-                "omega_motor_max": st.omega_mean + float(st.omega_amplitude[0]),
-                "omega_motor_min": st.omega_mean - float(st.omega_amplitude[0]),
-                "omega_machine_max": (st.omega_mean + float(st.omega_amplitude[-1])) * u_last,
-                "omega_machine_min": (st.omega_mean - float(st.omega_amplitude[-1])) * u_last,
-                "twist_mean": [float(x) for x in st.twist_mean],       # q = φ_(k+1) − φ_k
-                "twist_amplitudes": [float(x) for x in st.twist_amplitude],
-                "elastic_moment_mean": [float(x) for x in st.moment_mean],  # −c·q, transmitted
-                "elastic_moment_amplitudes": [float(x) for x in st.moment_amplitude],
-                "delta": [float(x) for x in st.delta],
-            }
-            d["resonance"] = [{"natural_hz": x.omega_n / TWO_PI, "ratio": x.ratio,
-                               "margin": x.margin} for x in self.resonance]
-            if self.check is not None:
-                d["time_domain"] = {
-                    "twist_amplitude": self.check_twist_amplitude,
-                    "delta_motor": self.check_delta[0],
-                    "delta_machine": self.check_delta[1],
-                    "start_up_duration": float(self.startup.t[-1]),
-                    "start_up_peak_elastic_moment": self.startup_peak_moment,
-                    "start_up_time_to_95_percent": self.startup_time,
-                    "steady_check_method": self.check.method,
-                }
-            d["notes"] = [note.text for note in self.notes]
+        d.update(to_json(document(self)))
         return d
 
 
