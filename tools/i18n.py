@@ -42,6 +42,10 @@ LABEL_CALLS = {"label": (0, 1)}               # label(context, english)
 WORDS_CALLS = {"words"}
 #: the note an entry of ``words`` carries (update drops such an entry once its key is gone)
 WORDS_NOTE = "a sentence of a renderer: words("
+#: msgctxt and note of a case field's description (the JSON Schema of `flywheel schema`, the
+#: generated field references docs/case-fields.md and docs/ru/case-format.md)
+FIELD_CONTEXT = "field"
+FIELD_NOTE = "a case field's description: "
 
 
 def _template(node: ast.expr, params: dict[str, str]) -> tuple[str, bool]:
@@ -135,6 +139,15 @@ def extract_words(package: Path = PACKAGE) -> dict[str, dict]:
     return found
 
 
+def extract_fields() -> dict[str, list[str]]:
+    """Every description of the case-file schema (`flywheel schema`: the fields' and the
+    tables' own), English → the schema paths that use it."""
+    sys.path.insert(0, str(PACKAGE.parent))
+    from flywheel.cases.describe import descriptions
+
+    return descriptions()
+
+
 def new_catalog():
     """An empty Russian catalogue with its header (Babel)."""
     from babel.messages.catalog import Catalog
@@ -180,7 +193,7 @@ _EPOCH = _dt.datetime(2026, 1, 1, tzinfo=_dt.timezone.utc)
 # -- the commands -----------------------------------------------------------------------------------
 def is_notice(context: str | None) -> bool:
     """A Notice's entry (msgctxt = its code) rather than a "kind:key" label or a "count"."""
-    return bool(context) and ":" not in context and context != "count"
+    return bool(context) and ":" not in context and context not in ("count", FIELD_CONTEXT)
 
 
 def pot():
@@ -195,6 +208,9 @@ def pot():
     for ctx, e in extract_words().items():
         cat.add(e["msgid"], "", locations=e["locs"], context=ctx,
                 auto_comments=[f"{WORDS_NOTE}\"{e['kind']}\", …)"])
+    for english, paths in extract_fields().items():
+        cat.add(english, "", context=FIELD_CONTEXT,
+                auto_comments=[FIELD_NOTE + ", ".join(paths[:3]) + (" …" if len(paths) > 3 else "")])
     return cat
 
 
@@ -206,14 +222,15 @@ def update(po=None, template=None):
     io/schema.py from pydantic's error types) kept as they are."""
     po = read_po() if po is None else po
     template = pot() if template is None else template
-    codes = {m.context: m for m in template if m.id}
+    codes = {_key(m): m for m in template if m.id}
     out = new_catalog()
     out._messages.clear()
     for m in po:
         if not m.id:
             continue
-        said = is_notice(m.context) or any(WORDS_NOTE in c for c in m.auto_comments)
-        new = codes.pop(m.context, None) if said or m.context in codes else None
+        said = is_notice(m.context) or any(WORDS_NOTE in c or FIELD_NOTE in c
+                                           for c in m.auto_comments)
+        new = codes.pop(_key(m), None) if said or _key(m) in codes else None
         if new is None:
             if said and not m.locations == [("src/flywheel/io/schema.py", 151)]:
                 continue                                   # no longer raised or said
@@ -223,10 +240,16 @@ def update(po=None, template=None):
         flags = set(m.flags) | ({"fuzzy"} if new.id != m.id else set())
         out.add(new.id, m.string, locations=new.locations, flags=flags,
                 auto_comments=new.auto_comments, context=m.context)
-    for code, new in codes.items():
+    for new in codes.values():
         out.add(new.id, "", locations=new.locations, auto_comments=new.auto_comments,
-                context=code)
+                context=new.context)
     return out
+
+
+def _key(m):
+    """An entry's identity across an update: its msgctxt, and for a field's description (one
+    context, many entries) the English too."""
+    return (m.context, m.id) if m.context == FIELD_CONTEXT else m.context
 
 
 def problems(po=None) -> list[str]:
@@ -249,6 +272,8 @@ def problems(po=None) -> list[str]:
         forms = m.string if isinstance(m.string, tuple) else (m.string,)
         if not all(forms) or len(forms) not in (1, 3):
             out.append(f"{where}: not translated")
+            continue
+        if m.context == FIELD_CONTEXT:         # a description: prose, its braces no fields
             continue
         if not is_notice(m.context):           # a label, a count: the same fields in each form
             ids = m.id if isinstance(m.id, tuple) else (m.id,)

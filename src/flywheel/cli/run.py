@@ -19,10 +19,13 @@ from flywheel.errors import Notice
 
 
 def schema_command(results: bool = typer.Option(
-        False, "--results", help="The JSON Schema of a run's summary.json instead (docs/results.md).")) -> None:
-    """Print the JSON Schema of case files (for editors: completion and checking), or with
-    --results that of summary.json."""
+        False, "--results", help="The JSON Schema of a run's summary.json instead (docs/results.md)."),
+        lang: Lang = "en") -> None:
+    """Print the JSON Schema of case files (for editors: completion and checking; --lang ru: the
+    fields described in Russian), or with --results that of summary.json."""
     import json
+
+    check_lang(lang)
 
     if results:
         from flywheel.dynamics.results import summary_json_schema
@@ -30,8 +33,9 @@ def schema_command(results: bool = typer.Option(
         typer.echo(json.dumps(summary_json_schema(), indent=2, ensure_ascii=False))
         return
     from flywheel.cases.run import case_json_schema
+    from flywheel.render.catalogue import translated_schema
 
-    typer.echo(json.dumps(case_json_schema(), indent=2, ensure_ascii=False))
+    typer.echo(json.dumps(translated_schema(case_json_schema(), lang), indent=2, ensure_ascii=False))
 
 
 def check_command(case: Path = typer.Argument(..., help="Case file (TOML)."),

@@ -63,7 +63,7 @@ def has(context: str) -> bool:
 
 def notice_codes() -> set[str]:
     """The codes of the Notices the catalogue says (its msgctxts that are no "kind:key")."""
-    return {ctx for ctx in _english() if ":" not in ctx}
+    return {ctx for ctx in _english() if ":" not in ctx and ctx != "field"}
 
 
 def entry(context: str, lang: str = "en") -> str:
@@ -99,3 +99,20 @@ def words(kind: str, english: dict) -> dict[str, dict]:
                 for k, v in d.items()}
 
     return {"en": english, "ru": said(english, "")}
+
+
+def description(english: str, lang: str = "en") -> str:
+    """A case field's description (msgctxt "field", tools/i18n.py extracts them from the schema)
+    in ``lang``; English, or a description the catalogue does not have yet, as it is."""
+    return english if lang != "ru" or not english else catalogue("ru").pgettext("field", english)
+
+
+def translated_schema(schema, lang: str = "en"):
+    """The JSON Schema with every ``description`` in ``lang`` (`flywheel schema --lang ru`: an
+    editor's completion then speaks Russian); the rest as it is."""
+    if isinstance(schema, dict):
+        return {k: description(v, lang) if k == "description" and isinstance(v, str)
+                else translated_schema(v, lang) for k, v in schema.items()}
+    if isinstance(schema, list):
+        return [translated_schema(v, lang) for v in schema]
+    return schema
