@@ -25,11 +25,25 @@ def num(v: float, lang: str, sig: int = 4) -> str:
     return s.replace(".", ",").replace("-", "−") if lang == "ru" else s.replace("−", "-")
 
 
+_SUPER = str.maketrans("0123456789-−", "⁰¹²³⁴⁵⁶⁷⁸⁹⁻⁻")
+
+
+def scale_num(mu: float, lang: str) -> str:
+    """A scale factor as the course writes it: 0,05; 2·10⁻⁵ (never «2e−05»)."""
+    if mu != 0 and not 1e-3 <= abs(mu) < 1e5:
+        e = math.floor(math.log10(abs(mu)))
+        m = mu / 10.0 ** e
+        mant = num(round(m, 3), lang)
+        power = f"10{str(e).translate(_SUPER)}"
+        return power if mant == "1" else f"{mant}·{power}"
+    return num(mu, lang)
+
+
 def mu_text(symbol: str, mu: float, unit: str, lang: str) -> str:
     """«μ_M = 10 Н·м/мм»: a scale factor as the course states it."""
     mm = "мм" if lang == "ru" else "mm"
     unit = f"({unit})" if "/" in unit else unit
-    return f"μ_{symbol} = {num(mu, lang)} {unit}/{mm}"
+    return f"μ_{symbol} = {scale_num(mu, lang)} {unit}/{mm}"
 
 
 def _decimate(x: np.ndarray, y: np.ndarray) -> list[tuple[float, float]]:
@@ -101,13 +115,14 @@ def diagram(name: str, title: str, x, curves, *, x_mu: float, x_symbol: str, x_u
     # axes: the abscissa at zero, the ordinate at x = x_lo, both with arrows
     v.arrow((xa, 0.0), (xb + 10.0, 0.0), line="thin")
     v.arrow((xa, ya - (3.0 if lo < 0 else 0.0)), (xa, yb + 10.0), line="thin")
-    v.rich(xb + 10.0, -2.0, x_label, 3.5, halign="right", valign="top")
+    v.rich(xb + 10.0, 2.0, x_label, 3.5, halign="right", valign="bottom")
     v.rich(xa + 2.0, yb + 8.0, y_label, 3.5, halign="left", valign="top")
+    # the abscissa's values under the diagram: clear of the curves below the axis
+    below = min(ya, min(float(np.min(Y(y))) for y in ys)) - TICK - 1.0
     for t in (x_ticks if x_ticks is not None else _ticks(x_lo, x_hi, x_mu)):
         px = float(X(t))
         v.line((px, -TICK), (px, TICK), line="thin")
-        if abs(t) > 1e-12 or True:
-            v.text(px, -TICK - 1.0, num(t, lang), 2.5, halign="center", valign="top")
+        v.text(px, min(-TICK - 1.0, below), num(t, lang), 2.5, halign="center", valign="top")
     for t in _ticks(lo, hi, mu):
         if abs(t - base) < 1e-9 * max(abs(lo), abs(hi), 1e-300) and not lifted:
             continue

@@ -110,9 +110,15 @@ def _draw(font: _Font, ch: str) -> list:
 
 
 def _is_box(contours: list) -> bool:
-    """A glyph drawn as one plain quadrilateral: a font's placeholder, not a letter."""
-    return len(contours) == 1 and len(contours[0]) == 4 and \
-        all(op in ("M", "L") for op, _ in contours[0])
+    """A glyph drawn as one plain quadrilateral as tall as a capital and half as wide: a
+    font's placeholder, not a letter (a minus, a prime, an «I» are quadrilaterals too, but
+    thin)."""
+    if len(contours) != 1 or len(contours[0]) != 4 or \
+            not all(op in ("M", "L") for op, _ in contours[0]):
+        return False
+    xs = [p[0] for _, pts in contours[0] for p in pts]
+    ys = [p[1] for _, pts in contours[0] for p in pts]
+    return max(ys) - min(ys) > 0.6 and max(xs) - min(xs) > 0.35
 
 
 @lru_cache(maxsize=2)

@@ -198,6 +198,15 @@ class View:
                                     (bx + w * uy, by - w * ux)), "thin", True, True))
 
 
+def indexed(name: str) -> str:
+    """A point's or an image's name with its trailing digits as a subscript, as the course
+    writes them: "S3" → "S_3" (S₃), "s2" → "s_2"; "B", "AB" stay."""
+    import re
+
+    m = re.match(r"^(.*?[^\d_])(\d+)$", name)
+    return f"{m.group(1)}_{m.group(2)}" if m else name
+
+
 TOLERANCE_MM = 0.05      # a curve's vertices kept: its line moves at most this [mm]
 
 

@@ -10,7 +10,7 @@ import math
 
 import numpy as np
 
-from flywheel.render.drawings.model import View
+from flywheel.render.drawings.model import View, indexed
 
 #: ГОСТ 2.302-68 scales as (paper, real), largest first
 GOST_SCALES = ((10, 1), (5, 1), (4, 1), (2.5, 1), (2, 1), (1, 1), (1, 2), (1, 2.5), (1, 4),
@@ -118,7 +118,9 @@ def scheme_view(results, i: int, room_mm: float, lang: str, *, positions: bool,
         out = out / nrm if nrm > 1e-9 else np.array([-0.7, 0.7])
         if pname in d.fixed_points:
             out = np.array([-0.95, 0.3])
-        v.text(*(c + 5.0 * out), pname, 3.5, halign="center", valign="middle")
+        at = c + 5.0 * out
+        v.rich(float(at[0]), float(at[1]), indexed(pname), 3.5, halign="center",
+               valign="middle")
     if title:
         x0, y0, x1, y1 = v.box()
         v.text(x0, y1 + 3.0, title, 5.0)

@@ -148,14 +148,19 @@ def frame_view(size: str, lang: str, *, document, title: str, sheet_name: str, n
     designation = document.designation_or_default
     d, h = fit(designation, 116.0, (7.0, 5.0, 3.5))
     v.text(X(125), Y(47.5), d, h, halign="center", valign="middle")
-    # the name field: the machine, then the sheet's name
-    name_lines = wrap(title, 66.0, 5.0, 2) + wrap(sheet_name, 66.0, 3.5, 2)
-    n = len(name_lines)
-    for k, line in enumerate(name_lines):
-        h = 5.0 if k < n - len(wrap(sheet_name, 66.0, 3.5, 2)) else 3.5
-        line, h = fit(line, 66.0, (h, 2.5))
-        v.text(X(100), Y(27.5) + (n / 2 - k - 0.5) * 5.8, line, h, halign="center",
-               valign="middle")
+    # the name field (70 × 25 mm): the machine at 5 mm (two lines) or 3.5 mm (three), then
+    # the sheet's name at 3.5 mm
+    title_lines, th = wrap(title, 66.0, 5.0, 2), 5.0
+    if len(title_lines) == 2 and (text_width(title_lines[-1], 5.0) > 66.0
+                                  or title_lines[-1].endswith("…")):
+        title_lines, th = wrap(title, 66.0, 3.5, 3), 3.5
+    sheet_lines = wrap(sheet_name, 66.0, 3.5, 2)
+    lines = [(ln, th) for ln in title_lines] + [(ln, 3.5) for ln in sheet_lines]
+    step = [h * 1.6 for _, h in lines]
+    y = Y(27.5) + sum(step) / 2
+    for (line, h), dy in zip(lines, step):
+        y -= dy
+        v.text(X(100), y + dy / 2, line, h, halign="center", valign="middle")
     org = [s for s in (document.university,
                        t["group"].format(g=document.group) if document.group else "") if s]
     org_lines = [ln for s in org for ln in wrap(s, 46.0, 3.5, 2)][:3]

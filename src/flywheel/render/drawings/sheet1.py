@@ -76,13 +76,14 @@ def views(results, lang: str, room: dict) -> list[View]:
         sv.text(x0, y1 + 3.0, t["scheme"].format(s=sv.scales["label"]), 5.0)
         out.append(sv)
     for cyl in results.cylinders:
+        # the loop p(s) in the order of φ, a piece per stroke (towards or away from the head):
+        # a four-stroke engine's four strokes, a compressor's two
         s = np.asarray(cyl.s, float)
         p_mpa = np.asarray(cyl.p, float) / PA_PER_MPA
         towards = np.asarray(cyl.towards_head, bool)
-        curves = []
-        for mask, line in ((towards, "main"), (~towards, "dashed")):
-            order = np.argsort(s[mask], kind="stable")
-            curves.append((p_mpa[mask][order], "", line, s[mask][order]))
+        cuts = [0] + [int(k) + 1 for k in np.flatnonzero(towards[1:] != towards[:-1])] + [len(s)]
+        curves = [(p_mpa[a:b + 1], "", "main", s[a:b + 1]) for a, b in zip(cuts[:-1], cuts[1:])
+                  if b - a >= 1]
         mpa = nm.unit("MPa", lang)
         out.append(diagram(
             f"indicator {cyl.name}", t["indicator"].format(c=cyl.name), np.array([0.0, 1.0]),

@@ -8,14 +8,13 @@ render/plots_plans.py draws), the reactions from ``results.at``.
 from __future__ import annotations
 
 import math
-import re
 
 import numpy as np
 
 from flywheel.render import nomenclature as nm
 from flywheel.render.catalogue import words
 from flywheel.render.drawings.diagram import mu_text, num
-from flywheel.render.drawings.model import View, text_width
+from flywheel.render.drawings.model import View, indexed, text_width
 from flywheel.dynamics.plans import round_scale
 from flywheel.render.drawings.scheme import _block, gost_scale, scheme_view
 
@@ -43,8 +42,7 @@ def _t(lang: str) -> dict:
 
 def _image(label: str) -> str:
     """An image's letter with its digits as a subscript: "s2" → "s_2"."""
-    m = re.match(r"^(.*?)(\d+)$", label)
-    return f"{m.group(1)}_{m.group(2)}" if m else label
+    return indexed(label)
 
 
 def force_label(label: str, lang: str) -> str:
@@ -127,22 +125,27 @@ def _group_view(results, i: int, poly, room: float, lang: str) -> View:
     for link, joint, angle in results.drawing.guided_sliders:
         if link in poly.links:
             _block(v, xy(P[joint].r[i]), angle)
-    used: dict = {}
     for vec in poly.vectors:
         if vec.to not in P or vec.value <= 0:
             continue
         c = xy(P[vec.to].r[i])
         d = np.asarray(vec.vector, float) / vec.value
-        n = used.get(vec.to, 0)
-        used[vec.to] = n + 1
         head = c + ARROW_MM * d
         v.arrow(tuple(c), tuple(head), line="thin")
-        v.rich(head[0] + 1.0, head[1] + 1.0 - 0.0 * n, force_label(vec.label, lang), 3.5)
+        _beyond(v, head, d, force_label(vec.label, lang))
     x0, _, _, y1 = v.box()
     title = (t["crank"].format(l=", ".join(poly.links)) if poly.kind == "crank" else
              t["group"].format(l="–".join(poly.links), k=poly.kind))
     v.text(x0, y1 + 3.0, f"{title}, {label}", 5.0)
     return v
+
+
+def _beyond(v: View, head, d, label: str) -> None:
+    """A force's name just beyond its arrow's head, on the side the arrow points to."""
+    at = np.asarray(head, float) + 1.5 * np.asarray(d, float)
+    ha = "left" if d[0] > 0.35 else "right" if d[0] < -0.35 else "center"
+    va = "bottom" if d[1] > 0.35 else "top" if d[1] < -0.35 else "middle"
+    v.rich(float(at[0]), float(at[1]), label, 3.5, halign=ha, valign=va)
 
 
 def _polygon_view(poly, lang: str, longest_mm: float) -> View:
@@ -167,7 +170,7 @@ def _polygon_view(poly, lang: str, longest_mm: float) -> View:
         if ch.value / mu >= 0.3:
             v.arrow(P(ch.tail), P(ch.head), line="dashed", full=True)
             a, b = P(ch.tail), P(ch.head)
-            v.rich((a[0] + b[0]) / 2 + 1.5, (a[1] + b[1]) / 2 - 1.5,
+            v.rich(a[0] + 0.3 * (b[0] - a[0]) + 1.5, a[1] + 0.3 * (b[1] - a[1]) - 1.5,
                    force_label(ch.label, lang), 3.5, valign="top")
     x0, _, _, y1 = v.box()
     v.rich(x0, y1 + 3.0, mu_text("F", mu, nm.unit_of("mu_F", lang).split("/")[0], lang), 3.5)
@@ -200,7 +203,7 @@ def _lever_view(results, ps, lang: str, longest_mm: float) -> View:
             continue
         head = (c[0] + F[0], c[1] + F[1])
         v.arrow(c, head, line="main" if f.kind == "balancing" else "thin", full=True)
-        v.rich(head[0] + 1.0, head[1] + 1.0, force_label(f.name, lang), 3.5)
+        _beyond(v, head, F / math.hypot(*F), force_label(f.name, lang))
     for p, c in img.items():
         if math.hypot(*c) >= 0.5:
             v.rich(c[0] - 1.5, c[1] - 1.5, _image(L.image_labels[p]), 3.5, halign="right",
