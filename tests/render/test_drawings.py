@@ -285,3 +285,68 @@ def test_the_drawings_command_writes_the_sheets(tmp_path):
 
     box = PdfReader(tmp_path / "o" / "drawings" / "sheet1.pdf").pages[0].mediabox
     assert (round(float(box.width) * MM_PER_PT), round(float(box.height) * MM_PER_PT)) == (420, 297)
+
+
+def test_the_title_block_fits_long_names_in_its_cells():
+    """Every text of the title block within its 185 × 55 mm, none below 2.5 mm; a long name
+    narrowed (squeeze ≥ 0.8) or cut with «…», never spilling into the next cell."""
+    from types import SimpleNamespace
+
+    from flywheel.render.drawings.sheet import frame_view
+
+    doc = SimpleNamespace(student="Константинопольский К. К.", teacher="Петров П. П.",
+                          tech_control="", norm_control="Кузнецова А. В.", approved="",
+                          university="Московский государственный технический университет "
+                                     "имени Н. Э. Баумана", group="МТ-301",
+                          designation_or_default="ТММ.КП.23.01.00.000.000.000.000.000")
+    v = frame_view("A1", "ru", document=doc, title="Поперечно-строгальный станок с кулисным "
+                   "механизмом и ползуном, привод от электродвигателя через редуктор",
+                   sheet_name="Динамический анализ механизма", number=1, count=2, scale="1:2")
+    x0, y0 = 836.0 - BLOCK_W, 5.0
+    from flywheel.render.drawings.model import Text
+
+    texts = [t for t in v.items if isinstance(t, Text)]
+    for t in texts:
+        assert t.height >= 2.5 and t.squeeze >= 0.8 - 1e-9, t
+        bx0, by0, bx1, by1 = t.box()
+        if t.angle == 0.0:
+            assert x0 - 1e-6 <= bx0 and bx1 <= x0 + BLOCK_W + 1e-6, t
+            assert y0 - 1e-6 <= by0 and by1 <= y0 + BLOCK_H + 1e-6, t
+    student = next(t for t in texts if t.text.startswith("Константин"))
+    sx0, _, sx1, _ = student.box()                      # in its 23 mm column (17 … 40 mm)
+    assert x0 + 17 <= sx0 and sx1 <= x0 + 40
+
+
+def test_without_osifont_the_sheet_is_lettered_in_dejavu(monkeypatch, tmp_path):
+    from flywheel.render.drawings import fonts, model
+    from flywheel.render.drawings.paper import write_paper
+    from flywheel.render.drawings.sheet import frame_view
+
+    monkeypatch.setattr(fonts, "OSIFONT", ())
+    for cached in (fonts.font_path, fonts._font):
+        cached.cache_clear()
+    monkeypatch.setattr(fonts, "_ADVANCE", {})
+    monkeypatch.setattr(model, "_WIDTHS", {})
+    try:
+        assert fonts.font_name() == "DejaVu Sans"
+        from types import SimpleNamespace
+
+        doc = SimpleNamespace(student="Иванов И. И.", teacher="", tech_control="",
+                              norm_control="", approved="", university="", group="",
+                              designation_or_default="ТММ.КП.00.01")
+        v = frame_view("A3", "ru", document=doc, title="Компрессор", sheet_name="Лист",
+                       number=1, count=1, scale="")
+        write_paper({"pdf": tmp_path / "s.pdf", "svg": tmp_path / "s.svg"}, FORMATS["A3"],
+                    v.items)
+        import xml.etree.ElementTree as ET
+
+        root = ET.parse(tmp_path / "s.svg").getroot()
+        assert (root.get("width"), root.get("height")) == ("420mm", "297mm")
+        assert len(root.findall(".//{http://www.w3.org/2000/svg}use")) > 20   # letters placed
+        from pypdf import PdfReader
+
+        box = PdfReader(tmp_path / "s.pdf").pages[0].mediabox
+        assert round(float(box.width) * MM_PER_PT, 1) == 420.0
+    finally:
+        for cached in (fonts.font_path, fonts._font):
+            cached.cache_clear()

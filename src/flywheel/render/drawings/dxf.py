@@ -88,8 +88,10 @@ def _add(msp, it, align):
     """One primitive as its DXF entity."""
     if True:                                                    # noqa: SIM108 — one level
         if isinstance(it, Text):
-            e = msp.add_text(it.text, height=it.height, rotation=it.angle,
-                             dxfattribs={"layer": TEXT_LAYER, "style": TEXT_STYLE})
+            attribs = {"layer": TEXT_LAYER, "style": TEXT_STYLE}
+            if it.squeeze != 1.0:
+                attribs["width"] = it.squeeze
+            e = msp.add_text(it.text, height=it.height, rotation=it.angle, dxfattribs=attribs)
             return e.set_placement((it.x, it.y), align=align[(it.halign, it.valign)])
         elif isinstance(it, Circle):
             layer = LAYERS[it.line][0]

@@ -67,7 +67,7 @@ class Text:
     """One line of lettering: ``height`` the capital letters' height [mm] (ГОСТ 2.304),
     ``angle`` [deg] counter-clockwise, anchored at (x, y) by ``halign`` (left, center, right)
     and ``valign`` (bottom, middle, top) of its capitals' box; ``width`` its length [mm] in the
-    sheet's font (text_width)."""
+    sheet's font (text_width), ``squeeze`` already applied."""
 
     x: float
     y: float
@@ -77,6 +77,7 @@ class Text:
     halign: str = "left"
     valign: str = "bottom"
     width: float = 0.0
+    squeeze: float = 1.0          # the letters' width factor (a narrow cell of a title block)
 
     def moved(self, dx: float, dy: float) -> Text:
         return replace(self, x=self.x + dx, y=self.y + dy)
@@ -144,9 +145,9 @@ class View:
                                  filled))
 
     def text(self, x, y, text: str, height: float = 3.5, angle: float = 0.0,
-             halign: str = "left", valign: str = "bottom") -> Text:
+             halign: str = "left", valign: str = "bottom", squeeze: float = 1.0) -> Text:
         t = Text(float(x), float(y), text, height, angle, halign, valign,
-                 text_width(text, height))
+                 squeeze * text_width(text, height), squeeze)
         self.items.append(t)
         return t
 

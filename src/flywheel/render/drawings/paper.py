@@ -49,14 +49,14 @@ def _glyphs(items) -> tuple[list[str], list[tuple[int, tuple]]]:
         dx = {"left": 0.0, "center": -t.width / 2, "right": -t.width}[t.halign]
         dy = {"bottom": 0.0, "middle": -t.height / 2, "top": -t.height}[t.valign]
         c, s = math.cos(math.radians(t.angle)), math.sin(math.radians(t.angle))
-        h = t.height
+        h, q = t.height, t.squeeze
         pen = 0.0
         for ch in t.text:
             for sub in drawn_char(ch):
                 if not sub.isspace():
                     k = chars.setdefault(sub, len(chars))
-                    u, w = pen * h + dx, dy
-                    placed.append((k, (h * c, h * s, h * (c * sh - s), h * (s * sh + c),
+                    u, w = pen * h * q + dx, dy
+                    placed.append((k, (h * q * c, h * q * s, h * (c * sh - s), h * (s * sh + c),
                                        t.x + c * u - s * w, t.y + s * u + c * w)))
                 pen += advance(sub)
     return list(chars), placed

@@ -56,16 +56,31 @@ def keep_out(size: str) -> list[tuple[float, float, float, float]]:
             (0.0, H - MARGIN - COL26_H - GAP, LEFT + COL26_W + GAP, H)]
 
 
-def fit(text: str, width: float, heights=(3.5, 2.5)) -> tuple[str, float]:
-    """``text`` at the largest of ``heights`` that fits ``width`` [mm]; else cut with «…» at
-    the smallest (the title block's cells are fixed)."""
+SQUEEZE_MIN = 0.8      # the narrowest letters a title block's cell may take [width factor]
+
+
+def fit(text: str, width: float, heights=(3.5, 2.5)) -> tuple[str, float, float]:
+    """(text, height, squeeze): ``text`` at the largest of ``heights`` that fits ``width``
+    [mm]; else at the smallest with the letters narrowed down to SQUEEZE_MIN; else cut with
+    «…» (the title block's cells are fixed)."""
     for h in heights:
         if text_width(text, h) <= width:
-            return text, h
+            return text, h, 1.0
     h = heights[-1]
-    while text and text_width(text + "…", h) > width:
+    need = text_width(text, h)
+    if need * SQUEEZE_MIN <= width:
+        return text, h, width / need
+    while text and text_width(text + "…", h) * SQUEEZE_MIN > width:
         text = text[:-1]
-    return text.rstrip() + "…", h
+    text = text.rstrip() + "…"
+    return text, h, min(1.0, width / text_width(text, h))
+
+
+def _cut(text: str, width: float, height: float) -> str:
+    """``text`` cut with «…» to ``width`` [mm] at ``height``, letters not narrowed."""
+    while text and text_width(text + "…", height) > width:
+        text = text[:-1]
+    return text.rstrip() + "…"
 
 
 def wrap(text: str, width: float, height: float, lines: int) -> list[str]:
@@ -85,7 +100,7 @@ def wrap(text: str, width: float, height: float, lines: int) -> list[str]:
     if len(out) > lines:
         out = out[:lines - 1] + [" ".join(out[lines - 1:])]
     if out and text_width(out[-1], height) > width:
-        out[-1] = fit(out[-1], width, (height,))[0]
+        out[-1] = _cut(out[-1], width, height)
     return out
 
 
@@ -123,9 +138,9 @@ def frame_view(size: str, lang: str, *, document, title: str, sheet_name: str, n
     def cell(x, y, w, text, h=2.5, align="left"):
         if not text:
             return
-        text, h = fit(text, w - 1.0, (h, 2.5) if h > 2.5 else (h,))
-        ax = {"left": X(x) + 0.6, "center": X(x) + w / 2}[align]
-        v.text(ax, Y(y) + 2.5, text, h, halign=align, valign="middle")
+        text, h, q = fit(text, w - 1.0, (h, 2.5) if h > 2.5 else (h,))
+        ax = {"left": X(x) + 0.5, "center": X(x) + w / 2}[align]
+        v.text(ax, Y(y) + 2.5, text, h, halign=align, valign="middle", squeeze=q)
 
     for x, w, key in ((0, 7, "rev"), (7, 10, "sheet_col"), (17, 23, "doc_no"), (40, 15, "sign"),
                       (55, 10, "date")):
@@ -146,8 +161,8 @@ def frame_view(size: str, lang: str, *, document, title: str, sheet_name: str, n
     cell(135, 15, 20, f"{t['sheet']} {number}")
     cell(155, 15, 30, f"{t['sheets']} {count}")
     designation = document.designation_or_default
-    d, h = fit(designation, 116.0, (7.0, 5.0, 3.5))
-    v.text(X(125), Y(47.5), d, h, halign="center", valign="middle")
+    d, h, q = fit(designation, 116.0, (7.0, 5.0, 3.5))
+    v.text(X(125), Y(47.5), d, h, halign="center", valign="middle", squeeze=q)
     # the name field (70 × 25 mm): the machine at 5 mm (two lines) or 3.5 mm (three), then
     # the sheet's name at 3.5 mm
     title_lines, th = wrap(title, 66.0, 5.0, 2), 5.0
@@ -156,7 +171,15 @@ def frame_view(size: str, lang: str, *, document, title: str, sheet_name: str, n
         title_lines, th = wrap(title, 66.0, 3.5, 3), 3.5
     sheet_lines = wrap(sheet_name, 66.0, 3.5, 2)
     lines = [(ln, th) for ln in title_lines] + [(ln, 3.5) for ln in sheet_lines]
-    step = [h * 1.6 for _, h in lines]
+    # the lines 1.6 of their height apart, closer (down to 1.25) to stay within 24 mm
+    k = max(1.25, min(1.6, 24.0 / sum(h for _, h in lines)))
+    while k * sum(h for _, h in lines) > 24.0 and len(lines) > 2:
+        cut = len(title_lines) - 1                  # the title's last line goes, cut with «…»
+        title_lines = title_lines[:cut]
+        title_lines[-1] = _cut(title_lines[-1] + " …", 66.0, th) \
+            if text_width(title_lines[-1] + " …", th) > 66.0 else title_lines[-1] + " …"
+        lines = [(ln, th) for ln in title_lines] + [(ln, 3.5) for ln in sheet_lines]
+    step = [h * k for _, h in lines]
     y = Y(27.5) + sum(step) / 2
     for (line, h), dy in zip(lines, step):
         y -= dy
@@ -170,7 +193,7 @@ def frame_view(size: str, lang: str, *, document, title: str, sheet_name: str, n
     # column 26: the designation turned 180°, in the frame's upper left corner
     cx0, cy1 = LEFT, H - MARGIN
     v.line((cx0, cy1 - COL26_H), (cx0 + COL26_W, cy1 - COL26_H), (cx0 + COL26_W, cy1))
-    d26, h26 = fit(designation, COL26_W - 4.0, (5.0, 3.5, 2.5))
+    d26, h26, q26 = fit(designation, COL26_W - 4.0, (5.0, 3.5, 2.5))
     v.text(cx0 + COL26_W / 2, cy1 - COL26_H / 2, d26, h26, angle=180.0, halign="center",
-           valign="middle")
+           valign="middle", squeeze=q26)
     return v
