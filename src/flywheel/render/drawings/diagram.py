@@ -89,13 +89,14 @@ def _label_spot(px, py, drawn, spots) -> tuple[float, float]:
 def diagram(name: str, title: str, x, curves, *, x_mu: float, x_symbol: str, x_unit: str,
             x_label: str, y_symbol: str, y_unit: str, y_label: str, lang: str,
             x_ticks=None, y_mu: float | None = None, height: float = PLOT_H, marks=(),
-            lines=(), lifted: bool = False) -> View:
+            lines=(), lifted: bool = False, x_scale_text: str | None = None) -> View:
     """One diagram. ``x`` [x's unit]; ``curves``: (values, name or "", line type[, own abscissa]) each;
     ``marks``: (x, y, label) points marked with a dot; ``lines``: ((x0, y0), (x1, y1), line
     type, label) straight lines in the data's units (tangents, constant levels). The y scale:
     the round μ that puts the span of every curve (with zero) within ``height`` mm. ``lifted``: the
     abscissa at a round value below the curves instead of zero (ω(φ): its ripple, not its
-    mean, fills the height), as the course draws it."""
+    mean, fills the height), as the course draws it. ``x_scale_text``: the abscissa's scale said
+    otherwise than by a μ (the indicator diagram: «stroke = 100 mm»)."""
     x = np.asarray(x, float)
     ys = [np.asarray(c[0], float) for c in curves]
     lo = min(float(np.min(y)) for y in ys)
@@ -152,7 +153,7 @@ def diagram(name: str, title: str, x, curves, *, x_mu: float, x_symbol: str, x_u
             v.rich(c[0] + 1.5, c[1] + 1.0, label, 3.5)
     # the caption above: the title, then the scale factors
     top = max(yb + 10.0, *(it.box()[3] for it in v.items)) + 3.0
-    x_unit_text = mu_text(x_symbol, x_mu, x_unit, lang)
+    x_unit_text = x_scale_text or mu_text(x_symbol, x_mu, x_unit, lang)
     v.rich(xa, top, f"{mu_text(y_symbol, mu, y_unit, lang)};  {x_unit_text}", 3.5)
     v.text(xa, top + 6.0, title, 5.0)
     v.scales.update(y=mu, x=x_mu)

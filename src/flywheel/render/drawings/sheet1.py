@@ -29,6 +29,7 @@ T = words("drawings1", {
     "omega": "Angular velocity of the crank",
     "epsilon": "Angular acceleration of the crank",
     "results": "Main results",
+    "stroke": "stroke of the piston = 100 mm",
     "quantity": "Quantity",
     "value": "Value",
     "unit": "Unit",
@@ -89,7 +90,7 @@ def views(results, lang: str, room: dict) -> list[View]:
             f"indicator {cyl.name}", t["indicator"].format(c=cyl.name), np.array([0.0, 1.0]),
             curves, x_mu=0.01, x_symbol="s", x_unit="–", x_label=nm.symbol("s_{cylinder}", lang),
             x_ticks=[0.0, 0.25, 0.5, 0.75, 1.0], y_symbol="p", y_unit=mpa,
-            y_label=f"p, {mpa}", height=room["plot_h"], lang=lang))
+            y_label=f"p, {mpa}", height=room["plot_h"], lang=lang, x_scale_text=t["stroke"]))
     moving = results.drawing.moving_points if results.drawing is not None else ()
     vq = [(cols[f"vq_{p}"].values, f"v_q{p}", ["main", "thin", "dashed"][k % 3])
           for k, p in enumerate(moving) if f"vq_{p}" in cols]

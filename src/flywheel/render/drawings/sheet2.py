@@ -32,6 +32,7 @@ T = words("drawings2", {
     "point": "Point",
     "magnitude": "R, N",
     "angle": "Angle to x, °",
+    "kind": {"RRR": "RRR", "RRP": "RRP", "RPR": "RPR"},
 })
 ARROW_MM = 15.0        # a force's arrow on a group drawn apart (its direction, not its size)
 
@@ -135,7 +136,7 @@ def _group_view(results, i: int, poly, room: float, lang: str) -> View:
         _beyond(v, head, d, force_label(vec.label, lang))
     x0, _, _, y1 = v.box()
     title = (t["crank"].format(l=", ".join(poly.links)) if poly.kind == "crank" else
-             t["group"].format(l="–".join(poly.links), k=poly.kind))
+             t["group"].format(l="–".join(poly.links), k=t["kind"].get(poly.kind, poly.kind)))
     v.text(x0, y1 + 3.0, f"{title}, {label}", 5.0)
     return v
 
