@@ -33,6 +33,7 @@ T = words("drawings2", {
     "magnitude": "R, N",
     "angle": "Angle to x, °",
     "kind": {"RRR": "RRR", "RRP": "RRP", "RPR": "RPR"},
+    "hodograph": "Hodograph of the load on the crank pin over the cycle",
 })
 ARROW_MM = 15.0        # a force's arrow on a group drawn apart (its direction, not its size)
 
@@ -54,6 +55,14 @@ def force_label(label: str, lang: str) -> str:
     if sym == "P" and sub == "y" and lang == "ru":
         sub = "у"
     return f"{sym}{sup}_{sub}" if sub else f"{sym}{sup}"
+
+
+def _per_mm(key: str, lang: str) -> str:
+    """The unit a scale's μ is «per mm» of (the nomenclature's "(m/s)/mm" → "м/с")."""
+    u = nm.unit_of(key, lang)
+    for mm in ("/mm", "/мм"):
+        u = u[:-len(mm)] if u.endswith(mm) else u
+    return u[1:-1] if u.startswith("(") and u.endswith(")") else u
 
 
 def _plan_view(name: str, title: str, plan, pole: str, key: str, lang: str,
@@ -89,9 +98,7 @@ def _plan_view(name: str, title: str, plan, pole: str, key: str, lang: str,
                _image(plan.image_labels[point]), 3.5,
                halign="left" if c[0] >= 0 else "right", valign="bottom" if c[1] >= 0 else "top")
     x0, _, _, y1 = v.box()
-    v.rich(x0, y1 + 3.0, mu_text(key.split("_")[1], mu, nm.unit_of(key, lang)
-                                 .replace("(", "").replace(")/mm", "").replace(")/мм", ""),
-                                 lang), 3.5)
+    v.rich(x0, y1 + 3.0, mu_text(key.split("_")[1], mu, _per_mm(key, lang), lang), 3.5)
     v.text(x0, y1 + 9.0, title, 5.0)
     return v
 
@@ -174,7 +181,7 @@ def _polygon_view(poly, lang: str, longest_mm: float) -> View:
             v.rich(a[0] + 0.3 * (b[0] - a[0]) + 1.5, a[1] + 0.3 * (b[1] - a[1]) - 1.5,
                    force_label(ch.label, lang), 3.5, valign="top")
     x0, _, _, y1 = v.box()
-    v.rich(x0, y1 + 3.0, mu_text("F", mu, nm.unit_of("mu_F", lang).split("/")[0], lang), 3.5)
+    v.rich(x0, y1 + 3.0, mu_text("F", mu, _per_mm("mu_F", lang), lang), 3.5)
     v.text(x0, y1 + 9.0, t["polygon"].format(l=", ".join(poly.links)), 5.0)
     return v
 
@@ -211,12 +218,44 @@ def _lever_view(results, ps, lang: str, longest_mm: float) -> View:
                    valign="top")
     x0, _, _, y1 = v.box()
     mm = "мм" if lang == "ru" else "mm"
-    v.rich(x0, y1 + 3.0, f"{mu_text('v', mu, nm.unit_of('mu_v', lang).split('/')[0].strip('()'), lang)};  "
-           f"{mu_text('F', muF, nm.unit_of('mu_F', lang).split('/')[0], lang)}", 3.5)
+    v.rich(x0, y1 + 3.0, f"{mu_text('v', mu, _per_mm('mu_v', lang), lang)};  "
+           f"{mu_text('F', muF, _per_mm('mu_F', lang), lang)}", 3.5)
     v.rich(x0, y1 + 8.0, t["balancing"].replace("N·m", nm.unit("N·m", lang))
            .format(m=num(L.balancing_moment, lang)), 3.5)
     v.text(x0, y1 + 14.0, t["lever"], 5.0)
     del mm
+    return v
+
+
+def hodograph_view(results, lang: str, longest_mm: float) -> View | None:
+    """The load on the crank pin over the cycle in the crank's axes (F_T along the pin's
+    velocity, F_R towards the shaft: results.forces, as the report's hodographs plot it) at a
+    round μ_F, every 30° of the crank marked and numbered, the report angle's load an arrow."""
+    f = results.forces
+    if f is None or f.crank_pin_tangential is None:
+        return None
+    t = _t(lang)
+    x, y = np.asarray(f.crank_pin_tangential, float), np.asarray(f.crank_pin_radial, float)
+    mu = round_scale(float(np.max(np.hypot(x, y))), longest_mm)
+    v = View("hodograph")
+    v.scales["mu_F"] = mu
+    v.poly(list(zip(x / mu, y / mu)), line="main")
+    span = float(np.max(np.hypot(x, y))) / mu
+    for a, b in (((-span, 0.0), (span, 0.0)), ((0.0, -span), (0.0, span))):
+        v.line(a, b, line="axis")
+    step = 30 * results.cycle_deg // 360
+    for a in range(0, results.cycle_deg, step):
+        i = results.index_of(math.radians(a))
+        c = (float(x[i]) / mu, float(y[i]) / mu)
+        v.circle(c, 0.6, line="thin", filled=True)
+        v.text(c[0] + 1.2, c[1] + 1.2, f"{a}", 2.5)
+    i = results.plans[0].index if results.plans else 0
+    v.arrow((0.0, 0.0), (float(x[i]) / mu, float(y[i]) / mu), line="thin", full=True)
+    v.rich(span + 2.0, 1.0, nm.symbol("crank_pin_tangential", lang), 3.5)
+    v.rich(1.0, span + 2.0, nm.symbol("crank_pin_radial", lang), 3.5)
+    x0, _, _, y1 = v.box()
+    v.rich(x0, y1 + 3.0, mu_text("F", mu, _per_mm("mu_F", lang), lang), 3.5)
+    v.text(x0, y1 + 9.0, t["hodograph"], 5.0)
     return v
 
 
@@ -269,4 +308,7 @@ def views(results, lang: str, room: dict) -> list[View]:
     out.append(_lever_view(results, ps, lang, room["plan"]))
     if results.at and results.at[0].joints:
         out.append(reactions_table(results, lang))
+    hodograph = hodograph_view(results, lang, 0.75 * room["plan"])
+    if hodograph is not None:
+        out.append(hodograph)
     return out
