@@ -207,7 +207,8 @@ def test_the_views_of_each_sheet_do_not_overlap():
         sheets = build_sheets(results, case.document, lang="ru", size=size)
         assert not any(s.left_out for s in sheets)
         names = [v.name for s in sheets for v in s.views[1:]]
-        assert "velocity" in names and "wittenbauer" in names and "results" in names
+        assert {"scheme", "velocity", "acceleration", "lever", "reactions", "hodograph",
+                "wittenbauer", "omega", "epsilon", "results", "indicator HP"} <= set(names)
         for s in sheets:
             boxes = [v.box() for v in s.views[1:]]
             for i, a in enumerate(boxes):
