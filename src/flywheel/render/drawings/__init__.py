@@ -42,7 +42,7 @@ def build_sheets(results, document, *, lang: str = "ru", size: str = "A1") -> li
     from flywheel.render.drawings.sheet import ROOM, frame_view, words_of
 
     parts = [("sheet1", "sheet1", sheet1.views(results, lang, ROOM[size]))]
-    if results.plans and _has_sheet2():
+    if results.plans:
         from flywheel.render.drawings import sheet2
 
         parts.append(("sheet2", "sheet2", sheet2.views(results, lang, ROOM[size])))
@@ -87,9 +87,3 @@ def _named(views) -> list[View]:
         n = seen[v.name] = seen.get(v.name, 0) + 1
         out.append(v if n == 1 else View(f"{v.name} {n}", v.items, v.scales))
     return out
-
-
-def _has_sheet2() -> bool:
-    import importlib.util
-
-    return importlib.util.find_spec("flywheel.render.drawings.sheet2") is not None

@@ -86,31 +86,28 @@ def _write(path: Path, size: tuple[float, float], views) -> None:
 
 def _add(msp, it, align):
     """One primitive as its DXF entity."""
-    if True:                                                    # noqa: SIM108 — one level
-        if isinstance(it, Text):
-            attribs = {"layer": TEXT_LAYER, "style": TEXT_STYLE}
-            if it.squeeze != 1.0:
-                attribs["width"] = it.squeeze
-            e = msp.add_text(it.text, height=it.height, rotation=it.angle, dxfattribs=attribs)
-            return e.set_placement((it.x, it.y), align=align[(it.halign, it.valign)])
-        elif isinstance(it, Circle):
-            layer = LAYERS[it.line][0]
-            if it.filled:
-                h = msp.add_hatch(color=256, dxfattribs={"layer": layer})
-                h.set_solid_fill(color=256)
-                ep = h.paths.add_edge_path()
-                ep.add_arc(it.centre, it.radius, 0.0, 360.0)
-                return h
+    if isinstance(it, Text):
+        attribs = {"layer": TEXT_LAYER, "style": TEXT_STYLE}
+        if it.squeeze != 1.0:
+            attribs["width"] = it.squeeze
+        e = msp.add_text(it.text, height=it.height, rotation=it.angle, dxfattribs=attribs)
+        return e.set_placement((it.x, it.y), align=align[(it.halign, it.valign)])
+    layer = LAYERS[it.line][0]
+    if isinstance(it, Circle):
+        if not it.filled:
             return msp.add_circle(it.centre, it.radius, dxfattribs={"layer": layer})
-        elif isinstance(it, Polyline):
-            layer = LAYERS[it.line][0]
-            if it.filled:
-                h = msp.add_hatch(color=256, dxfattribs={"layer": layer})
-                h.set_solid_fill(color=256)
-                h.paths.add_polyline_path(list(it.points), is_closed=True)
-                return h
+        h = msp.add_hatch(color=256, dxfattribs={"layer": layer})
+        h.set_solid_fill(color=256)
+        h.paths.add_edge_path().add_arc(it.centre, it.radius, 0.0, 360.0)
+        return h
+    if isinstance(it, Polyline):
+        if not it.filled:
             return msp.add_lwpolyline(list(it.points), close=it.closed,
                                       dxfattribs={"layer": layer})
+        h = msp.add_hatch(color=256, dxfattribs={"layer": layer})
+        h.set_solid_fill(color=256)
+        h.paths.add_polyline_path(list(it.points), is_closed=True)
+        return h
     raise TypeError(f"not a sheet's primitive: {it!r}")
 
 

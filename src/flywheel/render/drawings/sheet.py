@@ -35,7 +35,6 @@ T = words("drawings", {
     "sheet1": "Dynamic analysis of the mechanism",
     "sheet2": "Force analysis of the mechanism",
     "group": "group {g}",
-    "continued": "(continued)",
 })
 
 
