@@ -134,9 +134,11 @@ def test_every_sentence_of_a_renderer_is_its_catalogue_entry():
 
     from flywheel.render import catalogue
 
-    for path in (i18n.PACKAGE / "render").glob("*.py"):
+    render = i18n.PACKAGE / "render"
+    for path in sorted(render.rglob("*.py")):          # render/drawings/ too
         if "words(" in path.read_text(encoding="utf-8"):
-            importlib.import_module(f"flywheel.render.{path.stem}")
+            parts = path.relative_to(render).with_suffix("").parts
+            importlib.import_module(".".join(("flywheel", "render") + parts))
     extracted = i18n.extract_words()
     po = {m.context: m for m in ENTRIES}
     assert "report" in catalogue.WORDS

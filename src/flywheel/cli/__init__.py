@@ -41,6 +41,7 @@ def _root(
 
 
 from flywheel.cli.aggregate import aggregate_command  # noqa: E402
+from flywheel.cli.drawings import drawings_command  # noqa: E402
 from flywheel.cli.duty_cycle import duty_cycle_command  # noqa: E402
 from flywheel.cli.run import check_command, run_command, schema_command  # noqa: E402
 from flywheel.cli.task2 import task2_command  # noqa: E402
@@ -49,6 +50,7 @@ from flywheel.cli.teaching import grade_command, variants_command  # noqa: E402
 app.command("schema")(schema_command)
 app.command("check")(check_command)
 app.command("run")(run_command)
+app.command("drawings")(drawings_command)
 app.command("task2")(task2_command)
 app.command("aggregate")(aggregate_command)
 app.command("duty-cycle")(duty_cycle_command)

@@ -75,6 +75,11 @@ def run_command(
     figure_format: str = typer.Option("png", "--figure-format", help="Format of plots/*: png, svg "
                                       "or pdf (svg, pdf: written beside the PNGs the reports embed)."),
     dpi: int = typer.Option(120, "--dpi", help="Resolution of the plots [dots per inch], 50…600."),
+    drawings: bool = typer.Option(False, "--drawings", help="Also write the project's drawing "
+                                  "sheets (ЕСКД): drawings/sheet1.{pdf,svg,dxf} (the law of "
+                                  "motion), sheet2.* (the force analysis); docs/drawings.md."),
+    sheet_size: str = typer.Option("A1", "--sheet-size", help="Format of the --drawings "
+                                   "sheets, landscape: A1, A2 or A3."),
 ) -> None:
     """Run the whole dynamic analysis of a case; write summary.json, table.csv, positions.csv,
     forces.csv, forces_positions.csv, report.md and plots/*.png to the output folder."""
@@ -93,6 +98,10 @@ def run_command(
             "option_range", "--dpi: {got} is out of range (allowed: {lo} to {hi})", option="--dpi",
             got=dpi, lo=DPI_RANGE[0], hi=DPI_RANGE[1]))
     _check_at(at)
+    from flywheel.render.drawings import SIZES as SHEET_SIZES
+
+    if sheet_size not in SHEET_SIZES:
+        fail(choice("--sheet-size", sheet_size, "a sheet format", ", ".join(SHEET_SIZES)))
     formats = report or ["md", "html"]
     for f in formats:
         if f not in FORMATS:
@@ -138,6 +147,10 @@ def run_command(
             from flywheel.render.animate import write_animation
 
             write_animation(results, folder / "mechanism.gif", lang=lang)
+        if drawings:                    # the ЕСКД sheets (render/drawings, docs/drawings.md)
+            from flywheel.render.drawings import write_drawings
+
+            write_drawings(results, folder / "drawings", c.document, lang=lang, size=sheet_size)
         from flywheel.render.document import build_document
         from flywheel.render.report_formats import write_reports
 
@@ -163,7 +176,8 @@ def run_command(
                    + ", ".join(f"report.{f}" for f in dict.fromkeys(formats))
                    + ("" if no_plots else ", plots/*.png"
                       + ("" if figure_format == "png" else f", plots/*.{figure_format}"))
-                   + (", mechanism.gif" if animate else "") + ")")
+                   + (", mechanism.gif" if animate else "")
+                   + (", drawings/sheet*.{pdf,svg,dxf}" if drawings else "") + ")")
 
 
 #: the report angles --at takes: at most AT_MOST of them, each within ±AT_LIMIT_DEG [deg] (an

@@ -1,0 +1,89 @@
+"""The graphic part of the course project: ЕСКД drawing sheets in PDF, SVG and DXF
+(`flywheel run CASE --drawings`, `flywheel drawings CASE`; docs/drawings.md).
+
+Sheet 1 the law of motion (sheet1.py), sheet 2 the force analysis (sheet2.py); each a list of
+views (model.py: primitives in millimetres) packed by the layout (layout.py) into the field of
+a sheet with its frame and title block (sheet.py); written by dxf.py (ezdxf) and paper.py
+(matplotlib, PDF and SVG at true size). A sheet whose views do not fit continues on another
+sheet of the same name (sheet1-2.pdf …), numbered in the title blocks.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+from pathlib import Path
+
+from flywheel.render.drawings.model import View
+
+SIZES = ("A1", "A2", "A3")
+SUFFIXES = ("pdf", "svg", "dxf")
+
+
+@dataclass(frozen=True)
+class Sheet:
+    """One sheet: ``stem`` its file name («sheet1», «sheet1-2»), ``size`` (A1 …), its views
+    placed (the frame's first), ``number`` of ``count`` sheets."""
+
+    stem: str
+    size: str
+    views: tuple[View, ...]
+    number: int
+    count: int
+    left_out: tuple[str, ...] = ()
+
+    @property
+    def items(self) -> list:
+        return [it for v in self.views for it in v.items]
+
+
+def build_sheets(results, document, *, lang: str = "ru", size: str = "A1") -> list[Sheet]:
+    """The sheets of a run: sheet 1 (and sheet 2 for a linkage case with its plans)."""
+    from flywheel.render.drawings import sheet1
+    from flywheel.render.drawings.layout import pack
+    from flywheel.render.drawings.sheet import ROOM, frame_view, words_of
+
+    parts = [("sheet1", "sheet1", sheet1.views(results, lang, ROOM[size]))]
+    if results.plans:
+        from flywheel.render.drawings import sheet2
+
+        parts.append(("sheet2", "sheet2", sheet2.views(results, lang, ROOM[size])))
+    packed = []
+    for stem, key, views in parts:
+        pages, left_out = pack(views, size)
+        scale = next((v.scales["label"] for v in views if "label" in v.scales), "")
+        for k, page in enumerate(pages):
+            packed.append((stem if k == 0 else f"{stem}-{k + 1}", key, page, scale,
+                           tuple(left_out)))
+    count = len(packed)
+    sheets = []
+    for n, (stem, key, page, scale, left_out) in enumerate(packed, start=1):
+        frame = frame_view(size, lang, document=document, title=results.title,
+                           sheet_name=words_of(lang)[key], number=n, count=count, scale=scale)
+        sheets.append(Sheet(stem, size, (frame, *page), n, count, left_out))
+    return sheets
+
+
+def write_drawings(results, folder: Path, document, *, lang: str = "ru",
+                   size: str = "A1") -> list[Path]:
+    """Write every sheet as PDF, SVG and DXF into ``folder`` (made); the paths written."""
+    from flywheel.render.drawings.dxf import write_dxf
+    from flywheel.render.drawings.paper import write_paper
+    from flywheel.render.drawings.sheet import FORMATS
+
+    folder.mkdir(parents=True, exist_ok=True)
+    written = []
+    for s in build_sheets(results, document, lang=lang, size=size):
+        items = s.items
+        write_paper({f: folder / f"{s.stem}.{f}" for f in ("pdf", "svg")}, FORMATS[size], items)
+        write_dxf(folder / f"{s.stem}.dxf", FORMATS[size], _named(s.views))
+        written += [folder / f"{s.stem}.{x}" for x in SUFFIXES]
+    return written
+
+
+def _named(views) -> list[View]:
+    """The views with names unique on their sheet («group B», «group B 2» …)."""
+    seen: dict[str, int] = {}
+    out = []
+    for v in views:
+        n = seen[v.name] = seen.get(v.name, 0) + 1
+        out.append(v if n == 1 else View(f"{v.name} {n}", v.items, v.scales))
+    return out

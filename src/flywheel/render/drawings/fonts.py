@@ -1,0 +1,169 @@
+"""The sheets' font: ГОСТ 2.304-81 type B lettering.
+
+osifont (ISO 3098 lettering, GPL-3 with the font exception: a document that embeds it is not
+covered by the GPL; Debian package ``fonts-osifont``, installed by .ci/run when it can be) is
+used when it is installed; else DejaVu Sans, which matplotlib ships (so the fallback is there on
+every machine). A character the font lacks, or draws as an empty box (osifont 2022 has boxes
+for Ё, ё, Э, э), is taken from DejaVu Sans, scaled to the same capital height; a character
+neither has is drawn as its nearest one (:data:`STAND_INS`: «…» as three dots). Both fonts
+are upright: the PDF and SVG writers slope the letters 15° (type B, 75° to the line); the DXF
+names its text style for the ГОСТ font with the same oblique angle, so a CAD program letters
+it in its own ГОСТ font (docs/drawings.md).
+"""
+from __future__ import annotations
+
+from functools import lru_cache
+from pathlib import Path
+
+#: where osifont is found (Debian's fonts-osifont, a user's own fonts)
+OSIFONT = (Path("/usr/share/fonts/truetype/osifont/osifont.ttf"),
+           Path("/usr/local/share/fonts/osifont.ttf"),
+           Path.home() / ".local/share/fonts/osifont.ttf",
+           Path.home() / ".fonts/osifont.ttf")
+#: a character neither font has → what is drawn instead (PDF, SVG)
+STAND_INS = {"…": "...", "ᵗ": "t", "ⁿ": "n"}
+
+
+@lru_cache(maxsize=1)
+def fallback_path() -> str:
+    """matplotlib's DejaVu Sans: there wherever matplotlib is."""
+    import matplotlib
+
+    return str(Path(matplotlib.get_data_path()) / "fonts" / "ttf" / "DejaVuSans.ttf")
+
+
+@lru_cache(maxsize=1)
+def font_path() -> str:
+    """The font file the PDF and SVG are lettered with: osifont if installed, else DejaVu Sans."""
+    for p in OSIFONT:
+        if p.is_file():
+            return str(p)
+    return fallback_path()
+
+
+def font_name() -> str:
+    """The font's family name (for docs and messages)."""
+    return "osifont" if "osifont" in font_path() else "DejaVu Sans"
+
+
+class _Font:
+    """One font file: its glyphs, advance widths and capital height."""
+
+    def __init__(self, path: str):
+        from fontTools.ttLib import TTFont
+
+        f = TTFont(path, lazy=True)
+        self.cmap = f.getBestCmap()
+        self.glyphs = f.getGlyphSet()
+        self.hmtx = f["hmtx"]
+        cap = getattr(f["OS/2"], "sCapHeight", 0) or 0
+        if cap <= 0:                                  # no cap height recorded: measure «H»
+            cap = f["glyf"][self.cmap[ord("H")]].yMax
+        self.cap = float(cap)
+        self.upem = float(f["head"].unitsPerEm)
+        self.outlines: dict[str, list] = {}
+
+    def has(self, ch: str) -> bool:
+        return ord(ch) in self.cmap and not _is_box(self.outline(ch))
+
+    def advance(self, ch: str) -> float:
+        return self.hmtx[self.cmap[ord(ch)]][0] / self.cap
+
+    def outline(self, ch: str) -> list:
+        got = self.outlines.get(ch)
+        if got is None:
+            got = self.outlines[ch] = _draw(self, ch)
+        return got
+
+
+def _draw(font: _Font, ch: str) -> list:
+    """The contours of ``ch`` per unit of capital height: lists of ("M"|"L"|"C", points), the
+    TrueType quadratics raised to cubics."""
+    from fontTools.pens.basePen import BasePen
+
+    k = 1.0 / font.cap
+    contours: list = []
+
+    class Pen(BasePen):
+        def _moveTo(self, p):
+            contours.append([("M", [(p[0] * k, p[1] * k)])])
+
+        def _lineTo(self, p):
+            contours[-1].append(("L", [(p[0] * k, p[1] * k)]))
+
+        def _curveToOne(self, p1, p2, p3):
+            contours[-1].append(("C", [(q[0] * k, q[1] * k) for q in (p1, p2, p3)]))
+
+        def _qCurveToOne(self, p1, p2):
+            p0 = self._getCurrentPoint()
+            c1 = (p0[0] + 2 / 3 * (p1[0] - p0[0]), p0[1] + 2 / 3 * (p1[1] - p0[1]))
+            c2 = (p2[0] + 2 / 3 * (p1[0] - p2[0]), p2[1] + 2 / 3 * (p1[1] - p2[1]))
+            self._curveToOne(c1, c2, p2)
+
+        def _closePath(self):
+            pass
+
+    name = font.cmap.get(ord(ch))
+    if name is not None:
+        font.glyphs[name].draw(Pen(font.glyphs))
+    return contours
+
+
+def _is_box(contours: list) -> bool:
+    """A glyph drawn as one plain quadrilateral as tall as a capital and half as wide: a
+    font's placeholder, not a letter (a minus, a prime, an «I» are quadrilaterals too, but
+    thin)."""
+    if len(contours) != 1 or len(contours[0]) != 4 or \
+            not all(op in ("M", "L") for op, _ in contours[0]):
+        return False
+    xs = [p[0] for _, pts in contours[0] for p in pts]
+    ys = [p[1] for _, pts in contours[0] for p in pts]
+    return max(ys) - min(ys) > 0.6 and max(xs) - min(xs) > 0.35
+
+
+@lru_cache(maxsize=2)
+def _font(path: str) -> _Font:
+    return _Font(path)
+
+
+def _font_of(ch: str) -> _Font | None:
+    """The font that draws ``ch``: the sheet's, else the fallback; None if neither."""
+    for path in (font_path(), fallback_path()):
+        f = _font(path)
+        if f.has(ch):
+            return f
+    return None
+
+
+def drawn_char(ch: str) -> str:
+    """``ch``, or its stand-in if neither font has it."""
+    if ch.isspace() or _font_of(ch) is not None:
+        return ch
+    return STAND_INS.get(ch, "?")
+
+
+def drawn_text(text: str) -> str:
+    """``text`` as the PDF and SVG letter it."""
+    return "".join(drawn_char(c) for c in text)
+
+
+_ADVANCE: dict[str, float] = {}
+
+
+def advance(ch: str) -> float:
+    """The advance width of ``ch`` (or of its stand-in) per unit of capital height [-]."""
+    got = _ADVANCE.get(ch)
+    if got is None:
+        total = 0.0
+        for c in drawn_char(ch):
+            f = _font_of(c) if not c.isspace() else _font(font_path())
+            total += f.advance(c) if f is not None and ord(c) in f.cmap else 0.6
+        got = _ADVANCE[ch] = total
+    return got
+
+
+def outline(ch: str) -> list:
+    """The contours of one drawn character (not a stand-in's) per unit of capital height, from
+    the origin of its baseline."""
+    f = _font_of(ch)
+    return f.outline(ch) if f is not None else []

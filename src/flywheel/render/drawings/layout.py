@@ -1,0 +1,69 @@
+"""The layout step: the views of a sheet packed into its field, each at the highest, then
+leftmost, free place (candidate corners: the field's top left, the right side and the foot
+of every view placed), GAP apart, none over another nor over the title block or column 26
+(sheet.keep_out). A view that finds no place goes to the next sheet of the same name. Views
+are never shrunk (their lettering stays ≥ 2.5 mm on paper); a view larger than a whole field
+is left out and named in ``left_out``.
+"""
+from __future__ import annotations
+
+from flywheel.render.drawings.model import View
+from flywheel.render.drawings.sheet import GAP, field_of, keep_out
+
+
+def _overlaps(a, b) -> bool:
+    return a[0] < b[2] - 1e-9 and b[0] < a[2] - 1e-9 and a[1] < b[3] - 1e-9 \
+        and b[1] < a[3] - 1e-9
+
+
+def _place(w: float, h: float, field, taken) -> tuple[float, float, float, float] | None:
+    """The highest, then leftmost, box w × h in ``field`` clear of ``taken`` (with GAP)."""
+    fx0, fy0, fx1, fy1 = field
+    xs = sorted({fx0, *(b[2] + GAP for b in taken)})
+    tops = sorted({fy1, *(b[1] - GAP for b in taken)}, reverse=True)
+    for top in tops:
+        if top - h < fy0 - 1e-9 or top > fy1 + 1e-9:
+            continue
+        for x in xs:
+            if x < fx0 - 1e-9 or x + w > fx1 + 1e-9:
+                continue
+            box = (x, top - h, x + w, top)
+            if not any(_overlaps(box, (b[0] - GAP, b[1] - GAP, b[2] + GAP, b[3] + GAP))
+                       for b in taken):
+                return box
+    return None
+
+
+def pack(views: list[View], size: str) -> tuple[list[list[View]], list[str]]:
+    """The views placed on as many sheets as they need, in their order; and the names of the
+    views too large for any sheet."""
+    field = field_of(size)
+    fx0, fy0, fx1, fy1 = field
+    sheets: list[list[View]] = []
+    left_out: list[str] = []
+    todo = []
+    for v in views:
+        w, h = v.size
+        if w > fx1 - fx0 or h > fy1 - fy0:
+            left_out.append(v.name)
+        else:
+            todo.append(v)
+    while todo:
+        # the title block and column 26: shrunk by GAP, as _place keeps GAP from every box
+        taken = [(b[0] + GAP, b[1] + GAP, b[2] - GAP, b[3] - GAP) for b in keep_out(size)]
+        placed: list[View] = []
+        rest: list[View] = []
+        for v in todo:
+            w, h = v.size
+            box = _place(w, h, field, taken)
+            if box is None:
+                rest.append(v)
+                continue
+            placed.append(v.placed(box[0], box[1]))
+            taken.append(box)
+        if not placed:                    # cannot happen: a view within the field fits alone
+            left_out.extend(r.name for r in rest)
+            break
+        sheets.append(placed)
+        todo = rest
+    return sheets, left_out

@@ -1,0 +1,353 @@
+"""The ЕСКД drawing sheets (render/drawings, docs/drawings.md): the layout, the title block, the
+formats read back (pypdf, ezdxf), a plan measured in the DXF against the summary's
+velocities, byte-identical reruns, the CLI."""
+from __future__ import annotations
+
+import json
+import math
+import re
+from pathlib import Path
+
+import pytest
+
+from flywheel.render.drawings.layout import pack
+from flywheel.render.drawings.model import View, simplify
+from flywheel.render.drawings.scheme import gost_scale
+from flywheel.render.drawings.sheet import BLOCK_H, BLOCK_W, FORMATS, field_of, keep_out
+
+ROOT = Path(__file__).resolve().parents[2]
+MM_PER_PT = 25.4 / 72.0
+
+
+def _overlap(a, b) -> bool:
+    return a[0] < b[2] - 1e-6 and b[0] < a[2] - 1e-6 and a[1] < b[3] - 1e-6 and b[1] < a[3] - 1e-6
+
+
+def _box_view(name, w, h) -> View:
+    v = View(name)
+    v.line((0, 0), (w, 0), (w, h), (0, h), closed=True)
+    return v
+
+
+# -- the pieces, fast ---------------------------------------------------------------------------
+
+def test_gost_scales_are_the_largest_that_fit():
+    # ГОСТ 2.302: 0.3 m in 200 mm → 1:2 (150 mm; 1:1 would be 300 mm); 0.05 m in 200 mm → 2.5:1
+    assert gost_scale(0.3, 200.0) == (0.5, "1:2")
+    assert gost_scale(0.05, 200.0) == (4.0, "4:1")
+    assert gost_scale(2.0, 220.0) == (0.1, "1:10")
+
+
+def test_a_curve_thinned_stays_within_its_tolerance():
+    xs = [i * 0.05 for i in range(3601)]
+    pts = [(x, 30.0 * math.sin(x / 20.0)) for x in xs]
+    kept = simplify(pts)
+    assert len(kept) < len(pts) / 5
+    # every original point within 0.05 mm of the segment of the thinned line over its abscissa
+    import bisect
+
+    xk = [p[0] for p in kept]
+    worst = 0.0
+    for x, y in pts:
+        j = min(max(bisect.bisect_right(xk, x) - 1, 0), len(kept) - 2)
+        (x0, y0), (x1, y1) = kept[j], kept[j + 1]
+        d = abs((x - x0) * (y1 - y0) - (y - y0) * (x1 - x0)) / math.hypot(x1 - x0, y1 - y0)
+        worst = max(worst, d)
+    assert worst <= 0.05 + 1e-9
+
+
+@pytest.mark.parametrize("size", ["A1", "A2", "A3"])
+def test_packed_views_never_overlap_each_other_nor_the_title_block(size):
+    views = [_box_view(f"v{k}", 60 + 37 * (k % 4), 40 + 23 * (k % 3)) for k in range(30)]
+    sheets, left_out = pack(views, size)
+    assert not left_out
+    assert sum(len(s) for s in sheets) == 30
+    fx0, fy0, fx1, fy1 = field_of(size)
+    for placed in sheets:
+        boxes = [v.box() for v in placed]
+        for b in boxes:
+            assert fx0 - 1e-6 <= b[0] and b[2] <= fx1 + 1e-6 and fy0 - 1e-6 <= b[1] \
+                and b[3] <= fy1 + 1e-6
+            assert not any(_overlap(b, k) for k in keep_out(size))
+        for i, a in enumerate(boxes):
+            for b in boxes[i + 1:]:
+                assert not _overlap(a, b)
+
+
+def test_a_view_larger_than_the_field_is_left_out_by_name():
+    sheets, left_out = pack([_box_view("huge", 500, 100), _box_view("small", 50, 50)], "A3")
+    assert left_out == ["huge"] and [v.name for v in sheets[0]] == ["small"]
+
+
+# -- a whole run: the sheets written and read back ---------------------------------------------
+
+DOCUMENT = """
+[document]
+student = "Иванов И. И."
+teacher = "Петров П. П."
+group = "МТ-301"
+university = "МГТУ им. Н. Э. Баумана"
+"""
+
+
+@pytest.fixture(scope="module")
+def run(tmp_path_factory):
+    """compressor.toml with a [document] table, run with --drawings (Russian); its folder."""
+    from typer.testing import CliRunner
+
+    from flywheel.cli import app
+
+    tmp = tmp_path_factory.mktemp("drawings")
+    case = tmp / "c.toml"
+    case.write_text((ROOT / "cases" / "compressor.toml").read_text(encoding="utf-8") + DOCUMENT,
+                    encoding="utf-8")
+    r = CliRunner().invoke(app, ["run", str(case), "--no-plots", "--drawings", "--lang", "ru",
+                                 "--out", str(tmp / "out"), "--report", "md"])
+    assert r.exit_code == 0, r.output
+    return tmp / "out"
+
+
+@pytest.mark.slow
+def test_the_pdf_pages_are_a1_landscape(run):
+    from pypdf import PdfReader
+
+    for name in ("sheet1.pdf", "sheet2.pdf"):
+        box = PdfReader(run / "drawings" / name).pages[0].mediabox
+        assert float(box.width) * MM_PER_PT == pytest.approx(841.0, abs=0.05)
+        assert float(box.height) * MM_PER_PT == pytest.approx(594.0, abs=0.05)
+
+
+def _texts(doc) -> list:
+    return [e for e in doc.modelspace() if e.dxftype() == "TEXT"]
+
+
+@pytest.mark.slow
+def test_the_dxf_has_its_layers_frame_and_title_block(run):
+    import ezdxf
+
+    doc = ezdxf.readfile(run / "drawings" / "sheet1.dxf")
+    assert doc.dxfversion >= "AC1027"                                # R2013 or later
+    assert doc.header["$INSUNITS"] == 4                              # millimetres
+    layers = {layer.dxf.name: layer for layer in doc.layers}
+    for name, weight in (("MAIN", 70), ("THIN", 35), ("AXIS", 35), ("DASHED", 35)):
+        assert layers[name].dxf.lineweight == weight
+    assert "TEXT" in layers
+    assert doc.styles.get("GOST type B").dxf.oblique == pytest.approx(15.0)
+    msp = doc.modelspace()
+    assert all(e.dxf.layer == "TEXT" for e in _texts(doc))
+    # the frame: 20 mm from the left edge, 5 mm from the others (ГОСТ 2.104)
+    frames = [e for e in msp.query("LWPOLYLINE[layer=='MAIN']") if e.closed
+              and sorted(map(tuple, e.get_points("xy"))) == [(20.0, 5.0), (20.0, 589.0),
+                                                             (836.0, 5.0), (836.0, 589.0)]]
+    assert len(frames) == 1
+    # the title block: 185 × 55 mm in the frame's lower right corner
+    x0, y0 = 836.0 - BLOCK_W, 5.0
+    inside = [e for e in _texts(doc) if x0 <= e.dxf.align_point[0] <= 836.0
+              and y0 <= e.dxf.align_point[1] <= y0 + BLOCK_H]
+    words = {e.dxf.text for e in inside}
+    assert {"Лист 1", "Листов 2", "Иванов И. И.", "Петров П. П.", "Разраб.", "Пров.", "У",
+            "ТММ.КП.00.01"} <= words
+    # the machine's name, over one or two lines of the name field (65 … 135 mm of the block)
+    name = [e for e in inside if x0 + 65 < e.dxf.align_point[0] < x0 + 135
+            and y0 + 15 < e.dxf.align_point[1] < y0 + 40]
+    name.sort(key=lambda e: -e.dxf.align_point[1])
+    title = json.loads((run / "summary.json").read_text(encoding="utf-8"))["title"]
+    assert " ".join(e.dxf.text for e in name).startswith(title)
+    # column 26: the designation turned 180° in the upper left corner
+    assert any(e.dxf.text == "ТММ.КП.00.01" and e.dxf.rotation == 180.0
+               and e.dxf.align_point[1] > 594 - 5 - 14 for e in _texts(doc))
+
+
+def _points(e):
+    kind = e.dxftype()
+    if kind == "LWPOLYLINE":
+        return [tuple(p) for p in e.get_points("xy")]
+    if kind == "CIRCLE":
+        (x, y, _), r = e.dxf.center, e.dxf.radius
+        return [(x - r, y - r), (x + r, y + r)]
+    if kind == "TEXT":
+        return [tuple(e.dxf.align_point)[:2], tuple(e.dxf.insert)[:2]]
+    if kind == "HATCH":
+        pts = []
+        for path in e.paths:
+            pts += [tuple(v)[:2] for v in getattr(path, "vertices", [])]
+            for edge in getattr(path, "edges", []):
+                c, r = edge.center, edge.radius
+                pts += [(c[0] - r, c[1] - r), (c[0] + r, c[1] + r)]
+        return pts
+    raise AssertionError(f"unexpected entity {kind}")
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("name", ["sheet1.dxf", "sheet2.dxf"])
+def test_every_dxf_entity_lies_on_the_sheet_and_texts_are_legible(run, name):
+    import ezdxf
+
+    doc = ezdxf.readfile(run / "drawings" / name)
+    W, H = FORMATS["A1"]
+    n = 0
+    for e in doc.modelspace():
+        for x, y in _points(e):
+            assert -1e-6 <= x <= W + 1e-6 and -1e-6 <= y <= H + 1e-6, (e.dxftype(), x, y)
+        if e.dxftype() == "TEXT":
+            assert e.dxf.height >= 0.7 * 2.5 - 1e-9     # a subscript: 0.7 of 2.5 mm at least
+        n += 1
+    assert n > 200
+
+
+@pytest.mark.slow
+def test_the_views_of_each_sheet_do_not_overlap():
+    from flywheel.cases.run import load_case
+    from flywheel.dynamics.pipeline import analyze
+    from flywheel.render.drawings import build_sheets
+
+    case = load_case(ROOT / "cases" / "compressor.toml")
+    results = analyze(case, n_points=720)
+    for size in ("A1", "A3"):
+        sheets = build_sheets(results, case.document, lang="ru", size=size)
+        assert not any(s.left_out for s in sheets)
+        names = [v.name for s in sheets for v in s.views[1:]]
+        assert {"scheme", "velocity", "acceleration", "lever", "reactions", "hodograph",
+                "wittenbauer", "omega", "epsilon", "results", "indicator HP"} <= set(names)
+        for s in sheets:
+            boxes = [v.box() for v in s.views[1:]]
+            for i, a in enumerate(boxes):
+                assert not any(_overlap(a, k) for k in keep_out(size))
+                for b in boxes[i + 1:]:
+                    assert not _overlap(a, b), (s.stem, a, b)
+        if size == "A3":
+            assert len(sheets) > 2 and sheets[0].count == len(sheets)
+
+
+@pytest.mark.slow
+def test_the_velocity_plan_measures_the_summarys_velocities(run):
+    """Sheet 2's velocity plan read back from the DXF: every vector from the pole, its length
+    times the stated μ_v, is the velocity of its point in summary.json (results.at[0])."""
+    import ezdxf
+
+    doc = ezdxf.readfile(run / "drawings" / "sheet2.dxf")
+    group = doc.groups.get("velocity")
+    texts = [e.dxf.text for e in group if e.dxftype() == "TEXT"]
+    mu_text = next(t for t in texts if "(м/с)/мм" in t)
+    mu = float(re.search(r"=\s*([0-9,]+)", mu_text).group(1).replace(",", "."))
+    lines = [[tuple(p) for p in e.get_points("xy")] for e in group
+             if e.dxftype() == "LWPOLYLINE" and len(e) == 2]
+    starts = [ln[0] for ln in lines]
+    pole = max(set(starts), key=starts.count)
+    from_pole = [math.dist(*ln) * mu for ln in lines if math.dist(ln[0], pole) < 1e-9]
+    at = json.loads((run / "summary.json").read_text(encoding="utf-8"))["results"]["at"][0]
+    moving = {p: d["v"] for p, d in at["points"].items() if d["v"] > 1e-9}
+    assert len(moving) >= 4
+    for p, v in moving.items():
+        assert any(abs(m - v) <= 1e-6 * v + 1e-9 for m in from_pole), (p, v, from_pole)
+
+
+@pytest.mark.slow
+def test_reruns_write_the_same_bytes(tmp_path):
+    from flywheel.cases.run import load_case
+    from flywheel.dynamics.pipeline import analyze
+    from flywheel.render.drawings import write_drawings
+
+    case = load_case(ROOT / "cases" / "fourbar.toml")
+    results = analyze(case, n_points=720)
+    a = write_drawings(results, tmp_path / "a", case.document, lang="en", size="A2")
+    b = write_drawings(results, tmp_path / "b", case.document, lang="en", size="A2")
+    assert [p.name for p in a] == [p.name for p in b] and len(a) >= 6
+    for p, q in zip(a, b):
+        assert p.read_bytes() == q.read_bytes(), p.name
+
+
+@pytest.mark.slow
+def test_a_tabulated_case_gets_sheet1_without_the_scheme(tmp_path):
+    from flywheel.cases.run import load_case
+    from flywheel.dynamics.pipeline import analyze
+    from flywheel.render.drawings import build_sheets
+
+    case = load_case(ROOT / "cases" / "press.toml")         # [tabulated]: no linkage
+    assert case.tabulated is not None
+    results = analyze(case, n_points=720)
+    sheets = build_sheets(results, case.document, lang="ru")
+    names = [v.name for s in sheets for v in s.views]
+    assert "scheme" not in names and "omega" in names and "velocity" not in names
+
+
+@pytest.mark.slow
+def test_the_drawings_command_writes_the_sheets(tmp_path):
+    from typer.testing import CliRunner
+
+    from flywheel.cli import app
+
+    r = CliRunner().invoke(app, ["drawings", str(ROOT / "cases" / "fourbar.toml"), "--out",
+                                 str(tmp_path / "o"), "--sheet-size", "A3", "--lang", "en"])
+    assert r.exit_code == 0, r.output
+    names = sorted(p.name for p in (tmp_path / "o" / "drawings").iterdir())
+    assert {"sheet1.pdf", "sheet1.svg", "sheet1.dxf", "sheet2.pdf"} <= set(names)
+    from pypdf import PdfReader
+
+    box = PdfReader(tmp_path / "o" / "drawings" / "sheet1.pdf").pages[0].mediabox
+    assert (round(float(box.width) * MM_PER_PT), round(float(box.height) * MM_PER_PT)) == (420, 297)
+
+
+def test_the_title_block_fits_long_names_in_its_cells():
+    """Every text of the title block within its 185 × 55 mm, none below 2.5 mm; a long name
+    narrowed (squeeze ≥ 0.8) or cut with «…», never spilling into the next cell."""
+    from types import SimpleNamespace
+
+    from flywheel.render.drawings.sheet import frame_view
+
+    doc = SimpleNamespace(student="Константинопольский К. К.", teacher="Петров П. П.",
+                          tech_control="", norm_control="Кузнецова А. В.", approved="",
+                          university="Московский государственный технический университет "
+                                     "имени Н. Э. Баумана", group="МТ-301",
+                          designation_or_default="ТММ.КП.23.01.00.000.000.000.000.000")
+    v = frame_view("A1", "ru", document=doc, title="Поперечно-строгальный станок с кулисным "
+                   "механизмом и ползуном, привод от электродвигателя через редуктор",
+                   sheet_name="Динамический анализ механизма", number=1, count=2, scale="1:2")
+    x0, y0 = 836.0 - BLOCK_W, 5.0
+    from flywheel.render.drawings.model import Text
+
+    texts = [t for t in v.items if isinstance(t, Text)]
+    for t in texts:
+        assert t.height >= 2.5 and t.squeeze >= 0.8 - 1e-9, t
+        bx0, by0, bx1, by1 = t.box()
+        if t.angle == 0.0:
+            assert x0 - 1e-6 <= bx0 and bx1 <= x0 + BLOCK_W + 1e-6, t
+            assert y0 - 1e-6 <= by0 and by1 <= y0 + BLOCK_H + 1e-6, t
+    student = next(t for t in texts if t.text.startswith("Константин"))
+    sx0, _, sx1, _ = student.box()                      # in its 23 mm column (17 … 40 mm)
+    assert x0 + 17 <= sx0 and sx1 <= x0 + 40
+
+
+def test_without_osifont_the_sheet_is_lettered_in_dejavu(monkeypatch, tmp_path):
+    from flywheel.render.drawings import fonts, model
+    from flywheel.render.drawings.paper import write_paper
+    from flywheel.render.drawings.sheet import frame_view
+
+    monkeypatch.setattr(fonts, "OSIFONT", ())
+    for cached in (fonts.font_path, fonts._font):
+        cached.cache_clear()
+    monkeypatch.setattr(fonts, "_ADVANCE", {})
+    monkeypatch.setattr(model, "_WIDTHS", {})
+    try:
+        assert fonts.font_name() == "DejaVu Sans"
+        from types import SimpleNamespace
+
+        doc = SimpleNamespace(student="Иванов И. И.", teacher="", tech_control="",
+                              norm_control="", approved="", university="", group="",
+                              designation_or_default="ТММ.КП.00.01")
+        v = frame_view("A3", "ru", document=doc, title="Компрессор", sheet_name="Лист",
+                       number=1, count=1, scale="")
+        write_paper({"pdf": tmp_path / "s.pdf", "svg": tmp_path / "s.svg"}, FORMATS["A3"],
+                    v.items)
+        import xml.etree.ElementTree as ET
+
+        root = ET.parse(tmp_path / "s.svg").getroot()
+        assert (root.get("width"), root.get("height")) == ("420mm", "297mm")
+        assert len(root.findall(".//{http://www.w3.org/2000/svg}use")) > 20   # letters placed
+        from pypdf import PdfReader
+
+        box = PdfReader(tmp_path / "s.pdf").pages[0].mediabox
+        assert round(float(box.width) * MM_PER_PT, 1) == 420.0
+    finally:
+        for cached in (fonts.font_path, fonts._font):
+            cached.cache_clear()
