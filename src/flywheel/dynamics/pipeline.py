@@ -15,6 +15,7 @@ import math
 
 import numpy as np
 
+from flywheel.dynamics import applied as A
 from flywheel.dynamics import loads as L
 from flywheel.dynamics import plans, reduction, stages
 from flywheel.dynamics.columns import linkage_columns
@@ -98,11 +99,23 @@ def force_loads(case, mech, dcs: dict, kin, ld: LoadsResult, J_I: float):
         d, u, _, head, far = slider_frame(mech, dcs, cy.piston, cy.head, f"cylinders {cy.name}: piston")
         F = cr.F * np.sign(far.x - head.x)
         pf.append(forces.PointForce(cy.name, cy.piston, d.joint, F[:, None] * u))
+    applied = A.applied_loads(case, mech, kin)
     for f in case.forces:
+        if f.slider is None:
+            pf += [forces.PointForce(f.name, lk, p, F, on)
+                   for lk, p, F, on in applied[f"force {f.name}"].vectors]
+            continue
         d, u, _, _, _ = slider_frame(mech, dcs, f.slider, f.reference, f"forces {f.name}: slider")
         F = -ld.forces[f.name] * np.sign(kin.points[d.joint].v_q @ u)
         pf.append(forces.PointForce(f.name, f.slider, d.joint, F[:, None] * u))
-    couples = tuple(forces.Couple(c.name, c.link, c.moment) for c in case.couples)
+    couples = tuple(forces.Couple(c.name, lk, M, on)
+                    for c in case.couples for lk, M, on in (
+                        applied[f"couple {c.name}"].couples if A.is_new_couple(c)
+                        else ((c.link, c.moment, True),)))
+    for sp in case.springs:
+        ap = applied[f"spring {sp.name}"]
+        pf += [forces.PointForce(sp.name, lk, p, F, on) for lk, p, F, on in ap.vectors]
+        couples += tuple(forces.Couple(sp.name, lk, M, on) for lk, M, on in ap.couples)
     return forces.Loads(dict(case.links), tuple(pf), couples, tuple(case.machine.gravity), J_I)
 
 
@@ -142,21 +155,38 @@ def linkage_loads(case, mech, dcs: dict, kin) -> LoadsResult:
         towards = x_dot * (head.x - far.x) > 0
         cylinders.append(CylinderResult(cy.name, cy.piston, s, towards, p, F, M, s_tab, up, down,
                                         cy.p_max, head.phi))
+    applied = A.applied_loads(case, mech, kin)
     for f in case.forces:
+        key = f"force {f.name}"
+        if f.slider is None:                  # a force at a point (dynamics.applied)
+            M_parts[key], W_parts[key], forces[f.name] = applied[key].M, applied[key].W, applied[key].F
+            continue
         d, u, base, ref, other = slider_frame(mech, dcs, f.slider, f.reference, f"forces {f.name}: slider")
         x = (P[d.joint].r - base) @ u
         x_dot = P[d.joint].v_q @ u
         F, M = L.technological_moment(x, x_dot, ref.x, other.x, f.magnitude, tuple(f.s_range), f.stroke)
-        M_parts[f"force {f.name}"] = M
-        W_parts[f"force {f.name}"] = L.technological_work(x, ref.x, other.x, f.magnitude,
-                                                          tuple(f.s_range), f.stroke)
-        forces[f.name] = F
+        W = L.technological_work(x, ref.x, other.x, f.magnitude, tuple(f.s_range), f.stroke)
+        if f.phi_range_deg is not None:       # and only over a part of the cycle
+            rng, cycle = tuple(math.radians(a) for a in f.phi_range_deg), case.machine.cycle
+            on = A.nodes_on(phi, rng, cycle)
+            F, M = np.where(on, F, 0.0), np.where(on, M, 0.0)
+            W = np.concatenate([[0.0], np.cumsum(np.diff(W) * A.intervals_on(phi, rng, cycle))])
+        M_parts[key], W_parts[key], forces[f.name] = M, W, F
     g = np.asarray(case.machine.gravity, float)
     for name, lk in case.links.items():
         if lk.mass > 0 and np.any(g != 0):
             M_parts[f"gravity {name}"] = L.gravity_moment(lk.mass, g, P[lk.centroid].v_q)
     for c in case.couples:
-        M_parts[f"couple {c.name}"] = c.moment * Lk[c.link].omega_q
+        key = f"couple {c.name}"
+        if A.is_new_couple(c):                # over a range, or a table (dynamics.applied)
+            M_parts[key], W_parts[key] = applied[key].M, applied[key].W
+        else:
+            M_parts[key] = c.moment * Lk[c.link].omega_q
+    for sp in case.springs:                   # −dU/dφ, and the exact work −ΔU
+        key = f"spring {sp.name}"
+        M_parts[key], W_parts[key] = applied[key].M, applied[key].W
+        if applied[key].F is not None:
+            forces[sp.name] = applied[key].F
     return LoadsResult(M_parts=M_parts, W_parts=W_parts, cylinders=tuple(cylinders),
                        forces=forces, warnings=tuple(warnings))
 
