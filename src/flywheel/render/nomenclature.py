@@ -556,10 +556,11 @@ TERMS: dict[str, Term] = {
     # (the labels and sentences without a symbol or a unit: the catalogue, "term:<key>", below)
 }
 
-# the load names inside "M {load}": "gas HP", "gravity 2", "force punch", "couple c", "moment m"
+# the load names inside "M {load}": "gas HP", "gravity 2", "force punch", "couple c", "moment m",
+# "spring s"
 LOAD_KINDS = {"gas": ("gas {x}", "газ {x}"), "gravity": ("gravity, link {x}", "сила тяжести звена {x}"),
               "force": ("force {x}", "сила {x}"), "couple": ("couple {x}", "пара сил {x}"),
-              "moment": ("moment {x}", "момент {x}")}
+              "moment": ("moment {x}", "момент {x}"), "spring": ("spring {x}", "пружина {x}")}
 
 # the sliders' dead centres in the standard positions' labels ("90° = 5 outer d.c."), as
 # dynamics.grid.standard_positions writes them in English
