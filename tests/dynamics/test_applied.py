@@ -16,6 +16,7 @@ import pytest
 from flywheel.cases.run import parse_case
 from flywheel.dynamics.pipeline import analyze
 from flywheel.dynamics import applied as A
+from flywheel.dynamics.loads import LoadKey as K
 from flywheel.errors import InputError
 from flywheel.linkage import solve
 
@@ -48,7 +49,7 @@ def test_rocker_couple_work_is_moment_times_its_swing_over_the_range(bundled):
     case, r = bundled
     th = rocker_angle(case, [40.0, 220.0])
     truth = -40.0 * (th[1] - th[0])
-    assert r.loads.W_parts["couple resistance"][-1] == pytest.approx(truth, rel=1e-12)
+    assert r.loads.W_parts[K("couple", "resistance")][-1] == pytest.approx(truth, rel=1e-12)
     # the spring gives back what it takes: the cycle's resistance work is the couple's alone
     assert r.energy.cycle_work_resistance == pytest.approx(truth, rel=1e-9)
     assert r.energy.driving_moment == pytest.approx(-truth / (2 * math.pi), rel=1e-9)
@@ -57,7 +58,7 @@ def test_rocker_couple_work_is_moment_times_its_swing_over_the_range(bundled):
 def test_couple_acts_on_its_closed_range_only(bundled):
     case, r = bundled
     phi = np.degrees(r.phi)
-    M = r.loads.M_parts["couple resistance"]
+    M = r.loads.M_parts[K("couple", "resistance")]
     omega_q3 = r.kinematics.links["3"].omega_q
     inside = (phi >= 40 - 1e-9) & (phi <= 220 + 1e-9)
     assert np.all(M[~inside] == 0)
@@ -75,7 +76,7 @@ def test_a_range_that_wraps_through_zero():
     th = rocker_angle(case, [300.0, 360.0, 0.0, 60.0])
     truth = 40.0 * ((th[1] - th[0]) + (th[3] - th[2]))
     assert truth < 0
-    assert r.loads.W_parts["couple resistance"][-1] == pytest.approx(truth, rel=1e-12)
+    assert r.loads.W_parts[K("couple", "resistance")][-1] == pytest.approx(truth, rel=1e-12)
 
 
 def test_couple_table_against_phi_converges_to_its_integral():
@@ -90,7 +91,7 @@ def test_couple_table_against_phi_converges_to_its_integral():
     M = 10.0 * (1 - fine / 90.0)
     truth = float(np.sum((M[:-1] + M[1:]) / 2 * np.diff(th)))
     r = analyze(case, n_points=3600)
-    assert r.loads.W_parts["couple t"][-1] == pytest.approx(truth, rel=1e-6)
+    assert r.loads.W_parts[K("couple", "t")][-1] == pytest.approx(truth, rel=1e-6)
 
 
 FORCE_TABLE = """
@@ -108,7 +109,7 @@ def test_force_versus_travel_work_is_the_tables_area():
     case = case_of(FORCE_TABLE)
     r = analyze(case, n_points=720)
     area = float(np.trapezoid([0.0, 100.0, 100.0, 0.0], [0.0, 0.05, 0.10, 0.15]))
-    assert r.loads.W_parts["force press"][-1] == pytest.approx(-area, rel=1e-12)
+    assert r.loads.W_parts[K("force", "press")][-1] == pytest.approx(-area, rel=1e-12)
     # the table ends within the range: B's arc over it, 0.3·Δθ3, is longer than 0.15 m
     th = rocker_angle(case, [40.0, 220.0])
     assert 0.3 * abs(th[1] - th[0]) > 0.15
@@ -131,7 +132,7 @@ def test_force_versus_travel_on_a_slider_is_exact_on_its_straight_path():
     # the area of the table up to the travel reached (the stroke may end before 0.2 m)
     s = min(path, 0.2)
     area = 0.5 * 0.02 * 500.0 + 500.0 * (s - 0.02)
-    assert r.loads.W_parts["force f"][-1] == pytest.approx(-area, rel=1e-9)
+    assert r.loads.W_parts[K("force", "f")][-1] == pytest.approx(-area, rel=1e-9)
 
 
 def spring_energy(case, r, P, Q, c, L0):
@@ -147,9 +148,9 @@ def test_linear_spring_moment_is_minus_dU_dphi_and_does_no_cycle_work(bundled):
     L37 = float(np.hypot(*(at.points["E"].r[0] - at.points["B"].r[0])))
     U = spring_energy(case, r, "E", "B", 200.0, L37 - 20.0 / 200.0)
     dU = np.gradient(U, r.phi, edge_order=2)
-    M = r.loads.M_parts["spring return"]
+    M = r.loads.M_parts[K("spring", "return")]
     np.testing.assert_allclose(M, -dU, rtol=0, atol=2e-4 * np.max(np.abs(M)))
-    assert r.loads.W_parts["spring return"][-1] == pytest.approx(0.0, abs=1e-12)
+    assert r.loads.W_parts[K("spring", "return")][-1] == pytest.approx(0.0, abs=1e-12)
     trapezoid = float(np.sum((M[:-1] + M[1:]) / 2 * np.diff(r.phi)))
     assert abs(trapezoid) < 1e-4 * np.max(np.abs(M))
     assert r.loads.forces["return"][int(np.argmin(np.abs(r.phi - math.radians(37))))] == \
@@ -173,9 +174,9 @@ def test_torsional_spring_moment_is_minus_dU_dphi_and_does_no_cycle_work():
     th = np.unwrap(np.arctan2(*(r.kinematics.points["B"].r - r.kinematics.points["D"].r).T[::-1]))
     U = 0.5 * 30.0 * (th - math.radians(80.0)) ** 2
     dU = np.gradient(U, r.phi, edge_order=2)
-    M = r.loads.M_parts["spring torsion"]
+    M = r.loads.M_parts[K("spring", "torsion")]
     np.testing.assert_allclose(M, -dU, rtol=0, atol=2e-4 * np.max(np.abs(M)))
-    assert r.loads.W_parts["spring torsion"][-1] == pytest.approx(0.0, abs=1e-12)
+    assert r.loads.W_parts[K("spring", "torsion")][-1] == pytest.approx(0.0, abs=1e-12)
     assert r.forces.closure < 1e-9
 
 
@@ -217,10 +218,10 @@ def test_point_forces_close_the_kinetostatics_and_a_fixed_force_is_conservative(
                                rtol=1e-9)
     # a constant force of fixed direction is a potential's: its work is F·e·(r(φ) − r(0))
     S2 = r.kinematics.points["S2"].r
-    W = r.loads.W_parts["force weight"]
+    W = r.loads.W_parts[K("force", "weight")]
     np.testing.assert_allclose(W, -50.0 * (S2[:, 1] - S2[0, 1]), rtol=0, atol=1e-12)
     # across link 3 at B: M = F·(−sin θ3, cos θ3)·v_qB = F·|DB|·ω_q3 inside its range
-    M = r.loads.M_parts["force push"]
+    M = r.loads.M_parts[K("force", "push")]
     deg = np.degrees(r.phi)
     inside = (deg >= 250 - 1e-9) | (deg <= 20 + 1e-9)
     np.testing.assert_allclose(M[inside], 15.0 * 0.3 * r.kinematics.links["3"].omega_q[inside],

@@ -16,6 +16,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from flywheel.dynamics.loads import LoadKey
 from flywheel.errors import InputError, Notice
 
 TOL = 1e-9
@@ -305,17 +306,17 @@ def spring(sp, case, mech, kin) -> Applied:
                          kin.points[Q].v_q, sp.stiffness, L0, ends)
 
 
-def applied_loads(case, mech, kin) -> dict[str, Applied]:
-    """Every load of the case this module computes, by its key in M_parts ("force NAME",
-    "couple NAME", "spring NAME"): the point forces, the couples with a range or a table, the
-    springs — in the order of the case."""
-    out: dict[str, Applied] = {}
+def applied_loads(case, mech, kin) -> dict[LoadKey, Applied]:
+    """Every load of the case this module computes, by its key in M_parts (kind "force",
+    "couple", "spring"): the point forces, the couples with a range or a table, the springs —
+    in the order of the case."""
+    out: dict[LoadKey, Applied] = {}
     for f in case.forces:
         if f.point is not None:
-            out[f"force {f.name}"] = force_at_point(f, case, mech, kin)
+            out[LoadKey("force", f.name)] = force_at_point(f, case, mech, kin)
     for c in case.couples:
         if is_new_couple(c):
-            out[f"couple {c.name}"] = couple_on_link(c, case, kin)
+            out[LoadKey("couple", c.name)] = couple_on_link(c, case, kin)
     for sp in case.springs:
-        out[f"spring {sp.name}"] = spring(sp, case, mech, kin)
+        out[LoadKey("spring", sp.name)] = spring(sp, case, mech, kin)
     return out

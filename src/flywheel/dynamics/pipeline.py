@@ -103,17 +103,17 @@ def force_loads(case, mech, dcs: dict, kin, ld: LoadsResult, J_I: float):
     for f in case.forces:
         if f.slider is None:
             pf += [forces.PointForce(f.name, lk, p, F, on)
-                   for lk, p, F, on in applied[f"force {f.name}"].vectors]
+                   for lk, p, F, on in applied[L.LoadKey("force", f.name)].vectors]
             continue
         d, u, _, _, _ = slider_frame(mech, dcs, f.slider, f.reference, f"forces {f.name}: slider")
         F = -ld.forces[f.name] * np.sign(kin.points[d.joint].v_q @ u)
         pf.append(forces.PointForce(f.name, f.slider, d.joint, F[:, None] * u))
     couples = tuple(forces.Couple(c.name, lk, M, on)
                     for c in case.couples for lk, M, on in (
-                        applied[f"couple {c.name}"].couples if A.is_new_couple(c)
+                        applied[L.LoadKey("couple", c.name)].couples if A.is_new_couple(c)
                         else ((c.link, c.moment, True),)))
     for sp in case.springs:
-        ap = applied[f"spring {sp.name}"]
+        ap = applied[L.LoadKey("spring", sp.name)]
         pf += [forces.PointForce(sp.name, lk, p, F, on) for lk, p, F, on in ap.vectors]
         couples += tuple(forces.Couple(sp.name, lk, M, on) for lk, M, on in ap.couples)
     return forces.Loads(dict(case.links), tuple(pf), couples, tuple(case.machine.gravity), J_I)
@@ -124,8 +124,8 @@ def linkage_loads(case, mech, dcs: dict, kin) -> LoadsResult:
     technological forces (with their exact works), weights, couples — each as its reduced
     moment, by name (seed 000 §3.2; design.md §2). ``dcs``: the sliders' dead centres."""
     phi, P, Lk = kin.phi, kin.points, kin.links
-    M_parts: dict[str, np.ndarray] = {}
-    W_parts: dict[str, np.ndarray] = {}      # exact cumulative works, where the trapezoid is not
+    M_parts: dict[L.LoadKey, np.ndarray] = {}
+    W_parts: dict[L.LoadKey, np.ndarray] = {}      # exact cumulative works, where the trapezoid is not
     cylinders: list[CylinderResult] = []
     forces: dict[str, np.ndarray] = {}
     warnings: list[str] = []
@@ -133,7 +133,7 @@ def linkage_loads(case, mech, dcs: dict, kin) -> LoadsResult:
     for cy in case.cylinders:
         if cy.four_stroke:
             cylinders.append(four_stroke_cylinder(cy, mech, dcs, kin, fires_at[cy.name]))
-            M_parts[f"gas {cy.name}"] = cylinders[-1].M
+            M_parts[L.LoadKey("gas", cy.name)] = cylinders[-1].M
             continue
         d, u, base, head, far = slider_frame(mech, dcs, cy.piston, cy.head, f"cylinders {cy.name}: piston")
         x = (P[d.joint].r - base) @ u
@@ -151,13 +151,13 @@ def linkage_loads(case, mech, dcs: dict, kin) -> LoadsResult:
                 "indicator table gives negative pressure, down to {p:.4g} MPa at φ = "
                 "{phi_deg:.1f}° (use 'pchip' to avoid overshoot)", cylinder=cy.name,
                 kind=cy.interpolation, p=p_mpa, phi_deg=at))
-        M_parts[f"gas {cy.name}"] = M
+        M_parts[L.LoadKey("gas", cy.name)] = M
         towards = x_dot * (head.x - far.x) > 0
         cylinders.append(CylinderResult(cy.name, cy.piston, s, towards, p, F, M, s_tab, up, down,
                                         cy.p_max, head.phi))
     applied = A.applied_loads(case, mech, kin)
     for f in case.forces:
-        key = f"force {f.name}"
+        key = L.LoadKey("force", f.name)
         if f.slider is None:                  # a force at a point (dynamics.applied)
             M_parts[key], W_parts[key], forces[f.name] = applied[key].M, applied[key].W, applied[key].F
             continue
@@ -175,15 +175,15 @@ def linkage_loads(case, mech, dcs: dict, kin) -> LoadsResult:
     g = np.asarray(case.machine.gravity, float)
     for name, lk in case.links.items():
         if lk.mass > 0 and np.any(g != 0):
-            M_parts[f"gravity {name}"] = L.gravity_moment(lk.mass, g, P[lk.centroid].v_q)
+            M_parts[L.LoadKey("gravity", name)] = L.gravity_moment(lk.mass, g, P[lk.centroid].v_q)
     for c in case.couples:
-        key = f"couple {c.name}"
+        key = L.LoadKey("couple", c.name)
         if A.is_new_couple(c):                # over a range, or a table (dynamics.applied)
             M_parts[key], W_parts[key] = applied[key].M, applied[key].W
         else:
             M_parts[key] = c.moment * Lk[c.link].omega_q
     for sp in case.springs:                   # −dU/dφ, and the exact work −ΔU
-        key = f"spring {sp.name}"
+        key = L.LoadKey("spring", sp.name)
         M_parts[key], W_parts[key] = applied[key].M, applied[key].W
         if applied[key].F is not None:
             forces[sp.name] = applied[key].F
@@ -235,7 +235,7 @@ def report_angles(at_deg: list[float], kin, ld: LoadsResult, red: ReductionResul
         out.append(AtAngle(
             phi_deg=float(a), omega=w, epsilon=e,
             J_II=float(red.J_II[i]), dJ_II=float(red.dJ_II[i]), M_sum=float(en.M_sum[i]),
-            moments={k: float(v[i]) for k, v in ld.M_parts.items()},
+            moments={str(k): float(v[i]) for k, v in ld.M_parts.items()},
             forces={**{c.name: float(c.F[i]) for c in ld.cylinders},     # gas, then technological
                     **{k: float(F[i]) for k, F in ld.forces.items()}},
             points=pts, links=lks))

@@ -11,6 +11,7 @@ formula), ch. 16–17 (reduction, Merzalov's method, the energy–mass diagram).
 from __future__ import annotations
 
 import math
+from flywheel.dynamics.loads import LoadKey
 from flywheel.render import nomenclature as nm
 from flywheel.render.catalogue import words
 from flywheel.render.blocks import (  # noqa: F401  (the model, re-exported)
@@ -457,11 +458,11 @@ def _input_of_case(b: _Builder, case, t: dict, lang: str) -> None:
             rng = load.phi_range_deg
             return text if rng is None else f"{text}; {t['over'].format(a=g(rng[0], 6), b=g(rng[1], 6))}"
 
-        rows = [[nm.load_name(f"force {f.name}", lang), f.slider if f.slider is not None else f.point,
+        rows = [[nm.load_name(LoadKey("force", f.name), lang), f.slider if f.slider is not None else f.point,
                  value(f, f.magnitude), u("force_magnitude")] for f in case.forces]
-        rows += [[nm.load_name(f"couple {c.name}", lang), c.link, value(c, c.moment), u("couple_moment")]
+        rows += [[nm.load_name(LoadKey("couple", c.name), lang), c.link, value(c, c.moment), u("couple_moment")]
                  for c in case.couples]
-        rows += [[nm.load_name(f"spring {s.name}", lang),
+        rows += [[nm.load_name(LoadKey("spring", s.name), lang),
                   "–".join(s.points) if s.kind == "linear" else s.link, f"c = {g(s.stiffness, 6)}",
                   nm.unit("N/m" if s.kind == "linear" else "N·m/rad", lang)] for s in springs]
         b.table(t["forces"], [t["name"], t["link"], t["val"], t["unit"]], rows)

@@ -234,7 +234,7 @@ def figure_reduced_moments(results, lang: str = "en"):
     """Every reduced moment by name, M_known, the constant balancing moment and M_Σ; gravity
     and couples (small) on a second plot below."""
     def build():
-        small = [k for k in results.M_parts if k.startswith(("gravity ", "couple "))]
+        small = [k for k in results.M_parts if k.kind in ("gravity", "couple")]
         big = [k for k in results.M_parts if k not in small]
         rows = 2 if small else 1
         fig, axes = fg.figure(fg.TALL if small else fg.WIDE, rows, 1, sharex=True, squeeze=False,
