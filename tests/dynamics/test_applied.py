@@ -153,7 +153,7 @@ def test_linear_spring_moment_is_minus_dU_dphi_and_does_no_cycle_work(bundled):
     assert r.loads.W_parts[K("spring", "return")][-1] == pytest.approx(0.0, abs=1e-12)
     trapezoid = float(np.sum((M[:-1] + M[1:]) / 2 * np.diff(r.phi)))
     assert abs(trapezoid) < 1e-4 * np.max(np.abs(M))
-    assert r.loads.forces["return"][int(np.argmin(np.abs(r.phi - math.radians(37))))] == \
+    assert r.loads.tensions["return"][int(np.argmin(np.abs(r.phi - math.radians(37))))] == \
         pytest.approx(20.0, rel=1e-9)
 
 

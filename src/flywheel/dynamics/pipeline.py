@@ -128,6 +128,7 @@ def linkage_loads(case, mech, dcs: dict, kin) -> LoadsResult:
     W_parts: dict[L.LoadKey, np.ndarray] = {}      # exact cumulative works, where the trapezoid is not
     cylinders: list[CylinderResult] = []
     forces: dict[str, np.ndarray] = {}
+    tensions: dict[str, np.ndarray] = {}
     warnings: list[str] = []
     fires_at = firing_angles(case, mech, dcs) if any(c.four_stroke for c in case.cylinders) else {}
     for cy in case.cylinders:
@@ -186,9 +187,9 @@ def linkage_loads(case, mech, dcs: dict, kin) -> LoadsResult:
         key = L.LoadKey("spring", sp.name)
         M_parts[key], W_parts[key] = applied[key].M, applied[key].W
         if applied[key].F is not None:
-            forces[sp.name] = applied[key].F
+            tensions[sp.name] = applied[key].F
     return LoadsResult(M_parts=M_parts, W_parts=W_parts, cylinders=tuple(cylinders),
-                       forces=forces, warnings=tuple(warnings))
+                       forces=forces, warnings=tuple(warnings), tensions=tensions)
 
 
 def linkage_reduction(case, kin) -> ReductionResult:
@@ -237,7 +238,8 @@ def report_angles(at_deg: list[float], kin, ld: LoadsResult, red: ReductionResul
             J_II=float(red.J_II[i]), dJ_II=float(red.dJ_II[i]), M_sum=float(en.M_sum[i]),
             moments={str(k): float(v[i]) for k, v in ld.M_parts.items()},
             forces={**{c.name: float(c.F[i]) for c in ld.cylinders},     # gas, then technological
-                    **{k: float(F[i]) for k, F in ld.forces.items()}},
+                    **{k: float(F[i]) for k, F in ld.forces.items()},
+                    **{k: float(T[i]) for k, T in ld.tensions.items()}},     # then springs
             points=pts, links=lks))
     return tuple(out)
 

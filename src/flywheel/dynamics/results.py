@@ -68,6 +68,7 @@ class LoadsResult:
     cylinders: tuple[CylinderResult, ...] = ()
     forces: dict[str, np.ndarray] = field(default_factory=dict)  # technological force → F(φ) [N]
     warnings: tuple[str, ...] = ()
+    tensions: dict[str, np.ndarray] = field(default_factory=dict)  # linear spring → T(φ) [N]
 
 
 @dataclass(frozen=True)

@@ -46,6 +46,7 @@ _TEXT = words("plots", {
     "forces": "forces on the pistons",
     "F_gas": "gas force on piston {p}, cylinder {c}",
     "F_tech": "technological force {n}",
+    "F_spring": "tension of spring {n}",
     "F_at": "{c} at φ = {a:g}°: {v:.4g} {u}",
     "moments": "reduced moments",
     "M_known": "{M}: the given loads",
@@ -219,8 +220,10 @@ def figure_piston_forces(results, lang: str = "en"):
                                  u=nm.unit_of(f"F_{c.name}", lang)))
         for key, col in results.columns.items():
             if key.startswith("F_") and key not in names:
-                ax.plot(deg, col.values, linestyle="--",
-                        label=_t(lang, "F_tech", n=nm.member(key, lang)))
+                spring = key[2:] in results.loads.tensions
+                ax.plot(deg, col.values, linestyle=":" if spring else "--",
+                        label=_t(lang, "F_spring" if spring else "F_tech",
+                                 n=nm.member(key, lang)))
         ax.axhline(0.0, color="0.3", linewidth=0.6)
         ax.set_ylabel(nm.axis("F_{load}", lang))
         fg.phi_axis(ax, lang, cycle_deg=results.cycle_deg)
