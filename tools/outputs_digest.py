@@ -25,7 +25,8 @@ from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
 RUN_CASES = ["compressor", "compressor_given_flywheel", "compressor_worksheet", "engine_4stroke",
-             "engine_inline4", "fourbar", "press", "pump", "shaper", "slotted_link"]
+             "engine_inline4", "fourbar", "fourbar_rocker_load", "press", "pump", "shaper",
+             "slotted_link"]
 LANGS = ("en", "ru")
 
 

@@ -269,7 +269,8 @@ def test_every_field_is_documented():
     text = DOC.read_text(encoding="utf-8")
     tables = [models.Machine, models.Design, models.CrankSpec, models.GuideSpec, models.RRPSpec,
               models.RRRSpec, models.RPRSpec, models.PointSpec, models.LinkSpec,
-              models.CylinderSpec, models.ForceSpec, models.CoupleSpec, models.FlywheelSpec,
+              models.CylinderSpec, models.ForceSpec, models.CoupleSpec, models.SpringSpec,
+              models.FlywheelSpec,
               models.MotorSpec, models.OutputSpec, models.ForceAnalysisSpec, models.Case]
     missing = [f"{m.__name__}.{f.alias or n}" for m in tables for n, f in m.model_fields.items()
                if f"`{f.alias or n}`" not in text and f"[{f.alias or n}]" not in text]

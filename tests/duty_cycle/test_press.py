@@ -18,6 +18,7 @@ import pytest
 from typer.testing import CliRunner
 
 from flywheel.dynamics import tabulated
+from flywheel.dynamics.loads import LoadKey
 from flywheel.cases.run import load_case, parse_case
 from flywheel.cli import app
 from flywheel.errors import CaseFileError
@@ -112,7 +113,7 @@ def test_static_moments_every_position(press):
     assert mst.size == 13
     np.testing.assert_allclose(mst, MST_EXACT, atol=5e-6)
     parts = tabulated.load_moments_at_positions(press.tabulated)
-    terms = np.column_stack([parts[f"force {n}"] for n in ("G2", "G3", "G5", "punch")])
+    terms = np.column_stack([parts[LoadKey("force", n)] for n in ("G2", "G3", "G5", "punch")])
     for pos, (printed_terms, printed_total) in MST_SEED.items():
         i = pos - 1
         for k, t in enumerate(printed_terms):
@@ -484,7 +485,7 @@ def _compressor_as_table(case, exact, n: int, loads: str = "linear") -> dict:
             "omega_q": {k: kin.links[k].omega_q.tolist() for k in ("2", "4")},
             "links": {"2": {"mass": 0.8, "point": "S2", "J": 0.21}, "3": {"mass": 0.6, "point": "B"},
                       "4": {"mass": 0.8, "point": "S4", "J": 0.21}, "5": {"mass": 1.0, "point": "C"}},
-            "moments": [{"name": k, "values": [float(v[i]) for i in idx], "interpolation": loads}
+            "moments": [{"name": str(k), "values": [float(v[i]) for i in idx], "interpolation": loads}
                         for k, v in exact.M_parts.items()],
         },
     }

@@ -18,6 +18,7 @@ from typer.testing import CliRunner
 
 from flywheel.cases.run import load_case, parse_case
 from flywheel.cli import app
+from flywheel.dynamics.loads import LoadKey
 from flywheel.dynamics.pipeline import analyze
 from flywheel.errors import CaseFileError, InputError
 from flywheel.io.toml import read_toml
@@ -120,7 +121,7 @@ def test_firing_in_the_second_revolution_shifts_the_cycle_by_360():
     data = single()
     data["cylinders"][0]["fires_at_deg"] = 350.0          # the head dead centre nearest: 360°
     b = analyze(parsed(data), n_points=720)
-    Ma, Mb = a.M_parts["gas 1"], b.M_parts["gas 1"]
+    Ma, Mb = a.M_parts[LoadKey("gas", "1")], b.M_parts[LoadKey("gas", "1")]
     tol = dict(rtol=1e-9, atol=1e-9 * np.abs(Ma).max())
     assert a.phi.size == 721                                # 1° nodes: 360° is 360 nodes
     assert np.allclose(Mb[360:], Ma[:361], **tol) and np.allclose(Mb[:361], Ma[360:], **tol)

@@ -27,6 +27,7 @@ from flywheel.cases.run_linkage import (  # noqa: F401
     Branch, CrankSpec, DyadSpec, GuideSpec, LinkSpec, PinSpec, PointSpec, RPRSpec, RRPSpec, RRRSpec)
 from flywheel.cases.run_cylinders import (  # noqa: F401
     STROKE_ORDER, CylinderSpec, DiagramSpec, StrokesSpec)
+from flywheel.cases.run_loads import CoupleSpec, ForceSpec, SpringSpec  # noqa: F401
 from flywheel.cases.run_checks import (  # noqa: F401
     ATM, DELTA_USUAL, _check_references, plausibility_warnings)
 
@@ -94,29 +95,6 @@ class Design(StrictModel):
         None, description="V_ср [m/s]: crank length l1 = V_ср/(4·n1) where crank.length is omitted")
     rod_to_crank: Annotated[float, Field(gt=0), _within(1e-3, 1e3, "")] | None = Field(
         None, description="k: rod length = k·l1 for every RRP dyad whose rod_length is omitted")
-
-
-
-class ForceSpec(StrictModel):
-    """A technological (resistance) force on a slider over part of its stroke; it acts against
-    the slider's motion."""
-
-    name: Name
-    slider: Name = Field(description="slider link of an RRP dyad")
-    magnitude: Force = Field(description="force [N] (> 0 resists the motion)")
-    reference: Literal["outer", "inner"] = Field("outer", description="dead centre s is measured from")
-    s_range: XY = Field((0.0, 1.0), description="relative travel where the force acts, 0 … 1")
-    stroke: Literal["towards", "away", "both"] = Field(
-        "both", description="acts while the slider moves towards / away from the reference")
-
-
-class CoupleSpec(StrictModel):
-    """A constant couple on a link [N·m], counter-clockwise positive."""
-
-    name: Name
-    link: Name
-    moment: Moment
-
 
 
 
@@ -271,6 +249,7 @@ class Case(StrictModel):
     cylinders: list[CylinderSpec] = Field(default_factory=list)
     forces: list[ForceSpec] = Field(default_factory=list)
     couples: list[CoupleSpec] = Field(default_factory=list)
+    springs: list[SpringSpec] = Field(default_factory=list, description="linear and torsional springs (docs/case-format.md, [[springs]])")
     flywheel: FlywheelSpec = Field(default_factory=FlywheelSpec)
     motor: MotorSpec | None = None
     output: OutputSpec = Field(default_factory=OutputSpec)

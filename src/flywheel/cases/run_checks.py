@@ -6,6 +6,7 @@ from __future__ import annotations
 from flywheel.errors import Notice
 from flywheel.io.schema import FieldError
 from flywheel.cases.run_linkage import RRPSpec, RRRSpec
+from flywheel.cases.run_loads import check_loads
 from flywheel.units import PA_PER_MPA, RPM_PER_RAD_S, SECONDS_PER_MINUTE, TWO_PI
 
 
@@ -30,7 +31,7 @@ def _check_references(case) -> None:
             "motor_too_slow", "{n0:g} rpm is not above the mean speed {n:g} rpm",
             n0=case.motor.no_load_speed_rpm, n=case.machine.omega_mean * RPM_PER_RAD_S))
     if case.tabulated is not None:   # no linkage: masses and loads live in [tabulated]
-        for key in ("ground", "dyads", "points", "links", "cylinders", "forces", "couples"):
+        for key in ("ground", "dyads", "points", "links", "cylinders", "forces", "couples", "springs"):
             if getattr(case, key):
                 raise FieldError((key,), Notice.of(
                     "run_not_with_tabulated", "not allowed with [tabulated]: give masses and "
@@ -155,21 +156,12 @@ def _check_references(case) -> None:
                                      "MPa gauge, below absolute vacuum (allowed: p ≥ −0.101325 "
                                      "MPa gauge)", low=low, mpa=low * c.p_max / PA_PER_MPA))
     _check_engine(case)
-    for i, f in enumerate(case.forces):
-        if f.slider not in sliders:
-            raise FieldError(("forces", i, "slider"), Notice.of(
-                "not_a_slider", "{name!r} is not the slider of an RRP dyad", name=f.slider))
-        lo, hi = f.s_range
-        if not 0 <= lo < hi <= 1:
-            raise FieldError(("forces", i, "s_range"), Notice.of(
-                "s_range", "must satisfy 0 ≤ from < to ≤ 1 (got {lo}, {hi})", lo=lo, hi=hi))
-    for i, c in enumerate(case.couples):
-        if c.link not in links:
-            raise FieldError(("couples", i, "link"), Notice.of(
-                "no_link", "no link named {name!r}", name=c.link))
+    fixed = set(case.ground) | {case.crank.pivot}
+    check_loads(case, points, links, on, sliders, fixed)
     names = ([(("cylinders", i, "name"), c.name) for i, c in enumerate(case.cylinders)]
              + [(("forces", i, "name"), f.name) for i, f in enumerate(case.forces)]
-             + [(("couples", i, "name"), c.name) for i, c in enumerate(case.couples)])
+             + [(("couples", i, "name"), c.name) for i, c in enumerate(case.couples)]
+             + [(("springs", i, "name"), c.name) for i, c in enumerate(case.springs)])
     seen: set[str] = set()
     for loc, n in names:
         if n in seen:

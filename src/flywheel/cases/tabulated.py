@@ -257,4 +257,4 @@ def _check_finite(t: TabulatedSpec) -> None:
                 raise TableError((), Notice.of(
                     "tab_moment_overflow", "the reduced moment of {load} overflows at position {k} "
                     "({a:g}°): the values are out of range (allowed: SI values, N and m)",
-                    load=name, k=i + 1, a=t.positions_deg[i]))
+                    load=str(name), k=i + 1, a=t.positions_deg[i]))

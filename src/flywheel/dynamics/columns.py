@@ -51,6 +51,8 @@ def _loads(ld: LoadsResult) -> dict[str, Column]:
             cols[f"stroke_{c.name}"] = Column(c.stroke.astype(float), "-")
     for name, F in ld.forces.items():
         cols[f"F_{name}"] = Column(F, "N")
+    for name, T in ld.tensions.items():           # a linear spring's tension
+        cols[f"F_{name}"] = Column(T, "N")
     return cols
 
 

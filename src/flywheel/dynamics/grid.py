@@ -9,7 +9,7 @@ from dataclasses import replace
 
 import numpy as np
 
-from flywheel.dynamics import loads
+from flywheel.dynamics import applied, loads
 from flywheel.dynamics.results import DeadCentre, Position
 from flywheel.errors import InputError, Notice, led
 from flywheel.linkage import Kinematics, LinkMotion, PointMotion, solve
@@ -170,8 +170,10 @@ def linkage_grid(case, mech, dcs: dict, n_points: int, extra: list[float]) -> tu
     cycle = case.machine.cycle
     phi = closed_grid(n_points, extra, cycle)
     kin = solve(mech, phi)
-    if case.forces:
-        switch = force_switch_angles(case.forces, mech, dcs, phi, kin)
+    sliding = [f for f in case.forces if f.slider is not None]
+    if sliding or case.couples or case.springs:
+        switch = (force_switch_angles(sliding, mech, dcs, phi, kin)
+                  + applied.grid_nodes(case))       # ranges' ends, tables' rows (issue 24)
         if switch:
             phi = closed_grid(n_points, extra + switch, cycle)
             kin = refined(mech, kin, phi)

@@ -6,7 +6,34 @@ drives the crank.
 """
 from __future__ import annotations
 
+from dataclasses import dataclass
+
 import numpy as np
+
+
+@dataclass(frozen=True)
+class LoadKey:
+    """A load's key in the reduced moments and works (``LoadsResult.M_parts``, ``W_parts``):
+    its ``kind`` — "gas", "force", "gravity", "couple", "spring", "moment" (a tabulated case's
+    given moment) — and its ``name`` (a cylinder's, a force's, a link's, …). Its text
+    "kind name" is the spelling of table.csv's columns ("M gas HP") and of summary.json's
+    moments, unchanged; renderers read ``kind`` and ``name``, never split the text.
+
+    >>> str(LoadKey("gas", "HP")), LoadKey.parse("gravity 2")
+    ('gas HP', LoadKey(kind='gravity', name='2'))
+    """
+
+    kind: str
+    name: str
+
+    def __str__(self) -> str:
+        return f"{self.kind} {self.name}"
+
+    @classmethod
+    def parse(cls, text: str) -> "LoadKey":
+        """The key of the text "kind name" (a column's family member, a message's parameter)."""
+        kind, _, name = text.partition(" ")
+        return cls(kind, name)
 
 
 def natural_spline(x: np.ndarray, y: np.ndarray, xq: np.ndarray) -> np.ndarray:

@@ -15,6 +15,7 @@ import math
 
 import numpy as np
 
+from flywheel.dynamics import applied as A
 from flywheel.dynamics import loads as L
 from flywheel.dynamics import plans, reduction, stages
 from flywheel.dynamics.columns import linkage_columns
@@ -98,11 +99,23 @@ def force_loads(case, mech, dcs: dict, kin, ld: LoadsResult, J_I: float):
         d, u, _, head, far = slider_frame(mech, dcs, cy.piston, cy.head, f"cylinders {cy.name}: piston")
         F = cr.F * np.sign(far.x - head.x)
         pf.append(forces.PointForce(cy.name, cy.piston, d.joint, F[:, None] * u))
+    applied = A.applied_loads(case, mech, kin)
     for f in case.forces:
+        if f.slider is None:
+            pf += [forces.PointForce(f.name, lk, p, F, on)
+                   for lk, p, F, on in applied[L.LoadKey("force", f.name)].vectors]
+            continue
         d, u, _, _, _ = slider_frame(mech, dcs, f.slider, f.reference, f"forces {f.name}: slider")
         F = -ld.forces[f.name] * np.sign(kin.points[d.joint].v_q @ u)
         pf.append(forces.PointForce(f.name, f.slider, d.joint, F[:, None] * u))
-    couples = tuple(forces.Couple(c.name, c.link, c.moment) for c in case.couples)
+    couples = tuple(forces.Couple(c.name, lk, M, on)
+                    for c in case.couples for lk, M, on in (
+                        applied[L.LoadKey("couple", c.name)].couples if A.is_new_couple(c)
+                        else ((c.link, c.moment, True),)))
+    for sp in case.springs:
+        ap = applied[L.LoadKey("spring", sp.name)]
+        pf += [forces.PointForce(sp.name, lk, p, F, on) for lk, p, F, on in ap.vectors]
+        couples += tuple(forces.Couple(sp.name, lk, M, on) for lk, M, on in ap.couples)
     return forces.Loads(dict(case.links), tuple(pf), couples, tuple(case.machine.gravity), J_I)
 
 
@@ -111,16 +124,17 @@ def linkage_loads(case, mech, dcs: dict, kin) -> LoadsResult:
     technological forces (with their exact works), weights, couples — each as its reduced
     moment, by name (seed 000 §3.2; design.md §2). ``dcs``: the sliders' dead centres."""
     phi, P, Lk = kin.phi, kin.points, kin.links
-    M_parts: dict[str, np.ndarray] = {}
-    W_parts: dict[str, np.ndarray] = {}      # exact cumulative works, where the trapezoid is not
+    M_parts: dict[L.LoadKey, np.ndarray] = {}
+    W_parts: dict[L.LoadKey, np.ndarray] = {}      # exact cumulative works, where the trapezoid is not
     cylinders: list[CylinderResult] = []
     forces: dict[str, np.ndarray] = {}
+    tensions: dict[str, np.ndarray] = {}
     warnings: list[str] = []
     fires_at = firing_angles(case, mech, dcs) if any(c.four_stroke for c in case.cylinders) else {}
     for cy in case.cylinders:
         if cy.four_stroke:
             cylinders.append(four_stroke_cylinder(cy, mech, dcs, kin, fires_at[cy.name]))
-            M_parts[f"gas {cy.name}"] = cylinders[-1].M
+            M_parts[L.LoadKey("gas", cy.name)] = cylinders[-1].M
             continue
         d, u, base, head, far = slider_frame(mech, dcs, cy.piston, cy.head, f"cylinders {cy.name}: piston")
         x = (P[d.joint].r - base) @ u
@@ -138,27 +152,44 @@ def linkage_loads(case, mech, dcs: dict, kin) -> LoadsResult:
                 "indicator table gives negative pressure, down to {p:.4g} MPa at φ = "
                 "{phi_deg:.1f}° (use 'pchip' to avoid overshoot)", cylinder=cy.name,
                 kind=cy.interpolation, p=p_mpa, phi_deg=at))
-        M_parts[f"gas {cy.name}"] = M
+        M_parts[L.LoadKey("gas", cy.name)] = M
         towards = x_dot * (head.x - far.x) > 0
         cylinders.append(CylinderResult(cy.name, cy.piston, s, towards, p, F, M, s_tab, up, down,
                                         cy.p_max, head.phi))
+    applied = A.applied_loads(case, mech, kin)
     for f in case.forces:
+        key = L.LoadKey("force", f.name)
+        if f.slider is None:                  # a force at a point (dynamics.applied)
+            M_parts[key], W_parts[key], forces[f.name] = applied[key].M, applied[key].W, applied[key].F
+            continue
         d, u, base, ref, other = slider_frame(mech, dcs, f.slider, f.reference, f"forces {f.name}: slider")
         x = (P[d.joint].r - base) @ u
         x_dot = P[d.joint].v_q @ u
         F, M = L.technological_moment(x, x_dot, ref.x, other.x, f.magnitude, tuple(f.s_range), f.stroke)
-        M_parts[f"force {f.name}"] = M
-        W_parts[f"force {f.name}"] = L.technological_work(x, ref.x, other.x, f.magnitude,
-                                                          tuple(f.s_range), f.stroke)
-        forces[f.name] = F
+        W = L.technological_work(x, ref.x, other.x, f.magnitude, tuple(f.s_range), f.stroke)
+        if f.phi_range_deg is not None:       # and only over a part of the cycle
+            rng, cycle = tuple(math.radians(a) for a in f.phi_range_deg), case.machine.cycle
+            on = A.nodes_on(phi, rng, cycle)
+            F, M = np.where(on, F, 0.0), np.where(on, M, 0.0)
+            W = np.concatenate([[0.0], np.cumsum(np.diff(W) * A.intervals_on(phi, rng, cycle))])
+        M_parts[key], W_parts[key], forces[f.name] = M, W, F
     g = np.asarray(case.machine.gravity, float)
     for name, lk in case.links.items():
         if lk.mass > 0 and np.any(g != 0):
-            M_parts[f"gravity {name}"] = L.gravity_moment(lk.mass, g, P[lk.centroid].v_q)
+            M_parts[L.LoadKey("gravity", name)] = L.gravity_moment(lk.mass, g, P[lk.centroid].v_q)
     for c in case.couples:
-        M_parts[f"couple {c.name}"] = c.moment * Lk[c.link].omega_q
+        key = L.LoadKey("couple", c.name)
+        if A.is_new_couple(c):                # over a range, or a table (dynamics.applied)
+            M_parts[key], W_parts[key] = applied[key].M, applied[key].W
+        else:
+            M_parts[key] = c.moment * Lk[c.link].omega_q
+    for sp in case.springs:                   # −dU/dφ, and the exact work −ΔU
+        key = L.LoadKey("spring", sp.name)
+        M_parts[key], W_parts[key] = applied[key].M, applied[key].W
+        if applied[key].F is not None:
+            tensions[sp.name] = applied[key].F
     return LoadsResult(M_parts=M_parts, W_parts=W_parts, cylinders=tuple(cylinders),
-                       forces=forces, warnings=tuple(warnings))
+                       forces=forces, warnings=tuple(warnings), tensions=tensions)
 
 
 def linkage_reduction(case, kin) -> ReductionResult:
@@ -205,9 +236,10 @@ def report_angles(at_deg: list[float], kin, ld: LoadsResult, red: ReductionResul
         out.append(AtAngle(
             phi_deg=float(a), omega=w, epsilon=e,
             J_II=float(red.J_II[i]), dJ_II=float(red.dJ_II[i]), M_sum=float(en.M_sum[i]),
-            moments={k: float(v[i]) for k, v in ld.M_parts.items()},
+            moments={str(k): float(v[i]) for k, v in ld.M_parts.items()},
             forces={**{c.name: float(c.F[i]) for c in ld.cylinders},     # gas, then technological
-                    **{k: float(F[i]) for k, F in ld.forces.items()}},
+                    **{k: float(F[i]) for k, F in ld.forces.items()},
+                    **{k: float(T[i]) for k, T in ld.tensions.items()}},     # then springs
             points=pts, links=lks))
     return tuple(out)
 

@@ -13,6 +13,7 @@ from functools import cached_property
 
 import numpy as np
 
+from flywheel.dynamics.loads import LoadKey
 from flywheel.io.serialize import json_schema, to_json
 from flywheel.dynamics.sizing import RimDesign
 from flywheel.linkage.drawing import Drawing
@@ -59,14 +60,15 @@ class CylinderResult:
 class LoadsResult:
     """The given loads reduced to the crank (design.md §2; seed 000 §3.2)."""
 
-    M_parts: dict[str, np.ndarray]   # load name ("gas HP", "force punch", "gravity 2",
-    #                                  "couple c", "moment m") → reduced moment [N·m]
-    W_parts: dict[str, np.ndarray]   # load name → its cumulative work A(φ) [J], exact, for the
+    M_parts: dict[LoadKey, np.ndarray]  # load key (gas HP, force punch, gravity 2, spring s,
+    #                                  couple c, moment m) → reduced moment [N·m]
+    W_parts: dict[LoadKey, np.ndarray]  # load key → its cumulative work A(φ) [J], exact, for the
     #                                  loads whose work the trapezoid rule gets only to first
     #                                  order (technological forces switching inside an interval)
     cylinders: tuple[CylinderResult, ...] = ()
     forces: dict[str, np.ndarray] = field(default_factory=dict)  # technological force → F(φ) [N]
     warnings: tuple[str, ...] = ()
+    tensions: dict[str, np.ndarray] = field(default_factory=dict)  # linear spring → T(φ) [N]
 
 
 @dataclass(frozen=True)
@@ -731,7 +733,7 @@ class Results:
         return self.reduction.dJ_parts
 
     @property
-    def M_parts(self) -> dict[str, np.ndarray]:
+    def M_parts(self) -> dict[LoadKey, np.ndarray]:
         return self.loads.M_parts
 
     @property

@@ -33,6 +33,7 @@ import numpy as np
 from flywheel.dynamics import stages
 from flywheel.dynamics.columns import tabulated_columns
 from flywheel.dynamics.grid import DEFAULT_POINTS, closed_grid, grid_options, report_index
+from flywheel.dynamics.loads import LoadKey
 from flywheel.dynamics.periodic import periodic_linear
 from flywheel.dynamics.results import (AtAngle, EnergyResult, LinkAt, LoadsResult, MotionResult,
                                        PointAt, Position, ReductionResult, Results, TabulatedResult,
@@ -73,17 +74,17 @@ def reduced_inertia_at_positions(spec) -> np.ndarray:
     return sum(parts.values()) if parts else np.zeros(len(spec.positions_deg))
 
 
-def load_moments_at_positions(spec) -> dict[str, np.ndarray]:
+def load_moments_at_positions(spec) -> dict[LoadKey, np.ndarray]:
     """Reduced moment of each load at every row [N·m], positive when it drives the crank:
-    a force F·|V_q|·cos α ("force NAME"), a moment as given ("moment NAME")."""
+    a force F·|V_q|·cos α (kind "force"), a moment as given (kind "moment")."""
     n = len(spec.positions_deg)
     out = {}
     for f in spec.forces:
         F = _per_position(f.magnitude, n)
         alpha = np.radians(_per_position(f.angle_deg, n))
-        out[f"force {f.name}"] = F * np.asarray(spec.points[f.point], float) * np.cos(alpha)
+        out[LoadKey("force", f.name)] = F * np.asarray(spec.points[f.point], float) * np.cos(alpha)
     for m in spec.moments:
-        out[f"moment {m.name}"] = np.asarray(m.values, float)
+        out[LoadKey("moment", m.name)] = np.asarray(m.values, float)
     return out
 
 
@@ -221,8 +222,8 @@ def tabulated_loads(spec, phi: np.ndarray) -> LoadsResult:
     """The reduced moments of the table's forces (F·|V_q|·cos α) and given moments, per
     position, interpolated onto ``phi`` each by its own interpolation."""
     nodes = _nodes_rad(spec)
-    kinds = {f"force {f.name}": f.interpolation for f in spec.forces}
-    kinds.update({f"moment {m.name}": m.interpolation for m in spec.moments})
+    kinds = {LoadKey("force", f.name): f.interpolation for f in spec.forces}
+    kinds.update({LoadKey("moment", m.name): m.interpolation for m in spec.moments})
     M_parts = {key: periodic_interpolate(nodes, _distinct(spec, M), phi, kinds[key],
                                          period=_period(spec))
                for key, M in load_moments_at_positions(spec).items()}
@@ -261,7 +262,7 @@ def report_angles(at_deg: list[float], phi: np.ndarray, tab: TabulatedResult, ld
             phi_deg=float(a), omega=w, epsilon=e,
             J_II=float(red.J_II[i]), dJ_II=float(red.dJ_II[i]),
             M_sum=float(en.M_sum[i]), M_st=float(tab.M_st[i]), M_dyn=float(tab.M_dyn[i]),
-            moments={k: float(v[i]) for k, v in ld.M_parts.items()},
+            moments={str(k): float(v[i]) for k, v in ld.M_parts.items()},
             points={k: PointAt(v_q=float(v[i]), v=float(v[i] * w)) for k, v in tab.v_q.items()},
             links={k: LinkAt(omega_q=float(v[i]), omega=float(v[i] * w))
                    for k, v in tab.omega_q.items()}))

@@ -11,6 +11,7 @@ formula), ch. 16–17 (reduction, Merzalov's method, the energy–mass diagram).
 from __future__ import annotations
 
 import math
+from flywheel.dynamics.loads import LoadKey
 from flywheel.render import nomenclature as nm
 from flywheel.render.catalogue import words
 from flywheel.render.blocks import (  # noqa: F401  (the model, re-exported)
@@ -25,6 +26,8 @@ T = words("report", {
     "machine": "Machine, crank and flywheel", "lengths": "Lengths and guides",
     "masses": "Masses and moments of inertia of the links", "cyl": "Cylinders",
     "indicator": "Indicator table of cylinder {c}", "forces": "Technological forces and couples",
+    "load_table": "a table of {n} rows against {of}", "of_phi": "φ", "of_travel": "the travel s",
+    "over": "at φ = {a}° … {b}°",
     "structure": "Structure of the mechanism",
     "structure_note": ("The mechanism is the input mechanism (crank {c} on the frame) with "
                        "Assur groups attached in order:"),
@@ -445,12 +448,23 @@ def _input_of_case(b: _Builder, case, t: dict, lang: str) -> None:
                 b.table(t["indicator"].format(c=c.name), [sym_s, f"{sym_p} ↑", f"{sym_p} ↓"],
                         [[g(s_, 4), g(a, 4), g(w, 4)]
                          for s_, a, w in zip(c.s, c.towards_head, c.away_from_head)])
-    if case.forces or case.couples:
+    springs = getattr(case, "springs", ())
+    if case.forces or case.couples or springs:
         b.add(Heading(3, f"1.5. {t['forces']}"))
-        rows = [[nm.load_name(f"force {f.name}", lang), f.slider, g(f.magnitude, 6), u("force_magnitude")]
-                for f in case.forces]
-        rows += [[nm.load_name(f"couple {c.name}", lang), c.link, g(c.moment, 6), u("couple_moment")]
+
+        def value(load, size) -> str:     # a size or a table, and the range of φ if any
+            text = g(size, 6) if size is not None else t["load_table"].format(
+                n=len(load.table), of=t["of_" + getattr(load, "table_of", "phi")])
+            rng = load.phi_range_deg
+            return text if rng is None else f"{text}; {t['over'].format(a=g(rng[0], 6), b=g(rng[1], 6))}"
+
+        rows = [[nm.load_name(LoadKey("force", f.name), lang), f.slider if f.slider is not None else f.point,
+                 value(f, f.magnitude), u("force_magnitude")] for f in case.forces]
+        rows += [[nm.load_name(LoadKey("couple", c.name), lang), c.link, value(c, c.moment), u("couple_moment")]
                  for c in case.couples]
+        rows += [[nm.load_name(LoadKey("spring", s.name), lang),
+                  "–".join(s.points) if s.kind == "linear" else s.link, f"c = {g(s.stiffness, 6)}",
+                  nm.unit("N/m" if s.kind == "linear" else "N·m/rad", lang)] for s in springs]
         b.table(t["forces"], [t["name"], t["link"], t["val"], t["unit"]], rows)
 
 

@@ -30,6 +30,8 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass
 
+from flywheel.dynamics.loads import LoadKey
+
 
 @dataclass(frozen=True)
 class Term:
@@ -560,10 +562,11 @@ TERMS: dict[str, Term] = {
     # (the labels and sentences without a symbol or a unit: the catalogue, "term:<key>", below)
 }
 
-# the load names inside "M {load}": "gas HP", "gravity 2", "force punch", "couple c", "moment m"
+# the load names inside "M {load}": "gas HP", "gravity 2", "force punch", "couple c", "moment m",
+# "spring s"
 LOAD_KINDS = {"gas": ("gas {x}", "газ {x}"), "gravity": ("gravity, link {x}", "сила тяжести звена {x}"),
               "force": ("force {x}", "сила {x}"), "couple": ("couple {x}", "пара сил {x}"),
-              "moment": ("moment {x}", "момент {x}")}
+              "moment": ("moment {x}", "момент {x}"), "spring": ("spring {x}", "пружина {x}")}
 
 # the sliders' dead centres in the standard positions' labels ("90° = 5 outer d.c."), as
 # dynamics.grid.standard_positions writes them in English
@@ -608,17 +611,18 @@ def term(key: str) -> tuple[Term, str]:
     raise KeyError(f"{key!r} is not in the nomenclature (render/nomenclature.py)")
 
 
-def load_name(x: str, lang: str = "en") -> str:
-    """A load's name in ``lang``: "gas HP" → "газ HP", "gravity 2" → "gravity, link 2"; a name
-    of no known kind as it is.
+def load_name(x, lang: str = "en") -> str:
+    """A load's name in ``lang`` from its key (:class:`~flywheel.dynamics.loads.LoadKey`, or its
+    text "kind name" as a column's family member gives it): gas HP → "газ HP", gravity 2 →
+    "gravity, link 2"; a key of no known kind as its text.
 
-    >>> load_name("gravity 2", "ru")
+    >>> load_name(LoadKey("gravity", "2"), "ru")
     'сила тяжести звена 2'
     """
-    kind, _, rest = x.partition(" ")
-    if kind in LOAD_KINDS and rest:
-        return LOAD_KINDS[kind][lang == "ru"].format(x=rest)
-    return x
+    key = x if isinstance(x, LoadKey) else LoadKey.parse(x)
+    if key.kind in LOAD_KINDS and key.name:
+        return LOAD_KINDS[key.kind][lang == "ru"].format(x=key.name)
+    return str(x)
 
 
 def member(key: str, lang: str = "en") -> str:

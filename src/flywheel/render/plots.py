@@ -46,6 +46,7 @@ _TEXT = words("plots", {
     "forces": "forces on the pistons",
     "F_gas": "gas force on piston {p}, cylinder {c}",
     "F_tech": "technological force {n}",
+    "F_spring": "tension of spring {n}",
     "F_at": "{c} at φ = {a:g}°: {v:.4g} {u}",
     "moments": "reduced moments",
     "M_known": "{M}: the given loads",
@@ -219,8 +220,10 @@ def figure_piston_forces(results, lang: str = "en"):
                                  u=nm.unit_of(f"F_{c.name}", lang)))
         for key, col in results.columns.items():
             if key.startswith("F_") and key not in names:
-                ax.plot(deg, col.values, linestyle="--",
-                        label=_t(lang, "F_tech", n=nm.member(key, lang)))
+                spring = key[2:] in results.loads.tensions
+                ax.plot(deg, col.values, linestyle=":" if spring else "--",
+                        label=_t(lang, "F_spring" if spring else "F_tech",
+                                 n=nm.member(key, lang)))
         ax.axhline(0.0, color="0.3", linewidth=0.6)
         ax.set_ylabel(nm.axis("F_{load}", lang))
         fg.phi_axis(ax, lang, cycle_deg=results.cycle_deg)
@@ -234,7 +237,7 @@ def figure_reduced_moments(results, lang: str = "en"):
     """Every reduced moment by name, M_known, the constant balancing moment and M_Σ; gravity
     and couples (small) on a second plot below."""
     def build():
-        small = [k for k in results.M_parts if k.startswith(("gravity ", "couple "))]
+        small = [k for k in results.M_parts if k.kind in ("gravity", "couple")]
         big = [k for k in results.M_parts if k not in small]
         rows = 2 if small else 1
         fig, axes = fg.figure(fg.TALL if small else fg.WIDE, rows, 1, sharex=True, squeeze=False,
