@@ -40,25 +40,13 @@ def aggregate_command(
 ) -> None:
     """Two-mass machine aggregate (Ефанов ch. 9) or a chain of rotors: coefficients a_ij, c_ij,
     natural frequencies, steady forced vibration, start-up."""
-    import math
-
-    from flywheel.cli.guard import check_lang, guarded, needs_out, refuse_nonfinite, write_plot
+    from flywheel.cli.guard import guarded, refuse_nonfinite, write_plot
     from flywheel.errors import InputError, Notice
 
     with guarded(source=case):      # an error of the analysis is prefixed with the case file
         from flywheel.render import nomenclature as nm
 
-        check_lang(lang)
-        if t_end is not None and not (math.isfinite(t_end) and 0 < t_end <= MAX_T_END):
-            raise InputError(Notice.of(
-                "t_end_range", "--t-end: {t:g} s is out of range (allowed: 0 … {top:g} s; a "
-                "start-up is over in seconds to a minute, and the integration time grows with it)",
-                t=t_end, top=MAX_T_END))
-        from flywheel.render.report_folder import check_formats
-
-        formats = check_formats(report)
-        if report and out is None:
-            raise InputError(needs_out())
+        formats = _check_options(lang, t_end, report, out)
         from flywheel.cases.aggregate import load_aggregate_case, to_model
         from flywheel.elastic.model import analyze
 
@@ -87,6 +75,27 @@ def aggregate_command(
            summary=lambda: print_summary(result, c.title, c.source, lang=lang, modes=modes),
            lines=([nm.name("plot_written", lang, path=plot)] if plot is not None else [])
            + ([written_line(out, written, lang)] if out is not None else []))
+
+
+def _check_options(lang: str, t_end, report, out):
+    """Refuse a language, --t-end, or --report (or --report without --out) beyond what is
+    allowed (an InputError); return the report formats."""
+    import math
+
+    from flywheel.cli.guard import check_lang, needs_out
+    from flywheel.errors import InputError, Notice
+    from flywheel.render.report_folder import check_formats
+
+    check_lang(lang)
+    if t_end is not None and not (math.isfinite(t_end) and 0 < t_end <= MAX_T_END):
+        raise InputError(Notice.of(
+            "t_end_range", "--t-end: {t:g} s is out of range (allowed: 0 … {top:g} s; a "
+            "start-up is over in seconds to a minute, and the integration time grows with it)",
+            t=t_end, top=MAX_T_END))
+    formats = check_formats(report)
+    if report and out is None:
+        raise InputError(needs_out())
+    return formats
 
 
 def _write_out(out: Path, result, formats, title: str, source: str, lang: str) -> list[str]:
