@@ -636,7 +636,7 @@ def chosen(results, lang: str = "en", which: str = "all") -> list[str]:
     """The file names of the figures ``which`` ("all", "record", "none") picks, in the fixed
     order of :func:`all_figures`."""
     if which not in CHOICES:
-        # library use only: the CLI refuses another choice first
+        # library use only: no CLI input reaches this
         raise ValueError(f"which {which!r}: allowed {', '.join(CHOICES)}")
     names = [name for name, _ in all_figures(results, lang)]
     if which == "none":
