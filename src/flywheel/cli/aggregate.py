@@ -10,7 +10,7 @@ from typing import Optional
 
 import typer
 
-from flywheel.cli.options import Json, Lang, Reports, note
+from flywheel.cli.options import Json, Lang, Reports
 
 
 MAX_T_END = 600.0     # s: ten minutes of simulated start-up (about 15 s of computing)
@@ -40,25 +40,13 @@ def aggregate_command(
 ) -> None:
     """Two-mass machine aggregate (Ефанов ch. 9) or a chain of rotors: coefficients a_ij, c_ij,
     natural frequencies, steady forced vibration, start-up."""
-    import math
-
-    from flywheel.cli.guard import check_lang, guarded, needs_out, refuse_nonfinite, write_plot
+    from flywheel.cli.guard import guarded, refuse_nonfinite, write_plot
     from flywheel.errors import InputError, Notice
 
     with guarded(source=case):      # an error of the analysis is prefixed with the case file
         from flywheel.render import nomenclature as nm
 
-        check_lang(lang)
-        if t_end is not None and not (math.isfinite(t_end) and 0 < t_end <= MAX_T_END):
-            raise InputError(Notice.of(
-                "t_end_range", "--t-end: {t:g} s is out of range (allowed: 0 … {top:g} s; a "
-                "start-up is over in seconds to a minute, and the integration time grows with it)",
-                t=t_end, top=MAX_T_END))
-        from flywheel.render.report_folder import check_formats
-
-        formats = check_formats(report)
-        if report and out is None:
-            raise InputError(needs_out())
+        formats = _check_options(lang, t_end, report, out)
         from flywheel.cases.aggregate import load_aggregate_case, to_model
         from flywheel.elastic.model import analyze
 
@@ -80,38 +68,46 @@ def aggregate_command(
             write_plot(plot, lambda tmp: draw(result, tmp, c.title, lang))
         if out is not None:
             written = _write_out(out, result, formats, c.title, c.source, lang)
-    if json:
-        from flywheel.render.aggregate import to_json
+    from flywheel.cli.outputs import finish, written_line
+    from flywheel.render.aggregate import print_summary, to_json
 
-        typer.echo(to_json(result, c.title, c.source))
-    else:
-        from flywheel.render.aggregate import print_summary
+    finish(json_text=to_json(result, c.title, c.source) + "\n" if json else None,
+           summary=lambda: print_summary(result, c.title, c.source, lang=lang, modes=modes),
+           lines=([nm.name("plot_written", lang, path=plot)] if plot is not None else [])
+           + ([written_line(out, written, lang)] if out is not None else []))
 
-        print_summary(result, c.title, c.source, lang=lang, modes=modes)
-        from flywheel.render import nomenclature as nm
 
-        if plot is not None:
-            typer.echo(nm.name("plot_written", lang, path=plot))
-        if out is not None:
-            from flywheel.render.messages import prefix
+def _check_options(lang: str, t_end, report, out):
+    """Refuse a language, --t-end, or --report (or --report without --out) beyond what is
+    allowed (an InputError); return the report formats."""
+    import math
 
-            typer.echo(f"{prefix('written', lang)}: {out}/ "
-                       f"({', '.join(written)})")
+    from flywheel.cli.guard import check_lang, needs_out
+    from flywheel.errors import InputError, Notice
+    from flywheel.render.report_folder import check_formats
+
+    check_lang(lang)
+    if t_end is not None and not (math.isfinite(t_end) and 0 < t_end <= MAX_T_END):
+        raise InputError(Notice.of(
+            "t_end_range", "--t-end: {t:g} s is out of range (allowed: 0 … {top:g} s; a "
+            "start-up is over in seconds to a minute, and the integration time grows with it)",
+            t=t_end, top=MAX_T_END))
+    formats = check_formats(report)
+    if report and out is None:
+        raise InputError(needs_out())
+    return formats
 
 
 def _write_out(out: Path, result, formats, title: str, source: str, lang: str) -> list[str]:
-    """The --out folder (render/report_folder.py): summary.json, plots/aggregate.png (with a
-    motor), the report. Notes of a rerun go to stderr; returns the names written."""
+    """The --out folder (cli/outputs.py, render/report_folder.py): summary.json,
+    plots/aggregate.png (with a motor), the report; returns the names written."""
+    from flywheel.cli.outputs import report_folder
     from flywheel.render.aggregate import plot as draw
     from flywheel.render.aggregate import to_json
     from flywheel.render.report_aggregate import FIGURE, build_aggregate_document
-    from flywheel.render.report_folder import write_report_folder
 
-    names, notes = write_report_folder(
+    return report_folder(
         out, "aggregate", to_json(result, title, source) + "\n",
         lambda path: draw(result, path, title, lang),
         FIGURE if result.startup is not None else None,
         lambda fig: build_aggregate_document(result, title, source, lang, fig), formats)
-    for n in notes:
-        note(n)
-    return names

@@ -24,7 +24,7 @@ def drawings_command(
     analysis) as PDF, SVG and DXF: `flywheel run CASE --drawings --no-plots`."""
     from flywheel.cli.run import run_command
 
-    run_command(case=case, out=out, points=3600, at=at, no_plots=True, as_json=False,
+    run_command(case=case, out=out, points=3600, at=at, plots="none", no_plots=True, as_json=False,
                 lang=lang, transients=False, animate=False, motion=None, report=None,
                 csv_style="plain", figure_format="png", dpi=120, drawings=True,
                 sheet_size=sheet_size)

@@ -8,7 +8,7 @@ from __future__ import annotations
 from pathlib import Path
 import typer
 
-from flywheel.cli.options import Json, Lang, OutFolder, Reports, note, warn
+from flywheel.cli.options import Json, Lang, OutFolder, Reports
 
 
 def duty_cycle_command(
@@ -33,29 +33,19 @@ def duty_cycle_command(
 
     c = guard(load_duty_case, case)
     result = guard(solve_case, c, str(case))
-    from flywheel.render.nomenclature import prefix
-
     written = None
     if out is not None:
+        from flywheel.cli.outputs import report_folder
         from flywheel.render.duty_cycle import to_json
         from flywheel.render.report_duty_cycle import build_duty_cycle_document
-        from flywheel.render.report_folder import write_report_folder
 
-        written, notes = guard(write_report_folder, out, "duty-cycle",
-                               to_json(result, c.title, c.source) + "\n", None, None,
-                               lambda fig: build_duty_cycle_document(result, c.title, c.source,
-                                                                     lang), formats)
-        for n in notes:
-            note(n)
-    for w in result.warnings:
-        warn(w)
-    if as_json:
-        from flywheel.render.duty_cycle import to_json
+        written = guard(report_folder, out, "duty-cycle", to_json(result, c.title, c.source) + "\n",
+                        None, None, lambda fig: build_duty_cycle_document(result, c.title,
+                                                                          c.source, lang), formats)
+    from flywheel.cli.outputs import finish, written_line
+    from flywheel.render.duty_cycle import print_summary, to_json
 
-        typer.echo(to_json(result, c.title, c.source))
-    else:
-        from flywheel.render.duty_cycle import print_summary
-
-        print_summary(result, c.title, c.source, lang=lang)
-        if written is not None:
-            typer.echo(f"{prefix('written', lang)}: {out}/ ({', '.join(written)})")
+    finish(warnings=result.warnings,
+           json_text=to_json(result, c.title, c.source) + "\n" if as_json else None,
+           summary=lambda: print_summary(result, c.title, c.source, lang=lang),
+           lines=[] if written is None else [written_line(out, written, lang)])

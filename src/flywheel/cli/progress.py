@@ -33,3 +33,29 @@ def stage_bar(lang: str = "en") -> Iterator[Callable[[str, float], None]]:
             bar.update(tasks[stage], completed=fraction)
 
         yield progress
+
+
+@contextmanager
+def count_bar(stage: str, lang: str = "en") -> Iterator[Callable[[int, int], None]]:
+    """``with count_bar("figures", lang) as progress: work(progress=progress)``: one bar of
+    things done out of a total ("figures 7/22") on stderr while a terminal shows it, removed
+    when done; nothing on a pipe or under ``--quiet``. The stage's name in ``lang``."""
+    from rich.console import Console
+    from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn
+
+    from flywheel.cli.options import state
+    from flywheel.render.nomenclature import stage_name
+
+    console = Console(stderr=True)
+    with Progress(TextColumn("{task.description}"), BarColumn(), MofNCompleteColumn(),
+                  console=console, transient=True,
+                  disable=state.quiet or not console.is_terminal) as bar:
+        task = None
+
+        def progress(done: int, total: int) -> None:
+            nonlocal task
+            if task is None:
+                task = bar.add_task(stage_name(stage, lang), total=total)
+            bar.update(task, completed=done, total=total)
+
+        yield progress

@@ -6,15 +6,13 @@ inside the functions.
 from __future__ import annotations
 
 import math
-import os
-import sys
 from pathlib import Path
 from typing import Optional
 
 import typer
 
 from flywheel.cli.guard import _guard, check_lang, choice, fail
-from flywheel.cli.options import CsvStyle, Json, Lang, Reports, note, warn
+from flywheel.cli.options import CsvStyle, Json, Lang, Reports
 from flywheel.errors import Notice
 
 
@@ -59,7 +57,10 @@ def run_command(
     points: int = typer.Option(3600, "--points", help="Intervals of the φ grid over the cycle."),
     at: Optional[list[float]] = typer.Option(None, "--at", help="Report angle \\[deg]; repeatable "
                                              "(default: the case's output.at_deg, else 120)."),
-    no_plots: bool = typer.Option(False, "--no-plots", help="Skip the PNG plots (faster)."),
+    plots: str = typer.Option("all", "--plots", help="Which figures to draw: all | record (the "
+                              "figures of a course project's записка: kinematics, plans, reduced "
+                              "quantities, energy–mass diagram, ω(φ)) | none (fastest)."),
+    no_plots: bool = typer.Option(False, "--no-plots", help="No figures: the same as --plots none."),
     as_json: Json = False,
     lang: Lang = "en",
     transients: bool = typer.Option(False, "--transients", help="Also integrate the equation of "
@@ -83,34 +84,16 @@ def run_command(
 ) -> None:
     """Run the whole dynamic analysis of a case; write summary.json, table.csv, positions.csv,
     forces.csv, forces_positions.csv, report.md and plots/*.png to the output folder."""
+    from flywheel.cli.outputs import RunOutputs, finish, write_run, written_line
+
     check_lang(lang)
-    from flywheel.render.csvfmt import STYLES, restyle
-
-    if csv_style not in STYLES:
-        fail(choice("--csv", csv_style, "a CSV dialect", ", ".join(STYLES)))
-    from flywheel.render.figure import DPI_RANGE, FORMATS as FIGURE_FORMATS
-    from flywheel.render.report_formats import FORMATS
-
-    if figure_format not in FIGURE_FORMATS:
-        fail(choice("--figure-format", figure_format, "a figure format", ", ".join(FIGURE_FORMATS)))
-    if not DPI_RANGE[0] <= dpi <= DPI_RANGE[1]:
-        fail(Notice.of(
-            "option_range", "--dpi: {got} is out of range (allowed: {lo} to {hi})", option="--dpi",
-            got=dpi, lo=DPI_RANGE[0], hi=DPI_RANGE[1]))
-    _check_at(at)
-    from flywheel.render.drawings import SIZES as SHEET_SIZES
-
-    if sheet_size not in SHEET_SIZES:
-        fail(choice("--sheet-size", sheet_size, "a sheet format", ", ".join(SHEET_SIZES)))
-    formats = report or ["md", "html"]
-    for f in formats:
-        if f not in FORMATS:
-            fail(choice("--report", f, "a report format", ", ".join(FORMATS)))
+    what = RunOutputs(formats=tuple(report or ["md", "html"]), csv_style=csv_style,
+                      plots="none" if no_plots else plots, figure_format=figure_format, dpi=dpi,
+                      animate=animate, drawings=drawings, sheet_size=sheet_size)
+    _check_options(what, at)
     from flywheel.cases.run import load_case
     from flywheel.dynamics.pipeline import analyze
-    from flywheel.io.output import write_folder
-    from flywheel.render.forces import forces_csv, forces_positions_csv
-    from flywheel.render.tables import positions_csv, summary_json, table_csv
+    from flywheel.render.tables import summary_json
 
     c = _guard(load_case, case)
     if animate and c.tabulated is not None:
@@ -128,56 +111,40 @@ def run_command(
     results = _guard(analyze_with_bar, source=case, case=c)
     out = out if out is not None else Path("out") / case.stem
     text_json = summary_json(results)
+    write_run(out, results, c, what, lang, text_json)
+    from flywheel.render.summary import print_summary
 
-    def build(folder: Path) -> None:
-        (folder / "summary.json").write_text(text_json, encoding="utf-8")
-        for name, table in (("table.csv", table_csv), ("positions.csv", positions_csv),
-                            ("forces.csv", forces_csv),
-                            ("forces_positions.csv", forces_positions_csv)):
-            (folder / name).write_text(restyle(table(results), csv_style), encoding="utf-8")
-        pngs: list[str] = []
-        if not no_plots:
-            from flywheel.render.plots import write_plots
+    finish(warnings=results.warnings, json_text=text_json if as_json else None,
+           summary=lambda: print_summary(results, lang=lang),
+           lines=[written_line(out, what.names(), lang)])
 
-            (folder / "plots").mkdir()
-            pngs += [p.with_suffix(".png").name for p in write_plots(
-                results, folder / "plots", lang=lang, jobs=min(2, os.cpu_count() or 1),
-                fmt=figure_format, dpi=dpi)]
-        if animate:
-            from flywheel.render.animate import write_animation
 
-            write_animation(results, folder / "mechanism.gif", lang=lang)
-        if drawings:                    # the ЕСКД sheets (render/drawings, docs/drawings.md)
-            from flywheel.render.drawings import write_drawings
+def _check_options(what, at) -> None:
+    """Refuse an option's value outside its choices or range: one error line, exit 2."""
+    from flywheel.render.csvfmt import STYLES
+    from flywheel.render.figure import DPI_RANGE, FORMATS as FIGURE_FORMATS
+    from flywheel.render.plots import CHOICES
+    from flywheel.render.report_formats import FORMATS
 
-            write_drawings(results, folder / "drawings", c.document, lang=lang, size=sheet_size)
-        from flywheel.render.document import build_document
-        from flywheel.render.report_formats import write_reports
+    if what.csv_style not in STYLES:
+        fail(choice("--csv", what.csv_style, "a CSV dialect", ", ".join(STYLES)))
+    if what.plots not in CHOICES:
+        fail(choice("--plots", what.plots, "a set of figures", ", ".join(CHOICES)))
+    if what.figure_format not in FIGURE_FORMATS:
+        fail(choice("--figure-format", what.figure_format, "a figure format",
+                    ", ".join(FIGURE_FORMATS)))
+    if not DPI_RANGE[0] <= what.dpi <= DPI_RANGE[1]:
+        fail(Notice.of(
+            "option_range", "--dpi: {got} is out of range (allowed: {lo} to {hi})", option="--dpi",
+            got=what.dpi, lo=DPI_RANGE[0], hi=DPI_RANGE[1]))
+    _check_at(at)
+    from flywheel.render.drawings import SIZES as SHEET_SIZES
 
-        doc = build_document(results, lang, pngs, case=c)
-        write_reports(doc, folder, formats, folder / "plots" if pngs else None)
-
-    notes: list[str] = []
-    _guard(write_folder, out, build, "summary.json", notes=notes)
-    from flywheel.render.nomenclature import prefix
-
-    for n in notes:
-        note(n)
-    for w in results.warnings:              # on stderr too: `2>/dev/null` and pipes behave
-        warn(w)
-    if as_json:
-        sys.stdout.write(text_json)
-    else:
-        from flywheel.render.summary import print_summary
-
-        print_summary(results, lang=lang)
-        typer.echo(f"{prefix('written', lang)}: {out}/ (summary.json, table.csv, "
-                   "positions.csv, forces.csv, forces_positions.csv, "
-                   + ", ".join(f"report.{f}" for f in dict.fromkeys(formats))
-                   + ("" if no_plots else ", plots/*.png"
-                      + ("" if figure_format == "png" else f", plots/*.{figure_format}"))
-                   + (", mechanism.gif" if animate else "")
-                   + (", drawings/sheet*.{pdf,svg,dxf}" if drawings else "") + ")")
+    if what.sheet_size not in SHEET_SIZES:
+        fail(choice("--sheet-size", what.sheet_size, "a sheet format", ", ".join(SHEET_SIZES)))
+    for f in what.formats:
+        if f not in FORMATS:
+            fail(choice("--report", f, "a report format", ", ".join(FORMATS)))
 
 
 #: the report angles --at takes: at most AT_MOST of them, each within ±AT_LIMIT_DEG [deg] (an

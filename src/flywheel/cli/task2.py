@@ -17,7 +17,7 @@ from typing import List, Optional
 
 import typer
 
-from flywheel.cli.options import Json, Lang, OutFolder, Reports, note
+from flywheel.cli.options import Json, Lang, OutFolder, Reports
 
 PROFILES = ("triangle", "rectangle")
 
@@ -97,19 +97,15 @@ def task2_command(
             write_plot(plot, lambda tmp: draw(result, tmp, job.title, lang))
         if out is not None:
             written = _write_out(out, result, formats, job, lang)
-    if as_json:
-        from flywheel.render.task2 import to_json
-
-        typer.echo(to_json(result, job.doc_title, job.doc_source))
-        return
+    from flywheel.cli.outputs import finish, written_line
     from flywheel.render import nomenclature as nm
-    from flywheel.render.task2 import print_summary
+    from flywheel.render.task2 import print_summary, to_json
 
-    print_summary(result, job.title, job.source, lang=lang, motion=epsilon or bool(at))
-    if plot is not None:
-        typer.echo(nm.name("plot_written", lang, path=plot))
-    if out is not None:
-        typer.echo(f"{nm.prefix('written', lang)}: {out}/ ({', '.join(written)})")
+    finish(json_text=to_json(result, job.doc_title, job.doc_source) + "\n" if as_json else None,
+           summary=lambda: print_summary(result, job.title, job.source, lang=lang,
+                                         motion=epsilon or bool(at)),
+           lines=([nm.name("plot_written", lang, path=plot)] if plot is not None else [])
+           + ([written_line(out, written, lang)] if out is not None else []))
 
 
 @dataclass(frozen=True)
@@ -200,17 +196,14 @@ def _from_options(profile, given, v: dict, at, lang: str) -> _Job:
 
 
 def _write_out(out: Path, result, formats, job: _Job, lang: str):
-    """The --out folder (render/report_folder.py): summary.json, plots/task2.png, the report.
-    Notes of a rerun go to stderr; returns the names written."""
-    from flywheel.render.report_folder import write_report_folder
+    """The --out folder (cli/outputs.py, render/report_folder.py): summary.json,
+    plots/task2.png, the report; returns the names written."""
+    from flywheel.cli.outputs import report_folder
     from flywheel.render.report_task2 import FIGURE, build_task2_document
     from flywheel.render.task2 import plot as draw
     from flywheel.render.task2 import to_json
 
-    names, notes = write_report_folder(
+    return report_folder(
         out, "task2", to_json(result, job.doc_title, job.doc_source) + "\n",
         lambda path: draw(result, path, job.title, lang), FIGURE,
         lambda fig: build_task2_document(result, job.title, job.source, lang, fig), formats)
-    for n in notes:
-        note(n)
-    return names

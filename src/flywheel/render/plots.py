@@ -608,12 +608,49 @@ def _release(fig) -> None:
         plt.close(fig)
 
 
-_HEAVY = ("energy_mass.png", "positions.png")
+#: the relative cost of the heaviest figures (CPU seconds of benchmarks/bench_figures.py, the
+#: others about 1): the workers take the costliest first, so that none is left alone at the end
+_COST = {"energy_mass": 4.0, "plan_forces": 3.0, "positions": 2.5, "scheme": 2.0,
+         "plan_lever": 2.0, "hodographs": 2.0, "acceleration_analogues": 1.8, "J_II": 1.7,
+         "plan_acceleration": 1.6, "velocity_analogues": 1.6, "reduced_moments": 1.6,
+         "plan_positions": 1.5}
+
+#: `run --plots record`: the figures of the записка of a course project (the sheets' diagrams:
+#: kinematics, the plans, the reduced quantities, the energy–mass diagram and ω(φ)); the
+#: others (the scheme, ε(φ), the time law, the transients, the reactions and hodographs, the
+#: balancing moment) only with `--plots all`. Stems; a figure per cylinder or angle by prefix.
+RECORD = ("positions", "velocity_analogues", "acceleration_analogues", "J_II", "indicator",
+          "piston_forces", "reduced_moments", "works", "omega", "energy_mass", "plan_positions",
+          "plan_velocity", "plan_acceleration", "plan_forces", "plan_lever")
+#: the choices of `run --plots`
+CHOICES = ("all", "record", "none")
+
+
+def _stem_of(name: str) -> str:
+    """A figure's kind: its file's stem without a cylinder's or an angle's part."""
+    stem = name.rsplit(".", 1)[0]
+    for kind in sorted(_COST.keys() | set(RECORD), key=len, reverse=True):
+        if stem == kind or stem.startswith(kind + "_"):
+            return kind
+    return stem
+
+
+def chosen(results, lang: str = "en", which: str = "all") -> list[str]:
+    """The file names of the figures ``which`` ("all", "record", "none") picks, in the fixed
+    order of :func:`all_figures`."""
+    if which not in CHOICES:
+        # library use only: no CLI input reaches this
+        raise ValueError(f"which {which!r}: allowed {', '.join(CHOICES)}")
+    names = [name for name, _ in all_figures(results, lang)]
+    if which == "none":
+        return []
+    return names if which == "all" else [n for n in names if _stem_of(n) in RECORD]
 
 
 def _save_next(results, folder: Path, lang: str, order: list[int], counter, fmt: str = "png",
-               dpi: int = fg.DPI) -> None:
-    """Draw figures ``order[k]`` for k taken one at a time from the shared ``counter``."""
+               dpi: int = fg.DPI, done=None) -> None:
+    """Draw figures ``order[k]`` for k taken one at a time from the shared ``counter``; count
+    each one saved in ``done`` (a shared value, or None)."""
     while True:
         with counter.get_lock():
             k = counter.value
@@ -621,10 +658,13 @@ def _save_next(results, folder: Path, lang: str, order: list[int], counter, fmt:
         if k >= len(order):
             return
         _save_some(results, folder, lang, [order[k]], fmt, dpi)
+        if done is not None:
+            with done.get_lock():
+                done.value += 1
 
 
 def _worker(results, folder: Path, lang: str, order: list[int], counter, fmt: str = "png",
-            dpi: int = fg.DPI) -> None:
+            dpi: int = fg.DPI, done=None) -> None:
     """A forked plotting process: it dies with its parent (Linux: PR_SET_PDEATHSIG), leaves
     Ctrl-C to the parent (which stops it) and ends quietly on SIGTERM."""
     import signal
@@ -637,7 +677,104 @@ def _worker(results, folder: Path, lang: str, order: list[int], counter, fmt: st
         ctypes.CDLL(None, use_errno=True).prctl(1, signal.SIGKILL)   # 1 = PR_SET_PDEATHSIG
     except (OSError, AttributeError):
         pass                              # not Linux: the parent still terminates it
-    _save_next(results, folder, lang, order, counter, fmt, dpi)
+    _save_next(results, folder, lang, order, counter, fmt, dpi, done)
+
+
+class PlotJob:
+    """The figures of one run being drawn (:func:`start_plots`): forked workers (Linux, macOS)
+    draw them while the caller writes its tables and texts; :meth:`wait` waits for them,
+    telling a progress bar each figure done. Used as a context manager, it stops the workers
+    if the caller fails (or is stopped) before waiting: a worker left running would write into
+    a temporary folder the run is removing."""
+
+    def __init__(self, results, folder: Path, lang: str, names: list[str], jobs: int,
+                 fmt: str, dpi: int):
+        import multiprocessing as mp
+
+        self.folder, self.fmt = folder, fmt
+        self.names = names
+        every = [name for name, _ in all_figures(results, lang)]
+        # the costliest figures first, then the rest in order: each worker takes the next one
+        # from a shared counter, so none waits while another draws
+        order = sorted((every.index(n) for n in names),
+                       key=lambda i: -_COST.get(_stem_of(every[i]), 1.0))
+        self._draw_here = (results, folder, lang, order, fmt, dpi)
+        self.children: list = []
+        self._done = None
+        if names and jobs > 1 and "fork" in mp.get_all_start_methods():
+            ctx = mp.get_context("fork")
+            counter, self._done = ctx.Value("i", 0), ctx.Value("i", 0)
+            self.children = [ctx.Process(target=_worker, args=(
+                results, folder, lang, order, counter, fmt, dpi, self._done))
+                for _ in range(min(jobs, len(names)))]
+            try:
+                for c in self.children:
+                    c.start()
+            except BaseException:
+                self.stop()
+                raise
+
+    def __enter__(self) -> "PlotJob":
+        return self
+
+    def __exit__(self, kind, exc, tb) -> None:
+        if kind is not None:
+            self.stop()
+
+    def stop(self) -> None:
+        """Terminate the workers and wait for them."""
+        for c in self.children:
+            c.terminate()
+        _join_all(self.children)
+
+    def wait(self, progress=None) -> list[Path]:
+        """Wait for every figure (drawn here if there are no workers), calling ``progress(done,
+        total)`` as they come; return the paths of the ``fmt`` files in the fixed order."""
+        total = len(self.names)
+        if self.children:
+            try:
+                alive = list(self.children)
+                while alive:
+                    if progress is not None:
+                        progress(self._done.value, total)
+                    alive[0].join(0.1)
+                    alive = [c for c in alive if c.is_alive()]
+            except BaseException:        # Ctrl-C, SIGTERM: the workers stop now
+                self.stop()
+                raise
+            _join_all(self.children)
+            if any(c.exitcode != 0 for c in self.children):
+                raise RuntimeError("a plotting process failed")
+        else:
+            results, folder, lang, order, fmt, dpi = self._draw_here
+            for k, i in enumerate(order):
+                if progress is not None:
+                    progress(k, total)
+                _save_some(results, folder, lang, [i], fmt, dpi)
+        if progress is not None:
+            progress(total, total)
+        return [self.folder / Path(n).with_suffix("." + self.fmt).name for n in self.names]
+
+
+def start_plots(results, folder: Path, lang: str = "en", jobs: int = 1, fmt: str = "png",
+                dpi: int = fg.DPI, which: str = "all") -> PlotJob:
+    """Start drawing the plots of ``results`` that ``which`` picks (:func:`chosen`) into
+    ``folder`` (created if missing) as PNG and, with ``fmt`` "svg" or "pdf", as that format
+    too (the reports embed the PNGs), at ``dpi``, in ``jobs`` forked processes (Linux/macOS;
+    each figure drawn whole by one; jobs = 1: drawn by :meth:`PlotJob.wait`). ``lang``: "en"
+    or "ru" for the labels and titles.
+
+    The files are byte-identical for the same input (fixed size and dpi, no metadata or dates).
+    """
+    if lang not in ("en", "ru"):
+        # library use only: no CLI input reaches this
+        raise ValueError(f"lang {lang!r}: allowed 'en' or 'ru'")
+    if fmt not in fg.FORMATS:
+        # library use only: no CLI input reaches this
+        raise ValueError(f"fmt {fmt!r}: allowed {', '.join(fg.FORMATS)}")
+    folder = Path(folder)
+    folder.mkdir(parents=True, exist_ok=True)
+    return PlotJob(results, folder, lang, chosen(results, lang, which), jobs, fmt, dpi)
 
 
 def _join_all(children) -> None:
@@ -659,47 +796,8 @@ def _join_all(children) -> None:
 
 
 def write_plots(results, folder: Path, lang: str = "en", jobs: int = 1, fmt: str = "png",
-                dpi: int = fg.DPI) -> list[Path]:
-    """Write every plot of ``results`` (:func:`all_figures`) into ``folder`` (created if
-    missing) as PNG and, with ``fmt`` "svg" or "pdf", as that format too (the reports embed
-    the PNGs), at ``dpi``; return the paths of the ``fmt`` files in a fixed order. ``lang``:
-    "en" or "ru" for the labels and titles. ``jobs`` > 1 renders in that many forked processes
-    (Linux/macOS; each figure is drawn whole by one).
-
-    The files are byte-identical for the same input (fixed size and dpi, no metadata or dates).
-    """
-    import multiprocessing as mp
-
-    if lang not in ("en", "ru"):
-        # library use only: no CLI input reaches this
-        raise ValueError(f"lang {lang!r}: allowed 'en' or 'ru'")
-    if fmt not in fg.FORMATS:
-        # library use only: no CLI input reaches this
-        raise ValueError(f"fmt {fmt!r}: allowed {', '.join(fg.FORMATS)}")
-    folder = Path(folder)
-    folder.mkdir(parents=True, exist_ok=True)
-    names = [name for name, _ in all_figures(results, lang)]
-    jobs = max(1, min(jobs, len(names)))
-    # the heaviest figures first (energy_mass has three panels), then the rest in order: each
-    # process takes the next one from a shared counter, so neither waits while the other draws
-    order = sorted(range(len(names)), key=lambda i: names[i] not in _HEAVY)
-    if jobs > 1 and "fork" in mp.get_all_start_methods():
-        ctx = mp.get_context("fork")
-        counter = ctx.Value("i", 0)
-        children = [ctx.Process(target=_worker, args=(results, folder, lang, order, counter, fmt, dpi))
-                    for _ in range(jobs - 1)]
-        for c in children:
-            c.start()
-        try:
-            _save_next(results, folder, lang, order, counter, fmt, dpi)
-        except BaseException:            # Ctrl-C, SIGTERM, an error: the workers stop now
-            for c in children:
-                c.terminate()
-            raise
-        finally:
-            _join_all(children)
-        if any(c.exitcode != 0 for c in children):
-            raise RuntimeError("a plotting process failed")
-    else:
-        _save_some(results, folder, lang, order, fmt, dpi)
-    return [folder / Path(n).with_suffix("." + fmt).name for n in names]
+                dpi: int = fg.DPI, which: str = "all", progress=None) -> list[Path]:
+    """Write the plots of ``results`` (:func:`start_plots`) and wait for them; return the
+    paths of the ``fmt`` files in a fixed order."""
+    with start_plots(results, folder, lang, jobs, fmt, dpi, which) as job:
+        return job.wait(progress)
