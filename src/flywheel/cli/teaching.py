@@ -121,6 +121,10 @@ def grade_command(
     summary: bool = typer.Option(False, "--summary", help="Print only the class summary (score "
                                  "distribution, answers most often wrong, who handed in "
                                  "nothing)."),
+    carried_forward: float = typer.Option(0.0, "--carried-forward", help="Share of the credit "
+                                          "(0…1) of an answer wrong against the key but right "
+                                          "from the student's own earlier answers (default 0: "
+                                          "shown as such, not scored)."),
     csv_style: CsvStyle = "plain",
     lang: Lang = "en",
     as_json: Json = False,
@@ -165,7 +169,8 @@ def grade_command(
                       disable=state.quiet or not console.is_terminal) as bar:
             task = bar.add_task("sheets", total=None)
             return grade(k, answers, tolerance,
-                         lambda done, total: bar.update(task, completed=done, total=total))
+                         lambda done, total: bar.update(task, completed=done, total=total),
+                         carried_forward)
 
     report = _guard(grade_with_bar)
     if not report.students:                 # an error: one line, nothing else written
