@@ -82,13 +82,13 @@ class Givens:
             if k not in ("balance", "formulas"):
                 scalars[k] = float(scalars[k])
                 if not math.isfinite(scalars[k]):
-                    raise ValueError(k)
+                    raise ValueError
         curves = {k: None if doc.get(k) is None else np.asarray(doc[k], dtype=float)
                   for k in cls.CURVES}
         n = curves["phi"].size
         if n < 3 or any(c is not None and (c.shape != (n,) or not np.all(np.isfinite(c)))
                         for c in curves.values()):
-            raise ValueError("curves")
+            raise ValueError
         return cls(**scalars, **curves)
 
 

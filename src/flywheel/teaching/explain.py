@@ -15,17 +15,11 @@ from __future__ import annotations
 import math
 
 
-def close(given: float, value: float, tolerance: float) -> bool:
-    """``given`` within ``tolerance`` of ``value``: grading's own relative (absolute at 0)
-    error and round-off allowance (teaching/grading.py ``rel_error``, ``SLACK``)."""
-    from flywheel.teaching.grading import SLACK, rel_error
-
-    return rel_error(given, value)[0] <= tolerance * (1 + SLACK)
-
-
-def explain(marking, given, mask: int) -> tuple[int, tuple[tuple[int, str], ...]]:
+def explain(marking, given, mask: int, close) -> tuple[int, tuple[tuple[int, str], ...]]:
     """(carried, diagnoses): the answers carried forward as a bit mask (bit j: answer j) and
-    the (answer j, mistake code) of the wrong answers a classic mistake reproduces."""
+    the (answer j, mistake code) of the wrong answers a classic mistake reproduces.
+    ``close(given, value, tolerance)``: grading's own test of an answer (teaching/grading.py
+    ``within``)."""
     chain = marking.chain
     names = marking.names
     values = dict(zip(names, given))

@@ -242,6 +242,12 @@ def rel_error(given: float, key: float) -> tuple[float, str]:
     return abs(given - key) / abs(key), "relative"
 
 
+def within(given: float, value: float, tolerance: float) -> bool:
+    """``given`` passes against ``value``: its error (:func:`rel_error`) at most
+    ``tolerance``, with the round-off allowance SLACK."""
+    return rel_error(given, value)[0] <= tolerance * (1 + SLACK)
+
+
 # -- grading ------------------------------------------------------------------------------------
 
 @dataclass(frozen=True, slots=True)
@@ -297,7 +303,7 @@ class Marking:
             return 0, ()
         from flywheel.teaching.explain import explain
 
-        return explain(self, given, mask)
+        return explain(self, given, mask, within)
 
     def verdicts(self, given: array) -> int:
         """The answers passed as a bit mask (bit j: answer j); ``given`` NaN = no answer."""
