@@ -14,6 +14,8 @@ from __future__ import annotations
 
 import math
 
+from flywheel.teaching.mistakes import diagnose
+
 
 def explain(marking, given, mask: int, close) -> tuple[int, tuple[tuple[int, str], ...]]:
     """(carried, diagnoses): the answers carried forward as a bit mask (bit j: answer j) and
@@ -40,4 +42,8 @@ def explain(marking, given, mask: int, close) -> tuple[int, tuple[tuple[int, str
             repeats = close(g, given[k], tol) and not close(marking.keys[j], marking.keys[k], tol)
             if not repeats:
                 carried |= 1 << j
+                continue
+        code = diagnose(chain, a, values, tol, close)
+        if code is not None:
+            named.append((j, code))
     return carried, tuple(named)
