@@ -125,6 +125,12 @@ def grade_command(
                                           "(0…1) of an answer wrong against the key but right "
                                           "from the student's own earlier answers (default 0: "
                                           "shown as such, not scored)."),
+    feedback: Optional[Path] = typer.Option(None, "--feedback", help="Write a feedback page "
+                                            "per student (HTML, in --lang) into this folder: "
+                                            "each answer, its verdict, the mistake named, the "
+                                            "expected value."),
+    no_reveal: bool = typer.Option(False, "--no-reveal", help="Leave the expected values out "
+                                   "of the feedback pages (with --feedback)."),
     csv_style: CsvStyle = "plain",
     lang: Lang = "en",
     as_json: Json = False,
@@ -156,7 +162,12 @@ def grade_command(
                 "csv_folder_missing", "{option} {path}: the folder {parent} does not exist "
                 "(allowed: a CSV file name in an existing folder)", option=option, path=str(path),
                 parent=str(path.parent)))
-    _guard(check_outputs, key, answers, [("--out", out), ("--gradebook", gradebook)])
+    if no_reveal and feedback is None:
+        fail(Notice.of(
+            "no_reveal_without_feedback", "--no-reveal: given without --feedback (it hides the "
+            "expected values of the feedback pages; allowed: --feedback DIR --no-reveal)"))
+    _guard(check_outputs, key, answers, [("--out", out), ("--gradebook", gradebook),
+                                         ("--feedback", feedback)])
     k = _guard(load_key, key)
     from rich.console import Console
     from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn
@@ -193,6 +204,13 @@ def grade_command(
 
         _guard(write_file, gradebook, gradebook_pieces(report, csv_style, lang), "--gradebook",
                expected="a CSV file name")
+    if feedback is not None:
+        from flywheel.render.feedback import write_feedback
+
+        notes: list = []
+        _guard(write_feedback, report, feedback, lang, not no_reveal, notes)
+        for n in notes:
+            note(n)
     if as_json:
         for piece in report_json(report):
             sys.stdout.write(piece)
@@ -203,7 +221,7 @@ def grade_command(
             print_class_summary(report, lang)
         else:
             print_report(report, lang=lang)
-        for path in (out, gradebook):
+        for path in (out, gradebook, feedback):
             if path is not None and report.students:
                 from flywheel.render.messages import prefix
 

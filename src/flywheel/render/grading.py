@@ -269,8 +269,10 @@ def print_report(r, console=None, lang: str = "en") -> None:
             + (f" {t['each']})" if len(worst[0]) > 1 else ")")), highlight=False)
         carried = sum(s.carried_count for s in r.students)
         if carried:
-            console.print(t["carried_note"].format(n=carried, share=_number(
-                r.carried_share, sig=3)), highlight=False)
+            share = _number(r.carried_share, sig=3)
+            console.print(t["carried_note"].format(
+                n=carried, share=share.replace(".", ",") if lang == "ru" else share),
+                highlight=False)
     if r.problems:
         console.print(f"[yellow]{t['problem_list'].format(n=len(r.problems))}[/] "
                       f"{t['problem_note']}")
