@@ -32,6 +32,10 @@ def variants_command(
     sheets_format: Optional[str] = typer.Option(None, "--sheets-format", help="Formats of "
                                                 "--sheets: both | html | pdf (default both; "
                                                 "only with --sheets)."),
+    moodle: Optional[Path] = typer.Option(None, "--moodle", help="Also write the variants as "
+                                          "a Moodle XML question bank to this file: a category "
+                                          "per variant, a numerical question per answer with "
+                                          "its unit and tolerance (worded in --lang)."),
     lang: Lang = "en",
 ) -> None:
     """Individual variants of a task from a template, with the answer key (answers.json,
@@ -48,6 +52,11 @@ def variants_command(
         fail(Notice.of(
             "option_not_allowed", "--seed: {got} is not allowed (allowed: 0 … 2^63 − 1)",
             option="--seed", got=seed, allowed="0 … 2^63 − 1"))
+    if moodle is not None and (moodle.resolve() == template.resolve()
+                               or moodle.resolve().is_relative_to(out.resolve())):
+        fail(Notice.of(
+            "moodle_path", "--moodle {path}: names the template or a file inside --out {out} "
+            "(allowed: a file name outside the variants folder)", path=str(moodle), out=str(out)))
     if points < 36:
         fail(Notice.of(
             "points_too_few", "--points: {n} is too few (allowed: 36 or more)", n=points))
@@ -103,6 +112,11 @@ def variants_command(
     _guard(write_variants, vs, out, notes, extra)
     for n in notes:
         note(n)
+    if moodle is not None:
+        from flywheel.io.output import write_file
+        from flywheel.render.moodle import quiz_xml
+
+        _guard(write_file, moodle, quiz_xml(vs, lang), "--moodle", expected="an XML file name")
     print_variants(vs, out, sheets=sheets_format if sheets else None, lang=lang)
 
 

@@ -567,6 +567,17 @@ def _graded(key: Key, name: str, rows, tolerance: float | None, limit: int | Non
             ) -> tuple[list[StudentGrade], list[Problem], int, int | None]:
     header = [h.strip() for h in next(rows)]
     lower = [h.lower() for h in header]
+    if "student" not in lower:
+        from flywheel.teaching.moodle import NotResponses, is_responses, native_rows
+
+        if is_responses(header):                # Moodle's quiz Responses report
+            try:
+                header, rows = native_rows(header, rows, key.answers)
+            except NotResponses as exc:
+                for _ in rows:
+                    pass
+                return [], [Problem(name, 1, exc.args[0])], 0, None
+            lower = [h.lower() for h in header]
     missing = [c for c in ("student", "variant") if c not in lower]
     if missing:
         for _ in rows:                          # a CSV error further on says more
