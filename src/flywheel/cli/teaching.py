@@ -32,6 +32,10 @@ def variants_command(
     sheets_format: Optional[str] = typer.Option(None, "--sheets-format", help="Formats of "
                                                 "--sheets: both | html | pdf (default both; "
                                                 "only with --sheets)."),
+    moodle: Optional[Path] = typer.Option(None, "--moodle", help="Also write the variants as "
+                                          "a Moodle XML question bank to this file: a category "
+                                          "per variant, a numerical question per answer with "
+                                          "its unit and tolerance (worded in --lang)."),
     lang: Lang = "en",
 ) -> None:
     """Individual variants of a task from a template, with the answer key (answers.json,
@@ -48,6 +52,11 @@ def variants_command(
         fail(Notice.of(
             "option_not_allowed", "--seed: {got} is not allowed (allowed: 0 … 2^63 − 1)",
             option="--seed", got=seed, allowed="0 … 2^63 − 1"))
+    if moodle is not None and (moodle.resolve() == template.resolve()
+                               or moodle.resolve().is_relative_to(out.resolve())):
+        fail(Notice.of(
+            "moodle_path", "--moodle {path}: names the template or a file inside --out {out} "
+            "(allowed: a file name outside the variants folder)", path=str(moodle), out=str(out)))
     if points < 36:
         fail(Notice.of(
             "points_too_few", "--points: {n} is too few (allowed: 36 or more)", n=points))
@@ -103,6 +112,11 @@ def variants_command(
     _guard(write_variants, vs, out, notes, extra)
     for n in notes:
         note(n)
+    if moodle is not None:
+        from flywheel.io.output import write_file
+        from flywheel.render.moodle import quiz_xml
+
+        _guard(write_file, moodle, quiz_xml(vs, lang), "--moodle", expected="an XML file name")
     print_variants(vs, out, sheets=sheets_format if sheets else None, lang=lang)
 
 
@@ -121,6 +135,16 @@ def grade_command(
     summary: bool = typer.Option(False, "--summary", help="Print only the class summary (score "
                                  "distribution, answers most often wrong, who handed in "
                                  "nothing)."),
+    carried_forward: float = typer.Option(0.0, "--carried-forward", help="Share of the credit "
+                                          "(0…1) of an answer wrong against the key but right "
+                                          "from the student's own earlier answers (default 0: "
+                                          "shown as such, not scored)."),
+    feedback: Optional[Path] = typer.Option(None, "--feedback", help="Write a feedback page "
+                                            "per student (HTML, in --lang) into this folder: "
+                                            "each answer, its verdict, the mistake named, the "
+                                            "expected value."),
+    no_reveal: bool = typer.Option(False, "--no-reveal", help="Leave the expected values out "
+                                   "of the feedback pages (with --feedback)."),
     csv_style: CsvStyle = "plain",
     lang: Lang = "en",
     as_json: Json = False,
@@ -152,7 +176,12 @@ def grade_command(
                 "csv_folder_missing", "{option} {path}: the folder {parent} does not exist "
                 "(allowed: a CSV file name in an existing folder)", option=option, path=str(path),
                 parent=str(path.parent)))
-    _guard(check_outputs, key, answers, [("--out", out), ("--gradebook", gradebook)])
+    if no_reveal and feedback is None:
+        fail(Notice.of(
+            "no_reveal_without_feedback", "--no-reveal: given without --feedback (it hides the "
+            "expected values of the feedback pages; allowed: --feedback DIR --no-reveal)"))
+    _guard(check_outputs, key, answers, [("--out", out), ("--gradebook", gradebook),
+                                         ("--feedback", feedback)])
     k = _guard(load_key, key)
     from rich.console import Console
     from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn
@@ -165,7 +194,8 @@ def grade_command(
                       disable=state.quiet or not console.is_terminal) as bar:
             task = bar.add_task("sheets", total=None)
             return grade(k, answers, tolerance,
-                         lambda done, total: bar.update(task, completed=done, total=total))
+                         lambda done, total: bar.update(task, completed=done, total=total),
+                         carried_forward)
 
     report = _guard(grade_with_bar)
     if not report.students:                 # an error: one line, nothing else written
@@ -188,6 +218,13 @@ def grade_command(
 
         _guard(write_file, gradebook, gradebook_pieces(report, csv_style, lang), "--gradebook",
                expected="a CSV file name")
+    if feedback is not None:
+        from flywheel.render.feedback import write_feedback
+
+        notes: list = []
+        _guard(write_feedback, report, feedback, lang, not no_reveal, notes)
+        for n in notes:
+            note(n)
     if as_json:
         for piece in report_json(report):
             sys.stdout.write(piece)
@@ -198,7 +235,7 @@ def grade_command(
             print_class_summary(report, lang)
         else:
             print_report(report, lang=lang)
-        for path in (out, gradebook):
+        for path in (out, gradebook, feedback):
             if path is not None and report.students:
                 from flywheel.render.messages import prefix
 

@@ -27,7 +27,43 @@ TEXT = words("grading", {"summary": "Class summary: {n} graded, mean score {mean
                          "v_task2": "flywheel task2 case", "v_grid": ", answers on a {n}-interval grid",
                          "v_variant": "variant", "v_drawn": "drawn", "v_answers": "answers (SI)",
                          "v_failed": "{n} draw(s) failed validation or analysis and were drawn again",
-                         "v_seed": "seed {seed} (the same seed gives the same files)"})
+                         "v_seed": "seed {seed} (the same seed gives the same files)",
+                         "carried": "consistent with your earlier answer", "diagnosis": "diagnosis",
+                         "carried_col": "carried forward",
+                         "carried_note": "carried forward: {n} answer(s) consistent with the "
+                         "student's earlier ones, credited {share} each"})
+
+#: the names of the classic mistakes of teaching/mistakes.py's catalogue (by code), as the
+#: feedback and the gradebook say them
+MISTAKES = words("mistake", {
+    "rpm_for_rad_s": "rev/min taken for rad/s",
+    "rad_s_for_rpm": "rad/s converted again as if rev/min",
+    "rps_for_rad_s": "rev/s taken for rad/s",
+    "half_delta": "δ/2 used for δ",
+    "double_delta": "2δ used for δ",
+    "ratio_square_forgotten": "the square of the speed ratio forgotten",
+    "local_extremum": "a local extremum of ΔT_I taken for the global one",
+    "masses_halved": "the masses' kinetic energy halved (cos 45°)",
+    "sign_lost": "a sign lost in the cycle balance",
+    "degrees_for_radians": "degrees used for radians",
+    "radius_for_diameter": "the radius given for the diameter",
+    "g_10": "g = 10 m/s² for 9.81 m/s² (within the tolerance)",
+})
+
+
+def verdict_word(a, lang: str = "en") -> str:
+    """An answer's verdict as the gradebook and the feedback say it."""
+    t = TEXT[lang]
+    return {"pass": t["pass"], "carried": t["carried"], "fail": t["fail"],
+            "no answer": t["no_answer"]}.get(a.verdict, t["pass"] if a.passed else t["fail"])
+
+
+def diagnosis_text(s, lang: str = "en") -> str:
+    """A student's diagnosis: each named mistake as «answer: mistake»; carried-forward answers
+    are their own verdict."""
+    m = MISTAKES[lang]
+    return "; ".join(f"{a.answer}: {m.get(a.diagnosis, a.diagnosis)}" for a in s.answers
+                     if a.diagnosis)
 
 
 def gradebook_rows(r, lang: str = "en") -> list[list]:
@@ -43,7 +79,9 @@ def _gradebook_rows(r, lang: str = "en"):
     head = [t["student"], t["variant"]]
     for a in answers:
         head += [f"{a} {t['verdict']}", f"{a} {t['error']}"]
-    yield head + [t["passed"], t["total"], t["score"]]
+    explained = bool(r.key.givens)
+    yield head + [t["passed"], t["total"], t["score"]] + (
+        [t["carried_col"], t["diagnosis"]] if explained else [])
     for s in r.students:
         by = {a.answer: a for a in s.answers}
         row = [s.student, s.variant]
@@ -52,9 +90,9 @@ def _gradebook_rows(r, lang: str = "en"):
             if g is None:
                 row += ["", None]
                 continue
-            row += [t["pass"] if g.passed else (t["fail"] if g.given is not None
-                                                 else t["no_answer"]), g.error]
-        yield row + [s.passed, s.total, round(s.score, 4)]
+            row += [verdict_word(g, lang), g.error]
+        yield row + [s.passed, s.total, round(s.score, 4)] + (
+            [s.carried_count, diagnosis_text(s, lang)] if explained else [])
 
 
 def gradebook_csv(r, style: str = "plain", lang: str = "en") -> str:
@@ -185,14 +223,20 @@ def print_report(r, console=None, lang: str = "en") -> None:
         table.add_column(t["error"], justify="right")
         table.add_column(t["tolerance"], justify="right")
         table.add_column("")
+        explained = s.marking.chain is not None
+        if explained:
+            table.add_column(t["diagnosis"])
         for a in s.answers:
             err = "—" if a.error is None else (
                 f"{100 * a.error:.3g} %" if a.error_kind == "relative"
                 else f"{a.error:.3g} {t['abs']}")
             mark = f"[green]{t['pass']}[/]" if a.passed else (
+                f"[yellow]{t['carried']}[/]" if a.verdict == "carried" else
                 f"[red]{t['fail']}[/]" if a.given is not None else f"[red]{t['no_answer']}[/]")
-            table.add_row(a.answer, _g(a.given), _g(a.key), err, f"{100 * a.tolerance:g} %",
-                          mark)
+            cells = [a.answer, _g(a.given), _g(a.key), err, f"{100 * a.tolerance:g} %", mark]
+            if explained:
+                cells.append(MISTAKES[lang].get(a.diagnosis, a.diagnosis or ""))
+            table.add_row(*cells)
         console.print(table)
 
     if r.students:
@@ -223,6 +267,12 @@ def print_report(r, console=None, lang: str = "en") -> None:
             worst=t["none"] if worst is None else
             f"{', '.join(worst[0])} ({worst[1]} {t['of']} {len(r.students)}"
             + (f" {t['each']})" if len(worst[0]) > 1 else ")")), highlight=False)
+        carried = sum(s.carried_count for s in r.students)
+        if carried:
+            share = _number(r.carried_share, sig=3)
+            console.print(t["carried_note"].format(
+                n=carried, share=share.replace(".", ",") if lang == "ru" else share),
+                highlight=False)
     if r.problems:
         console.print(f"[yellow]{t['problem_list'].format(n=len(r.problems))}[/] "
                       f"{t['problem_note']}")

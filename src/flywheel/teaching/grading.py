@@ -64,6 +64,7 @@ class Key:
     tolerance: float = DEFAULT_TOLERANCE
     tolerances: dict[str, float] = field(default_factory=dict)
     answers: tuple[str, ...] = ()
+    givens: dict = field(default_factory=dict)   # variant id → teaching.chain.Givens
 
     def tolerance_of(self, answer: str, default: float | None = None) -> float:
         """The per-answer tolerance of the key file, else ``default`` (e.g. ``--tolerance``),
@@ -152,8 +153,32 @@ def parse_key(doc, source: str = "<key>") -> Key:
     if not isinstance(answers, list) or not all(isinstance(a, str) for a in answers):
         raise CaseFileError(led(f"{source}: answers: ", Notice.of(
             "grade_answers_list", "must be a list of answer names (got {got})", got=repr(answers))))
+    givens = _chain_givens(doc.get("chain") if "variants" in doc else None, source)
     return Key(source, variants, float(tol), {str(k): float(v) for k, v in tols.items()},
-               tuple(answers))
+               tuple(answers), givens)
+
+
+def _chain_givens(chain, source: str) -> dict:
+    """The key's ``chain.givens`` {variant: Givens} (teaching/chain.py); {} without a chain;
+    a broken one is one CaseFileError line."""
+    from flywheel.teaching.chain import Givens
+
+    if chain is None:
+        return {}
+    table = chain.get("givens") if isinstance(chain, dict) else None
+    if not isinstance(table, dict):
+        raise CaseFileError(led(f"{source}: chain: ", Notice.of(
+            "key_chain_broken", "must be the chain flywheel variants writes ({{\"steps\": …, "
+            "\"givens\": {{variant: …}}}}); allowed: that, or no chain")))
+    out = {}
+    for vid, g in table.items():
+        try:
+            out[str(vid)] = Givens.from_document(g)
+        except (KeyError, TypeError, ValueError, AttributeError):
+            raise CaseFileError(led(f"{source}: chain.givens.{vid}: ", Notice.of(
+                "key_chain_broken", "must be the chain flywheel variants writes ({{\"steps\": "
+                "…, \"givens\": {{variant: …}}}}); allowed: that, or no chain"))) from None
+    return out
 
 
 def load_key(path) -> Key:
@@ -217,6 +242,12 @@ def rel_error(given: float, key: float) -> tuple[float, str]:
     return abs(given - key) / abs(key), "relative"
 
 
+def within(given: float, value: float, tolerance: float) -> bool:
+    """``given`` passes against ``value``: its error (:func:`rel_error`) at most
+    ``tolerance``, with the round-off allowance SLACK."""
+    return rel_error(given, value)[0] <= tolerance * (1 + SLACK)
+
+
 # -- grading ------------------------------------------------------------------------------------
 
 @dataclass(frozen=True, slots=True)
@@ -250,16 +281,29 @@ class AnswerGrade:
     error_kind: str              # "relative" | "absolute"
     tolerance: float
     passed: bool
+    verdict: str = ""            # "pass" | "carried" | "fail" | "no answer"
+    diagnosis: str | None = None  # a code of teaching/mistakes.py's catalogue
 
 
 @dataclass(frozen=True)
 class Marking:
     """How one variant is marked: its answers in the key's order, their key values and
-    tolerances (one object shared by every student of that variant)."""
+    tolerances (one object shared by every student of that variant), its chain (None: the
+    key has none) and the share of credit of a carried-forward answer."""
 
     names: tuple[str, ...]
     keys: tuple[float, ...]
     tolerances: tuple[float, ...]
+    chain: object = None         # teaching.chain.Chain
+    carried_share: float = 0.0
+
+    def explain(self, given: array, mask: int) -> tuple[int, tuple[tuple[int, str], ...]]:
+        """(carried, diagnoses) of a student's values: teaching/explain.py."""
+        if self.chain is None:
+            return 0, ()
+        from flywheel.teaching.explain import explain
+
+        return explain(self, given, mask, within)
 
     def verdicts(self, given: array) -> int:
         """The answers passed as a bit mask (bit j: answer j); ``given`` NaN = no answer."""
@@ -283,18 +327,23 @@ class StudentGrade:
     given: array                 # array('d'), NaN = no answer
     mask: int                    # bit j set: answer j passed
     marking: Marking
+    carried: int = 0             # bit j set: answer j consistent with the student's earlier ones
+    diagnoses: tuple[tuple[int, str], ...] = ()   # (answer j, mistake code)
 
     @property
     def answers(self) -> tuple[AnswerGrade, ...]:
         out = []
+        named = dict(self.diagnoses)
         for j, (a, k, tol, g) in enumerate(zip(self.marking.names, self.marking.keys,
                                                self.marking.tolerances, self.given)):
             if g != g:
                 out.append(AnswerGrade(a, None, k, None, "relative" if k else "absolute", tol,
-                                       False))
+                                       False, "no answer"))
                 continue
             err, kind = rel_error(g, k)
-            out.append(AnswerGrade(a, g, k, err, kind, tol, bool(self.mask >> j & 1)))
+            passed = bool(self.mask >> j & 1)
+            verdict = ("pass" if passed else "carried" if self.carried >> j & 1 else "fail")
+            out.append(AnswerGrade(a, g, k, err, kind, tol, passed, verdict, named.get(j)))
         return tuple(out)
 
     @property
@@ -302,12 +351,19 @@ class StudentGrade:
         return self.mask.bit_count()
 
     @property
+    def carried_count(self) -> int:
+        return self.carried.bit_count()
+
+    @property
     def total(self) -> int:
         return len(self.marking.names)
 
     @property
     def score(self) -> float:
-        return self.passed / self.total if self.total else 0.0
+        """(passed + share·carried forward)/total (``--carried-forward SHARE``, default 0)."""
+        if not self.total:
+            return 0.0
+        return (self.passed + self.marking.carried_share * self.carried_count) / self.total
 
     @property
     def wrong(self) -> list[str]:
@@ -325,6 +381,7 @@ class Report:
     students: tuple[StudentGrade, ...]
     problems: tuple[Problem, ...]
     files: tuple[str, ...]
+    carried_share: float = 0.0   # --carried-forward
 
     @property
     def mean_score(self) -> float | None:
@@ -462,7 +519,7 @@ def grade_sheet(key: Key, path, tolerance: float | None = None
 
 
 def _grade_sheet(key: Key, path, tolerance: float | None, limit: int | None,
-                 room: int | None = None
+                 room: int | None = None, carried_share: float = 0.0
                  ) -> tuple[list[StudentGrade], list[Problem], int, int | None]:
     """(graded, problems, rows past ``limit``, the first of them) of one CSV file, read as a
     stream of rows: at most ``limit`` graded rows are kept (None: all); the rows past it are
@@ -473,7 +530,7 @@ def _grade_sheet(key: Key, path, tolerance: float | None, limit: int | None,
         _check_size(path)
         codec = sheet_codec(path)               # the whole file checked, nothing kept
         return _grade_rows(key, name, _lines(_text_chunks(path, codec)), tolerance, limit,
-                           room)
+                           room, carried_share)
     except OSError as exc:
         return [], [Problem(name, None, Notice.of(
             "sheet_unreadable", "cannot be read ({reason})", reason=exc.strerror,
@@ -488,7 +545,7 @@ def _grade_sheet(key: Key, path, tolerance: float | None, limit: int | None,
 
 
 def _grade_rows(key: Key, name: str, lines, tolerance: float | None, limit: int | None,
-                room: int | None = None
+                room: int | None = None, carried_share: float = 0.0
                 ) -> tuple[list[StudentGrade], list[Problem], int, int | None]:
     """Grade the rows of a sheet given as its lines (see :func:`_grade_sheet`). A CSV error
     anywhere refuses the whole sheet, as before any row is graded."""
@@ -499,17 +556,28 @@ def _grade_rows(key: Key, name: str, lines, tolerance: float | None, limit: int 
             "sheet_empty", "empty file (expected a header student,variant,…)"))], 0, None
     rows = csv.reader(itertools.chain([first], lines), delimiter=_delimiter(head[0]))
     try:
-        return _graded(key, name, rows, tolerance, limit, room)
+        return _graded(key, name, rows, tolerance, limit, room, carried_share)
     except csv.Error as exc:
         return [], [Problem(name, None, Notice.of(
             "sheet_not_csv", "not a readable CSV file ({detail})", detail=str(exc)))], 0, None
 
 
 def _graded(key: Key, name: str, rows, tolerance: float | None, limit: int | None,
-            room: int | None = None
+            room: int | None = None, carried_share: float = 0.0
             ) -> tuple[list[StudentGrade], list[Problem], int, int | None]:
     header = [h.strip() for h in next(rows)]
     lower = [h.lower() for h in header]
+    if "student" not in lower:
+        from flywheel.teaching.moodle import NotResponses, is_responses, native_rows
+
+        if is_responses(header):                # Moodle's quiz Responses report
+            try:
+                header, rows = native_rows(header, rows, key.answers)
+            except NotResponses as exc:
+                for _ in rows:
+                    pass
+                return [], [Problem(name, 1, exc.args[0])], 0, None
+            lower = [h.lower() for h in header]
     missing = [c for c in ("student", "variant") if c not in lower]
     if missing:
         for _ in rows:                          # a CSV error further on says more
@@ -583,18 +651,28 @@ def _graded(key: Key, name: str, rows, tolerance: float | None, limit: int | Non
         marking = markings.get(vid)
         if marking is None:
             answers = key.variants[vid]
+            chain = None
+            if vid in key.givens:
+                from flywheel.teaching.chain import Chain
+
+                chain = Chain(key.givens[vid], tuple(answers))
             marking = markings[vid] = Marking(
                 tuple(answers), tuple(answers.values()),
-                tuple(key.tolerance_of(a, tolerance) for a in answers))
-        graded.append(StudentGrade(student, vid, name, n, values, marking.verdicts(values),
-                                   marking))
+                tuple(key.tolerance_of(a, tolerance) for a in answers), chain, carried_share)
+        mask = marking.verdicts(values)
+        carried, diagnoses = marking.explain(values, mask)
+        graded.append(StudentGrade(student, vid, name, n, values, mask, marking, carried,
+                                   diagnoses))
     return graded, problems, over, first_over
 
 
-def grade(key: Key, paths, tolerance: float | None = None, progress=None) -> Report:
+def grade(key: Key, paths, tolerance: float | None = None, progress=None,
+          carried_share: float = 0.0) -> Report:
     """Grade every CSV file (or folder of them) in ``paths``; never stops at a broken one.
 
     ``tolerance`` replaces the key's default tolerance (a per-answer one of the key stays);
+    ``carried_share`` is the credit of an answer consistent with the student's own earlier
+    ones (error carried forward: 0 … 1, default 0: shown, not scored);
     ``progress(done, total)`` is called after each sheet (a progress bar). Each sheet is read
     as a stream of rows; what is kept is one small record per graded row (at most MAX_ROWS).
     """
@@ -606,6 +684,10 @@ def grade(key: Key, paths, tolerance: float | None = None, progress=None) -> Rep
         raise InputError(Notice.of(
             "grade_tolerance_too_large", "--tolerance: {got} is too large (allowed: 0 < tolerance "
             "≤ {top:g}, a relative error: 0.01 is 1 %)", got=repr(tolerance), top=MAX_TOLERANCE))
+    if not (_number(carried_share) and 0 <= carried_share <= 1):
+        raise InputError(Notice.of(
+            "carried_share_range", "--carried-forward: {got} is not allowed (allowed: a share of "
+            "the credit from 0 to 1, e.g. 0.5)", got=repr(carried_share)))
     files, found = sheet_files(paths)
     problems = _Kept(MAX_PROBLEMS)
     for p in found:
@@ -619,7 +701,7 @@ def grade(key: Key, paths, tolerance: float | None = None, progress=None) -> Rep
                     "(grade the sheets in parts)", top=MAX_ROWS)))
             break
         s, p, over, first_over = _grade_sheet(key, f, tolerance, MAX_ROWS - len(students),
-                                              MAX_PROBLEMS - len(problems))
+                                              MAX_PROBLEMS - len(problems), carried_share)
         if over:
             p.append(Problem(str(f), first_over, Notice.of(
                 "run_rows_cut", "this row and the {n} after it not graded: at most {top} student "
@@ -648,7 +730,7 @@ def grade(key: Key, paths, tolerance: float | None = None, progress=None) -> Rep
             "run_problems_cut", "… and {n} more problem(s) up to this sheet not listed (at most "
             "{top} per run; grade the sheets in parts)", n=problems.dropped, top=MAX_PROBLEMS)))
     return Report(key, key.tolerance if tolerance is None else tolerance, tuple(students),
-                  tuple(problems), tuple(map(str, files)))
+                  tuple(problems), tuple(map(str, files)), carried_share)
 
 
 # -- the report as data -------------------------------------------------------------------------
@@ -663,10 +745,12 @@ def report_dict(r: Report) -> dict:
 def _student_dict(s: StudentGrade) -> dict:
     return {
         "student": s.student, "variant": s.variant, "file": s.file, "row": s.row,
-        "score": s.score, "passed": s.passed, "total": s.total, "wrong": s.wrong,
+        "score": s.score, "passed": s.passed, "carried_forward": s.carried_count,
+        "total": s.total, "wrong": s.wrong,
         "answers": [{"answer": a.answer, "given": a.given, "key": a.key, "error": a.error,
                      "error_kind": a.error_kind, "tolerance": a.tolerance,
-                     "pass": a.passed} for a in s.answers],
+                     "pass": a.passed, "verdict": a.verdict, "diagnosis": a.diagnosis}
+                    for a in s.answers],
     }
 
 
@@ -676,6 +760,7 @@ def _report_frame(r: Report) -> dict:
     return {
         "key": r.key.source,
         "tolerance": r.tolerance,
+        "carried_forward": r.carried_share,
         "tolerances": {a: r.key.tolerance_of(a, r.tolerance) for a in r.key.answers},
         "files": list(r.files),
         "students": [],

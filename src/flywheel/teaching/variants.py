@@ -286,13 +286,21 @@ def detect_kind(doc: dict, source: str) -> str:
 def results_of(kind: str, doc: dict, source: str, n_points: int = RUN_POINTS) -> dict:
     """The results document of one case: summary.json "results" for a run case, the JSON of
     ``flywheel task2 --json`` for a task2 case (SI units)."""
+    return solved(kind, doc, source, n_points)[0]
+
+
+def solved(kind: str, doc: dict, source: str, n_points: int = RUN_POINTS):
+    """(results document, the chain's givens or None) of one case (:func:`results_of`;
+    teaching/chain.py: the givens of a run case whose flywheel is sized)."""
     case = _validate(kind, doc, source)
     if kind == "run":
         from flywheel.cases.run import field_of
         from flywheel.dynamics.pipeline import analyze
+        from flywheel.teaching.chain import givens_of
 
         try:
-            return analyze(case, n_points=n_points).to_document()["results"]
+            res = analyze(case, n_points=n_points)
+            return res.to_document()["results"], givens_of(case, res)
         except FlywheelError as exc:      # name the field as `flywheel run` does ('dyads[0]: …')
             where = field_of(exc, case)
             if not where:
@@ -300,7 +308,7 @@ def results_of(kind: str, doc: dict, source: str, n_points: int = RUN_POINTS) ->
             raise type(exc)(led(f"{where}: ", said(exc))) from None
     from flywheel.cases.task2 import solve_case
 
-    return solve_case(case, source).to_document()
+    return solve_case(case, source).to_document(), None
 
 
 def answer_value(results: dict, name: str):
@@ -433,6 +441,7 @@ class Variant:
     drawn: dict[str, Any]
     text: str
     answers: dict[str, float]
+    givens: Any = None           # teaching.chain.Givens of a run case (None: no chain)
 
 
 @dataclass(frozen=True)
@@ -509,7 +518,7 @@ def generate(template: Template, count: int, seed: int, n_points: int = RUN_POIN
             text = header(number, count, template.name, seed, template.kind) + tomli_w.dumps(doc)
             try:
                 # solve the file as written, so the key is what a student's run gives
-                res = results_of(template.kind, tomllib.loads(text), filename, n_points)
+                res, givens = solved(template.kind, tomllib.loads(text), filename, n_points)
                 answers = pick_answers(res, template.answers, filename)
             except FlywheelError as exc:
                 failed += 1
@@ -522,7 +531,7 @@ def generate(template: Template, count: int, seed: int, n_points: int = RUN_POIN
                         "{detail})", number=number, failed=failed, detail=last_error))) from None
                 continue
             seen.add(signature)
-            variants.append(Variant(vid, filename, drawn, text, answers))
+            variants.append(Variant(vid, filename, drawn, text, answers, givens))
             break
         if progress is not None:
             progress(number)
@@ -549,7 +558,19 @@ def answers_json(vs: VariantSet) -> str:
         "variants": {v.id: v.answers for v in vs.variants},
         "drawn": {v.id: v.drawn for v in vs.variants},
     }
-    return json.dumps(doc, indent=2, ensure_ascii=False) + "\n"
+    text = json.dumps(doc, indent=2, ensure_ascii=False)
+    if any(v.givens is not None for v in vs.variants):
+        # the chain (teaching/chain.py): how each answer follows from the earlier ones, and
+        # per variant what that needs; one line per variant (its curves unindented)
+        from flywheel.teaching.chain import chain_table
+
+        steps = json.dumps(chain_table(t.answers), indent=2, ensure_ascii=False)
+        givens = ",\n".join(
+            f"      {json.dumps(v.id)}: {json.dumps(v.givens.to_document(), ensure_ascii=False)}"
+            for v in vs.variants if v.givens is not None)
+        text = (text[:-2] + ',\n  "chain": {\n    "steps": ' + steps.replace("\n", "\n    ")
+                + ',\n    "givens": {\n' + givens + "\n    }\n  }\n}")
+    return text + "\n"
 
 
 def _cell(v) -> str:

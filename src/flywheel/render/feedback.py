@@ -1,0 +1,107 @@
+"""The feedback page of each student (``flywheel grade --feedback DIR``, issue 27): one
+self-contained HTML page per graded student, in the teacher's ``--lang``, with each answer,
+its verdict («верно по вашим данным» for an error carried forward), the named classic mistake
+and the key's value (left out with ``--no-reveal``). Formatting only: what is shown is the
+grading's (teaching/grading.py, teaching/explain.py)."""
+from __future__ import annotations
+
+import html
+import re
+
+from flywheel.render.catalogue import words
+from flywheel.render.grading import MISTAKES, verdict_word
+from flywheel.render.numbers import fmt
+
+T = words("feedback", {
+    "title": "Feedback: {student}, variant {variant}",
+    "score": "Score: {passed} of {total} answers right ({pct})",
+    "carried": "{n} answer(s) consistent with your earlier answers (credited {share} each)",
+    "answer": "answer", "given": "your answer", "verdict": "verdict",
+    "diagnosis": "what went wrong", "expected": "expected", "tolerance": "tolerance",
+    "none": "—",
+    "note_carried": "«Consistent with your earlier answer»: wrong against the key, but right "
+                    "when computed from your own earlier answers — the mistake is further up.",
+    "hidden": "The expected values are not shown.",
+})
+
+
+def _num(x, lang: str) -> str:
+    """A number as the page writes it (render/numbers.py; Russian: decimal comma, true minus)."""
+    if x is None:
+        return "—"
+    text = fmt(x, 6, zero=None, nonfinite="show")
+    if lang == "ru":
+        text = text.replace(".", ",").replace("-", "\u2212")
+    return text
+
+
+def label(answer: str, lang: str) -> str:
+    """An answer as the task sheet asks it (render/sheet_labels.py): «name symbol, unit»."""
+    from flywheel.render.sheet_labels import answer_words
+
+    what, sym, u = answer_words("run", answer, lang)
+    return " ".join(x for x in (what, sym) if x) + (f", {u}" if u else "")
+
+
+def _pct(x: float, lang: str) -> str:
+    return _num(round(100 * x), lang) + " %"
+
+
+def page(s, lang: str = "en", reveal: bool = True, share: float = 0.0) -> str:
+    """The HTML page of one graded student (``StudentGrade``)."""
+    t = T[lang]
+    e = html.escape
+    rows = []
+    for a in s.answers:
+        cells = [f"{e(label(a.answer, lang))}<br><small>{e(a.answer)}</small>", _num(a.given, lang), e(verdict_word(a, lang)),
+                 e(MISTAKES[lang].get(a.diagnosis, a.diagnosis or t["none"]))]
+        if reveal:
+            cells.append(_num(a.key, lang))
+        cells.append(_num(100 * a.tolerance, lang) + " %")
+        cls = a.verdict.replace(" ", "-")
+        rows.append(f'<tr class="{cls}">' + "".join(f"<td>{c}</td>" for c in cells) + "</tr>")
+    head = [t["answer"], t["given"], t["verdict"], t["diagnosis"]]
+    head += [t["expected"]] if reveal else []
+    head += [t["tolerance"]]
+    title = t["title"].format(student=s.student, variant=s.variant)
+    notes = [t["score"].format(passed=s.passed, total=s.total, pct=_pct(s.score, lang))]
+    if s.carried_count:
+        notes.append(t["carried"].format(n=s.carried_count, share=_num(share, lang)))
+        notes.append(t["note_carried"])
+    if not reveal:
+        notes.append(t["hidden"])
+    return (
+        "<!DOCTYPE html>\n"
+        f'<html lang="{lang}">\n<head>\n<meta charset="utf-8">\n<title>{e(title)}</title>\n'
+        "<style>body{font-family:sans-serif;margin:2em;max-width:60em}"
+        "table{border-collapse:collapse}td,th{border:1px solid #999;padding:.3em .6em}"
+        "td:nth-child(2),td:nth-child(5),td:nth-child(6){text-align:right}"
+        "tr.pass td:nth-child(3){color:#070}tr.carried td:nth-child(3){color:#a60}"
+        "tr.fail td:nth-child(3),tr.no-answer td:nth-child(3){color:#b00}</style>\n"
+        f"</head>\n<body>\n<h1>{e(title)}</h1>\n"
+        + "".join(f"<p>{e(n)}</p>\n" for n in notes)
+        + "<table>\n<tr>" + "".join(f"<th>{e(h)}</th>" for h in head) + "</tr>\n"
+        + "\n".join(rows) + "\n</table>\n</body>\n</html>\n")
+
+
+def file_name(number: int, student: str) -> str:
+    """``007_Ivanov.html``: the student's place in the report and a name safe on any system
+    (letters, digits, '-', '_'; at most 60 characters)."""
+    safe = re.sub(r"[^\w-]+", "_", student, flags=re.UNICODE).strip("_")[:60] or "student"
+    return f"{number:03d}_{safe}.html"
+
+
+def write_feedback(report, folder, lang: str = "en", reveal: bool = True, notes=None):
+    """One page per student of ``report`` into ``folder``, written whole or not at all
+    (io.output.write_folder: an earlier feedback folder's own files replaced, anything else
+    refused)."""
+    from pathlib import Path
+
+    from flywheel.io.output import write_folder
+
+    def build(tmp: Path) -> None:
+        for i, s in enumerate(report.students, start=1):
+            (tmp / file_name(i, s.student)).write_text(
+                page(s, lang, reveal, report.carried_share), encoding="utf-8")
+
+    return write_folder(Path(folder), build, "", "feedback", notes)

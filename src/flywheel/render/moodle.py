@@ -1,0 +1,85 @@
+"""The variants as a Moodle XML question bank (``flywheel variants … --moodle quiz.xml``,
+issue 27, step 6): one category per variant, one numerical question per answer, with its
+unit and its tolerance. The structure is Moodle's documented "Moodle XML format"
+(docs.moodle.org, Moodle XML format: ``<quiz>``, ``<question type="category">``,
+``<question type="numerical">`` with ``name``, ``questiontext``, ``answer fraction="100"``
+holding ``text`` and ``tolerance``, ``units``); a numerical answer's tolerance is absolute,
+so the key's relative one is written as tolerance·|value|. Each question's text starts with
+the tag ``[flywheel VARIANT ANSWER]`` (teaching/moodle.py) by which ``flywheel grade`` reads
+the quiz's Responses export. Formatting only."""
+from __future__ import annotations
+
+from xml.sax.saxutils import escape
+
+from flywheel.render.catalogue import words
+from flywheel.teaching.moodle import tag
+
+T = words("moodle", {
+    "category": "Variant {variant}",
+    "question": "Variant {variant}. Determine {what}{symbol}{unit} (accepted within ±{pct} %). "
+                "The data are those of your variant's task sheet.",
+})
+
+
+def _unit_and_words(answer: str, kind: str, lang: str) -> tuple[str, str, str, str]:
+    """(what, symbol, unit as the sheet prints it, SI unit symbol for Moodle's units)."""
+    from flywheel.render.nomenclature import unit_of
+    from flywheel.render.sheet_labels import answer_words
+
+    what, sym, u = answer_words(kind, answer, lang)
+    try:
+        si = unit_of(answer.rsplit(".", 1)[-1], "en")
+    except KeyError:
+        si = ""
+    return what, sym, u, "" if si in ("–", "-") else si
+
+
+def _text(s: str) -> str:
+    return f"<text>{escape(s)}</text>"
+
+
+def quiz_xml(vs, lang: str = "en") -> str:
+    """The question bank of a VariantSet as Moodle XML text."""
+    t = vs.template
+    w = T[lang]
+    out = ['<?xml version="1.0" encoding="UTF-8"?>', "<quiz>"]
+    top = f"$course$/top/flywheel/{t.name}"
+    for v in vs.variants:
+        out += ['  <question type="category">',
+                f"    <category>{_text(top + '/' + w['category'].format(variant=v.id))}"
+                "</category>", "  </question>"]
+        for a in t.answers:
+            value = v.answers[a]
+            rel = t.tolerances.get(a, t.tolerance)
+            what, sym, unit, si = _unit_and_words(a, t.kind, lang)
+            pct = f"{100 * rel:g}".replace(".", "," if lang == "ru" else ".")
+            text = (tag(v.id, a) + " " + w["question"].format(
+                variant=v.id, what=what, symbol=f" {sym}" if sym else "",
+                unit=f", {unit}" if unit else "", pct=pct))
+            absolute = rel * abs(value) if value else rel
+            out += [
+                '  <question type="numerical">',
+                f"    <name>{_text(f'{v.id} {a}')}</name>",
+                f'    <questiontext format="html">{_text(text)}</questiontext>',
+                '    <generalfeedback format="html"><text></text></generalfeedback>',
+                "    <defaultgrade>1</defaultgrade>",
+                "    <penalty>0</penalty>",
+                "    <hidden>0</hidden>",
+                f"    <idnumber>{escape(f'{v.id}-{a}')}</idnumber>",
+                '    <answer fraction="100" format="moodle_auto_format">',
+                f"      <text>{value!r}</text>",
+                f"      <tolerance>{absolute!r}</tolerance>",
+                '      <feedback format="html"><text></text></feedback>',
+                "    </answer>",
+                "    <unitgradingtype>0</unitgradingtype>",
+                "    <unitpenalty>0</unitpenalty>",
+                "    <showunits>3</showunits>",
+                "    <unitsleft>0</unitsleft>",
+            ]
+            if si:
+                out += ["    <units>", "      <unit>", "        <multiplier>1</multiplier>",
+                        f"        <unit_name>{escape(si)}</unit_name>", "      </unit>",
+                        "    </units>"]
+            out.append("  </question>")
+    out.append("</quiz>")
+    return "\n".join(out) + "\n"

@@ -1,0 +1,135 @@
+"""Issue 27, step 5: a feedback page per student (HTML, in the teacher's --lang, --no-reveal)
+and the diagnosis column of the gradebook."""
+import csv
+import math
+from html.parser import HTMLParser
+
+import pytest
+
+from chain_helpers import data_of, key_of, make, runner, textbook, write_sheet
+from flywheel.cli import app
+
+
+@pytest.fixture(scope="module")
+def compressor(tmp_path_factory):
+    return make(tmp_path_factory, "variants_compressor.toml", count=2, seed=31)
+
+
+class Cells(HTMLParser):
+    """The text of every <td> of a page, row by row (and that tags are balanced)."""
+
+    def __init__(self):
+        super().__init__()
+        self.rows, self.open, self.cell = [], [], None
+
+    def handle_starttag(self, tag, attrs):
+        if tag not in ("meta", "br"):
+            self.open.append(tag)
+        if tag == "tr":
+            self.rows.append([])
+        if tag == "td":
+            self.cell = ""
+
+    def handle_endtag(self, tag):
+        assert self.open.pop() == tag
+        if tag == "td":
+            self.rows[-1].append(self.cell)
+            self.cell = None
+
+    def handle_data(self, data):
+        if self.cell is not None:
+            self.cell += data
+
+
+def parse(path):
+    p = Cells()
+    p.feed(path.read_text(encoding="utf-8"))
+    p.close()
+    assert not p.open
+    return [r for r in p.rows if r]
+
+
+def ru(x):
+    return f"{x:.6g}".replace(".", ",")
+
+
+@pytest.fixture(scope="module")
+def sheet(compressor, tmp_path_factory):
+    key = key_of(compressor)
+    a1, a2 = key["variants"]["01"], key["variants"]["02"]
+    carried = dict(a1, delta_T_max=a1["delta_T_max"] * 1.3)
+    carried.update(textbook(data_of(compressor, "01"), carried["delta_T_max"]))
+    half = dict(a2, J_required=a2["J_required"] * 2)              # δ/2 for δ
+    return write_sheet(tmp_path_factory.mktemp("fb") / "s.csv", key,
+                       [("Иванов И. И.", "01", carried), ("Petrova/../x", "02", half)])
+
+
+def test_a_page_per_student_in_russian_with_verdicts_diagnosis_and_the_key(compressor, sheet,
+                                                                            tmp_path):
+    out = tmp_path / "fb"
+    res = runner.invoke(app, ["grade", str(compressor / "answers.json"), str(sheet),
+                              "--feedback", str(out), "--lang", "ru", "--carried-forward", "0.5"])
+    assert res.exit_code == 0, res.output
+    pages = sorted(p.name for p in out.glob("*.html"))
+    assert pages == ["001_Иванов_И_И.html", "002_Petrova_x.html"]   # no path out of the folder
+    key = key_of(compressor)
+    text = (out / pages[0]).read_text(encoding="utf-8")
+    assert 'lang="ru"' in text and "Разбор: Иванов И. И., вариант 01" in text
+    rows = parse(out / pages[0])
+    verdict = {r[0].split("\n")[0]: r[2] for r in rows}
+    assert list(verdict.values()) == ["верно", "НЕВЕРНО", "верно по вашим данным",
+                                      "верно по вашим данным", "верно по вашим данным"]
+    # the expected value is the key's, with a decimal comma
+    assert rows[1][4] == ru(key["variants"]["01"]["delta_T_max"])
+    rows = parse(out / pages[1])
+    J = next(r for r in rows if "J_required" in r[0])
+    assert J[2] == "НЕВЕРНО" and J[3] == "вместо δ взято δ/2"
+    assert not any(c.isascii() and c.isalpha() for c in J[3])
+
+
+def test_no_reveal_leaves_the_key_out(compressor, sheet, tmp_path):
+    out = tmp_path / "fb"
+    res = runner.invoke(app, ["grade", str(compressor / "answers.json"), str(sheet),
+                              "--feedback", str(out), "--no-reveal"])
+    assert res.exit_code == 0, res.output
+    key = key_of(compressor)["variants"]
+    page = next(out.glob("001_*.html"))
+    rows = parse(page)
+    assert {len(r) for r in rows} == {5}             # answer, given, verdict, diagnosis, tol.
+    text = page.read_text(encoding="utf-8")
+    for a in ("delta_T_max", "J_required", "J_flywheel"):     # wrong or carried: not shown
+        assert f"{key['01'][a]:.6g}" not in text
+    assert "The expected values are not shown." in text
+
+
+def test_the_gradebook_has_the_diagnosis(compressor, sheet, tmp_path):
+    book = tmp_path / "b.csv"
+    res = runner.invoke(app, ["grade", str(compressor / "answers.json"), str(sheet),
+                              "--gradebook", str(book)])
+    assert res.exit_code == 0, res.output
+    rows = list(csv.DictReader(book.open(encoding="utf-8")))
+    assert rows[0]["carried forward"] == "3" and rows[0]["diagnosis"] == ""
+    assert rows[1]["diagnosis"] == "J_required: δ/2 used for δ"
+
+
+@pytest.mark.parametrize("args, fragment", [
+    (["--no-reveal"], "--no-reveal: given without --feedback"),
+    (["--feedback", "{key}"], "is the answer key"),
+    (["--feedback", "{sheet}"], "is the answer sheet"),
+])
+def test_feedback_options_refused_in_one_line(compressor, sheet, args, fragment):
+    args = [a.format(key=compressor / "answers.json", sheet=sheet) for a in args]
+    res = runner.invoke(app, ["grade", str(compressor / "answers.json"), str(sheet), *args])
+    assert res.exit_code == 2, res.output
+    assert fragment in res.output and "Traceback" not in res.output
+
+
+def test_a_folder_of_the_users_is_not_written_into(compressor, sheet, tmp_path):
+    mine = tmp_path / "mine"
+    mine.mkdir()
+    (mine / "notes.txt").write_text("mine", encoding="utf-8")
+    res = runner.invoke(app, ["grade", str(compressor / "answers.json"), str(sheet),
+                              "--feedback", str(mine)])
+    assert res.exit_code == 2, res.output
+    assert (mine / "notes.txt").read_text(encoding="utf-8") == "mine"
+    assert sorted(p.name for p in mine.iterdir()) == ["notes.txt"]
