@@ -26,6 +26,7 @@ from flywheel.dynamics.results import (AtAngle, CylinderResult, EnergyResult, Li
                                        warnings_of, with_forces)
 from flywheel.errors import InputError, Notice
 from flywheel.linkage.drawing import describe, links_drawn
+from flywheel.linkage.output_link import output_link
 from flywheel.units import PA_PER_MPA
 
 
@@ -67,7 +68,7 @@ def analyze(case, n_points: int = DEFAULT_POINTS, at_deg: list[float] | None = N
         at=with_forces(at, fo, phi),
         position_angles=tuple(positions), links_drawn=links_drawn(mech),
         crank_length=float(mech.crank.length), time_domain=td, forces=fo, plans=pl,
-        drawing=describe(mech, kin),
+        drawing=describe(mech, kin), output_link=output_link(mech),
         warnings=tuple(case.plausibility_warnings()) + warnings_of(ld, red, en, sz, mo, fo, td))
 
 

@@ -167,6 +167,10 @@ def print_check(report, console=None, lang: str = "en") -> None:
                 t.add_row(f"{math.degrees(a):.4f}", *(
                     f"{_g(w[i])} / {_g(e[i])}" for w, e in report.link_analogues.values()))
             console.print(t)
+    if report.output_link is not None:                  # render/output_link.py
+        from flywheel.render.output_link import print_check as print_output_link
+
+        print_output_link(report.output_link, console, lang)
     console.print(f"[green]{w['valid']}[/green]")
 
 
