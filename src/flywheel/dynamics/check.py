@@ -55,8 +55,13 @@ def check_case(case) -> CheckReport:
     from flywheel.dynamics.pipeline import analyze
 
     n1 = case.machine.omega_mean / (2 * math.pi)
-    headline = analyze(case, n_points=360).scalars
-    firing = headline.firing_deg
+    if case.kinematics_only:                       # no dynamics to run (kinematics_only.py)
+        from flywheel.dynamics.kinematics_only import analyze_kinematics
+
+        headline = analyze_kinematics(case, n_points=360).scalars
+    else:
+        headline = analyze(case, n_points=360).scalars
+    firing = None if case.kinematics_only else headline.firing_deg
     if case.tabulated is not None:
         return CheckReport(case=case, crank_speed_rps=n1, tabulated=_tabulated(case))
 

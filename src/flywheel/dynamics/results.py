@@ -683,6 +683,8 @@ def json_ready(obj):
 class Results:
     """Everything one run computed: the stage results, the table columns and the report angles."""
 
+    analysis = "dynamics"                    # not a field: dynamics/kinematics_only.py says "kinematics"
+
     title: str
     source: str
     phi: np.ndarray                          # the closed grid [rad]

@@ -416,6 +416,14 @@ TERMS: dict[str, Term] = {
                        "коэффициент изменения средней скорости хода"),
     "transmission_angle_min_deg": _t("γ_min", r"$\gamma_{min}$", "deg",
                                      "least transmission angle", "наименьший угол передачи"),
+    # the kinematics alone (dynamics/kinematics_only.py): true values on the grid at ω_m
+    "v_{point}": _t("v", "$v$", "m/s", "velocity of {x}", "скорость точки {x}"),
+    "a_{point}": _t("a", "$a$", "m/s²", "acceleration of {x}", "ускорение точки {x}"),
+    "omega_{link}": _t("ω", r"$\omega$", "rad/s", "angular velocity of link {x}",
+                       "угловая скорость звена {x}"),
+    "eps_{link}": _t("ε", r"$\varepsilon$", "rad/s²", "angular acceleration of link {x}",
+                     "угловое ускорение звена {x}"),
+    "analysis": _t("", "", "", "what was computed", "что рассчитано"),
     # --- flywheel ---  (the designed rim, [flywheel.rim]: results.flywheel_rim)
     "D_mean": _t("D_ср", r"$D_{ср}$", "m", "mean diameter of the rim", "средний диаметр обода",
                  "D_m", "$D_m$"),
