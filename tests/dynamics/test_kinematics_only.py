@@ -113,6 +113,10 @@ def test_analysis_kinematics_on_a_case_with_masses():
     truth = _by_differences(case.mechanism(), 90.0, w)
     assert res.at[0].points["E"].v == pytest.approx(truth["E"][0], rel=1e-7)
     assert res.output_link.link == "5"
+    plan = res.plans[0]                      # the velocity and acceleration plans at ω_m, ε = 0
+    assert np.hypot(*plan.velocity.images["E"]) == pytest.approx(truth["E"][0], rel=1e-7)
+    assert np.hypot(*plan.acceleration.images["E"]) == pytest.approx(truth["E"][1], rel=1e-5,
+                                                                     abs=1e-5)
     assert "at" in res.to_document()["results"]
 
 
@@ -132,7 +136,9 @@ def test_plots_and_russian_report(tmp_path):
     (tmp_path / "k.toml").write_text(BARE, encoding="utf-8")
     res = flywheel("run", "k.toml", "--out", "o", "--lang", "ru", cwd=tmp_path)
     assert res.returncode == 0, res.stderr
-    assert sorted(p.name for p in (tmp_path / "o" / "plots").iterdir()) == [
-        "acceleration_analogues.png", "positions.png", "scheme.png", "velocity_analogues.png"]
+    assert sorted(p.name for p in (tmp_path / "o" / "plots").iterdir()) == sorted(
+        ["acceleration_analogues.png", "positions.png", "scheme.png", "velocity_analogues.png",
+         "plan_positions.png"] + [f"plan_{w}_{a}.png" for w in ("velocity", "acceleration")
+                                  for a in (0, 75, 180)])
     text = (tmp_path / "o" / "report.md").read_text(encoding="utf-8")
     assert "# Кинематический анализ" in text and "Выходное звено 3 (коромысло)" in text

@@ -36,6 +36,18 @@ class KinematicsAt:
     links: dict[str, LinkAt]
 
 
+@dataclass(frozen=True)
+class KinematicPlans:
+    """The velocity and acceleration plans at one report angle ``phi_deg`` [deg] (grid node
+    ``index``) at ω_m, ε = 0 (:func:`flywheel.dynamics.plans.kinematic_plans`): what
+    render/plots_plans.py draws of a PlanSet, without the force polygons and the lever."""
+
+    phi_deg: float
+    index: int
+    velocity: object                         # dynamics.plans.KinematicPlan
+    acceleration: object
+
+
 @dataclass(frozen=True, kw_only=True)
 class KinematicsHeadline:
     """summary.json's "results" of a kinematics-only run without "at"."""
@@ -68,6 +80,7 @@ class KinematicsResults:
     crank_length: float                      # [m]
     drawing: Drawing
     output_link: OutputLink | None = None
+    plans: tuple[KinematicPlans, ...] = ()   # at the report angles
     warnings: tuple[str, ...] = ()
 
     @property
@@ -133,9 +146,15 @@ def analyze_kinematics(case, n_points: int = DEFAULT_POINTS,
     phi, kin = linkage_grid(case, mech, dcs, n_points,
                             [p.phi for p in positions] + [math.radians(a) for a in at_deg])
     w = case.machine.omega_mean
+    from flywheel.dynamics.plans import kinematic_plans
+
+    plans = []
+    for a in at_deg:
+        i = report_index(kin.phi, a)
+        plans.append(KinematicPlans(float(a), i, *kinematic_plans(mech, kin, i, w, 0.0, float(a))))
     return KinematicsResults(
         title=case.title, source=case.source, phi=phi, kinematics=kin, omega_mean=w,
         columns=kinematics_columns(phi, kin, mech.crank.name, w),
         at=at_constant_speed(at_deg, kin, w), position_angles=tuple(positions),
         links_drawn=links_drawn(mech), crank_length=float(mech.crank.length),
-        drawing=describe(mech, kin), output_link=output_link(mech))
+        drawing=describe(mech, kin), output_link=output_link(mech), plans=tuple(plans))

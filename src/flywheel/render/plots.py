@@ -570,8 +570,11 @@ def all_figures(results, lang: str = "en"):
     from flywheel.render import plots_extra as px
     from flywheel.render import plots_forces, plots_plans
 
-    if results.analysis == "kinematics":
-        return figures(results, lang)
+    if results.analysis == "kinematics":     # the kinematic plans only: no force analysis
+        return figures(results, lang) + [
+            (n, f) for n, f in plots_plans.figures(results, lang,
+                                                   scheme=(draw_scheme_fixed, draw_scheme_at))
+            if n.startswith(("plan_positions", "plan_velocity", "plan_acceleration"))]
     out = figures(results, lang) + plots_forces.figures(results, lang)   # force analysis
     out += plots_plans.figures(results, lang,      # the plans, at the report angles only
                                scheme=(draw_scheme_fixed, draw_scheme_at))
