@@ -142,3 +142,13 @@ def test_plots_and_russian_report(tmp_path):
                                   for a in (0, 75, 180)])
     text = (tmp_path / "o" / "report.md").read_text(encoding="utf-8")
     assert "# Кинематический анализ" in text and "Выходное звено 3 (коромысло)" in text
+
+
+def test_animate_and_a_given_motion_option(tmp_path):
+    """--animate draws the linkage as for any linkage case; --motion changes nothing (ε = 0)."""
+    (tmp_path / "k.toml").write_text(BARE, encoding="utf-8")
+    res = flywheel("run", "k.toml", "--no-plots", "--animate", "--motion", "true", "--out", "o",
+                   "--json", cwd=tmp_path)
+    assert res.returncode == 0, res.stderr
+    assert (tmp_path / "o" / "mechanism.gif").stat().st_size > 0
+    assert json.loads(res.stdout)["results"]["at"][1]["epsilon"] == 0.0

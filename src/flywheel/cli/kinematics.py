@@ -16,7 +16,7 @@ from flywheel.errors import Notice
 
 def run_kinematics(c, case: Path, out: Path | None, points: int, at, no_plots: bool,
                    as_json: bool, lang: str, transients: bool, formats: list[str],
-                   csv_style: str, figure_format: str, dpi: int) -> None:
+                   csv_style: str, figure_format: str, dpi: int, animate: bool = False) -> None:
     """The kinematics-only run of the validated case ``c`` read from ``case``; the options as
     `flywheel run` took them (``--transients`` is refused: there is no motion to integrate)."""
     if transients:
@@ -47,6 +47,10 @@ def run_kinematics(c, case: Path, out: Path | None, points: int, at, no_plots: b
             pngs += [p.with_suffix(".png").name for p in write_plots(
                 results, folder / "plots", lang=lang, jobs=min(2, os.cpu_count() or 1),
                 fmt=figure_format, dpi=dpi)]
+        if animate:
+            from flywheel.render.animate import write_animation
+
+            write_animation(results, folder / "mechanism.gif", lang=lang)
         from flywheel.render.report_formats import write_reports
         from flywheel.render.report_kinematics import build_kinematics_document
 
@@ -70,4 +74,5 @@ def run_kinematics(c, case: Path, out: Path | None, points: int, at, no_plots: b
         typer.echo(f"{prefix('written', lang)}: {out}/ (summary.json, table.csv, positions.csv, "
                    + ", ".join(f"report.{f}" for f in dict.fromkeys(formats))
                    + ("" if no_plots else ", plots/*.png"
-                      + ("" if figure_format == "png" else f", plots/*.{figure_format}")) + ")")
+                      + ("" if figure_format == "png" else f", plots/*.{figure_format}"))
+                   + (", mechanism.gif" if animate else "") + ")")

@@ -109,7 +109,7 @@ def run_command(
         from flywheel.cli.kinematics import run_kinematics
 
         return run_kinematics(c, case, out, points, at, no_plots, as_json, lang, transients,
-                              formats, csv_style, figure_format, dpi)
+                              formats, csv_style, figure_format, dpi, animate)
     from flywheel.cli.progress import stage_bar
 
     def analyze_with_bar():             # a bar on a terminal only (the transients take seconds),
