@@ -163,6 +163,7 @@ def test_check_a_slider_that_never_moves(tmp_path):
 [machine]
 speed_rps = 1.0
 delta = 0.1
+analysis = "dynamics"          # asked for: refused (omitted: the kinematics alone)
 [crank]
 length = 0.1
 [ground]

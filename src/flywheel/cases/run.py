@@ -59,6 +59,12 @@ class Machine(StrictModel):
     firing_order: list[Name] | None = Field(
         None, description="four-stroke cylinders by name in the order they fire; each fires at "
                           "its first head dead centre after the one before")
+    analysis: Literal["dynamics", "kinematics"] | None = Field(
+        None, description="'kinematics': positions, analogues, velocities and accelerations at "
+                          "the constant crank speed only (no masses, loads or flywheel needed); "
+                          "'dynamics': the whole analysis; omitted: the kinematics alone for a "
+                          "linkage with no masses, no first group, no loads and no given "
+                          "flywheel, else the dynamics")
 
     @model_validator(mode="after")
     def _check(self):
@@ -277,6 +283,20 @@ class Case(StrictModel):
     def mechanism(self):
         """The linkage as the kinematics describe it (:class:`flywheel.linkage.Mechanism`)."""
         return to_mechanism(self)
+
+    @property
+    def kinematics_only(self) -> bool:
+        """The case asks for the kinematics alone at the constant speed ω_m: ``machine.analysis
+        = "kinematics"``, or (analysis omitted) a linkage with nothing for the dynamics (no link
+        with mass or J_S, no first group, no cylinders, forces or couples, no given flywheel)."""
+        if self.tabulated is not None or self.machine.analysis == "dynamics":
+            return False
+        if self.machine.analysis == "kinematics":
+            return True
+        return (not any(lk.mass or lk.J_S for lk in self.links.values())
+                and not any(v > 0 for v in self.machine.first_group.values())
+                and self.flywheel.given_J is None
+                and not (self.cylinders or self.forces or self.couples))
 
     def plausibility_warnings(self) -> list[str]:
         """Allowed but unusual values, one line each (see :func:`plausibility_warnings`)."""

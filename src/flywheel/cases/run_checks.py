@@ -16,13 +16,17 @@ def _check_references(case) -> None:
         raise FieldError((), Notice.of(
             "crank_or_tabulated", "give exactly one of [crank] (a linkage) and [tabulated] "
             "(kinematics from a table)"))
+    if case.tabulated is not None and case.machine.analysis == "kinematics":
+        raise FieldError(("machine", "analysis"), Notice.of(
+            "kinematics_tabulated", "\"kinematics\" needs a linkage ([crank] and [[dyads]]); a "
+            "[tabulated] case has no positions to compute (allowed: \"dynamics\")"))
     given = case.flywheel.given_J is not None
     if given and case.machine.delta is not None:
         raise FieldError(("machine", "delta"), Notice.of(
             "delta_and_given_flywheel", "give exactly one of machine.delta (the flywheel is sized "
             "for it) and a given flywheel (flywheel.J, mass with radius_of_gyration, given_disk "
             "or given_rim), not both"))
-    if not given and case.machine.delta is None:
+    if not given and case.machine.delta is None and not case.kinematics_only:
         raise FieldError(("machine", "delta"), Notice.of(
             "delta_missing", "missing: give machine.delta (the flywheel is sized for it) or a "
             "given flywheel (flywheel.J, mass with radius_of_gyration, given_disk or given_rim)"))

@@ -43,6 +43,7 @@ def _root(
 from flywheel.cli.aggregate import aggregate_command  # noqa: E402
 from flywheel.cli.drawings import drawings_command  # noqa: E402
 from flywheel.cli.duty_cycle import duty_cycle_command  # noqa: E402
+from flywheel.cli.new import new_command  # noqa: E402
 from flywheel.cli.run import check_command, run_command, schema_command  # noqa: E402
 from flywheel.cli.task2 import task2_command  # noqa: E402
 from flywheel.cli.teaching import grade_command, variants_command  # noqa: E402
@@ -56,6 +57,7 @@ app.command("aggregate")(aggregate_command)
 app.command("duty-cycle")(duty_cycle_command)
 app.command("variants")(variants_command)
 app.command("grade")(grade_command)
+app.command("new")(new_command)
 
 
 class Stopped(BaseException):

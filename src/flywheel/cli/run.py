@@ -101,6 +101,12 @@ def run_command(
             "animate_tabulated", "--animate: {case} gives its kinematics as a table "
             "([tabulated]): there is no mechanism to animate (allowed: a case with [crank] and "
             "[[dyads]])", case=str(case)))
+    if c.kinematics_only:               # the kinematics alone (cli/kinematics.py)
+        from flywheel.cli.kinematics import run_kinematics
+
+        return run_kinematics(c, case, out, points, at, what.plots == "none", as_json, lang,
+                              transients, list(what.formats), what.csv_style, what.figure_format,
+                              what.dpi, what.animate)
     from flywheel.cli.progress import stage_bar
 
     def analyze_with_bar():             # a bar on a terminal only (the transients take seconds),

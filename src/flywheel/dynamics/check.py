@@ -43,6 +43,7 @@ class CheckReport:
     link_analogues: dict | None = None    # link → (ω_q [-], ε_q [1/rad]) at those angles
     tabulated: TabulatedCheck | None = None
     firing_deg: dict | None = None        # four-stroke cylinder → where it fires [deg], in order
+    output_link: object = None            # flywheel.linkage.output_link.OutputLink, or None
 
 
 def check_case(case) -> CheckReport:
@@ -54,7 +55,13 @@ def check_case(case) -> CheckReport:
     from flywheel.dynamics.pipeline import analyze
 
     n1 = case.machine.omega_mean / (2 * math.pi)
-    firing = analyze(case, n_points=360).scalars.firing_deg
+    if case.kinematics_only:                       # no dynamics to run (kinematics_only.py)
+        from flywheel.dynamics.kinematics_only import analyze_kinematics
+
+        headline = analyze_kinematics(case, n_points=360).scalars
+    else:
+        headline = analyze(case, n_points=360).scalars
+    firing = None if case.kinematics_only else headline.firing_deg
     if case.tabulated is not None:
         return CheckReport(case=case, crank_speed_rps=n1, tabulated=_tabulated(case))
 
@@ -82,7 +89,7 @@ def check_case(case) -> CheckReport:
         links = {name: (lm.omega_q, lm.eps_q) for name, lm in k.links.items()}
     return CheckReport(case=case, crank_speed_rps=n1, mechanism=mech, sliders=tuple(sliders),
                        dead_centre_angles=tuple(angles), point_analogues=points,
-                       link_analogues=links, firing_deg=firing)
+                       link_analogues=links, firing_deg=firing, output_link=headline.output_link)
 
 
 def _tabulated(case) -> TabulatedCheck:

@@ -89,6 +89,22 @@ def linkage_columns(phi: np.ndarray, kin, crank: str, ld: LoadsResult, red: Redu
     return {**_phi(phi), **_kinematics(kin, crank), **_loads(ld), **_dynamics(ld, red, en, mo)}
 
 
+def kinematics_columns(phi: np.ndarray, kin, crank: str, omega: float) -> dict[str, Column]:
+    """table.csv of the kinematics alone (dynamics/kinematics_only.py): φ, the kinematics, then
+    the true values at the constant speed ``omega`` [rad/s]: |v| = |v_q|·ω, |a| = |a_q|·ω² of
+    the moving points, ω_i = ω_q·ω, ε_i = ε_q·ω² of the turning links."""
+    cols = {**_phi(phi), **_kinematics(kin, crank)}
+    for name, pm in kin.points.items():
+        if f"x_{name}" in cols:
+            cols[f"v_{name}"] = Column(np.hypot(*pm.v_q.T) * omega, "m/s")
+            cols[f"a_{name}"] = Column(np.hypot(*pm.a_q.T) * omega**2, "m/s²")
+    for name, lm in kin.links.items():
+        if f"theta_{name}" in cols:
+            cols[f"omega_{name}"] = Column(lm.omega_q * omega, "rad/s")
+            cols[f"eps_{name}"] = Column(lm.eps_q * omega**2, "rad/s²")
+    return cols
+
+
 def tabulated_columns(phi: np.ndarray, tab: TabulatedResult, ld: LoadsResult,
                       red: ReductionResult, en: EnergyResult, mo: MotionResult) -> dict[str, Column]:
     """table.csv of the tabulated route: φ, the interpolated table (|v_q| of its points, ω_q of

@@ -23,10 +23,11 @@ from flywheel.dynamics.engine import firing_angles, four_stroke_cylinder
 from flywheel.dynamics.grid import (DEFAULT_POINTS, grid_options, linkage_grid, report_index,
                                     slider_frame, standard_positions)
 from flywheel.dynamics.results import (AtAngle, CylinderResult, EnergyResult, LinkAt, LoadsResult,
-                                       MotionResult, PointAt, ReductionResult, Results,
+                                       PointAt, ReductionResult, Results,
                                        warnings_of, with_forces)
 from flywheel.errors import InputError, Notice
 from flywheel.linkage.drawing import describe, links_drawn
+from flywheel.linkage.output_link import output_link
 from flywheel.units import PA_PER_MPA
 
 
@@ -56,9 +57,9 @@ def analyze(case, n_points: int = DEFAULT_POINTS, at_deg: list[float] | None = N
     ld = linkage_loads(case, mech, dcs, kin)
     red = linkage_reduction(case, kin)
     en, sz, mo = stages.dynamics(phi, ld, red, case.machine, case.flywheel)
-    at = report_angles(at_deg, kin, ld, red, en, mo)
     fl = force_loads(case, mech, dcs, kin, ld, mo.J_I)
     fo = stages.force_analysis(phi, red, en, mo, case.machine.omega_mean, motion, mech, kin, fl)
+    at = report_angles(at_deg, kin, ld, red, en, fo.omega, fo.epsilon)   # the motion used
     pl = plans.plan_sets(mech, kin, fo.analysis, fl, at_deg)     # drawn at the report angles
     td = stages.time_domain(case, phi, red, en, mo, progress) if transients else None
     return Results(
@@ -68,7 +69,7 @@ def analyze(case, n_points: int = DEFAULT_POINTS, at_deg: list[float] | None = N
         at=with_forces(at, fo, phi),
         position_angles=tuple(positions), links_drawn=links_drawn(mech),
         crank_length=float(mech.crank.length), time_domain=td, forces=fo, plans=pl,
-        drawing=describe(mech, kin),
+        drawing=describe(mech, kin), output_link=output_link(mech),
         warnings=tuple(case.plausibility_warnings()) + warnings_of(ld, red, en, sz, mo, fo, td))
 
 
@@ -209,14 +210,17 @@ def linkage_reduction(case, kin) -> ReductionResult:
 
 
 def report_angles(at_deg: list[float], kin, ld: LoadsResult, red: ReductionResult,
-                  en: EnergyResult, mo: MotionResult) -> tuple[AtAngle, ...]:
-    """summary.json's "at" (without the force analysis: :func:`results.with_forces`): at each report angle [deg] the crank's ω and ε, J_II, the moments
-    and forces, and every point's and link's true velocity and acceleration
-    (v = v_q·ω, a = a_q·ω² + v_q·ε; ω_i = ω_q·ω, ε_i = ε_q·ω² + ω_q·ε)."""
+                  en: EnergyResult, omega: np.ndarray, epsilon: np.ndarray) -> tuple[AtAngle, ...]:
+    """summary.json's "at" (without the force analysis: :func:`results.with_forces`): at each
+    report angle [deg] the crank's ω and ε, J_II, the moments and forces, and every point's and
+    link's true velocity and acceleration (v = v_q·ω, a = a_q·ω² + v_q·ε; ω_i = ω_q·ω,
+    ε_i = ε_q·ω² + ω_q·ε). ``omega`` [rad/s], ``epsilon`` [rad/s²]: the crank's motion on the
+    grid as the force analysis takes it (ω(φ), ε(φ) of the dynamics, or ω_m and 0 with
+    ``--motion steady``), so both describe the same motion."""
     out = []
     for a in at_deg:
         i = report_index(kin.phi, a)
-        w, e = float(mo.omega[i]), float(mo.epsilon[i])
+        w, e = float(omega[i]), float(epsilon[i])
         pts = {}
         for name, pm in kin.points.items():
             v_vec = pm.v_q[i] * w

@@ -17,6 +17,7 @@ from flywheel.dynamics.loads import LoadKey
 from flywheel.io.serialize import json_schema, to_json
 from flywheel.dynamics.sizing import RimDesign
 from flywheel.linkage.drawing import Drawing
+from flywheel.linkage.output_link import OutputLink
 
 UNITS = "SI (m, kg, s, rad, N, N·m, J, kg·m²); angles *_deg in degrees"
 
@@ -653,6 +654,7 @@ class Headline:
     time_domain: TimeDomainResult | None = None  # --transients
     balancing_moment_closure: float | None = None   # ForceResult.closure [-]
     force_analysis: ForceSummary | None = None
+    output_link: OutputLink | None = None        # the last group's output link (linkage cases)
 
     @property
     def rim_designed(self) -> bool:
@@ -683,6 +685,8 @@ def json_ready(obj):
 class Results:
     """Everything one run computed: the stage results, the table columns and the report angles."""
 
+    analysis = "dynamics"                    # not a field: dynamics/kinematics_only.py says "kinematics"
+
     title: str
     source: str
     phi: np.ndarray                          # the closed grid [rad]
@@ -703,6 +707,7 @@ class Results:
     plans: tuple = ()                        # dynamics.plans.PlanSet at each report angle (linkage)
     warnings: tuple[str, ...] = ()
     drawing: Drawing | None = None           # what the scheme draws (linkage/drawing.py); None if tabulated
+    output_link: OutputLink | None = None    # extremes, K, transmission angle (linkage/output_link.py)
 
     @property
     def cycle(self) -> float:
@@ -779,7 +784,8 @@ class Results:
             flywheel_rim_speed_limit=s.rim_speed_limit, flywheel_formulas=s.formulas,
             time_domain=self.time_domain,
             balancing_moment_closure=None if fo is None else fo.closure,
-            force_analysis=None if fo is None else fo.summary())
+            force_analysis=None if fo is None else fo.summary(),
+            output_link=self.output_link)
 
     def at_document(self) -> list[dict]:
         """summary.json's results.at: the report angles' entries."""

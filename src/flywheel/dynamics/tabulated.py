@@ -35,7 +35,7 @@ from flywheel.dynamics.columns import tabulated_columns
 from flywheel.dynamics.grid import DEFAULT_POINTS, closed_grid, grid_options, report_index
 from flywheel.dynamics.loads import LoadKey
 from flywheel.dynamics.periodic import periodic_linear
-from flywheel.dynamics.results import (AtAngle, EnergyResult, LinkAt, LoadsResult, MotionResult,
+from flywheel.dynamics.results import (AtAngle, EnergyResult, LinkAt, LoadsResult,
                                        PointAt, Position, ReductionResult, Results, TabulatedResult,
                                        warnings_of, with_forces)
 from flywheel.errors import Notice
@@ -183,8 +183,8 @@ def analyze_tabulated(case, n_points: int = DEFAULT_POINTS, at_deg: list[float] 
     ld = tabulated_loads(spec, phi)
     en, sz, mo = stages.dynamics(phi, ld, red, case.machine, case.flywheel)
     tab = tabulated_kinematics(spec, phi, red, en, case.machine.omega_mean)
-    at = report_angles(at_deg, phi, tab, ld, red, en, mo)
     fo = stages.force_analysis(phi, red, en, mo, case.machine.omega_mean, motion)
+    at = report_angles(at_deg, phi, tab, ld, red, en, fo.omega, fo.epsilon)   # the motion used
     td = stages.time_domain(case, phi, red, en, mo, progress) if transients else None
     return Results(
         title=case.title, source=case.source, phi=phi, kinematics=None, loads=ld, reduction=red,
@@ -251,13 +251,15 @@ def tabulated_kinematics(spec, phi: np.ndarray, red: ReductionResult,
 
 
 def report_angles(at_deg: list[float], phi: np.ndarray, tab: TabulatedResult, ld: LoadsResult,
-                  red: ReductionResult, en: EnergyResult, mo: MotionResult) -> tuple[AtAngle, ...]:
+                  red: ReductionResult, en: EnergyResult, omega: np.ndarray,
+                  epsilon: np.ndarray) -> tuple[AtAngle, ...]:
     """summary.json's "at" of the tabulated route: ω, ε, J_II, Мст, Мдин, the moments, and the
-    table's points and links with their true speeds (v = |V_q|·ω, ω_i = ω_q·ω)."""
+    table's points and links with their true speeds (v = |V_q|·ω, ω_i = ω_q·ω); ``omega``,
+    ``epsilon``: the crank's motion as the force analysis takes it (true or steady)."""
     out = []
     for a in at_deg:
         i = report_index(phi, a)
-        w, e = float(mo.omega[i]), float(mo.epsilon[i])
+        w, e = float(omega[i]), float(epsilon[i])
         out.append(AtAngle(
             phi_deg=float(a), omega=w, epsilon=e,
             J_II=float(red.J_II[i]), dJ_II=float(red.dJ_II[i]),

@@ -33,7 +33,8 @@ W = words("check", {"case": "case", "given_fw": "a given flywheel, ",
                     "J_II_by": "{J} by {how}", "tab_kin": "Tabulated kinematics (one row per position)",
                     "tab_red": "Reduced to the crank ({M} = {w}²/2·{dJ}, {dJ} by {how})",
                     "loads": "loads: ", "force_at": "{n} at {p} ({how})", "moment": "moment {n} ({how})",
-                    "at": "at", "row": "{w} row"})
+                    "at": "at", "row": "{w} row",
+                    "kinematics_only": "the kinematics alone (ε = 0)"})
 
 
 def _g(x: float) -> str:
@@ -45,9 +46,12 @@ def _crank_line(report, m, lang: str = "en") -> str:
     """n1, ω_m, δ and which constant moment balances the cycle."""
     w = W[lang]
     bal = w["balance_driving" if m.balance == "driving" else "balance_resistance"]
-    return (f"{nm.name('crank_speed', lang)} = {report.crank_speed_rps:.6g} "
-            f"{nm.unit_of('crank_speed', lang)}, "
-            f"{nm.symbol('omega_mean', lang)} = {m.omega_mean:.6g} {nm.unit_of('omega_mean', lang)}, "
+    speed = (f"{nm.name('crank_speed', lang)} = {report.crank_speed_rps:.6g} "
+             f"{nm.unit_of('crank_speed', lang)}, "
+             f"{nm.symbol('omega_mean', lang)} = {m.omega_mean:.6g} {nm.unit_of('omega_mean', lang)}")
+    if report.case.kinematics_only:
+        return speed + ", " + w["kinematics_only"]
+    return (speed + ", "
             + (f"{nm.symbol('delta', lang)} = {m.delta:g}, " if m.delta is not None else
                w["given_fw"]) + bal)
 
@@ -167,6 +171,10 @@ def print_check(report, console=None, lang: str = "en") -> None:
                 t.add_row(f"{math.degrees(a):.4f}", *(
                     f"{_g(w[i])} / {_g(e[i])}" for w, e in report.link_analogues.values()))
             console.print(t)
+    if report.output_link is not None:                  # render/output_link.py
+        from flywheel.render.output_link import print_check as print_output_link
+
+        print_output_link(report.output_link, console, lang)
     console.print(f"[green]{w['valid']}[/green]")
 
 

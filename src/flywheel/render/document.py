@@ -256,6 +256,10 @@ def build_document(results, lang: str = "en", plots: list[str] | None = None,
                 for lab, i in idx]
         b.table(t["kin_caption"], header, body)
         b.figures_of("kin")
+    if s.output_link is not None:                        # render/output_link.py
+        from flywheel.render.output_link import add_report_section
+
+        add_report_section(b, s.output_link, lang, "2.1")
 
     # 3. reduction ----------------------------------------------------------------------------
     b.add(Heading(2, t["red"]))

@@ -409,6 +409,23 @@ TERMS: dict[str, Term] = {
     "shaking_moment": _t("M_ст", r"$M_{ст}$", "N·m", "shaking moment on the frame",
                          "неуравновешенный момент на стойку", "M_sh"),
     # end force analysis -----------------------------------------------------------------------
+    # the output link of the last group (results.output_link; linkage/output_link.py)
+    "output_link": _t("", "", "-", "output link: extreme positions, time ratio, transmission angle",
+                      "выходное звено: крайние положения, коэффициент K, угол передачи"),
+    "swing_deg": _t("ψ", r"$\psi$", "deg", "swing of the rocker", "угол размаха коромысла"),
+    "output_stroke": _t("H", "$H$", "m", "stroke of the slider", "ход ползуна"),
+    "time_ratio_K": _t("K", "$K$", "-", "time ratio (working/return stroke crank angles)",
+                       "коэффициент изменения средней скорости хода"),
+    "transmission_angle_min_deg": _t("γ_min", r"$\gamma_{min}$", "deg",
+                                     "least transmission angle", "наименьший угол передачи"),
+    # the kinematics alone (dynamics/kinematics_only.py): true values on the grid at ω_m
+    "v_{point}": _t("v", "$v$", "m/s", "velocity of {x}", "скорость точки {x}"),
+    "a_{point}": _t("a", "$a$", "m/s²", "acceleration of {x}", "ускорение точки {x}"),
+    "omega_{link}": _t("ω", r"$\omega$", "rad/s", "angular velocity of link {x}",
+                       "угловая скорость звена {x}"),
+    "eps_{link}": _t("ε", r"$\varepsilon$", "rad/s²", "angular acceleration of link {x}",
+                     "угловое ускорение звена {x}"),
+    "analysis": _t("", "", "", "what was computed", "что рассчитано"),
     # --- flywheel ---  (the designed rim, [flywheel.rim]: results.flywheel_rim)
     "D_mean": _t("D_ср", r"$D_{ср}$", "m", "mean diameter of the rim", "средний диаметр обода",
                  "D_m", "$D_m$"),

@@ -541,6 +541,8 @@ def figures(results, lang: str = "en"):
         ("acceleration_analogues.png", lambda: figure_acceleration_analogues(results, lang)),
         ("J_II.png", lambda: figure_J_II(results, lang)),
     ]
+    if results.analysis == "kinematics":     # the kinematics alone: no dynamics to draw
+        return out[:3] + [("scheme.png", lambda: figure_scheme(results, lang))]
     if results.kinematics is None:   # tabulated kinematics (issue 5): no positions to draw
         out = out[-1:]
     for c in results.cylinders:
@@ -571,6 +573,11 @@ def all_figures(results, lang: str = "en"):
     from flywheel.render import plots_extra as px
     from flywheel.render import plots_forces, plots_plans
 
+    if results.analysis == "kinematics":     # the kinematic plans only: no force analysis
+        return figures(results, lang) + [
+            (n, f) for n, f in plots_plans.figures(results, lang,
+                                                   scheme=(draw_scheme_fixed, draw_scheme_at))
+            if n.startswith(("plan_positions", "plan_velocity", "plan_acceleration"))]
     out = figures(results, lang) + plots_forces.figures(results, lang)   # force analysis
     out += plots_plans.figures(results, lang,      # the plans, at the report angles only
                                scheme=(draw_scheme_fixed, draw_scheme_at))

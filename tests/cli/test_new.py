@@ -1,0 +1,81 @@
+"""`flywheel new KIND [FILE]`: every starter case, in both languages, is written and then runs
+through its own command (exit 0); its comments are in the language asked for and mark the
+lines to change; an existing file (or link, or folder) is never written over."""
+from __future__ import annotations
+
+import os
+import re
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from flywheel.cases import kind_of
+from flywheel.cases.starter import KINDS, starter_text
+from flywheel.io.toml import read_toml
+
+SRC = Path(__file__).resolve().parents[2] / "src"
+
+
+def flywheel(*args, cwd):
+    env = {**os.environ, "PYTHONPATH": str(SRC), "COLUMNS": "100"}
+    return subprocess.run([sys.executable, "-m", "flywheel", *args], cwd=cwd, env=env,
+                          capture_output=True, text=True, timeout=120)
+
+
+def _command(kind: str, file: str) -> list[str]:
+    cmd = KINDS[kind][1]
+    if cmd == "task2":
+        return ["task2", "--case", file]
+    if cmd == "run":
+        return ["run", file, "--no-plots", "--out", "o"]
+    return [cmd, file]
+
+
+@pytest.mark.parametrize("lang", ["en", "ru"])
+@pytest.mark.parametrize("kind", list(KINDS))
+def test_every_template_runs_through_its_command(tmp_path, kind, lang):
+    res = flywheel("new", kind, "--lang", lang, cwd=tmp_path)
+    assert res.returncode == 0, res.stderr
+    path = tmp_path / f"{kind}.toml"
+    text = path.read_text(encoding="utf-8")
+    assert text == starter_text(kind, lang)
+    assert "#en" not in text and "#ru" not in text
+    comments = [ln.partition("#")[2] for ln in text.splitlines() if "#" in ln]
+    marker = "CHANGE" if lang == "en" else "ИЗМЕНИТЕ"
+    assert sum(marker in c for c in comments) >= 3
+    if lang == "ru":
+        assert not any("CHANGE" in c for c in comments)
+        cyrillic = sum(bool(re.search("[а-яА-Я]", c)) for c in comments)
+        assert cyrillic >= 0.8 * len(comments)
+    expected = {"run": "run", "task2": "task2", "aggregate": "aggregate",
+                "duty-cycle": "duty_cycle"}[KINDS[kind][1]]
+    assert kind_of(read_toml(path)) == expected
+    ran = flywheel(*_command(kind, path.name), cwd=tmp_path)
+    assert ran.returncode == 0, ran.stderr
+
+
+def test_an_existing_file_is_never_written_over(tmp_path):
+    mine = tmp_path / "four-bar.toml"
+    mine.write_text("my own case\n", encoding="utf-8")
+    res = flywheel("new", "four-bar", cwd=tmp_path)
+    assert res.returncode == 2
+    assert res.stderr.count("\n") == 1 and "already exists" in res.stderr
+    assert mine.read_text(encoding="utf-8") == "my own case\n"
+    os.symlink("nowhere.toml", tmp_path / "link.toml")           # a dangling link counts too
+    res = flywheel("new", "shaper", "link.toml", cwd=tmp_path)
+    assert res.returncode == 2 and not (tmp_path / "nowhere.toml").exists()
+    (tmp_path / "folder").mkdir()
+    assert flywheel("new", "shaper", "folder", cwd=tmp_path).returncode == 2
+    ru = flywheel("new", "four-bar", "--lang", "ru", cwd=tmp_path)
+    assert ru.returncode == 2 and "уже существует" in ru.stderr
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["folder", "four-bar.toml", "link.toml"]
+
+
+def test_an_unknown_kind_and_a_missing_folder(tmp_path):
+    res = flywheel("new", "sixbar", cwd=tmp_path)
+    assert res.returncode == 2 and res.stderr.count("\n") == 1 and "slider-crank" in res.stderr
+    res = flywheel("new", "four-bar", "no/such/folder.toml", cwd=tmp_path)
+    assert res.returncode == 2 and res.stderr.count("\n") == 1
+    assert list(tmp_path.iterdir()) == []
