@@ -18,7 +18,7 @@ import numpy as np
 from flywheel.dynamics import loads as L
 from flywheel.dynamics import plans, reduction, stages
 from flywheel.dynamics.columns import linkage_columns
-from flywheel.dynamics.engine import firing_angles, four_stroke_cylinder
+from flywheel.dynamics.engine import firing_angles, four_stroke_cylinder, gas_work
 from flywheel.dynamics.grid import (DEFAULT_POINTS, grid_options, linkage_grid, report_index,
                                     slider_frame, standard_positions)
 from flywheel.dynamics.results import (AtAngle, CylinderResult, EnergyResult, LinkAt, LoadsResult,
@@ -121,6 +121,8 @@ def linkage_loads(case, mech, dcs: dict, kin) -> LoadsResult:
         if cy.four_stroke:
             cylinders.append(four_stroke_cylinder(cy, mech, dcs, kin, fires_at[cy.name]))
             M_parts[f"gas {cy.name}"] = cylinders[-1].M
+            if (W := gas_work(cy, mech, dcs, kin, cylinders[-1])) is not None:
+                W_parts[f"gas {cy.name}"] = W            # exact for linear tables
             continue
         d, u, base, head, far = slider_frame(mech, dcs, cy.piston, cy.head, f"cylinders {cy.name}: piston")
         x = (P[d.joint].r - base) @ u
@@ -142,6 +144,8 @@ def linkage_loads(case, mech, dcs: dict, kin) -> LoadsResult:
         towards = x_dot * (head.x - far.x) > 0
         cylinders.append(CylinderResult(cy.name, cy.piston, s, towards, p, F, M, s_tab, up, down,
                                         cy.p_max, head.phi))
+        if (W := gas_work(cy, mech, dcs, kin, cylinders[-1])) is not None:
+            W_parts[f"gas {cy.name}"] = W                # exact for linear tables
     for f in case.forces:
         d, u, base, ref, other = slider_frame(mech, dcs, f.slider, f.reference, f"forces {f.name}: slider")
         x = (P[d.joint].r - base) @ u
