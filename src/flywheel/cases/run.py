@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import math
 import typing
+from pathlib import Path
 from typing import Annotated, Literal, Union
 
 from pydantic import BaseModel, Field, Strict, model_validator
@@ -26,7 +27,7 @@ from flywheel.cases.run_fields import (  # noqa: F401
 from flywheel.cases.run_linkage import (  # noqa: F401
     Branch, CrankSpec, DyadSpec, GuideSpec, LinkSpec, PinSpec, PointSpec, RPRSpec, RRPSpec, RRRSpec)
 from flywheel.cases.run_cylinders import (  # noqa: F401
-    STROKE_ORDER, CylinderSpec, DiagramSpec, StrokesSpec)
+    STROKE_ORDER, CylinderSpec, DiagramSpec, IndicatorSpec, StrokesSpec, resolve_traces)
 from flywheel.cases.run_checks import (  # noqa: F401
     ATM, DELTA_USUAL, _check_references, plausibility_warnings)
 
@@ -366,7 +367,9 @@ def parse_case(data: dict, source: str = "<case>") -> Case:
     from flywheel.cases.tabulated import cycle_context
 
     return validate(data, Case, source, lambda errs: _describe(pick(errs, _DYAD_TAGS)),
-                    context=cycle_context(data))   # a [tabulated] table covers the machine's cycle
+                    check=resolve_traces,       # measured crank-angle traces: their tables
+                    context={**cycle_context(data),  # a [tabulated] table covers the machine's cycle
+                             "case_dir": str(Path(source).parent)})   # indicator_file is beside
 
 
 def load_case(path) -> Case:
