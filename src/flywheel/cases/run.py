@@ -18,6 +18,7 @@ from pydantic import BaseModel, Field, Strict, model_validator
 from flywheel.errors import CaseFileError, Notice, led
 from flywheel.io.schema import FieldError, StrictModel, at_most, text_field, within, clean_loc, describe, load, loc_str, pick, validate
 from flywheel.cases.document import DocumentSpec
+from flywheel.cases.run_start import StartSpec
 from flywheel.cases.rim import MATERIALS, RimSpec  # shared with the task2 format
 from flywheel.cases.tabulated import TabulatedSpec
 # the parts of the format in their own modules, re-exported: flywheel.cases.run keeps every name
@@ -277,6 +278,7 @@ class Case(StrictModel):
     output: OutputSpec = Field(default_factory=OutputSpec)
     force_analysis: ForceAnalysisSpec = Field(default_factory=ForceAnalysisSpec)
     document: DocumentSpec = Field(default_factory=DocumentSpec, description="names for the title page and the title block (docs/case-format.md, [document])")
+    start: StartSpec | None = Field(None, description="a motion from rest under a constant moment or the motor (docs/case-format.md, [start])")
 
     # -- derived -------------------------------------------------------------------------
     @property

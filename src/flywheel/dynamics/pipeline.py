@@ -19,6 +19,7 @@ from flywheel.dynamics import loads as L
 from flywheel.dynamics import plans, reduction, stages
 from flywheel.dynamics.columns import linkage_columns
 from flywheel.dynamics.engine import firing_angles, four_stroke_cylinder, gas_work
+from flywheel.dynamics.start import with_start
 from flywheel.dynamics.grid import (DEFAULT_POINTS, grid_options, linkage_grid, report_index,
                                     slider_frame, standard_positions)
 from flywheel.dynamics.results import (AtAngle, CylinderResult, EnergyResult, LinkAt, LoadsResult,
@@ -46,7 +47,8 @@ def analyze(case, n_points: int = DEFAULT_POINTS, at_deg: list[float] | None = N
     if case.tabulated is not None:
         from flywheel.dynamics.tabulated import analyze_tabulated
 
-        return analyze_tabulated(case, n_points, at_deg, transients, motion, progress)
+        return with_start(analyze_tabulated(case, n_points, at_deg, transients, motion, progress),
+                          case)
     at_deg = grid_options(case, n_points, at_deg)
     mech = case.mechanism()
     positions, dcs = standard_positions(mech, case.machine.cycle)
@@ -60,7 +62,7 @@ def analyze(case, n_points: int = DEFAULT_POINTS, at_deg: list[float] | None = N
     fo = stages.force_analysis(phi, red, en, mo, case.machine.omega_mean, motion, mech, kin, fl)
     pl = plans.plan_sets(mech, kin, fo.analysis, fl, at_deg)     # drawn at the report angles
     td = stages.time_domain(case, phi, red, en, mo, progress) if transients else None
-    return Results(
+    return with_start(Results(
         title=case.title, source=case.source, phi=phi, kinematics=kin, loads=ld, reduction=red,
         energy=en, sizing=sz, motion=mo,
         columns=linkage_columns(phi, kin, mech.crank.name, ld, red, en, mo),
@@ -68,7 +70,8 @@ def analyze(case, n_points: int = DEFAULT_POINTS, at_deg: list[float] | None = N
         position_angles=tuple(positions), links_drawn=links_drawn(mech),
         crank_length=float(mech.crank.length), time_domain=td, forces=fo, plans=pl,
         drawing=describe(mech, kin),
-        warnings=tuple(case.plausibility_warnings()) + warnings_of(ld, red, en, sz, mo, fo, td))
+        warnings=tuple(case.plausibility_warnings()) + warnings_of(ld, red, en, sz, mo, fo, td)),
+        case)                                           # [start]: a motion from rest
 
 
 def force_motion(case, motion: str | None) -> str:

@@ -15,6 +15,7 @@ import numpy as np
 
 from flywheel.dynamics.serialize import json_schema, to_json
 from flywheel.dynamics.sizing import RimDesign
+from flywheel.dynamics.start import Snapshot, StartResult
 from flywheel.linkage.drawing import Drawing
 
 UNITS = "SI (m, kg, s, rad, N, N·m, J, kg·m²); angles *_deg in degrees"
@@ -651,6 +652,8 @@ class Headline:
     time_domain: TimeDomainResult | None = None  # --transients
     balancing_moment_closure: float | None = None   # ForceResult.closure [-]
     force_analysis: ForceSummary | None = None
+    start: StartResult | None = None             # [start]: a motion from rest
+    snapshots: tuple[Snapshot, ...] | None = None   # --snapshot, [output] snapshots
 
     @property
     def rim_designed(self) -> bool:
@@ -701,6 +704,8 @@ class Results:
     plans: tuple = ()                        # dynamics.plans.PlanSet at each report angle (linkage)
     warnings: tuple[str, ...] = ()
     drawing: Drawing | None = None           # what the scheme draws (linkage/drawing.py); None if tabulated
+    start: StartResult | None = None         # [start]: a motion from rest (dynamics/start.py)
+    snapshots: tuple[Snapshot, ...] | None = None   # ε at stated φ and speed (dynamics/start.py)
 
     @property
     def cycle(self) -> float:
@@ -777,7 +782,8 @@ class Results:
             flywheel_rim_speed_limit=s.rim_speed_limit, flywheel_formulas=s.formulas,
             time_domain=self.time_domain,
             balancing_moment_closure=None if fo is None else fo.closure,
-            force_analysis=None if fo is None else fo.summary())
+            force_analysis=None if fo is None else fo.summary(),
+            start=self.start, snapshots=self.snapshots or None)
 
     def at_document(self) -> list[dict]:
         """summary.json's results.at: the report angles' entries."""
