@@ -245,6 +245,8 @@ class OutputSpec(StrictModel):
 
     at_deg: Annotated[list[float], at_most(72, "angles"), within(-1e6, 1e6, "deg")] = Field(default_factory=lambda: [120.0],
                                 description="report angles [deg]")
+    snapshots: Annotated[list[Annotated[tuple[float, float], Strict(False), within(-1e6, 1e6, "")]], at_most(72, "snapshots")] = Field(
+        default_factory=list, description="[[φ deg, n rev/min], …]: the crank's ε at each stated angle and speed (`flywheel run --snapshot` adds)")
 
 
 class ForceAnalysisSpec(StrictModel):

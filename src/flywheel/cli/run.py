@@ -71,6 +71,14 @@ def run_command(
     figure_format: str = typer.Option("png", "--figure-format", help="Format of plots/*: png, svg "
                                       "or pdf (svg, pdf: written beside the PNGs the reports embed)."),
     dpi: int = typer.Option(120, "--dpi", help="Resolution of the plots [dots per inch], 50…600."),
+    snapshot: Optional[list[str]] = typer.Option(None, "--snapshot", help="PHI_DEG:RPM: the "
+                                                 "crank's ε at that angle and speed; repeatable."),
+    at_travel: Optional[list[str]] = typer.Option(None, "--at-travel", help="POINT:METRES: report "
+                                                  "the positions where slider point POINT is "
+                                                  "METRES from its outer dead centre; repeatable."),
+    roots: Optional[list[str]] = typer.Option(None, "--roots", help="COLUMN: the crank angles "
+                                              "where that table.csv column changes sign; "
+                                              "repeatable."),
 ) -> None:
     """Run the whole dynamic analysis of a case; write summary.json, table.csv, positions.csv,
     forces.csv, forces_positions.csv, report.md and plots/*.png to the output folder."""
@@ -105,6 +113,10 @@ def run_command(
             "animate_tabulated", "--animate: {case} gives its kinematics as a table "
             "([tabulated]): there is no mechanism to animate (allowed: a case with [crank] and "
             "[[dyads]])", case=str(case)))
+    from flywheel.dynamics.asks import at_with_travel, with_asks
+
+    travel = _guard(at_with_travel, c, at_travel)   # --at-travel: its angles are report angles
+    at = travel.at_deg(at, c)
     from flywheel.cli.progress import stage_bar
 
     def analyze_with_bar():             # a bar on a terminal only (the transients take seconds),
@@ -113,6 +125,7 @@ def run_command(
                            progress=progress)
 
     results = _guard(analyze_with_bar, source=case, case=c)
+    results = _guard(with_asks, results, c, snapshot, travel.found, roots)   # textbook asks
     out = out if out is not None else Path("out") / case.stem
     text_json = summary_json(results)
 

@@ -19,7 +19,7 @@ from flywheel.dynamics import loads as L
 from flywheel.dynamics import plans, reduction, stages
 from flywheel.dynamics.columns import linkage_columns
 from flywheel.dynamics.engine import firing_angles, four_stroke_cylinder, gas_work
-from flywheel.dynamics.start import with_start
+from flywheel.dynamics.asks import with_start
 from flywheel.dynamics.grid import (DEFAULT_POINTS, grid_options, linkage_grid, report_index,
                                     slider_frame, standard_positions)
 from flywheel.dynamics.results import (AtAngle, CylinderResult, EnergyResult, LinkAt, LoadsResult,

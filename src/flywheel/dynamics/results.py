@@ -15,7 +15,8 @@ import numpy as np
 
 from flywheel.dynamics.serialize import json_schema, to_json
 from flywheel.dynamics.sizing import RimDesign
-from flywheel.dynamics.start import Snapshot, StartResult
+from flywheel.dynamics.asks import Roots, Snapshot, TravelAt
+from flywheel.dynamics.start import StartResult
 from flywheel.linkage.drawing import Drawing
 
 UNITS = "SI (m, kg, s, rad, N, N·m, J, kg·m²); angles *_deg in degrees"
@@ -654,6 +655,8 @@ class Headline:
     force_analysis: ForceSummary | None = None
     start: StartResult | None = None             # [start]: a motion from rest
     snapshots: tuple[Snapshot, ...] | None = None   # --snapshot, [output] snapshots
+    at_travel: tuple[TravelAt, ...] | None = None   # --at-travel: the angles of a travel
+    roots: tuple[Roots, ...] | None = None          # --roots: a column's sign changes
 
     @property
     def rim_designed(self) -> bool:
@@ -706,6 +709,8 @@ class Results:
     drawing: Drawing | None = None           # what the scheme draws (linkage/drawing.py); None if tabulated
     start: StartResult | None = None         # [start]: a motion from rest (dynamics/start.py)
     snapshots: tuple[Snapshot, ...] | None = None   # ε at stated φ and speed (dynamics/start.py)
+    at_travel: tuple[TravelAt, ...] | None = None   # the angles of --at-travel (dynamics/asks.py)
+    roots: tuple[Roots, ...] | None = None          # --roots (dynamics/asks.py)
 
     @property
     def cycle(self) -> float:
@@ -783,7 +788,8 @@ class Results:
             time_domain=self.time_domain,
             balancing_moment_closure=None if fo is None else fo.closure,
             force_analysis=None if fo is None else fo.summary(),
-            start=self.start, snapshots=self.snapshots or None)
+            start=self.start, snapshots=self.snapshots or None, at_travel=self.at_travel,
+            roots=self.roots)
 
     def at_document(self) -> list[dict]:
         """summary.json's results.at: the report angles' entries."""

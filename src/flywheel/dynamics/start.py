@@ -1,4 +1,5 @@
-"""Motion from rest and the crank's acceleration at a stated state (issue 24 items 5 and 7).
+"""Motion from rest (issue 24 item 5) and the reduced machine it integrates (with the
+acceleration at a stated state that :mod:`flywheel.dynamics.asks` reports, item 7).
 
 The reduced equation of motion of a one-degree-of-freedom machine (Lagrange's equation with the
 reduced inertia J(φ) = J_I + J_II(φ); Артоболевский, «Теория механизмов и машин», the equation
@@ -22,7 +23,6 @@ from dataclasses import dataclass
 import numpy as np
 
 from flywheel.errors import InputError, Notice
-from flywheel.units import RAD_S_PER_RPM
 
 #: the most evaluations of the equation's right-hand side a motion from rest may take
 MAX_EVALUATIONS = 500_000
@@ -52,20 +52,6 @@ class StartResult:
     atol: float
     evaluations: int                # of the right-hand side
     at: tuple[StartAt, ...]         # at the requested times
-
-
-@dataclass(frozen=True)
-class Snapshot:
-    """The crank's angular acceleration at a stated angle and speed (not the periodic motion's):
-    ε = (M_Σ(φ) − ½·J′(φ)·ω²)/J(φ), M_Σ the loads with the balancing moment."""
-
-    phi_deg: float      # [deg]
-    omega: float        # [rad/s]
-    rpm: float          # [rev/min]
-    J: float            # J_I + J_II(φ) [kg·m²]
-    dJ: float           # dJ_II/dφ [kg·m²/rad]
-    M_sum: float        # M_Σ(φ) [N·m]
-    epsilon: float      # [rad/s²]
 
 
 class ReducedMachine:
@@ -178,39 +164,3 @@ def start_result(spec, phi: np.ndarray, J: np.ndarray, dJ: np.ndarray, M: np.nda
         rtol=float(spec.rtol), atol=float(spec.atol), evaluations=n,
         at=tuple(StartAt(t, math.degrees(p), w, e) for t, p, w, e in rows))
 
-
-def snapshots(asks: list[tuple[float, float]], phi: np.ndarray, J: np.ndarray, dJ: np.ndarray,
-              M_sum: np.ndarray) -> tuple[Snapshot, ...]:
-    """ε at each stated (φ [deg], n [rev/min]) (:class:`Snapshot`), J and M_Σ read at φ as in
-    :class:`ReducedMachine` (at a node of the grid, its own values)."""
-    machine = ReducedMachine(phi, J, dJ, M_sum)
-    out = []
-    for phi_deg, rpm in asks:
-        Jv, dJv, Mv = machine(math.radians(phi_deg))
-        w = rpm * RAD_S_PER_RPM
-        out.append(Snapshot(float(phi_deg), float(w), float(rpm), float(Jv), float(dJv),
-                            float(Mv), float(acceleration(Jv, dJv, Mv, w))))
-    return tuple(out)
-
-
-def with_start(results, case):
-    """``results`` with the motion of the case's [start] (None without one): J = J_I + J_II(φ)
-    with the flywheel the run sized (or was given), the loads' reduced moments M_known(φ), and
-    the constant moment or the [motor] (M_п by default as ``--transients`` takes it: its mean
-    torque at ω_m is the driving moment)."""
-    spec = getattr(case, "start", None)
-    if spec is None:
-        return results
-    from dataclasses import replace
-
-    from flywheel.dynamics.timedomain import linear_motor
-    from flywheel.units import SECONDS_PER_MINUTE, TWO_PI
-
-    red, en, mo = results.reduction, results.energy, results.motion
-    motor = None
-    if case.motor is not None:
-        w_x = case.motor.no_load_speed_rpm * TWO_PI / SECONDS_PER_MINUTE
-        M_p = case.motor.starting_torque or en.driving_moment / (1 - case.machine.omega_mean / w_x)
-        motor = linear_motor(M_p, w_x)
-    st = start_result(spec, results.phi, mo.J_I + red.J_II, red.dJ_II, en.M_known, motor)
-    return replace(results, start=st)
