@@ -742,7 +742,7 @@ def test_duty_cycle_case_errors_are_russian(tmp_path, edit, en_said, ru_said):
 FLYWHEEL = str(Path(sys.executable).with_name("flywheel"))   # the console script: its name
 USAGE_RU = [
     (["run", "CASE", "--foo"], "ошибка: flywheel run: нет такого параметра: --foo (похожие: "
-     "--motion, --out) (см. flywheel run --help)"),
+     "--motion, --out, --roots) (см. flywheel run --help)"),
     (["run"], "ошибка: flywheel run: не задан аргумент 'case' (см. flywheel run --help)"),
     (["run", "CASE", "--points", "abc"], "ошибка: flywheel run: --points: должно быть целым "
      "числом (задано 'abc') (см. flywheel run --help)"),

@@ -36,6 +36,12 @@ class RimSpec(StrictModel):
         None, description="b/t of the rectangular section (default 2)")
     width: Annotated[float, Field(gt=0), within(1e-4, 100.0, "m")] | None = Field(
         None, description="the rim's axial width b [m] (instead of width_to_thickness)")
+    diameter: Annotated[float, Field(gt=0), within(1e-3, 100.0, "m")] | None = Field(
+        None, description="the rim's mean diameter D_mean [m] (instead of speed): its speed is "
+                          "ω·D_mean/2")
+    thickness_to_radius: Annotated[float, Field(gt=0), within(1e-3, 1.0, "")] | None = Field(
+        None, description="t/R: the radial thickness as a share of the mean radius (instead of "
+                          "width_to_thickness or width; the width follows from the mass)")
 
     @model_validator(mode="after")
     def _check(self):
@@ -46,11 +52,22 @@ class RimSpec(StrictModel):
         if self.width is not None and self.width_to_thickness is not None:
             raise FieldError((), Notice.of(
                 "rim_width_or_ratio", "give width or width_to_thickness, not both"))
+        if self.thickness_to_radius is not None and (self.width is not None
+                                                     or self.width_to_thickness is not None):
+            raise FieldError(("thickness_to_radius",), Notice.of(
+                "rim_thickness_or_width", "give thickness_to_radius, or width or "
+                "width_to_thickness, not both (the section has one free dimension)"))
+        if self.diameter is not None and self.speed is not None:
+            raise FieldError(("diameter",), Notice.of(
+                "rim_diameter_or_speed", "give diameter or speed, not both (the rim speed is "
+                "ω·D_mean/2)"))
         return self
 
     def check_speed(self, density: float, allowable_stress: float, material: str) -> None:
         """The given rim speed's hoop stress ρ·v² within σ_allow, else a FieldError at
         rim.speed saying the largest speed allowed (no diameter helps: σ depends on v alone)."""
+        if self.speed is None:
+            return
         if density * self.speed ** 2 > allowable_stress * (1 + 1e-12):
             raise FieldError(("rim", "speed"),
                              Notice.of(
@@ -68,4 +85,5 @@ class RimSpec(StrictModel):
 
         return design_rim(J, omega, density, allowable_stress, share=self.share,
                           speed=self.speed, width_to_thickness=self.width_to_thickness,
-                          width=self.width)
+                          width=self.width, diameter=self.diameter,
+                          thickness_to_radius=self.thickness_to_radius)

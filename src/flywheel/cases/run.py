@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import math
 import typing
+from pathlib import Path
 from typing import Annotated, Literal, Union
 
 from pydantic import BaseModel, Field, Strict, model_validator
@@ -17,6 +18,7 @@ from pydantic import BaseModel, Field, Strict, model_validator
 from flywheel.errors import CaseFileError, Notice, led
 from flywheel.io.schema import FieldError, StrictModel, at_most, text_field, within, clean_loc, describe, load, loc_str, pick, validate
 from flywheel.cases.document import DocumentSpec
+from flywheel.cases.run_start import StartSpec
 from flywheel.cases.rim import MATERIALS, RimSpec  # shared with the task2 format
 from flywheel.cases.tabulated import TabulatedSpec
 # the parts of the format in their own modules, re-exported: flywheel.cases.run keeps every name
@@ -26,7 +28,7 @@ from flywheel.cases.run_fields import (  # noqa: F401
 from flywheel.cases.run_linkage import (  # noqa: F401
     Branch, CrankSpec, DyadSpec, GuideSpec, LinkSpec, PinSpec, PointSpec, RPRSpec, RRPSpec, RRRSpec)
 from flywheel.cases.run_cylinders import (  # noqa: F401
-    STROKE_ORDER, CylinderSpec, DiagramSpec, StrokesSpec)
+    STROKE_ORDER, CylinderSpec, DiagramSpec, IndicatorSpec, StrokesSpec, resolve_traces)
 from flywheel.cases.run_loads import CoupleSpec, ForceSpec, SpringSpec  # noqa: F401
 from flywheel.cases.run_checks import (  # noqa: F401
     ATM, DELTA_USUAL, _check_references, plausibility_warnings)
@@ -227,6 +229,8 @@ class OutputSpec(StrictModel):
 
     at_deg: Annotated[list[float], at_most(72, "angles"), within(-1e6, 1e6, "deg")] = Field(default_factory=lambda: [120.0],
                                 description="report angles [deg]")
+    snapshots: Annotated[list[Annotated[tuple[float, float], Strict(False), within(-1e6, 1e6, "")]], at_most(72, "snapshots")] = Field(
+        default_factory=list, description="[[φ deg, n rev/min], …]: the crank's ε at each stated angle and speed (`flywheel run --snapshot` adds)")
 
 
 class ForceAnalysisSpec(StrictModel):
@@ -261,6 +265,7 @@ class Case(StrictModel):
     output: OutputSpec = Field(default_factory=OutputSpec)
     force_analysis: ForceAnalysisSpec = Field(default_factory=ForceAnalysisSpec)
     document: DocumentSpec = Field(default_factory=DocumentSpec, description="names for the title page and the title block (docs/case-format.md, [document])")
+    start: StartSpec | None = Field(None, description="a motion from rest under a constant moment or the motor (docs/case-format.md, [start])")
 
     # -- derived -------------------------------------------------------------------------
     @property
@@ -365,7 +370,9 @@ def parse_case(data: dict, source: str = "<case>") -> Case:
     from flywheel.cases.tabulated import cycle_context
 
     return validate(data, Case, source, lambda errs: _describe(pick(errs, _DYAD_TAGS)),
-                    context=cycle_context(data))   # a [tabulated] table covers the machine's cycle
+                    check=resolve_traces,       # measured crank-angle traces: their tables
+                    context={**cycle_context(data),  # a [tabulated] table covers the machine's cycle
+                             "case_dir": str(Path(source).parent)})   # indicator_file is beside
 
 
 def load_case(path) -> Case:

@@ -3,12 +3,14 @@ by one closed diagram), split into strokes (re-exported by :mod:`flywheel.cases.
 format: docs/case-format.md)."""
 from __future__ import annotations
 
+import math
+from pathlib import Path
 from typing import Annotated, Literal
 
-from pydantic import Field, PrivateAttr, model_validator
+from pydantic import Field, PrivateAttr, ValidationInfo, model_validator
 
-from flywheel.errors import Notice
-from flywheel.io.schema import FieldError, StrictModel
+from flywheel.errors import Notice, said
+from flywheel.io.schema import FieldError, StrictModel, at_most
 from flywheel.cases.run_fields import Angle, Name, _within
 
 
@@ -33,6 +35,142 @@ class DiagramSpec(StrictModel):
 
 
 STROKE_ORDER = ("expansion", "exhaust", "intake", "compression")   # from the firing
+
+MAX_TRACE = 100_000          # rows of a measured indicator diagram (0.1° over 720°: 7 200)
+#: the units of an indicator table's columns, to SI (rad, m³, m, Pa); "relative": s itself
+X_UNITS = {"crank_angle": {"deg": math.pi / 180, "rad": 1.0},
+           "volume": {"m3": 1.0, "dm3": 1e-3, "l": 1e-3, "cm3": 1e-6},
+           "travel": {"m": 1.0, "mm": 1e-3, "relative": 1.0}}
+P_UNITS = {"Pa": 1.0, "kPa": 1e3, "MPa": 1e6, "bar": 1e5, "atm": 101325.0}
+_TRACE_GAP_DEG = 45.0        # a crank-angle trace covers the cycle: no gap wider than this
+
+
+class IndicatorSpec(StrictModel):
+    """A measured indicator diagram (a test bench's or an engine-simulation tool's pressure
+    trace), from ``indicator_file`` (CSV) or inline (``x``, ``p``): p against the crank angle
+    over the whole cycle, or p against the volume or the piston's travel as one closed loop in
+    the order the piston passes it, from the head dead centre (where a four-stroke cylinder
+    fires)."""
+
+    against: Literal["crank_angle", "volume", "travel"] = Field(
+        description="what the pressure is given against: crank_angle (the whole cycle), volume "
+                    "or travel (a loop: 2 strokes, or 4 of a four-stroke engine)")
+    cycle: Literal["four-stroke", "two-stroke"] = Field(
+        "four-stroke", description="the cylinder's cycle: four strokes over 720° or two over 360°")
+    columns: Annotated[list[Name], Field(min_length=2, max_length=2)] | None = Field(
+        None, description="indicator_file's header names of x and p (default: its first two "
+                          "columns)")
+    x_unit: Literal["deg", "rad", "m3", "dm3", "l", "cm3", "m", "mm", "relative"] = Field(
+        description="unit of x: deg or rad (crank_angle), m3, dm3, l, cm3 (volume), m, mm or "
+                    "relative (travel)")
+    p_unit: Literal["Pa", "kPa", "MPa", "bar", "atm"] = Field(description="unit of p")
+    pressure: Literal["gauge", "absolute"] = Field(
+        "gauge", description="absolute pressures lose the atmosphere (the gas force is the "
+                             "gauge pressure's)")
+    atmosphere: Annotated[float, _within(0.0, 1e6, "Pa")] = Field(
+        101325.0, description="the atmosphere subtracted from absolute pressures [Pa]")
+    tdc_offset_deg: Angle = Field(
+        0.0, description="crank_angle: the table's angle at the cylinder's head dead centre "
+                         "where it fires (a two-stroke's: any head dead centre) [deg]")
+    x: Annotated[list[float], at_most(MAX_TRACE, "values")] | None = Field(
+        None, description="inline instead of indicator_file: crank angle, volume or travel")
+    p: Annotated[list[float], at_most(MAX_TRACE, "values")] | None = Field(
+        None, description="inline instead of indicator_file: the pressure at each x")
+
+
+def read_trace(spec: IndicatorSpec, file: str | None, case_dir: str) -> tuple[list, list, tuple]:
+    """(x [SI: rad, m³, m or s], gauge p [Pa], the field path of the data) of an indicator
+    given by ``file`` (relative to ``case_dir``; read by :func:`flywheel.io.table.read_columns`)
+    or inline. Raises FieldError (one line) for a file that cannot be read, data given twice or
+    not at all, a unit that does not fit ``against``, or fewer than 3 rows."""
+    if spec.x_unit not in X_UNITS[spec.against]:
+        raise FieldError(("indicator", "x_unit"), Notice.of(
+            "indicator_unit", "{unit!r} is not a unit of {against} (allowed: {allowed})",
+            unit=spec.x_unit, against=spec.against, allowed=", ".join(X_UNITS[spec.against])))
+    inline = spec.x is not None or spec.p is not None
+    if file is not None and inline:
+        raise FieldError(("indicator", "x" if spec.x is not None else "p"), Notice.of(
+            "indicator_twice", "give the data either in indicator_file or inline (x and p), "
+            "not both"))
+    if file is not None:
+        from flywheel.io.table import TableError, read_columns
+
+        path = Path(file) if Path(file).is_absolute() else Path(case_dir) / file
+        try:
+            _, (x, p) = read_columns(path, spec.columns)
+        except TableError as exc:
+            problem = said(exc)
+            raise FieldError(("indicator_file",), problem) from None
+        where = ("indicator_file",)
+    else:
+        if spec.x is None or spec.p is None:
+            raise FieldError(("indicator", "p" if spec.x is not None else "x"), Notice.of(
+                "indicator_missing", "missing: give indicator_file, or x and p inline"))
+        if spec.columns is not None:
+            raise FieldError(("indicator", "columns"), Notice.of(
+                "indicator_columns_inline", "names the columns of indicator_file, which is not "
+                "given"))
+        x, p = spec.x, spec.p
+        if len(p) != len(x):
+            raise FieldError(("indicator", "p"), Notice.of(
+                "values_per_x", "needs {n} values, one per x (got {count})", n=len(x),
+                count=len(p)))
+        where = ("indicator", "x")
+    if len(x) < 3:
+        raise FieldError(where, Notice.of(
+            "indicator_too_short", "{n} rows (allowed: at least 3)", n=len(x)))
+    kx, kp = X_UNITS[spec.against][spec.x_unit], P_UNITS[spec.p_unit]
+    atm = spec.atmosphere if spec.pressure == "absolute" else 0.0
+    return [v * kx for v in x], [v * kp - atm for v in p], where
+
+
+def loop_runs(s: list[float], p: list[float], strokes: int, where: tuple
+              ) -> tuple[list[float], list[float]]:
+    """A measured loop (volume or travel ``s`` from the head dead centre, scaled to 0 … 1 by its
+    own extremes; gauge ``p``) as the diagram of :func:`_split_cycle`: its ``strokes`` runs
+    between its turning points, each run carried on to its dead centre (1, then 0, …) with its
+    end pressure where the samples stop short of it (as a table is read beyond its ends), so
+    the loop begins and closes at s = 0. Raises FieldError for a loop that does not begin by
+    moving away from the head, does not turn ``strokes`` − 1 times, or repeats a position."""
+    lo, hi = min(s), max(s)
+    if not hi > lo:
+        raise FieldError(where, Notice.of(
+            "indicator_no_stroke", "the piston does not move: every x is {x:g}", x=lo))
+    u = [(v - lo) / (hi - lo) for v in s]
+    for i in range(1, len(u)):
+        if u[i] == u[i - 1]:
+            raise FieldError(where, Notice.of(
+                "indicator_repeated", "rows {i} and {j} are at the same position (allowed: each "
+                "row a new position along the loop; leave out the repeated row)", i=i, j=i + 1))
+    turns = [i for i in range(1, len(u) - 1) if (u[i] - u[i - 1]) * (u[i + 1] - u[i]) < 0]
+    if u[1] < u[0] or len(turns) != strokes - 1:
+        raise FieldError(where, Notice.of(
+            "indicator_strokes", "is not a loop of {want} strokes from the head dead centre (it "
+            "turns {n} times; allowed: a loop that begins at the least volume or travel, moves "
+            "away from the head and turns {turns} times)", want=strokes, n=len(turns),
+            turns=strokes - 1))
+    bounds = [0] + turns + [len(u) - 1]
+    out_s, out_p = [0.0], [p[0]]
+    for k in range(strokes):
+        target = 1.0 if k % 2 == 0 else 0.0
+        for i in range(bounds[k] if k == 0 else bounds[k] + 1, bounds[k + 1] + 1):
+            if u[i] != out_s[-1]:
+                out_s.append(u[i]), out_p.append(p[i])
+        if out_s[-1] != target:
+            out_s.append(target), out_p.append(out_p[-1])
+    return out_s, out_p
+
+
+def two_tables(loop_s: list[float], loop_p: list[float]) -> tuple[list, list, list]:
+    """A two-stroke loop (0 → 1 → 0) as (s, towards_head, away_from_head) on the union of both
+    strokes' travels: each table read linearly at the other's travels is the same polyline."""
+    import numpy as np
+
+    far = loop_s.index(1.0)
+    s_away, p_away = loop_s[:far + 1], loop_p[:far + 1]
+    s_back, p_back = loop_s[far:][::-1], loop_p[far:][::-1]
+    grid = sorted(set(s_away) | set(s_back))
+    return (grid, np.interp(grid, s_back, p_back).tolist(), np.interp(grid, s_away, p_away).tolist())
 
 
 def _values_per_s(n: int, count: int) -> Notice:
@@ -116,7 +254,9 @@ class CylinderSpec(StrictModel):
     name: Name
     piston: Name = Field(description="slider link of an RRP dyad")
     bore: Annotated[float, Field(gt=0), _within(1e-4, 10.0, "m")] = Field(description="bore d [m]")
-    p_max: Annotated[float, Field(gt=0), _within(1.0, 1e10, "Pa")] = Field(description="maximum (gauge) pressure [Pa]")
+    p_max: Annotated[float, Field(gt=0), _within(1.0, 1e10, "Pa")] | None = Field(
+        None, description="maximum (gauge) pressure [Pa], the tables' 1 (with an indicator: "
+                          "default its greatest gauge pressure)")
     head: Literal["outer", "inner"] = Field(
         "outer", description="the dead centre at the cylinder head: farther from (outer) or "
                              "nearer to (inner) the crank axis")
@@ -140,10 +280,30 @@ class CylinderSpec(StrictModel):
         0.02, description="four-stroke: the largest jump of p/p_max allowed where two strokes "
                           "meet at a dead centre")
 
+    indicator_file: Annotated[str, Field(min_length=1, max_length=4096)] | None = Field(
+        None, description="a measured indicator diagram: a CSV file (relative to the case "
+                          "file) described by [cylinders.indicator]")
+    indicator: IndicatorSpec | None = Field(
+        None, description="a measured indicator diagram instead of s and the tables: what the "
+                          "columns of indicator_file are and their units, or the data inline")
+
     _loop: dict | None = PrivateAttr(None)     # diagram's strokes: name → (s, p)
+    _trace: tuple | None = PrivateAttr(None)   # a crank-angle trace: (ψ [rad], p/p_max)
 
     @model_validator(mode="after")
-    def _tables(self):
+    def _tables(self, info: ValidationInfo):
+        if self.indicator_file is not None and self.indicator is None:
+            raise FieldError(("indicator",), Notice.of(
+                "indicator_needs_table", "missing: indicator_file needs [cylinders.indicator] "
+                "saying what its columns are (against, x_unit, p_unit)"))
+        if self.indicator is not None:
+            self._measured((info.context or {}).get("case_dir", "."))
+            if self._trace is not None:
+                return self             # tables from the trace with the mechanism: resolve_traces
+        elif self.p_max is None:
+            raise FieldError(("p_max",), Notice.of(
+                "p_max_missing", "missing required field (only a measured indicator diagram "
+                "gives its own)"))
         if self.diagram is not None:
             given = [k for k in ("s", "towards_head", "away_from_head", "strokes")
                      if getattr(self, k) is not None]
@@ -202,6 +362,71 @@ class CylinderSpec(StrictModel):
                             jump=abs(p_begin - p_end), tol=self.join_tolerance))
         return self
 
+    def _measured(self, case_dir: str) -> None:
+        """The indicator's data as this cylinder's tables: p_max (given, else the greatest
+        gauge pressure) and p/p_max; a loop against volume or travel becomes the diagram (four
+        strokes) or s with its two tables; a crank-angle trace is kept as (ψ, p/p_max) with ψ
+        from the head dead centre, for :func:`resolve_traces`."""
+        spec = self.indicator
+        given = [k for k in ("s", "towards_head", "away_from_head", "strokes", "diagram")
+                 if getattr(self, k) is not None]
+        if given:
+            raise FieldError((given[0],), Notice.of(
+                "indicator_or_tables", "give either a measured indicator diagram (indicator) or "
+                "the tables, not both"))
+        x, p, where = read_trace(spec, self.indicator_file, case_dir)
+        if self.p_max is None:
+            top = max(p)
+            if not 1.0 <= top <= 1e10:
+                raise FieldError(where, Notice.of(
+                    "indicator_p_top", "the greatest gauge pressure is {top:g} Pa (allowed: 1 … "
+                    "1e10 Pa; are p_unit and pressure right?)", top=top))
+            self.p_max = top
+        if max(p) > self.p_max * (1 + 1e-9):
+            raise FieldError(where, Notice.of(
+                "indicator_above_p_max", "reaches {top:g} Pa, above p_max = {p_max:g} Pa "
+                "(allowed: at most p_max; leave p_max out to take the trace's greatest)",
+                top=max(p), p_max=self.p_max))
+        rel = [v / self.p_max for v in p]
+        strokes = 4 if spec.cycle == "four-stroke" else 2
+        if spec.against != "crank_angle":
+            if spec.tdc_offset_deg != 0.0:
+                raise FieldError(("indicator", "tdc_offset_deg"), Notice.of(
+                    "indicator_offset_angle", "goes with against = \"crank_angle\" (a loop "
+                    "against {against} begins at the head dead centre)", against=spec.against))
+            loop_s, loop_p = loop_runs(x, rel, strokes, where)
+            if strokes == 4:
+                self.diagram = DiagramSpec(s=loop_s, p=loop_p)
+            else:
+                self.s, self.towards_head, self.away_from_head = two_tables(loop_s, loop_p)
+            return
+        cycle = strokes * math.pi
+        psi = [(a - math.radians(spec.tdc_offset_deg)) % cycle for a in x]
+        order = sorted(range(len(psi)), key=lambda i: psi[i])
+        for i in range(1, len(x)):
+            if not x[i] > x[i - 1]:
+                raise FieldError(where, Notice.of(
+                    "indicator_angles_increasing", "row {j}: the crank angle {a:g}° does not "
+                    "grow (allowed: strictly increasing angles)", j=i + 1,
+                    a=math.degrees(x[i])))
+        if x[-1] - x[0] > cycle * (1 + 1e-12):
+            raise FieldError(where, Notice.of(
+                "indicator_angles_span", "spans {span:g}° (allowed: at most one cycle, "
+                "{cycle:g}°)", span=math.degrees(x[-1] - x[0]), cycle=math.degrees(cycle)))
+        ps = [psi[i] for i in order]
+        gaps = [b - a for a, b in zip(ps, ps[1:])] + [ps[0] + cycle - ps[-1]]
+        if max(gaps) > math.radians(_TRACE_GAP_DEG):
+            raise FieldError(where, Notice.of(
+                "indicator_angles_gap", "leaves a gap of {gap:.4g}° (allowed: a trace over the "
+                "whole {cycle:g}° cycle, no gap over {most:g}°)", gap=math.degrees(max(gaps)),
+                cycle=math.degrees(cycle), most=_TRACE_GAP_DEG))
+        self._trace = (ps, [rel[i] for i in order])
+
+    @property
+    def measured_by_angle(self) -> bool:
+        """A crank-angle trace whose tables :func:`resolve_traces` has not yet made."""
+        return self._trace is not None and self._loop is None and self.s is None
+
     def tables(self) -> dict[str, list[float]]:
         """The indicator tables by name: towards_head and away_from_head, or the four strokes
         (p/p_max; each stroke at the cylinder's s, or of a diagram at its own travels)."""
@@ -227,5 +452,59 @@ class CylinderSpec(StrictModel):
 
     @property
     def four_stroke(self) -> bool:
-        return self.strokes is not None or self.diagram is not None
+        return (self.strokes is not None or self.diagram is not None
+                or (self.indicator is not None and self.indicator.cycle == "four-stroke"))
+
+
+def resolve_traces(case) -> None:
+    """The tables of every cylinder given a crank-angle trace (:class:`IndicatorSpec`), made
+    with the case's mechanism: each sample's crank angle ψ after the head dead centre (where a
+    four-stroke cylinder fires) gives the piston's relative travel s (the exact kinematics at
+    that angle), the dead centres are added with the trace read linearly in angle there, and
+    the loop (s, p/p_max) becomes the diagram (four strokes) or s with its two tables. Between
+    the samples the pressure is then linear in the travel (for a dense trace the same as
+    linear in the angle). Raises FieldError at cylinders[i] (a trace whose loop is not a
+    diagram) or InputError (a piston without dead centres)."""
+    import numpy as np
+
+    from flywheel.dynamics.grid import slider_frame
+    from flywheel.dynamics.loads import relative_travel
+    from flywheel.linkage import solve
+    from flywheel.linkage.deadcentres import dead_centres
+
+    todo = [(i, c) for i, c in enumerate(case.cylinders) if c.measured_by_angle]
+    if not todo:
+        return
+    mech = case.mechanism()
+    for i, cy in todo:
+        d, u, base, head, far = slider_frame(mech, {cy.piston: dead_centres(mech, cy.piston)},
+                                             cy.piston, cy.head, f"cylinders {cy.name}: piston")
+        four = cy.indicator.cycle == "four-stroke"
+        cycle = 4 * np.pi if four else 2 * np.pi
+        far_after = (far.phi - head.phi) % (2 * np.pi)
+        centres = [0.0, far_after] + ([2 * np.pi, 2 * np.pi + far_after] if four else [])
+        psi, rel = np.asarray(cy._trace[0]), np.asarray(cy._trace[1])
+        at_centre = np.interp(centres, psi, rel, period=cycle)
+        keep = np.all(np.abs(psi[:, None] - np.asarray(centres)[None, :]) > 1e-9, axis=1)
+        psi_all = np.concatenate([psi[keep], centres, [cycle]])
+        rel_all = np.concatenate([rel[keep], at_centre, [at_centre[0]]])
+        order = np.argsort(psi_all, kind="stable")
+        psi_all, rel_all = psi_all[order], rel_all[order]
+        kin = solve(mech, np.mod(head.phi + psi_all, 2 * np.pi))
+        s = relative_travel((kin.points[d.joint].r - base) @ u, head.x, far.x)
+        bound = np.isin(psi_all, centres + [cycle])
+        s[bound] = np.where(np.isin(psi_all[bound], [far_after, 2 * np.pi + far_after]), 1.0, 0.0)
+        # samples within round-off of a dead centre (s there 0 or 1 to the last bit) are
+        # the dead centre's own value: left out
+        ok = bound | ((s > 0.0) & (s < 1.0))
+        loop_s, loop_p = s[ok].tolist(), rel_all[ok].tolist()
+        try:
+            if four:
+                cy.diagram = DiagramSpec(s=loop_s, p=loop_p)
+                cy._loop = _split_cycle(loop_s, loop_p, cy.join_tolerance)
+            else:
+                cy.s, cy.towards_head, cy.away_from_head = two_tables(loop_s, loop_p)
+        except FieldError as exc:
+            problem = said(exc)
+            raise FieldError(("cylinders", i, "indicator"), problem) from None
 

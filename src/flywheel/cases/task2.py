@@ -650,7 +650,8 @@ def solve_case(case: Task2Case, source: str = "<case>", at_deg=()) -> Task2Resul
     speeds = _speeds(case)
     rim = None if f.rim is None else dict(
         density=f.rho, allowable_stress=f.sigma, share=f.rim.share, speed=f.rim.speed,
-        width_to_thickness=f.rim.width_to_thickness, width=f.rim.width)
+        width_to_thickness=f.rim.width_to_thickness, width=f.rim.width,
+        diameter=f.rim.diameter, thickness_to_radius=f.rim.thickness_to_radius)
     kw = dict(delta=delta, rim_radius=f.rim_radius, radius_of_gyration=k_gyr, rim=rim, **speeds)
     at = [math.radians(x) for x in (*case.at_deg, *at_deg)]
     field = "flywheel"

@@ -81,6 +81,14 @@ def run_command(
                                   "motion), sheet2.* (the force analysis); docs/drawings.md."),
     sheet_size: str = typer.Option("A1", "--sheet-size", help="Format of the --drawings "
                                    "sheets, landscape: A1, A2 or A3."),
+    snapshot: Optional[list[str]] = typer.Option(None, "--snapshot", help="PHI_DEG:RPM: the "
+                                                 "crank's ε at that angle and speed; repeatable."),
+    at_travel: Optional[list[str]] = typer.Option(None, "--at-travel", help="POINT:METRES: report "
+                                                  "the positions where slider point POINT is "
+                                                  "METRES from its outer dead centre; repeatable."),
+    roots: Optional[list[str]] = typer.Option(None, "--roots", help="COLUMN: the crank angles "
+                                              "where that table.csv column changes sign; "
+                                              "repeatable."),
 ) -> None:
     """Run the whole dynamic analysis of a case; write summary.json, table.csv, positions.csv,
     forces.csv, forces_positions.csv, report.md and plots/*.png to the output folder."""
@@ -107,6 +115,10 @@ def run_command(
         return run_kinematics(c, case, out, points, at, what.plots == "none", as_json, lang,
                               transients, list(what.formats), what.csv_style, what.figure_format,
                               what.dpi, what.animate)
+    from flywheel.dynamics.asks import at_with_travel, with_asks
+
+    travel = _guard(at_with_travel, c, at_travel)   # --at-travel: its angles are report angles
+    at = travel.at_deg(at, c)
     from flywheel.cli.progress import stage_bar
 
     def analyze_with_bar():             # a bar on a terminal only (the transients take seconds),
@@ -115,6 +127,7 @@ def run_command(
                            progress=progress)
 
     results = _guard(analyze_with_bar, source=case, case=c)
+    results = _guard(with_asks, results, c, snapshot, travel.found, roots)   # textbook asks
     out = out if out is not None else Path("out") / case.stem
     text_json = summary_json(results)
     write_run(out, results, c, what, lang, text_json)

@@ -114,3 +114,61 @@ def four_stroke_cylinder(cy, mech, dcs: dict, kin, fires_at: float) -> CylinderR
                           stroke=stroke, stroke_tables={k: v[1] for k, v in tables.items()},
                           fires_at=float(fires_at),
                           stroke_s={k: v[0] for k, v in tables.items()})
+
+
+# -- the gas work, exact for piecewise-linear tables -------------------------------------------
+
+def table_integral(s_table: np.ndarray, p_table: np.ndarray, s: np.ndarray) -> np.ndarray:
+    """G(s) = ∫ p(σ) dσ from s_table[0] to s [-] of the piecewise-linear table (s_table, p_table)
+    (s clipped to the table's span, as :func:`~flywheel.dynamics.loads.interpolate_table`
+    reads it): the whole segments' trapezoids, plus the part of the segment holding s,
+    p_i·t + ½·(Δp/Δs)·t² with t = s − s_i — exact, the integrand being linear there.
+
+    >>> table_integral(np.array([0.0, 0.5, 1.0]), np.array([0.0, 1.0, 0.0]), np.array([0.25, 1.0])).tolist()
+    [0.0625, 0.5]
+    """
+    s_table, p_table = np.asarray(s_table, float), np.asarray(p_table, float)
+    s = np.clip(np.asarray(s, float), s_table[0], s_table[-1])
+    h = np.diff(s_table)
+    whole = np.concatenate([[0.0], np.cumsum(0.5 * (p_table[1:] + p_table[:-1]) * h)])
+    i = np.clip(np.searchsorted(s_table, s, side="right") - 1, 0, s_table.size - 2)
+    t = s - s_table[i]
+    return whole[i] + p_table[i] * t + 0.5 * (p_table[i + 1] - p_table[i]) / h[i] * t**2
+
+
+def exact_gas_work(s: np.ndarray, table_of_interval: np.ndarray, tables: list, scale: float
+                   ) -> np.ndarray:
+    """Cumulative work A(φ) [J] of a gas force on the grid, exact for piecewise-linear tables:
+    in each interval the piston moves one way inside one stroke (the dead centres are nodes of
+    the grid), so the force p_max·(πd²/4)·p(s) pushing it away from the head does
+    scale·(G(s_{i+1}) − G(s_i)) there (:func:`table_integral` of the interval's table;
+    scale = p_max·πd²/4·|x_far − x_head| [J]): ∮p dV over the cycle, whatever the grid. The
+    trapezoid rule on M = F·x′ is only second-order over the kinks of a table (issue 24).
+    s: the nodes' relative travel; table_of_interval: index into ``tables`` [(s, p/p_max)] of
+    the table in force in each interval."""
+    dW = np.zeros(s.size - 1)
+    for k, (s_tab, p_tab) in enumerate(tables):
+        G = table_integral(s_tab, p_tab, s)
+        on = table_of_interval == k
+        dW[on] = (G[1:] - G[:-1])[on]
+    return np.concatenate([[0.0], np.cumsum(scale * dW)])
+
+
+def gas_work(cy, mech, dcs: dict, kin, cr: CylinderResult) -> np.ndarray | None:
+    """The exact cumulative work [J] of cylinder ``cy`` on the grid of ``kin``
+    (:func:`exact_gas_work`) when its tables are piecewise-linear (``interpolation = "linear"``),
+    else None (the trapezoid rule on its moment stays). ``cr``: its result on the grid. A
+    two-table cylinder reads away_from_head while s grows in an interval and towards_head while
+    it falls; a four-stroke one the table of the stroke at the interval's middle."""
+    if cy.interpolation != "linear":
+        return None
+    _, _, _, head, far = slider_frame(mech, dcs, cy.piston, cy.head, f"cylinders {cy.name}: piston")
+    scale = cy.p_max * np.pi * cy.bore**2 / 4 * abs(far.x - head.x)
+    if cr.stroke is None:
+        tables = [(cr.table_s, cr.table_away), (cr.table_s, cr.table_towards)]
+        which = (np.diff(cr.s) < 0).astype(int)
+    else:
+        tables = [(cr.stroke_s[n], cr.stroke_tables[n]) for n in L.FOUR_STROKES]
+        middle = 0.5 * (kin.phi[1:] + kin.phi[:-1])
+        which = L.four_stroke_index(middle, cr.fires_at, (far.phi - head.phi) % (2 * np.pi))
+    return exact_gas_work(cr.s, which, tables, scale)

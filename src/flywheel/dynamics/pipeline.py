@@ -19,7 +19,8 @@ from flywheel.dynamics import applied as A
 from flywheel.dynamics import loads as L
 from flywheel.dynamics import plans, reduction, stages
 from flywheel.dynamics.columns import linkage_columns
-from flywheel.dynamics.engine import firing_angles, four_stroke_cylinder
+from flywheel.dynamics.engine import firing_angles, four_stroke_cylinder, gas_work
+from flywheel.dynamics.asks import with_start
 from flywheel.dynamics.grid import (DEFAULT_POINTS, grid_options, linkage_grid, report_index,
                                     slider_frame, standard_positions)
 from flywheel.dynamics.results import (AtAngle, CylinderResult, EnergyResult, LinkAt, LoadsResult,
@@ -48,7 +49,8 @@ def analyze(case, n_points: int = DEFAULT_POINTS, at_deg: list[float] | None = N
     if case.tabulated is not None:
         from flywheel.dynamics.tabulated import analyze_tabulated
 
-        return analyze_tabulated(case, n_points, at_deg, transients, motion, progress)
+        return with_start(analyze_tabulated(case, n_points, at_deg, transients, motion, progress),
+                          case)
     at_deg = grid_options(case, n_points, at_deg)
     mech = case.mechanism()
     positions, dcs = standard_positions(mech, case.machine.cycle)
@@ -62,7 +64,7 @@ def analyze(case, n_points: int = DEFAULT_POINTS, at_deg: list[float] | None = N
     at = report_angles(at_deg, kin, ld, red, en, fo.omega, fo.epsilon)   # the motion used
     pl = plans.plan_sets(mech, kin, fo.analysis, fl, at_deg)     # drawn at the report angles
     td = stages.time_domain(case, phi, red, en, mo, progress) if transients else None
-    return Results(
+    return with_start(Results(
         title=case.title, source=case.source, phi=phi, kinematics=kin, loads=ld, reduction=red,
         energy=en, sizing=sz, motion=mo,
         columns=linkage_columns(phi, kin, mech.crank.name, ld, red, en, mo),
@@ -70,7 +72,8 @@ def analyze(case, n_points: int = DEFAULT_POINTS, at_deg: list[float] | None = N
         position_angles=tuple(positions), links_drawn=links_drawn(mech),
         crank_length=float(mech.crank.length), time_domain=td, forces=fo, plans=pl,
         drawing=describe(mech, kin), output_link=output_link(mech),
-        warnings=tuple(case.plausibility_warnings()) + warnings_of(ld, red, en, sz, mo, fo, td))
+        warnings=tuple(case.plausibility_warnings()) + warnings_of(ld, red, en, sz, mo, fo, td)),
+        case)                                           # [start]: a motion from rest
 
 
 def force_motion(case, motion: str | None) -> str:
@@ -136,6 +139,8 @@ def linkage_loads(case, mech, dcs: dict, kin) -> LoadsResult:
         if cy.four_stroke:
             cylinders.append(four_stroke_cylinder(cy, mech, dcs, kin, fires_at[cy.name]))
             M_parts[L.LoadKey("gas", cy.name)] = cylinders[-1].M
+            if (W := gas_work(cy, mech, dcs, kin, cylinders[-1])) is not None:
+                W_parts[L.LoadKey("gas", cy.name)] = W   # exact for linear tables
             continue
         d, u, base, head, far = slider_frame(mech, dcs, cy.piston, cy.head, f"cylinders {cy.name}: piston")
         x = (P[d.joint].r - base) @ u
@@ -157,6 +162,8 @@ def linkage_loads(case, mech, dcs: dict, kin) -> LoadsResult:
         towards = x_dot * (head.x - far.x) > 0
         cylinders.append(CylinderResult(cy.name, cy.piston, s, towards, p, F, M, s_tab, up, down,
                                         cy.p_max, head.phi))
+        if (W := gas_work(cy, mech, dcs, kin, cylinders[-1])) is not None:
+            W_parts[L.LoadKey("gas", cy.name)] = W       # exact for linear tables
     applied = A.applied_loads(case, mech, kin)
     for f in case.forces:
         key = L.LoadKey("force", f.name)

@@ -16,6 +16,8 @@ import numpy as np
 from flywheel.dynamics.loads import LoadKey
 from flywheel.io.serialize import json_schema, to_json
 from flywheel.dynamics.sizing import RimDesign
+from flywheel.dynamics.asks import Roots, Snapshot, TravelAt
+from flywheel.dynamics.start import StartResult
 from flywheel.linkage.drawing import Drawing
 from flywheel.linkage.output_link import OutputLink
 
@@ -655,6 +657,10 @@ class Headline:
     balancing_moment_closure: float | None = None   # ForceResult.closure [-]
     force_analysis: ForceSummary | None = None
     output_link: OutputLink | None = None        # the last group's output link (linkage cases)
+    start: StartResult | None = None             # [start]: a motion from rest
+    snapshots: tuple[Snapshot, ...] | None = None   # --snapshot, [output] snapshots
+    at_travel: tuple[TravelAt, ...] | None = None   # --at-travel: the angles of a travel
+    roots: tuple[Roots, ...] | None = None          # --roots: a column's sign changes
 
     @property
     def rim_designed(self) -> bool:
@@ -708,6 +714,10 @@ class Results:
     warnings: tuple[str, ...] = ()
     drawing: Drawing | None = None           # what the scheme draws (linkage/drawing.py); None if tabulated
     output_link: OutputLink | None = None    # extremes, K, transmission angle (linkage/output_link.py)
+    start: StartResult | None = None         # [start]: a motion from rest (dynamics/start.py)
+    snapshots: tuple[Snapshot, ...] | None = None   # ε at stated φ and speed (dynamics/start.py)
+    at_travel: tuple[TravelAt, ...] | None = None   # the angles of --at-travel (dynamics/asks.py)
+    roots: tuple[Roots, ...] | None = None          # --roots (dynamics/asks.py)
 
     @property
     def cycle(self) -> float:
@@ -785,7 +795,8 @@ class Results:
             time_domain=self.time_domain,
             balancing_moment_closure=None if fo is None else fo.closure,
             force_analysis=None if fo is None else fo.summary(),
-            output_link=self.output_link)
+            output_link=self.output_link, start=self.start, snapshots=self.snapshots or None,
+            at_travel=self.at_travel, roots=self.roots)
 
     def at_document(self) -> list[dict]:
         """summary.json's results.at: the report angles' entries."""

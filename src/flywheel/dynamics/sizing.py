@@ -153,7 +153,12 @@ class RimDesign:
 
     DOCUMENT = ("D_mean", "thickness", "width", "mass", "rim_speed", "stress", "share", "D",
                 "D_inner", "b", "allowable_stress", ("rim_speed_from", "speed_from"), "J_rim",
-                "J_rim_exact", "stress_at_omega_max")
+                "J_rim_exact", "stress_at_omega_max", "area")
+
+    @property
+    def area(self) -> float:
+        """The rim's cross-section b·t [m²] (a rectangle; m = ρ·π·D_mean·b·t)."""
+        return self.width * self.thickness
 
     @property
     def D(self) -> float:
@@ -209,14 +214,18 @@ def rim_speed_for_thickness(rim: RimDesign, aim: float = THIN_RIM_AIM) -> float:
 def design_rim(J: float, omega: float, density: float, allowable_stress: float, *,
                share: float = RIM_SHARE_DEFAULT, speed: float | None = None,
                width_to_thickness: float | None = None,
-               width: float | None = None) -> RimDesign:
+               width: float | None = None,
+               thickness_to_radius: float | None = None,
+               diameter: float | None = None) -> RimDesign:
     """The rim carrying ``share`` of ``J`` [kg·m²] on a shaft turning at the mean speed
     ``omega`` [rad/s] (Khurmi & Gupta, «Theory of Machines», ch. 16, "Dimensions of the flywheel
     rim", Examples 16.14–16.18, 16.23):
 
-    v = √(σ_allow/ρ) (hoop stress of a thin rotating ring σ = ρ·v²) or the given ``speed``;
+    v = √(σ_allow/ρ) (hoop stress of a thin rotating ring σ = ρ·v²), the given ``speed``, or
+    ω·D_mean/2 of the given mean ``diameter``;
     D_mean = 2·v/ω; m = share·J/R², R = D_mean/2 (thin ring, k = R); m = ρ·π·D_mean·b·t with
-    b = ratio·t, t = √(m/(π·D_mean·ratio·ρ)), or b = ``width`` given, t = m/(π·D_mean·b·ρ).
+    b = ratio·t, t = √(m/(π·D_mean·ratio·ρ)), or b = ``width`` given, t = m/(π·D_mean·b·ρ), or
+    t = ``thickness_to_radius``·R given, b = m/(π·D_mean·t·ρ).
 
     Raises InputError (naming the field) if the given speed's stress ρ·v² exceeds σ_allow
     (no diameter can help: the stress of a thin ring depends on v alone), if the share is not in
@@ -232,6 +241,15 @@ def design_rim(J: float, omega: float, density: float, allowable_stress: float, 
         # library use only: no CLI input reaches this
         raise InputError(f"flywheel.rim.share: {share:g} is not a share (allowed: 0 < share ≤ 1)")
     v_max = rim_speed_limit(allowable_stress, density)
+    if diameter is not None:        # the mean diameter given: v = ω·D_mean/2
+        speed = omega * diameter / 2
+        if density * speed ** 2 > allowable_stress * (1 + 1e-12):
+            raise InputError(Notice.of(
+                "rim_diameter_stress", "flywheel.rim.diameter: {D:g} m turns at {speed:.6g} "
+                "m/s, whose hoop stress ρ·v² = {stress:.6g} MPa is above the allowable "
+                "{allowable:.6g} MPa (allowed: at most {top:.6g} m, at √(σ/ρ) = {v_top:.6g} "
+                "m/s)", D=diameter, speed=speed, stress=density * speed ** 2 / PA_PER_MPA,
+                allowable=allowable_stress / PA_PER_MPA, top=2 * v_max / omega, v_top=v_max))
     if speed is None:
         v, speed_from = v_max, "allowable stress"
     else:
@@ -247,7 +265,10 @@ def design_rim(J: float, omega: float, density: float, allowable_stress: float, 
     R = D / 2
     J_rim = share * max(J, 0.0)
     m = J_rim / R ** 2
-    if width is not None:
+    if thickness_to_radius is not None:     # t = (t/R)·R given, b from m = ρ·π·D·b·t
+        t = thickness_to_radius * R
+        b = m / (math.pi * D * t * density)
+    elif width is not None:
         b = width
         t = m / (math.pi * D * b * density)
     else:

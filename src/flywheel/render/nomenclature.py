@@ -398,6 +398,15 @@ TERMS: dict[str, Term] = {
     # the records of summary.json's force analysis (results.force_analysis, at[].…)
     "force_analysis": _t("", "", "-", "force analysis (kinetostatics)",
                          "силовой расчёт (кинетостатика)"),
+    # issue 24: a motion from rest ([start]) and ε at a stated angle and speed (--snapshot)
+    "start": _t("", "", "-", "motion from a stated state ([start])",
+                "движение из заданного состояния ([start])"),
+    "snapshots": _t("", "", "-", "angular acceleration at a stated angle and speed",
+                    "угловое ускорение при заданных угле и скорости"),
+    "at_travel": _t("", "", "-", "crank angles of a stated slider travel",
+                    "углы кривошипа при заданном перемещении ползуна"),
+    "roots": _t("", "", "-", "crank angles where a quantity changes sign",
+                "углы кривошипа, при которых величина меняет знак"),
     "joints": _t("R_ij", r"$R_{ij}$", "N", "reactions in the kinematic pairs",
                  "реакции в кинематических парах"),
     "slider_crank": _t("", "", "-", "slider-crank quantities", "величины кривошипно-ползунной группы"),

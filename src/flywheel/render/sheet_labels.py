@@ -93,6 +93,14 @@ SHEET_FIELDS: list[tuple[str, str, str]] = [
      "цилиндр {x}: индикаторная диаграмма, перемещение s"),
     ("cylinders.#.diagram.p", "cylinder {x}: indicator diagram, p/p_max",
      "цилиндр {x}: индикаторная диаграмма, p/p_max"),
+    # --- issue 24: a measured indicator diagram ---
+    ("cylinders.#.indicator.tdc_offset_deg", "cylinder {x}: angle of the firing dead centre "
+     "in the pressure trace", "цилиндр {x}: угол мёртвой точки вспышки в записи давления"),
+    ("cylinders.#.indicator.atmosphere", "atmospheric pressure", "атмосферное давление"),
+    ("cylinders.#.indicator.x", "cylinder {x}: indicator diagram, crank angle, volume or travel",
+     "цилиндр {x}: индикаторная диаграмма, угол, объём или перемещение"),
+    ("cylinders.#.indicator.p", "cylinder {x}: indicator diagram, pressure p",
+     "цилиндр {x}: индикаторная диаграмма, давление p"),
     ("flywheel.mass", "flywheel mass m", "масса маховика m"),
     ("flywheel.radius_of_gyration", "radius of gyration of the flywheel k",
      "радиус инерции маховика k"),
