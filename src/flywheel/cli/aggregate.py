@@ -11,6 +11,7 @@ from typing import Optional
 import typer
 
 from flywheel.cli.options import Json, Lang, Reports, note
+from flywheel.io.text import in_language
 
 
 MAX_T_END = 600.0     # s: ten minutes of simulated start-up (about 15 s of computing)
@@ -77,7 +78,7 @@ def aggregate_command(
         if plot is not None:
             from flywheel.render.aggregate import plot as draw
 
-            write_plot(plot, lambda tmp: draw(result, tmp, c.title, lang))
+            write_plot(plot, lambda tmp: draw(result, tmp, in_language(c.title, lang), lang))
         if out is not None:
             written = _write_out(out, result, formats, c.title, c.source, lang)
     if json:
@@ -87,7 +88,8 @@ def aggregate_command(
     else:
         from flywheel.render.aggregate import print_summary
 
-        print_summary(result, c.title, c.source, lang=lang, modes=modes)
+        print_summary(result, in_language(c.title, lang), in_language(c.source, lang), lang=lang,
+                      modes=modes)
         from flywheel.render import nomenclature as nm
 
         if plot is not None:
@@ -107,11 +109,14 @@ def _write_out(out: Path, result, formats, title: str, source: str, lang: str) -
     from flywheel.render.report_aggregate import FIGURE, build_aggregate_document
     from flywheel.render.report_folder import write_report_folder
 
+    from flywheel.io.text import in_language
+
+    shown, said = in_language(title, lang), in_language(source, lang)   # the JSON: English
     names, notes = write_report_folder(
         out, "aggregate", to_json(result, title, source) + "\n",
-        lambda path: draw(result, path, title, lang),
+        lambda path: draw(result, path, shown, lang),
         FIGURE if result.startup is not None else None,
-        lambda fig: build_aggregate_document(result, title, source, lang, fig), formats)
+        lambda fig: build_aggregate_document(result, shown, said, lang, fig), formats)
     for n in notes:
         note(n)
     return names

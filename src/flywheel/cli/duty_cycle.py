@@ -9,6 +9,7 @@ from pathlib import Path
 import typer
 
 from flywheel.cli.options import Json, Lang, OutFolder, Reports, note, warn
+from flywheel.io.text import in_language
 
 
 def duty_cycle_command(
@@ -43,8 +44,9 @@ def duty_cycle_command(
 
         written, notes = guard(write_report_folder, out, "duty-cycle",
                                to_json(result, c.title, c.source) + "\n", None, None,
-                               lambda fig: build_duty_cycle_document(result, c.title, c.source,
-                                                                     lang), formats)
+                               lambda fig: build_duty_cycle_document(
+                                   result, in_language(c.title, lang),
+                                   in_language(c.source, lang), lang), formats)
         for n in notes:
             note(n)
     for w in result.warnings:
@@ -56,6 +58,6 @@ def duty_cycle_command(
     else:
         from flywheel.render.duty_cycle import print_summary
 
-        print_summary(result, c.title, c.source, lang=lang)
+        print_summary(result, in_language(c.title, lang), in_language(c.source, lang), lang=lang)
         if written is not None:
             typer.echo(f"{prefix('written', lang)}: {out}/ ({', '.join(written)})")
