@@ -38,7 +38,7 @@ def figure_reactions(results, lang: str = "en"):
     for r in results.forces.joints.values():
         ax.plot(deg, r.magnitude, label=_reaction_tex(reaction_label(r, lang)))
     ax.set_ylabel(axis("reaction", lang))
-    fg.phi_axis(ax, lang)
+    fg.phi_axis(ax, lang, cycle_deg=results.cycle_deg)
     ax.set_title(fg.title(results, _t(lang, "reactions")))
     fg.legend(ax)            # after the title: a title too wide is broken
     return fig
@@ -94,7 +94,7 @@ def figure_balancing_moment(results, lang: str = "en"):
     pad = 0.08 * (hi - lo)
     ax.set_ylim(lo - pad, hi + pad)
     ax.set_ylabel(axis("M_y", lang))
-    fg.phi_axis(ax, lang)
+    fg.phi_axis(ax, lang, cycle_deg=results.cycle_deg)
     what = (_t(lang, "moment_groups") if groups else _t(lang, "moment") if f.motion == "true"
             else _t(lang, "moment_steady", w=float(f.omega[0])))
     ax.set_title(fg.title(results, what))
