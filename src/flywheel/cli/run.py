@@ -146,7 +146,7 @@ def run_command(
 
     for n in notes:
         note(n)
-    for w in results.warnings:              # on stderr too: `2>/dev/null` and pipes behave
+    for w in results.warnings:              # once, on stderr (the summary does not repeat them)
         warn(w)
     if as_json:
         sys.stdout.write(text_json)

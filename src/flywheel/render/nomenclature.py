@@ -344,9 +344,9 @@ TERMS: dict[str, Term] = {
                    "реакция в кинематической паре (сила действия звена i на звено j)"),
     "M_y": _t("M_у", r"$M_у$", "N·m", "balancing moment M_y (kinetostatics)",
               "уравновешивающий момент M_у (кинетостатика)", "M_y"),
-    "M_y_groups": _t("M_у.гр", r"$M_{у.гр}$", "N·m",
+    "M_y_groups": _t("M_угр", r"$M_{угр}$", "N·m",
                      "balancing moment of the Assur groups M_y,gr (without the first group's "
-                     "inertia)", "уравновешивающий момент групп Ассура M_у.гр (без инерции первой "
+                     "inertia)", "уравновешивающий момент групп Ассура M_угр (без инерции первой "
                      "группы)", "M_y,gr", r"$M_{y,gr}$"),
     "first_group_torque": _t("−J_I·ε", r"$-J_I\varepsilon$", "N·m",
                              "inertia torque of the first group (flywheel) −J_I·ε",
