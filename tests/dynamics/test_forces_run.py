@@ -68,7 +68,7 @@ def test_contract_keys_present_and_finite(name):
     tabulated = name == "press"
     for a in r["at"]:
         bm = a["balancing_moment"]
-        ways = ("power",) if tabulated else ("kinetostatic", "zhukovsky", "power")
+        ways = ("power",) if tabulated else ("kinetostatic", "zhukovsky", "power", "groups")
         assert set(bm) == set(ways) and all(_finite(bm[w]) for w in ways)
         if tabulated:
             assert "joints" not in a and "slider_crank" not in a
@@ -370,8 +370,17 @@ def test_force_figures(lang):
     (ax,) = fig.axes
     labels = [t.get_text() for t in ax.get_legend().get_texts()]
     assert len(labels) == 4 and ax.get_ylabel().endswith(Nm)
-    assert ("рычагу Жуковского" if lang == "ru" else "Zhukovsky's lever") in " ".join(labels)
+    # the true motion: M_y of the groups, the flywheel's −J_I·ε, M_y with it and M_D
+    assert ("групп Ассура" if lang == "ru" else "Assur groups") in labels[0]
+    assert ("маховика" if lang == "ru" else "flywheel") in labels[1]
+    fa = res.forces.analysis
+    np.testing.assert_array_equal(ax.lines[0].get_ydata(), fa.balancing_moment_groups)
+    np.testing.assert_array_equal(ax.lines[1].get_ydata(), fa.first_group_torque)
     fig.clear()
+    steady = pf.figure_balancing_moment(results_of("compressor", "steady"), lang)
+    labels = [t.get_text() for t in steady.axes[0].get_legend().get_texts()]
+    assert ("рычагу Жуковского" if lang == "ru" else "Zhukovsky's lever") in " ".join(labels)
+    steady.clear()
     fig = pf.figure_hodographs(res, lang)
     assert len(fig.axes) == 3 and res.title in fig.get_suptitle()
     assert all(ax.get_xlabel().endswith(N) and ax.get_ylabel().endswith(N)
@@ -460,3 +469,58 @@ def test_round_off_is_not_magnified_on_the_balancing_moment_plot():
     lo, hi = fig.axes[0].get_ylim()
     fig.clear()
     assert lo <= float(np.min(steady.forces.M_y)) and hi >= float(np.max(steady.forces.M_y))
+
+
+# -- the balancing moment of the Assur groups (issue 28) ---------------------------------------------
+
+def test_groups_moment_varies_while_M_y_with_the_first_group_is_M_D():
+    """With the true motion M_y (the first group's inertia on the crank) equals M_D at every φ —
+    the closure check — while the moment the crank delivers to the Assur groups swings over
+    the cycle by more than 20 % of M_D: the fluctuation the flywheel takes up."""
+    res = results_of("compressor")
+    fa, M_D = res.forces.analysis, res.scalars.driving_moment
+    grp = fa.balancing_moment_groups
+    assert np.max(np.abs(fa.balancing_moment - M_D)) < 1e-9 * abs(M_D)
+    assert np.ptp(grp) > 0.2 * abs(M_D)
+    # M_y = M_y,gr + J_I·ε: the groups' moment and the flywheel's −J_I·ε make up M_y
+    J_eps = res.motion.J_I * res.forces.epsilon
+    np.testing.assert_allclose(grp + J_eps, fa.balancing_moment, rtol=0, atol=1e-9 * abs(M_D))
+    np.testing.assert_allclose(grp, fa.balancing_moment + fa.first_group_torque, rtol=0,
+                               atol=1e-12 * abs(M_D))
+
+
+def test_groups_moment_is_the_power_balance_without_the_first_group():
+    """An independent truth for M_y,gr at the true motion: the power balance of the links alone
+    (J_I = 0 in forces.power_balance_moment: kinetic energy instead of inertia forces, no
+    reactions), with the dynamics' ω(φ), ε(φ)."""
+    from flywheel.dynamics import forces as fo
+    from flywheel.dynamics import pipeline as pp
+
+    for name in ("compressor", "engine_4stroke", "shaper"):
+        res = results_of(name)
+        case = load_case(CASES / f"{name}.toml")
+        mech = case.mechanism()
+        _, dcs = pp.standard_positions(mech, case.machine.cycle)
+        loads = pp.force_loads(case, mech, dcs, res.kinematics, res.loads, 0.0)   # J_I = 0
+        alone = fo.power_balance_moment(mech, res.kinematics, res.forces.omega,
+                                        res.forces.epsilon, loads)
+        grp = res.forces.analysis.balancing_moment_groups
+        np.testing.assert_allclose(grp, alone, rtol=0, atol=1e-7 * np.max(np.abs(grp)))
+
+
+def test_groups_moment_at_steady_motion_is_zhukovskys_lever():
+    """At --motion steady (ε = 0) the course's comparison: M_y,gr = M_y by Zhukovsky's lever."""
+    res = results_of("compressor", "steady")
+    grp = res.forces.analysis.balancing_moment_groups
+    np.testing.assert_allclose(grp, res.forces.M_y_zhukovsky, rtol=0, atol=1e-9 * np.max(np.abs(grp)))
+    assert np.ptp(grp) > 0.2 * abs(res.scalars.driving_moment)
+
+
+def test_forces_csv_has_the_groups_column():
+    from flywheel.render.forces import forces_csv
+
+    res = results_of("compressor")
+    header = forces_csv(res).splitlines()[0].split(",")
+    col = [h for h in header if h.startswith("M_y_groups")]
+    assert col == ["M_y_groups [N·m]"]
+    assert header.index(col[0]) == header.index("M_y [N·m]") + 1

@@ -94,7 +94,7 @@ def test_restyle_changes_separators_and_decimal_marks_only():
 def test_grade_outputs_excel_ru_read_back_to_the_same_numbers(tmp_path):
     import json
 
-    from test_grading import sheet          # the test-side answer sheet writer
+    from teaching.test_grading import sheet  # the test-side answer sheet writer (tests/teaching)
 
     key_dir = tmp_path / "v"
     res = runner.invoke(app, ["variants", str(CASES / "variants_task2.toml"), "--count", "4",

@@ -23,7 +23,7 @@ from typing import Annotated, Literal
 from pydantic import Field
 
 from flywheel.errors import CaseFileError, FlywheelError, Notice, led, said
-from flywheel.io.schema import MAX_TEXT, FieldError, StrictModel, load, text_field, validate, within, clean_loc, describe, pick
+from flywheel.io.schema import TitleText, title_field, MAX_TEXT, FieldError, StrictModel, load, text_field, validate, within, clean_loc, describe, pick
 from flywheel.cases.document import DocumentSpec
 from flywheel.units import RAD_S_PER_RPM
 
@@ -125,8 +125,8 @@ class Load(StrictModel):
 
 
 class AggregateCase(StrictModel):
-    title: str = text_field()
-    source: str = text_field()
+    title: TitleText = title_field()
+    source: TitleText = title_field()
     motor: Motor | None = None
     coupling: Shaft | None = None
     machine: Machine | None = None

@@ -19,7 +19,7 @@ from flywheel.duty_cycle import work as wk
 from flywheel.duty_cycle.solve import (DutyCycle, DutyCycleError, DutyCycleResult, Work,
                                        nonfinite, solve)
 from flywheel.errors import CaseFileError, Notice, led, said
-from flywheel.io.schema import FieldError, StrictModel, describe, load, pick, text_field, validate
+from flywheel.io.schema import TitleText, title_field, FieldError, StrictModel, describe, load, pick, text_field, validate
 from flywheel.cases.document import DocumentSpec
 from flywheel.units import RAD_S_PER_RPM
 
@@ -148,8 +148,8 @@ class Flywheel(StrictModel):
 class DutyCase(StrictModel):
     """A duty-cycle problem."""
 
-    title: str = text_field(description="what the case is")
-    source: str = text_field(description="where it comes from (book, problem)")
+    title: TitleText = title_field(description="what the case is")
+    source: TitleText = title_field(description="where it comes from (book, problem)")
     notes: str = text_field(description="anything else")
     operation: Operation
     cycle: Cycle | None = None

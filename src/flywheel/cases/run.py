@@ -16,7 +16,7 @@ from typing import Annotated, Literal, Union
 from pydantic import BaseModel, Field, Strict, model_validator
 
 from flywheel.errors import CaseFileError, Notice, led
-from flywheel.io.schema import FieldError, StrictModel, at_most, text_field, within, clean_loc, describe, load, loc_str, pick, validate
+from flywheel.io.schema import TitleText, title_field, FieldError, StrictModel, at_most, text_field, within, clean_loc, describe, load, loc_str, pick, validate
 from flywheel.cases.document import DocumentSpec
 from flywheel.cases.run_start import StartSpec
 from flywheel.cases.rim import MATERIALS, RimSpec  # shared with the task2 format
@@ -245,8 +245,8 @@ class ForceAnalysisSpec(StrictModel):
 class Case(StrictModel):
     """A whole case file."""
 
-    title: str = text_field()
-    source: str = text_field()
+    title: TitleText = title_field()
+    source: TitleText = title_field()
     machine: Machine
     design: Design = Field(default_factory=Design)
     crank: CrankSpec | None = Field(None, description="the driving link of a linkage")

@@ -23,7 +23,7 @@ from flywheel.constant_inertia import graphs
 from flywheel.constant_inertia.solve import (BALANCE_RTOL, Task2Result, balance, power_value, solve,
                                             solve_areas)
 from flywheel.errors import CaseFileError, InputError, Notice, led, said
-from flywheel.io.schema import FieldError, StrictModel, at_most, load, text_field, validate, within, clean_loc, describe, loc_str, pick
+from flywheel.io.schema import TitleText, title_field, FieldError, StrictModel, at_most, load, text_field, validate, within, clean_loc, describe, loc_str, pick
 from flywheel.cases.document import DocumentSpec
 
 BALANCE = "balance"
@@ -227,8 +227,8 @@ class Diagram(StrictModel):
 class Task2Case(StrictModel):
     """A task-2 problem."""
 
-    title: str = text_field(description="what the case is")
-    source: str = text_field(description="where it comes from (book, problem)")
+    title: TitleText = title_field(description="what the case is")
+    source: TitleText = title_field(description="where it comes from (book, problem)")
     notes: str = text_field(description="anything else")
     cycle_deg: Annotated[float, within(1e-3, 36000.0, "deg")] = Field(
         360.0, description="length of the cycle [deg]: 360, 720, 1080 … (at most 100 revolutions)")

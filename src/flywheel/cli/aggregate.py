@@ -11,6 +11,7 @@ from typing import Optional
 import typer
 
 from flywheel.cli.options import Json, Lang, Reports
+from flywheel.io.text import in_language
 
 
 MAX_T_END = 600.0     # s: ten minutes of simulated start-up (about 15 s of computing)
@@ -65,14 +66,15 @@ def aggregate_command(
         if plot is not None:
             from flywheel.render.aggregate import plot as draw
 
-            write_plot(plot, lambda tmp: draw(result, tmp, c.title, lang))
+            write_plot(plot, lambda tmp: draw(result, tmp, in_language(c.title, lang), lang))
         if out is not None:
             written = _write_out(out, result, formats, c.title, c.source, lang)
     from flywheel.cli.outputs import finish, written_line
     from flywheel.render.aggregate import print_summary, to_json
 
     finish(json_text=to_json(result, c.title, c.source) + "\n" if json else None,
-           summary=lambda: print_summary(result, c.title, c.source, lang=lang, modes=modes),
+           summary=lambda: print_summary(result, in_language(c.title, lang),
+                                         in_language(c.source, lang), lang=lang, modes=modes),
            lines=([nm.name("plot_written", lang, path=plot)] if plot is not None else [])
            + ([written_line(out, written, lang)] if out is not None else []))
 
@@ -106,8 +108,9 @@ def _write_out(out: Path, result, formats, title: str, source: str, lang: str) -
     from flywheel.render.aggregate import to_json
     from flywheel.render.report_aggregate import FIGURE, build_aggregate_document
 
+    shown, said = in_language(title, lang), in_language(source, lang)   # the JSON: English
     return report_folder(
         out, "aggregate", to_json(result, title, source) + "\n",
-        lambda path: draw(result, path, title, lang),
+        lambda path: draw(result, path, shown, lang),
         FIGURE if result.startup is not None else None,
-        lambda fig: build_aggregate_document(result, title, source, lang, fig), formats)
+        lambda fig: build_aggregate_document(result, shown, said, lang, fig), formats)

@@ -9,6 +9,7 @@ from pathlib import Path
 import typer
 
 from flywheel.cli.options import Json, Lang, OutFolder, Reports
+from flywheel.io.text import in_language
 
 
 def duty_cycle_command(
@@ -40,12 +41,14 @@ def duty_cycle_command(
         from flywheel.render.report_duty_cycle import build_duty_cycle_document
 
         written = guard(report_folder, out, "duty-cycle", to_json(result, c.title, c.source) + "\n",
-                        None, None, lambda fig: build_duty_cycle_document(result, c.title,
-                                                                          c.source, lang), formats)
+                        None, None, lambda fig: build_duty_cycle_document(
+                            result, in_language(c.title, lang), in_language(c.source, lang), lang),
+                        formats)
     from flywheel.cli.outputs import finish, written_line
     from flywheel.render.duty_cycle import print_summary, to_json
 
     finish(warnings=result.warnings,
            json_text=to_json(result, c.title, c.source) + "\n" if as_json else None,
-           summary=lambda: print_summary(result, c.title, c.source, lang=lang),
+           summary=lambda: print_summary(result, in_language(c.title, lang),
+                                         in_language(c.source, lang), lang=lang),
            lines=[] if written is None else [written_line(out, written, lang)])

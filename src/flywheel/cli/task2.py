@@ -87,7 +87,7 @@ def task2_command(
         formats = check_formats(report)
         if report and out is None:
             raise InputError(needs_out())
-        job = (_from_case(case, at, profile, given) if case is not None else
+        job = (_from_case(case, at, profile, given, lang) if case is not None else
                _from_options(profile, given, dict(md=md, j=j, omega0=omega0, start=start,
                                                   end=end, mc=mc, delta=delta), at, lang))
         result = solve_finite(job.run, job.blame, job.who)
@@ -123,7 +123,7 @@ class _Job:
     doc_source: str
 
 
-def _from_case(case: Path, at, profile, given) -> _Job:
+def _from_case(case: Path, at, profile, given, lang: str = "en") -> _Job:
     """A task-2 case file (cases/task2.py): it gives all the data, so no other option."""
     from flywheel.cases.task2 import load_task2_case, solve_case
     from flywheel.cli.guard import case_numbers
@@ -140,8 +140,11 @@ def _from_case(case: Path, at, profile, given) -> _Job:
         raise InputError(Notice.of(
             "t2_at_diagram", "--at: {case} gives a diagram by areas, which has no moments between "
             "its crossings: ε, ω and t at an angle need graphs", case=str(case)))
+    from flywheel.io.text import in_language
+
     return _Job(lambda: solve_case(c, str(case), at_deg=at or ()), case_numbers(c.model_dump()),
-                case, c.title, c.source, c.title, c.source)
+                case, in_language(c.title, lang), in_language(c.source, lang), str(c.title),
+                str(c.source))
 
 
 def _from_options(profile, given, v: dict, at, lang: str) -> _Job:

@@ -218,7 +218,8 @@ class ForceAnalysis:
     balancing_moment: M_y [N·m], in the direction of rotation; direction: the crank's +1/−1;
     crank_bearing_key: the key of R_01, the frame's force on the crank at its pivot;
     slider_crank: by slider name; inertia: d'Alembert's loads by link;
-    first_group_couple: −J_I·ε on the crank [N·m], counter-clockwise;
+    first_group_couple: −J_I·ε on the crank [N·m], counter-clockwise (the balancing moment
+    without it: :attr:`balancing_moment_groups`);
     shaking_force (N, 2) [N] and shaking_moment [N·m, ccw, about the crank pivot]: all that
     the mechanism puts on its frame — the forces of the moving links in the frame's joints
     and guides, the reactions of the given loads marked ``on_frame`` and of M_y (the drive
@@ -243,6 +244,22 @@ class ForceAnalysis:
     def balancing_moment_ccw(self) -> np.ndarray:
         """M_y as a counter-clockwise couple on the crank [N·m]."""
         return self.direction * self.balancing_moment
+
+    @property
+    def first_group_torque(self) -> np.ndarray:
+        """The first group's inertia torque −J_I·ε [N·m], in the direction of rotation."""
+        return self.direction * self.first_group_couple
+
+    @property
+    def balancing_moment_groups(self) -> np.ndarray:
+        """M_y of the groups [N·m], in the direction of rotation: the moment the crank delivers
+        to the Assur groups, without the first group's inertia couple. The crank's moment
+        balance M_y + (−J_I·ε) − M_y,groups = 0 (Артоболевский, силовой расчёт начального
+        звена) gives M_y,groups = M_y + (−J_I·ε) = M_y − J_I·ε: with the true motion M_y = M_D
+        and M_y,groups varies over the cycle — what the flywheel smooths; with ε = 0 they are
+        one. ``first_group_couple`` is ccw, so −J_I·ε in the direction of rotation is
+        direction·first_group_couple."""
+        return self.balancing_moment + self.first_group_torque
 
     @property
     def crank_bearing(self) -> Reaction:

@@ -430,11 +430,13 @@ class SliderCrankAt:
 @dataclass(frozen=True, kw_only=True)
 class BalancingMomentAt:
     """M_y at a report angle [N·m]: kinetostatic, by Zhukovsky's lever, by the power balance
-    (a tabulated case: the power balance only)."""
+    (a tabulated case: the power balance only); ``groups``: the moment the crank delivers to
+    the Assur groups, without the first group's inertia, M_y − J_I·ε (kinetostatic)."""
 
     kinetostatic: float | None = None
     zhukovsky: float | None = None
     power: float
+    groups: float | None = None
 
 
 @dataclass(frozen=True, kw_only=True)
@@ -545,7 +547,7 @@ class ForceResult:
             return {"balancing_moment": BalancingMomentAt(power=float(self.M_y_power[i]))}
         out: dict = {"balancing_moment": BalancingMomentAt(
             kinetostatic=float(fa.balancing_moment[i]), zhukovsky=float(self.M_y_zhukovsky[i]),
-            power=float(self.M_y_power[i]))}
+            power=float(self.M_y_power[i]), groups=float(fa.balancing_moment_groups[i]))}
         joints = {}
         for key, r in self.joints.items():
             v = VectorAt.of(float(r.x[i]), float(r.y[i]))

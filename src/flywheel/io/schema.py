@@ -14,6 +14,7 @@ from pydantic import BaseModel, ConfigDict, ValidationError
 
 from flywheel.errors import CaseFileError, Notice, led, said
 from flywheel.io.text import ECHO, cut, cut_echoes, cut_end  # noqa: F401  (the formatter's)
+from flywheel.io.text import Text, in_language  # noqa: F401  (a title or source in two languages)
 
 
 class StrictModel(BaseModel):
@@ -83,6 +84,46 @@ def text_field(default: str = "", description: str = ""):
 
     return Field(default, max_length=MAX_TEXT, description=description)
 
+
+_LANGS = ("ru", "en")
+
+
+def title_field(default: str = "", description: str = ""):
+    """A title or source: a string of at most MAX_TEXT characters, or a table
+    ``{ ru = "…", en = "…" }`` of two (a :class:`Text`); anything else refused in one line.
+    Use as ``title: TitleText = title_field(…)``."""
+    from pydantic import Field
+
+    return Field(default, max_length=MAX_TEXT, description=description)
+
+
+def _title_text(value, handler):
+    """The WrapValidator of :data:`TitleText`: a string through pydantic's own check (type and
+    length), a table's two strings likewise, joined into a :class:`Text`."""
+    if isinstance(value, dict):
+        if set(value) != set(_LANGS):
+            raise ValueError(Notice.of(
+                "text_languages", "a table of a title or source has the keys {got} (allowed: a "
+                "string, or exactly ru and en: {{ ru = \"…\", en = \"…\" }})",
+                got=", ".join(sorted(map(str, value))) or "none"))
+        return Text(handler(value["en"]), handler(value["ru"]))
+    return handler(value)
+
+
+def _title_schema():
+    from typing import Annotated
+
+    from pydantic import WithJsonSchema, WrapValidator
+
+    text = {"type": "string", "maxLength": MAX_TEXT}
+    return Annotated[str, WrapValidator(_title_text), WithJsonSchema({
+        "anyOf": [text, {"type": "object", "properties": {k: text for k in _LANGS},
+                         "required": list(_LANGS), "additionalProperties": False}],
+        "description": "a string, or the text in both languages: { ru = \"…\", en = \"…\" }"})]
+
+
+#: the type of a case's title and source (every case kind): a string or { ru = "…", en = "…" }
+TitleText = _title_schema()
 
 M = TypeVar("M", bound=BaseModel)
 

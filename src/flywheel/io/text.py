@@ -49,3 +49,25 @@ def cut_echoes(line: str, width: int = ECHO) -> str:
 
     out = re.sub(r"\S{%d,}" % (width + 1), one, line)
     return cut(out, 12 * width)
+
+
+class Text(str):
+    """A title or source given in both languages: the string is the English text (what the
+    JSON documents and every English output carry), ``ru`` the Russian. A plain string in a
+    case is both (a :class:`str`, not a Text)."""
+
+    def __new__(cls, en: str, ru: str) -> "Text":
+        obj = super().__new__(cls, en)
+        obj.ru = ru
+        return obj
+
+    def __reduce__(self):                    # pickled whole into the plotting processes
+        return (Text, (str(self), self.ru))
+
+
+def in_language(text, lang: str) -> str:
+    """``text`` (a title or source: a :class:`Text` or a plain string) in ``lang`` ("en"/"ru")
+    as a plain string; a plain string is the same in both."""
+    if lang == "ru" and isinstance(text, Text):
+        return text.ru
+    return str(text)

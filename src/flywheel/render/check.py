@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import math
 
+from flywheel.io.text import in_language
 from flywheel.render import nomenclature as nm
 from flywheel.render.catalogue import words
 from flywheel.render.numbers import fmt as _number
@@ -11,8 +12,10 @@ from flywheel.units import PA_PER_MPA
 
 # the words of `flywheel check` (the quantities' names, symbols and units: the nomenclature)
 W = words("check", {"case": "case", "given_fw": "a given flywheel, ",
-                    "balance_driving": "balance: constant driving moment",
-                    "balance_resistance": "balance: constant resistance moment",
+                    "balance_driving": "cycle condition: the driving moment is constant "
+                                       "(M_D = −A_C/Φ)",
+                    "balance_resistance": "cycle condition: the moment of resistance is constant "
+                                          "(M_C = −A_D/Φ)",
                     "cycle": "cycle Φ = {c}°",
                     "fires": "; fires: ", "fire_at": "{n} at {a}°", "mechanism": "Mechanism",
                     "group": "group", "links": "links", "points": "points", "data": "data",
@@ -83,8 +86,9 @@ def print_check(report, console=None, lang: str = "en") -> None:
         return _print_tabulated(report, console, lang)
     mech = report.mechanism
     m = case.machine
-    console.print(f"[bold]{case.title or w['case']}[/bold]  ({case.source})" if case.source
-                  else f"[bold]{case.title or w['case']}[/bold]")
+    title, source = in_language(case.title, lang), in_language(case.source, lang)
+    console.print(f"[bold]{title or w['case']}[/bold]  ({source})" if source
+                  else f"[bold]{title or w['case']}[/bold]")
     console.print(_crank_line(report, m, lang))
     if m.cycle_deg != 360 or report.firing_deg:
         console.print(w["cycle"].format(c=f"{m.cycle_deg:g}") + (w["fires"] + ", ".join(
@@ -183,8 +187,9 @@ def _print_tabulated(report, console, lang: str = "en") -> None:
     case, red = report.case, report.tabulated
     tab, m = case.tabulated, case.machine
     w = W[lang]
-    console.print(f"[bold]{case.title or w['case']}[/bold]"
-                  + (f"  ({case.source})" if case.source else ""))
+    title, source = in_language(case.title, lang), in_language(case.source, lang)
+    console.print(f"[bold]{title or w['case']}[/bold]"
+                  + (f"  ({source})" if source else ""))
     console.print(f"{_crank_line(report, m, lang)}; "
                   + w["J_II_by"].format(J=nm.symbol("J_II", lang), how=tab.interpolation),
                   markup=False)

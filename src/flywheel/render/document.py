@@ -16,6 +16,7 @@ from flywheel.render import nomenclature as nm
 from flywheel.render.catalogue import words
 from flywheel.render.blocks import (  # noqa: F401  (the model, re-exported)
     Bullets, Document, Figure, Formula, Heading, Paragraph, Table)
+from flywheel.io.text import in_language
 from flywheel.render.numbers import fmt as _number
 from flywheel.units import PA_PER_MPA
 
@@ -57,7 +58,14 @@ T = words("report", {
     "first_group": "first group", "centroid": "centroid",
     "balance_word": {"driving": "driving", "resistance": "resistance"},
     "balance_row": "constant moment balancing the cycle",
-    "balance": "- {A_C} = ∮ {M_C} dφ = {A} {uJ}; {M_D} = −{A_C}/Φ = {M} {uM} (the cycle balance, Φ = {cycle}°)",
+    "signs": ("Signs: a reduced moment and its work are positive where they drive (act in the "
+              "direction of rotation) and negative where they resist."),
+    "balance": {
+        "driving": ("- {A} = ∮ {M} dφ = {vA} {uJ}; {Mx} = −{A}/Φ = {vM} {uM} (the cycle "
+                    "condition: the driving moment is constant, Φ = {cycle}°)"),
+        "resistance": ("- {A} = ∮ {M} dφ = {vA} {uJ}; {Mx} = −{A}/Φ = {vM} {uM} (the cycle "
+                       "condition: the moment of resistance is constant, Φ = {cycle}°)"),
+    },
     "extremes": ("- {dT} max = {vmax} {uJ} at {amax}°, min = {vmin} {uJ} at {amin}° (global "
                  "extremes); {span} = {v} {uJ}"),
     "merzalov": "- Merzalov: {J} = {span}/(δ·{w}²) = {v} {uI}, δ achieved {d}",
@@ -98,13 +106,14 @@ T = words("report", {
     "fig": {
         "positions": "Position functions of the points x(φ), y(φ)", "scheme": "Scheme of the mechanism",
         "reactions": "Reactions in the kinematic pairs",
-        "balancing_moment": "Balancing moment on the crank, three ways",
+        "balancing_moment": "Balancing moment on the crank: of the Assur groups and with the flywheel's inertia",
         "hodographs": "Polar diagrams of the crank-pin, main-bearing and shaking loads",
         "velocity_analogues": "Velocity analogues of the points",
         "acceleration_analogues": "Acceleration analogues of the points",
         "indicator": "Indicator diagram, cylinder {x}", "piston_forces": "Gas forces on the pistons",
         "reduced_moments": "Reduced moments of the loads", "works": "Works and kinetic energy",
-        "energy_mass": "Energy–mass diagram (Wittenbauer)", "time_law": "Time law t(φ)",
+        "energy_mass": "Energy–mass diagram (Wittenbauer)",
+        "time_law": "Angular velocity and acceleration of the crank in time ω(t), ε(t) over a cycle",
         "transients": "Start-up and run-down",
         "plan_positions": "The mechanism in its standard positions",
         "plan_velocity": "Velocity plan at φ = {a}°", "plan_acceleration": "Acceleration plan at φ = {a}°",
@@ -175,6 +184,30 @@ class _Builder:
             self.plots.remove(f)
 
 
+class CycleBalance:
+    """The cycle condition as the machine's ``balance`` reads it (Артоболевский, ch. 16: the
+    work of the moving forces over a cycle of steady motion is zero): a driven machine
+    (``"driving"``) knows its resistance and finds the constant M_Д = −A_С/Φ; an engine
+    (``"resistance"``) knows its driving forces and finds the constant M_С = −A_Д/Φ.
+    ``keys``: the nomenclature keys of the known work, the known moment and the moment found;
+    ``work`` [J] and ``moment`` [N·m]: the result's numbers, signed (driving positive)."""
+
+    def __init__(self, results):
+        s, en = results.scalars, results.energy
+        self.balance = en.balance
+        if en.balance == "resistance":
+            self.keys = ("cycle_work_driving", "driving_moment", "resistance_moment")
+            self.work, self.moment = float(en.A_D[-1]), s.balancing_moment
+        else:
+            self.keys = ("cycle_work_resistance", "M_C", "driving_moment")
+            self.work, self.moment = s.cycle_work_resistance, s.driving_moment
+
+
+def cycle_balance(results) -> CycleBalance:
+    """The cycle condition of ``results`` (:class:`CycleBalance`)."""
+    return CycleBalance(results)
+
+
 def _mt(key: str, lang: str) -> str:
     """The nomenclature's mathtext symbol without its dollars (the formula notation)."""
     return nm.tex(key, lang).strip("$")
@@ -187,7 +220,8 @@ def build_document(results, lang: str = "en", plots: list[str] | None = None,
     t = T[lang]
     s = results.scalars
     cols = results.columns
-    b = _Builder(results.title, lang, plots)
+    title, source = in_language(results.title, lang), in_language(results.source, lang)
+    b = _Builder(title, lang, plots)
 
     def sym(key):
         return nm.symbol(key, lang)
@@ -202,9 +236,9 @@ def build_document(results, lang: str = "en", plots: list[str] | None = None,
         return [label or f"{nm.name(key, lang)}", g(value, digits) if not isinstance(value, str) else value,
                 u(key)]
 
-    b.add(Heading(1, f"{t['title']}: {results.title}"))
-    if results.source:
-        b.add(Paragraph(f"{t['source']}: {results.source}"))
+    b.add(Heading(1, f"{t['title']}: {title}"))
+    if source:
+        b.add(Paragraph(f"{t['source']}: {source}"))
     if not plots:
         b.add(Paragraph(t["no_plots"]))
 
@@ -276,16 +310,17 @@ def build_document(results, lang: str = "en", plots: list[str] | None = None,
 
     # 4. energy -------------------------------------------------------------------------------
     b.add(Heading(2, t["energy"]))
-    AC, MC, MD = _mt("cycle_work_resistance", lang), _mt("M_C", lang), _mt("driving_moment", lang)
+    bal = cycle_balance(results)
+    kA, kM, kx = bal.keys
     dTI, TII, wm = _mt("dT_I", lang), _mt("T_II", lang), _mt("omega_mean", lang)
-    b.add(Formula(rf"{AC} = \oint {MC} d\varphi = {g(s.cycle_work_resistance, 6)}\,\text{{{u('cycle_work_resistance')}}}"))
-    b.add(Formula(rf"{MD} = -\frac{{{AC}}}{{2\pi}} = {g(s.driving_moment, 6)}\,\text{{{u('driving_moment')}}}"))
+    b.add(Paragraph(t["signs"]))
+    b.add(Formula(rf"{_mt(kA, lang)} = \oint {_mt(kM, lang)} d\varphi = {g(bal.work, 6)}\,\text{{{u(kA)}}}"))
+    b.add(Formula(rf"{_mt(kx, lang)} = -\frac{{{_mt(kA, lang)}}}{{\Phi}} = {g(bal.moment, 6)}\,\text{{{u(kx)}}}"))
     b.add(Formula(rf"{dTI} = A - ({TII} - {TII}(0)), {TII} = \frac{{{_mt('J_II', lang)} {wm}^{{2}}}}{{2}}"))
     b.add(Bullets((
-        t["balance"].format(A_C=sym("cycle_work_resistance"), M_C=sym("M_C"), M_D=sym("driving_moment"),
-                            A=g(s.cycle_work_resistance, 6), uJ=u("cycle_work_resistance"),
-                            M=g(s.driving_moment, 6), uM=u("driving_moment"),
-                            cycle=g(s.cycle_deg, 6))[2:],
+        t["balance"][bal.balance].format(A=sym(kA), M=sym(kM), Mx=sym(kx), vA=g(bal.work, 6),
+                                         uJ=u(kA), vM=g(bal.moment, 6), uM=u(kx),
+                                         cycle=g(s.cycle_deg, 6))[2:],
         t["extremes"].format(dT=sym("dT_I"), vmax=g(s.delta_T_I_max, 6), amax=f"{s.phi_delta_T_I_max_deg:.2f}",
                              vmin=g(s.delta_T_I_min, 6), amin=f"{s.phi_delta_T_I_min_deg:.2f}",
                              span=sym("delta_T_max"), v=g(s.delta_T_max, 6), uJ=u("delta_T_max"))[2:],
@@ -354,8 +389,8 @@ def build_document(results, lang: str = "en", plots: list[str] | None = None,
         b.figures_of("figures")
     b.add(Heading(2, t["sources"]))
     src = [t["book"]]
-    if results.source:
-        src.insert(0, t["case_source"].format(s=results.source))
+    if source:
+        src.insert(0, t["case_source"].format(s=source))
     b.add(Bullets(tuple(f"[{i}] {x}" for i, x in enumerate(src, 1))))
     return b.doc
 

@@ -23,13 +23,16 @@ T = words("forces", {
     "motion_steady": "motion: steady — ω = ω_m = {w} rad/s, ε = 0 (the crank turns uniformly)",
     "closure": "closure with the dynamics (true motion): max|M_y − {ref}|/|{ref}| = {c} "
                "over the cycle ({n} nodes){ok}",
-    "closure_J": "closure with the dynamics (true motion): M_D = 0, max|M_y|/max|J_I·ε| = {c} "
+    "closure_J": "closure with the dynamics (true motion): {ref} = 0, max|M_y|/max|J_I·ε| = {c} "
                  "over the cycle ({n} nodes){ok}",
-    "ok": " — M_y = M_D at every φ, the equation of motion read backwards",
+    "ok": " — M_y = {ref} at every φ, the equation of motion read backwards (the closure check)",
     "bad": " — NOT round-off: check the loads",
-    "mean": "cycle mean of M_y: {m} N·m (M_D = {d} N·m)",
+    "mean": "cycle mean of M_y: {m} N·m ({ref} = {d} N·m)",
+    "groups": ("M_y of the Assur groups, without the first group's inertia: from {lo} to {hi} "
+               "N·m over the cycle; M_y = M_y,gr + J_I·ε"),
     "moments": "Balancing moment M_y at the report angles [N·m]",
     "kin": "kinetostatics", "zhuk": "Zhukovsky's lever", "power": "power balance",
+    "grp": "Assur groups",
     "joints": "Joint reactions at φ = {a}° (R_ij: the force of link i on link j)",
     "sc": "Slider-crank quantities at φ = {a}°",
     "joint": "joint", "point": "point", "by": "by", "on": "on", "angle": "angle",
@@ -42,8 +45,13 @@ T = words("forces", {
               "+x counter-clockwise. M_y is the moment the drive applies to the crank, "
               "positive in the direction of rotation, found three ways: kinetostatics, "
               "Zhukovsky's lever (Σ F·v_q + Σ M·ω_q with the inertia loads, M_y = −that "
-              "sum) and the power balance (M_y = J·ε + ½·J′·ω² − Σ F·v_q − Σ M·ω_q). "
-              "Conventions: docs/forces.md."),
+              "sum) and the power balance (M_y = J·ε + ½·J′·ω² − Σ F·v_q − Σ M·ω_q). With the "
+              "true motion and the first group's inertia M_y equals the constant moment of the "
+              "cycle condition at every φ: that is the check of the calculation. The moment the "
+              "crank delivers to the Assur groups, M_y,gr = M_y + (−J_I·ε), varies over the "
+              "cycle; the flywheel's inertia torque −J_I·ε makes up the difference. Zhukovsky's "
+              "lever of the course (the groups' loads, the crank turning uniformly) gives "
+              "M_y,gr."),
     "positions": "Reactions |R_ij| [N] and M_y [N·m] at the standard positions",
     "at": "At φ = {a}°",
     "frame": ("crank-pin load {P} N (F_T = {T} N, F_R = {R} N); main bearing {B} N; "
@@ -77,8 +85,8 @@ def force_columns(results) -> dict[str, np.ndarray]:
     if fa is None:
         cols["M_y_power"] = f.M_y_power
         return cols
-    cols.update({"M_y": fa.balancing_moment, "M_y_zhukovsky": f.M_y_zhukovsky,
-                 "M_y_power": f.M_y_power})
+    cols.update({"M_y": fa.balancing_moment, "M_y_groups": fa.balancing_moment_groups,
+                 "M_y_zhukovsky": f.M_y_zhukovsky, "M_y_power": f.M_y_power})
     for key, r in f.joints.items():
         cols[f"Rx_{key}"], cols[f"Ry_{key}"], cols[f"R_{key}"] = r.x, r.y, r.magnitude
     for s, sc in f.slider_crank.items():
@@ -149,16 +157,30 @@ def summary_lines(results, lang: str = "en") -> list[str]:
         lines.append(t["motion_true"].format(J=_g(results.motion.J_I, 6)))
     else:
         lines.append(t["motion_steady"].format(w=_g(float(f.omega[0]), 6)))
-    ok = t["ok"] if f.closure <= CLOSURE_OK else t["bad"]
     n = results.phi.size
-    ref = symbol("driving_moment" if results.energy.balance == "driving" else "balancing_moment",
-                 lang)
+    ref = symbol("driving_moment" if results.energy.balance == "driving" else "M_C", lang)
+    ok = t["ok"].format(ref=ref) if f.closure <= CLOSURE_OK else t["bad"]
     if f.closure_reference == "M_D":
         lines.append(t["closure"].format(ref=ref, c=f"{f.closure:.2e}", n=n, ok=ok))
     else:
-        lines.append(t["closure_J"].format(c=f"{f.closure:.2e}", n=n, ok=ok))
-    lines.append(t["mean"].format(m=_g(f.M_y_cycle_mean, 8), d=_g(s.balancing_moment, 8)))
+        lines.append(t["closure_J"].format(ref=ref, c=f"{f.closure:.2e}", n=n, ok=ok))
+    lines.append(t["mean"].format(m=_g(f.M_y_cycle_mean, 8), ref=ref, d=_g(s.balancing_moment, 8)))
+    if f.analysis is not None and f.motion == "true":
+        grp = f.analysis.balancing_moment_groups
+        lines.append(t["groups"].format(lo=_g(float(np.min(grp)), 6), hi=_g(float(np.max(grp)), 6)))
     return lines
+
+
+def reaction_label(r, lang: str = "en") -> str:
+    """A joint's reaction as the course writes it: R₀₁ (O) — the force of link 0 on link 1 at
+    O (Russian, subscript digits where both links' names are digits); R_01 (O) in English."""
+    pair = f"{r.by}{r.on}" if len(r.by) == 1 and len(r.on) == 1 else f"{r.by},{r.on}"
+    digits = pair.replace(",", "").isdigit()
+    sub = pair.translate(_SUBSCRIPT) if lang == "ru" and digits else f"_{pair}"
+    return f"R{sub} ({r.joint})"
+
+
+_SUBSCRIPT = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
 
 
 def _moment_rows(results) -> list[list[str]]:
@@ -172,7 +194,8 @@ def _moment_rows(results) -> list[list[str]]:
             rows.append([_g(a.phi_deg, 6), _g(float(f.M_y_power[i]), 8)])
         else:
             rows.append([_g(a.phi_deg, 6), _g(float(f.analysis.balancing_moment[i]), 8),
-                         _g(float(f.M_y_zhukovsky[i]), 8), _g(float(f.M_y_power[i]), 8)])
+                         _g(float(f.M_y_zhukovsky[i]), 8), _g(float(f.M_y_power[i]), 8),
+                         _g(float(f.analysis.balancing_moment_groups[i]), 8)])
     return rows
 
 
@@ -192,7 +215,7 @@ def print_forces(results, console, lang: str = "en") -> None:
         console.print(line, markup=False)
     tab = Table(title=t["moments"])
     tab.add_column(_h("φ", unit("deg", lang), lang), justify="right")
-    heads = [t["power"]] if f.analysis is None else [t["kin"], t["zhuk"], t["power"]]
+    heads = [t["power"]] if f.analysis is None else [t["kin"], t["zhuk"], t["power"], t["grp"]]
     for h in heads:
         tab.add_column(h, justify="right")
     for row in _moment_rows(results):
@@ -257,7 +280,7 @@ def add_report_section(b, results, lang: str = "en") -> None:
         table(t["moments"], [deg, t["power"]], _moment_rows(results))
         return
     keys = list(f.joints)
-    header = [t["pos"], t["no"], deg, My] + [f"R {k}" for k in keys]
+    header = [t["pos"], t["no"], deg, My] + [reaction_label(f.joints[k], lang) for k in keys]
     body = []
     for pos in results.position_angles:
         i = results.index_of(pos.phi)
@@ -266,12 +289,12 @@ def add_report_section(b, results, lang: str = "en") -> None:
                      _g(float(fa.balancing_moment[i]), 6)]
                     + [_g(float(fa.joints[k].magnitude[i]), 5) for k in keys])
     table(t["positions"], header, body)
-    table(t["moments"], [deg, t["kin"], t["zhuk"], t["power"]], _moment_rows(results))
+    table(t["moments"], [deg, t["kin"], t["zhuk"], t["power"], t["grp"]], _moment_rows(results))
     N = unit("N", lang)
     for a in results.at:
         i = results.at_index(a.phi_deg)
         b.add(Heading(3, t["at"].format(a=_g(a.phi_deg, 6)).strip()))
-        rows = [[k, r.joint, r.by, r.on, _g(float(r.x[i]), 6), _g(float(r.y[i]), 6),
+        rows = [[reaction_label(r, lang), r.joint, r.by, r.on, _g(float(r.x[i]), 6), _g(float(r.y[i]), 6),
                  _g(float(r.magnitude[i]), 6), _g(math.degrees(float(r.angle[i])), 5)]
                 for k, r in f.joints.items()]
         table(t["joints"].format(a=_g(a.phi_deg, 6)),

@@ -88,6 +88,12 @@ TERMS: dict[str, Term] = {
                          "приведённый движущий момент M_Д", "M_D", "$M_D$"),
     "M_C": _t("M_С", r"$M_С$", "N·m", "reduced moment of the resistance M_C",
               "приведённый момент сил сопротивления M_С", "M_C", "$M_C$"),
+    "cycle_work_driving": _t("A_Д", r"$A_Д$", "J", "work of the driving forces over a cycle A_D",
+                             "работа движущих сил за цикл A_Д", "A_D", "$A_D$"),
+    "resistance_moment": _t("M_С", r"$M_С$", "N·m",
+                            "moment of the resistance M_C (constant, from the cycle condition)",
+                            "приведённый момент сил сопротивления M_С (постоянный, из условия "
+                            "цикла)", "M_C", "$M_C$"),
     "balancing_moment": _t("M_const", r"$M_{const}$", "N·m",
                            "constant moment from the cycle balance",
                            "постоянный момент из условия цикла"),
@@ -340,6 +346,13 @@ TERMS: dict[str, Term] = {
                    "реакция в кинематической паре (сила действия звена i на звено j)"),
     "M_y": _t("M_у", r"$M_у$", "N·m", "balancing moment M_y (kinetostatics)",
               "уравновешивающий момент M_у (кинетостатика)", "M_y"),
+    "M_y_groups": _t("M_угр", r"$M_{угр}$", "N·m",
+                     "balancing moment of the Assur groups M_y,gr (without the first group's "
+                     "inertia)", "уравновешивающий момент групп Ассура M_угр (без инерции первой "
+                     "группы)", "M_y,gr", r"$M_{y,gr}$"),
+    "first_group_torque": _t("−J_I·ε", r"$-J_I\varepsilon$", "N·m",
+                             "inertia torque of the first group (flywheel) −J_I·ε",
+                             "момент сил инерции первой группы (маховика) −J_I·ε"),
     "M_y_zhukovsky": _t("M_у", r"$M_у$", "N·m", "balancing moment M_y by Zhukovsky's lever",
                         "уравновешивающий момент M_у по рычагу Жуковского", "M_y"),
     "M_y_power": _t("M_у", r"$M_у$", "N·m", "balancing moment M_y by the power balance",

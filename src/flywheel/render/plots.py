@@ -567,12 +567,26 @@ def _engine_plots():
     return plots_engine
 
 
+def in_lang(results, lang: str):
+    """``results`` with the case's title and source in ``lang`` (a case may give both
+    languages: io.schema.Text), for the figures' titles; the same object if nothing changes."""
+    from dataclasses import replace
+
+    from flywheel.io.text import in_language
+
+    title, source = in_language(results.title, lang), in_language(results.source, lang)
+    if title == results.title and source == results.source:
+        return results
+    return replace(results, title=title, source=source)
+
+
 def all_figures(results, lang: str = "en"):
     """:func:`figures` and those beyond the worksheet (plots_extra: the energy–mass diagram,
     the time law, and with --transients the start-up and run-down), for one pool of workers."""
     from flywheel.render import plots_extra as px
     from flywheel.render import plots_forces, plots_plans
 
+    results = in_lang(results, lang)     # every title from the case's title in ``lang``
     if results.analysis == "kinematics":     # the kinematic plans only: no force analysis
         return figures(results, lang) + [
             (n, f) for n, f in plots_plans.figures(results, lang,

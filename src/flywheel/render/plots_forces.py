@@ -33,30 +33,54 @@ def figure_reactions(results, lang: str = "en"):
     """|R_ij|(φ) of every joint, one curve each (linkage cases)."""
     fig, ax = fg.figure(fg.WIDE)
     deg = np.degrees(results.phi)
-    for key, r in results.forces.joints.items():
-        ax.plot(deg, r.magnitude, label=f"{tex(f'R_{key}', lang)} {key}")
+    from flywheel.render.forces import reaction_label
+
+    for r in results.forces.joints.values():
+        ax.plot(deg, r.magnitude, label=_reaction_tex(reaction_label(r, lang)))
     ax.set_ylabel(axis("reaction", lang))
-    fg.phi_axis(ax, lang)
+    fg.phi_axis(ax, lang, cycle_deg=results.cycle_deg)
     ax.set_title(fg.title(results, _t(lang, "reactions")))
     fg.legend(ax)            # after the title: a title too wide is broken
     return fig
 
 
+def _reaction_tex(label: str) -> str:
+    """"R₀₁ (O)" / "R_01 (O)" with the subscript typeset (mathtext, no literal underscore)."""
+    sym, _, rest = label.partition(" ")
+    sub = sym[1:].lstrip("_").translate(str.maketrans("₀₁₂₃₄₅₆₇₈₉", "0123456789"))
+    return f"$R_{{{sub}}}$ {rest}"
+
+
 def figure_balancing_moment(results, lang: str = "en"):
-    """M_y(φ) by kinetostatics, Zhukovsky's lever and the power balance (the power balance
-    alone for a tabulated case), and the constant moment of the dynamics: with the true motion
-    the curves lie on that line."""
+    """With the true motion: M_y of the Assur groups over the cycle (what the crank delivers
+    to them), the first group's inertia torque −J_I·ε, and M_y with it — the constant moment
+    of the cycle condition (M_D of a driven machine), the closure check: the flywheel takes up
+    the groups' fluctuation. With the steady motion (ε = 0, the two M_y one): M_y by
+    kinetostatics, Zhukovsky's lever and the power balance. A tabulated case: the power
+    balance alone."""
     f = results.forces
     fig, ax = fg.figure(fg.WIDE)
     deg = np.degrees(results.phi)
     curves = [f.M_y_power]
-    if f.analysis is not None:
+    groups = f.analysis is not None and f.motion == "true"
+    if groups:
+        fa = f.analysis
+        ax.plot(deg, fa.balancing_moment_groups, color="k", linewidth=2.4,
+                label=_typeset("M_y_groups", lang))
+        ax.plot(deg, fa.first_group_torque, color="C2", linestyle="-.", linewidth=1.6,
+                label=_typeset("first_group_torque", lang))
+        ax.plot(deg, fa.balancing_moment, color="C1", linestyle="--", linewidth=1.6,
+                label=_typeset("M_y", lang))
+        curves += [fa.balancing_moment_groups, fa.first_group_torque, fa.balancing_moment]
+    elif f.analysis is not None:
         ax.plot(deg, f.analysis.balancing_moment, color="k", linewidth=2.4, label=_typeset("M_y", lang))
         ax.plot(deg, f.M_y_zhukovsky, color="C1", linestyle="--", linewidth=1.6,
                 label=_typeset("M_y_zhukovsky", lang))
         curves += [f.analysis.balancing_moment, f.M_y_zhukovsky]
-    ax.plot(deg, f.M_y_power, color="C0", linestyle=":", linewidth=1.8, label=_typeset("M_y_power", lang))
-    key = "driving_moment" if results.energy.balance == "driving" else "balancing_moment"
+    if not groups:
+        ax.plot(deg, f.M_y_power, color="C0", linestyle=":", linewidth=1.8,
+                label=_typeset("M_y_power", lang))
+    key = "driving_moment" if results.energy.balance == "driving" else "M_C"
     ax.axhline(f.M_const, color="C3", linewidth=0.9,
                label=_t(lang, "M_const", s=tex(key, lang), v=f.M_const, u=unit_of(key, lang)))
     # limits: 0, M_const and the curves; a span of round-off only (the true motion: M_y = M_D)
@@ -70,8 +94,8 @@ def figure_balancing_moment(results, lang: str = "en"):
     pad = 0.08 * (hi - lo)
     ax.set_ylim(lo - pad, hi + pad)
     ax.set_ylabel(axis("M_y", lang))
-    fg.phi_axis(ax, lang)
-    what = (_t(lang, "moment") if f.motion == "true"
+    fg.phi_axis(ax, lang, cycle_deg=results.cycle_deg)
+    what = (_t(lang, "moment_groups") if groups else _t(lang, "moment") if f.motion == "true"
             else _t(lang, "moment_steady", w=float(f.omega[0])))
     ax.set_title(fg.title(results, what))
     fg.legend(ax)            # after the title: a title too wide is broken

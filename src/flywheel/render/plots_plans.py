@@ -55,7 +55,7 @@ _TEXT = words("plots_plans", {
     "lever_My": "M_y = −Σ/ω = {m} N·m (kinetostatics: {k} N·m)",
     "lever_Py": "P_y = M_y/l₁ = {p} N at the crank pin",
     "couple": "{n} on link {l}: M·ω_i = {m} N·m · {w} rad/s = {p} W",
-    "moment": "{n}: h = {h} mm, F·h = {p} W",
+    "moment": "{n}: h = {h} mm, F·h·μᵥ = {p} W",
     "d_c": "dead centres",
     "position_k": "positions 0 … {n}",
     "crank_circle": "path of the crank pin",

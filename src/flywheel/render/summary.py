@@ -96,14 +96,23 @@ def print_summary(results, console=None, lang: str = "en") -> None:
 
     from flywheel.io.text import cut_end   # a long title or source cut with «…» (issue 23)
 
-    console.print(f"[bold]{cut_end(results.title)}[/bold]"
-                  + (f"  ({cut_end(results.source)})" if results.source else ""))
+    from flywheel.io.text import in_language
+
+    title, source = in_language(results.title, lang), in_language(results.source, lang)
+    console.print(f"[bold]{escape(cut_end(title))}[/bold]"
+                  + (f"  ({escape(cut_end(source))})" if source else ""))
     tab = Table(title=t["title_main"])
     tab.add_column(t["quantity"])
     tab.add_column(t["value"], justify="right")
     tab.add_column(t["unit"])
-    for key in ("crank_length", "omega_mean", "cycle_work_resistance", "driving_moment",
-                "J_II_mean", "delta_T_max"):
+    from flywheel.render.document import cycle_balance
+
+    bal = cycle_balance(results)            # A_С, M_Д of a driven machine; A_Д, M_С of an engine
+    for key in ("crank_length", "omega_mean"):
+        tab.add_row(nm.name(key, lang), _g(getattr(s, key)), u(key))
+    tab.add_row(nm.name(bal.keys[0], lang), _g(bal.work), u(bal.keys[0]))
+    tab.add_row(nm.name(bal.keys[2], lang), _g(bal.moment), u(bal.keys[2]))
+    for key in ("J_II_mean", "delta_T_max"):
         tab.add_row(nm.name(key, lang), _g(getattr(s, key)), u(key))
     tab.add_row(f"{nm.symbol('dT_I', lang)} max / min", f"{at('delta_T_I_max')} / {at('delta_T_I_min')}",
                 u("dT_I"))
@@ -166,5 +175,4 @@ def print_summary(results, console=None, lang: str = "en") -> None:
     print_forces(results, console, lang)            # the force analysis (render/forces.py)
     for line in time_domain_lines(s.time_domain, lang):
         console.print(line, markup=False)
-    for w in results.warnings:
-        console.print(f"[yellow]{t['warning']}:[/yellow] {escape(nm.message(w, lang))}")
+    # the warnings: once, on stderr, by the command (cli.options.warn), not here on stdout

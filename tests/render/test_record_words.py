@@ -1,0 +1,206 @@
+"""The Russian записка speaks Russian (issue 28): every bundled case's record (run, task2,
+aggregate, duty-cycle) as md and html has no developer text — no `docs/` path, no ASCII arrow
+"->", no Latin word but the symbols, the case's own names and the sources — and says the cycle
+condition in the machine's own words: a driven machine finds M_Д from A_С, an engine M_С from
+A_Д. The records are built from the results with every figure's name (their captions), without
+drawing the figures."""
+from __future__ import annotations
+
+import re
+from pathlib import Path
+
+import pytest
+
+from flywheel.io.text import in_language
+from flywheel.io.toml import read_toml
+from flywheel.render.report import markdown
+from flywheel.render.report_formats import html
+
+CASES = Path(__file__).resolve().parents[2] / "cases"
+RUN = sorted(p.stem for p in CASES.glob("*.toml")
+             if not p.stem.startswith(("task2", "aggregate", "duty", "variants")))
+OTHER = sorted(p.stem for p in CASES.glob("*.toml") if p.stem.startswith(("task2", "aggregate",
+                                                                            "duty")))
+#: Latin that is a symbol: extremes, Roman numerals of the groups, the Assur groups' kinds, and
+#: the values a case file takes that a warning names (the interpolations)
+SYMBOLS = {"max", "min", "II", "III", "RRR", "RRP", "RPR", "pchip", "linear", "natural", "spline",
+           "periodic"}
+#: a Latin word of three letters or more standing alone (not part of a symbol like v_qA, J_II)
+WORD = re.compile(r"(?<![\w_/\\])[A-Za-z]{3,}(?![\w_])")
+
+
+def _user_words(data) -> set[str]:
+    """The Latin words of the case's own values (names of links, loads, rotors, the first
+    group's parts, interpolations): the user's, kept as written."""
+    out: set[str] = set()
+    if isinstance(data, dict):
+        for k, v in data.items():
+            if k not in ("title", "source"):
+                out |= _user_words(v)
+    elif isinstance(data, list):
+        for v in data:
+            out |= _user_words(v)
+    elif isinstance(data, str):
+        out |= set(re.findall(r"[A-Za-z]+", data))
+    for k in (data if isinstance(data, dict) else {}):
+        if isinstance(data[k], (int, float, dict)) and k not in ("title", "source"):
+            out |= set(re.findall(r"[A-Za-z]+", k))          # a table keyed by names
+    return out
+
+
+def _latin(md: str, source: str, allowed: set[str]) -> set[str]:
+    words = set()
+    for line in md.replace(source, "").splitlines():
+        if line.startswith(("$$", "![")) or re.match(r"^- \[\d+\] ", line):   # formulas, sources
+            continue
+        line = re.sub(r"\$[^$]*\$", "", line)                                # inline math
+        words |= set(WORD.findall(line)) - allowed
+    return words
+
+
+def _text_of_html(page: str) -> str:
+    page = re.sub(r"(?s)<(style|script)\b.*?</\1>", "", page)
+    page = re.sub(r"(?s)<!--.*?-->", "", page)
+    return re.sub(r"<[^>]+>", " ", page)
+
+
+def _check(doc, case_path: Path, source: str) -> None:
+    md = markdown(doc)
+    page = _text_of_html(html(doc))
+    for text in (md, page):
+        assert "docs/" not in text and "->" not in text, [
+            ln for ln in text.splitlines() if "docs/" in ln or "->" in ln]
+    left = _latin(md, source, SYMBOLS | _user_words(read_toml(case_path)))
+    assert not left, left
+
+
+def _run_document(name: str, lang: str = "ru"):
+    from flywheel.cases.run import load_case
+    from flywheel.dynamics.pipeline import analyze
+    from flywheel.render.document import build_document
+    from flywheel.render.plots import all_figures
+
+    case = load_case(CASES / f"{name}.toml")
+    res = analyze(case, n_points=360)
+    return case, res, build_document(res, lang, [f for f, _ in all_figures(res, lang)], case=case)
+
+
+@pytest.mark.parametrize("name", RUN)
+def test_a_russian_run_record_has_no_developer_text(name):
+    case, _, doc = _run_document(name)
+    assert doc.title == in_language(case.title, "ru") and re.search("[а-я]", doc.title)
+    _check(doc, CASES / f"{name}.toml", in_language(case.source, "ru"))
+
+
+def _other_document(name: str, lang: str = "ru"):
+    p = CASES / f"{name}.toml"
+    if name.startswith("task2"):
+        from flywheel.cases.task2 import load_task2_case, solve_case
+        from flywheel.render.report_task2 import build_task2_document
+
+        c = load_task2_case(p)
+        return c, build_task2_document(solve_case(c, str(p)), in_language(c.title, lang),
+                                       in_language(c.source, lang), lang, "task2.png")
+    if name.startswith("aggregate"):
+        from flywheel.cases.aggregate import load_aggregate_case, to_model
+        from flywheel.elastic.model import analyze
+        from flywheel.render.report_aggregate import FIGURE, build_aggregate_document
+
+        c = load_aggregate_case(p)
+        r = analyze(*to_model(c, str(p)))
+        return c, build_aggregate_document(r, in_language(c.title, lang),
+                                           in_language(c.source, lang), lang, FIGURE)
+    from flywheel.cases.duty_cycle import load_duty_case, solve_case
+    from flywheel.render.report_duty_cycle import build_duty_cycle_document
+
+    c = load_duty_case(p)
+    return c, build_duty_cycle_document(solve_case(c, str(p)), in_language(c.title, lang),
+                                        in_language(c.source, lang), lang)
+
+
+@pytest.mark.parametrize("name", OTHER)
+def test_a_russian_task2_aggregate_duty_record_has_no_developer_text(name):
+    c, doc = _other_document(name)
+    _check(doc, CASES / f"{name}.toml", in_language(c.source, "ru"))
+
+
+def test_every_bundled_case_gives_its_title_and_source_in_both_languages():
+    """title and source of every case kind are { ru = "…", en = "…" } tables (io.text.Text),
+    the Russian in Cyrillic; a case that has no source has none."""
+    from flywheel.io.text import Text
+
+    for p in sorted(CASES.glob("*.toml")):
+        if p.stem.startswith("variants"):
+            continue            # templates: their sheets take the title as a string
+        data = read_toml(p)
+        for key in ("title", "source"):
+            if key == "source" and key not in data:
+                continue
+            v = data[key]
+            assert isinstance(v, dict) and set(v) == {"ru", "en"}, (p.name, key)
+            assert re.search("[А-Яа-яЁё]", v["ru"]) and v["ru"] != v["en"], (p.name, key)
+        loader = _loader(p.stem)
+        case = loader(p)
+        assert isinstance(case.title, Text) and case.title.ru == data["title"]["ru"]
+        assert str(case.title) == data["title"]["en"]
+
+
+def _loader(stem: str):
+    if stem.startswith("task2"):
+        from flywheel.cases.task2 import load_task2_case as load
+    elif stem.startswith("aggregate"):
+        from flywheel.cases.aggregate import load_aggregate_case as load
+    elif stem.startswith("duty"):
+        from flywheel.cases.duty_cycle import load_duty_case as load
+    else:
+        from flywheel.cases.run import load_case as load
+    return load
+
+
+def test_a_plain_string_title_is_the_same_in_both_languages():
+    from flywheel.cases.run import parse_case
+
+    data = read_toml(CASES / "fourbar.toml")
+    data["title"] = "Четырёхзвенник 4-bar"
+    case = parse_case(data)
+    assert in_language(case.title, "ru") == in_language(case.title, "en") == "Четырёхзвенник 4-bar"
+
+
+@pytest.mark.parametrize("name, known, found", [
+    ("compressor", ("A_С", "M_С"), "M_Д"),          # a driven machine: M_Д from A_С
+    ("engine_4stroke", ("A_Д", "M_Д"), "M_С"),      # an engine: M_С from A_Д
+])
+def test_the_cycle_condition_speaks_of_the_machine(name, known, found):
+    """The energy section's sentence, the summary's rows and the force section follow
+    machine.balance; one sign rule stated once; no code symbol (M_const) anywhere."""
+    _, res, doc = _run_document(name)
+    md = markdown(doc)
+    A, M = known
+    sentence = next(ln for ln in md.splitlines() if ln.startswith(f"- {A} = ∮ {M} dφ"))
+    assert f"{found} = −{A}/Φ" in sentence and "условие цикла" in sentence
+    assert md.count("Правило знаков") == 1 and "M_const" not in md and "M_{const}" not in md
+    assert f"M_у = {found} при каждом φ" in md
+    # the value is the result's: M_Д of a compressor, M_С (negative) of an engine
+    M_found = res.scalars.driving_moment if found == "M_Д" else res.scalars.balancing_moment
+    assert (M_found > 0) == (found == "M_Д")
+    en = markdown(_run_document(name, "en")[2])
+    A_en, M_en = (a.replace("Д", "D").replace("С", "C") for a in known)
+    assert f"- {A_en} = ∮ {M_en} dφ" in en and "M_const" not in en
+
+
+def test_the_summary_rows_follow_the_balance():
+    """The terminal summary of an engine: A_Д (positive) and M_С (negative), not A_С and M_Д."""
+    import io
+
+    from rich.console import Console
+
+    from flywheel.render.summary import print_summary
+
+    _, res, _ = _run_document("engine_4stroke")
+    buf = io.StringIO()
+    print_summary(res, Console(file=buf, width=200), "ru")
+    out = buf.getvalue()
+    assert "работа движущих сил за цикл A_Д" in out and "M_С (постоянный" in out
+    assert "работа сил сопротивления за цикл A_С" not in out
+    assert "приведённый движущий момент M_Д" not in out
+    assert res.title.ru in out                      # the Russian title in a Russian summary
