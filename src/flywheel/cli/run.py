@@ -14,7 +14,7 @@ from typing import Optional
 import typer
 
 from flywheel.cli.guard import _guard, check_lang, choice, fail
-from flywheel.cli.options import CsvStyle, Json, Lang, Reports, note, warn
+from flywheel.cli.options import CsvStyle, Group, Json, Lang, Reports, Student, Teacher, note, warn
 from flywheel.errors import Notice
 
 
@@ -71,10 +71,21 @@ def run_command(
     figure_format: str = typer.Option("png", "--figure-format", help="Format of plots/*: png, svg "
                                       "or pdf (svg, pdf: written beside the PNGs the reports embed)."),
     dpi: int = typer.Option(120, "--dpi", help="Resolution of the plots [dots per inch], 50…600."),
+    student: Student = None,
+    group: Group = None,
+    teacher: Teacher = None,
 ) -> None:
     """Run the whole dynamic analysis of a case; write summary.json, table.csv, positions.csv,
     forces.csv, forces_positions.csv, report.md and plots/*.png to the output folder."""
     check_lang(lang)
+    names = dict(student=student, group=group, teacher=teacher)
+    from flywheel.io.schema import MAX_TEXT
+
+    for option, value in names.items():
+        if value is not None and len(value) > MAX_TEXT:
+            fail(Notice.of(
+                "option_text_too_long", "--{option}: {length} characters (allowed: at most "
+                "{most})", option=option, length=len(value), most=MAX_TEXT))
     from flywheel.render.csvfmt import STYLES, restyle
 
     if csv_style not in STYLES:
@@ -137,7 +148,11 @@ def run_command(
         from flywheel.render.document import build_document
         from flywheel.render.report_formats import write_reports
 
-        doc = build_document(results, lang, pngs, case=c)
+        from flywheel.render.blocks import TitlePage
+        from flywheel.render.numbers import typeset
+
+        doc = typeset(lang, build_document, results, lang, pngs, case=c)
+        doc.front = TitlePage.of(c.document, results.title, **names)
         write_reports(doc, folder, formats, folder / "plots" if pngs else None)
 
     notes: list[str] = []
@@ -151,9 +166,10 @@ def run_command(
     if as_json:
         sys.stdout.write(text_json)
     else:
+        from flywheel.render.numbers import typeset
         from flywheel.render.summary import print_summary
 
-        print_summary(results, lang=lang)
+        typeset(lang, print_summary, results, lang=lang)
         typer.echo(f"{prefix('written', lang)}: {out}/ (summary.json, table.csv, "
                    "positions.csv, forces.csv, forces_positions.csv, "
                    + ", ".join(f"report.{f}" for f in dict.fromkeys(formats))

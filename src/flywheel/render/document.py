@@ -279,8 +279,8 @@ def build_document(results, lang: str = "en", plots: list[str] | None = None,
                             A=g(s.cycle_work_resistance, 6), uJ=u("cycle_work_resistance"),
                             M=g(s.driving_moment, 6), uM=u("driving_moment"),
                             cycle=g(s.cycle_deg, 6))[2:],
-        t["extremes"].format(dT=sym("dT_I"), vmax=g(s.delta_T_I_max, 6), amax=f"{s.phi_delta_T_I_max_deg:.2f}",
-                             vmin=g(s.delta_T_I_min, 6), amin=f"{s.phi_delta_T_I_min_deg:.2f}",
+        t["extremes"].format(dT=sym("dT_I"), vmax=g(s.delta_T_I_max, 6), amax=_number(s.phi_delta_T_I_max_deg, spec=".2f", zero=None, nonfinite="show"),
+                             vmin=g(s.delta_T_I_min, 6), amin=_number(s.phi_delta_T_I_min_deg, spec=".2f", zero=None, nonfinite="show"),
                              span=sym("delta_T_max"), v=g(s.delta_T_max, 6), uJ=u("delta_T_max"))[2:],
     )))
     energy = ("A_D", "A_C", "A", "T_II", "dT_I", "omega", "epsilon")
@@ -387,8 +387,8 @@ def _sizing_lines(s, t: dict, lang: str) -> list[str]:
                                   dims=dims(r, ("D_mean", "thickness", "width", "mass", "rim_speed"),
                                             (4, 4, 4, 5, 4)))] if s.rim_designed else []),
         t["omega_extremes"].format(wmax=sym("omega_max"), vmax=g(s.omega_max, 6),
-                                   amax=f"{s.phi_omega_max_deg:.2f}", wmin=sym("omega_min"),
-                                   vmin=g(s.omega_min, 6), amin=f"{s.phi_omega_min_deg:.2f}",
+                                   amax=_number(s.phi_omega_max_deg, spec=".2f", zero=None, nonfinite="show"), wmin=sym("omega_min"),
+                                   vmin=g(s.omega_min, 6), amin=_number(s.phi_omega_min_deg, spec=".2f", zero=None, nonfinite="show"),
                                    uw=u("omega_max"), T=nm.name("cycle_time", lang),
                                    v=g(s.cycle_time, 6), uT=u("cycle_time")),
     ]
@@ -478,7 +478,8 @@ def _time_lines(td, s, t: dict, lang: str = "en") -> list[str]:
     TimeDomainResult, ``s`` the headline scalars."""
     v, st, rd = td.verification, td.startup, td.rundown
     lines = [
-        "- " + t["verify"].format(n=v.cycles, rep=f"{v.repeat_error:.1e}", dev=f"{v.max_deviation:.1e}"),
+        "- " + t["verify"].format(n=v.cycles, rep=_number(v.repeat_error, spec=".1e", zero=None, nonfinite="show"),
+                                  dev=_number(v.max_deviation, spec=".1e", zero=None, nonfinite="show")),
         "- " + t["period"].format(T=g(v.period, 6), Te=g(s.cycle_time, 6)),
     ]
     if not st.computed:
@@ -488,7 +489,7 @@ def _time_lines(td, s, t: dict, lang: str = "en") -> list[str]:
                                           ws=g(st.omega_final_predicted, 6),
                                           tau=g(st.time_constant, 3)))
     if st.stalled:
-        lines.append("- " + t["st_stall"].format(a=f"{st.stall_angle_deg:.1f}"))
+        lines.append("- " + t["st_stall"].format(a=_number(st.stall_angle_deg, spec=".1f", zero=None, nonfinite="show")))
     elif st.converged and st.time_to_steady is not None:
         lines.append("- " + t["st_ok"].format(t=g(st.time_to_steady, 4), n=st.cycles_to_steady,
                                               w=g(st.omega_mean_steady, 6)))
@@ -503,5 +504,5 @@ def _time_lines(td, s, t: dict, lang: str = "en") -> list[str]:
 def _rundown_line(rd, t: dict, lang: str = "en") -> str:
     if rd.reason:                # English: the fixed line; Russian: the reason itself
         return "- " + t["rd_never"].format(reason=nm.message(rd.reason, lang))
-    return "- " + t["rd"].format(t=g(rd.time, 4), rev=f"{rd.angle_deg / 360:.2f}") + (
+    return "- " + t["rd"].format(t=g(rd.time, 4), rev=_number(rd.angle_deg / 360, spec=".2f", zero=None, nonfinite="show")) + (
         "" if rd.stopped else t["rd_not"])

@@ -154,9 +154,9 @@ def summary_lines(results, lang: str = "en") -> list[str]:
     ref = symbol("driving_moment" if results.energy.balance == "driving" else "balancing_moment",
                  lang)
     if f.closure_reference == "M_D":
-        lines.append(t["closure"].format(ref=ref, c=f"{f.closure:.2e}", n=n, ok=ok))
+        lines.append(t["closure"].format(ref=ref, c=_number(f.closure, spec=".2e", zero=None, nonfinite="show"), n=n, ok=ok))
     else:
-        lines.append(t["closure_J"].format(c=f"{f.closure:.2e}", n=n, ok=ok))
+        lines.append(t["closure_J"].format(c=_number(f.closure, spec=".2e", zero=None, nonfinite="show"), n=n, ok=ok))
     lines.append(t["mean"].format(m=_g(f.M_y_cycle_mean, 8), d=_g(s.balancing_moment, 8)))
     return lines
 
