@@ -79,15 +79,16 @@ def aggregate_command(
 
             write_plot(plot, lambda tmp: draw(result, tmp, c.title, lang))
         if out is not None:
-            written = _write_out(out, result, formats, c.title, c.source, lang)
+            written = _write_out(out, result, formats, c.title, c.source, lang, c.document)
     if json:
         from flywheel.render.aggregate import to_json
 
         typer.echo(to_json(result, c.title, c.source))
     else:
         from flywheel.render.aggregate import print_summary
+        from flywheel.render.numbers import typeset
 
-        print_summary(result, c.title, c.source, lang=lang, modes=modes)
+        typeset(lang, print_summary, result, c.title, c.source, lang=lang, modes=modes)
         from flywheel.render import nomenclature as nm
 
         if plot is not None:
@@ -99,11 +100,14 @@ def aggregate_command(
                        f"({', '.join(written)})")
 
 
-def _write_out(out: Path, result, formats, title: str, source: str, lang: str) -> list[str]:
+def _write_out(out: Path, result, formats, title: str, source: str, lang: str,
+               document=None) -> list[str]:
     """The --out folder (render/report_folder.py): summary.json, plots/aggregate.png (with a
     motor), the report. Notes of a rerun go to stderr; returns the names written."""
     from flywheel.render.aggregate import plot as draw
     from flywheel.render.aggregate import to_json
+    from flywheel.render.blocks import front
+    from flywheel.render.numbers import typeset
     from flywheel.render.report_aggregate import FIGURE, build_aggregate_document
     from flywheel.render.report_folder import write_report_folder
 
@@ -111,7 +115,8 @@ def _write_out(out: Path, result, formats, title: str, source: str, lang: str) -
         out, "aggregate", to_json(result, title, source) + "\n",
         lambda path: draw(result, path, title, lang),
         FIGURE if result.startup is not None else None,
-        lambda fig: build_aggregate_document(result, title, source, lang, fig), formats)
+        lambda fig: front(typeset(lang, build_aggregate_document, result, title, source, lang,
+                                  fig), document), formats)
     for n in notes:
         note(n)
     return names

@@ -38,13 +38,16 @@ def duty_cycle_command(
     written = None
     if out is not None:
         from flywheel.render.duty_cycle import to_json
+        from flywheel.render.blocks import front
+        from flywheel.render.numbers import typeset
         from flywheel.render.report_duty_cycle import build_duty_cycle_document
         from flywheel.render.report_folder import write_report_folder
 
         written, notes = guard(write_report_folder, out, "duty-cycle",
                                to_json(result, c.title, c.source) + "\n", None, None,
-                               lambda fig: build_duty_cycle_document(result, c.title, c.source,
-                                                                     lang), formats)
+                               lambda fig: front(typeset(lang, build_duty_cycle_document, result,
+                                                         c.title, c.source, lang), c.document),
+                               formats)
         for n in notes:
             note(n)
     for w in result.warnings:
@@ -55,7 +58,8 @@ def duty_cycle_command(
         typer.echo(to_json(result, c.title, c.source))
     else:
         from flywheel.render.duty_cycle import print_summary
+        from flywheel.render.numbers import typeset
 
-        print_summary(result, c.title, c.source, lang=lang)
+        typeset(lang, print_summary, result, c.title, c.source, lang=lang)
         if written is not None:
             typer.echo(f"{prefix('written', lang)}: {out}/ ({', '.join(written)})")

@@ -84,8 +84,9 @@ def _line(kind: str, text: str) -> None:
     if state.quiet:
         return
     from flywheel.render.nomenclature import message, prefix
+    from flywheel.render.numbers import typeset
 
-    sys.stderr.write(f"{prefix(kind, state.lang)}: {message(text, state.lang)}\n")
+    sys.stderr.write(f"{prefix(kind, state.lang)}: {typeset(state.lang, message, text, state.lang)}\n")
 
 
 def note(text: str) -> None:

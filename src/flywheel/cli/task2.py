@@ -103,9 +103,11 @@ def task2_command(
         typer.echo(to_json(result, job.doc_title, job.doc_source))
         return
     from flywheel.render import nomenclature as nm
+    from flywheel.render.numbers import typeset
     from flywheel.render.task2 import print_summary
 
-    print_summary(result, job.title, job.source, lang=lang, motion=epsilon or bool(at))
+    typeset(lang, print_summary, result, job.title, job.source, lang=lang,
+            motion=epsilon or bool(at))
     if plot is not None:
         typer.echo(nm.name("plot_written", lang, path=plot))
     if out is not None:
@@ -125,6 +127,7 @@ class _Job:
     source: str
     doc_title: str
     doc_source: str
+    document: object = None         # the case's [document] (the title page), if a case
 
 
 def _from_case(case: Path, at, profile, given) -> _Job:
@@ -145,7 +148,7 @@ def _from_case(case: Path, at, profile, given) -> _Job:
             "t2_at_diagram", "--at: {case} gives a diagram by areas, which has no moments between "
             "its crossings: ε, ω and t at an angle need graphs", case=str(case)))
     return _Job(lambda: solve_case(c, str(case), at_deg=at or ()), case_numbers(c.model_dump()),
-                case, c.title, c.source, c.title, c.source)
+                case, c.title, c.source, c.title, c.source, c.document)
 
 
 def _from_options(profile, given, v: dict, at, lang: str) -> _Job:
@@ -203,6 +206,8 @@ def _write_out(out: Path, result, formats, job: _Job, lang: str):
     """The --out folder (render/report_folder.py): summary.json, plots/task2.png, the report.
     Notes of a rerun go to stderr; returns the names written."""
     from flywheel.render.report_folder import write_report_folder
+    from flywheel.render.blocks import front
+    from flywheel.render.numbers import typeset
     from flywheel.render.report_task2 import FIGURE, build_task2_document
     from flywheel.render.task2 import plot as draw
     from flywheel.render.task2 import to_json
@@ -210,7 +215,8 @@ def _write_out(out: Path, result, formats, job: _Job, lang: str):
     names, notes = write_report_folder(
         out, "task2", to_json(result, job.doc_title, job.doc_source) + "\n",
         lambda path: draw(result, path, job.title, lang), FIGURE,
-        lambda fig: build_task2_document(result, job.title, job.source, lang, fig), formats)
+        lambda fig: front(typeset(lang, build_task2_document, result, job.title, job.source, lang,
+                                  fig), job.document), formats)
     for n in notes:
         note(n)
     return names

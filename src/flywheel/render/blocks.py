@@ -111,3 +111,10 @@ class Document:
         if source:
             doc.blocks.append(Paragraph(f"{source_word}: {source}"))
         return doc
+
+
+def front(doc: Document, spec, **given: str | None) -> Document:
+    """``doc`` with its title page from the case's ``[document]`` ``spec`` (None: blanks) and
+    the options ``given``; the machine is the document's title."""
+    doc.front = TitlePage.of(spec, doc.title, **given)
+    return doc

@@ -127,6 +127,12 @@ def g(x, digits: int = 5) -> str:
     return _number(x, digits, zero=1e-13, nonfinite="dash")
 
 
+def gi(x, digits: int = 6) -> str:
+    """An input of the case as the report prints it: as :func:`g`; in a Russian document with
+    the digits it was given (render/numbers.py)."""
+    return _number(x, digits, zero=1e-13, nonfinite="dash", given=True)
+
+
 def _figure_caption(file: str, lang: str) -> str:
     t = T[lang]["fig"]
     stem = file.rsplit(".", 1)[0]
@@ -217,9 +223,9 @@ def build_document(results, lang: str = "en", plots: list[str] | None = None,
     ]
     if case is not None:
         for k, v in case.machine.first_group.items():
-            rows.append([f"{sym('J_first_group')}: {k}", g(v, 6), u("J_first_group")])
+            rows.append([f"{sym('J_first_group')}: {k}", gi(v, 6), u("J_first_group")])
         rows.append([t["balance_row"], t["balance_word"][case.machine.balance], ""])
-        rows.append([f"{sym('gravity')} (x, y)", ", ".join(g(x, 4) for x in case.machine.gravity), u("gravity")])
+        rows.append([f"{sym('gravity')} (x, y)", ", ".join(gi(x, 4) for x in case.machine.gravity), u("gravity")])
     rows += [
         [nm.name("flywheel_material", lang), nm.material(s.flywheel_material, lang), ""],
         [f"{sym('flywheel_material_density')}", g(s.flywheel_material_density, 6),
@@ -402,32 +408,32 @@ def _input_of_case(b: _Builder, case, t: dict, lang: str) -> None:
         return nm.unit_of(key, lang)
 
     ll, ga, go = nm.symbol("link_length", lang), nm.symbol("guide_angle", lang), nm.symbol("guide_offset", lang)
-    rows = [[f"{nm.symbol('crank_length', lang)} ({t['link']} {case.crank.name})", g(case.crank_length, 6),
+    rows = [[f"{nm.symbol('crank_length', lang)} ({t['link']} {case.crank.name})", gi(case.crank_length, 6),
              u("crank_length")]]
     for d in case.dyads:
         if isinstance(d, RRPSpec):
-            rows.append([f"{ll} ({t['link']} {d.rod})", g(case.rod_length(d), 6), u("link_length")])
-            rows.append([f"{ga} ({t['link']} {d.slider})", g(d.guide.angle_deg, 6), u("guide_angle")])
+            rows.append([f"{ll} ({t['link']} {d.rod})", gi(case.rod_length(d), 6), u("link_length")])
+            rows.append([f"{ga} ({t['link']} {d.slider})", gi(d.guide.angle_deg, 6), u("guide_angle")])
             if d.guide.offset:
-                rows.append([f"{go} ({t['link']} {d.slider})", g(d.guide.offset, 6), u("guide_offset")])
+                rows.append([f"{go} ({t['link']} {d.slider})", gi(d.guide.offset, 6), u("guide_offset")])
         elif isinstance(d, RRRSpec):
-            rows.append([f"{ll} ({t['link']} {d.link_from})", g(d.length_from, 6), u("link_length")])
-            rows.append([f"{ll} ({t['link']} {d.link_to})", g(d.length_to, 6), u("link_length")])
+            rows.append([f"{ll} ({t['link']} {d.link_from})", gi(d.length_from, 6), u("link_length")])
+            rows.append([f"{ll} ({t['link']} {d.link_to})", gi(d.length_to, 6), u("link_length")])
         elif isinstance(d, RPRSpec) and d.offset:
-            rows.append([f"{go} ({t['link']} {d.rocker})", g(d.offset, 6), u("guide_offset")])
+            rows.append([f"{go} ({t['link']} {d.rocker})", gi(d.offset, 6), u("guide_offset")])
     for name, (x, y) in case.ground.items():
-        rows.append([f"{name} (x, y)", f"{g(x, 6)}, {g(y, 6)}", u("x")])
+        rows.append([f"{name} (x, y)", f"{gi(x, 6)}, {gi(y, 6)}", u("x")])
     b.add(Heading(3, f"1.2. {t['lengths']}"))
     b.table(t["lengths"], [t["qty"], t["val"], t["unit"]], rows)
 
     if case.links:
         b.add(Heading(3, f"1.3. {t['masses']}"))
         b.table(t["masses"], [t["link"], nm.heading("link_mass", lang), nm.heading("J_S", lang), t["centroid"]],
-                [[k, g(v.mass, 6), g(v.J_S, 6), v.centroid or "—"] for k, v in case.links.items()])
+                [[k, gi(v.mass, 6), gi(v.J_S, 6), v.centroid or "—"] for k, v in case.links.items()])
     if case.cylinders:
         b.add(Heading(3, f"1.4. {t['cyl']}"))
         b.table(t["cyl"], [t["name"], t["piston"], nm.heading("bore", lang), nm.heading("p_max", lang), t["head"]],
-                [[c.name, c.piston, g(c.bore, 6), g(c.p_max, 6),
+                [[c.name, c.piston, gi(c.bore, 6), gi(c.p_max, 6),
                   nm.DEAD_CENTRES[c.head][lang == "ru"]] for c in case.cylinders])
         for c in case.cylinders:
             sym_s, sym_p = nm.symbol("s_{cylinder}", lang), nm.symbol("p_rel", lang)
@@ -436,20 +442,20 @@ def _input_of_case(b: _Builder, case, t: dict, lang: str) -> None:
                 names = ("intake", "compression", "expansion", "exhaust")
                 b.table(t["indicator"].format(c=c.name),
                         [sym_s] + [f"{sym_p} {nm.name('engine_' + n, lang)}" for n in names],
-                        [[g(s_, 4)] + [g(getattr(st, n)[k], 4) for n in names]
+                        [[gi(s_, 4)] + [gi(getattr(st, n)[k], 4) for n in names]
                          for k, s_ in enumerate(c.s)])
             elif getattr(c, "diagram", None) is not None:    # one table over the cycle
                 b.table(t["indicator"].format(c=c.name), [sym_s, sym_p],
-                        [[g(s_, 4), g(p_, 4)] for s_, p_ in zip(c.diagram.s, c.diagram.p)])
+                        [[gi(s_, 4), gi(p_, 4)] for s_, p_ in zip(c.diagram.s, c.diagram.p)])
             else:
                 b.table(t["indicator"].format(c=c.name), [sym_s, f"{sym_p} ↑", f"{sym_p} ↓"],
-                        [[g(s_, 4), g(a, 4), g(w, 4)]
+                        [[gi(s_, 4), gi(a, 4), gi(w, 4)]
                          for s_, a, w in zip(c.s, c.towards_head, c.away_from_head)])
     if case.forces or case.couples:
         b.add(Heading(3, f"1.5. {t['forces']}"))
-        rows = [[nm.load_name(f"force {f.name}", lang), f.slider, g(f.magnitude, 6), u("force_magnitude")]
+        rows = [[nm.load_name(f"force {f.name}", lang), f.slider, gi(f.magnitude, 6), u("force_magnitude")]
                 for f in case.forces]
-        rows += [[nm.load_name(f"couple {c.name}", lang), c.link, g(c.moment, 6), u("couple_moment")]
+        rows += [[nm.load_name(f"couple {c.name}", lang), c.link, gi(c.moment, 6), u("couple_moment")]
                  for c in case.couples]
         b.table(t["forces"], [t["name"], t["link"], t["val"], t["unit"]], rows)
 

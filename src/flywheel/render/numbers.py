@@ -46,6 +46,7 @@ pass it as a parameter: differences to remove later, each a visible change of ou
 from __future__ import annotations
 
 import math
+import re
 from contextlib import contextmanager
 from contextvars import ContextVar
 from dataclasses import dataclass
@@ -120,13 +121,18 @@ def _russian(x: float, sig: int, spec: str | None, given: bool, noise: float) ->
     if x == 0 or abs(x) < noise:
         return "0"
     a = abs(x)
-    if spec is not None and spec.endswith("f"):
-        text = format(a, spec)
+    m = _SPEC.fullmatch(spec or "")
+    plus = "+" if m and m["sign"] == "+" and x > 0 else ""
+    if spec is not None and m is None:            # a spec of another kind: as it asks
+        return format(x, spec.replace(",", "").replace("_", "")).replace("-", MINUS).replace(".", ",")
+    if m and m["type"] in ("f", "F"):
+        text = format(a, f".{m['digits'] or 6}f")
+        spec = ".f"
     elif given:
         text = format(Decimal(repr(a)), "f")
     else:
-        if spec is not None:                      # ".6g", ".1e": their digits, capped
-            sig = int(spec.strip(".").rstrip("eEgG") or 6)
+        if m and m["digits"]:                     # ".6g", ".1e": their digits, capped
+            sig = int(m["digits"]) + (m["type"] in ("e", "E"))
         sig = max(1, min(sig, RESULT_SIG))
         if a >= 10.0 ** sig:
             text = f"{a:.0f}"
@@ -139,7 +145,26 @@ def _russian(x: float, sig: int, spec: str | None, given: bool, noise: float) ->
         whole, frac = text, ""
     if text.strip("0.") == "":                    # rounded away entirely
         return "0" if not frac else "0," + frac
-    return (MINUS if x < 0 else "") + _grouped(whole) + ("," + frac if frac else "")
+    return (MINUS if x < 0 else plus) + _grouped(whole) + ("," + frac if frac else "")
+
+
+_SPEC = re.compile(r"(?P<sign>[+ -]?)(?:\.(?P<digits>\d+))?(?P<type>[eEfFgG]?)")
+
+
+class _Typeset(float):
+    """A number a sentence's template formats (``{work:+.1e}``) as :func:`fmt` writes it."""
+
+    def __format__(self, spec: str) -> str:
+        return fmt(float(self), spec=spec or None, zero=None, nonfinite="show")
+
+
+def typeset_params(params: dict) -> dict:
+    """A sentence's parameters with their real numbers written by the policy in force: within
+    ``typography("ru")`` a warning copied into a Russian document has Russian numbers; outside
+    it (stderr, English) the parameters are returned as they are."""
+    if _POLICY.get() is None:
+        return params
+    return {k: _Typeset(v) if isinstance(v, float) else v for k, v in params.items()}
 
 
 def fmt(x, sig: int = 6, *, zero: float | None = 1e-12, spec: str | None = None,

@@ -18,13 +18,13 @@ import io
 import re
 import shutil
 import tempfile
-import zipfile
 from dataclasses import dataclass
 from pathlib import Path
 
 from flywheel.render import mathfmt
 from flywheel.render.document import Bullets, Document, Figure, Formula, Heading, Paragraph, Table
 from flywheel.render.report import CAPTION
+from flywheel.render.report_gost import _fixed_zip
 
 FORMATS = ("md", "html", "pdf", "docx")
 #: a table of more columns than WIDE gets a smaller font; of more than WIDE_PAGE a landscape page
@@ -209,17 +209,6 @@ def pdf(doc: Document, plots_dir: Path | None = None) -> bytes:
 
 
 # -- DOCX -----------------------------------------------------------------------------------------
-def _fixed_zip(data: bytes) -> bytes:
-    """The zip with every entry dated 1980-01-01 (python-docx stamps the current time)."""
-    src = zipfile.ZipFile(io.BytesIO(data))
-    buf = io.BytesIO()
-    with zipfile.ZipFile(buf, "w", zipfile.ZIP_DEFLATED) as dst:
-        for info in src.infolist():
-            dst.writestr(zipfile.ZipInfo(info.filename, date_time=(1980, 1, 1, 0, 0, 0)),
-                         src.read(info.filename), compress_type=zipfile.ZIP_DEFLATED)
-    return buf.getvalue()
-
-
 def docx(doc: Document, plots_dir: Path | None = None) -> bytes:
     """The document as Word (python-docx); formulas as native equations (OMML, mathfmt.omml)."""
     import datetime

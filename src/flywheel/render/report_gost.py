@@ -20,7 +20,9 @@ Heavy imports (typst, docx) inside the functions.
 from __future__ import annotations
 
 import importlib.util
+import io
 import re
+import zipfile
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -264,6 +266,17 @@ def pdf(doc: Document, plots_dir: Path | None = None) -> bytes:
 
 
 # -- DOCX ---------------------------------------------------------------------------------------
+def _fixed_zip(data: bytes) -> bytes:
+    """The zip with every entry dated 1980-01-01 (python-docx stamps the current time)."""
+    src = zipfile.ZipFile(io.BytesIO(data))
+    buf = io.BytesIO()
+    with zipfile.ZipFile(buf, "w", zipfile.ZIP_DEFLATED) as dst:
+        for info in src.infolist():
+            dst.writestr(zipfile.ZipInfo(info.filename, date_time=(1980, 1, 1, 0, 0, 0)),
+                         src.read(info.filename), compress_type=zipfile.ZIP_DEFLATED)
+    return buf.getvalue()
+
+
 _SERIF = "Times New Roman"          # Word's Times; LibreOffice sets it in Liberation Serif
 
 
@@ -326,7 +339,6 @@ def _field(p, instr: str, shown: str) -> None:
 
 def docx(doc: Document, plots_dir: Path | None = None) -> bytes:
     """The Russian записка as Word in the ГОСТ layout (the module's docstring)."""
-    import io
     from xml.sax.saxutils import escape
 
     import docx as pydocx
@@ -335,8 +347,6 @@ def docx(doc: Document, plots_dir: Path | None = None) -> bytes:
     from docx.oxml import parse_xml
     from docx.shared import Cm, Mm, Pt
     from docx.table import _Cell
-
-    from flywheel.render.report_formats import _fixed_zip
 
     g, f = G[doc.lang], _front(doc)
     d = pydocx.Document()
