@@ -337,16 +337,70 @@ def _field(p, instr: str, shown: str) -> None:
                           f'{shown}</w:t></w:r></w:fldSimple>'))
 
 
+_W = 'xmlns:w="http://schemas.openxmlformats.org/wordprocessingml/2006/main"'
+_M = 'xmlns:m="http://schemas.openxmlformats.org/officeDocument/2006/math"'
+
+
+def _r(text: str, bold: bool = False, sub: bool = False, half_points: int | None = None) -> str:
+    """A run of text as WordprocessingML (rPr in the schema's order: b, sz, vertAlign)."""
+    from xml.sax.saxutils import escape
+
+    props = (("<w:b/>" if bold else "") + (f'<w:sz w:val="{half_points}"/><w:szCs w:val="{half_points}"/>'
+                                           if half_points else "")
+             + ('<w:vertAlign w:val="subscript"/>' if sub else ""))
+    return (f"<w:r>{f'<w:rPr>{props}</w:rPr>' if props else ''}"
+            f'<w:t xml:space="preserve">{escape(text)}</w:t></w:r>')
+
+
+def _runs(text: str, bold: bool = False, half_points: int | None = None) -> str:
+    """**bold** runs and the symbols' subscripts (J_II, ΔT_нб) as subscript runs."""
+    return "".join(_r(seg, bold or i % 2 == 1, sub, half_points)
+                   for i, part in enumerate(text.split("**")) if part
+                   for seg, sub in mathfmt.subscripts(part) if seg)
+
+
+def _p(inner: str, style: str | None = None, jc: str | None = None, indent: bool = False,
+       keep: bool = False, single: bool = False) -> str:
+    """A paragraph (pPr in the schema's order: pStyle, keepNext, spacing, ind, jc)."""
+    props = ((f'<w:pStyle w:val="{style}"/>' if style else "") + ("<w:keepNext/>" if keep else "")
+             + ('<w:spacing w:after="0" w:line="240" w:lineRule="auto"/>' if single else "")
+             + ('<w:ind w:firstLine="0"/>' if indent else "") + (f'<w:jc w:val="{jc}"/>' if jc else ""))
+    return f"<w:p>{f'<w:pPr>{props}</w:pPr>' if props else ''}{inner}</w:p>"
+
+
+def _seq(name: str, number: int) -> str:
+    """A caption's number as the Word field SEQ ``name`` (its shown value ``number``)."""
+    return (f'<w:fldSimple w:instr=" SEQ {name} \\* ARABIC "><w:r><w:t>{number}</w:t></w:r>'
+            f"</w:fldSimple>")
+
+
+def _table_xml(b: Table) -> str:
+    """A table in the grid style, centred, its header row bold, centred and repeated on every
+    page it runs onto; the first column left, the numbers right; 12 pt (10 pt if wide), single."""
+    n = len(b.header)
+    hp = 24 if n <= WIDE else 20
+    rows = []
+    for r, cells in enumerate((b.header, *b.rows)):
+        tcs = "".join(
+            '<w:tc><w:tcPr><w:tcW w:w="0" w:type="auto"/></w:tcPr>'
+            + _p(_runs(text, bold=r == 0, half_points=hp), keep=r == 0, single=True, indent=True,
+                 jc="center" if r == 0 else "left" if c == 0 else "right") + "</w:tc>"
+            for c, text in enumerate(cells))
+        rows.append(f"<w:tr>{'<w:trPr><w:tblHeader/></w:trPr>' if r == 0 else ''}{tcs}</w:tr>")
+    return ('<w:tbl><w:tblPr><w:tblStyle w:val="TableGrid"/><w:tblW w:w="0" w:type="auto"/>'
+            '<w:jc w:val="center"/><w:tblLook w:val="04A0" w:firstRow="1" w:lastRow="0" '
+            'w:firstColumn="1" w:lastColumn="0" w:noHBand="0" w:noVBand="1"/></w:tblPr>'
+            f'<w:tblGrid>{"<w:gridCol/>" * n}</w:tblGrid>{"".join(rows)}</w:tbl>')
+
+
 def docx(doc: Document, plots_dir: Path | None = None) -> bytes:
     """The Russian записка as Word in the ГОСТ layout (the module's docstring)."""
     from xml.sax.saxutils import escape
 
     import docx as pydocx
-    from docx.enum.table import WD_TABLE_ALIGNMENT
     from docx.enum.text import WD_ALIGN_PARAGRAPH, WD_BREAK
     from docx.oxml import parse_xml
     from docx.shared import Cm, Mm, Pt
-    from docx.table import _Cell
 
     g, f = G[doc.lang], _front(doc)
     d = pydocx.Document()
@@ -427,61 +481,68 @@ def docx(doc: Document, plots_dir: Path | None = None) -> bytes:
     toc._p.append(parse_xml(f'<w:fldSimple {w} w:instr=\' TOC \\o "1-2" \\h \\z \\u \'>{shown}'
                             f'</w:fldSimple>'))
 
+    # the body as WordprocessingML written here (python-docx's element API takes seconds for
+    # the record's ~1 000 runs), one parse per block, each placed before the section's settings
+    sect = d.element.body.sectPr
+
+    def put(xml: str) -> None:
+        sect.addprevious(parse_xml(f'<w:body {w} {_M}>{xml}</w:body>')[0])
+
     for b in body:
         if isinstance(b, Section):
             if b.structural:
-                h = d.add_paragraph(style="Heading 1")
-                h.alignment = WD_ALIGN_PARAGRAPH.CENTER
-                h.paragraph_format.first_line_indent = Cm(0)
-                h.add_run(b.text.upper())
+                put(_p(_r(b.text.upper()), style="Heading1", jc="center", indent=True))
             else:
-                h = d.add_paragraph(style=f"Heading {b.level}")
-                runs(h, f"{b.number} {b.text}")
+                put(_p(_runs(f"{b.number} {b.text}"), style=f"Heading{b.level}"))
         elif isinstance(b, Paragraph):
-            runs(d.add_paragraph(), b.text)
+            put(_p(_runs(b.text)))
         elif isinstance(b, Bullets):
             for i in b.items:
-                runs(d.add_paragraph(style="List Bullet"), i)
+                put(_p(_runs(i), style="ListBullet"))
         elif isinstance(b, Formula):
-            p = d.add_paragraph()
-            p.alignment = WD_ALIGN_PARAGRAPH.CENTER
-            p.paragraph_format.first_line_indent = Cm(0)
-            p._p.append(parse_xml(mathfmt.omml(b.tex)))
+            put(_p(mathfmt.omml(b.tex), jc="center", indent=True))
         elif isinstance(b, Table):
-            cap = d.add_paragraph(style="Caption")
-            cap.paragraph_format.keep_with_next = True
-            cap.add_run(g["table"] + " ")
-            _field(cap, f"SEQ {g['table']} \\* ARABIC", str(b.number))
-            runs(cap, f" — {b.caption}")
-            n = len(b.header)
-            t = d.add_table(rows=1 + len(b.rows), cols=n)
-            t.style = "Table Grid"
-            t.alignment = WD_TABLE_ALIGNMENT.CENTER
-            size = Pt(12 if n <= WIDE else 10)
-            for r, (tr, cells) in enumerate(zip(t._tbl.tr_lst, (b.header, *b.rows))):
-                if r == 0:          # the header row repeats on every page the table runs onto
-                    tr.get_or_add_trPr().append(parse_xml(f'<w:tblHeader {w}/>'))
-                for c, (tc, text) in enumerate(zip(tr.tc_lst, cells)):
-                    p = _Cell(tc, t).paragraphs[0]
-                    p.paragraph_format.first_line_indent = Cm(0)
-                    p.paragraph_format.line_spacing = 1.0
-                    p.paragraph_format.keep_with_next = r == 0
-                    p.alignment = (WD_ALIGN_PARAGRAPH.CENTER if r == 0 else
-                                   WD_ALIGN_PARAGRAPH.LEFT if c == 0 else WD_ALIGN_PARAGRAPH.RIGHT)
-                    runs(p, text, size, bold=r == 0)
-            d.add_paragraph().paragraph_format.line_spacing = 1.0
+            put(_p(_r(g["table"] + " ") + _seq(g["table"], b.number) + _runs(f" — {b.caption}"),
+                   style="Caption", keep=True))
+            put(_table_xml(b))
+            put(_p("", single=True))
         elif isinstance(b, Figure):
             if plots_dir is not None and (plots_dir / b.file).is_file():
-                d.add_picture(str(plots_dir / b.file), width=Mm(165))
-                pic = d.paragraphs[-1]
+                inline = d.part.new_pic_inline(str(plots_dir / b.file), Mm(165), None)
+                pic = d.add_paragraph()
                 pic.alignment = WD_ALIGN_PARAGRAPH.CENTER
                 pic.paragraph_format.first_line_indent = Cm(0)
                 pic.paragraph_format.keep_with_next = True
-            cap = d.add_paragraph(style="Caption")
-            cap.alignment = WD_ALIGN_PARAGRAPH.CENTER
-            cap.add_run(g["figure"] + " ")
-            _field(cap, f"SEQ {g['figure']} \\* ARABIC", str(b.number))
-            runs(cap, f" — {b.caption}")
+                pic.add_run()._r.add_drawing(inline)
+            put(_p(_r(g["figure"] + " ") + _seq(g["figure"], b.number) + _runs(f" — {b.caption}"),
+                   style="Caption", jc="center"))
+    return _package(d)
+
+
+def _package(d) -> bytes:
+    """The document's package as python-docx's ``save`` writes it, in one pass: every entry
+    dated 1980-01-01 (reruns identical), the PNGs stored (compressed already; deflating them
+    again was most of the writing time)."""
+    from docx.opc.pkgwriter import PackageWriter
+
+    class Writer:
+        def __init__(self, z):
+            self.z = z
+
+        def write(self, uri, blob) -> None:
+            name = uri.membername
+            self.z.writestr(zipfile.ZipInfo(name, date_time=(1980, 1, 1, 0, 0, 0)), blob,
+                            compress_type=zipfile.ZIP_STORED if name.endswith(".png")
+                            else zipfile.ZIP_DEFLATED)
+
+    pkg = d.part.package
+    for part in pkg.parts:
+        part.before_marshal()
     buf = io.BytesIO()
-    d.save(buf)
-    return _fixed_zip(buf.getvalue())
+    with zipfile.ZipFile(buf, "w", zipfile.ZIP_DEFLATED) as z:
+        w = Writer(z)
+        parts = list(pkg.parts)
+        PackageWriter._write_content_types_stream(w, parts)
+        PackageWriter._write_pkg_rels(w, pkg.rels)
+        PackageWriter._write_parts(w, parts)
+    return buf.getvalue()
