@@ -62,6 +62,19 @@ FONT_DIRS = ("/usr/share/fonts/truetype/liberation", "/usr/share/fonts/truetype/
 FAMILIES = ("Liberation Serif", "DejaVu Serif", "DejaVu Sans")
 
 
+def font_files() -> list[Path]:
+    """The font files of FAMILIES in the folders of :func:`font_paths` (typst is given these
+    only: reading every font of matplotlib's folder took longer than the typesetting)."""
+    stems = tuple(f.replace(" ", "") for f in FAMILIES)
+    out = []
+    for d in font_paths():
+        for f in sorted(Path(d).glob("*.[ot]tf")):
+            stem = f.stem.split("-")[0]
+            if stem in stems:
+                out.append(f)
+    return out
+
+
 def font_paths() -> list[str]:
     """The folders typst reads fonts from: $FLYWHEEL_FONTS, the first of FONT_DIRS holding
     Liberation Serif, matplotlib's own DejaVu fonts. Without Liberation Serif typst sets the text
@@ -261,8 +274,13 @@ def pdf(doc: Document, plots_dir: Path | None = None) -> bytes:
             if plots_dir is not None and (plots_dir / f.file).is_file():
                 shutil.copyfile(plots_dir / f.file, root / "plots" / f.file)
         (root / "main.typ").write_text(typst_source(doc, plots_dir is not None), encoding="utf-8")
+        fonts = root / "fonts"
+        fonts.mkdir()
+        for f in font_files():
+            if not (fonts / f.name).exists():
+                (fonts / f.name).symlink_to(f)
         return typst.compile(str(root / "main.typ"), root=str(root), format="pdf",
-                             font_paths=font_paths(), ignore_system_fonts=True, timestamp=0)
+                             font_paths=[str(fonts)], ignore_system_fonts=True, timestamp=0)
 
 
 # -- DOCX ---------------------------------------------------------------------------------------
