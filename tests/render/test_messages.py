@@ -107,7 +107,8 @@ def test_plausibility_and_duty_cycle_warnings_are_russian(tmp_path):
     res = runner.invoke(app, ["run", str(tmp_path / "c.toml"), "--points", "360", "--no-plots",
                               "--lang", "ru", "--out", str(tmp_path / "o")])
     assert res.exit_code == 0, res.output
-    assert "предупреждение: machine.delta: δ = 0.5 вне обычных 1/300 … 1/5" in res.stderr
+    # a Russian warning with Russian numbers (render/numbers.py, issue 28): decimal comma
+    assert "предупреждение: machine.delta: δ = 0,5 вне обычных 1/300 … 1/5" in res.stderr
     assert "предупреждение: нагрузки не совершают работы за цикл" in res.stderr
     res = runner.invoke(app, ["duty-cycle", str(CASES / "duty_readme_press.toml"), "--lang", "ru"])
     assert res.exit_code == 0

@@ -56,6 +56,12 @@ def _pdf_text(path: Path) -> str:
                           check=True).stdout
 
 
+def _ru4(x: float) -> str:
+    """A result as a Russian document writes it, for 1e-4 ≤ |x| < 1e4: four significant
+    digits, a decimal comma, a true minus."""
+    return f"{x:.4g}".replace(".", ",").replace("-", "\u2212")
+
+
 def test_task2_summary_json_is_the_json_document(t2):
     res = invoke("task2", "--case", CASES / "task2_seed_triangle.toml", "--json")
     assert (t2 / "summary.json").read_text(encoding="utf-8") == res.output
@@ -73,8 +79,13 @@ def test_task2_html_reads_back(t2):
     for heading in ("Исходные данные", "Метод решения", "Решение", "Источники"):
         assert heading in body, heading
     # the numbers of the seed task: ω_max 200.011044, ω_min 199.988955 (crossings at 5π/8, 11π/8)
-    assert f"{doc['omega_max']:.6f}" in page.cells and f"{doc['omega_min']:.6f}" in page.cells
-    assert f"{doc['delta']:.6g}" in page.cells and f"{doc['delta_T_max']:.6g}" in page.cells
+    # Russian typography (render/numbers.py): decimal comma; results to 4 significant digits,
+    # an f format keeps its decimals (none of these above 10⁴, none negative)
+    def ru(text):
+        return text.replace(".", ",")
+
+    assert ru(f"{doc['omega_max']:.6f}") in page.cells and ru(f"{doc['omega_min']:.6f}") in page.cells
+    assert ru(f"{doc['delta']:.4g}") in page.cells and ru(f"{doc['delta_T_max']:.4g}") in page.cells
     # the symbols' subscripts typeset (<sub>), not printed as "M_Д"
     assert "Рис. 1 — Моменты MД, MС" in page.captions[-1]
     assert "Моменты M<sub>Д</sub>, M<sub>С</sub>" in (t2 / "report.html").read_text(encoding="utf-8")
@@ -91,12 +102,13 @@ def test_task2_pdf_and_docx_read_back(t2):
 
     doc = json.loads((t2 / "summary.json").read_text(encoding="utf-8"))
     text = _pdf_text(t2 / "report.pdf")
-    assert "Исходные данные" in text and "Таблица 1" in text and f"{doc['omega_max']:.6f}" in text
+    assert "Исходные данные" in text and "Таблица 1" in text
+    assert f"{doc['omega_max']:.6f}".replace(".", ",") in text        # Russian typography
     d = docx.Document(str(t2 / "report.docx"))
     assert len(d.inline_shapes) == 1
     assert len(d.tables) == (t2 / "report.md").read_text(encoding="utf-8").count("\nТаблица ")
     cells = {c.text for t in d.tables for r in t.rows for c in r.cells}
-    assert f"{doc['omega_min']:.6f}" in cells
+    assert f"{doc['omega_min']:.6f}".replace(".", ",") in cells
 
 
 def test_aggregate_reads_back(ag):
@@ -108,11 +120,12 @@ def test_aggregate_reads_back(ag):
     body = "".join(page.text)
     assert "Исходные данные" in body and "Собственные частоты" in body and "Источники" in body
     # the natural frequency of the two-mass aggregate, √(c·(J1 + J2)/(J1·J2))/2π (the JSON's)
-    assert f"{doc['natural_frequencies_hz'][0]:.6g}" in page.cells
-    assert f"{doc['twist_amplitude']:.6g}" in page.cells
+    # in Russian typography: four significant digits, a decimal comma, a true minus
+    assert _ru4(doc['natural_frequencies_hz'][0]) in page.cells
+    assert _ru4(doc['twist_amplitude']) in page.cells
     assert len(page.refs) == 1 and page.captions[-1].startswith("Рис. 1 — ")
     text = _pdf_text(ag / "report.pdf")
-    assert "Собственные частоты" in text and f"{doc['natural_frequencies_hz'][0]:.6g}" in text
+    assert "Собственные частоты" in text and _ru4(doc['natural_frequencies_hz'][0]) in text
     d = docx.Document(str(ag / "report.docx"))
     assert len(d.inline_shapes) == 1
     assert len(d.tables) == (ag / "report.md").read_text(encoding="utf-8").count("\nТаблица ")
@@ -178,7 +191,7 @@ def test_duty_cycle_out(tmp_path):
     assert read_toml(case)["source"]["ru"] in body and doc["source"] == read_toml(case)["source"]["en"]
     # Khurmi & Gupta Ex. 16.19, printed: P = 3 kW, m = 618 kg (exact 617.940 kg)
     assert round(doc["mass"]) == 618 and doc["motor_power"] == 3000.0
-    assert f"{doc['mass']:.6g}" in page.cells and f"{doc['motor_power']:.6g}" in page.cells
+    assert _ru4(doc['mass']) in page.cells and _ru4(doc['motor_power']) in page.cells
     assert "<img" not in (tmp_path / "o" / "report.html").read_text(encoding="utf-8")
     assert "Таблица 1" in _pdf_text(tmp_path / "o" / "report.pdf")
     d = docx.Document(str(tmp_path / "o" / "report.docx"))

@@ -68,13 +68,14 @@ def aggregate_command(
 
             write_plot(plot, lambda tmp: draw(result, tmp, in_language(c.title, lang), lang))
         if out is not None:
-            written = _write_out(out, result, formats, c.title, c.source, lang)
+            written = _write_out(out, result, formats, c.title, c.source, lang, c.document)
     from flywheel.cli.outputs import finish, written_line
     from flywheel.render.aggregate import print_summary, to_json
+    from flywheel.render.numbers import typeset
 
     finish(json_text=to_json(result, c.title, c.source) + "\n" if json else None,
-           summary=lambda: print_summary(result, in_language(c.title, lang),
-                                         in_language(c.source, lang), lang=lang, modes=modes),
+           summary=lambda: typeset(lang, print_summary, result, in_language(c.title, lang),
+                                   in_language(c.source, lang), lang=lang, modes=modes),
            lines=([nm.name("plot_written", lang, path=plot)] if plot is not None else [])
            + ([written_line(out, written, lang)] if out is not None else []))
 
@@ -100,12 +101,16 @@ def _check_options(lang: str, t_end, report, out):
     return formats
 
 
-def _write_out(out: Path, result, formats, title: str, source: str, lang: str) -> list[str]:
+def _write_out(out: Path, result, formats, title: str, source: str, lang: str,
+               document=None) -> list[str]:
     """The --out folder (cli/outputs.py, render/report_folder.py): summary.json,
-    plots/aggregate.png (with a motor), the report; returns the names written."""
+    plots/aggregate.png (with a motor), the report with its title page from ``document``
+    (the case's [document]); returns the names written."""
     from flywheel.cli.outputs import report_folder
     from flywheel.render.aggregate import plot as draw
     from flywheel.render.aggregate import to_json
+    from flywheel.render.blocks import front
+    from flywheel.render.numbers import typeset
     from flywheel.render.report_aggregate import FIGURE, build_aggregate_document
 
     shown, said = in_language(title, lang), in_language(source, lang)   # the JSON: English
@@ -113,4 +118,5 @@ def _write_out(out: Path, result, formats, title: str, source: str, lang: str) -
         out, "aggregate", to_json(result, title, source) + "\n",
         lambda path: draw(result, path, shown, lang),
         FIGURE if result.startup is not None else None,
-        lambda fig: build_aggregate_document(result, shown, said, lang, fig), formats)
+        lambda fig: front(typeset(lang, build_aggregate_document, result, shown, said, lang,
+                                  fig), document), formats)

@@ -32,23 +32,27 @@ def duty_cycle_command(
         fail(needs_out())
     from flywheel.cases.duty_cycle import load_duty_case, solve_case
 
+    from flywheel.render.numbers import typeset
+
     c = guard(load_duty_case, case)
     result = guard(solve_case, c, str(case))
     written = None
     if out is not None:
         from flywheel.cli.outputs import report_folder
         from flywheel.render.duty_cycle import to_json
+        from flywheel.render.blocks import front
         from flywheel.render.report_duty_cycle import build_duty_cycle_document
 
         written = guard(report_folder, out, "duty-cycle", to_json(result, c.title, c.source) + "\n",
-                        None, None, lambda fig: build_duty_cycle_document(
-                            result, in_language(c.title, lang), in_language(c.source, lang), lang),
+                        None, None, lambda fig: front(typeset(
+                            lang, build_duty_cycle_document, result, in_language(c.title, lang),
+                            in_language(c.source, lang), lang), c.document),
                         formats)
     from flywheel.cli.outputs import finish, written_line
     from flywheel.render.duty_cycle import print_summary, to_json
 
     finish(warnings=result.warnings,
            json_text=to_json(result, c.title, c.source) + "\n" if as_json else None,
-           summary=lambda: print_summary(result, in_language(c.title, lang),
-                                         in_language(c.source, lang), lang=lang),
+           summary=lambda: typeset(lang, print_summary, result, in_language(c.title, lang),
+                                   in_language(c.source, lang), lang=lang),
            lines=[] if written is None else [written_line(out, written, lang)])

@@ -84,8 +84,9 @@ def _line(kind: str, text: str) -> None:
     if state.quiet:
         return
     from flywheel.render.nomenclature import message, prefix
+    from flywheel.render.numbers import typeset
 
-    sys.stderr.write(f"{prefix(kind, state.lang)}: {message(text, state.lang)}\n")
+    sys.stderr.write(f"{prefix(kind, state.lang)}: {typeset(state.lang, message, text, state.lang)}\n")
 
 
 def note(text: str) -> None:
@@ -115,3 +116,10 @@ Reports = Annotated[Optional[list[str]], typer.Option(
 CsvStyle = Annotated[str, typer.Option(
     "--csv", help="CSV dialect: plain, or excel-ru (';', decimal commas, BOM: opens in a "
                   "Russian Excel).")]
+Student = Annotated[Optional[str], typer.Option(
+    "--student", help="The student on the title page of a Russian PDF or DOCX report (over the "
+                      "case's \\[document] student).")]
+Group = Annotated[Optional[str], typer.Option(
+    "--group", help="The student's group on the title page (over \\[document] group).")]
+Teacher = Annotated[Optional[str], typer.Option(
+    "--teacher", help="The teacher on the title page (over \\[document] teacher).")]

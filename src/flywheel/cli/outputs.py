@@ -41,6 +41,8 @@ class RunOutputs:
     animate: bool = False
     drawings: bool = False              # the ЕСКД sheets (render/drawings, docs/drawings.md)
     sheet_size: str = "A1"
+    #: --student, --group, --teacher (None: the case's [document]) for the title page
+    title_page: tuple = (None, None, None)
 
     def names(self) -> list[str]:
         """The files listed on the "written:" line."""
@@ -94,7 +96,11 @@ def _build_run(folder: Path, results, case, what: RunOutputs, lang: str,
                                        encoding="utf-8")
         pngs = [] if what.plots == "none" else \
             [Path(n).with_suffix(".png").name for n in job.names]
-        doc = build_document(results, lang, pngs, case=case)
+        from flywheel.render.blocks import front
+        from flywheel.render.numbers import typeset
+
+        doc = front(typeset(lang, build_document, results, lang, pngs, case=case), case.document,
+                    **dict(zip(("student", "group", "teacher"), what.title_page)))
         if what.animate:
             from flywheel.render.animate import write_animation
 

@@ -12,7 +12,7 @@ from typing import Optional
 import typer
 
 from flywheel.cli.guard import _guard, check_lang, choice, fail
-from flywheel.cli.options import CsvStyle, Json, Lang, Reports
+from flywheel.cli.options import CsvStyle, Group, Json, Lang, Reports, Student, Teacher
 from flywheel.errors import Notice
 
 
@@ -89,6 +89,9 @@ def run_command(
     roots: Optional[list[str]] = typer.Option(None, "--roots", help="COLUMN: the crank angles "
                                               "where that table.csv column changes sign; "
                                               "repeatable."),
+    student: Student = None,
+    group: Group = None,
+    teacher: Teacher = None,
 ) -> None:
     """Run the whole dynamic analysis of a case; write summary.json, table.csv, positions.csv,
     forces.csv, forces_positions.csv, report.md and plots/*.png to the output folder."""
@@ -97,7 +100,8 @@ def run_command(
     check_lang(lang)
     what = RunOutputs(formats=tuple(report or ["md", "html"]), csv_style=csv_style,
                       plots="none" if no_plots else plots, figure_format=figure_format, dpi=dpi,
-                      animate=animate, drawings=drawings, sheet_size=sheet_size)
+                      animate=animate, drawings=drawings, sheet_size=sheet_size,
+                      title_page=(student, group, teacher))
     _check_options(what, at)
     from flywheel.cases.run import load_case
     from flywheel.dynamics.pipeline import analyze
@@ -131,10 +135,11 @@ def run_command(
     out = out if out is not None else Path("out") / case.stem
     text_json = summary_json(results)
     write_run(out, results, c, what, lang, text_json)
+    from flywheel.render.numbers import typeset
     from flywheel.render.summary import print_summary
 
     finish(warnings=results.warnings, json_text=text_json if as_json else None,
-           summary=lambda: print_summary(results, lang=lang),
+           summary=lambda: typeset(lang, print_summary, results, lang=lang),
            lines=[written_line(out, what.names(), lang)])
 
 
@@ -164,6 +169,13 @@ def _check_options(what, at) -> None:
     for f in what.formats:
         if f not in FORMATS:
             fail(choice("--report", f, "a report format", ", ".join(FORMATS)))
+    from flywheel.io.schema import MAX_TEXT
+
+    for option, value in zip(("student", "group", "teacher"), what.title_page):
+        if value is not None and len(value) > MAX_TEXT:
+            fail(Notice.of(
+                "option_text_too_long", "--{option}: {length} characters (allowed: at most "
+                "{most})", option=option, length=len(value), most=MAX_TEXT))
 
 
 #: the report angles --at takes: at most AT_MOST of them, each within ±AT_LIMIT_DEG [deg] (an

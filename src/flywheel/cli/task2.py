@@ -99,11 +99,12 @@ def task2_command(
             written = _write_out(out, result, formats, job, lang)
     from flywheel.cli.outputs import finish, written_line
     from flywheel.render import nomenclature as nm
+    from flywheel.render.numbers import typeset
     from flywheel.render.task2 import print_summary, to_json
 
     finish(json_text=to_json(result, job.doc_title, job.doc_source) + "\n" if as_json else None,
-           summary=lambda: print_summary(result, job.title, job.source, lang=lang,
-                                         motion=epsilon or bool(at)),
+           summary=lambda: typeset(lang, print_summary, result, job.title, job.source, lang=lang,
+                                   motion=epsilon or bool(at)),
            lines=([nm.name("plot_written", lang, path=plot)] if plot is not None else [])
            + ([written_line(out, written, lang)] if out is not None else []))
 
@@ -121,6 +122,7 @@ class _Job:
     source: str
     doc_title: str
     doc_source: str
+    document: object = None         # the case's [document] (the title page), if a case
 
 
 def _from_case(case: Path, at, profile, given, lang: str = "en") -> _Job:
@@ -144,7 +146,7 @@ def _from_case(case: Path, at, profile, given, lang: str = "en") -> _Job:
 
     return _Job(lambda: solve_case(c, str(case), at_deg=at or ()), case_numbers(c.model_dump()),
                 case, in_language(c.title, lang), in_language(c.source, lang), str(c.title),
-                str(c.source))
+                str(c.source), c.document)
 
 
 def _from_options(profile, given, v: dict, at, lang: str) -> _Job:
@@ -200,8 +202,10 @@ def _from_options(profile, given, v: dict, at, lang: str) -> _Job:
 
 def _write_out(out: Path, result, formats, job: _Job, lang: str):
     """The --out folder (cli/outputs.py, render/report_folder.py): summary.json,
-    plots/task2.png, the report; returns the names written."""
+    plots/task2.png, the report with its title page; returns the names written."""
     from flywheel.cli.outputs import report_folder
+    from flywheel.render.blocks import front
+    from flywheel.render.numbers import typeset
     from flywheel.render.report_task2 import FIGURE, build_task2_document
     from flywheel.render.task2 import plot as draw
     from flywheel.render.task2 import to_json
@@ -209,4 +213,5 @@ def _write_out(out: Path, result, formats, job: _Job, lang: str):
     return report_folder(
         out, "task2", to_json(result, job.doc_title, job.doc_source) + "\n",
         lambda path: draw(result, path, job.title, lang), FIGURE,
-        lambda fig: build_task2_document(result, job.title, job.source, lang, fig), formats)
+        lambda fig: front(typeset(lang, build_task2_document, result, job.title, job.source, lang,
+                                  fig), job.document), formats)

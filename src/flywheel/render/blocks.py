@@ -45,11 +45,44 @@ class Figure:
     file: str           # the PNG's name under plots/
 
 
+@dataclass(frozen=True)
+class TitlePage:
+    """The title page of a Russian записка in PDF and DOCX (ГОСТ 7.32-2017, 6.1) and its right
+    margin: the case's ``[document]`` table (cases/document.py), the command line's
+    ``--student/--group/--teacher`` over it; a blank stays blank (a line to write on)."""
+
+    machine: str = ""
+    ministry: str = ""
+    university: str = ""
+    department: str = ""
+    student: str = ""
+    group: str = ""
+    teacher: str = ""
+    city: str = ""
+    year: str = ""
+    designation: str = ""
+    margin_right_mm: float = 10.0
+
+    @classmethod
+    def of(cls, spec, machine: str, **given: str | None) -> "TitlePage":
+        """From a ``DocumentSpec`` (None: none given) and the options ``given`` (None or ""
+        keeps the case's)."""
+        names = ("ministry", "university", "department", "student", "group", "teacher", "city",
+                 "designation")
+        values = {k: (getattr(spec, k) or "") if spec is not None else "" for k in names}
+        values.update({k: v for k, v in given.items() if v})
+        year = getattr(spec, "year", None) if spec is not None else None
+        return cls(machine=machine, year="" if year is None else str(year),
+                   margin_right_mm=spec.margin_right_mm if spec is not None else 10.0, **values)
+
+
 @dataclass
 class Document:
     title: str
     lang: str
     blocks: list = field(default_factory=list)
+    #: the title page of the ГОСТ layout (Russian PDF, DOCX); None: one with blanks
+    front: TitlePage | None = None
 
     @property
     def tables(self) -> list[Table]:
@@ -78,3 +111,10 @@ class Document:
         if source:
             doc.blocks.append(Paragraph(f"{source_word}: {source}"))
         return doc
+
+
+def front(doc: Document, spec, **given: str | None) -> Document:
+    """``doc`` with its title page from the case's ``[document]`` ``spec`` (None: blanks) and
+    the options ``given``; the machine is the document's title."""
+    doc.front = TitlePage.of(spec, doc.title, **given)
+    return doc

@@ -5,7 +5,8 @@
 * ``excel-ru`` — semicolon separators, decimal commas and a UTF-8 byte-order mark, so a
   Russian Excel opens the file with the columns split and the numbers as numbers.
 
-Numbers are passed as ``float``/``int`` and formatted here (``fmt``); strings stay as they are.
+Numbers are passed as ``float``/``int`` and formatted here (``fmt``), spelled for ``excel-ru`` by
+the one number formatter's module (render/numbers.py ``excel_ru``); strings stay as they are.
 
 >>> csv_text([["student", "J"], ["Иванов", 0.5]], "excel-ru")
 '\\ufeffstudent;J\\r\\nИванов;0,5\\r\\n'
@@ -20,6 +21,8 @@ import csv
 import io
 import re
 from collections.abc import Callable, Iterable, Sequence
+
+from flywheel.render.numbers import excel_ru
 
 STYLES = ("plain", "excel-ru")
 
@@ -40,7 +43,7 @@ def csv_text(rows: Iterable[Sequence], style: str = "plain",
                 out.append("" if v is None else str(int(v)))
             elif isinstance(v, (int, float)):
                 t = str(v) if isinstance(v, int) else fmt(v)
-                out.append(t.replace(".", ",") if ru else t)
+                out.append(excel_ru(t) if ru else t)
             else:
                 out.append(str(v))
         w.writerow(out)

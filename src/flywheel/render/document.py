@@ -139,6 +139,12 @@ def g(x, digits: int = 5) -> str:
     return _number(x, digits, zero=1e-13, nonfinite="dash")
 
 
+def gi(x, digits: int = 6) -> str:
+    """An input of the case as the report prints it: as :func:`g`; in a Russian document with
+    the digits it was given (render/numbers.py)."""
+    return _number(x, digits, zero=1e-13, nonfinite="dash", given=True)
+
+
 def _figure_caption(file: str, lang: str) -> str:
     t = T[lang]["fig"]
     stem = file.rsplit(".", 1)[0]
@@ -254,9 +260,9 @@ def build_document(results, lang: str = "en", plots: list[str] | None = None,
     ]
     if case is not None:
         for k, v in case.machine.first_group.items():
-            rows.append([f"{sym('J_first_group')}: {k}", g(v, 6), u("J_first_group")])
+            rows.append([f"{sym('J_first_group')}: {k}", gi(v, 6), u("J_first_group")])
         rows.append([t["balance_row"], t["balance_word"][case.machine.balance], ""])
-        rows.append([f"{sym('gravity')} (x, y)", ", ".join(g(x, 4) for x in case.machine.gravity), u("gravity")])
+        rows.append([f"{sym('gravity')} (x, y)", ", ".join(gi(x, 4) for x in case.machine.gravity), u("gravity")])
     rows += [
         [nm.name("flywheel_material", lang), nm.material(s.flywheel_material, lang), ""],
         [f"{sym('flywheel_material_density')}", g(s.flywheel_material_density, 6),
@@ -321,8 +327,8 @@ def build_document(results, lang: str = "en", plots: list[str] | None = None,
         t["balance"][bal.balance].format(A=sym(kA), M=sym(kM), Mx=sym(kx), vA=g(bal.work, 6),
                                          uJ=u(kA), vM=g(bal.moment, 6), uM=u(kx),
                                          cycle=g(s.cycle_deg, 6))[2:],
-        t["extremes"].format(dT=sym("dT_I"), vmax=g(s.delta_T_I_max, 6), amax=f"{s.phi_delta_T_I_max_deg:.2f}",
-                             vmin=g(s.delta_T_I_min, 6), amin=f"{s.phi_delta_T_I_min_deg:.2f}",
+        t["extremes"].format(dT=sym("dT_I"), vmax=g(s.delta_T_I_max, 6), amax=_number(s.phi_delta_T_I_max_deg, spec=".2f", zero=None, nonfinite="show"),
+                             vmin=g(s.delta_T_I_min, 6), amin=_number(s.phi_delta_T_I_min_deg, spec=".2f", zero=None, nonfinite="show"),
                              span=sym("delta_T_max"), v=g(s.delta_T_max, 6), uJ=u("delta_T_max"))[2:],
     )))
     energy = ("A_D", "A_C", "A", "T_II", "dT_I", "omega", "epsilon")
@@ -429,8 +435,8 @@ def _sizing_lines(s, t: dict, lang: str) -> list[str]:
                                   dims=dims(r, ("D_mean", "thickness", "width", "mass", "rim_speed"),
                                             (4, 4, 4, 5, 4)))] if s.rim_designed else []),
         t["omega_extremes"].format(wmax=sym("omega_max"), vmax=g(s.omega_max, 6),
-                                   amax=f"{s.phi_omega_max_deg:.2f}", wmin=sym("omega_min"),
-                                   vmin=g(s.omega_min, 6), amin=f"{s.phi_omega_min_deg:.2f}",
+                                   amax=_number(s.phi_omega_max_deg, spec=".2f", zero=None, nonfinite="show"), wmin=sym("omega_min"),
+                                   vmin=g(s.omega_min, 6), amin=_number(s.phi_omega_min_deg, spec=".2f", zero=None, nonfinite="show"),
                                    uw=u("omega_max"), T=nm.name("cycle_time", lang),
                                    v=g(s.cycle_time, 6), uT=u("cycle_time")),
     ]
@@ -444,32 +450,32 @@ def _input_of_case(b: _Builder, case, t: dict, lang: str) -> None:
         return nm.unit_of(key, lang)
 
     ll, ga, go = nm.symbol("link_length", lang), nm.symbol("guide_angle", lang), nm.symbol("guide_offset", lang)
-    rows = [[f"{nm.symbol('crank_length', lang)} ({t['link']} {case.crank.name})", g(case.crank_length, 6),
+    rows = [[f"{nm.symbol('crank_length', lang)} ({t['link']} {case.crank.name})", gi(case.crank_length, 6),
              u("crank_length")]]
     for d in case.dyads:
         if isinstance(d, RRPSpec):
-            rows.append([f"{ll} ({t['link']} {d.rod})", g(case.rod_length(d), 6), u("link_length")])
-            rows.append([f"{ga} ({t['link']} {d.slider})", g(d.guide.angle_deg, 6), u("guide_angle")])
+            rows.append([f"{ll} ({t['link']} {d.rod})", gi(case.rod_length(d), 6), u("link_length")])
+            rows.append([f"{ga} ({t['link']} {d.slider})", gi(d.guide.angle_deg, 6), u("guide_angle")])
             if d.guide.offset:
-                rows.append([f"{go} ({t['link']} {d.slider})", g(d.guide.offset, 6), u("guide_offset")])
+                rows.append([f"{go} ({t['link']} {d.slider})", gi(d.guide.offset, 6), u("guide_offset")])
         elif isinstance(d, RRRSpec):
-            rows.append([f"{ll} ({t['link']} {d.link_from})", g(d.length_from, 6), u("link_length")])
-            rows.append([f"{ll} ({t['link']} {d.link_to})", g(d.length_to, 6), u("link_length")])
+            rows.append([f"{ll} ({t['link']} {d.link_from})", gi(d.length_from, 6), u("link_length")])
+            rows.append([f"{ll} ({t['link']} {d.link_to})", gi(d.length_to, 6), u("link_length")])
         elif isinstance(d, RPRSpec) and d.offset:
-            rows.append([f"{go} ({t['link']} {d.rocker})", g(d.offset, 6), u("guide_offset")])
+            rows.append([f"{go} ({t['link']} {d.rocker})", gi(d.offset, 6), u("guide_offset")])
     for name, (x, y) in case.ground.items():
-        rows.append([f"{name} (x, y)", f"{g(x, 6)}, {g(y, 6)}", u("x")])
+        rows.append([f"{name} (x, y)", f"{gi(x, 6)}, {gi(y, 6)}", u("x")])
     b.add(Heading(3, f"1.2. {t['lengths']}"))
     b.table(t["lengths"], [t["qty"], t["val"], t["unit"]], rows)
 
     if case.links:
         b.add(Heading(3, f"1.3. {t['masses']}"))
         b.table(t["masses"], [t["link"], nm.heading("link_mass", lang), nm.heading("J_S", lang), t["centroid"]],
-                [[k, g(v.mass, 6), g(v.J_S, 6), v.centroid or "—"] for k, v in case.links.items()])
+                [[k, gi(v.mass, 6), gi(v.J_S, 6), v.centroid or "—"] for k, v in case.links.items()])
     if case.cylinders:
         b.add(Heading(3, f"1.4. {t['cyl']}"))
         b.table(t["cyl"], [t["name"], t["piston"], nm.heading("bore", lang), nm.heading("p_max", lang), t["head"]],
-                [[c.name, c.piston, g(c.bore, 6), g(c.p_max, 6),
+                [[c.name, c.piston, gi(c.bore, 6), gi(c.p_max, 6),
                   nm.DEAD_CENTRES[c.head][lang == "ru"]] for c in case.cylinders])
         for c in case.cylinders:
             sym_s, sym_p = nm.symbol("s_{cylinder}", lang), nm.symbol("p_rel", lang)
@@ -478,24 +484,24 @@ def _input_of_case(b: _Builder, case, t: dict, lang: str) -> None:
                 names = ("intake", "compression", "expansion", "exhaust")
                 b.table(t["indicator"].format(c=c.name),
                         [sym_s] + [f"{sym_p} {nm.name('engine_' + n, lang)}" for n in names],
-                        [[g(s_, 4)] + [g(getattr(st, n)[k], 4) for n in names]
+                        [[gi(s_, 4)] + [gi(getattr(st, n)[k], 4) for n in names]
                          for k, s_ in enumerate(c.s)])
             elif getattr(c, "diagram", None) is not None:    # one table over the cycle
                 b.table(t["indicator"].format(c=c.name), [sym_s, sym_p],
-                        [[g(s_, 4), g(p_, 4)] for s_, p_ in zip(c.diagram.s, c.diagram.p)])
+                        [[gi(s_, 4), gi(p_, 4)] for s_, p_ in zip(c.diagram.s, c.diagram.p)])
             else:
                 b.table(t["indicator"].format(c=c.name), [sym_s, f"{sym_p} ↑", f"{sym_p} ↓"],
-                        [[g(s_, 4), g(a, 4), g(w, 4)]
+                        [[gi(s_, 4), gi(a, 4), gi(w, 4)]
                          for s_, a, w in zip(c.s, c.towards_head, c.away_from_head)])
     springs = getattr(case, "springs", ())
     if case.forces or case.couples or springs:
         b.add(Heading(3, f"1.5. {t['forces']}"))
 
         def value(load, size) -> str:     # a size or a table, and the range of φ if any
-            text = g(size, 6) if size is not None else t["load_table"].format(
+            text = gi(size, 6) if size is not None else t["load_table"].format(
                 n=len(load.table), of=t["of_" + getattr(load, "table_of", "phi")])
             rng = load.phi_range_deg
-            return text if rng is None else f"{text}; {t['over'].format(a=g(rng[0], 6), b=g(rng[1], 6))}"
+            return text if rng is None else f"{text}; {t['over'].format(a=gi(rng[0], 6), b=gi(rng[1], 6))}"
 
         rows = [[nm.load_name(LoadKey("force", f.name), lang), f.slider if f.slider is not None else f.point,
                  value(f, f.magnitude), u("force_magnitude")] for f in case.forces]
@@ -531,7 +537,8 @@ def _time_lines(td, s, t: dict, lang: str = "en") -> list[str]:
     TimeDomainResult, ``s`` the headline scalars."""
     v, st, rd = td.verification, td.startup, td.rundown
     lines = [
-        "- " + t["verify"].format(n=v.cycles, rep=f"{v.repeat_error:.1e}", dev=f"{v.max_deviation:.1e}"),
+        "- " + t["verify"].format(n=v.cycles, rep=_number(v.repeat_error, spec=".1e", zero=None, nonfinite="show"),
+                                  dev=_number(v.max_deviation, spec=".1e", zero=None, nonfinite="show")),
         "- " + t["period"].format(T=g(v.period, 6), Te=g(s.cycle_time, 6)),
     ]
     if not st.computed:
@@ -541,7 +548,7 @@ def _time_lines(td, s, t: dict, lang: str = "en") -> list[str]:
                                           ws=g(st.omega_final_predicted, 6),
                                           tau=g(st.time_constant, 3)))
     if st.stalled:
-        lines.append("- " + t["st_stall"].format(a=f"{st.stall_angle_deg:.1f}"))
+        lines.append("- " + t["st_stall"].format(a=_number(st.stall_angle_deg, spec=".1f", zero=None, nonfinite="show")))
     elif st.converged and st.time_to_steady is not None:
         lines.append("- " + t["st_ok"].format(t=g(st.time_to_steady, 4), n=st.cycles_to_steady,
                                               w=g(st.omega_mean_steady, 6)))
@@ -556,5 +563,5 @@ def _time_lines(td, s, t: dict, lang: str = "en") -> list[str]:
 def _rundown_line(rd, t: dict, lang: str = "en") -> str:
     if rd.reason:                # English: the fixed line; Russian: the reason itself
         return "- " + t["rd_never"].format(reason=nm.message(rd.reason, lang))
-    return "- " + t["rd"].format(t=g(rd.time, 4), rev=f"{rd.angle_deg / 360:.2f}") + (
+    return "- " + t["rd"].format(t=g(rd.time, 4), rev=_number(rd.angle_deg / 360, spec=".2f", zero=None, nonfinite="show")) + (
         "" if rd.stopped else t["rd_not"])

@@ -136,5 +136,6 @@ def print_summary(r, title: str = "", source: str = "", lang: str = "en", consol
         tab.add_column(t["value"], justify="right")
         tab.add_column(t["unit"])
         for k, v in r.checks:
-            tab.add_row(escape(nm.name(k, lang)), f"{v:.1e}", nm.unit_of(k, lang))
+            tab.add_row(escape(nm.name(k, lang)), _number(v, spec=".1e", zero=None, nonfinite="show"),
+                        nm.unit_of(k, lang))
         console.print(tab)

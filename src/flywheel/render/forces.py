@@ -161,9 +161,10 @@ def summary_lines(results, lang: str = "en") -> list[str]:
     ref = symbol("driving_moment" if results.energy.balance == "driving" else "M_C", lang)
     ok = t["ok"].format(ref=ref) if f.closure <= CLOSURE_OK else t["bad"]
     if f.closure_reference == "M_D":
-        lines.append(t["closure"].format(ref=ref, c=f"{f.closure:.2e}", n=n, ok=ok))
+        lines.append(t["closure"].format(ref=ref, c=_number(f.closure, spec=".2e", zero=None, nonfinite="show"), n=n, ok=ok))
     else:
-        lines.append(t["closure_J"].format(ref=ref, c=f"{f.closure:.2e}", n=n, ok=ok))
+        lines.append(t["closure_J"].format(ref=ref, c=_number(f.closure, spec=".2e", zero=None,
+                                                              nonfinite="show"), n=n, ok=ok))
     lines.append(t["mean"].format(m=_g(f.M_y_cycle_mean, 8), ref=ref, d=_g(s.balancing_moment, 8)))
     if f.analysis is not None and f.motion == "true":
         grp = f.analysis.balancing_moment_groups

@@ -20,6 +20,7 @@ from __future__ import annotations
 from flywheel.render.catalogue import (_english, catalogue, entry, has,  # noqa: F401
                                        notice_codes, plural, words)
 from flywheel.render.message_params import russian_params
+from flywheel.render.numbers import typeset_params
 
 
 #: the words of a Notice's lead (the place it names)
@@ -37,7 +38,7 @@ def message(text: str, lang: str = "en") -> str:
     russian = catalogue("ru").pgettext(code, english)
     if russian == english:                          # an English changed, not yet in the .po
         russian = entry(code, "ru")
-    return lead + russian.format(**russian_params(code, text.params, message))
+    return lead + russian.format(**typeset_params(russian_params(code, text.params, message)))
 
 
 def prefix(key: str, lang: str = "en") -> str:

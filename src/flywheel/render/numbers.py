@@ -10,8 +10,24 @@ The policy (the defaults of :func:`fmt`):
 - NaN and ±inf are refused (ValueError): a non-finite number is refused where it enters
   (docs/architecture.md), so one reaching a renderer is a bug.
 
-The Russian decimal comma and true minus are applied to the formatted text by the templates
-that hold it (render/nomenclature.py), not here.
+Russian typography (issue 28, every Russian document: the записка in md/html/pdf/docx, the
+terminal summary in ru) is a second policy of the same function, switched on for a stretch of
+rendering by ``with typography("ru"):`` (the CLI wraps the building of a Russian document and
+summary in it; machine-readable outputs — summary.json, the CSV files — are never written inside
+it):
+
+- results to ``RESULT_SIG`` (4) significant digits (a larger ``sig`` or a ``g``/``e`` spec is
+  capped at it); an input the case gave (``given=True``) with the digits it was given (the
+  shortest text that reads back as the same number); an ``f`` spec (``.2f``) keeps its decimals;
+- never the exponent form: fixed notation; a number of more than ``RESULT_SIG`` integer digits
+  printed whole (12 345,6 → «12 346»);
+- round-off as 0: |x| below the computation's noise (``typography(lang, noise=…)``, default
+  ``NOISE`` = 1e-9 in SI units, or the caller's larger ``zero``) prints «0»;
+- decimal comma, true minus «−» (U+2212), the integer part of five digits or more in groups of
+  three separated by a narrow no-break space (U+202F): «−12 345,6».
+
+The CSV dialect ``excel-ru`` writes the plain text of a number with :func:`excel_ru` (a decimal
+comma only: a hyphen-minus and the exponent stay, so that Excel reads a number).
 
 The renderers' own formatters (``_g``, ``g``, ``_fmt``, ``_num``) are thin calls of
 :func:`fmt` that keep today's outputs byte for byte. Where they differ from the policy they
@@ -30,21 +46,136 @@ pass it as a parameter: differences to remove later, each a visible change of ou
 from __future__ import annotations
 
 import math
+import re
+from contextlib import contextmanager
+from contextvars import ContextVar
+from dataclasses import dataclass
+from decimal import Decimal
 
 import numpy as np
 
 DASH = "—"
 NONFINITE = ("refuse", "show", "dash", "dash-nan")
+#: Russian typography: significant digits of a result; the noise below which a value is 0 (SI)
+RESULT_SIG, NOISE = 4, 1e-9
+MINUS, THIN = "\u2212", "\u202f"
+
+
+@dataclass(frozen=True)
+class Typography:
+    """The policy in force for a stretch of rendering (:func:`typography`)."""
+
+    lang: str = "en"
+    noise: float = NOISE
+
+
+_POLICY: ContextVar[Typography | None] = ContextVar("flywheel_typography", default=None)
+
+
+@contextmanager
+def typography(lang: str, noise: float = NOISE):
+    """Within the block, :func:`fmt` writes ``lang``'s typography ("ru": the Russian policy of
+    the module's docstring, with ``noise`` the computation's round-off; "en": the default).
+
+    >>> with typography("ru"):
+    ...     fmt(-12345.678), fmt(0.0496522), fmt(5.7e-14), fmt(1.5e-5, 2), fmt(142.8, spec=".2f")
+    ('−12\u202f346', '0,04965', '0', '0,000015', '142,80')
+    >>> with typography("ru"):
+    ...     fmt(0.086603, given=True), fmt(1200.0, given=True), fmt(2.5e-6, given=True)
+    ('0,086603', '1200', '0,0000025')
+    """
+    token = _POLICY.set(Typography(lang, noise) if lang == "ru" else None)
+    try:
+        yield
+    finally:
+        _POLICY.reset(token)
+
+
+def typeset(lang: str, build, /, *args, **kwargs):
+    """``build(*args, **kwargs)`` under ``lang``'s typography (:func:`typography`): a Russian
+    document or summary built with Russian numbers."""
+    with typography(lang):
+        return build(*args, **kwargs)
+
+
+def excel_ru(text: str) -> str:
+    """A number's plain text as the CSV dialect ``excel-ru`` writes it: the decimal comma (the
+    minus and an exponent stay as Excel reads them).
+
+    >>> excel_ru("-1.5e-05")
+    '-1,5e-05'
+    """
+    return text.replace(".", ",")
+
+
+def _grouped(digits: str) -> str:
+    """An integer part of five digits or more in groups of three (ГОСТ 8.417 / Russian usage)."""
+    if len(digits) < 5:
+        return digits
+    head = len(digits) % 3 or 3
+    return THIN.join([digits[:head]] + [digits[i:i + 3] for i in range(head, len(digits), 3)])
+
+
+def _russian(x: float, sig: int, spec: str | None, given: bool, noise: float) -> str:
+    """A finite ``x`` under the Russian policy (the module's docstring)."""
+    if x == 0 or abs(x) < noise:
+        return "0"
+    a = abs(x)
+    m = _SPEC.fullmatch(spec or "")
+    plus = "+" if m and m["sign"] == "+" and x > 0 else ""
+    if spec is not None and m is None:            # a spec of another kind: as it asks
+        return format(x, spec.replace(",", "").replace("_", "")).replace("-", MINUS).replace(".", ",")
+    if m and m["type"] in ("f", "F"):
+        text = format(a, f".{m['digits'] or 6}f")
+        spec = ".f"
+    elif given:
+        text = format(Decimal(repr(a)), "f")
+    else:
+        if m and m["digits"]:                     # ".6g", ".1e": their digits, capped
+            sig = int(m["digits"]) + (m["type"] in ("e", "E"))
+        sig = max(1, min(sig, RESULT_SIG))
+        if a >= 10.0 ** sig:
+            text = f"{a:.0f}"
+        else:
+            text = format(Decimal(format(a, f".{sig - 1}e")).normalize(), "f")
+    if "." in text:
+        whole, frac = text.split(".")
+        frac = frac.rstrip("0") if not (spec and spec.endswith("f")) else frac
+    else:
+        whole, frac = text, ""
+    if text.strip("0.") == "":                    # rounded away entirely
+        return "0" if not frac else "0," + frac
+    return (MINUS if x < 0 else plus) + _grouped(whole) + ("," + frac if frac else "")
+
+
+_SPEC = re.compile(r"(?P<sign>[+ -]?)(?:\.(?P<digits>\d+))?(?P<type>[eEfFgG]?)")
+
+
+class _Typeset(float):
+    """A number a sentence's template formats (``{work:+.1e}``) as :func:`fmt` writes it."""
+
+    def __format__(self, spec: str) -> str:
+        return fmt(float(self), spec=spec or None, zero=None, nonfinite="show")
+
+
+def typeset_params(params: dict) -> dict:
+    """A sentence's parameters with their real numbers written by the policy in force: within
+    ``typography("ru")`` a warning copied into a Russian document has Russian numbers; outside
+    it (stderr, English) the parameters are returned as they are."""
+    if _POLICY.get() is None:
+        return params
+    return {k: _Typeset(v) if isinstance(v, float) else v for k, v in params.items()}
 
 
 def fmt(x, sig: int = 6, *, zero: float | None = 1e-12, spec: str | None = None,
-        nonfinite: str = "refuse", integers_above: bool = False) -> str:
+        nonfinite: str = "refuse", integers_above: bool = False, given: bool = False) -> str:
     """``x`` (a real number or None) as text under the policy of this module's docstring.
 
     sig: significant digits (``g`` presentation), unless ``spec`` (a whole format spec such as
     ".6f") is given; zero: |x| below it, and −0, print as 0 (None: −0 stays ``-0``; 0: only
     ±0 → 0); nonfinite: "refuse" (ValueError), "show" (``nan``, ``inf``), "dash" (``—``),
-    "dash-nan" (``—`` for NaN, ``inf`` shown); integers_above: |x| ≥ 10^sig as a whole number.
+    "dash-nan" (``—`` for NaN, ``inf`` shown); integers_above: |x| ≥ 10^sig as a whole number;
+    given: ``x`` is an input of the case (Russian typography prints it with its own digits).
 
     >>> fmt(-0.0), fmt(3e-13), fmt(1234567.0), fmt(0.1 + 0.2), fmt(None)
     ('0', '0', '1.23457e+06', '0.3', '—')
@@ -54,12 +185,16 @@ def fmt(x, sig: int = 6, *, zero: float | None = 1e-12, spec: str | None = None,
     x = float(x)
     if not math.isfinite(x):
         if nonfinite == "show" or (nonfinite == "dash-nan" and not math.isnan(x)):
-            return format(x, spec or f".{sig}g")
+            text = format(x, spec or f".{sig}g")
+            return text.replace("-", MINUS) if _POLICY.get() is not None else text
         if nonfinite in ("dash", "dash-nan"):
             return DASH
         # library use only: no CLI input reaches this
         raise ValueError(f"a non-finite number ({x}) to format: it should have been refused "
                          f"where it entered")
+    policy = _POLICY.get()
+    if policy is not None:
+        return _russian(x, sig, spec, given, max(policy.noise, zero or 0.0))
     if zero is not None and (x == 0 or abs(x) < zero):
         x = 0.0
     if integers_above and abs(x) >= 10.0 ** sig:

@@ -10,6 +10,8 @@ result (``DutyCycleResult``, by attribute).
 """
 from __future__ import annotations
 
+from flywheel.render.numbers import fmt as _number
+
 from flywheel.render import nomenclature as nm
 from flywheel.render.catalogue import words
 from flywheel.render.document import Bullets, Document, Formula, Heading, Paragraph
@@ -57,7 +59,8 @@ def build_duty_cycle_document(r, title: str, source: str, lang: str = "en") -> D
         add(Heading(2, t["checks"]))
         L = L10N[lang]
         table(L["checks"], (L["quantity"], L["value"], L["unit"]),
-              [(nm.name(k, lang), f"{v:.1e}", nm.unit_of(k, lang)) for k, v in r.checks])
+              [(nm.name(k, lang), _number(v, spec=".1e", zero=None, nonfinite="show"),
+                nm.unit_of(k, lang)) for k, v in r.checks])
     if r.warnings:
         add(Heading(2, t["warn"]))
         add(Bullets(tuple(nm.message(w, lang) for w in r.warnings)))

@@ -6,6 +6,9 @@
 - docx: python-docx, formulas as Word equations (OMML written from mathfmt's tree); the zip's
   dates fixed so reruns are identical.
 
+A Russian PDF and DOCX take the ГОСТ 7.32-2017 layout of a пояснительная записка instead
+(render/report_gost.py: title page, contents, captions, margins, fonts).
+
 Heavy imports (jinja2, typst, docx) live inside the function of their format.
 """
 from __future__ import annotations
@@ -15,13 +18,13 @@ import io
 import re
 import shutil
 import tempfile
-import zipfile
 from dataclasses import dataclass
 from pathlib import Path
 
 from flywheel.render import mathfmt
 from flywheel.render.document import Bullets, Document, Figure, Formula, Heading, Paragraph, Table
 from flywheel.render.report import CAPTION
+from flywheel.render.report_gost import _fixed_zip
 
 FORMATS = ("md", "html", "pdf", "docx")
 #: a table of more columns than WIDE gets a smaller font; of more than WIDE_PAGE a landscape page
@@ -206,17 +209,6 @@ def pdf(doc: Document, plots_dir: Path | None = None) -> bytes:
 
 
 # -- DOCX -----------------------------------------------------------------------------------------
-def _fixed_zip(data: bytes) -> bytes:
-    """The zip with every entry dated 1980-01-01 (python-docx stamps the current time)."""
-    src = zipfile.ZipFile(io.BytesIO(data))
-    buf = io.BytesIO()
-    with zipfile.ZipFile(buf, "w", zipfile.ZIP_DEFLATED) as dst:
-        for info in src.infolist():
-            dst.writestr(zipfile.ZipInfo(info.filename, date_time=(1980, 1, 1, 0, 0, 0)),
-                         src.read(info.filename), compress_type=zipfile.ZIP_DEFLATED)
-    return buf.getvalue()
-
-
 def docx(doc: Document, plots_dir: Path | None = None) -> bytes:
     """The document as Word (python-docx); formulas as native equations (OMML, mathfmt.omml)."""
     import datetime
@@ -286,7 +278,9 @@ def docx(doc: Document, plots_dir: Path | None = None) -> bytes:
 
 
 def write_reports(doc: Document, folder: Path, formats, plots_dir: Path | None) -> list[str]:
-    """Write report.<ext> for each format into ``folder``; the names written."""
+    """Write report.<ext> for each format into ``folder``; the names written (a Russian PDF and
+    DOCX in the ГОСТ layout of render/report_gost.py)."""
+    from flywheel.render import report_gost
     from flywheel.render.report import markdown
 
     names = []
@@ -297,9 +291,11 @@ def write_reports(doc: Document, folder: Path, formats, plots_dir: Path | None) 
         elif f == "html":
             (folder / name).write_text(html(doc, plots_dir), encoding="utf-8")
         elif f == "pdf":
-            (folder / name).write_bytes(pdf(doc, plots_dir))
+            (folder / name).write_bytes(report_gost.pdf(doc, plots_dir) if doc.lang == "ru"
+                                        else pdf(doc, plots_dir))
         elif f == "docx":
-            (folder / name).write_bytes(docx(doc, plots_dir))
+            (folder / name).write_bytes(report_gost.docx(doc, plots_dir) if doc.lang == "ru"
+                                        else docx(doc, plots_dir))
         else:
             # library use only: no CLI input reaches this
             raise ValueError(f"report format {f!r} (allowed: {', '.join(FORMATS)})")

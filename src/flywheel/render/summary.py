@@ -53,13 +53,13 @@ def time_domain_lines(td, lang: str = "en") -> list[str]:
         return []
     t = L10N[lang]
     v = td.verification
-    out = [t["td_verify"].format(n=v.cycles, rep=f"{v.repeat_error:.1e}",
-                                 dev=f"{v.max_deviation:.1e}", T=_g(v.period))]
+    out = [t["td_verify"].format(n=v.cycles, rep=_number(v.repeat_error, spec=".1e", zero=None, nonfinite="show"),
+                                 dev=_number(v.max_deviation, spec=".1e", zero=None, nonfinite="show"), T=_g(v.period))]
     st = td.startup
     if not st.computed:
         out.append(t["st_none"].format(reason=nm.message(st.reason, lang)))
     elif st.stalled:
-        out.append(t["st_stall"].format(a=f"{st.stall_angle_deg:.1f}"))
+        out.append(t["st_stall"].format(a=_number(st.stall_angle_deg, spec=".1f", zero=None, nonfinite="show")))
     elif st.converged and st.time_to_steady is not None:
         out.append(t["st_ok"].format(t=_g(st.time_to_steady, 4), n=st.cycles_to_steady,
                                      w=_g(st.omega_mean_steady)))
@@ -72,7 +72,7 @@ def time_domain_lines(td, lang: str = "en") -> list[str]:
     if rd.reason:                # English: the fixed line; Russian: the reason itself
         out.append(t["rd_never"].format(reason=nm.message(rd.reason, lang)))
         return out
-    out.append(t["rd"].format(t=_g(rd.time, 4), rev=f"{rd.angle_deg / 360:.2f}")
+    out.append(t["rd"].format(t=_g(rd.time, 4), rev=_number(rd.angle_deg / 360, spec=".2f", zero=None, nonfinite="show"))
                + ("" if rd.stopped else t["rd_not"]))
     return out
 
@@ -92,7 +92,8 @@ def print_summary(results, console=None, lang: str = "en") -> None:
 
     def at(key: str) -> str:
         """The value of ``key`` and where (φ) it is."""
-        return f"{_g(getattr(s, key))} {t['at']} {getattr(s, f'phi_{key}_deg'):.2f}°"
+        phi = _number(getattr(s, f"phi_{key}_deg"), spec=".2f", zero=None, nonfinite="show")
+        return f"{_g(getattr(s, key))} {t['at']} {phi}°"
 
     from flywheel.io.text import cut_end   # a long title or source cut with «…» (issue 23)
 

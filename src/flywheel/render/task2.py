@@ -67,7 +67,7 @@ def print_summary(r, title: str = "", source: str = "", console=None, lang: str 
         name = nm.symbol("t2_M_D" if r.power_found == "driving" else "t2_M_C", lang)
         console.print(L("t2_power", P=_g(r.power), name=name, T=_g(r.power / r.omega_mean)))
     if not r.steady:
-        console.print(L("t2_unsteady", work=f"{r.work_end:.6g}", omega_end=_g(r.omega_end, ".6f"),
+        console.print(L("t2_unsteady", work=_number(r.work_end, spec=".6g", zero=None, nonfinite="show"), omega_end=_g(r.omega_end, ".6f"),
                         omega0=_g(r.omega0, ".6f")))
 
     t = Table(title=L("t2_segments"))

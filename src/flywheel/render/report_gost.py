@@ -1,0 +1,566 @@
+"""The Russian записка in PDF and DOCX laid out as a course project's пояснительная записка
+(ГОСТ 7.32-2017, ГОСТ 2.105-2019; docs/report.md):
+
+- A4; margins left 30, right 10 (``[document] margin_right_mm``), top and bottom 20 mm;
+- a Times-metric serif with Cyrillic (Liberation Serif; :func:`font_paths` says where it is
+  looked for and what stands in when it is absent) at 14 pt, 12 pt in tables (10 or 9 pt in a
+  table of more than ``WIDE`` columns, as ГОСТ 2.105 allows), 1.5 line spacing, a 1.25 cm indent;
+- a title page (:class:`~flywheel.render.blocks.TitlePage`), «Содержание» with page numbers,
+  the sections numbered continuously (1, 1.1, …: the numbers the document model's headings carry
+  are replaced by the layout's own), «Список использованных источников» unnumbered;
+- «Рисунок N — …» under a figure, «Таблица N — …» above a table and kept with its first rows,
+  «Продолжение таблицы N» above the rest of a table split across pages (the PDF; Word repeats
+  the header row instead); page numbers at the bottom centre, none on the title page.
+
+The DOCX is python-docx's template with its styles restyled (Normal, Heading 1–2, Caption,
+Title, List Bullet, Table Grid), captions numbered by Word fields (SEQ Рисунок, SEQ Таблица),
+the contents a TOC field Word fills on opening, numbers right-aligned in the tables.
+Heavy imports (typst, docx) inside the functions.
+"""
+from __future__ import annotations
+
+import importlib.util
+import io
+import re
+import zipfile
+from dataclasses import dataclass
+from pathlib import Path
+
+from flywheel.render import mathfmt
+from flywheel.render.blocks import Bullets, Document, Figure, Formula, Heading, Paragraph, Table, TitlePage
+from flywheel.render.catalogue import words
+
+#: a table of more columns than WIDE in 10 pt (9 pt beyond 9); of more than WIDE_PAGE
+#: on a landscape page
+WIDE, WIDE_PAGE = 7, 12
+
+G = words("report_gost", {
+    "contents": "Contents",
+    "sources": "List of references",
+    "note": "Explanatory note",
+    "project": "to the course project in the theory of machines and mechanisms",
+    "student": "Student",
+    "group": "group",
+    "teacher": "Teacher",
+    "figure": "Figure",
+    "table": "Table",
+    "continued": "Continuation of table {n}",
+})
+
+#: the headings the builders give their list of sources (they become ГОСТ's structural element)
+_SOURCES = {"Источники", "Список источников", "Список использованных источников", "Sources"}
+_NUMBER = re.compile(r"^\s*\d+(\.\d+)*\.?\s+")
+
+#: where the Times-metric serif is looked for (Debian/Ubuntu's fonts-liberation, Fedora's,
+#: Arch's); $FLYWHEEL_FONTS (folders separated by os.pathsep) first
+FONT_DIRS = ("/usr/share/fonts/truetype/liberation", "/usr/share/fonts/truetype/liberation2",
+             "/usr/share/fonts/liberation-serif", "/usr/share/fonts/liberation",
+             "/usr/share/fonts/TTF")
+#: the families in order: the text's serif, then the fallbacks for what it lacks (DejaVu Serif:
+#: ∮, sub-/superscript digits; DejaVu Sans: the combining arrow of a vector, g⃗), DejaVu shipped
+#: with matplotlib (a dependency), so present everywhere
+FAMILIES = ("Liberation Serif", "DejaVu Serif", "DejaVu Sans")
+
+
+def font_files() -> list[Path]:
+    """The font files of FAMILIES in the folders of :func:`font_paths` (typst is given these
+    only: reading every font of matplotlib's folder took longer than the typesetting)."""
+    stems = tuple(f.replace(" ", "") for f in FAMILIES)
+    out = []
+    for d in font_paths():
+        for f in sorted(Path(d).glob("*.[ot]tf")):
+            stem = f.stem.split("-")[0]
+            if stem in stems:
+                out.append(f)
+    return out
+
+
+def font_paths() -> list[str]:
+    """The folders typst reads fonts from: $FLYWHEEL_FONTS, the first of FONT_DIRS holding
+    Liberation Serif, matplotlib's own DejaVu fonts. Without Liberation Serif typst sets the text
+    in DejaVu Serif (not Times-metric: the pages run longer; .ci/run installs fonts-liberation)."""
+    import os
+
+    out = [d for d in os.environ.get("FLYWHEEL_FONTS", "").split(os.pathsep) if d]
+    for d in FONT_DIRS:
+        if Path(d, "LiberationSerif-Regular.ttf").is_file():
+            out.append(d)
+            break
+    spec = importlib.util.find_spec("matplotlib")
+    if spec is not None and spec.submodule_search_locations:
+        mpl = Path(list(spec.submodule_search_locations)[0]) / "mpl-data" / "fonts" / "ttf"
+        if mpl.is_dir():
+            out.append(str(mpl))
+    return out
+
+
+# -- the blocks as the layout numbers them ------------------------------------------------------
+@dataclass(frozen=True)
+class Section:
+    """A heading as the layout sets it: its number ("" for a structural element), its level
+    (1 a section, 2 a subsection), its text without the model's number."""
+
+    number: str
+    level: int
+    text: str
+    structural: bool = False
+
+
+def sections(doc: Document) -> list:
+    """The document's blocks for the ГОСТ layout: the title heading dropped (it is on the title
+    page), every other heading renumbered continuously, the sources a structural element."""
+    out, n, m, waiting = [], 0, 0, []
+    for b in doc.blocks:
+        if not out and not (isinstance(b, Heading) and b.level >= 2):
+            if not isinstance(b, Heading):      # the source of the data: into section 1
+                waiting.append(b)
+            continue
+        if isinstance(b, Heading):
+            if b.level <= 1:
+                continue
+            text = _NUMBER.sub("", b.text).rstrip(".")
+            if b.level == 2 and text in _SOURCES:
+                out.append(Section("", 1, G[doc.lang]["sources"], True))
+                continue
+            if b.level == 2:
+                n, m = n + 1, 0
+                out.append(Section(str(n), 1, text))
+                out += waiting
+                waiting = []
+            else:
+                m += 1
+                out.append(Section(f"{max(n, 1)}.{m}", 2, text))
+        else:
+            out.append(b)
+    return out
+
+
+def _front(doc: Document) -> TitlePage:
+    return doc.front if doc.front is not None else TitlePage(machine=doc.title)
+
+
+# -- typst / PDF --------------------------------------------------------------------------------
+def _lit(s: str) -> str:
+    """A run of text as typst string literals (nothing in it is markup); a narrow no-break space
+    (the numbers' thousands, render/numbers.py) as a box of its width, which no line breaks."""
+    if not s:
+        return ""
+    parts = s.split("\u202f")
+    return "#box(width: 0.2em)".join(
+        '#"' + p.replace("\\", "\\\\").replace('"', '\\"') + '"' if p else "" for p in parts)
+
+
+def _ts(text: str) -> str:
+    """Text as typst markup: **bold**, the symbols' subscripts as #sub."""
+    def subs(s: str) -> str:
+        return "".join(f"#sub[{_lit(r)}]" if b else _lit(r) for r, b in mathfmt.subscripts(s))
+
+    parts = text.split("**")
+    return "".join(subs(p) if i % 2 == 0 else f"#strong[{subs(p)}]" for i, p in enumerate(parts))
+
+
+_PREAMBLE = """#set document(title: {title}, date: none)
+#set page(paper: "a4", margin: (left: 30mm, right: {right}mm, top: 20mm, bottom: 20mm),
+  footer: context {{ if counter(page).get().first() > 1 {{ align(center, counter(page).display()) }} }})
+#set text(font: ({fonts}), size: 14pt, lang: "ru", hyphenate: true)
+#set par(justify: true, leading: 1em, spacing: 1em, first-line-indent: (amount: 1.25cm, all: true))
+#show heading: set text(size: 14pt, weight: "bold")
+#show heading: it => block(above: 1.5em, below: 1em, sticky: true, width: 100%,
+  if it.supplement == [S] {{ align(center, it.body) }} else {{ h(1.25cm) + it.body }})
+#set list(indent: 1.25cm)
+#show math.equation: set text(font: ("New Computer Modern Math", {fonts}))
+#set table(stroke: 0.5pt)
+"""
+
+
+def _title_page(f: TitlePage, g: dict) -> str:
+    blank = "#box(width: 45mm, stroke: (bottom: 0.5pt))"
+
+    def line(value: str, width: str = "45mm") -> str:
+        return _ts(value) if value else f"#box(width: {width}, stroke: (bottom: 0.5pt))"
+
+    top = ([_ts(f.ministry)] if f.ministry else []) + [line(x, "120mm") for x in (f.university,
+                                                                                    f.department)]
+    out = ["#page(footer: none)[",
+           "#set par(first-line-indent: 0pt, justify: false, leading: 0.65em)",
+           "#align(center)[" + " \\\n#v(0.4em)".join(top) + "]",
+           "#v(1fr)",
+           f"#align(center)[#text(weight: \"bold\", size: 16pt)[{_ts(g['note'].upper())}] \\\n"
+           f"{_ts(g['project'])} \\\n#v(0.6em)#text(weight: \"bold\")[«{_ts(f.machine)}»]"
+           + (f" \\\n#v(0.6em){_ts(f.designation)} ПЗ" if f.designation else "") + "]",
+           "#v(1fr)",
+           "#align(right)[#grid(columns: (auto, auto), column-gutter: 4mm, row-gutter: 1.2em, align: left,",
+           f"  [{_ts(g['student'])} {_ts(g['group'])} {line(f.group, '25mm')}], [{blank} {line(f.student)}],",
+           f"  [{_ts(g['teacher'])}], [{blank} {line(f.teacher)}])]",
+           "#v(1fr)",
+           "#align(center)[" + (_ts(f.city) if f.city else "#box(width: 30mm, stroke: (bottom: 0.5pt))")
+           + " " + (_ts(f.year) if f.year else "#box(width: 15mm, stroke: (bottom: 0.5pt))") + "]",
+           "]"]
+    return "\n".join(x for x in out if x)
+
+
+def typst_source(doc: Document, plots: bool = True) -> str:
+    """The Russian записка as a typst file in the ГОСТ layout (figures as plots/<name>; none
+    when ``plots`` is false)."""
+    g = G[doc.lang]
+    f = _front(doc)
+    fonts = ", ".join(f'"{x}"' for x in FAMILIES)
+    out = [_PREAMBLE.format(title=_ts(doc.title)[1:] or '""', right=f"{f.margin_right_mm:g}",
+                            fonts=fonts),
+           _title_page(f, g),
+           f"#align(center)[#text(weight: \"bold\")[{_ts(g['contents'].upper())}]]",
+           "#outline(title: none, indent: 1.25cm, depth: 2)",
+           ""]
+    for b in sections(doc):
+        if isinstance(b, Section):
+            body = _ts(b.text.upper() if b.structural else b.text)
+            if b.level == 1:
+                out.append("#pagebreak(weak: true)")
+            if b.structural:
+                out.append(f"#heading(level: 1, numbering: none, supplement: [S])[{body}]")
+            else:
+                out.append(f"#heading(level: {b.level}, numbering: none)[{_lit(b.number)}#h(0.6em){body}]")
+        elif isinstance(b, Paragraph):
+            out.append(_ts(b.text))
+        elif isinstance(b, Bullets):
+            out += ["- " + _ts(i) for i in b.items]
+        elif isinstance(b, Formula):
+            out.append(f"$ {mathfmt.typst(b.tex)} $")
+        elif isinstance(b, Table):
+            out.append(_table(b, g))
+        elif isinstance(b, Figure):
+            cap = _ts(f"{g['figure']} {b.number} — {b.caption}")
+            img = f'image("plots/{b.file}", width: 100%), ' if plots else ""
+            out.append(f"#figure({img}numbering: none, gap: 0.8em, "
+                       f"caption: [#set par(first-line-indent: 0pt); {cap}])")
+        out.append("")
+    return "\n".join(out)
+
+
+def _table(b: Table, g: dict) -> str:
+    """A table under its caption «Таблица N — …» (a sticky block: never left at the foot of a
+    page without the table), its header row repeated on each page it runs onto with
+    «Продолжение таблицы N» above it; the first column left, the numbers right."""
+    n = len(b.header)
+    size = "12pt" if n <= WIDE else "10pt" if n <= 9 else "9pt"
+    label = f"gost-table-{b.number}"
+    first = _ts(f"{g['table']} {b.number} — {b.caption}")
+    later = _ts(g["continued"].format(n=b.number))
+    cont = (f"table.cell(colspan: {n}, stroke: none, inset: 0pt, context {{ "
+            f"if here().page() != locate(<{label}>).page() {{ box(height: 1.6em, place(left + horizon, "
+            f"box(width: 120mm)[{later}])) }} }})")
+    head = ", ".join(f"table.cell(align: center + horizon)[#strong[{_ts(c)}]]" for c in b.header)
+    cells = ", ".join(f"[{_ts(c)}]" for r in b.rows for c in r)
+    src = (f"#block(sticky: true, above: 1.2em, below: 0.5em)[#set par(first-line-indent: 0pt, "
+           f"justify: false); {first}]\n"
+           f"#[#set text(size: {size})\n#set par(first-line-indent: 0pt, justify: false, leading: 0.5em)\n"
+           f"#table(columns: {n}, inset: (x: 2.5pt, y: 4pt), "
+           f"align: (x, y) => if x == 0 {{ left + horizon }} else {{ right + horizon }},\n"
+           f"table.header(repeat: true, {cont}, {head}),\n{cells}) <{label}>]")
+    return f"#page(flipped: true)[\n{src}\n]" if n > WIDE_PAGE else src
+
+
+def pdf(doc: Document, plots_dir: Path | None = None) -> bytes:
+    """The Russian записка as PDF (typst) in the ГОСТ layout."""
+    import shutil
+    import tempfile
+
+    import typst
+
+    with tempfile.TemporaryDirectory(prefix="flywheel-typst-") as tmp:
+        root = Path(tmp)
+        (root / "plots").mkdir()
+        for f in doc.figures:
+            if plots_dir is not None and (plots_dir / f.file).is_file():
+                shutil.copyfile(plots_dir / f.file, root / "plots" / f.file)
+        (root / "main.typ").write_text(typst_source(doc, plots_dir is not None), encoding="utf-8")
+        fonts = root / "fonts"
+        fonts.mkdir()
+        for f in font_files():
+            if not (fonts / f.name).exists():
+                (fonts / f.name).symlink_to(f)
+        return typst.compile(str(root / "main.typ"), root=str(root), format="pdf",
+                             font_paths=[str(fonts)], ignore_system_fonts=True, timestamp=0)
+
+
+# -- DOCX ---------------------------------------------------------------------------------------
+def _fixed_zip(data: bytes) -> bytes:
+    """The zip with every entry dated 1980-01-01 (python-docx stamps the current time)."""
+    src = zipfile.ZipFile(io.BytesIO(data))
+    buf = io.BytesIO()
+    with zipfile.ZipFile(buf, "w", zipfile.ZIP_DEFLATED) as dst:
+        for info in src.infolist():
+            dst.writestr(zipfile.ZipInfo(info.filename, date_time=(1980, 1, 1, 0, 0, 0)),
+                         src.read(info.filename), compress_type=zipfile.ZIP_DEFLATED)
+    return buf.getvalue()
+
+
+_SERIF = "Times New Roman"          # Word's Times; LibreOffice sets it in Liberation Serif
+
+
+def _styles(d) -> None:
+    """python-docx's template restyled to the layout: black serif 14 pt, 1.5 lines, 1.25 cm indent."""
+    from docx.enum.text import WD_ALIGN_PARAGRAPH, WD_LINE_SPACING
+    from docx.oxml.ns import qn
+    from docx.shared import Cm, Pt, RGBColor
+
+    def font(style, size, bold=False, italic=False):
+        style.font.name, style.font.size = _SERIF, Pt(size)
+        style.font.bold, style.font.italic = bold, italic
+        style.font.color.rgb = RGBColor(0, 0, 0)
+        rpr = style.element.get_or_add_rPr()
+        fonts = rpr.find(qn("w:rFonts"))
+        for attr in ("w:ascii", "w:hAnsi", "w:cs", "w:eastAsia"):
+            fonts.set(qn(attr), _SERIF)
+        for attr in ("w:asciiTheme", "w:hAnsiTheme", "w:cstheme", "w:eastAsiaTheme"):
+            fonts.attrib.pop(qn(attr), None)
+
+    normal = d.styles["Normal"]
+    font(normal, 14)
+    pf = normal.paragraph_format
+    pf.line_spacing_rule = WD_LINE_SPACING.ONE_POINT_FIVE
+    pf.first_line_indent, pf.space_before, pf.space_after = Cm(1.25), Pt(0), Pt(0)
+    pf.alignment = WD_ALIGN_PARAGRAPH.JUSTIFY
+    for name in ("Heading 1", "Heading 2"):
+        h = d.styles[name]
+        font(h, 14, bold=True)
+        h.paragraph_format.first_line_indent = Cm(1.25)
+        h.paragraph_format.space_before, h.paragraph_format.space_after = Pt(12), Pt(12)
+        h.paragraph_format.keep_with_next = True
+        h.paragraph_format.alignment = WD_ALIGN_PARAGRAPH.LEFT
+        h.paragraph_format.line_spacing_rule = WD_LINE_SPACING.ONE_POINT_FIVE
+    d.styles["Heading 1"].paragraph_format.page_break_before = True
+    title = d.styles["Title"]
+    font(title, 14, bold=True)
+    title.paragraph_format.alignment = WD_ALIGN_PARAGRAPH.CENTER
+    title.paragraph_format.first_line_indent = Cm(0)
+    if title.element.pPr is not None:
+        title.element.pPr.remove_all("w:pBdr")
+    cap = d.styles["Caption"]
+    font(cap, 14)
+    cap.paragraph_format.first_line_indent = Cm(0)
+    cap.paragraph_format.space_before, cap.paragraph_format.space_after = Pt(6), Pt(6)
+    cap.paragraph_format.line_spacing_rule = WD_LINE_SPACING.SINGLE
+    lst = d.styles["List Bullet"]
+    font(lst, 14)
+    lst.paragraph_format.first_line_indent = Cm(0)
+
+
+def _field(p, instr: str, shown: str) -> None:
+    """A Word field (SEQ, PAGE, TOC) in paragraph ``p``, its last result ``shown``."""
+    from docx.oxml import parse_xml
+
+    w = 'xmlns:w="http://schemas.openxmlformats.org/wordprocessingml/2006/main"'
+    p._p.append(parse_xml(f'<w:fldSimple {w} w:instr=" {instr} "><w:r><w:t xml:space="preserve">'
+                          f'{shown}</w:t></w:r></w:fldSimple>'))
+
+
+_W = 'xmlns:w="http://schemas.openxmlformats.org/wordprocessingml/2006/main"'
+_M = 'xmlns:m="http://schemas.openxmlformats.org/officeDocument/2006/math"'
+
+
+def _r(text: str, bold: bool = False, sub: bool = False, half_points: int | None = None) -> str:
+    """A run of text as WordprocessingML (rPr in the schema's order: b, sz, vertAlign)."""
+    from xml.sax.saxutils import escape
+
+    props = (("<w:b/>" if bold else "") + (f'<w:sz w:val="{half_points}"/><w:szCs w:val="{half_points}"/>'
+                                           if half_points else "")
+             + ('<w:vertAlign w:val="subscript"/>' if sub else ""))
+    return (f"<w:r>{f'<w:rPr>{props}</w:rPr>' if props else ''}"
+            f'<w:t xml:space="preserve">{escape(text)}</w:t></w:r>')
+
+
+def _runs(text: str, bold: bool = False, half_points: int | None = None) -> str:
+    """**bold** runs and the symbols' subscripts (J_II, ΔT_нб) as subscript runs."""
+    return "".join(_r(seg, bold or i % 2 == 1, sub, half_points)
+                   for i, part in enumerate(text.split("**")) if part
+                   for seg, sub in mathfmt.subscripts(part) if seg)
+
+
+def _p(inner: str, style: str | None = None, jc: str | None = None, indent: bool = False,
+       keep: bool = False, single: bool = False) -> str:
+    """A paragraph (pPr in the schema's order: pStyle, keepNext, spacing, ind, jc)."""
+    props = ((f'<w:pStyle w:val="{style}"/>' if style else "") + ("<w:keepNext/>" if keep else "")
+             + ('<w:spacing w:after="0" w:line="240" w:lineRule="auto"/>' if single else "")
+             + ('<w:ind w:firstLine="0"/>' if indent else "") + (f'<w:jc w:val="{jc}"/>' if jc else ""))
+    return f"<w:p>{f'<w:pPr>{props}</w:pPr>' if props else ''}{inner}</w:p>"
+
+
+def _seq(name: str, number: int) -> str:
+    """A caption's number as the Word field SEQ ``name`` (its shown value ``number``)."""
+    return (f'<w:fldSimple w:instr=" SEQ {name} \\* ARABIC "><w:r><w:t>{number}</w:t></w:r>'
+            f"</w:fldSimple>")
+
+
+def _table_xml(b: Table) -> str:
+    """A table in the grid style, centred, its header row bold, centred and repeated on every
+    page it runs onto; the first column left, the numbers right; 12 pt (10 pt if wide), single."""
+    n = len(b.header)
+    hp = 24 if n <= WIDE else 20
+    rows = []
+    for r, cells in enumerate((b.header, *b.rows)):
+        tcs = "".join(
+            '<w:tc><w:tcPr><w:tcW w:w="0" w:type="auto"/></w:tcPr>'
+            + _p(_runs(text, bold=r == 0, half_points=hp), keep=r == 0, single=True, indent=True,
+                 jc="center" if r == 0 else "left" if c == 0 else "right") + "</w:tc>"
+            for c, text in enumerate(cells))
+        rows.append(f"<w:tr>{'<w:trPr><w:tblHeader/></w:trPr>' if r == 0 else ''}{tcs}</w:tr>")
+    return ('<w:tbl><w:tblPr><w:tblStyle w:val="TableGrid"/><w:tblW w:w="0" w:type="auto"/>'
+            '<w:jc w:val="center"/><w:tblLook w:val="04A0" w:firstRow="1" w:lastRow="0" '
+            'w:firstColumn="1" w:lastColumn="0" w:noHBand="0" w:noVBand="1"/></w:tblPr>'
+            f'<w:tblGrid>{"<w:gridCol/>" * n}</w:tblGrid>{"".join(rows)}</w:tbl>')
+
+
+def docx(doc: Document, plots_dir: Path | None = None) -> bytes:
+    """The Russian записка as Word in the ГОСТ layout (the module's docstring)."""
+    from xml.sax.saxutils import escape
+
+    import docx as pydocx
+    from docx.enum.text import WD_ALIGN_PARAGRAPH, WD_BREAK
+    from docx.oxml import parse_xml
+    from docx.shared import Cm, Mm, Pt
+
+    g, f = G[doc.lang], _front(doc)
+    d = pydocx.Document()
+    _styles(d)
+    sec = d.sections[0]
+    sec.page_width, sec.page_height = Mm(210), Mm(297)
+    sec.left_margin, sec.right_margin = Mm(30), Mm(f.margin_right_mm)
+    sec.top_margin = sec.bottom_margin = Mm(20)
+    sec.header_distance, sec.footer_distance = Mm(10), Mm(10)
+    sec.different_first_page_header_footer = True           # no number on the title page
+    foot = sec.footer.paragraphs[0]
+    foot.alignment = WD_ALIGN_PARAGRAPH.CENTER
+    foot.paragraph_format.first_line_indent = Cm(0)
+    _field(foot, "PAGE", "2")
+    import datetime
+
+    fixed = datetime.datetime(2000, 1, 1)
+    cp = d.core_properties
+    cp.created = cp.modified = cp.last_printed = fixed
+    cp.title, cp.author, cp.last_modified_by, cp.revision = doc.title, "flywheel", "flywheel", 1
+    settings = d.settings.element                            # Word fills the TOC on opening
+    settings.append(parse_xml('<w:updateFields xmlns:w="http://schemas.openxmlformats.org/'
+                              'wordprocessingml/2006/main" w:val="true"/>'))
+
+    def runs(p, text: str, size=None, bold: bool = False):
+        for i, part in enumerate(text.split("**")):
+            for seg, sub in mathfmt.subscripts(part) if part else ():
+                if seg:
+                    r = p.add_run(seg)
+                    r.bold = bold or i % 2 == 1 or None
+                    if sub:
+                        r.font.subscript = True
+                    if size is not None:
+                        r.font.size = size
+
+    def plain(text: str = "", align=WD_ALIGN_PARAGRAPH.CENTER, bold=False, size=None):
+        p = d.add_paragraph()
+        p.alignment = align
+        p.paragraph_format.first_line_indent = Cm(0)
+        if text:
+            runs(p, text, size, bold)
+        return p
+
+    # the title page
+    if f.ministry:
+        plain(f.ministry)
+    for x in (f.university, f.department):
+        plain(x or "_" * 40)
+    for _ in range(6):
+        plain()
+    plain(g["note"].upper(), bold=True, size=Pt(16))
+    plain(g["project"])
+    plain(f"«{f.machine}»", bold=True)
+    if f.designation:
+        plain(f"{f.designation} ПЗ")
+    for _ in range(6):
+        plain()
+    line, blank = "_" * 14, "_" * 20
+    plain(f"{g['student']} {g['group']} {f.group or line}   {line}   {f.student or blank}",
+          align=WD_ALIGN_PARAGRAPH.RIGHT)
+    plain(f"{g['teacher']}   {line}   {f.teacher or blank}", align=WD_ALIGN_PARAGRAPH.RIGHT)
+    for _ in range(6):
+        plain()
+    plain(f"{f.city or '__________'} {f.year or '____'}")
+    plain().add_run().add_break(WD_BREAK.PAGE)
+
+    # the contents: a TOC field (Word fills it with the page numbers on opening)
+    p = d.add_paragraph(style="Title")
+    p.add_run(g["contents"].upper())
+    body = list(sections(doc))
+    shown = "".join(f'<w:r><w:t xml:space="preserve">{escape(s.number + " " if s.number else "")}'
+                    f'{escape(s.text.upper() if s.structural else s.text)}</w:t></w:r><w:r><w:br/></w:r>'
+                    for s in body if isinstance(s, Section))
+    w = 'xmlns:w="http://schemas.openxmlformats.org/wordprocessingml/2006/main"'
+    toc = d.add_paragraph()
+    toc.paragraph_format.first_line_indent = Cm(0)
+    toc.alignment = WD_ALIGN_PARAGRAPH.LEFT
+    toc._p.append(parse_xml(f'<w:fldSimple {w} w:instr=\' TOC \\o "1-2" \\h \\z \\u \'>{shown}'
+                            f'</w:fldSimple>'))
+
+    # the body as WordprocessingML written here (python-docx's element API takes seconds for
+    # the record's ~1 000 runs), one parse per block, each placed before the section's settings
+    sect = d.element.body.sectPr
+
+    def put(xml: str) -> None:
+        sect.addprevious(parse_xml(f'<w:body {w} {_M}>{xml}</w:body>')[0])
+
+    for b in body:
+        if isinstance(b, Section):
+            if b.structural:
+                put(_p(_r(b.text.upper()), style="Heading1", jc="center", indent=True))
+            else:
+                put(_p(_runs(f"{b.number} {b.text}"), style=f"Heading{b.level}"))
+        elif isinstance(b, Paragraph):
+            put(_p(_runs(b.text)))
+        elif isinstance(b, Bullets):
+            for i in b.items:
+                put(_p(_runs(i), style="ListBullet"))
+        elif isinstance(b, Formula):
+            put(_p(mathfmt.omml(b.tex), jc="center", indent=True))
+        elif isinstance(b, Table):
+            put(_p(_r(g["table"] + " ") + _seq(g["table"], b.number) + _runs(f" — {b.caption}"),
+                   style="Caption", keep=True))
+            put(_table_xml(b))
+            put(_p("", single=True))
+        elif isinstance(b, Figure):
+            if plots_dir is not None and (plots_dir / b.file).is_file():
+                inline = d.part.new_pic_inline(str(plots_dir / b.file), Mm(165), None)
+                pic = d.add_paragraph()
+                pic.alignment = WD_ALIGN_PARAGRAPH.CENTER
+                pic.paragraph_format.first_line_indent = Cm(0)
+                pic.paragraph_format.keep_with_next = True
+                pic.add_run()._r.add_drawing(inline)
+            put(_p(_r(g["figure"] + " ") + _seq(g["figure"], b.number) + _runs(f" — {b.caption}"),
+                   style="Caption", jc="center"))
+    return _package(d)
+
+
+def _package(d) -> bytes:
+    """The document's package as python-docx's ``save`` writes it, in one pass: every entry
+    dated 1980-01-01 (reruns identical), the PNGs stored (compressed already; deflating them
+    again was most of the writing time)."""
+    from docx.opc.pkgwriter import PackageWriter
+
+    class Writer:
+        def __init__(self, z):
+            self.z = z
+
+        def write(self, uri, blob) -> None:
+            name = uri.membername
+            self.z.writestr(zipfile.ZipInfo(name, date_time=(1980, 1, 1, 0, 0, 0)), blob,
+                            compress_type=zipfile.ZIP_STORED if name.endswith(".png")
+                            else zipfile.ZIP_DEFLATED)
+
+    pkg = d.part.package
+    for part in pkg.parts:
+        part.before_marshal()
+    buf = io.BytesIO()
+    with zipfile.ZipFile(buf, "w", zipfile.ZIP_DEFLATED) as z:
+        w = Writer(z)
+        parts = list(pkg.parts)
+        PackageWriter._write_content_types_stream(w, parts)
+        PackageWriter._write_pkg_rels(w, pkg.rels)
+        PackageWriter._write_parts(w, parts)
+    return buf.getvalue()
