@@ -27,4 +27,5 @@ def drawings_command(
     run_command(case=case, out=out, points=3600, at=at, plots="none", no_plots=True, as_json=False,
                 lang=lang, transients=False, animate=False, motion=None, report=None,
                 csv_style="plain", figure_format="png", dpi=120, drawings=True,
-                sheet_size=sheet_size)
+                sheet_size=sheet_size, snapshot=None, at_travel=None, roots=None, student=None,
+                group=None, teacher=None)

@@ -54,9 +54,11 @@ def build_sheets(results, document, *, lang: str = "ru", size: str = "A1") -> li
             packed.append((stem if k == 0 else f"{stem}-{k + 1}", key, page, scale,
                            tuple(left_out)))
     count = len(packed)
+    from flywheel.io.text import in_language   # the case's title in the sheet's language
+
     sheets = []
     for n, (stem, key, page, scale, left_out) in enumerate(packed, start=1):
-        frame = frame_view(size, lang, document=document, title=results.title,
+        frame = frame_view(size, lang, document=document, title=in_language(results.title, lang),
                            sheet_name=words_of(lang)[key], number=n, count=count, scale=scale)
         sheets.append(Sheet(stem, size, (frame, *page), n, count, left_out))
     return sheets
