@@ -19,7 +19,7 @@ from flywheel.dynamics.columns import kinematics_columns
 from flywheel.dynamics.grid import (DEFAULT_POINTS, grid_options, linkage_grid, report_index,
                                     standard_positions)
 from flywheel.dynamics.results import UNITS, Column, LinkAt, PointAt, Position, json_ready
-from flywheel.dynamics.serialize import to_json
+from flywheel.io.serialize import to_json
 from flywheel.linkage.drawing import Drawing, describe, links_drawn
 from flywheel.linkage.output_link import OutputLink, output_link
 
