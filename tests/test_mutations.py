@@ -253,7 +253,7 @@ class Edit:
         elif self.op == "lengthen":           # a string of arg characters, an int of arg digits
             v = parent[key]
             parent[key] = ((v or "x") * self.arg)[:self.arg] if isinstance(v, str) \
-                else int("9" * self.arg)
+                else int("9" * min(self.arg, 4000))   # (an earlier edit may have made it a number)
         elif self.op == "grow":               # a task-2 graph of many terms or points
             parent[key] = _big_graph(*self.arg, parent[key], doc.get("cycle_deg", 360.0))
         else:  # pragma: no cover
@@ -735,9 +735,9 @@ LIMIT_MUTANTS = (
     ("task2", "task2_khurmi_16_12", (Edit("deepen", ("flywheel",), 40),)),
     ("run", "compressor", (Edit("deepen", ("machine", "delta"), 40),)),
     ("aggregate", "aggregate", (Edit("deepen", ("title",), 200),)),
-    ("task2", "task2_khurmi_16_12", (Edit("lengthen", ("title",), 100_000),)),
+    ("task2", "task2_khurmi_16_12", (Edit("lengthen", ("title", "en"), 100_000),)),
     ("run", "compressor", (Edit("lengthen", ("crank", "name"), 100_000),)),
-    ("duty_cycle", "duty_readme_press", (Edit("lengthen", ("title",), 1001),)),
+    ("duty_cycle", "duty_readme_press", (Edit("lengthen", ("title", "en"), 1001),)),
     ("run", "compressor", (Edit("lengthen", ("machine", "speed_rps"), 4000),)),
     ("task2", "task2_seed_triangle", (Edit("lengthen", ("speed", "omega0"), 30),)),
     ("task2", "task2_khurmi_16_12", (Edit("grow", ("driving",), ("harmonic", 1000)),)),
@@ -759,5 +759,5 @@ def test_the_limit_classes_are_drawn():
     doc = DOCS["task2_khurmi_16_12"]
     assert ("driving",) in _candidates(doc, "grow", "task2")
     assert not _candidates(DOCS["compressor"], "grow", "run")
-    assert ("title",) in _candidates(doc, "lengthen", "task2")
+    assert ("title", "en") in _candidates(doc, "lengthen", "task2")
     assert ("speed", "mean_rpm") in _candidates(doc, "deepen", "task2")

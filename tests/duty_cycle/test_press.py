@@ -493,16 +493,17 @@ def _compressor_as_table(case, exact, n: int, loads: str = "linear") -> dict:
 
 def test_graphical_method_cost_on_the_compressor():
     """cases/compressor.toml through the tabulated route, from 12 positions every 30°, against
-    the exact route (3600 intervals). Measured (δ = 0.05, J_required ≈ 4.649 kg·m² exact):
+    the exact route (3600 intervals). Measured (δ = 0.05, the indicator tables joined by PCHIP,
+    J_required ≈ 4.642 kg·m² exact):
 
-    ============  ===============  =================  =======================
-    positions     J_required       driving moment     J_II (max error / mean)
-    ============  ===============  =================  =======================
-    12, linear    −7.1 %           −8.0 %             0.24 % / 0.000 %
-    12, spline    −4.9 %           −8.0 %
-    24, linear    −1.0 %           −0.2 %
-    72, linear    −0.1 %           −0.0 %
-    ============  ===============  =================  =======================
+    ============  ===============  =======================
+    positions     J_required       J_II (max error)
+    ============  ===============  =======================
+    12, linear    −6.8 %           0.24 %
+    12, spline    −4.6 %
+    24, linear    −1.7 %
+    72, linear    −0.1 %
+    ============  ===============  =======================
 
     (loads joined linearly or by a periodic spline; J_II by the periodic spline.) The inertia
     side costs nothing worth noting: J_II is small beside J_I, and its spline through 12 exact
@@ -529,6 +530,6 @@ def test_graphical_method_cost_on_the_compressor():
     print(report)
     assert -8.0 < p12 < -6.0, report
     assert -6.0 < p12s < -4.0, report
-    assert abs(p24) < 1.5 and abs(p72) < 0.2 and abs(p72) < abs(p24) < abs(p12), report
+    assert abs(p24) < 2.0 and abs(p72) < 0.2 and abs(p72) < abs(p24) < abs(p12), report
     assert r12.scalars.J_II_mean == pytest.approx(e.J_II_mean, rel=1e-3), report
     assert J_err < 0.005, report

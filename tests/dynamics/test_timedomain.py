@@ -201,12 +201,14 @@ def test_report_has_the_motion_in_time_section(compressor):
 
     st = compressor.scalars.time_domain.startup
     en = report_markdown(compressor, "en")
-    sec = en[en.index("## 7. Motion in time"):en.index("## Warnings")]
+    start = en.index("## 7. Motion in time")
+    sec = en[start:en.index("\n## ", start)]             # to the next section
     assert "repeats from cycle to cycle to" in sec and "follows ω(φ)" in sec and "cycle time:" in sec
     assert f"after **{st.time_to_steady:.4g} s** ({st.cycles_to_steady} cycles)" in sec
     assert "run-down after the drive is cut" in sec and "revolutions" in sec
     ru = report_markdown(compressor, "ru")
-    sec = ru[ru.index("## 7. Движение во времени"):ru.index("## Предупреждения")]
+    start = ru.index("## 7. Движение во времени")
+    sec = ru[start:ru.index("\n## ", start)]
     assert f"через **{st.time_to_steady:.4g} с** (циклов: {st.cycles_to_steady})" in sec
     assert "выбег после отключения привода" in sec
     assert "start-up" not in sec and "run-down" not in sec
