@@ -245,25 +245,35 @@ class ForceAnalysisSpec(StrictModel):
 class Case(StrictModel):
     """A whole case file."""
 
-    title: TitleText = title_field()
-    source: TitleText = title_field()
-    machine: Machine
-    design: Design = Field(default_factory=Design)
+    title: TitleText = title_field(description="what the case is: a string, or { ru = …, en = … }")
+    source: TitleText = title_field(description="where its data come from (book, worksheet, variant)")
+    machine: Machine = Field(description="speed, δ, the constant moment of the cycle balance, gravity, "
+                                         "the first group")
+    design: Design = Field(default_factory=Design,
+                           description="lengths derived from the mean piston speed (the compressor worksheet)")
     crank: CrankSpec | None = Field(None, description="the driving link of a linkage")
     tabulated: TabulatedSpec | None = Field(
         None, description="kinematics as a table instead of a linkage (docs/tabulated.md)")
     ground: dict[str, XY] = Field(default_factory=dict, description="fixed points [m]")
-    dyads: list[DyadSpec] = Field(default_factory=list)
-    points: dict[str, PointSpec] = Field(default_factory=dict)
-    links: dict[str, LinkSpec] = Field(default_factory=dict)
-    cylinders: list[CylinderSpec] = Field(default_factory=list)
-    forces: list[ForceSpec] = Field(default_factory=list)
-    couples: list[CoupleSpec] = Field(default_factory=list)
+    dyads: list[DyadSpec] = Field(default_factory=list,
+                                  description="Assur groups RRP, RRR, RPR, placed in the order given")
+    points: dict[str, PointSpec] = Field(default_factory=dict,
+                                         description="points fixed on links (centroids, coupler points)")
+    links: dict[str, LinkSpec] = Field(default_factory=dict,
+                                       description="masses and moments of inertia of the links")
+    cylinders: list[CylinderSpec] = Field(default_factory=list,
+                                          description="gas forces from indicator diagrams")
+    forces: list[ForceSpec] = Field(default_factory=list,
+                                    description="technological forces and forces at points")
+    couples: list[CoupleSpec] = Field(default_factory=list, description="couples on links")
     springs: list[SpringSpec] = Field(default_factory=list, description="linear and torsional springs (docs/case-format.md, [[springs]])")
-    flywheel: FlywheelSpec = Field(default_factory=FlywheelSpec)
-    motor: MotorSpec | None = None
-    output: OutputSpec = Field(default_factory=OutputSpec)
-    force_analysis: ForceAnalysisSpec = Field(default_factory=ForceAnalysisSpec)
+    flywheel: FlywheelSpec = Field(default_factory=FlywheelSpec,
+                                   description="material and proportions of the flywheel, or a given one")
+    motor: MotorSpec | None = Field(None, description="the motor's characteristic (flywheel run "
+                                                      "--transients, [start])")
+    output: OutputSpec = Field(default_factory=OutputSpec, description="report angles and snapshots")
+    force_analysis: ForceAnalysisSpec = Field(default_factory=ForceAnalysisSpec,
+                                              description="the crank's motion in the force analysis")
     document: DocumentSpec = Field(default_factory=DocumentSpec, description="names for the title page and the title block (docs/case-format.md, [document])")
     start: StartSpec | None = Field(None, description="a motion from rest under a constant moment or the motor (docs/case-format.md, [start])")
 

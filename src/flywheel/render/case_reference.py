@@ -21,7 +21,7 @@ T = words("case_reference", {
     "required": "required",
     "types": {"number": "number", "integer": "integer", "string": "string",
               "boolean": "boolean", "array_of": "array of", "table_of": "table of",
-              "array": "array", "any": "any"},
+              "array": "array", "any": "any", "object": "table"},
 })
 
 
@@ -30,7 +30,7 @@ def _type(text: str, lang: str) -> str:
     t = T[lang]["types"]
     text = text.replace("array of ", t["array_of"] + " ").replace("table of ", t["table_of"] + " ")
     text = text.replace("array [", t["array"] + " [").replace("(each entry)", T[lang]["each"])
-    return re.sub(r"\b(number|integer|string|boolean|any)\b", lambda m: t[m.group(1)], text)
+    return re.sub(r"\b(number|integer|string|boolean|any|object)\b", lambda m: t[m.group(1)], text)
 
 
 def _heading(name: str, lang: str) -> str:
