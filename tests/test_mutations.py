@@ -181,12 +181,14 @@ SWAPS = ("text", 1, 2.5, True, [], {}, [1.0, 2.0], {"x": 1.0})
 
 
 def _scaled(v, factor: float):
-    if isinstance(v, int) and abs(v) >= 2 ** 1000:     # a lengthened integer: no float holds it
+    if isinstance(v, int) and abs(v) >= 2 ** 63:       # a lengthened integer: float may not hold it
         from fractions import Fraction
 
         if not math.isfinite(factor):                  # nan, or ±inf times a huge number
             return factor if math.isnan(factor) else math.copysign(math.inf, factor) * (1 if v > 0 else -1)
-        return int(v * Fraction(factor))
+        out = int(v * Fraction(factor))
+        # at most 4000 digits: Python writes no longer integer (its 4300-digit limit), nor TOML
+        return out if abs(out) < 10 ** 4000 else (1 if out > 0 else -1) * int("9" * 4000)
     x = v * factor
     if isinstance(v, int) and math.isfinite(x) and abs(x) < 2 ** 63 and x == int(x):
         return int(x)                  # an integer stays one where TOML can hold it
@@ -335,9 +337,13 @@ def _big_graph(kind: str, n: int, old, cycle_deg) -> dict:
     if kind == "harmonic":
         a0 = old.get("a0", old.get("value", 100.0)) if isinstance(old, dict) else 100.0
         return {"kind": "harmonic", "a0": a0, "a": [100.0 / k ** 2 for k in range(1, n + 1)]}
-    step = float(cycle_deg) / (n - 1)
-    pts = [[min(i * step, float(cycle_deg)), 50.0 + 10.0 * math.sin(i / 50.0)] for i in range(n)]
-    pts[-1][0] = float(cycle_deg)
+    try:
+        cycle = float(cycle_deg)
+    except OverflowError:                 # a lengthened cycle: beyond any float
+        cycle = 1e300
+    step = cycle / (n - 1)
+    pts = [[min(i * step, cycle), 50.0 + 10.0 * math.sin(i / 50.0)] for i in range(n)]
+    pts[-1][0] = cycle
     return {"kind": "points", "points": pts}
 
 

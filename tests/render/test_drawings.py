@@ -151,7 +151,12 @@ def test_the_dxf_has_its_layers_frame_and_title_block(run):
     name = [e for e in inside if x0 + 65 < e.dxf.align_point[0] < x0 + 135
             and y0 + 15 < e.dxf.align_point[1] < y0 + 40]
     name.sort(key=lambda e: -e.dxf.align_point[1])
-    title = json.loads((run / "summary.json").read_text(encoding="utf-8"))["title"]
+    # in the sheet's language: the case's Russian title (summary.json keeps the English one)
+    from flywheel.cases.run import load_case
+    from flywheel.io.text import in_language
+
+    title = in_language(load_case(ROOT / "cases" / "compressor.toml").title, "ru")
+    assert title.startswith("Двухступенчатый")
     assert " ".join(e.dxf.text for e in name).startswith(title)
     # column 26: the designation turned 180° in the upper left corner
     assert any(e.dxf.text == "ТММ.КП.00.01" and e.dxf.rotation == 180.0

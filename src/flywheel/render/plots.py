@@ -692,6 +692,7 @@ def _worker(results, folder: Path, lang: str, order: list[int], counter, fmt: st
 
     signal.signal(signal.SIGINT, signal.SIG_IGN)
     signal.signal(signal.SIGTERM, signal.SIG_DFL)
+    signal.pthread_sigmask(signal.SIG_UNBLOCK, {signal.SIGINT, signal.SIGTERM})  # held at fork
     try:
         import ctypes
 
@@ -728,9 +729,18 @@ class PlotJob:
             self.children = [ctx.Process(target=_worker, args=(
                 results, folder, lang, order, counter, fmt, dpi, self._done))
                 for _ in range(min(jobs, len(names)))]
+            import signal
+
+            # no Ctrl-C or SIGTERM handler may run inside fork(): Python ignores an exception
+            # raised in its after-fork hooks, and the signal would be lost (the run then ends
+            # 0, not 130/143). Held back until every worker is started, then delivered here.
+            held = signal.pthread_sigmask(signal.SIG_BLOCK, {signal.SIGINT, signal.SIGTERM})
             try:
-                for c in self.children:
-                    c.start()
+                try:
+                    for c in self.children:
+                        c.start()
+                finally:
+                    signal.pthread_sigmask(signal.SIG_SETMASK, held)
             except BaseException:
                 self.stop()
                 raise
