@@ -16,15 +16,13 @@ from __future__ import annotations
 import base64
 import io
 import re
-import shutil
-import tempfile
 from dataclasses import dataclass
 from pathlib import Path
 
 from flywheel.render import mathfmt
 from flywheel.render.document import Bullets, Document, Figure, Formula, Heading, Paragraph, Table
 from flywheel.render.report import CAPTION
-from flywheel.render.report_gost import _fixed_zip
+from flywheel.render.report_gost import _fixed_zip, compile_typst
 
 FORMATS = ("md", "html", "pdf", "docx")
 #: a table of more columns than WIDE gets a smaller font; of more than WIDE_PAGE a landscape page
@@ -192,20 +190,10 @@ def _typst_table(b: Table, caption: str, narrow: str = TypstLayout.table) -> str
 
 def pdf(doc: Document, plots_dir: Path | None = None) -> bytes:
     """The document as PDF (typst)."""
-    import typst
-
-    with tempfile.TemporaryDirectory(prefix="flywheel-typst-") as tmp:
-        root = Path(tmp)
-        (root / "plots").mkdir()
-        for f in doc.figures:
-            if plots_dir is not None and (plots_dir / f.file).is_file():
-                shutil.copyfile(plots_dir / f.file, root / "plots" / f.file)
-        src = typst_source(doc)
-        if plots_dir is None:
-            src = re.sub(r'#figure\(image\("plots/[^"]*", width: 100%\), ', "#figure(", src)
-        (root / "main.typ").write_text(src, encoding="utf-8")
-        return typst.compile(str(root / "main.typ"), root=str(root), format="pdf",
-                             ignore_system_fonts=True, timestamp=0)
+    src = typst_source(doc)
+    if plots_dir is None:
+        src = re.sub(r'#figure\(image\("plots/[^"]*", width: 100%\), ', "#figure(", src)
+    return compile_typst(src, doc, plots_dir)
 
 
 # -- DOCX -----------------------------------------------------------------------------------------

@@ -22,6 +22,8 @@ from __future__ import annotations
 import importlib.util
 import io
 import re
+import shutil
+import tempfile
 import zipfile
 from dataclasses import dataclass
 from pathlib import Path
@@ -260,11 +262,10 @@ def _table(b: Table, g: dict) -> str:
     return f"#page(flipped: true)[\n{src}\n]" if n > WIDE_PAGE else src
 
 
-def pdf(doc: Document, plots_dir: Path | None = None) -> bytes:
-    """The Russian записка as PDF (typst) in the ГОСТ layout."""
-    import shutil
-    import tempfile
-
+def compile_typst(src: str, doc: Document, plots_dir: Path | None, fonts=()) -> bytes:
+    """The typst source ``src`` compiled to PDF in a scratch folder holding the figures of
+    ``doc`` found in ``plots_dir`` (as plots/…) and the font files ``fonts`` (linked); no
+    system fonts and a fixed timestamp, so the bytes are the same on a rerun."""
     import typst
 
     with tempfile.TemporaryDirectory(prefix="flywheel-typst-") as tmp:
@@ -273,14 +274,19 @@ def pdf(doc: Document, plots_dir: Path | None = None) -> bytes:
         for f in doc.figures:
             if plots_dir is not None and (plots_dir / f.file).is_file():
                 shutil.copyfile(plots_dir / f.file, root / "plots" / f.file)
-        (root / "main.typ").write_text(typst_source(doc, plots_dir is not None), encoding="utf-8")
-        fonts = root / "fonts"
-        fonts.mkdir()
-        for f in font_files():
-            if not (fonts / f.name).exists():
-                (fonts / f.name).symlink_to(f)
+        (root / "main.typ").write_text(src, encoding="utf-8")
+        font_dir = root / "fonts"
+        font_dir.mkdir()
+        for f in fonts:
+            if not (font_dir / f.name).exists():
+                (font_dir / f.name).symlink_to(f)
         return typst.compile(str(root / "main.typ"), root=str(root), format="pdf",
-                             font_paths=[str(fonts)], ignore_system_fonts=True, timestamp=0)
+                             font_paths=[str(font_dir)], ignore_system_fonts=True, timestamp=0)
+
+
+def pdf(doc: Document, plots_dir: Path | None = None) -> bytes:
+    """The Russian записка as PDF (typst) in the ГОСТ layout."""
+    return compile_typst(typst_source(doc, plots_dir is not None), doc, plots_dir, font_files())
 
 
 # -- DOCX ---------------------------------------------------------------------------------------
