@@ -136,6 +136,19 @@ class View:
     def line(self, *points, line: str = "main", closed: bool = False) -> None:
         self.items.append(Polyline(tuple((float(x), float(y)) for x, y in points), line, closed))
 
+    def grid(self, widths, n: int, row_h: float) -> tuple[float, float]:
+        """A table's lines: the outline and the column lines in main lines, the head row's
+        lower line main and the others thin; ``n`` rows of ``row_h`` [mm]. Returns (W, H)."""
+        W, H = sum(widths), n * row_h
+        self.line((0, 0), (W, 0), (W, H), (0, H), closed=True)
+        x = 0.0
+        for w in widths[:-1]:
+            x += w
+            self.line((x, 0), (x, H))
+        for k in range(1, n):
+            self.line((0, H - k * row_h), (W, H - k * row_h), line="main" if k == 1 else "thin")
+        return W, H
+
     def poly(self, points, line: str = "main") -> None:
         """A curve through ``points`` [mm], its vertices thinned to within TOLERANCE_MM."""
         self.items.append(Polyline(simplify(points), line))

@@ -272,14 +272,7 @@ def reactions_table(results, lang: str) -> View:
     row_h = 8.0
     v = View("reactions")
     n = len(rows) + 1
-    W, H = sum(widths), n * row_h
-    v.line((0, 0), (W, 0), (W, H), (0, H), closed=True)
-    x = 0.0
-    for w in widths[:-1]:
-        x += w
-        v.line((x, 0), (x, H))
-    for k in range(1, n):
-        v.line((0, H - k * row_h), (W, H - k * row_h), line="main" if k == 1 else "thin")
+    W, H = v.grid(widths, n, row_h)
     for k, row in enumerate([head] + rows):
         y = H - (k + 0.5) * row_h
         x = 0.0
