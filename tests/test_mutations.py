@@ -81,6 +81,7 @@ xfail test gives its minimal mutant :data:`SLOW_LIMIT` s.
 from __future__ import annotations
 
 import copy
+import shutil
 import json
 import math
 import os
@@ -106,7 +107,7 @@ CASES = ROOT / "cases"
 EXAMPLES = int(os.environ.get("FLYWHEEL_MUTATIONS", "300"))
 SURVEY = os.environ.get("FLYWHEEL_MUTATIONS_SURVEY", "")
 SEED = os.environ.get("FLYWHEEL_MUTATIONS_SEED", "")     # another set of mutants (by hand)
-TIME_LIMIT = 20                      # s per mutant
+TIME_LIMIT = 60                      # s per mutant: a hang guard (idle, each takes < 2 s)
 MEMORY_LIMIT = 3 * 2 ** 30           # bytes of address space a mutant may add
 FACTORS = (0.0, -1.0, 1e-300, 1e300, math.nan, math.inf, 1e6, 0.01, 0.5, 3.0)
 KINDS = ("run", "task2", "aggregate", "duty_cycle", "variants")
@@ -488,6 +489,7 @@ def run_mutant(kind: str, text: str, time_limit: int = TIME_LIMIT, options: tupl
         tmp = Path(d)
         case_file = tmp / "case.toml"
         case_file.write_text(text, encoding="utf-8")
+        shutil.copytree(CASES / "data", tmp / "data")   # files a case names beside itself
         old_handler = signal.signal(signal.SIGALRM, _alarm)
         old_limit = resource.getrlimit(resource.RLIMIT_AS)
         cwd = os.getcwd()
