@@ -18,7 +18,7 @@ import numpy as np
 from flywheel.dynamics.columns import kinematics_columns
 from flywheel.dynamics.grid import (DEFAULT_POINTS, grid_options, linkage_grid, report_index,
                                     standard_positions)
-from flywheel.dynamics.results import UNITS, Column, LinkAt, PointAt, Position, json_ready
+from flywheel.dynamics.results import UNITS, Column, CycleGrid, LinkAt, PointAt, Position, json_ready
 from flywheel.io.serialize import to_json
 from flywheel.linkage.drawing import Drawing, describe, links_drawn
 from flywheel.linkage.output_link import OutputLink, output_link
@@ -61,7 +61,7 @@ class KinematicsHeadline:
 
 
 @dataclass(frozen=True)
-class KinematicsResults:
+class KinematicsResults(CycleGrid):
     """Everything a kinematics-only run computed; read by the renderers like
     :class:`flywheel.dynamics.results.Results` where the two share a name (``phi``,
     ``kinematics``, ``columns``, ``at``, ``position_angles``, ``drawing``, ``index_of``)."""
@@ -82,21 +82,6 @@ class KinematicsResults:
     output_link: OutputLink | None = None
     plans: tuple[KinematicPlans, ...] = ()   # at the report angles
     warnings: tuple[str, ...] = ()
-
-    @property
-    def cycle(self) -> float:
-        return float(self.phi[-1] - self.phi[0])
-
-    @property
-    def cycle_deg(self) -> int:
-        return int(round(math.degrees(self.cycle)))
-
-    def index_of(self, phi: float) -> int:
-        """Grid index of the node at angle ``phi`` [rad]."""
-        return int(np.argmin(np.abs(self.phi - phi)))
-
-    def position_numbers(self) -> tuple[int | None, ...]:
-        return tuple(p.number for p in self.position_angles)
 
     @property
     def scalars(self) -> KinematicsHeadline:

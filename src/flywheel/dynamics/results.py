@@ -689,8 +689,33 @@ def json_ready(obj):
     return obj
 
 
+class CycleGrid:
+    """What a result on the closed φ grid (``self.phi`` [rad], ``self.position_angles``)
+    offers by the grid alone; :class:`Results` and the kinematics-only result share it."""
+
+    @property
+    def cycle(self) -> float:
+        """The cycle Φ [rad]: the closed grid's span, 2π (4π for a four-stroke engine)."""
+        return float(self.phi[-1] - self.phi[0])
+
+    @property
+    def cycle_deg(self) -> int:
+        """The cycle Φ [deg]: 360, 720 …"""
+        return int(round(math.degrees(self.cycle)))
+
+    def position_numbers(self) -> tuple[int | None, ...]:
+        """The course's number of each of ``position_angles`` (Position.number: 0 … 11 every
+        30°, as plan_positions.png numbers them); None for a dead centre between them and for
+        every position of a tabulated case (no drawing)."""
+        return tuple(p.number for p in self.position_angles)
+
+    def index_of(self, phi: float) -> int:
+        """Grid index of the node at angle ``phi`` [rad] (report angles are grid nodes)."""
+        return int(np.argmin(np.abs(self.phi - phi)))
+
+
 @dataclass(frozen=True)
-class Results:
+class Results(CycleGrid):
     """Everything one run computed: the stage results, the table columns and the report angles."""
 
     analysis = "dynamics"                    # not a field: dynamics/kinematics_only.py says "kinematics"
@@ -720,26 +745,6 @@ class Results:
     snapshots: tuple[Snapshot, ...] | None = None   # ε at stated φ and speed (dynamics/start.py)
     at_travel: tuple[TravelAt, ...] | None = None   # the angles of --at-travel (dynamics/asks.py)
     roots: tuple[Roots, ...] | None = None          # --roots (dynamics/asks.py)
-
-    @property
-    def cycle(self) -> float:
-        """The cycle Φ [rad]: the closed grid's span, 2π (4π for a four-stroke engine)."""
-        return float(self.phi[-1] - self.phi[0])
-
-    @property
-    def cycle_deg(self) -> int:
-        """The cycle Φ [deg]: 360, 720 …"""
-        return int(round(math.degrees(self.cycle)))
-
-    def position_numbers(self) -> tuple[int | None, ...]:
-        """The course's number of each of ``position_angles`` (Position.number: 0 … 11 every
-        30°, as plan_positions.png numbers them); None for a dead centre between them and for
-        every position of a tabulated case (no drawing)."""
-        return tuple(p.number for p in self.position_angles)
-
-    def index_of(self, phi: float) -> int:
-        """Grid index of the node at angle ``phi`` [rad] (report angles are grid nodes)."""
-        return int(np.argmin(np.abs(self.phi - phi)))
 
     @property
     def J_parts(self) -> dict[str, np.ndarray]:
