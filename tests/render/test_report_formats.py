@@ -75,6 +75,16 @@ def test_formula_notation_converts():
         mathfmt.parse(r"\nosuchthing x")
 
 
+def test_a_decimal_comma_stays_inside_its_number():
+    """Russian typography puts a comma in numbers (ГОСТ 8.417); typst's math spaces every
+    comma as punctuation («0, 452»), so a number with one is typeset as one upright text."""
+    src = r"J_I = 0,452\,\text{кг·м}^2"
+    assert mathfmt.parse(src).kids[2].text == "0,452"
+    assert '"0,452"' in mathfmt.typst(src)
+    assert "<mn>0,452</mn>" in mathfmt.mathml(src)
+    assert mathfmt.typst(r"f(x, 2)") == r"f \( x \, 2 \)"      # a list's comma is not a number's
+
+
 def test_default_formats_are_md_and_html(tmp_path):
     res = run(tmp_path / "o", "--no-plots")
     assert {p.name for p in (tmp_path / "o").glob("report.*")} == {"report.md", "report.html"}

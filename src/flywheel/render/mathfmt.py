@@ -50,8 +50,9 @@ def _tokens(src: str) -> list[str]:
             i = max(j, i + 2) if j == i + 1 else j
         elif c.isdigit() or (c == "." and i + 1 < len(src) and src[i + 1].isdigit()):
             j = i
-            while j < len(src) and (src[j].isdigit() or src[j] == "."):
-                j += 1
+            while j < len(src) and (src[j].isdigit() or (src[j] in ".," and j + 1 < len(src)
+                                                          and src[j + 1].isdigit())):
+                j += 1                   # a decimal comma (Russian typography) stays in the number
             out.append(src[i:j])
             i = j
         elif c.isalpha():
@@ -188,8 +189,8 @@ def _ty(n: Node) -> str:
     k = n.kind
     if k == "i":
         return n.text if len(n.text) == 1 else f'"{n.text}"'
-    if k == "n":
-        return n.text
+    if k == "n":                         # "0,452" as text: typst's math spaces a comma
+        return f'"{n.text}"' if "," in n.text else n.text
     if k == "o":
         return {"/": "\\/", " ": "thin", ",": "\\,", "(": "\\(", ")": "\\)", "[": "\\[",
                 "]": "\\]", ";": "\\;", "|": "|"}.get(n.text, n.text)
