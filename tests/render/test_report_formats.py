@@ -125,6 +125,14 @@ def test_html_numbers_are_summary_json(ru_run):
     assert ru(at['points']['B']['v']) in cells
 
 
+def test_first_group_parts_are_named_in_russian(ru_run):
+    """cases/compressor.toml's first_group = { crankshaft, gearbox }: the Russian записка names
+    them «коленчатый вал» and «редуктор», not by the case's English keys."""
+    md = (ru_run / "report.md").read_text(encoding="utf-8")
+    assert "коленчатый вал" in md and "редуктор" in md
+    assert "crankshaft" not in md and "gearbox" not in md
+
+
 def test_pdf_is_a_pdf(ru_run):
     data = (ru_run / "report.pdf").read_bytes()
     assert data.startswith(b"%PDF") and len(data) > 10_000

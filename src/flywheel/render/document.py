@@ -22,6 +22,21 @@ from flywheel.units import PA_PER_MPA
 
 
 # -- words ----------------------------------------------------------------------------------------
+#: the usual names of the first group's parts (machine.first_group's keys), said in a document's
+#: language; a name not here is printed as the case writes it
+PART = words("part", {
+    "crankshaft": "crankshaft", "crank": "crank", "crank_gear": "crank gear",
+    "gearbox": "gearbox", "gear": "gear", "rotor": "rotor", "motor": "motor rotor",
+    "coupling": "coupling", "pulley": "pulley", "counterweights": "counterweights",
+    "camshaft": "camshaft", "flywheel": "flywheel",
+})
+
+
+def part_name(key: str, lang: str) -> str:
+    """A first-group part's name in ``lang`` (:data:`PART`), else the case's own key."""
+    return PART[lang].get(key, key) if lang == "ru" else key
+
+
 T = words("report", {
     "title": "Dynamic analysis", "source": "Source", "input": "1. Input data",
     "machine": "Machine, crank and flywheel", "lengths": "Lengths and guides",
@@ -260,7 +275,8 @@ def build_document(results, lang: str = "en", plots: list[str] | None = None,
     ]
     if case is not None:
         for k, v in case.machine.first_group.items():
-            rows.append([f"{sym('J_first_group')}: {k}", gi(v, 6), u("J_first_group")])
+            rows.append([f"{sym('J_first_group')}: {part_name(k, lang)}", gi(v, 6),
+                         u("J_first_group")])
         rows.append([t["balance_row"], t["balance_word"][case.machine.balance], ""])
         rows.append([f"{sym('gravity')} (x, y)", ", ".join(gi(x, 4) for x in case.machine.gravity), u("gravity")])
     rows += [
