@@ -10,7 +10,7 @@ from typing import Annotated, Literal
 from pydantic import Field, PrivateAttr, ValidationInfo, model_validator
 
 from flywheel.errors import Notice, said
-from flywheel.io.schema import FieldError, StrictModel, at_most
+from flywheel.io.schema import FieldError, StrictModel, TitleText, at_most, title_field
 from flywheel.cases.run_fields import Angle, Name, _within
 
 
@@ -252,6 +252,8 @@ class CylinderSpec(StrictModel):
     (``diagram``)."""
 
     name: Name
+    title: TitleText = title_field(description="its name in the documents and figures: a string, or { ru = …, en = … } "
+                                                  "(default: its kind and name, as 'force cutting')")
     piston: Name = Field(description="slider link of an RRP dyad")
     bore: Annotated[float, Field(gt=0), _within(1e-4, 10.0, "m")] = Field(description="bore d [m]")
     p_max: Annotated[float, Field(gt=0), _within(1.0, 1e10, "Pa")] | None = Field(

@@ -22,7 +22,7 @@ from pydantic import Field, Strict, model_validator
 
 from flywheel.cases.run_fields import XY, Angle, Force, Length, Moment, Name, _within
 from flywheel.errors import Notice
-from flywheel.io.schema import FieldError, StrictModel, at_most
+from flywheel.io.schema import FieldError, StrictModel, TitleText, at_most, title_field
 
 MAX_TABLE_ROWS = 1000
 """The most rows a load's table may have."""
@@ -70,6 +70,8 @@ class ForceSpec(StrictModel):
     point (``point``): any direction and magnitude, see docs/case-format.md."""
 
     name: Name
+    title: TitleText = title_field(description="its name in the documents and figures: a string, or { ru = …, en = … } "
+                                                  "(default: its kind and name, as 'force cutting')")
     # the slider form (the course's cutting force)
     slider: Name | None = Field(None, description="slider link of an RRP dyad (the slider form)")
     reference: Literal["outer", "inner"] = Field("outer", description="dead centre s is measured from")
@@ -142,6 +144,8 @@ class CoupleSpec(StrictModel):
     crank angle φ; over the whole cycle or over ``phi_range_deg``."""
 
     name: Name
+    title: TitleText = title_field(description="its name in the documents and figures: a string, or { ru = …, en = … } "
+                                                  "(default: its kind and name, as 'force cutting')")
     link: Name
     moment: Moment | None = None
     table: Table | None = Field(None, description="[[φ_deg, M], …]: M [N·m] against φ")
@@ -165,6 +169,8 @@ class SpringSpec(StrictModel):
     about its joint with the frame (U = ½·c·(θ − θ0)²)."""
 
     name: Name
+    title: TitleText = title_field(description="its name in the documents and figures: a string, or { ru = …, en = … } "
+                                                  "(default: its kind and name, as 'force cutting')")
     kind: Literal["linear", "torsional"]
     stiffness: Stiffness = Field(description="c [N/m] (linear) or [N·m/rad] (torsional)")
     points: Annotated[tuple[Name, Name], Strict(False)] | None = Field(None, description="linear: its two ends (named points)")

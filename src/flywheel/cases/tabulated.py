@@ -11,7 +11,7 @@ import numpy as np
 from pydantic import Field, PrivateAttr, ValidationInfo, model_validator
 
 from flywheel.errors import Notice
-from flywheel.io.schema import MAX_TEXT, FieldError, StrictModel, within
+from flywheel.io.schema import MAX_TEXT, FieldError, StrictModel, TitleText, title_field, within
 
 MIN_POSITIONS = 6
 MAX_GAP_DEG = 360.0 / MIN_POSITIONS      # the widest allowed gap between neighbouring positions
@@ -53,6 +53,8 @@ class TabForce(StrictModel):
     drives the crank)."""
 
     name: Name
+    title: TitleText = title_field(description="its name in the documents and figures: a string, or { ru = …, en = … } "
+                                                  "(default: its kind and name, as 'force cutting')")
     point: Name = Field(description="row of [tabulated.points] where the force acts")
     magnitude: float | Row = Field(description="F [N]: one number, or one per position")
     angle_deg: float | Row = Field(description="α [deg] between the force and the point's "
@@ -68,6 +70,8 @@ class TabMoment(StrictModel):
     """A reduced moment given outright per position (e.g. read off another calculation)."""
 
     name: Name
+    title: TitleText = title_field(description="its name in the documents and figures: a string, or { ru = …, en = … } "
+                                                  "(default: its kind and name, as 'force cutting')")
     values: Row = Field(description="reduced moment [N·m] per position, positive when it drives")
     interpolation: Literal["linear", "periodic-spline"] = Field(
         "linear", description="'linear' or 'periodic-spline' (see forces)")

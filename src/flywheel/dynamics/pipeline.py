@@ -196,8 +196,11 @@ def linkage_loads(case, mech, dcs: dict, kin) -> LoadsResult:
         M_parts[key], W_parts[key] = applied[key].M, applied[key].W
         if applied[key].F is not None:
             tensions[sp.name] = applied[key].F
+    titles = {L.LoadKey(kind, x.name): x.title for kind, given in (
+        ("gas", case.cylinders), ("force", case.forces), ("couple", case.couples),
+        ("spring", case.springs)) for x in given if x.title}
     return LoadsResult(M_parts=M_parts, W_parts=W_parts, cylinders=tuple(cylinders),
-                       forces=forces, warnings=tuple(warnings), tensions=tensions)
+                       forces=forces, warnings=tuple(warnings), tensions=tensions, titles=titles)
 
 
 def linkage_reduction(case, kin) -> ReductionResult:

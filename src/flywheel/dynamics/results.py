@@ -72,6 +72,8 @@ class LoadsResult:
     forces: dict[str, np.ndarray] = field(default_factory=dict)  # technological force → F(φ) [N]
     warnings: tuple[str, ...] = ()
     tensions: dict[str, np.ndarray] = field(default_factory=dict)  # linear spring → T(φ) [N]
+    titles: dict[LoadKey, str] = field(default_factory=dict)  # a load's own title (io.text.Text
+    #                                  in two languages), where the case gives one
 
 
 @dataclass(frozen=True)

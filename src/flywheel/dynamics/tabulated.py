@@ -227,7 +227,9 @@ def tabulated_loads(spec, phi: np.ndarray) -> LoadsResult:
     M_parts = {key: periodic_interpolate(nodes, _distinct(spec, M), phi, kinds[key],
                                          period=_period(spec))
                for key, M in load_moments_at_positions(spec).items()}
-    return LoadsResult(M_parts=M_parts, W_parts={})
+    titles = {LoadKey(kind, x.name): x.title for kind, given in (
+        ("force", spec.forces), ("moment", spec.moments)) for x in given if x.title}
+    return LoadsResult(M_parts=M_parts, W_parts={}, titles=titles)
 
 
 def tabulated_kinematics(spec, phi: np.ndarray, red: ReductionResult,

@@ -324,7 +324,7 @@ def build_document(results, lang: str = "en", plots: list[str] | None = None,
     b.add(Formula(r"M_{F} = F \cdot v_{q}"))
     mk = [k for k in cols if k.startswith("M ")]
     header = (pos + [h("phi_deg"), h("J_II"), h("dJ_II")]
-              + [h(k, label=nm.member(k, lang)) for k in mk] + [h("M_sum")])
+              + [h(k, label=nm.member(k, lang, results.loads.titles)) for k in mk] + [h("M_sum")])
     body = [[*lab, g(cols["phi_deg"].values[i], 6), g(cols["J_II"].values[i], 4), g(cols["dJ_II"].values[i], 4)]
             + [g(cols[k].values[i], 5) for k in mk] + [g(cols["M_sum"].values[i], 5)] for lab, i in idx]
     b.table(t["red_caption"], header, body)
@@ -519,11 +519,15 @@ def _input_of_case(b: _Builder, case, t: dict, lang: str) -> None:
             rng = load.phi_range_deg
             return text if rng is None else f"{text}; {t['over'].format(a=gi(rng[0], 6), b=gi(rng[1], 6))}"
 
-        rows = [[nm.load_name(LoadKey("force", f.name), lang), f.slider if f.slider is not None else f.point,
+        def called(kind, load) -> str:    # its title if the case gives one, else "kind name"
+            key = LoadKey(kind, load.name)
+            return nm.load_name(key, lang, {key: load.title} if load.title else None)
+
+        rows = [[called("force", f), f.slider if f.slider is not None else f.point,
                  value(f, f.magnitude), u("force_magnitude")] for f in case.forces]
-        rows += [[nm.load_name(LoadKey("couple", c.name), lang), c.link, value(c, c.moment), u("couple_moment")]
+        rows += [[called("couple", c), c.link, value(c, c.moment), u("couple_moment")]
                  for c in case.couples]
-        rows += [[nm.load_name(LoadKey("spring", s.name), lang),
+        rows += [[called("spring", s),
                   "–".join(s.points) if s.kind == "linear" else s.link, f"c = {g(s.stiffness, 6)}",
                   nm.unit("N/m" if s.kind == "linear" else "N·m/rad", lang)] for s in springs]
         b.table(t["forces"], [t["name"], t["link"], t["val"], t["unit"]], rows)

@@ -31,6 +31,7 @@ import re
 from dataclasses import dataclass
 
 from flywheel.dynamics.loads import LoadKey
+from flywheel.io.text import in_language
 
 
 @dataclass(frozen=True)
@@ -650,24 +651,27 @@ def term(key: str) -> tuple[Term, str]:
     raise KeyError(f"{key!r} is not in the nomenclature (render/nomenclature.py)")
 
 
-def load_name(x, lang: str = "en") -> str:
+def load_name(x, lang: str = "en", titles=None) -> str:
     """A load's name in ``lang`` from its key (:class:`~flywheel.dynamics.loads.LoadKey`, or its
     text "kind name" as a column's family member gives it): gas HP → "газ HP", gravity 2 →
-    "gravity, link 2"; a key of no known kind as its text.
+    "gravity, link 2"; a key of no known kind as its text; a load the case titles (``titles``:
+    LoadsResult.titles) by its title.
 
     >>> load_name(LoadKey("gravity", "2"), "ru")
     'сила тяжести звена 2'
     """
     key = x if isinstance(x, LoadKey) else LoadKey.parse(x)
+    if titles and key in titles:              # the case's own title of the load (LoadsResult.titles)
+        return in_language(titles[key], lang)
     if key.kind in LOAD_KINDS and key.name:
         return LOAD_KINDS[key.kind][lang == "ru"].format(x=key.name)
     return str(x)
 
 
-def member(key: str, lang: str = "en") -> str:
+def member(key: str, lang: str = "en", titles=None) -> str:
     """The family member of ``key`` in ``lang`` ("M gas HP" → "газ HP", "x_B" → "B"; "" for a
-    key that is not a family's)."""
-    return load_name(term(key)[1], lang)
+    key that is not a family's); a titled load by its title (``titles``: LoadsResult.titles)."""
+    return load_name(term(key)[1], lang, titles)
 
 
 def name(key: str, lang: str = "en", **fields) -> str:

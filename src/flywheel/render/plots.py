@@ -20,6 +20,7 @@ from pathlib import Path
 
 import numpy as np
 
+from flywheel.dynamics.loads import LoadKey
 from flywheel.render import figure as fg
 from flywheel.render import nomenclature as nm
 from flywheel.render.catalogue import words
@@ -222,8 +223,7 @@ def figure_piston_forces(results, lang: str = "en"):
             if key.startswith("F_") and key not in names:
                 spring = key[2:] in results.loads.tensions
                 ax.plot(deg, col.values, linestyle=":" if spring else "--",
-                        label=_t(lang, "F_spring" if spring else "F_tech",
-                                 n=nm.member(key, lang)))
+                        label=_load_label(results, key[2:], spring, lang))
         ax.axhline(0.0, color="0.3", linewidth=0.6)
         ax.set_ylabel(nm.axis("F_{load}", lang))
         fg.phi_axis(ax, lang, cycle_deg=results.cycle_deg)
@@ -231,6 +231,16 @@ def figure_piston_forces(results, lang: str = "en"):
         fg.legend(ax)            # after the title: a title too wide is broken
         return fig
     return fg.drawn(build)
+
+
+def _load_label(results, name: str, spring: bool, lang: str) -> str:
+    """A force's curve label: the case's title of the load, else "technological force {name}"
+    (a spring's "spring {name}")."""
+    kind = "spring" if spring else "force"
+    title = results.loads.titles.get(LoadKey(kind, name))
+    if title:
+        return nm.load_name(LoadKey(kind, name), lang, results.loads.titles)
+    return _t(lang, "F_spring" if spring else "F_tech", n=nm.member("F_" + name, lang))
 
 
 def figure_reduced_moments(results, lang: str = "en"):
@@ -246,7 +256,7 @@ def figure_reduced_moments(results, lang: str = "en"):
         deg = _phi_deg(results)
         ax = axes[0]
         for name in big:
-            ax.plot(deg, results.M_parts[name], label=nm.load_name(name, lang))
+            ax.plot(deg, results.M_parts[name], label=nm.load_name(name, lang, results.loads.titles))
         ax.plot(deg, results.columns["M_known"].values, color="0.4", linestyle="--",
                 label=_t(lang, "M_known", M=nm.tex("M_known", lang)))
         m_const = results.scalars.balancing_moment
@@ -260,7 +270,8 @@ def figure_reduced_moments(results, lang: str = "en"):
         ax.set_ylabel(nm.axis("M {load}", lang))
         if small:
             for name in small:
-                axes[1].plot(deg, results.M_parts[name], label=nm.load_name(name, lang))
+                axes[1].plot(deg, results.M_parts[name],
+                             label=nm.load_name(name, lang, results.loads.titles))
             axes[1].axhline(0.0, color="0.3", linewidth=0.6)
             axes[1].set_ylabel(nm.axis("M {load}", lang))
         for a in axes:
