@@ -89,6 +89,38 @@ def test_every_link_to_the_docs_leads_to_a_file(path):
         assert (path.parent / target).resolve().is_file(), (path.name, target)
 
 
+def _anchors(path: Path) -> set[str]:
+    """The anchors GitHub gives a page's headings: lower case, punctuation dropped, spaces
+    made hyphens."""
+    text = re.sub(r"```.*?```", "", path.read_text(encoding="utf-8"), flags=re.S)
+    return {re.sub(r"[^\w\- ]", "", h.strip().lower()).replace(" ", "-")
+            for h in re.findall(r"^#+ (.+)$", text, re.M)}
+
+
+@pytest.mark.parametrize("path", GUIDES, ids=lambda p: str(p.relative_to(ROOT / "docs" / "ru")))
+def test_every_anchor_leads_to_a_heading(path):
+    """A table of contents' «(#3-команды)» and «(other.md#1-…)» name a heading that exists."""
+    for target, anchor in re.findall(r"\]\(([^)#]*?)#([^)]+)\)", path.read_text(encoding="utf-8")):
+        page = (path.parent / target).resolve() if target else path
+        if page.suffix == ".md" and page.is_relative_to(ROOT / "docs" / "ru"):
+            assert anchor in _anchors(page), (path.name, target, anchor)
+
+
+#: Latin words a Russian page may say outside code: formats, functions, symbols' indices and
+#: the program's own labels («ΔT_I max / min»), the Assur groups' names
+LATIN = {"PDF", "SVG", "DXF", "Word", "max", "min", "cos", "arccos", "arcsin", "RRR", "RRP",
+         "RPR", "ODB", "TOML", "Python", "Windows", "Linux", "macOS", "PowerShell", "Homebrew",
+         "Debian", "Ubuntu", "Excel", "Moodle", "VS", "Code", "JSON", "Schema", "CSV", "HTML"}
+
+
+@pytest.mark.parametrize("page", VARIANTS, ids=lambda p: p.stem)
+def test_a_worked_variant_has_no_english_outside_code(page):
+    text = re.sub(r"```.*?```", "", page.read_text(encoding="utf-8"), flags=re.S)
+    text = re.sub(r"`[^`]*`|\]\([^)]*\)|[\w/.]+\.(?:md|json|toml|png|csv)\b", " ", text)
+    words = set(re.findall(r"(?<!\w)[A-Za-z]{3,}", text)) - LATIN
+    assert not words, (page.name, sorted(words))
+
+
 @pytest.mark.parametrize("path", GUIDES, ids=lambda p: str(p.relative_to(ROOT / "docs" / "ru")))
 def test_every_toml_example_is_valid(path, tmp_path):
     for i, block in enumerate(_blocks(path, "toml")):
