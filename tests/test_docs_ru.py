@@ -114,11 +114,13 @@ LATIN = {"PDF", "SVG", "DXF", "Word", "max", "min", "cos", "arccos", "arcsin", "
 
 
 @pytest.mark.parametrize("page", VARIANTS, ids=lambda p: p.stem)
-def test_a_worked_variant_has_no_english_outside_code(page):
+def test_a_worked_variant_speaks_russian_outside_code(page):
+    """No English word and no decimal point outside code (a section «§2.1» aside)."""
     text = re.sub(r"```.*?```", "", page.read_text(encoding="utf-8"), flags=re.S)
     text = re.sub(r"`[^`]*`|\]\([^)]*\)|[\w/.]+\.(?:md|json|toml|png|csv)\b", " ", text)
     words = set(re.findall(r"(?<!\w)[A-Za-z]{3,}", text)) - LATIN
     assert not words, (page.name, sorted(words))
+    assert not re.findall(r"(?<![§\d.])\d+\.\d", text), page.name
 
 
 @pytest.mark.parametrize("path", GUIDES, ids=lambda p: str(p.relative_to(ROOT / "docs" / "ru")))
