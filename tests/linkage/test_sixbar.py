@@ -32,7 +32,7 @@ def test_shaper_against_its_exercise():
     angle and the cut the rest: the time ratio (360° − 135.95°)/135.95° = 1.648 (the exercise's
     answer: 1.647). The lever then leans 90° − acos(75/200) = 22.02° from the vertical, and the
     ram, whose line passes 150 mm beyond C, moves as Q does between the extremes:
-    2·0.36·sin 22.02° = 0.2698 m."""
+    2·0.36·sin 22.02° = 2·0.36·0.375 = 0.27 m (sin(90° − acos x) = x)."""
     case = load_case(CASES / "shaper.toml")
     dcs = {dc.kind: dc for dc in dead_centres(case.mechanism(), "5")}
     quick = 2 * math.degrees(math.acos(0.075 / 0.2))
