@@ -162,6 +162,7 @@ def _chain_givens(chain, source: str) -> dict:
     """The key's ``chain.givens`` {variant: Givens} (teaching/chain.py); {} without a chain;
     a broken one is one CaseFileError line."""
     from flywheel.teaching.chain import Givens
+    from flywheel.teaching.chain_task2 import Task2Givens
 
     if chain is None:
         return {}
@@ -173,7 +174,8 @@ def _chain_givens(chain, source: str) -> dict:
     out = {}
     for vid, g in table.items():
         try:
-            out[str(vid)] = Givens.from_document(g)
+            kind = Task2Givens if isinstance(g, dict) and g.get("kind") == "task2" else Givens
+            out[str(vid)] = kind.from_document(g)
         except (KeyError, TypeError, ValueError, AttributeError):
             raise CaseFileError(led(f"{source}: chain.givens.{vid}: ", Notice.of(
                 "key_chain_broken", "must be the chain flywheel variants writes ({{\"steps\": "

@@ -17,6 +17,7 @@ import numpy as np
 
 from flywheel.dynamics import energy
 from flywheel.teaching import chain as ch
+from flywheel.teaching import chain_task2 as t2
 from flywheel.units import DEG_PER_RAD, RAD_S_PER_RPM, RPM_PER_RAD_S, TWO_PI
 
 
@@ -65,11 +66,15 @@ CATALOGUE: tuple[Mistake, ...] = (
                 "J_required": lambda g, dT: (ch.required_inertia(g, dT, g.omega_mean *
                                                                  RPM_PER_RAD_S),),
                 "delta_T_max": lambda g, M: (ch.energy_swing(g, M, omega=g.omega_mean *
+                                                             RPM_PER_RAD_S),),
+                "task2:delta": lambda g, dT: (t2.fluctuation(g, dT, g.omega_mean *
                                                              RPM_PER_RAD_S),)}),
     Mistake("rad_s_for_rpm", "ω_m in rad/s converted again as if it were rev/min: ω_m·π/30 "
             "used for ω_m", {
                 "J_required": lambda g, dT: (ch.required_inertia(g, dT, g.omega_mean *
-                                                                 RAD_S_PER_RPM),)}),
+                                                                 RAD_S_PER_RPM),),
+                "task2:delta": lambda g, dT: (t2.fluctuation(g, dT, g.omega_mean *
+                                                             RAD_S_PER_RPM),)}),
     Mistake("rps_for_rad_s", "the speed in rev/s (n₁) used as rad/s: ω_m/2π for ω_m", {
         "J_required": lambda g, dT: (ch.required_inertia(g, dT, g.omega_mean / TWO_PI),)}),
     Mistake("half_delta", "δ/2 used for δ (the swing ±δ/2 taken for δ): J_I doubled", {
@@ -89,6 +94,7 @@ CATALOGUE: tuple[Mistake, ...] = (
     Mistake("sign_lost", "a sign lost in the cycle balance: the constant moment (and the "
             "cycle's work) with the wrong sign, or ΔT_I built with it", {
                 "M": lambda g, _: (-ch.cycle_moment(g),),
+                "task2:M": lambda g, _: (-t2.found_value(g),),
                 "cycle_work_resistance": lambda g, M: (-ch.work_scale(g) * M,),
                 "delta_T_max": lambda g, M: (ch.energy_swing(g, -M),)}),
     Mistake("degrees_for_radians", "the cycle's angle in degrees where radians belong: "
@@ -118,7 +124,7 @@ def diagnose(chain: ch.Chain, answer: str, given: dict, tolerance: float,
     steps = chain.path(answer)
     for m in CATALOGUE:
         for step in steps:
-            twist = m.twists.get(step)
+            twist = m.twists.get(chain.twist_key(step))
             if twist is None:
                 continue
             for source in (given, {}):

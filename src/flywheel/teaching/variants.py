@@ -291,7 +291,8 @@ def results_of(kind: str, doc: dict, source: str, n_points: int = RUN_POINTS) ->
 
 def solved(kind: str, doc: dict, source: str, n_points: int = RUN_POINTS):
     """(results document, the chain's givens or None) of one case (:func:`results_of`;
-    teaching/chain.py: the givens of a run case whose flywheel is sized)."""
+    teaching/chain.py: the givens of a run case whose flywheel is sized; teaching/chain_task2.py:
+    those of a task2 case whose cycle balance finds a graph's value)."""
     case = _validate(kind, doc, source)
     if kind == "run":
         from flywheel.cases.run import field_of
@@ -307,8 +308,10 @@ def solved(kind: str, doc: dict, source: str, n_points: int = RUN_POINTS):
                 raise
             raise type(exc)(led(f"{where}: ", said(exc))) from None
     from flywheel.cases.task2 import solve_case
+    from flywheel.teaching.chain_task2 import task2_givens_of
 
-    return solve_case(case, source).to_document(), None
+    result = solve_case(case, source)
+    return result.to_document(), task2_givens_of(result)
 
 
 def answer_value(results: dict, name: str):
@@ -564,7 +567,8 @@ def answers_json(vs: VariantSet) -> str:
         # per variant what that needs; one line per variant (its curves unindented)
         from flywheel.teaching.chain import chain_table
 
-        steps = json.dumps(chain_table(t.answers), indent=2, ensure_ascii=False)
+        first = next(v.givens for v in vs.variants if v.givens is not None)
+        steps = json.dumps(chain_table(t.answers, first.steps()), indent=2, ensure_ascii=False)
         givens = ",\n".join(
             f"      {json.dumps(v.id)}: {json.dumps(v.givens.to_document(), ensure_ascii=False)}"
             for v in vs.variants if v.givens is not None)
