@@ -10,7 +10,7 @@ Computation only: no typer, no rich.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Callable
 
 import numpy as np
@@ -30,6 +30,9 @@ class Mistake:
     does: str
     twists: dict[str, Callable[[ch.Givens, float], tuple[float, ...]]]
     tolerance_matter: bool = False
+    #: the mistake in a table's cell (teaching/tables.py): ``table.column`` ("analogues.vq":
+    #: every point's v_q) → (tables.CellContext) → candidate values
+    cells: dict[str, Callable] = field(default_factory=dict)
 
 
 def _local_extremes(g: ch.Givens, M: float) -> tuple[float, ...]:
@@ -68,7 +71,10 @@ CATALOGUE: tuple[Mistake, ...] = (
                 "delta_T_max": lambda g, M: (ch.energy_swing(g, M, omega=g.omega_mean *
                                                              RPM_PER_RAD_S),),
                 "task2:delta": lambda g, dT: (t2.fluctuation(g, dT, g.omega_mean *
-                                                             RPM_PER_RAD_S),)}),
+                                                             RPM_PER_RAD_S),)},
+            cells={"delta_T.T_II": lambda c: (c.key * RPM_PER_RAD_S ** 2,),
+                   "delta_T.dT_I": lambda c: (c.key - (c.row["T_II"] - c.first["T_II"])
+                                              * (RPM_PER_RAD_S ** 2 - 1),)}),
     Mistake("rad_s_for_rpm", "ω_m in rad/s converted again as if it were rev/min: ω_m·π/30 "
             "used for ω_m", {
                 "J_required": lambda g, dT: (ch.required_inertia(g, dT, g.omega_mean *
@@ -96,11 +102,16 @@ CATALOGUE: tuple[Mistake, ...] = (
                 "M": lambda g, _: (-ch.cycle_moment(g),),
                 "task2:M": lambda g, _: (-t2.found_value(g),),
                 "cycle_work_resistance": lambda g, M: (-ch.work_scale(g) * M,),
-                "delta_T_max": lambda g, M: (ch.energy_swing(g, -M),)}),
+                "delta_T_max": lambda g, M: (ch.energy_swing(g, -M),)},
+            cells={"delta_T.A": lambda c: (c.key - 2 * ch.cycle_moment(c.givens) * c.phi,),
+                   "delta_T.dT_I": lambda c: (c.key - 2 * ch.cycle_moment(c.givens) * c.phi,)}),
     Mistake("degrees_for_radians", "the cycle's angle in degrees where radians belong: "
             "M = −A(Φ)/360°, A_C = M·Φ°", {
                 "M": lambda g, _: (energy.balancing_moment(g.A_known, g.phi * DEG_PER_RAD),),
-                "cycle_work_resistance": lambda g, M: (ch.work_scale(g) * DEG_PER_RAD * M,)}),
+                "cycle_work_resistance": lambda g, M: (ch.work_scale(g) * DEG_PER_RAD * M,)},
+            cells={"analogues.vq": lambda c: (c.key / DEG_PER_RAD,),
+                   "delta_T.A": lambda c: (c.key + ch.cycle_moment(c.givens) * c.phi
+                                           * (DEG_PER_RAD - 1),)}),
     Mistake("radius_for_diameter", "the flywheel's radius given for its diameter", {
         f"flywheel_{w}.{f}": (lambda g, J, w=w, f=f: (ch.shape(g, J, w, f) / 2,))
         for w, fs in (("disk", ("D",)), ("rim", ("D", "D_inner"))) for f in fs}),
