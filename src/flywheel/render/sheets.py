@@ -162,6 +162,10 @@ def build_sheet(sheet, lang: str = "ru", figure: str | None = None) -> Document:
     return doc
 
 
+#: a blank cell of a table to fill in: wide enough for a number written by hand
+BLANK = "\u00a0" * 16
+
+
 def _pair(joint: str) -> str:
     """A reaction's row as the sheet prints it: ``O:0->1`` → «O (0→1)», the force of link 0
     on link 1 at O."""
@@ -192,7 +196,7 @@ def blank_tables(sheet, lang: str, tables_before: int, items_before: int) -> lis
         for r, phi in zip(spec.rows, spec.phi_deg):
             label = r if spec.row_label == "position" else _pair(r)
             first = [label] + ([_num(phi)] if spec.row_label == "position" else [])
-            rows.append(tuple(first + ["\u00a0"] * len(spec.columns)))
+            rows.append(tuple(first + [BLANK] * len(spec.columns)))
         out.append(Table(number, title, tuple(head), tuple(rows)))
     return out
 
