@@ -65,7 +65,8 @@ def diagnosis_text(s, lang: str = "en") -> str:
     cells off («analogues: rows 3, 7: vq_B off»); carried-forward answers are their own
     verdict."""
     m = MISTAKES[lang]
-    parts = [f"{a.answer}: {m.get(a.diagnosis, a.diagnosis)}" for a in s.answers if a.diagnosis]
+    names = s.marking.names
+    parts = [f"{names[j]}: {m.get(code, code)}" for j, code in sorted(s.diagnoses)]
     parts += [f"{name}: {off}" for name, _, _, cells in s.table_grades
               if (off := cells_off(cells, lang))]
     return "; ".join(parts)
@@ -100,14 +101,15 @@ def _gradebook_rows(r, lang: str = "en"):
     yield head + [t["passed"], t["total"], t["score"]] + (
         [t["carried_col"], t["diagnosis"]] if explained else [])
     for s in r.students:
-        by = {a.answer: a for a in s.answers}
+        index, named = s.marking.index, dict(s.diagnoses)
         tables = {name: (right, n) for name, right, n, _ in s.table_grades}
         row = [s.student, s.variant]
         for a in answers:
-            g = by.get(a)
             if a in tables:                     # a table: its cells right, no one error
                 row += [table_verdict(*tables[a], lang), None]
                 continue
+            j = index.get(a)
+            g = None if j is None else s.grade_of(j, named)
             if g is None:
                 row += ["", None]
                 continue

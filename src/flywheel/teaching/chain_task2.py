@@ -111,14 +111,23 @@ def task2_givens_of(result) -> Task2Givens | None:
     nominal = result.M_C if result.unknown == "resistance" else result.M_D
     if result.unknown is None or nominal is None or nominal == 0:
         return None
-    return Task2Givens(
+    try:
+        A_D, A_C = _cumulative(result.driving, xs), _cumulative(result.resistance, xs)
+    except (ArithmeticError, ValueError):
+        return None
+    g = Task2Givens(
         found=result.unknown, nominal=float(nominal), J=float(result.J),
         omega0=None if result.omega0 is None else float(result.omega0),
         omega_mean=float(result.omega_mean),
         delta=None if result.delta_target is None else float(result.delta_target),
         rim_radius=None if result.rim_mass is None else float(result.rim_radius),
-        phi=np.asarray(xs), A_D=_cumulative(result.driving, xs),
-        A_C=_cumulative(result.resistance, xs))
+        phi=np.asarray(xs), A_D=A_D, A_C=A_C)
+    numbers = [x for x in (g.nominal, g.J, g.omega0, g.omega_mean, g.delta, g.rim_radius)
+               if x is not None]
+    if not (np.all(np.isfinite(numbers)) and np.all(np.isfinite(A_D))
+            and np.all(np.isfinite(A_C)) and A_D[-1] != 0 and A_C[-1] != 0):
+        return None               # no chain where the works do not stay finite numbers
+    return g
 
 
 # -- the steps ----------------------------------------------------------------------------------

@@ -26,7 +26,6 @@ from __future__ import annotations
 import codecs
 import csv
 import functools
-import io
 import itertools
 import json
 import math
@@ -35,9 +34,9 @@ import re
 from array import array
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Iterator
 
 from flywheel.errors import CaseFileError, InputError, Notice, led, said
+from flywheel.teaching.tables import cell_error
 # the key's limits are those of every JSON flywheel reads (io/jsonfile.py)
 from flywheel.io.jsonfile import MAX_DEPTH as MAX_KEY_DEPTH
 from flywheel.io.jsonfile import MAX_DIGITS as MAX_KEY_DIGITS
@@ -272,8 +271,6 @@ def within(given: float, value: float, tolerance: float) -> bool:
 
 def within_cell(given: float, value: float, tolerance: float, floor: float) -> bool:
     """:func:`within` for a table's cell (teaching/tables.py ``cell_error``)."""
-    from flywheel.teaching.tables import cell_error
-
     return cell_error(given, value, floor)[0] <= tolerance * (1 + SLACK)
 
 
@@ -351,18 +348,27 @@ class Marking:
         """Answer j's error (:func:`rel_error`; a table's cell: teaching/tables.py
         ``cell_error``)."""
         if self.cells >> j & 1:
-            from flywheel.teaching.tables import cell_error
-
             return cell_error(given, self.keys[j], self.floors[j])
         return rel_error(given, self.keys[j])
+
+    @functools.cached_property
+    def index(self) -> dict[str, int]:
+        """Answer name → its position j."""
+        return {a: j for j, a in enumerate(self.names)}
 
     def verdicts(self, given: array) -> int:
         """The answers passed as a bit mask (bit j: answer j); ``given`` NaN = no answer."""
         mask = 0
         if self.cells:
-            for j, (g, tol) in enumerate(zip(given, self.tolerances)):
-                if g == g and self.error(j, g)[0] <= tol * (1 + SLACK):
-                    mask |= 1 << j
+            # a cell: |given − key| ≤ tolerance·max(|key|, floor) (teaching/tables.py); the
+            # floor of an answer that is no cell is 0: rel_error's test
+            for j, (g, k, tol, floor) in enumerate(zip(given, self.keys, self.tolerances,
+                                                       self.floors)):
+                if g == g:
+                    scale = max(abs(k), floor)
+                    err = abs(g - k) / scale if scale else abs(g)
+                    if err <= tol * (1 + SLACK):
+                        mask |= 1 << j
             return mask
         for j, (g, k, tol) in enumerate(zip(given, self.keys, self.tolerances)):
             if g == g and rel_error(g, k)[0] <= tol * (1 + SLACK):
@@ -394,19 +400,21 @@ class StudentGrade:
 
     @property
     def answers(self) -> tuple[AnswerGrade, ...]:
-        out = []
         named = dict(self.diagnoses)
-        for j, (a, k, tol, g) in enumerate(zip(self.marking.names, self.marking.keys,
-                                               self.marking.tolerances, self.given)):
-            if g != g:
-                out.append(AnswerGrade(a, None, k, None, "relative" if k else "absolute", tol,
-                                       False, "no answer"))
-                continue
-            err, kind = self.marking.error(j, g)
-            passed = bool(self.mask >> j & 1)
-            verdict = ("pass" if passed else "carried" if self.carried >> j & 1 else "fail")
-            out.append(AnswerGrade(a, g, k, err, kind, tol, passed, verdict, named.get(j)))
-        return tuple(out)
+        return tuple(self.grade_of(j, named) for j in range(len(self.marking.names)))
+
+    def grade_of(self, j: int, named: dict | None = None) -> AnswerGrade:
+        """The grade of answer j (``named``: the diagnoses as a dict, if at hand)."""
+        m = self.marking
+        a, k, tol, g = m.names[j], m.keys[j], m.tolerances[j], self.given[j]
+        if g != g:
+            return AnswerGrade(a, None, k, None, "relative" if k else "absolute", tol, False,
+                               "no answer")
+        err, kind = m.error(j, g)
+        passed = bool(self.mask >> j & 1)
+        verdict = ("pass" if passed else "carried" if self.carried >> j & 1 else "fail")
+        diagnosis = (dict(self.diagnoses) if named is None else named).get(j)
+        return AnswerGrade(a, g, k, err, kind, tol, passed, verdict, diagnosis)
 
     @property
     def passed(self) -> int:

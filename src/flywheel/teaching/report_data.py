@@ -12,14 +12,14 @@ import json
 from typing import Iterator
 
 
-def report_dict(r: Report) -> dict:
+def report_dict(r) -> dict:
     """The report as a JSON-ready document (``flywheel grade --json``)."""
     doc = _report_frame(r)
     doc["students"] = [_student_dict(s) for s in r.students]
     return doc
 
 
-def _student_dict(s: StudentGrade) -> dict:
+def _student_dict(s) -> dict:
     doc = {
         "student": s.student, "variant": s.variant, "file": s.file, "row": s.row,
         "score": s.score, "passed": s.passed, "carried_forward": s.carried_count,
@@ -36,7 +36,7 @@ def _student_dict(s: StudentGrade) -> dict:
     return doc
 
 
-def _report_frame(r: Report) -> dict:
+def _report_frame(r) -> dict:
     """The report's document with ``students`` empty (filled by the callers)."""
     worst = r.most_often_wrong()
     return {
@@ -64,7 +64,7 @@ def _report_frame(r: Report) -> dict:
     }
 
 
-def report_json(r: Report) -> Iterator[str]:
+def report_json(r) -> Iterator[str]:
     """The text of ``json.dumps(report_dict(r), indent=2, ensure_ascii=False)`` and a newline,
     in pieces: one student's document at a time (a class of 200 000 never held whole).
 
@@ -91,13 +91,13 @@ def report_json(r: Report) -> Iterator[str]:
 CSV_ROWS_PER_PIECE = 2000
 
 
-def report_csv(r: Report) -> str:
+def report_csv(r) -> str:
     """One line per student and answer: student, variant, file, row, answer, given, key,
     error, error_kind, tolerance, pass (1/0), score."""
     return "".join(report_csv_pieces(r))
 
 
-def report_csv_pieces(r: Report) -> Iterator[str]:
+def report_csv_pieces(r) -> Iterator[str]:
     """The text of :func:`report_csv` in pieces of CSV_ROWS_PER_PIECE students."""
     buf = io.StringIO()
     w = csv.writer(buf, lineterminator="\n")

@@ -174,12 +174,6 @@ def _with_tolerances(spec: TableSpec, tolerances: dict, where: str) -> TableSpec
     return replace(spec, tolerances=tuple(None if t is None else float(t) for t in tols))
 
 
-def tolerance_keys(names) -> set[str]:
-    """The tables' names a template's ``tolerances`` may use besides its answers (a
-    ``table.column`` key is checked against the columns once the table is known)."""
-    return set(names)
-
-
 def cells_of(specs, results, where: str) -> dict[str, float]:
     """{cell: value} of a solved variant by the template's tables (its Results' own arrays:
     table.csv's columns at the positions, summary.json's joints at the report angle); a table
