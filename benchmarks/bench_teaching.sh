@@ -5,6 +5,7 @@
 # early answer wrong — half of them ΔT_нб off by 30 % with the later answers computed from it
 # (error carried forward), half J_I from δ/2 (a classic mistake to name) — graded with
 # --carried-forward 0.5, the gradebook with its diagnosis column (aim: all in < 30 s).
+# Then the same with tables graded cell by cell (issue 27, step 4).
 # Run by hand from the repository root with the venv active:  bash benchmarks/bench_teaching.sh
 # (PYTHONPATH=src to time a worktree's code: python -m flywheel is used, not the installed one)
 set -euo pipefail
@@ -55,3 +56,38 @@ PY
 printf 'variants 1000: %.2f s; grade 1000 right (summary + gradebook): %.2f s; grade 1000 with one wrong early answer each (carried forward, diagnosis): %.2f s; made and graded with carried-forward and diagnosis: %.2f s\n' \
   "$(echo "$m - $s" | bc -l)" "$(echo "$e - $g" | bc -l)" "$(echo "$x - $e" | bc -l)" "$(echo "$m - $s + $x - $e" | bc -l)"
 ls -la "$tmp/v/answers.json" | awk '{print "answers.json: " $5 " bytes"}'
+# Tables cell by cell (issue 27, step 4): the same template asking the analogues, ΔT_I and the
+# reactions (134 answers a variant: 5 + 72 + 36 + 21 cells), 1000 variants made, then graded
+# from a sheet where every other student has one cell off
+sed 's/^answers = \(.*\)$/answers = \1\ntables = ["analogues", "delta_T", "reactions"]/' \
+  cases/variants_compressor.toml > "$tmp/with_tables.toml"
+t0=$(date +%s.%N)
+python -m flywheel -q variants "$tmp/with_tables.toml" --count 1000 --seed 1 --out "$tmp/t"
+t1=$(date +%s.%N)
+python - "$tmp" <<'PY'
+import csv, json, sys
+from pathlib import Path
+d = Path(sys.argv[1])
+key = json.loads((d / "t" / "answers.json").read_text())
+names = list(next(iter(key["variants"].values())))
+rows = [["student", "variant", *names]]
+for i, (vid, ans) in enumerate(key["variants"].items()):
+    x = dict(ans)
+    if i % 2:
+        x["analogues.3.vq_B"] *= 1.1
+    rows.append([f"student {i}", vid, *(repr(x[a]) for a in names)])
+with open(d / "cells.csv", "w", newline="", encoding="utf-8") as f:
+    csv.writer(f).writerows(rows)
+PY
+t2=$(date +%s.%N)
+python -m flywheel grade "$tmp/t/answers.json" "$tmp/cells.csv" --summary --carried-forward 0.5 \
+  --gradebook "$tmp/book3.csv" > /dev/null
+t3=$(date +%s.%N)
+python - "$tmp/book3.csv" <<'PY'
+import csv, sys
+rows = list(csv.DictReader(open(sys.argv[1], encoding="utf-8")))
+print(f"graded {len(rows)} with tables: {sum('rows 3' in r['diagnosis'] or 'row 3' in r['diagnosis'] for r in rows)} with a cell off named")
+PY
+printf 'with tables (134 answers a variant): variants 1000: %.2f s; grade 1000 (cells, carried forward, diagnosis, gradebook): %.2f s; made and graded: %.2f s\n' \
+  "$(echo "$t1 - $t0" | bc -l)" "$(echo "$t3 - $t2" | bc -l)" "$(echo "$t1 - $t0 + $t3 - $t2" | bc -l)"
+ls -la "$tmp/t/answers.json" | awk '{print "answers.json with tables: " $5 " bytes"}'

@@ -1,7 +1,8 @@
 """The feedback page of each student (``flywheel grade --feedback DIR``, issue 27): one
 self-contained HTML page per graded student, in the teacher's ``--lang``, with each answer,
 its verdict («верно по вашим данным» for an error carried forward), the named classic mistake
-and the key's value (left out with ``--no-reveal``). Formatting only: what is shown is the
+and the key's value (left out with ``--no-reveal``); a table: one line with its cells right
+and the cells off, and each wrong cell on its own line. Formatting only: what is shown is the
 grading's (teaching/grading.py, teaching/explain.py)."""
 from __future__ import annotations
 
@@ -9,7 +10,7 @@ import html
 import re
 
 from flywheel.render.catalogue import words
-from flywheel.render.grading import MISTAKES, verdict_word
+from flywheel.render.grading import MISTAKES, cells_off, table_verdict, verdict_word
 from flywheel.render.numbers import fmt
 
 T = words("feedback", {
@@ -39,8 +40,23 @@ def label(answer: str, lang: str) -> str:
     """An answer as the task sheet asks it (render/sheet_labels.py): «name symbol, unit»."""
     from flywheel.render.sheet_labels import answer_words
 
-    what, sym, u = answer_words("run", answer, lang)
+    what, sym, u = answer_words("run", answer, lang)     # a table's cell: its own words
     return " ".join(x for x in (what, sym) if x) + (f", {u}" if u else "")
+
+
+class _Whole:
+    """A table's verdict as an answer's (render/grading.py ``verdict_word``)."""
+
+    def __init__(self, passed: bool):
+        self.passed = passed
+        self.verdict = "pass" if passed else "fail"
+
+
+def table_title(name: str, phi: dict, lang: str) -> str:
+    """A table's title as the task sheet gives it (render/sheet_labels.py)."""
+    from flywheel.render.sheet_labels import table_title as title
+
+    return title(name, next(iter(phi.values()), 0.0), lang)
 
 
 def _pct(x: float, lang: str) -> str:
@@ -52,13 +68,24 @@ def page(s, lang: str = "en", reveal: bool = True, share: float = 0.0) -> str:
     t = T[lang]
     e = html.escape
     rows = []
-    for a in s.answers:
+    in_table = s.marking.cells
+    for j, a in enumerate(s.answers):
+        if in_table >> j & 1 and a.passed:
+            continue                  # a table's right cell: counted in its table's line
         cells = [f"{e(label(a.answer, lang))}<br><small>{e(a.answer)}</small>", _num(a.given, lang), e(verdict_word(a, lang)),
                  e(MISTAKES[lang].get(a.diagnosis, a.diagnosis or t["none"]))]
         if reveal:
             cells.append(_num(a.key, lang))
         cells.append(_num(100 * a.tolerance, lang) + " %")
         cls = a.verdict.replace(" ", "-")
+        rows.append(f'<tr class="{cls}">' + "".join(f"<td>{c}</td>" for c in cells) + "</tr>")
+    for name, right, n, off in s.table_grades:
+        cls = "pass" if right == n else "fail"
+        cells = [f"{e(table_title(name, s.marking.table_phi[name], lang))}<br><small>{e(name)}"
+                 "</small>", e(table_verdict(right, n, lang)),
+                 e(verdict_word(_Whole(right == n), lang)), e(cells_off(off, lang) or t["none"])]
+        cells += [""] if reveal else []
+        cells.append("")
         rows.append(f'<tr class="{cls}">' + "".join(f"<td>{c}</td>" for c in cells) + "</tr>")
     head = [t["answer"], t["given"], t["verdict"], t["diagnosis"]]
     head += [t["expected"]] if reveal else []

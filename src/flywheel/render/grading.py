@@ -31,7 +31,9 @@ TEXT = words("grading", {"summary": "Class summary: {n} graded, mean score {mean
                          "carried": "consistent with your earlier answer", "diagnosis": "diagnosis",
                          "carried_col": "carried forward",
                          "carried_note": "carried forward: {n} answer(s) consistent with the "
-                         "student's earlier ones, credited {share} each"})
+                         "student's earlier ones, credited {share} each",
+                         "cells": "{right}/{n} cells", "off_row": "row {rows}: {column} off",
+                         "off_rows": "rows {rows}: {column} off"})
 
 #: the names of the classic mistakes of teaching/mistakes.py's catalogue (by code), as the
 #: feedback and the gradebook say them
@@ -59,11 +61,27 @@ def verdict_word(a, lang: str = "en") -> str:
 
 
 def diagnosis_text(s, lang: str = "en") -> str:
-    """A student's diagnosis: each named mistake as «answer: mistake»; carried-forward answers
-    are their own verdict."""
+    """A student's diagnosis: each named mistake as «answer: mistake», then each table's
+    cells off («analogues: rows 3, 7: vq_B off»); carried-forward answers are their own
+    verdict."""
     m = MISTAKES[lang]
-    return "; ".join(f"{a.answer}: {m.get(a.diagnosis, a.diagnosis)}" for a in s.answers
-                     if a.diagnosis)
+    names = s.marking.names
+    parts = [f"{names[j]}: {m.get(code, code)}" for j, code in sorted(s.diagnoses)]
+    parts += [f"{name}: {off}" for name, _, _, cells in s.table_grades
+              if (off := cells_off(cells, lang))]
+    return "; ".join(parts)
+
+
+def cells_off(off, lang: str = "en") -> str:
+    """A table's cells off, by column: «rows 3, 7: vq_B off; row 5: vq_C off»."""
+    t = TEXT[lang]
+    return "; ".join(t["off_row" if len(rows) == 1 else "off_rows"].format(
+        rows=", ".join(rows), column=column) for column, rows in off)
+
+
+def table_verdict(right: int, n: int, lang: str = "en") -> str:
+    """A table's verdict: the cells right of its cells («70/72 cells»)."""
+    return TEXT[lang]["cells"].format(right=right, n=n)
 
 
 def gradebook_rows(r, lang: str = "en") -> list[list]:
@@ -75,18 +93,23 @@ def gradebook_rows(r, lang: str = "en") -> list[list]:
 def _gradebook_rows(r, lang: str = "en"):
     """The rows of :func:`gradebook_rows`, one at a time."""
     t = TEXT[lang]
-    answers = list(r.key.answers) or sorted({a.answer for s in r.students for a in s.answers})
+    answers = list(r.key.units) or sorted({a.answer for s in r.students for a in s.answers})
     head = [t["student"], t["variant"]]
     for a in answers:
         head += [f"{a} {t['verdict']}", f"{a} {t['error']}"]
-    explained = bool(r.key.givens)
+    explained = bool(r.key.givens) or bool(r.key.tables)
     yield head + [t["passed"], t["total"], t["score"]] + (
         [t["carried_col"], t["diagnosis"]] if explained else [])
     for s in r.students:
-        by = {a.answer: a for a in s.answers}
+        index, named = s.marking.index, dict(s.diagnoses)
+        tables = {name: (right, n) for name, right, n, _ in s.table_grades}
         row = [s.student, s.variant]
         for a in answers:
-            g = by.get(a)
+            if a in tables:                     # a table: its cells right, no one error
+                row += [table_verdict(*tables[a], lang), None]
+                continue
+            j = index.get(a)
+            g = None if j is None else s.grade_of(j, named)
             if g is None:
                 row += ["", None]
                 continue
@@ -223,10 +246,15 @@ def print_report(r, console=None, lang: str = "en") -> None:
         table.add_column(t["error"], justify="right")
         table.add_column(t["tolerance"], justify="right")
         table.add_column("")
-        explained = s.marking.chain is not None
+        # the diagnosis column where there is one to show
+        explained = any(a.diagnosis for a in s.answers) or any(
+            off for *_, off in s.table_grades)
         if explained:
             table.add_column(t["diagnosis"])
-        for a in s.answers:
+        in_table = s.marking.cells
+        for j, a in enumerate(s.answers):
+            if in_table >> j & 1 and not a.diagnosis:
+                continue                        # a table's cell: in its table's line
             err = "—" if a.error is None else (
                 f"{100 * a.error:.3g} %" if a.error_kind == "relative"
                 else f"{a.error:.3g} {t['abs']}")
@@ -237,6 +265,10 @@ def print_report(r, console=None, lang: str = "en") -> None:
             if explained:
                 cells.append(MISTAKES[lang].get(a.diagnosis, a.diagnosis or ""))
             table.add_row(*cells)
+        for name, right, n, off in s.table_grades:
+            mark = f"[green]{t['pass']}[/]" if right == n else f"[red]{t['fail']}[/]"
+            table.add_row(name, table_verdict(right, n, lang), "", "", "", mark,
+                          cells_off(off, lang))
         console.print(table)
 
     if r.students:

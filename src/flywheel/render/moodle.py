@@ -4,7 +4,8 @@ unit and its tolerance. The structure is Moodle's documented "Moodle XML format"
 (docs.moodle.org, Moodle XML format: ``<quiz>``, ``<question type="category">``,
 ``<question type="numerical">`` with ``name``, ``questiontext``, ``answer fraction="100"``
 holding ``text`` and ``tolerance``, ``units``); a numerical answer's tolerance is absolute,
-so the key's relative one is written as tolerance·|value|. Each question's text starts with
+so the key's relative one is written as tolerance·|value| (a table's cell, one question
+each: tolerance·max(|value|, its column's floor), as ``flywheel grade`` judges it). Each question's text starts with
 the tag ``[flywheel VARIANT ANSWER]`` (teaching/moodle.py) by which ``flywheel grade`` reads
 the quiz's Responses export. Formatting only."""
 from __future__ import annotations
@@ -13,6 +14,7 @@ from xml.sax.saxutils import escape
 
 from flywheel.render.catalogue import words
 from flywheel.teaching.moodle import tag
+from flywheel.teaching.tables import cell_floors
 
 T = words("moodle", {
     "category": "Variant {variant}",
@@ -30,7 +32,7 @@ def _unit_and_words(answer: str, kind: str, lang: str) -> tuple[str, str, str, s
     try:
         si = unit_of(answer.rsplit(".", 1)[-1], "en")
     except KeyError:
-        si = ""
+        si = answer_words(kind, answer, "en")[2]     # a reaction's cell: its term's unit
     return what, sym, u, "" if si in ("–", "-") else si
 
 
@@ -48,15 +50,18 @@ def quiz_xml(vs, lang: str = "en") -> str:
         out += ['  <question type="category">',
                 f"    <category>{_text(top + '/' + w['category'].format(variant=v.id))}"
                 "</category>", "  </question>"]
-        for a in t.answers:
+        floors = cell_floors(t.tables, v.answers) if t.tables else {}
+        for a in t.keyed:
             value = v.answers[a]
-            rel = t.tolerances.get(a, t.tolerance)
+            rel = t.tolerance_of(a)
             what, sym, unit, si = _unit_and_words(a, t.kind, lang)
             pct = f"{100 * rel:g}".replace(".", "," if lang == "ru" else ".")
             text = (tag(v.id, a) + " " + w["question"].format(
                 variant=v.id, what=what, symbol=f" {sym}" if sym else "",
                 unit=f", {unit}" if unit else "", pct=pct))
-            absolute = rel * abs(value) if value else rel
+            # a table's cell: judged against its column's scale too (teaching/tables.py)
+            scale = max(abs(value), floors.get(a, 0.0))
+            absolute = rel * scale if scale else rel
             out += [
                 '  <question type="numerical">',
                 f"    <name>{_text(f'{v.id} {a}')}</name>",

@@ -300,14 +300,83 @@ def field_value(path: str, value, lang: str = "en") -> str:
     return value
 
 
+#: the tables a template may ask (teaching/tables.py): name → (English, Russian) title
+SHEET_TABLES: dict[str, tuple[str, str]] = {
+    "analogues": ("Velocity analogues at the positions of the mechanism",
+                  "Аналоги скоростей в положениях механизма"),
+    "delta_T": ("Work and kinetic energy at the positions of the mechanism",
+                "Работа и кинетическая энергия в положениях механизма"),
+    "reactions": ("Reactions in the kinematic pairs at φ = {a:g}°",
+                  "Реакции в кинематических парах при φ = {a:g}°"),
+}
+#: what a table's row is: (English, Russian)
+SHEET_ROWS = {"position": ("position", "положение"), "joint": ("pair", "кинематическая пара"),
+              "at": ("at position {row}", "в положении {row}")}
+
+
+def table_title(table: str, phi_deg: float, lang: str = "en") -> str:
+    """A table's title on the task sheet (``reactions``: at its angle ``phi_deg``)."""
+    return SHEET_TABLES[table][lang == "ru"].format(a=phi_deg)
+
+
+def row_word(row_label: str, lang: str = "en") -> str:
+    return SHEET_ROWS[row_label][lang == "ru"]
+
+
+def _cell_parts(key: str) -> tuple[str, str, str] | None:
+    """(table, row, column) of a table's cell ``table.row.column``, None for another answer."""
+    table, _, rest = key.partition(".")
+    if table not in SHEET_TABLES or rest.count(".") < 1:
+        return None
+    row, _, column = rest.rpartition(".")
+    return table, row, column
+
+
+def column_heading(table: str, column: str, lang: str = "en") -> str:
+    """A table's column head: the symbol, its point or link, the unit («v_q(B), м/рад»,
+    "R_x [N]")."""
+    term = f"{column}_O" if table == "reactions" else column
+    sym = symbol(term, lang)
+    m = re.fullmatch(r"(?:vq|omega_q)_(.+)", column)
+    if m:
+        sym = f"{sym}({m.group(1)})"
+    u = unit_of(term, lang)
+    if u in ("–", "-", ""):
+        return sym
+    return f"{sym}, {u}" if lang == "ru" else f"{sym} [{u}]"
+
+
+def cell_words(key: str, lang: str = "en") -> tuple[str, str, str] | None:
+    """(what, symbol, unit) of a table's cell (``analogues.3.vq_B``: «аналог скорости точки B
+    в положении 3», v_q, м/рад), None if ``key`` is no cell."""
+    parts = _cell_parts(key)
+    if parts is None:
+        return None
+    table, row, column = parts
+    term = f"{column}_{row}" if table == "reactions" else column
+    try:
+        what, sym, u = name(term, lang), symbol(term, lang), unit_of(term, lang)
+    except KeyError:
+        return None
+    if sym and what.endswith(sym):
+        what = what[:-len(sym)].rstrip(" ,")
+    if table != "reactions":
+        what = f"{what} {SHEET_ROWS['at'][lang == 'ru'].format(row=row)}"
+    return what, sym, "" if u in ("–", "-", "") else u
+
+
 def answer_words(kind: str, key: str, lang: str = "en") -> tuple[str, str, str]:
     """(what, symbol, unit) of an answer of a ``kind`` ("run", "task2") case as a task sheet
     asks it: the object of "Determine …", the symbol and the unit as printed ("" where the
-    quantity has none; the result key itself if it is no term).
+    quantity has none; the result key itself if it is no term; a table's cell:
+    :func:`cell_words`).
 
     >>> answer_words("run", "J_flywheel", "ru")
     ('момент инерции маховика', 'J_М', 'кг·м²')
     """
+    cell = cell_words(key, lang)
+    if cell is not None:
+        return cell
     last = key.rsplit(".", 1)[-1]
     words = SHEET_ANSWERS.get(f"{kind}:{key}") or SHEET_ANSWERS.get(key)
     try:

@@ -43,7 +43,8 @@ WORDS = words("sheets", {"variant": "Variant {n}", "student": "Student _________
                          "item": "Determine {what}{sym}{unit}; accepted within ±{tol} %.",
                          "scheme": "Kinematic scheme of the mechanism at φ = {a:g}°",
                          "moments": "The given moment graphs {MD}(φ) and {MC}(φ)",
-                         "unknown": "{M} = ? (from the cycle balance)"})
+                         "unknown": "{M} = ? (from the cycle balance)",
+                         "fill": "Fill in Table {n}: {title}; each cell is accepted within ±{tol} %."})
 
 #: a subscript as marked in a sheet's text (private-use characters, which no number or word of
 #: ours contains), typeset by :func:`sheet_html` (<sub>) and :func:`sheet_typst` (#sub[])
@@ -155,8 +156,50 @@ def build_sheet(sheet, lang: str = "ru", figure: str | None = None) -> Document:
                 (field_label(g.path, lang, names, kinds), _value(g, lang),
                  nm.unit(g.unit, lang) if g.unit else "–") for g in rows)))
     doc.blocks.append(Heading(2, w["find"]))
-    doc.blocks += [Paragraph(item) for item in find_items(sheet, lang)]
+    items = find_items(sheet, lang)
+    doc.blocks += [Paragraph(item) for item in items]
+    doc.blocks += blank_tables(sheet, lang, number, len(items))
     return doc
+
+
+#: a blank cell of a table to fill in: wide enough for a number written by hand
+BLANK = "\u00a0" * 16
+
+
+def _pair(joint: str) -> str:
+    """A reaction's row as the sheet prints it: ``O:0->1`` → «O (0→1)», the force of link 0
+    on link 1 at O."""
+    point, _, links = joint.partition(":")
+    return f"{point} ({links.replace('->', '→')})" if links else joint
+
+
+def blank_tables(sheet, lang: str, tables_before: int, items_before: int) -> list:
+    """The tables a student fills in (``[variants] tables``, teaching/tables.py): per table
+    a find-item «Fill in Table 3: …» and the table with its rows' labels, the rows' angles
+    and the columns with their units, the cells blank."""
+    from flywheel.render.sheet_labels import column_heading, row_word, table_title
+
+    w = WORDS[lang]
+    out = []
+    for k, spec in enumerate(sheet.tables, 1):
+        number = tables_before + k
+        title = subscripts(table_title(spec.name, spec.phi_deg[0], lang))
+        tols = [sheet.default_tolerance if t is None else t for t in spec.tolerances]
+        low, high = _tol(min(tols)), _tol(max(tols))
+        out.append(Paragraph(f"{items_before + k}. " + w["fill"].format(
+            n=number, title=title, tol=low if low == high else f"{low}–{high}")))
+        head = [row_word(spec.row_label, lang)]
+        if spec.row_label == "position":
+            head.append("φ, °" if lang == "ru" else "φ [°]")
+        head += [subscripts(column_heading(spec.name, c, lang)) for c in spec.columns]
+        rows = []
+        for r, phi in zip(spec.rows, spec.phi_deg):
+            label = r if spec.row_label == "position" else _pair(r)
+            first = [label] + ([_num(phi)] if spec.row_label == "position" else [])
+            rows.append(tuple(first + [BLANK] * len(spec.columns)))
+        out.append(Table(number, title, tuple(head), tuple(rows)))
+    return out
+
 
 
 # -- drawings -----------------------------------------------------------------------------------

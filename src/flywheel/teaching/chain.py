@@ -67,6 +67,10 @@ class Givens:
                "width_ratio", "inner_ratio", "rim_share", "formulas")
     CURVES = ("phi", "A_known", "J_II", "J_II_masses")
 
+    def steps(self) -> dict:
+        """The steps of a run case's chain (:data:`STEPS`)."""
+        return STEPS
+
     def to_document(self) -> dict:
         doc = {k: getattr(self, k) for k in self.SCALARS}
         for k in self.CURVES:
@@ -212,6 +216,11 @@ class Step:
     by: str
     fn: Callable
     scale: Callable | None = None     # a multiple of M: value = scale(g)·M
+    twist_as: str | None = None       # the catalogue's name of the step (None: ``name``)
+
+    @property
+    def twist_key(self) -> str:
+        return self.name if self.twist_as is None else self.twist_as
 
 
 def _steps() -> dict[str, Step]:
@@ -233,12 +242,14 @@ def _steps() -> dict[str, Step]:
     return {s.name: s for s in out}
 
 
-STEPS = _steps()
+STEPS = _STEPS = _steps()
 
 
-def chain_table(answers) -> dict[str, dict]:
+def chain_table(answers, steps: dict | None = None) -> dict[str, dict]:
     """answers.json's ``chain.steps``: for each answer the chain knows, the earlier answers it
-    is computed from (the nearest ones up its chain) and the functions on the way."""
+    is computed from (the nearest ones up its chain) and the functions on the way (``steps``:
+    a task2 chain's, teaching/chain_task2.py; default a run case's)."""
+    STEPS = _STEPS if steps is None else steps
     out = {}
     order = list(answers)
     for a in order:
@@ -272,21 +283,27 @@ class Chain:
     NaN = none): each input is the student's value where they gave one, else computed
     further up from theirs (at the top from the givens)."""
 
-    def __init__(self, givens: Givens, answers):
+    def __init__(self, givens, answers):
         self.g = givens
+        self.steps = givens.steps()
         self.order = [a for a in answers]
         self.pos = {a: i for i, a in enumerate(self.order)}
 
     def knows(self, answer: str) -> bool:
-        return answer in STEPS and STEPS[answer].parent is not None
+        return answer in self.steps and self.steps[answer].parent is not None
 
     def path(self, answer: str) -> list[str]:
         """``answer`` and the steps above it, up to the top of the chain."""
         out, node = [], answer
         while node is not None:
             out.append(node)
-            node = STEPS[node].parent
+            node = self.steps[node].parent
         return out
+
+    def twist_key(self, step: str) -> str:
+        """The catalogue's name of ``step`` (teaching/mistakes.py: a task2 step's is
+        ``task2:<name>`` unless it is the run chain's own step)."""
+        return self.steps[step].twist_key
 
     def _value(self, node: str, before: int, given, twist: Twist | None):
         """(values, the answer they came from or None: the givens, a twist applied): the
@@ -298,7 +315,7 @@ class Chain:
                 return (v,), node, False
         if node == "M":
             for a in self.order[:before]:
-                s = STEPS.get(a)
+                s = self.steps.get(a)
                 v = given.get(a, math.nan)
                 if s is not None and s.scale is not None and v == v:
                     k = s.scale(self.g)
@@ -307,7 +324,7 @@ class Chain:
         return self._computed(node, before, given, twist)
 
     def _computed(self, node: str, before: int, given, twist: Twist | None):
-        step = STEPS[node]
+        step = self.steps[node]
         if step.parent is None:
             ins, src, twisted = (math.nan,), None, False
         else:

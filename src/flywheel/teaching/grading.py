@@ -26,7 +26,6 @@ from __future__ import annotations
 import codecs
 import csv
 import functools
-import io
 import itertools
 import json
 import math
@@ -35,9 +34,9 @@ import re
 from array import array
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Iterator
 
 from flywheel.errors import CaseFileError, InputError, Notice, led, said
+from flywheel.teaching.tables import cell_error
 # the key's limits are those of every JSON flywheel reads (io/jsonfile.py)
 from flywheel.io.jsonfile import MAX_DEPTH as MAX_KEY_DEPTH
 from flywheel.io.jsonfile import MAX_DIGITS as MAX_KEY_DIGITS
@@ -65,13 +64,28 @@ class Key:
     tolerances: dict[str, float] = field(default_factory=dict)
     answers: tuple[str, ...] = ()
     givens: dict = field(default_factory=dict)   # variant id → teaching.chain.Givens
+    tables: dict = field(default_factory=dict)   # name → teaching.tables.TableSpec
 
     def tolerance_of(self, answer: str, default: float | None = None) -> float:
-        """The per-answer tolerance of the key file, else ``default`` (e.g. ``--tolerance``),
-        else the key's own default."""
+        """The per-answer tolerance of the key file (a table's cell: its column's), else
+        ``default`` (e.g. ``--tolerance``), else the key's own default."""
         if answer in self.tolerances:
             return self.tolerances[answer]
+        t = self._cell_tolerances.get(answer)
+        if t is not None:
+            return t
         return self.tolerance if default is None else default
+
+    @functools.cached_property
+    def _cell_tolerances(self) -> dict[str, float | None]:
+        return {spec.cell(r, c): t for spec in self.tables.values() for r in spec.rows
+                for c, t in zip(spec.columns, spec.tolerances)}
+
+    @functools.cached_property
+    def units(self) -> tuple[str, ...]:
+        """What earns credit, in order: the answers that are no table's cell, then the tables."""
+        cells = self._cell_tolerances
+        return tuple(a for a in self.answers if a not in cells) + tuple(self.tables)
 
     def find(self, variant: str) -> str | None:
         """The key's id for a sheet's variant cell ("3", "03", "variant_03.toml" → "03")."""
@@ -154,14 +168,20 @@ def parse_key(doc, source: str = "<key>") -> Key:
         raise CaseFileError(led(f"{source}: answers: ", Notice.of(
             "grade_answers_list", "must be a list of answer names (got {got})", got=repr(answers))))
     givens = _chain_givens(doc.get("chain") if "variants" in doc else None, source)
+    from flywheel.teaching.tables import parse_key_tables
+
+    tables = parse_key_tables(doc.get("tables") if "variants" in doc else None, source)
+    listed = set(answers)
+    answers = list(answers) + [c for t in tables.values() for c in t.cells if c not in listed]
     return Key(source, variants, float(tol), {str(k): float(v) for k, v in tols.items()},
-               tuple(answers), givens)
+               tuple(answers), givens, tables)
 
 
 def _chain_givens(chain, source: str) -> dict:
     """The key's ``chain.givens`` {variant: Givens} (teaching/chain.py); {} without a chain;
     a broken one is one CaseFileError line."""
     from flywheel.teaching.chain import Givens
+    from flywheel.teaching.chain_task2 import Task2Givens
 
     if chain is None:
         return {}
@@ -173,7 +193,8 @@ def _chain_givens(chain, source: str) -> dict:
     out = {}
     for vid, g in table.items():
         try:
-            out[str(vid)] = Givens.from_document(g)
+            kind = Task2Givens if isinstance(g, dict) and g.get("kind") == "task2" else Givens
+            out[str(vid)] = kind.from_document(g)
         except (KeyError, TypeError, ValueError, AttributeError):
             raise CaseFileError(led(f"{source}: chain.givens.{vid}: ", Notice.of(
                 "key_chain_broken", "must be the chain flywheel variants writes ({{\"steps\": "
@@ -248,6 +269,11 @@ def within(given: float, value: float, tolerance: float) -> bool:
     return rel_error(given, value)[0] <= tolerance * (1 + SLACK)
 
 
+def within_cell(given: float, value: float, tolerance: float, floor: float) -> bool:
+    """:func:`within` for a table's cell (teaching/tables.py ``cell_error``)."""
+    return cell_error(given, value, floor)[0] <= tolerance * (1 + SLACK)
+
+
 # -- grading ------------------------------------------------------------------------------------
 
 @dataclass(frozen=True, slots=True)
@@ -296,22 +322,64 @@ class Marking:
     tolerances: tuple[float, ...]
     chain: object = None         # teaching.chain.Chain
     carried_share: float = 0.0
+    # tables (teaching/tables.py): a TableMark each, every answer's floor (0: no cell), the
+    # bits of the cells and each table's rows' angles [deg] {table: {row: φ}}
+    tables: tuple = ()
+    floors: tuple[float, ...] = ()
+    cells: int = 0
+    table_phi: dict = field(default_factory=dict)
 
     def explain(self, given: array, mask: int) -> tuple[int, tuple[tuple[int, str], ...]]:
-        """(carried, diagnoses) of a student's values: teaching/explain.py."""
-        if self.chain is None:
-            return 0, ()
-        from flywheel.teaching.explain import explain
+        """(carried, diagnoses) of a student's values: teaching/explain.py, and a table's
+        cells tried against the classic mistakes (teaching/tables.py)."""
+        carried, named = 0, ()
+        if self.chain is not None:
+            from flywheel.teaching.explain import explain
 
-        return explain(self, given, mask, within)
+            carried, named = explain(self, given, mask, within)
+        if self.tables:
+            from flywheel.teaching.tables import diagnose_cells
+
+            named = tuple(sorted(named + diagnose_cells(
+                self, given, mask, None if self.chain is None else self.chain.g, within_cell)))
+        return carried, named
+
+    def error(self, j: int, given: float) -> tuple[float, str]:
+        """Answer j's error (:func:`rel_error`; a table's cell: teaching/tables.py
+        ``cell_error``)."""
+        if self.cells >> j & 1:
+            return cell_error(given, self.keys[j], self.floors[j])
+        return rel_error(given, self.keys[j])
+
+    @functools.cached_property
+    def index(self) -> dict[str, int]:
+        """Answer name → its position j."""
+        return {a: j for j, a in enumerate(self.names)}
 
     def verdicts(self, given: array) -> int:
         """The answers passed as a bit mask (bit j: answer j); ``given`` NaN = no answer."""
         mask = 0
+        if self.cells:
+            # a cell: |given − key| ≤ tolerance·max(|key|, floor) (teaching/tables.py); the
+            # floor of an answer that is no cell is 0: rel_error's test
+            for j, (g, k, tol, floor) in enumerate(zip(given, self.keys, self.tolerances,
+                                                       self.floors)):
+                if g == g:
+                    scale = max(abs(k), floor)
+                    err = abs(g - k) / scale if scale else abs(g)
+                    if err <= tol * (1 + SLACK):
+                        mask |= 1 << j
+            return mask
         for j, (g, k, tol) in enumerate(zip(given, self.keys, self.tolerances)):
             if g == g and rel_error(g, k)[0] <= tol * (1 + SLACK):
                 mask |= 1 << j
         return mask
+
+    @functools.cached_property
+    def units(self) -> tuple[tuple[str, int], ...]:
+        """What earns credit: (name, bits) of each answer that is no cell, then each table."""
+        out = tuple((a, 1 << j) for j, a in enumerate(self.names) if not self.cells >> j & 1)
+        return out + tuple((t.name, t.bits) for t in self.tables)
 
 
 @dataclass(frozen=True, slots=True)
@@ -332,22 +400,27 @@ class StudentGrade:
 
     @property
     def answers(self) -> tuple[AnswerGrade, ...]:
-        out = []
         named = dict(self.diagnoses)
-        for j, (a, k, tol, g) in enumerate(zip(self.marking.names, self.marking.keys,
-                                               self.marking.tolerances, self.given)):
-            if g != g:
-                out.append(AnswerGrade(a, None, k, None, "relative" if k else "absolute", tol,
-                                       False, "no answer"))
-                continue
-            err, kind = rel_error(g, k)
-            passed = bool(self.mask >> j & 1)
-            verdict = ("pass" if passed else "carried" if self.carried >> j & 1 else "fail")
-            out.append(AnswerGrade(a, g, k, err, kind, tol, passed, verdict, named.get(j)))
-        return tuple(out)
+        return tuple(self.grade_of(j, named) for j in range(len(self.marking.names)))
+
+    def grade_of(self, j: int, named: dict | None = None) -> AnswerGrade:
+        """The grade of answer j (``named``: the diagnoses as a dict, if at hand)."""
+        m = self.marking
+        a, k, tol, g = m.names[j], m.keys[j], m.tolerances[j], self.given[j]
+        if g != g:
+            return AnswerGrade(a, None, k, None, "relative" if k else "absolute", tol, False,
+                               "no answer")
+        err, kind = m.error(j, g)
+        passed = bool(self.mask >> j & 1)
+        verdict = ("pass" if passed else "carried" if self.carried >> j & 1 else "fail")
+        diagnosis = (dict(self.diagnoses) if named is None else named).get(j)
+        return AnswerGrade(a, g, k, err, kind, tol, passed, verdict, diagnosis)
 
     @property
     def passed(self) -> int:
+        """Answers right (a table counts as one, right when all its cells are)."""
+        if self.marking.tables:
+            return sum((self.mask & b) == b for _, b in self.marking.units)
         return self.mask.bit_count()
 
     @property
@@ -356,18 +429,34 @@ class StudentGrade:
 
     @property
     def total(self) -> int:
+        if self.marking.tables:
+            return len(self.marking.units)
         return len(self.marking.names)
 
     @property
     def score(self) -> float:
-        """(passed + share·carried forward)/total (``--carried-forward SHARE``, default 0)."""
+        """(passed + share·carried forward + each table's share of cells right not yet
+        counted)/total (``--carried-forward SHARE``, default 0): a table of 12 cells with 9
+        right earns 9/12 of one answer."""
         if not self.total:
             return 0.0
-        return (self.passed + self.marking.carried_share * self.carried_count) / self.total
+        part = 0.0
+        for t in self.marking.tables:
+            if (self.mask & t.bits) != t.bits:
+                part += t.right(self.mask) / len(t.indices)
+        return (self.passed + self.marking.carried_share * self.carried_count + part) / self.total
 
     @property
     def wrong(self) -> list[str]:
+        if self.marking.tables:
+            return [a for a, b in self.marking.units if (self.mask & b) != b]
         return [a for j, a in enumerate(self.marking.names) if not self.mask >> j & 1]
+
+    @property
+    def table_grades(self) -> tuple[tuple[str, int, int, tuple], ...]:
+        """Per table (name, cells right, cells, the cells off by column: ((column, rows), …))."""
+        return tuple((t.name, t.right(self.mask), len(t.indices), t.off(self.mask))
+                     for t in self.marking.tables)
 
     @property
     def nothing_given(self) -> bool:
@@ -392,12 +481,12 @@ class Report:
     def wrong_counts(self) -> dict[str, tuple[int, int]]:
         """{answer: (wrong, graded)} in the key's order."""
         out: dict[str, list[int]] = {}
-        for a in self.key.answers:
+        for a in self.key.units:
             out[a] = [0, 0]
         for s in self.students:
-            for j, a in enumerate(s.marking.names):
+            for a, b in s.marking.units:
                 c = out.setdefault(a, [0, 0])
-                c[0] += not s.mask >> j & 1
+                c[0] += (s.mask & b) != b
                 c[1] += 1
         return {k: (w, n) for k, (w, n) in out.items() if n}
 
@@ -656,9 +745,18 @@ def _graded(key: Key, name: str, rows, tolerance: float | None, limit: int | Non
                 from flywheel.teaching.chain import Chain
 
                 chain = Chain(key.givens[vid], tuple(answers))
+            extra = {}
+            if key.tables:
+                from flywheel.teaching.tables import table_marks
+
+                marks, floors, cells = table_marks(key.tables, tuple(answers),
+                                                   tuple(answers.values()))
+                extra = dict(tables=marks, floors=floors, cells=cells, table_phi={
+                    t.name: dict(zip(t.rows, t.phi_deg)) for t in key.tables.values()})
             marking = markings[vid] = Marking(
                 tuple(answers), tuple(answers.values()),
-                tuple(key.tolerance_of(a, tolerance) for a in answers), chain, carried_share)
+                tuple(key.tolerance_of(a, tolerance) for a in answers), chain, carried_share,
+                **extra)
         mask = marking.verdicts(values)
         carried, diagnoses = marking.explain(values, mask)
         graded.append(StudentGrade(student, vid, name, n, values, mask, marking, carried,
@@ -733,102 +831,6 @@ def grade(key: Key, paths, tolerance: float | None = None, progress=None,
                   tuple(problems), tuple(map(str, files)), carried_share)
 
 
-# -- the report as data -------------------------------------------------------------------------
-
-def report_dict(r: Report) -> dict:
-    """The report as a JSON-ready document (``flywheel grade --json``)."""
-    doc = _report_frame(r)
-    doc["students"] = [_student_dict(s) for s in r.students]
-    return doc
-
-
-def _student_dict(s: StudentGrade) -> dict:
-    return {
-        "student": s.student, "variant": s.variant, "file": s.file, "row": s.row,
-        "score": s.score, "passed": s.passed, "carried_forward": s.carried_count,
-        "total": s.total, "wrong": s.wrong,
-        "answers": [{"answer": a.answer, "given": a.given, "key": a.key, "error": a.error,
-                     "error_kind": a.error_kind, "tolerance": a.tolerance,
-                     "pass": a.passed, "verdict": a.verdict, "diagnosis": a.diagnosis}
-                    for a in s.answers],
-    }
-
-
-def _report_frame(r: Report) -> dict:
-    """The report's document with ``students`` empty (filled by the callers)."""
-    worst = r.most_often_wrong()
-    return {
-        "key": r.key.source,
-        "tolerance": r.tolerance,
-        "carried_forward": r.carried_share,
-        "tolerances": {a: r.key.tolerance_of(a, r.tolerance) for a in r.key.answers},
-        "files": list(r.files),
-        "students": [],
-        "summary": {
-            "graded": len(r.students),
-            "mean_score": r.mean_score,
-            "min_score": min((s.score for s in r.students), default=None),
-            "max_score": max((s.score for s in r.students), default=None),
-            "full_marks": sum(s.passed == s.total for s in r.students),
-            "wrong_by_answer": {a: {"wrong": w, "graded": n}
-                                for a, (w, n) in r.wrong_counts().items()},
-            "most_often_wrong": None if worst is None else
-            {"answers": worst[0], "wrong": worst[1]},
-            "score_distribution": {str(k): n for k, n in r.score_distribution().items()},
-            "handed_in_nothing": [s.student for s in r.handed_in_nothing],
-            "unassigned_variants": r.unassigned_variants(),
-        },
-        "problems": [{"file": p.file, "row": p.row, "message": p.message} for p in r.problems],
-    }
-
-
-def report_json(r: Report) -> Iterator[str]:
-    """The text of ``json.dumps(report_dict(r), indent=2, ensure_ascii=False)`` and a newline,
-    in pieces: one student's document at a time (a class of 200 000 never held whole).
-
-    json's indented text of a nested value is its own indented text with every line after the
-    first moved right by the indentation of its place, which this relies on."""
-    def dumps(value, depth: int) -> str:
-        return json.dumps(value, indent=2, ensure_ascii=False).replace("\n", "\n" + "  " * depth)
-
-    frame = _report_frame(r)
-    yield "{"
-    for i, (name, value) in enumerate(frame.items()):
-        yield ("," if i else "") + "\n  " + json.dumps(name, ensure_ascii=False) + ": "
-        if name != "students" or not r.students:
-            yield dumps(value, 1)
-            continue
-        yield "["
-        for j, s in enumerate(r.students):
-            yield ("," if j else "") + "\n    " + dumps(_student_dict(s), 2)
-        yield "\n  ]"
-    yield "\n}\n"
-
-
-#: rows of a CSV report formatted per piece of text (report_csv_pieces, gradebook pieces)
-CSV_ROWS_PER_PIECE = 2000
-
-
-def report_csv(r: Report) -> str:
-    """One line per student and answer: student, variant, file, row, answer, given, key,
-    error, error_kind, tolerance, pass (1/0), score."""
-    return "".join(report_csv_pieces(r))
-
-
-def report_csv_pieces(r: Report) -> Iterator[str]:
-    """The text of :func:`report_csv` in pieces of CSV_ROWS_PER_PIECE students."""
-    buf = io.StringIO()
-    w = csv.writer(buf, lineterminator="\n")
-    w.writerow(["student", "variant", "file", "row", "answer", "given", "key", "error",
-                "error_kind", "tolerance", "pass", "score"])
-    for i, s in enumerate(r.students, start=1):
-        for a in s.answers:
-            w.writerow([s.student, s.variant, s.file, s.row, a.answer,
-                        "" if a.given is None else repr(a.given), repr(a.key),
-                        "" if a.error is None else f"{a.error:.6g}", a.error_kind,
-                        repr(a.tolerance), int(a.passed), f"{s.score:.4f}"])
-        if i % CSV_ROWS_PER_PIECE == 0:
-            yield buf.getvalue()
-            buf.seek(0)
-            buf.truncate()
-    yield buf.getvalue()
+# the report as data (``--json``, ``--out``): teaching/report_data.py, re-exported here
+from flywheel.teaching.report_data import (  # noqa: E402,F401
+    CSV_ROWS_PER_PIECE, report_csv, report_csv_pieces, report_dict, report_json)

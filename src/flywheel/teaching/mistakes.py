@@ -10,13 +10,14 @@ Computation only: no typer, no rich.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Callable
 
 import numpy as np
 
 from flywheel.dynamics import energy
 from flywheel.teaching import chain as ch
+from flywheel.teaching import chain_task2 as t2
 from flywheel.units import DEG_PER_RAD, RAD_S_PER_RPM, RPM_PER_RAD_S, TWO_PI
 
 
@@ -29,6 +30,9 @@ class Mistake:
     does: str
     twists: dict[str, Callable[[ch.Givens, float], tuple[float, ...]]]
     tolerance_matter: bool = False
+    #: the mistake in a table's cell (teaching/tables.py): ``table.column`` ("analogues.vq":
+    #: every point's v_q) → (tables.CellContext) → candidate values
+    cells: dict[str, Callable] = field(default_factory=dict)
 
 
 def _local_extremes(g: ch.Givens, M: float) -> tuple[float, ...]:
@@ -65,11 +69,18 @@ CATALOGUE: tuple[Mistake, ...] = (
                 "J_required": lambda g, dT: (ch.required_inertia(g, dT, g.omega_mean *
                                                                  RPM_PER_RAD_S),),
                 "delta_T_max": lambda g, M: (ch.energy_swing(g, M, omega=g.omega_mean *
-                                                             RPM_PER_RAD_S),)}),
+                                                             RPM_PER_RAD_S),),
+                "task2:delta": lambda g, dT: (t2.fluctuation(g, dT, g.omega_mean *
+                                                             RPM_PER_RAD_S),)},
+            cells={"delta_T.T_II": lambda c: (c.key * RPM_PER_RAD_S ** 2,),
+                   "delta_T.dT_I": lambda c: (c.key - (c.row["T_II"] - c.first["T_II"])
+                                              * (RPM_PER_RAD_S ** 2 - 1),)}),
     Mistake("rad_s_for_rpm", "ω_m in rad/s converted again as if it were rev/min: ω_m·π/30 "
             "used for ω_m", {
                 "J_required": lambda g, dT: (ch.required_inertia(g, dT, g.omega_mean *
-                                                                 RAD_S_PER_RPM),)}),
+                                                                 RAD_S_PER_RPM),),
+                "task2:delta": lambda g, dT: (t2.fluctuation(g, dT, g.omega_mean *
+                                                             RAD_S_PER_RPM),)}),
     Mistake("rps_for_rad_s", "the speed in rev/s (n₁) used as rad/s: ω_m/2π for ω_m", {
         "J_required": lambda g, dT: (ch.required_inertia(g, dT, g.omega_mean / TWO_PI),)}),
     Mistake("half_delta", "δ/2 used for δ (the swing ±δ/2 taken for δ): J_I doubled", {
@@ -89,12 +100,18 @@ CATALOGUE: tuple[Mistake, ...] = (
     Mistake("sign_lost", "a sign lost in the cycle balance: the constant moment (and the "
             "cycle's work) with the wrong sign, or ΔT_I built with it", {
                 "M": lambda g, _: (-ch.cycle_moment(g),),
+                "task2:M": lambda g, _: (-t2.found_value(g),),
                 "cycle_work_resistance": lambda g, M: (-ch.work_scale(g) * M,),
-                "delta_T_max": lambda g, M: (ch.energy_swing(g, -M),)}),
+                "delta_T_max": lambda g, M: (ch.energy_swing(g, -M),)},
+            cells={"delta_T.A": lambda c: (c.key - 2 * ch.cycle_moment(c.givens) * c.phi,),
+                   "delta_T.dT_I": lambda c: (c.key - 2 * ch.cycle_moment(c.givens) * c.phi,)}),
     Mistake("degrees_for_radians", "the cycle's angle in degrees where radians belong: "
             "M = −A(Φ)/360°, A_C = M·Φ°", {
                 "M": lambda g, _: (energy.balancing_moment(g.A_known, g.phi * DEG_PER_RAD),),
-                "cycle_work_resistance": lambda g, M: (ch.work_scale(g) * DEG_PER_RAD * M,)}),
+                "cycle_work_resistance": lambda g, M: (ch.work_scale(g) * DEG_PER_RAD * M,)},
+            cells={"analogues.vq": lambda c: (c.key / DEG_PER_RAD,),
+                   "delta_T.A": lambda c: (c.key + ch.cycle_moment(c.givens) * c.phi
+                                           * (DEG_PER_RAD - 1),)}),
     Mistake("radius_for_diameter", "the flywheel's radius given for its diameter", {
         f"flywheel_{w}.{f}": (lambda g, J, w=w, f=f: (ch.shape(g, J, w, f) / 2,))
         for w, fs in (("disk", ("D",)), ("rim", ("D", "D_inner"))) for f in fs}),
@@ -118,7 +135,7 @@ def diagnose(chain: ch.Chain, answer: str, given: dict, tolerance: float,
     steps = chain.path(answer)
     for m in CATALOGUE:
         for step in steps:
-            twist = m.twists.get(step)
+            twist = m.twists.get(chain.twist_key(step))
             if twist is None:
                 continue
             for source in (given, {}):

@@ -84,6 +84,8 @@ class Sheet:
     moments: MomentGraphs | None = None
     no_drawing: str = ""
     names: dict[str, str] = field(default_factory=dict)
+    tables: tuple = ()           # teaching.tables.TableSpec: blank tables to fill in
+    default_tolerance: float = 0.01   # the template's: a table column's without its own
 
 
 # -- units from the schema -------------------------------------------------------------------------
@@ -285,7 +287,7 @@ def sheets_of(vs, progress=None) -> list[Sheet]:
         if t.kind == "run":
             given += default_rows(doc, v.filename, t.answers)
         out.append(Sheet(n, v.id, stem, t.kind, title, given, find, names=element_names(doc),
-                         **kw))
+                         tables=t.tables, default_tolerance=t.tolerance, **kw))
         if progress is not None:
             progress(n)
     return out

@@ -52,7 +52,7 @@ MAX_DUPLICATE_DRAWS = 2000
 MAX_COUNT = 9999
 DEFAULT_TOLERANCE = 0.01
 SPEC_KEYS = ("values", "min", "max", "step")
-RESERVED = ("answers", "tolerance", "tolerances")
+RESERVED = ("answers", "tolerance", "tolerances", "tables")
 
 
 # -- the [variants] table -----------------------------------------------------------------------
@@ -78,6 +78,23 @@ class Template:
     answers: tuple[str, ...]
     tolerance: float
     tolerances: dict[str, float]
+    tables: tuple = ()           # teaching.tables.TableSpec: answers that are tables
+
+    @property
+    def keyed(self) -> tuple[str, ...]:
+        """Every answer of the key: the answers, then each table's cells (row by row)."""
+        return self.answers + tuple(c for t in self.tables for c in t.cells)
+
+    def tolerance_of(self, answer: str) -> float:
+        """An answer's tolerance (a table's cell: its column's), else the default."""
+        if answer in self.tolerances:
+            return self.tolerances[answer]
+        for t in self.tables:
+            if answer.startswith(t.name + "."):
+                column = answer.rsplit(".", 1)[1]
+                tol = t.tolerances[t.columns.index(column)]
+                return self.tolerance if tol is None else tol
+        return self.tolerance
 
     @property
     def combinations(self) -> int:
@@ -214,7 +231,7 @@ def _choices(spec, where: str, current) -> tuple:
     return _grid(spec, where)
 
 
-def _answers(table: dict, where: str) -> tuple[tuple[str, ...], float, dict[str, float]]:
+def _answers(table: dict, where: str, tables=()) -> tuple[tuple[str, ...], float, dict[str, float]]:
     if "answers" not in table:
         raise CaseFileError(led(f"{where}.answers: ", Notice.of(
             "answers_missing", "missing (the result keys of the answer key, e.g. answers = "
@@ -244,10 +261,10 @@ def _answers(table: dict, where: str) -> tuple[tuple[str, ...], float, dict[str,
             "var_tolerances_table", "must be a table {{ answer = tolerance }} (got {got})",
             got=repr(tols))))
     for k, v in tols.items():
-        if k not in ans:
+        if k not in ans and k not in tables and k.split(".")[0] not in tables:
             raise CaseFileError(led(f"{where}.tolerances.{k}: ", Notice.of(
                 "not_an_answer", "not one of the answers (allowed: {allowed})",
-                allowed=", ".join(ans))))
+                allowed=", ".join((*ans, *tables)))))
         if not _is_number(v) or v <= 0:
             raise CaseFileError(led(f"{where}.tolerances.{k}: ", Notice.of(
                 "not_positive_number", "must be a positive number (got {got})", got=repr(v))))
@@ -290,8 +307,10 @@ def results_of(kind: str, doc: dict, source: str, n_points: int = RUN_POINTS) ->
 
 
 def solved(kind: str, doc: dict, source: str, n_points: int = RUN_POINTS):
-    """(results document, the chain's givens or None) of one case (:func:`results_of`;
-    teaching/chain.py: the givens of a run case whose flywheel is sized)."""
+    """(results document, the chain's givens or None, the solved results: ``dynamics``'
+    Results or task2's Task2Result) of one case (:func:`results_of`;
+    teaching/chain.py: the givens of a run case whose flywheel is sized; teaching/chain_task2.py:
+    those of a task2 case whose cycle balance finds a graph's value)."""
     case = _validate(kind, doc, source)
     if kind == "run":
         from flywheel.cases.run import field_of
@@ -300,15 +319,17 @@ def solved(kind: str, doc: dict, source: str, n_points: int = RUN_POINTS):
 
         try:
             res = analyze(case, n_points=n_points)
-            return res.to_document()["results"], givens_of(case, res)
+            return res.to_document()["results"], givens_of(case, res), res
         except FlywheelError as exc:      # name the field as `flywheel run` does ('dyads[0]: …')
             where = field_of(exc, case)
             if not where:
                 raise
             raise type(exc)(led(f"{where}: ", said(exc))) from None
     from flywheel.cases.task2 import solve_case
+    from flywheel.teaching.chain_task2 import task2_givens_of
 
-    return solve_case(case, source).to_document(), None
+    result = solve_case(case, source)
+    return result.to_document(), task2_givens_of(result), result
 
 
 def answer_value(results: dict, name: str):
@@ -393,7 +414,10 @@ def parse_template(data: dict, source: str = "<template>", n_points: int = RUN_P
     _check_lengths(table, source)
     doc = {k: v for k, v in data.items() if k != "variants"}
     kind = detect_kind(doc, source)
-    answers, tol, tols = _answers(table, f"{source}: variants")
+    from flywheel.teaching import tables as tb
+
+    names = tb.parse_names(table.get("tables", []), f"{source}: variants.tables", kind)
+    answers, tol, tols = _answers(table, f"{source}: variants", names)
     varied = []
     for path, spec in _flatten(table, doc):
         where = f"{source}: {_q(path)}"
@@ -416,13 +440,16 @@ def parse_template(data: dict, source: str = "<template>", n_points: int = RUN_P
                 raise CaseFileError(led(f"{source}: {_q(v.path)}: ", Notice.of(
                     "var_overlap", "overlaps {other}", other=_q(w.path))))
     try:
-        base = results_of(kind, doc, source, n_points)
+        base, _, solution = solved(kind, doc, source, n_points)
     except FlywheelError as exc:
         raise CaseFileError(Notice.of(
             "template_not_analysed", "{source}: the template itself cannot be analysed: {detail}",
             source=source, detail=said(exc))) from None
     pick_answers(base, answers, f"{source}: variants.answers")
-    return Template(source, Path(source).name, kind, doc, tuple(varied), answers, tol, tols)
+    specs = tb.specs_of(names, solution, tols, source) if names else ()
+    scalars = {k: v for k, v in tols.items() if k in answers}
+    return Template(source, Path(source).name, kind, doc, tuple(varied), answers, tol, scalars,
+                    specs)
 
 
 def load_template(path, n_points: int = RUN_POINTS) -> Template:
@@ -518,8 +545,13 @@ def generate(template: Template, count: int, seed: int, n_points: int = RUN_POIN
             text = header(number, count, template.name, seed, template.kind) + tomli_w.dumps(doc)
             try:
                 # solve the file as written, so the key is what a student's run gives
-                res, givens = solved(template.kind, tomllib.loads(text), filename, n_points)
+                res, givens, solution = solved(template.kind, tomllib.loads(text), filename,
+                                               n_points)
                 answers = pick_answers(res, template.answers, filename)
+                if template.tables:
+                    from flywheel.teaching.tables import cells_of
+
+                    answers.update(cells_of(template.tables, solution, filename))
             except FlywheelError as exc:
                 failed += 1
                 failed_total += 1
@@ -558,13 +590,16 @@ def answers_json(vs: VariantSet) -> str:
         "variants": {v.id: v.answers for v in vs.variants},
         "drawn": {v.id: v.drawn for v in vs.variants},
     }
+    if t.tables:           # the cells of each table (teaching/tables.py); none: as before
+        doc["tables"] = {s.name: s.to_document() for s in t.tables}
     text = json.dumps(doc, indent=2, ensure_ascii=False)
     if any(v.givens is not None for v in vs.variants):
         # the chain (teaching/chain.py): how each answer follows from the earlier ones, and
         # per variant what that needs; one line per variant (its curves unindented)
         from flywheel.teaching.chain import chain_table
 
-        steps = json.dumps(chain_table(t.answers), indent=2, ensure_ascii=False)
+        first = next(v.givens for v in vs.variants if v.givens is not None)
+        steps = json.dumps(chain_table(t.answers, first.steps()), indent=2, ensure_ascii=False)
         givens = ",\n".join(
             f"      {json.dumps(v.id)}: {json.dumps(v.givens.to_document(), ensure_ascii=False)}"
             for v in vs.variants if v.givens is not None)
@@ -586,9 +621,9 @@ def answers_csv(vs: VariantSet) -> str:
     t = vs.template
     buf = io.StringIO()
     w = csv.writer(buf, lineterminator="\n")
-    w.writerow(["variant", "file", *t.answers, *(v.path for v in t.varied)])
+    w.writerow(["variant", "file", *t.keyed, *(v.path for v in t.varied)])
     for v in vs.variants:
-        w.writerow([v.id, v.filename, *(_cell(v.answers[a]) for a in t.answers),
+        w.writerow([v.id, v.filename, *(_cell(v.answers[a]) for a in t.keyed),
                     *(_cell(v.drawn[p.path]) for p in t.varied)])
     return buf.getvalue()
 
@@ -599,9 +634,9 @@ def students_csv(vs: VariantSet) -> str:
     t = vs.template
     buf = io.StringIO()
     w = csv.writer(buf, lineterminator="\n")
-    w.writerow(["student", "variant", *t.answers])
+    w.writerow(["student", "variant", *t.keyed])
     for v in vs.variants:
-        w.writerow(["", v.id, *("" for _ in t.answers)])
+        w.writerow(["", v.id, *("" for _ in t.keyed)])
     return buf.getvalue()
 
 
