@@ -431,28 +431,6 @@ def test_hodograph_angle_labels_do_not_overlap(name, lang):
         assert min(counts) < 12            # crowded: some left out
 
 
-def test_label_points_leaves_out_a_label_with_no_room_but_keeps_the_first():
-    """figure.label_points on three points at the same place: the first (kept) is placed, the
-    other two find a free corner each, a fourth… until the eight places round it are used;
-    labels never overlap."""
-    from matplotlib.backends.backend_agg import FigureCanvasAgg
-
-    from flywheel.render import figure as fg
-
-    with fg.style():
-        fig, ax = fg.figure((4.0, 3.0), right=0.3)
-        ax.set_xlim(0, 1)
-        ax.set_ylim(0, 1)
-        n = 12
-        placed = fg.label_points(ax, np.full(n, 0.5), np.full(n, 0.5),
-                                 [f"{30 * k}" for k in range(n)], keep=(0,))
-        ren = FigureCanvasAgg(fig).get_renderer()
-        boxes = [t.get_window_extent(ren) for t in placed]
-        assert placed[0].get_text() == "0" and 1 < len(placed) < n
-        assert not any(a.overlaps(boxes[j]) for i, a in enumerate(boxes) for j in range(i))
-        fig.clear()
-
-
 def test_round_off_is_not_magnified_on_the_balancing_moment_plot():
     """The four-bar's loads do no net work: with the true motion M_y = M_D = 0 to 1e-15 N·m; the
     axis spans a tenth of the first group's couple, not the round-off."""

@@ -166,8 +166,15 @@ def test_analogues(results, made):
     fig = plots.figure_velocity_analogues(results)
     made(fig)
     top, bottom = fig.axes
-    assert len(top.lines) == 5                        # A, B, S2, C, S4
+    assert len(top.lines) == 6                        # A, B, S2, C, S4 and the zero line
     assert top.get_ylabel().endswith(" [m/rad]")
+    # the sliders B and C signed along their guides (below zero half the cycle), the others
+    # magnitudes
+    labels = [t.get_text() for t in top.get_legend().get_texts()]
+    signed = [ln for ln in top.lines[:5] if "slider" in ln.get_label()]
+    assert len(signed) == 2 and all(min(ln.get_ydata()) < 0 < max(ln.get_ydata())
+                                    for ln in signed), labels
+    assert all(min(ln.get_ydata()) >= 0 for ln in top.lines[:5] if ln not in signed)
     assert [t.get_text() for t in bottom.get_legend().get_texts()] == [
         r"$\omega_q$ link 2", r"$\omega_q$ link 4"]
     fig = plots.figure_acceleration_analogues(results)

@@ -11,7 +11,7 @@ topology and geometry of the solved positions; no physics, no matplotlib.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 
@@ -34,6 +34,9 @@ class Drawing:
     slider_travel : slider link → its joint's distance [m] along the guide from the dead centre
         farther from the crank pivot, at every grid node
     bounds : (x_min, y_min, x_max, y_max) [m] of every point over the cycle
+    slider_analogues : slider link → (v_q [m/rad], a_q [m/rad²]) of its joint along the guide,
+        signed: positive in the sense ``slider_travel`` grows (away from the outer dead
+        centre), so v_q = dS/dφ and a_q = d²S/dφ² as the course differentiates S(φ)
     """
 
     links: tuple[tuple[str, tuple[str, ...]], ...]
@@ -46,6 +49,7 @@ class Drawing:
     moving_blocks: tuple[tuple[str, str], ...]
     slider_travel: dict[str, np.ndarray]
     bounds: tuple[float, float, float, float]
+    slider_analogues: dict[str, tuple[np.ndarray, np.ndarray]] = field(default_factory=dict)
 
     @property
     def span(self) -> float:
@@ -103,15 +107,33 @@ def _link_members(kin, links) -> tuple[tuple[str, tuple[str, ...]], ...]:
     return tuple(out)
 
 
-def _slider_travel(kin, joint: str, angle: float, fixed) -> np.ndarray:
-    """Distance [m] along the guide from the dead centre farther from the crank pivot."""
+def _travel_sense(kin, joint: str, angle: float, fixed) -> tuple[np.ndarray, float]:
+    """The unit vector along the guide in the sense the travel from the dead centre farther
+    from the crank pivot grows, and that dead centre's coordinate along the guide [m]."""
     pm = kin.points[joint]
     u = np.array([math.cos(angle), math.sin(angle)])
     x = pm.r @ u
     pivot = kin.points[fixed[0]].r[0] if fixed else np.zeros(2)
     i_hi, i_lo = int(np.argmax(x)), int(np.argmin(x))
     far = i_hi if (np.linalg.norm(pm.r[i_hi] - pivot) >= np.linalg.norm(pm.r[i_lo] - pivot)) else i_lo
-    return np.abs(x - x[far])
+    return (-u if far == i_hi else u), float(x[far])
+
+
+def _slider_travel(kin, joint: str, angle: float, fixed) -> np.ndarray:
+    """Distance [m] along the guide from the dead centre farther from the crank pivot."""
+    u = np.array([math.cos(angle), math.sin(angle)])
+    _, x_far = _travel_sense(kin, joint, angle, fixed)
+    return np.abs(kin.points[joint].r @ u - x_far)
+
+
+def _slider_analogues(kin, joint: str, angle: float, fixed) -> tuple[np.ndarray, np.ndarray]:
+    """(v_q, a_q) of the slider's joint projected on its guide's sense of growing travel:
+    v_q = dS/dφ [m/rad], a_q = d²S/dφ² [m/rad²] (S: :func:`_slider_travel`; the projection of
+    the analogue vectors on the guide, Артоболевский, ТММ, гл. 3: a slider moves along its
+    guide, so the projection is the whole analogue with its sign)."""
+    e, _ = _travel_sense(kin, joint, angle, fixed)
+    pm = kin.points[joint]
+    return pm.v_q @ e, pm.a_q @ e
 
 
 def describe(mech, kin) -> Drawing:
@@ -137,4 +159,6 @@ def describe(mech, kin) -> Drawing:
         moving_blocks=blocks,
         slider_travel={link: _slider_travel(kin, joint, angle, fixed)
                        for link, joint, angle in guided},
-        bounds=(*(float(v) for v in allr.min(axis=0)), *(float(v) for v in allr.max(axis=0))))
+        bounds=(*(float(v) for v in allr.min(axis=0)), *(float(v) for v in allr.max(axis=0))),
+        slider_analogues={link: _slider_analogues(kin, joint, angle, fixed)
+                          for link, joint, angle in guided})

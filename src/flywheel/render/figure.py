@@ -2,7 +2,7 @@
 plots_forces.py, plots_engine.py, animate.py; plots_extra.py's figures are drawn inside
 :func:`style`): the fixed style, pyplot-free figures with fixed margins, the legends below the
 axes (figures as wide as A4's text, :data:`A4_W`: no width lost to a legend), the φ axis,
-the titles and :func:`label_points` (points' labels none over another: the hodographs' angles).
+the titles (labels beside points and vectors: render/labels.py, the one placer).
 
 The figures are plain :class:`matplotlib.figure.Figure` objects rendered by the Agg canvas:
 they never go through pyplot, so they need no display, register no global state (nothing to
@@ -334,63 +334,3 @@ def save(fig, path, fmt: str = "png", dpi: int = DPI) -> None:
         kw = stable_metadata(fmt)
     with matplotlib.rc_context({"svg.hashsalt": SVG_SALT}):
         fig.savefig(path, format=fmt, dpi=dpi, **kw)
-
-
-# a point's label: up right of it first, then the other corners and sides [pt, ha, va]
-_AROUND = ((3.0, 3.0, "left", "bottom"), (3.0, -3.0, "left", "top"),
-           (-3.0, 3.0, "right", "bottom"), (-3.0, -3.0, "right", "top"),
-           (5.0, 0.0, "left", "center"), (-5.0, 0.0, "right", "center"),
-           (0.0, 5.0, "center", "bottom"), (0.0, -5.0, "center", "top"))
-
-
-def label_points(ax, x, y, texts, *, keep=(0,), lines=(), fontsize: float = 7.0,
-                 pad: float = 1.0) -> list:
-    """Label the points (``x``, ``y``) of ``ax`` (data coordinates) with ``texts`` so that no
-    two labels overlap on the page: each at the first corner or side of its point (up right
-    first) whose box meets no label placed before, and the fewest of the points and ``lines``
-    (arrays of (x, y) rows, data coordinates: the curves drawn); a label that meets one placed
-    before at every place is left out, except those of ``keep`` (indices), placed first.
-    Call once the figure has its final size and the axes their limits (the boxes are taken in
-    pixels); returns the Texts placed."""
-    from matplotlib.backends.backend_agg import FigureCanvasAgg
-
-    fig = ax.figure
-    renderer = FigureCanvasAgg(fig).get_renderer()
-    ax.get_xlim()                       # the view limits autoscaled, then fitted to the aspect
-    ax.apply_aspect()
-    to_px = ax.transData.transform
-    pts = to_px(np.column_stack([np.asarray(x, float), np.asarray(y, float)]))
-    cloud = np.concatenate([to_px(np.asarray(c, float)) for c in lines] + [pts]) if len(pts) \
-        else np.zeros((0, 2))
-    frame = ax.get_window_extent(renderer)
-    px = fig.dpi / 72.0                 # pixels per point
-    placed, boxes = [], []
-    order = [k for k in keep if 0 <= k < len(texts)] + \
-        [k for k in range(len(texts)) if k not in keep]
-    for k in order:
-        probe = fig.text(0.0, 0.0, texts[k], fontsize=fontsize)   # the extent drawn [px]
-        bb = probe.get_window_extent(renderer)
-        probe.remove()
-        w, h = bb.width, bb.height
-        best = None
-        for j, (ox, oy, ha, va) in enumerate(_AROUND):
-            x0 = pts[k, 0] + ox * px - {"left": 0.0, "center": w / 2, "right": w}[ha]
-            y0 = pts[k, 1] + oy * px - {"bottom": 0.0, "center": h / 2, "top": h}[va]
-            b = (x0 - pad * px, y0 - pad * px, x0 + w + pad * px, y0 + h + pad * px)
-            hits = sum(b[0] < q[2] and q[0] < b[2] and b[1] < q[3] and q[1] < b[3]
-                       for q in boxes)
-            inside = (cloud[:, 0] > b[0]) & (cloud[:, 0] < b[2]) \
-                & (cloud[:, 1] > b[1]) & (cloud[:, 1] < b[3])
-            out = b[0] < frame.x0 or b[2] > frame.x1 or b[1] < frame.y0 or b[3] > frame.y1
-            cost = (1000.0 * hits + float(np.count_nonzero(inside)) + 20.0 * out
-                    + 0.5 * (j > 0) + 0.01 * j)
-            if best is None or cost < best[0]:
-                best = (cost, hits, ox, oy, ha, va, b)
-        cost, hits, ox, oy, ha, va, b = best
-        if hits and k not in keep:
-            continue                    # no free place: the point stays unlabelled
-        boxes.append(b)
-        placed.append(ax.annotate(texts[k], (float(x[k]), float(y[k])), xytext=(ox, oy),
-                                  textcoords="offset points", ha=ha, va=va,
-                                  fontsize=fontsize))
-    return placed

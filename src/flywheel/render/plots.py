@@ -24,6 +24,8 @@ from flywheel.dynamics.loads import LoadKey
 from flywheel.render import figure as fg
 from flywheel.render import nomenclature as nm
 from flywheel.render.catalogue import words
+from flywheel.render.plots_scheme import (  # noqa: F401  (public here: animate, sheets)
+    draw_scheme, draw_scheme_at, draw_scheme_fixed, scheme_names)
 from flywheel.units import PA_PER_MPA
 
 _SCHEME_LEGEND_COLS = 4     # columns of the scheme's legend (below the panels)
@@ -38,6 +40,7 @@ _TEXT = words("plots", {
     "velocity": "velocity analogues",
     "acceleration": "acceleration analogues",
     "link": "link {n}",
+    "slider": "(slider {s}, along its guide)",
     "J_mean": "mean {J} = {v:.5g} {u}",
     "indicator": "indicator diagram of cylinder {c}",
     "towards": "piston moving towards the head",
@@ -121,12 +124,24 @@ def _analogue_figure(results, lang, which: str):
     def build():
         fig, (ax1, ax2) = fg.figure(fg.TALL, 2, 1, sharex=True, hspace=0.12)
         deg = _phi_deg(results)
+        # a slider on a fixed guide: its analogue along the guide, signed (+ as its travel S
+        # from the outer dead centre grows: dS/dφ, d²S/dφ²); any other point: the magnitude
+        sliders = {joint: link for link, joint, _ in results.drawing.guided_sliders}
+        sym = "v" if which == "velocity" else "a"
         for name in results.drawing.moving_points:
             pm = results.kinematics.points[name]
+            if name in sliders:
+                v_q, a_q = results.drawing.slider_analogues[sliders[name]]
+                ax1.plot(deg, v_q if which == "velocity" else a_q,
+                         label=f"{_sub(sym, 'q' + name)} {_t(lang, 'slider', s=sliders[name])}")
+                continue
             vec = pm.v_q if which == "velocity" else pm.a_q
-            ax1.plot(deg, np.hypot(vec[:, 0], vec[:, 1]),
-                     label=_sub("v" if which == "velocity" else "a", name, norm=True))
-        ax1.set_ylabel(nm.axis("vq_{point}" if which == "velocity" else "aq_{point}", lang))
+            ax1.plot(deg, np.hypot(vec[:, 0], vec[:, 1]), label=_sub(sym, name, norm=True))
+        if sliders:
+            ax1.axhline(0.0, color="0.3", linewidth=0.6)
+            ax1.set_ylabel(nm.axis("vq_signed" if which == "velocity" else "aq_signed", lang))
+        else:
+            ax1.set_ylabel(nm.axis("vq_{point}" if which == "velocity" else "aq_{point}", lang))
         link_key = "omega_q_{link}" if which == "velocity" else "eps_q_{link}"
         for name in results.drawing.turning_links:
             lm = results.kinematics.links[name]
@@ -142,12 +157,14 @@ def _analogue_figure(results, lang, which: str):
 
 
 def figure_velocity_analogues(results, lang: str = "en"):
-    """|v_q| of the moving points [m/rad]; ω_q of the turning links [–]."""
+    """|v_q| of the moving points [m/rad], a slider's v_q along its guide signed (+ away from
+    its outer dead centre: dS/dφ); ω_q of the turning links [–]."""
     return _analogue_figure(results, lang, "velocity")
 
 
 def figure_acceleration_analogues(results, lang: str = "en"):
-    """|a_q| of the moving points [m/rad²]; ε_q of the turning links [1/rad]."""
+    """|a_q| of the moving points [m/rad²], a slider's a_q along its guide signed (d²S/dφ²);
+    ε_q of the turning links [1/rad]."""
     return _analogue_figure(results, lang, "acceleration")
 
 
@@ -352,127 +369,7 @@ def figure_epsilon(results, lang: str = "en"):
     return fg.drawn(build)
 
 
-def draw_scheme(ax, results, i: int, size: float, lang: str = "en") -> None:
-    """The kinematic scheme of ``results`` (a linkage case's run results) at grid node ``i`` on
-    the matplotlib Axes ``ax``: what does not move (trajectories, guides, fixed pivots), then
-    what does (links, joints, sliders, names); equal axes labelled x, y [m] in ``lang``.
-    ``size`` [m] scales the symbols (the scheme uses 0.035 of ``results.drawing.span``). Reads
-    only ``results.kinematics`` and ``results.drawing`` (linkage/drawing.py); a public entry
-    point for other figures that draw the mechanism (the velocity and acceleration plans)."""
-    draw_scheme_fixed(ax, results, size)
-    draw_scheme_at(ax, results, i, size)
-    ax.set_aspect("equal", adjustable="datalim")
-    ax.set_xlabel(nm.axis("x", lang))
-    ax.set_ylabel(nm.axis("y", lang))
-
-
-def draw_scheme_fixed(ax, results, size: float) -> None:
-    """The parts of the scheme that do not move: the trajectories of the moving points, the
-    guides with their hatching, the fixed pivots on their hatched bases."""
-    from matplotlib.patches import Polygon
-
-    P = results.kinematics.points
-    moving, fixed = results.drawing.moving_points, results.drawing.fixed_points
-    # trajectories
-    for k, name in enumerate(moving):
-        r = P[name].r
-        ax.plot(r[:, 0], r[:, 1], color=f"C{k % 10}", linewidth=0.8, alpha=0.8, zorder=1)
-    # guides with hatching on one side, sliders as blocks
-    for link, joint, angle in results.drawing.guided_sliders:
-        r = P[joint].r
-        u = np.array([math.cos(angle), math.sin(angle)])
-        nrm = np.array([-u[1], u[0]])
-        x = r @ u
-        foot = r[0] - x[0] * u
-        a, b = x.min() - 1.2 * size, x.max() + 1.2 * size
-        ends = np.array([foot + a * u, foot + b * u]) - 0.5 * size * nrm
-        ax.plot(ends[:, 0], ends[:, 1], color="k", linewidth=1.0, zorder=2)
-        ends2 = ends + size * nrm
-        ax.plot(ends2[:, 0], ends2[:, 1], color="k", linewidth=1.0, zorder=2)
-        for t in np.linspace(a, b, max(int((b - a) / (0.5 * size)), 2)):
-            for side, e in ((-1, ends[0]), (1, ends2[0])):
-                p0 = e + (t - a) * u
-                p1 = p0 + side * 0.35 * size * (nrm + u)
-                ax.plot([p0[0], p1[0]], [p0[1], p1[1]], color="k", linewidth=0.5, zorder=2)
-    # fixed pivots: a triangle on a hatched base
-    for name in fixed:
-        c = P[name].r[0]
-        tri = Polygon([c, c + [-0.6 * size, -1.1 * size], c + [0.6 * size, -1.1 * size]],
-                      closed=True, facecolor="white", edgecolor="k", linewidth=1.0, zorder=2.5)
-        ax.add_patch(tri)
-        base_y = c[1] - 1.1 * size
-        ax.plot([c[0] - size, c[0] + size], [base_y, base_y], color="k", linewidth=1.0, zorder=2.5)
-        for t in np.linspace(-size, size, 5):
-            ax.plot([c[0] + t, c[0] + t - 0.35 * size], [base_y, base_y - 0.35 * size],
-                    color="k", linewidth=0.5, zorder=2.5)
-
-
-def draw_scheme_at(ax, results, i: int, size: float) -> None:
-    """The parts of the scheme that move, at grid node i: sliders, links, joints, names."""
-    from matplotlib.patches import Polygon, Rectangle
-    from matplotlib.transforms import Affine2D
-
-    P = results.kinematics.points
-    moving, fixed = results.drawing.moving_points, results.drawing.fixed_points
-    centre = np.mean([P[n].r[i] for n in moving + fixed], axis=0)
-    joints = results.drawing.joints
-    for link, joint, angle in results.drawing.guided_sliders:
-        nrm = np.array([-math.sin(angle), math.cos(angle)])
-        c = P[joint].r[i]
-        block = Rectangle((-0.9 * size, -0.45 * size), 1.8 * size, 0.9 * size, facecolor="0.85",
-                          edgecolor="k", linewidth=1.2, zorder=4)
-        block.set_transform(Affine2D().rotate(angle).translate(*c) + ax.transData)
-        ax.add_patch(block)
-        ax.text(*(c - 1.9 * size * nrm), link, ha="center", va="center", fontsize=8,
-                style="italic", color="0.2", zorder=7)
-    for link, pivot in results.drawing.moving_blocks:
-        c = P[pivot].r[i]
-        block = Rectangle((-0.9 * size, -0.45 * size), 1.8 * size, 0.9 * size, facecolor="0.85",
-                          edgecolor="k", linewidth=1.2, zorder=4)
-        block.set_transform(Affine2D().rotate(float(results.kinematics.links[link].theta[i]))
-                            .translate(*c) + ax.transData)
-        ax.add_patch(block)
-        ax.annotate(link, c, xytext=(0, -14), textcoords="offset points", ha="center",
-                    fontsize=8, style="italic", color="0.2", zorder=7)
-    # links: a bar through their joints, or a plate if the joints are not in line
-    for link, pts in results.drawing.members:
-        xy = np.array([P[p].r[i] for p in pts])
-        d = xy - xy.mean(axis=0)
-        _, sv, vt = np.linalg.svd(d, full_matrices=False)
-        if len(pts) <= 2 or sv[-1] <= 1e-9 * max(sv[0], 1e-300):
-            t = d @ vt[0]
-            xy = xy[[int(np.argmin(t)), int(np.argmax(t))]]
-            ax.plot(xy[:, 0], xy[:, 1], color="k", linewidth=2.5, solid_capstyle="round", zorder=3)
-        else:
-            order = np.argsort(np.arctan2(d[:, 1], d[:, 0]), kind="stable")
-            ax.add_patch(Polygon(xy[order], closed=True, facecolor="0.9", edgecolor="k",
-                                 linewidth=2.0, zorder=3))
-        d = xy[-1] - xy[0]
-        mid = xy[0] + 0.62 * d if len(xy) == 2 else xy.mean(axis=0)   # off the centroid
-        n = np.array([-d[1], d[0]]) / (np.hypot(*d) or 1.0)
-        if n @ (mid - centre) < 0:
-            n = -n
-        ax.annotate(link, mid, xytext=(7 * n[0], 7 * n[1]), textcoords="offset points",
-                    ha="center", va="center", fontsize=8, style="italic", color="0.2", zorder=7)
-    # joints and other points
-    for name in moving + fixed:
-        c = P[name].r[i]
-        if name in joints or name in fixed:
-            ax.plot(*c, "o", markersize=6.5, markerfacecolor="white", markeredgecolor="k",
-                    markeredgewidth=1.3, zorder=5)
-        else:
-            ax.plot(*c, "o", markersize=4.5, color="k", zorder=5)
-    # labels: pushed away from the middle of the drawing
-    for name in moving + fixed:
-        c = P[name].r[i]
-        d = c - centre
-        norm = np.hypot(*d)
-        d = d / norm if norm > 1e-12 else np.array([-0.7, 0.7])
-        if name in fixed:               # beside its support, not on it
-            d = np.array([-0.95, 0.3])
-        ax.annotate(name, c, xytext=(12 * d[0] - 6 * d[1], 12 * d[1] + 6 * d[0]),
-                    textcoords="offset points", ha="center", va="center", fontsize=10,
-                    fontweight="bold", zorder=8)
+_SCHEME = (draw_scheme_fixed, draw_scheme_at, scheme_names)   # handed to plots_plans
 
 
 def _scheme_legend_handles(results, lang: str):
@@ -601,11 +498,11 @@ def all_figures(results, lang: str = "en"):
     if results.analysis == "kinematics":     # the kinematic plans only: no force analysis
         return figures(results, lang) + [
             (n, f) for n, f in plots_plans.figures(results, lang,
-                                                   scheme=(draw_scheme_fixed, draw_scheme_at))
+                                                   scheme=_SCHEME)
             if n.startswith(("plan_positions", "plan_velocity", "plan_acceleration"))]
     out = figures(results, lang) + plots_forces.figures(results, lang)   # force analysis
     out += plots_plans.figures(results, lang,      # the plans, at the report angles only
-                               scheme=(draw_scheme_fixed, draw_scheme_at))
+                               scheme=_SCHEME)
     out += [("energy_mass.png", lambda: px.figure_energy_mass(results, lang)),
             ("time_law.png", lambda: px.figure_time_law(results, lang))]
     if results.time_domain is not None:

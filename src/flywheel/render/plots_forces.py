@@ -4,7 +4,7 @@ the crank-pin load, the main-bearing load and the shaking force.
 
 Drawn with render/figure.py's toolkit, as render/plots.py draws — pyplot-free figures with
 fixed margins in inches, A4's text width, the legend below the axes or in a free cell, the
-hodographs' angle labels none over another (figure.label_points) — and saved by plots.py's
+hodographs' angle labels none over another (render/labels.py) — and saved by plots.py's
 pool of workers in the fixed style (:func:`figures` is registered in ``plots.all_figures``;
 this module does not import render/plots.py, which imports it). Quantities are named by
 :mod:`flywheel.render.nomenclature`, and so are the titles. Nothing is computed here but
@@ -118,11 +118,23 @@ def _marks(results) -> list[int]:
 
 
 def _angle_labels(ax, x: np.ndarray, y: np.ndarray, results) -> list:
-    """The marks' angles [deg] beside them, none over another (figure.label_points: a label
-    with no free place is left out; 0° always kept). Called once the figure has its size."""
+    """The marks' angles [deg] beside them by the one label placer (render/labels.py): none
+    over another or over a mark, off the curve where it can; a label with no free place is
+    left out, 0° always kept. Called once the figure has its size."""
+    from flywheel.render.labels import AxesLabels, around
+
     marks = _marks(results)
-    return fg.label_points(ax, x[marks], y[marks], [f"{a}" for a in range(0, 360, 30)],
-                           keep=(0,), lines=[np.column_stack([x, y])])
+    labels = AxesLabels(ax)
+    labels.curve(np.column_stack([x, y]))
+    labels.markers(np.column_stack([x[marks], y[marks]]), 2.5)
+    labels.markers([(0.0, 0.0)], 4.5)                # the origin's cross
+    placed = []
+    for k, a in enumerate(range(0, 360, 30)):
+        t = labels.point((float(x[marks[k]]), float(y[marks[k]])), f"{a}",
+                         places=around(3.0), optional=k > 0, fontsize=7.0)
+        if t is not None:
+            placed.append(t)
+    return placed
 
 
 def figure_hodographs(results, lang: str = "en"):

@@ -23,6 +23,7 @@ import numpy as np
 from flywheel.render import nomenclature as nm
 from flywheel.render.catalogue import words
 from flywheel.render.figure import A4_W, DPI
+from flywheel.render.labels import AxesLabels, around
 from flywheel.render.numbers import fmt as _number
 
 _TEXT = words("plots_plans", {
@@ -96,12 +97,12 @@ def _figure(size, nrows=1, ncols=1, *, left=0.7, right=0.3, bottom=0.6, top=0.75
 def _scheme(ax, results, i: int, size: float, scheme) -> None:
     """The one call into render/plots.py's scheme drawing: what does not move (trajectories —
     the crank pin's circle, the sliders' travel —, guides, pivots), then the mechanism at grid
-    node i with its names. ``scheme``: plots.py's (draw_fixed(ax, results, size),
-    draw_at(ax, results, i, size)), handed in by ``plots.all_figures`` (plots.py imports this
+    node i (named by the third, ``names(labels, results, i, size)``, once the figure is all
+    drawn). ``scheme``: plots.py's (draw_fixed, draw_at, names), handed in by ``plots.all_figures`` (plots.py imports this
     module, so this one does not import it)."""
-    draw_fixed, draw_at = scheme
+    draw_fixed, draw_at, _ = scheme
     draw_fixed(ax, results, size)
-    draw_at(ax, results, i, size)
+    draw_at(ax, results, i, size, names=False)   # named once everything is drawn
 
 
 # -- labels ---------------------------------------------------------------------------------------
@@ -213,109 +214,6 @@ def _set_frame(ax, lo, hi, lang: str, xlabel: bool = True) -> None:
         ax.set_xlabel(nm.with_unit(nm.name("plan_length", lang), nm.unit_of("plan_length", lang),
                                    lang))
     ax.grid(True, alpha=0.3)
-
-
-class _Labels:
-    """Places a frame's labels beside its vectors: each along the vector's normal, off every
-    line and every label placed before (a greedy search over a few candidate places, in mm
-    of the plan; ``ppm``: points of the page per mm of the plan)."""
-
-    def __init__(self, ax, ppm: float, segments: list[tuple[np.ndarray, np.ndarray]],
-                 frame=None):
-        self.ax, self.ppm, self.frame = ax, ppm, frame
-        self.boxes: list[tuple[float, float, float, float]] = []
-        # the lines as points every 2 pt of the page
-        cloud = [a + np.linspace(0.0, 1.0, max(2, int(np.hypot(*(b - a)) * ppm / 2) + 1))[:, None]
-                 * (b - a) for a, b in segments]
-        self.cloud = np.concatenate(cloud) if cloud else np.zeros((0, 2))
-
-    def _box(self, x, y, w, h, ha, va):
-        x0 = x - {"left": 0.0, "center": w / 2, "right": w}[ha]
-        y0 = y - {"bottom": 0.0, "center": h / 2, "top": h}[va]
-        return (x0, y0, x0 + w, y0 + h)
-
-    def _cost(self, b) -> float:
-        x0, y0, x1, y1 = b
-        c = 0.0
-        if self.frame is not None:          # out of the axes: over the tick labels, and the
-            lo, hi = self.frame             # farther out the worse (off the page at last)
-            out = max(lo[0] - x0, lo[1] - y0, x1 - hi[0], y1 - hi[1]) * self.ppm   # [pt]
-            if out > 0:             # past 8 pt: over the next panel's tick labels
-                c += 150.0 + 5.0 * out + (2000.0 if out > 8.0 else 0.0)
-        for q in self.boxes:
-            dx = min(x1, q[2]) - max(x0, q[0])
-            dy = min(y1, q[3]) - max(y0, q[1])
-            if dx > 0 and dy > 0:
-                c += 300.0 + dx * dy
-        if len(self.cloud):
-            p = self.cloud
-            c += float(np.count_nonzero((p[:, 0] > x0) & (p[:, 0] < x1)
-                                        & (p[:, 1] > y0) & (p[:, 1] < y1)))
-        return c
-
-    # a point's letters: up right of it first, then the other corners and sides [pt, ha, va]
-    _AROUND = ((4.0, 4.0, "left", "bottom"), (-4.0, 4.0, "right", "bottom"),
-               (4.0, -4.0, "left", "top"), (-4.0, -4.0, "right", "top"),
-               (6.0, 0.0, "left", "center"), (-6.0, 0.0, "right", "center"),
-               (0.0, 6.0, "center", "bottom"), (0.0, -6.0, "center", "top"))
-
-    def point(self, xy, text: str, fontsize: float = 10.0, first=(4.0, 4.0)) -> None:
-        """``text`` (bold) beside the point ``xy`` [mm]: at ``first`` [pt] up right of it
-        unless that place sits on a line or a label placed before, else at the corner or side
-        that sits on the fewest (the same search as :meth:`along`, around the point)."""
-        w = (_CHAR_W * len(text) + 0.3) * fontsize / self.ppm      # + 0.3 em: a margin
-        h = 1.25 * fontsize / self.ppm
-        cands = ((first[0], first[1], "left", "bottom"),) + self._AROUND[1:]
-        best = None
-        for k, (ox, oy, ha, va) in enumerate(cands):
-            b = self._box(xy[0] + ox / self.ppm, xy[1] + oy / self.ppm, w, h, ha, va)
-            c = self._cost(b) + (0.0 if k == 0 else 0.5 + 0.01 * k)
-            if best is None or c < best[0] - 1e-12:
-                best = (c, ox, oy, ha, va, b)
-            if k == 0 and c < 0.2:
-                break
-        _, ox, oy, ha, va, b = best
-        self.boxes.append(b)
-        self.ax.annotate(text, xy, xytext=(ox, oy), textcoords="offset points", ha=ha, va=va,
-                         fontsize=fontsize, fontweight="bold", zorder=7)
-
-    def along(self, tail, head, text: str, colour, fontsize: float = 7.0) -> None:
-        """``text`` beside the vector tail → head [mm]."""
-        d = np.asarray(head, float) - np.asarray(tail, float)
-        L = float(np.hypot(*d))
-        n = np.array([-d[1], d[0]]) / L if L > 1e-12 else np.array([0.0, 1.0])
-        w = (_CHAR_W * len(text) + 0.3) * fontsize / self.ppm      # + 0.3 em: a margin
-        h = 1.25 * fontsize / self.ppm
-        best = None
-        for t in (0.5, 0.35, 0.65, 0.2, 0.8):
-            for side in (1.0, -1.0):
-                for dist in (2.5, 8.0, 16.0, 26.0, 40.0):
-                    m = side * n
-                    ha = "left" if m[0] > 0.35 else "right" if m[0] < -0.35 else "center"
-                    va = "bottom" if m[1] > 0.35 else "top" if m[1] < -0.35 else "center"
-                    xy = np.asarray(tail, float) + t * d + m * dist / self.ppm
-                    b = self._box(xy[0], xy[1], w, h, ha, va)
-                    c = self._cost(b) + 0.01 * dist + 0.05 * abs(t - 0.5)
-                    if best is None or c < best[0] - 1e-12:
-                        best = (c, xy, ha, va, b)
-                if best[0] < 0.2:
-                    break
-            if best[0] < 0.2:
-                break
-        if best[0] >= 300.0:        # on a label wherever beside the vector: farther round it
-            mid = np.asarray(tail, float) + 0.5 * d
-            for dist in (30.0, 45.0, 60.0):
-                for k in range(16):
-                    m = np.array([math.cos(k * math.pi / 8), math.sin(k * math.pi / 8)])
-                    xy = mid + m * dist / self.ppm
-                    b = self._box(xy[0], xy[1], w, h, "center", "center")
-                    c = self._cost(b) + 0.01 * dist
-                    if c < best[0] - 1e-12:
-                        best = (c, xy, "center", "center", b)
-        _, xy, ha, va, b = best
-        self.boxes.append(b)
-        self.ax.text(float(xy[0]), float(xy[1]), text, ha=ha, va=va, fontsize=fontsize,
-                     color=colour, zorder=6)
 
 
 _COL_GAP = 0.25             # between two columns of a table [in]
@@ -453,9 +351,10 @@ def _kinematic_plan(results, ps, which: str, lang: str):
     x_ax = left + (W - left - right - aw) / 2
     y_ax = H - top - ah
     ax = _plan_axes(fig, W, H, x_ax, y_ax, aw, ah)
-    ppm = aw * _PT / float(hi[0] - lo[0])
     segs = [(t, h) for _, _, tails, heads in groups for t, h in zip(tails, heads)]
-    labels = _Labels(ax, ppm, segs, (lo, hi))
+    _set_frame(ax, lo, hi, lang)
+    labels = AxesLabels(ax)
+    labels.segments(segs)
     for kind, vs, tails, heads in groups:
         _arrows(ax, tails, heads, _COLOURS[kind], 1.8 if kind == "absolute" else 1.2,
                 "-" if kind in ("absolute", "tangential") else "--" if kind == "relative" else "-")
@@ -465,20 +364,21 @@ def _kinematic_plan(results, ps, which: str, lang: str):
         key_xy = (round(xy[0] / mu, 3), round(xy[1] / mu, 3))
         seen.setdefault(key_xy, []).append(_image(plan.image_labels[point]))
     pole = "π" if which == "acceleration" else "p"
+    labels.markers(list(seen), 2.6)
     for xy, labs in seen.items():
         if xy == (0.0, 0.0) or (abs(xy[0]) < 1e-9 and abs(xy[1]) < 1e-9):
             labs = [pole] + labs
         text = ", ".join(labs)
         ax.plot(*xy, "o", markersize=3.2, color="k", zorder=5)
-        labels.point(xy, text, 10.0)
+        labels.point(xy, text, 4.0, fontsize=10.0, fontweight="bold", zorder=7)
     if which == "acceleration":
         for kind, vs, tails, heads in groups:
             if kind == "absolute":
                 continue
             for v, t, h in zip(vs, tails, heads):
                 if float(np.hypot(*(h - t))) >= 2.0:   # shorter than 2 mm: in the table only
-                    labels.along(t, h, _ON_PLAN[kind], _COLOURS[kind], 8.0)
-    _set_frame(ax, lo, hi, lang)
+                    labels.along(t, h, _ON_PLAN[kind], fontsize=8.0, color=_COLOURS[kind],
+                                 zorder=6)
     y = y_ax - below
     fig.legend(handles=handles, loc="upper center", bbox_to_anchor=(0.5, y / H),
                ncols=ncols, fontsize=8, frameon=False)
@@ -599,13 +499,15 @@ def figure_force_polygons(results, ps, lang: str = "en"):
                 heads = np.array([v.head for v in pg.chords]) / mu
                 segs += list(zip(tails, heads))
                 _arrows(ax, tails, heads, "0.45", 1.0, "--")
-            labels = _Labels(ax, aw * _PT / float(hi[0] - lo[0]), segs, (lo, hi))
+            _set_frame(ax, lo, hi, lang)
+            labels = AxesLabels(ax)
+            labels.segments(segs)
             # the longest first: the short vectors' labels then find room round them
             for v in sorted(pg.vectors + pg.chords, key=lambda v: -float(v.value)):
                 labels.along(np.array(v.tail) / mu, np.array(v.head) / mu,
-                             f"{_force_label(v.label, lang)} {_num(v.value)}",
-                             _COLOURS.get(v.kind, "k") if v not in pg.chords else "0.35")
-            _set_frame(ax, lo, hi, lang)
+                             f"{_force_label(v.label, lang)} {_num(v.value)}", fontsize=7.0,
+                             color=_COLOURS.get(v.kind, "k") if v not in pg.chords else "0.35",
+                             zorder=6)
             what = (_t(lang, "crank", l=pg.links[0]) if pg.kind == "crank"
                     else _t(lang, "group", g=pg.group, k=pg.kind, l=", ".join(pg.links)))
             scale = _scale_text("mu_F", mu, lang)
@@ -667,23 +569,25 @@ def figure_lever(results, ps, lang: str = "en"):
     rays = [np.stack([np.zeros(2), xy]) for xy in imgs.values() if np.hypot(*xy) > 1e-9]
     if rays:
         ax.add_collection(LineCollection(rays, colors="0.6", linewidths=1.0, zorder=2))
-    labels = _Labels(ax, aw * _PT / float(hi[0] - lo[0]),
-                     [(np.zeros(2), r[1]) for r in rays] + [(t, h) for _, t, h in arrows],
-                     (lo, hi))
+    _set_frame(ax, lo, hi, lang)
+    labels = AxesLabels(ax)
+    labels.segments([(np.zeros(2), r[1]) for r in rays] + [(t, h) for _, t, h in arrows])
     seen: dict[tuple, list[str]] = {}
     for p, xy in imgs.items():
         seen.setdefault((round(xy[0], 3), round(xy[1], 3)), []).append(_image(lv.image_labels[p]))
+    labels.markers(list(seen), 2.6)
+    first = np.vstack([[(-12.0, 5.0, 0.0, 0.0)], around(4.0)[1:]])
     for xy, labs in seen.items():
         if abs(xy[0]) < 1e-9 and abs(xy[1]) < 1e-9:
             labs = ["p"] + labs
         text = ", ".join(labs)
         ax.plot(*xy, "o", markersize=3.2, color="k", zorder=5)
-        labels.point(xy, text, 10.0, first=(-12.0, 5.0))
+        labels.point(xy, text, places=first, fontsize=10.0, fontweight="bold", zorder=7)
     for f, tail, head in arrows:
         colour = "k" if f.kind == "balancing" else _COLOURS[f.kind]
         _arrows(ax, tail[None, :], head[None, :], colour, 2.0 if f.kind == "balancing" else 1.3)
-        labels.along(tail, head, _force_label(f.name, lang), colour, 8.0)
-    _set_frame(ax, lo, hi, lang)
+        labels.along(tail, head, _force_label(f.name, lang), fontsize=8.0, color=colour,
+                     zorder=6)
     y = y_ax - below
     _columns(fig, lines, left, y, W - left - right, H, W)
     fig.text(left / W, (y - t_h - 0.05) / H, "\n".join(sums), va="top", ha="left",
@@ -750,15 +654,15 @@ def figure_positions_plan(results, lang: str = "en", scheme=None):
             if line not in guides and lm.ref != tip:
                 guides.add(line)
                 sliders[lm.ref] = th              # the guide's direction [rad]
-    # (a number that would sit on one placed before moves out, 9 pt a step: the sliders'
-    # positions crowd near their dead centres)
-    from matplotlib.backends.backend_agg import FigureCanvasAgg
-
+    # the names of the scheme, then the numbers, by the one placer (render/labels.py): a
+    # number on a label or a marker moves out, 9 pt a step (the sliders' positions crowd near
+    # their dead centres)
     ax.set_aspect("equal", adjustable="datalim")
-    ax.get_xlim()                      # the limits autoscaled and fitted: the page's pixels
-    ax.apply_aspect()
-    renderer = FigureCanvasAgg(fig).get_renderer()
-    boxes = []
+    labels = AxesLabels(ax)
+    labels.segments([(q[0], q[1]) for q in segs + dsegs])
+    if scheme is not None:
+        scheme[2](labels, results, i0, size)
+    steps = np.arange(6)
     for p in [tip, *sliders]:
         for k, ks in numbers.items():
             i = results.index_of(math.radians(30 * k))
@@ -772,16 +676,11 @@ def figure_positions_plan(results, lang: str = "en", scheme=None):
                 rel = P[tip].r[i] - c
                 side = -1 if u[0] * rel[1] - u[1] * rel[0] < -1e-12 else 1
                 n, dist = np.array([-side * u[1], side * u[0]]), 20.0
-            for step in range(6):
-                a = ax.annotate(", ".join(str(x) for x in ks), c,
-                                xytext=((dist + 9 * step) * n[0], (dist + 9 * step) * n[1]),
-                                textcoords="offset points", ha="center", va="center",
-                                fontsize=7.5, color="C0", zorder=8)
-                b = a.get_window_extent(renderer)
-                if step == 5 or not any(b.overlaps(q) for q in boxes):
-                    break
-                a.remove()
-            boxes.append(b)
+            places = np.column_stack([(dist + 9 * steps) * n[0], (dist + 9 * steps) * n[1],
+                                      np.full(6, 0.5), np.full(6, 0.5)])
+            anchor = labels.to_pt(c)
+            labels.best(np.repeat(anchor, 6, axis=0), places, 2.0 * steps,
+                        ", ".join(str(x) for x in ks), fontsize=7.5, color="C0", zorder=8)
     ax.set_xlabel(nm.axis("x", lang))
     ax.set_ylabel(nm.axis("y", lang))
     handles = [Line2D([], [], color="0.35", linewidth=0.8,

@@ -87,5 +87,5 @@ def _named(views) -> list[View]:
     out = []
     for v in views:
         n = seen[v.name] = seen.get(v.name, 0) + 1
-        out.append(v if n == 1 else View(f"{v.name} {n}", v.items, v.scales))
+        out.append(v if n == 1 else View(f"{v.name} {n}", v.items, v.scales, v.labels))
     return out

@@ -115,6 +115,7 @@ class View:
     name: str
     items: list = field(default_factory=list)
     scales: dict = field(default_factory=dict)     # what its scales are: "mu_v" → μ …
+    labels: list = field(default_factory=list)     # the boxes [mm] :meth:`label` placed
 
     def box(self) -> tuple[float, float, float, float]:
         return bounds(self.items)
@@ -125,7 +126,40 @@ class View:
         return x1 - x0, y1 - y0
 
     def moved(self, dx: float, dy: float) -> View:
-        return View(self.name, [it.moved(dx, dy) for it in self.items], self.scales)
+        return View(self.name, [it.moved(dx, dy) for it in self.items], self.scales,
+                    [(b[0] + dx, b[1] + dy, b[2] + dx, b[3] + dy) for b in self.labels])
+
+    # -- labels: the one placer (render/labels.py) -----------------------------------------
+    def placer(self, step: float = 0.5):
+        """The one label placer over what is drawn so far [mm]: the lines to keep off, and the
+        hinges, the lettering and the small closed outlines (blocks, pivots' triangles, arrow
+        heads: at most 10 mm across) no label may cover."""
+        from flywheel.render.labels import Placer
+
+        p = Placer(step=step)
+        for it in self.items:
+            if isinstance(it, Circle):
+                p.marker(it.centre, it.radius + 0.4)
+            elif isinstance(it, Text):
+                p.box(it.box())
+            else:
+                x0, y0, x1, y1 = it.box()
+                if it.closed and max(x1 - x0, y1 - y0) <= 10.0:
+                    p.box((x0, y0, x1, y1))
+                p.curve(list(it.points) + ([it.points[0]] if it.closed else []))
+        return p
+
+    def label(self, placer, anchor, text: str, height: float, places, prefer=None, *,
+              rings: float | None = 2.0, margin: float = 0.4) -> None:
+        """``text`` (:meth:`rich`, ``height`` [mm]) at the least costly of ``places``
+        (render.labels rows: dx, dy, fx, fy [mm]) from ``anchor`` (or one anchor each), by
+        ``placer``; its box (``margin`` round the letters and a subscript's drop) joins the
+        placer's and :attr:`labels`."""
+        drop = 0.3 * height if "_" in text else 0.0
+        size = (rich_width(text, height) + 2 * margin, height + drop + 2 * margin)
+        *_, b = placer.choose(anchor, size, places, prefer, rings=rings)
+        self.rich(b[0] + margin, b[1] + margin + drop, text, height)
+        self.labels.append(b)
 
     def placed(self, x: float, y: float) -> View:
         """The view with its box's lower left corner at (x, y)."""
@@ -169,20 +203,7 @@ class View:
         """Horizontal lettering with subscripts: «M_Σ», «ΔT_нб», «μ_φ = 2 °/мм» — a ``_`` makes
         the word after it (up to a space, «,», «=», «)» or «/») a subscript 0.7 as high, set
         0.3 of the height lower. Returns its width [mm]."""
-        runs: list[tuple[str, bool]] = []
-        for k, part in enumerate(text.split("_")):
-            if k == 0:
-                runs.append((part, False))
-                continue
-            cut = len(part)
-            for stop in " ,=)/;":
-                j = part.find(stop)
-                if j != -1:
-                    cut = min(cut, j)
-            runs.append((part[:cut], True))
-            runs.append((part[cut:], False))
-        runs = [(r, sub) for r, sub in runs if r]
-        sizes = [(r, sub, 0.7 * height if sub else height) for r, sub in runs]
+        sizes = _runs(text, height)
         width = sum(text_width(r, h) for r, _, h in sizes)
         x0 = {"left": 0.0, "center": -width / 2, "right": -width}[halign]
         y0 = {"bottom": 0.0, "middle": -height / 2, "top": -height}[valign]
@@ -210,6 +231,28 @@ class View:
         w = head_w * L / head_len
         self.items.append(Polyline(((x1, y1), (bx - w * uy, by + w * ux),
                                     (bx + w * uy, by - w * ux)), "thin", True, True))
+
+
+def _runs(text: str, height: float) -> list[tuple[str, bool, float]]:
+    """The runs of :meth:`View.rich`'s lettering: (text, a subscript, its height [mm])."""
+    runs: list[tuple[str, bool]] = []
+    for k, part in enumerate(text.split("_")):
+        if k == 0:
+            runs.append((part, False))
+            continue
+        cut = len(part)
+        for stop in " ,=)/;":
+            j = part.find(stop)
+            if j != -1:
+                cut = min(cut, j)
+        runs.append((part[:cut], True))
+        runs.append((part[cut:], False))
+    return [(r, sub, 0.7 * height if sub else height) for r, sub in runs if r]
+
+
+def rich_width(text: str, height: float) -> float:
+    """The length [mm] of :meth:`View.rich`'s lettering of ``text``."""
+    return sum(text_width(r, h) for r, _, h in _runs(text, height))
 
 
 def indexed(name: str) -> str:

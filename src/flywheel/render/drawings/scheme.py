@@ -11,6 +11,7 @@ import math
 import numpy as np
 
 from flywheel.render.drawings.model import View, indexed
+from flywheel.render.labels import around, toward
 
 #: ГОСТ 2.302-68 scales as (paper, real), largest first
 GOST_SCALES = ((10, 1), (5, 1), (4, 1), (2.5, 1), (2, 1), (1, 1), (1, 2), (1, 2.5), (1, 4),
@@ -74,8 +75,9 @@ def scheme_view(results, i: int, room_mm: float, lang: str, *, positions: bool,
                 v.line((px, py), (px + hx, py + hy), line="thin")
     for pname in d.fixed_points:
         _pivot(v, xy(P[pname].r[0]))
-    # the standard positions, thin, numbered at the crank pin
+    # the standard positions, thin (numbered at the crank pin once all is drawn)
     crank = d.links[0]
+    numbers = []
     if positions:
         for pos in results.position_angles:
             j = results.index_of(pos.phi)
@@ -88,9 +90,7 @@ def scheme_view(results, i: int, room_mm: float, lang: str, *, positions: bool,
                 tip = np.array(xy(P[crank[1][1]].r[j]))
                 piv = np.array(xy(P[crank[1][0]].r[j]))
                 out = tip - piv
-                out = out / (np.hypot(*out) or 1.0)
-                v.text(*(tip + 4.0 * out), str(pos.number), 2.5, halign="center",
-                       valign="middle")
+                numbers.append((tip, out / (np.hypot(*out) or 1.0), str(pos.number)))
     # the mechanism at node i, main lines
     centre = np.mean([xy(P[n].r[i]) for n in d.moving_points + d.fixed_points], axis=0)
     for link, joint, angle in d.guided_sliders:
@@ -113,14 +113,19 @@ def scheme_view(results, i: int, room_mm: float, lang: str, *, positions: bool,
             v.circle(c, HINGE_R, line="main")
         else:
             v.circle(c, 0.8, line="thin", filled=True)
+    # the letters, then the numbers, by the one placer (render/labels.py): off the hinges,
+    # the blocks and each other, off the lines where they can
+    placer = v.placer()
+    for pname in d.moving_points + d.fixed_points:
+        c = np.array(xy(P[pname].r[i]))
         out = c - centre
         nrm = np.hypot(*out)
         out = out / nrm if nrm > 1e-9 else np.array([-0.7, 0.7])
         if pname in d.fixed_points:
             out = np.array([-0.95, 0.3])
-        at = c + 5.0 * out
-        v.rich(float(at[0]), float(at[1]), indexed(pname), 3.5, halign="center",
-               valign="middle")
+        v.label(placer, c, indexed(pname), 3.5, np.vstack([[toward(out, 2.5)], around(2.0)]))
+    for tip, out, text in numbers:
+        v.label(placer, tip, text, 2.5, np.array([toward(out, g) for g in (2.0, 4.0, 6.0)]))
     if title:
         x0, y0, x1, y1 = v.box()
         v.text(x0, y1 + 3.0, title, 5.0)

@@ -92,7 +92,11 @@ def views(results, lang: str, room: dict) -> list[View]:
             x_ticks=[0.0, 0.25, 0.5, 0.75, 1.0], y_symbol="p", y_unit=mpa,
             y_label=f"p, {mpa}", height=room["plot_h"], lang=lang, x_scale_text=t["stroke"]))
     moving = results.drawing.moving_points if results.drawing is not None else ()
-    vq = [(cols[f"vq_{p}"].values, f"v_q{p}", ["main", "thin", "dashed"][k % 3])
+    # a slider on a fixed guide: v_q along the guide, signed (dS/dφ: Drawing.slider_analogues);
+    # any other point: |v_q|
+    sliders = {j: link for link, j, _ in results.drawing.guided_sliders} if moving else {}
+    vq = [(results.drawing.slider_analogues[sliders[p]][0] if p in sliders
+           else cols[f"vq_{p}"].values, f"v_q{p}", ["main", "thin", "dashed"][k % 3])
           for k, p in enumerate(moving) if f"vq_{p}" in cols]
     if vq:
         out.append(diagram("analogues", t["analogues"], deg, vq, **_phi_axis(results, lang, room['plot_h']),

@@ -17,6 +17,7 @@ from flywheel.render.drawings.diagram import mu_text, num
 from flywheel.render.drawings.model import View, indexed, text_width
 from flywheel.dynamics.plans import round_scale
 from flywheel.render.drawings.scheme import _block, gost_scale, scheme_view
+from flywheel.render.labels import around, beside, toward
 
 T = words("drawings2", {
     "scheme": "Kinematic scheme at φ = {a}°, scale {s}",
@@ -75,17 +76,12 @@ def _plan_view(name: str, title: str, plan, pole: str, key: str, lang: str,
     v.scales[key] = mu
     P = lambda xy: (float(xy[0]) / mu, float(xy[1]) / mu)       # noqa: E731
     marks = {"normal": "n", "tangential": "τ", "coriolis": "k", "sliding": "r"}
-    for vec in plan.vectors:
-        if vec.value / mu < 0.5:
-            continue
+    drawn = [vec for vec in plan.vectors if vec.value / mu >= 0.5]
+    for vec in drawn:
         line = "main" if vec.kind in ("absolute", "relative") else "thin"
         v.arrow(P(vec.tail), P(vec.head), line=line, full=True)
-        if vec.kind in marks:
-            mx = (P(vec.tail)[0] + P(vec.head)[0]) / 2
-            my = (P(vec.tail)[1] + P(vec.head)[1]) / 2
-            v.text(mx + 1.0, my + 1.0, marks[vec.kind], 2.5)
     v.circle((0.0, 0.0), 0.6, line="thin", filled=True)
-    v.text(-1.5, -1.5, pole, 3.5, halign="right", valign="top")
+    images = []
     seen: set = set()
     for point, xy in plan.images.items():
         c = P(xy)
@@ -93,10 +89,16 @@ def _plan_view(name: str, title: str, plan, pole: str, key: str, lang: str,
         if math.hypot(*c) < 0.5 or key_c in seen:
             continue
         seen.add(key_c)
-        r = math.hypot(*c)
-        v.rich(c[0] + 2.0 * c[0] / r, c[1] + 2.0 * c[1] / r,
-               _image(plan.image_labels[point]), 3.5,
-               halign="left" if c[0] >= 0 else "right", valign="bottom" if c[1] >= 0 else "top")
+        images.append((c, _image(plan.image_labels[point])))
+    # the letters, the pole's, then the components' marks, by the one placer (render/labels.py)
+    placer = v.placer()
+    for c, text in images:
+        v.label(placer, c, text, 3.5, np.vstack([[toward(c, 1.5)], around(1.2)]))
+    v.label(placer, (0.0, 0.0), pole, 3.5, np.vstack([[(-1.0, -1.0, 1.0, 1.0)], around(1.2)]))
+    for vec in drawn:
+        if vec.kind in marks:
+            anchors, places, prefer = beside(P(vec.tail), P(vec.head), gaps=(0.8, 2.0, 4.0))
+            v.label(placer, anchors, marks[vec.kind], 2.5, places, prefer)
     x0, _, _, y1 = v.box()
     v.rich(x0, y1 + 3.0, mu_text(key.split("_")[1], mu, _per_mm(key, lang), lang), 3.5)
     v.text(x0, y1 + 9.0, title, 5.0)
@@ -133,6 +135,7 @@ def _group_view(results, i: int, poly, room: float, lang: str) -> View:
     for link, joint, angle in results.drawing.guided_sliders:
         if link in poly.links:
             _block(v, xy(P[joint].r[i]), angle)
+    arrows = []
     for vec in poly.vectors:
         if vec.to not in P or vec.value <= 0:
             continue
@@ -140,7 +143,10 @@ def _group_view(results, i: int, poly, room: float, lang: str) -> View:
         d = np.asarray(vec.vector, float) / vec.value
         head = c + ARROW_MM * d
         v.arrow(tuple(c), tuple(head), line="thin")
-        _beyond(v, head, d, force_label(vec.label, lang))
+        arrows.append((head, d, force_label(vec.label, lang)))
+    placer = v.placer()
+    for head, d, text in arrows:
+        _beyond(v, placer, head, d, text)
     x0, _, _, y1 = v.box()
     title = (t["crank"].format(l=", ".join(poly.links)) if poly.kind == "crank" else
              t["group"].format(l="–".join(poly.links), k=t["kind"].get(poly.kind, poly.kind)))
@@ -148,12 +154,14 @@ def _group_view(results, i: int, poly, room: float, lang: str) -> View:
     return v
 
 
-def _beyond(v: View, head, d, label: str) -> None:
-    """A force's name just beyond its arrow's head, on the side the arrow points to."""
-    at = np.asarray(head, float) + 1.5 * np.asarray(d, float)
-    ha = "left" if d[0] > 0.35 else "right" if d[0] < -0.35 else "center"
-    va = "bottom" if d[1] > 0.35 else "top" if d[1] < -0.35 else "middle"
-    v.rich(float(at[0]), float(at[1]), label, 3.5, halign=ha, valign=va)
+def _beyond(v: View, placer, head, d, label: str) -> None:
+    """A force's name just beyond its arrow's head, on the side the arrow points to, or
+    beside the head where that is taken (the one placer, render/labels.py)."""
+    d = np.asarray(d, float)
+    n = np.array([-d[1], d[0]])
+    places = [toward(d, 1.5), toward(d + n, 1.5), toward(d - n, 1.5), toward(n, 2.0),
+              toward(-n, 2.0), toward(d, 4.0)]
+    v.label(placer, head, label, 3.5, np.array(places))
 
 
 def _polygon_view(poly, lang: str, longest_mm: float) -> View:
@@ -164,22 +172,21 @@ def _polygon_view(poly, lang: str, longest_mm: float) -> View:
     v = View(f"polygon {poly.group}")
     v.scales["mu_F"] = mu
     P = lambda xy: (float(xy[0]) / mu, float(xy[1]) / mu)       # noqa: E731
-    for vec in poly.vectors:
-        if vec.value / mu < 0.3:
-            continue
-        a, b = P(vec.tail), P(vec.head)
-        v.arrow(a, b, line="main" if vec.kind.startswith("reaction") else "thin", full=True)
-        mx, my = (a[0] + b[0]) / 2, (a[1] + b[1]) / 2
-        L = math.hypot(b[0] - a[0], b[1] - a[1])
-        nx, ny = -(b[1] - a[1]) / L, (b[0] - a[0]) / L
-        v.rich(mx + 2.5 * nx, my + 2.5 * ny, force_label(vec.label, lang), 3.5,
-               halign="left" if nx >= 0 else "right", valign="middle")
-    for ch in poly.chords:
-        if ch.value / mu >= 0.3:
-            v.arrow(P(ch.tail), P(ch.head), line="dashed", full=True)
-            a, b = P(ch.tail), P(ch.head)
-            v.rich(a[0] + 0.3 * (b[0] - a[0]) + 1.5, a[1] + 0.3 * (b[1] - a[1]) - 1.5,
-                   force_label(ch.label, lang), 3.5, valign="top")
+    vecs = [vec for vec in poly.vectors if vec.value / mu >= 0.3]
+    chords = [ch for ch in poly.chords if ch.value / mu >= 0.3]
+    for vec in vecs:
+        v.arrow(P(vec.tail), P(vec.head),
+                line="main" if vec.kind.startswith("reaction") else "thin", full=True)
+    for ch in chords:
+        v.arrow(P(ch.tail), P(ch.head), line="dashed", full=True)
+    placer = v.placer()        # the names beside their vectors (render/labels.py)
+    for vec in sorted(vecs, key=lambda x: -float(x.value)):
+        anchors, places, prefer = beside(P(vec.tail), P(vec.head), gaps=(1.5, 3.0, 6.0))
+        v.label(placer, anchors, force_label(vec.label, lang), 3.5, places, prefer)
+    for ch in chords:
+        anchors, places, prefer = beside(P(ch.tail), P(ch.head), gaps=(1.5, 3.0, 6.0),
+                                         shares=(0.3, 0.5, 0.7))
+        v.label(placer, anchors, force_label(ch.label, lang), 3.5, places, prefer)
     x0, _, _, y1 = v.box()
     v.rich(x0, y1 + 3.0, mu_text("F", mu, _per_mm("mu_F", lang), lang), 3.5)
     v.text(x0, y1 + 9.0, t["polygon"].format(l=", ".join(poly.links)), 5.0)
@@ -203,7 +210,7 @@ def _lever_view(results, ps, lang: str, longest_mm: float) -> View:
         a = (0.0, 0.0) if vec.kind == "absolute" else img[vec.rel]
         v.line(a, img[vec.to])
     v.circle((0.0, 0.0), 0.6, line="thin", filled=True)
-    v.text(-1.5, -1.5, "p", 3.5, halign="right", valign="top")
+    arrows = []
     for f in tuple(L.forces) + (L.balancing_force,):
         c = img[f.point]
         F = np.asarray(f.force, float) / muF
@@ -211,11 +218,15 @@ def _lever_view(results, ps, lang: str, longest_mm: float) -> View:
             continue
         head = (c[0] + F[0], c[1] + F[1])
         v.arrow(c, head, line="main" if f.kind == "balancing" else "thin", full=True)
-        _beyond(v, head, F / math.hypot(*F), force_label(f.name, lang))
+        arrows.append((head, F / math.hypot(*F), force_label(f.name, lang)))
+    placer = v.placer()        # the letters, then the forces' names (render/labels.py)
+    down_left = np.vstack([[(-1.0, -1.0, 1.0, 1.0)], around(1.2)])
+    v.label(placer, (0.0, 0.0), "p", 3.5, down_left)
     for p, c in img.items():
         if math.hypot(*c) >= 0.5:
-            v.rich(c[0] - 1.5, c[1] - 1.5, _image(L.image_labels[p]), 3.5, halign="right",
-                   valign="top")
+            v.label(placer, c, _image(L.image_labels[p]), 3.5, down_left)
+    for head, d, text in arrows:
+        _beyond(v, placer, head, d, text)
     x0, _, _, y1 = v.box()
     mm = "мм" if lang == "ru" else "mm"
     v.rich(x0, y1 + 3.0, f"{mu_text('v', mu, _per_mm('mu_v', lang), lang)};  "
@@ -244,15 +255,19 @@ def hodograph_view(results, lang: str, longest_mm: float) -> View | None:
     for a, b in (((-span, 0.0), (span, 0.0)), ((0.0, -span), (0.0, span))):
         v.line(a, b, line="axis")
     step = 30 * results.cycle_deg // 360
+    marks = []
     for a in range(0, results.cycle_deg, step):
         i = results.index_of(math.radians(a))
         c = (float(x[i]) / mu, float(y[i]) / mu)
         v.circle(c, 0.6, line="thin", filled=True)
-        v.text(c[0] + 1.2, c[1] + 1.2, f"{a}", 2.5)
+        marks.append((c, f"{a}"))
     i = results.plans[0].index if results.plans else 0
     v.arrow((0.0, 0.0), (float(x[i]) / mu, float(y[i]) / mu), line="thin", full=True)
     v.rich(span + 2.0, 1.0, nm.symbol("crank_pin_tangential", lang), 3.5)
     v.rich(1.0, span + 2.0, nm.symbol("crank_pin_radial", lang), 3.5)
+    placer = v.placer()        # the angles beside their marks (render/labels.py)
+    for c, text in marks:
+        v.label(placer, c, text, 2.5, around(0.8))
     x0, _, _, y1 = v.box()
     v.rich(x0, y1 + 3.0, mu_text("F", mu, _per_mm("mu_F", lang), lang), 3.5)
     v.text(x0, y1 + 9.0, t["hodograph"], 5.0)

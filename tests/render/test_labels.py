@@ -1,0 +1,188 @@
+"""The one label placer (render/labels.py) and the figures routed through it (issue 28 item 6):
+no label's box meets another's or covers a marker, measured with matplotlib's own extents on
+the drawn page; the placer's box model is the box matplotlib draws; the ЕСКД sheets' labels
+keep apart too; a slider's analogues are signed, dS/dφ and d²S/dφ²."""
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from flywheel.cases.run import load_case
+from flywheel.dynamics.pipeline import analyze
+from flywheel.render.labels import HARD, Placer, around, overlap
+
+CASES = Path(__file__).resolve().parents[2] / "cases"
+LINKAGES = ["compressor", "compressor_given_flywheel", "compressor_worksheet", "engine_4stroke",
+            "engine_inline4", "engine_measured", "fourbar", "fourbar_rocker_load", "pump",
+            "shaper", "slotted_link"]
+LABELLED = ("scheme", "plan_", "hodographs")
+_RESULTS: dict = {}
+
+
+def results_of(name: str):
+    if name not in _RESULTS:
+        _RESULTS[name] = analyze(load_case(CASES / f"{name}.toml"))
+    return _RESULTS[name]
+
+
+def _shrunk(b, e: float):
+    return (b[0] + e, b[1] + e, b[2] - e, b[3] - e)
+
+
+# -- the placer alone ------------------------------------------------------------------------------
+
+def test_labels_at_one_point_never_overlap_and_keep_off_the_marker():
+    """Twenty labels of one point: the first eight take its corners and sides, the rest go
+    farther out ring by ring; no two boxes share an area and none covers the marker."""
+    p = Placer()
+    p.marker((0.0, 0.0), 2.0)
+    for _ in range(20):
+        p.choose((0.0, 0.0), (10.0, 6.0), around(3.0), rings=6.0)
+    boxes = p.labels
+    assert not any(overlap(a, b) for i, a in enumerate(boxes) for b in boxes[:i])
+    assert not any(overlap(b, p.markers[0]) for b in boxes)
+    assert boxes[0] == (3.0, 3.0, 13.0, 9.0)           # up right first: nothing in the way
+
+
+def test_a_line_under_the_first_place_moves_the_label_and_the_choice_is_deterministic():
+    """A line through the first candidate's box: the label goes to the next place free of it;
+    the same input gives the same place."""
+    def run():
+        p = Placer(step=1.0)
+        p.segments([((0.0, 8.0), (20.0, 8.0))])          # across the box up right of (0, 0)
+        return p.choose((0.0, 0.0), (10.0, 6.0), around(3.0))
+    first, again = run(), run()
+    assert first == again
+    *_, box = first
+    assert not (box[1] < 8.0 < box[3] and box[0] < 20.0 and box[2] > 0.0)   # off the line
+    assert box != (3.0, 3.0, 13.0, 9.0)
+
+
+def test_every_place_taken_costs_hard_and_the_rings_find_a_free_one():
+    p = Placer()
+    for b in p.boxes_of((0.0, 0.0), (10.0, 6.0), around(3.0)):
+        p.box(b)                                         # every near place blocked
+    assert p.costs(p.boxes_of((0.0, 0.0), (10.0, 6.0), around(3.0))).min() >= HARD
+    *_, box = p.choose((0.0, 0.0), (10.0, 6.0), around(3.0), rings=6.0)
+    assert p.free(box) or not any(overlap(box, q) for q in p.markers)
+
+
+# -- the figures -----------------------------------------------------------------------------------
+
+def _labelled_figures(res):
+    from flywheel.render import plots
+    return [(n, f) for n, f in plots.all_figures(res, "ru") if n.startswith(LABELLED)]
+
+
+@pytest.mark.parametrize("name", LINKAGES)
+def test_no_label_meets_another_or_covers_a_marker(name):
+    """Every figure of a bundled case whose labels the placer sets (the schemes, the plans of
+    positions, velocities, accelerations, forces, Zhukovsky's lever, the hodographs): drawn,
+    each label's box as matplotlib measures it (get_window_extent) meets no other label's
+    and covers no marker's (a hinge, an image, a hodograph's mark)."""
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+    from flywheel.render import figure as fg
+
+    res = results_of(name)
+    with fg.style():
+        for fname, build in _labelled_figures(res):
+            fig = build()
+            canvas = FigureCanvasAgg(fig)
+            canvas.draw()
+            ren = canvas.get_renderer()
+            pt = 72.0 / fig.dpi
+            placed = getattr(fig, "flywheel_labels", [])
+            assert placed, fname
+            boxes = []
+            for text, _ in placed:
+                e = text.get_window_extent(ren)
+                boxes.append((e.x0 * pt, e.y0 * pt, e.x1 * pt, e.y1 * pt, text))
+            for i, a in enumerate(boxes):
+                for b in boxes[:i]:
+                    assert not overlap(_shrunk(a, 0.3), b), (fname, a[4].get_text(),
+                                                             b[4].get_text())
+                for m in fig.flywheel_markers:
+                    assert not overlap(_shrunk(a, 0.3), m), (fname, a[4].get_text(), m)
+            fig.clear()
+
+
+def test_the_box_model_is_the_box_matplotlib_draws():
+    """The placer's box of each label of the compressor's plan of positions (measured before
+    drawing, from a probe Text) is the box the drawn annotation occupies, within 0.5 pt."""
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+    from flywheel.render import figure as fg
+
+    res = results_of("compressor")
+    with fg.style():
+        (_, build), = [(n, f) for n, f in _labelled_figures(res) if n == "plan_positions.png"]
+        fig = build()
+        canvas = FigureCanvasAgg(fig)
+        canvas.draw()
+        ren = canvas.get_renderer()
+        pt = 72.0 / fig.dpi
+        assert len(fig.flywheel_labels) > 20
+        for text, model in fig.flywheel_labels:
+            e = text.get_window_extent(ren)
+            drawn = (e.x0 * pt, e.y0 * pt, e.x1 * pt, e.y1 * pt)
+            assert np.allclose(drawn, model, atol=0.5), (text.get_text(), drawn, model)
+        fig.clear()
+
+
+# -- the ЕСКД sheets ------------------------------------------------------------------------------
+
+@pytest.mark.parametrize("name", ["compressor", "shaper", "slotted_link"])
+def test_the_sheets_labels_keep_apart(name):
+    """Sheet 1 and sheet 2 (schemes, plans, group drawings, polygons, the lever, the
+    hodograph): in every view, the labels the placer set meet no other and no hinge."""
+    from flywheel.render.drawings import model, sheet1, sheet2
+    from flywheel.render.drawings.sheet import ROOM
+
+    res = results_of(name)
+    views = sheet1.views(res, "ru", ROOM["A1"]) + sheet2.views(res, "ru", ROOM["A1"])
+    labelled = [v for v in views if v.labels]
+    assert labelled
+    for v in labelled:
+        boxes = v.labels
+        for i, a in enumerate(boxes):
+            for b in boxes[:i]:
+                assert not overlap(_shrunk(a, 0.05), b), v.name
+            for it in v.items:
+                if isinstance(it, model.Circle) and it.radius >= 1.0:
+                    assert not overlap(_shrunk(a, 0.05), it.box()), (v.name, it.centre)
+
+
+# -- signed slider analogues ---------------------------------------------------------------------
+
+@pytest.mark.parametrize("name", ["compressor", "shaper", "engine_4stroke"])
+def test_a_sliders_analogues_are_the_derivatives_of_its_travel(name):
+    """v_q of a slider = dS/dφ and a_q = d²S/dφ² of its travel S from the outer dead centre
+    (the positions figure's S), by differences on the grid (np.gradient); v_q changes sign (no
+    V-shaped magnitude) and the figure draws it so."""
+    res = results_of(name)
+    d = res.drawing
+    assert d.guided_sliders
+    phi = np.asarray(res.phi, float)
+    for link, joint, _ in d.guided_sliders:
+        S = d.slider_travel[link]
+        v_q, a_q = d.slider_analogues[link]
+        dS = np.gradient(S, phi)[1:-1]                  # the grid may be refined: not uniform
+        d2S = np.gradient(v_q, phi)[1:-1]                # d(dS/dφ)/dφ, v_q checked first
+        span_v, span_a = np.ptp(v_q), np.ptp(a_q)
+        # away from the dead centres, where |x − x_far| has its kink, S is smooth
+        smooth = (S[1:-1] > 1e-2 * np.ptp(S)) & (S[1:-1] < (1 - 1e-2) * np.ptp(S))
+        assert np.allclose(dS[smooth], v_q[1:-1][smooth], atol=2e-3 * span_v)
+        assert np.allclose(d2S[smooth], a_q[1:-1][smooth], atol=2e-2 * span_a)
+        assert v_q.min() < -0.1 * span_v and v_q.max() > 0.1 * span_v
+    from flywheel.render import figure as fg
+    from flywheel.render import plots
+
+    with fg.style():
+        fig = plots.figure_velocity_analogues(res, "en")
+        drawn = [ln.get_ydata() for ln in fig.axes[0].lines]
+        v_q, _ = d.slider_analogues[d.guided_sliders[0][0]]
+        assert any(len(y) == len(v_q) and np.allclose(y, v_q) for y in drawn)
+        fig.clear()
