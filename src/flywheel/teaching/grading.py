@@ -733,6 +733,21 @@ def grade(key: Key, paths, tolerance: float | None = None, progress=None,
                   tuple(problems), tuple(map(str, files)), carried_share)
 
 
+
+def check_graded(report: Report, paths) -> None:
+    """Refuse a report with no student graded (an InputError: the first problem, or no
+    filled-in row in ``paths``), so that nothing is written."""
+    if report.students:
+        return
+    if report.problems:
+        raise InputError(Notice.of(
+            "nothing_graded", "nothing could be graded ({n} problem(s); the first: {detail})",
+            n=len(report.problems), detail=report.problems[0].said()))
+    files = ", ".join(report.files) or ", ".join(map(str, paths))
+    raise InputError(Notice.of(
+        "no_student_rows", "{files}: nothing could be graded: no filled-in student rows (a row "
+        "needs a student name and a variant)", files=files))
+
 # -- the report as data -------------------------------------------------------------------------
 
 def report_dict(r: Report) -> dict:
