@@ -58,9 +58,11 @@ Roots = Annotated[Optional[list[str]], typer.Option(
     "repeatable.")]
 
 
-def schema_command(results: bool = typer.Option(
-        False, "--results", help="The JSON Schema of a run's summary.json instead (docs/results.md)."),
-        lang: Lang = "en") -> None:
+SchemaResults = Annotated[bool, typer.Option(
+    "--results", help="The JSON Schema of a run's summary.json instead (docs/results.md).")]
+
+
+def schema_command(results: SchemaResults = False, lang: Lang = "en") -> None:
     """Print the JSON Schema of case files (for editors: completion and checking; --lang ru: the
     fields described in Russian), or with --results that of summary.json."""
     import json
