@@ -130,3 +130,69 @@ def test_no_import_cycles():
 def test_every_package_is_in_the_layer_table():
     pkgs = {_package(m) for m in MODULES if m != "flywheel"}
     assert pkgs <= set(ALLOWED), f"add {sorted(pkgs - set(ALLOWED))} to ALLOWED and the docs"
+
+
+# -- thin commands (issue 22): each command function is parse → load → solve → write ---------
+
+#: the most lines a command function of cli/ may span, from its ``def`` to its last line
+#: (signature and docstring included); its checks, solving and writing go to the modules
+#: where they belong (cli/options.py, cli/outputs.py, teaching/, …)
+COMMAND_MOST_LINES = 40
+CLI = SRC / "cli"
+
+
+def _span(func: ast.FunctionDef) -> int:
+    """Lines of a function from its ``def`` to its last line (decorators not counted)."""
+    return func.end_lineno - func.lineno + 1
+
+
+def _registered_commands() -> dict[str, tuple[str, str]]:
+    """command name → (cli module, function) of every ``app.command("name")(function)`` in
+    cli/__init__.py, the function found through that file's ``from flywheel.cli.X import``."""
+    tree = ast.parse((CLI / "__init__.py").read_text(encoding="utf-8"))
+    where = {a.asname or a.name: node.module.rpartition(".")[2]
+             for node in ast.walk(tree) if isinstance(node, ast.ImportFrom)
+             and (node.module or "").startswith("flywheel.cli.") for a in node.names}
+    found = {}
+    for node in ast.walk(tree):
+        if (isinstance(node, ast.Call) and isinstance(node.func, ast.Call)
+                and ast.unparse(node.func.func) == "app.command"
+                and len(node.args) == 1 and isinstance(node.args[0], ast.Name)):
+            name = node.func.args[0].value
+            found[name] = (where.get(node.args[0].id, "__init__"), node.args[0].id)
+    return found
+
+
+def _functions(module: str) -> dict[str, ast.FunctionDef]:
+    tree = ast.parse((CLI / f"{module}.py").read_text(encoding="utf-8"))
+    return {n.name: n for n in tree.body if isinstance(n, ast.FunctionDef)}
+
+
+def test_the_span_counts_from_def_to_the_last_line():
+    """The measure itself, on functions whose lines are counted by hand."""
+    text = ("@decorator\ndef f(a,\n      b):\n    \"\"\"Doc.\"\"\"\n" + "    x = 1\n" * 38
+            + "\n\ndef g(): return 1\n")
+    f, g = [n for n in ast.parse(text).body if isinstance(n, ast.FunctionDef)]
+    assert (_span(f), _span(g)) == (3 + 38, 1)
+
+
+def test_every_command_is_found():
+    """All the commands of the command line are measured (the test below is not empty)."""
+    commands = _registered_commands()
+    assert set(commands) >= {"schema", "check", "run", "drawings", "task2", "aggregate",
+                             "duty-cycle", "variants", "grade", "new"}
+    for name, (module, function) in commands.items():
+        assert function in _functions(module), f"{name}: {function} not found in cli/{module}.py"
+
+
+def test_command_functions_are_thin():
+    """Each command function of cli/ (registered in cli/__init__.py, or named ``*_command``)
+    spans at most COMMAND_MOST_LINES lines: parse → load → solve → write."""
+    measured = {(m, f) for m, f in _registered_commands().values()}
+    measured |= {(p.stem, name) for p in CLI.glob("*.py") for name in _functions(p.stem)
+                 if name.endswith("_command")}
+    long = {f"cli/{m}.py {f}: {_span(_functions(m)[f])} lines" for m, f in measured
+            if _span(_functions(m)[f]) > COMMAND_MOST_LINES}
+    assert not long, (f"commands longer than {COMMAND_MOST_LINES} lines (def to end): "
+                      f"{sorted(long)}; move their checks, solving and writing out "
+                      "(docs/architecture.md, 'A new command')")

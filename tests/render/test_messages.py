@@ -862,11 +862,12 @@ def test_the_progress_bar_names_its_stages_in_the_users_language():
     for st in stages:
         assert nm.stage_name(st, "en") == st and re.search("[а-я]", nm.stage_name(st, "ru")), st
     assert nm.stage_name("anything", "ru") == "anything"
-    # the teaching commands' bars: every stage they name is in the table, English as before
-    named = re.findall(r'stage_name\("([^"]+)", lang\)',
-                       (SRC / "cli" / "teaching.py").read_text(encoding="utf-8"))
-    assert set(named) == {"variants", "task sheets", "answer sheets"}
-    assert [nm.stage_name(n) for n in named] == ["variants", "sheets", "sheets"]
+    # the counting bars (cli/progress.py count_bar) of the figures and of the teaching
+    # commands: every stage they name is in the table, English as before
+    named = sorted(set(re.findall(r'count_bar\("([^"]+)", lang', "".join(
+        (SRC / "cli" / f).read_text(encoding="utf-8") for f in ("teaching.py", "outputs.py")))))
+    assert named == ["answer sheets", "figures", "task sheets", "variants"]
+    assert [nm.stage_name(n) for n in named] == ["sheets", "figures", "sheets", "variants"]
     assert all(re.search("[а-я]", nm.stage_name(n, "ru")) for n in named)
 
 

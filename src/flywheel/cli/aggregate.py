@@ -6,7 +6,7 @@ the result to :mod:`flywheel.render.aggregate`. Heavy imports live inside the fu
 from __future__ import annotations
 
 from pathlib import Path
-from typing import Optional
+from typing import Annotated, Optional
 
 import typer
 
@@ -17,68 +17,73 @@ from flywheel.io.text import in_language
 MAX_T_END = 600.0     # s: ten minutes of simulated start-up (about 15 s of computing)
 
 
-def aggregate_command(
-    case: Path = typer.Argument(..., help="Aggregate case file (TOML), see docs/aggregate.md."),
-    json: Json = False,
-    plot: Optional[Path] = typer.Option(None, "--plot", help="Write speeds and the elastic "
-                                        "moment against time (start-up, steady state) to this "
-                                        "image file (.png, .svg, .pdf).", dir_okay=False),
-    t_end: Optional[float] = typer.Option(None, "--t-end", help="Duration of the start-up "
-                                          "integration, seconds (default: five time constants of "
-                                          "the motor or 20 forcing periods, whichever is longer, "
-                                          "at most 2000 periods of the highest natural "
-                                          "frequency)."),
-    lang: Lang = "en",
-    modes: bool = typer.Option(False, "--modes", help="Also show every mode's frequency in Hz and "
-                               "vibrations per minute with its nodes (positions along the "
-                               "shafts), and each shaft's equivalent length (the JSON always "
-                               "has them)."),
-    out: Optional[Path] = typer.Option(None, "--out", "-o", help="Also write an output folder: "
-                                       "summary.json (as --json), plots/aggregate.png (with a "
-                                       "\\[motor]) and the report (see --report); a rerun replaces "
-                                       "only its own files."),
-    report: Reports = None,
-) -> None:
+Plot = Annotated[Optional[Path], typer.Option(
+    "--plot", help="Write speeds and the elastic moment against time (start-up, steady state) to "
+    "this image file (.png, .svg, .pdf).", dir_okay=False)]
+TEnd = Annotated[Optional[float], typer.Option(
+    "--t-end", help="Duration of the start-up integration, seconds (default: five time "
+    "constants of the motor or 20 forcing periods, whichever is longer, at most 2000 periods of "
+    "the highest natural frequency).")]
+Modes = Annotated[bool, typer.Option(
+    "--modes", help="Also show every mode's frequency in Hz and vibrations per minute with its "
+    "nodes (positions along the shafts), and each shaft's equivalent length (the JSON always has "
+    "them).")]
+AggregateOut = Annotated[Optional[Path], typer.Option(
+    "--out", "-o", help="Also write an output folder: summary.json (as --json), "
+    "plots/aggregate.png (with a \\[motor]) and the report (see --report); a rerun replaces only "
+    "its own files.")]
+AggregateCase = Annotated[Path, typer.Argument(
+    help="Aggregate case file (TOML), see docs/aggregate.md.")]
+
+
+def aggregate_command(case: AggregateCase, json: Json = False, plot: Plot = None,
+                      t_end: TEnd = None, lang: Lang = "en", modes: Modes = False,
+                      out: AggregateOut = None, report: Reports = None) -> None:
     """Two-mass machine aggregate (Ефанов ch. 9) or a chain of rotors: coefficients a_ij, c_ij,
     natural frequencies, steady forced vibration, start-up."""
-    from flywheel.cli.guard import guarded, refuse_nonfinite, write_plot
-    from flywheel.errors import InputError, Notice
+    from flywheel.cli.guard import guarded, write_plot
+    from flywheel.cli.outputs import finish, written_line
+    from flywheel.render import nomenclature as nm
+    from flywheel.render.aggregate import print_summary, to_json
+    from flywheel.render.numbers import typeset
 
     with guarded(source=case):      # an error of the analysis is prefixed with the case file
-        from flywheel.render import nomenclature as nm
-
         formats = _check_options(lang, t_end, report, out)
-        from flywheel.cases.aggregate import load_aggregate_case, to_model
-        from flywheel.elastic.model import analyze
-
-        c = load_aggregate_case(case)
-        ch, drive = to_model(c, str(case))
-        if plot is not None and drive is None:
-            raise InputError(Notice.of(
-                "plot_needs_motor", "--plot needs a [motor]: a chain without one has no motion in "
-                "time"))
-        from flywheel.cli.progress import stage_bar
-
-        with stage_bar(lang) as progress:   # a bar on a terminal only (a long --t-end takes seconds)
-            result = analyze(ch, drive, t_end=t_end, progress=progress)
-        # no Infinity/NaN printed, in the summary or the JSON (which has none): guard.not_finite
-        refuse_nonfinite(result.to_document(), who=str(case))
+        c, result = _solve(case, plot, t_end, lang)
         if plot is not None:
             from flywheel.render.aggregate import plot as draw
 
             write_plot(plot, lambda tmp: draw(result, tmp, in_language(c.title, lang), lang))
-        if out is not None:
-            written = _write_out(out, result, formats, c.title, c.source, lang, c.document)
-    from flywheel.cli.outputs import finish, written_line
-    from flywheel.render.aggregate import print_summary, to_json
-    from flywheel.render.numbers import typeset
-
+        written = (_write_out(out, result, formats, c.title, c.source, lang, c.document)
+                   if out is not None else None)
     finish(json_text=to_json(result, c.title, c.source) + "\n" if json else None,
            summary=lambda: typeset(lang, print_summary, result, in_language(c.title, lang),
                                    in_language(c.source, lang), lang=lang, modes=modes),
            lines=([nm.name("plot_written", lang, path=plot)] if plot is not None else [])
            + ([written_line(out, written, lang)] if out is not None else []))
 
+
+def _solve(case: Path, plot: Optional[Path], t_end: Optional[float], lang: str):
+    """(the case, its AggregateResult): the case read (cases/aggregate.py), its chain analysed
+    (elastic/model.py; a progress bar on a terminal, a long --t-end takes seconds); a --plot
+    refused without a [motor], a result that is not finite refused (guard.not_finite)."""
+    from flywheel.cases.aggregate import load_aggregate_case, to_model
+    from flywheel.cli.guard import refuse_nonfinite
+    from flywheel.cli.progress import stage_bar
+    from flywheel.elastic.model import analyze
+    from flywheel.errors import InputError, Notice
+
+    c = load_aggregate_case(case)
+    ch, drive = to_model(c, str(case))
+    if plot is not None and drive is None:
+        raise InputError(Notice.of(
+            "plot_needs_motor", "--plot needs a [motor]: a chain without one has no motion in "
+            "time"))
+    with stage_bar(lang) as progress:
+        result = analyze(ch, drive, t_end=t_end, progress=progress)
+    # no Infinity/NaN printed, in the summary or the JSON (which has none): guard.not_finite
+    refuse_nonfinite(result.to_document(), who=str(case))
+    return c, result
 
 def _check_options(lang: str, t_end, report, out):
     """Refuse a language, --t-end, or --report (or --report without --out) beyond what is

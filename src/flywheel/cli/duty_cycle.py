@@ -6,53 +6,55 @@ hand the result to :mod:`flywheel.render.duty_cycle`. Heavy imports live inside 
 from __future__ import annotations
 
 from pathlib import Path
+from typing import Annotated
+
 import typer
 
 from flywheel.cli.options import Json, Lang, OutFolder, Reports
 from flywheel.io.text import in_language
 
 
-def duty_cycle_command(
-    case: Path = typer.Argument(..., help="Duty-cycle case file (TOML), see docs/duty-cycle.md."),
-    as_json: Json = False,
-    lang: Lang = "en",
-    out: OutFolder = None,
-    report: Reports = None,
-) -> None:
+DutyCase = Annotated[Path, typer.Argument(
+    help="Duty-cycle case file (TOML), see docs/duty-cycle.md.")]
+
+
+def duty_cycle_command(case: DutyCase, as_json: Json = False, lang: Lang = "en",
+                       out: OutFolder = None, report: Reports = None) -> None:
     """Duty-cycle machines (punching, riveting, shearing presses): the motor's power and torque,
     the energy the flywheel gives, its J and mass, the speed at the end of the operation, the
     time and angle to recover, the cycle."""
+    from flywheel.cases.duty_cycle import load_duty_case, solve_case
     from flywheel.cli.guard import check_lang, fail, guard, needs_out
-
-    check_lang(lang)
+    from flywheel.cli.outputs import finish, written_line
+    from flywheel.render.duty_cycle import print_summary, to_json
+    from flywheel.render.numbers import typeset
     from flywheel.render.report_folder import check_formats
 
+    check_lang(lang)
     formats = guard(check_formats, report)
     if report and out is None:
         fail(needs_out())
-    from flywheel.cases.duty_cycle import load_duty_case, solve_case
-
-    from flywheel.render.numbers import typeset
-
     c = guard(load_duty_case, case)
     result = guard(solve_case, c, str(case))
-    written = None
-    if out is not None:
-        from flywheel.cli.outputs import report_folder
-        from flywheel.render.duty_cycle import to_json
-        from flywheel.render.blocks import front
-        from flywheel.render.report_duty_cycle import build_duty_cycle_document
-
-        written = guard(report_folder, out, "duty-cycle", to_json(result, c.title, c.source) + "\n",
-                        None, None, lambda fig: front(typeset(
-                            lang, build_duty_cycle_document, result, in_language(c.title, lang),
-                            in_language(c.source, lang), lang), c.document),
-                        formats)
-    from flywheel.cli.outputs import finish, written_line
-    from flywheel.render.duty_cycle import print_summary, to_json
-
+    written = None if out is None else guard(_write_out, out, result, c, formats, lang)
     finish(warnings=result.warnings,
            json_text=to_json(result, c.title, c.source) + "\n" if as_json else None,
            summary=lambda: typeset(lang, print_summary, result, in_language(c.title, lang),
                                    in_language(c.source, lang), lang=lang),
            lines=[] if written is None else [written_line(out, written, lang)])
+
+
+def _write_out(out: Path, result, c, formats, lang: str) -> list[str]:
+    """The --out folder (cli/outputs.py, render/report_folder.py): summary.json and the report
+    with its title page from the case's [document] (no figure); returns the names written."""
+    from flywheel.cli.outputs import report_folder
+    from flywheel.render.blocks import front
+    from flywheel.render.duty_cycle import to_json
+    from flywheel.render.numbers import typeset
+    from flywheel.render.report_duty_cycle import build_duty_cycle_document
+
+    return report_folder(
+        out, "duty-cycle", to_json(result, c.title, c.source) + "\n", None, None,
+        lambda fig: front(typeset(lang, build_duty_cycle_document, result,
+                                  in_language(c.title, lang), in_language(c.source, lang), lang),
+                          c.document), formats)

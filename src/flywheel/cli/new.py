@@ -11,19 +11,21 @@ import errno
 import os
 import tempfile
 from pathlib import Path
+from typing import Annotated, Optional
 
 import typer
 
 from flywheel.cli.options import Lang, state
 
 
-def new_command(
-    kind: str = typer.Argument(..., help="What to start: slider-crank, v-compressor, four-bar, "
-                               "slotted-link, shaper, engine, task2, aggregate, duty-cycle."),
-    file: Path = typer.Argument(None, help="The case file to write (default: KIND.toml here); "
-                                "never written over if it exists."),
-    lang: Lang = "en",
-) -> None:
+Kind = Annotated[str, typer.Argument(
+    help="What to start: slider-crank, v-compressor, four-bar, slotted-link, shaper, engine, "
+    "task2, aggregate, duty-cycle.")]
+File = Annotated[Optional[Path], typer.Argument(
+    help="The case file to write (default: KIND.toml here); never written over if it exists.")]
+
+
+def new_command(kind: Kind, file: File = None, lang: Lang = "en") -> None:
     """Write a commented starter case of KIND that runs as written; its comments (in --lang)
     say which lines to change for your own variant."""
     from flywheel.cases.starter import KINDS, starter_text

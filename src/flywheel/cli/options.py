@@ -123,3 +123,4 @@ Group = Annotated[Optional[str], typer.Option(
     "--group", help="The student's group on the title page (over \\[document] group).")]
 Teacher = Annotated[Optional[str], typer.Option(
     "--teacher", help="The teacher on the title page (over \\[document] teacher).")]
+CaseFile = Annotated[Path, typer.Argument(help="Case file (TOML).")]

@@ -1,5 +1,6 @@
-"""The progress bar of the long computations (`run --transients`, `aggregate`): rich on a
-terminal, nothing at all when stderr is piped or redirected, or under ``--quiet``.
+"""The progress bars of the long computations (`run --transients`, `aggregate`, the figures,
+`variants`, the task sheets, `grade`): rich on a terminal, nothing at all when stderr is piped
+or redirected, or under ``--quiet``.
 
 The computation takes a plain callable ``progress(stage, fraction)`` (fractions 0 … 1, never
 decreasing within a stage) and knows nothing of rich; :func:`stage_bar` gives one.
@@ -36,10 +37,13 @@ def stage_bar(lang: str = "en") -> Iterator[Callable[[str, float], None]]:
 
 
 @contextmanager
-def count_bar(stage: str, lang: str = "en") -> Iterator[Callable[[int, int], None]]:
+def count_bar(stage: str, lang: str = "en", *, start: bool = False,
+              total: int | None = None) -> Iterator[Callable[[int, int], None]]:
     """``with count_bar("figures", lang) as progress: work(progress=progress)``: one bar of
     things done out of a total ("figures 7/22") on stderr while a terminal shows it, removed
-    when done; nothing on a pipe or under ``--quiet``. The stage's name in ``lang``."""
+    when done; nothing on a pipe or under ``--quiet``. The stage's name in ``lang``. The bar
+    appears at the first ``progress(done, total)``, or at once with ``start`` (``total``:
+    None while not known: the answer sheets before the folders are read)."""
     from rich.console import Console
     from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn
 
@@ -50,7 +54,7 @@ def count_bar(stage: str, lang: str = "en") -> Iterator[Callable[[int, int], Non
     with Progress(TextColumn("{task.description}"), BarColumn(), MofNCompleteColumn(),
                   console=console, transient=True,
                   disable=state.quiet or not console.is_terminal) as bar:
-        task = None
+        task = bar.add_task(stage_name(stage, lang), total=total) if start else None
 
         def progress(done: int, total: int) -> None:
             nonlocal task

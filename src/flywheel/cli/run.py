@@ -1,24 +1,68 @@
 """`flywheel run`, `flywheel check`, `flywheel schema`: the linkage (and tabulated) route.
 
-Thin: parse the options, call the library, hand results to renderers. Heavy imports live
-inside the functions.
+Thin: parse the options, call the library, hand results to renderers (cli/outputs.py). `run`'s
+own options are declared once below as ``Annotated`` aliases (the shared ones in
+cli/options.py). Heavy imports live inside the functions.
 """
 from __future__ import annotations
 
 import math
 from pathlib import Path
-from typing import Optional
+from typing import Annotated, Optional
 
 import typer
 
 from flywheel.cli.guard import _guard, check_lang, choice, fail
-from flywheel.cli.options import CsvStyle, Group, Json, Lang, Reports, Student, Teacher
+from flywheel.cli.options import (CaseFile, CsvStyle, Group, Json, Lang, Reports, Student,
+                                  Teacher)
 from flywheel.errors import Notice
 
+RunOut = Annotated[Optional[Path], typer.Option(
+    "--out", "-o", help="Output folder (default: out/<case name>); in an earlier output folder "
+    "only flywheel's own files are replaced, any other non-empty folder is refused.")]
+Points = Annotated[int, typer.Option("--points", help="Intervals of the φ grid over the cycle.")]
+At = Annotated[Optional[list[float]], typer.Option(
+    "--at", help="Report angle \\[deg]; repeatable (default: the case's output.at_deg, else 120).")]
+Plots = Annotated[str, typer.Option(
+    "--plots", help="Which figures to draw: all | record (the figures of a course project's "
+    "записка: kinematics, plans, reduced quantities, energy–mass diagram, ω(φ)) | none "
+    "(fastest).")]
+NoPlots = Annotated[bool, typer.Option("--no-plots", help="No figures: the same as --plots none.")]
+Transients = Annotated[bool, typer.Option(
+    "--transients", help="Also integrate the equation of motion in time: check ω(φ), start-up "
+    "(needs \\[motor]), run-down.")]
+Animate = Annotated[bool, typer.Option(
+    "--animate", help="Also write mechanism.gif: the linkage moving over one cycle with its "
+    "points' trajectories (72 frames).")]
+Motion = Annotated[Optional[str], typer.Option(
+    "--motion", help="Crank motion of the force analysis: true (ω(φ), ε(φ) of the dynamics) | "
+    "steady (ω_m, ε = 0); default: the case's force_analysis.motion, else true.")]
+FigureFormat = Annotated[str, typer.Option(
+    "--figure-format", help="Format of plots/*: png, svg or pdf (svg, pdf: written beside the "
+    "PNGs the reports embed).")]
+Dpi = Annotated[int, typer.Option(
+    "--dpi", help="Resolution of the plots [dots per inch], 50…600.")]
+Drawings = Annotated[bool, typer.Option(
+    "--drawings", help="Also write the project's drawing sheets (ЕСКД): "
+    "drawings/sheet1.{pdf,svg,dxf} (the law of motion), sheet2.* (the force analysis); "
+    "docs/drawings.md.")]
+SheetSize = Annotated[str, typer.Option(
+    "--sheet-size", help="Format of the --drawings sheets, landscape: A1, A2 or A3.")]
+Snapshot = Annotated[Optional[list[str]], typer.Option(
+    "--snapshot", help="PHI_DEG:RPM: the crank's ε at that angle and speed; repeatable.")]
+AtTravel = Annotated[Optional[list[str]], typer.Option(
+    "--at-travel", help="POINT:METRES: report the positions where slider point POINT is METRES "
+    "from its outer dead centre; repeatable.")]
+Roots = Annotated[Optional[list[str]], typer.Option(
+    "--roots", help="COLUMN: the crank angles where that table.csv column changes sign; "
+    "repeatable.")]
 
-def schema_command(results: bool = typer.Option(
-        False, "--results", help="The JSON Schema of a run's summary.json instead (docs/results.md)."),
-        lang: Lang = "en") -> None:
+
+SchemaResults = Annotated[bool, typer.Option(
+    "--results", help="The JSON Schema of a run's summary.json instead (docs/results.md).")]
+
+
+def schema_command(results: SchemaResults = False, lang: Lang = "en") -> None:
     """Print the JSON Schema of case files (for editors: completion and checking; --lang ru: the
     fields described in Russian), or with --results that of summary.json."""
     import json
@@ -36,8 +80,7 @@ def schema_command(results: bool = typer.Option(
     typer.echo(json.dumps(translated_schema(case_json_schema(), lang), indent=2, ensure_ascii=False))
 
 
-def check_command(case: Path = typer.Argument(..., help="Case file (TOML)."),
-                  lang: Lang = "en") -> None:
+def check_command(case: CaseFile, lang: Lang = "en") -> None:
     """Validate a case file and print what it describes; exit 0 if valid, 2 if not."""
     from flywheel.cases.run import load_case
     from flywheel.dynamics.check import check_case
@@ -48,54 +91,17 @@ def check_command(case: Path = typer.Argument(..., help="Case file (TOML)."),
     print_check(_guard(check_case, c, source=case, case=c), lang=lang)
 
 
-def run_command(
-    case: Path = typer.Argument(..., help="Case file (TOML)."),
-    out: Optional[Path] = typer.Option(None, "--out", "-o",
-                                       help="Output folder (default: out/<case name>); in an "
-                                       "earlier output folder only flywheel's own files are "
-                                       "replaced, any other non-empty folder is refused."),
-    points: int = typer.Option(3600, "--points", help="Intervals of the φ grid over the cycle."),
-    at: Optional[list[float]] = typer.Option(None, "--at", help="Report angle \\[deg]; repeatable "
-                                             "(default: the case's output.at_deg, else 120)."),
-    plots: str = typer.Option("all", "--plots", help="Which figures to draw: all | record (the "
-                              "figures of a course project's записка: kinematics, plans, reduced "
-                              "quantities, energy–mass diagram, ω(φ)) | none (fastest)."),
-    no_plots: bool = typer.Option(False, "--no-plots", help="No figures: the same as --plots none."),
-    as_json: Json = False,
-    lang: Lang = "en",
-    transients: bool = typer.Option(False, "--transients", help="Also integrate the equation of "
-                                    "motion in time: check ω(φ), start-up (needs \\[motor]), run-down."),
-    animate: bool = typer.Option(False, "--animate", help="Also write mechanism.gif: the linkage "
-                                 "moving over one cycle with its points' trajectories (72 frames)."),
-    motion: Optional[str] = typer.Option(None, "--motion", help="Crank motion of the force "
-                                         "analysis: true (ω(φ), ε(φ) of the dynamics) | steady "
-                                         "(ω_m, ε = 0); default: the case's force_analysis.motion, "
-                                         "else true."),
-    report: Reports = None,
-    csv_style: CsvStyle = "plain",
-    figure_format: str = typer.Option("png", "--figure-format", help="Format of plots/*: png, svg "
-                                      "or pdf (svg, pdf: written beside the PNGs the reports embed)."),
-    dpi: int = typer.Option(120, "--dpi", help="Resolution of the plots [dots per inch], 50…600."),
-    drawings: bool = typer.Option(False, "--drawings", help="Also write the project's drawing "
-                                  "sheets (ЕСКД): drawings/sheet1.{pdf,svg,dxf} (the law of "
-                                  "motion), sheet2.* (the force analysis); docs/drawings.md."),
-    sheet_size: str = typer.Option("A1", "--sheet-size", help="Format of the --drawings "
-                                   "sheets, landscape: A1, A2 or A3."),
-    snapshot: Optional[list[str]] = typer.Option(None, "--snapshot", help="PHI_DEG:RPM: the "
-                                                 "crank's ε at that angle and speed; repeatable."),
-    at_travel: Optional[list[str]] = typer.Option(None, "--at-travel", help="POINT:METRES: report "
-                                                  "the positions where slider point POINT is "
-                                                  "METRES from its outer dead centre; repeatable."),
-    roots: Optional[list[str]] = typer.Option(None, "--roots", help="COLUMN: the crank angles "
-                                              "where that table.csv column changes sign; "
-                                              "repeatable."),
-    student: Student = None,
-    group: Group = None,
-    teacher: Teacher = None,
-) -> None:
+def run_command(case: CaseFile, out: RunOut = None, points: Points = 3600, at: At = None,
+                plots: Plots = "all", no_plots: NoPlots = False, as_json: Json = False,
+                lang: Lang = "en", transients: Transients = False, animate: Animate = False,
+                motion: Motion = None, report: Reports = None, csv_style: CsvStyle = "plain",
+                figure_format: FigureFormat = "png", dpi: Dpi = 120, drawings: Drawings = False,
+                sheet_size: SheetSize = "A1", snapshot: Snapshot = None,
+                at_travel: AtTravel = None, roots: Roots = None, student: Student = None,
+                group: Group = None, teacher: Teacher = None) -> None:
     """Run the whole dynamic analysis of a case; write summary.json, table.csv, positions.csv,
     forces.csv, forces_positions.csv, report.md and plots/*.png to the output folder."""
-    from flywheel.cli.outputs import RunOutputs, finish, write_run, written_line
+    from flywheel.cli.outputs import RunOutputs, finish_run, write_run
 
     check_lang(lang)
     what = RunOutputs(formats=tuple(report or ["md", "html"]), csv_style=csv_style,
@@ -103,9 +109,20 @@ def run_command(
                       animate=animate, drawings=drawings, sheet_size=sheet_size,
                       title_page=(student, group, teacher))
     _check_options(what, at)
+    c = _load(case, animate)
+    out = out if out is not None else Path("out") / case.stem
+    if c.kinematics_only:               # the kinematics alone (cli/kinematics.py)
+        from flywheel.cli.kinematics import run_kinematics
+
+        return run_kinematics(c, case, out, points, at, what, as_json, lang, transients)
+    results = _solve(c, case, points, at, transients, motion, snapshot, at_travel, roots, lang)
+    finish_run(out, results, what, lang, write_run(out, results, c, what, lang), as_json)
+
+
+def _load(case: Path, animate: bool):
+    """The run case read from ``case`` (cases/run.py); ``--animate`` refused for a tabulated
+    case (no mechanism to animate)."""
     from flywheel.cases.run import load_case
-    from flywheel.dynamics.pipeline import analyze
-    from flywheel.render.tables import summary_json
 
     c = _guard(load_case, case)
     if animate and c.tabulated is not None:
@@ -113,17 +130,20 @@ def run_command(
             "animate_tabulated", "--animate: {case} gives its kinematics as a table "
             "([tabulated]): there is no mechanism to animate (allowed: a case with [crank] and "
             "[[dyads]])", case=str(case)))
-    if c.kinematics_only:               # the kinematics alone (cli/kinematics.py)
-        from flywheel.cli.kinematics import run_kinematics
+    return c
 
-        return run_kinematics(c, case, out, points, at, what.plots == "none", as_json, lang,
-                              transients, list(what.formats), what.csv_style, what.figure_format,
-                              what.dpi, what.animate)
+
+def _solve(c, case: Path, points: int, at, transients: bool, motion, snapshot, at_travel, roots,
+           lang: str):
+    """The results of the run case ``c`` (dynamics.analyze, a progress bar on a terminal), with
+    the textbook asks (dynamics/asks.py): --at-travel's angles added to the report angles,
+    --snapshot, --roots."""
+    from flywheel.cli.progress import stage_bar
     from flywheel.dynamics.asks import at_with_travel, with_asks
+    from flywheel.dynamics.pipeline import analyze
 
     travel = _guard(at_with_travel, c, at_travel)   # --at-travel: its angles are report angles
     at = travel.at_deg(at, c)
-    from flywheel.cli.progress import stage_bar
 
     def analyze_with_bar():             # a bar on a terminal only (the transients take seconds),
         with stage_bar(lang) as progress:   # gone before an error line is printed
@@ -131,17 +151,7 @@ def run_command(
                            progress=progress)
 
     results = _guard(analyze_with_bar, source=case, case=c)
-    results = _guard(with_asks, results, c, snapshot, travel.found, roots)   # textbook asks
-    out = out if out is not None else Path("out") / case.stem
-    text_json = summary_json(results)
-    write_run(out, results, c, what, lang, text_json)
-    from flywheel.render.numbers import typeset
-    from flywheel.render.summary import print_summary
-
-    finish(warnings=results.warnings, json_text=text_json if as_json else None,
-           summary=lambda: typeset(lang, print_summary, results, lang=lang),
-           lines=[written_line(out, what.names(), lang)])
-
+    return _guard(with_asks, results, c, snapshot, travel.found, roots)   # textbook asks
 
 def _check_options(what, at) -> None:
     """Refuse an option's value outside its choices or range: one error line, exit 2."""

@@ -13,7 +13,7 @@ from __future__ import annotations
 from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
-from typing import List, Optional
+from typing import Annotated, List, Optional
 
 import typer
 
@@ -34,59 +34,56 @@ def _check_at(at, cycle_deg: float) -> None:
                 cycle=cycle_deg))
 
 
-def task2_command(
-    profile: Optional[str] = typer.Option(
-        None, "--profile",
-        help="The resistance graph of the textbook task «Задача 2»: triangle (π/2…3π/2, peak in the middle) or rectangle "
-             "(π/2…π) (default triangle)."),
-    md: Optional[float] = typer.Option(None, "--md", help="Constant driving moment M_D [N·m] "
-                                       "(default 15)."),
-    j: Optional[float] = typer.Option(None, "--j", help="Reduced moment of inertia J "
-                                      "\\[kg·m²] (default 12)."),
-    omega0: Optional[float] = typer.Option(None, "--omega0", help="ω at φ = 0 \\[rad/s] "
-                                           "(default 200)."),
-    start: Optional[float] = typer.Option(None, "--from", help="Start of the resistance "
-                                          "graph \\[deg] (default 90)."),
-    end: Optional[float] = typer.Option(None, "--to", help="End of the resistance graph \\[deg] "
-                                        "(default 270 triangle, 180 rectangle)."),
-    mc: Optional[float] = typer.Option(None, "--mc", help="Peak of the resistance [N·m] instead "
-                                       "of the balance (the motion may not be steady)."),
-    delta: Optional[float] = typer.Option(None, "--delta", help="Ask for the J that gives this "
-                                          "δ at the same mean speed."),
-    case: Optional[Path] = typer.Option(None, "--case", help="A task-2 case file (TOML), "
-                                        "see docs/task2.md; it gives all the data, so it takes "
-                                        "none of the options above."),
-    at: Optional[List[float]] = typer.Option(
-        None, "--at", help="Report ω, ε and the time t at this crank angle \\[deg] (repeatable; "
-                           "added to a case's at_deg). Implies --epsilon."),
-    epsilon: bool = typer.Option(False, "--epsilon", help="Also show ε(φ) = (M_D − M_C)/J (its "
-                                 "extremes), the cycle time and the phases of rising and falling "
-                                 "speed in the summary (the JSON always has them)."),
-    plot: Optional[Path] = typer.Option(None, "--plot", help="Write a plot of M_D, M_C, A, "
-                                        "ω(φ) and ε(φ) to this image file (.png, .svg, .pdf)."),
-    as_json: Json = False,
-    lang: Lang = "en",
-    out: OutFolder = None,
-    report: Reports = None,
-) -> None:
+Profile = Annotated[Optional[str], typer.Option(
+    "--profile", help="The resistance graph of the textbook task «Задача 2»: triangle (π/2…3π/2, "
+    "peak in the middle) or rectangle (π/2…π) (default triangle).")]
+Md = Annotated[Optional[float], typer.Option(
+    "--md", help="Constant driving moment M_D [N·m] (default 15).")]
+J = Annotated[Optional[float], typer.Option(
+    "--j", help="Reduced moment of inertia J \\[kg·m²] (default 12).")]
+Omega0 = Annotated[Optional[float], typer.Option(
+    "--omega0", help="ω at φ = 0 \\[rad/s] (default 200).")]
+From = Annotated[Optional[float], typer.Option(
+    "--from", help="Start of the resistance graph \\[deg] (default 90).")]
+To = Annotated[Optional[float], typer.Option(
+    "--to", help="End of the resistance graph \\[deg] (default 270 triangle, 180 rectangle).")]
+Mc = Annotated[Optional[float], typer.Option(
+    "--mc", help="Peak of the resistance [N·m] instead of the balance (the motion may not be "
+    "steady).")]
+Delta = Annotated[Optional[float], typer.Option(
+    "--delta", help="Ask for the J that gives this δ at the same mean speed.")]
+Task2Case = Annotated[Optional[Path], typer.Option(
+    "--case", help="A task-2 case file (TOML), see docs/task2.md; it gives all the data, so it "
+    "takes none of the options above.")]
+At = Annotated[Optional[List[float]], typer.Option(
+    "--at", help="Report ω, ε and the time t at this crank angle \\[deg] (repeatable; added to a "
+    "case's at_deg). Implies --epsilon.")]
+Epsilon = Annotated[bool, typer.Option(
+    "--epsilon", help="Also show ε(φ) = (M_D − M_C)/J (its extremes), the cycle time and the "
+    "phases of rising and falling speed in the summary (the JSON always has them).")]
+Plot = Annotated[Optional[Path], typer.Option(
+    "--plot", help="Write a plot of M_D, M_C, A, ω(φ) and ε(φ) to this image file (.png, .svg, "
+    ".pdf).")]
+
+
+def task2_command(profile: Profile = None, md: Md = None, j: J = None, omega0: Omega0 = None,
+                  start: From = None, end: To = None, mc: Mc = None, delta: Delta = None,
+                  case: Task2Case = None, at: At = None, epsilon: Epsilon = False,
+                  plot: Plot = None, as_json: Json = False, lang: Lang = "en",
+                  out: OutFolder = None, report: Reports = None) -> None:
     """Task 2: ω_max, ω_min, ω_ср and δ of a machine with constant J under given M_D(φ), M_C(φ)."""
-    from flywheel.cli.guard import check_lang, guarded, needs_out, solve_finite, write_plot
-    from flywheel.errors import InputError, Notice
+    from flywheel.cli.guard import check_lang, guarded, solve_finite, write_plot
+    from flywheel.cli.outputs import finish, written_line
+    from flywheel.render import nomenclature as nm
+    from flywheel.render.numbers import typeset
+    from flywheel.render.task2 import print_summary, to_json
 
     given = [(name, v) for name, v in (("--md", md), ("--j", j), ("--omega0", omega0),
                                        ("--from", start), ("--to", end), ("--mc", mc),
                                        ("--delta", delta)) if v is not None]
     with guarded():
         check_lang(lang)
-        if plot is not None and plot.is_dir():
-            raise InputError(Notice.of(
-                "plot_is_a_folder", "--plot {plot}: is a folder, expected an image file",
-                plot=str(plot)))
-        from flywheel.render.report_folder import check_formats
-
-        formats = check_formats(report)
-        if report and out is None:
-            raise InputError(needs_out())
+        formats = _check_options(plot, report, out)
         job = (_from_case(case, at, profile, given, lang) if case is not None else
                _from_options(profile, given, dict(md=md, j=j, omega0=omega0, start=start,
                                                   end=end, mc=mc, delta=delta), at, lang))
@@ -95,19 +92,29 @@ def task2_command(
             from flywheel.render.task2 import plot as draw
 
             write_plot(plot, lambda tmp: draw(result, tmp, job.title, lang))
-        if out is not None:
-            written = _write_out(out, result, formats, job, lang)
-    from flywheel.cli.outputs import finish, written_line
-    from flywheel.render import nomenclature as nm
-    from flywheel.render.numbers import typeset
-    from flywheel.render.task2 import print_summary, to_json
-
+        written = _write_out(out, result, formats, job, lang) if out is not None else None
     finish(json_text=to_json(result, job.doc_title, job.doc_source) + "\n" if as_json else None,
            summary=lambda: typeset(lang, print_summary, result, job.title, job.source, lang=lang,
                                    motion=epsilon or bool(at)),
            lines=([nm.name("plot_written", lang, path=plot)] if plot is not None else [])
            + ([written_line(out, written, lang)] if out is not None else []))
 
+
+def _check_options(plot: Optional[Path], report, out: Optional[Path]) -> list[str]:
+    """Refuse a --plot that names a folder, a --report format not known, or --report without
+    --out (an InputError); return the report formats."""
+    from flywheel.cli.guard import needs_out
+    from flywheel.errors import InputError, Notice
+    from flywheel.render.report_folder import check_formats
+
+    if plot is not None and plot.is_dir():
+        raise InputError(Notice.of(
+            "plot_is_a_folder", "--plot {plot}: is a folder, expected an image file",
+            plot=str(plot)))
+    formats = check_formats(report)
+    if report and out is None:
+        raise InputError(needs_out())
+    return formats
 
 @dataclass(frozen=True)
 class _Job:

@@ -20,7 +20,7 @@ from __future__ import annotations
 import csv
 import io
 import re
-from collections.abc import Callable, Iterable, Sequence
+from collections.abc import Callable, Iterable, Iterator, Sequence
 
 from flywheel.render.numbers import excel_ru
 
@@ -73,3 +73,21 @@ def restyle(text: str, style: str) -> str:
     rows = [[_Spelled(c) if _NUMBER.fullmatch(c) else c for c in row]
             for row in csv.reader(io.StringIO(text))]
     return csv_text(rows, style, fmt=lambda x: getattr(x, "text", repr(x)))
+
+
+def _number_or_text(cell: str):
+    """A CSV cell back as a float if it is one (for the decimal commas of excel-ru)."""
+    try:
+        return float(cell) if cell.strip() and cell.strip()[0] in "-0123456789" else cell
+    except ValueError:
+        return cell
+
+
+def excel_ru_pieces(pieces: Iterable[str]) -> Iterator[str]:
+    """Pieces of one plain CSV text (``flywheel grade --out``) restyled for a Russian Excel
+    (';', decimal commas, a BOM at the start only), piece by piece."""
+    for i, text in enumerate(pieces):
+        rows = list(csv.reader(io.StringIO(text)))
+        out = csv_text([[_number_or_text(c) for c in row] for row in rows], "excel-ru",
+                       fmt=lambda x: f"{x!r}")
+        yield out if i == 0 else out.removeprefix("\ufeff")

@@ -831,6 +831,21 @@ def grade(key: Key, paths, tolerance: float | None = None, progress=None,
                   tuple(problems), tuple(map(str, files)), carried_share)
 
 
+def check_graded(report: Report, paths) -> None:
+    """Refuse a report with no student graded (an InputError: the first problem, or no
+    filled-in row in ``paths``), so that nothing is written."""
+    if report.students:
+        return
+    if report.problems:
+        raise InputError(Notice.of(
+            "nothing_graded", "nothing could be graded ({n} problem(s); the first: {detail})",
+            n=len(report.problems), detail=report.problems[0].said()))
+    files = ", ".join(report.files) or ", ".join(map(str, paths))
+    raise InputError(Notice.of(
+        "no_student_rows", "{files}: nothing could be graded: no filled-in student rows (a row "
+        "needs a student name and a variant)", files=files))
+
+
 # the report as data (``--json``, ``--out``): teaching/report_data.py, re-exported here
 from flywheel.teaching.report_data import (  # noqa: E402,F401
     CSV_ROWS_PER_PIECE, report_csv, report_csv_pieces, report_dict, report_json)
