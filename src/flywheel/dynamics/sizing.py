@@ -175,6 +175,14 @@ class RimDesign:
         """The width under the plain rim's name [m]."""
         return self.width
 
+    def at_top_speed(self, omega_max: float) -> "RimDesign":
+        """This rim with its hoop stress at the top speed ``omega_max`` [rad/s] of its shaft,
+        ``stress_at_omega_max`` = ρ·(ω_max·D_mean/2)² [Pa] (thin rotating ring, as ``stress``)."""
+        from dataclasses import replace
+
+        v_top = omega_max * self.D_mean / 2
+        return replace(self, stress_at_omega_max=self.density * v_top ** 2)
+
     def as_dict(self) -> dict:
         """summary.json's results.flywheel_rim (and ``task2 --json``'s flywheel_rim): the
         contract keys D_mean, thickness, width, mass, rim_speed, stress, share, then the outer
@@ -261,7 +269,7 @@ def design_rim(J: float, omega: float, density: float, allowable_stress: float, 
                 f"{allowable_stress / PA_PER_MPA:.6g} MPa, whatever the diameter (allowed: at most "
                 f"√(σ/ρ) = {v_max:.6g} m/s for ρ = {density:g} kg/m³)")
         v, speed_from = speed, "given"
-    D = 2 * v / omega
+    D = diameter if diameter is not None else 2 * v / omega    # a given diameter kept exact
     R = D / 2
     J_rim = share * max(J, 0.0)
     m = J_rim / R ** 2

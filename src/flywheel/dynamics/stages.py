@@ -235,8 +235,7 @@ def with_rim_speeds(sz: SizingResult, mo: MotionResult, fw) -> SizingResult:
                 sigma=fw.sigma / PA_PER_MPA, rho=fw.rho))
     designed = sz.rim_design
     if designed is not None:          # its hoop stress at ω_max, ρ·(ω_max·i·D_mean/2)²
-        v_top = mo.omega_max * sz.speed_ratio * designed.D_mean / 2
-        designed = replace(designed, stress_at_omega_max=designed.density * v_top ** 2)
+        designed = designed.at_top_speed(mo.omega_max * sz.speed_ratio)
         ratio = designed.thickness / designed.D_mean
         if ratio < sizing.THIN_RIM:
             v_aim = sizing.rim_speed_for_thickness(designed)
