@@ -92,6 +92,20 @@ def test_a_rim_at_the_largest_speed_the_stress_allows():
     assert r.radius is None and r.mass is None       # no radius of gyration given: k unknown
 
 
+def test_a_hoop_is_warned_about_as_run_warns_and_the_hinted_speed_gives_the_aim():
+    """Steel at √(σ/ρ) = 50.6 m/s on a 212.5 rpm shaft: D_mean = 4.55 m, t = 11 mm (t/D =
+    0.0024): run's warning, whose hinted rim speed gives t/D_mean = 0.05 when given back."""
+    r = solve_data(_press({"share": 0.9}))
+    assert r.rim.thickness / r.rim.D_mean < 0.01
+    (w,) = [w for w in r.warnings if getattr(w, "code", "") == "rim_thin"]
+    v_aim = float(w.split("about ")[1].split(" m/s")[0])
+    again = solve_data(_press({"share": 0.9, "speed": v_aim})).rim
+    # v_aim is printed to 3 digits (±0.35 %), t/D ∝ v^(−5/2): within 1 %
+    assert again.thickness / again.D_mean == pytest.approx(0.05, rel=1e-2)
+    assert not [w for w in solve_data(_press({"share": 0.9, "speed": v_aim})).warnings
+                if getattr(w, "code", "") == "rim_thin"]
+
+
 def test_a_rim_of_a_given_speed_and_thickness_to_radius_with_a_radius_of_gyration():
     r = solve_data(_press({"speed": 20.0, "thickness_to_radius": 0.1, "share": 1.0},
                           radius_of_gyration=0.5))

@@ -507,8 +507,9 @@ def _with_rim(fw: Flywheel, result: DutyCycleResult, source: str) -> DutyCycleRe
     """The result with the rim of ``[flywheel.rim]`` designed for its J at its mean speed ω_ср,
     as `run` designs it (:meth:`flywheel.cases.rim.RimSpec.design`,
     :func:`flywheel.dynamics.sizing.design_rim`), and its hoop stress at ω_max
-    (:meth:`flywheel.dynamics.sizing.RimDesign.at_top_speed`); a rim that cannot be made (no hole
-    left, a diameter above the allowable stress) is one CaseFileError line."""
+    (:meth:`flywheel.dynamics.sizing.RimDesign.at_top_speed`), and run's warning of a rim too
+    thin for its diameter (:func:`flywheel.dynamics.sizing.thin_rim_notice`); a rim that cannot
+    be made (no hole left, a diameter above the allowable stress) is one CaseFileError line."""
     from dataclasses import replace
 
     try:
@@ -517,4 +518,8 @@ def _with_rim(fw: Flywheel, result: DutyCycleResult, source: str) -> DutyCycleRe
         raise CaseFileError(led(f"{source}: ", Notice.of(
             "dc_rim_flywheel_J", "{detail} (the flywheel's J = {J:.6g} kg·m² at ω_m = "
             "{omega:.6g} rad/s)", detail=said(exc), J=result.J, omega=result.omega_mean))) from None
-    return replace(result, rim=rim.at_top_speed(result.omega_max))
+    from flywheel.dynamics.sizing import thin_rim_notice
+
+    thin = thin_rim_notice(rim)                   # a hoop, not a rim: warned as `run` warns
+    return replace(result, rim=rim.at_top_speed(result.omega_max),
+                   warnings=result.warnings + (() if thin is None else (thin,)))

@@ -199,6 +199,28 @@ THIN_RIM = 0.01
 THIN_RIM_AIM = 0.05
 
 
+def thin_rim_notice(rim: RimDesign):
+    """The warning (a Notice) for a designed rim thinner than :data:`THIN_RIM` of its mean
+    diameter — a hoop, not a flywheel rim — with the rim speed that gives t/D_mean =
+    :data:`THIN_RIM_AIM` (:func:`rim_speed_for_thickness`); None for a rim thick enough."""
+    from flywheel.errors import Notice
+
+    ratio = rim.thickness / rim.D_mean
+    if not ratio < THIN_RIM:
+        return None
+    v_aim = rim_speed_for_thickness(rim)
+    return Notice.of(
+        "rim_thin", "flywheel.rim: the designed rim is {t_mm:.3g} mm thick on a mean "
+        "diameter of {D:.4g} m (t/D = {ratio:.2g}, below {least:g}): a hoop, not a "
+        "flywheel rim; its rim speed {v:.4g} m/s ({speed_source}) is too high for a shaft "
+        "this slow: give flywheel.rim.speed (about {v_aim:.3g} m/s gives t/D = {aim:g})",
+        t_mm=rim.thickness * 1e3, D=rim.D_mean, ratio=ratio,
+        least=THIN_RIM, v=rim.rim_speed, given=rim.speed_from == "given",
+        v_aim=v_aim, aim=THIN_RIM_AIM,
+        speed_source=("given" if rim.speed_from == "given"
+                      else "the largest the allowable stress allows"))
+
+
 def rim_speed_for_thickness(rim: RimDesign, aim: float = THIN_RIM_AIM) -> float:
     """The rim speed [m/s] at which :func:`design_rim`'s rim (same J, share, ω, ρ and the same
     width rule) comes out with t/D_mean = ``aim``.
