@@ -505,6 +505,38 @@ def test_natural_spline_matches_scipy():
                        rtol=0, atol=1e-13)
 
 
+@pytest.mark.parametrize("seed", range(6))
+def test_pchip_is_scipys_to_the_last_bit(seed):
+    """loads.pchip (numpy, so a run does not import scipy.interpolate) against scipy's
+    PchipInterpolator: the compressor's indicator table, and random tables with flat parts,
+    sign changes and uneven spacing, at random points and at the nodes — equal, not close."""
+    from scipy.interpolate import PchipInterpolator
+
+    rng = np.random.default_rng(seed)
+    tables = [(np.linspace(0, 1, 11), np.array([1, 1, 1, .58, .46, .28, .26, .16, .08, .04, 0]))]
+    for n in (2, 3, 5, 12):
+        x = np.cumsum(rng.uniform(0.05, 1.0, n))
+        y = rng.normal(size=n) * rng.choice([1.0, 0.0], n, p=[0.8, 0.2])
+        tables.append((x, y))
+    for x, y in tables:
+        q = np.concatenate([rng.uniform(x[0], x[-1], 500), x])
+        assert np.array_equal(loads.pchip(x, y, q), PchipInterpolator(x, y)(q))
+
+
+def test_a_run_of_the_compressor_imports_no_scipy(tmp_path):
+    """Its indicator tables are PCHIP: interpolated by loads.pchip, not scipy (0.3 – 0.7 s)."""
+    import subprocess
+    import sys
+
+    code = ("import sys; from flywheel.cases.run import load_case; "
+            "from flywheel.dynamics.pipeline import analyze; "
+            f"analyze(load_case({str(CASES / 'compressor.toml')!r})); "
+            "print(sorted(m for m in sys.modules if m.split('.')[0] == 'scipy'))")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                         check=True).stdout.strip()
+    assert out == "[]"
+
+
 def test_negative_pressure_warning(printed):
     assert any("negative pressure" in w for w in printed.warnings)
 

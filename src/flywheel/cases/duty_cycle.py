@@ -18,9 +18,10 @@ from pydantic import AfterValidator, Field
 from flywheel.duty_cycle import work as wk
 from flywheel.duty_cycle.solve import (DutyCycle, DutyCycleError, DutyCycleResult, Work,
                                        nonfinite, solve)
-from flywheel.errors import CaseFileError, Notice, led, said
+from flywheel.errors import CaseFileError, InputError, Notice, led, said
 from flywheel.io.schema import TitleText, title_field, FieldError, StrictModel, describe, load, pick, text_field, validate
 from flywheel.cases.document import DocumentSpec
+from flywheel.cases.rim import MATERIALS, Density, Material, RimSpec, Stress
 from flywheel.units import RAD_S_PER_RPM
 
 
@@ -143,6 +144,34 @@ class Flywheel(StrictModel):
     radius_of_gyration: Length = Field(None, description="k: J = m·k² [m]")
     rim_radius: Length = Field(None, description="mean radius of a rim (k = R) [m]")
     rim_diameter: Length = Field(None, description="mean diameter of a rim (k = D/2) [m]")
+    material: Material | None = Field(
+        None, description="for [flywheel.rim]: sets density (7800 / 7200 kg/m³) and allowable "
+                          "rim stress (20 / 7 MPa) unless given; default steel")
+    density: Density | None = Field(None, description="for [flywheel.rim]: material density ρ "
+                                                      "[kg/m³]")
+    allowable_stress: Stress | None = Field(
+        None, description="for [flywheel.rim]: allowable hoop stress of the rim σ_allow [Pa]")
+    rim: RimSpec | None = Field(
+        None, description="design the rim as `run` does (docs/case-format.md, [flywheel.rim]): "
+                          "its mean diameter (given, or from the rim speed), share of J, section; "
+                          "the result's flywheel_rim")
+
+    @property
+    def rho(self) -> float:
+        """ρ [kg/m³] of the rim: given, or the material's."""
+        return self.density if self.density is not None else MATERIALS[self.material or "steel"][0]
+
+    @property
+    def sigma(self) -> float:
+        """σ_allow [Pa] of the rim: given, or the material's."""
+        return (self.allowable_stress if self.allowable_stress is not None
+                else MATERIALS[self.material or "steel"][1])
+
+    @property
+    def material_named(self) -> str:
+        """The material as a message names it."""
+        return (self.material or "steel") if self.density is None and \
+            self.allowable_stress is None else "the given material"
 
 
 class DutyCase(StrictModel):
@@ -160,6 +189,7 @@ class DutyCase(StrictModel):
 
 TABLES = {"operation": Operation, "cycle": Cycle, "motor": Motor, "flywheel": Flywheel,
           "document": DocumentSpec}
+NESTED = {("flywheel", "rim"): RimSpec}
 
 
 def _given(model, keys) -> list[str]:
@@ -259,6 +289,24 @@ def _check(c: DutyCase) -> None:
     # the flywheel
     radius = _one_of("flywheel", fw, ("radius_of_gyration", "rim_radius", "rim_diameter"),
                      required=False)
+    if fw.rim is None:
+        for k in ("material", "density", "allowable_stress"):
+            if getattr(fw, k) is not None:
+                raise FieldError(f"flywheel.{k}", Notice.of(
+                    "dc_material_needs_rim", "goes with [flywheel.rim]: the material sizes the "
+                    "designed rim"))
+    else:
+        if radius in ("rim_radius", "rim_diameter"):
+            raise FieldError(f"flywheel.{radius}", Notice.of(
+                "dc_rim_diameter_once", "with [flywheel.rim] the rim's mean diameter is "
+                "flywheel.rim.diameter (or follows from flywheel.rim.speed): give it there"))
+        if radius is None and fw.rim.diameter is not None:
+            radius = "rim.diameter"               # k = D_mean/2, as rim_diameter gives it
+        if fw.rim.speed is not None:
+            try:
+                fw.rim.check_speed(fw.rho, fw.sigma, fw.material_named)
+            except FieldError as exc:
+                raise FieldError(("flywheel", *exc.loc), said(exc)) from None
     if fw.J is not None and fw.mass is not None:
         raise FieldError("flywheel", Notice.of("duty_J_or_mass", "give J or mass, not both"))
     # the speeds
@@ -305,6 +353,11 @@ def _check(c: DutyCase) -> None:
                 raise FieldError(loc, Notice.of(
                     "dc_shaft_speed", "needs the shaft's speed: with speeds at the radius (m/s) "
                     "give the flywheel's radius too, or the speeds in rpm"))
+    if linear and radius is None and fw.rim is not None:
+        raise FieldError("flywheel.rim", Notice.of(
+            "dc_rim_shaft_speed", "needs the shaft's speed (D_mean = 2·v/ω): with speeds at the "
+            "radius (m/s) give flywheel.rim.diameter or radius_of_gyration too, or the speeds in "
+            "rpm"))
 
 
 def _check_speed_pair(sp: Flywheel, speeds: list[str], flucts: list[str]) -> None:
@@ -339,7 +392,7 @@ def _describe(err: dict) -> str:
     def allowed(parent: tuple) -> list[str]:
         if not parent:
             return list(DutyCase.model_fields)
-        model = TABLES.get(parent[0]) if len(parent) == 1 else None
+        model = TABLES.get(parent[0]) if len(parent) == 1 else NESTED.get(tuple(parent))
         return list(model.model_fields) if model else []
 
     return describe(err, allowed)
@@ -386,7 +439,8 @@ def to_duty_cycle(c: DutyCase) -> DutyCycle:
     work = _work(op)
     radius = (fw.radius_of_gyration if fw.radius_of_gyration is not None else
               fw.rim_radius if fw.rim_radius is not None else
-              None if fw.rim_diameter is None else fw.rim_diameter / 2)
+              fw.rim_diameter / 2 if fw.rim_diameter is not None else
+              fw.rim.diameter / 2 if fw.rim is not None and fw.rim.diameter is not None else None)
     speeds = {SPEEDS[k][0]: getattr(sp, k) for k in _given(sp, SPEEDS)}
     unit = {SPEEDS[k][1] for k in _given(sp, SPEEDS)}.pop()
     if unit == "rpm":
@@ -439,9 +493,33 @@ def solve_case(c: DutyCase, source: str = "<case>") -> DutyCycleResult:
         raise CaseFileError(led(f"{source}: ", Notice.of(
             "dc_double_precision", "the values are too large or too small for double precision "
             "({detail})", detail=str(exc)))) from None
+    if c.flywheel.rim is not None:
+        result = _with_rim(c.flywheel, result, source)
     bad = nonfinite(result)
     if bad is not None:
         raise CaseFileError(led(f"{source}: ", Notice.of(
             "dc_result_not_finite", "{result} is not a finite number: the values are too large or "
             "too small for double precision", result=bad)))
     return result
+
+
+def _with_rim(fw: Flywheel, result: DutyCycleResult, source: str) -> DutyCycleResult:
+    """The result with the rim of ``[flywheel.rim]`` designed for its J at its mean speed ω_ср,
+    as `run` designs it (:meth:`flywheel.cases.rim.RimSpec.design`,
+    :func:`flywheel.dynamics.sizing.design_rim`), and its hoop stress at ω_max
+    (:meth:`flywheel.dynamics.sizing.RimDesign.at_top_speed`), and run's warning of a rim too
+    thin for its diameter (:func:`flywheel.dynamics.sizing.thin_rim_notice`); a rim that cannot
+    be made (no hole left, a diameter above the allowable stress) is one CaseFileError line."""
+    from dataclasses import replace
+
+    try:
+        rim = fw.rim.design(result.J, result.omega_mean, fw.rho, fw.sigma)
+    except InputError as exc:
+        raise CaseFileError(led(f"{source}: ", Notice.of(
+            "dc_rim_flywheel_J", "{detail} (the flywheel's J = {J:.6g} kg·m² at ω_m = "
+            "{omega:.6g} rad/s)", detail=said(exc), J=result.J, omega=result.omega_mean))) from None
+    from flywheel.dynamics.sizing import thin_rim_notice
+
+    thin = thin_rim_notice(rim)                   # a hoop, not a rim: warned as `run` warns
+    return replace(result, rim=rim.at_top_speed(result.omega_max),
+                   warnings=result.warnings + (() if thin is None else (thin,)))

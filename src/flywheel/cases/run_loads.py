@@ -8,7 +8,7 @@
   magnitude or a table against the crank angle φ or against the point's travel along its path;
 - ``[[couples]]``: a couple on a link, constant or a table against φ;
 - ``[[springs]]``: a linear spring between two points, a torsional spring on a link about its
-  joint with the frame.
+  joint with the frame or between two links about their common joint.
 
 Every load of the first two may act over a part of the cycle only, ``phi_range_deg``. The
 checks across tables (names, points, links, ranges against the cycle) are :func:`check_loads`,
@@ -165,8 +165,9 @@ class CoupleSpec(StrictModel):
 
 
 class SpringSpec(StrictModel):
-    """A spring: linear between two named points (U = ½·c·(L − L0)²) or torsional on a link
-    about its joint with the frame (U = ½·c·(θ − θ0)²)."""
+    """A spring: linear between two named points (U = ½·c·(L − L0)²), torsional on a link
+    about its joint with the frame (U = ½·c·(θ − θ0)²) or torsional between two links about
+    their common joint (U = ½·c·(θ_a − θ_b − θ0)²)."""
 
     name: Name
     title: TitleText = title_field(description="its name in the documents and figures: a string, or { ru = …, en = … } "
@@ -179,15 +180,20 @@ class SpringSpec(StrictModel):
                                                     "> 0 in tension, < 0 in compression")
     preload_at_deg: Angle = Field(0.0, description="linear: the crank angle φ of the preload [deg]")
     link: Name | None = Field(None, description="torsional: the link it turns")
-    about: Name | None = Field(None, description="torsional: the link's fixed pivot")
-    free_angle_deg: Angle | None = Field(None, description="torsional: the link's angle θ where the "
-                                                           "spring is free [deg]")
+    links: Annotated[tuple[Name, Name], Strict(False)] | None = Field(
+        None, description="torsional between two links (instead of link): [a, b], the two links "
+                          "it joins at about; it acts on their relative angle θ_a − θ_b")
+    about: Name | None = Field(None, description="torsional: the link's fixed pivot, or the common "
+                                                 "joint of the two links")
+    free_angle_deg: Angle | None = Field(None, description="torsional: the link's angle θ (between "
+                                                           "two links: θ_a − θ_b) where the spring "
+                                                           "is free [deg]")
 
     @model_validator(mode="after")
     def _forms(self):
         set_ = self.model_fields_set
         if self.kind == "linear":
-            mine, other = ("points",), ("link", "about", "free_angle_deg")
+            mine, other = ("points",), ("link", "links", "about", "free_angle_deg")
             if self.points is None:
                 raise FieldError(("points",), Notice.of(
                     "spring_points_missing", "missing: a linear spring needs points = [P, Q]"))
@@ -203,13 +209,22 @@ class SpringSpec(StrictModel):
                 raise FieldError(("preload_at_deg",), Notice.of(
                     "spring_at_needs_preload", "goes with preload"))
         else:
-            mine, other = ("link", "about", "free_angle_deg"), ("points", "free_length", "preload",
-                                                               "preload_at_deg")
+            between = self.links is not None
+            if between and self.link is not None:
+                raise FieldError(("links",), Notice.of(
+                    "spring_link_or_links", "give link (a spring to the frame) or links (a "
+                    "spring between two links), not both"))
+            mine = ("links" if between else "link", "about", "free_angle_deg")
+            other = ("points", "free_length", "preload", "preload_at_deg")
             for key in mine:
                 if getattr(self, key) is None:
                     raise FieldError((key,), Notice.of(
-                        "spring_torsional_missing", "missing: a torsional spring needs link, "
-                        "about and free_angle_deg"))
+                        "spring_torsional_missing", "missing: a torsional spring needs link (or "
+                        "links), about and free_angle_deg"))
+            if between and self.links[0] == self.links[1]:
+                raise FieldError(("links",), Notice.of(
+                    "spring_same_link", "both links are {link!r} (allowed: two different links "
+                    "joined at about)", link=self.links[0]))
         for key in other:
             if key in set_:
                 raise FieldError((key,), Notice.of(
@@ -289,6 +304,16 @@ def check_loads(case, points: set[str], links: set[str], on: dict[str, set[str]]
                 raise FieldError(("springs", i, "points"), Notice.of(
                     "spring_both_fixed", "both ends are points of the frame: the spring never "
                     "changes length (allowed: at least one moving point)"))
+        elif s.links is not None:           # between two links, at their common joint
+            for k, lk in enumerate(s.links):
+                link_known(("springs", i, "links", k), lk)
+            point_known(("springs", i, "about"), s.about)
+            a, b = s.links
+            if s.about not in on.get(a, set()) & on.get(b, set()):
+                raise FieldError(("springs", i, "about"), Notice.of(
+                    "spring_about_joint", "{about!r} is not a joint of links {a} and {b} "
+                    "(allowed: a point on both: {joints})", about=s.about, a=a, b=b,
+                    joints=", ".join(sorted(on.get(a, set()) & on.get(b, set()))) or "—"))
         else:
             link_known(("springs", i, "link"), s.link)
             point_known(("springs", i, "about"), s.about)

@@ -137,7 +137,9 @@ class DutyCycleResult:
     ω_max with the motor's torque), ``idle_*`` (at ω_max, the motor idle), ``cycle_*``;
     ``operation_share`` = t_op/T_c; ``operation_moment`` M_op = E/Δφ_op [N·m];
     ``revolutions_per_operation`` [-]; ``operations_per_hour`` [1/h].
-    ``checks``: (name, residual [J or s]) of the identities; ``warnings``: what to know."""
+    ``checks``: (name, residual [J or s]) of the identities; ``warnings``: what to know;
+    ``rim``: the rim designed for J at ω_ср (``[flywheel.rim]``, set by the case's adapter:
+    :func:`flywheel.cases.duty_cycle.solve_case`), or None."""
 
     work: Work | None
     energy: float | None
@@ -173,6 +175,7 @@ class DutyCycleResult:
     flywheel_given: bool
     checks: tuple[tuple[str, float], ...]
     warnings: tuple[str, ...]
+    rim: object | None = None     # [flywheel.rim]: the designed rim (dynamics.sizing.RimDesign)
 
     #: the JSON document's keys in order (io/serialize.py; every None is written as null):
     #: docs/duty-cycle.md "Results"
@@ -186,6 +189,8 @@ class DutyCycleResult:
                 "operations_per_hour", "operations_per_minute", "flywheel_given", "work",
                 ("checks", "checks_by_name"), "warnings")
     KEEP_NONE = DOCUMENT
+    #: the designed rim, [flywheel.rim] (run's results.flywheel_rim), left out without one
+    DOCUMENT = DOCUMENT + (("flywheel_rim", "rim"),)
 
     @property
     def rpm_max(self) -> float | None:

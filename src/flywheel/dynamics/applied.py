@@ -209,14 +209,28 @@ def linear_spring(name: str, rP: np.ndarray, vP: np.ndarray, rQ: np.ndarray, vQ:
 
 
 def torsional_spring(name: str, link: str, theta: np.ndarray, omega_q: np.ndarray,
-                     stiffness: float, free_angle: float) -> Applied:
-    """A torsional spring between a link and the frame: the link's turn from its free angle
-    Δ = θ − θ0 (θ0 taken the nearest whole turns to θ(0)), couple on the link −c·Δ, energy
-    U = ½·c·Δ². Reduced moment −c·Δ·ω_q = −dU/dφ; work −(U(φ) − U(0)), exact, zero over the
-    cycle. Raises InputError for a link that turns through whole revolutions (the spring would
-    wind up)."""
+                     stiffness: float, free_angle: float, other: tuple | None = None) -> Applied:
+    """A torsional spring on a link about its joint with the frame, or between two links
+    about their common joint (``other`` = (link b, θ_b, ω_q,b); the frame when None). Its
+    angle is the relative one, θ = θ_a − θ_b (θ_a alone against the frame), its turn from the
+    free angle Δ = θ − θ0 (θ0 taken the nearest whole turns to θ(0)), energy U = ½·c·Δ²,
+    couple −c·Δ on link a and +c·Δ on link b (equal and opposite: no reaction on the frame;
+    against the frame, its reaction). Reduced moment −dU/dφ = −c·Δ·(ω_q,a − ω_q,b) (the
+    virtual work of the two couples, design.md §2); work −(U(φ) − U(0)), exact, zero over the
+    cycle. Raises InputError when the angle turns through whole revolutions (the spring would
+    wind up: a crank against the frame, a crank against its coupler)."""
     th = np.unwrap(theta)
+    if other is not None:
+        link_b, theta_b, omega_q_b = other
+        th = th - np.unwrap(theta_b)
+        omega_q = omega_q - omega_q_b
     if abs(th[-1] - th[0]) > 1e-6:
+        if other is not None:
+            raise InputError(Notice.of(
+                "spring_links_turn", "springs {name}: links {link} and {other} turn through "
+                "whole revolutions against each other, so a torsional spring between them would "
+                "wind up without end (allowed: links whose relative angle rocks)", name=name,
+                link=link, other=other[0]))
         raise InputError(Notice.of(
             "spring_link_turns", "springs {name}: link {link} turns through whole revolutions, "
             "so a torsional spring on it would wind up without end (allowed: a link that rocks)",
@@ -225,7 +239,8 @@ def torsional_spring(name: str, link: str, theta: np.ndarray, omega_q: np.ndarra
     delta = th - theta0
     Mc = -stiffness * delta
     U = 0.5 * stiffness * delta ** 2
-    return Applied(Mc * omega_q, -(U - U[0]), None, couples=((link, Mc, True),))
+    couples = ((link, Mc, True),) if other is None else ((link, Mc, False), (other[0], -Mc, False))
+    return Applied(Mc * omega_q, -(U - U[0]), None, couples=couples)
 
 
 def grid_nodes(case) -> list[float]:
@@ -284,6 +299,11 @@ def spring(sp, case, mech, kin) -> Applied:
     from flywheel.dynamics.forces import FRAME, carriers
     from flywheel.linkage import solve
 
+    if sp.kind == "torsional" and sp.links is not None:    # between two links
+        a, b = sp.links
+        la, lb = kin.links[a], kin.links[b]
+        return torsional_spring(sp.name, a, la.theta, la.omega_q, sp.stiffness,
+                                math.radians(sp.free_angle_deg), (b, lb.theta, lb.omega_q))
     if sp.kind == "torsional":
         lm = kin.links[sp.link]
         return torsional_spring(sp.name, sp.link, lm.theta, lm.omega_q, sp.stiffness,

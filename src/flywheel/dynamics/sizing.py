@@ -175,6 +175,14 @@ class RimDesign:
         """The width under the plain rim's name [m]."""
         return self.width
 
+    def at_top_speed(self, omega_max: float) -> "RimDesign":
+        """This rim with its hoop stress at the top speed ``omega_max`` [rad/s] of its shaft,
+        ``stress_at_omega_max`` = ρ·(ω_max·D_mean/2)² [Pa] (thin rotating ring, as ``stress``)."""
+        from dataclasses import replace
+
+        v_top = omega_max * self.D_mean / 2
+        return replace(self, stress_at_omega_max=self.density * v_top ** 2)
+
     def as_dict(self) -> dict:
         """summary.json's results.flywheel_rim (and ``task2 --json``'s flywheel_rim): the
         contract keys D_mean, thickness, width, mass, rim_speed, stress, share, then the outer
@@ -189,6 +197,28 @@ class RimDesign:
 #: hint's rim speed gives
 THIN_RIM = 0.01
 THIN_RIM_AIM = 0.05
+
+
+def thin_rim_notice(rim: RimDesign):
+    """The warning (a Notice) for a designed rim thinner than :data:`THIN_RIM` of its mean
+    diameter — a hoop, not a flywheel rim — with the rim speed that gives t/D_mean =
+    :data:`THIN_RIM_AIM` (:func:`rim_speed_for_thickness`); None for a rim thick enough."""
+    from flywheel.errors import Notice
+
+    ratio = rim.thickness / rim.D_mean
+    if not ratio < THIN_RIM:
+        return None
+    v_aim = rim_speed_for_thickness(rim)
+    return Notice.of(
+        "rim_thin", "flywheel.rim: the designed rim is {t_mm:.3g} mm thick on a mean "
+        "diameter of {D:.4g} m (t/D = {ratio:.2g}, below {least:g}): a hoop, not a "
+        "flywheel rim; its rim speed {v:.4g} m/s ({speed_source}) is too high for a shaft "
+        "this slow: give flywheel.rim.speed (about {v_aim:.3g} m/s gives t/D = {aim:g})",
+        t_mm=rim.thickness * 1e3, D=rim.D_mean, ratio=ratio,
+        least=THIN_RIM, v=rim.rim_speed, given=rim.speed_from == "given",
+        v_aim=v_aim, aim=THIN_RIM_AIM,
+        speed_source=("given" if rim.speed_from == "given"
+                      else "the largest the allowable stress allows"))
 
 
 def rim_speed_for_thickness(rim: RimDesign, aim: float = THIN_RIM_AIM) -> float:
@@ -261,7 +291,7 @@ def design_rim(J: float, omega: float, density: float, allowable_stress: float, 
                 f"{allowable_stress / PA_PER_MPA:.6g} MPa, whatever the diameter (allowed: at most "
                 f"√(σ/ρ) = {v_max:.6g} m/s for ρ = {density:g} kg/m³)")
         v, speed_from = speed, "given"
-    D = 2 * v / omega
+    D = diameter if diameter is not None else 2 * v / omega    # a given diameter kept exact
     R = D / 2
     J_rim = share * max(J, 0.0)
     m = J_rim / R ** 2

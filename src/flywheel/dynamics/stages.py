@@ -235,21 +235,10 @@ def with_rim_speeds(sz: SizingResult, mo: MotionResult, fw) -> SizingResult:
                 sigma=fw.sigma / PA_PER_MPA, rho=fw.rho))
     designed = sz.rim_design
     if designed is not None:          # its hoop stress at ω_max, ρ·(ω_max·i·D_mean/2)²
-        v_top = mo.omega_max * sz.speed_ratio * designed.D_mean / 2
-        designed = replace(designed, stress_at_omega_max=designed.density * v_top ** 2)
-        ratio = designed.thickness / designed.D_mean
-        if ratio < sizing.THIN_RIM:
-            v_aim = sizing.rim_speed_for_thickness(designed)
-            warnings.append(Notice.of(
-                "rim_thin", "flywheel.rim: the designed rim is {t_mm:.3g} mm thick on a mean "
-                "diameter of {D:.4g} m (t/D = {ratio:.2g}, below {least:g}): a hoop, not a "
-                "flywheel rim; its rim speed {v:.4g} m/s ({speed_source}) is too high for a shaft "
-                "this slow: give flywheel.rim.speed (about {v_aim:.3g} m/s gives t/D = {aim:g})",
-                t_mm=designed.thickness * 1e3, D=designed.D_mean, ratio=ratio,
-                least=sizing.THIN_RIM, v=designed.rim_speed, given=designed.speed_from == "given",
-                v_aim=v_aim, aim=sizing.THIN_RIM_AIM,
-                speed_source=("given" if designed.speed_from == "given"
-                              else "the largest the allowable stress allows")))
+        designed = designed.at_top_speed(mo.omega_max * sz.speed_ratio)
+        thin = sizing.thin_rim_notice(designed)
+        if thin is not None:
+            warnings.append(thin)
     return replace(sz, disk=shapes["disk"], rim=shapes["rim"], rim_design=designed,
                    warnings=tuple(warnings))
 

@@ -528,7 +528,8 @@ def _input_of_case(b: _Builder, case, t: dict, lang: str) -> None:
         rows += [[called("couple", c), c.link, value(c, c.moment), u("couple_moment")]
                  for c in case.couples]
         rows += [[called("spring", s),
-                  "–".join(s.points) if s.kind == "linear" else s.link, f"c = {g(s.stiffness, 6)}",
+                  "–".join(s.points) if s.kind == "linear" else
+                  "–".join(s.links) if s.links is not None else s.link, f"c = {g(s.stiffness, 6)}",
                   nm.unit("N/m" if s.kind == "linear" else "N·m/rad", lang)] for s in springs]
         b.table(t["forces"], [t["name"], t["link"], t["val"], t["unit"]], rows)
 

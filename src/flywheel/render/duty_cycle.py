@@ -15,7 +15,7 @@ from flywheel.render.numbers import fmt as _number
 
 L10N = words("duty_cycle", {
     "operation": "Operation", "motor": "Motor", "speeds": "Speeds of the flywheel shaft",
-    "flywheel": "Flywheel", "timing": "Timing (the program converts time and angle at ω_m)",
+    "flywheel": "Flywheel", "rim": "Rim of the flywheel ([flywheel.rim])", "timing": "Timing (the program converts time and angle at ω_m)",
     "checks": "Checks (identities; residuals)", "quantity": "quantity", "symbol": "symbol",
     "value": "value", "unit": "unit", "phase": "phase",
     "no_radius": "the radius is not given: J, ω and angles are unknown (speeds at the radius)",
@@ -92,6 +92,12 @@ def summary_tables(r, lang: str = "en") -> list[tuple[str, tuple, list, str, tup
     out.append((t["flywheel"], head, _rows([
         ("flywheel_J", r.J), ("flywheel_radius", r.radius), ("flywheel_mass", r.mass)],
         lang), t["no_radius"] if r.omega_max is None else "", just))
+    if r.rim is not None:                # [flywheel.rim]: the rim designed as `run` designs it
+        d = r.rim
+        out.append((t["rim"], head, _rows([
+            ("share", d.share), ("D_mean", d.D_mean), ("thickness", d.thickness),
+            ("width", d.width), ("rim_area", d.area), ("rim_mass_designed", d.mass),
+            ("rim_speed", d.rim_speed), ("stress", d.stress)], lang), "", just))
     if r.cycle_time is not None:
         rows = [(f"{nm.name(k, lang)} ({nm.symbol(k, lang)})", _g(time), _g(angle))
                 for k, time, angle in (

@@ -46,6 +46,11 @@ def build_duty_cycle_document(r, title: str, source: str, lang: str = "en") -> D
                 rf"J {wm}^{{2}} \delta, \delta = \frac{{\omega_{{max}} - \omega_{{min}}}}{{{wm}}}"))
     add(Formula(r"J = m k^{2}, \Delta E = m v^{2} \delta"))
     add(Formula(rf"t_{{\text{{{'вос' if lang == 'ru' else 'rec'}}}}} = \frac{{\Delta E}}{{P}}"))
+    if r.rim is not None:             # [flywheel.rim]: Khurmi & Gupta ch. 16, the rim's dimensions
+        k, m, D = ((r"k_{\text{об}}", r"m_{\text{об}}", r"D_{\text{ср}}") if lang == "ru"
+                   else (r"k_{rim}", r"m_{rim}", r"D_{m}"))
+        add(Formula(rf"{D} = \frac{{2 v}}{{{wm}}}, {m} = \frac{{{k} J}}{{R^{{2}}}} = "
+                    rf"\rho \pi {D} b t, \sigma = \rho v^{{2}}"))
 
     add(Heading(2, t["results"]))
     for caption, header, rows, note, _ in summary_tables(r, lang):
