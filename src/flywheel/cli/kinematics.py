@@ -16,9 +16,11 @@ from flywheel.errors import Notice
 
 def run_kinematics(c, case: Path, out: Path | None, points: int, at, no_plots: bool,
                    as_json: bool, lang: str, transients: bool, formats: list[str],
-                   csv_style: str, figure_format: str, dpi: int, animate: bool = False) -> None:
+                   csv_style: str, figure_format: str, dpi: int, animate: bool = False,
+                   frame: str = "none") -> None:
     """The kinematics-only run of the validated case ``c`` read from ``case``; the options as
-    `flywheel run` took them (``--transients`` is refused: there is no motion to integrate)."""
+    `flywheel run` took them (``--transients`` is refused: there is no motion to integrate;
+    ``--frame eskd`` frames the Russian PDF and DOCX, their title page from ``[document]``)."""
     if transients:
         fail(Notice.of(
             "transients_kinematics", "--transients: {case} asks for the kinematics alone (no "
@@ -55,6 +57,10 @@ def run_kinematics(c, case: Path, out: Path | None, points: int, at, no_plots: b
         from flywheel.render.report_kinematics import build_kinematics_document
 
         doc = build_kinematics_document(results, lang, pngs, case=c)
+        if frame != "none":                 # the title blocks need [document]'s names
+            from flywheel.render.blocks import front
+
+            doc = front(doc, c.document, frame=frame)
         write_reports(doc, folder, formats, folder / "plots" if pngs else None)
 
     notes: list[str] = []

@@ -43,6 +43,13 @@ class RunOutputs:
     sheet_size: str = "A1"
     #: --student, --group, --teacher (None: the case's [document]) for the title page
     title_page: tuple = (None, None, None)
+    #: --frame: the page frame of the Russian PDF and DOCX (render/report_frame.py FRAMES)
+    frame: str = "none"
+
+    @property
+    def frame_of_front(self) -> str:
+        """The frame as the title page carries it ("" none)."""
+        return "" if self.frame == "none" else self.frame
 
     def names(self) -> list[str]:
         """The files listed on the "written:" line."""
@@ -100,6 +107,7 @@ def _build_run(folder: Path, results, case, what: RunOutputs, lang: str,
         from flywheel.render.numbers import typeset
 
         doc = front(typeset(lang, build_document, results, lang, pngs, case=case), case.document,
+                    frame=what.frame_of_front,
                     **dict(zip(("student", "group", "teacher"), what.title_page)))
         if what.animate:
             from flywheel.render.animate import write_animation

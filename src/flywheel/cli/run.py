@@ -12,7 +12,7 @@ from typing import Optional
 import typer
 
 from flywheel.cli.guard import _guard, check_lang, choice, fail
-from flywheel.cli.options import CsvStyle, Group, Json, Lang, Reports, Student, Teacher
+from flywheel.cli.options import CsvStyle, Frame, Group, Json, Lang, Reports, Student, Teacher
 from flywheel.errors import Notice
 
 
@@ -92,6 +92,7 @@ def run_command(
     student: Student = None,
     group: Group = None,
     teacher: Teacher = None,
+    frame: Frame = "none",
 ) -> None:
     """Run the whole dynamic analysis of a case; write summary.json, table.csv, positions.csv,
     forces.csv, forces_positions.csv, report.md and plots/*.png to the output folder."""
@@ -101,8 +102,8 @@ def run_command(
     what = RunOutputs(formats=tuple(report or ["md", "html"]), csv_style=csv_style,
                       plots="none" if no_plots else plots, figure_format=figure_format, dpi=dpi,
                       animate=animate, drawings=drawings, sheet_size=sheet_size,
-                      title_page=(student, group, teacher))
-    _check_options(what, at)
+                      title_page=(student, group, teacher), frame=frame)
+    _check_options(what, at, lang)
     from flywheel.cases.run import load_case
     from flywheel.dynamics.pipeline import analyze
     from flywheel.render.tables import summary_json
@@ -118,7 +119,7 @@ def run_command(
 
         return run_kinematics(c, case, out, points, at, what.plots == "none", as_json, lang,
                               transients, list(what.formats), what.csv_style, what.figure_format,
-                              what.dpi, what.animate)
+                              what.dpi, what.animate, what.frame)
     from flywheel.dynamics.asks import at_with_travel, with_asks
 
     travel = _guard(at_with_travel, c, at_travel)   # --at-travel: its angles are report angles
@@ -143,8 +144,9 @@ def run_command(
            lines=[written_line(out, what.names(), lang)])
 
 
-def _check_options(what, at) -> None:
-    """Refuse an option's value outside its choices or range: one error line, exit 2."""
+def _check_options(what, at, lang: str = "en") -> None:
+    """Refuse an option's value outside its choices or range, or one that cannot apply (a
+    frame without a Russian PDF or DOCX report): one error line, exit 2."""
     from flywheel.render.csvfmt import STYLES
     from flywheel.render.figure import DPI_RANGE, FORMATS as FIGURE_FORMATS
     from flywheel.render.plots import CHOICES
@@ -169,6 +171,7 @@ def _check_options(what, at) -> None:
     for f in what.formats:
         if f not in FORMATS:
             fail(choice("--report", f, "a report format", ", ".join(FORMATS)))
+    check_frame(what.frame, lang, what.formats)
     from flywheel.io.schema import MAX_TEXT
 
     for option, value in zip(("student", "group", "teacher"), what.title_page):
@@ -176,6 +179,20 @@ def _check_options(what, at) -> None:
             fail(Notice.of(
                 "option_text_too_long", "--{option}: {length} characters (allowed: at most "
                 "{most})", option=option, length=len(value), most=MAX_TEXT))
+
+
+def check_frame(frame: str, lang: str, formats) -> None:
+    """Refuse a ``--frame`` other than none and eskd, and the ЕСКД frame where it would draw
+    nothing (it frames the Russian PDF and DOCX only): one error line, exit 2."""
+    from flywheel.render.report_frame import FRAMES
+
+    if frame not in FRAMES:
+        fail(choice("--frame", frame, "a page frame", ", ".join(FRAMES)))
+    if frame != "none" and (lang != "ru" or not {"pdf", "docx"} & set(formats)):
+        fail(Notice.of(
+            "frame_without_gost", "--frame {frame}: the frame is drawn on the Russian PDF and "
+            "DOCX report only (allowed: with --lang ru and --report pdf or --report docx)",
+            frame=frame))
 
 
 #: the report angles --at takes: at most AT_MOST of them, each within ±AT_LIMIT_DEG [deg] (an

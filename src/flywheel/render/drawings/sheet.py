@@ -164,9 +164,7 @@ def frame_view(size: str, lang: str, *, document, title: str, sheet_name: str, n
     v.text(X(125), Y(47.5), d, h, halign="center", valign="middle", squeeze=q)
     for line, h, y in name_lines(title, sheet_name, Y(27.5)):
         v.text(X(100), y, line, h, halign="center", valign="middle")
-    org = [s for s in (document.university,
-                       t["group"].format(g=document.group) if document.group else "") if s]
-    org_lines = [ln for s in org for ln in wrap(s, 46.0, 3.5, 2)][:3]
+    org_lines = organisation_lines(document, t)
     for k, line in enumerate(org_lines):
         v.text(X(160), Y(7.5) + (len(org_lines) / 2 - k - 0.5) * 4.6, line, 3.5,
                halign="center", valign="middle")
@@ -177,6 +175,14 @@ def frame_view(size: str, lang: str, *, document, title: str, sheet_name: str, n
     v.text(cx0 + COL26_W / 2, cy1 - COL26_H / 2, d26, h26, angle=180.0, halign="center",
            valign="middle", squeeze=q26)
     return v
+
+
+def organisation_lines(document, t: dict) -> list[str]:
+    """The organisation cell (50 × 15 mm, forms 1 and 2): the university and the group of
+    ``document`` (a ``[document]`` table or a title page), at most three lines at 3.5 mm."""
+    org = [s for s in (document.university,
+                       t["group"].format(g=document.group) if document.group else "") if s]
+    return [ln for s in org for ln in wrap(s, 46.0, 3.5, 2)][:3]
 
 
 def name_lines(title: str, sheet_name: str, centre: float) -> list[tuple[str, float, float]]:
