@@ -45,7 +45,9 @@ def check_command(case: Path = typer.Argument(..., help="Case file (TOML)."),
 
     check_lang(lang)
     c = _guard(load_case, case)
-    print_check(_guard(check_case, c, source=case, case=c), lang=lang)
+    from flywheel.render.numbers import typeset
+
+    typeset(lang, print_check, _guard(check_case, c, source=case, case=c), lang=lang)
 
 
 def run_command(

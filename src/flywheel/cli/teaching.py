@@ -117,7 +117,9 @@ def variants_command(
         from flywheel.render.moodle import quiz_xml
 
         _guard(write_file, moodle, quiz_xml(vs, lang), "--moodle", expected="an XML file name")
-    print_variants(vs, out, sheets=sheets_format if sheets else None, lang=lang)
+    from flywheel.render.numbers import typeset
+
+    typeset(lang, print_variants, vs, out, sheets=sheets_format if sheets else None, lang=lang)
 
 
 def grade_command(
@@ -231,10 +233,12 @@ def grade_command(
     else:
         from flywheel.render.grading import print_class_summary, print_report
 
+        from flywheel.render.numbers import typeset
+
         if summary:
-            print_class_summary(report, lang)
+            typeset(lang, print_class_summary, report, lang)
         else:
-            print_report(report, lang=lang)
+            typeset(lang, print_report, report, lang=lang)
         for path in (out, gradebook, feedback):
             if path is not None and report.students:
                 from flywheel.render.messages import prefix
