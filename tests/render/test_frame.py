@@ -167,3 +167,23 @@ def test_a_frame_that_cannot_apply_is_one_line(tmp_path, args, says):
     lines = res.output.strip().splitlines()
     assert len(lines) == 1 and "--frame" in lines[0] and says in lines[0]
     assert not (tmp_path / "o").exists()
+
+
+def test_task2_aggregate_and_duty_cycle_take_the_frame_too(tmp_path):
+    """The other commands' записки: framed with --frame eskd (task2's PDF read back), refused
+    in one line where nothing would be framed."""
+    import pypdf
+
+    res = runner.invoke(app, ["task2", "--case", str(CASES / "task2_khurmi_16_1.toml"), "--lang",
+                              "ru", "--out", str(tmp_path / "t"), "--report", "pdf", "--frame",
+                              "eskd"])
+    assert res.exit_code == 0, res.output
+    pages = [p.extract_text() for p in pypdf.PdfReader(tmp_path / "t" / "report.pdf").pages]
+    assert all("ТММ.КП.00.01 ПЗ" in p and str(k) in p.split()
+               for k, p in enumerate(pages[1:], start=2))
+    for args in (["aggregate", str(CASES / "aggregate.toml")],
+                 ["duty-cycle", str(CASES / "duty_khurmi_16_19_punch.toml")]):
+        res = runner.invoke(app, [*args, "--out", str(tmp_path / "x"), "--report", "pdf",
+                                  "--frame", "eskd"])
+        assert res.exit_code == 2 and "--frame eskd" in res.output
+        assert len(res.output.strip().splitlines()) == 1

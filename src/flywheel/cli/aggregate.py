@@ -10,7 +10,7 @@ from typing import Optional
 
 import typer
 
-from flywheel.cli.options import Json, Lang, Reports
+from flywheel.cli.options import Frame, Json, Lang, Reports, frame_notice
 from flywheel.io.text import in_language
 
 
@@ -38,6 +38,7 @@ def aggregate_command(
                                        "\\[motor]) and the report (see --report); a rerun replaces "
                                        "only its own files."),
     report: Reports = None,
+    frame: Frame = "none",
 ) -> None:
     """Two-mass machine aggregate (Ефанов ch. 9) or a chain of rotors: coefficients a_ij, c_ij,
     natural frequencies, steady forced vibration, start-up."""
@@ -48,6 +49,9 @@ def aggregate_command(
         from flywheel.render import nomenclature as nm
 
         formats = _check_options(lang, t_end, report, out)
+        refused = frame_notice(frame, lang, formats)
+        if refused is not None:
+            raise InputError(refused)
         from flywheel.cases.aggregate import load_aggregate_case, to_model
         from flywheel.elastic.model import analyze
 
@@ -68,7 +72,8 @@ def aggregate_command(
 
             write_plot(plot, lambda tmp: draw(result, tmp, in_language(c.title, lang), lang))
         if out is not None:
-            written = _write_out(out, result, formats, c.title, c.source, lang, c.document)
+            written = _write_out(out, result, formats, c.title, c.source, lang, c.document,
+                                 frame)
     from flywheel.cli.outputs import finish, written_line
     from flywheel.render.aggregate import print_summary, to_json
     from flywheel.render.numbers import typeset
@@ -102,7 +107,7 @@ def _check_options(lang: str, t_end, report, out):
 
 
 def _write_out(out: Path, result, formats, title: str, source: str, lang: str,
-               document=None) -> list[str]:
+               document=None, frame: str = "none") -> list[str]:
     """The --out folder (cli/outputs.py, render/report_folder.py): summary.json,
     plots/aggregate.png (with a motor), the report with its title page from ``document``
     (the case's [document]); returns the names written."""
@@ -119,4 +124,5 @@ def _write_out(out: Path, result, formats, title: str, source: str, lang: str,
         lambda path: draw(result, path, shown, lang),
         FIGURE if result.startup is not None else None,
         lambda fig: front(typeset(lang, build_aggregate_document, result, shown, said, lang,
-                                  fig), document), formats)
+                                  fig), document, frame="" if frame == "none" else frame),
+        formats)

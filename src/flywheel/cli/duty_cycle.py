@@ -8,7 +8,7 @@ from __future__ import annotations
 from pathlib import Path
 import typer
 
-from flywheel.cli.options import Json, Lang, OutFolder, Reports
+from flywheel.cli.options import Frame, Json, Lang, OutFolder, Reports, frame_notice
 from flywheel.io.text import in_language
 
 
@@ -18,6 +18,7 @@ def duty_cycle_command(
     lang: Lang = "en",
     out: OutFolder = None,
     report: Reports = None,
+    frame: Frame = "none",
 ) -> None:
     """Duty-cycle machines (punching, riveting, shearing presses): the motor's power and torque,
     the energy the flywheel gives, its J and mass, the speed at the end of the operation, the
@@ -30,6 +31,9 @@ def duty_cycle_command(
     formats = guard(check_formats, report)
     if report and out is None:
         fail(needs_out())
+    refused = frame_notice(frame, lang, formats)
+    if refused is not None:
+        fail(refused)
     from flywheel.cases.duty_cycle import load_duty_case, solve_case
 
     from flywheel.render.numbers import typeset
@@ -46,7 +50,8 @@ def duty_cycle_command(
         written = guard(report_folder, out, "duty-cycle", to_json(result, c.title, c.source) + "\n",
                         None, None, lambda fig: front(typeset(
                             lang, build_duty_cycle_document, result, in_language(c.title, lang),
-                            in_language(c.source, lang), lang), c.document),
+                            in_language(c.source, lang), lang), c.document,
+                            frame="" if frame == "none" else frame),
                         formats)
     from flywheel.cli.outputs import finish, written_line
     from flywheel.render.duty_cycle import print_summary, to_json

@@ -12,7 +12,8 @@ from typing import Optional
 import typer
 
 from flywheel.cli.guard import _guard, check_lang, choice, fail
-from flywheel.cli.options import CsvStyle, Frame, Group, Json, Lang, Reports, Student, Teacher
+from flywheel.cli.options import (CsvStyle, Frame, Group, Json, Lang, Reports, Student, Teacher,
+                                  frame_notice)
 from flywheel.errors import Notice
 
 
@@ -173,7 +174,9 @@ def _check_options(what, at, lang: str = "en") -> None:
     for f in what.formats:
         if f not in FORMATS:
             fail(choice("--report", f, "a report format", ", ".join(FORMATS)))
-    check_frame(what.frame, lang, what.formats)
+    refused = frame_notice(what.frame, lang, what.formats)
+    if refused is not None:
+        fail(refused)
     from flywheel.io.schema import MAX_TEXT
 
     for option, value in zip(("student", "group", "teacher"), what.title_page):
@@ -181,20 +184,6 @@ def _check_options(what, at, lang: str = "en") -> None:
             fail(Notice.of(
                 "option_text_too_long", "--{option}: {length} characters (allowed: at most "
                 "{most})", option=option, length=len(value), most=MAX_TEXT))
-
-
-def check_frame(frame: str, lang: str, formats) -> None:
-    """Refuse a ``--frame`` other than none and eskd, and the ЕСКД frame where it would draw
-    nothing (it frames the Russian PDF and DOCX only): one error line, exit 2."""
-    from flywheel.render.report_frame import FRAMES
-
-    if frame not in FRAMES:
-        fail(choice("--frame", frame, "a page frame", ", ".join(FRAMES)))
-    if frame != "none" and (lang != "ru" or not {"pdf", "docx"} & set(formats)):
-        fail(Notice.of(
-            "frame_without_gost", "--frame {frame}: the frame is drawn on the Russian PDF and "
-            "DOCX report only (allowed: with --lang ru and --report pdf or --report docx)",
-            frame=frame))
 
 
 #: the report angles --at takes: at most AT_MOST of them, each within ±AT_LIMIT_DEG [deg] (an

@@ -17,7 +17,7 @@ from typing import List, Optional
 
 import typer
 
-from flywheel.cli.options import Json, Lang, OutFolder, Reports
+from flywheel.cli.options import Frame, Json, Lang, OutFolder, Reports, frame_notice
 
 PROFILES = ("triangle", "rectangle")
 
@@ -68,6 +68,7 @@ def task2_command(
     lang: Lang = "en",
     out: OutFolder = None,
     report: Reports = None,
+    frame: Frame = "none",
 ) -> None:
     """Task 2: ω_max, ω_min, ω_ср and δ of a machine with constant J under given M_D(φ), M_C(φ)."""
     from flywheel.cli.guard import check_lang, guarded, needs_out, solve_finite, write_plot
@@ -87,6 +88,9 @@ def task2_command(
         formats = check_formats(report)
         if report and out is None:
             raise InputError(needs_out())
+        refused = frame_notice(frame, lang, formats)
+        if refused is not None:
+            raise InputError(refused)
         job = (_from_case(case, at, profile, given, lang) if case is not None else
                _from_options(profile, given, dict(md=md, j=j, omega0=omega0, start=start,
                                                   end=end, mc=mc, delta=delta), at, lang))
@@ -96,7 +100,7 @@ def task2_command(
 
             write_plot(plot, lambda tmp: draw(result, tmp, job.title, lang))
         if out is not None:
-            written = _write_out(out, result, formats, job, lang)
+            written = _write_out(out, result, formats, job, lang, frame)
     from flywheel.cli.outputs import finish, written_line
     from flywheel.render import nomenclature as nm
     from flywheel.render.numbers import typeset
@@ -200,7 +204,7 @@ def _from_options(profile, given, v: dict, at, lang: str) -> _Job:
                 nm.name("t2_seed_title", profile=profile), nm.name("t2_seed_source"))
 
 
-def _write_out(out: Path, result, formats, job: _Job, lang: str):
+def _write_out(out: Path, result, formats, job: _Job, lang: str, frame: str = "none"):
     """The --out folder (cli/outputs.py, render/report_folder.py): summary.json,
     plots/task2.png, the report with its title page; returns the names written."""
     from flywheel.cli.outputs import report_folder
@@ -214,4 +218,5 @@ def _write_out(out: Path, result, formats, job: _Job, lang: str):
         out, "task2", to_json(result, job.doc_title, job.doc_source) + "\n",
         lambda path: draw(result, path, job.title, lang), FIGURE,
         lambda fig: front(typeset(lang, build_task2_document, result, job.title, job.source, lang,
-                                  fig), job.document), formats)
+                                  fig), job.document, frame="" if frame == "none" else frame),
+        formats)

@@ -9,8 +9,8 @@ Filled from ``[document]`` (the title page, render/blocks.py ``TitlePage``): the
 with «ПЗ», Разраб. (student), Пров. (teacher), Т. контр. (in form 2's free row), Н. контр.,
 Утв., the name (the machine and «Пояснительная записка»), the sheet and the number of sheets
 (the title page is sheet 1), the university and the group. The text moves inside the frame
-(ГОСТ 2.105-2019, 6.1.?: 3 mm at least from the frame at the lines' ends, 10 mm from the frame
-or the title block above and below): left 25 mm, right ``[document] margin_right_mm`` (10),
+(ГОСТ 2.105-95, 4.1.9, as departments still apply it: at least 3 mm from the frame at the
+lines' ends, 10 mm from the frame or the title block above and below): left 25 mm, right ``[document] margin_right_mm`` (10),
 top 15 mm, bottom 30 mm (55 mm on the page of form 2); the page numbers are the title blocks'.
 
 PDF (typst): the frame and the title blocks drawn in each page's background. DOCX: the frame a

@@ -61,7 +61,8 @@ class Cell:
 @dataclass(frozen=True)
 class Form:
     """A title block: its height [mm], its cells, and the segments drawn in thin line (x0, y0,
-    x1, y1) [mm]; every other edge of a cell is a main line (ГОСТ 2.104-2006, 4.6)."""
+    x1, y1) [mm]; every other edge of a cell is a main line (as the forms of ГОСТ 2.104-2006
+    draw them: thin between the rows of changes and of signatures, and inside «Лит.»)."""
 
     name: str
     height: float
