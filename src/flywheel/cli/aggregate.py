@@ -10,7 +10,8 @@ from typing import Optional
 
 import typer
 
-from flywheel.cli.options import Frame, Json, Lang, Reports, frame_notice
+from flywheel.cli.guard import frame_notice
+from flywheel.cli.options import Frame, Json, Lang, Reports
 from flywheel.io.text import in_language
 
 

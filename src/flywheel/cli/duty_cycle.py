@@ -8,7 +8,8 @@ from __future__ import annotations
 from pathlib import Path
 import typer
 
-from flywheel.cli.options import Frame, Json, Lang, OutFolder, Reports, frame_notice
+from flywheel.cli.guard import frame_notice
+from flywheel.cli.options import Frame, Json, Lang, OutFolder, Reports
 from flywheel.io.text import in_language
 
 

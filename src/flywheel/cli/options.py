@@ -128,22 +128,5 @@ Frame = Annotated[str, typer.Option(
                     "\\[document]); needs --lang ru and --report pdf or docx.")]
 
 
-def frame_notice(frame: str, lang: str, formats):
-    """The Notice refusing ``--frame``: a value other than none and eskd, or the ЕСКД frame
-    where it would draw nothing (it frames the Russian PDF and DOCX only); None if it applies."""
-    from flywheel.cli.guard import choice
-    from flywheel.errors import Notice
-    from flywheel.render.report_frame import FRAMES
-
-    if frame not in FRAMES:
-        return choice("--frame", frame, "a page frame", ", ".join(FRAMES))
-    if frame != "none" and (lang != "ru" or not {"pdf", "docx"} & set(formats or ())):
-        return Notice.of(
-            "frame_without_gost", "--frame {frame}: the frame is drawn on the Russian PDF and "
-            "DOCX report only (allowed: with --lang ru and --report pdf or --report docx)",
-            frame=frame)
-    return None
-
-
 Teacher = Annotated[Optional[str], typer.Option(
     "--teacher", help="The teacher on the title page (over \\[document] teacher).")]

@@ -11,9 +11,8 @@ from typing import Optional
 
 import typer
 
-from flywheel.cli.guard import _guard, check_lang, choice, fail
-from flywheel.cli.options import (CsvStyle, Frame, Group, Json, Lang, Reports, Student, Teacher,
-                                  frame_notice)
+from flywheel.cli.guard import _guard, check_lang, choice, fail, frame_notice
+from flywheel.cli.options import CsvStyle, Frame, Group, Json, Lang, Reports, Student, Teacher
 from flywheel.errors import Notice
 
 

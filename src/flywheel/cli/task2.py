@@ -17,7 +17,8 @@ from typing import List, Optional
 
 import typer
 
-from flywheel.cli.options import Frame, Json, Lang, OutFolder, Reports, frame_notice
+from flywheel.cli.guard import frame_notice
+from flywheel.cli.options import Frame, Json, Lang, OutFolder, Reports
 
 PROFILES = ("triangle", "rectangle")
 
