@@ -84,3 +84,31 @@ def err_text(res) -> str:
         return res.stderr
     except (ValueError, AttributeError):
         return res.output
+
+
+#: a number as the Russian policy writes it (render/numbers.py): true minus, narrow spaces
+#: between thousands, decimal comma; and as English writes it
+NUMBER_RU = r"(?<![\w,])[\u2212-]?\d+(?:\u202f\d{3})*(?:,\d+)?"
+NUMBER_EN = r"(?<!\w)-?\d+(?:\.\d+)?(?:e[+-]?\d+)?"
+
+
+def ru_numbers(text: str) -> list[float]:
+    """The numbers of a Russian text, as floats."""
+    import re
+
+    return [float(x.replace("\u2212", "-").replace("\u202f", "").replace(",", "."))
+            for x in re.findall(NUMBER_RU, text)]
+
+
+def en_numbers(text: str) -> list[float]:
+    """The numbers of an English text, as floats."""
+    import re
+
+    return [float(x) for x in re.findall(NUMBER_EN, text)]
+
+
+def same_numbers(ru: list[float], en: list[float], rel: float = 5e-4,
+                 noise: float = 1e-9) -> bool:
+    """The Russian numbers are the English ones to the Russian policy's four significant
+    digits (or its round-off to 0 below the noise)."""
+    return len(ru) == len(en) and all(abs(r - e) <= rel * abs(e) + noise for r, e in zip(ru, en))

@@ -7,6 +7,7 @@ from html.parser import HTMLParser
 import pytest
 
 from chain_helpers import data_of, key_of, make, runner, textbook, write_sheet
+from helpers import ru_numbers  # a Russian text's numbers (tests/helpers.py)
 from flywheel.cli import app
 
 
@@ -49,10 +50,6 @@ def parse(path):
     return [r for r in p.rows if r]
 
 
-def ru(x):
-    return f"{x:.6g}".replace(".", ",")
-
-
 @pytest.fixture(scope="module")
 def sheet(compressor, tmp_path_factory):
     key = key_of(compressor)
@@ -79,8 +76,10 @@ def test_a_page_per_student_in_russian_with_verdicts_diagnosis_and_the_key(compr
     verdict = {r[0].split("\n")[0]: r[2] for r in rows}
     assert list(verdict.values()) == ["верно", "НЕВЕРНО", "верно по вашим данным",
                                       "верно по вашим данным", "верно по вашим данным"]
-    # the expected value is the key's, with a decimal comma
-    assert rows[1][4] == ru(key["variants"]["01"]["delta_T_max"])
+    # the expected value is the key's in Russian typography (a decimal comma, four digits)
+    assert "," in rows[1][4] and "." not in rows[1][4]
+    assert ru_numbers(rows[1][4]) == pytest.approx([key["variants"]["01"]["delta_T_max"]],
+                                                   rel=5e-4)
     rows = parse(out / pages[1])
     J = next(r for r in rows if "J_required" in r[0])
     assert J[2] == "НЕВЕРНО" and J[3] == "вместо δ взято δ/2"

@@ -10,7 +10,8 @@ from typing import Annotated, Optional
 
 import typer
 
-from flywheel.cli.options import Json, Lang, Reports
+from flywheel.cli.guard import frame_notice
+from flywheel.cli.options import Frame, Json, Lang, Reports
 from flywheel.io.text import in_language
 
 
@@ -38,7 +39,8 @@ AggregateCase = Annotated[Path, typer.Argument(
 
 def aggregate_command(case: AggregateCase, json: Json = False, plot: Plot = None,
                       t_end: TEnd = None, lang: Lang = "en", modes: Modes = False,
-                      out: AggregateOut = None, report: Reports = None) -> None:
+                      out: AggregateOut = None, report: Reports = None,
+                      frame: Frame = "none") -> None:
     """Two-mass machine aggregate (Ефанов ch. 9) or a chain of rotors: coefficients a_ij, c_ij,
     natural frequencies, steady forced vibration, start-up."""
     from flywheel.cli.guard import guarded, write_plot
@@ -48,14 +50,14 @@ def aggregate_command(case: AggregateCase, json: Json = False, plot: Plot = None
     from flywheel.render.numbers import typeset
 
     with guarded(source=case):      # an error of the analysis is prefixed with the case file
-        formats = _check_options(lang, t_end, report, out)
+        formats = _check_options(lang, t_end, report, out, frame)
         c, result = _solve(case, plot, t_end, lang)
         if plot is not None:
             from flywheel.render.aggregate import plot as draw
 
             write_plot(plot, lambda tmp: draw(result, tmp, in_language(c.title, lang), lang))
-        written = (_write_out(out, result, formats, c.title, c.source, lang, c.document)
-                   if out is not None else None)
+        written = (_write_out(out, result, formats, c.title, c.source, lang, c.document,
+                              frame) if out is not None else None)
     finish(json_text=to_json(result, c.title, c.source) + "\n" if json else None,
            summary=lambda: typeset(lang, print_summary, result, in_language(c.title, lang),
                                    in_language(c.source, lang), lang=lang, modes=modes),
@@ -85,7 +87,7 @@ def _solve(case: Path, plot: Optional[Path], t_end: Optional[float], lang: str):
     refuse_nonfinite(result.to_document(), who=str(case))
     return c, result
 
-def _check_options(lang: str, t_end, report, out):
+def _check_options(lang: str, t_end, report, out, frame: str = "none"):
     """Refuse a language, --t-end, or --report (or --report without --out) beyond what is
     allowed (an InputError); return the report formats."""
     import math
@@ -103,11 +105,14 @@ def _check_options(lang: str, t_end, report, out):
     formats = check_formats(report)
     if report and out is None:
         raise InputError(needs_out())
+    refused = frame_notice(frame, lang, formats)
+    if refused is not None:
+        raise InputError(refused)
     return formats
 
 
 def _write_out(out: Path, result, formats, title: str, source: str, lang: str,
-               document=None) -> list[str]:
+               document=None, frame: str = "none") -> list[str]:
     """The --out folder (cli/outputs.py, render/report_folder.py): summary.json,
     plots/aggregate.png (with a motor), the report with its title page from ``document``
     (the case's [document]); returns the names written."""
@@ -124,4 +129,5 @@ def _write_out(out: Path, result, formats, title: str, source: str, lang: str,
         lambda path: draw(result, path, shown, lang),
         FIGURE if result.startup is not None else None,
         lambda fig: front(typeset(lang, build_aggregate_document, result, shown, said, lang,
-                                  fig), document), formats)
+                                  fig), document, frame="" if frame == "none" else frame),
+        formats)

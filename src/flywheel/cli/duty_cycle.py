@@ -10,7 +10,8 @@ from typing import Annotated
 
 import typer
 
-from flywheel.cli.options import Json, Lang, OutFolder, Reports
+from flywheel.cli.guard import frame_notice
+from flywheel.cli.options import Frame, Json, Lang, OutFolder, Reports
 from flywheel.io.text import in_language
 
 
@@ -19,7 +20,8 @@ DutyCase = Annotated[Path, typer.Argument(
 
 
 def duty_cycle_command(case: DutyCase, as_json: Json = False, lang: Lang = "en",
-                       out: OutFolder = None, report: Reports = None) -> None:
+                       out: OutFolder = None, report: Reports = None,
+                       frame: Frame = "none") -> None:
     """Duty-cycle machines (punching, riveting, shearing presses): the motor's power and torque,
     the energy the flywheel gives, its J and mass, the speed at the end of the operation, the
     time and angle to recover, the cycle."""
@@ -34,9 +36,12 @@ def duty_cycle_command(case: DutyCase, as_json: Json = False, lang: Lang = "en",
     formats = guard(check_formats, report)
     if report and out is None:
         fail(needs_out())
+    refused = frame_notice(frame, lang, formats)
+    if refused is not None:
+        fail(refused)
     c = guard(load_duty_case, case)
     result = guard(solve_case, c, str(case))
-    written = None if out is None else guard(_write_out, out, result, c, formats, lang)
+    written = None if out is None else guard(_write_out, out, result, c, formats, lang, frame)
     finish(warnings=result.warnings,
            json_text=to_json(result, c.title, c.source) + "\n" if as_json else None,
            summary=lambda: typeset(lang, print_summary, result, in_language(c.title, lang),
@@ -44,7 +49,7 @@ def duty_cycle_command(case: DutyCase, as_json: Json = False, lang: Lang = "en",
            lines=[] if written is None else [written_line(out, written, lang)])
 
 
-def _write_out(out: Path, result, c, formats, lang: str) -> list[str]:
+def _write_out(out: Path, result, c, formats, lang: str, frame: str = "none") -> list[str]:
     """The --out folder (cli/outputs.py, render/report_folder.py): summary.json and the report
     with its title page from the case's [document] (no figure); returns the names written."""
     from flywheel.cli.outputs import report_folder
@@ -57,4 +62,4 @@ def _write_out(out: Path, result, c, formats, lang: str) -> list[str]:
         out, "duty-cycle", to_json(result, c.title, c.source) + "\n", None, None,
         lambda fig: front(typeset(lang, build_duty_cycle_document, result,
                                   in_language(c.title, lang), in_language(c.source, lang), lang),
-                          c.document), formats)
+                          c.document, frame="" if frame == "none" else frame), formats)

@@ -61,6 +61,22 @@ def choice(option: str, got, what: str, allowed: str):
                      option=option, got=repr(got), allowed=allowed, what=what)
 
 
+def frame_notice(frame: str, lang: str, formats):
+    """The Notice refusing ``--frame``: a value other than none and eskd, or the ЕСКД frame
+    where it would draw nothing (it frames the Russian PDF and DOCX only); None if it applies."""
+    from flywheel.errors import Notice
+    from flywheel.render.report_frame import FRAMES
+
+    if frame not in FRAMES:
+        return choice("--frame", frame, "a page frame", ", ".join(FRAMES))
+    if frame != "none" and (lang != "ru" or not {"pdf", "docx"} & set(formats or ())):
+        return Notice.of(
+            "frame_without_gost", "--frame {frame}: the frame is drawn on the Russian PDF and "
+            "DOCX report only (allowed: with --lang ru and --report pdf or --report docx)",
+            frame=frame)
+    return None
+
+
 def check_lang(lang: str) -> None:
     """Refuse a ``--lang`` that is not en or ru: one error line, exit 2 (every command)."""
     if lang not in ("en", "ru"):

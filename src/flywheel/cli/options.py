@@ -121,6 +121,13 @@ Student = Annotated[Optional[str], typer.Option(
                       "case's \\[document] student).")]
 Group = Annotated[Optional[str], typer.Option(
     "--group", help="The student's group on the title page (over \\[document] group).")]
+Frame = Annotated[str, typer.Option(
+    "--frame", help="Page frame of the Russian PDF and DOCX report: none, or eskd (every page "
+                    "but the title page inside the ЕСКД frame, the title block of form 2 on "
+                    "the contents page and 2a on the rest, ГОСТ 2.104; filled from "
+                    "\\[document]); needs --lang ru and --report pdf or docx.")]
+
+
 Teacher = Annotated[Optional[str], typer.Option(
     "--teacher", help="The teacher on the title page (over \\[document] teacher).")]
 CaseFile = Annotated[Path, typer.Argument(help="Case file (TOML).")]

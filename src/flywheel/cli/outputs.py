@@ -48,6 +48,13 @@ class RunOutputs:
     sheet_size: str = "A1"
     #: --student, --group, --teacher (None: the case's [document]) for the title page
     title_page: tuple = (None, None, None)
+    #: --frame: the page frame of the Russian PDF and DOCX (render/report_frame.py FRAMES)
+    frame: str = "none"
+
+    @property
+    def frame_of_front(self) -> str:
+        """The frame as the title page carries it ("" none)."""
+        return "" if self.frame == "none" else self.frame
 
     def names(self, tables: tuple[str, ...] = RUN_TABLES, drawings: bool = True) -> list[str]:
         """The files listed on the "written:" line (``tables``: the CSVs written; the sheets
@@ -132,6 +139,10 @@ def _build_kinematics(folder: Path, results, case, what: RunOutputs, lang: str,
 
         write_animation(results, folder / "mechanism.gif", lang=lang)
     doc = build_kinematics_document(results, lang, pngs, case=case)
+    if what.frame != "none":            # the title blocks need [document]'s names
+        from flywheel.render.blocks import front
+
+        doc = front(doc, case.document, frame=what.frame)
     write_reports(doc, folder, list(what.formats), folder / "plots" if pngs else None)
 
 def _build_run(folder: Path, results, case, what: RunOutputs, lang: str,
@@ -165,6 +176,7 @@ def _build_run(folder: Path, results, case, what: RunOutputs, lang: str,
         from flywheel.render.numbers import typeset
 
         doc = front(typeset(lang, build_document, results, lang, pngs, case=case), case.document,
+                    frame=what.frame_of_front,
                     **dict(zip(("student", "group", "teacher"), what.title_page)))
         if what.animate:
             from flywheel.render.animate import write_animation
@@ -283,10 +295,12 @@ def finish_grade(report, as_json: bool, summary: bool, paths: Iterable[Path | No
     from flywheel.render.grading import print_class_summary, print_report
     from flywheel.render.messages import prefix
 
+    from flywheel.render.numbers import typeset
+
     if summary:
-        print_class_summary(report, lang)
+        typeset(lang, print_class_summary, report, lang)
     else:
-        print_report(report, lang=lang)
+        typeset(lang, print_report, report, lang=lang)
     for path in paths:
         if path is not None and report.students:
             typer.echo(f"{prefix('written', lang)}: {path}")

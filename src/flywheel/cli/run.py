@@ -12,9 +12,9 @@ from typing import Annotated, Optional
 
 import typer
 
-from flywheel.cli.guard import _guard, check_lang, choice, fail
-from flywheel.cli.options import (CaseFile, CsvStyle, Group, Json, Lang, Reports, Student,
-                                  Teacher)
+from flywheel.cli.guard import _guard, check_lang, choice, fail, frame_notice
+from flywheel.cli.options import (CaseFile, CsvStyle, Frame, Group, Json, Lang, Reports,
+                                  Student, Teacher)
 from flywheel.errors import Notice
 
 RunOut = Annotated[Optional[Path], typer.Option(
@@ -87,8 +87,10 @@ def check_command(case: CaseFile, lang: Lang = "en") -> None:
     from flywheel.render.check import print_check
 
     check_lang(lang)
+    from flywheel.render.numbers import typeset
+
     c = _guard(load_case, case)
-    print_check(_guard(check_case, c, source=case, case=c), lang=lang)
+    typeset(lang, print_check, _guard(check_case, c, source=case, case=c), lang=lang)
 
 
 def run_command(case: CaseFile, out: RunOut = None, points: Points = 3600, at: At = None,
@@ -98,7 +100,7 @@ def run_command(case: CaseFile, out: RunOut = None, points: Points = 3600, at: A
                 figure_format: FigureFormat = "png", dpi: Dpi = 120, drawings: Drawings = False,
                 sheet_size: SheetSize = "A1", snapshot: Snapshot = None,
                 at_travel: AtTravel = None, roots: Roots = None, student: Student = None,
-                group: Group = None, teacher: Teacher = None) -> None:
+                group: Group = None, teacher: Teacher = None, frame: Frame = "none") -> None:
     """Run the whole dynamic analysis of a case; write summary.json, table.csv, positions.csv,
     forces.csv, forces_positions.csv, report.md and plots/*.png to the output folder."""
     from flywheel.cli.outputs import RunOutputs, finish_run, write_run
@@ -107,8 +109,8 @@ def run_command(case: CaseFile, out: RunOut = None, points: Points = 3600, at: A
     what = RunOutputs(formats=tuple(report or ["md", "html"]), csv_style=csv_style,
                       plots="none" if no_plots else plots, figure_format=figure_format, dpi=dpi,
                       animate=animate, drawings=drawings, sheet_size=sheet_size,
-                      title_page=(student, group, teacher))
-    _check_options(what, at)
+                      title_page=(student, group, teacher), frame=frame)
+    _check_options(what, at, lang)
     c = _load(case, animate)
     out = out if out is not None else Path("out") / case.stem
     if c.kinematics_only:               # the kinematics alone (cli/kinematics.py)
@@ -153,8 +155,9 @@ def _solve(c, case: Path, points: int, at, transients: bool, motion, snapshot, a
     results = _guard(analyze_with_bar, source=case, case=c)
     return _guard(with_asks, results, c, snapshot, travel.found, roots)   # textbook asks
 
-def _check_options(what, at) -> None:
-    """Refuse an option's value outside its choices or range: one error line, exit 2."""
+def _check_options(what, at, lang: str = "en") -> None:
+    """Refuse an option's value outside its choices or range, or one that cannot apply (a
+    frame without a Russian PDF or DOCX report): one error line, exit 2."""
     from flywheel.render.csvfmt import STYLES
     from flywheel.render.figure import DPI_RANGE, FORMATS as FIGURE_FORMATS
     from flywheel.render.plots import CHOICES
@@ -179,6 +182,9 @@ def _check_options(what, at) -> None:
     for f in what.formats:
         if f not in FORMATS:
             fail(choice("--report", f, "a report format", ", ".join(FORMATS)))
+    refused = frame_notice(what.frame, lang, what.formats)
+    if refused is not None:
+        fail(refused)
     from flywheel.io.schema import MAX_TEXT
 
     for option, value in zip(("student", "group", "teacher"), what.title_page):

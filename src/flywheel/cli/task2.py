@@ -17,7 +17,8 @@ from typing import Annotated, List, Optional
 
 import typer
 
-from flywheel.cli.options import Json, Lang, OutFolder, Reports
+from flywheel.cli.guard import frame_notice
+from flywheel.cli.options import Frame, Json, Lang, OutFolder, Reports
 
 PROFILES = ("triangle", "rectangle")
 
@@ -70,7 +71,7 @@ def task2_command(profile: Profile = None, md: Md = None, j: J = None, omega0: O
                   start: From = None, end: To = None, mc: Mc = None, delta: Delta = None,
                   case: Task2Case = None, at: At = None, epsilon: Epsilon = False,
                   plot: Plot = None, as_json: Json = False, lang: Lang = "en",
-                  out: OutFolder = None, report: Reports = None) -> None:
+                  out: OutFolder = None, report: Reports = None, frame: Frame = "none") -> None:
     """Task 2: ω_max, ω_min, ω_ср and δ of a machine with constant J under given M_D(φ), M_C(φ)."""
     from flywheel.cli.guard import check_lang, guarded, solve_finite, write_plot
     from flywheel.cli.outputs import finish, written_line
@@ -83,7 +84,7 @@ def task2_command(profile: Profile = None, md: Md = None, j: J = None, omega0: O
                                        ("--delta", delta)) if v is not None]
     with guarded():
         check_lang(lang)
-        formats = _check_options(plot, report, out)
+        formats = _check_options(plot, report, out, frame, lang)
         job = (_from_case(case, at, profile, given, lang) if case is not None else
                _from_options(profile, given, dict(md=md, j=j, omega0=omega0, start=start,
                                                   end=end, mc=mc, delta=delta), at, lang))
@@ -92,7 +93,7 @@ def task2_command(profile: Profile = None, md: Md = None, j: J = None, omega0: O
             from flywheel.render.task2 import plot as draw
 
             write_plot(plot, lambda tmp: draw(result, tmp, job.title, lang))
-        written = _write_out(out, result, formats, job, lang) if out is not None else None
+        written = _write_out(out, result, formats, job, lang, frame) if out is not None else None
     finish(json_text=to_json(result, job.doc_title, job.doc_source) + "\n" if as_json else None,
            summary=lambda: typeset(lang, print_summary, result, job.title, job.source, lang=lang,
                                    motion=epsilon or bool(at)),
@@ -100,7 +101,8 @@ def task2_command(profile: Profile = None, md: Md = None, j: J = None, omega0: O
            + ([written_line(out, written, lang)] if out is not None else []))
 
 
-def _check_options(plot: Optional[Path], report, out: Optional[Path]) -> list[str]:
+def _check_options(plot: Optional[Path], report, out: Optional[Path], frame: str = "none",
+                   lang: str = "en") -> list[str]:
     """Refuse a --plot that names a folder, a --report format not known, or --report without
     --out (an InputError); return the report formats."""
     from flywheel.cli.guard import needs_out
@@ -114,6 +116,9 @@ def _check_options(plot: Optional[Path], report, out: Optional[Path]) -> list[st
     formats = check_formats(report)
     if report and out is None:
         raise InputError(needs_out())
+    refused = frame_notice(frame, lang, formats)
+    if refused is not None:
+        raise InputError(refused)
     return formats
 
 @dataclass(frozen=True)
@@ -207,7 +212,7 @@ def _from_options(profile, given, v: dict, at, lang: str) -> _Job:
                 nm.name("t2_seed_title", profile=profile), nm.name("t2_seed_source"))
 
 
-def _write_out(out: Path, result, formats, job: _Job, lang: str):
+def _write_out(out: Path, result, formats, job: _Job, lang: str, frame: str = "none"):
     """The --out folder (cli/outputs.py, render/report_folder.py): summary.json,
     plots/task2.png, the report with its title page; returns the names written."""
     from flywheel.cli.outputs import report_folder
@@ -221,4 +226,5 @@ def _write_out(out: Path, result, formats, job: _Job, lang: str):
         out, "task2", to_json(result, job.doc_title, job.doc_source) + "\n",
         lambda path: draw(result, path, job.title, lang), FIGURE,
         lambda fig: front(typeset(lang, build_task2_document, result, job.title, job.source, lang,
-                                  fig), job.document), formats)
+                                  fig), job.document, frame="" if frame == "none" else frame),
+        formats)

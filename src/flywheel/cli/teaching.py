@@ -87,7 +87,9 @@ def variants_command(template: Template, count: Count, out: VariantsOut, seed: S
 
     vs = _guard(generate_with_bar)
     write_variant_files(vs, out, template, lang, sheets_format, moodle)
-    print_variants(vs, out, sheets=sheets_format, lang=lang)
+    from flywheel.render.numbers import typeset
+
+    typeset(lang, print_variants, vs, out, sheets=sheets_format, lang=lang)
 
 
 def _check_variants(template: Path, count: int, out: Path, seed, points: int, sheets: bool,

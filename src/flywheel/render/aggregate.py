@@ -210,7 +210,7 @@ def plot(r, path, title: str = "", lang: str = "en") -> None:
 
     ch = r.chain
     names = [nm.rotor_name(n, lang) for n in ch.names]
-    with fg.style():
+    with fg.style(lang):
         fig = Figure(figsize=(7.45, 6.4), dpi=100, layout="constrained")
         axes = fig.subplots(2, 2)
         for col, (h, name) in enumerate(((r.startup, L("ag_plot_startup")),

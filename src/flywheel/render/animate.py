@@ -41,7 +41,7 @@ def write_animation(results, path: Path, lang: str = "en", frames: int = FRAMES,
     from flywheel.render import figure as fg
     from flywheel.render import plots
 
-    with fg.style():
+    with fg.style(lang):
         fig, ax = fg.figure((6.4, 6.0), left=0.8, right=0.2, bottom=0.6, top=0.45)
         fig.set_dpi(DPI)
         b = results.drawing.bounds

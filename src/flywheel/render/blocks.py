@@ -6,7 +6,7 @@ the document builder.
 """
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 
 @dataclass(frozen=True)
@@ -61,14 +61,20 @@ class TitlePage:
     city: str = ""
     year: str = ""
     designation: str = ""
+    tech_control: str = ""
+    norm_control: str = ""
+    approved: str = ""
     margin_right_mm: float = 10.0
+    #: the page frame (``--frame``): "" none, "eskd" the ЕСКД frame with the title blocks of
+    #: forms 2 and 2a (ГОСТ 2.104-2006; render/report_frame.py)
+    frame: str = ""
 
     @classmethod
     def of(cls, spec, machine: str, **given: str | None) -> "TitlePage":
         """From a ``DocumentSpec`` (None: none given) and the options ``given`` (None or ""
         keeps the case's)."""
         names = ("ministry", "university", "department", "student", "group", "teacher", "city",
-                 "designation")
+                 "designation", "tech_control", "norm_control", "approved")
         values = {k: (getattr(spec, k) or "") if spec is not None else "" for k in names}
         values.update({k: v for k, v in given.items() if v})
         year = getattr(spec, "year", None) if spec is not None else None
@@ -113,8 +119,8 @@ class Document:
         return doc
 
 
-def front(doc: Document, spec, **given: str | None) -> Document:
+def front(doc: Document, spec, frame: str = "", **given: str | None) -> Document:
     """``doc`` with its title page from the case's ``[document]`` ``spec`` (None: blanks) and
-    the options ``given``; the machine is the document's title."""
-    doc.front = TitlePage.of(spec, doc.title, **given)
+    the options ``given``; the machine is the document's title; ``frame`` the page frame."""
+    doc.front = replace(TitlePage.of(spec, doc.title, **given), frame=frame)
     return doc

@@ -8,6 +8,7 @@ from flywheel.io.text import in_language
 from flywheel.render import nomenclature as nm
 from flywheel.render.catalogue import words
 from flywheel.render.numbers import fmt as _number
+from flywheel.render.numbers import russian
 from flywheel.units import PA_PER_MPA
 
 # the words of `flywheel check` (the quantities' names, symbols and units: the nomenclature)
@@ -45,17 +46,39 @@ def _g(x: float) -> str:
     return _number(x, 6, zero=1e-12, nonfinite="show")
 
 
+def _n(x: float, spec: str = "g", given: bool = False) -> str:
+    """A number of the check: in English Python's ``format(x, spec)`` as it always printed;
+    in Russian (within ``typography("ru")``: the CLI's ``typeset``) the formatter's policy —
+    an input the case gave (``given``) with its own digits, a result to four."""
+    return _number(x, spec=spec, zero=None, nonfinite="show", given=given)
+
+
+def _deg(rad: float) -> str:
+    """A dead centre's angle [deg]: four decimals in English as before; four significant
+    digits in Russian (a result, as in the summary)."""
+    return _n(math.degrees(rad), "g" if russian() else ".4f")
+
+
+def _xy(p) -> str:
+    """A point (x, y) [m] given by the case: «(0.0, 0.0)» in English as before; in Russian
+    «(0; 0)» (the comma is the decimal sign)."""
+    if not russian():
+        return str(p)
+    return "(" + "; ".join(_n(v, given=True) for v in p) + ")"
+
+
 def _crank_line(report, m, lang: str = "en") -> str:
     """n1, ω_m, δ and which constant moment balances the cycle."""
     w = W[lang]
     bal = w["balance_driving" if m.balance == "driving" else "balance_resistance"]
-    speed = (f"{nm.name('crank_speed', lang)} = {report.crank_speed_rps:.6g} "
+    speed = (f"{nm.name('crank_speed', lang)} = {_n(report.crank_speed_rps, '.6g')} "
              f"{nm.unit_of('crank_speed', lang)}, "
-             f"{nm.symbol('omega_mean', lang)} = {m.omega_mean:.6g} {nm.unit_of('omega_mean', lang)}")
+             f"{nm.symbol('omega_mean', lang)} = {_n(m.omega_mean, '.6g')} "
+             f"{nm.unit_of('omega_mean', lang)}")
     if report.case.kinematics_only:
         return speed + ", " + w["kinematics_only"]
     return (speed + ", "
-            + (f"{nm.symbol('delta', lang)} = {m.delta:g}, " if m.delta is not None else
+            + (f"{nm.symbol('delta', lang)} = {_n(m.delta, given=True)}, " if m.delta is not None else
                w["given_fw"]) + bal)
 
 
@@ -91,40 +114,41 @@ def print_check(report, console=None, lang: str = "en") -> None:
                   else f"[bold]{title or w['case']}[/bold]")
     console.print(_crank_line(report, m, lang))
     if m.cycle_deg != 360 or report.firing_deg:
-        console.print(w["cycle"].format(c=f"{m.cycle_deg:g}") + (w["fires"] + ", ".join(
-            w["fire_at"].format(n=n, a=f"{a:.6g}") for n, a in report.firing_deg.items())
+        console.print(w["cycle"].format(c=_n(m.cycle_deg, given=True)) + (w["fires"] + ", ".join(
+            w["fire_at"].format(n=n, a=_n(a, ".6g")) for n, a in report.firing_deg.items())
             if report.firing_deg else ""))
     c = mech.crank
     t = Table(title=w["mechanism"], show_lines=False)
     for col in ("group", "links", "points", "data"):
         t.add_column(w[col])
     t.add_row(w["crank"], c.name, f"{c.pivot} → {c.tip}",
-              f"l = {c.length:.6g} {nm.unit('m', lang)}, θ0 = {math.degrees(c.start_angle):g}°, "
+              f"l = {_n(c.length, '.6g', True)} {nm.unit('m', lang)}, "
+              f"θ0 = {_n(math.degrees(c.start_angle))}°, "
               f"{w['cw'] if c.direction < 0 else w['ccw']}")
     for pin in c.pins:
         t.add_row(w["crank_pin"], c.name, f"{c.pivot} → {pin.name}",
-                  w["pin_at"].format(l=f"{pin.length:.6g}", a=f"{math.degrees(pin.angle):g}",
+                  w["pin_at"].format(l=_n(pin.length, ".6g", True), a=_n(math.degrees(pin.angle)),
                                      tip=c.tip))
     for spec, d in zip(case.dyads, mech.dyads):
         if isinstance(spec, RRPSpec):
             t.add_row(f"RRP {d.name}", f"{d.rod}, {d.slider}", f"{d.origin} → {d.joint}",
-                      w["rrp"].format(l=f"{d.rod_length:.6g}", th=d.guide.through,
-                                      a=f"{math.degrees(d.guide.angle):g}",
-                                      o=f"{d.guide.offset:g}", b=spec.branch))
+                      w["rrp"].format(l=_n(d.rod_length, ".6g", True), th=_xy(d.guide.through),
+                                      a=_n(math.degrees(d.guide.angle)),
+                                      o=_n(d.guide.offset, given=True), b=spec.branch))
         elif isinstance(spec, RPRSpec):
             t.add_row(f"RPR {d.name}", f"{d.rocker}, {d.slider}",
                       w["rpr_where"].format(o=d.origin, p=d.pivot),
-                      w["rpr"].format(o=f"{d.offset:g}", b=spec.branch))
+                      w["rpr"].format(o=_n(d.offset, given=True), b=spec.branch))
         else:
             t.add_row(f"RRR {d.name}", f"{d.link_a}, {d.link_b}",
                       f"{d.point_a} → {d.joint} ← {d.point_b}",
-                      w["rrr"].format(a=f"{d.length_a:.6g}", b=f"{d.length_b:.6g}",
+                      w["rrr"].format(a=_n(d.length_a, ".6g", True), b=_n(d.length_b, ".6g", True),
                                       br=spec.branch))
     for p in mech.points:
-        how = (w["of"].format(f=f"{p.fraction:g}", o=p.origin, t=p.toward)
-               + (w["across"].format(a=f"{p.across:g}") if p.across else "")
-               if p.toward else w["from"].format(d=f"{p.distance:g}", o=p.origin,
-                                                 a=f"{math.degrees(p.angle):g}"))
+        how = (w["of"].format(f=_n(p.fraction, given=True), o=p.origin, t=p.toward)
+               + (w["across"].format(a=_n(p.across, given=True)) if p.across else "")
+               if p.toward else w["from"].format(d=_n(p.distance, given=True), o=p.origin,
+                                                 a=_n(math.degrees(p.angle))))
         t.add_row(w["point"], p.link, p.name, how)
     console.print(t)
 
@@ -133,18 +157,20 @@ def print_check(report, console=None, lang: str = "en") -> None:
                                                       label=nm.name("link_mass", lang)),
                                 nm.heading("J_S", lang), w["centroid"]))
         for name, lk in case.links.items():
-            t.add_row(name, f"{lk.mass:g}" if lk.mass else "—", f"{lk.J_S:g}", lk.centroid or "—")
+            t.add_row(name, _n(lk.mass, given=True) if lk.mass else "—", _n(lk.J_S, given=True),
+                      lk.centroid or "—")
         console.print(t)
     if m.first_group:
         console.print(w["first_group"] + ", ".join(
-            f"{k} = {v:g} {nm.unit_of('J_first_group', lang)}" for k, v in m.first_group.items()))
+            f"{k} = {_n(v, given=True)} {nm.unit_of('J_first_group', lang)}"
+            for k, v in m.first_group.items()))
     if case.cylinders:
         t = _table(w["Cylinders"], (w["name"], w["piston"],
                                     nm.heading("bore", lang, label=nm.name("bore", lang)),
                                     nm.heading("p_max", lang, si="MPa"), w["head"],
                                     w["interpolation"], w["points"]))
         for cy in case.cylinders:
-            t.add_row(cy.name, cy.piston, f"{cy.bore:g}", f"{cy.p_max / PA_PER_MPA:g}",
+            t.add_row(cy.name, cy.piston, _n(cy.bore, given=True), _n(cy.p_max / PA_PER_MPA),
                       w.get(cy.head, cy.head),
                       cy.interpolation, str(len(cy.s if cy.s is not None else cy.diagram.s)))
         console.print(t)
@@ -154,9 +180,9 @@ def print_check(report, console=None, lang: str = "en") -> None:
                                        nm.heading("x", lang, label=w["x along guide"])))
         for sl in report.sliders:
             for dc in sl.dead_centres:
-                t.add_row(sl.slider, w.get(dc.kind, dc.kind), f"{math.degrees(dc.phi):.4f}",
-                          f"{dc.x:.6g}")
-            t.add_row(sl.slider, w["stroke"], "", f"{sl.stroke:.6g}")
+                t.add_row(sl.slider, w.get(dc.kind, dc.kind), _deg(dc.phi),
+                          _n(dc.x, ".6g"))
+            t.add_row(sl.slider, w["stroke"], "", _n(sl.stroke, ".6g"))
         console.print(t)
         angles = report.dead_centre_angles
         if angles:
@@ -165,14 +191,14 @@ def print_check(report, console=None, lang: str = "en") -> None:
             t = _table(w["pts_dc"].format(v=vq, a=aq),
                        (nm.heading("phi_deg", lang), *report.point_analogues))
             for i, a in enumerate(angles):
-                t.add_row(f"{math.degrees(a):.4f}", *(
+                t.add_row(_deg(a), *(
                     f"{_g(v[i])} / {_g(acc[i])}" for v, acc in report.point_analogues.values()))
             console.print(t)
             t = _table(w["links_dc"].format(w=nm.heading("omega_q", lang),
                                             e=nm.heading("epsilon_q", lang)),
                        (nm.heading("phi_deg", lang), *report.link_analogues))
             for i, a in enumerate(angles):
-                t.add_row(f"{math.degrees(a):.4f}", *(
+                t.add_row(_deg(a), *(
                     f"{_g(w[i])} / {_g(e[i])}" for w, e in report.link_analogues.values()))
             console.print(t)
     if report.output_link is not None:                  # render/output_link.py
@@ -221,7 +247,8 @@ def _print_tabulated(report, console, lang: str = "en") -> None:
                             nm.heading("link_J", lang),
                             w["row"].format(w=nm.symbol("omega_q", lang))))
     for name, lk in tab.links.items():
-        t.add_row(name, f"{lk.mass:g}" if lk.mass else "—", lk.point or "—", f"{lk.J:g}",
+        t.add_row(name, _n(lk.mass, given=True) if lk.mass else "—", lk.point or "—",
+                  _n(lk.J, given=True),
                   (lk.omega_q or name) if lk.J else "—")
     console.print(t)
     console.print(f"[green]{w['valid']}[/green]")

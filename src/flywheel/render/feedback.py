@@ -11,7 +11,7 @@ import re
 
 from flywheel.render.catalogue import words
 from flywheel.render.grading import MISTAKES, cells_off, table_verdict, verdict_word
-from flywheel.render.numbers import fmt
+from flywheel.render.numbers import fmt, typography
 
 T = words("feedback", {
     "title": "Feedback: {student}, variant {variant}",
@@ -26,14 +26,14 @@ T = words("feedback", {
 })
 
 
-def _num(x, lang: str) -> str:
-    """A number as the page writes it (render/numbers.py; Russian: decimal comma, true minus)."""
+def _num(x, lang: str, given: bool = False) -> str:
+    """A number as the page writes it: the one formatter (render/numbers.py), in Russian its
+    Russian policy (a result to four digits, the student's own answer — ``given`` — with its
+    digits; decimal comma, true minus, no exponent)."""
     if x is None:
         return "—"
-    text = fmt(x, 6, zero=None, nonfinite="show")
-    if lang == "ru":
-        text = text.replace(".", ",").replace("-", "\u2212")
-    return text
+    with typography(lang):
+        return fmt(x, 6, zero=None, nonfinite="show", given=given)
 
 
 def label(answer: str, lang: str) -> str:
@@ -72,11 +72,11 @@ def page(s, lang: str = "en", reveal: bool = True, share: float = 0.0) -> str:
     for j, a in enumerate(s.answers):
         if in_table >> j & 1 and a.passed:
             continue                  # a table's right cell: counted in its table's line
-        cells = [f"{e(label(a.answer, lang))}<br><small>{e(a.answer)}</small>", _num(a.given, lang), e(verdict_word(a, lang)),
+        cells = [f"{e(label(a.answer, lang))}<br><small>{e(a.answer)}</small>", _num(a.given, lang, given=True), e(verdict_word(a, lang)),
                  e(MISTAKES[lang].get(a.diagnosis, a.diagnosis or t["none"]))]
         if reveal:
             cells.append(_num(a.key, lang))
-        cells.append(_num(100 * a.tolerance, lang) + " %")
+        cells.append(_num(100 * a.tolerance, lang, given=True) + " %")
         cls = a.verdict.replace(" ", "-")
         rows.append(f'<tr class="{cls}">' + "".join(f"<td>{c}</td>" for c in cells) + "</tr>")
     for name, right, n, off in s.table_grades:

@@ -50,27 +50,84 @@ _styled = 0        # depth of nested style() blocks: only the outermost one sets
 
 
 @contextmanager
-def style():
+def style(lang: str = "en"):
     """matplotlib's defaults plus :data:`RC`, whatever the user's matplotlibrc says; the
-    caller's settings come back on exit."""
+    caller's settings come back on exit. ``lang`` "ru": the figures drawn inside are Russian
+    figures — their tick labels (:func:`_russian_ticks`) and every number a figure's text takes
+    from the one formatter in Russian typography (render/numbers.py)."""
     global _styled
     if _styled:
         yield
         return
     import matplotlib
 
-    with matplotlib.rc_context():
+    from flywheel.render.numbers import typography
+
+    with matplotlib.rc_context(), typography(lang):
         matplotlib.rcdefaults()
         matplotlib.rcParams.update(RC)
         _styled += 1
         restore = _share_text_metrics()
         restore_fonts = _remember_fonts()
+        restore_ticks = _russian_ticks() if lang == "ru" else (lambda: None)
         try:
             yield
         finally:
+            restore_ticks()
             restore_fonts()
             restore()
             _styled -= 1
+
+
+def _tick_decimals(locs) -> int | None:
+    """The decimals that tell ticks ``locs`` apart: those of their spacing (0.25 → 2, 30 → 0);
+    None for fewer than two ticks."""
+    xs = sorted(set(float(x) for x in locs))
+    steps = [b - a for a, b in zip(xs, xs[1:]) if b - a > 0]
+    if not steps:
+        return None
+    step = min(steps)
+    for d in range(12):
+        scaled = step * 10.0 ** d
+        if abs(scaled - round(scaled)) <= 1e-6 * max(1.0, scaled):
+            return d
+    return None
+
+
+def _russian_ticks():
+    """Within :func:`style` of a Russian figure, every linear axis made gets a FuncFormatter
+    that writes its tick values through the one formatter in Russian typography (decimal
+    comma, true minus, thin spaces in long numbers, never an exponent or an offset), to the
+    decimals of the ticks' spacing. matplotlib's locale support (``axes.formatter.use_locale``)
+    would depend on the machine's locale: not used. Returns the function that undoes it."""
+    from matplotlib import scale
+    from matplotlib.ticker import FuncFormatter
+
+    from flywheel.render.numbers import fmt, typography
+
+    own = scale.LinearScale.set_default_locators_and_formatters
+
+    def ticks(self, axis):
+        own(self, axis)
+
+        locs: list = []                  # the ticks about to be labelled (set_locs)
+
+        def label(x, pos=None):
+            d = _tick_decimals(locs)
+            with typography("ru"):
+                return fmt(x, spec=None if d is None else f".{d}f")
+
+        def set_locs(values) -> None:
+            locs[:] = [float(v) for v in values]
+        formatter = FuncFormatter(label)
+        formatter.set_locs = set_locs
+        axis.set_major_formatter(formatter)
+
+    scale.LinearScale.set_default_locators_and_formatters = ticks
+
+    def restore() -> None:
+        scale.LinearScale.set_default_locators_and_formatters = own
+    return restore
 
 
 def _share_text_metrics():

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from flywheel.render.catalogue import words
 from flywheel.render.numbers import fmt as _number
+from flywheel.render.numbers import russian
 
 # sentence templates of the class summary and the gradebook (the quantities' names are
 # answers' keys, which stay as the key spells them)
@@ -175,12 +176,20 @@ def print_class_summary(r, lang: str = "en", console=None) -> None:
         console.print(t["problems"].format(n=len(r.problems)), highlight=False)
 
 
-def _g(x, fmt: str = ".6g") -> str:
+def _g(x, fmt: str = ".6g", given: bool = False) -> str:
+    """A value of the terminal's tables through the one formatter (in Russian, within the
+    CLI's ``typeset``: a result to four digits, an input — ``given`` — with its own, whole
+    numbers grouped); "—" for none, a text as it is."""
     if x is None:
         return "—"
-    if isinstance(x, float):
-        return _number(x, spec=fmt, zero=None, nonfinite="show")
+    if isinstance(x, float) or (isinstance(x, int) and not isinstance(x, bool) and russian()):
+        return _number(float(x), spec=fmt, zero=None, nonfinite="show", given=given)
     return str(x)
+
+
+def _pct_of(share: float) -> str:
+    """A tolerance as a percentage («1», «0,5»: Python's ``g`` in English as before)."""
+    return _number(100 * share, spec="g", zero=None, nonfinite="show", given=True)
 
 
 def print_variants(vs, out, console=None, sheets: str | None = None, lang: str = "en") -> None:
@@ -201,7 +210,8 @@ def print_variants(vs, out, console=None, sheets: str | None = None, lang: str =
     table.add_column(w["v_drawn"], style="cyan")
     table.add_column(w["v_answers"])
     for v in vs.variants:
-        table.add_row(v.id, "\n".join(f"{p.path} = {_g(v.drawn[p.path])}" for p in t.varied),
+        table.add_row(v.id, "\n".join(f"{p.path} = {_g(v.drawn[p.path], given=True)}"
+                                     for p in t.varied),
                       "\n".join(f"{a} = {_g(v.answers[a])}" for a in t.answers))
     console.print(table)
     for x in vs.warnings:
@@ -256,12 +266,14 @@ def print_report(r, console=None, lang: str = "en") -> None:
             if in_table >> j & 1 and not a.diagnosis:
                 continue                        # a table's cell: in its table's line
             err = "—" if a.error is None else (
-                f"{100 * a.error:.3g} %" if a.error_kind == "relative"
-                else f"{a.error:.3g} {t['abs']}")
+                f"{_number(100 * a.error, spec='.3g', zero=None, nonfinite='show')} %"
+                if a.error_kind == "relative"
+                else f"{_number(a.error, spec='.3g', zero=None, nonfinite='show')} {t['abs']}")
             mark = f"[green]{t['pass']}[/]" if a.passed else (
                 f"[yellow]{t['carried']}[/]" if a.verdict == "carried" else
                 f"[red]{t['fail']}[/]" if a.given is not None else f"[red]{t['no_answer']}[/]")
-            cells = [a.answer, _g(a.given), _g(a.key), err, f"{100 * a.tolerance:g} %", mark]
+            cells = [a.answer, _g(a.given, given=True), _g(a.key), err,
+                     f"{_pct_of(a.tolerance)} %", mark]
             if explained:
                 cells.append(MISTAKES[lang].get(a.diagnosis, a.diagnosis or ""))
             table.add_row(*cells)
@@ -290,7 +302,7 @@ def print_report(r, console=None, lang: str = "en") -> None:
         per.add_column(t["wrong_col"], justify="right")
         per.add_column(t["tolerance"], justify="right")
         for a, (w, n) in r.wrong_counts().items():
-            per.add_row(a, f"{w}/{n}", f"{100 * r.key.tolerance_of(a, r.tolerance):g} %")
+            per.add_row(a, f"{w}/{n}", f"{_pct_of(r.key.tolerance_of(a, r.tolerance))} %")
         console.print(per)
         worst = r.most_often_wrong()
         full = sum(s.passed == s.total for s in r.students)

@@ -32,6 +32,7 @@ from dataclasses import dataclass
 
 from flywheel.dynamics.loads import LoadKey
 from flywheel.io.text import in_language
+from flywheel.render.numbers import typeset_params
 
 
 @dataclass(frozen=True)
@@ -699,7 +700,8 @@ def name(key: str, lang: str = "en", **fields) -> str:
     template = t.ru if lang == "ru" else t.en
     if x:
         fields = {"x": load_name(x, lang), **fields}
-    return template.format(**fields) if fields else template
+    # within Russian typography (render/numbers.py) a real field as the one formatter writes it
+    return template.format(**typeset_params(fields)) if fields else template
 
 
 def rotor_name(rotor: str, lang: str = "en") -> str:

@@ -91,6 +91,12 @@ def typography(lang: str, noise: float = NOISE):
         _POLICY.reset(token)
 
 
+def russian() -> bool:
+    """Whether the Russian policy is in force (a renderer that writes more than a number — a
+    point «(x; y)», whose comma would be the decimal sign — asks)."""
+    return _POLICY.get() is not None
+
+
 def typeset(lang: str, build, /, *args, **kwargs):
     """``build(*args, **kwargs)`` under ``lang``'s typography (:func:`typography`): a Russian
     document or summary built with Russian numbers."""

@@ -26,6 +26,7 @@ from flywheel.render import nomenclature as nm
 from flywheel.render.catalogue import words
 from flywheel.render.plots_scheme import (  # noqa: F401  (public here: animate, sheets)
     draw_scheme, draw_scheme_at, draw_scheme_fixed, scheme_names)
+from flywheel.render.numbers import typeset_params
 from flywheel.units import PA_PER_MPA
 
 _SCHEME_LEGEND_COLS = 4     # columns of the scheme's legend (below the panels)
@@ -78,7 +79,7 @@ _TEXT = words("plots", {
 
 def _t(lang: str, key: str, **kw) -> str:
     text = _TEXT["ru" if lang == "ru" else "en"][key]
-    return text.format(**kw) if kw else text
+    return text.format(**typeset_params(kw)) if kw else text       # Russian numbers in ru
 
 
 def _sub(symbol: str, name: str, norm: bool = False) -> str:
@@ -515,7 +516,7 @@ def _save_some(results, folder: Path, lang: str, indices: list[int], fmt: str = 
     """Draw figures ``indices`` and save each as PNG and, if ``fmt`` is another format, as
     ``fmt`` too (the reports embed the PNGs)."""
     specs = all_figures(results, lang)
-    with fg.style():
+    with fg.style(lang):
         for i in indices:
             name, build = specs[i]
             fig = build()

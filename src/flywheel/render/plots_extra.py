@@ -12,6 +12,7 @@ import numpy as np
 
 from flywheel.render import nomenclature as nm
 from flywheel.render.catalogue import words
+from flywheel.render.numbers import fmt, typeset_params
 
 # Sentence templates only; every quantity's symbol, name and unit comes from the nomenclature
 # (render/nomenclature.py), filled in where the templates say {…}.
@@ -36,7 +37,7 @@ TEXT = words("plots_extra", {"em": "Energy–mass diagram (Wittenbauer) and Merz
 
 def _f(t: dict, key: str, **kw) -> str:
     """The template ``key`` of ``t`` with the symbols, numbers and units filled in."""
-    return t[key].format(**kw)
+    return t[key].format(**typeset_params(kw))         # Russian numbers in a Russian figure
 
 
 def _plt():
@@ -152,7 +153,8 @@ def figure_energy_mass(results, lang: str = "en"):
     zx.plot(J_II[i_min], A[i_min], "o", color="tab:green", ms=5)
     phi_deg = np.degrees(results.phi)
     for i, dy in ((i_max, 8), (i_min, -14)):
-        zx.annotate(f"φ = {phi_deg[i]:.1f}°", xy=(J_II[i], A[i]), xytext=(4, dy),
+        zx.annotate(f"φ = {fmt(phi_deg[i], spec='.1f', zero=None)}°", xy=(J_II[i], A[i]),
+                    xytext=(4, dy),
                     textcoords="offset points", fontsize=8)
     zx.set_xlim(*z)
     zx.set_xlabel(nm.axis("J_II", lang))

@@ -165,8 +165,12 @@ def _title(results, what: str) -> str:
     return f"{results.title}\n{what}"
 
 
+#: between the numbers of a list: «; » in Russian, where the comma is the decimal sign
+_SEP = (", ", "; ")
+
+
 def _scale_text(key: str, mu: float, lang: str) -> str:
-    return f"{nm.tex(key, lang)} = {mu:g} {nm.unit_of(key, lang)}"
+    return f"{nm.tex(key, lang)} = {_number(mu, spec='g', zero=None)} {nm.unit_of(key, lang)}"
 
 
 def _num(v: float, sig: int = 4) -> str:
@@ -329,7 +333,7 @@ def _kinematic_plan(results, ps, which: str, lang: str):
         for v in vs:
             val = _clean(v.value, vmax)
             lines.append(f"{_vec_label(plan, v)} = {_num(val)} {_unit(u, lang)}, "
-                         f"{val / mu:.1f} {_unit('mm', lang)}")
+                         f"{_number(val / mu, spec='.1f', zero=None)} {_unit('mm', lang)}")
     lo, hi = _limits(np.array(pts))
     W, left, right = A4_W, 0.7, 0.3
     aw, ah = _plan_box(lo, hi, W - left - right, 6.2)
@@ -337,7 +341,7 @@ def _kinematic_plan(results, ps, which: str, lang: str):
     wmax = max([abs(float(x)) for x in lw.values()] + [0.0])
     name = "links_w" if which == "velocity" else "links_e"
     head = (f"{_t(lang, 'omega', w=plan.omega, e=plan.epsilon)}; "
-            f"{_t(lang, name, x=', '.join(f'{n} {_num(_clean(lw[n], wmax))}' for n in lw))}")
+            f"{_t(lang, name, x=_SEP[lang == 'ru'].join(f'{n} {_num(_clean(lw[n], wmax))}' for n in lw))}")
     head = _wrap([head], int((W - left - right) / (_CHAR_W * 7.5 / _PT)))
     handles = [Line2D([], [], color=_COLOURS[k], linewidth=1.8 if k == "absolute" else 1.2,
                       linestyle="--" if k == "relative" else "-", label=_t(lang, k))

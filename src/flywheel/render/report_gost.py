@@ -175,7 +175,7 @@ _PREAMBLE = """#set document(title: {title}, date: none)
 """
 
 
-def _title_page(f: TitlePage, g: dict) -> str:
+def _title_page(f: TitlePage, g: dict, page: str = "footer: none") -> str:
     blank = "#box(width: 45mm, stroke: (bottom: 0.5pt))"
 
     def line(value: str, width: str = "45mm") -> str:
@@ -183,7 +183,7 @@ def _title_page(f: TitlePage, g: dict) -> str:
 
     top = ([_ts(f.ministry)] if f.ministry else []) + [line(x, "120mm") for x in (f.university,
                                                                                     f.department)]
-    out = ["#page(footer: none)[",
+    out = [f"#page({page})[",
            "#set par(first-line-indent: 0pt, justify: false, leading: 0.65em)",
            "#align(center)[" + " \\\n#v(0.4em)".join(top) + "]",
            "#v(1fr)",
@@ -207,12 +207,21 @@ def typst_source(doc: Document, plots: bool = True) -> str:
     g = G[doc.lang]
     f = _front(doc)
     fonts = ", ".join(f'"{x}"' for x in FAMILIES)
+    contents = [f"#align(center)[#text(weight: \"bold\")[{_ts(g['contents'].upper())}]]",
+                "#outline(title: none, indent: 1.25cm, depth: 2)"]
+    landscape = "flipped: true"
     out = [_PREAMBLE.format(title=_ts(doc.title)[1:] or '""', right=f"{f.margin_right_mm:g}",
-                            fonts=fonts),
-           _title_page(f, g),
-           f"#align(center)[#text(weight: \"bold\")[{_ts(g['contents'].upper())}]]",
-           "#outline(title: none, indent: 1.25cm, depth: 2)",
-           ""]
+                            fonts=fonts)]
+    if f.frame == "eskd":                       # the ЕСКД frame (render/report_frame.py)
+        from flywheel.render import report_frame as rf
+
+        landscape = rf.typst_landscape(f)
+        out += [rf.typst_preamble(f, doc.lang, g["note"]),
+                _title_page(f, g, "footer: none, " + rf.typst_title_margins(f)),
+                f"#page({rf.typst_contents_page(f)})[",
+                contents[0] + " <eskd-contents>", contents[1], "]", ""]
+    else:
+        out += [_title_page(f, g), *contents, ""]
     for b in sections(doc):
         if isinstance(b, Section):
             body = _ts(b.text.upper() if b.structural else b.text)
@@ -229,7 +238,7 @@ def typst_source(doc: Document, plots: bool = True) -> str:
         elif isinstance(b, Formula):
             out.append(f"$ {mathfmt.typst(b.tex)} $")
         elif isinstance(b, Table):
-            out.append(_table(b, g))
+            out.append(_table(b, g, landscape))
         elif isinstance(b, Figure):
             cap = _ts(f"{g['figure']} {b.number} — {b.caption}")
             img = f'image("plots/{b.file}", width: 100%), ' if plots else ""
@@ -239,7 +248,7 @@ def typst_source(doc: Document, plots: bool = True) -> str:
     return "\n".join(out)
 
 
-def _table(b: Table, g: dict) -> str:
+def _table(b: Table, g: dict, landscape: str = "flipped: true") -> str:
     """A table under its caption «Таблица N — …» (a sticky block: never left at the foot of a
     page without the table), its header row repeated on each page it runs onto with
     «Продолжение таблицы N» above it; the first column left, the numbers right."""
@@ -259,7 +268,7 @@ def _table(b: Table, g: dict) -> str:
            f"#table(columns: {n}, inset: (x: 2.5pt, y: 4pt), "
            f"align: (x, y) => if x == 0 {{ left + horizon }} else {{ right + horizon }},\n"
            f"table.header(repeat: true, {cont}, {head}),\n{cells}) <{label}>]")
-    return f"#page(flipped: true)[\n{src}\n]" if n > WIDE_PAGE else src
+    return f"#page({landscape})[\n{src}\n]" if n > WIDE_PAGE else src
 
 
 def compile_typst(src: str, doc: Document, plots_dir: Path | None, fonts=()) -> bytes:
@@ -286,7 +295,12 @@ def compile_typst(src: str, doc: Document, plots_dir: Path | None, fonts=()) -> 
 
 def pdf(doc: Document, plots_dir: Path | None = None) -> bytes:
     """The Russian записка as PDF (typst) in the ГОСТ layout."""
-    return compile_typst(typst_source(doc, plots_dir is not None), doc, plots_dir, font_files())
+    fonts = font_files()
+    if _front(doc).frame == "eskd":             # the title blocks' lettering
+        from flywheel.render.report_frame import font_file
+
+        fonts.append(font_file())
+    return compile_typst(typst_source(doc, plots_dir is not None), doc, plots_dir, fonts)
 
 
 # -- DOCX ---------------------------------------------------------------------------------------
@@ -434,11 +448,13 @@ def docx(doc: Document, plots_dir: Path | None = None) -> bytes:
     sec.left_margin, sec.right_margin = Mm(30), Mm(f.margin_right_mm)
     sec.top_margin = sec.bottom_margin = Mm(20)
     sec.header_distance, sec.footer_distance = Mm(10), Mm(10)
-    sec.different_first_page_header_footer = True           # no number on the title page
-    foot = sec.footer.paragraphs[0]
-    foot.alignment = WD_ALIGN_PARAGRAPH.CENTER
-    foot.paragraph_format.first_line_indent = Cm(0)
-    _field(foot, "PAGE", "2")
+    framed = f.frame == "eskd"                               # render/report_frame.py
+    if not framed:
+        sec.different_first_page_header_footer = True       # no number on the title page
+        foot = sec.footer.paragraphs[0]
+        foot.alignment = WD_ALIGN_PARAGRAPH.CENTER
+        foot.paragraph_format.first_line_indent = Cm(0)
+        _field(foot, "PAGE", "2")
     import datetime
 
     fixed = datetime.datetime(2000, 1, 1)
@@ -489,7 +505,12 @@ def docx(doc: Document, plots_dir: Path | None = None) -> bytes:
     for _ in range(6):
         plain()
     plain(f"{f.city or '__________'} {f.year or '____'}")
-    plain().add_run().add_break(WD_BREAK.PAGE)
+    if framed:                          # the frame's section: on a new page
+        from flywheel.render.report_frame import docx_section
+
+        docx_section(d, f, doc.lang, g["note"])
+    else:
+        plain().add_run().add_break(WD_BREAK.PAGE)
 
     # the contents: a TOC field (Word fills it with the page numbers on opening)
     p = d.add_paragraph(style="Title")

@@ -20,6 +20,7 @@ from flywheel.render import nomenclature as nm
 from flywheel.render.catalogue import words
 from flywheel.render.document import Document, Figure, Heading, Paragraph, Table
 from flywheel.render.numbers import fmt as _number
+from flywheel.render.numbers import russian, typeset
 
 FORMATS = ("both", "html", "pdf")
 #: the sheet's own print style, after the записка's and as the PDF sheet's layout (typst_sheet:
@@ -84,11 +85,13 @@ def _kinds(sheet) -> tuple[str, ...]:
 
 
 def _num(v) -> str:
+    """A datum the case gave, through the one formatter (in Russian, within ``typeset``: its
+    own digits, a decimal comma, numbers of a list separated by «; »)."""
     if isinstance(v, tuple):
-        return ", ".join(_num(x) for x in v)
-    if isinstance(v, int):
+        return ("; " if russian() else ", ").join(_num(x) for x in v)
+    if isinstance(v, int) and not russian():
         return str(v)
-    return _number(v, 6, zero=0.0, nonfinite="show")
+    return _number(float(v), 6, zero=0.0, nonfinite="show", given=True)
 
 
 def _value(g, lang: str) -> str:
@@ -109,7 +112,7 @@ def _answer_words(kind: str, key: str, lang: str) -> tuple[str, str, str]:
 
 
 def _tol(t: float) -> str:
-    return "%g" % float("%.3g" % (100 * t))
+    return _number(float("%.3g" % (100 * t)), 6, zero=None, given=True)
 
 
 def find_items(sheet, lang: str) -> list[str]:
@@ -212,10 +215,10 @@ def draw_linkage(ax, results, i: int, lang: str) -> None:
     plots.draw_scheme(ax, results, i, 0.035 * results.drawing.span, lang)
 
 
-def _style():
+def _style(lang: str):
     from flywheel.render import figure
 
-    return figure.style()
+    return figure.style(lang)
 
 
 def _linkage_png(sheet, path: Path, lang: str) -> None:
@@ -224,7 +227,7 @@ def _linkage_png(sheet, path: Path, lang: str) -> None:
     from matplotlib.figure import Figure as MplFigure
 
     r = sheet.linkage
-    with _style():
+    with _style(lang):
         fig = MplFigure(figsize=(6.0, 4.6), dpi=120)
         ax = fig.add_axes((0.12, 0.11, 0.85, 0.85))
         draw_linkage(ax, r, r.index_of(math.radians(sheet.angle_deg) % r.cycle), lang)
@@ -238,7 +241,7 @@ def _moments_png(sheet, path: Path, lang: str) -> None:
 
     g = sheet.moments
     w = WORDS[lang]
-    with _style():
+    with _style(lang):
         fig = MplFigure(figsize=(6.4, 3.2), dpi=120)
         ax = fig.add_axes((0.06, 0.16, 0.9, 0.78))
         for key, ys, which, c in (("driving_moment", g.M_D, "driving", "C0"),
@@ -250,7 +253,7 @@ def _moments_png(sheet, path: Path, lang: str) -> None:
         ax.axhline(0.0, color="k", linewidth=0.8)
         ax.set_xlim(0.0, g.cycle_deg)
         ax.set_xticks(list(g.breaks_deg))
-        ax.set_xticklabels([f"{b:g}°" for b in g.breaks_deg])
+        ax.set_xticklabels([f"{_number(b, 6, zero=None, given=True)}°" for b in g.breaks_deg])
         ax.set_yticks([])
         lo = min(0.0, *g.M_D, *g.M_C)
         hi = max(0.0, *g.M_D, *g.M_C)
@@ -336,7 +339,7 @@ def write_sheets(sheets, folder: Path, lang: str = "ru", formats: str = "both",
         images = Path(tmp)
         for k, s in enumerate(sheets, 1):
             png = f"{s.stem}.png"
-            doc = build_sheet(s, lang, png if draw(s, images / png, lang) else None)
+            doc = typeset(lang, build_sheet, s, lang, png if draw(s, images / png, lang) else None)
             if formats in ("both", "html"):
                 (out / f"{s.stem}.html").write_text(sheet_html(doc, images), encoding="utf-8")
                 names.append(f"{FOLDER}/{s.stem}.html")

@@ -182,7 +182,7 @@ def plot(r, path, title: str = "", lang: str = "en") -> None:
     def L(key: str, **fields) -> str:
         return sub_mathtext(nm.name(key, lang, **fields))
 
-    with fg.style():
+    with fg.style(lang):
         if r.driving is not None:
             s = sample(r)
             x = [math.degrees(p) for p in s["phi"]]
@@ -196,7 +196,9 @@ def plot(r, path, title: str = "", lang: str = "en") -> None:
                                             (r.epsilon_min, r.phi_epsilon_min,
                                              "t2_plot_epsilon_min", "v")):
                 ax.plot([math.degrees(phi)], [value], marker, color="tab:purple",
-                        label=L(key, value=f"{value:.4g}", deg=f"{math.degrees(phi):.4g}"))
+                        label=L(key, value=_number(value, spec=".4g", zero=None, nonfinite="show"),
+                                deg=_number(math.degrees(phi), spec=".4g", zero=None,
+                                            nonfinite="show")))
             ax.set_ylabel(L("t2_plot_epsilon_axis"))
             ax.legend(fontsize=8)
             ax = axes[0]
@@ -226,9 +228,12 @@ def plot(r, path, title: str = "", lang: str = "en") -> None:
                                         (r.omega_min, r.phi_omega_min, "t2_plot_omega_min", "v")):
             if phi is not None and not math.isnan(phi):      # an area diagram may give no angle
                 ax.plot([math.degrees(phi)], [value], marker, color="tab:red",
-                        label=L(key, value=f"{value:.6g}", deg=f"{math.degrees(phi):.4g}"))
+                        label=L(key, value=_number(value, spec=".6g", zero=None, nonfinite="show"),
+                                deg=_number(math.degrees(phi), spec=".4g", zero=None,
+                                            nonfinite="show")))
         ax.set_ylabel(L("t2_plot_omega_axis"))
-        ax.ticklabel_format(axis="y", useOffset=False)      # 200.01, not "+2e2" and 0.01
+        if lang != "ru":                                    # Russian ticks have no offset
+            ax.ticklabel_format(axis="y", useOffset=False)  # 200.01, not "+2e2" and 0.01
         phi_known = r.driving is not None or not math.isnan(r.rows[0].phi)
         axes[-1].set_xlabel(L("t2_plot_phi_axis") if phi_known else L("t2_plot_crossing_no"))
         if phi_known:
@@ -239,8 +244,10 @@ def plot(r, path, title: str = "", lang: str = "en") -> None:
         for a in axes:
             if a is not None:
                 a.grid(True, alpha=0.3)
-        fig.suptitle(title or L("t2_plot_title", delta=f"{r.delta:.4g}",
-                                dT=f"{r.delta_T_max:.4g}"))
+        fig.suptitle(title or L("t2_plot_title",
+                                delta=_number(r.delta, spec=".4g", zero=None, nonfinite="show"),
+                                dT=_number(r.delta_T_max, spec=".4g", zero=None,
+                                           nonfinite="show")))
         from flywheel.render.figure import SVG_SALT, stable_metadata
 
         fmt = Path(path).suffix.lower()[1:] if isinstance(path, (str, os.PathLike)) else ""

@@ -4,7 +4,8 @@ additional column 26 (ГОСТ 2.104-2006), and the field the views are laid out
 Formats (ГОСТ 2.301-68, table 1), landscape: A1 841 × 594, A2 594 × 420, A3 420 × 297 mm. The
 frame: 20 mm from the left edge (binding), 5 mm from the others (ГОСТ 2.104-2006, п. 4.3).
 Form 1 (ГОСТ 2.104-2006, appendix A, form 1): 185 × 55 mm in the frame's lower right corner;
-columns from its left edge 7, 10, 23, 15, 10 mm (Изм., Лист, № докум., Подп., Дата), 70 mm
+columns from its left edge 7, 10, 23, 15, 10 mm (Изм., Лист, № докум., Подп., Дата: the left
+part every form shares, forms.py), 70 mm
 (the name, 25 mm high, over the material, 15 mm), 50 mm (Лит. 3 × 5, Масса 17, Масштаб 18 mm;
 Лист 20, Листов 30 mm; the organisation 15 mm high); the designation 120 × 15 mm across the
 top. Column 26 (the designation turned 180°): 70 × 14 mm in the frame's upper left corner.
@@ -12,6 +13,7 @@ top. Column 26 (the designation turned 180°): 70 × 14 mm in the frame's upper 
 from __future__ import annotations
 
 from flywheel.render.catalogue import words
+from flywheel.render.drawings.forms import LEFT_COLUMNS, ROLE_FIELDS, ROLES_FORM1, left_edges
 from flywheel.render.drawings.model import View, text_width
 
 #: landscape sheet sizes [mm] (ГОСТ 2.301-68)
@@ -116,8 +118,9 @@ def frame_view(size: str, lang: str, *, document, title: str, sheet_name: str, n
     X = lambda x: x0 + x                     # noqa: E731 — the block's own coordinates
     Y = lambda y: y0 + y                     # noqa: E731
     v.line((X(0), Y(0)), (X(0), Y(55)), (X(185), Y(55)))                     # outline
-    v.line((X(7), Y(30)), (X(7), Y(55)))                   # Изм. | Лист: above the roles only
-    for x in (17, 40, 55, 65):                                                # left columns
+    xs = left_edges()                                      # the left part (forms.py)
+    v.line((X(xs[1]), Y(30)), (X(xs[1]), Y(55)))           # Изм. | Лист: above the roles only
+    for x in xs[2:]:                                                          # left columns
         v.line((X(x), Y(0)), (X(x), Y(55)))
     for y in (5, 10, 15, 20, 25, 40, 45, 50):                                 # thin rows
         v.line((X(0), Y(y)), (X(65), Y(y)), line="thin")
@@ -141,17 +144,14 @@ def frame_view(size: str, lang: str, *, document, title: str, sheet_name: str, n
         ax = {"left": X(x) + 0.5, "center": X(x) + w / 2}[align]
         v.text(ax, Y(y) + 2.5, text, h, halign=align, valign="middle", squeeze=q)
 
-    for x, w, key in ((0, 7, "rev"), (7, 10, "sheet_col"), (17, 23, "doc_no"), (40, 15, "sign"),
-                      (55, 10, "date")):
+    for x, (w, key) in zip(xs, LEFT_COLUMNS):
         cell(x, 30, w, t[key], align="center")
-    roles = (("drawn", document.student), ("checked", document.teacher),
-             ("tech_control", document.tech_control), (None, ""),
-             ("norm_control", document.norm_control), ("approved", document.approved))
-    for k, (key, name) in enumerate(roles):
+    for k, key in enumerate(ROLES_FORM1):
         y = 25 - 5 * k
         if key:
-            cell(0, y, 17, t[key])
-        cell(17, y, 23, name, 3.5)
+            cell(0, y, xs[2], t[key])
+        name = getattr(document, ROLE_FIELDS[key]) if key else ""
+        cell(xs[2], y, LEFT_COLUMNS[2][0], name, 3.5)
     for x, w, key in ((135, 15, "stage"), (150, 17, "mass"), (167, 18, "scale")):
         cell(x, 35, w, t[key], align="center")
     v.text(X(137.5), Y(27.5), t["stage_letter"], 5.0, halign="center", valign="middle")
@@ -162,8 +162,33 @@ def frame_view(size: str, lang: str, *, document, title: str, sheet_name: str, n
     designation = document.designation_or_default
     d, h, q = fit(designation, 116.0, (7.0, 5.0, 3.5))
     v.text(X(125), Y(47.5), d, h, halign="center", valign="middle", squeeze=q)
-    # the name field (70 × 25 mm): the machine at 5 mm (two lines) or 3.5 mm (three), then
-    # the sheet's name at 3.5 mm
+    for line, h, y in name_lines(title, sheet_name, Y(27.5)):
+        v.text(X(100), y, line, h, halign="center", valign="middle")
+    org_lines = organisation_lines(document, t)
+    for k, line in enumerate(org_lines):
+        v.text(X(160), Y(7.5) + (len(org_lines) / 2 - k - 0.5) * 4.6, line, 3.5,
+               halign="center", valign="middle")
+    # column 26: the designation turned 180°, in the frame's upper left corner
+    cx0, cy1 = LEFT, H - MARGIN
+    v.line((cx0, cy1 - COL26_H), (cx0 + COL26_W, cy1 - COL26_H), (cx0 + COL26_W, cy1))
+    d26, h26, q26 = fit(designation, COL26_W - 4.0, (5.0, 3.5, 2.5))
+    v.text(cx0 + COL26_W / 2, cy1 - COL26_H / 2, d26, h26, angle=180.0, halign="center",
+           valign="middle", squeeze=q26)
+    return v
+
+
+def organisation_lines(document, t: dict) -> list[str]:
+    """The organisation cell (50 × 15 mm, forms 1 and 2): the university and the group of
+    ``document`` (a ``[document]`` table or a title page), at most three lines at 3.5 mm."""
+    org = [s for s in (document.university,
+                       t["group"].format(g=document.group) if document.group else "") if s]
+    return [ln for s in org for ln in wrap(s, 46.0, 3.5, 2)][:3]
+
+
+def name_lines(title: str, sheet_name: str, centre: float) -> list[tuple[str, float, float]]:
+    """The name field of a title block (70 × 25 mm, forms 1 and 2) as (line, height, y of its
+    middle) [mm], y up from ``centre``, the field's middle: the machine at 5 mm (two lines) or
+    3.5 mm (three), then the sheet's or document's name at 3.5 mm."""
     title_lines, th = wrap(title, 66.0, 5.0, 2), 5.0
     if len(title_lines) == 2 and (text_width(title_lines[-1], 5.0) > 66.0
                                   or title_lines[-1].endswith("…")):
@@ -179,20 +204,9 @@ def frame_view(size: str, lang: str, *, document, title: str, sheet_name: str, n
             if text_width(title_lines[-1] + " …", th) > 66.0 else title_lines[-1] + " …"
         lines = [(ln, th) for ln in title_lines] + [(ln, 3.5) for ln in sheet_lines]
     step = [h * k for _, h in lines]
-    y = Y(27.5) + sum(step) / 2
+    y = centre + sum(step) / 2
+    out = []
     for (line, h), dy in zip(lines, step):
         y -= dy
-        v.text(X(100), y + dy / 2, line, h, halign="center", valign="middle")
-    org = [s for s in (document.university,
-                       t["group"].format(g=document.group) if document.group else "") if s]
-    org_lines = [ln for s in org for ln in wrap(s, 46.0, 3.5, 2)][:3]
-    for k, line in enumerate(org_lines):
-        v.text(X(160), Y(7.5) + (len(org_lines) / 2 - k - 0.5) * 4.6, line, 3.5,
-               halign="center", valign="middle")
-    # column 26: the designation turned 180°, in the frame's upper left corner
-    cx0, cy1 = LEFT, H - MARGIN
-    v.line((cx0, cy1 - COL26_H), (cx0 + COL26_W, cy1 - COL26_H), (cx0 + COL26_W, cy1))
-    d26, h26, q26 = fit(designation, COL26_W - 4.0, (5.0, 3.5, 2.5))
-    v.text(cx0 + COL26_W / 2, cy1 - COL26_H / 2, d26, h26, angle=180.0, halign="center",
-           valign="middle", squeeze=q26)
-    return v
+        out.append((line, h, y + dy / 2))
+    return out
