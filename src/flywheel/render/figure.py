@@ -66,9 +66,11 @@ def style():
         restore = _share_text_metrics()
         restore_fonts = _remember_fonts()
         restore_math = _share_mathtext()
+        restore_markers = _copy_markers_shallow()
         try:
             yield
         finally:
+            restore_markers()
             restore_math()
             restore_fonts()
             restore()
@@ -136,6 +138,40 @@ def _share_mathtext():
 
     def restore() -> None:
         MathTextParser._parse_cached = own
+    return restore
+
+
+def _copy_markers_shallow():
+    """Within :func:`style`, a marker copied from another (each tick's two tick marks and its
+    grid line copy the axis's first tick: 40 ticks a figure) shares the other's paths and
+    transforms instead of deep-copying them (matplotlib deep-copies the marker's whole state,
+    its marker function's bound marker included: 50 copies for each). A MarkerStyle is
+    immutable; the only state a copy changes in place is its user transform (``rotated``),
+    which is copied — a marker with a user transform that is not affine is deep-copied as
+    before. Returns the function that puts matplotlib's copying back."""
+    from matplotlib.markers import MarkerStyle
+    from matplotlib.transforms import Affine2DBase
+
+    own = MarkerStyle.__dict__["_set_marker"]
+
+    def set_marker(self, marker):
+        if not isinstance(marker, MarkerStyle):
+            return own(self, marker)
+        state = dict(marker.__dict__)
+        user = state.get("_user_transform")
+        if user is not None:
+            if not isinstance(user, Affine2DBase):
+                return own(self, marker)
+            state["_user_transform"] = user.frozen()        # a copy of its own
+        function = state.get("_marker_function")
+        if function is not None:                            # bound to this marker
+            state["_marker_function"] = getattr(self, function.__name__)
+        self.__dict__ = state
+
+    MarkerStyle._set_marker = set_marker
+
+    def restore() -> None:
+        MarkerStyle._set_marker = own
     return restore
 
 
