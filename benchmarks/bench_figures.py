@@ -10,7 +10,9 @@ time is the process's CPU time (``time.process_time``) around the build (``figur
 layout included) and around the save (``savefig`` to PNG at the default dpi, into memory), the
 best of ``--repeat`` rounds (default 3): CPU time is much less disturbed than wall time by the
 other work of a shared machine. The first figure of a process also pays matplotlib's first
-font and mathtext loading: a warm-up round draws every figure once before measuring.
+font and mathtext loading: a warm-up round draws every figure once before measuring. That
+first round is what a plot worker of `run` pays (each figure drawn once, in a fresh process,
+its import not counted): its total is printed too ("first round").
 """
 from __future__ import annotations
 
@@ -47,6 +49,7 @@ def measure(case: Path, repeat: int, profile: int) -> None:
     results = analyze(load_case(case))
     specs = all_figures(results, "en")
     rows: dict[str, list[float]] = {name: [1e9, 1e9] for name, _ in specs}
+    first = [0.0, 0.0]                               # round 0: build, save
     with fg.style():
         for rnd in range(repeat + 1):                # round 0: the warm-up
             for name, build in specs:
@@ -55,11 +58,13 @@ def measure(case: Path, repeat: int, profile: int) -> None:
                 t1 = time.process_time()
                 fg.save(fig, io.BytesIO(), "png")
                 t2 = time.process_time()
-                fig.clear()
                 _release(fig)
                 if rnd:
                     rows[name][0] = min(rows[name][0], t1 - t0)
                     rows[name][1] = min(rows[name][1], t2 - t1)
+                else:
+                    first[0] += t1 - t0
+                    first[1] += t2 - t1
         print(f"\n{case.name}: {len(specs)} figures, CPU seconds, best of {repeat}")
         print(f"  {'figure':34s} {'build':>7s} {'save':>7s} {'total':>7s}")
         tb = ts = 0.0
@@ -67,6 +72,8 @@ def measure(case: Path, repeat: int, profile: int) -> None:
             print(f"  {name:34s} {b:7.3f} {s:7.3f} {b + s:7.3f}")
             tb, ts = tb + b, ts + s
         print(f"  {'all':34s} {tb:7.3f} {ts:7.3f} {tb + ts:7.3f}")
+        print(f"  {'first round (a worker, cold)':34s} {first[0]:7.3f} {first[1]:7.3f} "
+              f"{sum(first):7.3f}")
         if profile:
             for name, build in specs:
                 fig = build()
@@ -74,7 +81,6 @@ def measure(case: Path, repeat: int, profile: int) -> None:
                 prof.enable()
                 fg.save(fig, io.BytesIO(), "png")
                 prof.disable()
-                fig.clear()
                 _release(fig)
                 out = io.StringIO()
                 pstats.Stats(prof, stream=out).sort_stats("tottime").print_stats(profile)

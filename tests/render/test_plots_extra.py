@@ -33,42 +33,39 @@ def _check_energy_mass(results, lang="en"):
     fig = plots_extra.figure_energy_mass(results, lang)
     t = plots_extra.TEXT[lang]
     J_axis, T_axis = nm.axis("J_II", lang), plots_extra._f(t, "T", u=nm.unit_of("A", lang))
-    try:
-        axes = {a.get_label(): a for a in fig.axes}
-        assert set(axes) == {"full", "zoom", "merzalov"}
-        full, zoom, merz = axes["full"], axes["zoom"], axes["merzalov"]
-        assert full.get_xlabel() == J_axis and full.get_ylabel() == T_axis == zoom.get_ylabel()
-        curve, tmax, tmin, origin = (_by_gid(full, g) for g in ("curve", "tangent_max", "tangent_min", "origin"))
-        labels = [x.get_text() for x in full.get_legend().get_texts()]
-        assert any(r"\psi_{max}" in x for x in labels) and any(r"\psi_{min}" in x for x in labels)
-        assert plots_extra._f(t, "origin", J="$J_I$", T="$T_0$") in labels
-        J, A = curve.get_xdata(), curve.get_ydata()
-        (x0, x1), (a0, a1) = tmax.get_xdata(), tmax.get_ydata()
-        (y0, y1), (b0, b1) = tmin.get_xdata(), tmin.get_ydata()
-        k_max, k_min = (a1 - a0) / (x1 - x0), (b1 - b0) / (y1 - y0)
-        w_m, d = s.omega_mean, s.delta
-        assert k_max == pytest.approx(w_m**2 * (1 + d / 2) ** 2 / 2, rel=1e-9)
-        assert k_min == pytest.approx(w_m**2 * (1 - d / 2) ** 2 / 2, rel=1e-9)
-        # the tangents touch the curve from above and below
-        for k, xa, ya, side in ((k_max, x0, a0, 1), (k_min, y0, b0, -1)):
-            gap = side * (ya + k * (J - xa) - A)
-            assert gap.min() == pytest.approx(0, abs=1e-9 * np.ptp(A))
-        # they meet at J_II = −J_I (exact): the origin of the full-energy axes, drawn there
-        x_meet = ((b0 - k_min * y0) - (a0 - k_max * x0)) / (k_max - k_min)
-        assert x_meet == pytest.approx(-s.J_required_exact, rel=1e-6)
-        assert origin.get_xdata()[0] == pytest.approx(-s.J_required_exact, rel=1e-6)
-        assert origin.get_ydata()[0] == pytest.approx(a0 + k_max * (x_meet - x0), rel=1e-6)
-        assert min(x0, y0) <= x_meet * (1 - 1e-9)           # drawn all the way to it
-        # the dimension arrow J_I from the meeting point to J_II = 0, and its label
-        dims = [a for a in full.texts if getattr(a, "arrow_patch", None) is not None
-                and a.xy[0] == 0.0 and a.xyann[0] == pytest.approx(x_meet, rel=1e-6)]
-        assert len(dims) == 1
-        assert any(x.get_text().startswith(f"$J_I$ = {s.J_required_exact:.5g}") for x in full.texts)
-        assert zoom.get_xlabel() == J_axis
-        assert merz.get_xlabel() == nm.axis("phi_deg", lang) == (r"$\varphi$, °" if lang == "ru" else r"$\varphi$ [deg]")
-        assert r"$\Delta T_{нб}$" in " ".join(x.get_text() for x in merz.get_legend().get_texts())
-    finally:
-        plots_extra._plt().close(fig)
+    axes = {a.get_label(): a for a in fig.axes}
+    assert set(axes) == {"full", "zoom", "merzalov"}
+    full, zoom, merz = axes["full"], axes["zoom"], axes["merzalov"]
+    assert full.get_xlabel() == J_axis and full.get_ylabel() == T_axis == zoom.get_ylabel()
+    curve, tmax, tmin, origin = (_by_gid(full, g) for g in ("curve", "tangent_max", "tangent_min", "origin"))
+    labels = [x.get_text() for x in full.get_legend().get_texts()]
+    assert any(r"\psi_{max}" in x for x in labels) and any(r"\psi_{min}" in x for x in labels)
+    assert plots_extra._f(t, "origin", J="$J_I$", T="$T_0$") in labels
+    J, A = curve.get_xdata(), curve.get_ydata()
+    (x0, x1), (a0, a1) = tmax.get_xdata(), tmax.get_ydata()
+    (y0, y1), (b0, b1) = tmin.get_xdata(), tmin.get_ydata()
+    k_max, k_min = (a1 - a0) / (x1 - x0), (b1 - b0) / (y1 - y0)
+    w_m, d = s.omega_mean, s.delta
+    assert k_max == pytest.approx(w_m**2 * (1 + d / 2) ** 2 / 2, rel=1e-9)
+    assert k_min == pytest.approx(w_m**2 * (1 - d / 2) ** 2 / 2, rel=1e-9)
+    # the tangents touch the curve from above and below
+    for k, xa, ya, side in ((k_max, x0, a0, 1), (k_min, y0, b0, -1)):
+        gap = side * (ya + k * (J - xa) - A)
+        assert gap.min() == pytest.approx(0, abs=1e-9 * np.ptp(A))
+    # they meet at J_II = −J_I (exact): the origin of the full-energy axes, drawn there
+    x_meet = ((b0 - k_min * y0) - (a0 - k_max * x0)) / (k_max - k_min)
+    assert x_meet == pytest.approx(-s.J_required_exact, rel=1e-6)
+    assert origin.get_xdata()[0] == pytest.approx(-s.J_required_exact, rel=1e-6)
+    assert origin.get_ydata()[0] == pytest.approx(a0 + k_max * (x_meet - x0), rel=1e-6)
+    assert min(x0, y0) <= x_meet * (1 - 1e-9)           # drawn all the way to it
+    # the dimension arrow J_I from the meeting point to J_II = 0, and its label
+    dims = [a for a in full.texts if getattr(a, "arrow_patch", None) is not None
+            and a.xy[0] == 0.0 and a.xyann[0] == pytest.approx(x_meet, rel=1e-6)]
+    assert len(dims) == 1
+    assert any(x.get_text().startswith(f"$J_I$ = {s.J_required_exact:.5g}") for x in full.texts)
+    assert zoom.get_xlabel() == J_axis
+    assert merz.get_xlabel() == nm.axis("phi_deg", lang) == (r"$\varphi$, °" if lang == "ru" else r"$\varphi$ [deg]")
+    assert r"$\Delta T_{нб}$" in " ".join(x.get_text() for x in merz.get_legend().get_texts())
 
 
 def test_energy_mass_diagram(results):
@@ -98,22 +95,16 @@ def test_energy_mass_diagram_constant_inertia():
 def test_transients_plot_marks_the_steady_state(results):
     st = results.scalars.time_domain.startup
     fig = plots_extra.figure_transients(results)
-    try:
-        (ax,) = fig.axes
-        labels = " ".join(x.get_text() for x in ax.get_legend().get_texts())
-        assert rf"$\omega_s$ = {st.omega_final_predicted:.5g}" in labels
-        assert f"{st.time_to_steady:.4g}" in labels
-    finally:
-        plots_extra._plt().close(fig)
+    (ax,) = fig.axes
+    labels = " ".join(x.get_text() for x in ax.get_legend().get_texts())
+    assert rf"$\omega_s$ = {st.omega_final_predicted:.5g}" in labels
+    assert f"{st.time_to_steady:.4g}" in labels
 
 
 def test_time_law_and_transients(results, tmp_path):
     fig = plots_extra.figure_time_law(results, lang="ru")
-    try:
-        assert [a.get_ylabel() for a in fig.axes] == [r"$\omega$, рад/с", r"$\varepsilon$, рад/с²"]
-        assert fig.axes[1].get_xlabel() == "$t$, с"
-    finally:
-        plots_extra._plt().close(fig)
+    assert [a.get_ylabel() for a in fig.axes] == [r"$\omega$, рад/с", r"$\varepsilon$, рад/с²"]
+    assert fig.axes[1].get_xlabel() == "$t$, с"
     from flywheel.render import plots
 
     paths = plots.write_plots(results, tmp_path)          # with the worksheet's plots

@@ -40,13 +40,14 @@ def _f(t: dict, key: str, **kw) -> str:
     return t[key].format(**typeset_params(kw))         # Russian numbers in a Russian figure
 
 
-def _plt():
-    import matplotlib
+def _figure(size):
+    """A pyplot-free Figure (render/figure.py) of ``size`` [in], laid out by matplotlib's
+    constrained layout (its panels' labels and legends vary with the case)."""
+    from matplotlib.figure import Figure
 
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    from flywheel.render.figure import DPI
 
-    return plt
+    return Figure(figsize=size, dpi=DPI, layout="constrained")
 
 
 def figure_energy_mass(results, lang: str = "en"):
@@ -63,7 +64,6 @@ def figure_energy_mass(results, lang: str = "en"):
     """
     from matplotlib.patches import Rectangle
 
-    plt = _plt()
     t = TEXT[lang]
     s = results.scalars
     sz = results.sizing
@@ -78,8 +78,8 @@ def figure_energy_mass(results, lang: str = "en"):
     i_max, i_min = sz.i_tangent_max, sz.i_tangent_min    # tangency points (ψ_max, ψ_min)
     kl = top - bottom
 
-    fig, axd = plt.subplot_mosaic([["full", "full"], ["zoom", "merzalov"]], figsize=(7.45, 9.0),
-                                  constrained_layout=True, height_ratios=[1.1, 1])
+    fig = _figure((7.45, 9.0))
+    axd = fig.subplot_mosaic([["full", "full"], ["zoom", "merzalov"]], height_ratios=[1.1, 1])
     ax, zx, bx = axd["full"], axd["zoom"], axd["merzalov"]
     for name, a in axd.items():
         a.set_label(name)
@@ -186,10 +186,10 @@ def figure_energy_mass(results, lang: str = "en"):
 
 def figure_time_law(results, lang: str = "en"):
     """ω(t) and ε(t) over one cycle of steady motion (t(φ) = ∫dφ/ω)."""
-    plt = _plt()
     t = TEXT[lang]
     time = results.columns["t"].values
-    fig, (a1, a2) = plt.subplots(2, 1, figsize=(7.45, 5.6), sharex=True, constrained_layout=True)
+    fig = _figure((7.45, 5.6))
+    a1, a2 = fig.subplots(2, 1, sharex=True)
     a1.plot(time, results.columns["omega"].values, label="ω(t)")
     a1.set_ylabel(nm.axis("omega", lang))
     a2.plot(time, results.columns["epsilon"].values, color="tab:orange", label="ε(t)")
@@ -209,11 +209,11 @@ def figure_transients(results, lang: str = "en"):
     """ω(t) during start-up (if the case has a motor) and run-down; the start-up with the steady
     speed ω_s of the motor line, its band ±δ/10 and the time to steady state (or a note that
     the steady state was not reached)."""
-    plt = _plt()
     t = TEXT[lang]
     hist = results.time_domain.histories
     st = results.time_domain.startup
-    fig, ax = plt.subplots(figsize=(7.45, 4.8), constrained_layout=True)
+    fig = _figure((7.45, 4.8))
+    ax = fig.subplots()
     if "startup" in hist:
         ts, ws_ = hist["startup"]
         ax.plot(ts, ws_, lw=0.8, label=_f(t, "start"))
