@@ -56,3 +56,15 @@ def test_the_russian_record_has_no_english_load_names(tmp_path):
         md = (out / "report.md").read_text(encoding="utf-8")
         for english in ("cutting", "resistance", "return", "punch", "газ HS"):
             assert english not in md, (case, english)
+
+
+def test_a_machine_without_pistons_draws_applied_forces():
+    """piston_forces.png of the shaper (a cutting force, no cylinder) is titled and captioned
+    «заданные силы», not «силы, действующие на поршни»."""
+    from flywheel.render.document import _figure_caption
+
+    shaper = analyze(load_case(CASES / "shaper.toml"), n_points=360)
+    title = plots.figure_piston_forces(shaper, "ru").axes[0].get_title()
+    assert "заданные силы" in title and "порш" not in title
+    assert _figure_caption("piston_forces.png", "ru", pistons=False) == "Заданные силы"
+    assert "порш" in _figure_caption("piston_forces.png", "ru")

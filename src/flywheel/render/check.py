@@ -161,8 +161,10 @@ def print_check(report, console=None, lang: str = "en") -> None:
                       lk.centroid or "—")
         console.print(t)
     if m.first_group:
+        from flywheel.render.document import part_name
+
         console.print(w["first_group"] + ", ".join(
-            f"{k} = {_n(v, given=True)} {nm.unit_of('J_first_group', lang)}"
+            f"{part_name(k, lang)} = {_n(v, given=True)} {nm.unit_of('J_first_group', lang)}"
             for k, v in m.first_group.items()))
     if case.cylinders:
         t = _table(w["Cylinders"], (w["name"], w["piston"],

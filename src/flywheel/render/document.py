@@ -126,6 +126,7 @@ T = words("report", {
         "velocity_analogues": "Velocity analogues of the points",
         "acceleration_analogues": "Acceleration analogues of the points",
         "indicator": "Indicator diagram, cylinder {x}", "piston_forces": "Gas forces on the pistons",
+        "applied_forces": "Applied forces",
         "reduced_moments": "Reduced moments of the loads", "works": "Works and kinetic energy",
         "energy_mass": "Energy–mass diagram (Wittenbauer)",
         "time_law": "Angular velocity and acceleration of the crank in time ω(t), ε(t) over a cycle",
@@ -160,9 +161,13 @@ def gi(x, digits: int = 6) -> str:
     return _number(x, digits, zero=1e-13, nonfinite="dash", given=True)
 
 
-def _figure_caption(file: str, lang: str) -> str:
+def _figure_caption(file: str, lang: str, pistons: bool = True) -> str:
+    """The caption of plots/``file``; piston_forces.png of a machine with no cylinder draws
+    the applied forces (a cutting force, a spring's tension): ``pistons`` False."""
     t = T[lang]["fig"]
     stem = file.rsplit(".", 1)[0]
+    if stem == "piston_forces" and not pistons:
+        return t["applied_forces"]
     if stem in t:
         return t[stem]
     if stem.startswith("indicator_"):
@@ -190,6 +195,7 @@ class _Builder:
         self.n_tables = 0
         self.n_figures = 0
         self.plots = list(plots or [])
+        self.pistons = True             # piston_forces.png draws gas forces (else applied ones)
 
     def add(self, block) -> None:
         self.doc.blocks.append(block)
@@ -201,7 +207,7 @@ class _Builder:
     def figures_of(self, section: str) -> None:
         for f in [p for p in self.plots if _section_of(p) == section]:
             self.n_figures += 1
-            self.add(Figure(self.n_figures, _figure_caption(f, self.doc.lang), f))
+            self.add(Figure(self.n_figures, _figure_caption(f, self.doc.lang, self.pistons), f))
             self.plots.remove(f)
 
 
@@ -243,6 +249,7 @@ def build_document(results, lang: str = "en", plots: list[str] | None = None,
     cols = results.columns
     title, source = in_language(results.title, lang), in_language(results.source, lang)
     b = _Builder(title, lang, plots)
+    b.pistons = bool(results.cylinders)
 
     def sym(key):
         return nm.symbol(key, lang)

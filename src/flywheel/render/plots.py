@@ -48,7 +48,7 @@ _TEXT = words("plots", {
     "away": "piston moving away from the head",
     "table_towards": "table points: towards the head",
     "table_away": "table points: away from the head",
-    "forces": "forces on the pistons",
+    "forces": "forces on the pistons", "forces_applied": "applied forces",
     "F_gas": "gas force on piston {p}, cylinder {c}",
     "F_tech": "technological force {n}",
     "F_spring": "tension of spring {n}",
@@ -245,7 +245,7 @@ def figure_piston_forces(results, lang: str = "en"):
         ax.axhline(0.0, color="0.3", linewidth=0.6)
         ax.set_ylabel(nm.axis("F_{load}", lang))
         fg.phi_axis(ax, lang, cycle_deg=results.cycle_deg)
-        ax.set_title(fg.title(results, _t(lang, "forces")))
+        ax.set_title(fg.title(results, _t(lang, "forces" if results.cylinders else "forces_applied")))
         fg.legend(ax)            # after the title: a title too wide is broken
         return fig
     return fg.drawn(build)
