@@ -160,9 +160,34 @@ def _fmt_angle(a: float) -> str:
     return f"{a:g}".replace("-", "m").replace(".", "_")
 
 
+#: characters of a plan's first title line: the narrowest plan figure holds about 75 at 10 pt
+TITLE_CHARS = 70
+
+
 def _title(results, what: str) -> str:
-    """The case's title over what the figure shows (two lines: a long title is not cut)."""
-    return f"{results.title}\n{what}"
+    """The case's title over what the figure shows, two lines. A title longer than
+    TITLE_CHARS is shortened, not cut at the figure's edge: to its name before the first ": "
+    ("Поперечно-строгальный станок: кривошипно-кулисный механизм …" → "Поперечно-строгальный
+    станок"), else at a space, with "…"."""
+    return f"{short_title(str(results.title))}\n{what}"
+
+
+def short_title(title: str, chars: int = TITLE_CHARS) -> str:
+    """``title`` if at most ``chars`` characters long, else its part before the first ": ",
+    else its words up to ``chars`` − 1 characters and "…".
+
+    >>> short_title("Shaper: crank and slotted lever quick-return mechanism with a ram", 40)
+    'Shaper'
+    >>> short_title("A very long machine name without any colon at all", 20)
+    'A very long machine…'
+    """
+    if len(title) <= chars:
+        return title
+    head = title.split(": ", 1)[0]
+    if len(head) < len(title) and len(head) <= chars:
+        return head
+    cut = title.rfind(" ", 0, chars)
+    return (title[:cut] if cut > 0 else title[:chars - 1]).rstrip(" ,;:") + "…"
 
 
 #: between the numbers of a list: «; » in Russian, where the comma is the decimal sign
