@@ -10,7 +10,7 @@ from typing import Annotated, Optional
 
 import typer
 
-from flywheel.cli.guard import frame_notice
+from flywheel.cli.guard import report_formats
 from flywheel.cli.options import Frame, Json, Lang, Reports
 from flywheel.io.text import in_language
 
@@ -92,9 +92,8 @@ def _check_options(lang: str, t_end, report, out, frame: str = "none"):
     allowed (an InputError); return the report formats."""
     import math
 
-    from flywheel.cli.guard import check_lang, needs_out
+    from flywheel.cli.guard import check_lang
     from flywheel.errors import InputError, Notice
-    from flywheel.render.report_folder import check_formats
 
     check_lang(lang)
     if t_end is not None and not (math.isfinite(t_end) and 0 < t_end <= MAX_T_END):
@@ -102,13 +101,7 @@ def _check_options(lang: str, t_end, report, out, frame: str = "none"):
             "t_end_range", "--t-end: {t:g} s is out of range (allowed: 0 … {top:g} s; a "
             "start-up is over in seconds to a minute, and the integration time grows with it)",
             t=t_end, top=MAX_T_END))
-    formats = check_formats(report)
-    if report and out is None:
-        raise InputError(needs_out())
-    refused = frame_notice(frame, lang, formats)
-    if refused is not None:
-        raise InputError(refused)
-    return formats
+    return report_formats(report, out, frame, lang)
 
 
 def _write_out(out: Path, result, formats, title: str, source: str, lang: str,

@@ -10,7 +10,7 @@ from typing import Annotated
 
 import typer
 
-from flywheel.cli.guard import frame_notice
+from flywheel.cli.guard import report_formats
 from flywheel.cli.options import Frame, Json, Lang, OutFolder, Reports
 from flywheel.io.text import in_language
 
@@ -26,19 +26,13 @@ def duty_cycle_command(case: DutyCase, as_json: Json = False, lang: Lang = "en",
     the energy the flywheel gives, its J and mass, the speed at the end of the operation, the
     time and angle to recover, the cycle."""
     from flywheel.cases.duty_cycle import load_duty_case, solve_case
-    from flywheel.cli.guard import check_lang, fail, guard, needs_out
+    from flywheel.cli.guard import check_lang, guard
     from flywheel.cli.outputs import finish, written_line
     from flywheel.render.duty_cycle import print_summary, to_json
     from flywheel.render.numbers import typeset
-    from flywheel.render.report_folder import check_formats
 
     check_lang(lang)
-    formats = guard(check_formats, report)
-    if report and out is None:
-        fail(needs_out())
-    refused = frame_notice(frame, lang, formats)
-    if refused is not None:
-        fail(refused)
+    formats = guard(report_formats, report, out, frame, lang)
     c = guard(load_duty_case, case)
     result = guard(solve_case, c, str(case))
     written = None if out is None else guard(_write_out, out, result, c, formats, lang, frame)

@@ -112,6 +112,22 @@ def write_plot(plot: Path, draw) -> None:
                     failed=lambda exc: plot_failed(plot, exc), make_folder=False)
 
 
+def report_formats(report, out, frame: str, lang: str) -> list[str]:
+    """The --report formats of task2, aggregate and duty-cycle, checked with --out and
+    --frame: an InputError (one line) for a format it does not know, --report without --out,
+    or a frame that cannot apply."""
+    from flywheel.errors import InputError
+    from flywheel.render.report_folder import check_formats
+
+    formats = check_formats(report)
+    if report and out is None:
+        raise InputError(needs_out())
+    refused = frame_notice(frame, lang, formats)
+    if refused is not None:
+        raise InputError(refused)
+    return formats
+
+
 def needs_out():
     """The error of --report without --out (task2, aggregate, duty-cycle)."""
     from flywheel.errors import Notice

@@ -17,7 +17,7 @@ from typing import Annotated, List, Optional
 
 import typer
 
-from flywheel.cli.guard import frame_notice
+from flywheel.cli.guard import report_formats
 from flywheel.cli.options import Frame, Json, Lang, OutFolder, Reports
 
 PROFILES = ("triangle", "rectangle")
@@ -105,21 +105,13 @@ def _check_options(plot: Optional[Path], report, out: Optional[Path], frame: str
                    lang: str = "en") -> list[str]:
     """Refuse a --plot that names a folder, a --report format not known, or --report without
     --out (an InputError); return the report formats."""
-    from flywheel.cli.guard import needs_out
     from flywheel.errors import InputError, Notice
-    from flywheel.render.report_folder import check_formats
 
     if plot is not None and plot.is_dir():
         raise InputError(Notice.of(
             "plot_is_a_folder", "--plot {plot}: is a folder, expected an image file",
             plot=str(plot)))
-    formats = check_formats(report)
-    if report and out is None:
-        raise InputError(needs_out())
-    refused = frame_notice(frame, lang, formats)
-    if refused is not None:
-        raise InputError(refused)
-    return formats
+    return report_formats(report, out, frame, lang)
 
 @dataclass(frozen=True)
 class _Job:

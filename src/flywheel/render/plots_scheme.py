@@ -14,6 +14,17 @@ import numpy as np
 from flywheel.render import nomenclature as nm
 
 
+
+def _guide(r: np.ndarray, angle: float, size: float):
+    """A slider's guide along ``angle`` [rad] for the slider's path ``r`` (N×2) [m]: the point
+    of the path's line at coordinate 0 along it, the unit vectors along and across it, and the
+    guide's ends a, b as coordinates along it [m] (1.2·size beyond the travel)."""
+    u = np.array([math.cos(angle), math.sin(angle)])
+    nrm = np.array([-u[1], u[0]])
+    x = r @ u
+    foot = r[0] - x[0] * u
+    return foot, u, nrm, x.min() - 1.2 * size, x.max() + 1.2 * size
+
 def draw_scheme(ax, results, i: int, size: float, lang: str = "en") -> None:
     """The kinematic scheme of ``results`` (a linkage case's run results) at grid node ``i`` on
     the matplotlib Axes ``ax``: what does not move (trajectories, guides, fixed pivots), then
@@ -45,12 +56,7 @@ def draw_scheme_fixed(ax, results, size: float) -> None:
         ax.plot(r[:, 0], r[:, 1], color=f"C{k % 10}", linewidth=0.8, alpha=0.8, zorder=1)
     # guides with hatching on one side, sliders as blocks
     for link, joint, angle in results.drawing.guided_sliders:
-        r = P[joint].r
-        u = np.array([math.cos(angle), math.sin(angle)])
-        nrm = np.array([-u[1], u[0]])
-        x = r @ u
-        foot = r[0] - x[0] * u
-        a, b = x.min() - 1.2 * size, x.max() + 1.2 * size
+        foot, u, nrm, a, b = _guide(P[joint].r, angle, size)
         ends = np.array([foot + a * u, foot + b * u]) - 0.5 * size * nrm
         ax.plot(ends[:, 0], ends[:, 1], color="k", linewidth=1.0, zorder=2)
         ends2 = ends + size * nrm
@@ -165,12 +171,7 @@ def scheme_names(labels, results, i: int, size: float) -> None:
     for link, c, angle in blocks:
         labels.box(_block_corners(c, angle, size))
     for link, joint, angle in d.guided_sliders:       # the guides and their hatching
-        r = P[joint].r
-        u = np.array([math.cos(angle), math.sin(angle)])
-        nrm = np.array([-u[1], u[0]])
-        x = r @ u
-        foot = r[0] - x[0] * u
-        a, b = x.min() - 1.2 * size, x.max() + 1.2 * size
+        foot, u, nrm, a, b = _guide(P[joint].r, angle, size)
         for off in (-0.85, -0.5, 0.5, 0.85):
             labels.segments([(foot + a * u + off * size * nrm, foot + b * u + off * size * nrm)])
     shapes = _member_shapes(results, i)
