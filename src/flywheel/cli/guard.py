@@ -65,7 +65,7 @@ def frame_notice(frame: str, lang: str, formats):
     """The Notice refusing ``--frame``: a value other than none and eskd, or the ЕСКД frame
     where it would draw nothing (it frames the Russian PDF and DOCX only); None if it applies."""
     from flywheel.errors import Notice
-    from flywheel.render.report_frame import FRAMES
+    from flywheel.render.choices import FRAMES
 
     if frame not in FRAMES:
         return choice("--frame", frame, "a page frame", ", ".join(FRAMES))

@@ -7,8 +7,29 @@ decreasing within a stage) and knows nothing of rich; :func:`stage_bar` gives on
 """
 from __future__ import annotations
 
+import os
+import sys
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager
+
+#: the environment variables by which rich may take a pipe for a terminal (rich.console)
+_TERMINAL_HINTS = ("FORCE_COLOR", "TTY_COMPATIBLE", "FORCE_TERMINAL")
+
+
+def _may_show() -> bool:
+    """False when no bar can show — ``--quiet``, or stderr not a terminal and nothing telling
+    rich otherwise — so that rich (≈ 50 ms to import) is not imported for nothing; True
+    leaves the decision to rich's own ``Console.is_terminal``."""
+    from flywheel.cli.options import state
+
+    if state.quiet:
+        return False
+    if any(name in os.environ for name in _TERMINAL_HINTS):
+        return True
+    try:
+        return sys.stderr.isatty()
+    except (AttributeError, ValueError):      # no stderr, or a closed one
+        return False
 
 
 @contextmanager
@@ -16,6 +37,9 @@ def stage_bar(lang: str = "en") -> Iterator[Callable[[str, float], None]]:
     """``with stage_bar(lang) as progress: compute(progress=progress)``: one bar per stage on
     stderr while a terminal shows it, removed when done (``transient``); the stage's name
     ("start-up") in ``lang`` (render/messages.py ``stage_name``)."""
+    if not _may_show():
+        yield lambda *_: None
+        return
     from rich.console import Console
     from rich.progress import BarColumn, Progress, TaskProgressColumn, TextColumn, TimeElapsedColumn
 
@@ -44,6 +68,9 @@ def count_bar(stage: str, lang: str = "en", *, start: bool = False,
     when done; nothing on a pipe or under ``--quiet``. The stage's name in ``lang``. The bar
     appears at the first ``progress(done, total)``, or at once with ``start`` (``total``:
     None while not known: the answer sheets before the folders are read)."""
+    if not _may_show():
+        yield lambda *_: None
+        return
     from rich.console import Console
     from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn
 

@@ -158,10 +158,9 @@ def _solve(c, case: Path, points: int, at, transients: bool, motion, snapshot, a
 def _check_options(what, at, lang: str = "en") -> None:
     """Refuse an option's value outside its choices or range, or one that cannot apply (a
     frame without a Russian PDF or DOCX report): one error line, exit 2."""
-    from flywheel.render.csvfmt import STYLES
-    from flywheel.render.figure import DPI_RANGE, FORMATS as FIGURE_FORMATS
-    from flywheel.render.plots import CHOICES
-    from flywheel.render.report_formats import FORMATS
+    from flywheel.render.choices import (CSV_STYLES as STYLES, DPI_RANGE, FIGURE_FORMATS,
+                                         PLOT_CHOICES as CHOICES, REPORT_FORMATS as FORMATS,
+                                         SHEET_SIZES)
 
     if what.csv_style not in STYLES:
         fail(choice("--csv", what.csv_style, "a CSV dialect", ", ".join(STYLES)))
@@ -175,8 +174,6 @@ def _check_options(what, at, lang: str = "en") -> None:
             "option_range", "--dpi: {got} is out of range (allowed: {lo} to {hi})", option="--dpi",
             got=what.dpi, lo=DPI_RANGE[0], hi=DPI_RANGE[1]))
     _check_at(at)
-    from flywheel.render.drawings import SIZES as SHEET_SIZES
-
     if what.sheet_size not in SHEET_SIZES:
         fail(choice("--sheet-size", what.sheet_size, "a sheet format", ", ".join(SHEET_SIZES)))
     for f in what.formats:

@@ -31,8 +31,8 @@ def closed_grid(n_points: int, extra: list[float], cycle: float = 2 * np.pi) -> 
     """
     base = np.linspace(0.0, cycle, n_points + 1)
     extra = np.mod(np.asarray(extra, float), cycle)
-    phi = np.union1d(base, extra)
-    # merge nodes closer than 1e-9 rad (an extra angle that is already a node)
+    phi = np.sort(np.concatenate([base, extra]))   # np.union1d without its import of numpy.ma
+    # merge nodes closer than 1e-9 rad (an extra angle that is already a node; equal ones too)
     keep = np.concatenate([[True], np.diff(phi) > 1e-9])
     phi = phi[keep]
     phi[-1] = cycle

@@ -71,7 +71,8 @@ def dead_centres(mech: Mechanism, slider: str, n_grid: int = 721) -> list[DeadCe
             break
     roots = np.mod(roots, 2 * np.pi)
     roots[np.isclose(roots, 2 * np.pi, atol=1e-12, rtol=0)] = 0.0
-    roots = np.unique(np.round(roots, 12))
+    roots = np.sort(np.round(roots, 12))      # np.unique's values, without its import of numpy.ma
+    roots = roots[np.concatenate(([True], roots[1:] != roots[:-1]))]
     kk = solve(mech, roots)
     r = kk.points[d.joint].r
     x = (r - base) @ u

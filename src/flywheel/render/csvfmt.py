@@ -23,8 +23,9 @@ import re
 from collections.abc import Callable, Iterable, Iterator, Sequence
 
 from flywheel.render.numbers import excel_ru
+from flywheel.render.choices import CSV_STYLES
 
-STYLES = ("plain", "excel-ru")
+STYLES = CSV_STYLES
 
 
 def csv_text(rows: Iterable[Sequence], style: str = "plain",

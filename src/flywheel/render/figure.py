@@ -18,6 +18,7 @@ from contextlib import contextmanager
 import numpy as np
 
 from flywheel.render import nomenclature as nm
+from flywheel.render.choices import DPI_RANGE, FIGURE_FORMATS  # noqa: F401 (DPI_RANGE re-exported)
 
 DPI = 120
 LEGEND_W = 3.9            # room for a legend right of the axes [in]
@@ -42,8 +43,7 @@ RC = {
     "axes.titley": 1.0,
 }
 
-FORMATS = ("png", "svg", "pdf")      # `run --figure-format`
-DPI_RANGE = (50, 600)                # `run --dpi`: allowed, inclusive
+FORMATS = FIGURE_FORMATS             # `run --figure-format`; DPI_RANGE: `run --dpi`
 SVG_SALT = "flywheel"                # svg.hashsalt: the same ids in the SVG on every run
 
 _styled = 0        # depth of nested style() blocks: only the outermost one sets the style

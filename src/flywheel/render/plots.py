@@ -28,6 +28,7 @@ from flywheel.render.plots_scheme import (  # noqa: F401  (public here: animate,
     draw_scheme, draw_scheme_at, draw_scheme_fixed, scheme_names)
 from flywheel.render.numbers import typeset_params
 from flywheel.units import PA_PER_MPA
+from flywheel.render.choices import PLOT_CHOICES
 
 _SCHEME_LEGEND_COLS = 4     # columns of the scheme's legend (below the panels)
 
@@ -554,7 +555,7 @@ RECORD = ("positions", "velocity_analogues", "acceleration_analogues", "J_II", "
           "piston_forces", "reduced_moments", "works", "omega", "energy_mass", "plan_positions",
           "plan_velocity", "plan_acceleration", "plan_forces", "plan_lever")
 #: the choices of `run --plots`
-CHOICES = ("all", "record", "none")
+CHOICES = PLOT_CHOICES
 
 
 def _stem_of(name: str) -> str:

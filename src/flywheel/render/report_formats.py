@@ -23,8 +23,9 @@ from flywheel.render import mathfmt
 from flywheel.render.document import Bullets, Document, Figure, Formula, Heading, Paragraph, Table
 from flywheel.render.report import CAPTION
 from flywheel.render.report_gost import _fixed_zip, compile_typst
+from flywheel.render.choices import REPORT_FORMATS
 
-FORMATS = ("md", "html", "pdf", "docx")
+FORMATS = REPORT_FORMATS
 #: a table of more columns than WIDE gets a smaller font; of more than WIDE_PAGE a landscape page
 WIDE, WIDE_PAGE = 8, 12
 

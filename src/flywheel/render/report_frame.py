@@ -21,8 +21,8 @@ NUMPAGES fields — Word and LibreOffice keep them on every page the student add
 from __future__ import annotations
 
 from flywheel.render.drawings.forms import WIDTH, Cell, Form, form2, form2a
+from flywheel.render.choices import FRAMES  # noqa: F401 (re-exported)
 
-FRAMES = ("none", "eskd")
 #: the frame's distances from the sheet's edges [mm] (ГОСТ 2.104-2006, 4.3) and the sheet
 LEFT, MARGIN, PAGE_W, PAGE_H = 20.0, 5.0, 210.0, 297.0
 #: the text's distance from the frame at the top and above a title block [mm] (ГОСТ 2.105)

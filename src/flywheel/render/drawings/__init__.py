@@ -13,8 +13,9 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from flywheel.render.drawings.model import View
+from flywheel.render.choices import SHEET_SIZES
 
-SIZES = ("A1", "A2", "A3")
+SIZES = SHEET_SIZES
 SUFFIXES = ("pdf", "svg", "dxf")
 
 
