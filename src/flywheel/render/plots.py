@@ -598,8 +598,13 @@ def _save_next(results, folder: Path, lang: str, order: list[int], counter, fmt:
 def _worker(results, folder: Path, lang: str, order: list[int], counter, fmt: str = "png",
             dpi: int = fg.DPI, done=None) -> None:
     """A forked plotting process: it dies with its parent (Linux: PR_SET_PDEATHSIG), leaves
-    Ctrl-C to the parent (which stops it) and ends quietly on SIGTERM."""
+    Ctrl-C to the parent (which stops it) and ends quietly on SIGTERM. Its garbage collector
+    is the interpreter's default again (cli/__init__.py GC_THRESHOLDS): a figure dropped after
+    saving is garbage of cycles, freed figure by figure."""
+    import gc
     import signal
+
+    gc.set_threshold(700, 10, 10)         # the interpreter's default
 
     signal.signal(signal.SIGINT, signal.SIG_IGN)
     signal.signal(signal.SIGTERM, signal.SIG_DFL)
