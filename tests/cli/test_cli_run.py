@@ -219,6 +219,26 @@ def test_python_dash_m(tmp_path):
     assert json.loads(res.stdout)["results"]["omega_mean"] == pytest.approx(2 * math.pi * 10)
 
 
+#: modules `run --no-plots` piped has no use for: the figures and sheets' renderers (their
+#: options are checked against render/choices.py), rich (no bar can show on a pipe) and
+#: numpy.ma (np.unique's import): each costs the whole process time (benchmarks/README.md)
+UNUSED_BY_NO_PLOTS = ("matplotlib", "rich.progress", "rich.console", "numpy.ma",
+                      "flywheel.render.drawings", "flywheel.render.report_frame",
+                      "flywheel.render.plots", "flywheel.render.figure", "scipy")
+
+
+def test_run_no_plots_imports_nothing_it_does_not_use(tmp_path):
+    res = subprocess.run([sys.executable, "-X", "importtime", "-m", "flywheel", "run",
+                          str(CASES / "slotted_link.toml"), "--json", "--no-plots", "--points",
+                          "360", "--out", str(tmp_path / "o")],
+                         capture_output=True, text=True, check=True)
+    imported = {line.rsplit("|", 1)[-1].strip() for line in res.stderr.splitlines()
+                if line.startswith("import time:")}
+    assert "flywheel.dynamics.pipeline" in imported          # the run was timed at all
+    assert sorted(m for m in imported if m.split(".")[0] in ("matplotlib", "scipy")
+                  or m in UNUSED_BY_NO_PLOTS) == []
+
+
 def test_conservative_loads_need_no_balancing_moment():
     """Gravity alone does no work over a cycle: the balancing moment is exactly 0, with a
     warning, rather than a round-off sign deciding between 'driving' and an error."""
