@@ -356,3 +356,43 @@ def test_without_osifont_the_sheet_is_lettered_in_dejavu(monkeypatch, tmp_path):
     finally:
         for cached in (fonts.font_path, fonts._font):
             cached.cache_clear()
+
+
+def test_curve_names_are_set_off_the_curves_and_the_other_lettering():
+    """Five curves of one diagram crowded at the same crest (the velocity analogues: a crank
+    point's constant |v_q| on top of the others' maxima), a level line and a mark: the one
+    placer (render/labels.py) sets every name where no curve passes under it and no other
+    lettering is, which the crest of each curve — the old place — was not."""
+    import numpy as np
+
+    from flywheel.render.drawings.diagram import diagram
+    from flywheel.render.drawings.model import Polyline, Text
+
+    phi = np.linspace(0.0, 360.0, 721)
+    r = np.radians(phi)
+    curves = [(np.full_like(r, 0.1), "v_qA", "main"),
+              (0.1 * np.abs(np.sin(r)), "v_qB", "thin"),
+              (0.1 * np.abs(np.sin(r + 0.8)), "v_qC", "main"),
+              (0.07 + 0.03 * np.cos(2 * r), "v_qS2", "dashed"),
+              (0.07 + 0.03 * np.sin(2 * r), "v_qS4", "thin")]
+    v = diagram("analogues", "Аналоги скоростей", phi, curves, x_mu=2.0, x_symbol="φ",
+                x_unit="°", x_label="φ, °", y_symbol="v", y_unit="м/рад", y_label="v_q, м/рад",
+                lang="ru", lines=[((0.0, 0.05), (360.0, 0.05), "dashdot", "v_ср")],
+                marks=[(180.0, 0.0, "k")])
+    assert len(v.labels) == 7
+    points = []
+    for it in v.items:
+        if isinstance(it, Polyline):
+            xy = np.asarray(it.points)
+            for a, b in zip(xy[:-1], xy[1:]):
+                n = max(2, int(np.hypot(*(b - a)) / 0.2) + 1)
+                points.append(a + np.linspace(0.0, 1.0, n)[:, None] * (b - a))
+    points = np.concatenate(points)
+    lettering = [it.box() for it in v.items if isinstance(it, Text)]
+    for x0, y0, x1, y1 in v.labels:
+        inside = ((points[:, 0] > x0) & (points[:, 0] < x1)
+                  & (points[:, 1] > y0) & (points[:, 1] < y1))
+        assert not inside.any(), ((x0, y0, x1, y1), points[inside][:3])
+        own = [b for b in lettering if x0 <= b[0] and b[2] <= x1 and y0 <= b[1] and b[3] <= y1]
+        others = [b for b in lettering if b not in own]
+        assert not any(_overlap((x0, y0, x1, y1), b) for b in others)

@@ -1,6 +1,6 @@
 """A diagram drawn as the course draws it on a sheet: axes with arrows, the curves to round
-scale factors μ stated beside the title, ticks with their values, each curve named at its
-highest point. Layout only: the values come from the results; the scale factors are
+scale factors μ stated beside the title, ticks with their values, each curve named beside it
+(the one label placer, render/labels.py). Layout only: the values come from the results; the scale factors are
 :func:`flywheel.dynamics.plans.round_scale`'s round values (1, 2, 2.5, 5 × 10^k per mm).
 """
 from __future__ import annotations
@@ -10,6 +10,7 @@ import math
 import numpy as np
 
 from flywheel.dynamics.plans import round_scale
+from flywheel.render.labels import around
 from flywheel.render.drawings.model import View
 from flywheel.render.numbers import fmt
 
@@ -63,27 +64,21 @@ def _ticks(lo: float, hi: float, mu: float) -> list[float]:
     return [k * step for k in range(k0, k1 + 1)]
 
 
-def _label_spot(px, py, drawn, spots) -> tuple[float, float]:
-    """Where a curve's name goes [mm]: a point of the curve in its upper half, as far as may be
-    from the other curves and from the names placed already."""
+def _name_places(px, py, gap: float = 1.0, spots: int = 32):
+    """Candidate places of a curve's name [mm] for the one placer (render/labels.py): the
+    eight places round each of ``spots`` points spread along the curve; the preference (an
+    extra cost below one point of a line under the name) for the curve's upper part, as the
+    course names a curve near its crest. Returns (anchors, places, prefer)."""
     px, py = np.asarray(px, float), np.asarray(py, float)
+    idx = np.unique(np.linspace(0, len(px) - 1, min(len(px), spots)).astype(int))
     top, low = float(py.max()), float(py.min())
-    idx = np.linspace(0, len(px) - 1, min(len(px), 48)).astype(int)
-    best, where = -1.0, int(np.argmax(py))
-    for i in idx:
-        if py[i] < low + 0.5 * (top - low):
-            continue
-        room = 50.0
-        for ox, oy in drawn:
-            if ox is px:
-                continue
-            j = int(np.argmin(np.abs(np.asarray(ox) - px[i])))
-            room = min(room, abs(float(oy[j]) - py[i]))
-        for sx, sy in spots:
-            room = min(room, math.hypot(sx - px[i], sy - py[i]) / 2)
-        if room > best + 1e-9:
-            best, where = room, int(i)
-    return float(px[where]), float(py[where])
+    height = (py[idx] - low) / (top - low) if top > low else np.ones(len(idx))
+    ring = around(gap)
+    anchors = np.repeat(np.column_stack([px[idx], py[idx]]), len(ring), axis=0)
+    places = np.tile(ring, (len(idx), 1))
+    prefer = (np.repeat(0.5 * (1.0 - height), len(ring))
+              + 0.01 * np.tile(np.arange(len(ring)), len(idx)))
+    return anchors, places, prefer
 
 
 def diagram(name: str, title: str, x, curves, *, x_mu: float, x_symbol: str, x_unit: str,
@@ -135,22 +130,30 @@ def diagram(name: str, title: str, x, curves, *, x_mu: float, x_symbol: str, x_u
         cx = np.asarray(c[3], float) if len(c) > 3 else x      # a curve over its own abscissa
         drawn.append((X(cx), Y(y)))
         v.poly(_decimate(*drawn[-1]), line=c[2])
-    spots: list[tuple[float, float]] = []
-    for c, (px, py) in zip(curves, drawn):
-        if c[1]:
-            sx, sy = _label_spot(px, py, drawn, spots)
-            spots.append((sx, sy))
-            v.rich(sx + 1.0, sy + 1.0, c[1], 3.5)
+    ends = []
     for (p0, p1, line, label) in lines:
         a, b = (float(X(p0[0])), float(Y(p0[1]))), (float(X(p1[0])), float(Y(p1[1])))
         v.line(a, b, line=line)
-        if label:
-            v.rich(b[0] + 1.5, b[1], label, 3.5, valign="middle")
+        ends.append((b, label))
+    dots = []
     for (mx, my, label) in marks:
         c = (float(X(mx)), float(Y(my)))
         v.circle(c, 0.8, line="thin", filled=True)
+        dots.append((c, label))
+    # the names by the one placer (render/labels.py), over everything drawn: a line's at its
+    # end, a mark's beside it, then each curve's along it, off the lines, the ticks' values
+    # and the names placed before
+    placer = v.placer()
+    for b, label in ends:
         if label:
-            v.rich(c[0] + 1.5, c[1] + 1.0, label, 3.5)
+            v.label(placer, b, label, 3.5, [(1.5, 0.0, 0.0, 0.5), *around(1.5)])
+    for c, label in dots:
+        if label:
+            v.label(placer, c, label, 3.5, around(1.5))
+    for c, (px, py) in zip(curves, drawn):
+        if c[1]:
+            anchors, places, prefer = _name_places(px, py)
+            v.label(placer, anchors, c[1], 3.5, places, prefer)
     # the caption above: the title, then the scale factors
     top = max(yb + 10.0, *(it.box()[3] for it in v.items)) + 3.0
     x_unit_text = x_scale_text or mu_text(x_symbol, x_mu, x_unit, lang)
