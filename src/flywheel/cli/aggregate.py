@@ -19,10 +19,10 @@ MAX_T_END = 600.0     # s: ten minutes of simulated start-up (about 15 s of comp
 
 
 Plot = Annotated[Optional[Path], typer.Option(
-    "--plot", help="Write speeds and the elastic moment against time (start-up, steady state) to "
+    "--plot", metavar="FILE", help="Write speeds and the elastic moment against time (start-up, steady state) to "
     "this image file (.png, .svg, .pdf).", dir_okay=False)]
 TEnd = Annotated[Optional[float], typer.Option(
-    "--t-end", help="Duration of the start-up integration, seconds (default: five time "
+    "--t-end", metavar="SECONDS", help="Duration of the start-up integration, seconds (default: five time "
     "constants of the motor or 20 forcing periods, whichever is longer, at most 2000 periods of "
     "the highest natural frequency).")]
 Modes = Annotated[bool, typer.Option(
@@ -30,11 +30,11 @@ Modes = Annotated[bool, typer.Option(
     "nodes (positions along the shafts), and each shaft's equivalent length (the JSON always has "
     "them).")]
 AggregateOut = Annotated[Optional[Path], typer.Option(
-    "--out", "-o", help="Also write an output folder: summary.json (as --json), "
+    "--out", "-o", metavar="DIR", help="Also write an output folder: summary.json (as --json), "
     "plots/aggregate.png (with a \\[motor]) and the report (see --report); a rerun replaces only "
     "its own files.")]
 AggregateCase = Annotated[Path, typer.Argument(
-    help="Aggregate case file (TOML), see docs/aggregate.md.")]
+    metavar="CASE", help="Aggregate case file (TOML), see docs/aggregate.md.")]
 
 
 def aggregate_command(case: AggregateCase, json: Json = False, plot: Plot = None,

@@ -16,7 +16,7 @@ from flywheel.io.text import in_language
 
 
 DutyCase = Annotated[Path, typer.Argument(
-    help="Duty-cycle case file (TOML), see docs/duty-cycle.md.")]
+    metavar="CASE", help="Duty-cycle case file (TOML), see docs/duty-cycle.md.")]
 
 
 def duty_cycle_command(case: DutyCase, as_json: Json = False, lang: Lang = "en",

@@ -36,34 +36,34 @@ def _check_at(at, cycle_deg: float) -> None:
 
 
 Profile = Annotated[Optional[str], typer.Option(
-    "--profile", help="The resistance graph of the textbook task «Задача 2»: triangle (π/2…3π/2, "
+    "--profile", metavar="PROFILE", help="The resistance graph of the textbook task «Задача 2»: triangle (π/2…3π/2, "
     "peak in the middle) or rectangle (π/2…π) (default triangle).")]
 Md = Annotated[Optional[float], typer.Option(
-    "--md", help="Constant driving moment M_D [N·m] (default 15).")]
+    "--md", metavar="TORQUE", help="Constant driving moment M_D [N·m] (default 15).")]
 J = Annotated[Optional[float], typer.Option(
-    "--j", help="Reduced moment of inertia J \\[kg·m²] (default 12).")]
+    "--j", metavar="INERTIA", help="Reduced moment of inertia J \\[kg·m²] (default 12).")]
 Omega0 = Annotated[Optional[float], typer.Option(
-    "--omega0", help="ω at φ = 0 \\[rad/s] (default 200).")]
+    "--omega0", metavar="SPEED", help="ω at φ = 0 \\[rad/s] (default 200).")]
 From = Annotated[Optional[float], typer.Option(
-    "--from", help="Start of the resistance graph \\[deg] (default 90).")]
+    "--from", metavar="DEG", help="Start of the resistance graph \\[deg] (default 90).")]
 To = Annotated[Optional[float], typer.Option(
-    "--to", help="End of the resistance graph \\[deg] (default 270 triangle, 180 rectangle).")]
+    "--to", metavar="DEG", help="End of the resistance graph \\[deg] (default 270 triangle, 180 rectangle).")]
 Mc = Annotated[Optional[float], typer.Option(
-    "--mc", help="Peak of the resistance [N·m] instead of the balance (the motion may not be "
+    "--mc", metavar="TORQUE", help="Peak of the resistance [N·m] instead of the balance (the motion may not be "
     "steady).")]
 Delta = Annotated[Optional[float], typer.Option(
-    "--delta", help="Ask for the J that gives this δ at the same mean speed.")]
+    "--delta", metavar="DELTA", help="Ask for the J that gives this δ at the same mean speed.")]
 Task2Case = Annotated[Optional[Path], typer.Option(
-    "--case", help="A task-2 case file (TOML), see docs/task2.md; it gives all the data, so it "
+    "--case", metavar="FILE", help="A task-2 case file (TOML), see docs/task2.md; it gives all the data, so it "
     "takes none of the options above.")]
 At = Annotated[Optional[List[float]], typer.Option(
-    "--at", help="Report ω, ε and the time t at this crank angle \\[deg] (repeatable; added to a "
+    "--at", metavar="DEG", help="Report ω, ε and the time t at this crank angle \\[deg] (repeatable; added to a "
     "case's at_deg). Implies --epsilon.")]
 Epsilon = Annotated[bool, typer.Option(
     "--epsilon", help="Also show ε(φ) = (M_D − M_C)/J (its extremes), the cycle time and the "
     "phases of rising and falling speed in the summary (the JSON always has them).")]
 Plot = Annotated[Optional[Path], typer.Option(
-    "--plot", help="Write a plot of M_D, M_C, A, ω(φ) and ε(φ) to this image file (.png, .svg, "
+    "--plot", metavar="FILE", help="Write a plot of M_D, M_C, A, ω(φ) and ε(φ) to this image file (.png, .svg, "
     ".pdf).")]
 
 
