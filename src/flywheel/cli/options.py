@@ -135,6 +135,22 @@ Teacher = Annotated[Optional[str], typer.Option(
 CaseFile = Annotated[Path, typer.Argument(metavar="CASE", help="Case file (TOML).")]
 
 
+def title_page(student: str | None, group: str | None, teacher: str | None) -> dict:
+    """--student, --group and --teacher as the title page takes them over the case's
+    ``[document]`` (render.blocks.front, as `run` merges them): None keeps the case's; each at
+    most MAX_TEXT characters, else an InputError (one line)."""
+    from flywheel.errors import InputError, Notice
+    from flywheel.io.schema import MAX_TEXT
+
+    given = {"student": student, "group": group, "teacher": teacher}
+    for option, value in given.items():
+        if value is not None and len(value) > MAX_TEXT:
+            raise InputError(Notice.of(
+                "option_text_too_long", "--{option}: {length} characters (allowed: at most "
+                "{most})", option=option, length=len(value), most=MAX_TEXT))
+    return given
+
+
 def _no_type(ctx=None) -> None:
     """An argument's type column: empty (its metavar, CASE or KEY, says what it is)."""
     return None
