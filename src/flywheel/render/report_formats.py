@@ -23,6 +23,7 @@ from flywheel.render import mathfmt
 from flywheel.render.document import Bullets, Document, Figure, Formula, Heading, Paragraph, Table
 from flywheel.render.report import CAPTION
 from flywheel.render.report_gost import _fixed_zip, compile_typst
+from flywheel.render.typst_blocks import markup, typst_block
 
 FORMATS = ("md", "html", "pdf", "docx")
 #: a table of more columns than WIDE gets a smaller font; of more than WIDE_PAGE a landscape page
@@ -122,17 +123,9 @@ def html(doc: Document, plots_dir: Path | None = None) -> str:
 
 
 # -- typst / PDF ----------------------------------------------------------------------------------
-def _ts(text: str) -> str:
-    """Text as typst markup: every run a string literal (nothing in it is markup); **bold**;
-    the symbols' subscripts (mathfmt.subscripts) as #sub."""
-    def lit(s: str) -> str:
-        return '#"' + s.replace("\\", "\\\\").replace('"', '\\"') + '"' if s else ""
-
-    def subs(s: str) -> str:          # the symbols' subscripts (J_II, ΔT_нб) as #sub[…]
-        return "".join(f"#sub[{lit(r)}]" if b else lit(r) for r, b in mathfmt.subscripts(s))
-
-    parts = text.split("**")
-    return "".join(subs(p) if i % 2 == 0 else f"#strong[{subs(p)}]" for i, p in enumerate(parts))
+#: text as typst markup: every run a string literal (nothing in it is markup); **bold**; the
+#: symbols' subscripts (mathfmt.subscripts) as #sub (render/typst_blocks.py)
+_ts = markup
 
 
 @dataclass(frozen=True)
@@ -156,12 +149,8 @@ def typst_source(doc: Document, layout: TypstLayout = TypstLayout()) -> str:
     for b in doc.blocks:
         if isinstance(b, Heading):
             out.append("=" * b.level + " " + _ts(b.text))
-        elif isinstance(b, Paragraph):
-            out.append(_ts(b.text))
-        elif isinstance(b, Bullets):
-            out += ["- " + _ts(i) for i in b.items]
-        elif isinstance(b, Formula):
-            out.append(f"$ {mathfmt.typst(b.tex)} $")
+        elif (lines := typst_block(b, _ts)) is not None:    # a paragraph, a list, a formula
+            out += lines
         elif isinstance(b, Table):
             out.append(_typst_table(b, f"{tab} {b.number} — {b.caption}", layout.table))
         elif isinstance(b, Figure):

@@ -31,6 +31,7 @@ from pathlib import Path
 from flywheel.render import mathfmt
 from flywheel.render.blocks import Bullets, Document, Figure, Formula, Heading, Paragraph, Table, TitlePage
 from flywheel.render.catalogue import words
+from flywheel.render.typst_blocks import boxed_literal, markup, typst_block
 
 #: a table of more columns than WIDE in 10 pt (9 pt beyond 9); of more than WIDE_PAGE
 #: on a landscape page
@@ -142,23 +143,13 @@ def _front(doc: Document) -> TitlePage:
 
 
 # -- typst / PDF --------------------------------------------------------------------------------
-def _lit(s: str) -> str:
-    """A run of text as typst string literals (nothing in it is markup); a narrow no-break space
-    (the numbers' thousands, render/numbers.py) as a box of its width, which no line breaks."""
-    if not s:
-        return ""
-    parts = s.split("\u202f")
-    return "#box(width: 0.2em)".join(
-        '#"' + p.replace("\\", "\\\\").replace('"', '\\"') + '"' if p else "" for p in parts)
+_lit = boxed_literal       # a run of text: string literals, a narrow no-break space as a box
 
 
 def _ts(text: str) -> str:
-    """Text as typst markup: **bold**, the symbols' subscripts as #sub."""
-    def subs(s: str) -> str:
-        return "".join(f"#sub[{_lit(r)}]" if b else _lit(r) for r, b in mathfmt.subscripts(s))
-
-    parts = text.split("**")
-    return "".join(subs(p) if i % 2 == 0 else f"#strong[{subs(p)}]" for i, p in enumerate(parts))
+    """Text as typst markup (render/typst_blocks.py): **bold**, the symbols' subscripts as #sub,
+    a narrow no-break space as a box of its width."""
+    return markup(text, boxed_literal)
 
 
 _PREAMBLE = """#set document(title: {title}, date: none)
@@ -231,12 +222,8 @@ def typst_source(doc: Document, plots: bool = True) -> str:
                 out.append(f"#heading(level: 1, numbering: none, supplement: [S])[{body}]")
             else:
                 out.append(f"#heading(level: {b.level}, numbering: none)[{_lit(b.number)}#h(0.6em){body}]")
-        elif isinstance(b, Paragraph):
-            out.append(_ts(b.text))
-        elif isinstance(b, Bullets):
-            out += ["- " + _ts(i) for i in b.items]
-        elif isinstance(b, Formula):
-            out.append(f"$ {mathfmt.typst(b.tex)} $")
+        elif (lines := typst_block(b, _ts)) is not None:    # a paragraph, a list, a formula
+            out += lines
         elif isinstance(b, Table):
             out.append(_table(b, g, landscape))
         elif isinstance(b, Figure):
