@@ -236,6 +236,10 @@ def docx(doc: Document, plots_dir: Path | None = None) -> bytes:
             runs(d.add_paragraph(), f"{tab} {b.number} — {b.caption}")
             t = d.add_table(rows=1 + len(b.rows), cols=len(b.header))
             t.style = "Table Grid"
+            # the header row repeated on every page the table runs onto (as report_gost's)
+            t._tbl.tr_lst[0].get_or_add_trPr().append(parse_xml(
+                '<w:tblHeader xmlns:w="http://schemas.openxmlformats.org/wordprocessingml/'
+                '2006/main"/>'))
             size = Pt(7 if len(b.header) > 7 else 8.5)
             # the cells straight from the rows' XML: Table.cell(r, c) rebuilds the whole grid
             # on every call (quadratic; seconds for the report's tables)

@@ -353,6 +353,30 @@ def _styles(d) -> None:
     lst.paragraph_format.first_line_indent = Cm(0)
 
 
+#: the elements of w:settings that come after w:updateFields in the schema's sequence (ECMA-376
+#: part 1, 17.15.1.78 settings: … alwaysMergeEmptyNamespace, updateFields, hdrShapeDefaults, …)
+_AFTER_UPDATE_FIELDS = frozenset((
+    "hdrShapeDefaults", "footnotePr", "endnotePr", "compat", "docVars", "rsids", "mathPr",
+    "attachedSchema", "themeFontLang", "clrSchemeMapping", "doNotIncludeSubdocsInStats",
+    "doNotAutoCompressPictures", "forceUpgrade", "captions", "readModeInkLockDown",
+    "smartTagType", "schemaLibrary", "shapeDefaults", "doNotEmbedSmartTags", "decimalSymbol",
+    "listSeparator", "docId", "chartTrackingRefBased", "defaultImageDpi", "conflictMode"))
+
+
+def _update_fields_on_open(settings) -> None:
+    """``<w:updateFields w:val="true"/>`` in the document's settings, where the schema's
+    sequence puts it (before w:compat, w:rsids, …; Word may ignore or refuse an element out of
+    its order): Word asks to update the fields on opening, which fills the TOC's page numbers."""
+    from docx.oxml import parse_xml
+
+    flag = parse_xml(f'<w:updateFields {_W} w:val="true"/>')
+    later = [c for c in settings if c.tag.rsplit("}", 1)[-1] in _AFTER_UPDATE_FIELDS]
+    if later:
+        later[0].addprevious(flag)
+    else:
+        settings.append(flag)
+
+
 def _field(p, instr: str, shown: str) -> None:
     """A Word field (SEQ, PAGE, TOC) in paragraph ``p``, its last result ``shown``."""
     from docx.oxml import parse_xml
@@ -448,9 +472,7 @@ def docx(doc: Document, plots_dir: Path | None = None) -> bytes:
     cp = d.core_properties
     cp.created = cp.modified = cp.last_printed = fixed
     cp.title, cp.author, cp.last_modified_by, cp.revision = doc.title, "flywheel", "flywheel", 1
-    settings = d.settings.element                            # Word fills the TOC on opening
-    settings.append(parse_xml('<w:updateFields xmlns:w="http://schemas.openxmlformats.org/'
-                              'wordprocessingml/2006/main" w:val="true"/>'))
+    _update_fields_on_open(d.settings.element)              # Word fills the TOC on opening
 
     def runs(p, text: str, size=None, bold: bool = False):
         for i, part in enumerate(text.split("**")):
