@@ -79,7 +79,7 @@ def test_a_usage_error_is_one_error_line():
     missing argument) are one `error:` line with exit 2, not the parser's box."""
     for args, fragment in ((["run", CASES / "compressor.toml", "--points", "many"],
                             "flywheel run: Invalid value for '--points'"),
-                           (["run"], "flywheel run: Missing argument 'case'"),
+                           (["run"], "flywheel run: Missing argument 'CASE'"),
                            (["bogus"], "No such command 'bogus'"),
                            (["task2", "--md", "abc"], "Invalid value for '--md'")):
         res = flywheel(*args)

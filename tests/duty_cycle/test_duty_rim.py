@@ -146,3 +146,25 @@ def test_the_summary_and_the_report_show_the_rim(lang, title, area):
     assert any(c.startswith(title) for c in captions)
     plain = solve_data(_press({"share": 0.9}) | {"flywheel": {"max_rpm": 225, "min_rpm": 200}})
     assert not any(h.startswith(title) for h, *_ in summary_tables(plain, lang))
+
+
+def test_a_hoop_of_a_given_diameter_is_told_the_diameter_that_makes_it_a_rim():
+    """A diameter given (4 m, steel, the press of Ex. 16.19): no rim speed to give (the diameter
+    sets it), so the warning names the diameter that gives t/D_mean = 0.05. Independently of
+    the warning: at fixed J, share, ω, ρ and b = 2·t, m ∝ D⁻² and t = √(m/(π·D·2·ρ)) ∝ D^(−3/2),
+    so t/D ∝ D^(−5/2) and D_aim = D·((t/D)/0.05)^(2/5); given back, it gives t/D = 0.05."""
+    from flywheel.render.nomenclature import message
+
+    r = solve_data(_press({"share": 0.9, "diameter": 4.0}))
+    ratio = r.rim.thickness / r.rim.D_mean
+    assert ratio < 0.01
+    (w,) = [w for w in r.warnings if getattr(w, "code", "").startswith("rim_thin")]
+    assert w.code == "rim_thin_diameter"
+    D_aim = 4.0 * (ratio / 0.05) ** 0.4
+    assert f"give a smaller flywheel.rim.diameter (about {D_aim:.3g} m gives t/D = 0.05)" in w
+    assert "rim.speed" not in w and "rim speed" not in w
+    ru = message(w, "ru")
+    assert f"задайте меньший flywheel.rim.diameter (около {D_aim:.3g} м даёт t/D = 0.05)" in ru
+    again = solve_data(_press({"share": 0.9, "diameter": D_aim}))
+    assert again.rim.thickness / again.rim.D_mean == pytest.approx(0.05, rel=1e-12)
+    assert not [w for w in again.warnings if getattr(w, "code", "").startswith("rim_thin")]

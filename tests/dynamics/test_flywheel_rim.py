@@ -167,3 +167,32 @@ def test_a_hoop_thin_rim_is_warned_with_the_speed_that_makes_it_a_rim(rim):
     ok = analyze(parse_case(data, "c.toml"), n_points=720)
     assert 0.01 < ok.sizing.rim_design.thickness / ok.sizing.rim_design.D_mean
     assert not [w for w in ok.warnings if getattr(w, "code", "") == "rim_thin"]
+
+
+def test_a_hoop_of_a_given_thickness_to_radius_is_told_the_ratio_not_a_speed():
+    """thickness_to_radius given: t = (t/R)·R, so t/D_mean = (t/R)/2 whatever the rim speed or
+    the diameter, and the warning's advice is t/R = 2·0.05 = 0.1, not a rim speed (which
+    would change nothing). Given back, t/R = 0.1 gives t/D = 0.05 and no warning."""
+    from flywheel.render.nomenclature import message
+
+    data = read_toml(CASES / "press.toml")
+    data.setdefault("flywheel", {})["rim"] = {"thickness_to_radius": 0.01}
+    res = analyze(parse_case(data, "c.toml"), n_points=360)
+    d = res.sizing.rim_design
+    assert d.thickness / d.D_mean == pytest.approx(0.005, rel=1e-12)
+    (w,) = [w for w in res.warnings if getattr(w, "code", "").startswith("rim_thin")]
+    assert w.code == "rim_thin_ratio"
+    assert "thickness_to_radius = 0.01 sets t/D = 0.005" in w
+    assert "give flywheel.rim.thickness_to_radius about 0.1 (t/D = 0.05)" in w
+    assert "rim.speed" not in w
+    ru = message(w, "ru")
+    assert "задайте flywheel.rim.thickness_to_radius около 0.1 (t/D = 0.05)" in ru
+    for speed in (5.0, 20.0):              # the speed changes the diameter, not t/D
+        data["flywheel"]["rim"] = {"thickness_to_radius": 0.01, "speed": speed}
+        other = analyze(parse_case(data, "c.toml"), n_points=360).sizing.rim_design
+        assert other.thickness / other.D_mean == pytest.approx(0.005, rel=1e-12)
+    data["flywheel"]["rim"] = {"thickness_to_radius": 0.1}
+    again = analyze(parse_case(data, "c.toml"), n_points=360)
+    d2 = again.sizing.rim_design
+    assert d2.thickness / d2.D_mean == pytest.approx(0.05, rel=1e-12)
+    assert not [w for w in again.warnings if getattr(w, "code", "").startswith("rim_thin")]

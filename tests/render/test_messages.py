@@ -754,7 +754,7 @@ FLYWHEEL = str(Path(sys.executable).with_name("flywheel"))   # the console scrip
 USAGE_RU = [
     (["run", "CASE", "--foo"], "ошибка: flywheel run: нет такого параметра: --foo (похожие: "
      "--motion, --out, --roots) (см. flywheel run --help)"),
-    (["run"], "ошибка: flywheel run: не задан аргумент 'case' (см. flywheel run --help)"),
+    (["run"], "ошибка: flywheel run: не задан аргумент 'CASE' (см. flywheel run --help)"),
     (["run", "CASE", "--points", "abc"], "ошибка: flywheel run: --points: должно быть целым "
      "числом (задано 'abc') (см. flywheel run --help)"),
     (["task2", "--md", "x"], "ошибка: flywheel task2: --md: должно быть числом (задано 'x') "

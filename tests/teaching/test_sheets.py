@@ -475,3 +475,37 @@ def test_the_sheet_gives_the_defaults_a_flywheels_diameter_needs(tmp_path):
                  "--sheets-format", "html", "--lang", "en")
     rows = [r[0] for t in sheet_of(tmp_path / "c", "01").tables for r in t]
     assert sum("density" in label for label in rows) == 1
+
+
+def test_the_title_is_in_the_sheets_language(compressor_dir, task2_dir):
+    """A template's title given in both languages ({ ru, en }, as the bundled cases give
+    theirs) is on each sheet in the sheet's language."""
+    ru = sheet_of(compressor_dir, "01")
+    assert ru.paragraphs[0] == "Двухступенчатый V-образный воздушный компрессор"
+    en = sheet_of(task2_dir, "01")
+    assert en.paragraphs[0] == "«Задача 2», task 1: triangular resistance moment"
+
+
+@pytest.mark.parametrize("template, kind_ru", [
+    (COMPRESSOR, "Динамический анализ машины"),
+    (TASK2, "Движение машины с постоянным приведённым моментом инерции")])
+def test_an_english_only_title_gives_way_to_the_tasks_russian_name(template, kind_ru, tmp_path):
+    """A template whose title is an English string only: the Russian sheet carries the Russian
+    name of the kind of task (the catalogue's), never the English words; the English sheet keeps
+    the template's title."""
+    text = template.read_text(encoding="utf-8")
+    # the case's own title (the first; the loads' titles come later)
+    text, n = re.subn(r"(?m)^title\s*=\s*\{[^}]*en = (\"[^\"]*\") \}$", r"title = \1", text,
+                      count=1)
+    assert n == 1
+    (tmp_path / "t.toml").write_text(text, encoding="utf-8")
+    english = tomllib.loads(text)["title"]
+    for lang in ("ru", "en"):
+        out = tmp_path / lang
+        res = invoke(tmp_path / "t.toml", "--count", 1, "--seed", 3, "--out", out, "--sheets",
+                     "--sheets-format", "html", "--lang", lang)
+        assert res.exit_code == 0, res.output
+        title = sheet_of(out, "01").paragraphs[0]
+        assert title == (kind_ru if lang == "ru" else english)
+        if lang == "ru":
+            assert not re.search(r"[A-Za-z]{2,}", title)

@@ -13,7 +13,10 @@ os.environ.setdefault("PYDANTIC_DISABLE_PLUGINS", "__all__")
 
 import typer  # noqa: E402
 
+from flywheel.cli.options import HelpCommand, HelpGroup
+
 app = typer.Typer(
+    cls=HelpGroup,
     add_completion=True,
     no_args_is_help=True,
     help="Dynamic analysis of machines: kinematics, reduction, flywheel sizing, true motion.",
@@ -55,16 +58,16 @@ from flywheel.cli.run import check_command, run_command, schema_command  # noqa:
 from flywheel.cli.task2 import task2_command  # noqa: E402
 from flywheel.cli.teaching import grade_command, variants_command  # noqa: E402
 
-app.command("schema")(schema_command)
-app.command("check")(check_command)
-app.command("run")(run_command)
-app.command("drawings")(drawings_command)
-app.command("task2")(task2_command)
-app.command("aggregate")(aggregate_command)
-app.command("duty-cycle")(duty_cycle_command)
-app.command("variants")(variants_command)
-app.command("grade")(grade_command)
-app.command("new")(new_command)
+app.command("schema", cls=HelpCommand)(schema_command)
+app.command("check", cls=HelpCommand)(check_command)
+app.command("run", cls=HelpCommand)(run_command)
+app.command("drawings", cls=HelpCommand)(drawings_command)
+app.command("task2", cls=HelpCommand)(task2_command)
+app.command("aggregate", cls=HelpCommand)(aggregate_command)
+app.command("duty-cycle", cls=HelpCommand)(duty_cycle_command)
+app.command("variants", cls=HelpCommand)(variants_command)
+app.command("grade", cls=HelpCommand)(grade_command)
+app.command("new", cls=HelpCommand)(new_command)
 
 
 class Stopped(BaseException):

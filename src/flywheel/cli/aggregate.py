@@ -11,7 +11,7 @@ from typing import Annotated, Optional
 import typer
 
 from flywheel.cli.guard import report_formats
-from flywheel.cli.options import Frame, Json, Lang, Reports
+from flywheel.cli.options import Frame, Group, Json, Lang, Reports, Student, Teacher, title_page
 from flywheel.io.text import in_language
 
 
@@ -19,10 +19,10 @@ MAX_T_END = 600.0     # s: ten minutes of simulated start-up (about 15 s of comp
 
 
 Plot = Annotated[Optional[Path], typer.Option(
-    "--plot", help="Write speeds and the elastic moment against time (start-up, steady state) to "
+    "--plot", metavar="FILE", help="Write speeds and the elastic moment against time (start-up, steady state) to "
     "this image file (.png, .svg, .pdf).", dir_okay=False)]
 TEnd = Annotated[Optional[float], typer.Option(
-    "--t-end", help="Duration of the start-up integration, seconds (default: five time "
+    "--t-end", metavar="SECONDS", help="Duration of the start-up integration, seconds (default: five time "
     "constants of the motor or 20 forcing periods, whichever is longer, at most 2000 periods of "
     "the highest natural frequency).")]
 Modes = Annotated[bool, typer.Option(
@@ -30,17 +30,18 @@ Modes = Annotated[bool, typer.Option(
     "nodes (positions along the shafts), and each shaft's equivalent length (the JSON always has "
     "them).")]
 AggregateOut = Annotated[Optional[Path], typer.Option(
-    "--out", "-o", help="Also write an output folder: summary.json (as --json), "
+    "--out", "-o", metavar="DIR", help="Also write an output folder: summary.json (as --json), "
     "plots/aggregate.png (with a \\[motor]) and the report (see --report); a rerun replaces only "
     "its own files.")]
 AggregateCase = Annotated[Path, typer.Argument(
-    help="Aggregate case file (TOML), see docs/aggregate.md.")]
+    metavar="CASE", help="Aggregate case file (TOML), see docs/aggregate.md.")]
 
 
 def aggregate_command(case: AggregateCase, json: Json = False, plot: Plot = None,
                       t_end: TEnd = None, lang: Lang = "en", modes: Modes = False,
                       out: AggregateOut = None, report: Reports = None,
-                      frame: Frame = "none") -> None:
+                      frame: Frame = "none", student: Student = None, group: Group = None,
+                      teacher: Teacher = None) -> None:
     """Two-mass machine aggregate (Ефанов ch. 9) or a chain of rotors: coefficients a_ij, c_ij,
     natural frequencies, steady forced vibration, start-up."""
     from flywheel.cli.guard import guarded, write_plot
@@ -51,13 +52,14 @@ def aggregate_command(case: AggregateCase, json: Json = False, plot: Plot = None
 
     with guarded(source=case):      # an error of the analysis is prefixed with the case file
         formats = _check_options(lang, t_end, report, out, frame)
+        page = title_page(student, group, teacher)
         c, result = _solve(case, plot, t_end, lang)
         if plot is not None:
             from flywheel.render.aggregate import plot as draw
 
             write_plot(plot, lambda tmp: draw(result, tmp, in_language(c.title, lang), lang))
         written = (_write_out(out, result, formats, c.title, c.source, lang, c.document,
-                              frame) if out is not None else None)
+                              frame, page) if out is not None else None)
     finish(json_text=to_json(result, c.title, c.source) + "\n" if json else None,
            summary=lambda: typeset(lang, print_summary, result, in_language(c.title, lang),
                                    in_language(c.source, lang), lang=lang, modes=modes),
@@ -105,10 +107,11 @@ def _check_options(lang: str, t_end, report, out, frame: str = "none"):
 
 
 def _write_out(out: Path, result, formats, title: str, source: str, lang: str,
-               document=None, frame: str = "none") -> list[str]:
+               document=None, frame: str = "none", page: dict | None = None) -> list[str]:
     """The --out folder (cli/outputs.py, render/report_folder.py): summary.json,
     plots/aggregate.png (with a motor), the report with its title page from ``document``
-    (the case's [document]); returns the names written."""
+    (the case's [document]) under ``page`` (--student, --group, --teacher); returns the names
+    written."""
     from flywheel.cli.outputs import report_folder
     from flywheel.render.aggregate import plot as draw
     from flywheel.render.aggregate import to_json
@@ -122,5 +125,5 @@ def _write_out(out: Path, result, formats, title: str, source: str, lang: str,
         lambda path: draw(result, path, shown, lang),
         FIGURE if result.startup is not None else None,
         lambda fig: front(typeset(lang, build_aggregate_document, result, shown, said, lang,
-                                  fig), document, frame="" if frame == "none" else frame),
+                                  fig), document, frame="" if frame == "none" else frame, **(page or {})),
         formats)

@@ -11,11 +11,11 @@ from flywheel.cli.options import CaseFile, Lang
 
 
 Out = Annotated[Optional[Path], typer.Option(
-    "--out", "-o", help="Output folder (default: out/<case name>), as `flywheel run` writes it.")]
+    "--out", "-o", metavar="DIR", help="Output folder (default: out/<case name>), as `flywheel run` writes it.")]
 At = Annotated[Optional[list[float]], typer.Option(
-    "--at", help="Report angle \\[deg] of sheet 2 (the first one given); default: the case's.")]
+    "--at", metavar="DEG", help="Report angle \\[deg] of sheet 2 (the first one given); default: the case's.")]
 SheetSize = Annotated[str, typer.Option(
-    "--sheet-size", help="Format of the sheets, landscape: A1, A2 or A3.")]
+    "--sheet-size", metavar="SIZE", help="Format of the sheets, landscape: A1, A2 or A3.")]
 
 
 def drawings_command(case: CaseFile, out: Out = None, at: At = None, lang: Lang = "en",

@@ -11,17 +11,19 @@ from typing import Annotated
 import typer
 
 from flywheel.cli.guard import report_formats
-from flywheel.cli.options import Frame, Json, Lang, OutFolder, Reports
+from flywheel.cli.options import (Frame, Group, Json, Lang, OutFolder, Reports, Student,
+                                  Teacher, title_page)
 from flywheel.io.text import in_language
 
 
 DutyCase = Annotated[Path, typer.Argument(
-    help="Duty-cycle case file (TOML), see docs/duty-cycle.md.")]
+    metavar="CASE", help="Duty-cycle case file (TOML), see docs/duty-cycle.md.")]
 
 
 def duty_cycle_command(case: DutyCase, as_json: Json = False, lang: Lang = "en",
                        out: OutFolder = None, report: Reports = None,
-                       frame: Frame = "none") -> None:
+                       frame: Frame = "none", student: Student = None, group: Group = None,
+                       teacher: Teacher = None) -> None:
     """Duty-cycle machines (punching, riveting, shearing presses): the motor's power and torque,
     the energy the flywheel gives, its J and mass, the speed at the end of the operation, the
     time and angle to recover, the cycle."""
@@ -33,9 +35,11 @@ def duty_cycle_command(case: DutyCase, as_json: Json = False, lang: Lang = "en",
 
     check_lang(lang)
     formats = guard(report_formats, report, out, frame, lang)
+    page = guard(title_page, student, group, teacher)
     c = guard(load_duty_case, case)
     result = guard(solve_case, c, str(case))
-    written = None if out is None else guard(_write_out, out, result, c, formats, lang, frame)
+    written = None if out is None else guard(_write_out, out, result, c, formats, lang, frame,
+                                                page)
     finish(warnings=result.warnings,
            json_text=to_json(result, c.title, c.source) + "\n" if as_json else None,
            summary=lambda: typeset(lang, print_summary, result, in_language(c.title, lang),
@@ -43,9 +47,11 @@ def duty_cycle_command(case: DutyCase, as_json: Json = False, lang: Lang = "en",
            lines=[] if written is None else [written_line(out, written, lang)])
 
 
-def _write_out(out: Path, result, c, formats, lang: str, frame: str = "none") -> list[str]:
+def _write_out(out: Path, result, c, formats, lang: str, frame: str = "none",
+               page: dict | None = None) -> list[str]:
     """The --out folder (cli/outputs.py, render/report_folder.py): summary.json and the report
-    with its title page from the case's [document] (no figure); returns the names written."""
+    with its title page from the case's [document] under ``page`` (--student, --group,
+    --teacher; no figure); returns the names written."""
     from flywheel.cli.outputs import report_folder
     from flywheel.render.blocks import front
     from flywheel.render.duty_cycle import to_json
@@ -56,4 +62,5 @@ def _write_out(out: Path, result, c, formats, lang: str, frame: str = "none") ->
         out, "duty-cycle", to_json(result, c.title, c.source) + "\n", None, None,
         lambda fig: front(typeset(lang, build_duty_cycle_document, result,
                                   in_language(c.title, lang), in_language(c.source, lang), lang),
-                          c.document, frame="" if frame == "none" else frame), formats)
+                          c.document, frame="" if frame == "none" else frame, **(page or {})),
+        formats)

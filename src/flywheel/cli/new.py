@@ -19,10 +19,10 @@ from flywheel.cli.options import Lang, state
 
 
 Kind = Annotated[str, typer.Argument(
-    help="What to start: slider-crank, v-compressor, four-bar, slotted-link, shaper, engine, "
+    metavar="KIND", help="What to start: slider-crank, v-compressor, four-bar, slotted-link, shaper, engine, "
     "task2, aggregate, duty-cycle.")]
 File = Annotated[Optional[Path], typer.Argument(
-    help="The case file to write (default: KIND.toml here); never written over if it exists.")]
+    metavar="FILE", help="The case file to write (default: KIND.toml here); never written over if it exists.")]
 
 
 def new_command(kind: Kind, file: File = None, lang: Lang = "en") -> None:

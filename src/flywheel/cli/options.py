@@ -17,12 +17,14 @@ place, so ``--quiet`` needs no filter on what was written).
 """
 from __future__ import annotations
 
+import re
 import sys
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Annotated, Optional
 
 import typer
+from typer.core import TyperCommand, TyperGroup
 
 
 @dataclass
@@ -100,7 +102,7 @@ def warn(text: str) -> None:
 
 
 Lang = Annotated[str, typer.Option(
-    "--lang", callback=_lang,
+    "--lang", callback=_lang, metavar="LANG",
     help="Language of what is printed and written (summary, plots, report, error line): "
          "en | ru.")]
 Json = Annotated[bool, typer.Option(
@@ -108,26 +110,75 @@ Json = Annotated[bool, typer.Option(
     help="Print the results as JSON instead of the summary (the same document in every "
          "language).")]
 OutFolder = Annotated[Optional[Path], typer.Option(
-    "--out", "-o",
+    "--out", "-o", metavar="DIR",
     help="Also write an output folder: summary.json (as --json), the plots and the report "
          "(see --report); a rerun replaces only its own files.")]
 Reports = Annotated[Optional[list[str]], typer.Option(
-    "--report", help="Report format: md, html, pdf, docx; repeatable (default: md and html).")]
+    "--report", metavar="FORMAT", help="Report format: md, html, pdf, docx; repeatable (default: md and html).")]
 CsvStyle = Annotated[str, typer.Option(
-    "--csv", help="CSV dialect: plain, or excel-ru (';', decimal commas, BOM: opens in a "
+    "--csv", metavar="DIALECT", help="CSV dialect: plain, or excel-ru (';', decimal commas, BOM: opens in a "
                   "Russian Excel).")]
 Student = Annotated[Optional[str], typer.Option(
-    "--student", help="The student on the title page of a Russian PDF or DOCX report (over the "
+    "--student", metavar="NAME", help="The student on the title page of a Russian PDF or DOCX report (over the "
                       "case's \\[document] student).")]
 Group = Annotated[Optional[str], typer.Option(
-    "--group", help="The student's group on the title page (over \\[document] group).")]
+    "--group", metavar="GROUP", help="The student's group on the title page (over \\[document] group).")]
 Frame = Annotated[str, typer.Option(
-    "--frame", help="Page frame of the Russian PDF and DOCX report: none, or eskd (every page "
+    "--frame", metavar="FRAME", help="Page frame of the Russian PDF and DOCX report: none, or eskd (every page "
                     "but the title page inside the ЕСКД frame, the title block of form 2 on "
                     "the contents page and 2a on the rest, ГОСТ 2.104; filled from "
                     "\\[document]); needs --lang ru and --report pdf or docx.")]
 
 
 Teacher = Annotated[Optional[str], typer.Option(
-    "--teacher", help="The teacher on the title page (over \\[document] teacher).")]
-CaseFile = Annotated[Path, typer.Argument(help="Case file (TOML).")]
+    "--teacher", metavar="NAME", help="The teacher on the title page (over \\[document] teacher).")]
+CaseFile = Annotated[Path, typer.Argument(metavar="CASE", help="Case file (TOML).")]
+
+
+def title_page(student: str | None, group: str | None, teacher: str | None) -> dict:
+    """--student, --group and --teacher as the title page takes them over the case's
+    ``[document]`` (render.blocks.front, as `run` merges them): None keeps the case's; each at
+    most MAX_TEXT characters, else an InputError (one line)."""
+    from flywheel.errors import InputError, Notice
+    from flywheel.io.schema import MAX_TEXT
+
+    given = {"student": student, "group": group, "teacher": teacher}
+    for option, value in given.items():
+        if value is not None and len(value) > MAX_TEXT:
+            raise InputError(Notice.of(
+                "option_text_too_long", "--{option}: {length} characters (allowed: at most "
+                "{most})", option=option, length=len(value), most=MAX_TEXT))
+    return given
+
+
+def _no_type(ctx=None) -> None:
+    """An argument's type column: empty (its metavar, CASE or KEY, says what it is)."""
+    return None
+
+
+class _UserWords:
+    """A help page in the user's words, not typer's (0.29 shows each option's Python type:
+    ``<bool>``, ``<list[float]>``, ``<path>``, and a required argument as ``{case}``): a flag
+    shows no value (it takes none), an option its metavar (DIR, DEG, PHI:RPM: given where it is
+    declared), an argument its metavar alone, and the usage line ``run [OPTIONS] CASE``."""
+
+    def get_params(self, ctx):
+        params = super().get_params(ctx)
+        for p in params:
+            if getattr(p, "is_flag", False) and p.metavar is None:
+                p.metavar = ""
+            elif p.param_type_name == "argument" and p.metavar is not None:
+                p.display_type_rich = _no_type
+        return params
+
+    def collect_usage_pieces(self, ctx) -> list[str]:
+        return [re.sub(r"^\{(.*)\}", r"\1", piece)
+                for piece in super().collect_usage_pieces(ctx)]
+
+
+class HelpCommand(_UserWords, TyperCommand):
+    """Every command's class (cli/__init__.py): its help page in the user's words."""
+
+
+class HelpGroup(_UserWords, TyperGroup):
+    """The root's class: its help page in the user's words."""

@@ -18,13 +18,13 @@ from flywheel.cli.options import (CaseFile, CsvStyle, Frame, Group, Json, Lang, 
 from flywheel.errors import Notice
 
 RunOut = Annotated[Optional[Path], typer.Option(
-    "--out", "-o", help="Output folder (default: out/<case name>); in an earlier output folder "
+    "--out", "-o", metavar="DIR", help="Output folder (default: out/<case name>); in an earlier output folder "
     "only flywheel's own files are replaced, any other non-empty folder is refused.")]
-Points = Annotated[int, typer.Option("--points", help="Intervals of the φ grid over the cycle.")]
+Points = Annotated[int, typer.Option("--points", metavar="N", help="Intervals of the φ grid over the cycle.")]
 At = Annotated[Optional[list[float]], typer.Option(
-    "--at", help="Report angle \\[deg]; repeatable (default: the case's output.at_deg, else 120).")]
+    "--at", metavar="DEG", help="Report angle \\[deg]; repeatable (default: the case's output.at_deg, else 120).")]
 Plots = Annotated[str, typer.Option(
-    "--plots", help="Which figures to draw: all | record (the figures of a course project's "
+    "--plots", metavar="WHICH", help="Which figures to draw: all | record (the figures of a course project's "
     "записка: kinematics, plans, reduced quantities, energy–mass diagram, ω(φ)) | none "
     "(fastest).")]
 NoPlots = Annotated[bool, typer.Option("--no-plots", help="No figures: the same as --plots none.")]
@@ -35,27 +35,28 @@ Animate = Annotated[bool, typer.Option(
     "--animate", help="Also write mechanism.gif: the linkage moving over one cycle with its "
     "points' trajectories (72 frames).")]
 Motion = Annotated[Optional[str], typer.Option(
-    "--motion", help="Crank motion of the force analysis: true (ω(φ), ε(φ) of the dynamics) | "
+    "--motion", metavar="MOTION", help="Crank motion of the force analysis: true (ω(φ), ε(φ) of the dynamics) | "
     "steady (ω_m, ε = 0); default: the case's force_analysis.motion, else true.")]
 FigureFormat = Annotated[str, typer.Option(
-    "--figure-format", help="Format of plots/*: png, svg or pdf (svg, pdf: written beside the "
+    "--figure-format", metavar="FORMAT", help="Format of plots/*: png, svg or pdf (svg, pdf: written beside the "
     "PNGs the reports embed).")]
 Dpi = Annotated[int, typer.Option(
-    "--dpi", help="Resolution of the plots [dots per inch], 50…600.")]
+    "--dpi", metavar="DPI", help="Resolution of the plots \\[dots per inch], 50…600.")]
 Drawings = Annotated[bool, typer.Option(
     "--drawings", help="Also write the project's drawing sheets (ЕСКД): "
-    "drawings/sheet1.{pdf,svg,dxf} (the law of motion), sheet2.* (the force analysis); "
+    "drawings/sheet1.pdf, .svg and .dxf (the law of motion), sheet2.* (the force analysis); "
     "docs/drawings.md.")]
 SheetSize = Annotated[str, typer.Option(
-    "--sheet-size", help="Format of the --drawings sheets, landscape: A1, A2 or A3.")]
+    "--sheet-size", metavar="SIZE", help="Format of the --drawings sheets, landscape: A1, A2 or A3.")]
 Snapshot = Annotated[Optional[list[str]], typer.Option(
-    "--snapshot", help="PHI_DEG:RPM: the crank's ε at that angle and speed; repeatable.")]
+    "--snapshot", metavar="PHI:RPM", help="The crank's ε at the angle PHI \\[deg] and the "
+    "speed RPM \\[rev/min]; repeatable.")]
 AtTravel = Annotated[Optional[list[str]], typer.Option(
-    "--at-travel", help="POINT:METRES: report the positions where slider point POINT is METRES "
-    "from its outer dead centre; repeatable.")]
+    "--at-travel", metavar="POINT:METRES", help="Report the positions where slider point POINT "
+    "is METRES from its outer dead centre; repeatable.")]
 Roots = Annotated[Optional[list[str]], typer.Option(
-    "--roots", help="COLUMN: the crank angles where that table.csv column changes sign; "
-    "repeatable.")]
+    "--roots", metavar="COLUMN", help="The crank angles where the table.csv column COLUMN "
+    "changes sign; repeatable.")]
 
 
 SchemaResults = Annotated[bool, typer.Option(
@@ -182,13 +183,9 @@ def _check_options(what, at, lang: str = "en") -> None:
     refused = frame_notice(what.frame, lang, what.formats)
     if refused is not None:
         fail(refused)
-    from flywheel.io.schema import MAX_TEXT
+    from flywheel.cli.options import title_page
 
-    for option, value in zip(("student", "group", "teacher"), what.title_page):
-        if value is not None and len(value) > MAX_TEXT:
-            fail(Notice.of(
-                "option_text_too_long", "--{option}: {length} characters (allowed: at most "
-                "{most})", option=option, length=len(value), most=MAX_TEXT))
+    _guard(title_page, *what.title_page)        # --student, --group, --teacher: at most MAX_TEXT
 
 
 #: the report angles --at takes: at most AT_MOST of them, each within ±AT_LIMIT_DEG [deg] (an

@@ -18,7 +18,8 @@ from typing import Annotated, List, Optional
 import typer
 
 from flywheel.cli.guard import report_formats
-from flywheel.cli.options import Frame, Json, Lang, OutFolder, Reports
+from flywheel.cli.options import (Frame, Group, Json, Lang, OutFolder, Reports, Student,
+                                  Teacher, title_page)
 
 PROFILES = ("triangle", "rectangle")
 
@@ -36,34 +37,34 @@ def _check_at(at, cycle_deg: float) -> None:
 
 
 Profile = Annotated[Optional[str], typer.Option(
-    "--profile", help="The resistance graph of the textbook task «Задача 2»: triangle (π/2…3π/2, "
+    "--profile", metavar="PROFILE", help="The resistance graph of the textbook task «Задача 2»: triangle (π/2…3π/2, "
     "peak in the middle) or rectangle (π/2…π) (default triangle).")]
 Md = Annotated[Optional[float], typer.Option(
-    "--md", help="Constant driving moment M_D [N·m] (default 15).")]
+    "--md", metavar="TORQUE", help="Constant driving moment M_D [N·m] (default 15).")]
 J = Annotated[Optional[float], typer.Option(
-    "--j", help="Reduced moment of inertia J \\[kg·m²] (default 12).")]
+    "--j", metavar="INERTIA", help="Reduced moment of inertia J \\[kg·m²] (default 12).")]
 Omega0 = Annotated[Optional[float], typer.Option(
-    "--omega0", help="ω at φ = 0 \\[rad/s] (default 200).")]
+    "--omega0", metavar="SPEED", help="ω at φ = 0 \\[rad/s] (default 200).")]
 From = Annotated[Optional[float], typer.Option(
-    "--from", help="Start of the resistance graph \\[deg] (default 90).")]
+    "--from", metavar="DEG", help="Start of the resistance graph \\[deg] (default 90).")]
 To = Annotated[Optional[float], typer.Option(
-    "--to", help="End of the resistance graph \\[deg] (default 270 triangle, 180 rectangle).")]
+    "--to", metavar="DEG", help="End of the resistance graph \\[deg] (default 270 triangle, 180 rectangle).")]
 Mc = Annotated[Optional[float], typer.Option(
-    "--mc", help="Peak of the resistance [N·m] instead of the balance (the motion may not be "
+    "--mc", metavar="TORQUE", help="Peak of the resistance [N·m] instead of the balance (the motion may not be "
     "steady).")]
 Delta = Annotated[Optional[float], typer.Option(
-    "--delta", help="Ask for the J that gives this δ at the same mean speed.")]
+    "--delta", metavar="DELTA", help="Ask for the J that gives this δ at the same mean speed.")]
 Task2Case = Annotated[Optional[Path], typer.Option(
-    "--case", help="A task-2 case file (TOML), see docs/task2.md; it gives all the data, so it "
+    "--case", metavar="FILE", help="A task-2 case file (TOML), see docs/task2.md; it gives all the data, so it "
     "takes none of the options above.")]
 At = Annotated[Optional[List[float]], typer.Option(
-    "--at", help="Report ω, ε and the time t at this crank angle \\[deg] (repeatable; added to a "
+    "--at", metavar="DEG", help="Report ω, ε and the time t at this crank angle \\[deg] (repeatable; added to a "
     "case's at_deg). Implies --epsilon.")]
 Epsilon = Annotated[bool, typer.Option(
     "--epsilon", help="Also show ε(φ) = (M_D − M_C)/J (its extremes), the cycle time and the "
     "phases of rising and falling speed in the summary (the JSON always has them).")]
 Plot = Annotated[Optional[Path], typer.Option(
-    "--plot", help="Write a plot of M_D, M_C, A, ω(φ) and ε(φ) to this image file (.png, .svg, "
+    "--plot", metavar="FILE", help="Write a plot of M_D, M_C, A, ω(φ) and ε(φ) to this image file (.png, .svg, "
     ".pdf).")]
 
 
@@ -71,7 +72,8 @@ def task2_command(profile: Profile = None, md: Md = None, j: J = None, omega0: O
                   start: From = None, end: To = None, mc: Mc = None, delta: Delta = None,
                   case: Task2Case = None, at: At = None, epsilon: Epsilon = False,
                   plot: Plot = None, as_json: Json = False, lang: Lang = "en",
-                  out: OutFolder = None, report: Reports = None, frame: Frame = "none") -> None:
+                  out: OutFolder = None, report: Reports = None, frame: Frame = "none",
+                  student: Student = None, group: Group = None, teacher: Teacher = None) -> None:
     """Task 2: ω_max, ω_min, ω_ср and δ of a machine with constant J under given M_D(φ), M_C(φ)."""
     from flywheel.cli.guard import check_lang, guarded, solve_finite, write_plot
     from flywheel.cli.outputs import finish, written_line
@@ -85,6 +87,7 @@ def task2_command(profile: Profile = None, md: Md = None, j: J = None, omega0: O
     with guarded():
         check_lang(lang)
         formats = _check_options(plot, report, out, frame, lang)
+        page = title_page(student, group, teacher)
         job = (_from_case(case, at, profile, given, lang) if case is not None else
                _from_options(profile, given, dict(md=md, j=j, omega0=omega0, start=start,
                                                   end=end, mc=mc, delta=delta), at, lang))
@@ -93,7 +96,7 @@ def task2_command(profile: Profile = None, md: Md = None, j: J = None, omega0: O
             from flywheel.render.task2 import plot as draw
 
             write_plot(plot, lambda tmp: draw(result, tmp, job.title, lang))
-        written = _write_out(out, result, formats, job, lang, frame) if out is not None else None
+        written = _write_out(out, result, formats, job, lang, frame, page) if out else None
     finish(json_text=to_json(result, job.doc_title, job.doc_source) + "\n" if as_json else None,
            summary=lambda: typeset(lang, print_summary, result, job.title, job.source, lang=lang,
                                    motion=epsilon or bool(at)),
@@ -204,9 +207,11 @@ def _from_options(profile, given, v: dict, at, lang: str) -> _Job:
                 nm.name("t2_seed_title", profile=profile), nm.name("t2_seed_source"))
 
 
-def _write_out(out: Path, result, formats, job: _Job, lang: str, frame: str = "none"):
+def _write_out(out: Path, result, formats, job: _Job, lang: str, frame: str = "none",
+               page: dict | None = None):
     """The --out folder (cli/outputs.py, render/report_folder.py): summary.json,
-    plots/task2.png, the report with its title page; returns the names written."""
+    plots/task2.png, the report with its title page (the case's [document] under ``page``:
+    --student, --group, --teacher); returns the names written."""
     from flywheel.cli.outputs import report_folder
     from flywheel.render.blocks import front
     from flywheel.render.numbers import typeset
@@ -218,5 +223,5 @@ def _write_out(out: Path, result, formats, job: _Job, lang: str, frame: str = "n
         out, "task2", to_json(result, job.doc_title, job.doc_source) + "\n",
         lambda path: draw(result, path, job.title, lang), FIGURE,
         lambda fig: front(typeset(lang, build_task2_document, result, job.title, job.source, lang,
-                                  fig), job.document, frame="" if frame == "none" else frame),
+                                  fig), job.document, frame="" if frame == "none" else frame, **(page or {})),
         formats)

@@ -16,46 +16,46 @@ import typer
 from flywheel.cli.options import CsvStyle, Json, Lang
 
 Template = Annotated[Path, typer.Argument(
-    help="Template: a run or task2 case file plus a \\[variants] table (see docs/teacher.md).")]
-Count = Annotated[int, typer.Option("--count", "-n", help="How many variants.")]
+    metavar="TEMPLATE", help="Template: a run or task2 case file plus a \\[variants] table (see docs/teacher.md).")]
+Count = Annotated[int, typer.Option("--count", "-n", metavar="N", help="How many variants.")]
 VariantsOut = Annotated[Path, typer.Option(
-    "--out", "-o", help="Output folder (written whole or not at all; in an earlier variants "
+    "--out", "-o", metavar="DIR", help="Output folder (written whole or not at all; in an earlier variants "
     "folder only flywheel's own files are replaced).")]
 Seed = Annotated[Optional[int], typer.Option(
-    "--seed", help="Seed of numpy's default_rng: the same seed gives the same files (default: a "
+    "--seed", metavar="N", help="Seed of numpy's default_rng: the same seed gives the same files (default: a "
     "random one, printed and written into every file).")]
 Points = Annotated[int, typer.Option(
-    "--points", help="Intervals of the φ grid for the answers of a run case.")]
+    "--points", metavar="N", help="Intervals of the φ grid for the answers of a run case.")]
 Sheets = Annotated[bool, typer.Option(
     "--sheets", help="Also write a printable task sheet per variant (sheets/variant_NN.html and "
     ".pdf, and sheets.pdf with them all): the drawing, the data, what to find; no answers.")]
 SheetsFormat = Annotated[Optional[str], typer.Option(
-    "--sheets-format", help="Formats of --sheets: both | html | pdf (default both; only with "
+    "--sheets-format", metavar="FORMATS", help="Formats of --sheets: both | html | pdf (default both; only with "
     "--sheets).")]
 Moodle = Annotated[Optional[Path], typer.Option(
-    "--moodle", help="Also write the variants as a Moodle XML question bank to this file: a "
+    "--moodle", metavar="FILE", help="Also write the variants as a Moodle XML question bank to this file: a "
     "category per variant, a numerical question per answer with its unit and tolerance (worded "
     "in --lang).")]
 
-Key = Annotated[Path, typer.Argument(help="The answers.json written by flywheel variants.")]
+Key = Annotated[Path, typer.Argument(metavar="KEY", help="The answers.json written by flywheel variants.")]
 Answers = Annotated[list[Path], typer.Argument(
-    help="Filled-in answer sheets (CSV: student,variant,<answers…>) or folders of them.")]
+    metavar="ANSWERS", help="Filled-in answer sheets (CSV: student,variant,<answers…>) or folders of them.")]
 Tolerance = Annotated[Optional[float], typer.Option(
-    "--tolerance", help="Relative tolerance (default: the key's, else 0.01); a per-answer "
+    "--tolerance", metavar="SHARE", help="Relative tolerance (default: the key's, else 0.01); a per-answer "
     "tolerance in the key still applies.")]
 GradeOut = Annotated[Optional[Path], typer.Option(
-    "--out", "-o", help="Write one CSV line per student and answer to this file.")]
+    "--out", "-o", metavar="FILE", help="Write one CSV line per student and answer to this file.")]
 Gradebook = Annotated[Optional[Path], typer.Option(
-    "--gradebook", help="Write the gradebook: one row per student (each answer's verdict and "
+    "--gradebook", metavar="FILE", help="Write the gradebook: one row per student (each answer's verdict and "
     "error, score, total) to this CSV file.")]
 ClassSummary = Annotated[bool, typer.Option(
     "--summary", help="Print only the class summary (score distribution, answers most often "
     "wrong, who handed in nothing).")]
 CarriedForward = Annotated[float, typer.Option(
-    "--carried-forward", help="Share of the credit (0…1) of an answer wrong against the key but "
+    "--carried-forward", metavar="SHARE", help="Share of the credit (0…1) of an answer wrong against the key but "
     "right from the student's own earlier answers (default 0: shown as such, not scored).")]
 Feedback = Annotated[Optional[Path], typer.Option(
-    "--feedback", help="Write a feedback page per student (HTML, in --lang) into this folder: "
+    "--feedback", metavar="DIR", help="Write a feedback page per student (HTML, in --lang) into this folder: "
     "each answer, its verdict, the mistake named, the expected value.")]
 NoReveal = Annotated[bool, typer.Option(
     "--no-reveal", help="Leave the expected values out of the feedback pages (with --feedback).")]

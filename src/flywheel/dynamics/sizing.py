@@ -150,6 +150,8 @@ class RimDesign:
     J_rim_exact: float           # thick annulus m·(R² + t²/4) [kg·m²]
     stress_at_omega_max: float | None = None   # ρ·(ω_max·R)² after the motion [Pa]
     width_given: bool = False    # b given (flywheel.rim.width), not b = ratio·t
+    diameter_given: bool = False   # D_mean given (flywheel.rim.diameter), not from the speed
+    thickness_given: bool = False  # t/R given (flywheel.rim.thickness_to_radius)
 
     DOCUMENT = ("D_mean", "thickness", "width", "mass", "rim_speed", "stress", "share", "D",
                 "D_inner", "b", "allowable_stress", ("rim_speed_from", "speed_from"), "J_rim",
@@ -201,22 +203,42 @@ THIN_RIM_AIM = 0.05
 
 def thin_rim_notice(rim: RimDesign):
     """The warning (a Notice) for a designed rim thinner than :data:`THIN_RIM` of its mean
-    diameter — a hoop, not a flywheel rim — with the rim speed that gives t/D_mean =
-    :data:`THIN_RIM_AIM` (:func:`rim_speed_for_thickness`); None for a rim thick enough."""
+    diameter — a hoop, not a flywheel rim — with the advice that fits the keys the case gave:
+    a ``thickness_to_radius`` given fixes t/D_mean = (t/R)/2 whatever the speed, so the advice is
+    t/R = 2·:data:`THIN_RIM_AIM`; a ``diameter`` given, the mean diameter that gives t/D_mean =
+    :data:`THIN_RIM_AIM` (:func:`rim_speed_for_thickness`, D = 2·v/ω); else the rim speed that
+    gives it. None for a rim thick enough."""
     from flywheel.errors import Notice
 
     ratio = rim.thickness / rim.D_mean
     if not ratio < THIN_RIM:
         return None
+    t_mm, D = rim.thickness * 1e3, rim.D_mean
+    if rim.thickness_given:
+        return Notice.of(
+            "rim_thin_ratio", "flywheel.rim: the designed rim is {t_mm:.3g} mm thick on a mean "
+            "diameter of {D:.4g} m (t/D = {ratio:.2g}, below {least:g}): a hoop, not a flywheel "
+            "rim; its flywheel.rim.thickness_to_radius = {t_to_R:g} sets t/D = {ratio:.2g} "
+            "whatever the speed: give flywheel.rim.thickness_to_radius about {aim_ratio:g} "
+            "(t/D = {aim:g})",
+            t_mm=t_mm, D=D, ratio=ratio, least=THIN_RIM, aim=THIN_RIM_AIM, t_to_R=2 * ratio,
+            aim_ratio=2 * THIN_RIM_AIM)
     v_aim = rim_speed_for_thickness(rim)
+    if rim.diameter_given:
+        return Notice.of(
+            "rim_thin_diameter", "flywheel.rim: the designed rim is {t_mm:.3g} mm thick on a "
+            "mean diameter of {D:.4g} m (t/D = {ratio:.2g}, below {least:g}): a hoop, not a "
+            "flywheel rim; its diameter is too large for its mass: give a smaller "
+            "flywheel.rim.diameter (about {D_aim:.3g} m gives t/D = {aim:g})",
+            t_mm=t_mm, D=D, ratio=ratio, least=THIN_RIM, aim=THIN_RIM_AIM,
+            D_aim=D * v_aim / rim.rim_speed)
     return Notice.of(
         "rim_thin", "flywheel.rim: the designed rim is {t_mm:.3g} mm thick on a mean "
         "diameter of {D:.4g} m (t/D = {ratio:.2g}, below {least:g}): a hoop, not a "
         "flywheel rim; its rim speed {v:.4g} m/s ({speed_source}) is too high for a shaft "
         "this slow: give flywheel.rim.speed (about {v_aim:.3g} m/s gives t/D = {aim:g})",
-        t_mm=rim.thickness * 1e3, D=rim.D_mean, ratio=ratio,
-        least=THIN_RIM, v=rim.rim_speed, given=rim.speed_from == "given",
-        v_aim=v_aim, aim=THIN_RIM_AIM,
+        t_mm=t_mm, D=D, ratio=ratio, least=THIN_RIM, v=rim.rim_speed,
+        given=rim.speed_from == "given", v_aim=v_aim, aim=THIN_RIM_AIM,
         speed_source=("given" if rim.speed_from == "given"
                       else "the largest the allowable stress allows"))
 
@@ -314,4 +336,5 @@ def design_rim(J: float, omega: float, density: float, allowable_stress: float, 
                      allowable_stress=float(allowable_stress), speed_from=speed_from,
                      D_mean=D, rim_speed=v, stress=density * v ** 2, mass=m, thickness=t,
                      width=b, J_rim=m * R ** 2, J_rim_exact=m * (R ** 2 + t ** 2 / 4),
-                     width_given=width is not None)
+                     width_given=width is not None, diameter_given=diameter is not None,
+                     thickness_given=thickness_to_radius is not None)

@@ -24,6 +24,7 @@ from flywheel.render.document import Bullets, Document, Figure, Formula, Heading
 from flywheel.render.report import CAPTION
 from flywheel.render.report_gost import _fixed_zip, compile_typst
 from flywheel.render.choices import REPORT_FORMATS
+from flywheel.render.typst_blocks import markup, typst_block
 
 FORMATS = REPORT_FORMATS
 #: a table of more columns than WIDE gets a smaller font; of more than WIDE_PAGE a landscape page
@@ -123,17 +124,9 @@ def html(doc: Document, plots_dir: Path | None = None) -> str:
 
 
 # -- typst / PDF ----------------------------------------------------------------------------------
-def _ts(text: str) -> str:
-    """Text as typst markup: every run a string literal (nothing in it is markup); **bold**;
-    the symbols' subscripts (mathfmt.subscripts) as #sub."""
-    def lit(s: str) -> str:
-        return '#"' + s.replace("\\", "\\\\").replace('"', '\\"') + '"' if s else ""
-
-    def subs(s: str) -> str:          # the symbols' subscripts (J_II, ΔT_нб) as #sub[…]
-        return "".join(f"#sub[{lit(r)}]" if b else lit(r) for r, b in mathfmt.subscripts(s))
-
-    parts = text.split("**")
-    return "".join(subs(p) if i % 2 == 0 else f"#strong[{subs(p)}]" for i, p in enumerate(parts))
+#: text as typst markup: every run a string literal (nothing in it is markup); **bold**; the
+#: symbols' subscripts (mathfmt.subscripts) as #sub (render/typst_blocks.py)
+_ts = markup
 
 
 @dataclass(frozen=True)
@@ -157,12 +150,8 @@ def typst_source(doc: Document, layout: TypstLayout = TypstLayout()) -> str:
     for b in doc.blocks:
         if isinstance(b, Heading):
             out.append("=" * b.level + " " + _ts(b.text))
-        elif isinstance(b, Paragraph):
-            out.append(_ts(b.text))
-        elif isinstance(b, Bullets):
-            out += ["- " + _ts(i) for i in b.items]
-        elif isinstance(b, Formula):
-            out.append(f"$ {mathfmt.typst(b.tex)} $")
+        elif (lines := typst_block(b, _ts)) is not None:    # a paragraph, a list, a formula
+            out += lines
         elif isinstance(b, Table):
             out.append(_typst_table(b, f"{tab} {b.number} — {b.caption}", layout.table))
         elif isinstance(b, Figure):
@@ -248,6 +237,10 @@ def docx(doc: Document, plots_dir: Path | None = None) -> bytes:
             runs(d.add_paragraph(), f"{tab} {b.number} — {b.caption}")
             t = d.add_table(rows=1 + len(b.rows), cols=len(b.header))
             t.style = "Table Grid"
+            # the header row repeated on every page the table runs onto (as report_gost's)
+            t._tbl.tr_lst[0].get_or_add_trPr().append(parse_xml(
+                '<w:tblHeader xmlns:w="http://schemas.openxmlformats.org/wordprocessingml/'
+                '2006/main"/>'))
             size = Pt(7 if len(b.header) > 7 else 8.5)
             # the cells straight from the rows' XML: Table.cell(r, c) rebuilds the whole grid
             # on every call (quadratic; seconds for the report's tables)

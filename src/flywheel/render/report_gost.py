@@ -31,6 +31,7 @@ from pathlib import Path
 from flywheel.render import mathfmt
 from flywheel.render.blocks import Bullets, Document, Figure, Formula, Heading, Paragraph, Table, TitlePage
 from flywheel.render.catalogue import words
+from flywheel.render.typst_blocks import boxed_literal, markup, typst_block
 
 #: a table of more columns than WIDE in 10 pt (9 pt beyond 9); of more than WIDE_PAGE
 #: on a landscape page
@@ -142,23 +143,13 @@ def _front(doc: Document) -> TitlePage:
 
 
 # -- typst / PDF --------------------------------------------------------------------------------
-def _lit(s: str) -> str:
-    """A run of text as typst string literals (nothing in it is markup); a narrow no-break space
-    (the numbers' thousands, render/numbers.py) as a box of its width, which no line breaks."""
-    if not s:
-        return ""
-    parts = s.split("\u202f")
-    return "#box(width: 0.2em)".join(
-        '#"' + p.replace("\\", "\\\\").replace('"', '\\"') + '"' if p else "" for p in parts)
+_lit = boxed_literal       # a run of text: string literals, a narrow no-break space as a box
 
 
 def _ts(text: str) -> str:
-    """Text as typst markup: **bold**, the symbols' subscripts as #sub."""
-    def subs(s: str) -> str:
-        return "".join(f"#sub[{_lit(r)}]" if b else _lit(r) for r, b in mathfmt.subscripts(s))
-
-    parts = text.split("**")
-    return "".join(subs(p) if i % 2 == 0 else f"#strong[{subs(p)}]" for i, p in enumerate(parts))
+    """Text as typst markup (render/typst_blocks.py): **bold**, the symbols' subscripts as #sub,
+    a narrow no-break space as a box of its width."""
+    return markup(text, boxed_literal)
 
 
 _PREAMBLE = """#set document(title: {title}, date: none)
@@ -231,12 +222,8 @@ def typst_source(doc: Document, plots: bool = True) -> str:
                 out.append(f"#heading(level: 1, numbering: none, supplement: [S])[{body}]")
             else:
                 out.append(f"#heading(level: {b.level}, numbering: none)[{_lit(b.number)}#h(0.6em){body}]")
-        elif isinstance(b, Paragraph):
-            out.append(_ts(b.text))
-        elif isinstance(b, Bullets):
-            out += ["- " + _ts(i) for i in b.items]
-        elif isinstance(b, Formula):
-            out.append(f"$ {mathfmt.typst(b.tex)} $")
+        elif (lines := typst_block(b, _ts)) is not None:    # a paragraph, a list, a formula
+            out += lines
         elif isinstance(b, Table):
             out.append(_table(b, g, landscape))
         elif isinstance(b, Figure):
@@ -366,6 +353,30 @@ def _styles(d) -> None:
     lst.paragraph_format.first_line_indent = Cm(0)
 
 
+#: the elements of w:settings that come after w:updateFields in the schema's sequence (ECMA-376
+#: part 1, 17.15.1.78 settings: … alwaysMergeEmptyNamespace, updateFields, hdrShapeDefaults, …)
+_AFTER_UPDATE_FIELDS = frozenset((
+    "hdrShapeDefaults", "footnotePr", "endnotePr", "compat", "docVars", "rsids", "mathPr",
+    "attachedSchema", "themeFontLang", "clrSchemeMapping", "doNotIncludeSubdocsInStats",
+    "doNotAutoCompressPictures", "forceUpgrade", "captions", "readModeInkLockDown",
+    "smartTagType", "schemaLibrary", "shapeDefaults", "doNotEmbedSmartTags", "decimalSymbol",
+    "listSeparator", "docId", "chartTrackingRefBased", "defaultImageDpi", "conflictMode"))
+
+
+def _update_fields_on_open(settings) -> None:
+    """``<w:updateFields w:val="true"/>`` in the document's settings, where the schema's
+    sequence puts it (before w:compat, w:rsids, …; Word may ignore or refuse an element out of
+    its order): Word asks to update the fields on opening, which fills the TOC's page numbers."""
+    from docx.oxml import parse_xml
+
+    flag = parse_xml(f'<w:updateFields {_W} w:val="true"/>')
+    later = [c for c in settings if c.tag.rsplit("}", 1)[-1] in _AFTER_UPDATE_FIELDS]
+    if later:
+        later[0].addprevious(flag)
+    else:
+        settings.append(flag)
+
+
 def _field(p, instr: str, shown: str) -> None:
     """A Word field (SEQ, PAGE, TOC) in paragraph ``p``, its last result ``shown``."""
     from docx.oxml import parse_xml
@@ -461,9 +472,7 @@ def docx(doc: Document, plots_dir: Path | None = None) -> bytes:
     cp = d.core_properties
     cp.created = cp.modified = cp.last_printed = fixed
     cp.title, cp.author, cp.last_modified_by, cp.revision = doc.title, "flywheel", "flywheel", 1
-    settings = d.settings.element                            # Word fills the TOC on opening
-    settings.append(parse_xml('<w:updateFields xmlns:w="http://schemas.openxmlformats.org/'
-                              'wordprocessingml/2006/main" w:val="true"/>'))
+    _update_fields_on_open(d.settings.element)              # Word fills the TOC on opening
 
     def runs(p, text: str, size=None, bold: bool = False):
         for i, part in enumerate(text.split("**")):

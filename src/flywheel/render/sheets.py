@@ -45,7 +45,15 @@ WORDS = words("sheets", {"variant": "Variant {n}", "student": "Student _________
                          "scheme": "Kinematic scheme of the mechanism at φ = {a:g}°",
                          "moments": "The given moment graphs {MD}(φ) and {MC}(φ)",
                          "unknown": "{M} = ? (from the cycle balance)",
-                         "fill": "Fill in Table {n}: {title}; each cell is accepted within ±{tol} %."})
+                         "fill": "Fill in Table {n}: {title}; each cell is accepted within ±{tol} %.",
+                         # the title of a Russian sheet whose template says its title in English
+                         # only: the kind of task
+                         "title": {"run": "Dynamic analysis of a machine",
+                                   "task2": "Motion of a machine with a constant reduced moment "
+                                            "of inertia"}})
+#: a word of Latin letters (two or more): English on a sheet (a lone letter, as in «V-образный»,
+#: is a symbol)
+_LATIN_WORD = re.compile(r"[A-Za-z]{2,}")
 
 #: a subscript as marked in a sheet's text (private-use characters, which no number or word of
 #: ours contains), typeset by :func:`sheet_html` (<sub>) and :func:`sheet_typst` (#sub[])
@@ -131,14 +139,28 @@ def find_items(sheet, lang: str) -> list[str]:
     return out
 
 
+def sheet_title(sheet, lang: str) -> str:
+    """The sheet's title in ``lang``: the template's (a ``{ ru, en }`` title in its language);
+    on a Russian sheet, a title the template gives in English only (a plain string with Latin
+    words) gives way to the Russian name of the kind of task, never English words on a Russian
+    sheet; "" for none."""
+    from flywheel.io.text import Text, in_language
+
+    text = in_language(sheet.title, lang)
+    if lang == "ru" and not isinstance(sheet.title, Text) and _LATIN_WORD.search(text):
+        return WORDS[lang]["title"].get(sheet.kind, "")
+    return text
+
+
 def build_sheet(sheet, lang: str = "ru", figure: str | None = None) -> Document:
     """The sheet as a document: title, name line, the drawing (``figure``: the PNG's name, or
     None), «Дано» (the drawn values, then the other data), «Определить»."""
     w = WORDS[lang]
     doc = Document(w["variant"].format(n=sheet.number), lang)
     doc.blocks.append(Heading(1, w["variant"].format(n=sheet.number)))
-    if sheet.title:
-        doc.blocks.append(Paragraph(f"**{sheet.title}**"))
+    title = sheet_title(sheet, lang)
+    if title:
+        doc.blocks.append(Paragraph(f"**{title}**"))
     doc.blocks.append(Paragraph(w["student"]))
     if figure is not None:
         if sheet.moments is not None:

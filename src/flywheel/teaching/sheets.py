@@ -67,7 +67,8 @@ class MomentGraphs:
 @dataclass(frozen=True)
 class Sheet:
     """One task sheet: variant ``number`` (1-based) and ``stem`` of its files ("variant_07"),
-    the template's ``kind`` and ``title``, the inputs (``given``), what to find (``find``), and
+    the template's ``kind`` and ``title`` (a plain string, or an io.text.Text given in both
+    languages), the inputs (``given``), what to find (``find``), and
     the drawing: ``linkage`` (Results of the variant on a coarse grid, drawn at ``angle_deg``)
     or ``moments``; ``no_drawing`` says why there is none ("" when there is one); ``names``:
     the names of the elements of the case's arrays ("cylinders.0" → "HP", "dyads.1" → "C")."""
@@ -262,6 +263,16 @@ def _moments(document: dict, source: str) -> tuple[MomentGraphs | None, str]:
                         math.degrees(r.cycle)), ""
 
 
+def _title(said) -> str:
+    """A variant's title as the sheet keeps it: a plain string as it is, a ``{ ru, en }`` table
+    as an io.text.Text (English, with its Russian), which the sheet shows in its language."""
+    from flywheel.io.text import Text
+
+    if isinstance(said, dict) and isinstance(said.get("en"), str) and isinstance(said.get("ru"), str):
+        return Text(said["en"], said["ru"])
+    return said if isinstance(said, str) else ""
+
+
 def sheets_of(vs, progress=None) -> list[Sheet]:
     """The task sheet of every variant of a :class:`~flywheel.teaching.variants.VariantSet`;
     ``progress(i)`` after sheet i (1-based)."""
@@ -282,7 +293,7 @@ def sheets_of(vs, progress=None) -> list[Sheet]:
         else:
             graphs, why = _moments(doc, v.filename)
             kw.update(moments=graphs, no_drawing=why)
-        title = doc.get("title", "") if isinstance(doc.get("title", ""), str) else ""
+        title = _title(doc.get("title", ""))
         given = given_rows(t.kind, doc, varied)
         if t.kind == "run":
             given += default_rows(doc, v.filename, t.answers)

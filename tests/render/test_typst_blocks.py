@@ -1,0 +1,30 @@
+"""The typst both writers of the записка share (render/typst_blocks.py): a paragraph, a list
+and a formula are the same lines in the plain layout and the ГОСТ one, written once."""
+from flywheel.render import report_formats, report_gost
+from flywheel.render.blocks import Bullets, Document, Formula, Heading, Paragraph, Table
+from flywheel.render.typst_blocks import boxed_literal, literal, markup, typst_block
+
+
+def test_text_is_string_literals_with_bold_and_subscripts():
+    assert literal('a "b" \\ c') == '#"a \\"b\\" \\\\ c"'
+    assert literal("") == ""
+    assert markup("J_II is **big**") == '#"J"#sub[#"II"]#" is "#strong[#"big"]'
+    # the ГОСТ layout keeps a narrow no-break space (thousands) as a box no line breaks
+    assert boxed_literal("12\u202f345") == '#"12"#box(width: 0.2em)#"345"'
+    assert markup("12\u202f345") == '#"12\u202f345"'
+
+
+def test_paragraphs_lists_and_formulas_are_the_same_lines_in_both_layouts():
+    blocks = [Paragraph("δ = **0.05**"), Bullets(("first", "M_D")), Formula(r"\omega^2")]
+    lines = [typst_block(b) for b in blocks]
+    assert lines[0] == ['#"δ = "#strong[#"0.05"]']
+    assert lines[1] == ['- #"first"', '- #"M"#sub[#"D"]']
+    assert lines[2][0].startswith("$ ") and lines[2][0].endswith(" $")
+    assert typst_block(Heading(1, "x")) is None
+    assert typst_block(Table(1, "t", ("a",), (("1",),))) is None
+    doc = Document("T", "ru")
+    doc.blocks += [Heading(1, "T"), Heading(2, "1. Раздел"), *blocks]
+    plain, gost = report_formats.typst_source(doc), report_gost.typst_source(doc, plots=False)
+    for group in lines:
+        text = "\n".join(group)
+        assert text in plain and text in gost, text
