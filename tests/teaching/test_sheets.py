@@ -509,3 +509,17 @@ def test_an_english_only_title_gives_way_to_the_tasks_russian_name(template, kin
         assert title == (kind_ru if lang == "ru" else english)
         if lang == "ru":
             assert not re.search(r"[A-Za-z]{2,}", title)
+
+
+def test_a_russian_sheet_names_the_first_groups_parts_in_russian():
+    """«момент инерции: crankshaft» was printed on a Russian sheet: a part the catalogue knows
+    is named in Russian (as the записка names it, render/document.py PART); a part of the
+    case's own naming stays as written."""
+    from flywheel.render.document import part_name
+    from flywheel.render.sheet_labels import field_label
+
+    for part in ("crankshaft", "gearbox", "flywheel"):
+        ru = field_label(f"machine.first_group.{part}", "ru")
+        assert part not in ru and part_name(part, "ru") in ru
+        assert part in field_label(f"machine.first_group.{part}", "en")
+    assert "my_part" in field_label("machine.first_group.my_part", "ru")

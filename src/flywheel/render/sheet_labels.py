@@ -242,6 +242,8 @@ def field_label(path: str, lang: str = "en", names: dict[str, str] | None = None
     ('диаметр цилиндра HP d', 'crank length l1')
     >>> field_label("flywheel.J", "ru", kinds=("run",)), field_label("flywheel.J", "ru")
     ('момент инерции заданного маховика J_М', 'flywheel.J')
+    >>> field_label("machine.first_group.gearbox", "ru")
+    'момент инерции: редуктор (приведён к кривошипу)'
     """
     for key in (*(f"{k}:{path}" for k in kinds), path):
         for rx, en, ru in _SHEET_FIELD_RX:
@@ -251,6 +253,10 @@ def field_label(path: str, lang: str = "en", names: dict[str, str] | None = None
                     return name(en[1:], lang)
                 d = m.groupdict()
                 x = d.get("x") or ""
+                if x and key.endswith(f"first_group.{x}"):   # a part: its usual name
+                    from flywheel.render.document import part_name
+
+                    x = part_name(x, lang)
                 if not x and d.get("i") is not None:
                     x = (names or {}).get(path[:m.end("i") - len(key) + len(path)]) or \
                         str(int(d["i"]) + 1)
