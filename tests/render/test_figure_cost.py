@@ -24,6 +24,8 @@ def _draw() -> bytes:
     fg.phi_axis(ax, "en")
     ax.set_ylabel(r"$\varepsilon$ [rad/s²]")
     ax.set_title("a title: −1,5")
+    for k in range(6):           # the same glyphs whole pixels apart, and a fraction apart
+        fig.text(0.1 + k * 10.0 / 480, 0.5 + 0.37 * k / 360, "AVWa 0,5", rotation=30 * (k % 2))
     ax.legend()
     out = io.BytesIO()
     fg.save(fig, out)
@@ -66,15 +68,39 @@ def test_each_mathtext_label_parsed_once_in_a_style(monkeypatch):
                                      r"$\varphi$ [deg]", r"$\varepsilon$ [rad/s²]"})
 
 
+def test_each_glyph_rendered_once_for_a_place(monkeypatch):
+    """The second figure's glyphs all come from the cache: none rendered by FreeType again."""
+    from matplotlib.ft2font import FT2Font
+
+    rendered: list[int] = []
+    own = FT2Font._render_glyph
+
+    def counting(self, index, *args, **kw):
+        rendered.append(index)
+        return own(self, index, *args, **kw)
+
+    monkeypatch.setattr(FT2Font, "_render_glyph", counting)
+    with fg.style():
+        _draw()
+        first = len(rendered)
+        _draw()
+    assert first > 0
+    assert len(rendered) == first
+
+
 def test_matplotlib_given_back_after_the_style():
     from matplotlib.backends.backend_agg import RendererAgg
     from matplotlib.markers import MarkerStyle
     from matplotlib.mathtext import MathTextParser
 
-    before = (RendererAgg.__dict__["draw_text"], MarkerStyle.__dict__["_set_marker"],
-              MathTextParser.__dict__["_parse_cached"])
+    def now():
+        return (RendererAgg.__dict__["draw_text"], MarkerStyle.__dict__["_set_marker"],
+                MathTextParser.__dict__["_parse_cached"],
+                RendererAgg.__dict__["_draw_text_glyphs_and_boxes"])
+
+    before = now()
     with fg.style():
         assert RendererAgg.__dict__["draw_text"] is not before[0]
+        assert RendererAgg.__dict__["_draw_text_glyphs_and_boxes"] is not before[3]
         _draw()
-    assert (RendererAgg.__dict__["draw_text"], MarkerStyle.__dict__["_set_marker"],
-            MathTextParser.__dict__["_parse_cached"]) == before
+    assert now() == before

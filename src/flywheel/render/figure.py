@@ -73,9 +73,11 @@ def style(lang: str = "en"):
         restore_math = _share_mathtext()
         restore_markers = _copy_markers_shallow()
         restore_layouts = _share_glyph_layouts()
+        restore_bitmaps = _share_glyph_bitmaps()
         try:
             yield
         finally:
+            restore_bitmaps()
             restore_layouts()
             restore_markers()
             restore_math()
@@ -278,6 +280,76 @@ def _share_glyph_layouts():
 
     def restore() -> None:
         agg.draw_text = own
+    return restore
+
+
+def _share_glyph_bitmaps():
+    """Within :func:`style`, the Agg canvas renders each glyph (FreeType: hinting and
+    rasterising, 0.1 ms a glyph, a quarter of a figure's time) once for every place it is
+    drawn at that differs by whole pixels, not once per glyph drawn. A glyph's bitmap depends on
+    its font (the object: its file and face), the size, the dpi, the rotation, the loading
+    flags, the render mode and the place's fraction of a pixel (FreeType's 1/64) — the key;
+    moving it by whole pixels moves its bitmap by as many (FreeType translates the outline by
+    whole pixels exactly). The glyphs are drawn as matplotlib 3.11 draws them
+    (``RendererAgg._draw_text_glyphs_and_boxes``); where that is not found, nothing changes.
+    Returns the function that puts the canvas's own drawing back."""
+    import math
+
+    from matplotlib.backends import backend_agg
+
+    agg = backend_agg.RendererAgg
+    own = agg.__dict__.get("_draw_text_glyphs_and_boxes")
+    render_mode = getattr(backend_agg, "RenderMode", None)
+    if own is None or render_mode is None or not hasattr(backend_agg, "get_hinting_flag"):
+        return lambda: None
+    rendered: dict = {}
+    matrices: dict = {}
+
+    def matrix(cos, sin, slant, extend):
+        key = (cos, sin, slant, extend)
+        found = matrices.get(key)
+        if found is None:
+            found = matrices[key] = (
+                0x10000 * np.array([[cos, -sin], [sin, cos]])
+                @ [[extend, extend * slant], [0, 1]]).round().astype(int)
+        return found
+
+    def draw(self, gc, x, y, angle, glyphs, boxes):
+        cos = math.cos(math.radians(angle))
+        sin = math.sin(math.radians(angle))
+        load_flags = backend_agg.get_hinting_flag()
+        antialiased = gc.get_antialiased()
+        mode = render_mode.NORMAL if antialiased else render_mode.MONO
+        height = self.height
+        for font, size, glyph_index, slant, extend, dx, dy in glyphs:
+            px = round(0x40 * (x + dx * cos - dy * sin))
+            py = round(0x40 * (height - y + dx * sin + dy * cos))
+            key = (font, size, self.dpi, cos, sin, slant, extend, glyph_index, load_flags, mode,
+                   px & 0x3F, py & 0x3F)
+            found = rendered.get(key)
+            if found is None:
+                if len(rendered) > 50000:        # bounded
+                    rendered.clear()
+                font.set_size(size, self.dpi)
+                font._set_transform(matrix(cos, sin, slant, extend), [px, py])
+                bitmap = font._render_glyph(glyph_index, load_flags, mode)
+                buffer = bitmap.buffer
+                if not antialiased:
+                    buffer *= 0xff
+                found = rendered[key] = (buffer, bitmap.left - (px >> 6),
+                                         bitmap.top - (py >> 6))
+            buffer, left, top = found
+            # draw_text_image's y is downwards & the bitmap bottom side.
+            self._renderer.draw_text_image(
+                buffer, left + (px >> 6), int(height) - (top + (py >> 6)) + buffer.shape[0],
+                0, gc)
+        if boxes:
+            own(self, gc, x, y, angle, (), boxes)
+
+    agg._draw_text_glyphs_and_boxes = draw
+
+    def restore() -> None:
+        agg._draw_text_glyphs_and_boxes = own
     return restore
 
 
