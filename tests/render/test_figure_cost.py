@@ -12,9 +12,9 @@ pytest.importorskip("matplotlib")
 from flywheel.render import figure as fg  # noqa: E402
 
 
-def _draw() -> bytes:
+def _draw(pil: bool = False) -> bytes:
     """A small figure with what the caches touch: mathtext, plain tick labels, markers (ticks
-    copied from the first), a legend; its PNG."""
+    copied from the first), a legend; its PNG (``pil``: written by matplotlib's savefig)."""
     import numpy as np
 
     fig, ax = fg.figure((4.0, 3.0), right=0.3)
@@ -28,18 +28,21 @@ def _draw() -> bytes:
         fig.text(0.1 + k * 10.0 / 480, 0.5 + 0.37 * k / 360, "AVWa 0,5", rotation=30 * (k % 2))
     ax.legend()
     out = io.BytesIO()
-    fg.save(fig, out)
+    if pil:
+        fig.savefig(out, format="png", dpi=fg.DPI, metadata={"Software": None})
+    else:
+        fg.save(fig, out)
     return out.getvalue()
 
 
-def _matplotlibs_own() -> bytes:
+def _matplotlibs_own(pil: bool = False) -> bytes:
     """The same figure in the same settings, drawn by matplotlib alone (none of the caches)."""
     import matplotlib
 
     with matplotlib.rc_context():
         matplotlib.rcdefaults()
         matplotlib.rcParams.update(fg.RC)
-        return _draw()
+        return _draw(pil)
 
 
 def test_the_caches_keep_every_pixel():
@@ -104,3 +107,36 @@ def test_matplotlib_given_back_after_the_style():
         assert RendererAgg.__dict__["_draw_text_glyphs_and_boxes"] is not before[3]
         _draw()
     assert now() == before
+
+
+def test_png_writer_keeps_the_pixels_of_matplotlibs_png():
+    """fg.save writes its own PNG (RGB, unfiltered rows): decoded, the same pixels and dpi as
+    matplotlib's PIL writer gives for the same figure; the same bytes when written again."""
+    import numpy as np
+    from PIL import Image
+
+    reference = _matplotlibs_own(pil=True)   # written by matplotlib's savefig (PIL)
+    with fg.style():
+        ours, again = _draw(), _draw()
+    assert ours == again
+    assert ours != reference                 # another writer …
+    a, b = Image.open(io.BytesIO(ours)), Image.open(io.BytesIO(reference))
+    assert a.mode == "RGB" and b.mode == "RGBA"
+    assert a.info["dpi"] == b.info["dpi"]
+    assert (np.asarray(b)[..., 3] == 255).all()
+    assert np.array_equal(np.asarray(a), np.asarray(b)[..., :3])   # … the same pixels
+
+
+def test_png_bytes_translucent_pixels_keep_their_alpha():
+    import numpy as np
+    from PIL import Image
+
+    rng = np.random.default_rng(7)
+    rgba = rng.integers(0, 256, (5, 7, 4), dtype=np.uint8)
+    decoded = Image.open(io.BytesIO(fg.png_bytes(rgba, 120)))
+    assert decoded.mode == "RGBA" and decoded.size == (7, 5)
+    assert np.array_equal(np.asarray(decoded), rgba)
+    rgba[..., 3] = 255
+    decoded = Image.open(io.BytesIO(fg.png_bytes(rgba, 300)))
+    assert decoded.mode == "RGB" and round(decoded.info["dpi"][0]) == 300
+    assert np.array_equal(np.asarray(decoded), rgba[..., :3])

@@ -581,14 +581,57 @@ def stable_metadata(fmt: str) -> dict:
 
 
 def save(fig, path, fmt: str = "png", dpi: int = DPI) -> None:
-    """Write ``fig`` to ``path`` as ``fmt`` (png, svg, pdf) at ``dpi``; the same figure gives
-    the same bytes (no software tag or date, a fixed SVG hash salt)."""
+    """Write ``fig`` to ``path`` (a path or a binary file) as ``fmt`` (png, svg, pdf) at
+    ``dpi``; the same figure gives the same bytes (no software tag or date, a fixed SVG hash
+    salt). A PNG is written by :func:`png_bytes` from the Agg canvas's pixels."""
     import matplotlib
 
-    if fmt == "png":
-        # zlib level 1: a third of the time of the default 6 for 10 % larger files
-        kw = {"metadata": {"Software": None}, "pil_kwargs": {"compress_level": 1}}
-    else:
-        kw = stable_metadata(fmt)
     with matplotlib.rc_context({"svg.hashsalt": SVG_SALT}):
-        fig.savefig(path, format=fmt, dpi=dpi, **kw)
+        if fmt != "png":
+            fig.savefig(path, format=fmt, dpi=dpi, **stable_metadata(fmt))
+            return
+        import io
+
+        raw = io.BytesIO()
+        fig.savefig(raw, format="rgba", dpi=dpi)       # the pixels savefig's PNG would have
+    w, h = (int(x * dpi) for x in fig.get_size_inches())  # as the Agg canvas sizes itself
+    pixels = np.frombuffer(raw.getbuffer(), np.uint8)
+    if pixels.size != w * h * 4:          # not the canvas this was written for: its own PNG
+        fig.savefig(path, format="png", dpi=dpi, metadata={"Software": None},
+                    pil_kwargs={"compress_level": 1})
+        return
+    data = png_bytes(pixels.reshape(h, w, 4), dpi)
+    if hasattr(path, "write"):
+        path.write(data)
+    else:
+        with open(path, "wb") as out:
+            out.write(data)
+
+
+def png_bytes(rgba, dpi: int) -> bytes:
+    """A PNG of the pixels ``rgba`` (height × width × 4, 8 bits, not premultiplied) at ``dpi``
+    (its pHYs chunk, as matplotlib's PIL writer puts it): RGB if every pixel is opaque (a
+    quarter less to compress), each row unfiltered, zlib level 1 — half the time of PIL's
+    writer at level 1 (which filters every row five ways and keeps the alpha) for 10 % smaller
+    files of the same pixels (PNG: ISO/IEC 15948, §§ 11.2, 10, 9)."""
+    import struct
+    import zlib
+
+    h, w, _ = rgba.shape
+    opaque = bool((rgba[..., 3] == 255).all())
+    channels = 3 if opaque else 4
+    rows = np.empty((h, w * channels + 1), np.uint8)
+    rows[:, 0] = 0                                         # filter type 0: none
+    rows[:, 1:] = (rgba[..., :3] if opaque else rgba).reshape(h, w * channels)
+
+    def chunk(kind: bytes, body: bytes) -> bytes:
+        return (struct.pack(">I", len(body)) + kind + body
+                + struct.pack(">I", zlib.crc32(kind + body)))
+
+    per_metre = int(dpi / 0.0254 + 0.5)
+    return b"".join((
+        b"\x89PNG\r\n\x1a\n",
+        chunk(b"IHDR", struct.pack(">IIBBBBB", w, h, 8, 2 if opaque else 6, 0, 0, 0)),
+        chunk(b"pHYs", struct.pack(">IIB", per_metre, per_metre, 1)),
+        chunk(b"IDAT", zlib.compress(rows.tobytes(), 1)),
+        chunk(b"IEND", b"")))
