@@ -633,5 +633,5 @@ def png_bytes(rgba, dpi: int) -> bytes:
         b"\x89PNG\r\n\x1a\n",
         chunk(b"IHDR", struct.pack(">IIBBBBB", w, h, 8, 2 if opaque else 6, 0, 0, 0)),
         chunk(b"pHYs", struct.pack(">IIB", per_metre, per_metre, 1)),
-        chunk(b"IDAT", zlib.compress(rows.tobytes(), 1)),
+        chunk(b"IDAT", zlib.compress(rows, 1)),
         chunk(b"IEND", b"")))

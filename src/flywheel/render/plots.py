@@ -595,9 +595,17 @@ def _save_next(results, folder: Path, lang: str, order: list[int], counter, fmt:
 
 
 def _worker(results, folder: Path, lang: str, order: list[int], counter, fmt: str = "png",
-            dpi: int = fg.DPI, done=None) -> None:
+            dpi: int = fg.DPI, done=None, parent: int | None = None) -> None:
     """A forked plotting process: it dies with its parent (Linux: PR_SET_PDEATHSIG), leaves
     Ctrl-C to the parent (which stops it) and ends quietly on SIGTERM."""
+    _worker_signals(parent)
+    _save_next(results, folder, lang, order, counter, fmt, dpi, done)
+
+
+def _worker_signals(parent: int | None) -> None:
+    """A plotting process's signals: Ctrl-C ignored (its parent stops it), SIGTERM ends it, and
+    it dies with ``parent`` (Linux: PR_SET_PDEATHSIG; gone already: it ends now)."""
+    import os
     import signal
 
     signal.signal(signal.SIGINT, signal.SIG_IGN)
@@ -609,7 +617,49 @@ def _worker(results, folder: Path, lang: str, order: list[int], counter, fmt: st
         ctypes.CDLL(None, use_errno=True).prctl(1, signal.SIGKILL)   # 1 = PR_SET_PDEATHSIG
     except (OSError, AttributeError):
         pass                              # not Linux: the parent still terminates it
-    _save_next(results, folder, lang, order, counter, fmt, dpi, done)
+    if parent is not None and os.getppid() != parent:
+        os._exit(1)                       # the parent died before the line above
+
+
+def _first_worker(results, folder: Path, lang: str, order: list[int], counter, fmt: str,
+                  dpi: int, done, parent: int, others: int) -> None:
+    """The first plotting process: it imports matplotlib (0.5 s) while the parent writes the
+    tables and texts, then forks ``others`` workers that share that import, and draws with
+    them. A SIGTERM (the parent stopping it) ends its workers first, then it."""
+    import multiprocessing as mp
+    import os
+    import signal
+
+    _worker_signals(parent)
+    fg.prepare()                          # imported once here, for every worker
+    ctx = mp.get_context("fork")
+    me = os.getpid()
+    workers = [ctx.Process(target=_worker, args=(results, folder, lang, order, counter, fmt,
+                                                 dpi, done, me)) for _ in range(others)]
+
+    def stop(signum, frame):
+        for w in workers:
+            if w.pid is not None:
+                w.terminate()
+        for w in workers:
+            if w.pid is not None:
+                w.join()
+        os._exit(128 + signum)
+
+    signal.signal(signal.SIGTERM, stop)
+    held = signal.pthread_sigmask(signal.SIG_BLOCK, {signal.SIGTERM})    # not inside fork()
+    try:
+        for w in workers:
+            w.start()
+    finally:
+        signal.pthread_sigmask(signal.SIG_SETMASK, held)
+    try:
+        _save_next(results, folder, lang, order, counter, fmt, dpi, done)
+    finally:
+        for w in workers:
+            w.join()
+    if any(w.exitcode != 0 for w in workers):
+        raise RuntimeError("a plotting process failed")
 
 
 class PlotJob:
@@ -634,12 +684,15 @@ class PlotJob:
         self.children: list = []
         self._done = None
         if names and jobs > 1 and "fork" in mp.get_all_start_methods():
-            fg.prepare()                  # imported once here, not once in each worker
+            import os
+
+            # one process forked now: it imports matplotlib while this one writes the tables
+            # and texts, then forks the other workers, which share its import
             ctx = mp.get_context("fork")
             counter, self._done = ctx.Value("i", 0), ctx.Value("i", 0)
-            self.children = [ctx.Process(target=_worker, args=(
-                results, folder, lang, order, counter, fmt, dpi, self._done))
-                for _ in range(min(jobs, len(names)))]
+            self.children = [ctx.Process(target=_first_worker, args=(
+                results, folder, lang, order, counter, fmt, dpi, self._done, os.getpid(),
+                min(jobs, len(names)) - 1))]
             import signal
 
             # no Ctrl-C or SIGTERM handler may run inside fork(): Python ignores an exception
