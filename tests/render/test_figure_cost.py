@@ -96,15 +96,19 @@ def test_matplotlib_given_back_after_the_style():
     from matplotlib.markers import MarkerStyle
     from matplotlib.mathtext import MathTextParser
 
+    from matplotlib.ft2font import FT2Font
+
     def now():
         return (RendererAgg.__dict__["draw_text"], MarkerStyle.__dict__["_set_marker"],
                 MathTextParser.__dict__["_parse_cached"],
-                RendererAgg.__dict__["_draw_text_glyphs_and_boxes"])
+                RendererAgg.__dict__["_draw_text_glyphs_and_boxes"],
+                FT2Font.__dict__["get_sfnt_table"])
 
     before = now()
     with fg.style():
         assert RendererAgg.__dict__["draw_text"] is not before[0]
         assert RendererAgg.__dict__["_draw_text_glyphs_and_boxes"] is not before[3]
+        assert FT2Font.__dict__["get_sfnt_table"] is not before[4]
         _draw()
     assert now() == before
 
