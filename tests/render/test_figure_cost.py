@@ -144,3 +144,30 @@ def test_png_bytes_translucent_pixels_keep_their_alpha():
     decoded = Image.open(io.BytesIO(fg.png_bytes(rgba, 300)))
     assert decoded.mode == "RGB" and round(decoded.info["dpi"][0]) == 300
     assert np.array_equal(np.asarray(decoded), rgba[..., :3])
+
+
+def test_strokes_drawn_as_broken_lines_keep_the_pixels_of_a_line_each():
+    """The scheme's hatching (plots_scheme._strokes: strokes joined by NaN breaks, 40 to a line)
+    gives the pixels of one Line2D per stroke, 95 strokes (three lines) included."""
+    import numpy as np
+
+    from flywheel.render.plots_scheme import _strokes
+
+    rng = np.random.default_rng(5)
+    starts = rng.uniform(0.0, 10.0, (95, 2))
+    segments = [(p, p + (0.3, 0.3)) for p in starts]
+
+    def png(joined: bool) -> bytes:
+        fig, ax = fg.figure((4.0, 4.0), right=0.3)
+        if joined:
+            _strokes(ax, segments, color="k", linewidth=0.5, zorder=2)
+        else:
+            for p0, p1 in segments:
+                ax.plot([p0[0], p1[0]], [p0[1], p1[1]], color="k", linewidth=0.5, zorder=2)
+        assert len(ax.lines) == (3 if joined else 95)
+        out = io.BytesIO()
+        fg.save(fig, out)
+        return out.getvalue()
+
+    with fg.style():
+        assert png(True) == png(False)
