@@ -539,12 +539,13 @@ def _release(fig) -> None:
         plt.close(fig)
 
 
-#: the relative cost of the heaviest figures (CPU seconds of benchmarks/bench_figures.py, the
-#: others about 1): the workers take the costliest first, so that none is left alone at the end
-_COST = {"energy_mass": 4.0, "plan_forces": 3.0, "positions": 2.5, "scheme": 2.0,
-         "plan_lever": 2.0, "hodographs": 2.0, "acceleration_analogues": 1.8, "J_II": 1.7,
-         "plan_acceleration": 1.6, "velocity_analogues": 1.6, "reduced_moments": 1.6,
-         "plan_positions": 1.5}
+#: the relative cost of the heaviest figures (CPU seconds of benchmarks/bench_figures.py after
+#: the glyph and PNG work of issue 26's third pass, compressor and engine_inline4; the others
+#: about 1): the workers take the costliest first, so that none is left alone at the end
+_COST = {"energy_mass": 4.0, "scheme": 3.0, "plan_forces": 3.0, "plan_positions": 2.5,
+         "hodographs": 2.3, "positions": 2.1, "time_law": 1.8, "plan_lever": 1.6,
+         "velocity_analogues": 1.6, "acceleration_analogues": 1.6, "reduced_moments": 1.6,
+         "J_II": 1.5, "indicator": 1.5, "plan_acceleration": 1.4}
 
 #: `run --plots record`: the figures of the записка of a course project (the sheets' diagrams:
 #: kinematics, the plans, the reduced quantities, the energy–mass diagram and ω(φ)); the
