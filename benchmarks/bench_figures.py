@@ -12,7 +12,8 @@ best of ``--repeat`` rounds (default 3): CPU time is much less disturbed than wa
 other work of a shared machine. The first figure of a process also pays matplotlib's first
 font and mathtext loading: a warm-up round draws every figure once before measuring. That
 first round is what a plot worker of `run` pays (each figure drawn once, in a fresh process,
-its import not counted): its total is printed too ("first round").
+after ``figure.prepare()`` — the import the first worker makes before forking the second — not
+counted): its total is printed too ("first round").
 """
 from __future__ import annotations
 
@@ -48,6 +49,7 @@ def measure(case: Path, repeat: int, profile: int) -> None:
 
     results = analyze(load_case(case))
     specs = all_figures(results, "en")
+    fg.prepare()                                     # as a worker: matplotlib imported
     rows: dict[str, list[float]] = {name: [1e9, 1e9] for name, _ in specs}
     first = [0.0, 0.0]                               # round 0: build, save
     with fg.style():

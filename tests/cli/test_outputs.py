@@ -59,6 +59,34 @@ def test_the_workers_take_the_costliest_first_and_count_every_figure(press, tmp_
     assert every[order[0]] == "energy_mass.png"                   # the costliest first
 
 
+def test_two_workers_write_the_bytes_drawn_in_process(press, tmp_path):
+    """The first worker imports matplotlib and forks the second: the files are those drawn in
+    this process, byte for byte, rerun included."""
+    two = plots.write_plots(press, tmp_path / "two", jobs=2, which="record")
+    again = plots.write_plots(press, tmp_path / "again", jobs=2, which="record")
+    one = plots.write_plots(press, tmp_path / "one", jobs=1, which="record")
+    assert [p.name for p in two] == [p.name for p in one] == [p.name for p in again]
+    for a, b, c in zip(two, again, one):
+        assert a.read_bytes() == b.read_bytes() == c.read_bytes(), a.name
+
+
+def test_a_figure_that_fails_in_a_worker_fails_the_plots(press, tmp_path, monkeypatch):
+    """A figure raising in either worker (the first, or the one it forked): the wait raises,
+    every worker is gone."""
+    own = plots._save_some
+
+    def failing(results, folder, lang, indices, *args):
+        if plots.all_figures(results, lang)[indices[0]][0] == "omega.png":
+            raise ValueError("a figure failed")
+        return own(results, folder, lang, indices, *args)
+
+    monkeypatch.setattr(plots, "_save_some", failing)
+    with plots.start_plots(press, tmp_path, jobs=2, which="record") as job:
+        with pytest.raises(RuntimeError, match="a plotting process failed"):
+            job.wait()
+    assert all(not c.is_alive() for c in job.children)
+
+
 def test_drawn_in_process_the_progress_is_counted_too(press, tmp_path):
     seen = []
     paths = plots.write_plots(press, tmp_path, jobs=1, which="record",

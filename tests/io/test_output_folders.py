@@ -160,9 +160,12 @@ def test_an_interrupted_run_leaves_the_output_folder_as_it_was(tmp_path, sig):
     deadline = time.monotonic() + 30
     while not any(tmp_path.glob(".o.tmp-*")) and time.monotonic() < deadline:
         time.sleep(0.01)                           # wait until it is writing
+    workers = _descendants_of(proc.pid)
     proc.send_signal(sig)
     _, err = proc.communicate(timeout=60)
     assert proc.returncode == (130 if sig == signal.SIGINT else 143), err
+    time.sleep(0.2)
+    assert not [w for w in workers if _alive(w)]       # the plot workers stopped with it
     assert "Traceback" not in err and len(err.strip().splitlines()) == 1, err
     assert {p: p.read_bytes() for p in out.rglob("*") if p.is_file()} == before
     assert sorted(p.name for p in tmp_path.iterdir()) == ["o"], list(tmp_path.rglob("*"))
@@ -190,6 +193,16 @@ def _children_of(pid: int) -> list[int]:
     return out
 
 
+def _descendants_of(pid: int) -> list[int]:
+    """Its children, theirs, … (the first plot worker forks the others)."""
+    out, todo = [], [pid]
+    while todo:
+        kids = _children_of(todo.pop())
+        out += kids
+        todo += kids
+    return out
+
+
 @pytest.mark.skipif(not Path("/proc").is_dir(), reason="needs /proc (Linux)")
 def test_ctrl_c_to_the_process_group_stops_the_plot_workers_too(tmp_path):
     """A terminal's Ctrl-C reaches the whole process group, the plot workers included: one
@@ -201,7 +214,8 @@ def test_ctrl_c_to_the_process_group_stops_the_plot_workers_too(tmp_path):
     deadline = time.monotonic() + 30
     while not list(tmp_path.glob(".o.tmp-*/plots/*.png")) and time.monotonic() < deadline:
         time.sleep(0.01)                           # the workers are drawing
-    workers = _children_of(proc.pid)
+    workers = _descendants_of(proc.pid)
+    assert len(workers) == 2, "two workers: one forked by the run, one by the first"
     os.killpg(proc.pid, signal.SIGINT)
     _, err = proc.communicate(timeout=60)
     assert proc.returncode == 130, err
@@ -220,8 +234,8 @@ def test_a_killed_run_takes_its_workers_along_and_the_next_run_cleans_up(tmp_pat
     deadline = time.monotonic() + 30
     while not list(tmp_path.glob(".o.tmp-*/plots/*.png")) and time.monotonic() < deadline:
         time.sleep(0.01)
-    workers = _children_of(proc.pid)
-    assert workers, "the plots are drawn by a forked worker"
+    workers = _descendants_of(proc.pid)
+    assert len(workers) == 2, "the plots are drawn by two forked workers"
     proc.kill()                                    # SIGKILL: no cleanup in the parent
     proc.wait(timeout=30)
     time.sleep(0.5)

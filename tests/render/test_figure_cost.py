@@ -1,6 +1,8 @@
 """The caches render/figure.py's style() puts around matplotlib (issue 26): the same pixels as
-matplotlib's own drawing, each mathtext label parsed once for every figure, and matplotlib
-given back unchanged when the style ends. Work is counted, not timed."""
+matplotlib's own drawing, each mathtext label parsed once and each glyph rendered once for a
+place for every figure, and matplotlib given back unchanged when the style ends; the PNG
+writer's pixels against matplotlib's; the scheme's hatching against a line per stroke. Work is
+counted, not timed."""
 from __future__ import annotations
 
 import io
@@ -12,9 +14,9 @@ pytest.importorskip("matplotlib")
 from flywheel.render import figure as fg  # noqa: E402
 
 
-def _draw() -> bytes:
+def _draw(pil: bool = False) -> bytes:
     """A small figure with what the caches touch: mathtext, plain tick labels, markers (ticks
-    copied from the first), a legend; its PNG."""
+    copied from the first), a legend; its PNG (``pil``: written by matplotlib's savefig)."""
     import numpy as np
 
     fig, ax = fg.figure((4.0, 3.0), right=0.3)
@@ -24,20 +26,25 @@ def _draw() -> bytes:
     fg.phi_axis(ax, "en")
     ax.set_ylabel(r"$\varepsilon$ [rad/s²]")
     ax.set_title("a title: −1,5")
+    for k in range(6):           # the same glyphs whole pixels apart, and a fraction apart
+        fig.text(0.1 + k * 10.0 / 480, 0.5 + 0.37 * k / 360, "AVWa 0,5", rotation=30 * (k % 2))
     ax.legend()
     out = io.BytesIO()
-    fg.save(fig, out)
+    if pil:
+        fig.savefig(out, format="png", dpi=fg.DPI, metadata={"Software": None})
+    else:
+        fg.save(fig, out)
     return out.getvalue()
 
 
-def _matplotlibs_own() -> bytes:
+def _matplotlibs_own(pil: bool = False) -> bytes:
     """The same figure in the same settings, drawn by matplotlib alone (none of the caches)."""
     import matplotlib
 
     with matplotlib.rc_context():
         matplotlib.rcdefaults()
         matplotlib.rcParams.update(fg.RC)
-        return _draw()
+        return _draw(pil)
 
 
 def test_the_caches_keep_every_pixel():
@@ -66,15 +73,103 @@ def test_each_mathtext_label_parsed_once_in_a_style(monkeypatch):
                                      r"$\varphi$ [deg]", r"$\varepsilon$ [rad/s²]"})
 
 
+def test_each_glyph_rendered_once_for_a_place(monkeypatch):
+    """The second figure's glyphs all come from the cache: none rendered by FreeType again."""
+    from matplotlib.ft2font import FT2Font
+
+    rendered: list[int] = []
+    own = FT2Font._render_glyph
+
+    def counting(self, index, *args, **kw):
+        rendered.append(index)
+        return own(self, index, *args, **kw)
+
+    monkeypatch.setattr(FT2Font, "_render_glyph", counting)
+    with fg.style():
+        _draw()
+        first = len(rendered)
+        _draw()
+    assert first > 0
+    assert len(rendered) == first
+
+
 def test_matplotlib_given_back_after_the_style():
     from matplotlib.backends.backend_agg import RendererAgg
     from matplotlib.markers import MarkerStyle
     from matplotlib.mathtext import MathTextParser
 
-    before = (RendererAgg.__dict__["draw_text"], MarkerStyle.__dict__["_set_marker"],
-              MathTextParser.__dict__["_parse_cached"])
+    from matplotlib.ft2font import FT2Font
+
+    def now():
+        return (RendererAgg.__dict__["draw_text"], MarkerStyle.__dict__["_set_marker"],
+                MathTextParser.__dict__["_parse_cached"],
+                RendererAgg.__dict__["_draw_text_glyphs_and_boxes"],
+                FT2Font.__dict__["get_sfnt_table"])
+
+    before = now()
     with fg.style():
         assert RendererAgg.__dict__["draw_text"] is not before[0]
+        assert RendererAgg.__dict__["_draw_text_glyphs_and_boxes"] is not before[3]
+        assert FT2Font.__dict__["get_sfnt_table"] is not before[4]
         _draw()
-    assert (RendererAgg.__dict__["draw_text"], MarkerStyle.__dict__["_set_marker"],
-            MathTextParser.__dict__["_parse_cached"]) == before
+    assert now() == before
+
+
+def test_png_writer_keeps_the_pixels_of_matplotlibs_png():
+    """fg.save writes its own PNG (RGB, unfiltered rows): decoded, the same pixels and dpi as
+    matplotlib's PIL writer gives for the same figure; the same bytes when written again."""
+    import numpy as np
+    from PIL import Image
+
+    reference = _matplotlibs_own(pil=True)   # written by matplotlib's savefig (PIL)
+    with fg.style():
+        ours, again = _draw(), _draw()
+    assert ours == again
+    assert ours != reference                 # another writer …
+    a, b = Image.open(io.BytesIO(ours)), Image.open(io.BytesIO(reference))
+    assert a.mode == "RGB" and b.mode == "RGBA"
+    assert a.info["dpi"] == b.info["dpi"]
+    assert (np.asarray(b)[..., 3] == 255).all()
+    assert np.array_equal(np.asarray(a), np.asarray(b)[..., :3])   # … the same pixels
+
+
+def test_png_bytes_translucent_pixels_keep_their_alpha():
+    import numpy as np
+    from PIL import Image
+
+    rng = np.random.default_rng(7)
+    rgba = rng.integers(0, 256, (5, 7, 4), dtype=np.uint8)
+    decoded = Image.open(io.BytesIO(fg.png_bytes(rgba, 120)))
+    assert decoded.mode == "RGBA" and decoded.size == (7, 5)
+    assert np.array_equal(np.asarray(decoded), rgba)
+    rgba[..., 3] = 255
+    decoded = Image.open(io.BytesIO(fg.png_bytes(rgba, 300)))
+    assert decoded.mode == "RGB" and round(decoded.info["dpi"][0]) == 300
+    assert np.array_equal(np.asarray(decoded), rgba[..., :3])
+
+
+def test_strokes_drawn_as_broken_lines_keep_the_pixels_of_a_line_each():
+    """The scheme's hatching (plots_scheme._strokes: strokes joined by NaN breaks, 40 to a line)
+    gives the pixels of one Line2D per stroke, 95 strokes (three lines) included."""
+    import numpy as np
+
+    from flywheel.render.plots_scheme import _strokes
+
+    rng = np.random.default_rng(5)
+    starts = rng.uniform(0.0, 10.0, (95, 2))
+    segments = [(p, p + (0.3, 0.3)) for p in starts]
+
+    def png(joined: bool) -> bytes:
+        fig, ax = fg.figure((4.0, 4.0), right=0.3)
+        if joined:
+            _strokes(ax, segments, color="k", linewidth=0.5, zorder=2)
+        else:
+            for p0, p1 in segments:
+                ax.plot([p0[0], p1[0]], [p0[1], p1[1]], color="k", linewidth=0.5, zorder=2)
+        assert len(ax.lines) == (3 if joined else 95)
+        out = io.BytesIO()
+        fg.save(fig, out)
+        return out.getvalue()
+
+    with fg.style():
+        assert png(True) == png(False)

@@ -186,3 +186,22 @@ def test_a_sliders_analogues_are_the_derivatives_of_its_travel(name):
         v_q, _ = d.slider_analogues[d.guided_sliders[0][0]]
         assert any(len(y) == len(v_q) and np.allclose(y, v_q) for y in drawn)
         fig.clear()
+
+
+def test_a_curve_is_sampled_as_linspace_samples_each_piece():
+    """Placer.curve samples all pieces at once: the very points numpy.linspace gives piece by
+    piece (⌊length / step⌋ + 1 of them, at least 2; a piece of no length included)."""
+    import numpy as np
+
+    from flywheel.render.labels import Placer
+
+    rng = np.random.default_rng(3)
+    for step in (0.5, 2.0):
+        xy = rng.normal(0.0, 40.0, (30, 2))
+        xy[5] = xy[4]                                    # a piece of no length
+        placer = Placer(step=step)
+        placer.curve(xy)
+        expected = np.concatenate([
+            a + np.linspace(0.0, 1.0, max(2, int(float(np.hypot(*(b - a))) / step) + 1))[:, None]
+            * (b - a) for a, b in zip(xy[:-1], xy[1:])])
+        assert np.array_equal(placer.cloud, expected)

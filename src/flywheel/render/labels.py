@@ -99,17 +99,27 @@ class Placer:
 
     def segments(self, segs) -> None:
         """Lines drawn: (tail, head) pairs, sampled every ``step``."""
-        for a, b in segs:
-            a, b = np.asarray(a, float), np.asarray(b, float)
-            n = max(2, int(float(np.hypot(*(b - a))) / self.step) + 1)
-            self._clouds.append(a + np.linspace(0.0, 1.0, n)[:, None] * (b - a))
-        self._cloud = None
+        pairs = [(np.asarray(a, float), np.asarray(b, float)) for a, b in segs]
+        if pairs:
+            self._sample(np.array([a for a, _ in pairs]), np.array([b for _, b in pairs]))
 
     def curve(self, xy) -> None:
         """A polyline drawn (rows of x, y), sampled every ``step`` along each piece."""
         xy = np.asarray(xy, float)
         if len(xy) >= 2:
-            self.segments(zip(xy[:-1], xy[1:]))
+            self._sample(xy[:-1], xy[1:])
+
+    def _sample(self, tails: np.ndarray, heads: np.ndarray) -> None:
+        """Each piece tail → head (rows) sampled at n points, n = ⌊length / step⌋ + 1 (at least
+        2), evenly from tail to head: the points ``numpy.linspace`` gives, all pieces at once."""
+        d = heads - tails
+        n = np.maximum(2, (np.hypot(d[:, 0], d[:, 1]) / self.step).astype(int) + 1)
+        piece = np.repeat(np.arange(len(n)), n)
+        first = np.cumsum(n) - n
+        t = (np.arange(int(n.sum())) - first[piece]) * (1.0 / (n - 1))[piece]
+        t[first + n - 1] = 1.0                           # each piece ends at its head
+        self._clouds.append(tails[piece] + t[:, None] * d[piece])
+        self._cloud = None
 
     @property
     def cloud(self) -> np.ndarray:

@@ -540,12 +540,13 @@ def _release(fig) -> None:
         plt.close(fig)
 
 
-#: the relative cost of the heaviest figures (CPU seconds of benchmarks/bench_figures.py, the
-#: others about 1): the workers take the costliest first, so that none is left alone at the end
-_COST = {"energy_mass": 4.0, "plan_forces": 3.0, "positions": 2.5, "scheme": 2.0,
-         "plan_lever": 2.0, "hodographs": 2.0, "acceleration_analogues": 1.8, "J_II": 1.7,
-         "plan_acceleration": 1.6, "velocity_analogues": 1.6, "reduced_moments": 1.6,
-         "plan_positions": 1.5}
+#: the relative cost of the heaviest figures (CPU seconds of benchmarks/bench_figures.py after
+#: the glyph and PNG work of issue 26's third pass, compressor and engine_inline4; the others
+#: about 1): the workers take the costliest first, so that none is left alone at the end
+_COST = {"energy_mass": 4.0, "scheme": 3.0, "plan_forces": 3.0, "plan_positions": 2.5,
+         "hodographs": 2.3, "positions": 2.1, "time_law": 1.8, "plan_lever": 1.6,
+         "velocity_analogues": 1.6, "acceleration_analogues": 1.6, "reduced_moments": 1.6,
+         "J_II": 1.5, "indicator": 1.5, "plan_acceleration": 1.4}
 
 #: `run --plots record`: the figures of the записка of a course project (the sheets' diagrams:
 #: kinematics, the plans, the reduced quantities, the energy–mass diagram and ω(φ)); the
@@ -596,12 +597,20 @@ def _save_next(results, folder: Path, lang: str, order: list[int], counter, fmt:
 
 
 def _worker(results, folder: Path, lang: str, order: list[int], counter, fmt: str = "png",
-            dpi: int = fg.DPI, done=None) -> None:
+            dpi: int = fg.DPI, done=None, parent: int | None = None) -> None:
     """A forked plotting process: it dies with its parent (Linux: PR_SET_PDEATHSIG), leaves
-    Ctrl-C to the parent (which stops it) and ends quietly on SIGTERM. Its garbage collector
-    is the interpreter's default again (cli/__init__.py GC_THRESHOLDS): a figure dropped after
-    saving is garbage of cycles, freed figure by figure."""
+    Ctrl-C to the parent (which stops it) and ends quietly on SIGTERM."""
+    _worker_signals(parent)
+    _save_next(results, folder, lang, order, counter, fmt, dpi, done)
+
+
+def _worker_signals(parent: int | None) -> None:
+    """A plotting process's signals: Ctrl-C ignored (its parent stops it), SIGTERM ends it, and
+    it dies with ``parent`` (Linux: PR_SET_PDEATHSIG; gone already: it ends now). Its garbage
+    collector is the interpreter's default again (cli/__init__.py GC_THRESHOLDS): a figure
+    dropped after saving is garbage of cycles, freed figure by figure."""
     import gc
+    import os
     import signal
 
     gc.set_threshold(700, 10, 10)         # the interpreter's default
@@ -615,7 +624,49 @@ def _worker(results, folder: Path, lang: str, order: list[int], counter, fmt: st
         ctypes.CDLL(None, use_errno=True).prctl(1, signal.SIGKILL)   # 1 = PR_SET_PDEATHSIG
     except (OSError, AttributeError):
         pass                              # not Linux: the parent still terminates it
-    _save_next(results, folder, lang, order, counter, fmt, dpi, done)
+    if parent is not None and os.getppid() != parent:
+        os._exit(1)                       # the parent died before the line above
+
+
+def _first_worker(results, folder: Path, lang: str, order: list[int], counter, fmt: str,
+                  dpi: int, done, parent: int, others: int) -> None:
+    """The first plotting process: it imports matplotlib (0.5 s) while the parent writes the
+    tables and texts, then forks ``others`` workers that share that import, and draws with
+    them. A SIGTERM (the parent stopping it) ends its workers first, then it."""
+    import multiprocessing as mp
+    import os
+    import signal
+
+    _worker_signals(parent)
+    fg.prepare()                          # imported once here, for every worker
+    ctx = mp.get_context("fork")
+    me = os.getpid()
+    workers = [ctx.Process(target=_worker, args=(results, folder, lang, order, counter, fmt,
+                                                 dpi, done, me)) for _ in range(others)]
+
+    def stop(signum, frame):
+        for w in workers:
+            if w.pid is not None:
+                w.terminate()
+        for w in workers:
+            if w.pid is not None:
+                w.join()
+        os._exit(128 + signum)
+
+    signal.signal(signal.SIGTERM, stop)
+    held = signal.pthread_sigmask(signal.SIG_BLOCK, {signal.SIGTERM})    # not inside fork()
+    try:
+        for w in workers:
+            w.start()
+    finally:
+        signal.pthread_sigmask(signal.SIG_SETMASK, held)
+    try:
+        _save_next(results, folder, lang, order, counter, fmt, dpi, done)
+    finally:
+        for w in workers:
+            w.join()
+    if any(w.exitcode != 0 for w in workers):
+        raise RuntimeError("a plotting process failed")
 
 
 class PlotJob:
@@ -640,12 +691,15 @@ class PlotJob:
         self.children: list = []
         self._done = None
         if names and jobs > 1 and "fork" in mp.get_all_start_methods():
-            fg.prepare()                  # imported once here, not once in each worker
+            import os
+
+            # one process forked now: it imports matplotlib while this one writes the tables
+            # and texts, then forks the other workers, which share its import
             ctx = mp.get_context("fork")
             counter, self._done = ctx.Value("i", 0), ctx.Value("i", 0)
-            self.children = [ctx.Process(target=_worker, args=(
-                results, folder, lang, order, counter, fmt, dpi, self._done))
-                for _ in range(min(jobs, len(names)))]
+            self.children = [ctx.Process(target=_first_worker, args=(
+                results, folder, lang, order, counter, fmt, dpi, self._done, os.getpid(),
+                min(jobs, len(names)) - 1))]
             import signal
 
             # no Ctrl-C or SIGTERM handler may run inside fork(): Python ignores an exception

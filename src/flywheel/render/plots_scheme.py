@@ -61,11 +61,12 @@ def draw_scheme_fixed(ax, results, size: float) -> None:
         ax.plot(ends[:, 0], ends[:, 1], color="k", linewidth=1.0, zorder=2)
         ends2 = ends + size * nrm
         ax.plot(ends2[:, 0], ends2[:, 1], color="k", linewidth=1.0, zorder=2)
-        for t in np.linspace(a, b, max(int((b - a) / (0.5 * size)), 2)):
-            for side, e in ((-1, ends[0]), (1, ends2[0])):
+        for side, e in ((-1, ends[0]), (1, ends2[0])):       # the hatching of each side
+            ticks = []
+            for t in np.linspace(a, b, max(int((b - a) / (0.5 * size)), 2)):
                 p0 = e + (t - a) * u
-                p1 = p0 + side * 0.35 * size * (nrm + u)
-                ax.plot([p0[0], p1[0]], [p0[1], p1[1]], color="k", linewidth=0.5, zorder=2)
+                ticks.append((p0, p0 + side * 0.35 * size * (nrm + u)))
+            _strokes(ax, ticks, color="k", linewidth=0.5, zorder=2)
     # fixed pivots: a triangle on a hatched base
     for name in fixed:
         c = P[name].r[0]
@@ -74,9 +75,25 @@ def draw_scheme_fixed(ax, results, size: float) -> None:
         ax.add_patch(tri)
         base_y = c[1] - 1.1 * size
         ax.plot([c[0] - size, c[0] + size], [base_y, base_y], color="k", linewidth=1.0, zorder=2.5)
-        for t in np.linspace(-size, size, 5):
-            ax.plot([c[0] + t, c[0] + t - 0.35 * size], [base_y, base_y - 0.35 * size],
-                    color="k", linewidth=0.5, zorder=2.5)
+        _strokes(ax, [((c[0] + t, base_y), (c[0] + t - 0.35 * size, base_y - 0.35 * size))
+                      for t in np.linspace(-size, size, 5)], color="k", linewidth=0.5, zorder=2.5)
+
+
+#: strokes per line of :func:`_strokes`: 3 vertices each, under matplotlib's 128 from which a
+#: line's path is simplified (path.simplify), so that each stroke is drawn as its own line was
+_STROKES_PER_LINE = 40
+
+
+def _strokes(ax, segments, **kw) -> None:
+    """Short strokes (p0, p1) that touch nothing else of theirs (a hatching) drawn as lines of
+    up to :data:`_STROKES_PER_LINE` strokes broken by NaN — the same pixels as a line each
+    (Agg draws each piece of a broken path as its own), with one artist where there were up
+    to forty to make and draw (an engine's scheme had 450 lines)."""
+    for k in range(0, len(segments), _STROKES_PER_LINE):
+        xy = np.full((3 * len(segments[k:k + _STROKES_PER_LINE]), 2), np.nan)
+        for j, (p0, p1) in enumerate(segments[k:k + _STROKES_PER_LINE]):
+            xy[3 * j], xy[3 * j + 1] = p0, p1
+        ax.plot(xy[:, 0], xy[:, 1], **kw)
 
 
 def draw_scheme_at(ax, results, i: int, size: float, names: bool = True) -> None:
