@@ -34,7 +34,7 @@ PLACEHOLDER = re.compile(r"\{[^{}]*\}")
 @pytest.mark.parametrize("name", [None, *sorted(COMMAND.commands)])
 def test_no_help_page_shows_a_type_name_or_a_placeholder(name, lang):
     """Every help page (the root's and each command's, with --lang en and ru) shows what an
-    option takes in the user's words (DIR, DEG, PHI:RPM; nothing for a flag) and the usage
+    option takes in the user's words (DIR, DEG, PHI_DEG:RPM; nothing for a flag) and the usage
     line as ``run [OPTIONS] CASE``: no ``<bool>``, ``<list[float]>``, ``<path>`` or ``{case}``."""
     args = ["--help"] if name is None else [name, "--help", "--lang", lang]
     res = runner.invoke(app, args, env={"COLUMNS": "400"}, terminal_width=400)
@@ -49,11 +49,11 @@ def test_no_help_page_shows_a_type_name_or_a_placeholder(name, lang):
 
 
 def test_an_option_that_takes_a_value_says_what_in_words():
-    """Every option that takes a value has a metavar of capitals (DIR, N, DEG, PHI:RPM), shown
+    """Every option that takes a value has a metavar of capitals (DIR, N, DEG, PHI_DEG:RPM), shown
     on its line of the help page; a flag shows none."""
     res = runner.invoke(app, ["run", "--help"], env={"COLUMNS": "400"}, terminal_width=400)
     lines = {ln.split()[1]: ln for ln in res.output.splitlines() if ln.startswith("│ --")}
-    assert lines["--snapshot"].split()[2] == "PHI:RPM"
+    assert lines["--snapshot"].split()[2] == "PHI_DEG:RPM"
     assert lines["--out"].split()[2:4] == ["-o", "DIR"]
     assert lines["--at"].split()[2] == "DEG"
     assert lines["--no-plots"].split()[2] == "No"          # the help text right after the flag

@@ -159,7 +159,7 @@ def _no_type(ctx=None) -> None:
 class _UserWords:
     """A help page in the user's words, not typer's (0.29 shows each option's Python type:
     ``<bool>``, ``<list[float]>``, ``<path>``, and a required argument as ``{case}``): a flag
-    shows no value (it takes none), an option its metavar (DIR, DEG, PHI:RPM: given where it is
+    shows no value (it takes none), an option its metavar (DIR, DEG, PHI_DEG:RPM: given where it is
     declared), an argument its metavar alone, and the usage line ``run [OPTIONS] CASE``."""
 
     def get_params(self, ctx):

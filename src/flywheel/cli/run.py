@@ -49,7 +49,7 @@ Drawings = Annotated[bool, typer.Option(
 SheetSize = Annotated[str, typer.Option(
     "--sheet-size", metavar="SIZE", help="Format of the --drawings sheets, landscape: A1, A2 or A3.")]
 Snapshot = Annotated[Optional[list[str]], typer.Option(
-    "--snapshot", metavar="PHI:RPM", help="The crank's ε at the angle PHI \\[deg] and the "
+    "--snapshot", metavar="PHI_DEG:RPM", help="The crank's ε at the angle PHI_DEG \\[deg] and the "
     "speed RPM \\[rev/min]; repeatable.")]
 AtTravel = Annotated[Optional[list[str]], typer.Option(
     "--at-travel", metavar="POINT:METRES", help="Report the positions where slider point POINT "
