@@ -11,6 +11,8 @@ from pathlib import Path
 
 import pytest
 
+from helpers import source_nodes
+
 SRC = Path(__file__).resolve().parents[1] / "src" / "flywheel"
 
 # package → the packages it may import (besides itself and the standard library / third
@@ -51,11 +53,10 @@ def _module_name(path: Path) -> str:
 
 def _imports(path: Path) -> list[str]:
     """Absolute names of every module ``path`` imports (relative imports resolved)."""
-    tree = ast.parse(path.read_text(encoding="utf-8"))
     me = _module_name(path)
     package = me if path.name == "__init__.py" else me.rpartition(".")[0]
     out = []
-    for node in ast.walk(tree):
+    for node in source_nodes(path):
         if isinstance(node, ast.Import):
             out += [a.name for a in node.names]
         elif isinstance(node, ast.ImportFrom):

@@ -12,15 +12,14 @@ against report.md, «ключ summary.json» against summary.json to the digits 
 from __future__ import annotations
 
 import json
-import os
 import re
 import shlex
 import shutil
-import subprocess
-import sys
 from pathlib import Path
 
 import pytest
+
+from helpers import flywheel_in_process
 
 ROOT = Path(__file__).resolve().parents[1]
 GUIDES = sorted((ROOT / "docs" / "ru").rglob("*.md"))
@@ -34,10 +33,9 @@ def _blocks(path: Path, lang: str) -> list[str]:
     return re.findall(rf"```{lang}\n(.*?)```", path.read_text(encoding="utf-8"), re.S)
 
 
-def _flywheel(args: list[str], cwd: Path) -> subprocess.CompletedProcess:
-    env = {**os.environ, "PYTHONPATH": str(ROOT / "src"), "COLUMNS": "100"}
-    return subprocess.run([sys.executable, "-m", "flywheel", *args], cwd=cwd, env=env,
-                          capture_output=True, text=True, timeout=600)
+def _flywheel(args: list[str], cwd: Path):
+    """The command line in-process (returncode, stdout, stderr: as subprocess.run's)."""
+    return flywheel_in_process(*args, cwd=cwd)
 
 
 def test_there_are_guides():
