@@ -108,7 +108,7 @@ SLOW_TESTS = {
     "tests/render/test_plots.py::test_every_figure_has_title_labels_legend_and_fits[ru]",
     "tests/render/test_plots.py::test_task2_plot_by_suffix_is_the_same_bytes_on_a_rerun[.pdf]",
     "tests/render/test_plots_extra.py::test_time_law_and_transients_written_with_every_figure",
-    "tests/render/test_nomenclature.py::test_figure_text_has_no_literal_underscores_and_one_unit_style[en]",
+    "tests/render/test_nomenclature.py::test_figure_text_has_no_literal_underscores_and_one_unit_style",
     "tests/io/test_output_links.py::test_the_issues_plots_link_deletes_nothing_outside",
     "tests/cli/test_cli_run.py::test_rerun_replaces_its_own_files_only",
     "tests/render/test_report_formats.py::test_html_is_self_contained_and_numbered",  # + PDF, DOCX
@@ -143,6 +143,9 @@ SLOW_TESTS = {
     "tests/cases/test_document.py::test_every_kind_reads_the_document_table[['task2', '--case']-task2_seed_triangle.toml]",
     "tests/io/test_output_folders.py::test_a_rerun_of_the_newer_writers_keeps_the_users_files[aggregate]",
     "tests/duty_cycle/test_press.py::test_transients_run",
+    "tests/render/test_animate.py::test_run_animate_writes_mechanism_gif",
+    "tests/teaching/test_sheets.py::test_the_sheet_gives_the_defaults_a_flywheels_diameter_needs",
+    "tests/render/test_frame.py::test_every_framed_page_of_the_pdf_has_its_title_block",  # PDF
     # more integrations that count work or compare solvers (the quick estimates stay)
     "tests/test_bounds.py::test_points_beyond_the_limit_are_refused",
     "tests/test_work_bounds.py::test_progress_does_not_change_the_results",
