@@ -2,6 +2,7 @@
 the path)."""
 from __future__ import annotations
 
+from functools import lru_cache
 from pathlib import Path
 
 import numpy as np
@@ -112,3 +113,39 @@ def same_numbers(ru: list[float], en: list[float], rel: float = 5e-4,
     """The Russian numbers are the English ones to the Russian policy's four significant
     digits (or its round-off to 0 below the noise)."""
     return len(ru) == len(en) and all(abs(r - e) <= rel * abs(e) + noise for r, e in zip(ru, en))
+
+
+def flywheel_in_process(*args, cwd, columns: int = 100):
+    """``python -m flywheel ARGS`` run in ``cwd``, in this process (typer's CliRunner: the
+    same command line, without an interpreter started per call): an object with ``returncode``,
+    ``stdout`` and ``stderr`` like subprocess.run's. For tests whose point is the command, not
+    the process (those that start one are marked slow, tests/conftest.py)."""
+    import os
+    from types import SimpleNamespace
+
+    from typer.testing import CliRunner
+
+    from flywheel.cli import app
+
+    here = os.getcwd()
+    os.chdir(cwd)
+    try:
+        res = CliRunner().invoke(app, [str(a) for a in args], env={"COLUMNS": str(columns)})
+    finally:
+        os.chdir(here)
+    if res.exception is not None and not isinstance(res.exception, SystemExit):
+        raise res.exception
+    return SimpleNamespace(returncode=res.exit_code, stdout=res.stdout, stderr=err_text(res))
+
+
+def source_nodes(path) -> tuple:
+    """Every node of a Python file's syntax tree, in ast.walk's order, parsed once per session
+    (the tests that read the package's source share it): read-only."""
+    return _source_nodes(Path(path).resolve())
+
+
+@lru_cache(maxsize=None)
+def _source_nodes(path: Path) -> tuple:
+    import ast
+
+    return tuple(ast.walk(ast.parse(path.read_text(encoding="utf-8"))))

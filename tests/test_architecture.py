@@ -11,6 +11,8 @@ from pathlib import Path
 
 import pytest
 
+from helpers import source_nodes
+
 SRC = Path(__file__).resolve().parents[1] / "src" / "flywheel"
 
 # package → the packages it may import (besides itself and the standard library / third
@@ -51,11 +53,10 @@ def _module_name(path: Path) -> str:
 
 def _imports(path: Path) -> list[str]:
     """Absolute names of every module ``path`` imports (relative imports resolved)."""
-    tree = ast.parse(path.read_text(encoding="utf-8"))
     me = _module_name(path)
     package = me if path.name == "__init__.py" else me.rpartition(".")[0]
     out = []
-    for node in ast.walk(tree):
+    for node in source_nodes(path):
         if isinstance(node, ast.Import):
             out += [a.name for a in node.names]
         elif isinstance(node, ast.ImportFrom):
@@ -196,3 +197,35 @@ def test_command_functions_are_thin():
     assert not long, (f"commands longer than {COMMAND_MOST_LINES} lines (def to end): "
                       f"{sorted(long)}; move their checks, solving and writing out "
                       "(docs/architecture.md, 'A new command')")
+
+
+def test_the_quick_loops_guard_names_every_module_and_resolves_imports():
+    """tests/conftest.py's guard (the quick loop fails naming a module no quick test imported):
+    its list is every .py of src/flywheel, a package by its name; the import statements it
+    notes resolve as Python resolves them (relative ones from the importer's package, a
+    module named in `from … import`)."""
+    import conftest
+
+    files = sorted(SRC.rglob("*.py"))
+    names = conftest.every_module()
+    assert len(names) == len(set(names)) == len(files)
+    assert "flywheel" in names and "flywheel.render.drawings" in names
+    assert "flywheel.render.numbers" in names and "flywheel.__main__" in names
+    noted, was = set(conftest._imported), conftest._recording[0]
+    conftest._imported.clear()
+    conftest._recording[0] = True
+    try:
+        conftest._recording_import("", {"__package__": "flywheel.render"}, None, ("numbers",), 1)
+        conftest._recording_import("model", {"__package__": "flywheel.render.drawings"}, None,
+                                   ("View",), 1)
+        conftest._recording_import("io.text", {"__package__": "flywheel.render.drawings"}, None,
+                                   ("cut",), 3)
+        conftest._recording_import("json", {"__package__": "flywheel.render"})
+        got = set(conftest._imported)
+    finally:
+        conftest._imported.clear()
+        conftest._imported.update(noted)
+        conftest._recording[0] = was
+    assert got == {"flywheel", "flywheel.render", "flywheel.render.numbers",
+                   "flywheel.render.drawings", "flywheel.render.drawings.model",
+                   "flywheel.io", "flywheel.io.text"}

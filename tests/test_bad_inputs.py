@@ -201,7 +201,7 @@ IN_PROCESS_LIMIT = 60      # s: a command run in-process that takes longer is st
 HANG_LIMIT = 180           # s: the same guard for an entry run in a subprocess
 
 
-@dataclass
+@dataclass(frozen=True)
 class Outcome:
     code: int | None
     stdout: str
@@ -245,6 +245,25 @@ def invoke(entry: Entry, tmp: Path) -> Outcome:
     return Outcome(res.exit_code, res.stdout, res.stderr, exc)
 
 
+#: each entry's own run (English), once per session: tests/render/test_messages.py runs the
+#: same entry with --lang ru in the same folder and compares the two lines
+_RUNS: dict[str, tuple[Path, dict, Outcome, dict]] = {}
+
+
+def english_run(entry: Entry, tmp_path_factory) -> tuple[Path, dict, Outcome, dict]:
+    """The entry's files built in a folder of its own and its command run there, once per
+    session: (the folder, its files before, the outcome, its files after). Read-only: the
+    outcome is frozen, the snapshots are copies."""
+    if entry.id not in _RUNS:
+        tmp = tmp_path_factory.mktemp("bad")
+        build_files(entry, tmp)
+        before = snapshot(tmp)
+        o = invoke(entry, tmp)
+        _RUNS[entry.id] = (tmp, before, o, snapshot(tmp))
+    tmp, before, o, after = _RUNS[entry.id]
+    return tmp, dict(before), o, dict(after)
+
+
 def describe(o: Outcome) -> str:
     exc = "" if o.exception is None else f"\nexception: {type(o.exception).__name__}: {o.exception}"
     return f"exit {o.code}{exc}\nstdout: {o.stdout[:800]!r}\nstderr: {o.stderr[:1500]!r}"
@@ -267,16 +286,14 @@ def test_the_catalogue_covers_every_command():
 
 
 @pytest.mark.parametrize("entry", list(_params()))
-def test_bad_input(entry: Entry, tmp_path):
-    build_files(entry, tmp_path)
-    before = snapshot(tmp_path)
-    o = invoke(entry, tmp_path)
+def test_bad_input(entry: Entry, tmp_path_factory):
+    tmp_path, before, o, after = english_run(entry, tmp_path_factory)
     what = describe(o)
     assert o.exception is None, what                      # in-process: no uncaught exception
     assert "Traceback" not in o.stdout + o.stderr, what
     assert o.code == 2, what
     assert o.stdout.strip() == "", what                   # no partial result
-    assert snapshot(tmp_path) == before, "files written or lost\n" + what
+    assert after == before, "files written or lost\n" + what
     fragments = [subst(f, tmp_path) for f in entry.fragments]
     if entry.usage:
         flat = " ".join(o.stderr.replace("│", " ").split())

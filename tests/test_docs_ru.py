@@ -22,6 +22,8 @@ from pathlib import Path
 
 import pytest
 
+from helpers import flywheel_in_process
+
 ROOT = Path(__file__).resolve().parents[1]
 GUIDES = sorted((ROOT / "docs" / "ru").rglob("*.md"))
 VARIANTS = sorted((ROOT / "docs" / "ru" / "variants").glob("*.md"))
@@ -34,7 +36,14 @@ def _blocks(path: Path, lang: str) -> list[str]:
     return re.findall(rf"```{lang}\n(.*?)```", path.read_text(encoding="utf-8"), re.S)
 
 
-def _flywheel(args: list[str], cwd: Path) -> subprocess.CompletedProcess:
+def _flywheel(args: list[str], cwd: Path):
+    """The command line in-process (returncode, stdout, stderr: as subprocess.run's)."""
+    return flywheel_in_process(*args, cwd=cwd)
+
+
+def _process(args: list[str], cwd: Path) -> subprocess.CompletedProcess:
+    """`flywheel ARGS` as a user types it: a whole process (every figure drawn by its own
+    workers, not forked from the test's process)."""
     env = {**os.environ, "PYTHONPATH": str(ROOT / "src"), "COLUMNS": "100"}
     return subprocess.run([sys.executable, "-m", "flywheel", *args], cwd=cwd, env=env,
                           capture_output=True, text=True, timeout=600)
@@ -171,7 +180,7 @@ def test_every_command_shown_runs(tmp_path):
                 args = shlex.split(line[line.index("flywheel ") + len("flywheel "):])
                 if args[0] == "grade":
                     _fill_answers(tmp_path / Path(args[2]).parent)
-                res = _flywheel(args, tmp_path)
+                res = _process(args, tmp_path)
                 assert res.returncode == 0, (path.name, line, res.stderr[-2000:])
 
 

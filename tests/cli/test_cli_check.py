@@ -144,6 +144,30 @@ def test_python_m_flywheel_help():
         assert re.search(rf"\b{command}\b", proc.stdout)
 
 
+def test_python_m_flywheel_in_process(monkeypatch, capsys):
+    """`python -m flywheel check BAD` run as runpy runs it (flywheel/__main__.py as __main__,
+    in this process; the process itself: the two tests above and below): the console script's
+    one error line and exit 2; the signal handlers main() sets are restored after."""
+    import runpy
+    import signal
+
+    from flywheel import __main__ as entry          # as a module: it runs nothing
+    assert entry.__doc__.startswith("`python -m flywheel`")
+    monkeypatch.delitem(sys.modules, "flywheel.__main__")   # runpy runs it afresh, as python -m
+    monkeypatch.setattr(sys, "argv", ["flywheel", "check", str(CASES / "no_such_case.toml")])
+    handlers = {s: signal.getsignal(s) for s in (signal.SIGINT, signal.SIGTERM)}
+    try:
+        with pytest.raises(SystemExit) as stop:
+            runpy.run_module("flywheel", run_name="__main__", alter_sys=True)
+    finally:
+        for s, h in handlers.items():
+            signal.signal(s, h)
+    out = capsys.readouterr()
+    assert stop.value.code == 2 and out.out == ""
+    assert out.err.startswith("error: ") and "no_such_case.toml" in out.err
+    assert out.err.count("\n") == 1
+
+
 def test_python_m_flywheel_check_bad_file(tmp_path):
     path = tmp_path / "bad.toml"
     path.write_text(BASE.replace("delta     = 0.05", "delta     = 0"), encoding="utf-8")

@@ -18,22 +18,49 @@ def flywheel(*args, code: str | None = None, **kw):
     return subprocess.run([sys.executable, "-c", prog], capture_output=True, text=True, **kw)
 
 
+def console_script(*args):
+    """The console entry point (flywheel.cli.main) with ``flywheel ARGS`` as its command line,
+    in this process (its output captured, its exit code kept, the signal handlers it sets
+    restored): what `flywheel ARGS` does, without an interpreter started per call."""
+    import contextlib
+    import io
+    import signal
+    from types import SimpleNamespace
+
+    from flywheel.cli import main
+
+    out, err = io.StringIO(), io.StringIO()
+    argv, handlers = sys.argv, {s: signal.getsignal(s) for s in (signal.SIGINT, signal.SIGTERM)}
+    sys.argv = ["flywheel", *map(str, args)]
+    code = 0
+    try:
+        with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
+            main()
+    except SystemExit as stop:
+        code = stop.code or 0
+    finally:
+        sys.argv = argv
+        for s, h in handlers.items():
+            signal.signal(s, h)
+    return SimpleNamespace(returncode=code, stdout=out.getvalue(), stderr=err.getvalue())
+
+
 def test_version():
     from flywheel import __version__
 
-    res = flywheel("--version")
+    res = console_script("--version")
     assert res.returncode == 0 and res.stdout.strip() == f"flywheel {__version__}"
 
 
 def test_quiet_prints_nothing_but_errors(tmp_path):
-    res = flywheel("-q", "run", CASES / "compressor.toml", "--no-plots", "--points", "360",
-                   "--out", tmp_path / "o")
+    res = console_script("-q", "run", CASES / "compressor.toml", "--no-plots", "--points",
+                         "360", "--out", tmp_path / "o")
     assert res.returncode == 0 and res.stdout == "" and res.stderr == ""
     assert (tmp_path / "o" / "summary.json").is_file()
-    res = flywheel("-q", "run", CASES / "compressor.toml", "--no-plots", "--points", "360",
-                   "--out", tmp_path / "o", "--json")
+    res = console_script("-q", "run", CASES / "compressor.toml", "--no-plots", "--points",
+                         "360", "--out", tmp_path / "o", "--json")
     assert res.stdout.lstrip().startswith("{")          # the asked-for JSON still comes
-    res = flywheel("--quiet", "run", tmp_path / "missing.toml")
+    res = console_script("--quiet", "run", tmp_path / "missing.toml")
     assert res.returncode == 2 and res.stderr.startswith("error: ") and res.stdout == ""
 
 
@@ -70,7 +97,7 @@ def test_a_closed_pipe_ends_quietly(tmp_path):
 
 
 def test_completion_is_offered():
-    res = flywheel("--help")
+    res = console_script("--help")
     assert "--install-completion" in res.stdout
 
 
@@ -82,10 +109,10 @@ def test_a_usage_error_is_one_error_line():
                            (["run"], "flywheel run: Missing argument 'CASE'"),
                            (["bogus"], "No such command 'bogus'"),
                            (["task2", "--md", "abc"], "Invalid value for '--md'")):
-        res = flywheel(*args)
+        res = console_script(*args)
         lines = [ln for ln in res.stderr.splitlines() if ln.strip()]
         assert res.returncode == 2 and len(lines) == 1, res.stderr
         assert lines[0].startswith("error: ") and fragment in lines[0], lines[0]
         assert "--help)" in lines[0] and res.stdout == ""
-    res = flywheel()                                     # no arguments: the help, exit 0
+    res = console_script()                               # no arguments: the help, exit 0
     assert res.returncode == 0 and "Commands" in res.stdout

@@ -5,23 +5,18 @@ from __future__ import annotations
 
 import os
 import re
-import subprocess
-import sys
-from pathlib import Path
 
 import pytest
 
 from flywheel.cases import kind_of
 from flywheel.cases.starter import KINDS, starter_text
 from flywheel.io.toml import read_toml
-
-SRC = Path(__file__).resolve().parents[2] / "src"
+from helpers import flywheel_in_process
 
 
 def flywheel(*args, cwd):
-    env = {**os.environ, "PYTHONPATH": str(SRC), "COLUMNS": "100"}
-    return subprocess.run([sys.executable, "-m", "flywheel", *args], cwd=cwd, env=env,
-                          capture_output=True, text=True, timeout=120)
+    """The command line in-process (the process itself: tests/cli/test_cli_check.py)."""
+    return flywheel_in_process(*args, cwd=cwd)
 
 
 def _command(kind: str, file: str) -> list[str]:

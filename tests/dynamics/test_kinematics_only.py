@@ -7,9 +7,6 @@ from __future__ import annotations
 import csv
 import json
 import math
-import os
-import subprocess
-import sys
 from pathlib import Path
 
 import numpy as np
@@ -19,6 +16,7 @@ from flywheel.cases.run import load_case, parse_case
 from flywheel.dynamics.kinematics_only import analyze_kinematics
 from flywheel.io.toml import read_toml
 from flywheel.linkage import solve
+from helpers import flywheel_in_process
 
 ROOT = Path(__file__).resolve().parents[2]
 BARE = """title = "Four-bar, kinematics only"
@@ -49,9 +47,8 @@ at_deg = [0.0, 75.0, 180.0]
 
 
 def flywheel(*args, cwd):
-    env = {**os.environ, "PYTHONPATH": str(ROOT / "src"), "COLUMNS": "100"}
-    return subprocess.run([sys.executable, "-m", "flywheel", *args], cwd=cwd, env=env,
-                          capture_output=True, text=True, timeout=120)
+    """The command line in-process (returncode, stdout, stderr: as subprocess.run's)."""
+    return flywheel_in_process(*args, cwd=cwd)
 
 
 def _by_differences(mech, phi_deg: float, omega: float) -> dict[str, tuple[float, float]]:

@@ -20,6 +20,7 @@ sys.path.insert(0, str(ROOT / "tools"))
 import i18n  # noqa: E402
 
 from flywheel.render import message_params, messages  # noqa: E402
+from helpers import source_nodes  # noqa: E402
 
 PO = i18n.read_po()
 ENTRIES = [m for m in PO if m.id]
@@ -66,7 +67,7 @@ def test_russian_plural_forms(n, form):
 def _raise_sites():
     """(file, code, keyword names) of every Notice(text, "code", …) in the package."""
     for path in i18n.PACKAGE.rglob("*.py"):
-        for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+        for node in source_nodes(path):
             if not isinstance(node, ast.Call) or len(node.args) < 2:
                 continue
             code = (node.args[0] if ast.unparse(node.func) == "Notice.of" else node.args[1]

@@ -323,6 +323,37 @@ def test_the_title_block_fits_long_names_in_its_cells():
     assert x0 + 17 <= sx0 and sx1 <= x0 + 40
 
 
+def test_an_a3_frame_written_as_dxf_reads_back_with_its_layers_and_frame(tmp_path):
+    """The frame and title block of an A3 sheet written as DXF alone (the whole sheets of a run:
+    the slow tests above): millimetres, the ГОСТ 2.303 line weights on their layers, the frame
+    20 mm from the left edge and 5 mm from the others (ГОСТ 2.104), every text on TEXT."""
+    import ezdxf
+    from types import SimpleNamespace
+
+    from flywheel.render.drawings.dxf import write_dxf
+    from flywheel.render.drawings.sheet import frame_view
+
+    doc = SimpleNamespace(student="Иванов И. И.", teacher="", tech_control="", norm_control="",
+                          approved="", university="", group="",
+                          designation_or_default="ТММ.КП.00.01")
+    v = frame_view("A3", "ru", document=doc, title="Компрессор", sheet_name="Лист", number=1,
+                   count=1, scale="")
+    write_dxf(tmp_path / "s.dxf", FORMATS["A3"], [v])
+    dxf = ezdxf.readfile(tmp_path / "s.dxf")
+    assert dxf.header["$INSUNITS"] == 4
+    layers = {layer.dxf.name: layer for layer in dxf.layers}
+    for name, weight in (("MAIN", 70), ("THIN", 35)):
+        assert layers[name].dxf.lineweight == weight
+    msp = dxf.modelspace()
+    frames = [e for e in msp.query("LWPOLYLINE[layer=='MAIN']") if e.closed
+              and sorted(map(tuple, e.get_points("xy"))) == [(20.0, 5.0), (20.0, 292.0),
+                                                              (415.0, 5.0), (415.0, 292.0)]]
+    assert len(frames) == 1
+    texts = _texts(dxf)
+    assert texts and all(e.dxf.layer == "TEXT" for e in texts)
+    assert any("Иванов" in e.dxf.text for e in texts)
+
+
 def test_without_osifont_the_sheet_is_lettered_in_dejavu(monkeypatch, tmp_path):
     from flywheel.render.drawings import fonts, model
     from flywheel.render.drawings.paper import write_paper

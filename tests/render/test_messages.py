@@ -20,6 +20,7 @@ from flywheel.cli import app
 from flywheel.errors import Notice
 from flywheel.render import library_ru, message_params
 from flywheel.render import messages as nm
+from helpers import source_nodes
 
 SRC = Path(__file__).resolve().parents[2] / "src" / "flywheel"
 CASES = Path(__file__).resolve().parents[2] / "cases"
@@ -37,7 +38,7 @@ DESCRIBED = {c for c in RU if c.startswith("pydantic_")} | {
 def _notices():
     """(file, code, keyword names) of every Notice(…) call in the package."""
     for path in SRC.rglob("*.py"):
-        for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+        for node in source_nodes(path):
             if not isinstance(node, ast.Call) or len(node.args) < 2:
                 continue
             code = (node.args[0] if ast.unparse(node.func) == "Notice.of" else node.args[1]
@@ -518,7 +519,7 @@ ENGLISH = re.compile(r"\b(the|is|not|must|be|allowed|out|of|range|given|cannot|n
 
 
 def _entry(eid):
-    return next(e for e in bad.load_catalogue() if e.id == eid)
+    return next(e for e in bad.ENTRIES if e.id == eid)     # the catalogue read once (frozen)
 
 
 #: a number as an error line says it (not inside a file name or a path)
@@ -536,14 +537,13 @@ def _numbers(line: str) -> list[str]:
 
 
 @pytest.mark.parametrize("eid", RUSSIAN_ERRORS)
-def test_errors_are_russian_with_lang_ru(eid, tmp_path):
+def test_errors_are_russian_with_lang_ru(eid, tmp_path_factory):
     """The Russian line of a bad input: one `ошибка:` line, the file and field path kept, no
     English word left, and the same numbers as the English line (the value, the limits, a line
     and column of a TOML file): the translation says what the English says, not other words
     pasted here (the wording itself is the catalogue's, tests/render/test_catalogue.py)."""
     entry = _entry(eid)
-    bad.build_files(entry, tmp_path)
-    en = bad.invoke(entry, tmp_path)
+    tmp_path, _, en, _ = bad.english_run(entry, tmp_path_factory)   # test_bad_input's own run
     o = bad.invoke(replace(entry, args=[*entry.args, "--lang", "ru"]), tmp_path)
     assert o.code == 2 and o.stdout == "", o
     lines = o.stderr.splitlines()
@@ -890,11 +890,14 @@ def _notice_builders() -> set[str]:
     """Names of the package's functions that return an errors.Notice (``needs_out``, …)."""
     names = set()
     for path in SRC.rglob("*.py"):
-        for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+        nodes = source_nodes(path)
+        # the lines of the returns of a Notice; a function returns one if one lies in its lines
+        # (the returns of its body and of the functions inside it, as ast.walk(function) finds)
+        lines = [r.lineno for r in nodes if isinstance(r, ast.Return) and r.value is not None
+                 and ("Notice(" in (text := ast.unparse(r.value)) or "Notice.of(" in text)]
+        for node in nodes:
             if isinstance(node, ast.FunctionDef) and any(
-                    isinstance(r, ast.Return) and r.value is not None
-                    and ("Notice(" in ast.unparse(r.value) or "Notice.of(" in ast.unparse(r.value))
-                    for r in ast.walk(node)):
+                    node.lineno <= line <= node.end_lineno for line in lines):
                 names.add(node.name)
     return names
 
@@ -905,7 +908,7 @@ def _english_raises():
     for path in sorted(SRC.rglob("*.py")):
         text = path.read_text(encoding="utf-8")
         lines = text.splitlines()
-        for node in ast.walk(ast.parse(text)):
+        for node in source_nodes(path):
             if not (isinstance(node, ast.Raise) and isinstance(node.exc, ast.Call)):
                 continue
             fn = node.exc.func
@@ -916,13 +919,14 @@ def _english_raises():
             msg = args[1] if kind in ("FieldError", "TableError", "DutyCycleError", "NotFiniteError") and len(args) > 1 else args[0]
             called = msg.func.id if isinstance(msg, ast.Call) and isinstance(msg.func, ast.Name) \
                 else ""
-            if isinstance(msg, ast.Name) or called in builders or "Notice(" in ast.unparse(msg) \
-                    or "Notice.of(" in ast.unparse(msg) \
-                    or "led(" in ast.unparse(msg):
+            if isinstance(msg, ast.Name) or called in builders:
+                continue
+            said = ast.unparse(msg)
+            if "Notice(" in said or "Notice.of(" in said or "led(" in said:
                 continue
             if lines[node.lineno - 2].strip() == _LIBRARY_ONLY:
                 continue
-            yield f"{path.relative_to(SRC)}:{node.lineno}", ast.unparse(msg)[:100]
+            yield f"{path.relative_to(SRC)}:{node.lineno}", said[:100]
 
 
 def test_every_user_error_is_raised_with_a_notice():

@@ -4,8 +4,6 @@ coupler are collinear), in both languages."""
 from __future__ import annotations
 
 import math
-import subprocess
-import sys
 from pathlib import Path
 
 import pytest
@@ -14,6 +12,7 @@ from flywheel.cases.run import load_case
 from flywheel.dynamics.pipeline import analyze
 from flywheel.render.document import build_document
 from flywheel.render.report import markdown
+from helpers import flywheel_in_process
 
 ROOT = Path(__file__).resolve().parents[2]
 KEYS = {"link", "extremes_phi_deg", "time_ratio_K", "transmission_angle_min_deg",
@@ -53,7 +52,9 @@ def test_the_record_has_its_section(fourbar, lang):
 
 
 def test_check_prints_it():
-    out = subprocess.run([sys.executable, "-m", "flywheel", "check", str(ROOT / "cases" / "fourbar.toml"),
-                          "--lang", "ru"], capture_output=True, text=True, check=True).stdout
+    res = flywheel_in_process("check", ROOT / "cases" / "fourbar.toml", "--lang", "ru", cwd=ROOT,
+                              columns=80)
+    assert res.returncode == 0, res.stderr
+    out = res.stdout
     assert "наименьший угол передачи γ_min = 48,19° при φ = 0°" in out    # Russian numbers
     assert "угол размаха коромысла ψ = 41,81°" in out

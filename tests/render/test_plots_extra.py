@@ -101,10 +101,13 @@ def test_transients_plot_marks_the_steady_state(results):
     assert f"{st.time_to_steady:.4g}" in labels
 
 
-def test_time_law_and_transients(results, tmp_path):
+def test_time_law(results):
     fig = plots_extra.figure_time_law(results, lang="ru")
     assert [a.get_ylabel() for a in fig.axes] == [r"$\omega$, рад/с", r"$\varepsilon$, рад/с²"]
     assert fig.axes[1].get_xlabel() == "$t$, с"
+
+
+def test_time_law_and_transients_written_with_every_figure(results, tmp_path):
     from flywheel.render import plots
 
     paths = plots.write_plots(results, tmp_path)          # with the worksheet's plots

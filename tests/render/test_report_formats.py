@@ -109,10 +109,19 @@ def test_html_is_self_contained_and_numbered(ru_run):
     assert "группа Ассура II класса вида RRP: звенья 2, 3" in body
 
 
-def test_html_numbers_are_summary_json(ru_run):
-    s = json.loads((ru_run / "summary.json").read_text(encoding="utf-8"))["results"]
+@pytest.fixture(scope="module")
+def ru_text_run(tmp_path_factory):
+    """The Russian Markdown and HTML reports without figures (the tests of their text; ru_run
+    draws the figures and writes the PDF and DOCX for the tests of those)."""
+    out = tmp_path_factory.mktemp("ru_text") / "o"
+    run(out, "--lang", "ru", "--report", "md", "--report", "html", "--no-plots")
+    return out
+
+
+def test_html_numbers_are_summary_json(ru_text_run):
+    s = json.loads((ru_text_run / "summary.json").read_text(encoding="utf-8"))["results"]
     page = _Page()
-    page.feed((ru_run / "report.html").read_text(encoding="utf-8"))
+    page.feed((ru_text_run / "report.html").read_text(encoding="utf-8"))
     cells = page.cells
 
     def ru(x):      # a Russian result: four significant digits, a decimal comma (none here ≥ 1e4)
@@ -125,10 +134,10 @@ def test_html_numbers_are_summary_json(ru_run):
     assert ru(at['points']['B']['v']) in cells
 
 
-def test_first_group_parts_are_named_in_russian(ru_run):
+def test_first_group_parts_are_named_in_russian(ru_text_run):
     """cases/compressor.toml's first_group = { crankshaft, gearbox }: the Russian записка names
     them «коленчатый вал» and «редуктор», not by the case's English keys."""
-    md = (ru_run / "report.md").read_text(encoding="utf-8")
+    md = (ru_text_run / "report.md").read_text(encoding="utf-8")
     assert "коленчатый вал" in md and "редуктор" in md
     assert "crankshaft" not in md and "gearbox" not in md
 

@@ -60,7 +60,7 @@ def test_energy_swing_from_a_students_moment_agrees_with_the_runs_table(compress
     key = key_of(compressor)
     vid = "01"
     res = runner.invoke(app, ["run", str(compressor / f"variant_{vid}.toml"), "--points", "1440",
-                              "--out", str(tmp_path / "r")])
+                              "--no-plots", "--out", str(tmp_path / "r")])
     assert res.exit_code == 0, res.output
     with open(tmp_path / "r" / "table.csv", encoding="utf-8") as f:
         rows = list(csv.DictReader(f))

@@ -48,7 +48,8 @@ def merzalov(dT, w, delta):
 def run_variant(data, tmp_path, name):
     case = tmp_path / f"{name}.toml"
     case.write_text(tomli_w.dumps(data), encoding="utf-8")
-    res = runner.invoke(app, ["run", str(case), "--points", "1440", "--out", str(tmp_path / name)])
+    res = runner.invoke(app, ["run", str(case), "--points", "1440", "--no-plots",   # reads CSV/JSON
+                              "--out", str(tmp_path / name)])
     assert res.exit_code == 0, res.output
     return tmp_path / name
 
