@@ -144,7 +144,7 @@ def test_the_sheet_carries_the_variants_own_values(compressor_dir):
         assert rows["плотность материала маховика ρ"] == ["7800", "кг/м³"]
         assert ru_numbers(rows["цилиндр LP: p/p_max при движении поршня к головке"][0]) == \
             doc["cylinders"][1]["towards_head"]
-        assert rows["момент инерции: gearbox (приведён к кривошипу)"] == ["0,074", "кг·м²"]
+        assert rows["момент инерции: редуктор (приведён к кривошипу)"] == ["0,074", "кг·м²"]
 
 
 def test_the_find_list_is_worded_as_a_task_with_units_and_tolerances(compressor_dir, task2_dir):
