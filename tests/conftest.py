@@ -210,6 +210,51 @@ def pytest_collection_modifyitems(config, items):
     if unknown and _whole_tree(config):
         raise pytest.UsageError("tests/conftest.py names tests that do not exist: "
                                 + ", ".join(unknown))
+    shard = config.getoption("shard", None)
+    if shard:
+        _keep_share(config, items, shard)
+
+
+def pytest_addoption(parser):
+    parser.addoption("--shard", default=None, metavar="K/N",
+                     help="run the K-th of N shares of the test files (1 ≤ K ≤ N): "
+                          "tools/pytest_shards.py runs the N at once")
+    parser.addoption("--guard-out", default=None, metavar="FILE",
+                     help="with --shard: write the modules the share's tests imported to FILE "
+                          "(JSON) for tools/pytest_shards.py to check their union")
+
+
+#: a slow test's weight in the shares (a quick one: 1): about the ratio of their mean times
+SLOW_WEIGHT = 20
+
+
+def _keep_share(config, items, shard: str) -> None:
+    """Keep the items of the K-th of N shares of the test files (a file's tests stay together:
+    its module-scoped fixtures run once): the files in order of their weight — a quick test 1,
+    a slow one :data:`SLOW_WEIGHT` (a process, a PDF, a browser) — most first, each to the
+    share with the least so far (ties: the lower share)."""
+    try:
+        k, n = (int(v) for v in shard.split("/"))
+        assert 1 <= k <= n
+    except (ValueError, AssertionError):
+        raise pytest.UsageError(f"--shard {shard}: not K/N with 1 ≤ K ≤ N") from None
+    markexpr = config.getoption("markexpr", "") or ""
+    counted: dict[str, int] = {}
+    for item in items:
+        slow = item.get_closest_marker("slow") is not None
+        weight = 0 if slow and "not slow" in markexpr else SLOW_WEIGHT if slow else 1
+        path = item.nodeid.split("::", 1)[0]
+        counted[path] = counted.get(path, 0) + weight
+    load, share_of = [0] * n, {}
+    for path in sorted(counted, key=lambda p: (-counted[p], p)):
+        s = min(range(n), key=lambda i: (load[i], i))
+        share_of[path] = s
+        load[s] += counted[path]
+    kept = [it for it in items if share_of[it.nodeid.split("::", 1)[0]] == k - 1]
+    dropped = [it for it in items if share_of[it.nodeid.split("::", 1)[0]] != k - 1]
+    if dropped:
+        config.hook.pytest_deselected(items=dropped)
+    items[:] = kept
 
 
 @pytest.fixture(autouse=True)
@@ -329,6 +374,13 @@ def pytest_sessionfinish(session, exitstatus):
     """The quick loop over the whole tree, all passed: every module of src/flywheel imported
     by a quick test, or the run fails naming the ones none imported."""
     config = session.config
+    out = config.getoption("guard_out", None)
+    if out and getattr(config, "_flywheel_guard", False):      # one share: its union is checked
+        import json                                            # by tools/pytest_shards.py
+
+        Path(out).write_text(json.dumps({"imported": sorted(_imported),
+                                         "every": every_module()}), encoding="utf-8")
+        return
     if not getattr(config, "_flywheel_guard", False) or exitstatus != 0 or \
             session.shouldfail or session.shouldstop:
         return

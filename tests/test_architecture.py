@@ -229,3 +229,41 @@ def test_the_quick_loops_guard_names_every_module_and_resolves_imports():
     assert got == {"flywheel", "flywheel.render", "flywheel.render.numbers",
                    "flywheel.render.drawings", "flywheel.render.drawings.model",
                    "flywheel.io", "flywheel.io.text"}
+
+
+def test_the_shares_of_tools_pytest_shards_split_the_files_whole_and_balanced():
+    """``--shard K/N`` (tests/conftest.py, run N at once by tools/pytest_shards.py): every test
+    in exactly one share, a file's tests together (its module fixtures run once), the shares'
+    quick tests within the largest file's count of each other."""
+    from types import SimpleNamespace
+
+    import pytest
+
+    import conftest
+
+    sizes = {"tests/a.py": 40, "tests/b.py": 25, "tests/c.py": 20, "tests/d.py": 9,
+             "tests/e.py": 3, "tests/f.py": 1}
+
+    def items():
+        return [SimpleNamespace(nodeid=f"{path}::t{i}", get_closest_marker=lambda name: None)
+                for path, n in sizes.items() for i in range(n)]
+
+    def config(dropped):
+        return SimpleNamespace(getoption=lambda name, default=None: "not slow",
+                               hook=SimpleNamespace(pytest_deselected=lambda items:
+                                                    dropped.extend(items)))
+
+    shares = []
+    for k in (1, 2, 3):
+        kept, dropped = items(), []
+        conftest._keep_share(config(dropped), kept, f"{k}/3")
+        assert len(kept) + len(dropped) == sum(sizes.values())
+        shares.append({it.nodeid for it in kept})
+    every = [n for s in shares for n in s]
+    assert sorted(every) == sorted(it.nodeid for it in items())       # each exactly once
+    for path in sizes:
+        assert sum(any(n.startswith(path + "::") for n in s) for s in shares) == 1
+    counts = [len(s) for s in shares]
+    assert max(counts) - min(counts) <= max(sizes.values())
+    with pytest.raises(pytest.UsageError):
+        conftest._keep_share(config([]), items(), "4/3")
