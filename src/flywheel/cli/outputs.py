@@ -70,15 +70,22 @@ def write_run(out: Path, results, case, what: RunOutputs, lang: str) -> str:
     """`run`'s output folder ``out``: summary.json, the CSVs, the figures (drawn by forked
     workers started first), mechanism.gif, the reports; notes of a rerun on stderr. Returns
     the text of summary.json. Errors are the caller's guard's."""
+    return _write_folder(out, results, lambda folder, summary_text: _build_run(
+        folder, results, case, what, lang, summary_text))
+
+
+def _write_folder(out: Path, results, build) -> str:
+    """A run's output folder ``out`` written whole (io/output.py write_folder): ``build(folder,
+    summary_text)`` fills the temporary folder; the notes of a rerun on stderr. Returns the
+    text of summary.json."""
     from flywheel.cli.guard import _guard
     from flywheel.io.output import write_folder
     from flywheel.render.tables import summary_json
 
     summary_text = summary_json(results)
     notes: list[str] = []
-    _guard(write_folder, out, lambda folder: _build_run(folder, results, case, what, lang,
-                                                        summary_text),
-           "summary.json", notes=notes)
+    _guard(write_folder, out, lambda folder: build(folder, summary_text), "summary.json",
+           notes=notes)
     for n in notes:
         note(n)
     return summary_text
@@ -101,18 +108,8 @@ def write_kinematics(out: Path, results, case, what: RunOutputs, lang: str) -> s
     summary.json, table.csv, positions.csv, the kinematic plots (every one unless
     ``--plots none``), mechanism.gif, the reports; notes of a rerun on stderr. Returns the
     text of summary.json."""
-    from flywheel.cli.guard import _guard
-    from flywheel.io.output import write_folder
-    from flywheel.render.tables import summary_json
-
-    summary_text = summary_json(results)
-    notes: list[str] = []
-    _guard(write_folder, out, lambda folder: _build_kinematics(folder, results, case, what, lang,
-                                                               summary_text),
-           "summary.json", notes=notes)
-    for n in notes:
-        note(n)
-    return summary_text
+    return _write_folder(out, results, lambda folder, summary_text: _build_kinematics(
+        folder, results, case, what, lang, summary_text))
 
 
 def _build_kinematics(folder: Path, results, case, what: RunOutputs, lang: str,
