@@ -140,6 +140,21 @@ def _russian_ticks():
     return restore
 
 
+class _Bounded(dict):
+    """A cache of :func:`style` that empties itself rather than grow past ``most`` entries
+    (matplotlib's own caches are bounded too): ``put`` stores a value and returns it."""
+
+    def __init__(self, most: int):
+        super().__init__()
+        self.most = most
+
+    def put(self, key, value):
+        if len(self) > self.most:
+            self.clear()
+        self[key] = value
+        return value
+
+
 def _share_text_metrics():
     """Within :func:`style`, one cache of text sizes for every figure drawn (matplotlib keeps
     one per renderer, and each figure, each resize and each measuring of a legend makes a new
@@ -150,7 +165,7 @@ def _share_text_metrics():
     import matplotlib.text as mtext
 
     own = mtext._get_text_metrics_function
-    sizes: dict = {}
+    sizes = _Bounded(20000)                      # as matplotlib's own (4096 each)
 
     def shared(renderer, _own=own):
         kind = type(renderer)
@@ -159,10 +174,8 @@ def _share_text_metrics():
             key = (kind, text, fontprop, ismath, dpi)
             found = sizes.get(key)
             if found is None:
-                if len(sizes) > 20000:           # bounded, as matplotlib's own (4096 each)
-                    sizes.clear()
-                found = sizes[key] = renderer.get_text_width_height_descent(
-                    text, fontprop, ismath)
+                found = sizes.put(key, renderer.get_text_width_height_descent(
+                    text, fontprop, ismath))
             return found
         return metrics
 
@@ -186,15 +199,13 @@ def _share_mathtext():
 
     own = MathTextParser.__dict__["_parse_cached"]
     parse = own.__wrapped__                  # the function under matplotlib's lru_cache
-    parsed: dict = {}
+    parsed = _Bounded(2000)
 
     def shared(self, s, dpi, prop, antialiased, load_glyph_flags):
         key = (self._output_type, s, dpi, prop, antialiased, load_glyph_flags)
         found = parsed.get(key)
         if found is None:
-            if len(parsed) > 2000:               # bounded
-                parsed.clear()
-            found = parsed[key] = parse(self, s, dpi, prop, antialiased, load_glyph_flags)
+            found = parsed.put(key, parse(self, s, dpi, prop, antialiased, load_glyph_flags))
         return found
 
     MathTextParser._parse_cached = shared
@@ -255,7 +266,7 @@ def _share_glyph_layouts():
     if not (hasattr(agg, "_draw_text_glyphs_and_boxes") and hasattr(FT2Font, "_layout")
             and hasattr(agg, "_prepare_font")):
         return lambda: None
-    laid: dict = {}
+    laid = _Bounded(20000)
 
     def draw_text(self, gc, x, y, s, prop, angle, ismath=False, mtext=None):
         if ismath:
@@ -267,11 +278,10 @@ def _share_glyph_layouts():
                language)
         items = laid.get(key)
         if items is None:
-            if len(laid) > 20000:                # bounded
-                laid.clear()
             font = self._prepare_font(prop)
-            items = tuple(font._layout(s, flags=flags, features=features, language=language))
-            laid[(s, prop.copy(), *key[2:])] = items
+            items = laid.put((s, prop.copy(), *key[2:]),     # a copy: the text's may change
+                             tuple(font._layout(s, flags=flags, features=features,
+                                                language=language)))
         size = prop.get_size_in_points()
         self._draw_text_glyphs_and_boxes(
             gc, x, y, angle,
@@ -304,7 +314,7 @@ def _share_glyph_bitmaps():
     render_mode = getattr(backend_agg, "RenderMode", None)
     if own is None or render_mode is None or not hasattr(backend_agg, "get_hinting_flag"):
         return lambda: None
-    rendered: dict = {}
+    rendered = _Bounded(50000)
     matrices: dict = {}
 
     def matrix(cos, sin, slant, extend):
@@ -330,16 +340,14 @@ def _share_glyph_bitmaps():
                    px & 0x3F, py & 0x3F)
             found = rendered.get(key)
             if found is None:
-                if len(rendered) > 50000:        # bounded
-                    rendered.clear()
                 font.set_size(size, self.dpi)
                 font._set_transform(matrix(cos, sin, slant, extend), [px, py])
                 bitmap = font._render_glyph(glyph_index, load_flags, mode)
                 buffer = bitmap.buffer
                 if not antialiased:
                     buffer *= 0xff
-                found = rendered[key] = (buffer, bitmap.left - (px >> 6),
-                                         bitmap.top - (py >> 6))
+                found = rendered.put(key, (buffer, bitmap.left - (px >> 6),
+                                           bitmap.top - (py >> 6)))
             buffer, left, top = found
             # draw_text_image's y is downwards & the bitmap bottom side.
             self._renderer.draw_text_image(
