@@ -250,8 +250,9 @@ def _keep_share(config, items, shard: str) -> None:
         s = min(range(n), key=lambda i: (load[i], i))
         share_of[path] = s
         load[s] += counted[path]
-    kept = [it for it in items if share_of[it.nodeid.split("::", 1)[0]] == k - 1]
-    dropped = [it for it in items if share_of[it.nodeid.split("::", 1)[0]] != k - 1]
+    kept, dropped = [], []
+    for it in items:
+        (kept if share_of[it.nodeid.split("::", 1)[0]] == k - 1 else dropped).append(it)
     if dropped:
         config.hook.pytest_deselected(items=dropped)
     items[:] = kept
