@@ -166,14 +166,13 @@ def test_record_replaces_the_files_that_ran_and_keeps_the_others(tmp_path):
     assert len(first.decode().splitlines()) == 7 + 2 + 2    # a line a file and a heavy test
 
 
-def test_the_checked_in_table_reads_and_names_files_that_exist():
+def test_the_checked_in_table_reads():
+    """tests/durations.json is a table (an entry of a file renamed or gone is only ignored by
+    the split, and dropped by the next --record)."""
     files, heavy = shards.read_table(ROOT / shards.TABLE)
     assert files, "tests/durations.json: write it with python tools/pytest_shards.py --record"
-    for path, entry in files.items():
-        assert (ROOT / path).is_file(), path
-        assert entry and all(entry[k][0] > 0 for k in entry), path
-    for nodeid in heavy:
-        assert (ROOT / nodeid.split("::")[0]).is_file(), nodeid
+    assert all(entry and all(entry[k][0] > 0 for k in entry) for entry in files.values())
+    assert all(seconds >= shards.HEAVY_S - 0.01 for seconds in heavy.values())   # its call
 
 
 def test_combined_words_are_pytests():
