@@ -1,6 +1,6 @@
-"""The test suite on every core: N pytest processes at once, each a share of the test files
-(``--shard K/N``, tests/shards.py: a file's tests together, the files split by their measured
-seconds in tests/durations.json), one verdict for them all.
+"""The test suite on every core: N pytest processes at once, each a share of the tests
+(``--shard K/N``, tests/shards.py: a file's tests together but for the heavy ones, the units
+balanced by their measured seconds in tests/durations.json), one verdict for them all.
 
     python tools/pytest_shards.py              # the quick loop (-m "not slow"), N = the cores
     python tools/pytest_shards.py --all        # the whole suite, slow tests too
@@ -13,13 +13,16 @@ share, the failed tests' and errors' node ids (``FAILED …``, ``ERROR …``: a 
 collect is an error of every share, named once) and one combined line: ``passed: 3180 passed,
 12 skipped in 221.0 s wall (2 shares)`` or ``FAILED: 1 failed, … 1 error …``. The quick loop's
 guard (every module of src/flywheel imported by a quick test: tests/conftest.py) is checked on
-the union of the shares' imports. Exit 0 when every share passed (and the guard holds); 1 on
-any failure, error, collection error, guard failure or a share that ended without its report;
-5 when no share selected a test; 2 for a usage error; 130 when stopped by Ctrl-C (or SIGTERM,
-SIGHUP): each share is then interrupted as pytest is by Ctrl-C, and killed past
-:data:`GRACE_S` seconds. ``--record`` writes the table only after a run that passed; it
-replaces the entries of the files that ran and keeps the others (a file run alone:
-``--record -- tests/render/test_plots.py``).
+the union of the shares' imports.
+
+Exit 0 when every share passed (and the guard holds); 1 on any failure, error, collection
+error, guard failure or a share that ended without its report; 5 when no share selected a
+test; 2 for a usage error; 130 when stopped by Ctrl-C (or SIGTERM, SIGHUP): each share is then
+interrupted as pytest is by Ctrl-C and killed past :data:`GRACE_S` seconds, the failures so far
+named and each share's counts given.
+
+``--record`` writes the table only after a run that passed; it replaces the entries of the
+files that ran and keeps the others (one file again: ``--record -- tests/render/test_plots.py``).
 """
 from __future__ import annotations
 
@@ -37,8 +40,12 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parents[1]
 TABLE = "tests/durations.json"
 
+#: a share runs in a session of its own, and Ctrl-C reaches it through the runner alone
+POSIX = os.name == "posix"
+
 #: seconds a share has to end after Ctrl-C before it is killed
 GRACE_S = 20.0
+KILL = getattr(signal, "SIGKILL", signal.SIGTERM)
 
 #: the combined line's counts, in pytest's order and words
 SAID = (("failed", "failed"), ("passed", "passed"), ("skipped", "skipped"),
@@ -79,8 +86,14 @@ def main(argv: list[str] | None = None) -> int:
                 _wait_and_print(shares)
         except KeyboardInterrupt:
             _stop(shares)
-            print(f"interrupted after {time.monotonic() - t0:.1f} s: "
-                  + ", ".join(f"share {s.k}/{a.n} exit {s.code}" for s in shares), flush=True)
+            outcomes = [_read_json(s.report) for s in shares]
+            for line in sorted({f"FAILED {t}" for o in outcomes for t in o.get("failed", ())}) + \
+                    sorted({f"ERROR {t}" for o in outcomes for t in o.get("errors", ())}):
+                print(line)
+            said = [combined_words(o.get("counts", {})) or "no test ended" for o in outcomes]
+            print(f"interrupted after {time.monotonic() - t0:.1f} s: " + ", ".join(
+                f"share {s.k}/{a.n} exit {s.code} ({w})" for s, w in zip(shares, said)),
+                flush=True)
             return 130
         for s in shares:
             s.outcome = _read_json(s.report)
@@ -99,7 +112,7 @@ def _start(a, k: int, tmp: Path, marks: list[str], whole: bool) -> Share:
            "--shard", f"{k}/{a.n}", "--report-out", str(report),
            *([] if whole else ["--guard-out", str(guard)]), *a.pytest_args]
     proc = subprocess.Popen(cmd, cwd=a.root, stdout=log, stderr=subprocess.STDOUT,
-                            stdin=subprocess.DEVNULL, start_new_session=True)
+                            stdin=subprocess.DEVNULL, start_new_session=POSIX)
     return Share(k, proc, log, report, guard, time.monotonic())
 
 
@@ -113,7 +126,8 @@ class _interrupts_raised:
     def __enter__(self):
         def raise_(signum, frame):
             raise _Interrupted(signum)
-        self.old = {sig: signal.signal(sig, raise_) for sig in (signal.SIGTERM, signal.SIGHUP)}
+        sigs = [getattr(signal, name) for name in ("SIGTERM", "SIGHUP") if hasattr(signal, name)]
+        self.old = {sig: signal.signal(sig, raise_) for sig in sigs}
 
     def __exit__(self, *exc):
         for sig, handler in self.old.items():
@@ -150,16 +164,22 @@ def _stop(shares: list[Share]) -> None:
         try:
             s.code = s.proc.wait(timeout=max(0.0, end - time.monotonic()))
         except subprocess.TimeoutExpired:
-            _signal_group(s.proc, signal.SIGKILL)
+            _signal_group(s.proc, KILL)
             s.code = s.proc.wait()
         except KeyboardInterrupt:            # a second Ctrl-C: no more waiting
-            _signal_group(s.proc, signal.SIGKILL)
+            _signal_group(s.proc, KILL)
             s.code = s.proc.wait()
 
 
 def _signal_group(proc: subprocess.Popen, sig: int) -> None:
+    """``sig`` to the share's process group (POSIX); elsewhere the share is ended."""
     try:
-        os.killpg(proc.pid, sig)
+        if POSIX:
+            os.killpg(proc.pid, sig)
+        elif sig == signal.SIGINT:
+            proc.terminate()
+        else:
+            proc.kill()
     except (ProcessLookupError, PermissionError):
         pass
 
@@ -283,7 +303,8 @@ def write_table(path: Path, table: tuple[dict, dict]) -> None:
     text = ('{\n  "about": "the split of --shard K/N (tests/shards.py): seconds (setup + call + '
             'teardown) per test file, its quick tests and its slow ones apart, and of each '
             'heavy test (its call HEAVY_S of tests/shards.py or longer: a unit of the split '
-            'by itself, not counted in its file); written by python tools/pytest_shards.py --record",\n'
+            'by itself, not counted in its file); written by python tools/pytest_shards.py '
+            '--record",\n'
             '  "files": {\n' + ",\n".join(lines) + '\n  },\n'
             '  "tests": {\n' + ",\n".join(tests) + "\n  }\n}\n")
     tmp = path.with_name(path.name + ".tmp")

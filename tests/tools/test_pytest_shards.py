@@ -220,7 +220,8 @@ def test_a_failure_in_one_share_fails_the_run_and_is_named(tmp_path, capsys):
     heads = [i for i, ln in enumerate(lines) if ln.startswith("=" * 30 + " share ")]
     assert len(heads) == 2
     for start, end in zip(heads, heads[1:] + [len(lines)]):
-        ends = [ln for ln in lines[start:end] if re.fullmatch(r"(=+ )?\d+ \w.* in [\d.]+s( =+)?", ln)]
+        summary = r"(=+ )?\d+ \w.* in [\d.]+s( =+)?"          # pytest's last line
+        ends = [ln for ln in lines[start:end] if re.fullmatch(summary, ln)]
         assert ends == [lines[end - 1]], lines[start:end]    # its own summary, last
 
 
@@ -261,7 +262,8 @@ def test_ctrl_c_stops_every_share_and_the_run_says_so(tmp_path):
     proc.send_signal(signal.SIGINT)
     out, _ = proc.communicate(timeout=runner.GRACE_S + 30)
     assert proc.returncode == 130, out
-    assert out.splitlines()[-1].startswith("interrupted after ")
+    assert re.fullmatch(r"interrupted after [\d.]+ s: share 1/2 exit 2 \(no test ended\), "
+                        r"share 2/2 exit 2 \(no test ended\)", out.splitlines()[-1]), out
     for pid in pids.iterdir():
         with pytest.raises(ProcessLookupError):
             os.kill(int(pid.name), 0)
