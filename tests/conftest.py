@@ -17,6 +17,9 @@ from pathlib import Path
 
 import pytest
 
+#: ``--shard K/N``, ``--report-out``, ``--guard-out``: the shares of tools/pytest_shards.py
+pytest_plugins = ("shards",)
+
 #: test modules all of whose tests are slow (and why)
 SLOW_MODULES = {
     "tests/test_mutations.py": "mutation survey: hundreds of mutated cases through every command",
@@ -159,6 +162,11 @@ SLOW_TESTS = {
     "tests/test_work_bounds.py::test_stiff_start_up_lsoda_agrees_with_dop853[100.0-3.0]",
     "tests/test_work_bounds.py::test_stiff_start_up_beyond_the_resolving_steps_is_still_refused",
     "tests/dynamics/test_timedomain.py::test_slow_motor_on_a_pulsating_load_reaches_the_motor_line_speed",
+    # tools/pytest_shards.py on small trees of its own: two pytest processes a test
+    "tests/tools/test_pytest_shards.py::test_a_failure_in_one_share_fails_the_run_and_is_named",
+    "tests/tools/test_pytest_shards.py::test_a_collection_error_fails_the_run_and_is_named_once",
+    "tests/tools/test_pytest_shards.py::test_all_passed_is_exit_0_and_record_writes_a_table_the_split_then_reads",
+    "tests/tools/test_pytest_shards.py::test_ctrl_c_stops_every_share_and_the_run_says_so",
 }
 
 
@@ -210,52 +218,6 @@ def pytest_collection_modifyitems(config, items):
     if unknown and _whole_tree(config):
         raise pytest.UsageError("tests/conftest.py names tests that do not exist: "
                                 + ", ".join(unknown))
-    shard = config.getoption("shard", None)
-    if shard:
-        _keep_share(config, items, shard)
-
-
-def pytest_addoption(parser):
-    parser.addoption("--shard", default=None, metavar="K/N",
-                     help="run the K-th of N shares of the test files (1 ≤ K ≤ N): "
-                          "tools/pytest_shards.py runs the N at once")
-    parser.addoption("--guard-out", default=None, metavar="FILE",
-                     help="with --shard: write the modules the share's tests imported to FILE "
-                          "(JSON) for tools/pytest_shards.py to check their union")
-
-
-#: a slow test's weight in the shares (a quick one: 1): about the ratio of their mean times
-SLOW_WEIGHT = 20
-
-
-def _keep_share(config, items, shard: str) -> None:
-    """Keep the items of the K-th of N shares of the test files (a file's tests stay together:
-    its module-scoped fixtures run once): the files in order of their weight — a quick test 1,
-    a slow one :data:`SLOW_WEIGHT` (a process, a PDF, a browser) — most first, each to the
-    share with the least so far (ties: the lower share)."""
-    try:
-        k, n = (int(v) for v in shard.split("/"))
-        assert 1 <= k <= n
-    except (ValueError, AssertionError):
-        raise pytest.UsageError(f"--shard {shard}: not K/N with 1 ≤ K ≤ N") from None
-    markexpr = config.getoption("markexpr", "") or ""
-    counted: dict[str, int] = {}
-    for item in items:
-        slow = item.get_closest_marker("slow") is not None
-        weight = 0 if slow and "not slow" in markexpr else SLOW_WEIGHT if slow else 1
-        path = item.nodeid.split("::", 1)[0]
-        counted[path] = counted.get(path, 0) + weight
-    load, share_of = [0] * n, {}
-    for path in sorted(counted, key=lambda p: (-counted[p], p)):
-        s = min(range(n), key=lambda i: (load[i], i))
-        share_of[path] = s
-        load[s] += counted[path]
-    kept, dropped = [], []
-    for it in items:
-        (kept if share_of[it.nodeid.split("::", 1)[0]] == k - 1 else dropped).append(it)
-    if dropped:
-        config.hook.pytest_deselected(items=dropped)
-    items[:] = kept
 
 
 @pytest.fixture(autouse=True)

@@ -168,20 +168,54 @@ def _fill_answers(folder: Path) -> None:
     sheet.write_text("\n".join(rows) + "\n", encoding="utf-8")
 
 
+def _draws(args: list[str]) -> bool:
+    """The command draws figures or sheets (its plot workers are what a whole process adds):
+    ``run`` without ``--no-plots``, ``task2`` (its plots), ``variants`` (its sheets)."""
+    return (args[0] == "run" and "--no-plots" not in args) or args[0] in {"task2", "variants"}
+
+
+def _commands(path: Path) -> list[list[str]]:
+    """The `flywheel …` command lines of a page's ``sh`` blocks, in order, each once (a line
+    shown again, as the install line's run is again «Первый запуск», would be a rerun in the
+    same folder: reruns are tests/cli/test_cli_run.py's)."""
+    found = []
+    for block in _blocks(path, "sh"):
+        for line in block.splitlines():
+            line = line.strip()
+            if "flywheel " not in line or line.startswith("#"):
+                continue
+            args = shlex.split(line[line.index("flywheel ") + len("flywheel "):])
+            if args not in found:
+                found.append(args)
+    return found
+
+
+#: the pages that show commands (each run in a scratch copy of its own, as its reader would)
+COMMANDED = [p for p in GUIDES if _commands(p)]
+
+
+def test_the_guides_show_every_command():
+    """The pages below run every kind of command a student and a teacher type."""
+    shown = [a for p in COMMANDED for a in _commands(p)]
+    assert len(shown) >= 30 and {a[0] for a in shown} >= {"run", "check", "task2", "variants",
+                                                          "grade"}
+    assert {p.name for p in COMMANDED} >= {"student.md", "teacher.md"} | {f"{k}.md"
+                                                                         for k in KINDS}
+
+
 @pytest.mark.slow
-def test_every_command_shown_runs(tmp_path):
+@pytest.mark.parametrize("path", COMMANDED, ids=lambda p: str(p.relative_to(ROOT / "docs" / "ru")))
+def test_every_command_shown_runs(path, tmp_path):
+    """A page's commands in order, in a scratch copy of cases/ of its own; one that draws as
+    a whole process (its own plot workers), one that draws nothing (``check``, ``run
+    --no-plots``, ``grade``) in-process: the same command line, without an interpreter
+    started for it."""
     shutil.copytree(ROOT / "cases", tmp_path / "cases")
-    for path in GUIDES:
-        for block in _blocks(path, "sh"):
-            for line in block.splitlines():
-                line = line.strip()
-                if "flywheel " not in line or line.startswith("#"):
-                    continue
-                args = shlex.split(line[line.index("flywheel ") + len("flywheel "):])
-                if args[0] == "grade":
-                    _fill_answers(tmp_path / Path(args[2]).parent)
-                res = _process(args, tmp_path)
-                assert res.returncode == 0, (path.name, line, res.stderr[-2000:])
+    for args in _commands(path):
+        if args[0] == "grade":
+            _fill_answers(tmp_path / Path(args[2]).parent)
+        res = (_process if _draws(args) else _flywheel)(args, tmp_path)
+        assert res.returncode == 0, (path.name, shlex.join(args), res.stderr[-2000:])
 
 
 def _number(cell: str) -> tuple[float, float]:
