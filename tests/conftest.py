@@ -135,6 +135,7 @@ SLOW_TESTS = {
     "tests/constant_inertia/test_task2_motion.py::test_cli_new_cases_run",
     "tests/cli/test_outputs.py::test_run_plots_choice[record-True]",
     "tests/cli/test_outputs.py::test_drawn_in_process_the_progress_is_counted_too",
+    "tests/render/test_plot_start.py::test_the_started_worker_draws_the_bytes_drawn_in_process",
     "tests/cli/test_task2_cli.py::test_lang_ru_plot_labels",
     "tests/dynamics/test_kinematics_only.py::test_animate_and_a_given_motion_option",
     "tests/dynamics/test_forces_run.py::test_hodograph_angle_labels_do_not_overlap[ru-compressor]",

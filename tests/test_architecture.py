@@ -149,8 +149,8 @@ def _span(func: ast.FunctionDef) -> int:
 
 def _registered_commands() -> dict[str, tuple[str, str]]:
     """command name → (cli module, function) of every ``app.command("name")(function)`` in
-    cli/__init__.py, the function found through that file's ``from flywheel.cli.X import``."""
-    tree = ast.parse((CLI / "__init__.py").read_text(encoding="utf-8"))
+    cli/commands.py, the function found through that file's ``from flywheel.cli.X import``."""
+    tree = ast.parse((CLI / "commands.py").read_text(encoding="utf-8"))
     where = {a.asname or a.name: node.module.rpartition(".")[2]
              for node in ast.walk(tree) if isinstance(node, ast.ImportFrom)
              and (node.module or "").startswith("flywheel.cli.") for a in node.names}
@@ -160,7 +160,7 @@ def _registered_commands() -> dict[str, tuple[str, str]]:
                 and ast.unparse(node.func.func) == "app.command"
                 and len(node.args) == 1 and isinstance(node.args[0], ast.Name)):
             name = node.func.args[0].value
-            found[name] = (where.get(node.args[0].id, "__init__"), node.args[0].id)
+            found[name] = (where.get(node.args[0].id, "commands"), node.args[0].id)
     return found
 
 
@@ -187,7 +187,7 @@ def test_every_command_is_found():
 
 
 def test_command_functions_are_thin():
-    """Each command function of cli/ (registered in cli/__init__.py, or named ``*_command``)
+    """Each command function of cli/ (registered in cli/commands.py, or named ``*_command``)
     spans at most COMMAND_MOST_LINES lines: parse → load → solve → write."""
     measured = {(m, f) for m, f in _registered_commands().values()}
     measured |= {(p.stem, name) for p in CLI.glob("*.py") for name in _functions(p.stem)

@@ -11,63 +11,16 @@ import os
 # is kept)
 os.environ.setdefault("PYDANTIC_DISABLE_PLUGINS", "__all__")
 
-import typer  # noqa: E402
 
-from flywheel.cli.options import HelpCommand, HelpGroup
+def __getattr__(name: str):
+    """``flywheel.cli.app``: typer's application (cli/commands.py), imported when first asked
+    for: the console entry point starts the first plot worker before it (``main``)."""
+    if name == "app":
+        from flywheel.cli.commands import app
 
-app = typer.Typer(
-    cls=HelpGroup,
-    add_completion=True,
-    no_args_is_help=True,
-    help="Dynamic analysis of machines: kinematics, reduction, flywheel sizing, true motion.",
-    pretty_exceptions_enable=False,
-)
-
-
-from flywheel.cli.options import be_quiet, lang_of_argv, state  # noqa: E402
-
-
-def _version(value: bool) -> None:
-    if value:
-        from flywheel import __version__
-
-        typer.echo(f"flywheel {__version__}")
-        raise typer.Exit()
-
-
-@app.callback()
-def _root(
-    version: bool = typer.Option(False, "--version", is_eager=True, callback=_version,
-                                 help="Print the version and exit."),
-    debug: bool = typer.Option(False, "--debug", help="On an internal error (a bug), print "
-                               "the Python traceback too."),
-    quiet: bool = typer.Option(False, "--quiet", "-q", help="Print nothing but errors (files "
-                               "are written as usual; --json still prints its JSON)."),
-) -> None:
-    """Dynamic analysis of machines: kinematics, reduction, flywheel sizing, true motion."""
-    state.lang, state.quiet, state.debug, state.stdout = state.argv_lang, False, debug, None
-    if quiet:
-        be_quiet()
-
-
-from flywheel.cli.aggregate import aggregate_command  # noqa: E402
-from flywheel.cli.drawings import drawings_command  # noqa: E402
-from flywheel.cli.duty_cycle import duty_cycle_command  # noqa: E402
-from flywheel.cli.new import new_command  # noqa: E402
-from flywheel.cli.run import check_command, run_command, schema_command  # noqa: E402
-from flywheel.cli.task2 import task2_command  # noqa: E402
-from flywheel.cli.teaching import grade_command, variants_command  # noqa: E402
-
-app.command("schema", cls=HelpCommand)(schema_command)
-app.command("check", cls=HelpCommand)(check_command)
-app.command("run", cls=HelpCommand)(run_command)
-app.command("drawings", cls=HelpCommand)(drawings_command)
-app.command("task2", cls=HelpCommand)(task2_command)
-app.command("aggregate", cls=HelpCommand)(aggregate_command)
-app.command("duty-cycle", cls=HelpCommand)(duty_cycle_command)
-app.command("variants", cls=HelpCommand)(variants_command)
-app.command("grade", cls=HelpCommand)(grade_command)
-app.command("new", cls=HelpCommand)(new_command)
+        globals()["app"] = app
+        return app
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 
 class Stopped(BaseException):
@@ -157,6 +110,12 @@ def _is_usage_error(exc: Exception) -> bool:
 GC_THRESHOLDS = (200_000, 30, 30)
 
 
+def _app():
+    """typer's application: this module's ``app`` (cli/commands.py's, or one a test put
+    here)."""
+    return globals()["app"] if "app" in globals() else __getattr__("app")
+
+
 def main() -> None:
     """Console-script entry point: exit 130 on Ctrl-C, 143 on SIGTERM, with one line."""
     import gc
@@ -164,11 +123,17 @@ def main() -> None:
     import sys
 
     gc.set_threshold(*GC_THRESHOLDS)
+    from flywheel.render import plot_start, plot_wait
+
+    # a run's first plot worker, started before the imports below
+    plot_start.start(sys.argv[1:], plot_wait.wait_and_draw)
     signal.signal(signal.SIGINT, _stop)
     signal.signal(signal.SIGTERM, _stop)
-    state.lang = state.argv_lang = lang_of_argv(sys.argv[1:])   # an error of the parser itself
     try:
-        code = app(standalone_mode=False)
+        from flywheel.cli.options import lang_of_argv, state
+
+        state.lang = state.argv_lang = lang_of_argv(sys.argv[1:])  # an error of the parser
+        code = _app()(standalone_mode=False)
         if isinstance(code, int) and code:
             sys.exit(code)
     except BrokenPipeError:                   # `flywheel grade … | head`: quiet
@@ -198,6 +163,8 @@ def main() -> None:
         from flywheel.cli.guard import say_error
         from flywheel.errors import Notice
 
+        from flywheel.cli.options import state
+
         if state.debug:
             import traceback
 
@@ -210,6 +177,7 @@ def main() -> None:
         say_error(text)
         sys.exit(1)
     finally:
+        plot_start.release()            # not claimed by the run: it drew nothing
         # the command is over (its outputs whole, or none): a Ctrl-C during the interpreter's
         # exit (atexit: the plot workers joined) is too late to stop anything and would print
         # "Exception ignored in atexit callback" with a traceback: ignored; a SIGTERM is said

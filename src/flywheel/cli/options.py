@@ -177,7 +177,7 @@ class _UserWords:
 
 
 class HelpCommand(_UserWords, TyperCommand):
-    """Every command's class (cli/__init__.py): its help page in the user's words."""
+    """Every command's class (cli/commands.py): its help page in the user's words."""
 
 
 class HelpGroup(_UserWords, TyperGroup):

@@ -27,6 +27,8 @@ from flywheel.render.catalogue import words
 from flywheel.render.plots_scheme import (  # noqa: F401  (public here: animate, sheets)
     draw_scheme, draw_scheme_at, draw_scheme_fixed, scheme_names)
 from flywheel.render.numbers import typeset_params
+from flywheel.render import plot_start
+from flywheel.render.plot_start import worker_signals
 from flywheel.units import PA_PER_MPA
 from flywheel.render.choices import PLOT_CHOICES
 
@@ -600,45 +602,29 @@ def _worker(results, folder: Path, lang: str, order: list[int], counter, fmt: st
             dpi: int = fg.DPI, done=None, parent: int | None = None) -> None:
     """A forked plotting process: it dies with its parent (Linux: PR_SET_PDEATHSIG), leaves
     Ctrl-C to the parent (which stops it) and ends quietly on SIGTERM."""
-    _worker_signals(parent)
+    worker_signals(parent)
     _save_next(results, folder, lang, order, counter, fmt, dpi, done)
-
-
-def _worker_signals(parent: int | None) -> None:
-    """A plotting process's signals: Ctrl-C ignored (its parent stops it), SIGTERM ends it, and
-    it dies with ``parent`` (Linux: PR_SET_PDEATHSIG; gone already: it ends now). Its garbage
-    collector is the interpreter's default again (cli/__init__.py GC_THRESHOLDS): a figure
-    dropped after saving is garbage of cycles, freed figure by figure."""
-    import gc
-    import os
-    import signal
-
-    gc.set_threshold(700, 10, 10)         # the interpreter's default
-
-    signal.signal(signal.SIGINT, signal.SIG_IGN)
-    signal.signal(signal.SIGTERM, signal.SIG_DFL)
-    signal.pthread_sigmask(signal.SIG_UNBLOCK, {signal.SIGINT, signal.SIGTERM})  # held at fork
-    try:
-        import ctypes
-
-        ctypes.CDLL(None, use_errno=True).prctl(1, signal.SIGKILL)   # 1 = PR_SET_PDEATHSIG
-    except (OSError, AttributeError):
-        pass                              # not Linux: the parent still terminates it
-    if parent is not None and os.getppid() != parent:
-        os._exit(1)                       # the parent died before the line above
 
 
 def _first_worker(results, folder: Path, lang: str, order: list[int], counter, fmt: str,
                   dpi: int, done, parent: int, others: int) -> None:
     """The first plotting process: it imports matplotlib (0.5 s) while the parent writes the
-    tables and texts, then forks ``others`` workers that share that import, and draws with
-    them. A SIGTERM (the parent stopping it) ends its workers first, then it."""
+    tables and texts, then draws with ``others`` workers it forks (:func:`draw_with_others`).
+    (Started with the process instead, it is render/plot_start.py's.)"""
+    worker_signals(parent)
+    fg.prepare()                          # imported once here, for every worker
+    draw_with_others(results, folder, lang, order, counter, fmt, dpi, done, others)
+
+
+def draw_with_others(results, folder: Path, lang: str, order: list[int], counter, fmt: str,
+                     dpi: int, done, others: int) -> None:
+    """In the first plotting process, matplotlib imported: fork ``others`` workers that share
+    that import and draw with them. A SIGTERM (the parent stopping it) ends its workers
+    first, then it."""
     import multiprocessing as mp
     import os
     import signal
 
-    _worker_signals(parent)
-    fg.prepare()                          # imported once here, for every worker
     ctx = mp.get_context("fork")
     me = os.getpid()
     workers = [ctx.Process(target=_worker, args=(results, folder, lang, order, counter, fmt,
@@ -690,6 +676,13 @@ class PlotJob:
         self._draw_here = (results, folder, lang, order, fmt, dpi)
         self.children: list = []
         self._done = None
+        early = plot_start.claim()          # started with the process (render/plot_start.py)
+        if early is not None:
+            if names and jobs > 1 and early.send(
+                    (results, folder, lang, order, fmt, dpi, min(jobs, len(names)) - 1)):
+                self.children, self._done = [early.process], early.done
+                return
+            early.end()
         if names and jobs > 1 and "fork" in mp.get_all_start_methods():
             import os
 
