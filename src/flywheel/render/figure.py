@@ -61,7 +61,7 @@ def style(lang: str = "en"):
         return
     import matplotlib
 
-    from flywheel.render import mathparse
+    from flywheel.render import mathparse, ticks
     from flywheel.render.numbers import typography
 
     with matplotlib.rc_context(), typography(lang):
@@ -73,6 +73,7 @@ def style(lang: str = "en"):
         restore_ticks = _russian_ticks() if lang == "ru" else (lambda: None)
         restore_math = _share_mathtext()
         restore_parse = mathparse.install()
+        restore_copies = ticks.install()
         restore_markers = _copy_markers_shallow()
         restore_layouts = _share_glyph_layouts()
         restore_bitmaps = _share_glyph_bitmaps()
@@ -84,6 +85,7 @@ def style(lang: str = "en"):
             restore_bitmaps()
             restore_layouts()
             restore_markers()
+            restore_copies()
             restore_parse()
             restore_math()
             restore_ticks()
