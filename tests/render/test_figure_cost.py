@@ -56,16 +56,18 @@ def test_the_caches_keep_every_pixel():
 
 
 def test_each_mathtext_label_parsed_once_in_a_style(monkeypatch):
-    from matplotlib import _mathtext
+    """Counted where matplotlib's cache of parses calls the parse (whichever parser reads
+    the label: render/mathparse.py's or pyparsing's)."""
+    from matplotlib.mathtext import MathTextParser
 
     parsed: list[str] = []
-    own = _mathtext.Parser.parse
+    own = MathTextParser.__dict__["_parse_cached"].__wrapped__
 
     def counting(self, s, *args, **kw):
         parsed.append(s)
         return own(self, s, *args, **kw)
 
-    monkeypatch.setattr(_mathtext.Parser, "parse", counting)
+    monkeypatch.setattr(MathTextParser.__dict__["_parse_cached"], "__wrapped__", counting)
     with fg.style():
         _draw()
         _draw()                                  # a second figure: new renderers
@@ -98,19 +100,22 @@ def test_matplotlib_given_back_after_the_style():
     from matplotlib.markers import MarkerStyle
     from matplotlib.mathtext import MathTextParser
 
+    from matplotlib import _mathtext, axis
     from matplotlib.ft2font import FT2Font
 
     def now():
         return (RendererAgg.__dict__["draw_text"], MarkerStyle.__dict__["_set_marker"],
                 MathTextParser.__dict__["_parse_cached"],
                 RendererAgg.__dict__["_draw_text_glyphs_and_boxes"],
-                FT2Font.__dict__["get_sfnt_table"])
+                FT2Font.__dict__["get_sfnt_table"], _mathtext.Parser.__dict__["parse"],
+                _mathtext.TruetypeFonts.__dict__["_get_info"], axis.Axis.__dict__["_get_tick"])
 
     before = now()
     with fg.style():
         assert RendererAgg.__dict__["draw_text"] is not before[0]
         assert RendererAgg.__dict__["_draw_text_glyphs_and_boxes"] is not before[3]
         assert FT2Font.__dict__["get_sfnt_table"] is not before[4]
+        assert now()[5:] != before[5:] and all(a is not b for a, b in zip(now()[5:], before[5:]))
         _draw()
     assert now() == before
 
