@@ -178,3 +178,51 @@ def test_strokes_drawn_as_broken_lines_keep_the_pixels_of_a_line_each():
 
     with fg.style():
         assert png(True) == png(False)
+
+
+def _constrained():
+    """A figure laid out by matplotlib's constrained layout, as plots_extra makes them."""
+    import numpy as np
+    from matplotlib.figure import Figure
+
+    fig = Figure(figsize=(6.0, 5.0), dpi=fg.DPI, layout="constrained")
+    axd = fig.subplot_mosaic([["a", "a"], ["b", "c"]], height_ratios=[1.1, 1])
+    x = np.linspace(0.0, 10.0, 40)
+    for k, ax in enumerate(axd.values()):
+        ax.plot(x, 10.0 ** k * np.sin(x + k), label=rf"$\omega_{k}$ of a long legend {k}")
+        ax.set_ylabel(r"$\Delta T_{I}$ [J]")
+        ax.legend(loc="upper right")
+    fig.suptitle("a title\nof two lines", fontsize=11)
+    return fig
+
+
+@pytest.mark.parametrize("dpi", [77, fg.DPI, 200])
+def test_constrained_layout_run_without_savefigs_extra_draw(dpi, monkeypatch):
+    """fg.save lays a constrained figure out as savefig does, without savefig's drawing of it
+    with nothing rendered: the figure drawn once, not twice; the same pixels; its layout engine
+    back after."""
+    import numpy as np
+    from matplotlib.figure import Figure
+
+    with fg.style():
+        reference = _constrained()
+        raw = io.BytesIO()
+        reference.savefig(raw, format="rgba", dpi=dpi)
+        w, h = (int(x * dpi) for x in reference.get_size_inches())
+        expected = fg.png_bytes(np.frombuffer(raw.getbuffer(), np.uint8).reshape(h, w, 4), dpi)
+
+        draws: list[int] = []
+        own = Figure.draw
+
+        def counting(self, renderer):
+            draws.append(1)
+            return own(self, renderer)
+
+        monkeypatch.setattr(Figure, "draw", counting)
+        fig = _constrained()
+        engine = fig.get_layout_engine()
+        out = io.BytesIO()
+        fg.save(fig, out, dpi=dpi)
+    assert out.getvalue() == expected
+    assert len(draws) == 1
+    assert fig.get_layout_engine() is engine

@@ -635,7 +635,8 @@ def save(fig, path, fmt: str = "png", dpi: int = DPI) -> None:
         import io
 
         raw = io.BytesIO()
-        fig.savefig(raw, format="rgba", dpi=dpi)       # the pixels savefig's PNG would have
+        with _laid_out(fig, dpi):
+            fig.savefig(raw, format="rgba", dpi=dpi)   # the pixels savefig's PNG would have
     w, h = (int(x * dpi) for x in fig.get_size_inches())  # as the Agg canvas sizes itself
     pixels = np.frombuffer(raw.getbuffer(), np.uint8)
     if pixels.size != w * h * 4:          # not the canvas this was written for: its own PNG
@@ -648,6 +649,32 @@ def save(fig, path, fmt: str = "png", dpi: int = DPI) -> None:
     else:
         with open(path, "wb") as out:
             out.write(data)
+
+
+@contextmanager
+def _laid_out(fig, dpi: int):
+    """``fig`` (plots_extra's, with matplotlib's constrained layout) laid out at ``dpi`` as
+    ``savefig`` lays it out — the axes' aspects applied, then the layout engine run — without
+    the drawing ``savefig`` adds to it (every artist drawn with nothing rendered: a third of
+    such a figure's saving); no engine while saving (``savefig`` turns it off for its drawing
+    too), the figure's own back after. A figure without an engine: nothing done."""
+    engine = fig.get_layout_engine()
+    if engine is None or fig.__dict__.get("_layout_engine") is not engine \
+            or not hasattr(fig, "_get_draw_artists"):
+        yield
+        return
+    from matplotlib import cbook
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+    canvas = fig.canvas
+    try:
+        with cbook._setattr_cm(fig, dpi=dpi):
+            fig._get_draw_artists(FigureCanvasAgg(fig).get_renderer())   # apply_aspect
+            engine.execute(fig)
+    finally:
+        fig.set_canvas(canvas)
+    with cbook._setattr_cm(fig, _layout_engine=None):
+        yield
 
 
 def png_bytes(rgba, dpi: int) -> bytes:
