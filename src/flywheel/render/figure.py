@@ -431,7 +431,14 @@ def _remember_fonts():
 def prepare() -> None:
     """Import what drawing and saving a figure needs (matplotlib's figure and Agg canvas: 0.35 s
     of CPU) and build mathtext's parser (its grammar, 25 ms): called by the first plot worker
-    before it forks the others, so that they share this instead of each making its own."""
+    before it forks the others, so that they share this instead of each making its own. Then
+    every object made so far (the modules, the results) is moved out of the garbage
+    collector's generations (``gc.freeze``): it lives as long as the worker, and the
+    collector's passes while drawing — about 260 for the compressor's figures — no longer
+    traverse it (their time 0.17 – 0.24 s → 0.07 – 0.08 s), nor touch its memory pages in the
+    forked workers."""
+    import gc
+
     import matplotlib.backends.backend_agg  # noqa: F401
     import matplotlib.figure  # noqa: F401
     from matplotlib import _mathtext
@@ -439,6 +446,7 @@ def prepare() -> None:
 
     if getattr(MathTextParser, "_parser", None) is None and hasattr(_mathtext, "Parser"):
         MathTextParser._parser = _mathtext.Parser()         # as its first parse would
+    gc.freeze()
 
 
 def figure(size, nrows=1, ncols=1, sharex=False, squeeze=True, *, left=0.85, right=LEGEND_W,
