@@ -232,13 +232,12 @@ def _share_glyph_infos(_mathtext):
     font's size — and the metrics kept by that glyph, size, dpi, loading flags and font set's
     class. matplotlib's own cache per font set stays in front of this one, so each font set
     sizes its fonts exactly when it would have. Returns the function that undoes it."""
-    from flywheel.render.figure import _Bounded
-
     cls = getattr(_mathtext, "TruetypeFonts", None)
     own = None if cls is None else cls.__dict__.get("_get_info")
     if own is None or not hasattr(cls, "_get_glyph"):
         return lambda: None
-    infos = _Bounded(20000)
+    infos: dict = {}
+    most = 20000                      # emptied rather than grown past it, as figure's caches
 
     def get_info(self, fontname, font_class, sym, fontsize, dpi):
         font, num, slanted = self._get_glyph(fontname, font_class, sym)
@@ -246,7 +245,9 @@ def _share_glyph_infos(_mathtext):
         key = (type(self), font, num, slanted, fontsize, dpi, self.load_glyph_flags)
         found = infos.get(key)
         if found is None:
-            found = infos.put(key, own(self, fontname, font_class, sym, fontsize, dpi))
+            if len(infos) > most:
+                infos.clear()
+            found = infos[key] = own(self, fontname, font_class, sym, fontsize, dpi)
         return found
 
     cls._get_info = get_info
