@@ -82,6 +82,30 @@ def test_simple_labels_give_matplotlibs_own_parse(size):
         assert a == b == c, s
 
 
+def _labels_figure() -> bytes:
+    """A figure of every simple label, in three sizes, as a PNG."""
+    import io
+
+    fig, ax = fg.figure((8.0, 9.0), right=0.3)
+    ax.set_axis_off()
+    for k, s in enumerate(SIMPLE):
+        fig.text(0.02, 0.97 - k * 0.034, s, fontsize=(9.0, 8.0, 11.0)[k % 3])
+    out = io.BytesIO()
+    fg.save(fig, out)
+    return out.getvalue()
+
+
+def test_simple_labels_drawn_with_matplotlibs_pixels():
+    import matplotlib
+
+    with matplotlib.rc_context():
+        matplotlib.rcdefaults()
+        matplotlib.rcParams.update(fg.RC)
+        reference = _labels_figure()            # pyparsing, none of the style's caches
+    with fg.style():
+        assert _labels_figure() == reference
+
+
 def test_other_labels_left_to_matplotlibs_parser():
     assert all(mathparse.read(s) is None for s in LEFT)
     assert _parses(mathparse.parse, LEFT) == [None] * len(LEFT)

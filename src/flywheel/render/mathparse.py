@@ -242,7 +242,8 @@ def _share_glyph_infos(_mathtext):
     def get_info(self, fontname, font_class, sym, fontsize, dpi):
         font, num, slanted = self._get_glyph(fontname, font_class, sym)
         font.set_size(fontsize, dpi)
-        key = (type(self), font, num, slanted, fontsize, dpi, self.load_glyph_flags)
+        key = (type(self), font, num, slanted, fontsize, dpi,
+               getattr(self, "load_glyph_flags", None))
         found = infos.get(key)
         if found is None:
             if len(infos) > most:
