@@ -240,3 +240,16 @@ def test_prepare_moves_what_exists_out_of_the_collectors_generations():
         assert gc.get_freeze_count() >= before + len(made)
     finally:
         gc.unfreeze()                               # the test process keeps nothing frozen
+
+
+def test_png_bytes_copies_opaque_pixels_as_three_byte_items():
+    """An opaque canvas's rows copied as 3-byte items give the bytes of the copy byte by byte
+    (the general path, taken by an array that is not C-contiguous); decoded, the pixels."""
+    import numpy as np
+    from PIL import Image
+
+    rgba = np.random.default_rng(7).integers(0, 256, (37, 53, 4), dtype=np.uint8)
+    rgba[..., 3] = 255
+    quick = fg.png_bytes(rgba, 120)
+    assert quick == fg.png_bytes(np.asfortranarray(rgba), 120)
+    assert np.array_equal(np.asarray(Image.open(io.BytesIO(quick))), rgba[..., :3])
