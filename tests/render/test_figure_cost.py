@@ -56,16 +56,18 @@ def test_the_caches_keep_every_pixel():
 
 
 def test_each_mathtext_label_parsed_once_in_a_style(monkeypatch):
-    from matplotlib import _mathtext
+    """Counted where matplotlib's cache of parses calls the parse (whichever parser reads
+    the label: render/mathparse.py's or pyparsing's)."""
+    from matplotlib.mathtext import MathTextParser
 
     parsed: list[str] = []
-    own = _mathtext.Parser.parse
+    own = MathTextParser.__dict__["_parse_cached"].__wrapped__
 
     def counting(self, s, *args, **kw):
         parsed.append(s)
         return own(self, s, *args, **kw)
 
-    monkeypatch.setattr(_mathtext.Parser, "parse", counting)
+    monkeypatch.setattr(MathTextParser.__dict__["_parse_cached"], "__wrapped__", counting)
     with fg.style():
         _draw()
         _draw()                                  # a second figure: new renderers
@@ -98,19 +100,22 @@ def test_matplotlib_given_back_after_the_style():
     from matplotlib.markers import MarkerStyle
     from matplotlib.mathtext import MathTextParser
 
+    from matplotlib import _mathtext, axis
     from matplotlib.ft2font import FT2Font
 
     def now():
         return (RendererAgg.__dict__["draw_text"], MarkerStyle.__dict__["_set_marker"],
                 MathTextParser.__dict__["_parse_cached"],
                 RendererAgg.__dict__["_draw_text_glyphs_and_boxes"],
-                FT2Font.__dict__["get_sfnt_table"])
+                FT2Font.__dict__["get_sfnt_table"], _mathtext.Parser.__dict__["parse"],
+                _mathtext.TruetypeFonts.__dict__["_get_info"], axis.Axis.__dict__["_get_tick"])
 
     before = now()
     with fg.style():
         assert RendererAgg.__dict__["draw_text"] is not before[0]
         assert RendererAgg.__dict__["_draw_text_glyphs_and_boxes"] is not before[3]
         assert FT2Font.__dict__["get_sfnt_table"] is not before[4]
+        assert now()[5:] != before[5:] and all(a is not b for a, b in zip(now()[5:], before[5:]))
         _draw()
     assert now() == before
 
@@ -173,3 +178,78 @@ def test_strokes_drawn_as_broken_lines_keep_the_pixels_of_a_line_each():
 
     with fg.style():
         assert png(True) == png(False)
+
+
+def _constrained():
+    """A figure laid out by matplotlib's constrained layout, as plots_extra makes them."""
+    import numpy as np
+    from matplotlib.figure import Figure
+
+    fig = Figure(figsize=(6.0, 5.0), dpi=fg.DPI, layout="constrained")
+    axd = fig.subplot_mosaic([["a", "a"], ["b", "c"]], height_ratios=[1.1, 1])
+    x = np.linspace(0.0, 10.0, 40)
+    for k, ax in enumerate(axd.values()):
+        ax.plot(x, 10.0 ** k * np.sin(x + k), label=rf"$\omega_{k}$ of a long legend {k}")
+        ax.set_ylabel(r"$\Delta T_{I}$ [J]")
+        ax.legend(loc="upper right")
+    fig.suptitle("a title\nof two lines", fontsize=11)
+    return fig
+
+
+@pytest.mark.parametrize("dpi", [77, fg.DPI, 200])
+def test_constrained_layout_run_without_savefigs_extra_draw(dpi, monkeypatch):
+    """fg.save lays a constrained figure out as savefig does, without savefig's drawing of it
+    with nothing rendered: the figure drawn once, not twice; the same pixels; its layout engine
+    back after."""
+    import numpy as np
+    from matplotlib.figure import Figure
+
+    with fg.style():
+        reference = _constrained()
+        raw = io.BytesIO()
+        reference.savefig(raw, format="rgba", dpi=dpi)
+        w, h = (int(x * dpi) for x in reference.get_size_inches())
+        expected = fg.png_bytes(np.frombuffer(raw.getbuffer(), np.uint8).reshape(h, w, 4), dpi)
+
+        draws: list[int] = []
+        own = Figure.draw
+
+        def counting(self, renderer):
+            draws.append(1)
+            return own(self, renderer)
+
+        monkeypatch.setattr(Figure, "draw", counting)
+        fig = _constrained()
+        engine = fig.get_layout_engine()
+        out = io.BytesIO()
+        fg.save(fig, out, dpi=dpi)
+    assert out.getvalue() == expected
+    assert len(draws) == 1
+    assert fig.get_layout_engine() is engine
+
+
+def test_prepare_moves_what_exists_out_of_the_collectors_generations():
+    """After prepare(), the objects made before it are frozen (gc.freeze): the collector's
+    passes while drawing skip them."""
+    import gc
+
+    before = gc.get_freeze_count()
+    made = [[k] for k in range(2000)]               # 2000 containers the collector tracks
+    try:
+        fg.prepare()
+        assert gc.get_freeze_count() >= before + len(made)
+    finally:
+        gc.unfreeze()                               # the test process keeps nothing frozen
+
+
+def test_png_bytes_copies_opaque_pixels_as_three_byte_items():
+    """An opaque canvas's rows copied as 3-byte items give the bytes of the copy byte by byte
+    (the general path, taken by an array that is not C-contiguous); decoded, the pixels."""
+    import numpy as np
+    from PIL import Image
+
+    rgba = np.random.default_rng(7).integers(0, 256, (37, 53, 4), dtype=np.uint8)
+    rgba[..., 3] = 255
+    quick = fg.png_bytes(rgba, 120)
+    assert quick == fg.png_bytes(np.asfortranarray(rgba), 120)
+    assert np.array_equal(np.asarray(Image.open(io.BytesIO(quick))), rgba[..., :3])

@@ -61,6 +61,7 @@ def style(lang: str = "en"):
         return
     import matplotlib
 
+    from flywheel.render import mathparse, ticks
     from flywheel.render.numbers import typography
 
     with matplotlib.rc_context(), typography(lang):
@@ -71,6 +72,8 @@ def style(lang: str = "en"):
         restore_fonts = _remember_fonts()
         restore_ticks = _russian_ticks() if lang == "ru" else (lambda: None)
         restore_math = _share_mathtext()
+        restore_parse = mathparse.install()
+        restore_copies = ticks.install()
         restore_markers = _copy_markers_shallow()
         restore_layouts = _share_glyph_layouts()
         restore_bitmaps = _share_glyph_bitmaps()
@@ -82,6 +85,8 @@ def style(lang: str = "en"):
             restore_bitmaps()
             restore_layouts()
             restore_markers()
+            restore_copies()
+            restore_parse()
             restore_math()
             restore_ticks()
             restore_fonts()
@@ -426,7 +431,14 @@ def _remember_fonts():
 def prepare() -> None:
     """Import what drawing and saving a figure needs (matplotlib's figure and Agg canvas: 0.35 s
     of CPU) and build mathtext's parser (its grammar, 25 ms): called by the first plot worker
-    before it forks the others, so that they share this instead of each making its own."""
+    before it forks the others, so that they share this instead of each making its own. Then
+    every object made so far (the modules, the results) is moved out of the garbage
+    collector's generations (``gc.freeze``): it lives as long as the worker, and the
+    collector's passes while drawing — about 260 for the compressor's figures — no longer
+    traverse it (their time 0.17 – 0.24 s → 0.07 – 0.08 s), nor touch its memory pages in the
+    forked workers."""
+    import gc
+
     import matplotlib.backends.backend_agg  # noqa: F401
     import matplotlib.figure  # noqa: F401
     from matplotlib import _mathtext
@@ -434,6 +446,7 @@ def prepare() -> None:
 
     if getattr(MathTextParser, "_parser", None) is None and hasattr(_mathtext, "Parser"):
         MathTextParser._parser = _mathtext.Parser()         # as its first parse would
+    gc.freeze()
 
 
 def figure(size, nrows=1, ncols=1, sharex=False, squeeze=True, *, left=0.85, right=LEGEND_W,
@@ -630,7 +643,8 @@ def save(fig, path, fmt: str = "png", dpi: int = DPI) -> None:
         import io
 
         raw = io.BytesIO()
-        fig.savefig(raw, format="rgba", dpi=dpi)       # the pixels savefig's PNG would have
+        with _laid_out(fig, dpi):
+            fig.savefig(raw, format="rgba", dpi=dpi)   # the pixels savefig's PNG would have
     w, h = (int(x * dpi) for x in fig.get_size_inches())  # as the Agg canvas sizes itself
     pixels = np.frombuffer(raw.getbuffer(), np.uint8)
     if pixels.size != w * h * 4:          # not the canvas this was written for: its own PNG
@@ -643,6 +657,32 @@ def save(fig, path, fmt: str = "png", dpi: int = DPI) -> None:
     else:
         with open(path, "wb") as out:
             out.write(data)
+
+
+@contextmanager
+def _laid_out(fig, dpi: int):
+    """``fig`` (plots_extra's, with matplotlib's constrained layout) laid out at ``dpi`` as
+    ``savefig`` lays it out — the axes' aspects applied, then the layout engine run — without
+    the drawing ``savefig`` adds to it (every artist drawn with nothing rendered: a third of
+    such a figure's saving); no engine while saving (``savefig`` turns it off for its drawing
+    too), the figure's own back after. A figure without an engine: nothing done."""
+    engine = fig.get_layout_engine()
+    if engine is None or fig.__dict__.get("_layout_engine") is not engine \
+            or not hasattr(fig, "_get_draw_artists"):
+        yield
+        return
+    from matplotlib import cbook
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+    canvas = fig.canvas
+    try:
+        with cbook._setattr_cm(fig, dpi=dpi):
+            fig._get_draw_artists(FigureCanvasAgg(fig).get_renderer())   # apply_aspect
+            engine.execute(fig)
+    finally:
+        fig.set_canvas(canvas)
+    with cbook._setattr_cm(fig, _layout_engine=None):
+        yield
 
 
 def png_bytes(rgba, dpi: int) -> bytes:
@@ -660,9 +700,15 @@ def png_bytes(rgba, dpi: int) -> bytes:
     channels = 3 if opaque else 4
     rows = np.empty((h, w * channels + 1), np.uint8)
     rows[:, 0] = 0                                         # filter type 0: none
-    pixels = rows[:, 1:].reshape(h, w, channels)           # a view of the rows
+    if opaque and rgba.flags.c_contiguous:
+        # one copy of 3-byte items (a pixel's red, green, blue): 40 % quicker than numpy's
+        # copy of the same bytes one by one along a third axis
+        pixels = rows[:, 1:].view("V3")                    # a view of the rows: h × w
+        pixels[...] = rgba.view([("rgb", "V3"), ("a", "u1")]).reshape(h, w)["rgb"]
+    else:
+        pixels = rows[:, 1:].reshape(h, w, channels)       # a view of the rows
+        pixels[...] = rgba[..., :channels]                 # one copy
     assert np.may_share_memory(pixels, rows)
-    pixels[...] = rgba[..., :channels]                     # one copy
 
     def chunk(kind: bytes, body: bytes) -> bytes:
         return (struct.pack(">I", len(body)) + kind + body
