@@ -29,9 +29,9 @@ def table_csv(results) -> str:
 
 
 def _rows(data: np.ndarray) -> list[str]:
-    """Each row of ``data`` as :func:`_fmt` writes its numbers, joined by commas: one format
-    operation per row (half the time of one per number; the in-line four's table has 150
-    columns), the same text."""
+    """Each row of ``data`` as :func:`_fmt` writes its numbers, joined by commas: made a block
+    of rows at a time (numbers.fmt_rows; the in-line four's table has 150 columns), the same
+    text."""
     return fmt_rows(data, 12)
 
 
