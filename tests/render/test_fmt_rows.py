@@ -1,6 +1,6 @@
-"""render/numbers.fmt_rows, the CSV files' numbers made a block of rows at a time: byte for byte
-the text of Python's own ``"%.{sig}g" % x`` for every number (the independent truth), on edge
-cases, on a hypothesis sample of every float, and on large random tables."""
+"""render/numbers.fmt_rows and fmt_text, the CSV files' numbers made a block of rows at a time:
+byte for byte the text of Python's own ``"%.{sig}g" % x`` for every number (the independent
+truth), on edge cases, on a hypothesis sample of every float, and on large random tables."""
 from __future__ import annotations
 
 import math
@@ -11,7 +11,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from flywheel.render import numbers
-from flywheel.render.numbers import fmt_rows
+from flywheel.render.numbers import fmt_rows, fmt_text
 
 
 def _reference(data, sig: int = 12) -> list[str]:
@@ -74,10 +74,13 @@ def test_large_random_tables_in_many_blocks(seed):
     x[1::7] = rng.integers(-1000, 1000, len(x[1::7]))
     x[2::11] = 0.0
     data = x.reshape(-1, 13 if n % 13 == 0 else 8)
-    assert fmt_rows(data) == _reference(data)
+    rows = _reference(data)
+    assert fmt_rows(data) == rows
+    assert fmt_text(data) == "".join(row + "\n" for row in rows)
 
 
 def test_one_row_and_one_column_tables():
     for data in (np.array([[0.1, -2.0, 3e-9]]), np.array([[0.1], [-2.0], [math.nan]]),
                  np.zeros((0, 3)), np.zeros((2, 0))):
         assert fmt_rows(data) == _reference(data)
+        assert fmt_text(data) == "".join(row + "\n" for row in _reference(data))

@@ -211,12 +211,18 @@ def fmt(x, sig: int = 6, *, zero: float | None = 1e-12, spec: str | None = None,
 def fmt_rows(data, sig: int = 12) -> list[str]:
     """Each row of a 2-D array as its numbers joined by commas, each as :func:`fmt` writes it
     with ``zero=0.0, nonfinite="show"`` (−0 → 0, nan shown): the CSV files' numbers, the same
-    text as ``"%.{sig}g"`` per number. Up to 12 digits the text is made for a block of rows at
-    once (:func:`_g_bytes`; two thirds of the CPU time of one ``%`` per row)."""
+    text as ``"%.{sig}g"`` per number (:func:`fmt_text`, split into its lines)."""
+    return fmt_text(data, sig).split("\n")[:-1]
+
+
+def fmt_text(data, sig: int = 12) -> str:
+    """The rows of :func:`fmt_rows` as one text, each row ended by a newline. Up to 12 digits
+    the text is made for a block of rows at once (:func:`_g_bytes`; two thirds of the CPU time
+    of one ``%`` per row)."""
     data = np.asarray(data, dtype=float) + 0.0          # + 0.0: −0.0 becomes 0.0, nothing else
     if data.ndim != 2 or data.size == 0 or not 1 <= sig <= _FAST_SIG:
         row = ",".join([f"%.{sig}g"] * data.shape[1])
-        return [row % tuple(r) for r in data.tolist()]
+        return "".join([row % tuple(r) + "\n" for r in data.tolist()])
     n_cols = data.shape[1]
     step = max(1, _BLOCK // n_cols)                     # rows of a block: it stays in the cache
     pieces = []
@@ -226,14 +232,13 @@ def fmt_rows(data, sig: int = 12) -> list[str]:
         cells[n_cols - 1::n_cols, -1] = ord("\n")
         flat = cells.ravel()
         pieces.append(flat[flat != 0].tobytes())
-    return b"".join(pieces).decode("ascii").split("\n")[:-1]
+    return b"".join(pieces).decode("ascii")
 
 
 #: the most digits :func:`_g_bytes` writes (10**12 · 2.3e-16 ≪ _TIE: the rounding is decided)
 _FAST_SIG = 12
 #: numbers formatted together by fmt_rows: a block's arrays stay in the cache and below
-#: malloc's 128 KiB mmap threshold (larger ones, mapped afresh each block, cost twice the
-#: page faults of the whole %-format)
+#: malloc's 128 KiB mmap threshold (a larger one is mapped afresh for each block)
 _BLOCK = 4096
 #: |fraction − ½| below this: too near a tie for the float arithmetic, written by ``%``
 _TIE = 1e-3
@@ -305,7 +310,8 @@ def _g_bytes(x: np.ndarray, sig: int) -> np.ndarray:
     for a, b in zip(starts[:-1], starts[1:]):
         ex, r, dg = int(e[a]), rows[a:b], digits[a:b]
         if 0 <= ex < sig:                      # fixed notation, ex + 1 digits before the point
-            r[:, 1:ex + 2], r[:, ex + 2], r[:, ex + 3:sig + 2] = dg[:, :ex + 1], point[a:b], dg[:, ex + 1:]
+            r[:, 1:ex + 2], r[:, ex + 2] = dg[:, :ex + 1], point[a:b]
+            r[:, ex + 3:sig + 2] = dg[:, ex + 1:]
         elif -4 <= ex < 0:                     # 0.000ddd
             head = np.frombuffer(b"0." + b"0" * (-ex - 1), np.uint8)
             r[:, 1:len(head) + 1], r[:, len(head) + 1:len(head) + 1 + sig] = head, dg
