@@ -48,6 +48,7 @@ from __future__ import annotations
 import math
 import re
 from contextlib import contextmanager
+from functools import lru_cache
 from contextvars import ContextVar
 from dataclasses import dataclass
 from decimal import Decimal
@@ -242,16 +243,22 @@ _FAST_SIG = 12
 _BLOCK = 4096
 #: |fraction − ½| below this: too near a tie for the float arithmetic, written by ``%``
 _TIE = 1e-3
-#: 10**k as the nearest float, k = 0 … 300 (correctly rounded: ``float`` of an exact integer)
-_POW10 = np.array([float(10 ** k) for k in range(301)])
-_QUAD = np.indices((10, 10, 10, 10)).reshape(4, -1)    # the four digits of 0 … 9999
-#: the four ASCII digits of 0 … 9999, each as one 4-byte word
-_DIGITS4 = np.ascontiguousarray(_QUAD.T + ord("0"), dtype=np.uint8).view(np.uint32).ravel()
-#: how many zeros end 0 … 9999 (0: 4)
-_ZEROS4 = np.logical_and.accumulate(_QUAD[::-1] == 0, axis=0).sum(axis=0, dtype=np.intp)
-#: _KEEP[sig][j]: a mask over sig digits keeping the first j + 1
-_KEEP = [np.where(np.arange(s)[None, :] <= np.arange(s)[:, None], 255, 0).astype(np.uint8)
-         for s in range(_FAST_SIG + 1)]
+
+
+@lru_cache(maxsize=None)
+def _g_tables() -> tuple:
+    """The tables of :func:`_g_bytes`, made at its first call (a command that writes no CSV
+    never pays for them): 10**k as the nearest float, k = 0 … 300 (``float`` of an exact
+    integer: correctly rounded); the four ASCII digits of 0 … 9999, each as one 4-byte word;
+    how many zeros end 0 … 9999 (0: 4); keep[sig][j], a mask over sig digits keeping the
+    first j + 1."""
+    quad = np.indices((10, 10, 10, 10)).reshape(4, -1)     # the four digits of 0 … 9999
+    pow10 = np.array([float(10 ** k) for k in range(301)])
+    digits4 = np.ascontiguousarray(quad.T + ord("0"), dtype=np.uint8).view(np.uint32).ravel()
+    zeros4 = np.logical_and.accumulate(quad[::-1] == 0, axis=0).sum(axis=0, dtype=np.intp)
+    keep = [np.where(np.arange(s)[None, :] <= np.arange(s)[:, None], 255, 0).astype(np.uint8)
+            for s in range(_FAST_SIG + 1)]
+    return pow10, digits4, zeros4, keep
 
 
 def _g_bytes(x: np.ndarray, sig: int) -> np.ndarray:
@@ -266,6 +273,7 @@ def _g_bytes(x: np.ndarray, sig: int) -> np.ndarray:
     exponent X of the rounded number; fixed notation when −4 ≤ X < sig, else d.ddde±XX;
     trailing zeros and a bare point dropped."""
     n, width = len(x), sig + 8                 # -d.ddd…e-308, then the separator's column
+    _POW10, _DIGITS4, _ZEROS4, _KEEP = _g_tables()
     out = np.zeros((n, width), np.uint8)
     ax = np.abs(x)
     fast = (ax > 1e-280) & (ax < 1e280)        # finite, not zero, 10^k a normal float
