@@ -220,10 +220,12 @@ def test_python_dash_m(tmp_path):
 
 
 #: modules `run --no-plots` piped has no use for: the figures and sheets' renderers (their
-#: options are checked against render/choices.py), rich (no bar can show on a pipe) and
-#: numpy.ma (np.unique's import): each costs the whole process time (benchmarks/README.md)
+#: options are checked against render/choices.py), rich (no bar can show on a pipe),
+#: numpy.ma (np.unique's import) and the ГОСТ PDF/DOCX writer (no --report pdf/docx): each
+#: costs the whole process time (benchmarks/README.md)
 UNUSED_BY_NO_PLOTS = ("matplotlib", "rich.progress", "rich.console", "numpy.ma",
                       "flywheel.render.drawings", "flywheel.render.report_frame",
+                      "flywheel.render.report_gost",
                       "flywheel.render.plots", "flywheel.render.figure", "scipy")
 
 

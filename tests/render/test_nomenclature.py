@@ -204,3 +204,16 @@ def test_docs_results_names_every_output(results):
     families = {nm.term(k)[0] for row in columns for k in _doc_keys(row["column"])}
     for key in results.columns:
         assert nm.term(key)[0] in families, key
+
+
+def test_catalogue_terms_are_what_gettext_gives():
+    """The "term:" labels' Russian, read from the compiled catalogue without gettext (an English
+    run never parses the whole Russian catalogue), is what gettext's own pgettext gives."""
+    from flywheel.render.catalogue import _english, catalogue
+
+    english = {ctx: en for ctx, en in _english().items() if ctx.startswith("term:")}
+    assert len(english) > 50
+    for ctx, en in english.items():
+        t = nm.TERMS[ctx[5:]]
+        assert (t.en, t.ru) == (en, catalogue("ru").pgettext(ctx, en)), ctx
+        assert t.ru, ctx

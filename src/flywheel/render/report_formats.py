@@ -9,7 +9,8 @@
 A Russian PDF and DOCX take the ГОСТ 7.32-2017 layout of a пояснительная записка instead
 (render/report_gost.py: title page, contents, captions, margins, fonts).
 
-Heavy imports (jinja2, typst, docx) live inside the function of their format.
+Heavy imports (jinja2, typst, docx, and render/report_gost.py) live inside the function of
+their format.
 """
 from __future__ import annotations
 
@@ -22,7 +23,6 @@ from pathlib import Path
 from flywheel.render import mathfmt
 from flywheel.render.document import Bullets, Document, Figure, Formula, Heading, Paragraph, Table
 from flywheel.render.report import CAPTION
-from flywheel.render.report_gost import _fixed_zip, compile_typst
 from flywheel.render.choices import REPORT_FORMATS
 from flywheel.render.typst_blocks import markup, typst_block
 
@@ -183,6 +183,8 @@ def pdf(doc: Document, plots_dir: Path | None = None) -> bytes:
     src = typst_source(doc)
     if plots_dir is None:
         src = re.sub(r'#figure\(image\("plots/[^"]*", width: 100%\), ', "#figure(", src)
+    from flywheel.render.report_gost import compile_typst
+
     return compile_typst(src, doc, plots_dir)
 
 
@@ -256,13 +258,14 @@ def docx(doc: Document, plots_dir: Path | None = None) -> bytes:
             p.alignment = WD_ALIGN_PARAGRAPH.CENTER
     buf = io.BytesIO()
     d.save(buf)
+    from flywheel.render.report_gost import _fixed_zip
+
     return _fixed_zip(buf.getvalue())
 
 
 def write_reports(doc: Document, folder: Path, formats, plots_dir: Path | None) -> list[str]:
     """Write report.<ext> for each format into ``folder``; the names written (a Russian PDF and
     DOCX in the ГОСТ layout of render/report_gost.py)."""
-    from flywheel.render import report_gost
     from flywheel.render.report import markdown
 
     names = []
@@ -273,9 +276,13 @@ def write_reports(doc: Document, folder: Path, formats, plots_dir: Path | None) 
         elif f == "html":
             (folder / name).write_text(html(doc, plots_dir), encoding="utf-8")
         elif f == "pdf":
+            from flywheel.render import report_gost
+
             (folder / name).write_bytes(report_gost.pdf(doc, plots_dir) if doc.lang == "ru"
                                         else pdf(doc, plots_dir))
         elif f == "docx":
+            from flywheel.render import report_gost
+
             (folder / name).write_bytes(report_gost.docx(doc, plots_dir) if doc.lang == "ru"
                                         else docx(doc, plots_dir))
         else:
