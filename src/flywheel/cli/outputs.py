@@ -66,12 +66,14 @@ class RunOutputs:
                 + (["mechanism.gif"] if self.animate else [])
                 + (["drawings/sheet*.{pdf,svg,dxf}"] if self.drawings and drawings else []))
 
-def write_run(out: Path, results, case, what: RunOutputs, lang: str) -> str:
+def write_run(out: Path, results, case, what: RunOutputs, lang: str,
+              meanwhile: Callable[[], object] | None = None) -> str:
     """`run`'s output folder ``out``: summary.json, the CSVs, the figures (drawn by forked
-    workers started first), mechanism.gif, the reports; notes of a rerun on stderr. Returns
-    the text of summary.json. Errors are the caller's guard's."""
+    workers started first), mechanism.gif, the reports; notes of a rerun on stderr;
+    ``meanwhile()`` called while the figures are drawn (the terminal's summary rendered:
+    :class:`Summary`). Returns the text of summary.json. Errors are the caller's guard's."""
     return _write_folder(out, results, lambda folder, summary_text: _build_run(
-        folder, results, case, what, lang, summary_text))
+        folder, results, case, what, lang, summary_text, meanwhile))
 
 
 def _write_folder(out: Path, results, build) -> str:
@@ -91,16 +93,41 @@ def _write_folder(out: Path, results, build) -> str:
     return summary_text
 
 
-def finish_run(out: Path, results, what: RunOutputs, lang: str, summary_text: str,
-               as_json: bool) -> None:
-    """The terminal end of `run` (:func:`finish`): the warnings, then summary.json's text
-    (``--json``) or the summary and the "written:" line."""
-    from flywheel.render.numbers import typeset
-    from flywheel.render.summary import print_summary
+class Summary:
+    """`run`'s summary on the terminal (render/summary.py print_summary): rendered once
+    (:meth:`render`, called while the figures are drawn: rich's import and its tables, 60 ms
+    that a run would otherwise spend after its last figure), then printed as it would have
+    been printed (:meth:`print`: the same console, so the same width and colours)."""
 
+    def __init__(self, results, lang: str):
+        self.results, self.lang, self.text = results, lang, None
+
+    def render(self) -> None:
+        from rich.console import Console
+
+        from flywheel.render.numbers import typeset
+        from flywheel.render.summary import print_summary
+
+        if self.text is None:
+            console = Console()
+            with console.capture() as captured:
+                typeset(self.lang, print_summary, self.results, console=console, lang=self.lang)
+            self.text = captured.get()
+
+    def print(self) -> None:
+        self.render()
+        sys.stdout.write(self.text)
+        sys.stdout.flush()
+
+
+def finish_run(out: Path, results, what: RunOutputs, lang: str, summary_text: str,
+               as_json: bool, summary: Summary | None = None) -> None:
+    """The terminal end of `run` (:func:`finish`): the warnings, then summary.json's text
+    (``--json``) or the summary (``summary``, perhaps rendered already) and the "written:"
+    line."""
+    summary = summary or Summary(results, lang)
     finish(warnings=results.warnings, json_text=summary_text if as_json else None,
-           summary=lambda: typeset(lang, print_summary, results, lang=lang),
-           lines=[written_line(out, what.names(), lang)])
+           summary=summary.print, lines=[written_line(out, what.names(), lang)])
 
 
 def write_kinematics(out: Path, results, case, what: RunOutputs, lang: str) -> str:
@@ -143,14 +170,14 @@ def _build_kinematics(folder: Path, results, case, what: RunOutputs, lang: str,
     write_reports(doc, folder, list(what.formats), folder / "plots" if pngs else None)
 
 def _build_run(folder: Path, results, case, what: RunOutputs, lang: str,
-               summary_text: str) -> None:
+               summary_text: str, meanwhile: Callable[[], object] | None = None) -> None:
     """Fill the temporary ``folder`` of :func:`write_run`."""
     from contextlib import nullcontext
 
     from flywheel.render.csvfmt import restyle
     from flywheel.render.document import build_document
     from flywheel.render.forces import forces_csv, forces_positions_csv
-    from flywheel.render.report_formats import write_reports
+    from flywheel.render.report_formats import start_reports
     from flywheel.render.tables import positions_csv, table_csv
 
     job = nullcontext()
@@ -184,12 +211,15 @@ def _build_run(folder: Path, results, case, what: RunOutputs, lang: str,
 
             write_drawings(results, folder / "drawings", case.document, lang=lang,
                            size=what.sheet_size)
+        reports = start_reports(doc, what.formats)
+        if meanwhile is not None:
+            meanwhile()
         if what.plots != "none":
             from flywheel.cli.progress import count_bar
 
             with count_bar("figures", lang) as progress:
                 job.wait(progress)
-    write_reports(doc, folder, what.formats, folder / "plots" if pngs else None)
+    reports(folder, folder / "plots" if pngs else None)
 
 
 def report_folder(out: Path, kind: str, json_text: str, draw, figure, document,

@@ -104,7 +104,7 @@ def run_command(case: CaseFile, out: RunOut = None, points: Points = 3600, at: A
                 group: Group = None, teacher: Teacher = None, frame: Frame = "none") -> None:
     """Run the whole dynamic analysis of a case; write summary.json, table.csv, positions.csv,
     forces.csv, forces_positions.csv, report.md and plots/*.png to the output folder."""
-    from flywheel.cli.outputs import RunOutputs, finish_run, write_run
+    from flywheel.cli.outputs import RunOutputs, Summary, finish_run, write_run
 
     check_lang(lang)
     what = RunOutputs(formats=tuple(report or ["md", "html"]), csv_style=csv_style,
@@ -119,7 +119,9 @@ def run_command(case: CaseFile, out: RunOut = None, points: Points = 3600, at: A
 
         return run_kinematics(c, case, out, points, at, what, as_json, lang, transients)
     results = _solve(c, case, points, at, transients, motion, snapshot, at_travel, roots, lang)
-    finish_run(out, results, what, lang, write_run(out, results, c, what, lang), as_json)
+    summary = Summary(results, lang)     # rendered while the figures are drawn
+    finish_run(out, results, what, lang, write_run(
+        out, results, c, what, lang, None if as_json else summary.render), as_json, summary)
 
 
 def _load(case: Path, animate: bool):

@@ -92,6 +92,13 @@ def _bold_html(text: str) -> str:
 
 def html(doc: Document, plots_dir: Path | None = None) -> str:
     """The document as one self-contained HTML page; figures read from ``plots_dir``."""
+    return html_page(doc)(plots_dir)
+
+
+def html_page(doc: Document):
+    """:func:`html` in two steps: the page's text made now (its blocks, the template), the
+    figures read and the page put together by the function returned, given ``plots_dir`` —
+    so that a run makes the text while its figures are being drawn."""
     import jinja2
     from markupsafe import Markup
 
@@ -114,13 +121,19 @@ def html(doc: Document, plots_dir: Path | None = None) -> str:
                            "rows": [[_bold_html(c) for c in r] for r in b.rows],
                            "width": "" if n <= WIDE else " wide" if n <= WIDE_PAGE else " wide landscape"})
         elif isinstance(b, Figure):
-            src = None
-            if plots_dir is not None and (plots_dir / b.file).is_file():
-                src = "data:image/png;base64," + base64.b64encode((plots_dir / b.file).read_bytes()).decode()
             blocks.append({"kind": "img", "number": b.number, "label": f"{fig} {b.number} — {b.caption}",
-                           "caption": _bold_html(f"{fig} {b.number} — {b.caption}"), "src": src})
-    env = jinja2.Environment(autoescape=True, keep_trailing_newline=True)
-    return env.from_string(_TEMPLATE).render(doc=doc, blocks=blocks, css=Markup(_CSS))
+                           "caption": _bold_html(f"{fig} {b.number} — {b.caption}"), "src": None,
+                           "file": b.file})
+    template = jinja2.Environment(autoescape=True, keep_trailing_newline=True).from_string(_TEMPLATE)
+
+    def page(plots_dir: Path | None) -> str:
+        for block in blocks:
+            if block["kind"] == "img":
+                path = None if plots_dir is None else plots_dir / block["file"]
+                block["src"] = ("data:image/png;base64," + base64.b64encode(path.read_bytes()).decode()
+                                if path is not None and path.is_file() else None)
+        return template.render(doc=doc, blocks=blocks, css=Markup(_CSS))
+    return page
 
 
 # -- typst / PDF ----------------------------------------------------------------------------------
@@ -266,27 +279,42 @@ def docx(doc: Document, plots_dir: Path | None = None) -> bytes:
 def write_reports(doc: Document, folder: Path, formats, plots_dir: Path | None) -> list[str]:
     """Write report.<ext> for each format into ``folder``; the names written (a Russian PDF and
     DOCX in the ГОСТ layout of render/report_gost.py)."""
+    return start_reports(doc, formats)(folder, plots_dir)
+
+
+def start_reports(doc: Document, formats):
+    """:func:`write_reports` in two steps: what needs no figure made now (the Markdown text,
+    the HTML page's text: :func:`html_page`), the reports written by the function returned,
+    given ``folder`` and the figures' ``plots_dir`` — a run calls it when its figures are
+    drawn, having made the rest while they were."""
     from flywheel.render.report import markdown
 
-    names = []
-    for f in dict.fromkeys(formats):
-        name = f"report.{f}"
-        if f == "md":
-            (folder / name).write_text(markdown(doc), encoding="utf-8")
-        elif f == "html":
-            (folder / name).write_text(html(doc, plots_dir), encoding="utf-8")
-        elif f == "pdf":
-            from flywheel.render import report_gost
+    made = {f: markdown(doc) if f == "md" else html_page(doc) if f == "html" else None
+            for f in dict.fromkeys(formats)}
 
-            (folder / name).write_bytes(report_gost.pdf(doc, plots_dir) if doc.lang == "ru"
-                                        else pdf(doc, plots_dir))
-        elif f == "docx":
-            from flywheel.render import report_gost
+    def write(folder: Path, plots_dir: Path | None) -> list[str]:
+        return [_write_report(doc, folder, f, plots_dir, text) for f, text in made.items()]
+    return write
 
-            (folder / name).write_bytes(report_gost.docx(doc, plots_dir) if doc.lang == "ru"
-                                        else docx(doc, plots_dir))
-        else:
-            # library use only: no CLI input reaches this
-            raise ValueError(f"report format {f!r} (allowed: {', '.join(FORMATS)})")
-        names.append(name)
-    return names
+
+def _write_report(doc: Document, folder: Path, f: str, plots_dir: Path | None, made) -> str:
+    """report.<f> written into ``folder`` (``made``: its text or page made already); its name."""
+    name = f"report.{f}"
+    if f == "md":
+        (folder / name).write_text(made, encoding="utf-8")
+    elif f == "html":
+        (folder / name).write_text(made(plots_dir), encoding="utf-8")
+    elif f == "pdf":
+        from flywheel.render import report_gost
+
+        (folder / name).write_bytes(report_gost.pdf(doc, plots_dir) if doc.lang == "ru"
+                                    else pdf(doc, plots_dir))
+    elif f == "docx":
+        from flywheel.render import report_gost
+
+        (folder / name).write_bytes(report_gost.docx(doc, plots_dir) if doc.lang == "ru"
+                                    else docx(doc, plots_dir))
+    else:
+        # library use only: no CLI input reaches this
+        raise ValueError(f"report format {f!r} (allowed: {', '.join(FORMATS)})")
+    return name
