@@ -128,3 +128,15 @@ def test_the_started_worker_draws_the_bytes_drawn_in_process(started, tmp_path):
     assert [p.name for p in two] == [p.name for p in one]
     for a, b in zip(two, one):
         assert a.read_bytes() == b.read_bytes(), a.name
+
+
+def test_a_fork_that_fails_starts_nothing_and_the_run_goes_on(monkeypatch):
+    """No process to spare when the run starts (fork: EAGAIN): no worker, no error — the run
+    forks its workers later as it did before, or draws in its own process."""
+    def no_fork(self, target):
+        raise BlockingIOError(11, "Resource temporarily unavailable")
+
+    monkeypatch.setattr(plot_start.Early, "__init__", no_fork)
+    monkeypatch.setattr(plot_start, "wanted", lambda argv: True)
+    plot_start.start(["run", "c.toml"], plot_wait.wait_and_draw)
+    assert plot_start.claim() is None

@@ -110,7 +110,10 @@ def start(argv: list[str], target) -> None:
     (render/plot_wait.py ``wait_and_draw``)."""
     global _EARLY
     if _EARLY is None and wanted(argv):
-        _EARLY = Early(target)
+        try:
+            _EARLY = Early(target)
+        except OSError:             # no process to spare (EAGAIN, ENOMEM, no /dev/shm): the
+            _EARLY = None           # run forks its workers later, or draws them itself
 
 
 def claim() -> Early | None:
