@@ -65,9 +65,33 @@ class Share:
     outcome: dict = field(default_factory=dict)
 
 
+#: the most shares run at once by default (each pytest process holds matplotlib, numpy and
+#: a case's results: a few hundred MB)
+MOST_BY_DEFAULT = 8
+
+
+def usable_cores(cpu_max: Path = Path("/sys/fs/cgroup/cpu.max")) -> int:
+    """The processors this process may run on: its affinity (a cpuset), fewer if the cgroup's
+    CPU quota (cgroup v2 ``cpu.max``) allows less — what a container's 2 cores are, where
+    ``os.cpu_count()`` tells the host's."""
+    try:
+        cores = len(os.sched_getaffinity(0))
+    except (AttributeError, OSError):
+        cores = os.cpu_count() or 1
+    try:
+        quota, period = cpu_max.read_text().split()[:2]
+        if quota != "max":
+            cores = min(cores, max(1, int(int(quota) / int(period))))
+    except (OSError, ValueError):
+        pass
+    return max(1, cores)
+
+
 def main(argv: list[str] | None = None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    ap.add_argument("-n", type=int, default=os.cpu_count() or 2, help="shares run at once")
+    ap.add_argument("-n", type=int, default=min(MOST_BY_DEFAULT, usable_cores()),
+                    help=f"shares run at once (default: the usable processors, at most "
+                         f"{MOST_BY_DEFAULT})")
     ap.add_argument("--all", action="store_true", help="the whole suite, slow tests too")
     ap.add_argument("--record", action="store_true",
                     help=f"the whole suite (as --all), then {TABLE} written from its seconds")

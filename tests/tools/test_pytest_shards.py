@@ -267,3 +267,18 @@ def test_ctrl_c_stops_every_share_and_the_run_says_so(tmp_path):
     for pid in pids.iterdir():
         with pytest.raises(ProcessLookupError):
             os.kill(int(pid.name), 0)
+
+
+def test_the_default_shares_are_the_usable_processors(tmp_path, monkeypatch):
+    """A container's 2 cores, not the host's 64: the affinity, then the cgroup's quota."""
+    monkeypatch.setattr(runner.os, "sched_getaffinity", lambda pid: set(range(64)))
+    cpu_max = tmp_path / "cpu.max"
+    cpu_max.write_text("200000 100000\n")
+    assert runner.usable_cores(cpu_max) == 2
+    cpu_max.write_text("50000 100000\n")                 # half a core: one share
+    assert runner.usable_cores(cpu_max) == 1
+    cpu_max.write_text("max 100000\n")
+    assert runner.usable_cores(cpu_max) == 64
+    assert runner.usable_cores(tmp_path / "none") == 64   # no cgroup v2: the affinity
+    monkeypatch.setattr(runner.os, "sched_getaffinity", lambda pid: {0, 1})
+    assert runner.usable_cores(tmp_path / "none") == 2
