@@ -73,6 +73,21 @@ def test_energy_mass_diagram(results):
     _check_energy_mass(results, "ru")
 
 
+@pytest.mark.parametrize("lang, parts", [("en", ("(a)", "(b)", "(c)")),
+                                         ("ru", ("а)", "б)", "в)"))])
+def test_energy_mass_diagram_names_its_parts_in_the_figures_language(results, lang, parts):
+    """ГОСТ 2.105: a figure's parts are а), б), в) in Russian (Cyrillic letters), (a), (b), (c)
+    in English; the whole construction marks where part b enlarges it."""
+    from flywheel.render.figure import drawn
+
+    fig = drawn(lambda: plots_extra.figure_energy_mass(results, lang))
+    titles = [ax.get_title() for ax in fig.axes if ax.get_title()]
+    assert [t.split(" ", 1)[0] for t in titles] == list(parts)
+    marks = [t.get_text() for t in fig.axes[0].texts]
+    assert parts[1] in marks
+    assert all(ord(c) < 0x80 or c in "абв" for t in titles for c in t.split(" ", 1)[0])
+
+
 @pytest.mark.parametrize("name", ["press.toml", "fourbar.toml"])
 def test_energy_mass_diagram_other_cases(name):
     _check_energy_mass(analyze(load_case(CASES / name), n_points=360))

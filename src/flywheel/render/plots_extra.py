@@ -32,7 +32,9 @@ TEXT = words("plots_extra", {"em": "Energy–mass diagram (Wittenbauer) and Merz
                              "not_reached": "steady state not reached (see summary)",
                              "axT": r"$T = T_0 + \Delta T$", "axJ": r"$J = J_I + J_{{II}}$",
                              "time": "Time law over one cycle: {T} = {v:.5g} {u}",
-                             "tr": "Start-up and run-down", "start": "start-up (motor)", "run": "run-down (drive cut)"})
+                             "tr": "Start-up and run-down", "start": "start-up (motor)", "run": "run-down (drive cut)",
+                             # the parts of a figure (ГОСТ 2.105: а), б), в) in Russian)
+                             "part_a": "(a)", "part_b": "(b)", "part_c": "(c)"})
 
 
 def _f(t: dict, key: str, **kw) -> str:
@@ -133,13 +135,13 @@ def figure_energy_mass(results, lang: str = "en"):
     x0, x1 = J_II.min(), J_II.max()
     ax.add_patch(Rectangle((x0, A.min()), max(x1 - x0, 0.002 * span_x), A.max() - A.min(),
                            fill=False, ec="tab:blue", lw=0.8, ls=":"))
-    ax.annotate("(b)", xy=(x1, A.max()), xytext=(3, 3), textcoords="offset points", fontsize=8,
+    ax.annotate(_f(t, "part_b"), xy=(x1, A.max()), xytext=(3, 3), textcoords="offset points", fontsize=8,
                 color="tab:blue")
     ax.set_xlim(-J_I - 0.05 * span_x, x_hi + 0.08 * span_x)
     ax.set_ylim(y_dim - 0.06 * H, y_hi + 0.12 * H)
     ax.set_xlabel(nm.axis("J_II", lang))
     ax.set_ylabel(_f(t, "T", u=uJ))
-    ax.set_title(f"(a) {_f(t, 'full', J=J_sym, T=T0_sym)}", fontsize=10)
+    ax.set_title(f"{_f(t, 'part_a')} {_f(t, 'full', J=J_sym, T=T0_sym)}", fontsize=10)
     ax.grid(True, alpha=0.3)
     ax.legend(fontsize=8, loc="upper left", bbox_to_anchor=(0.0, 0.9))
 
@@ -159,7 +161,7 @@ def figure_energy_mass(results, lang: str = "en"):
     zx.set_xlim(*z)
     zx.set_xlabel(nm.axis("J_II", lang))
     zx.set_ylabel(_f(t, "T", u=uJ))
-    zx.set_title(f"(b) {_f(t, 'zoom')}", fontsize=10)
+    zx.set_title(f"{_f(t, 'part_b')} {_f(t, 'zoom')}", fontsize=10)
     zx.grid(True, alpha=0.3)
     zx.legend(fontsize=8, loc="upper center", bbox_to_anchor=(0.5, -0.13), frameon=False)   # below: off the curve
 
@@ -180,7 +182,7 @@ def figure_energy_mass(results, lang: str = "en"):
     bx.set_xticks(np.arange(0, cycle + 1, 60 * cycle // 360))      # a half-width panel
     bx.grid(True, alpha=0.3)
     bx.legend(fontsize=8, loc="upper center", bbox_to_anchor=(0.5, -0.13), frameon=False)
-    bx.set_title(f"(c) {_f(t, 'merz', dT=dT_sym)}", fontsize=10)
+    bx.set_title(f"{_f(t, 'part_c')} {_f(t, 'merz', dT=dT_sym)}", fontsize=10)
     return fig
 
 
