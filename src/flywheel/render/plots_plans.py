@@ -174,10 +174,16 @@ def _title(results, what: str) -> str:
 
 def short_title(title: str, chars: int = TITLE_CHARS) -> str:
     """``title`` if at most ``chars`` characters long, else its part before the first ": ",
-    else its words up to ``chars`` − 1 characters and "…".
+    else its longest part before a ", " or a " (" that fits (a whole phrase, not one cut
+    after «порядок работы»), if at least a third of ``chars``, else its words up to ``chars``
+    − 1 characters and "…".
 
     >>> short_title("Shaper: crank and slotted lever quick-return mechanism with a ram", 40)
     'Shaper'
+    >>> short_title("Four-stroke in-line four engine, firing order 1-3-4-2", 40)
+    'Four-stroke in-line four engine'
+    >>> short_title("A two-stage compressor (the worksheet's low-pressure column)", 40)
+    'A two-stage compressor'
     >>> short_title("A very long machine name without any colon at all", 20)
     'A very long machine…'
     """
@@ -186,6 +192,9 @@ def short_title(title: str, chars: int = TITLE_CHARS) -> str:
     head = title.split(": ", 1)[0]
     if len(head) < len(title) and len(head) <= chars:
         return head
+    phrase = max(title.rfind(", ", 0, chars + 1), title.rfind(" (", 0, chars + 1))
+    if phrase >= chars / 3:
+        return title[:phrase]
     cut = title.rfind(" ", 0, chars)
     return (title[:cut] if cut > 0 else title[:chars - 1]).rstrip(" ,;:") + "…"
 
