@@ -46,6 +46,10 @@ WORDS_NOTE = "a sentence of a renderer: words("
 #: generated field references docs/case-fields.md and docs/ru/case-format.md)
 FIELD_CONTEXT = "field"
 FIELD_NOTE = "a case field's description: "
+#: msgctxt and note of a help text of the command line (an option's or argument's help, a
+#: command's description; typer's own options too): `flywheel … --help --lang ru`
+HELP_CONTEXT = "help"
+HELP_NOTE = "a help text of: "
 
 
 def _template(node: ast.expr, params: dict[str, str]) -> tuple[str, bool]:
@@ -148,6 +152,35 @@ def extract_fields() -> dict[str, list[str]]:
     return descriptions()
 
 
+def extract_help() -> dict[str, list[str]]:
+    """Every help text of the command line as its help page shows it (cli/options.py
+    ``help_msgid``): each command's description and each of its parameters' help, typer's
+    --help and completion options included; English → where it is ("run --out", "run")."""
+    sys.path.insert(0, str(PACKAGE.parent))
+    import typer.main
+    from typer import _click
+
+    from flywheel.cli.commands import app
+    from flywheel.cli.options import help_msgid
+
+    found: dict[str, list[str]] = {}
+
+    def walk(command, path: str) -> None:
+        ctx = _click.Context(command, info_name=command.name)
+        if command.help:
+            found.setdefault(help_msgid(command.help), []).append(path or "flywheel")
+        for param in command.get_params(ctx):
+            if getattr(param, "help", None):
+                name = max(param.opts, key=len) if param.param_type_name == "option" else \
+                    (param.metavar or param.name)
+                found.setdefault(help_msgid(param.help), []).append(f"{path} {name}".strip())
+        for name in sorted(getattr(command, "commands", {})):
+            walk(command.commands[name], name)
+
+    walk(typer.main.get_command(app), "")
+    return found
+
+
 def new_catalog():
     """An empty Russian catalogue with its header (Babel)."""
     from babel.messages.catalog import Catalog
@@ -193,7 +226,8 @@ _EPOCH = _dt.datetime(2026, 1, 1, tzinfo=_dt.timezone.utc)
 # -- the commands -----------------------------------------------------------------------------------
 def is_notice(context: str | None) -> bool:
     """A Notice's entry (msgctxt = its code) rather than a "kind:key" label or a "count"."""
-    return bool(context) and ":" not in context and context not in ("count", FIELD_CONTEXT)
+    return bool(context) and ":" not in context and context not in ("count", FIELD_CONTEXT,
+                                                                    HELP_CONTEXT)
 
 
 def pot():
@@ -211,6 +245,9 @@ def pot():
     for english, paths in extract_fields().items():
         cat.add(english, "", context=FIELD_CONTEXT,
                 auto_comments=[FIELD_NOTE + ", ".join(paths[:3]) + (" …" if len(paths) > 3 else "")])
+    for english, places in extract_help().items():
+        cat.add(english, "", context=HELP_CONTEXT,
+                auto_comments=[HELP_NOTE + ", ".join(places[:3]) + (" …" if len(places) > 3 else "")])
     return cat
 
 
@@ -228,7 +265,7 @@ def update(po=None, template=None):
     for m in po:
         if not m.id:
             continue
-        said = is_notice(m.context) or any(WORDS_NOTE in c or FIELD_NOTE in c
+        said = is_notice(m.context) or any(WORDS_NOTE in c or FIELD_NOTE in c or HELP_NOTE in c
                                            for c in m.auto_comments)
         new = codes.pop(_key(m), None) if said or _key(m) in codes else None
         if new is None:
@@ -247,9 +284,9 @@ def update(po=None, template=None):
 
 
 def _key(m):
-    """An entry's identity across an update: its msgctxt, and for a field's description (one
-    context, many entries) the English too."""
-    return (m.context, m.id) if m.context == FIELD_CONTEXT else m.context
+    """An entry's identity across an update: its msgctxt, and for a field's description or a
+    help text (one context, many entries) the English too."""
+    return (m.context, m.id) if m.context in (FIELD_CONTEXT, HELP_CONTEXT) else m.context
 
 
 def problems(po=None) -> list[str]:
@@ -273,7 +310,7 @@ def problems(po=None) -> list[str]:
         if not all(forms) or len(forms) not in (1, 3):
             out.append(f"{where}: not translated")
             continue
-        if m.context == FIELD_CONTEXT:         # a description: prose, its braces no fields
+        if m.context in (FIELD_CONTEXT, HELP_CONTEXT):   # prose: its braces are no fields
             continue
         if not is_notice(m.context):           # a label, a count: the same fields in each form
             ids = m.id if isinstance(m.id, tuple) else (m.id,)

@@ -36,12 +36,13 @@ def test_no_help_page_shows_a_type_name_or_a_placeholder(name, lang):
     """Every help page (the root's and each command's, with --lang en and ru) shows what an
     option takes in the user's words (DIR, DEG, PHI_DEG:RPM; nothing for a flag) and the usage
     line as ``run [OPTIONS] CASE``: no ``<bool>``, ``<list[float]>``, ``<path>`` or ``{case}``."""
-    args = ["--help"] if name is None else [name, "--help", "--lang", lang]
+    args = ([] if name is None else [name]) + ["--help", "--lang", lang]
     res = runner.invoke(app, args, env={"COLUMNS": "400"}, terminal_width=400)
     assert res.exit_code == 0, res.output
     assert not TYPE_NAME.search(res.output), (name, TYPE_NAME.search(res.output)[0])
     assert not PLACEHOLDER.search(res.output), (name, PLACEHOLDER.search(res.output)[0])
-    usage = next(ln for ln in res.output.splitlines() if "Usage:" in ln)
+    usage = next(ln for ln in res.output.splitlines()
+                 if ("Использование:" if lang == "ru" else "Usage:") in ln)
     if name is not None:
         for param in COMMAND.commands[name].params:
             if param.param_type_name == "argument":      # CASE, KEY, ANSWERS..., [FILE]

@@ -156,11 +156,70 @@ def _no_type(ctx=None) -> None:
     return None
 
 
+#: msgctxt of a help text in the catalogue (msgid: the English help, its lines joined)
+HELP_CONTEXT = "help"
+_HELP_LANG = "flywheel.help_lang"      # ctx.meta: the language of the help page being printed
+_RESTORE = "flywheel.help_restore"     # ctx.meta: (object, attribute, English) put back after it
+
+
+def help_msgid(text: str | None) -> str:
+    """The catalogue's msgid of a help text: dedented, each paragraph's lines joined by one
+    space (as typer shows a paragraph).
+
+    >>> help_msgid("Run the whole analysis;\\n    write summary.json.")
+    'Run the whole analysis; write summary.json.'
+    """
+    import inspect
+
+    paragraphs = inspect.cleandoc(text or "").split("\n\n")
+    return "\n\n".join(" ".join(line.strip() for line in p.splitlines()) for p in paragraphs)
+
+
+def _typer_words() -> dict[str, dict]:
+    """typer's own words on a help page, in both languages (render/help_page.py)."""
+    from flywheel.render.help_page import TYPER_WORDS
+
+    return TYPER_WORDS
+
+
+def _translated(obj, attribute: str, ctx) -> None:
+    """``obj.attribute`` (a help text) in Russian for the page being printed, its English
+    recorded to be put back; a text the catalogue lacks stays as it is."""
+    from flywheel.render.catalogue import catalogue
+
+    english = getattr(obj, attribute, None)
+    if not english:
+        return
+    msgid = help_msgid(english)
+    russian = catalogue("ru").pgettext(HELP_CONTEXT, msgid)
+    if russian != msgid:
+        ctx.meta[_RESTORE].append((obj, attribute, english))
+        setattr(obj, attribute, russian)
+
+
 class _UserWords:
     """A help page in the user's words, not typer's (0.29 shows each option's Python type:
     ``<bool>``, ``<list[float]>``, ``<path>``, and a required argument as ``{case}``): a flag
     shows no value (it takes none), an option its metavar (DIR, DEG, PHI_DEG:RPM: given where it is
-    declared), an argument its metavar alone, and the usage line ``run [OPTIONS] CASE``."""
+    declared), an argument its metavar alone, and the usage line ``run [OPTIONS] CASE``.
+
+    With ``--lang ru`` among the arguments the page is in Russian: each help text (msgctxt
+    "help", msgid :func:`help_msgid` of the English) and typer's words (:func:`_typer_words`)
+    from the catalogue, set while the page is formatted and put back after it (the English
+    page is typer's own, untouched)."""
+
+    def parse_args(self, ctx, args):
+        ctx.meta.setdefault(_HELP_LANG, lang_of_argv(list(args)))
+        if isinstance(self, TyperGroup) and "--help" in args and "--lang" in args:
+            i = args.index("--lang")            # `flywheel --help --lang ru`: the root has no
+            if i + 1 < len(args) and not any(a in getattr(self, "commands", {})
+                                             for a in args[:i]):
+                args = args[:i] + args[i + 2:]   # --lang; its help is the page's language
+        return super().parse_args(ctx, args)
+
+    def _russian(self, ctx) -> bool:
+        lang = ctx.meta.get(_HELP_LANG)
+        return (lang if lang is not None else state.argv_lang) == "ru"
 
     def get_params(self, ctx):
         params = super().get_params(ctx)
@@ -169,11 +228,48 @@ class _UserWords:
                 p.metavar = ""
             elif p.param_type_name == "argument" and p.metavar is not None:
                 p.display_type_rich = _no_type
+            if _RESTORE in ctx.meta:
+                _translated(p, "help", ctx)
         return params
 
     def collect_usage_pieces(self, ctx) -> list[str]:
-        return [re.sub(r"^\{(.*)\}", r"\1", piece)
-                for piece in super().collect_usage_pieces(ctx)]
+        pieces = [re.sub(r"^\{(.*)\}", r"\1", piece)
+                  for piece in super().collect_usage_pieces(ctx)]
+        if _RESTORE in ctx.meta:                     # a Russian page: [ПАРАМЕТРЫ], КОМАНДА
+            said = _typer_words()
+            russian = {said["en"][k]: said["ru"][k] for k in ("options", "command")}
+            pieces = [russian.get(piece, piece) for piece in pieces]
+        return pieces
+
+    def get_usage(self, ctx) -> str:
+        usage = super().get_usage(ctx)
+        if _RESTORE not in ctx.meta:
+            return usage
+        said = _typer_words()
+        return re.sub("^" + re.escape(said["en"]["usage"]), said["ru"]["usage"], usage)
+
+    def format_help(self, ctx, formatter) -> None:
+        if not self._russian(ctx) or _RESTORE in ctx.meta:
+            return super().format_help(ctx, formatter)
+        from typer import rich_utils
+
+        said = _typer_words()
+        typer_words = {k: getattr(rich_utils, k) for k in said["en"] if k.isupper()}
+        ctx.meta[_RESTORE] = []
+        try:
+            for k in typer_words:
+                setattr(rich_utils, k, said["ru"][k])
+            _translated(self, "help", ctx)
+            for name in getattr(self, "list_commands", lambda ctx: [])(ctx):
+                command = self.get_command(ctx, name)
+                for attribute in ("short_help", "help"):
+                    _translated(command, attribute, ctx)
+            return super().format_help(ctx, formatter)
+        finally:
+            for obj, attribute, english in reversed(ctx.meta.pop(_RESTORE)):
+                setattr(obj, attribute, english)
+            for k, english in typer_words.items():
+                setattr(rich_utils, k, english)
 
 
 class HelpCommand(_UserWords, TyperCommand):

@@ -62,8 +62,9 @@ def has(context: str) -> bool:
 
 
 def notice_codes() -> set[str]:
-    """The codes of the Notices the catalogue says (its msgctxts that are no "kind:key")."""
-    return {ctx for ctx in _english() if ":" not in ctx and ctx != "field"}
+    """The codes of the Notices the catalogue says (its msgctxts that are no "kind:key", no
+    case field's description and no help text)."""
+    return {ctx for ctx in _english() if ":" not in ctx and ctx not in ("field", "help")}
 
 
 def entry(context: str, lang: str = "en") -> str:
