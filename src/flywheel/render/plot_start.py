@@ -48,7 +48,6 @@ class Early:
 
     def __init__(self, target) -> None:
         import multiprocessing as mp
-        import signal
 
         ctx = mp.get_context("fork")
         reader, self.writer = ctx.Pipe(duplex=False)
@@ -56,13 +55,7 @@ class Early:
         self.process = ctx.Process(target=target, args=(
             reader, self.writer, self.counter, self.done, os.getpid()))
         self.sender = None
-        # no Ctrl-C or SIGTERM handler may run inside fork() (render/plots.py PlotJob): held
-        # back until the worker is started; the worker sets its own (worker_signals)
-        held = signal.pthread_sigmask(signal.SIG_BLOCK, {signal.SIGINT, signal.SIGTERM})
-        try:
-            self.process.start()
-        finally:
-            signal.pthread_sigmask(signal.SIG_SETMASK, held)
+        start_held([self.process])          # the worker sets its own signals (worker_signals)
         reader.close()
 
     def send(self, job: tuple) -> bool:
@@ -129,6 +122,21 @@ def release() -> None:
     early = claim()
     if early is not None:
         early.end()
+
+
+def start_held(processes, signals=None) -> None:
+    """Start ``processes`` (forked) with ``signals`` (default: SIGINT and SIGTERM) held back
+    until every one is started, then delivered here. No Ctrl-C or SIGTERM handler may run
+    inside fork(): Python ignores an exception raised in its after-fork hooks, and the signal
+    would be lost (the run then ends 0, not 130/143)."""
+    import signal
+
+    held = signal.pthread_sigmask(signal.SIG_BLOCK, signals or {signal.SIGINT, signal.SIGTERM})
+    try:
+        for process in processes:
+            process.start()
+    finally:
+        signal.pthread_sigmask(signal.SIG_SETMASK, held)
 
 
 def worker_signals(parent: int | None) -> None:

@@ -28,7 +28,7 @@ from flywheel.render.plots_scheme import (  # noqa: F401  (public here: animate,
     draw_scheme, draw_scheme_at, draw_scheme_fixed, scheme_names)
 from flywheel.render.numbers import typeset_params
 from flywheel.render import plot_start
-from flywheel.render.plot_start import worker_signals
+from flywheel.render.plot_start import start_held, worker_signals
 from flywheel.units import PA_PER_MPA
 from flywheel.render.choices import PLOT_CHOICES
 
@@ -640,12 +640,7 @@ def draw_with_others(results, folder: Path, lang: str, order: list[int], counter
         os._exit(128 + signum)
 
     signal.signal(signal.SIGTERM, stop)
-    held = signal.pthread_sigmask(signal.SIG_BLOCK, {signal.SIGTERM})    # not inside fork()
-    try:
-        for w in workers:
-            w.start()
-    finally:
-        signal.pthread_sigmask(signal.SIG_SETMASK, held)
+    start_held(workers, {signal.SIGTERM})
     try:
         _save_next(results, folder, lang, order, counter, fmt, dpi, done)
     finally:
@@ -676,10 +671,11 @@ class PlotJob:
         self._draw_here = (results, folder, lang, order, fmt, dpi)
         self.children: list = []
         self._done = None
+        others = min(jobs, len(names)) - 1      # the workers the first one forks
         early = plot_start.claim()          # started with the process (render/plot_start.py)
         if early is not None:
             if names and jobs > 1 and early.send(
-                    (results, folder, lang, order, fmt, dpi, min(jobs, len(names)) - 1)):
+                    (results, folder, lang, order, fmt, dpi, others)):
                 self.children, self._done = [early.process], early.done
                 return
             early.end()
@@ -692,19 +688,9 @@ class PlotJob:
             counter, self._done = ctx.Value("i", 0), ctx.Value("i", 0)
             self.children = [ctx.Process(target=_first_worker, args=(
                 results, folder, lang, order, counter, fmt, dpi, self._done, os.getpid(),
-                min(jobs, len(names)) - 1))]
-            import signal
-
-            # no Ctrl-C or SIGTERM handler may run inside fork(): Python ignores an exception
-            # raised in its after-fork hooks, and the signal would be lost (the run then ends
-            # 0, not 130/143). Held back until every worker is started, then delivered here.
-            held = signal.pthread_sigmask(signal.SIG_BLOCK, {signal.SIGINT, signal.SIGTERM})
+                others))]
             try:
-                try:
-                    for c in self.children:
-                        c.start()
-                finally:
-                    signal.pthread_sigmask(signal.SIG_SETMASK, held)
+                start_held(self.children)
             except BaseException:
                 self.stop()
                 raise
