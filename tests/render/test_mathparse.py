@@ -98,10 +98,10 @@ def _labels_figure() -> bytes:
 def test_simple_labels_drawn_with_matplotlibs_pixels():
     import matplotlib
 
-    with matplotlib.rc_context():
+    with matplotlib.rc_context(), fg.whole_texts():
         matplotlib.rcdefaults()
         matplotlib.rcParams.update(fg.RC)
-        reference = _labels_figure()            # pyparsing, none of the style's caches
+        reference = _labels_figure()   # pyparsing, texts drawn whole, none of the caches
     with fg.style():
         assert _labels_figure() == reference
 

@@ -42,7 +42,7 @@ def _draw() -> bytes:
 def _matplotlibs_own() -> bytes:
     import matplotlib
 
-    with matplotlib.rc_context():
+    with matplotlib.rc_context(), fg.whole_texts():     # texts drawn as within the style
         matplotlib.rcdefaults()
         matplotlib.rcParams.update(fg.RC)
         return _draw()

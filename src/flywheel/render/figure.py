@@ -75,7 +75,7 @@ def style(lang: str = "en"):
         restore_parse = mathparse.install()
         restore_copies = ticks.install()
         restore_markers = _copy_markers_shallow()
-        restore_layouts = _share_glyph_layouts()
+        restore_texts = _share_text_images()
         restore_bitmaps = _share_glyph_bitmaps()
         restore_tables = _share_font_tables()
         try:
@@ -83,7 +83,7 @@ def style(lang: str = "en"):
         finally:
             restore_tables()
             restore_bitmaps()
-            restore_layouts()
+            restore_texts()
             restore_markers()
             restore_copies()
             restore_parse()
@@ -254,50 +254,136 @@ def _copy_markers_shallow():
     return restore
 
 
-def _share_glyph_layouts():
-    """Within :func:`style`, the Agg canvas lays out each plain text's glyphs (FreeType and
-    HarfBuzz: 0.5 ms a string) once for every figure drawn, not each time it is drawn (the
-    tick labels "0", "30" … of every φ axis). The glyphs' places relative to the text's
-    origin depend on the text, its font (its whole state), the dpi, the hinting, and the
-    text's font features and language — the key; they are drawn as matplotlib draws them.
-    Only where this matplotlib draws text that way (3.11: ``FT2Font._layout`` and
-    ``RendererAgg._draw_text_glyphs_and_boxes``); elsewhere nothing changes. Returns the
-    function that puts the canvas's own drawing back."""
+def _share_text_images():
+    """Within :func:`style`, each plain text on the Agg canvas laid out and rendered once for
+    every figure drawn, as matplotlib drew text until 3.10: FreeType and HarfBuzz lay the
+    string out (``FT2Font.set_text``) and render it into one bitmap
+    (``draw_glyphs_to_bitmap``), drawn with one call at whole pixels, rotated as an image.
+    matplotlib 3.11 lays each string out twice (once to measure it, once to draw it, 0.2 ms
+    each) and draws it glyph by glyph at the fractions of a pixel its place has, so the same
+    tick label "90" is new at every place; here its size and its bitmap come from the one
+    layout (matplotlib ≤ 3.10's ``get_text_width_height_descent`` and ``draw_text``). A text
+    lands within half a pixel of 3.11's place, its glyphs the same shapes (compared side by
+    side, benchmarks/README.md). A mathtext label (parsed once: :func:`_share_mathtext`) is
+    drawn the same way: its glyphs rendered once, at the fractions of a pixel they have from a
+    baseline origin at whole pixels, into one bitmap (their coverages composed as Agg blends
+    them one over another), drawn with one call; its rules (fraction bars) as matplotlib draws
+    them from the same origin. The key: the text, its font (its whole state), the dpi, the
+    hinting and the antialiasing; a text with font features or a language (none of
+    flywheel's) is left to matplotlib. Returns the function that puts the canvas's own
+    drawing back."""
+    import math
+
     from matplotlib.backends import backend_agg
-    from matplotlib.ft2font import FT2Font
 
     agg = backend_agg.RendererAgg
-    own = agg.__dict__["draw_text"]
-    if not (hasattr(agg, "_draw_text_glyphs_and_boxes") and hasattr(FT2Font, "_layout")
-            and hasattr(agg, "_prepare_font")):
+    own_draw, own_size = agg.__dict__["draw_text"], agg.__dict__["get_text_width_height_descent"]
+    if not hasattr(agg, "_prepare_font"):
         return lambda: None
     laid = _Bounded(20000)
 
-    def draw_text(self, gc, x, y, s, prop, angle, ismath=False, mtext=None):
-        if ismath:
-            return own(self, gc, x, y, s, prop, angle, ismath, mtext)
-        features = mtext.get_fontfeatures() if mtext is not None else None
-        language = mtext.get_language() if mtext is not None else None
+    def text(self, s, prop, antialiased):
+        """(bitmap, width, height, descent, x and y offsets of the bitmap) [px] of ``s``."""
         flags = backend_agg.get_hinting_flag()
-        key = (s, prop, self.dpi, flags, None if features is None else tuple(features),
-               language)
-        items = laid.get(key)
-        if items is None:
+        key = (s, prop, self.dpi, flags, antialiased)
+        found = laid.get(key)
+        if found is None:
             font = self._prepare_font(prop)
-            items = laid.put((s, prop.copy(), *key[2:]),     # a copy: the text's may change
-                             tuple(font._layout(s, flags=flags, features=features,
-                                                language=language)))
-        size = prop.get_size_in_points()
-        self._draw_text_glyphs_and_boxes(
-            gc, x, y, angle,
-            ((item.ft_object, size, item.glyph_index, 0, 1, item.x, item.y) for item in items),
-            [])
+            font.set_text(s, 0.0, flags=flags)
+            font.draw_glyphs_to_bitmap(antialiased=antialiased)
+            w, h = font.get_width_height()
+            xo, yo = font.get_bitmap_offset()
+            found = laid.put((s, prop.copy(), *key[2:]),      # a copy: the text's may change
+                             (np.array(font.get_image()), w / 64.0, h / 64.0,
+                              font.get_descent() / 64.0, xo / 64.0, yo / 64.0))
+        return found
 
-    agg.draw_text = draw_text
+    def get_text_width_height_descent(self, s, prop, ismath):
+        if ismath:
+            return own_size(self, s, prop, ismath)
+        import matplotlib
+
+        _, w, h, d, _, _ = text(self, s, prop, bool(matplotlib.rcParams["text.antialiased"]))
+        return w, h, d
+
+    def draw_text(self, gc, x, y, s, prop, angle, ismath=False, mtext=None):
+        if ismath or (mtext is not None and (mtext.get_fontfeatures() is not None
+                                             or mtext.get_language() is not None)):
+            return own_draw(self, gc, x, y, s, prop, angle, ismath, mtext)
+        image, _, _, d, xo, yo = text(self, s, prop, gc.get_antialiased())
+        # the bitmap's lower left corner: the descent below the baseline, turned with the text
+        radians = math.radians(angle)
+        x = round(x + xo + d * math.sin(radians))
+        y = round(y + yo + d * math.cos(radians))
+        self._renderer.draw_text_image(image, x, y + 1, angle, gc)
+
+    def math_image(self, s, parse, prop, antialiased):
+        """(bitmap, x and y of its lower left corner from the baseline's origin, y down) [px]
+        of the mathtext ``s`` parsed as ``parse``, its origin at whole pixels."""
+        flags = backend_agg.get_hinting_flag()
+        key = (s, prop, self.dpi, flags, antialiased)
+        found = laid_math.get(key)
+        if found is not None:
+            return found
+        mode = render_mode.NORMAL if antialiased else render_mode.MONO
+        pieces = []
+        for font, size, _char, glyph_index, dx, dy in parse.glyphs:     # dy is upwards
+            font.set_size(size, self.dpi)
+            font._set_transform(np.array([[0x10000, 0], [0, 0x10000]]),
+                                [round(0x40 * dx), round(0x40 * dy)])
+            bitmap = font._render_glyph(glyph_index, flags, mode)
+            buffer = bitmap.buffer
+            if not antialiased:
+                buffer = buffer * 0xff
+            pieces.append((buffer, bitmap.left, -bitmap.top))            # y down
+        if not pieces:
+            return laid_math.put(key, (np.zeros((0, 0), np.uint8), 0, 0))
+        left = min(p[1] for p in pieces)
+        top = min(p[2] for p in pieces)
+        right = max(p[1] + p[0].shape[1] for p in pieces)
+        bottom = max(p[2] + p[0].shape[0] for p in pieces)
+        clear = np.full((bottom - top, right - left), 1.0)   # the part left uncovered
+        for buffer, x0, y0 in pieces:
+            rows, cols = buffer.shape
+            clear[y0 - top:y0 - top + rows, x0 - left:x0 - left + cols] *= 1.0 - buffer / 255.0
+        image = np.rint(255.0 * (1.0 - clear)).astype(np.uint8)
+        return laid_math.put((s, prop.copy(), *key[2:]), (image, left, bottom))
+
+    def draw_mathtext(self, gc, x, y, s, prop, angle):
+        antialiased = gc.get_antialiased()
+        parse = self.mathtext_parser.parse(s, self.dpi, prop, antialiased=antialiased)
+        image, left, bottom = math_image(self, s, parse, prop, antialiased)
+        x, y = round(x), round(y)
+        if image.size:
+            radians = math.radians(angle)
+            cos, sin = math.cos(radians), math.sin(radians)
+            self._renderer.draw_text_image(image, round(x + left * cos + bottom * sin),
+                                           round(y - left * sin + bottom * cos), angle, gc)
+        if parse.rects:
+            self._draw_text_glyphs_and_boxes(gc, x, y, angle, (), parse.rects)
+
+    render_mode = getattr(backend_agg, "RenderMode", None)
+    own_math = agg.__dict__["draw_mathtext"]
+    laid_math = _Bounded(5000)
+    agg.draw_text, agg.get_text_width_height_descent = draw_text, get_text_width_height_descent
+    if render_mode is not None and hasattr(agg, "_draw_text_glyphs_and_boxes"):
+        agg.draw_mathtext = draw_mathtext
 
     def restore() -> None:
-        agg.draw_text = own
+        agg.draw_text, agg.get_text_width_height_descent = own_draw, own_size
+        agg.draw_mathtext = own_math
     return restore
+
+
+@contextmanager
+def whole_texts():
+    """Texts drawn whole as within :func:`style` (:func:`_share_text_images`), nothing else of
+    the style: the drawing the style's other caches must keep to the pixel (their tests)."""
+    restore = _share_text_images()
+    try:
+        yield
+    finally:
+        restore()
 
 
 def _share_glyph_bitmaps():
