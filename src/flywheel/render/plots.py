@@ -585,17 +585,20 @@ def chosen(results, lang: str = "en", which: str = "all") -> list[str]:
 def _save_next(results, folder: Path, lang: str, order: list[int], counter, fmt: str = "png",
                dpi: int = fg.DPI, done=None) -> None:
     """Draw figures ``order[k]`` for k taken one at a time from the shared ``counter``; count
-    each one saved in ``done`` (a shared value, or None)."""
-    while True:
-        with counter.get_lock():
-            k = counter.value
-            counter.value += 1
-        if k >= len(order):
-            return
-        _save_some(results, folder, lang, [order[k]], fmt, dpi)
-        if done is not None:
-            with done.get_lock():
-                done.value += 1
+    each one saved in ``done`` (a shared value, or None). One style for all of them: its
+    caches (text sizes and bitmaps, glyphs, mathtext, fonts) serve every figure this process
+    draws, not one each."""
+    with fg.style(lang):
+        while True:
+            with counter.get_lock():
+                k = counter.value
+                counter.value += 1
+            if k >= len(order):
+                return
+            _save_some(results, folder, lang, [order[k]], fmt, dpi)
+            if done is not None:
+                with done.get_lock():
+                    done.value += 1
 
 
 def _worker(results, folder: Path, lang: str, order: list[int], counter, fmt: str = "png",
@@ -728,10 +731,11 @@ class PlotJob:
                 raise RuntimeError("a plotting process failed")
         else:
             results, folder, lang, order, fmt, dpi = self._draw_here
-            for k, i in enumerate(order):
-                if progress is not None:
-                    progress(k, total)
-                _save_some(results, folder, lang, [i], fmt, dpi)
+            with fg.style(lang):                  # one style: its caches serve every figure
+                for k, i in enumerate(order):
+                    if progress is not None:
+                        progress(k, total)
+                    _save_some(results, folder, lang, [i], fmt, dpi)
         if progress is not None:
             progress(total, total)
         return [self.folder / Path(n).with_suffix("." + self.fmt).name for n in self.names]
