@@ -345,3 +345,32 @@ def test_task2_plot_by_suffix_is_the_same_bytes_on_a_rerun(tmp_path, suffix):
         res = CliRunner().invoke(app, ["task2", "--profile", "triangle", "--plot", str(p)])
         assert res.exit_code == 0, res.output
     assert paths[0].read_bytes() == paths[1].read_bytes()
+
+
+def test_plan_arrows_added_as_artists_keep_the_pixels_of_patches(results, monkeypatch):
+    """plots_plans._arrows adds its arrows with add_artist (no display-space layout for the
+    data limits: a plan's limits are its frame's); the plans of velocities and of forces are
+    the same pixels as with matplotlib's add_patch, which widens the data limits by each arrow."""
+    import io
+
+    from matplotlib.axes import Axes
+    from matplotlib.patches import FancyArrowPatch
+
+    specs = dict(plots.all_figures(results, "en"))
+    names = [n for n in specs if n.startswith(("plan_velocity", "plan_forces"))]
+    assert len(names) == 2
+
+    def pngs() -> list[bytes]:
+        out = []
+        with fg.style("en"):
+            for n in names:
+                buf = io.BytesIO()
+                fg.save(specs[n](), buf)
+                out.append(buf.getvalue())
+        return out
+
+    ours = pngs()
+    own = Axes.add_artist
+    monkeypatch.setattr(Axes, "add_artist", lambda self, a: self.add_patch(a)
+                        if isinstance(a, FancyArrowPatch) else own(self, a))
+    assert pngs() == ours
