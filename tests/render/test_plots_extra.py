@@ -128,3 +128,48 @@ def test_time_law_and_transients_written_with_every_figure(results, tmp_path):
     paths = plots.write_plots(results, tmp_path)          # with the worksheet's plots
     assert [p.name for p in paths][-3:] == ["energy_mass.png", "time_law.png", "transients.png"]
     assert all(p.read_bytes().startswith(b"\x89PNG") for p in paths)
+
+
+def _dense(xy: np.ndarray, step: float = 0.5) -> np.ndarray:
+    """The polyline ``xy`` (display pixels) sampled every ``step`` px along each piece."""
+    out = [xy[:1]]
+    for a, b in zip(xy[:-1], xy[1:]):
+        n = max(1, int(np.hypot(*(b - a)) / step))
+        out.append(a + (b - a) * (np.arange(1, n + 1) / n)[:, None])
+    return np.concatenate(out)
+
+
+@pytest.mark.parametrize("name, lang", [("compressor.toml", "en"), ("shaper.toml", "ru"),
+                                        ("press.toml", "ru"), ("engine_inline4.toml", "en")])
+def test_energy_mass_tangency_angles_clear_of_the_curve_and_tangents(name, lang):
+    """Part (b)'s two angles φ (the points of tangency) are placed by the label placer once
+    the panels have their final places: in the saved figure each lies inside its panel, off
+    the curve, off both tangents and off the other (each had been set at a fixed offset: over
+    the curve in three of five bundled cases, over the panel's frame in two)."""
+    import io
+
+    from flywheel.render import figure as fg
+
+    res = analyze(load_case(CASES / name), n_points=720)
+    with fg.style(lang):
+        fig = plots_extra.figure_energy_mass(res, lang)
+        fg.save(fig, io.BytesIO())                     # laid out and drawn as a run draws it
+        from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+        renderer = FigureCanvasAgg(fig).get_renderer()
+        zoom = next(a for a in fig.axes if a.get_label() == "zoom")
+        angles = [t for t in zoom.texts if t.get_text().startswith("φ = ")]
+        assert len(angles) == 2
+        frame = zoom.get_window_extent(renderer)
+        boxes = [t.get_window_extent(renderer) for t in angles]
+        lines = [ln for ln in zoom.get_lines() if len(ln.get_xdata()) > 1]
+        assert len(lines) == 3                         # the curve and the two tangents
+        points = np.concatenate([_dense(zoom.transData.transform(
+            np.column_stack([ln.get_xdata(), ln.get_ydata()]))) for ln in lines])
+    for box in boxes:
+        assert frame.x0 <= box.x0 and box.x1 <= frame.x1
+        assert frame.y0 <= box.y0 and box.y1 <= frame.y1
+        inside = ((points[:, 0] > box.x0 + 0.5) & (points[:, 0] < box.x1 - 0.5)
+                  & (points[:, 1] > box.y0 + 0.5) & (points[:, 1] < box.y1 - 0.5))
+        assert not inside.any()
+    assert not boxes[0].overlaps(boxes[1])

@@ -771,17 +771,30 @@ def _laid_out(fig, dpi: int):
         yield
         return
     from matplotlib import cbook
+
+    if getattr(fig, "flywheel_laid_out_at", None) != dpi:
+        lay_out(fig, dpi)
+    with cbook._setattr_cm(fig, _layout_engine=None):
+        yield
+
+
+def lay_out(fig, dpi: int = DPI) -> None:
+    """Lay ``fig`` (with matplotlib's constrained layout) out now as :func:`save` lays it out
+    at ``dpi`` — its axes' aspects applied, then its layout engine run — for a builder that
+    places labels against the panels' final places (plots_extra's energy–mass diagram); a
+    save at that dpi keeps this layout instead of running the engine again (what is added
+    after must take no part in the layout: ``set_in_layout(False)``)."""
+    from matplotlib import cbook
     from matplotlib.backends.backend_agg import FigureCanvasAgg
 
     canvas = fig.canvas
     try:
         with cbook._setattr_cm(fig, dpi=dpi):
             fig._get_draw_artists(FigureCanvasAgg(fig).get_renderer())   # apply_aspect
-            engine.execute(fig)
+            fig.get_layout_engine().execute(fig)
     finally:
         fig.set_canvas(canvas)
-    with cbook._setattr_cm(fig, _layout_engine=None):
-        yield
+    fig.flywheel_laid_out_at = dpi
 
 
 def png_bytes(rgba, dpi: int) -> bytes:

@@ -154,10 +154,6 @@ def figure_energy_mass(results, lang: str = "en"):
     zx.plot(J_II[i_max], A[i_max], "o", color="tab:red", ms=5)
     zx.plot(J_II[i_min], A[i_min], "o", color="tab:green", ms=5)
     phi_deg = np.degrees(results.phi)
-    for i, dy in ((i_max, 8), (i_min, -14)):
-        zx.annotate(f"φ = {fmt(phi_deg[i], spec='.1f', zero=None)}°", xy=(J_II[i], A[i]),
-                    xytext=(4, dy),
-                    textcoords="offset points", fontsize=8)
     zx.set_xlim(*z)
     zx.set_xlabel(nm.axis("J_II", lang))
     zx.set_ylabel(_f(t, "T", u=uJ))
@@ -183,7 +179,35 @@ def figure_energy_mass(results, lang: str = "en"):
     bx.grid(True, alpha=0.3)
     bx.legend(fontsize=8, loc="upper center", bbox_to_anchor=(0.5, -0.13), frameon=False)
     bx.set_title(f"{_f(t, 'part_c')} {_f(t, 'merz', dT=dT_sym)}", fontsize=10)
+
+    # the points of tangency's angles, placed once the panels have their final places
+    from flywheel.render.figure import lay_out
+
+    lay_out(fig)
+    _tangency_labels(zx, J_II, A, [(i_max, top, k_p), (i_min, bottom, k_m)], z, phi_deg)
     return fig
+
+
+def _tangency_labels(zx, J_II, A, points, z, phi_deg) -> None:
+    """Part (b)'s angles φ beside the points of tangency by the one label placer
+    (render/labels.py): off the curve and the tangents, inside the panel, 4, 10 or 18 pt from
+    the point (the nearest free place). ``points``: (index,
+    the tangent's ΔT at J_II = 0, its slope) each; ``z``: the panel's J_II limits. The labels
+    take no part in the layout (it is done: the panels keep their places when it runs again
+    at saving)."""
+    from flywheel.render.labels import AxesLabels, around
+
+    places = np.vstack([around(4.0), around(10.0), around(18.0)])   # nearest first
+    labels = AxesLabels(zx)
+    labels.curve(np.column_stack([J_II, A]))
+    for _, at0, slope in points:
+        labels.curve(np.column_stack([z, at0 + slope * z]))
+    labels.markers([(J_II[i], A[i]) for i, _, _ in points], 3.0)
+    for i, _, _ in points:
+        label = labels.point((float(J_II[i]), float(A[i])),
+                             f"φ = {fmt(phi_deg[i], spec='.1f', zero=None)}°", places=places,
+                             fontsize=8)
+        label.set_in_layout(False)
 
 
 def figure_time_law(results, lang: str = "en"):
