@@ -374,3 +374,15 @@ def test_plan_arrows_added_as_artists_keep_the_pixels_of_patches(results, monkey
     monkeypatch.setattr(Axes, "add_artist", lambda self, a: self.add_patch(a)
                         if isinstance(a, FancyArrowPatch) else own(self, a))
     assert pngs() == ours
+
+
+@pytest.mark.parametrize("lang, zero", [("en", "closes to 0 N"), ("ru", "невязка 0 Н")])
+def test_force_polygons_closing_by_round_off_say_zero(lang, zero):
+    """A group in equilibrium closes its polygon to round-off (engine_inline4: 4.5e-13 N of
+    forces up to 18 kN): the panel says 0 through the one formatter, never an exponent such as
+    "4.5e-13" (nor a decimal point in a Russian figure)."""
+    res = analyze(load_case(CASE.parent / "engine_inline4.toml"), n_points=360)
+    name = next(n for n, _ in plots.all_figures(res, lang) if n.startswith("plan_forces"))
+    fig = fg.drawn(dict(plots.all_figures(res, lang))[name])
+    closes = [a.get_title().splitlines()[-1] for a in fig.axes if a.get_title()]
+    assert len(closes) >= 5 and set(closes) == {zero}

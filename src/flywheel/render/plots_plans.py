@@ -48,7 +48,7 @@ _TEXT = words("plots_plans", {
     "known": "reactions of the groups solved before",
     "reaction": "reactions found",
     "chord": "whole reaction R = Rⁿ + Rτ",
-    "closes": "closes to {c:.2g} N",
+    "closes": "closes to {c} N",
     "omega": "ω = {w} rad/s, ε = {e} rad/s²",
     "links_w": "ω of the links, rad/s: {x}",
     "links_e": "ε of the links, rad/s²: {x}",
@@ -315,6 +315,11 @@ def _table_height(lines: list[str], width: float, fontsize: float = 7.5) -> floa
 
 # -- the kinematic plans --------------------------------------------------------------------------
 
+#: the radius [pt] round an arrow's head a label keeps clear of (_arrows' heads: "-|>" at
+#: mutation_scale 9, 3.6 pt long and wide, and the line's width)
+_HEAD_PT = 3.5
+
+
 def _arrows(ax, tails: np.ndarray, heads: np.ndarray, colour: str, width: float = 1.6,
             style: str = "-") -> None:
     """Arrows from tails to heads [mm], their heads a fixed size on the page. Added as artists,
@@ -543,6 +548,9 @@ def figure_force_polygons(results, ps, lang: str = "en"):
             _set_frame(ax, lo, hi, lang)
             labels = AxesLabels(ax)
             labels.segments(segs)
+            # each arrow's head (a fixed size on the page: over all of a short vector, such as
+            # a weight's) an obstacle no label may cover
+            labels.markers(np.array([h for _, h in segs]), _HEAD_PT)
             # the longest first: the short vectors' labels then find room round them
             for v in sorted(pg.vectors + pg.chords, key=lambda v: -float(v.value)):
                 labels.along(np.array(v.tail) / mu, np.array(v.head) / mu,
@@ -552,7 +560,8 @@ def figure_force_polygons(results, ps, lang: str = "en"):
             what = (_t(lang, "crank", l=pg.links[0]) if pg.kind == "crank"
                     else _t(lang, "group", g=pg.group, k=pg.kind, l=", ".join(pg.links)))
             scale = _scale_text("mu_F", mu, lang)
-            ax.set_title(f"{what}\n{scale}\n{_t(lang, 'closes', c=pg.closure)}", fontsize=8.5,
+            closes = _t(lang, "closes", c=_clean(pg.closure, pg.longest))   # round-off: 0
+            ax.set_title(f"{what}\n{scale}\n{closes}", fontsize=8.5,
                          y=1.01)   # a fixed place: no layout pass for it
     fig.legend(handles=handles, loc="lower center", bbox_to_anchor=(0.5, 0.05 / H),
                ncols=ncols, fontsize=8, frameon=False)
