@@ -315,11 +315,6 @@ def _table_height(lines: list[str], width: float, fontsize: float = 7.5) -> floa
 
 # -- the kinematic plans --------------------------------------------------------------------------
 
-#: the radius [pt] round an arrow's head a label keeps clear of (_arrows' heads: "-|>" at
-#: mutation_scale 9, 3.6 pt long and wide, and the line's width)
-_HEAD_PT = 3.5
-
-
 def _arrows(ax, tails: np.ndarray, heads: np.ndarray, colour: str, width: float = 1.6,
             style: str = "-") -> None:
     """Arrows from tails to heads [mm], their heads a fixed size on the page. Added as artists,
@@ -548,9 +543,6 @@ def figure_force_polygons(results, ps, lang: str = "en"):
             _set_frame(ax, lo, hi, lang)
             labels = AxesLabels(ax)
             labels.segments(segs)
-            # each arrow's head (a fixed size on the page: over all of a short vector, such as
-            # a weight's) an obstacle no label may cover
-            labels.markers(np.array([h for _, h in segs]), _HEAD_PT)
             # the longest first: the short vectors' labels then find room round them
             for v in sorted(pg.vectors + pg.chords, key=lambda v: -float(v.value)):
                 labels.along(np.array(v.tail) / mu, np.array(v.head) / mu,
