@@ -12,6 +12,7 @@ import pytest
 pytest.importorskip("matplotlib")
 
 from flywheel.render import figure as fg  # noqa: E402
+from flywheel.render import figure_cache  # noqa: E402
 
 
 def _draw(pil: bool = False) -> bytes:
@@ -39,10 +40,10 @@ def _draw(pil: bool = False) -> bytes:
 
 def _matplotlibs_own(pil: bool = False) -> bytes:
     """The same figure in the same settings, drawn by matplotlib with its texts drawn whole
-    (fg.whole_texts) and none of the caches."""
+    (figure_cache.whole_texts) and none of the caches."""
     import matplotlib
 
-    with matplotlib.rc_context(), fg.whole_texts():
+    with matplotlib.rc_context(), figure_cache.whole_texts():
         matplotlib.rcdefaults()
         matplotlib.rcParams.update(fg.RC)
         return _draw(pil)
@@ -274,7 +275,7 @@ def _ink(s: str, rotation: float, whole: bool):
     from matplotlib.backends.backend_agg import FigureCanvasAgg
     from matplotlib.figure import Figure
 
-    with matplotlib.rc_context(), (fg.whole_texts() if whole else contextlib.nullcontext()):
+    with matplotlib.rc_context(), (figure_cache.whole_texts() if whole else contextlib.nullcontext()):
         matplotlib.rcdefaults()
         matplotlib.rcParams.update(fg.RC)
         fig = Figure((3.0, 3.0), dpi=120)
@@ -286,7 +287,7 @@ def _ink(s: str, rotation: float, whole: bool):
 
 @pytest.mark.parametrize("s, rotation", WHOLE)
 def test_a_text_drawn_whole_lands_where_matplotlib_draws_it(s, rotation):
-    """Drawn as one bitmap at whole pixels (fg.whole_texts), a text covers the box matplotlib's
+    """Drawn as one bitmap at whole pixels (figure_cache.whole_texts), a text covers the box matplotlib's
     own drawing, glyph by glyph at fractions of a pixel, covers — to 2 px on every side (a
     pixel's rounding each way; turned by 30° or 45°, Agg resamples the bitmap) — with the same
     ink to 4 % (turned by 30°: 3.3 %; unturned or a quarter turn: 0.1 %): no glyph lost,
@@ -333,5 +334,5 @@ def test_a_plain_text_measures_as_matplotlib_measures_it():
             prop = FontProperties(size=size)
             for s in ("0", "−0,025", "AVWa кг·м² (N)", "Ti"):
                 own = renderer.get_text_width_height_descent(s, prop, False)
-                with fg.whole_texts():
+                with figure_cache.whole_texts():
                     assert renderer.get_text_width_height_descent(s, prop, False) == own

@@ -9,6 +9,7 @@ import pytest
 pytest.importorskip("matplotlib")
 
 from flywheel.render import figure as fg  # noqa: E402
+from flywheel.render import figure_cache  # noqa: E402
 from flywheel.render import mathparse  # noqa: E402
 
 # the forms the figures' labels take (render/nomenclature.py's symbols, plots' sentences),
@@ -98,7 +99,7 @@ def _labels_figure() -> bytes:
 def test_simple_labels_drawn_with_matplotlibs_pixels():
     import matplotlib
 
-    with matplotlib.rc_context(), fg.whole_texts():
+    with matplotlib.rc_context(), figure_cache.whole_texts():
         matplotlib.rcdefaults()
         matplotlib.rcParams.update(fg.RC)
         reference = _labels_figure()   # pyparsing, texts drawn whole, none of the caches

@@ -11,6 +11,7 @@ import pytest
 pytest.importorskip("matplotlib")
 
 from flywheel.render import figure as fg  # noqa: E402
+from flywheel.render import figure_cache  # noqa: E402
 from flywheel.render import ticks  # noqa: E402
 
 
@@ -42,7 +43,7 @@ def _draw() -> bytes:
 def _matplotlibs_own() -> bytes:
     import matplotlib
 
-    with matplotlib.rc_context(), fg.whole_texts():     # texts drawn as within the style
+    with matplotlib.rc_context(), figure_cache.whole_texts():     # texts drawn as within the style
         matplotlib.rcdefaults()
         matplotlib.rcParams.update(fg.RC)
         return _draw()
