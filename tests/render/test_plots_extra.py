@@ -173,3 +173,33 @@ def test_energy_mass_tangency_angles_clear_of_the_curve_and_tangents(name, lang)
                   & (points[:, 1] > box.y0 + 0.5) & (points[:, 1] < box.y1 - 0.5))
         assert not inside.any()
     assert not boxes[0].overlaps(boxes[1])
+
+
+@pytest.mark.parametrize("case, lang, names", [
+    ("shaper.toml", "ru", ("epsilon.png", "time_law.png", "energy_mass.png")),
+    ("engine_inline4.toml", "ru", ("indicator_1.png",)),
+    ("compressor_worksheet.toml", "ru", ("indicator_HP.png", "time_law.png"))])
+def test_a_long_case_title_is_broken_inside_the_figure(case, lang, names):
+    """A case whose title is long (the shaper's, the worksheet compressor's in Russian) has its
+    figures' headings broken into lines that stay inside the figure; they ran past both edges
+    (a title's line count estimated with mathtext's markup, "$\\varepsilon$", as letters; the
+    headings of the constrained-layout figures and the indicators never broken)."""
+    import io
+
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+    from flywheel.render import figure as fg
+    from flywheel.render import plots
+
+    res = analyze(load_case(CASES / case), n_points=360)
+    specs = dict(plots.all_figures(res, lang))
+    for name in names:
+        with fg.style(lang):
+            fig = specs[name]()
+            fg.save(fig, io.BytesIO())
+            renderer = FigureCanvasAgg(fig).get_renderer()
+            width = fig.bbox.width
+            heads = [fig._suptitle] + [ax.title for ax in fig.axes]
+            for text in (t for t in heads if t is not None and t.get_text()):
+                box = text.get_window_extent(renderer)
+                assert 0.0 <= box.x0 and box.x1 <= width, (name, text.get_text())

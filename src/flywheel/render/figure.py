@@ -216,6 +216,7 @@ _ROW_H = 0.18             # a legend row at 8 pt [in]
 _RIGHT_BELOW = 0.35       # the right margin of a figure whose legend is below [in]
 _GAP = 0.08               # between a panel (or its tick labels) and its legend [in]
 _XLABEL_H = 0.48          # a panel's x tick labels and axis label [in]
+_EDGE = 0.06              # at least this between a y axis's label and the figure's edge [in]
 
 
 def legends_below(fig, axes, *, max_cols: int = 4, right: float = _RIGHT_BELOW):
@@ -231,6 +232,9 @@ def legends_below(fig, axes, *, max_cols: int = 4, right: float = _RIGHT_BELOW):
     ax_w = (sp.right - sp.left) * w
     new_w = left + ax_w + right
     renderer = FigureCanvasAgg(fig).get_renderer()
+    need = _left_room(axes, renderer)             # the figure's width kept: the panels narrower
+    if need > left:
+        ax_w, left = ax_w - (need - left), need
     top += _fit_title(axes[0], ax_w + 2 * min(left, right), renderer)   # centred on the axes
     rows = []                                     # (axes, its height, its legend's height) [in]
     for ax in axes:
@@ -260,6 +264,32 @@ def legends_below(fig, axes, *, max_cols: int = 4, right: float = _RIGHT_BELOW):
     return fig
 
 
+
+
+def _left_room(axes, renderer) -> float:
+    """The room [in] left of ``axes`` their y axes' tick labels and axis labels take, with
+    :data:`_EDGE` to spare (wide tick labels such as "−0.0100" pushed a label to the figure's
+    edge under the fixed margin)."""
+    need = 0.0
+    for ax in axes:
+        bb = ax.yaxis.get_tightbbox(renderer)
+        if bb is not None:
+            need = max(need, (ax.get_window_extent(renderer).x0 - bb.x0) / ax.figure.dpi + _EDGE)
+    return need
+
+
+def fit_left(fig, axes) -> None:
+    """``axes`` (of a :func:`figure` with fixed margins) made narrower from the left, their
+    right edges kept, until their y axes' tick labels and labels fit in the figure; nothing
+    moves if they fit."""
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+    w = float(fig.get_size_inches()[0])
+    need = _left_room(axes, FigureCanvasAgg(fig).get_renderer()) / w
+    for ax in axes:
+        pos = ax.get_position()
+        if need > pos.x0:
+            ax.set_position([need, pos.y0, pos.x1 - need, pos.height])
 
 
 def _legend_below(ax, **kw):
@@ -310,6 +340,28 @@ def fit_heading(fig, text, width: float) -> float:
     return extra
 
 
+def wrap_lines(text, width: float) -> None:
+    """Each plain line of the Text ``text`` (a heading of a figure laid out by matplotlib's
+    constrained layout, which does not break lines) wider than ``width`` [in] broken at spaces,
+    as :func:`fit_text` breaks a title; its other lines, its line breaks and any line with
+    mathtext kept."""
+    import textwrap
+
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+    if not _may_overflow(text, width):
+        return
+    renderer = FigureCanvasAgg(text.figure).get_renderer()
+    prop = text.get_fontproperties()
+    lines = []
+    for line in text.get_text().split("\n"):
+        wide = renderer.get_text_width_height_descent(line, prop, False)[0] / text.figure.dpi \
+            if "$" not in line else 0.0
+        chars = max(12, int(len(line) * (width - 0.1) / wide)) if wide > width - 0.1 else 0
+        lines += textwrap.wrap(line, chars, break_long_words=False) if chars else [line]
+    text.set_text("\n".join(lines))
+
+
 def _may_overflow(text, width: float) -> bool:
     """Whether the Text ``text`` could be wider than ``width`` [in]: no glyph of DejaVu Sans
     is wider than 0.75 em on average over a title, so a shorter one needs no measuring (a
@@ -326,6 +378,7 @@ def fit_text(text, width: float, renderer) -> float:
     """A title (a matplotlib Text) wider than ``width`` [in], the room it has, broken after
     the case's name (the last ": ", as :func:`title` joins them), then at spaces if a line is
     still too wide; returns the height [in] the added lines need (0 if none)."""
+    import re
     import textwrap
 
     s = text.get_text()
@@ -334,10 +387,18 @@ def fit_text(text, width: float, renderer) -> float:
         return 0.0
     head, sep, tail = s.rpartition(": ")
     parts = [head + ":", tail] if sep else [s]
-    chars = max(12, int(len(s) * (width - 0.1) / wide))        # characters a line holds
-    lines = [ln for part in parts for ln in (textwrap.wrap(part, chars, break_long_words=False)
-                                             if len(part) > chars else [part])]
-    text.set_text("\n".join(lines))
+    # the characters a line holds, from the characters seen (mathtext's markup, such as
+    # "$\varepsilon$", draws one glyph: counted whole, it let a long line through)
+    seen = len(re.sub(r"\\[A-Za-z]+|[$_^{}]", "", s))
+    chars = max(12, int(seen * (width - 0.1) / wide))
+    for _ in range(6):                  # each line measured: narrower until every one fits
+        lines = [ln for part in parts for ln in (textwrap.wrap(part, chars,
+                                                               break_long_words=False)
+                                                 if len(part) > chars else [part])]
+        text.set_text("\n".join(lines))
+        if chars == 12 or text.get_window_extent(renderer).width / DPI <= width - 0.1:
+            break
+        chars = max(12, int(chars * 0.9))
     return (len(lines) - 1) * 1.2 * float(text.get_fontsize()) / 72.0
 
 

@@ -220,6 +220,7 @@ def figure_indicator(results, cylinder, lang: str = "en"):
         sec.set_ylabel(nm.axis("p_{cylinder}", lang, si="MPa"))
         ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.13), ncols=2)
         ax.set_title(fg.title(results, _t(lang, "indicator", c=cylinder.name)))
+        fg.fit_heading(fig, ax.title, fg.A4_W)     # a long case title broken into lines
         return fig
     return fg.drawn(build)
 

@@ -12,6 +12,7 @@ import numpy as np
 
 from flywheel.render import nomenclature as nm
 from flywheel.render.catalogue import words
+from flywheel.render.figure import A4_W, lay_out, wrap_lines
 from flywheel.render.numbers import fmt, typeset_params
 
 # Sentence templates only; every quantity's symbol, name and unit comes from the nomenclature
@@ -40,6 +41,12 @@ TEXT = words("plots_extra", {"em": "Energy–mass diagram (Wittenbauer) and Merz
 def _f(t: dict, key: str, **kw) -> str:
     """The template ``key`` of ``t`` with the symbols, numbers and units filled in."""
     return t[key].format(**typeset_params(kw))         # Russian numbers in a Russian figure
+
+
+#: the width [in] an axes' title has in a figure as wide as A4's text: it is centred on the
+#: axes, which the y axis's labels move to the right (a suptitle, centred on the figure, has
+#: A4_W − 0.2)
+_TITLE_W = A4_W - 1.3
 
 
 def _figure(size):
@@ -85,8 +92,10 @@ def figure_energy_mass(results, lang: str = "en"):
     ax, zx, bx = axd["full"], axd["zoom"], axd["merzalov"]
     for name, a in axd.items():
         a.set_label(name)
-    fig.suptitle(f"{results.title}\n{_f(t, 'em', dT=dT_sym)}; "
-                 + _f(t, "J_exact", J=J_sym, exact=_f(t, "exact"), v=J_I, u=uI), fontsize=11)
+    heading = fig.suptitle(f"{results.title}\n{_f(t, 'em', dT=dT_sym)}; "
+                           + _f(t, "J_exact", J=J_sym, exact=_f(t, "exact"), v=J_I, u=uI),
+                           fontsize=11)
+    wrap_lines(heading, A4_W - 0.2)               # a long case title in two lines
 
     # -- (a) the whole construction -----------------------------------------------------------
     x_hi = max(J_II.max(), 0.0)
@@ -181,8 +190,6 @@ def figure_energy_mass(results, lang: str = "en"):
     bx.set_title(f"{_f(t, 'part_c')} {_f(t, 'merz', dT=dT_sym)}", fontsize=10)
 
     # the points of tangency's angles, placed once the panels have their final places
-    from flywheel.render.figure import lay_out
-
     lay_out(fig)
     _tangency_labels(zx, J_II, A, [(i_max, top, k_p), (i_min, bottom, k_m)], z, phi_deg)
     return fig
@@ -228,6 +235,7 @@ def figure_time_law(results, lang: str = "en"):
                                              v=results.scalars.cycle_time,
                                              u=nm.unit_of("cycle_time", lang)),
                  fontsize=10)
+    wrap_lines(a1.title, _TITLE_W)                # a long case title in two lines
     return fig
 
 
@@ -265,5 +273,6 @@ def figure_transients(results, lang: str = "en"):
     ax.grid(True, alpha=0.3)
     ax.legend(fontsize=8)
     ax.set_title(f"{results.title}\n{_f(t, 'tr')}", fontsize=10)
+    wrap_lines(ax.title, _TITLE_W)
     return fig
 
