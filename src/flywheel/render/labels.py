@@ -123,8 +123,10 @@ class Placer:
 
     @property
     def cloud(self) -> np.ndarray:
+        """The lines' sampled points (rows of x, y), in the order of x."""
         if self._cloud is None:
-            self._cloud = np.concatenate(self._clouds)
+            cloud = np.concatenate(self._clouds)
+            self._cloud = cloud[np.argsort(cloud[:, 0], kind="stable")]
         return self._cloud
 
     # -- choosing -------------------------------------------------------------------------
@@ -150,6 +152,9 @@ class Placer:
                    & (y0[:, None] < q[None, :, 3]) & (q[None, :, 1] < y1[:, None]))
             c += HARD * hit.sum(axis=1)
         pts = self.cloud
+        if len(pts) and m:       # only the points within the candidates' span of x can count
+            pts = pts[np.searchsorted(pts[:, 0], x0.min(), side="right"):
+                      np.searchsorted(pts[:, 0], x1.max(), side="left")]
         if len(pts):
             px, py = pts[None, :, 0], pts[None, :, 1]
             chunk = max(1, 400_000 // len(pts))     # candidates × points at once, bounded
@@ -237,6 +242,7 @@ class AxesLabels:
         fb = ax.get_window_extent(self.renderer)
         self.placer = Placer((fb.x0 * self.pt, fb.y0 * self.pt, fb.x1 * self.pt,
                               fb.y1 * self.pt) if frame else None, step)
+        self._probe = None
         if not hasattr(self.fig, "flywheel_labels"):
             self.fig.flywheel_labels = []
             self.fig.flywheel_markers = []
@@ -248,10 +254,19 @@ class AxesLabels:
 
     def size(self, text: str, **kw) -> tuple[float, float]:
         """The extent (w, h) [pt] a Text of ``text`` and ``kw`` (fontsize, fontweight …)
-        draws — the renderer's own measure."""
-        probe = self.fig.text(0.0, 0.0, text, **kw)
+        draws — the renderer's own measure, of one Text of the figure's kept for measuring
+        (not drawn): its font set anew for each, as a new Text's would be."""
+        from matplotlib.font_manager import FontProperties
+        from matplotlib.text import Text
+
+        if self._probe is None:
+            self._probe = Text(0.0, 0.0, "", transform=self.fig.transSubfigure)
+            self._probe.set_figure(self.fig)
+        probe = self._probe
+        probe.set_text(text)
+        probe.set_fontproperties(FontProperties())
+        probe.update(kw)
         bb = probe.get_window_extent(self.renderer)
-        probe.remove()
         return bb.width * self.pt, bb.height * self.pt
 
     def markers(self, xy, radius: float) -> None:
