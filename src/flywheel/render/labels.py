@@ -86,6 +86,7 @@ class Placer:
         self.markers: list[tuple[float, float, float, float]] = []
         self._clouds: list[np.ndarray] = [np.zeros((0, 2))]
         self._cloud = None
+        self._by_x = None
 
     # -- obstacles ------------------------------------------------------------------------
     def marker(self, xy, radius: float) -> None:
@@ -123,11 +124,19 @@ class Placer:
 
     @property
     def cloud(self) -> np.ndarray:
-        """The lines' sampled points (rows of x, y), in the order of x."""
+        """The lines' sampled points (rows of x, y), line by line."""
         if self._cloud is None:
-            cloud = np.concatenate(self._clouds)
-            self._cloud = cloud[np.argsort(cloud[:, 0], kind="stable")]
+            self._cloud = np.concatenate(self._clouds)
+            self._by_x = None
         return self._cloud
+
+    @property
+    def cloud_by_x(self) -> np.ndarray:
+        """:attr:`cloud` in the order of x."""
+        cloud = self.cloud
+        if self._by_x is None:
+            self._by_x = cloud[np.argsort(cloud[:, 0], kind="stable")]
+        return self._by_x
 
     # -- choosing -------------------------------------------------------------------------
     def boxes_of(self, anchor, size, places) -> np.ndarray:
@@ -151,7 +160,7 @@ class Placer:
             hit = ((x0[:, None] < q[None, :, 2]) & (q[None, :, 0] < x1[:, None])
                    & (y0[:, None] < q[None, :, 3]) & (q[None, :, 1] < y1[:, None]))
             c += HARD * hit.sum(axis=1)
-        pts = self.cloud
+        pts = self.cloud_by_x
         if len(pts) and m:       # only the points within the candidates' span of x can count
             pts = pts[np.searchsorted(pts[:, 0], x0.min(), side="right"):
                       np.searchsorted(pts[:, 0], x1.max(), side="left")]
