@@ -108,14 +108,15 @@ def test_matplotlib_given_back_after_the_style():
     def now():
         return (RendererAgg.__dict__["draw_text"], MarkerStyle.__dict__["_set_marker"],
                 MathTextParser.__dict__["_parse_cached"],
-                RendererAgg.__dict__["_draw_text_glyphs_and_boxes"],
+                RendererAgg.__dict__["draw_mathtext"],
                 FT2Font.__dict__["get_sfnt_table"], _mathtext.Parser.__dict__["parse"],
-                _mathtext.TruetypeFonts.__dict__["_get_info"], axis.Axis.__dict__["_get_tick"])
+                _mathtext.TruetypeFonts.__dict__["_get_info"], axis.Axis.__dict__["_get_tick"],
+                RendererAgg.__dict__["get_text_width_height_descent"])
 
     before = now()
     with fg.style():
         assert RendererAgg.__dict__["draw_text"] is not before[0]
-        assert RendererAgg.__dict__["_draw_text_glyphs_and_boxes"] is not before[3]
+        assert RendererAgg.__dict__["draw_mathtext"] is not before[3]
         assert FT2Font.__dict__["get_sfnt_table"] is not before[4]
         assert now()[5:] != before[5:] and all(a is not b for a, b in zip(now()[5:], before[5:]))
         _draw()

@@ -77,13 +77,11 @@ def style(lang: str = "en"):
         restore_copies = ticks.install()
         restore_markers = fc.copy_markers_shallow()
         restore_texts = fc.share_text_images()
-        restore_bitmaps = fc.share_glyph_bitmaps()
         restore_tables = fc.share_font_tables()
         try:
             yield
         finally:
             restore_tables()
-            restore_bitmaps()
             restore_texts()
             restore_markers()
             restore_copies()

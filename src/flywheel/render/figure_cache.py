@@ -1,8 +1,8 @@
 """The caches render/figure.py's ``style()`` puts around matplotlib for every figure drawn in
 it (issue 26), each a function that installs one and returns the function that takes it back:
 text sizes, parsed mathtext, font files and their tables, markers copied without deep copies,
-glyph bitmaps, and every text drawn whole (laid out and rendered once into one bitmap, placed
-at whole pixels: :func:`whole_texts`). The style fixes matplotlib's settings, so a cache's key
+and every text drawn whole (laid out and rendered once into one bitmap, placed at whole
+pixels: :func:`whole_texts`). The style fixes matplotlib's settings, so a cache's key
 holds all else a value depends on; tests/render/test_figure_cost.py checks they keep every pixel
 of the drawing with whole texts alone, and that drawing against matplotlib's own. numpy only at
 import; matplotlib inside the functions."""
@@ -265,74 +265,6 @@ def whole_texts():
         yield
     finally:
         restore()
-
-
-def share_glyph_bitmaps():
-    """Within :func:`style`, the Agg canvas renders each glyph (FreeType: hinting and
-    rasterising, 0.1 ms a glyph, a quarter of a figure's time) once for every place it is
-    drawn at that differs by whole pixels, not once per glyph drawn. A glyph's bitmap depends on
-    its font (the object: its file and face), the size, the dpi, the rotation, the loading
-    flags, the render mode and the place's fraction of a pixel (FreeType's 1/64) — the key;
-    moving it by whole pixels moves its bitmap by as many (FreeType translates the outline by
-    whole pixels exactly). The glyphs are drawn as matplotlib 3.11 draws them
-    (``RendererAgg._draw_text_glyphs_and_boxes``); where that is not found, nothing changes.
-    Returns the function that puts the canvas's own drawing back."""
-    import math
-
-    from matplotlib.backends import backend_agg
-
-    agg = backend_agg.RendererAgg
-    own = agg.__dict__.get("_draw_text_glyphs_and_boxes")
-    render_mode = getattr(backend_agg, "RenderMode", None)
-    if own is None or render_mode is None or not hasattr(backend_agg, "get_hinting_flag"):
-        return lambda: None
-    rendered = _Bounded(50000)
-    matrices: dict = {}
-
-    def matrix(cos, sin, slant, extend):
-        key = (cos, sin, slant, extend)
-        found = matrices.get(key)
-        if found is None:
-            found = matrices[key] = (
-                0x10000 * np.array([[cos, -sin], [sin, cos]])
-                @ [[extend, extend * slant], [0, 1]]).round().astype(int)
-        return found
-
-    def draw(self, gc, x, y, angle, glyphs, boxes):
-        cos = math.cos(math.radians(angle))
-        sin = math.sin(math.radians(angle))
-        load_flags = backend_agg.get_hinting_flag()
-        antialiased = gc.get_antialiased()
-        mode = render_mode.NORMAL if antialiased else render_mode.MONO
-        height = self.height
-        for font, size, glyph_index, slant, extend, dx, dy in glyphs:
-            px = round(0x40 * (x + dx * cos - dy * sin))
-            py = round(0x40 * (height - y + dx * sin + dy * cos))
-            key = (font, size, self.dpi, cos, sin, slant, extend, glyph_index, load_flags, mode,
-                   px & 0x3F, py & 0x3F)
-            found = rendered.get(key)
-            if found is None:
-                font.set_size(size, self.dpi)
-                font._set_transform(matrix(cos, sin, slant, extend), [px, py])
-                bitmap = font._render_glyph(glyph_index, load_flags, mode)
-                buffer = bitmap.buffer
-                if not antialiased:
-                    buffer *= 0xff
-                found = rendered.put(key, (buffer, bitmap.left - (px >> 6),
-                                           bitmap.top - (py >> 6)))
-            buffer, left, top = found
-            # draw_text_image's y is downwards & the bitmap bottom side.
-            self._renderer.draw_text_image(
-                buffer, left + (px >> 6), int(height) - (top + (py >> 6)) + buffer.shape[0],
-                0, gc)
-        if boxes:
-            own(self, gc, x, y, angle, (), boxes)
-
-    agg._draw_text_glyphs_and_boxes = draw
-
-    def restore() -> None:
-        agg._draw_text_glyphs_and_boxes = own
-    return restore
 
 
 def share_font_tables():
