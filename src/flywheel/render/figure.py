@@ -365,24 +365,43 @@ def fit_heading(fig, text, width: float) -> float:
 
 def wrap_lines(text, width: float) -> None:
     """Each plain line of the Text ``text`` (a heading of a figure laid out by matplotlib's
-    constrained layout, which does not break lines) wider than ``width`` [in] broken at spaces,
-    as :func:`fit_text` breaks a title; its other lines, its line breaks and any line with
-    mathtext kept."""
-    import textwrap
-
+    constrained layout, which does not break lines) wider than ``width`` [in] broken at spaces
+    as :func:`fit_text` breaks a title (:func:`_broken`); its other lines, its line breaks and
+    any line with mathtext kept."""
     from matplotlib.backends.backend_agg import FigureCanvasAgg
 
     if not _may_overflow(text, width):
         return
     renderer = FigureCanvasAgg(text.figure).get_renderer()
     prop = text.get_fontproperties()
+
+    def wide(line: str) -> float:
+        return renderer.get_text_width_height_descent(line, prop, False)[0] / text.figure.dpi
+
     lines = []
     for line in text.get_text().split("\n"):
-        wide = renderer.get_text_width_height_descent(line, prop, False)[0] / text.figure.dpi \
-            if "$" not in line else 0.0
-        chars = max(12, int(len(line) * (width - 0.1) / wide)) if wide > width - 0.1 else 0
-        lines += textwrap.wrap(line, chars, break_long_words=False) if chars else [line]
+        w = wide(line) if "$" not in line else 0.0
+        lines += _broken([line], int(len(line) * (width - 0.1) / w), width,
+                         lambda ls: max(map(wide, ls))) if w > width - 0.1 else [line]
     text.set_text("\n".join(lines))
+
+
+def _broken(parts: list[str], chars: int, width: float, widest) -> list[str]:
+    """``parts`` (the pieces of a heading that begin a line each) broken at spaces into lines
+    of at most ``chars`` characters (12 at least), fewer until ``widest(lines)`` [in] is within
+    ``width`` (0.1 in spare) — an estimate of the characters a line holds is off where the
+    line's letters are wider than the heading's average."""
+    import textwrap
+
+    chars = max(12, chars)
+    for _ in range(6):                  # each line measured: narrower until every one fits
+        lines = [ln for part in parts for ln in (textwrap.wrap(part, chars,
+                                                               break_long_words=False)
+                                                 if len(part) > chars else [part])]
+        if chars == 12 or widest(lines) <= width - 0.1:
+            break
+        chars = max(12, int(chars * 0.9))
+    return lines
 
 
 def _may_overflow(text, width: float) -> bool:
@@ -402,7 +421,6 @@ def fit_text(text, width: float, renderer) -> float:
     the case's name (the last ": ", as :func:`title` joins them), then at spaces if a line is
     still too wide; returns the height [in] the added lines need (0 if none)."""
     import re
-    import textwrap
 
     s = text.get_text()
     wide = text.get_window_extent(renderer).width / DPI
@@ -413,15 +431,13 @@ def fit_text(text, width: float, renderer) -> float:
     # the characters a line holds, from the characters seen (mathtext's markup, such as
     # "$\varepsilon$", draws one glyph: counted whole, it let a long line through)
     seen = len(re.sub(r"\\[A-Za-z]+|[$_^{}]", "", s))
-    chars = max(12, int(seen * (width - 0.1) / wide))
-    for _ in range(6):                  # each line measured: narrower until every one fits
-        lines = [ln for part in parts for ln in (textwrap.wrap(part, chars,
-                                                               break_long_words=False)
-                                                 if len(part) > chars else [part])]
+
+    def widest(lines: list[str]) -> float:
         text.set_text("\n".join(lines))
-        if chars == 12 or text.get_window_extent(renderer).width / DPI <= width - 0.1:
-            break
-        chars = max(12, int(chars * 0.9))
+        return text.get_window_extent(renderer).width / DPI
+
+    lines = _broken(parts, int(seen * (width - 0.1) / wide), width, widest)
+    text.set_text("\n".join(lines))
     return (len(lines) - 1) * 1.2 * float(text.get_fontsize()) / 72.0
 
 
