@@ -241,3 +241,37 @@ def test_a_long_option_is_one_line(tmp_path):
                               "--student", "x" * 1001])
     assert res.exit_code == 2
     assert "--student: 1001 characters (allowed: at most 1000)" in res.output
+
+
+def test_the_extremes_angles_are_printed_without_trailing_zeros():
+    """ω_max/ω_min sit at nodes of the grid (1° apart at 360 points): the record and the
+    terminal summary print the node's angle as it is (224°, 62.9°), not to a fixed 0.01°
+    («224,30°» was printed); ΔT_I's extremes, refined between nodes, to 0.01° at most."""
+    import io
+    import math
+
+    import numpy as np
+    from rich.console import Console
+
+    from flywheel.cases.run import load_case
+    from flywheel.dynamics.pipeline import analyze
+    from flywheel.render.document import build_document
+    from flywheel.render.numbers import typeset
+    from flywheel.render.summary import print_summary
+
+    c = load_case(CASES / "compressor.toml")
+    r = analyze(c, n_points=720)                          # nodes 0.5° apart
+    doc = str(typeset("ru", build_document, r, "ru", [], case=c))
+    out = io.StringIO()
+    typeset("ru", print_summary, r, Console(file=out, width=200), "ru")
+    phi = np.degrees(r.phi)
+    w = r.motion.omega
+    for text in (doc, out.getvalue()):
+        angles = re.findall(r"при (−?\d+(?:,\d+)?)°", text)
+        assert len(angles) >= 4, text
+        assert not [a for a in angles if re.search(r",\d*0$", a)], angles   # no 224,30°
+        printed = [float(a.replace(",", ".").replace(MINUS, "-")) for a in angles]
+        for node in (phi[np.argmax(w)], phi[np.argmin(w)]):     # the nodes, as they are
+            assert any(math.isclose(p, node, abs_tol=1e-9) for p in printed), (node, printed)
+        for refined in (r.scalars.phi_delta_T_I_max_deg, r.scalars.phi_delta_T_I_min_deg):
+            assert any(math.isclose(p, refined, abs_tol=0.05 + 1e-9) for p in printed)

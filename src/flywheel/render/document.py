@@ -350,8 +350,8 @@ def build_document(results, lang: str = "en", plots: list[str] | None = None,
         t["balance"][bal.balance].format(A=sym(kA), M=sym(kM), Mx=sym(kx), vA=g(bal.work, 6),
                                          uJ=u(kA), vM=g(bal.moment, 6), uM=u(kx),
                                          cycle=g(s.cycle_deg, 6))[2:],
-        t["extremes"].format(dT=sym("dT_I"), vmax=g(s.delta_T_I_max, 6), amax=_number(s.phi_delta_T_I_max_deg, spec=".2f", zero=None, nonfinite="show"),
-                             vmin=g(s.delta_T_I_min, 6), amin=_number(s.phi_delta_T_I_min_deg, spec=".2f", zero=None, nonfinite="show"),
+        t["extremes"].format(dT=sym("dT_I"), vmax=g(s.delta_T_I_max, 6), amax=g(round(s.phi_delta_T_I_max_deg, 2), 6),
+                             vmin=g(s.delta_T_I_min, 6), amin=g(round(s.phi_delta_T_I_min_deg, 2), 6),
                              span=sym("delta_T_max"), v=g(s.delta_T_max, 6), uJ=u("delta_T_max"))[2:],
     )))
     energy = ("A_D", "A_C", "A", "T_II", "dT_I", "omega", "epsilon")
@@ -458,8 +458,8 @@ def _sizing_lines(s, t: dict, lang: str) -> list[str]:
                                   dims=dims(r, ("D_mean", "thickness", "width", "mass", "rim_speed"),
                                             (4, 4, 4, 5, 4)))] if s.rim_designed else []),
         t["omega_extremes"].format(wmax=sym("omega_max"), vmax=g(s.omega_max, 6),
-                                   amax=_number(s.phi_omega_max_deg, spec=".2f", zero=None, nonfinite="show"), wmin=sym("omega_min"),
-                                   vmin=g(s.omega_min, 6), amin=_number(s.phi_omega_min_deg, spec=".2f", zero=None, nonfinite="show"),
+                                   amax=g(s.phi_omega_max_deg, 6), wmin=sym("omega_min"),
+                                   vmin=g(s.omega_min, 6), amin=g(s.phi_omega_min_deg, 6),
                                    uw=u("omega_max"), T=nm.name("cycle_time", lang),
                                    v=g(s.cycle_time, 6), uT=u("cycle_time")),
     ]

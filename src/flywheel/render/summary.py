@@ -91,9 +91,11 @@ def print_summary(results, console=None, lang: str = "en") -> None:
         return ", ".join(nm.unit_of(k, lang) for k in keys)
 
     def at(key: str) -> str:
-        """The value of ``key`` and where (φ) it is."""
-        phi = _number(getattr(s, f"phi_{key}_deg"), spec=".2f", zero=None, nonfinite="show")
-        return f"{_g(getattr(s, key))} {t['at']} {phi}°"
+        """The value of ``key`` and where (φ) it is, with no trailing zeros (224.3°, not
+        224.30°): ΔT_I's angle, refined between the grid's nodes, to 0.01°; ω's and ε's, nodes
+        of the grid, as the node is."""
+        phi = getattr(s, f"phi_{key}_deg")
+        return f"{_g(getattr(s, key))} {t['at']} {_g(round(phi, 2) if key.startswith('delta_T') else phi)}°"
 
     from flywheel.io.text import cut_end   # a long title or source cut with «…» (issue 23)
 
