@@ -386,3 +386,45 @@ def test_force_polygons_closing_by_round_off_say_zero(lang, zero):
     fig = fg.drawn(dict(plots.all_figures(res, lang))[name])
     closes = [a.get_title().splitlines()[-1] for a in fig.axes if a.get_title()]
     assert len(closes) >= 5 and set(closes) == {zero}
+
+
+@pytest.mark.parametrize("lang", ["en", "ru"])
+def test_force_polygons_of_five_panels_stay_inside_the_figure(lang):
+    """engine_inline4's five polygons go three to a row, each widened to its title's width:
+    the row then ran past the figure's right edge by 0.15 in (the third panel's frame and
+    title cut). Every panel, its title and tick labels inside the figure, none over another."""
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+    res = analyze(load_case(CASE.parent / "engine_inline4.toml"), n_points=360)
+    specs = dict(plots.all_figures(res, lang))
+    for name in [n for n in specs if n.startswith("plan_forces")]:
+        fig = fg.drawn(specs[name])
+        _check_layout(fig)
+        r = FigureCanvasAgg(fig).get_renderer()
+        boxes = [ax.get_tightbbox(r) for ax in fig.axes]
+        assert len(boxes) == 5
+        W = fig.get_size_inches()[0]
+        for ax in fig.axes:                   # each frame whole, 0.1 in or more from an edge
+            p = ax.get_position()
+            assert p.x0 * W >= 0.1 - 1e-9 and p.x1 * W <= W - 0.1 + 1e-9, (name, p.x0, p.x1)
+        for i, a in enumerate(boxes):
+            for b in boxes[i + 1:]:
+                assert not a.overlaps(b), name
+
+
+def test_a_row_of_widened_panels_gives_up_the_widening_to_fit():
+    """plots_plans._within_width: a row within its width is kept; one past it loses just its
+    excess, taken from the widening in proportion, never below the polygons' own widths."""
+    from flywheel.render.plots_plans import _within_width
+
+    natural = [2.0, 4.0, 1.0]                 # height / width: 1, 0.5 and 2 in wide at ah = 2
+    widened = [2.0 / 1.9, 2.0 / 1.9, 1.0]     # the first two widened to 1.9 in
+    same = _within_width([[0, 1, 2]], widened, natural, 2.0, 3 * 0.6 + 1.9 + 1.9 + 2.0, 0.6)
+    assert same == widened
+    fit = _within_width([[0, 1, 2]], widened, natural, 2.0, 3 * 0.6 + 5.0, 0.6)
+    widths = [2.0 / a for a in fit]
+    assert sum(widths) == pytest.approx(5.0, abs=1e-12)          # exactly the room
+    assert widths[2] == pytest.approx(2.0)                       # not widened: untouched
+    assert (widths[0] - 1.0) / (widths[1] - 0.5) == pytest.approx(0.9 / 1.4)   # in proportion
+    tight = _within_width([[0, 1, 2]], widened, natural, 2.0, 3 * 0.6 + 3.5, 0.6)
+    assert [2.0 / a for a in tight] == pytest.approx([1.0, 0.5, 2.0])

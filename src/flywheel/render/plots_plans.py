@@ -477,6 +477,25 @@ def _rows_of(aspects: list[float], width: float, gap: float, max_h: float,
     return best
 
 
+def _within_width(rows: list[list[int]], aspects: list[float], natural: list[float], ah: float,
+                  width: float, gap: float) -> list[float]:
+    """The panels' aspects (height/width) with each row within ``width`` [in]: a row whose
+    panels, widened beyond their polygons (``natural`` aspects) to their titles' width, would
+    run past the figure's edge gives up that widening in proportion (the polygons' own widths
+    fit: :func:`_rows_of` chose the rows for them). Axes height ``ah`` [in], ``gap`` [in]
+    before each panel."""
+    out = list(aspects)
+    for row in rows:
+        own = [ah / natural[k] for k in row]
+        extra = [ah / aspects[k] - w for k, w in zip(row, own)]
+        excess = sum(own) + sum(extra) + gap * len(row) - width
+        if excess > 1e-9 and sum(extra) > 0:
+            keep = max(0.0, 1.0 - excess / sum(extra))
+            for k, w, e in zip(row, own, extra):
+                out[k] = ah / (w + e * keep)
+    return out
+
+
 def figure_force_polygons(results, ps, lang: str = "en"):
     """The force polygon of every Assur group and of the crank at one report angle, each to
     its own μ_F (one panel each; the panels in rows of one height, each as wide as its polygon
@@ -497,9 +516,11 @@ def figure_force_polygons(results, ps, lang: str = "en"):
     aspects = [float((hi - lo)[1] / (hi - lo)[0]) for lo, hi in frames]
     W, left, right, gap = A4_W, 0.1, 0.15, 0.6       # gap: each panel's y tick labels [in]
     title_h, row_extra = 0.75, 1.5          # title above, tick labels and x label below [in]
+    natural = list(aspects)
     for _ in range(2):      # each panel at least as wide as its title (1.9 in)
         rows, ah = _rows_of(aspects, W - left - right, gap, 4.5, 9.0, row_extra)
         aspects = [min(a, ah / 1.9) for a in aspects]
+    aspects = _within_width(rows, aspects, natural, ah, W - left - right, gap)
     for k, (lo, hi) in enumerate(frames):        # a frame widened to its panel's aspect
         extra = (float(hi[1] - lo[1]) / aspects[k] - float(hi[0] - lo[0])) / 2
         frames[k] = (lo - (extra, 0.0), hi + (extra, 0.0))
