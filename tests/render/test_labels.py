@@ -205,3 +205,48 @@ def test_a_curve_is_sampled_as_linspace_samples_each_piece():
             a + np.linspace(0.0, 1.0, max(2, int(float(np.hypot(*(b - a))) / step) + 1))[:, None]
             * (b - a) for a, b in zip(xy[:-1], xy[1:])])
         assert np.array_equal(placer.cloud, expected)
+
+
+# -- arrowheads -------------------------------------------------------------------------------------
+
+def test_an_arrowhead_is_soft_like_a_line_and_a_null_vector_has_none():
+    """Placer.heads: a box over the head costs its sampled points, one beside it nothing; a
+    vector of no length draws no head and adds nothing."""
+    p = Placer(step=2.0)
+    p.heads([(-1.0, 0.0), (5.0, 5.0)], [(0.0, 0.0), (5.0, 5.0)], 4.35, 2.55)
+    over, beside = p.costs(np.array([(-5.0, -3.0, 1.0, 3.0), (2.0, -3.0, 8.0, 3.0)]))
+    assert over >= 7 and over < HARD            # the whole triangle: its outline and axis
+    assert beside == 0
+    assert p.costs(np.array([(4.0, 4.0, 6.0, 6.0)]))[0] == 0     # no head at the null vector
+
+
+@pytest.mark.parametrize("name", ["compressor", "engine_inline4"])
+@pytest.mark.parametrize("lang", ["en", "ru"])
+def test_no_label_of_a_force_polygon_covers_an_arrowhead(name, lang):
+    """A weight is a vector far shorter than its arrowhead (G₄ = 7.8 N at μ_F = 50 N/mm:
+    0.16 mm). The placer saw only the vectors' lines, so a neighbour's label was set over such
+    a head (Φ₄ over G₄'s in the compressor's polygon at 120°; 7 to 14 labels over a head in
+    each of these four sets); the heads are now obstacles, and a vector shorter than its head is
+    labelled round it. No label's box holds a corner of any arrowhead drawn."""
+    from matplotlib.patches import FancyArrowPatch
+
+    from flywheel.render import figure as fg
+    from flywheel.render import plots
+
+    res = results_of(name)
+    specs = dict(plots.all_figures(res, lang))
+    for fname in [n for n in specs if n.startswith("plan_forces")]:
+        fig = fg.drawn(specs[fname])
+        pt = 72.0 / fig.dpi
+        corners = []
+        for ax in fig.axes:
+            for a in ax.get_children():
+                if isinstance(a, FancyArrowPatch):
+                    t, h = ax.transData.transform(np.array(a._posA_posB)) * pt
+                    u = (h - t) / np.hypot(*(h - t))
+                    base, side = h - 4.35 * u, 2.55 * np.array([-u[1], u[0]])
+                    corners += [h, base + side, base - side]
+        assert len(corners) > 30
+        for text, b in fig.flywheel_labels:
+            for c in corners:
+                assert not (b[0] < c[0] < b[2] and b[1] < c[1] < b[3]), (fname, text.get_text())

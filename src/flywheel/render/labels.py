@@ -32,6 +32,7 @@ import numpy as np
 
 HARD = 1.0e4          # the cost of one hard obstacle under a label
 OUTSIDE = 100.0       # the cost of a label leaving its frame (plus the distance out)
+SHORT = 6.0           # [pt] a vector this short (its arrowhead's size): labelled round its head
 
 
 def around(gap: float) -> np.ndarray:
@@ -103,6 +104,25 @@ class Placer:
         pairs = [(np.asarray(a, float), np.asarray(b, float)) for a, b in segs]
         if pairs:
             self._sample(np.array([a for a, _ in pairs]), np.array([b for _, b in pairs]))
+
+    def heads(self, tails, heads, length: float, half_width: float) -> None:
+        """Arrowheads drawn at ``heads`` of the vectors from ``tails`` (rows): each a triangle,
+        its tip at the head, its base ``length`` back along the vector, ``half_width`` either
+        side — soft like the lines, its outline and its axis sampled every ``step``. A tiny
+        vector's head is larger than the vector itself: without it, a neighbour's label was
+        set over it (the compressor's Φ₄ over G₄'s head)."""
+        t, h = np.asarray(tails, float).reshape(-1, 2), np.asarray(heads, float).reshape(-1, 2)
+        d = h - t
+        n = np.hypot(d[:, 0], d[:, 1])
+        keep = n > 1e-9
+        if not keep.any():
+            return
+        u = d[keep] / n[keep, None]
+        tip = h[keep]
+        base = tip - length * u
+        side = half_width * np.column_stack([-u[:, 1], u[:, 0]])
+        a, b = base + side, base - side
+        self._sample(np.vstack([tip, a, b, tip]), np.vstack([a, b, tip, base]))
 
     def curve(self, xy) -> None:
         """A polyline drawn (rows of x, y), sampled every ``step`` along each piece."""
@@ -293,6 +313,11 @@ class AxesLabels:
         """Lines drawn: (tail, head) pairs in data coordinates."""
         self.placer.segments((self.to_pt(a)[0], self.to_pt(b)[0]) for a, b in segs)
 
+    def heads(self, tails, heads, length: float, half_width: float) -> None:
+        """Arrowheads at ``heads`` of the vectors from ``tails`` (data rows), ``length`` and
+        ``half_width`` [pt] on the page (:meth:`Placer.heads`)."""
+        self.placer.heads(self.to_pt(tails), self.to_pt(heads), length, half_width)
+
     def curve(self, xy) -> None:
         self.placer.curve(self.to_pt(xy))
 
@@ -324,6 +349,12 @@ class AxesLabels:
         """``text`` beside the vector tail → head (data)."""
         t, h = self.to_pt(tail)[0], self.to_pt(head)[0]
         anchors, places, prefer = beside(t, h)
+        if float(np.hypot(*(h - t))) < SHORT:   # shorter than its head: round the head too,
+            gaps = (4.0, 8.0, 14.0, 22.0)      # where no place beside it is free
+            anchors = np.vstack([anchors, np.repeat(h[None], 8 * len(gaps), axis=0)])
+            places = np.vstack([places, *(around(g) for g in gaps)])
+            prefer = np.concatenate([prefer, [prefer.max() + 0.01 * g + 0.001 * k
+                                              for g in gaps for k in range(8)]])
         return self.best(anchors, places, prefer, text, ring_at=0.5 * (t + h), **kw)
 
     def best(self, anchors, places, prefer, text: str, *, ring_at=None, **kw):

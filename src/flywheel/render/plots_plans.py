@@ -315,6 +315,19 @@ def _table_height(lines: list[str], width: float, fontsize: float = 7.5) -> floa
 
 # -- the kinematic plans --------------------------------------------------------------------------
 
+#: the plans' arrowheads: matplotlib's "-|>" (head_length 0.4, head_width 0.2 of the mutation
+#: scale) at a mutation scale of 9 pt
+_HEAD_SCALE = 9.0
+
+
+def _heads(labels: AxesLabels, segs, width: float = 1.8) -> None:
+    """The arrowheads :func:`_arrows` draws at the heads of ``segs`` ((tail, head) pairs [mm]),
+    stroked ``width`` [pt], as obstacles to the labels (:meth:`AxesLabels.heads`)."""
+    if segs:
+        labels.heads([t for t, _ in segs], [h for _, h in segs],
+                     0.4 * _HEAD_SCALE + width / 2, 0.2 * _HEAD_SCALE + width / 2)
+
+
 def _arrows(ax, tails: np.ndarray, heads: np.ndarray, colour: str, width: float = 1.6,
             style: str = "-") -> None:
     """Arrows from tails to heads [mm], their heads a fixed size on the page. Added as artists,
@@ -326,7 +339,8 @@ def _arrows(ax, tails: np.ndarray, heads: np.ndarray, colour: str, width: float 
     for t, h in zip(tails, heads):
         if float(np.hypot(*(h - t))) <= 1e-9:
             continue
-        ax.add_artist(FancyArrowPatch(tuple(t), tuple(h), arrowstyle="-|>", mutation_scale=9,
+        ax.add_artist(FancyArrowPatch(tuple(t), tuple(h), arrowstyle="-|>",
+                                      mutation_scale=_HEAD_SCALE,
                                       shrinkA=0.0, shrinkB=0.0, color=colour, linewidth=width,
                                       linestyle=style, zorder=3))
 
@@ -396,6 +410,7 @@ def _kinematic_plan(results, ps, which: str, lang: str):
     _set_frame(ax, lo, hi, lang)
     labels = AxesLabels(ax)
     labels.segments(segs)
+    _heads(labels, segs)
     for kind, vs, tails, heads in groups:
         _arrows(ax, tails, heads, _COLOURS[kind], 1.8 if kind == "absolute" else 1.2,
                 "-" if kind in ("absolute", "tangential") else "--" if kind == "relative" else "-")
@@ -564,6 +579,7 @@ def figure_force_polygons(results, ps, lang: str = "en"):
             _set_frame(ax, lo, hi, lang)
             labels = AxesLabels(ax)
             labels.segments(segs)
+            _heads(labels, segs, 1.5)
             # the longest first: the short vectors' labels then find room round them
             for v in sorted(pg.vectors + pg.chords, key=lambda v: -float(v.value)):
                 labels.along(np.array(v.tail) / mu, np.array(v.head) / mu,
@@ -635,6 +651,7 @@ def figure_lever(results, ps, lang: str = "en"):
     _set_frame(ax, lo, hi, lang)
     labels = AxesLabels(ax)
     labels.segments([(np.zeros(2), r[1]) for r in rays] + [(t, h) for _, t, h in arrows])
+    _heads(labels, [(t, h) for _, t, h in arrows], 2.0)
     seen: dict[tuple, list[str]] = {}
     for p, xy in imgs.items():
         seen.setdefault((round(xy[0], 3), round(xy[1], 3)), []).append(_image(lv.image_labels[p]))
