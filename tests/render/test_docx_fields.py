@@ -1,10 +1,12 @@
 """The DOCX records open with their fields filled and their tables readable across pages:
 the Russian (ГОСТ) DOCX asks Word to update its fields on opening (``w:updateFields`` in
-settings.xml, in the schema's place), so the contents get their page numbers; every table's
-header row repeats on each page (``w:tblHeader``) in both the Russian and the English DOCX."""
+settings.xml, in the schema's place); its contents give each heading's page as a PAGEREF field
+to a bookmark round the heading, which LibreOffice lays out too; every table's header row
+repeats on each page (``w:tblHeader``) in both the Russian and the English DOCX."""
 from __future__ import annotations
 
 import io
+import re
 import shutil
 import subprocess
 import zipfile
@@ -59,17 +61,65 @@ def test_every_tables_header_row_repeats_on_each_page(writer):
         assert all(r.find(f"{W}trPr/{W}tblHeader") is None for r in rows[1:])
 
 
+def _pages_doc() -> Document:
+    """Three sections, the second after a table of two pages, the third on a page of its own."""
+    doc = _doc("ru")
+    rows = tuple((f"{i}", f"{i * 0.25:g}") for i in range(60))
+    doc.blocks += [Heading(2, "2. Второй раздел"), Paragraph("Текст."),
+                   Table(2, "Таблица", ("s, м", "F, Н"), rows), Heading(2, "3. Третий раздел"),
+                   Paragraph("Конец.")]
+    return doc
+
+
+def test_the_contents_link_each_heading_and_its_page_field_to_its_bookmark():
+    """One line of the contents a heading, in order: its text the heading's, a hyperlink to
+    the bookmark round the heading and a PAGEREF field to the same bookmark (no TOC field,
+    whose result LibreOffice would show frozen, without pages)."""
+    body = _part(report_gost.docx(_pages_doc()), "word/document.xml")
+    text = lambda el: "".join(t.text or "" for t in el.iter(f"{W}t"))      # noqa: E731
+    instr = [i.text.strip() for i in body.iter(f"{W}instrText")]
+    assert not [i for i in instr if i.startswith("TOC")]
+    heads = [p for p in body.iter(f"{W}p")
+             if (p.find(f"{W}pPr/{W}pStyle") is not None
+                 and p.find(f"{W}pPr/{W}pStyle").get(f"{W}val").startswith("Heading"))]
+    marks = [p.find(f"{W}bookmarkStart").get(f"{W}name") for p in heads]
+    assert len(heads) >= 3 and len(set(marks)) == len(marks)
+    ids = [b.get(f"{W}id") for b in body.iter(f"{W}bookmarkStart")]
+    assert len(set(ids)) == len(ids)
+    links = body.findall(f".//{W}hyperlink")
+    assert [h.get(f"{W}anchor") for h in links] == marks
+    for link, head in zip(links, heads):
+        assert text(link) == text(head)
+        (ref,) = [i.text.strip() for i in link.iter(f"{W}instrText")]
+        assert ref == f"PAGEREF {link.get(f'{W}anchor')} \\h"
+
+
 @pytest.mark.slow
-def test_libreoffice_opens_the_russian_docx(tmp_path):
-    """LibreOffice (which ignores updateFields) still opens the record and converts it to PDF
-    with its contents page."""
+def test_libreoffice_opens_the_russian_docx_with_the_contents_pages(tmp_path):
+    """LibreOffice (which ignores updateFields) opens the record and converts it to PDF; its
+    contents give every heading the page LibreOffice set it on (the PDF's page where the
+    heading is); before, the contents had no page numbers in LibreOffice."""
     soffice = shutil.which("soffice")
     if soffice is None or shutil.which("pdftotext") is None:
         pytest.skip("LibreOffice or pdftotext is not installed")
-    (tmp_path / "r.docx").write_bytes(report_gost.docx(_doc("ru")))
+    (tmp_path / "r.docx").write_bytes(report_gost.docx(_pages_doc()))
     subprocess.run([soffice, "--headless", f"-env:UserInstallation=file://{tmp_path}/profile",
                     "--convert-to", "pdf", "--outdir", str(tmp_path), str(tmp_path / "r.docx")],
                    capture_output=True, timeout=240, check=True)
-    text = subprocess.run(["pdftotext", str(tmp_path / "r.pdf"), "-"], capture_output=True,
-                          text=True, check=True).stdout
-    assert "СОДЕРЖАНИЕ" in text and "1 Раздел" in text and "Таблица 1" in text
+    text = subprocess.run(["pdftotext", "-layout", str(tmp_path / "r.pdf"), "-"],
+                          capture_output=True, text=True, check=True).stdout
+    pages = text.split("\f")
+    assert "СОДЕРЖАНИЕ" in text and "Таблица 1" in text
+    contents = next(p for p in pages if "СОДЕРЖАНИЕ" in p)
+    listed = {}
+    for line in contents.splitlines():
+        m = re.fullmatch(r"\s*(.+?)\.{3,}\s*(\d+)\s*", line)
+        if m:
+            listed[m.group(1).strip()] = int(m.group(2))
+    assert len(listed) >= 3, contents
+    later = pages[pages.index(contents) + 1:]
+    for heading, page in listed.items():
+        on = [k for k, p in enumerate(pages, start=1) if p in later
+              and any(ln.strip() == heading for ln in p.splitlines())]
+        assert on and on[0] == page, (heading, page, on)
+    assert max(listed.values()) >= 5                     # the pages are counted, not guessed

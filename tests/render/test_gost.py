@@ -197,7 +197,7 @@ def test_the_docx_has_the_gost_margins_styles_and_caption_fields(gost_run):
     for name in ("Heading 1", "Heading 2", "Caption"):
         assert d.styles[name].font.color.rgb in (None, docx.shared.RGBColor(0, 0, 0))
     xml = d.element.xml
-    assert "SEQ Рисунок" in xml and "SEQ Таблица" in xml and " TOC " in xml
+    assert "SEQ Рисунок" in xml and "SEQ Таблица" in xml and " PAGEREF _Toc1 " in xml
     captions = [p for p in d.paragraphs if p.style.name == "Caption"]
     assert any(p.text.startswith("Таблица ") for p in captions)
     assert any(p.text.startswith("Рисунок ") for p in captions)

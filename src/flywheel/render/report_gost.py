@@ -14,7 +14,9 @@
 
 The DOCX is python-docx's template with its styles restyled (Normal, Heading 1–2, Caption,
 Title, List Bullet, Table Grid), captions numbered by Word fields (SEQ Рисунок, SEQ Таблица),
-the contents a TOC field Word fills on opening, numbers right-aligned in the tables.
+the contents one line a heading with its page as a PAGEREF field to the heading's bookmark
+(Word updates the fields on opening; LibreOffice lays them out with its own pages), numbers
+right-aligned in the tables.
 Heavy imports (typst, docx) inside the functions.
 """
 from __future__ import annotations
@@ -366,7 +368,8 @@ _AFTER_UPDATE_FIELDS = frozenset((
 def _update_fields_on_open(settings) -> None:
     """``<w:updateFields w:val="true"/>`` in the document's settings, where the schema's
     sequence puts it (before w:compat, w:rsids, …; Word may ignore or refuse an element out of
-    its order): Word asks to update the fields on opening, which fills the TOC's page numbers."""
+    its order): Word asks to update the fields on opening (the contents' pages, the captions'
+    numbers)."""
     from docx.oxml import parse_xml
 
     flag = parse_xml(f'<w:updateFields {_W} w:val="true"/>')
@@ -378,7 +381,7 @@ def _update_fields_on_open(settings) -> None:
 
 
 def _field(p, instr: str, shown: str) -> None:
-    """A Word field (SEQ, PAGE, TOC) in paragraph ``p``, its last result ``shown``."""
+    """A Word field (SEQ, PAGE) in paragraph ``p``, its last result ``shown``."""
     from docx.oxml import parse_xml
 
     w = 'xmlns:w="http://schemas.openxmlformats.org/wordprocessingml/2006/main"'
@@ -417,6 +420,48 @@ def _p(inner: str, style: str | None = None, jc: str | None = None, indent: bool
     return f"<w:p>{f'<w:pPr>{props}</w:pPr>' if props else ''}{inner}</w:p>"
 
 
+def _marked(inner: str, k: int) -> str:
+    """A heading's runs within the bookmark ``_Toc{k}`` its contents entry refers to."""
+    return (f'<w:bookmarkStart w:id="{k}" w:name="_Toc{k}"/>{inner}'
+            f'<w:bookmarkEnd w:id="{k}"/>')
+
+
+_FIELD_END = '<w:r><w:fldChar w:fldCharType="end"/></w:r>'
+
+
+def _field_open(instr: str) -> str:
+    """A Word field's first runs: its beginning, its instruction, the mark before its result
+    (then the result's runs and :data:`_FIELD_END`)."""
+    return ('<w:r><w:fldChar w:fldCharType="begin"/></w:r>'
+            f'<w:r><w:instrText xml:space="preserve"> {instr} </w:instrText></w:r>'
+            '<w:r><w:fldChar w:fldCharType="separate"/></w:r>')
+
+
+def _toc(heads: list, width: int) -> str:
+    """The contents: one paragraph a heading (``heads``, the record's sections in order), its
+    number and name linked to it, a dot leader to a right tab at the text's ``width``
+    [twips], then its page as the field ``PAGEREF _Toc{k} \\h`` to the bookmark
+    :func:`_marked` puts round the k-th heading, its result left empty: Word updates the
+    fields on opening (w:updateFields), LibreOffice lays them out with its own pages, so no
+    page is guessed here. Not a TOC field: LibreOffice shows a TOC field's last result as it
+    is, and would print the contents without pages (the PAGEREF fields within it frozen)."""
+    from xml.sax.saxutils import escape
+
+    out = []
+    for k, s in enumerate(heads, start=1):
+        text = escape((s.number + " " if s.number else "")
+                      + (s.text.upper() if s.structural else s.text))
+        indent = 0 if s.structural or s.level == 1 else 280
+        props = (f'<w:tabs><w:tab w:val="right" w:leader="dot" w:pos="{width}"/></w:tabs>'
+                 f'<w:spacing w:after="0"/><w:ind w:left="{indent}" w:right="560" '
+                 'w:firstLine="0"/><w:jc w:val="left"/>')
+        page = _field_open(f"PAGEREF _Toc{k} \\h") + _FIELD_END
+        out.append(f'<w:p><w:pPr>{props}</w:pPr><w:hyperlink w:anchor="_Toc{k}" w:history="1">'
+                   f'<w:r><w:t xml:space="preserve">{text}</w:t></w:r><w:r><w:tab/></w:r>{page}'
+                   f'</w:hyperlink></w:p>')
+    return "".join(out)
+
+
 def _seq(name: str, number: int) -> str:
     """A caption's number as the Word field SEQ ``name`` (its shown value ``number``)."""
     return (f'<w:fldSimple w:instr=" SEQ {name} \\* ARABIC "><w:r><w:t>{number}</w:t></w:r>'
@@ -444,8 +489,6 @@ def _table_xml(b: Table) -> str:
 
 def docx(doc: Document, plots_dir: Path | None = None) -> bytes:
     """The Russian записка as Word in the ГОСТ layout (the module's docstring)."""
-    from xml.sax.saxutils import escape
-
     import docx as pydocx
     from docx.enum.text import WD_ALIGN_PARAGRAPH, WD_BREAK
     from docx.oxml import parse_xml
@@ -472,7 +515,7 @@ def docx(doc: Document, plots_dir: Path | None = None) -> bytes:
     cp = d.core_properties
     cp.created = cp.modified = cp.last_printed = fixed
     cp.title, cp.author, cp.last_modified_by, cp.revision = doc.title, "flywheel", "flywheel", 1
-    _update_fields_on_open(d.settings.element)              # Word fills the TOC on opening
+    _update_fields_on_open(d.settings.element)              # Word updates the fields on opening
 
     def runs(p, text: str, size=None, bold: bool = False):
         for i, part in enumerate(text.split("**")):
@@ -521,33 +564,31 @@ def docx(doc: Document, plots_dir: Path | None = None) -> bytes:
     else:
         plain().add_run().add_break(WD_BREAK.PAGE)
 
-    # the contents: a TOC field (Word fills it with the page numbers on opening)
+    # the contents: a line a heading, its page a PAGEREF field to the heading's bookmark
     p = d.add_paragraph(style="Title")
     p.add_run(g["contents"].upper())
     body = list(sections(doc))
-    shown = "".join(f'<w:r><w:t xml:space="preserve">{escape(s.number + " " if s.number else "")}'
-                    f'{escape(s.text.upper() if s.structural else s.text)}</w:t></w:r><w:r><w:br/></w:r>'
-                    for s in body if isinstance(s, Section))
     w = 'xmlns:w="http://schemas.openxmlformats.org/wordprocessingml/2006/main"'
-    toc = d.add_paragraph()
-    toc.paragraph_format.first_line_indent = Cm(0)
-    toc.alignment = WD_ALIGN_PARAGRAPH.LEFT
-    toc._p.append(parse_xml(f'<w:fldSimple {w} w:instr=\' TOC \\o "1-2" \\h \\z \\u \'>{shown}'
-                            f'</w:fldSimple>'))
-
-    # the body as WordprocessingML written here (python-docx's element API takes seconds for
-    # the record's ~1 000 runs), one parse per block, each placed before the section's settings
     sect = d.element.body.sectPr
+    width = round((sec.page_width - sec.left_margin - sec.right_margin) / 635)   # [twips]
+    heads = [b for b in body if isinstance(b, Section)]
 
     def put(xml: str) -> None:
-        sect.addprevious(parse_xml(f'<w:body {w} {_M}>{xml}</w:body>')[0])
+        """Blocks of WordprocessingML written here (python-docx's element API takes seconds for
+        the record's ~1 000 runs), one parse for each, placed before the section's settings."""
+        for element in list(parse_xml(f'<w:body {w} {_M}>{xml}</w:body>')):
+            sect.addprevious(element)
+
+    put(_toc(heads, width))
 
     for b in body:
         if isinstance(b, Section):
+            k = heads.index(b) + 1
             if b.structural:
-                put(_p(_r(b.text.upper()), style="Heading1", jc="center", indent=True))
+                put(_p(_marked(_r(b.text.upper()), k), style="Heading1", jc="center",
+                       indent=True))
             else:
-                put(_p(_runs(f"{b.number} {b.text}"), style=f"Heading{b.level}"))
+                put(_p(_marked(_runs(f"{b.number} {b.text}"), k), style=f"Heading{b.level}"))
         elif isinstance(b, Paragraph):
             put(_p(_runs(b.text)))
         elif isinstance(b, Bullets):
