@@ -198,20 +198,20 @@ class Placer:
         return c
 
     def choose(self, anchor, size, places, prefer=None, *, rings: float | None = None,
-               ring_at=None):
+               ring_at=None, enough: float = HARD):
         """Place a label of ``size`` (w, h) at the least costly of ``places`` from
         ``anchor`` (one point, or one row per place), ``prefer``: each place's own extra
-        cost (else 0.01 per rank). If each meets a hard obstacle, farther out round
-        ``ring_at`` (default the first anchor): ``rings`` the first ring's distance, then
-        1.5, 2, … 4 times it, 16 directions. Records the box; returns (anchor (x, y), dx,
-        dy, fx, fy, box)."""
+        cost (else 0.01 per rank). If each costs ``enough`` or more (default: each meets a
+        hard obstacle), farther out round ``ring_at`` (default the first anchor), where it
+        costs less: ``rings`` the first ring's distance, then 1.5, 2, … 4 times it, 16
+        directions. Records the box; returns (anchor (x, y), dx, dy, fx, fy, box)."""
         places = np.asarray(places, float).reshape(-1, 4)
         anchors = np.broadcast_to(np.asarray(anchor, float).reshape(-1, 2), (len(places), 2))
         boxes = self.boxes_of(anchors, size, places)
         extra = 0.01 * np.arange(len(places)) if prefer is None else np.asarray(prefer, float)
         cost = self.costs(boxes) + extra
         k = int(np.argmin(cost))
-        if cost[k] >= HARD and rings:
+        if cost[k] >= enough and rings:
             at = anchors[0] if ring_at is None else np.asarray(ring_at, float)
             angles = np.arange(16) * (math.pi / 8)
             dirs = np.column_stack([np.cos(angles), np.sin(angles)])
@@ -223,7 +223,7 @@ class Placer:
                 if rc[j] < cost[k]:
                     anchors = np.broadcast_to(at, (len(ring), 2))
                     places, boxes, cost, k = ring, rb, rc, j
-                if cost[k] < HARD:
+                if cost[k] < enough:
                     break
         b = tuple(float(v) for v in boxes[k])
         self.labels.append(b)

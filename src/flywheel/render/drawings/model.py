@@ -25,6 +25,8 @@ SLANT_DEG = 15.0
 #: the lettering heights of ГОСТ 2.304-81 [mm]
 HEIGHTS = (2.5, 3.5, 5.0, 7.0, 10.0, 14.0)
 MIN_HEIGHT = 2.5
+#: [mm] of lines under a label's every candidate place from which farther places are tried
+ON_LINE = 3.0
 
 
 @dataclass(frozen=True)
@@ -154,10 +156,12 @@ class View:
         """``text`` (:meth:`rich`, ``height`` [mm]) at the least costly of ``places``
         (render.labels rows: dx, dy, fx, fy [mm]) from ``anchor`` (or one anchor each), by
         ``placer``; its box (``margin`` round the letters and a subscript's drop) joins the
-        placer's and :attr:`labels`."""
+        placer's and :attr:`labels`. Where every place lies over :data:`ON_LINE` mm of lines
+        or more, the rings round the anchor are tried too (a force's name along its link)."""
         drop = 0.3 * height if "_" in text else 0.0
         size = (rich_width(text, height) + 2 * margin, height + drop + 2 * margin)
-        *_, b = placer.choose(anchor, size, places, prefer, rings=rings)
+        *_, b = placer.choose(anchor, size, places, prefer, rings=rings,
+                              enough=ON_LINE / placer.step)
         self.rich(b[0] + margin, b[1] + margin + drop, text, height)
         self.labels.append(b)
 

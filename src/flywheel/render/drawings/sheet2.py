@@ -160,7 +160,8 @@ def _beyond(v: View, placer, head, d, label: str) -> None:
     d = np.asarray(d, float)
     n = np.array([-d[1], d[0]])
     places = [toward(d, 1.5), toward(d + n, 1.5), toward(d - n, 1.5), toward(n, 2.0),
-              toward(-n, 2.0), toward(d, 4.0)]
+              toward(-n, 2.0), toward(d, 4.0), toward(d + n, 3.5), toward(d - n, 3.5),
+              toward(n, 4.5), toward(-n, 4.5)]
     v.label(placer, head, label, 3.5, np.array(places))
 
 
