@@ -210,7 +210,9 @@ def docx(doc: Document, plots_dir: Path | None = None) -> bytes:
     from docx.enum.text import WD_ALIGN_PARAGRAPH
     from docx.oxml import parse_xml
     from docx.table import _Cell
-    from docx.shared import Mm, Pt
+    from docx.shared import Mm, Pt, Twips
+
+    from flywheel.render.table_widths import column_widths
 
     tab, fig = CAPTION[doc.lang]
     d = pydocx.Document()
@@ -257,11 +259,21 @@ def docx(doc: Document, plots_dir: Path | None = None) -> bytes:
                 '<w:tblHeader xmlns:w="http://schemas.openxmlformats.org/wordprocessingml/'
                 '2006/main"/>'))
             size = Pt(7 if len(b.header) > 7 else 8.5)
+            # the columns' widths fixed (render/table_widths.py: LibreOffice gives columns
+            # left to it the same share, and a narrow share breaks words)
+            widths = column_widths([tuple(b.header), *b.rows],
+                                   round((sec.page_width - sec.left_margin - sec.right_margin)
+                                         / 635), round(size.pt * 2))
+            t.autofit = False
+            for col, w in zip(t.columns, widths):
+                col.width = Twips(w)
             # the cells straight from the rows' XML: Table.cell(r, c) rebuilds the whole grid
             # on every call (quadratic; seconds for the report's tables)
             for r, (tr, cells) in enumerate(zip(t._tbl.tr_lst, (b.header, *b.rows))):
-                for tc, text in zip(tr.tc_lst, cells):
-                    runs(_Cell(tc, t).paragraphs[0], text, size, bold=r == 0)
+                for tc, text, w in zip(tr.tc_lst, cells, widths):
+                    cell = _Cell(tc, t)
+                    cell.width = Twips(w)
+                    runs(cell.paragraphs[0], text, size, bold=r == 0)
         elif isinstance(b, Figure):
             if plots_dir is not None and (plots_dir / b.file).is_file():
                 d.add_picture(str(plots_dir / b.file), width=Mm(170))

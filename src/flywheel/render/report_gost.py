@@ -468,23 +468,35 @@ def _seq(name: str, number: int) -> str:
             f"</w:fldSimple>")
 
 
-def _table_xml(b: Table) -> str:
+def _table_xml(b: Table, width: int) -> str:
     """A table in the grid style, centred, its header row bold, centred and repeated on every
-    page it runs onto; the first column left, the numbers right; 12 pt (10 pt if wide), single."""
+    page it runs onto; the first column left, the numbers right; 12 pt (10 pt if wide, 9 pt
+    beyond 9 columns, the cells' margins then 1 mm), single;
+    its columns' widths fixed within the text's ``width`` [twips] (render/table_widths.py: left
+    to LibreOffice, they were equal and broke words)."""
+    from flywheel.render.table_widths import MARGIN, NARROW_MARGIN, column_widths
+
     n = len(b.header)
-    hp = 24 if n <= WIDE else 20
+    hp = 24 if n <= WIDE else 20 if n <= 9 else 18          # as the PDF: 12, 10, 9 pt
+    margin = MARGIN if n <= WIDE else NARROW_MARGIN
+    widths = column_widths([tuple(b.header), *b.rows], width, hp, margin=margin)
     rows = []
     for r, cells in enumerate((b.header, *b.rows)):
         tcs = "".join(
-            '<w:tc><w:tcPr><w:tcW w:w="0" w:type="auto"/></w:tcPr>'
+            f'<w:tc><w:tcPr><w:tcW w:w="{widths[c]}" w:type="dxa"/></w:tcPr>'
             + _p(_runs(text, bold=r == 0, half_points=hp), keep=r == 0, single=True, indent=True,
                  jc="center" if r == 0 else "left" if c == 0 else "right") + "</w:tc>"
             for c, text in enumerate(cells))
         rows.append(f"<w:tr>{'<w:trPr><w:tblHeader/></w:trPr>' if r == 0 else ''}{tcs}</w:tr>")
-    return ('<w:tbl><w:tblPr><w:tblStyle w:val="TableGrid"/><w:tblW w:w="0" w:type="auto"/>'
-            '<w:jc w:val="center"/><w:tblLook w:val="04A0" w:firstRow="1" w:lastRow="0" '
+    grid = "".join(f'<w:gridCol w:w="{w}"/>' for w in widths)
+    return ('<w:tbl><w:tblPr><w:tblStyle w:val="TableGrid"/>'
+            f'<w:tblW w:w="{sum(widths)}" w:type="dxa"/><w:jc w:val="center"/>'
+            '<w:tblLayout w:type="fixed"/>'
+            + (f'<w:tblCellMar><w:left w:w="{margin}" w:type="dxa"/><w:right w:w="{margin}" '
+               'w:type="dxa"/></w:tblCellMar>' if margin != MARGIN else '')
+            + '<w:tblLook w:val="04A0" w:firstRow="1" w:lastRow="0" '
             'w:firstColumn="1" w:lastColumn="0" w:noHBand="0" w:noVBand="1"/></w:tblPr>'
-            f'<w:tblGrid>{"<w:gridCol/>" * n}</w:tblGrid>{"".join(rows)}</w:tbl>')
+            f'<w:tblGrid>{grid}</w:tblGrid>{"".join(rows)}</w:tbl>')
 
 
 def docx(doc: Document, plots_dir: Path | None = None) -> bytes:
@@ -599,7 +611,7 @@ def docx(doc: Document, plots_dir: Path | None = None) -> bytes:
         elif isinstance(b, Table):
             put(_p(_r(g["table"] + " ") + _seq(g["table"], b.number) + _runs(f" — {b.caption}"),
                    style="Caption", keep=True))
-            put(_table_xml(b))
+            put(_table_xml(b, width))
             put(_p("", single=True))
         elif isinstance(b, Figure):
             if plots_dir is not None and (plots_dir / b.file).is_file():
