@@ -74,6 +74,50 @@ def test_packed_views_never_overlap_each_other_nor_the_title_block(size):
                 assert not _overlap(a, b)
 
 
+def test_views_side_by_side_with_their_captions_on_one_line_are_set_apart():
+    """Two views whose tops (their captions) are level: the second moved CAPTION_GAP clear of
+    the first, so that the captions read as two («…силами, 1:4 План сил звеньев 2, 3» read as
+    one at GAP); where that would leave the field, it stays at GAP; a view below is at GAP."""
+    from flywheel.render.drawings.layout import CAPTION_GAP, _place
+    from flywheel.render.drawings.sheet import GAP
+
+    field = (0.0, 0.0, 200.0, 100.0)
+    first = (0.0, 60.0, 80.0, 100.0)
+    assert _place(50, 40, field, [first], 0)[0] == pytest.approx(80.0 + CAPTION_GAP)
+    assert _place(50, 40, field, [first], 1)[0] == pytest.approx(80.0 + GAP)   # not a view
+    assert _place(115, 40, field, [first], 0)[0] == pytest.approx(80.0 + GAP)  # no room
+    lower = (0.0, 60.0, 80.0, 90.0)                       # its top 10 mm lower: not level
+    assert _place(50, 40, field, [lower], 0)[0] == pytest.approx(80.0 + GAP)
+
+
+@pytest.mark.parametrize("case", ["compressor", "engine_4stroke", "shaper"])
+def test_the_captions_of_sheet_2_stand_apart(case):
+    """Sheets 2 (A1): of two views side by side with level tops, the right one's caption (its
+    topmost lettering) CAPTION_GAP or more from the left one's."""
+    from flywheel.cases.run import load_case
+    from flywheel.dynamics.pipeline import analyze
+    from flywheel.render.drawings import sheet, sheet2
+    from flywheel.render.drawings.layout import CAPTION_GAP, CAPTION_H
+
+    res = analyze(load_case(Path(__file__).resolve().parents[2] / "cases" / f"{case}.toml"),
+                  n_points=360)
+    from flywheel.render.drawings.model import Text
+
+    def caption(v):
+        return max((t.box() for t in v.items if isinstance(t, Text)), key=lambda b: b[3])
+
+    sheets, _ = pack(sheet2.views(res, "ru", sheet.ROOM["A1"]), "A1")
+    level = 0
+    for placed in sheets:
+        for a in placed:
+            for b in placed:
+                ca, cb = caption(a), caption(b)
+                if abs(ca[3] - cb[3]) < CAPTION_H and 0 <= cb[0] - ca[2] < 40:
+                    level += 1
+                    assert cb[0] - ca[2] >= CAPTION_GAP - 1.0, (a.name, b.name)
+    assert level >= 2
+
+
 def test_a_view_larger_than_the_field_is_left_out_by_name():
     sheets, left_out = pack([_box_view("huge", 500, 100), _box_view("small", 50, 50)], "A3")
     assert left_out == ["huge"] and [v.name for v in sheets[0]] == ["small"]

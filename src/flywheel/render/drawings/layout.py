@@ -16,8 +16,22 @@ def _overlaps(a, b) -> bool:
         and b[1] < a[3] - 1e-9
 
 
-def _place(w: float, h: float, field, taken) -> tuple[float, float, float, float] | None:
-    """The highest, then leftmost, box w × h in ``field`` clear of ``taken`` (with GAP)."""
+#: the gap [mm] between two views side by side whose tops — their captions, lettered 5 mm
+#: high — are within CAPTION_H of each other: at GAP the two captions read as one line
+#: («…с приложенными силами, 1:4 План сил звеньев 2, 3»)
+CAPTION_GAP, CAPTION_H = 12.0, 7.0
+
+
+def _free(box, taken) -> bool:
+    return not any(_overlaps(box, (b[0] - GAP, b[1] - GAP, b[2] + GAP, b[3] + GAP))
+                   for b in taken)
+
+
+def _place(w: float, h: float, field, taken, views: int = 0
+           ) -> tuple[float, float, float, float] | None:
+    """The highest, then leftmost, box w × h in ``field`` clear of ``taken`` (with GAP); a
+    box beside one of the views (``taken[views:]``) with its top near that view's moved
+    CAPTION_GAP clear of it, where it is free there (else left where it is)."""
     fx0, fy0, fx1, fy1 = field
     xs = sorted({fx0, *(b[2] + GAP for b in taken)})
     tops = sorted({fy1, *(b[1] - GAP for b in taken)}, reverse=True)
@@ -28,9 +42,15 @@ def _place(w: float, h: float, field, taken) -> tuple[float, float, float, float
             if x < fx0 - 1e-9 or x + w > fx1 + 1e-9:
                 continue
             box = (x, top - h, x + w, top)
-            if not any(_overlaps(box, (b[0] - GAP, b[1] - GAP, b[2] + GAP, b[3] + GAP))
-                       for b in taken):
-                return box
+            if not _free(box, taken):
+                continue
+            near = [b[2] for b in taken[views:] if abs(b[3] - top) < CAPTION_H
+                    and 0.0 <= x - b[2] < CAPTION_GAP]
+            if near:
+                apart = (max(near) + CAPTION_GAP, top - h, max(near) + CAPTION_GAP + w, top)
+                if apart[2] <= fx1 + 1e-9 and _free(apart, taken):
+                    return apart
+            return box
     return None
 
 
@@ -51,11 +71,12 @@ def pack(views: list[View], size: str) -> tuple[list[list[View]], list[str]]:
     while todo:
         # the title block and column 26: shrunk by GAP, as _place keeps GAP from every box
         taken = [(b[0] + GAP, b[1] + GAP, b[2] - GAP, b[3] - GAP) for b in keep_out(size)]
+        fixed = len(taken)
         placed: list[View] = []
         rest: list[View] = []
         for v in todo:
             w, h = v.size
-            box = _place(w, h, field, taken)
+            box = _place(w, h, field, taken, fixed)
             if box is None:
                 rest.append(v)
                 continue
