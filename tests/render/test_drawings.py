@@ -501,3 +501,31 @@ def test_no_force_name_on_sheet_2_lies_along_a_line(case):
             assert under.max() < ON_LINE + 2 * lines.step, (v.name, under.max())
             named += len(v.labels)
     assert named > 20
+
+
+@pytest.mark.parametrize("case", ["compressor", "compressor_given_flywheel"])
+@pytest.mark.parametrize("lang", ["ru", "en"])
+def test_sheet_1s_results_name_each_row_once(case, lang):
+    """The main results' table of sheet 1: no two rows with the same name — its two δ were both
+    «δ» (0,05 and 0,04965); they are the target (or the given flywheel's) and the achieved."""
+    from flywheel.cases.run import load_case
+    from flywheel.dynamics.pipeline import analyze
+    from flywheel.render.drawings import sheet1
+    from flywheel.render.drawings.model import Text
+
+    res = analyze(load_case(Path(__file__).resolve().parents[2] / "cases" / f"{case}.toml"),
+                  n_points=360)
+    v = sheet1.results_table(res, lang)
+    x0 = v.box()[0]
+    rows: dict[int, str] = {}                    # the first column's lettering, row by row
+    for t in v.items:                            # (rows 8 mm high, a subscript 1 mm lower)
+        if isinstance(t, Text) and t.x < x0 + 30 and t.y < v.box()[3] - 1:
+            k = int((t.y - v.box()[1]) // 8.0)
+            rows[k] = rows.get(k, "") + t.text
+    names = list(rows.values())
+    assert len(names) >= 9 and len(set(names)) == len(names), names
+    deltas = [n for n in names if n.startswith("δ")]
+    assert len(deltas) == 2
+    word = {"ru": ("при заданном маховике" if "given" in case else "заданный", "достигнутый"),
+            "en": ("given flywheel" if "given" in case else "target", "achieved")}[lang]
+    assert word[0] in deltas[0] and word[1] in deltas[1], deltas

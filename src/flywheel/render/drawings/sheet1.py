@@ -36,6 +36,9 @@ T = words("drawings1", {
     "flywheel_D": "flywheel (disk): outer diameter D",
     "flywheel_b": "flywheel (disk): width b",
     "flywheel_m": "flywheel (disk): mass m",
+    "delta_target": "δ, the target",
+    "delta_given": "δ of the given flywheel",
+    "delta_achieved": "δ achieved",
 })
 
 DIAGRAM_W = 180.0     # a φ diagram's abscissa over the cycle [mm]
@@ -178,8 +181,9 @@ def results_table(results, lang: str) -> View:
             (nm.symbol("delta_T_max", lang), sc.delta_T_max, nm.unit_of("delta_T_max", lang)),
             (nm.symbol("J_required", lang), sc.J_required, nm.unit_of("J_required", lang)),
             (nm.symbol("J_flywheel", lang), sc.J_flywheel, nm.unit_of("J_flywheel", lang)),
-            (nm.symbol("delta", lang), sc.delta, "–"),
-            (nm.symbol("delta_achieved", lang), sc.delta_achieved, "–"),
+            # the two δ by name: both are «δ» as symbols
+            (t["delta_given" if sc.flywheel_given else "delta_target"], sc.delta, "–"),
+            (t["delta_achieved"], sc.delta_achieved, "–"),
             (t["flywheel_D"], disk.D, nm.unit_of("D", lang)),
             (t["flywheel_b"], disk.b, nm.unit_of("b", lang)),
             (t["flywheel_m"], disk.mass, nm.unit_of("mass", lang))]
