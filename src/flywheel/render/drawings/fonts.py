@@ -4,7 +4,9 @@ osifont (ISO 3098 lettering, GPL-3 with the font exception: a document that embe
 covered by the GPL; Debian package ``fonts-osifont``, installed by .ci/run when it can be) is
 used when it is installed; else DejaVu Sans, which matplotlib ships (so the fallback is there on
 every machine). A character the font lacks, or draws as an empty box (osifont 2022 has boxes
-for Ё, ё, Э, э), is taken from DejaVu Sans, scaled to the same capital height; a character
+for Ё, ё, Э, э), is taken from DejaVu Sans, scaled to the same capital height (a lowercase
+one to osifont's x-height); osifont's «ь» and «з», drawn taller than its x-height, are brought
+down to it (:func:`_fit`); a character
 neither has is drawn as its nearest one (:data:`STAND_INS`: «…» as three dots). Both fonts
 are upright: the PDF and SVG writers slope the letters 15° (type B, 75° to the line); the DXF
 names its text style for the ГОСТ font with the same oblique angle, so a CAD program letters
@@ -157,13 +159,56 @@ def advance(ch: str) -> float:
         total = 0.0
         for c in drawn_char(ch):
             f = _font_of(c) if not c.isspace() else _font(font_path())
-            total += f.advance(c) if f is not None and ord(c) in f.cmap else 0.6
+            total += (f.advance(c) * _fit(c, f)[0] if f is not None and ord(c) in f.cmap
+                      else 0.6)
         got = _ADVANCE[ch] = total
     return got
 
 
+#: osifont's lowercase letters drawn taller than its x-height (2022: «ь» as tall as «Ь», «з»
+#: 0.85 of a capital), which read as capitals in «звеньев»: brought down to the x-height
+TOO_TALL = frozenset("ьз")
+
+
+def _top(contours: list) -> float:
+    return max((p[1] for c in contours for _, pts in c for p in pts), default=0.0)
+
+
+@lru_cache(maxsize=4)
+def _x_height(path: str) -> float:
+    """A font's x-height per unit of capital height: the top of its «x»."""
+    return _top(_font(path).outline("x"))
+
+
+def _fit(ch: str, f: _Font) -> tuple[float, float]:
+    """The horizontal and vertical scales that set ``ch`` of font ``f`` among the sheet font's
+    letters: a lowercase letter the fallback draws (osifont has no «э», «ё») at the sheet
+    font's x-height, whole (DejaVu Sans' x-height is 0.75 of its capitals', osifont's 0.70);
+    one of osifont's :data:`TOO_TALL` lowercase letters down to its x-height."""
+    sheet, fallback = font_path(), fallback_path()
+    if sheet == fallback:
+        return 1.0, 1.0
+    if f is not _font(sheet) and ch.islower():
+        k = _x_height(sheet) / _x_height(fallback)
+        return k, k
+    if f is _font(sheet) and ch in TOO_TALL:
+        return 1.0, _x_height(sheet) / _top(f.outline(ch))
+    return 1.0, 1.0
+
+
+_FITTED: dict[tuple[str, str], list] = {}
+
+
 def outline(ch: str) -> list:
     """The contours of one drawn character (not a stand-in's) per unit of capital height, from
-    the origin of its baseline."""
-    f = _font_of(ch)
-    return f.outline(ch) if f is not None else []
+    the origin of its baseline (set among the sheet font's letters: :func:`_fit`)."""
+    key = (font_path(), ch)
+    got = _FITTED.get(key)
+    if got is None:
+        f = _font_of(ch)
+        if f is None:
+            return []
+        sx, sy = _fit(ch, f)
+        got = _FITTED[key] = [[(op, [(x * sx, y * sy) for x, y in pts]) for op, pts in c]
+                              for c in f.outline(ch)]
+    return got
