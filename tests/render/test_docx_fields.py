@@ -71,6 +71,19 @@ def _pages_doc() -> Document:
     return doc
 
 
+def test_the_title_pages_city_and_year_stand_at_its_foot():
+    """The last line of the title page in a frame at the foot of the text (w:framePr, yAlign
+    bottom), in the place the schema's sequence gives it within w:pPr: before, it sat wherever
+    the empty lines above left it, a quarter of the page from the foot in LibreOffice."""
+    body = _part(report_gost.docx(_doc("ru")), "word/document.xml")
+    frames = body.findall(f".//{W}pPr/{W}framePr")
+    assert len(frames) == 1 and frames[0].get(f"{W}yAlign") == "bottom"
+    names = [c.tag.replace(W, "") for c in frames[0].getparent()]
+    assert names.index("framePr") < min(names.index(n) for n in ("ind", "jc") if n in names)
+    text = "".join(t.text for t in frames[0].getparent().getparent().iter(f"{W}t"))
+    assert text.startswith("_") and text.endswith("_")      # the city and the year, blank
+
+
 def test_the_contents_link_each_heading_and_its_page_field_to_its_bookmark():
     """One line of the contents a heading, in order: its text the heading's, a hyperlink to
     the bookmark round the heading and a PAGEREF field to the same bookmark (no TOC field,
@@ -123,3 +136,8 @@ def test_libreoffice_opens_the_russian_docx_with_the_contents_pages(tmp_path):
               and any(ln.strip() == heading for ln in p.splitlines())]
         assert on and on[0] == page, (heading, page, on)
     assert max(listed.values()) >= 5                     # the pages are counted, not guessed
+    # the title page's city and year at its foot (ГОСТ 7.32), whatever the lines above take
+    words = subprocess.run(["pdftotext", "-f", "1", "-l", "1", "-bbox", str(tmp_path / "r.pdf"),
+                            "-"], capture_output=True, text=True, check=True).stdout
+    low = max(float(m) for m in re.findall(r'yMax="([\d.]+)"', words))
+    assert low > 0.88 * 842, low                        # A4: 842 pt; the text ends at 785

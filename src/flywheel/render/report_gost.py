@@ -420,6 +420,31 @@ def _p(inner: str, style: str | None = None, jc: str | None = None, indent: bool
     return f"<w:p>{f'<w:pPr>{props}</w:pPr>' if props else ''}{inner}</w:p>"
 
 
+#: the children of w:pPr after w:framePr in the schema's sequence (ECMA-376 part 1, 17.3.1.26)
+_AFTER_FRAME = frozenset((
+    "widowControl", "numPr", "suppressLineNumbers", "pBdr", "shd", "tabs", "suppressAutoHyphens",
+    "kinsoku", "wordWrap", "overflowPunct", "topLinePunct", "autoSpaceDE", "autoSpaceDN", "bidi",
+    "adjustRightInd", "snapToGrid", "spacing", "ind", "contextualSpacing", "mirrorIndents",
+    "suppressOverlap", "jc", "textDirection", "textAlignment", "textboxTightWrap",
+    "outlineLvl", "divId", "cnfStyle", "rPr", "sectPr", "pPrChange"))
+
+
+def _at_foot(p) -> None:
+    """Paragraph ``p`` (the title page's city and year) in a frame at the foot of the page's
+    text, centred (w:framePr, where the schema's sequence puts it): ГОСТ 7.32 sets them at the
+    bottom of the title page, whatever the lines above take."""
+    from docx.oxml import parse_xml
+
+    frame = parse_xml(f'<w:framePr {_W} w:hAnchor="margin" w:vAnchor="margin" '
+                      'w:xAlign="center" w:yAlign="bottom" w:wrap="around"/>')
+    ppr = p._p.get_or_add_pPr()
+    later = [c for c in ppr if c.tag.rsplit("}", 1)[-1] in _AFTER_FRAME]
+    if later:
+        later[0].addprevious(frame)
+    else:
+        ppr.append(frame)
+
+
 def _marked(inner: str, k: int) -> str:
     """A heading's runs within the bookmark ``_Toc{k}`` its contents entry refers to."""
     return (f'<w:bookmarkStart w:id="{k}" w:name="_Toc{k}"/>{inner}'
@@ -568,7 +593,7 @@ def docx(doc: Document, plots_dir: Path | None = None) -> bytes:
     plain(f"{g['teacher']}   {line}   {f.teacher or blank}", align=WD_ALIGN_PARAGRAPH.RIGHT)
     for _ in range(6):
         plain()
-    plain(f"{f.city or '__________'} {f.year or '____'}")
+    _at_foot(plain(f"{f.city or '__________'} {f.year or '____'}"))     # ГОСТ 7.32: the foot
     if framed:                          # the frame's section: on a new page
         from flywheel.render.report_frame import docx_section
 
