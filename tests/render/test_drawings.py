@@ -77,7 +77,8 @@ def test_packed_views_never_overlap_each_other_nor_the_title_block(size):
 def test_views_side_by_side_with_their_captions_on_one_line_are_set_apart():
     """Two views whose tops (their captions) are level: the second moved CAPTION_GAP clear of
     the first, so that the captions read as two («…силами, 1:4 План сил звеньев 2, 3» read as
-    one at GAP); where that would leave the field, it stays at GAP; a view below is at GAP."""
+    one at GAP); where that would leave the field, a caption's line lower; where neither is
+    free, at GAP; a view below is at GAP."""
     from flywheel.render.drawings.layout import CAPTION_GAP, _place
     from flywheel.render.drawings.sheet import GAP
 
@@ -85,7 +86,12 @@ def test_views_side_by_side_with_their_captions_on_one_line_are_set_apart():
     first = (0.0, 60.0, 80.0, 100.0)
     assert _place(50, 40, field, [first], 0)[0] == pytest.approx(80.0 + CAPTION_GAP)
     assert _place(50, 40, field, [first], 1)[0] == pytest.approx(80.0 + GAP)   # not a view
-    assert _place(115, 40, field, [first], 0)[0] == pytest.approx(80.0 + GAP)  # no room
+    from flywheel.render.drawings.layout import CAPTION_H
+
+    right_edge = _place(115, 40, field, [first], 0)       # no room to the right: a line lower
+    assert right_edge[0] == pytest.approx(80.0 + GAP)
+    assert right_edge[3] == pytest.approx(100.0 - CAPTION_H)
+    assert _place(115, 96, field, [first], 0)[3] == pytest.approx(100.0)    # no room below either
     lower = (0.0, 60.0, 80.0, 90.0)                       # its top 10 mm lower: not level
     assert _place(50, 40, field, [lower], 0)[0] == pytest.approx(80.0 + GAP)
 
@@ -546,3 +552,47 @@ def test_the_sheets_lowercase_letters_stand_at_one_x_height():
         top = fonts._top(fonts.outline(ch))
         assert 0.97 * x_height <= top <= 1.03 * x_height, (ch, top, x_height)
     assert fonts.advance("э") < fonts.advance("Э")       # narrowed with it, as lettered
+
+
+@pytest.mark.parametrize("lang", ["ru", "en"])
+def test_no_number_on_a_sheet_is_in_e_notation(lang):
+    """engine_inline4's reactions reach 17 693 N: the table printed «1,769e+04». A number of
+    more digits than four is printed whole, in Russian grouped by threes with a narrow space
+    (render/numbers.py's policy); the table's magnitudes read back to the reactions to 4
+    significant digits or better."""
+    import re as _re
+
+    from flywheel.cases.run import load_case
+    from flywheel.dynamics.pipeline import analyze
+    from flywheel.render.drawings import sheet2
+    from flywheel.render.drawings.diagram import num
+    from flywheel.render.drawings.model import Text
+
+    res = analyze(load_case(Path(__file__).resolve().parents[2] / "cases"
+                            / "engine_inline4.toml"), n_points=360)
+    texts = [t.text for t in sheet2.reactions_table(res, lang).items if isinstance(t, Text)]
+    assert not [t for t in texts if _re.search(r"\d[eE][-+−]?\d", t)], texts
+    forces = [j.F for j in res.at[0].joints.values()]
+    assert max(forces) > 1e4
+    for F in forces:
+        shown = num(F, lang)
+        assert shown in texts
+        back = float(shown.replace("\u202f", "").replace(",", ".").replace("−", "-"))
+        assert back == pytest.approx(F, rel=5e-4)
+    if lang == "ru":
+        assert any("\u202f" in t for t in texts)
+
+
+def test_a_subscript_in_braces_holds_a_pair_of_names():
+    """Sheet lettering: «R_{1,r4}» is R with the whole pair «1,r4» as its subscript (a comma
+    ends a bare subscript: «R_1,r4» lettered R₁,r4); the reactions' table and the polygons
+    name engine_inline4's pairs so."""
+    from flywheel.render.drawings.model import _runs
+    from flywheel.render.drawings.sheet2 import force_label
+
+    assert [(r, sub) for r, sub, _ in _runs("R_{1,r4} = 5", 3.5)] == [
+        ("R", False), ("1,r4", True), (" = 5", False)]
+    assert [(r, sub) for r, sub, _ in _runs("R_1,r4", 3.5)] == [
+        ("R", False), ("1", True), (",r4", False)]
+    assert force_label("R_1,r4^τ", "ru") == "Rτ_{1,r4}"
+    assert force_label("R_12^τ", "ru") == "Rτ_12"

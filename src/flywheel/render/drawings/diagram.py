@@ -12,7 +12,7 @@ import numpy as np
 from flywheel.dynamics.plans import round_scale
 from flywheel.render.labels import around
 from flywheel.render.drawings.model import View
-from flywheel.render.numbers import fmt
+from flywheel.render.numbers import fmt, typography
 
 PLOT_H = 70.0          # the curves' span on paper at most [mm]
 TICK = 1.5             # a tick's length [mm]
@@ -20,10 +20,13 @@ MAX_POINTS = 1200       # a curve's vertices at most
 
 
 def num(v: float, lang: str, sig: int = 4) -> str:
-    """A number as the sheet prints it: ``sig`` significant digits; Russian: decimal comma and
-    true minus."""
-    s = fmt(v, sig)
-    return s.replace(".", ",").replace("-", "−") if lang == "ru" else s.replace("−", "-")
+    """A number as the sheet prints it: ``sig`` significant digits, never in e-notation (a
+    number of more digits whole: 17 693, not 1,769e+04); Russian: the Russian policy of
+    render/numbers.py (decimal comma, true minus, five digits and more grouped)."""
+    if lang == "ru":
+        with typography("ru"):
+            return fmt(v, sig)
+    return fmt(v, sig, integers_above=True).replace("−", "-")
 
 
 _SUPER = str.maketrans("0123456789-−", "⁰¹²³⁴⁵⁶⁷⁸⁹⁻⁻")

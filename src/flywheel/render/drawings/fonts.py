@@ -22,6 +22,8 @@ OSIFONT = (Path("/usr/share/fonts/truetype/osifont/osifont.ttf"),
            Path("/usr/local/share/fonts/osifont.ttf"),
            Path.home() / ".local/share/fonts/osifont.ttf",
            Path.home() / ".fonts/osifont.ttf")
+#: the narrow no-break space that groups a number's digits (render/numbers.py)
+THIN = "\u202f"
 #: a character neither font has → what is drawn instead (PDF, SVG)
 STAND_INS = {"…": "...", "ᵗ": "t", "ⁿ": "n"}
 
@@ -155,6 +157,8 @@ _ADVANCE: dict[str, float] = {}
 def advance(ch: str) -> float:
     """The advance width of ``ch`` (or of its stand-in) per unit of capital height [-]."""
     got = _ADVANCE.get(ch)
+    if got is None and ch == THIN and ord(ch) not in _font(font_path()).cmap:
+        got = _ADVANCE[ch] = 0.5 * advance(" ")      # a narrow space: digits grouped
     if got is None:
         total = 0.0
         for c in drawn_char(ch):

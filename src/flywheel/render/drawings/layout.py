@@ -18,7 +18,8 @@ def _overlaps(a, b) -> bool:
 
 #: the gap [mm] between two views side by side whose tops — their captions, lettered 5 mm
 #: high — are within CAPTION_H of each other: at GAP the two captions read as one line
-#: («…с приложенными силами, 1:4 План сил звеньев 2, 3»)
+#: («…с приложенными силами, 1:4 План сил звеньев 2, 3»); where the field has no room for it,
+#: the second view goes CAPTION_H lower
 CAPTION_GAP, CAPTION_H = 12.0, 7.0
 
 
@@ -31,7 +32,8 @@ def _place(w: float, h: float, field, taken, views: int = 0
            ) -> tuple[float, float, float, float] | None:
     """The highest, then leftmost, box w × h in ``field`` clear of ``taken`` (with GAP); a
     box beside one of the views (``taken[views:]``) with its top near that view's moved
-    CAPTION_GAP clear of it, where it is free there (else left where it is)."""
+    CAPTION_GAP clear of it, or else CAPTION_H lower, where it is free there (else left where
+    it is)."""
     fx0, fy0, fx1, fy1 = field
     xs = sorted({fx0, *(b[2] + GAP for b in taken)})
     tops = sorted({fy1, *(b[1] - GAP for b in taken)}, reverse=True)
@@ -46,10 +48,13 @@ def _place(w: float, h: float, field, taken, views: int = 0
                 continue
             near = [b[2] for b in taken[views:] if abs(b[3] - top) < CAPTION_H
                     and 0.0 <= x - b[2] < CAPTION_GAP]
-            if near:
-                apart = (max(near) + CAPTION_GAP, top - h, max(near) + CAPTION_GAP + w, top)
-                if apart[2] <= fx1 + 1e-9 and _free(apart, taken):
-                    return apart
+            if near:          # set apart: to the right, else lower by a caption's line
+                right = (max(near) + CAPTION_GAP, top - h, max(near) + CAPTION_GAP + w, top)
+                lower = (x, top - CAPTION_H - h, x + w, top - CAPTION_H)
+                for apart in (right, lower):
+                    if apart[2] <= fx1 + 1e-9 and apart[1] >= fy0 - 1e-9 \
+                            and _free(apart, taken):
+                        return apart
             return box
     return None
 

@@ -238,11 +238,17 @@ class View:
 
 
 def _runs(text: str, height: float) -> list[tuple[str, bool, float]]:
-    """The runs of :meth:`View.rich`'s lettering: (text, a subscript, its height [mm])."""
+    """The runs of :meth:`View.rich`'s lettering: (text, a subscript, its height [mm]); a
+    subscript in braces may hold the stops («R_{r1,p1}»)."""
     runs: list[tuple[str, bool]] = []
     for k, part in enumerate(text.split("_")):
         if k == 0:
             runs.append((part, False))
+            continue
+        if part.startswith("{") and "}" in part:      # «R_{r1,p1}»: braces hold it whole
+            j = part.index("}")
+            runs.append((part[1:j], True))
+            runs.append((part[j + 1:], False))
             continue
         cut = len(part)
         for stop in " ,=)/;":

@@ -53,7 +53,7 @@ def _phi_axis(results, lang: str, height: float = 70.0) -> dict:
     cycle = float(results.cycle_deg)
     mu = cycle / DIAGRAM_W
     step = 30.0 * cycle / 360.0
-    return dict(x_mu=mu, x_symbol="φ", x_unit="°", x_label=f"φ, °",
+    return dict(x_mu=mu, x_symbol="φ", x_unit="°", x_label="φ, °",
                 x_ticks=[k * step for k in range(int(round(cycle / step)) + 1)], lang=lang,
                 height=height)
 

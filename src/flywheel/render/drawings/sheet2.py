@@ -50,11 +50,13 @@ def _image(label: str) -> str:
 
 def force_label(label: str, lang: str) -> str:
     """A force's name in the sheet's markup: "G_2", "Φ_3", "R_12^τ" → "Rτ_12", "P_y" → "P_у"
-    (Russian)."""
+    (Russian), "R_1,r4^τ" → "Rτ_{1,r4}" (the pair whole in the subscript)."""
     base, _, sup = label.partition("^")
     sym, _, sub = base.partition("_")
     if sym == "P" and sub == "y" and lang == "ru":
         sub = "у"
+    if "," in sub:                          # links named by more than a digit: «R_{1,r4}»
+        sub = f"{{{sub}}}"
     return f"{sym}{sup}_{sub}" if sub else f"{sym}{sup}"
 
 
@@ -280,8 +282,9 @@ def reactions_table(results, lang: str) -> View:
     magnitude [N] and direction to the x axis [deg]."""
     t = _t(lang)
     a = results.at[0]
-    rows = [(f"R_{j.by}{j.on}", j.point, num(j.F, lang), num(j.angle_deg, lang))
-            for j in (a.joints or {}).values()]
+    rows = [(f"R_{j.by}{j.on}" if len(j.by) == 1 and len(j.on) == 1 else f"R_{{{j.by},{j.on}}}",
+             j.point, num(j.F, lang), num(j.angle_deg, lang))
+            for j in (a.joints or {}).values()]      # R_12; R_{r1,p1} where a name is longer
     head = (t["reaction"], t["point"], t["magnitude"].replace("N", nm.unit("N", lang)),
             t["angle"])
     widths = [max(text_width(h, 3.5) + 6.0, 22.0) for h in head]
