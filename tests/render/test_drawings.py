@@ -596,3 +596,32 @@ def test_a_subscript_in_braces_holds_a_pair_of_names():
         ("R", False), ("1", True), (",r4", False)]
     assert force_label("R_1,r4^τ", "ru") == "Rτ_{1,r4}"
     assert force_label("R_12^τ", "ru") == "Rτ_12"
+
+
+def test_the_letters_osifont_lacks_are_made_of_its_own():
+    """osifont draws «ё», «Ё», «э», «Э» as empty boxes; the fallback's were heavier than its
+    strokes («Приведённый», «энергомасс»). They are made of osifont's letters: «ё» the Latin
+    «ë» in the Cyrillic «е»'s place and advance; «э» the «с» turned over with a bar at half its
+    height, wound as the letter so that the fill stays whole."""
+    from flywheel.render.drawings import fonts
+
+    if fonts.font_path() == fonts.fallback_path():
+        pytest.skip("osifont is not installed: the sheets are lettered in DejaVu Sans alone")
+    sheet = fonts._font(fonts.font_path())
+    for ch, like in (("ё", "е"), ("Ё", "Е"), ("э", "с"), ("Э", "С")):
+        assert fonts._font_of(ch) is sheet, ch
+        assert fonts.advance(ch) == pytest.approx(fonts.advance(like))
+    dots = fonts.outline("ё")
+    assert fonts._left(dots) == pytest.approx(fonts._left(fonts.outline("е")))
+    assert fonts._top(dots) > 1.2 * fonts._top(fonts.outline("е"))        # the two dots
+    e, c = fonts.outline("э"), fonts.outline("с")
+    assert len(e) == len(c) + 1
+    bar = e[-1]
+    ys = [p[1] for _, ps in bar for p in ps]
+    assert (min(ys) + max(ys)) / 2 == pytest.approx(0.35)
+    assert max(ys) - min(ys) == pytest.approx(fonts.STROKE)
+    outer = max(e[:-1], key=lambda k: abs(fonts._signed_area(k)))
+    assert (fonts._signed_area(bar) > 0) == (fonts._signed_area(outer) > 0)
+    xs = [p[0] for k in e[:-1] for _, ps in k for p in ps]
+    bx = [p[0] for _, ps in bar for p in ps]
+    assert min(xs) < min(bx) < max(bx) < max(xs)                          # inside the letter

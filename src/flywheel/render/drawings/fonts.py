@@ -3,10 +3,10 @@
 osifont (ISO 3098 lettering, GPL-3 with the font exception: a document that embeds it is not
 covered by the GPL; Debian package ``fonts-osifont``, installed by .ci/run when it can be) is
 used when it is installed; else DejaVu Sans, which matplotlib ships (so the fallback is there on
-every machine). A character the font lacks, or draws as an empty box (osifont 2022 has boxes
-for Ё, ё, Э, э), is taken from DejaVu Sans, scaled to the same capital height (a lowercase
-one to osifont's x-height); osifont's «ь» and «з», drawn taller than its x-height, are brought
-down to it (:func:`_fit`); a character
+every machine). osifont 2022 draws Ё, ё, Э, э as empty boxes: they are made of its own letters
+(:data:`COMPOSED`). A character the font lacks otherwise is taken from DejaVu Sans, scaled to
+the same capital height (a lowercase one to osifont's x-height); osifont's «ь» and «з», drawn
+taller than its x-height, are brought down to it (:func:`_fit`); a character
 neither has is drawn as its nearest one (:data:`STAND_INS`: «…» as three dots). Both fonts
 are upright: the PDF and SVG writers slope the letters 15° (type B, 75° to the line); the DXF
 names its text style for the ГОСТ font with the same oblique angle, so a CAD program letters
@@ -70,13 +70,32 @@ class _Font:
     def has(self, ch: str) -> bool:
         return ord(ch) in self.cmap and not _is_box(self.outline(ch))
 
+    def _source(self, ch: str) -> str:
+        """The character whose glyph draws ``ch``: itself, or the letter :data:`COMPOSED`
+        makes it of where this font's own is an empty box."""
+        base = COMPOSED.get(ch)
+        if base is not None and _is_box(_draw(self, ch)) and ord(base[0]) in self.cmap \
+                and not _is_box(_draw(self, base[0])):
+            return base[0]
+        return ch
+
     def advance(self, ch: str) -> float:
-        return self.hmtx[self.cmap[ord(ch)]][0] / self.cap
+        src = self._source(ch)
+        like = COMPOSED[ch][2] if src != ch else ch
+        return self.hmtx[self.cmap[ord(like)]][0] / self.cap
 
     def outline(self, ch: str) -> list:
         got = self.outlines.get(ch)
         if got is None:
-            got = self.outlines[ch] = _draw(self, ch)
+            src = self._source(ch)
+            got = _draw(self, src)
+            if src != ch:
+                _, bar, like = COMPOSED[ch]
+                dx = _left(_draw(self, like)) - _left(got)       # into the place of «like»
+                got = [[(op, [(x + dx, y) for x, y in ps]) for op, ps in c] for c in got]
+                if bar is not None:
+                    got = _mirrored_with_bar(got, self.advance(ch), bar)
+            self.outlines[ch] = got
         return got
 
 
@@ -111,6 +130,42 @@ def _draw(font: _Font, ch: str) -> list:
     if name is not None:
         font.glyphs[name].draw(Pen(font.glyphs))
     return contours
+
+
+#: letters a font draws as empty boxes (osifont 2022: Ё, ё, Э, э) made of its own letters, so
+#: that they match its strokes: (the letter drawn, a bar's height [capitals] or None, the
+#: letter whose place and advance it takes). «ё», «Ё» are the Latin «ë», «Ë» (osifont's Latin
+#: letters stand wider apart: set in the Cyrillic «е», «Е»'s place); «э», «Э» are «с», «С»
+#: turned over with a bar at half their height (ГОСТ 2.304's «Э»)
+COMPOSED = {"ё": ("ë", None, "е"), "Ё": ("Ë", None, "Е"),
+            "э": ("с", 0.35, "с"), "Э": ("С", 0.5, "С")}
+#: a stroke's width in osifont [capitals] (the width of its «I»)
+STROKE = 0.1
+
+
+def _left(contours: list) -> float:
+    return min((p[0] for c in contours for _, ps in c for p in ps), default=0.0)
+
+
+def _signed_area(contour) -> float:
+    pts = [p for _, ps in contour for p in ps]
+    return 0.5 * sum(x0 * y1 - x1 * y0 for (x0, y0), (x1, y1) in zip(pts, pts[1:] + pts[:1]))
+
+
+def _mirrored_with_bar(contours: list, width: float, y: float) -> list:
+    """``contours`` turned over left to right within the advance ``width``, and a bar STROKE
+    thick at height ``y`` from the turned letter's open side into its bowl — wound as the
+    letter's outer contour, so that where they overlap the fill stays whole."""
+    turned = [[(op, [(width - px, py) for px, py in ps]) for op, ps in c] for c in contours]
+    xs = [px for c in turned for _, ps in c for px, _ in ps]
+    x0, x1 = min(xs) + 1.2 * STROKE, max(xs) - 0.5 * STROKE
+    h = STROKE / 2
+    bar = [("M", [(x0, y - h)]), ("L", [(x1, y - h)]), ("L", [(x1, y + h)]), ("L", [(x0, y + h)])]
+    outer = max(turned, key=lambda c: abs(_signed_area(c)))
+    if (_signed_area(bar) > 0) != (_signed_area(outer) > 0):
+        bar = [bar[0]] + bar[:0:-1]
+        bar = [("M", bar[0][1])] + [("L", ps) for _, ps in bar[1:]]
+    return turned + [bar]
 
 
 def _is_box(contours: list) -> bool:
