@@ -428,3 +428,20 @@ def test_a_row_of_widened_panels_gives_up_the_widening_to_fit():
     assert (widths[0] - 1.0) / (widths[1] - 0.5) == pytest.approx(0.9 / 1.4)   # in proportion
     tight = _within_width([[0, 1, 2]], widened, natural, 2.0, 3 * 0.6 + 3.5, 0.6)
     assert [2.0 / a for a in tight] == pytest.approx([1.0, 0.5, 2.0])
+
+
+def test_a_hodograph_over_720_degrees_marks_both_turns():
+    """A four-stroke engine's loads differ between the crank's two turns: its hodographs mark
+    every 30° of the 720° cycle (24 marks), labelled up to 690°; a 360° cycle's, 12. Before,
+    only 0 … 330° were marked, the second turn's loop unlabelled."""
+    from flywheel.render.plots_forces import _mark_angles
+
+    eng = analyze(load_case(CASE.parent / "engine_inline4.toml"), n_points=360)
+    assert _mark_angles(eng) == list(range(0, 720, 30))
+    assert _mark_angles(analyze(load_case(CASE), n_points=360)) == list(range(0, 360, 30))
+    fig = fg.drawn(dict(plots.all_figures(eng, "en"))["hodographs.png"])
+    pin = fig.axes[0]
+    marks = [ln for ln in pin.lines if ln.get_marker() == "o"]
+    assert len(marks) == 1 and len(marks[0].get_xdata()) == 24
+    labels = {t.get_text() for t in pin.texts}
+    assert "0" in labels and len(labels & {str(a) for a in range(360, 720, 30)}) >= 6, labels

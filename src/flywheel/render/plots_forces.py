@@ -112,9 +112,15 @@ def _hodograph(ax, x: np.ndarray, y: np.ndarray, results, lang: str, color: str)
     ax.set_aspect("equal", adjustable="datalim")
 
 
+def _mark_angles(results) -> list[int]:
+    """The angles [deg] a hodograph marks: every 30° of the cycle (a four-stroke engine's
+    720°: both turns of the crank, whose loads differ)."""
+    return list(range(0, int(round(results.cycle_deg)), 30))
+
+
 def _marks(results) -> list[int]:
-    """Grid nodes of the 30° positions a hodograph marks."""
-    return [results.index_of(math.radians(a)) for a in range(0, 360, 30)]
+    """Grid nodes of the positions a hodograph marks (:func:`_mark_angles`)."""
+    return [results.index_of(math.radians(a)) for a in _mark_angles(results)]
 
 
 def _angle_labels(ax, x: np.ndarray, y: np.ndarray, results) -> list:
@@ -129,7 +135,7 @@ def _angle_labels(ax, x: np.ndarray, y: np.ndarray, results) -> list:
     labels.markers(np.column_stack([x[marks], y[marks]]), 2.5)
     labels.markers([(0.0, 0.0)], 4.5)                # the origin's cross
     placed = []
-    for k, a in enumerate(range(0, 360, 30)):
+    for k, a in enumerate(_mark_angles(results)):
         t = labels.point((float(x[marks[k]]), float(y[marks[k]])), f"{a}",
                          places=around(3.0), optional=k > 0, fontsize=7.0)
         if t is not None:
