@@ -445,3 +445,20 @@ def test_a_hodograph_over_720_degrees_marks_both_turns():
     assert len(marks) == 1 and len(marks[0].get_xdata()) == 24
     labels = {t.get_text() for t in pin.texts}
     assert "0" in labels and len(labels & {str(a) for a in range(360, 720, 30)}) >= 6, labels
+
+
+def test_the_crank_pins_circle_is_drawn_over_the_others_on_it():
+    """The plan of positions' legend names the crank pin's circle by colour C0; an engine's
+    other crank pin (A2, C1) runs on the same circle and was drawn over it, so the circle the
+    legend calls blue was orange. The first moving point's trajectory is drawn last."""
+    import numpy as np
+    from matplotlib.colors import to_hex
+
+    eng = analyze(load_case(CASE.parent / "engine_inline4.toml"), n_points=360)
+    fig = fg.drawn(dict(plots.all_figures(eng, "en"))["plan_positions.png"])
+    ax = fig.axes[0]
+    paths = [ln for ln in ax.lines if ln.get_alpha() == 0.8 and len(ln.get_xdata()) > 100]
+    assert len(paths) == len(eng.drawing.moving_points)
+    assert to_hex(paths[-1].get_color()) == to_hex("C0")
+    pin = eng.kinematics.points[eng.drawing.moving_points[0]].r
+    assert np.allclose(np.column_stack([paths[-1].get_xdata(), paths[-1].get_ydata()]), pin)

@@ -50,8 +50,10 @@ def draw_scheme_fixed(ax, results, size: float) -> None:
 
     P = results.kinematics.points
     moving, fixed = results.drawing.moving_points, results.drawing.fixed_points
-    # trajectories
-    for k, name in enumerate(moving):
+    # trajectories, the first moving point's (the crank pin's: the plan of positions' legend
+    # names its colour, C0) drawn last, over another point's on the same circle (an engine's
+    # pins of one throw angle apart: A1 and A2)
+    for k, name in reversed(list(enumerate(moving))):
         r = P[name].r
         ax.plot(r[:, 0], r[:, 1], color=f"C{k % 10}", linewidth=0.8, alpha=0.8, zorder=1)
     # guides with hatching on one side, sliders as blocks
