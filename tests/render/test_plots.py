@@ -462,3 +462,31 @@ def test_the_crank_pins_circle_is_drawn_over_the_others_on_it():
     assert to_hex(paths[-1].get_color()) == to_hex("C0")
     pin = eng.kinematics.points[eng.drawing.moving_points[0]].r
     assert np.allclose(np.column_stack([paths[-1].get_xdata(), paths[-1].get_ydata()]), pin)
+
+
+@pytest.mark.parametrize("case, pin, bearing", [
+    ("compressor", "шатунную шейку", "коренной подшипник"),
+    ("shaper", "палец кривошипа", "опору кривошипа")])
+def test_the_crank_pin_is_a_crankshafts_only_where_there_is_one(case, pin, bearing):
+    """«Шатунная шейка» and «коренной подшипник» are a crankshaft's: a compressor's or an
+    engine's (a case with cylinders). The shaper's crank carries a block in a slotted lever —
+    no connecting rod, no crankshaft —: its crank pin is «палец кривошипа», its bearing «опора
+    кривошипа», in the hodographs' titles, the record's caption and its sentence, sheet 2."""
+    from flywheel.render.document import build_document
+    from flywheel.render.drawings import sheet, sheet2
+    from flywheel.render.drawings.model import Text
+    from flywheel.render.numbers import typeset
+
+    c = load_case(CASE.parent / f"{case}.toml")
+    res = analyze(c, n_points=360)
+    fig = fg.drawn(dict(plots.all_figures(res, "ru"))["hodographs.png"])
+    titles = " | ".join(ax.get_title() for ax in fig.axes)
+    doc = str(typeset("ru", build_document, res, "ru", ["hodographs.png"], case=c))
+    views = sheet2.views(res, "ru", sheet.ROOM["A1"])
+    lettering = " ".join(t.text for v in views for t in v.items if isinstance(t, Text))
+    for text in (titles, doc):
+        assert pin in text and bearing in text, text[:300]
+    assert pin.split()[0] in lettering                       # «Годограф нагрузки на …»
+    if case == "shaper":
+        for text in (titles, doc, lettering):
+            assert "шатунн" not in text and "коренн" not in text

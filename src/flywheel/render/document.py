@@ -123,6 +123,7 @@ T = words("report", {
         "reactions": "Reactions in the kinematic pairs",
         "balancing_moment": "Balancing moment on the crank: of the Assur groups and with the flywheel's inertia",
         "hodographs": "Polar diagrams of the crank-pin, main-bearing and shaking loads",
+        "hodographs_linkage": "Polar diagrams of the crank-pin, main-bearing and shaking loads",
         "velocity_analogues": "Velocity analogues of the points",
         "acceleration_analogues": "Acceleration analogues of the points",
         "indicator": "Indicator diagram, cylinder {x}", "piston_forces": "Gas forces on the pistons",
@@ -163,11 +164,14 @@ def gi(x, digits: int = 6) -> str:
 
 def _figure_caption(file: str, lang: str, pistons: bool = True) -> str:
     """The caption of plots/``file``; piston_forces.png of a machine with no cylinder draws
-    the applied forces (a cutting force, a spring's tension): ``pistons`` False."""
+    the applied forces (a cutting force, a spring's tension), and its hodographs' crank pin
+    and main bearing are the crank's, not a crankshaft's: ``pistons`` False."""
     t = T[lang]["fig"]
     stem = file.rsplit(".", 1)[0]
     if stem == "piston_forces" and not pistons:
         return t["applied_forces"]
+    if stem == "hodographs" and not pistons:      # no crankshaft: the crank's pin and bearing
+        return t["hodographs_linkage"]
     if stem in t:
         return t[stem]
     if stem.startswith("indicator_"):

@@ -56,6 +56,11 @@ T = words("forces", {
     "at": "At φ = {a}°",
     "frame": ("crank-pin load {P} N (F_T = {T} N, F_R = {R} N); main bearing {B} N; "
               "shaking force {S} N, shaking moment {M} N·m"),
+    # a linkage without a crankshaft (no cylinder): the same in English; in Russian the
+    # crank's pin and bearing («палец», «опора»), not a crankshaft's («шатунная шейка»,
+    # «коренной подшипник»)
+    "frame_linkage": ("crank-pin load {P} N (F_T = {T} N, F_R = {R} N); main bearing {B} N; "
+                      "shaking force {S} N, shaking moment {M} N·m"),
     "tab_positions": ("M_y by the power balance at the table's positions [N·m], beside the "
                       "seed's static and dynamic moments at ω_m (with the steady motion "
                       "M_y = M_st + M_dyn)"),
@@ -306,7 +311,7 @@ def add_report_section(b, results, lang: str = "en") -> None:
                   + "; ".join(f"{symbol(q, lang)} — {name(q, lang)}" for q in SLIDER_CRANK),
                   head, rows)
         P, S = f.crank_pin_load[i], fa.shaking_force[i]
-        b.add(Paragraph(t["frame"].format(
+        b.add(Paragraph(t["frame" if results.cylinders else "frame_linkage"].format(
             P=_g(float(np.hypot(*P)), 6), T=_g(float(f.crank_pin_tangential[i]), 6),
             R=_g(float(f.crank_pin_radial[i]), 6), B=_g(float(fa.main_bearing_load.magnitude[i]), 6),
             S=_g(float(np.hypot(*S)), 6), M=_g(float(fa.shaking_moment[i]), 6)).rstrip()))

@@ -163,12 +163,13 @@ def figure_hodographs(results, lang: str = "en"):
         (mb.x, mb.y, "main_bearing_Fx", "main_bearing_Fy", "bearing", "C3"),
         (S[:, 0], S[:, 1], "shaking_Fx", "shaking_Fy", "shaking", "C2"),
     ]
+    crank = "" if results.cylinders else "_linkage"     # no crankshaft: the crank's pin, bearing
     for ax, (x, y, kx, ky, title, color) in zip(axes, panels):
         _hodograph(ax, x, y, results, lang, color)
         ax.locator_params(axis="x", nbins=5)      # a narrow panel: the tick labels apart
         ax.set_xlabel(axis(kx, lang))
         ax.set_ylabel(axis(ky, lang))
-        ax.set_title(_t(lang, title))
+        ax.set_title(_t(lang, title + crank if title in ("pin", "bearing") else title))
     for ax, (x, y, *_) in zip(axes, panels):      # the figure's size is final: label the marks
         _angle_labels(ax, x, y, results)
     axes[0].legend(loc="center", bbox_to_anchor=((cell.x0 + cell.x1) / 2, (cell.y0 + cell.y1) / 2),

@@ -35,6 +35,7 @@ T = words("drawings2", {
     "angle": "Angle to x, °",
     "kind": {"RRR": "RRR", "RRP": "RRP", "RPR": "RPR"},
     "hodograph": "Hodograph of the load on the crank pin over the cycle",
+    "hodograph_linkage": "Hodograph of the load on the crank pin over the cycle",
 })
 ARROW_MM = 15.0        # a force's arrow on a group drawn apart (its direction, not its size)
 
@@ -273,7 +274,7 @@ def hodograph_view(results, lang: str, longest_mm: float) -> View | None:
         v.label(placer, c, text, 2.5, around(0.8))
     x0, _, _, y1 = v.box()
     v.rich(x0, y1 + 3.0, mu_text("F", mu, _per_mm("mu_F", lang), lang), 3.5)
-    v.text(x0, y1 + 9.0, t["hodograph"], 5.0)
+    v.text(x0, y1 + 9.0, t["hodograph" if results.cylinders else "hodograph_linkage"], 5.0)
     return v
 
 
