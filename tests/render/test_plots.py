@@ -490,3 +490,23 @@ def test_the_crank_pin_is_a_crankshafts_only_where_there_is_one(case, pin, beari
     if case == "shaper":
         for text in (titles, doc, lettering):
             assert "шатунн" not in text and "коренн" not in text
+
+
+@pytest.mark.parametrize("case", ["compressor", "engine_inline4", "shaper"])
+def test_the_plan_of_positions_numbers_stay_inside_its_frame(case):
+    """The positions' numbers are set outwards of the drawing: the plan's limits leave them
+    room (engine_inline4's «6, 18», below the crank pin's lowest place, lay across the frame's
+    lower edge)."""
+    res = analyze(load_case(CASE.parent / f"{case}.toml"), n_points=360)
+    fig = fg.drawn(dict(plots.all_figures(res, "ru"))["plan_positions.png"])
+    ax = fig.axes[0]
+    pt = 72.0 / fig.dpi
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+    frame = ax.get_window_extent(FigureCanvasAgg(fig).get_renderer())
+    f = (frame.x0 * pt, frame.y0 * pt, frame.x1 * pt, frame.y1 * pt)
+    numbers = [(t, b) for t, b in fig.flywheel_labels if t.get_text()[:1].isdigit()]
+    assert len(numbers) >= 12
+    for t, b in numbers:
+        assert f[0] - 0.5 <= b[0] and b[2] <= f[2] + 0.5 and f[1] - 0.5 <= b[1] \
+            and b[3] <= f[3] + 0.5, (t.get_text(), b, f)

@@ -738,6 +738,7 @@ def figure_positions_plan(results, lang: str = "en", scheme=None):
     # number on a label or a marker moves out, 9 pt a step (the sliders' positions crowd near
     # their dead centres)
     ax.set_aspect("equal", adjustable="datalim")
+    ax.margins(0.1)          # room inside the frame for the numbers set outwards of the drawing
     labels = AxesLabels(ax)
     labels.segments([(q[0], q[1]) for q in segs + dsegs])
     if scheme is not None:
