@@ -618,9 +618,10 @@ def docx(doc: Document, plots_dir: Path | None = None) -> bytes:
 
     put(_toc(heads, width))
 
+    k = 0                                   # the heading's number: its bookmark _Toc{k}
     for b in body:
         if isinstance(b, Section):
-            k = heads.index(b) + 1
+            k += 1
             if b.structural:
                 put(_p(_marked(_r(b.text.upper()), k), style="Heading1", jc="center",
                        indent=True))
