@@ -28,6 +28,17 @@ class _Bounded(dict):
         return value
 
 
+def _installed(owner, name: str, new):
+    """``new`` put in the place of ``owner``'s ``name`` (a class's own attribute or a module's);
+    returns the function that puts the one before back."""
+    before = owner.__dict__[name]
+    setattr(owner, name, new)
+
+    def restore() -> None:
+        setattr(owner, name, before)
+    return restore
+
+
 def share_text_metrics():
     """Within :func:`style`, one cache of text sizes for every figure drawn (matplotlib keeps
     one per renderer, and each figure, each resize and each measuring of a legend makes a new
@@ -37,10 +48,9 @@ def share_text_metrics():
     renderer. Returns the function that puts matplotlib's own cache back."""
     import matplotlib.text as mtext
 
-    own = mtext._get_text_metrics_function
     sizes = _Bounded(20000)                      # as matplotlib's own (4096 each)
 
-    def shared(renderer, _own=own):
+    def shared(renderer):
         kind = type(renderer)
 
         def metrics(text, fontprop, ismath, dpi):
@@ -52,11 +62,7 @@ def share_text_metrics():
             return found
         return metrics
 
-    mtext._get_text_metrics_function = shared
-
-    def restore() -> None:
-        mtext._get_text_metrics_function = own
-    return restore
+    return _installed(mtext, "_get_text_metrics_function", shared)
 
 
 def share_mathtext():
@@ -81,11 +87,7 @@ def share_mathtext():
             found = parsed.put(key, parse(self, s, dpi, prop, antialiased, load_glyph_flags))
         return found
 
-    MathTextParser._parse_cached = shared
-
-    def restore() -> None:
-        MathTextParser._parse_cached = own
-    return restore
+    return _installed(MathTextParser, "_parse_cached", shared)
 
 
 def copy_markers_shallow():
@@ -115,11 +117,7 @@ def copy_markers_shallow():
             state["_marker_function"] = getattr(self, function.__name__)
         self.__dict__ = state
 
-    MarkerStyle._set_marker = set_marker
-
-    def restore() -> None:
-        MarkerStyle._set_marker = own
-    return restore
+    return _installed(MarkerStyle, "_set_marker", set_marker)
 
 
 def share_text_images():
@@ -285,11 +283,7 @@ def share_font_tables():
             found = tables[key] = own(self, name)
         return None if found is None else dict(found)
 
-    FT2Font.get_sfnt_table = get_sfnt_table
-
-    def restore() -> None:
-        FT2Font.get_sfnt_table = own
-    return restore
+    return _installed(FT2Font, "get_sfnt_table", get_sfnt_table)
 
 
 def remember_fonts():
