@@ -620,8 +620,9 @@ def test_the_letters_osifont_lacks_are_made_of_its_own():
     ys = [p[1] for _, ps in bar for p in ps]
     assert (min(ys) + max(ys)) / 2 == pytest.approx(0.35)
     assert max(ys) - min(ys) == pytest.approx(fonts.STROKE)
-    outer = max(e[:-1], key=lambda k: abs(fonts._signed_area(k)))
-    assert (fonts._signed_area(bar) > 0) == (fonts._signed_area(outer) > 0)
+    outer = max(e[:-1], key=lambda k: abs(fonts._signed_area(fonts._points(k))))
+    assert (fonts._signed_area(fonts._points(bar)) > 0) \
+        == (fonts._signed_area(fonts._points(outer)) > 0)
     xs = [p[0] for k in e[:-1] for _, ps in k for p in ps]
     bx = [p[0] for _, ps in bar for p in ps]
     assert min(xs) < min(bx) < max(bx) < max(xs)                          # inside the letter

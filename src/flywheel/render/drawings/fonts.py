@@ -17,13 +17,13 @@ from __future__ import annotations
 from functools import lru_cache
 from pathlib import Path
 
+from flywheel.render.numbers import THIN
+
 #: where osifont is found (Debian's fonts-osifont, a user's own fonts)
 OSIFONT = (Path("/usr/share/fonts/truetype/osifont/osifont.ttf"),
            Path("/usr/local/share/fonts/osifont.ttf"),
            Path.home() / ".local/share/fonts/osifont.ttf",
            Path.home() / ".fonts/osifont.ttf")
-#: the narrow no-break space that groups a number's digits (render/numbers.py)
-THIN = "\u202f"
 #: a character neither font has → what is drawn instead (PDF, SVG)
 STAND_INS = {"…": "...", "ᵗ": "t", "ⁿ": "n"}
 
@@ -147,9 +147,13 @@ def _left(contours: list) -> float:
     return min((p[0] for c in contours for _, ps in c for p in ps), default=0.0)
 
 
-def _signed_area(contour) -> float:
-    pts = [p for _, ps in contour for p in ps]
+def _signed_area(pts: list) -> float:
+    """The signed area of the polygon through ``pts`` (positive: counter-clockwise)."""
     return 0.5 * sum(x0 * y1 - x1 * y0 for (x0, y0), (x1, y1) in zip(pts, pts[1:] + pts[:1]))
+
+
+def _points(contour) -> list:
+    return [p for _, ps in contour for p in ps]
 
 
 def _mirrored_with_bar(contours: list, width: float, y: float) -> list:
@@ -160,12 +164,11 @@ def _mirrored_with_bar(contours: list, width: float, y: float) -> list:
     xs = [px for c in turned for _, ps in c for px, _ in ps]
     x0, x1 = min(xs) + 1.2 * STROKE, max(xs) - 0.5 * STROKE
     h = STROKE / 2
-    bar = [("M", [(x0, y - h)]), ("L", [(x1, y - h)]), ("L", [(x1, y + h)]), ("L", [(x0, y + h)])]
-    outer = max(turned, key=lambda c: abs(_signed_area(c)))
-    if (_signed_area(bar) > 0) != (_signed_area(outer) > 0):
-        bar = [bar[0]] + bar[:0:-1]
-        bar = [("M", bar[0][1])] + [("L", ps) for _, ps in bar[1:]]
-    return turned + [bar]
+    corners = [(x0, y - h), (x1, y - h), (x1, y + h), (x0, y + h)]      # counter-clockwise
+    outer = max((_signed_area(_points(c)) for c in turned), key=abs)
+    if outer < 0:
+        corners.reverse()
+    return turned + [[("M", [corners[0]])] + [("L", [p]) for p in corners[1:]]]
 
 
 def _is_box(contours: list) -> bool:
