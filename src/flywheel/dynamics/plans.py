@@ -260,8 +260,10 @@ def image_label(point: str) -> str:
     return point.lower()
 
 
-def _pair(a: str, b: str) -> str:
-    """Two link or point names side by side ("12", "r1,1" when a name is longer)."""
+def link_pair(a: str, b: str) -> str:
+    """Two link or point names side by side ("12", "r1,1" when a name is longer): a reaction's
+    subscript (R_12, R_r1,1), here and wherever a reaction is named (render/forces.py, the
+    sheets)."""
     return f"{a}{b}" if len(a) == 1 and len(b) == 1 else f"{a},{b}"
 
 
@@ -466,7 +468,7 @@ def force_polygons(mech: Mechanism, kin: Kinematics, fa: ForceAnalysis, loads: L
             for key, R in fa.joints.items():   # reactions of the groups solved before
                 if R.by == link and R.on not in S and key not in unknown_keys:
                     F = -np.array([R.x[i], R.y[i]])
-                    known.append(("known", f"R_{_pair(R.on, R.by)}", R.joint, link, F))
+                    known.append(("known", f"R_{link_pair(R.on, R.by)}", R.joint, link, F))
             for kd, label, lk, point, F in loads_i:
                 if lk == link:
                     known.append((kd, label, point, link, F))
@@ -474,7 +476,7 @@ def force_polygons(mech: Mechanism, kin: Kinematics, fa: ForceAnalysis, loads: L
         for key, split in unknowns:
             R = fa.joints[key]
             F = np.array([R.x[i], R.y[i]], float)
-            label = f"R_{_pair(R.by, R.on)}"
+            label = f"R_{link_pair(R.by, R.on)}"
             if split is None:
                 last.append(("reaction", label, R.joint, R.on, F))
                 continue

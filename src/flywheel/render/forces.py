@@ -11,6 +11,7 @@ import math
 
 import numpy as np
 
+from flywheel.dynamics.plans import link_pair
 from flywheel.render.blocks import Bullets, Heading, Paragraph
 from flywheel.render.catalogue import words
 from flywheel.render.nomenclature import csv_header, name, position_label, symbol, unit, unit_of
@@ -177,7 +178,7 @@ def summary_lines(results, lang: str = "en") -> list[str]:
 def reaction_label(r, lang: str = "en") -> str:
     """A joint's reaction as the course writes it: R₀₁ (O) — the force of link 0 on link 1 at
     O (Russian, subscript digits where both links' names are digits); R_01 (O) in English."""
-    pair = f"{r.by}{r.on}" if len(r.by) == 1 and len(r.on) == 1 else f"{r.by},{r.on}"
+    pair = link_pair(r.by, r.on)
     digits = pair.replace(",", "").isdigit()
     sub = pair.translate(_SUBSCRIPT) if lang == "ru" and digits else f"_{pair}"
     return f"R{sub} ({r.joint})"

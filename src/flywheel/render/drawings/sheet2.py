@@ -15,7 +15,7 @@ from flywheel.render import nomenclature as nm
 from flywheel.render.catalogue import words
 from flywheel.render.drawings.diagram import mu_text, num
 from flywheel.render.drawings.model import View, indexed, text_width
-from flywheel.dynamics.plans import round_scale
+from flywheel.dynamics.plans import link_pair, round_scale
 from flywheel.render.drawings.scheme import _block, gost_scale, scheme_view
 from flywheel.render.labels import around, beside, toward
 
@@ -283,8 +283,8 @@ def reactions_table(results, lang: str) -> View:
     magnitude [N] and direction to the x axis [deg]."""
     t = _t(lang)
     a = results.at[0]
-    rows = [(f"R_{j.by}{j.on}" if len(j.by) == 1 and len(j.on) == 1 else f"R_{{{j.by},{j.on}}}",
-             j.point, num(j.F, lang), num(j.angle_deg, lang))
+    rows = [(force_label(f"R_{link_pair(j.by, j.on)}", lang), j.point, num(j.F, lang),
+             num(j.angle_deg, lang))
             for j in (a.joints or {}).values()]      # R_12; R_{r1,p1} where a name is longer
     head = (t["reaction"], t["point"], t["magnitude"].replace("N", nm.unit("N", lang)),
             t["angle"])
