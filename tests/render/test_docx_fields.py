@@ -103,7 +103,8 @@ def test_the_contents_link_each_heading_and_its_page_field_to_its_bookmark():
     assert [h.get(f"{W}anchor") for h in links] == marks
     for link, head in zip(links, heads):
         assert text(link) == text(head)
-        (ref,) = [i.text.strip() for i in link.iter(f"{W}instrText")]
+        (ref,) = [i.text.strip() for i in link.iter(f"{W}instrText")] \
+            + [f.get(f"{W}instr").strip() for f in link.iter(f"{W}fldSimple")]
         assert ref == f"PAGEREF {link.get(f'{W}anchor')} \\h"
 
 

@@ -212,7 +212,7 @@ def docx(doc: Document, plots_dir: Path | None = None) -> bytes:
     from docx.table import _Cell
     from docx.shared import Mm, Pt, Twips
 
-    from flywheel.render.table_widths import column_widths
+    from flywheel.render.table_widths import column_widths, section_width
 
     tab, fig = CAPTION[doc.lang]
     d = pydocx.Document()
@@ -261,9 +261,8 @@ def docx(doc: Document, plots_dir: Path | None = None) -> bytes:
             size = Pt(7 if len(b.header) > 7 else 8.5)
             # the columns' widths fixed (render/table_widths.py: LibreOffice gives columns
             # left to it the same share, and a narrow share breaks words)
-            widths = column_widths([tuple(b.header), *b.rows],
-                                   round((sec.page_width - sec.left_margin - sec.right_margin)
-                                         / 635), round(size.pt * 2))
+            widths = column_widths([tuple(b.header), *b.rows], section_width(sec),
+                                   round(size.pt * 2))
             t.autofit = False
             for col, w in zip(t.columns, widths):
                 col.width = Twips(w)

@@ -451,17 +451,6 @@ def _marked(inner: str, k: int) -> str:
             f'<w:bookmarkEnd w:id="{k}"/>')
 
 
-_FIELD_END = '<w:r><w:fldChar w:fldCharType="end"/></w:r>'
-
-
-def _field_open(instr: str) -> str:
-    """A Word field's first runs: its beginning, its instruction, the mark before its result
-    (then the result's runs and :data:`_FIELD_END`)."""
-    return ('<w:r><w:fldChar w:fldCharType="begin"/></w:r>'
-            f'<w:r><w:instrText xml:space="preserve"> {instr} </w:instrText></w:r>'
-            '<w:r><w:fldChar w:fldCharType="separate"/></w:r>')
-
-
 def _toc(heads: list, width: int) -> str:
     """The contents: one paragraph a heading (``heads``, the record's sections in order), its
     number and name linked to it, a dot leader to a right tab at the text's ``width``
@@ -480,17 +469,21 @@ def _toc(heads: list, width: int) -> str:
         props = (f'<w:tabs><w:tab w:val="right" w:leader="dot" w:pos="{width}"/></w:tabs>'
                  f'<w:spacing w:after="0"/><w:ind w:left="{indent}" w:right="560" '
                  'w:firstLine="0"/><w:jc w:val="left"/>')
-        page = _field_open(f"PAGEREF _Toc{k} \\h") + _FIELD_END
+        page = _simple_field(f"PAGEREF _Toc{k} \\h")
         out.append(f'<w:p><w:pPr>{props}</w:pPr><w:hyperlink w:anchor="_Toc{k}" w:history="1">'
                    f'<w:r><w:t xml:space="preserve">{text}</w:t></w:r><w:r><w:tab/></w:r>{page}'
                    f'</w:hyperlink></w:p>')
     return "".join(out)
 
 
+def _simple_field(instr: str, shown: str = "") -> str:
+    """A Word field (w:fldSimple) as WordprocessingML, its last result ``shown``."""
+    return f'<w:fldSimple w:instr=" {instr} "><w:r><w:t>{shown}</w:t></w:r></w:fldSimple>'
+
+
 def _seq(name: str, number: int) -> str:
     """A caption's number as the Word field SEQ ``name`` (its shown value ``number``)."""
-    return (f'<w:fldSimple w:instr=" SEQ {name} \\* ARABIC "><w:r><w:t>{number}</w:t></w:r>'
-            f"</w:fldSimple>")
+    return _simple_field(f"SEQ {name} \\* ARABIC", str(number))
 
 
 def _table_xml(b: Table, width: int) -> str:
@@ -530,6 +523,8 @@ def docx(doc: Document, plots_dir: Path | None = None) -> bytes:
     from docx.enum.text import WD_ALIGN_PARAGRAPH, WD_BREAK
     from docx.oxml import parse_xml
     from docx.shared import Cm, Mm, Pt
+
+    from flywheel.render.table_widths import section_width
 
     g, f = G[doc.lang], _front(doc)
     d = pydocx.Document()
@@ -607,7 +602,7 @@ def docx(doc: Document, plots_dir: Path | None = None) -> bytes:
     body = list(sections(doc))
     w = 'xmlns:w="http://schemas.openxmlformats.org/wordprocessingml/2006/main"'
     sect = d.element.body.sectPr
-    width = round((sec.page_width - sec.left_margin - sec.right_margin) / 635)   # [twips]
+    width = section_width(sec)                                  # [twips]
     heads = [b for b in body if isinstance(b, Section)]
 
     def put(xml: str) -> None:

@@ -81,6 +81,12 @@ def text_width(text: str, half_points: int, bold: bool = False) -> float:
     return total
 
 
+def section_width(section) -> int:
+    """The text's width [twips] of a python-docx section: its page less its margins (lengths
+    in EMU, 635 a twip)."""
+    return round((section.page_width - section.left_margin - section.right_margin) / 635)
+
+
 def _words(text: str) -> list[str]:
     """The pieces a line of ``text`` may break between (at spaces; a subscript's markup kept
     whole: «v_qS2»)."""
