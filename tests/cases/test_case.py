@@ -166,7 +166,7 @@ def test_syntax_error_position_points_at_the_mistake(tmp_path):
 def test_unknown_key_lists_the_allowed_ones(tmp_path):
     msg = load_error(variant(tmp_path, "bore = 0.12 ", "bor = 0.12 "))
     assert "cylinders[0].bor: unknown key; did you mean 'bore'?" in msg
-    assert "allowed: name, title, piston, bore, p_max, head, interpolation, s, towards_head, away_from_head" in msg
+    assert "allowed: name, title, label, piston, bore, p_max, head, interpolation, s, towards_head, away_from_head" in msg
 
 
 def test_unknown_key_far_from_any_gives_no_guess(tmp_path):

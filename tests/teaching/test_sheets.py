@@ -142,7 +142,7 @@ def test_the_sheet_carries_the_variants_own_values(compressor_dir):
         assert rows["масса звена 5 m_5"] == [("%g" % doc["links"]["5"]["mass"]).replace(".", ","),
                                              "кг"]
         assert rows["плотность материала маховика ρ"] == ["7800", "кг/м³"]
-        assert ru_numbers(rows["цилиндр LP: p/p_max при движении поршня к головке"][0]) == \
+        assert ru_numbers(rows["цилиндр НД: p/p_max при движении поршня к головке"][0]) == \
             doc["cylinders"][1]["towards_head"]
         assert rows["момент инерции: редуктор (приведён к кривошипу)"] == ["0,074", "кг·м²"]
 

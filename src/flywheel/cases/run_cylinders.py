@@ -254,6 +254,9 @@ class CylinderSpec(StrictModel):
     name: Name
     title: TitleText = title_field(description="its name in the documents and figures: a string, or { ru = …, en = … } "
                                                   "(default: its kind and name, as 'force cutting')")
+    label: TitleText = title_field(description="the cylinder's short name in the documents, figures and "
+                                                  "sheets, as ВД in «цилиндр ВД»: a string, or { ru = …, en = … } "
+                                                  "(default: its name)")
     piston: Name = Field(description="slider link of an RRP dyad")
     bore: Annotated[float, Field(gt=0), _within(1e-4, 10.0, "m")] = Field(description="bore d [m]")
     p_max: Annotated[float, Field(gt=0), _within(1.0, 1e10, "Pa")] | None = Field(

@@ -113,7 +113,7 @@ def four_stroke_cylinder(cy, mech, dcs: dict, kin, fires_at: float) -> CylinderR
                           np.interp(s_exp, *tables["compression"]), p_exp, cy.p_max, head.phi,
                           stroke=stroke, stroke_tables={k: v[1] for k, v in tables.items()},
                           fires_at=float(fires_at),
-                          stroke_s={k: v[0] for k, v in tables.items()})
+                          stroke_s={k: v[0] for k, v in tables.items()}, label=cy.label)
 
 
 # -- the gas work, exact for piecewise-linear tables -------------------------------------------

@@ -161,7 +161,7 @@ def linkage_loads(case, mech, dcs: dict, kin) -> LoadsResult:
         M_parts[L.LoadKey("gas", cy.name)] = M
         towards = x_dot * (head.x - far.x) > 0
         cylinders.append(CylinderResult(cy.name, cy.piston, s, towards, p, F, M, s_tab, up, down,
-                                        cy.p_max, head.phi))
+                                        cy.p_max, head.phi, label=cy.label))
         if (W := gas_work(cy, mech, dcs, kin, cylinders[-1])) is not None:
             W_parts[L.LoadKey("gas", cy.name)] = W       # exact for linear tables
     applied = A.applied_loads(case, mech, kin)
@@ -199,8 +199,10 @@ def linkage_loads(case, mech, dcs: dict, kin) -> LoadsResult:
     titles = {L.LoadKey(kind, x.name): x.title for kind, given in (
         ("gas", case.cylinders), ("force", case.forces), ("couple", case.couples),
         ("spring", case.springs)) for x in given if x.title}
+    labels = {L.LoadKey("gas", cy.name): cy.label for cy in case.cylinders if cy.label}
     return LoadsResult(M_parts=M_parts, W_parts=W_parts, cylinders=tuple(cylinders),
-                       forces=forces, warnings=tuple(warnings), tensions=tensions, titles=titles)
+                       forces=forces, warnings=tuple(warnings), tensions=tensions, titles=titles,
+                       labels=labels)
 
 
 def linkage_reduction(case, kin) -> ReductionResult:

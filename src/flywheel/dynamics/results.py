@@ -57,6 +57,8 @@ class CylinderResult:
     stroke_tables: dict[str, np.ndarray] | None = None
     fires_at: float | None = None
     stroke_s: dict[str, np.ndarray] | None = None
+    label: str = ""             # its short name in the documents (io.text.Text in two
+    #                             languages, or a string); "": its name
 
 
 @dataclass(frozen=True)
@@ -74,6 +76,8 @@ class LoadsResult:
     tensions: dict[str, np.ndarray] = field(default_factory=dict)  # linear spring → T(φ) [N]
     titles: dict[LoadKey, str] = field(default_factory=dict)  # a load's own title (io.text.Text
     #                                  in two languages), where the case gives one
+    labels: dict[LoadKey, str] = field(default_factory=dict)  # a cylinder's label (io.text.Text
+    #                                  or a string) for its gas load's name, where the case gives one
 
 
 @dataclass(frozen=True)

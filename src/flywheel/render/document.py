@@ -162,10 +162,13 @@ def gi(x, digits: int = 6) -> str:
     return _number(x, digits, zero=1e-13, nonfinite="dash", given=True)
 
 
-def _figure_caption(file: str, lang: str, pistons: bool = True) -> str:
+def _figure_caption(file: str, lang: str, pistons: bool = True,
+                    cylinders: dict[str, str] | None = None) -> str:
     """The caption of plots/``file``; piston_forces.png of a machine with no cylinder draws
     the applied forces (a cutting force, a spring's tension), and its hodographs' crank pin
-    and main bearing are the crank's, not a crankshaft's: ``pistons`` False."""
+    and main bearing are the crank's, not a crankshaft's: ``pistons`` False. ``cylinders``:
+    an indicator diagram's file stem → its cylinder's label in ``lang`` (else the stem's
+    name)."""
     t = T[lang]["fig"]
     stem = file.rsplit(".", 1)[0]
     if stem == "piston_forces" and not pistons:
@@ -175,7 +178,7 @@ def _figure_caption(file: str, lang: str, pistons: bool = True) -> str:
     if stem in t:
         return t[stem]
     if stem.startswith("indicator_"):
-        return t["indicator"].format(x=stem[len("indicator_"):])
+        return t["indicator"].format(x=(cylinders or {}).get(stem, stem[len("indicator_"):]))
     if stem.startswith("plan_") and stem.count("_") >= 2:       # plan_velocity_22_5: 22.5°
         what, _, a = stem[len("plan_"):].partition("_")
         if f"plan_{what}" in t:
@@ -200,6 +203,7 @@ class _Builder:
         self.n_figures = 0
         self.plots = list(plots or [])
         self.pistons = True             # piston_forces.png draws gas forces (else applied ones)
+        self.cylinders: dict[str, str] = {}   # an indicator figure's stem → its cylinder's label
 
     def add(self, block) -> None:
         self.doc.blocks.append(block)
@@ -211,7 +215,8 @@ class _Builder:
     def figures_of(self, section: str) -> None:
         for f in [p for p in self.plots if _section_of(p) == section]:
             self.n_figures += 1
-            self.add(Figure(self.n_figures, _figure_caption(f, self.doc.lang, self.pistons), f))
+            caption = _figure_caption(f, self.doc.lang, self.pistons, self.cylinders)
+            self.add(Figure(self.n_figures, caption, f))
             self.plots.remove(f)
 
 
@@ -254,6 +259,7 @@ def build_document(results, lang: str = "en", plots: list[str] | None = None,
     title, source = in_language(results.title, lang), in_language(results.source, lang)
     b = _Builder(title, lang, plots)
     b.pistons = bool(results.cylinders)
+    b.cylinders = {nm.indicator_stem(c.name): nm.cylinder_label(c, lang) for c in results.cylinders}
 
     def sym(key):
         return nm.symbol(key, lang)
@@ -335,7 +341,7 @@ def build_document(results, lang: str = "en", plots: list[str] | None = None,
     b.add(Formula(r"M_{F} = F \cdot v_{q}"))
     mk = [k for k in cols if k.startswith("M ")]
     header = (pos + [h("phi_deg"), h("J_II"), h("dJ_II")]
-              + [h(k, label=nm.member(k, lang, results.loads.titles)) for k in mk] + [h("M_sum")])
+              + [h(k, label=nm.member(k, lang, results.loads.titles, results.loads.labels)) for k in mk] + [h("M_sum")])
     body = [[*lab, g(cols["phi_deg"].values[i], 6), g(cols["J_II"].values[i], 4), g(cols["dJ_II"].values[i], 4)]
             + [g(cols[k].values[i], 5) for k in mk] + [g(cols["M_sum"].values[i], 5)] for lab, i in idx]
     b.table(t["red_caption"], header, body)
@@ -502,22 +508,22 @@ def _input_of_case(b: _Builder, case, t: dict, lang: str) -> None:
     if case.cylinders:
         b.add(Heading(3, f"1.4. {t['cyl']}"))
         b.table(t["cyl"], [t["name"], t["piston"], nm.heading("bore", lang), nm.heading("p_max", lang), t["head"]],
-                [[c.name, c.piston, gi(c.bore, 6), gi(c.p_max, 6),
+                [[nm.cylinder_label(c, lang), c.piston, gi(c.bore, 6), gi(c.p_max, 6),
                   nm.DEAD_CENTRES[c.head][lang == "ru"]] for c in case.cylinders])
         for c in case.cylinders:
             sym_s, sym_p = nm.symbol("s_{cylinder}", lang), nm.symbol("p_rel", lang)
             if getattr(c, "strokes", None) is not None:      # a four-stroke cylinder
                 st = c.strokes
                 names = ("intake", "compression", "expansion", "exhaust")
-                b.table(t["indicator"].format(c=c.name),
+                b.table(t["indicator"].format(c=nm.cylinder_label(c, lang)),
                         [sym_s] + [f"{sym_p} {nm.name('engine_' + n, lang)}" for n in names],
                         [[gi(s_, 4)] + [gi(getattr(st, n)[k], 4) for n in names]
                          for k, s_ in enumerate(c.s)])
             elif getattr(c, "diagram", None) is not None:    # one table over the cycle
-                b.table(t["indicator"].format(c=c.name), [sym_s, sym_p],
+                b.table(t["indicator"].format(c=nm.cylinder_label(c, lang)), [sym_s, sym_p],
                         [[gi(s_, 4), gi(p_, 4)] for s_, p_ in zip(c.diagram.s, c.diagram.p)])
             else:
-                b.table(t["indicator"].format(c=c.name), [sym_s, f"{sym_p} ↑", f"{sym_p} ↓"],
+                b.table(t["indicator"].format(c=nm.cylinder_label(c, lang)), [sym_s, f"{sym_p} ↑", f"{sym_p} ↓"],
                         [[gi(s_, 4), gi(a, 4), gi(w, 4)]
                          for s_, a, w in zip(c.s, c.towards_head, c.away_from_head)])
     springs = getattr(case, "springs", ())

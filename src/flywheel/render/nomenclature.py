@@ -664,11 +664,12 @@ def term(key: str) -> tuple[Term, str]:
     raise KeyError(f"{key!r} is not in the nomenclature (render/nomenclature.py)")
 
 
-def load_name(x, lang: str = "en", titles=None) -> str:
+def load_name(x, lang: str = "en", titles=None, labels=None) -> str:
     """A load's name in ``lang`` from its key (:class:`~flywheel.dynamics.loads.LoadKey`, or its
     text "kind name" as a column's family member gives it): gas HP → "газ HP", gravity 2 →
     "gravity, link 2"; a key of no known kind as its text; a load the case titles (``titles``:
-    LoadsResult.titles) by its title.
+    LoadsResult.titles) by its title; a cylinder the case labels (``labels``:
+    LoadsResult.labels) by its label, gas HP → "газ ВД".
 
     >>> load_name(LoadKey("gravity", "2"), "ru")
     'сила тяжести звена 2'
@@ -677,14 +678,29 @@ def load_name(x, lang: str = "en", titles=None) -> str:
     if titles and key in titles:              # the case's own title of the load (LoadsResult.titles)
         return in_language(titles[key], lang)
     if key.kind in LOAD_KINDS and key.name:
-        return LOAD_KINDS[key.kind][lang == "ru"].format(x=key.name)
+        called = in_language(labels[key], lang) if labels and key in labels else key.name
+        return LOAD_KINDS[key.kind][lang == "ru"].format(x=called)
     return str(x)
 
 
-def member(key: str, lang: str = "en", titles=None) -> str:
+def member(key: str, lang: str = "en", titles=None, labels=None) -> str:
     """The family member of ``key`` in ``lang`` ("M gas HP" → "газ HP", "x_B" → "B"; "" for a
-    key that is not a family's); a titled load by its title (``titles``: LoadsResult.titles)."""
-    return load_name(term(key)[1], lang, titles)
+    key that is not a family's); a titled load by its title (``titles``: LoadsResult.titles), a
+    labelled cylinder's gas by its label (``labels``: LoadsResult.labels)."""
+    return load_name(term(key)[1], lang, titles, labels)
+
+
+def indicator_stem(name: str) -> str:
+    """The file stem of cylinder ``name``'s indicator diagram (plots/indicator_HP.png): the
+    name's ASCII letters and digits, any other character '_'."""
+    return "indicator_" + ("".join(ch if ch.isalnum() and ch.isascii() else "_" for ch in name)
+                           or "cylinder")
+
+
+def cylinder_label(cylinder, lang: str = "en") -> str:
+    """A cylinder's short name in ``lang`` ("ВД" in «цилиндр ВД»): the case's ``label`` (a
+    CylinderSpec's or a CylinderResult's), else its name."""
+    return in_language(cylinder.label, lang) if cylinder.label else cylinder.name
 
 
 def name(key: str, lang: str = "en", **fields) -> str:

@@ -219,7 +219,7 @@ def figure_indicator(results, cylinder, lang: str = "en"):
                                                      lambda p: p * PA_PER_MPA / p_max))
         sec.set_ylabel(nm.axis("p_{cylinder}", lang, si="MPa"))
         ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.13), ncols=2)
-        ax.set_title(fg.title(results, _t(lang, "indicator", c=cylinder.name)))
+        ax.set_title(fg.title(results, _t(lang, "indicator", c=nm.cylinder_label(cylinder, lang))))
         fg.fit_heading(fig, ax.title, fg.A4_W)     # a long case title broken into lines
         return fig
     return fg.drawn(build)
@@ -235,11 +235,11 @@ def figure_piston_forces(results, lang: str = "en"):
         for k, c in enumerate(results.cylinders):
             names.add(f"F_{c.name}")
             line, = ax.plot(deg, c.F, color=f"C{k}",
-                            label=_t(lang, "F_gas", p=c.piston, c=c.name))
+                            label=_t(lang, "F_gas", p=c.piston, c=nm.cylinder_label(c, lang)))
             for a in results.at:
                 i = results.index_of(math.radians(a.phi_deg) % results.cycle)
                 ax.plot(deg[i], c.F[i], "o", color=line.get_color(),
-                        label=_t(lang, "F_at", c=c.name, a=a.phi_deg, v=float(c.F[i]),
+                        label=_t(lang, "F_at", c=nm.cylinder_label(c, lang), a=a.phi_deg, v=float(c.F[i]),
                                  u=nm.unit_of(f"F_{c.name}", lang)))
         for key, col in results.columns.items():
             if key.startswith("F_") and key not in names:
@@ -261,7 +261,8 @@ def _load_label(results, name: str, spring: bool, lang: str) -> str:
     kind = "spring" if spring else "force"
     title = results.loads.titles.get(LoadKey(kind, name))
     if title:
-        return nm.load_name(LoadKey(kind, name), lang, results.loads.titles)
+        return nm.load_name(LoadKey(kind, name), lang, results.loads.titles,
+                            results.loads.labels)
     return _t(lang, "F_spring" if spring else "F_tech", n=nm.member("F_" + name, lang))
 
 
@@ -278,7 +279,8 @@ def figure_reduced_moments(results, lang: str = "en"):
         deg = _phi_deg(results)
         ax = axes[0]
         for name in big:
-            ax.plot(deg, results.M_parts[name], label=nm.load_name(name, lang, results.loads.titles))
+            ax.plot(deg, results.M_parts[name], label=nm.load_name(
+                name, lang, results.loads.titles, results.loads.labels))
         ax.plot(deg, results.columns["M_known"].values, color="0.4", linestyle="--",
                 label=_t(lang, "M_known", M=nm.tex("M_known", lang)))
         m_const = results.scalars.balancing_moment
@@ -293,7 +295,8 @@ def figure_reduced_moments(results, lang: str = "en"):
         if small:
             for name in small:
                 axes[1].plot(deg, results.M_parts[name],
-                             label=nm.load_name(name, lang, results.loads.titles))
+                             label=nm.load_name(name, lang, results.loads.titles,
+                                                 results.loads.labels))
             axes[1].axhline(0.0, color="0.3", linewidth=0.6)
             axes[1].set_ylabel(nm.axis("M {load}", lang))
         for a in axes:
@@ -440,9 +443,6 @@ def figure_scheme(results, lang: str = "en"):
 
 
 # -- writing -----------------------------------------------------------------------------------------
-def _safe(name: str) -> str:
-    """A cylinder name as a file-name part: letters, digits and '_' only."""
-    return "".join(ch if ch.isalnum() and ch.isascii() else "_" for ch in name) or "cylinder"
 
 
 def figures(results, lang: str = "en"):
@@ -459,7 +459,7 @@ def figures(results, lang: str = "en"):
     if results.kinematics is None:   # tabulated kinematics (issue 5): no positions to draw
         out = out[-1:]
     for c in results.cylinders:
-        out.append((f"indicator_{_safe(c.name)}.png", lambda c=c: figure_indicator(results, c, lang)
+        out.append((f"{nm.indicator_stem(c.name)}.png", lambda c=c: figure_indicator(results, c, lang)
                     if c.stroke is None else _engine_plots().figure_indicator_strokes(results, c, lang)))
     if results.cylinders or any(k.startswith("F_") for k in results.columns):
         out.append(("piston_forces.png", lambda: figure_piston_forces(results, lang)))

@@ -62,7 +62,7 @@ def figure_indicator_strokes(results, cylinder, lang: str = "en"):
         bx.set_xlabel(t("phi"))
         bx.set_ylabel(t("p_MPa"))
         bx.legend(loc="upper center", bbox_to_anchor=(0.5, -0.15), ncols=5, frameon=False)
-        ax.set_title(t("title", t=results.title, c=cylinder.name))
+        ax.set_title(t("title", t=results.title, c=nm.cylinder_label(cylinder, lang)))
         fg.fit_heading(fig, ax.title, fg.A4_W)    # a long Russian title in two lines
         fg.fit_left(fig, (ax, bx))
         return fig

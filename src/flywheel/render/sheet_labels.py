@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import re
 
+from flywheel.io.text import in_language
 from flywheel.render.nomenclature import MATERIALS, TERMS, name, symbol, unit_of
 
 
@@ -233,8 +234,8 @@ _SHEET_FIELD_RX = [(_sheet_pattern(p), en, ru) for p, en, ru in SHEET_FIELDS]
 def field_label(path: str, lang: str = "en", names: dict[str, str] | None = None,
                 kinds: tuple[str, ...] = ()) -> str:
     """The label of a case file's input field on a task sheet ("links.2.mass" → "масса звена 2
-    m_2"); ``names``: the element name of an indexed path ("cylinders.0" → "HP"), else the
-    element's number from 1; ``kinds``: the case kind's entries to try first, in order ("run",
+    m_2"); ``names``: the element name of an indexed path ("cylinders.0" → "HP", or a
+    cylinder's label: an io.text.Text, "ВД" in Russian), else the element's number from 1; ``kinds``: the case kind's entries to try first, in order ("run",
     "task2"; "run,i" for a flywheel on a shaft of its own); an unknown field by its dotted path
     as the case file spells it.
 
@@ -258,8 +259,8 @@ def field_label(path: str, lang: str = "en", names: dict[str, str] | None = None
 
                     x = part_name(x, lang)
                 if not x and d.get("i") is not None:
-                    x = (names or {}).get(path[:m.end("i") - len(key) + len(path)]) or \
-                        str(int(d["i"]) + 1)
+                    x = in_language((names or {}).get(
+                        path[:m.end("i") - len(key) + len(path)]) or str(int(d["i"]) + 1), lang)
                 return (ru if lang == "ru" else en).format(x=x)
     return path
 

@@ -199,14 +199,22 @@ def default_rows(document: dict, source: str, answers) -> tuple[Given, ...]:
 
 def element_names(document: dict, prefix: str = "") -> dict[str, str]:
     """The name of each table of an array of tables ("cylinders.0" → "HP", "crank.pins.0" →
-    "A2"): its ``name``, else its ``joint`` (a dyad is named by its joint); arrays inside a
+    "A2"): its ``label`` (a cylinder's: a string, or an io.text.Text of its ``{ ru, en }``),
+    else its ``name``, else its ``joint`` (a dyad is named by its joint); arrays inside a
     table too (a crank's pins)."""
+    from flywheel.io.text import Text
+
     out = {}
     for key, value in document.items():
         if isinstance(value, list):
             for i, entry in enumerate(value):
                 if isinstance(entry, dict):
-                    name = entry.get("name", entry.get("joint"))
+                    label = entry.get("label")
+                    if isinstance(label, dict) and isinstance(label.get("en"), str) and \
+                            isinstance(label.get("ru"), str) and label["en"] and label["ru"]:
+                        label = Text(label["en"], label["ru"])
+                    name = label if isinstance(label, str) and label else \
+                        entry.get("name", entry.get("joint"))
                     if isinstance(name, str) and name:
                         out[f"{prefix}{key}.{i}"] = name
         elif isinstance(value, dict) and not prefix:

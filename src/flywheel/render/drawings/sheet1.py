@@ -90,7 +90,7 @@ def views(results, lang: str, room: dict) -> list[View]:
                   if b - a >= 1]
         mpa = nm.unit("MPa", lang)
         out.append(diagram(
-            f"indicator {cyl.name}", t["indicator"].format(c=cyl.name), np.array([0.0, 1.0]),
+            f"indicator {cyl.name}", t["indicator"].format(c=nm.cylinder_label(cyl, lang)), np.array([0.0, 1.0]),
             curves, x_mu=0.01, x_symbol="s", x_unit="–", x_label=nm.symbol("s_{cylinder}", lang),
             x_ticks=[0.0, 0.25, 0.5, 0.75, 1.0], y_symbol="p", y_unit=mpa,
             y_label=f"p, {mpa}", height=room["plot_h"], lang=lang, x_scale_text=t["stroke"]))

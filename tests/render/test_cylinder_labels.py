@@ -1,0 +1,132 @@
+"""A cylinder's ``label`` (a string or { ru, en }): its short name in the records, figures,
+drawing sheets and task sheets — «цилиндр ВД» in Russian, "cylinder HP" in English — while its
+``name`` stays the key of the CSV columns, summary.json and the figures' file names
+(render/nomenclature.cylinder_label, LoadsResult.labels)."""
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from flywheel import analyze, load_case
+from flywheel.dynamics.loads import LoadKey
+from flywheel.io.text import Text
+from flywheel.render import nomenclature as nm
+from flywheel.render import plots
+from flywheel.render.document import build_document
+
+CASES = Path(__file__).resolve().parents[2] / "cases"
+
+
+@pytest.fixture(scope="module")
+def compressor():
+    return analyze(load_case(CASES / "compressor.toml"), n_points=360)
+
+
+def _unlabelled(tmp_path: Path) -> Path:
+    """The compressor without its cylinders' labels and titles."""
+    lines = (CASES / "compressor.toml").read_text(encoding="utf-8").splitlines()
+    kept = [ln for ln in lines if not ln.startswith(("label = ", "title = { ru = \"газ"))]
+    assert len(lines) - len(kept) == 4
+    case = tmp_path / "unlabelled.toml"
+    case.write_text("\n".join(kept) + "\n", encoding="utf-8")
+    return case
+
+
+def _text(doc) -> str:
+    """Every caption, heading and cell of a record, one string."""
+    out = []
+    for b in doc.blocks:
+        for attr in ("caption", "text", "header", "rows"):
+            v = getattr(b, attr, None)
+            out.append(repr(v) if v is not None else "")
+    return "\n".join(out)
+
+
+def test_the_label_reaches_the_result(compressor):
+    hp, lp = compressor.cylinders
+    assert (hp.name, nm.cylinder_label(hp, "ru"), nm.cylinder_label(hp, "en")) == ("HP", "ВД", "HP")
+    assert (lp.name, nm.cylinder_label(lp, "ru")) == ("LP", "НД")
+    # the data keep the name
+    assert {"p_HP", "F_HP", "p_LP"} <= set(compressor.columns)
+
+
+def test_the_russian_record_names_the_cylinders_in_russian(compressor):
+    stems = [f"{nm.indicator_stem(c.name)}.png" for c in compressor.cylinders]
+    assert stems == ["indicator_HP.png", "indicator_LP.png"]      # file names: the keys
+    ru = _text(build_document(compressor, "ru", stems))
+    assert "Индикаторная диаграмма цилиндра ВД" in ru and "цилиндра НД" in ru
+    assert "цилиндра HP" not in ru and "цилиндра LP" not in ru
+    en = _text(build_document(compressor, "en", stems))
+    assert "cylinder HP" in en and "ВД" not in en
+
+
+def test_the_figures_name_the_cylinders_in_russian(compressor):
+    title = plots.figure_indicator(compressor, compressor.cylinders[0], "ru").axes[0].get_title()
+    assert title.endswith("цилиндра ВД"), title
+    fig = plots.figure_piston_forces(compressor, "ru")
+    legend = [t.get_text() for t in fig.axes[0].get_legend().get_texts()]
+    assert "сила давления газа на поршень 3, цилиндр ВД" in legend
+    assert not any("HP" in x or "LP" in x for x in legend), legend
+
+
+def test_the_drawing_sheet_names_the_cylinders_in_russian(compressor):
+    from flywheel.render.drawings import sheet1
+    from flywheel.render.drawings.model import Text as Lettering
+    from flywheel.render.drawings.sheet import ROOM
+
+    views = sheet1.views(compressor, "ru", ROOM["A1"])
+    texts = [t.text for v in views for t in v.items if isinstance(t, Lettering)]
+    assert any("цилиндра ВД" in x for x in texts) and any("цилиндра НД" in x for x in texts)
+    assert not any("цилиндра HP" in x or "цилиндра LP" in x for x in texts)
+
+
+def test_without_a_label_the_name_is_shown(tmp_path):
+    r = analyze(load_case(_unlabelled(tmp_path)), n_points=360)
+    assert [nm.cylinder_label(c, "ru") for c in r.cylinders] == ["HP", "LP"]
+    assert r.loads.labels == {} and r.loads.titles == {}
+    assert nm.load_name(LoadKey("gas", "HP"), "ru", r.loads.titles, r.loads.labels) == "газ HP"
+
+
+def test_a_labelled_cylinder_without_a_title_names_its_gas_by_the_label():
+    labels = {LoadKey("gas", "HP"): Text("HP", "ВД")}
+    assert nm.load_name(LoadKey("gas", "HP"), "ru", {}, labels) == "газ ВД"
+    assert nm.load_name(LoadKey("gas", "HP"), "en", {}, labels) == "gas HP"
+    titles = {LoadKey("gas", "HP"): Text("gas, HP cylinder", "газ, цилиндр ВД")}
+    assert nm.load_name(LoadKey("gas", "HP"), "ru", titles, labels) == "газ, цилиндр ВД"   # a title wins
+    assert nm.member("M gas HP", "ru", None, labels) == "газ ВД"
+
+
+def test_a_string_label_is_both_languages(tmp_path):
+    text = _unlabelled(tmp_path).read_text(encoding="utf-8").replace(
+        'name = "HP"\n', 'name = "HP"\nlabel = "II"\n')
+    case = tmp_path / "string.toml"
+    case.write_text(text, encoding="utf-8")
+    hp = analyze(load_case(case), n_points=360).cylinders[0]
+    assert {nm.cylinder_label(hp, lang) for lang in ("en", "ru")} == {"II"}
+
+
+def test_a_label_table_needs_ru_and_en(tmp_path):
+    from flywheel.errors import CaseFileError
+
+    text = (CASES / "compressor.toml").read_text(encoding="utf-8").replace(
+        'label = { ru = "ВД", en = "HP" }', 'label = { ru = "ВД" }')
+    case = tmp_path / "bad.toml"
+    case.write_text(text, encoding="utf-8")
+    with pytest.raises(CaseFileError) as e:
+        load_case(case)
+    line = str(e.value)
+    assert "\n" not in line and "cylinders[0].label" in line and "ru and en" in line, line
+
+
+def test_the_task_sheet_names_the_cylinders_by_their_labels():
+    import tomllib
+
+    from flywheel.render.sheet_labels import field_label
+    from flywheel.teaching.sheets import element_names
+
+    doc = tomllib.loads((CASES / "variants_compressor.toml").read_text(encoding="utf-8"))
+    names = element_names(doc)
+    assert field_label("cylinders.0.bore", "ru", names) == "диаметр цилиндра ВД d"
+    assert field_label("cylinders.1.bore", "en", names) == "bore of cylinder LP d"
+    assert element_names({"cylinders": [{"name": "A"}]}) == {"cylinders.0": "A"}   # no label
