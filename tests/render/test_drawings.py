@@ -129,6 +129,90 @@ def test_a_view_larger_than_the_field_is_left_out_by_name():
     assert left_out == ["huge"] and [v.name for v in sheets[0]] == ["small"]
 
 
+def test_the_room_is_grown_while_the_views_still_take_one_sheet():
+    """fitted: views that take one sheet with room to spare are drawn larger (sheet.ROOM
+    times the largest factor of GROW that still packs them onto one sheet)."""
+    from flywheel.render.drawings import GROW, fitted
+    from flywheel.render.drawings.sheet import ROOM
+
+    x0, y0, x1, y1 = field_of("A3")
+    rooms = []
+
+    def build(room):          # two views as tall as the room's plot_h: 110 mm at ROOM × 1
+        rooms.append(room["plot_h"] / ROOM["A3"]["plot_h"])
+        h = 2.0 * room["plot_h"]
+        return [_box_view("a", 150, h), _box_view("b", 150, h)]
+
+    views, pages, left_out = fitted(build, "A3")
+    assert len(pages) == 1 and not left_out
+    # the largest factor whose views are at most the field's height (the two side by side)
+    fits = [f for f in (1.0, *GROW) if 2.0 * ROOM["A3"]["plot_h"] * f <= y1 - y0]
+    assert views[0].size[1] == pytest.approx(2.0 * ROOM["A3"]["plot_h"] * max(fits))
+    assert max(fits) > 1.0 and rooms[0] == 1.0
+
+
+def test_the_room_is_shrunk_where_that_saves_a_sheet():
+    """fitted: views that take two sheets at sheet.ROOM are drawn at the largest factor of
+    SHRINK that puts them on one; where none does, they stay as they are."""
+    from flywheel.render.drawings import SHRINK, fitted
+    from flywheel.render.drawings.sheet import ROOM
+
+    x0, y0, x1, y1 = field_of("A3")
+
+    def boxes(w, h):          # four views, w × h [mm] at ROOM × 1
+        return lambda room: [_box_view(n, w * room["plot_h"] / ROOM["A3"]["plot_h"],
+                                       h * room["plot_h"] / ROOM["A3"]["plot_h"])
+                             for n in "abcd"]
+
+    for (w, h), factor in (((100, 120), 0.9), ((120, 150), 0.8)):
+        build = boxes(w, h)
+        # the packer's own count at each factor: two sheets at 1, one only from ``factor`` on
+        counts = {f: len(pack(build({"plot_h": ROOM["A3"]["plot_h"] * f}), "A3")[0])
+                  for f in (1.0, *SHRINK)}
+        assert counts[1.0] == 2 and counts[factor] == 1 and \
+            all(counts[f] == 2 for f in SHRINK if f > factor), counts
+        views, pages, _ = fitted(build, "A3")
+        assert len(pages) == 1 and views[0].size == pytest.approx((w * factor, h * factor))
+
+    def wide(room):           # views that need two sheets at any factor
+        return [_box_view(n, (x1 - x0) * 0.9, (y1 - y0) * 0.6) for n in "ab"]
+
+    views, pages, _ = fitted(wide, "A3")
+    assert len(pages) == 2 and views[0].size[0] == pytest.approx((x1 - x0) * 0.9)
+
+
+@pytest.mark.parametrize("case", ["compressor", "shaper"])
+def test_fitted_sheets_are_never_more_and_their_lettering_never_smaller(case):
+    """Against sheet.ROOM as it is: at every format no more sheets and no view left out, the
+    same heights of lettering; at A1, where both sheets take one, drawings larger."""
+    from flywheel.cases.run import load_case
+    from flywheel.dynamics.pipeline import analyze
+    from flywheel.render.drawings import fitted, sheet1, sheet2
+    from flywheel.render.drawings.model import Text as Lettering
+    from flywheel.render.drawings.sheet import ROOM
+
+    results = analyze(load_case(ROOT / "cases" / f"{case}.toml"), n_points=720)
+
+    def heights(views):
+        return {it.height for v in views for it in v.items if isinstance(it, Lettering)}
+
+    for size in ("A1", "A2", "A3"):
+        for kind in (sheet1, sheet2):
+            plain = kind.views(results, "ru", ROOM[size])
+            pages, left_out = pack(plain, size)
+            views, fit_pages, fit_left_out = fitted(
+                lambda room: kind.views(results, "ru", room), size)
+            assert len(fit_left_out) <= len(left_out) and len(fit_pages) <= len(pages)
+            assert heights(views) == heights(plain), (size, kind.__name__)
+            if size == "A1":
+                assert len(fit_pages) == 1
+                grown = {v.name: v.size for v in views}
+                assert all(grown[v.name][0] * grown[v.name][1] >= v.size[0] * v.size[1] - 1e-9
+                           for v in plain)
+                assert sum(grown[v.name][0] * grown[v.name][1] for v in plain) > \
+                    1.1 * sum(v.size[0] * v.size[1] for v in plain)
+
+
 # -- a whole run: the sheets written and read back ---------------------------------------------
 
 DOCUMENT = """

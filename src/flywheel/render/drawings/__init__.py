@@ -36,20 +36,63 @@ class Sheet:
         return [it for v in self.views for it in v.items]
 
 
-def build_sheets(results, document, *, lang: str = "ru", size: str = "A1") -> list[Sheet]:
-    """The sheets of a run: sheet 1 (and sheet 2 for a linkage case with its plans)."""
-    from flywheel.render.drawings import sheet1
-    from flywheel.render.drawings.layout import pack
-    from flywheel.render.drawings.sheet import ROOM, frame_view, words_of
+#: the factors a sheet's room (sheet.ROOM) is tried at besides 1 (:func:`fitted`): smaller
+#: where the views take more than one sheet, larger where they take one with room to spare
+SHRINK = (0.9, 0.8)
+GROW = (1.15, 1.3, 1.45, 1.6)
 
-    parts = [("sheet1", "sheet1", sheet1.views(results, lang, ROOM[size]))]
+
+def fitted(build, size: str):
+    """The views ``build(room)`` makes and their pages (layout.pack) at the room that fills the
+    sheets of ``size`` best: the fewest views left out, then the fewest sheets, then the
+    largest drawings — sheet.ROOM times 1, or a factor of :data:`SHRINK` where the views take
+    more sheets than one, or of :data:`GROW` where they take one (the lettering never
+    changes). The views need no fewer sheets as they grow, so the factors are bisected: three
+    or four builds, not one per factor. Returns (views, pages, left_out)."""
+    from flywheel.render.drawings.layout import pack
+    from flywheel.render.drawings.sheet import ROOM
+
+    def attempt(factor: float):
+        views = build({k: v * factor for k, v in ROOM[size].items()})
+        return (views, *pack(views, size))
+
+    def need(a) -> tuple[int, int]:        # views left out, then sheets
+        return len(a[2]), len(a[1])
+
+    base = attempt(1.0)
+    if need(base) > (0, 1):                # more than one sheet: the largest factor that saves
+        least = attempt(SHRINK[-1])        # one, if the smallest does
+        if need(least) >= need(base):
+            return base
+        factors, best, goal = SHRINK[:-1], least, need(least)
+    else:                                  # one sheet: the largest factor that keeps it one
+        factors, best, goal = GROW, base, need(base)
+    lo, hi = 0, len(factors)               # bisect the ordered factors (larger: more room)
+    order = sorted(range(len(factors)), key=lambda k: factors[k])
+    while lo < hi:
+        mid = (lo + hi) // 2
+        tried = attempt(factors[order[mid]])
+        if need(tried) <= goal:
+            best, lo = tried, mid + 1
+        else:
+            hi = mid
+    return best
+
+
+def build_sheets(results, document, *, lang: str = "ru", size: str = "A1") -> list[Sheet]:
+    """The sheets of a run: sheet 1 (and sheet 2 for a linkage case with its plans), each at
+    the room that fills its sheets best (:func:`fitted`)."""
+    from flywheel.render.drawings import sheet1
+    from flywheel.render.drawings.sheet import frame_view, words_of
+
+    parts = [("sheet1", "sheet1", fitted(lambda room: sheet1.views(results, lang, room), size))]
     if results.plans:
         from flywheel.render.drawings import sheet2
 
-        parts.append(("sheet2", "sheet2", sheet2.views(results, lang, ROOM[size])))
+        parts.append(("sheet2", "sheet2",
+                      fitted(lambda room: sheet2.views(results, lang, room), size)))
     packed = []
-    for stem, key, views in parts:
-        pages, left_out = pack(views, size)
+    for stem, key, (views, pages, left_out) in parts:
         scale = next((v.scales["label"] for v in views if "label" in v.scales), "")
         for k, page in enumerate(pages):
             packed.append((stem if k == 0 else f"{stem}-{k + 1}", key, page, scale,
