@@ -130,3 +130,21 @@ def test_the_task_sheet_names_the_cylinders_by_their_labels():
     assert field_label("cylinders.0.bore", "ru", names) == "диаметр цилиндра ВД d"
     assert field_label("cylinders.1.bore", "en", names) == "bore of cylinder LP d"
     assert element_names({"cylinders": [{"name": "A"}]}) == {"cylinders.0": "A"}   # no label
+
+
+def test_a_warning_names_the_cylinder_by_its_label_in_each_language():
+    """A Notice's parameter given in two languages (a label: io.text.Text) is said in the
+    Russian message by its Russian (render/messages.message); its English text, stderr's and
+    summary.json's, by the English."""
+    from flywheel.errors import Notice
+    from flywheel.render.messages import message
+
+    r = analyze(load_case(CASES / "compressor_worksheet.toml"), n_points=360)
+    (w,) = [w for w in r.warnings if getattr(w, "code", "") == "cylinder_negative_p"]
+    assert str(w).startswith("cylinder LP: the natural-spline interpolation")
+    assert message(w, "ru").startswith("цилиндр НД: интерполяция (natural-spline)")
+    plain = Notice.of("cylinder_negative_p", "cylinder {cylinder}: the {kind} interpolation of "
+                      "its indicator table gives negative pressure, down to {p:.4g} MPa at "
+                      "φ = {phi_deg:.1f}° (use 'pchip' to avoid overshoot)", cylinder="C1",
+                      kind="linear", p=-0.5, phi_deg=10.0)
+    assert message(plain, "ru").startswith("цилиндр C1: ")          # a plain name as it is

@@ -90,7 +90,8 @@ def test_run_warnings_and_notes_are_russian(tmp_path):
     ru = runner.invoke(app, [*args, "--lang", "ru", "--report", "md"])
     assert ru.exit_code == 0
     lines = ru.stderr.strip().splitlines()
-    assert any(x.startswith("предупреждение: цилиндр LP: интерполяция") for x in lines), lines
+    # the cylinder by its label in Russian (label = { ru = "НД", en = "LP" })
+    assert any(x.startswith("предупреждение: цилиндр НД: интерполяция") for x in lines), lines
     assert any(x.startswith("примечание: ") and "оставлены файлы" in x for x in lines), lines
     assert any(x.startswith("примечание: ") and "удалены файлы" in x for x in lines), lines
     for x in lines:

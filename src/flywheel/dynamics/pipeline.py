@@ -156,8 +156,8 @@ def linkage_loads(case, mech, dcs: dict, kin) -> LoadsResult:
             warnings.append(Notice.of(
                 "cylinder_negative_p", "cylinder {cylinder}: the {kind} interpolation of its "
                 "indicator table gives negative pressure, down to {p:.4g} MPa at φ = "
-                "{phi_deg:.1f}° (use 'pchip' to avoid overshoot)", cylinder=cy.name,
-                kind=cy.interpolation, p=p_mpa, phi_deg=at))
+                "{phi_deg:.1f}° (use 'pchip' to avoid overshoot)",
+                cylinder=cy.label or cy.name, kind=cy.interpolation, p=p_mpa, phi_deg=at))
         M_parts[L.LoadKey("gas", cy.name)] = M
         towards = x_dot * (head.x - far.x) > 0
         cylinders.append(CylinderResult(cy.name, cy.piston, s, towards, p, F, M, s_tab, up, down,

@@ -19,6 +19,7 @@ from __future__ import annotations
 
 from flywheel.render.catalogue import (_english, catalogue, entry, has,  # noqa: F401
                                        notice_codes, plural, words)
+from flywheel.io.text import Text
 from flywheel.render.message_params import russian_params
 from flywheel.render.numbers import typeset_params
 
@@ -29,7 +30,8 @@ _LEAD = words("message_lead", {"top_level": ": (top level): "})
 
 def message(text: str, lang: str = "en") -> str:
     """A warning, note or error in ``lang``: a Notice (errors.Notice) whose code the catalogue
-    has is said in Russian, anything else (English, or a plain string) as it is."""
+    has is said in Russian (a parameter given in two languages, an io.text.Text such as a
+    cylinder's label, in its Russian), anything else (English, or a plain string) as it is."""
     code = getattr(text, "code", "")
     if lang != "ru" or not code or not has(code):
         return str(text)
@@ -38,7 +40,8 @@ def message(text: str, lang: str = "en") -> str:
     russian = catalogue("ru").pgettext(code, english)
     if russian == english:                          # an English changed, not yet in the .po
         russian = entry(code, "ru")
-    return lead + russian.format(**typeset_params(russian_params(code, text.params, message)))
+    params = {k: v.ru if isinstance(v, Text) else v for k, v in text.params.items()}  # a name
+    return lead + russian.format(**typeset_params(russian_params(code, params, message)))  # in two
 
 
 def prefix(key: str, lang: str = "en") -> str:
