@@ -148,3 +148,31 @@ def test_a_warning_names_the_cylinder_by_its_label_in_each_language():
                       "φ = {phi_deg:.1f}° (use 'pchip' to avoid overshoot)", cylinder="C1",
                       kind="linear", p=-0.5, phi_deg=10.0)
     assert message(plain, "ru").startswith("цилиндр C1: ")          # a plain name as it is
+
+
+def _texts(fig) -> list[str]:
+    from matplotlib.text import Text as MplText
+
+    return [t.get_text() for t in fig.findobj(MplText)]
+
+
+@pytest.mark.parametrize("case, ru, en", [
+    ("compressor", ["F(ВД)", "F(НД)"], ["F(HP)", "F(LP)"]),          # the cylinders' labels
+    ("shaper", ["F(пс)"], ["F(cutting)"]),                            # a force's
+    ("fourbar_rocker_load", ["F(пр)", "M(с) на звене 3"], ["F(return)", "M(resistance) on link 3"]),
+])
+def test_the_plans_name_the_loads_by_their_labels(case, ru, en):
+    """The force polygons and Zhukovsky's lever name a given load F_<label> (M_<label> for a
+    couple) in the figure's language: F(ВД) for the compressor's cylinder HP, F(пс) for the
+    shaper's cutting force, M(с) for the rocker's couple (dynamics.plans._called); the groups
+    by their links and their kind, ВВП in Russian."""
+    from flywheel.render.plots_plans import figure_force_polygons, figure_lever
+
+    r = analyze(load_case(CASES / f"{case}.toml"), n_points=360)
+    for lang, want in (("ru", ru), ("en", en)):      # every report angle (a cutting force acts
+        text = "\n".join(t for ps in r.plans for t in                   # on one stroke only)
+                         _texts(figure_force_polygons(r, ps, lang)) + _texts(figure_lever(r, ps, lang)))
+        assert all(w in text for w in want), (lang, want)
+        if lang == "ru":
+            assert "группа звеньев" in text and not any(k in text for k in ("RRP", "RPR", "RRR"))
+            assert not any(w in text for w in en if w not in ru), text

@@ -36,6 +36,8 @@ def test_gost_scales_are_the_largest_that_fit():
     assert gost_scale(0.3, 200.0) == (0.5, "1:2")
     assert gost_scale(0.05, 200.0) == (4.0, "4:1")
     assert gost_scale(2.0, 220.0) == (0.1, "1:10")
+    assert gost_scale(0.5, 220.0, "ru") == (0.4, "1:2,5")      # ГОСТ 2.302: a decimal comma
+    assert gost_scale(0.5, 220.0) == (0.4, "1:2.5")
 
 
 def test_a_curve_thinned_stays_within_its_tolerance():
@@ -636,6 +638,34 @@ def test_the_sheets_lowercase_letters_stand_at_one_x_height():
         top = fonts._top(fonts.outline(ch))
         assert 0.97 * x_height <= top <= 1.03 * x_height, (ch, top, x_height)
     assert fonts.advance("э") < fonts.advance("Э")       # narrowed with it, as lettered
+
+
+@pytest.mark.parametrize("case", ["compressor", "shaper", "fourbar_rocker_load"])
+def test_russian_sheets_have_decimal_commas_and_russian_names(case):
+    """Every lettering of the Russian sheets at A1 (views, title block, column 26): no decimal
+    point — the scales too, «1:2,5» as ГОСТ 2.302 writes it, where the sheet is large enough
+    for the scheme at 1:2.5 (the compressor's) — and no force or group named by a case key in
+    Latin letters: F_ВД, F_пс, F_пр, M_с by the loads' labels, ВВП for RRP."""
+    import re as _re
+
+    from flywheel.cases.run import load_case
+    from flywheel.dynamics.pipeline import analyze
+    from flywheel.render.drawings import build_sheets
+    from flywheel.render.drawings.model import Text
+
+    c = load_case(ROOT / "cases" / f"{case}.toml")
+    res = analyze(c, n_points=720)
+    texts = [it.text for s in build_sheets(res, c.document, lang="ru", size="A1")
+             for it in s.items if isinstance(it, Text)]
+    designation = c.document.designation or "ТММ.КП.00.01"      # its dots are the code's own
+    numbers = [t for t in texts if designation not in t]
+    assert not [t for t in numbers if _re.search(r"\d\.\d", t)], numbers
+    # symbols' Latin (J_II, Rn_12, v_qA) and none of three letters or more (cutting, RRP)
+    latin = {w for t in texts for w in _re.findall(r"[A-Za-z]{3,}", t)}
+    assert not latin, latin
+    if case == "compressor":
+        assert any("1:2,5" in t for t in texts) and {"ВД", "НД"} <= set(texts)
+        assert not {"HP", "LP"} & set(texts)
 
 
 @pytest.mark.parametrize("lang", ["ru", "en"])

@@ -64,6 +64,12 @@ def _check_table(table, x_kind: str, value_kind: str) -> None:
                 "strictly increasing)", x=x, prev=table[i - 1][0]))
 
 
+#: the description of a load's ``label``
+LABEL = ("its short name in the force plans, Zhukovsky's lever and the drawing sheets, the "
+         "subscript of its F or M (F_пс for a force named cutting): a string, or { ru = …, en "
+         "= … } (default: its name)")
+
+
 class ForceSpec(StrictModel):
     """A force. On a slider (``slider``): the course's technological force against the slider's
     motion while its relative travel s lies in ``s_range`` (and it moves in ``stroke``). At a
@@ -72,6 +78,7 @@ class ForceSpec(StrictModel):
     name: Name
     title: TitleText = title_field(description="its name in the documents and figures: a string, or { ru = …, en = … } "
                                                   "(default: its kind and name, as 'force cutting')")
+    label: TitleText = title_field(description=LABEL)
     # the slider form (the course's cutting force)
     slider: Name | None = Field(None, description="slider link of an RRP dyad (the slider form)")
     reference: Literal["outer", "inner"] = Field("outer", description="dead centre s is measured from")
@@ -146,6 +153,7 @@ class CoupleSpec(StrictModel):
     name: Name
     title: TitleText = title_field(description="its name in the documents and figures: a string, or { ru = …, en = … } "
                                                   "(default: its kind and name, as 'force cutting')")
+    label: TitleText = title_field(description=LABEL)
     link: Name
     moment: Moment | None = None
     table: Table | None = Field(None, description="[[φ_deg, M], …]: M [N·m] against φ")
@@ -172,6 +180,7 @@ class SpringSpec(StrictModel):
     name: Name
     title: TitleText = title_field(description="its name in the documents and figures: a string, or { ru = …, en = … } "
                                                   "(default: its kind and name, as 'force cutting')")
+    label: TitleText = title_field(description=LABEL)
     kind: Literal["linear", "torsional"]
     stiffness: Stiffness = Field(description="c [N/m] (linear) or [N·m/rad] (torsional)")
     points: Annotated[tuple[Name, Name], Strict(False)] | None = Field(None, description="linear: its two ends (named points)")

@@ -85,6 +85,7 @@ class PointForce:
     point: str
     F: Any
     on_frame: bool = True
+    label: str = ""         # its short name (io.text.Text or a string; "": its name): F_<label>
 
 
 @dataclass(frozen=True)
@@ -96,6 +97,7 @@ class Couple:
     link: str
     M: Any
     on_frame: bool = True
+    label: str = ""         # its short name (io.text.Text or a string; "": its name): M_<label>
 
 
 @dataclass(frozen=True)

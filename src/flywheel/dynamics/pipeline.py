@@ -102,24 +102,24 @@ def force_loads(case, mech, dcs: dict, kin, ld: LoadsResult, J_I: float):
     for cy, cr in zip(case.cylinders, ld.cylinders):
         d, u, _, head, far = slider_frame(mech, dcs, cy.piston, cy.head, f"cylinders {cy.name}: piston")
         F = cr.F * np.sign(far.x - head.x)
-        pf.append(forces.PointForce(cy.name, cy.piston, d.joint, F[:, None] * u))
+        pf.append(forces.PointForce(cy.name, cy.piston, d.joint, F[:, None] * u, label=cy.label))
     applied = A.applied_loads(case, mech, kin)
     for f in case.forces:
         if f.slider is None:
-            pf += [forces.PointForce(f.name, lk, p, F, on)
+            pf += [forces.PointForce(f.name, lk, p, F, on, f.label)
                    for lk, p, F, on in applied[L.LoadKey("force", f.name)].vectors]
             continue
         d, u, _, _, _ = slider_frame(mech, dcs, f.slider, f.reference, f"forces {f.name}: slider")
         F = -ld.forces[f.name] * np.sign(kin.points[d.joint].v_q @ u)
-        pf.append(forces.PointForce(f.name, f.slider, d.joint, F[:, None] * u))
-    couples = tuple(forces.Couple(c.name, lk, M, on)
+        pf.append(forces.PointForce(f.name, f.slider, d.joint, F[:, None] * u, label=f.label))
+    couples = tuple(forces.Couple(c.name, lk, M, on, c.label)
                     for c in case.couples for lk, M, on in (
                         applied[L.LoadKey("couple", c.name)].couples if A.is_new_couple(c)
                         else ((c.link, c.moment, True),)))
     for sp in case.springs:
         ap = applied[L.LoadKey("spring", sp.name)]
-        pf += [forces.PointForce(sp.name, lk, p, F, on) for lk, p, F, on in ap.vectors]
-        couples += tuple(forces.Couple(sp.name, lk, M, on) for lk, M, on in ap.couples)
+        pf += [forces.PointForce(sp.name, lk, p, F, on, sp.label) for lk, p, F, on in ap.vectors]
+        couples += tuple(forces.Couple(sp.name, lk, M, on, sp.label) for lk, M, on in ap.couples)
     return forces.Loads(dict(case.links), tuple(pf), couples, tuple(case.machine.gravity), J_I)
 
 

@@ -408,6 +408,17 @@ def kinematic_plans(mech: Mechanism, kin: Kinematics, i: int, omega: float, epsi
 
 # -- the force polygons ---------------------------------------------------------------------------
 
+def _called(symbol: str, load) -> str:
+    """A given load's name on the plans: "F_HP" — its ``label`` the subscript where the case
+    gives one, in both languages (an io.text.Text: "F_HP", «F_ВД»), else its name."""
+    from flywheel.io.text import Text, in_language
+
+    label = getattr(load, "label", "")
+    if not label:
+        return f"{symbol}_{load.name}"
+    return Text(f"{symbol}_{in_language(label, 'en')}", f"{symbol}_{in_language(label, 'ru')}")
+
+
 def _given_forces(kin: Kinematics, fa: ForceAnalysis, loads: Loads, i: int) -> list[tuple]:
     """(kind, label, link, point, F (2,)) of every force on the moving links at node i: the
     given forces, the weights, the inertia forces."""
@@ -415,7 +426,7 @@ def _given_forces(kin: Kinematics, fa: ForceAnalysis, loads: Loads, i: int) -> l
     for f in loads.forces:
         F = np.asarray(f.F, float)
         F = F if F.ndim == 1 else F[i]
-        out.append(("given", f"F_{f.name}", f.link, f.point, F.astype(float)))
+        out.append(("given", _called("F", f), f.link, f.point, F.astype(float)))
     g = np.asarray(loads.gravity, float)
     for name, m in loads.masses.items():
         if m.mass and m.centroid is not None and np.any(g != 0):
@@ -527,7 +538,8 @@ def zhukovsky_lever(mech: Mechanism, kin: Kinematics, fa: ForceAnalysis, loads: 
     couples = []
     for c in loads.couples:
         M = np.asarray(c.M, float)
-        couples.append(LeverCouple(c.name, c.link, float(M if M.ndim == 0 else M[i]), om[c.link]))
+        couples.append(LeverCouple(_called("M", c) if getattr(c, "label", "") else c.name, c.link,
+                                   float(M if M.ndim == 0 else M[i]), om[c.link]))
     for name, il in fa.inertia.items():
         if il.couple[i] != 0:
             couples.append(LeverCouple(f"M_Φ{name}", name, float(il.couple[i]), om[name]))

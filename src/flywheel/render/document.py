@@ -563,7 +563,7 @@ def _structure(b: _Builder, case, t: dict, lang: str) -> None:
     for d in case.dyads:
         links = ((d.rod, d.slider) if isinstance(d, RRPSpec) else (d.link_from, d.link_to)
                  if isinstance(d, RRRSpec) else (d.rocker, d.slider) if isinstance(d, RPRSpec) else ())
-        groups.append(t["group"].format(kind=d.kind, links=", ".join(links)))
+        groups.append(t["group"].format(kind=nm.dyad_kind(d.kind, lang), links=", ".join(links)))
     b.add(Bullets(tuple(groups)))
     n, p5, p4 = 1 + 2 * len(case.dyads), 1 + 3 * len(case.dyads), 0
     b.add(Paragraph(t["chebyshev"].format(n=n, p5=p5, p4=p4)))

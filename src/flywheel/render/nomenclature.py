@@ -621,6 +621,17 @@ LOAD_KINDS = {"gas": ("gas {x}", "газ {x}"), "gravity": ("gravity, link {x}",
               "force": ("force {x}", "сила {x}"), "couple": ("couple {x}", "пара сил {x}"),
               "moment": ("moment {x}", "момент {x}"), "spring": ("spring {x}", "пружина {x}")}
 
+# the kinds of Assur groups of class II by their pairs: R revolute, P prismatic; in Russian
+# В (вращательная) and П (поступательная), as Артоболевский, «Теория механизмов и машин», ч. 2
+DYAD_KINDS = {"RRR": ("RRR", "ВВВ"), "RRP": ("RRP", "ВВП"), "RPR": ("RPR", "ВПВ")}
+
+
+def dyad_kind(kind: str, lang: str = "en") -> str:
+    """An Assur group's kind in ``lang``: "RRP" → «ВВП» in Russian; a kind not listed as it
+    is."""
+    return DYAD_KINDS[kind][lang == "ru"] if kind in DYAD_KINDS else kind
+
+
 # the sliders' dead centres in the standard positions' labels ("90° = 5 outer d.c."), as
 # dynamics.grid.standard_positions writes them in English
 DEAD_CENTRES = {"outer": ("outer", "внешняя"), "inner": ("inner", "внутренняя")}

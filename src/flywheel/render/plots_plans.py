@@ -20,6 +20,7 @@ import re
 
 import numpy as np
 
+from flywheel.io.text import in_language
 from flywheel.render import nomenclature as nm
 from flywheel.render.catalogue import words
 from flywheel.render.figure import A4_W, DPI
@@ -32,7 +33,7 @@ _TEXT = words("plots_plans", {
     "forces": "{p} at φ = {a:g}°",
     "lever": "{p} at φ = {a:g}° (the velocity plan turned 90° clockwise)",
     "positions": "{p} (план положений), {n} positions every 30°",
-    "group": "group {g} ({k}: links {l})",
+    "group": "group of links {l} ({k})",
     "crank": "crank {l} and the frame",
     "pole_v": "pole p",
     "pole_a": "pole π",
@@ -140,8 +141,9 @@ _ON_PLAN = {"normal": "n", "tangential": "τ", "coriolis": "k", "sliding": "r"}
 
 def _force_label(label: str, lang: str) -> str:
     """A force's name in plain text: "G_2" → G₂, "Φ_3" → Φ₃, "R_12^τ" → Rτ₁₂, "R_12^n" →
-    Rⁿ₁₂, "M_Φ2" → MΦ₂, "F_HP" → F(HP), "P_y" → Pу in Russian."""
-    base, _, sup = label.partition("^")
+    Rⁿ₁₂, "M_Φ2" → MΦ₂, "F_HP" → F(HP), "P_y" → Pу in Russian; a load's label in two
+    languages (io.text.Text, dynamics/plans.py) in ``lang``: «F_ВД» → F(ВД)."""
+    base, _, sup = in_language(label, lang).partition("^")
     sym, _, sub = base.partition("_")
     if sym == "P" and sub == "y":
         return "Pу" if lang == "ru" else "Py"
@@ -587,7 +589,7 @@ def figure_force_polygons(results, ps, lang: str = "en"):
                              color=_COLOURS.get(v.kind, "k") if v not in pg.chords else "0.35",
                              zorder=6)
             what = (_t(lang, "crank", l=pg.links[0]) if pg.kind == "crank"
-                    else _t(lang, "group", g=pg.group, k=pg.kind, l=", ".join(pg.links)))
+                    else _t(lang, "group", k=nm.dyad_kind(pg.kind, lang), l=", ".join(pg.links)))
             scale = _scale_text("mu_F", mu, lang)
             closes = _t(lang, "closes", c=_clean(pg.closure, pg.longest))   # round-off: 0
             ax.set_title(f"{what}\n{scale}\n{closes}", fontsize=8.5,

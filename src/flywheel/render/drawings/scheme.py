@@ -20,14 +20,15 @@ GOST_SCALES = ((10, 1), (5, 1), (4, 1), (2.5, 1), (2, 1), (1, 1), (1, 2), (1, 2.
 HINGE_R = 1.5          # a hinge's circle [mm]
 
 
-def gost_scale(span_m: float, room_mm: float) -> tuple[float, str]:
+def gost_scale(span_m: float, room_mm: float, lang: str = "en") -> tuple[float, str]:
     """(paper mm per real mm, «1:5») — the largest ГОСТ 2.302 scale that draws ``span_m`` [m]
-    within ``room_mm`` [mm]."""
-    for paper, real in GOST_SCALES:
-        if span_m * 1000.0 * paper / real <= room_mm:
-            return paper / real, f"{paper:g}:{real:g}"
-    paper, real = GOST_SCALES[-1]
-    return paper / real, f"{paper:g}:{real:g}"
+    within ``room_mm`` [mm]; its numbers in ``lang`` («1:2,5» in Russian, as ГОСТ 2.302 writes
+    it)."""
+    from flywheel.render.drawings.diagram import num
+
+    paper, real = next(((p, r) for p, r in GOST_SCALES if span_m * 1000.0 * p / r <= room_mm),
+                       GOST_SCALES[-1])
+    return paper / real, f"{num(paper, lang)}:{num(real, lang)}"
 
 
 def _pivot(v: View, c) -> None:
@@ -46,7 +47,7 @@ def scheme_view(results, i: int, room_mm: float, lang: str, *, positions: bool,
     ``view.scales``: "k" paper/real, "label" «1:5», "mu_l" m/mm)."""
     d = results.drawing
     P = results.kinematics.points
-    k, label = gost_scale(max(d.span, 1e-9), room_mm)
+    k, label = gost_scale(max(d.span, 1e-9), room_mm, lang)
     m2mm = 1000.0 * k
     xy = lambda r: (float(r[0]) * m2mm, float(r[1]) * m2mm)     # noqa: E731
     v = View(name)

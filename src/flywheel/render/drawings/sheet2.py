@@ -11,6 +11,7 @@ import math
 
 import numpy as np
 
+from flywheel.io.text import in_language
 from flywheel.render import nomenclature as nm
 from flywheel.render.catalogue import words
 from flywheel.render.drawings.diagram import mu_text, num
@@ -33,7 +34,6 @@ T = words("drawings2", {
     "point": "Point",
     "magnitude": "R, N",
     "angle": "Angle to x, °",
-    "kind": {"RRR": "RRR", "RRP": "RRP", "RPR": "RPR"},
     "hodograph": "Hodograph of the load on the crank pin over the cycle",
     "hodograph_linkage": "Hodograph of the load on the crank pin over the cycle",
 })
@@ -51,8 +51,9 @@ def _image(label: str) -> str:
 
 def force_label(label: str, lang: str) -> str:
     """A force's name in the sheet's markup: "G_2", "Φ_3", "R_12^τ" → "Rτ_12", "P_y" → "P_у"
-    (Russian), "R_1,r4^τ" → "Rτ_{1,r4}" (the pair whole in the subscript)."""
-    base, _, sup = label.partition("^")
+    (Russian), "R_1,r4^τ" → "Rτ_{1,r4}" (the pair whole in the subscript); a load's label in
+    two languages (io.text.Text, dynamics/plans.py) in ``lang``: «F_ВД»."""
+    base, _, sup = in_language(label, lang).partition("^")
     sym, _, sub = base.partition("_")
     if sym == "P" and sub == "y" and lang == "ru":
         sub = "у"
@@ -119,7 +120,7 @@ def _group_view(results, i: int, poly, room: float, lang: str) -> View:
     P = results.kinematics.points
     pts_all = [p for link, pts in _members(results, poly.links) for p in pts]
     span = np.ptp([P[p].r[i] for p in pts_all], axis=0).max() if pts_all else 0.1
-    k, label = gost_scale(max(float(span), 1e-6), room)
+    k, label = gost_scale(max(float(span), 1e-6), room, lang)
     m2mm = 1000.0 * k
     xy = lambda r: np.array([float(r[0]) * m2mm, float(r[1]) * m2mm])    # noqa: E731
     v = View(f"group {poly.group}")
@@ -152,7 +153,7 @@ def _group_view(results, i: int, poly, room: float, lang: str) -> View:
         _beyond(v, placer, head, d, text)
     x0, _, _, y1 = v.box()
     title = (t["crank"].format(l=", ".join(poly.links)) if poly.kind == "crank" else
-             t["group"].format(l="–".join(poly.links), k=t["kind"].get(poly.kind, poly.kind)))
+             t["group"].format(l="–".join(poly.links), k=nm.dyad_kind(poly.kind, lang)))
     v.text(x0, y1 + 3.0, f"{title}, {label}", 5.0)
     return v
 
