@@ -183,6 +183,29 @@ def test_the_room_is_shrunk_where_that_saves_a_sheet():
     assert len(pages) == 2 and views[0].size[0] == pytest.approx((x1 - x0) * 0.9)
 
 
+def test_a_last_sheet_of_its_own_has_its_views_grown():
+    """fitted: views that take two sheets at any factor keep the first sheet's as they are,
+    and the second sheet's views, alone on it, are drawn at the largest factor of GROW that
+    keeps them to one sheet (the packer's own count decides)."""
+    from flywheel.render.drawings import GROW, fitted
+    from flywheel.render.drawings.sheet import ROOM
+
+    x0, y0, x1, y1 = field_of("A3")
+    W, H = x1 - x0, y1 - y0
+
+    def build(room):
+        f = room["plot_h"] / ROOM["A3"]["plot_h"]
+        return [_box_view("a", 0.9 * W * f, 0.75 * H * f), _box_view("b", 0.5 * W * f, 0.5 * H * f)]
+
+    assert len(pack(build({"plot_h": ROOM["A3"]["plot_h"] * 0.8}), "A3")[0]) == 2
+    fits = [f for f in GROW if len(pack(build({"plot_h": ROOM["A3"]["plot_h"] * f})[1:],
+                                        "A3")[0]) == 1]
+    views, pages, left_out = fitted(build, "A3")
+    assert len(pages) == 2 and not left_out and fits
+    assert pages[0][0].size == pytest.approx((0.9 * W, 0.75 * H))         # as it was
+    assert pages[1][0].size == pytest.approx((0.5 * W * max(fits), 0.5 * H * max(fits)))
+
+
 @pytest.mark.parametrize("case", ["compressor", "shaper"])
 def test_fitted_sheets_are_never_more_and_their_lettering_never_smaller(case):
     """Against sheet.ROOM as it is: at every format no more sheets and no view left out, the

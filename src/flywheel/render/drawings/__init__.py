@@ -42,13 +42,29 @@ SHRINK = (0.9, 0.8)
 GROW = (1.15, 1.3, 1.45, 1.6)
 
 
+def _largest(factors, fits):
+    """``fits(f)`` of the largest of ``factors`` it is not None for, bisected (it is None above
+    some factor and not below it: a drawing that fits fits smaller); None if none fits."""
+    order, found = sorted(factors), None
+    lo, hi = 0, len(order)
+    while lo < hi:
+        mid = (lo + hi) // 2
+        tried = fits(order[mid])
+        if tried is not None:
+            found, lo = tried, mid + 1
+        else:
+            hi = mid
+    return found
+
+
 def fitted(build, size: str):
     """The views ``build(room)`` makes and their pages (layout.pack) at the room that fills the
     sheets of ``size`` best: the fewest views left out, then the fewest sheets, then the
     largest drawings — sheet.ROOM times 1, or a factor of :data:`SHRINK` where the views take
-    more sheets than one, or of :data:`GROW` where they take one (the lettering never
-    changes). The views need no fewer sheets as they grow, so the factors are bisected: three
-    or four builds, not one per factor. Returns (views, pages, left_out)."""
+    more sheets than one, or of :data:`GROW` where they take one; where they take more sheets
+    whatever the room, the last sheet's views alone grown by :data:`GROW` while they keep to
+    it (the lettering never changes). The factors are bisected: three or four builds, not one
+    per factor. Returns (views, pages, left_out)."""
     from flywheel.render.drawings.layout import pack
     from flywheel.render.drawings.sheet import ROOM
 
@@ -59,24 +75,30 @@ def fitted(build, size: str):
     def need(a) -> tuple[int, int]:        # views left out, then sheets
         return len(a[2]), len(a[1])
 
+    def within(goal):                      # the attempt at a factor if it needs no more
+        return lambda f: a if need(a := attempt(f)) <= goal else None
+
     base = attempt(1.0)
-    if need(base) > (0, 1):                # more than one sheet: the largest factor that saves
-        least = attempt(SHRINK[-1])        # one, if the smallest does
-        if need(least) >= need(base):
-            return base
-        factors, best, goal = SHRINK[:-1], least, need(least)
-    else:                                  # one sheet: the largest factor that keeps it one
-        factors, best, goal = GROW, base, need(base)
-    lo, hi = 0, len(factors)               # bisect the ordered factors (larger: more room)
-    order = sorted(range(len(factors)), key=lambda k: factors[k])
-    while lo < hi:
-        mid = (lo + hi) // 2
-        tried = attempt(factors[order[mid]])
-        if need(tried) <= goal:
-            best, lo = tried, mid + 1
-        else:
-            hi = mid
-    return best
+    if need(base) <= (0, 1):               # one sheet: the largest factor that keeps it one
+        return _largest(GROW, within(need(base))) or base
+    least = attempt(SHRINK[-1])            # more: the largest factor that saves a sheet, if
+    if need(least) < need(base):           # the smallest does
+        return _largest(SHRINK[:-1], within(need(least))) or least
+    views, pages, left_out = base
+    last = [v.name for v in pages[-1]]
+    names = [v.name for v in views]
+    if left_out or len(set(names)) < len(names):
+        return base
+
+    def alone(factor: float):              # the last sheet's views, larger, on one sheet
+        grown = {v.name: v for v in build({k: v * factor for k, v in ROOM[size].items()})}
+        if set(grown) != set(names):
+            return None
+        placed, out = pack([grown[n] for n in last], size)
+        return placed[0] if len(placed) == 1 and not out else None
+
+    page = _largest(GROW, alone)
+    return base if page is None else (views, [*pages[:-1], page], left_out)
 
 
 def build_sheets(results, document, *, lang: str = "ru", size: str = "A1") -> list[Sheet]:
