@@ -199,9 +199,9 @@ def default_rows(document: dict, source: str, answers) -> tuple[Given, ...]:
 
 def element_names(document: dict, prefix: str = "") -> dict[str, str]:
     """The name of each table of an array of tables ("cylinders.0" → "HP", "crank.pins.0" →
-    "A2"): its ``label`` (a cylinder's: a string, or an io.text.Text of its ``{ ru, en }``),
-    else its ``name``, else its ``joint`` (a dyad is named by its joint); arrays inside a
-    table too (a crank's pins)."""
+    "A2"): a cylinder's ``label`` (a string, or an io.text.Text of its ``{ ru, en }``: «цилиндр
+    ВД»; a force's label is a subscript, F_пс, not a name), else its ``name``, else its
+    ``joint`` (a dyad is named by its joint); arrays inside a table too (a crank's pins)."""
     from flywheel.io.text import Text
 
     out = {}
@@ -209,7 +209,7 @@ def element_names(document: dict, prefix: str = "") -> dict[str, str]:
         if isinstance(value, list):
             for i, entry in enumerate(value):
                 if isinstance(entry, dict):
-                    label = entry.get("label")
+                    label = entry.get("label") if key == "cylinders" else None
                     if isinstance(label, dict) and isinstance(label.get("en"), str) and \
                             isinstance(label.get("ru"), str) and label["en"] and label["ru"]:
                         label = Text(label["en"], label["ru"])
