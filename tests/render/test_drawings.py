@@ -569,7 +569,7 @@ def test_curve_names_are_set_off_the_curves_and_the_other_lettering():
                 x_unit="°", x_label="φ, °", y_symbol="v", y_unit="м/рад", y_label="v_q, м/рад",
                 lang="ru", lines=[((0.0, 0.05), (360.0, 0.05), "dashdot", "v_ср")],
                 marks=[(180.0, 0.0, "k")])
-    assert len(v.labels) == 7
+    assert len(v.labels) == 8          # the abscissa's name, 5 curves', the line's, the mark's
     points = []
     for it in v.items:
         if isinstance(it, Polyline):
@@ -763,3 +763,25 @@ def test_the_letters_osifont_lacks_are_made_of_its_own():
     xs = [p[0] for k in e[:-1] for _, ps in k for p in ps]
     bx = [p[0] for _, ps in bar for p in ps]
     assert min(xs) < min(bx) < max(bx) < max(xs)                          # inside the letter
+
+
+def test_the_abscissas_name_is_set_off_a_curve_running_to_its_end():
+    """The energy–mass diagram's curve runs along its abscissa to the arrow (its J_II is
+    largest where ΔT is near 0): «J_II, кг·м²» above the arrow lay on it (the compressor at
+    A3). The name goes where no curve passes under it — past the tip here."""
+    import numpy as np
+
+    from flywheel.render.drawings.diagram import diagram
+    from flywheel.render.drawings.model import Polyline
+
+    J = np.linspace(0.0, 0.03, 200)
+    dT = 800.0 * (1.0 - J / 0.03) + 20.0 * np.sin(40 * J / 0.03)     # falls to ~0 at J's end
+    v = diagram("wittenbauer", "Диаграмма энергомасс", J, [(dT, "", "main")], x_mu=0.001,
+                x_symbol="J", x_unit="кг·м²", x_label="J_II, кг·м²", y_symbol="T",
+                y_unit="Дж", y_label="ΔT, Дж", lang="ru", y_mu=20.0)
+    (box,) = v.labels
+    pts = np.concatenate([np.asarray(it.points) for it in v.items if isinstance(it, Polyline)
+                          and len(it.points) > 2])
+    inside = ((pts[:, 0] > box[0]) & (pts[:, 0] < box[2]) & (pts[:, 1] > box[1])
+              & (pts[:, 1] < box[3]))
+    assert not inside.any(), box

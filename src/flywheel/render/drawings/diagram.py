@@ -114,7 +114,6 @@ def diagram(name: str, title: str, x, curves, *, x_mu: float, x_symbol: str, x_u
     # axes: the abscissa at zero, the ordinate at x = x_lo, both with arrows
     v.arrow((xa, 0.0), (xb + 10.0, 0.0), line="thin")
     v.arrow((xa, ya - (3.0 if lo < 0 else 0.0)), (xa, yb + 10.0), line="thin")
-    v.rich(xb + 10.0, 2.0, x_label, 3.5, halign="right", valign="bottom")
     v.rich(xa + 2.0, yb + 8.0, y_label, 3.5, halign="left", valign="top")
     # the abscissa's values under the diagram: clear of the curves below the axis
     below = min(ya, min(float(np.min(Y(y))) for y in ys)) - TICK - 1.0
@@ -147,6 +146,11 @@ def diagram(name: str, title: str, x, curves, *, x_mu: float, x_symbol: str, x_u
     # end, a mark's beside it, then each curve's along it, off the lines, the ticks' values
     # and the names placed before
     placer = v.placer()
+    # the abscissa's name at its arrow: above it, else below it or past the tip, off the
+    # curves (the energy–mass diagram's curve runs along its abscissa to the end)
+    v.label(placer, (xb + 10.0, 0.0), x_label, 3.5,
+            [(0.0, 1.6, 1.0, 0.0), (0.0, -1.6, 1.0, 1.0), (1.5, 0.0, 0.0, 0.5)], rings=None,
+            margin=0.4)
     for b, label in ends:
         if label:
             v.label(placer, b, label, 3.5, [(1.5, 0.0, 0.0, 0.5), *around(1.5)])
