@@ -130,8 +130,13 @@ def test_the_task_sheet_names_the_cylinders_by_their_labels():
     assert field_label("cylinders.0.bore", "ru", names) == "диаметр цилиндра ВД d"
     assert field_label("cylinders.1.bore", "en", names) == "bore of cylinder LP d"
     assert element_names({"cylinders": [{"name": "A"}]}) == {"cylinders.0": "A"}   # no label
-    # a force's label is its F's subscript (F_пс), not a name for «сила …»
-    assert element_names({"forces": [{"name": "cutting", "label": "пс"}]}) == {"forces.0": "cutting"}
+    # a force's label is its F's subscript: «сила F_пс», not «сила пс»; a couple's its M's
+    names = element_names({"forces": [{"name": "cutting", "label": {"ru": "пс", "en": "c"}}],
+                           "couples": [{"name": "resistance", "label": "с"}]})
+    assert field_label("forces.0.magnitude", "ru", names) == "сила F_пс: модуль F"
+    assert field_label("forces.0.magnitude", "en", names) == "force F_c: magnitude F"
+    assert field_label("couples.0.moment", "ru", names) == "пара сил M_с: момент M"
+    assert element_names({"forces": [{"name": "cutting"}]}) == {"forces.0": "cutting"}
 
 
 def test_a_warning_names_the_cylinder_by_its_label_in_each_language():

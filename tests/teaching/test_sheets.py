@@ -382,11 +382,11 @@ def test_text_data_are_on_the_sheet_in_words(tmp_path):
                   "--sheets", "--sheets-format", "html", "--lang", "ru").exit_code == 0
     rows = rows_of(sheet_of(shaper, "01"))
     assert rows["материал маховика"] == ["чугун", "–"]
-    assert rows["сила cutting: действует при движении ползуна"] == ["к этой мёртвой точке", "–"]
-    assert rows["сила cutting: мёртвая точка начала отсчёта перемещения s"][0] == \
+    assert rows["сила F_пс: действует при движении ползуна"] == ["к этой мёртвой точке", "–"]
+    assert rows["сила F_пс: мёртвая точка начала отсчёта перемещения s"][0] == \
         "внешняя (дальняя от оси кривошипа)"
-    # a force's magnitude is worded as its other rows are (its name is the case's)
-    assert [k for k in rows if k.startswith("сила cutting")][0] == "сила cutting: модуль F"
+    # a force's magnitude is worded as its other rows are (its label the subscript of F)
+    assert [k for k in rows if k.startswith("сила F_пс")][0] == "сила F_пс: модуль F"
 
 
 def test_flywheel_J_is_worded_by_the_case_kind(tmp_path):

@@ -197,11 +197,16 @@ def default_rows(document: dict, source: str, answers) -> tuple[Given, ...]:
                  if k not in given)
 
 
+#: the symbol whose subscript a load's ``label`` is, by its array: «сила F_пс», «пара сил M_с»
+_LABELLED = {"forces": "F_", "springs": "F_", "couples": "M_", "cylinders": ""}
+
+
 def element_names(document: dict, prefix: str = "") -> dict[str, str]:
     """The name of each table of an array of tables ("cylinders.0" → "HP", "crank.pins.0" →
-    "A2"): a cylinder's ``label`` (a string, or an io.text.Text of its ``{ ru, en }``: «цилиндр
-    ВД»; a force's label is a subscript, F_пс, not a name), else its ``name``, else its
-    ``joint`` (a dyad is named by its joint); arrays inside a table too (a crank's pins)."""
+    "A2"): a load's ``label`` (a string, or an io.text.Text of its ``{ ru, en }``) — a
+    cylinder's as it is («цилиндр ВД»), a force's or spring's as its F's subscript («сила
+    F_пс»), a couple's as its M's — else its ``name``, else its ``joint`` (a dyad is named by
+    its joint); arrays inside a table too (a crank's pins)."""
     from flywheel.io.text import Text
 
     out = {}
@@ -209,10 +214,13 @@ def element_names(document: dict, prefix: str = "") -> dict[str, str]:
         if isinstance(value, list):
             for i, entry in enumerate(value):
                 if isinstance(entry, dict):
-                    label = entry.get("label") if key == "cylinders" else None
+                    label = entry.get("label") if key in _LABELLED else None
+                    symbol = _LABELLED.get(key, "")
                     if isinstance(label, dict) and isinstance(label.get("en"), str) and \
                             isinstance(label.get("ru"), str) and label["en"] and label["ru"]:
-                        label = Text(label["en"], label["ru"])
+                        label = Text(symbol + label["en"], symbol + label["ru"])
+                    elif isinstance(label, str) and label:
+                        label = symbol + label
                     name = label if isinstance(label, str) and label else \
                         entry.get("name", entry.get("joint"))
                     if isinstance(name, str) and name:
