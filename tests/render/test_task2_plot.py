@@ -44,3 +44,23 @@ def test_the_phi_axis_spans_the_cycle(monkeypatch, name, cycle):
     _, fig = _figure(monkeypatch, name)
     ticks = fig.axes[-1].get_xticks()
     assert ticks[0] == 0 and ticks[-1] == cycle
+
+
+def test_omega_max_and_min_read_apart_in_russian(monkeypatch):
+    """The textbook task's δ ≈ 1.1·10⁻⁴: the Russian policy's four digits wrote both ω_max and
+    ω_min «200 рад/с». They are written to the decimals that tell them apart, and one more
+    (numbers.apart): «200,011» and «199,989», as the task's table gives them (200,011044 and
+    199,988955 rad/s)."""
+    from matplotlib.figure import Figure
+
+    from flywheel.render.numbers import typeset
+    from flywheel.render.task2 import plot
+
+    caught = []
+    monkeypatch.setattr(Figure, "savefig", lambda self, *a, **k: caught.append(self))
+    r = solve_case(load_task2_case(CASES / "task2_seed_triangle.toml"))
+    assert round(r.omega_max, 3) == 200.011 and round(r.omega_min, 3) == 199.989
+    typeset("ru", plot, r, "x.png", lang="ru")
+    labels = [line.get_label() for line in caught[0].axes[2].lines
+              if line.get_marker() in ("^", "v")]
+    assert any("200,011 рад/с" in x for x in labels) and any("199,989 рад/с" in x for x in labels), labels

@@ -209,6 +209,23 @@ def fmt(x, sig: int = 6, *, zero: float | None = 1e-12, spec: str | None = None,
     return format(x, spec or f".{sig}g")
 
 
+def apart(a: float, b: float, sig: int = RESULT_SIG, most: int = 9) -> str | None:
+    """A format spec that writes ``a`` and ``b`` differently where ``sig`` significant digits
+    (the Russian policy's cap) write them alike: ".{d}f" with one decimal more than the fewest
+    that tell them apart (ω_max = 200,011 against ω_min = 199,989 rad/s where four digits write
+    200 and 200), at most ``most``; None where ``sig`` digits already do, or none can.
+
+    >>> apart(200.011044, 199.988955), apart(64.97, 61.76)
+    ('.3f', None)
+    """
+    if a == b or format(a, f".{sig}g") != format(b, f".{sig}g"):
+        return None
+    for d in range(most):
+        if format(a, f".{d}f") != format(b, f".{d}f"):
+            return f".{d + 1}f"
+    return None
+
+
 def fmt_rows(data, sig: int = 12) -> list[str]:
     """Each row of a 2-D array as its numbers joined by commas, each as :func:`fmt` writes it
     with ``zero=0.0, nonfinite="show"`` (−0 → 0, nan shown): the CSV files' numbers, the same

@@ -9,7 +9,7 @@ from __future__ import annotations
 import math
 
 from flywheel.render import nomenclature as nm
-from flywheel.render.numbers import fmt as _number
+from flywheel.render.numbers import apart, fmt as _number
 from flywheel.units import PA_PER_MPA, RPM_PER_RAD_S
 
 
@@ -224,11 +224,13 @@ def plot(r, path, title: str = "", lang: str = "en") -> None:
         ax = axes[2]
         ax.axhline(r.omega_mean, color="grey", linestyle="--", linewidth=0.8,
                    label=L("t2_plot_omega_mean"))
+        # ω_max and ω_min told apart: a small δ writes both 200 to four digits (numbers.apart)
+        spec = apart(r.omega_max, r.omega_min) or ".6g"
         for value, phi, key, marker in ((r.omega_max, r.phi_omega_max, "t2_plot_omega_max", "^"),
                                         (r.omega_min, r.phi_omega_min, "t2_plot_omega_min", "v")):
             if phi is not None and not math.isnan(phi):      # an area diagram may give no angle
                 ax.plot([math.degrees(phi)], [value], marker, color="tab:red",
-                        label=L(key, value=_number(value, spec=".6g", zero=None, nonfinite="show"),
+                        label=L(key, value=_number(value, spec=spec, zero=None, nonfinite="show"),
                                 deg=_number(math.degrees(phi), spec=".4g", zero=None,
                                             nonfinite="show")))
         ax.set_ylabel(L("t2_plot_omega_axis"))
