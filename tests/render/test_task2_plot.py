@@ -64,3 +64,4 @@ def test_omega_max_and_min_read_apart_in_russian(monkeypatch):
     labels = [line.get_label() for line in caught[0].axes[2].lines
               if line.get_marker() in ("^", "v")]
     assert any("200,011 рад/с" in x for x in labels) and any("199,989 рад/с" in x for x in labels), labels
+

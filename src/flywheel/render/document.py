@@ -17,7 +17,7 @@ from flywheel.render.catalogue import words
 from flywheel.render.blocks import (  # noqa: F401  (the model, re-exported)
     Bullets, Document, Figure, Formula, Heading, Paragraph, Table)
 from flywheel.io.text import in_language
-from flywheel.render.numbers import fmt as _number
+from flywheel.render.numbers import apart, fmt as _number
 from flywheel.units import PA_PER_MPA
 
 
@@ -446,6 +446,10 @@ def _sizing_lines(s, t: dict, lang: str) -> list[str]:
 
     d, r = s.flywheel_disk, s.flywheel_rim
     uI = u("J_required")
+    # ω_max and ω_min told apart: a small δ writes both alike to four digits (numbers.apart)
+    spec = apart(s.omega_max, s.omega_min)
+    w_max, w_min = (g(w, 6) if spec is None else _number(w, spec=spec, zero=1e-13)
+                    for w in (s.omega_max, s.omega_min))
     fw = t["flywheel"].format(JM=sym("J_flywheel"), J=sym("J_required"), J1=sym("J_first_group"),
                               v=g(s.J_flywheel, 6), uI=uI)
     if s.flywheel_speed_ratio != 1:
@@ -467,9 +471,9 @@ def _sizing_lines(s, t: dict, lang: str) -> list[str]:
         *([t["rim_design"].format(share=g(r.share, 4), sigma=g(r.stress / PA_PER_MPA, 4),
                                   dims=dims(r, ("D_mean", "thickness", "width", "mass", "rim_speed"),
                                             (4, 4, 4, 5, 4)))] if s.rim_designed else []),
-        t["omega_extremes"].format(wmax=sym("omega_max"), vmax=g(s.omega_max, 6),
+        t["omega_extremes"].format(wmax=sym("omega_max"), vmax=w_max,
                                    amax=g(s.phi_omega_max_deg, 6), wmin=sym("omega_min"),
-                                   vmin=g(s.omega_min, 6), amin=g(s.phi_omega_min_deg, 6),
+                                   vmin=w_min, amin=g(s.phi_omega_min_deg, 6),
                                    uw=u("omega_max"), T=nm.name("cycle_time", lang),
                                    v=g(s.cycle_time, 6), uT=u("cycle_time")),
     ]

@@ -26,7 +26,7 @@ from flywheel.render import nomenclature as nm
 from flywheel.render.catalogue import words
 from flywheel.render.plots_scheme import (  # noqa: F401  (public here: animate, sheets)
     draw_scheme, draw_scheme_at, draw_scheme_fixed, scheme_names)
-from flywheel.render.numbers import typeset_params
+from flywheel.render.numbers import apart, fmt, typeset_params
 from flywheel.render import plot_start
 from flywheel.render.plot_start import start_held, worker_signals
 from flywheel.units import PA_PER_MPA
@@ -63,6 +63,7 @@ _TEXT = words("plots", {
     "works": "works and kinetic energies",
     "W_axis": "work, energy [{u}]",
     "extreme": "{s} = {v:.5g} {u} at φ = {a:.1f}°",
+    "extreme_text": "{s} = {v} {u} at φ = {a:.1f}°",
     "omega": r"angular velocity of the crank $\omega(\varphi)$",
     "w": r"$\omega(\varphi)$ with {J} by Merzalov, δ = {d:.4g}",
     "w_exact": r"$\omega(\varphi)$ with the exact {J}, δ = {d:.4g}",
@@ -348,9 +349,12 @@ def figure_omega(results, lang: str = "en"):
             ax.plot(deg, results.columns["omega_exact"].values, color="C0", linestyle="--",
                     label=_t(lang, "w_exact", J=nm.tex("J_required_exact", lang),
                              d=sc.delta_achieved_exact))
+        # ω_max and ω_min told apart: a small δ writes both alike to four digits (numbers.apart)
+        spec = apart(sc.omega_max, sc.omega_min) or ".5g"
         for key, color in (("omega_max", "C3"), ("omega_min", "C2")):
             ax.axhline(getattr(sc, key), color=color, linestyle=":",
-                       label=_t(lang, "extreme", s=nm.tex(key, lang), v=getattr(sc, key),
+                       label=_t(lang, "extreme_text", s=nm.tex(key, lang),
+                                v=fmt(getattr(sc, key), spec=spec, zero=None),
                                 u=nm.unit_of(key, lang), a=getattr(sc, f"phi_{key}_deg")))
         ax.axhline(sc.omega_mean, color="0.4", linestyle="-.",
                    label=_t(lang, "value", s=nm.tex("omega_mean", lang), v=sc.omega_mean,
