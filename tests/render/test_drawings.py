@@ -785,3 +785,24 @@ def test_the_abscissas_name_is_set_off_a_curve_running_to_its_end():
     inside = ((pts[:, 0] > box[0]) & (pts[:, 0] < box[2]) & (pts[:, 1] > box[1])
               & (pts[:, 1] < box[3]))
     assert not inside.any(), box
+
+
+def test_a_title_block_states_its_own_sheets_scale():
+    """The title block's «Масштаб» is its own sheet's: the scheme's on a sheet with the
+    scheme, a group's where a group drawn to a ГОСТ scale leads its sheet, blank on a sheet of
+    diagrams, plans and the lever only — it had repeated the scheme's scale of the sheet
+    before (compressor at A3: sheet 1-2 and 1-3 hold φ diagrams only)."""
+    from flywheel.cases.run import load_case
+    from flywheel.dynamics.pipeline import analyze
+    from flywheel.render.drawings import build_sheets
+    from flywheel.render.drawings.model import Text
+
+    c = load_case(ROOT / "cases" / "compressor.toml")
+    res = analyze(c, n_points=720)
+    for s in build_sheets(res, c.document, lang="ru", size="A3"):
+        ratios = [it.text for it in s.views[0].items
+                  if isinstance(it, Text) and re.fullmatch(r"\d+(,\d+)?:\d+(,\d+)?", it.text)]
+        own = [v.scales["label"] for v in s.views[1:] if "label" in v.scales]
+        assert ratios == own[:1], (s.stem, ratios, own)
+    assert any(not [v for v in s.views[1:] if "label" in v.scales]
+               for s in build_sheets(res, c.document, lang="ru", size="A3"))

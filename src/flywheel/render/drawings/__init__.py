@@ -103,7 +103,8 @@ def fitted(build, size: str):
 
 def build_sheets(results, document, *, lang: str = "ru", size: str = "A1") -> list[Sheet]:
     """The sheets of a run: sheet 1 (and sheet 2 for a linkage case with its plans), each at
-    the room that fills its sheets best (:func:`fitted`)."""
+    the room that fills its sheets best (:func:`fitted`); a title block's scale is its own
+    sheet's (the first view drawn to a ГОСТ scale), blank on a sheet with none."""
     from flywheel.render.drawings import sheet1
     from flywheel.render.drawings.sheet import frame_view, words_of
 
@@ -115,8 +116,10 @@ def build_sheets(results, document, *, lang: str = "ru", size: str = "A1") -> li
                       fitted(lambda room: sheet2.views(results, lang, room), size)))
     packed = []
     for stem, key, (views, pages, left_out) in parts:
-        scale = next((v.scales["label"] for v in views if "label" in v.scales), "")
         for k, page in enumerate(pages):
+            # the title block's scale: its sheet's first view drawn to a ГОСТ scale (the
+            # scheme, a group); none on a sheet of diagrams and plans (their μ by each view)
+            scale = next((v.scales["label"] for v in page if "label" in v.scales), "")
             packed.append((stem if k == 0 else f"{stem}-{k + 1}", key, page, scale,
                            tuple(left_out)))
     count = len(packed)
