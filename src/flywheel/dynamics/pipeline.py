@@ -199,10 +199,8 @@ def linkage_loads(case, mech, dcs: dict, kin) -> LoadsResult:
     titles = {L.LoadKey(kind, x.name): x.title for kind, given in (
         ("gas", case.cylinders), ("force", case.forces), ("couple", case.couples),
         ("spring", case.springs)) for x in given if x.title}
-    labels = {L.LoadKey("gas", cy.name): cy.label for cy in case.cylinders if cy.label}
     return LoadsResult(M_parts=M_parts, W_parts=W_parts, cylinders=tuple(cylinders),
-                       forces=forces, warnings=tuple(warnings), tensions=tensions, titles=titles,
-                       labels=labels)
+                       forces=forces, warnings=tuple(warnings), tensions=tensions, titles=titles)
 
 
 def linkage_reduction(case, kin) -> ReductionResult:

@@ -413,10 +413,10 @@ def _called(symbol: str, load) -> str:
     gives one, in both languages (an io.text.Text: "F_HP", «F_ВД»), else its name."""
     from flywheel.io.text import Text, in_language
 
-    label = getattr(load, "label", "")
-    if not label:
+    if not load.label:
         return f"{symbol}_{load.name}"
-    return Text(f"{symbol}_{in_language(label, 'en')}", f"{symbol}_{in_language(label, 'ru')}")
+    return Text(f"{symbol}_{in_language(load.label, 'en')}",
+                f"{symbol}_{in_language(load.label, 'ru')}")
 
 
 def _given_forces(kin: Kinematics, fa: ForceAnalysis, loads: Loads, i: int) -> list[tuple]:
@@ -538,7 +538,7 @@ def zhukovsky_lever(mech: Mechanism, kin: Kinematics, fa: ForceAnalysis, loads: 
     couples = []
     for c in loads.couples:
         M = np.asarray(c.M, float)
-        couples.append(LeverCouple(_called("M", c) if getattr(c, "label", "") else c.name, c.link,
+        couples.append(LeverCouple(_called("M", c) if c.label else c.name, c.link,
                                    float(M if M.ndim == 0 else M[i]), om[c.link]))
     for name, il in fa.inertia.items():
         if il.couple[i] != 0:

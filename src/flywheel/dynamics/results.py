@@ -76,8 +76,12 @@ class LoadsResult:
     tensions: dict[str, np.ndarray] = field(default_factory=dict)  # linear spring → T(φ) [N]
     titles: dict[LoadKey, str] = field(default_factory=dict)  # a load's own title (io.text.Text
     #                                  in two languages), where the case gives one
-    labels: dict[LoadKey, str] = field(default_factory=dict)  # a cylinder's label (io.text.Text
-    #                                  or a string) for its gas load's name, where the case gives one
+
+    @property
+    def labels(self) -> dict[LoadKey, str]:
+        """Each labelled cylinder's gas load → its label (io.text.Text or a string), for the
+        load's name («газ ВД»)."""
+        return {LoadKey("gas", c.name): c.label for c in self.cylinders if c.label}
 
 
 @dataclass(frozen=True)

@@ -40,8 +40,9 @@ def message(text: str, lang: str = "en") -> str:
     russian = catalogue("ru").pgettext(code, english)
     if russian == english:                          # an English changed, not yet in the .po
         russian = entry(code, "ru")
-    params = {k: v.ru if isinstance(v, Text) else v for k, v in text.params.items()}  # a name
-    return lead + russian.format(**typeset_params(russian_params(code, params, message)))  # in two
+    # a parameter given in two languages (a cylinder's label) in its Russian
+    params = {k: v.ru if isinstance(v, Text) else v for k, v in text.params.items()}
+    return lead + russian.format(**typeset_params(russian_params(code, params, message)))
 
 
 def prefix(key: str, lang: str = "en") -> str:

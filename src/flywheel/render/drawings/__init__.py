@@ -68,8 +68,11 @@ def fitted(build, size: str):
     from flywheel.render.drawings.layout import pack
     from flywheel.render.drawings.sheet import ROOM
 
+    def views_at(factor: float):           # the views at sheet.ROOM × factor
+        return build({k: v * factor for k, v in ROOM[size].items()})
+
     def attempt(factor: float):
-        views = build({k: v * factor for k, v in ROOM[size].items()})
+        views = views_at(factor)
         return (views, *pack(views, size))
 
     def need(a) -> tuple[int, int]:        # views left out, then sheets
@@ -91,7 +94,7 @@ def fitted(build, size: str):
         return base
 
     def alone(factor: float):              # the last sheet's views, larger, on one sheet
-        grown = {v.name: v for v in build({k: v * factor for k, v in ROOM[size].items()})}
+        grown = {v.name: v for v in views_at(factor)}
         if set(grown) != set(names):
             return None
         placed, out = pack([grown[n] for n in last], size)

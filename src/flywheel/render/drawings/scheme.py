@@ -10,6 +10,7 @@ import math
 
 import numpy as np
 
+from flywheel.render.drawings.diagram import num
 from flywheel.render.drawings.model import View, indexed
 from flywheel.render.labels import around, toward
 
@@ -24,8 +25,6 @@ def gost_scale(span_m: float, room_mm: float, lang: str = "en") -> tuple[float, 
     """(paper mm per real mm, «1:5») — the largest ГОСТ 2.302 scale that draws ``span_m`` [m]
     within ``room_mm`` [mm]; its numbers in ``lang`` («1:2,5» in Russian, as ГОСТ 2.302 writes
     it)."""
-    from flywheel.render.drawings.diagram import num
-
     paper, real = next(((p, r) for p, r in GOST_SCALES if span_m * 1000.0 * p / r <= room_mm),
                        GOST_SCALES[-1])
     return paper / real, f"{num(paper, lang)}:{num(real, lang)}"
