@@ -806,3 +806,23 @@ def test_a_title_block_states_its_own_sheets_scale():
         assert ratios == own[:1], (s.stem, ratios, own)
     assert any(not [v for v in s.views[1:] if "label" in v.scales]
                for s in build_sheets(res, c.document, lang="ru", size="A3"))
+
+
+def test_the_dxf_does_not_follow_the_hash_seed(tmp_path, monkeypatch):
+    """ezdxf writes a CLASS entry per object type in use in the order of a set of names, which
+    follows PYTHONHASHSEED: the same sheet had other bytes in another process. The set's
+    order is taken here as given and as reversed; the files are the same."""
+    from ezdxf.entitydb import EntityDB
+
+    from flywheel.render.drawings.dxf import write_dxf
+
+    view = _box_view("box", 50, 40)
+    view.text(5.0, 5.0, "Лист", 3.5)
+    own = EntityDB.dxf_types_in_use
+    files = []
+    for k, order in enumerate((lambda names: names, lambda names: names[::-1])):
+        monkeypatch.setattr(EntityDB, "dxf_types_in_use",
+                            lambda self, order=order: dict.fromkeys(order(sorted(own(self)))))
+        files.append(tmp_path / f"{k}.dxf")
+        write_dxf(files[-1], FORMATS["A3"], [view])
+    assert files[0].read_bytes() == files[1].read_bytes()

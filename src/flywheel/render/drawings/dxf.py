@@ -3,7 +3,7 @@
 style named for the ГОСТ font (a CAD program draws it in its own: КОМПАС's and AutoCAD's «GOST
 type B»), sloped 15° (ГОСТ 2.304 type B). Polylines as LWPOLYLINE, arrow heads as solid
 HATCH, circles as CIRCLE, lettering as TEXT. Same sheet → same bytes: the header's dates,
-the document's and the entities' handles and GUIDs are fixed.
+the document's and the entities' handles and GUIDs are fixed, the CLASS entries sorted.
 """
 from __future__ import annotations
 
@@ -81,6 +81,11 @@ def _write(path: Path, size: tuple[float, float], views) -> None:
             for it in view.items:
                 members.append(_add(msp, it, align))
     _fix(doc)
+    # ezdxf registers the CLASS of each object type in use in the order of a set, which
+    # follows PYTHONHASHSEED (LAYOUT before ACDBPLACEHOLDER, or after): registered here
+    # first, sorted, a sheet's bytes are the same from one process to the next
+    for name in sorted(doc.entitydb.dxf_types_in_use()):
+        doc.classes.add_class(name)
     doc.saveas(path, encoding="utf-8")
 
 
