@@ -214,9 +214,10 @@ def inline4(keep=("1", "2", "3", "4"), order=None, **machine):
     """cases/engine_inline4.toml with only the cylinders ``keep`` (their rods, pistons, points)
     and the firing ``order`` (default: 1-3-4-2 restricted to them)."""
     d = read_toml(CASES / "engine_inline4.toml")
-    d["dyads"] = [x for x in d["dyads"] if x["joint"][1:] in keep]
-    d["points"] = {k: v for k, v in d["points"].items() if k[1:] in keep}
-    d["links"] = {k: v for k, v in d["links"].items() if k[1:] in keep}
+    d["dyads"] = [x for x in d["dyads"] if x["joint"][1:] in keep]      # pins B1 … B4
+    links = {x[k] for x in d["dyads"] for k in ("rod", "slider")}
+    d["points"] = {k: v for k, v in d["points"].items() if v["link"] in links}
+    d["links"] = {k: v for k, v in d["links"].items() if k in links}
     d["cylinders"] = [c for c in d["cylinders"] if c["name"] in keep]
     d["machine"]["firing_order"] = order or [c for c in ("1", "3", "4", "2") if c in keep]
     d["machine"].update(machine)
@@ -243,7 +244,8 @@ def test_inline_four_reciprocating_inertia_torque_closed_form():
     − (λ²/4) sin 4α] + O(λ³); over the four the first-order terms (sin φ, sin 3φ) cancel and the
     second-order ones add: M = m r² ω² (−2 sin 2φ − λ² sin 4φ) + O(λ³)."""
     d = inline4()
-    d["links"] = {k: v for k, v in d["links"].items() if k.startswith("p")}   # pistons only
+    pistons = {c["piston"] for c in d["cylinders"]}
+    d["links"] = {k: v for k, v in d["links"].items() if k in pistons}       # pistons only
     d["cylinders"], d["machine"]["gravity"] = [], [0.0, 0.0]
     d["machine"].pop("firing_order")
     d["machine"]["balance"] = "driving"       # no work to balance (a "resistance" would refuse it)

@@ -183,3 +183,33 @@ def test_the_plans_name_the_loads_by_their_labels(case, ru, en):
         if lang == "ru":
             assert "группа звеньев" in text and not any(k in text for k in ("RRP", "RPR", "RRR"))
             assert not any(w in text for w in en if w not in ru), text
+
+
+@pytest.mark.parametrize("case, want", [
+    ("engine_4stroke", {"F_3"}),                          # cylinder "1", its piston link 3
+    ("engine_inline4", {"F_3", "F_5", "F_7", "F_9"}),    # cylinders 1 … 4, pistons 3, 5, 7, 9
+])
+def test_an_unlabelled_cylinders_gas_force_is_named_by_its_piston(case, want):
+    """Without a label a gas force is F with its piston's link, as the piston's weight and
+    inertia force are (G₃, Φ₃): named by the cylinder, engine_inline4's cylinder 2 would have
+    put an F₂ on piston 5 of the group of links 4, 5."""
+    r = analyze(load_case(CASES / f"{case}.toml"), n_points=360)
+    for ps in r.plans:
+        given = {(str(v.label), v.rel) for pg in ps.polygons for v in pg.vectors
+                 if v.kind == "given"}
+        assert {label for label, _ in given} == want
+        assert all(label == f"F_{link}" for label, link in given)
+
+
+def test_sheet2_names_a_group_as_the_force_polygons_do(compressor):
+    """Sheet 2's group views and the figures' polygons list a group's links alike, «4, 5»
+    (the sheet had «4–5», which reads as a range once the links are numbers)."""
+    from flywheel.render.drawings import sheet2
+    from flywheel.render.drawings.model import Text as Lettering
+    from flywheel.render.drawings.sheet import ROOM
+
+    texts = [t.text for v in sheet2.views(compressor, "ru", ROOM["A1"]) for t in v.items
+             if isinstance(t, Lettering)]
+    groups = [x for x in texts if x.startswith("Группа звеньев")]
+    assert groups and all(x.startswith(("Группа звеньев 4, 5 (", "Группа звеньев 2, 3 ("))
+                          for x in groups), groups

@@ -102,7 +102,10 @@ def force_loads(case, mech, dcs: dict, kin, ld: LoadsResult, J_I: float):
     for cy, cr in zip(case.cylinders, ld.cylinders):
         d, u, _, head, far = slider_frame(mech, dcs, cy.piston, cy.head, f"cylinders {cy.name}: piston")
         F = cr.F * np.sign(far.x - head.x)
-        pf.append(forces.PointForce(cy.name, cy.piston, d.joint, F[:, None] * u, label=cy.label))
+        # named by the cylinder's label (F_ВД), else by its piston's link (F₃ on piston 3, as
+        # G₃ and Φ₃ are: its cylinder's name may be a number of another link, cylinder 2 on 5)
+        pf.append(forces.PointForce(cy.name, cy.piston, d.joint, F[:, None] * u,
+                                    label=cy.label or cy.piston))
     applied = A.applied_loads(case, mech, kin)
     for f in case.forces:
         if f.slider is None:

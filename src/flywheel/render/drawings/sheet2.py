@@ -153,7 +153,7 @@ def _group_view(results, i: int, poly, room: float, lang: str) -> View:
         _beyond(v, placer, head, d, text)
     x0, _, _, y1 = v.box()
     title = (t["crank"].format(l=", ".join(poly.links)) if poly.kind == "crank" else
-             t["group"].format(l="–".join(poly.links), k=nm.dyad_kind(poly.kind, lang)))
+             t["group"].format(l=", ".join(poly.links), k=nm.dyad_kind(poly.kind, lang)))
     v.text(x0, y1 + 3.0, f"{title}, {label}", 5.0)
     return v
 
