@@ -12,7 +12,7 @@ from pathlib import Path
 import pytest
 import tomli_w
 
-from chain_helpers import data_of, graded, key_of, make, runner, write_sheet
+from chain_helpers import data_of, graded, key_of, make, runner, textbook, write_sheet
 from flywheel.cli import app
 from flywheel.render.grading import MISTAKES
 from flywheel.teaching.mistakes import CATALOGUE
@@ -179,3 +179,35 @@ def test_the_catalogue_is_one_list_named_in_both_languages_and_documented():
     docs = DOCS.read_text(encoding="utf-8")
     for c in codes:
         assert f"`{c}`" in docs, c
+
+
+def test_a_mistake_upstream_must_agree_with_the_students_answers_through_it(compressor, tmp_path):
+    """A diameter is a fifth root of J: a wide range of wrong J lands near it. The D of a
+    student who took the cycle as 360 (degrees) for 2π — M·2π/360, then ΔT_нб, J_I, J_доп, D by
+    the textbook — is named so only while nothing the student answered through M says
+    otherwise: with the right driving moment, ΔT_нб and J_I beside it, it is a wrong D and no
+    more (the diagnosis had named the degrees there)."""
+    from flywheel.teaching.chain import Chain, Givens
+
+    key = key_of(compressor)
+    rows = []
+    for vid, ans in key["variants"].items():
+        chain = Chain(Givens.from_document(key["chain"]["givens"][vid]), key["answers"])
+        M_deg = ans["driving_moment"] * 2 * math.pi / 360
+        dT_deg = chain.recompute("delta_T_max", {"driving_moment": M_deg})[0][0]
+        D_deg = textbook(data_of(compressor, vid), dT_deg)["flywheel_disk.D"]
+        assert abs(D_deg / ans["flywheel_disk.D"] - 1) > 0.05
+        rows.append((f"{vid} all", vid, dict(ans, **{"flywheel_disk.D": D_deg})))
+        rows.append((f"{vid} D", vid, {"flywheel_disk.D": D_deg}))     # D alone
+    sheet = tmp_path / "s.csv"
+    with open(sheet, "w", newline="", encoding="utf-8") as f:
+        w = csv.writer(f)
+        w.writerow(["student", "variant", *key["answers"]])
+        w.writerows([name, vid, *(repr(ans[a]) if a in ans else "" for a in key["answers"])]
+                    for name, vid, ans in rows)
+    got = graded(compressor / "answers.json", sheet)
+    for vid in key["variants"]:
+        for who, want in ((f"{vid} all", None), (f"{vid} D", "degrees_for_radians")):
+            by = {a["answer"]: a for a in got[who]["answers"]}
+            assert by["flywheel_disk.D"]["verdict"] == "fail"
+            assert by["flywheel_disk.D"]["diagnosis"] == want, who

@@ -43,7 +43,7 @@ def explain(marking, given, mask: int, close) -> tuple[int, tuple[tuple[int, str
             if not repeats:
                 carried |= 1 << j
                 continue
-        code = diagnose(chain, a, values, tol, close)
+        code = diagnose(chain, a, values, tol, close, dict(zip(names, marking.tolerances)))
         if code is not None:
             named.append((j, code))
     return carried, tuple(named)

@@ -124,11 +124,18 @@ BY_CODE = {m.code: m for m in CATALOGUE}
 
 
 def diagnose(chain: ch.Chain, answer: str, given: dict, tolerance: float,
-             close: Callable[[float, float, float], bool]) -> str | None:
+             close: Callable[[float, float, float], bool],
+             tolerances: dict | None = None) -> str | None:
     """The code of the first mistake of the catalogue that reproduces the student's value of
     ``answer`` (within ``tolerance`` by ``close(given, candidate, tolerance)``), computed from
     the student's own earlier answers and then from the key's (the givens alone); None if
-    none does."""
+    none does.
+
+    From the key's givens a mistake in a step must also reproduce the student's other answers
+    computed through that step, but not from ``answer`` (a later slip is another matter;
+    ``tolerances``: answer → its tolerance, default ``tolerance``): a student whose driving
+    moment is right did not take the cycle in degrees, whatever a diameter — D ∝ J^(1/5),
+    which brings a wide range of wrong J near a rounded D — happens to match."""
     value = given.get(answer, math.nan)
     if value != value or not chain.knows(answer):
         return None
@@ -143,6 +150,30 @@ def diagnose(chain: ch.Chain, answer: str, given: dict, tolerance: float,
                     cands, _ = chain.recompute(answer, source, (step, twist))
                 except (ArithmeticError, ValueError):
                     continue
-                if any(math.isfinite(c) and close(value, c, tolerance) for c in cands):
+                if not any(math.isfinite(c) and close(value, c, tolerance) for c in cands):
+                    continue
+                if source or not _refuted(chain, answer, given, step, twist, tolerance,
+                                          close, tolerances or {}):
                     return m.code
     return None
+
+
+def _refuted(chain: ch.Chain, answer: str, given: dict, step: str, twist, tolerance: float,
+             close, tolerances: dict) -> bool:
+    """Whether one of the student's other answers computed through ``step``, not from
+    ``answer``, is not what the mistake ``twist`` there gives from the key's givens (see
+    :func:`diagnose`)."""
+    for other, v in given.items():
+        if other == answer or v != v or not chain.knows(other):
+            continue
+        path = chain.path(other)
+        if step not in path or answer in path:     # not through the step, or after the answer
+            continue
+        try:
+            cands, _ = chain.recompute(other, {}, (step, twist))
+        except (ArithmeticError, ValueError):
+            return True
+        if not any(math.isfinite(c) and close(v, c, tolerances.get(other, tolerance))
+                   for c in cands):
+            return True
+    return False
