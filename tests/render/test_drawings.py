@@ -206,6 +206,34 @@ def test_a_last_sheet_of_its_own_has_its_views_grown():
     assert pages[1][0].size == pytest.approx((0.5 * W * max(fits), 0.5 * H * max(fits)))
 
 
+def test_the_last_two_sheets_share_their_views():
+    """fitted: where the views take two sheets whatever the room, views of the first go on to
+    the second, in their order, so that the emptier of the two is as full as it can be (it
+    had kept the first sheet as packed and a last sheet of one small view)."""
+    from flywheel.render.drawings import fitted
+    from flywheel.render.drawings.sheet import ROOM
+
+    x0, y0, x1, y1 = field_of("A3")
+    W, H = x1 - x0, y1 - y0
+    shapes = {"v1": (0.95, 0.4), "v2": (0.45, 0.3), "v3": (0.45, 0.3), "v4": (0.95, 0.35)}
+
+    def build(room):
+        f = room["plot_h"] / ROOM["A3"]["plot_h"]
+        return [_box_view(n, a * W * f, b * H * f) for n, (a, b) in shapes.items()]
+
+    def fill(page):
+        return sum(v.size[0] * v.size[1] for v in page) / (W * H)
+
+    packed, _ = pack(build(ROOM["A3"]), "A3")
+    assert [[v.name for v in p] for p in packed] == [["v1", "v2", "v3"], ["v4"]]
+    assert fill(packed[1]) < 0.35 and len(pack(build({"plot_h": ROOM["A3"]["plot_h"] * 0.8}),
+                                               "A3")[0]) == 2     # two sheets at any room
+    views, pages, left_out = fitted(build, "A3")
+    assert len(pages) == 2 and not left_out
+    assert [v.name for p in pages for v in p] == list(shapes)            # in their order
+    assert min(fill(p) for p in pages) > 0.45
+
+
 @pytest.mark.parametrize("case", ["compressor", "shaper"])
 def test_fitted_sheets_are_never_more_and_their_lettering_never_smaller(case):
     """Against sheet.ROOM as it is: at every format no more sheets and no view left out, the

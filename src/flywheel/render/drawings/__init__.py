@@ -61,15 +61,21 @@ def fitted(build, size: str):
     """The views ``build(room)`` makes and their pages (layout.pack) at the room that fills the
     sheets of ``size`` best: the fewest views left out, then the fewest sheets, then the
     largest drawings — sheet.ROOM times 1, or a factor of :data:`SHRINK` where the views take
-    more sheets than one, or of :data:`GROW` where they take one; where they take more sheets
-    whatever the room, the last sheet's views alone grown by :data:`GROW` while they keep to
-    it (the lettering never changes). The factors are bisected: three or four builds, not one
-    per factor. Returns (views, pages, left_out)."""
+    more sheets than one, or of :data:`GROW` where they take one. Where they take more sheets
+    whatever the room, the last two sheets share their views (:func:`_shared`): up to
+    :data:`MOVE` views of the one before go on to the last, as many as leave the emptier of the
+    two fullest, each sheet's views then grown alone by :data:`GROW` while they keep to it (the
+    lettering never changes). The factors are bisected, each room built once. Returns (views,
+    pages, left_out)."""
     from flywheel.render.drawings.layout import pack
     from flywheel.render.drawings.sheet import ROOM
 
-    def views_at(factor: float):           # the views at sheet.ROOM × factor
-        return build({k: v * factor for k, v in ROOM[size].items()})
+    built: dict[float, list] = {}
+
+    def views_at(factor: float):           # the views at sheet.ROOM × factor, built once
+        if factor not in built:
+            built[factor] = build({k: v * factor for k, v in ROOM[size].items()})
+        return built[factor]
 
     def attempt(factor: float):
         views = views_at(factor)
@@ -88,20 +94,51 @@ def fitted(build, size: str):
     if need(least) < need(base):           # the smallest does
         return _largest(SHRINK[:-1], within(need(least))) or least
     views, pages, left_out = base
-    last = [v.name for v in pages[-1]]
     names = [v.name for v in views]
     if left_out or len(set(names)) < len(names):
         return base
+    return views, [*pages[:-2], *_shared(pages[-2:], names, views_at, size)], left_out
 
-    def alone(factor: float):              # the last sheet's views, larger, on one sheet
-        grown = {v.name: v for v in views_at(factor)}
-        if set(grown) != set(names):
-            return None
-        placed, out = pack([grown[n] for n in last], size)
-        return placed[0] if len(placed) == 1 and not out else None
 
-    page = _largest(GROW, alone)
-    return base if page is None else (views, [*pages[:-1], page], left_out)
+#: the most views of the sheet before the last that :func:`fitted` moves on to the last
+MOVE = 4
+
+
+def _shared(two: list[list[View]], names: list[str], views_at, size: str) -> list[list[View]]:
+    """The last two pages of :func:`fitted` with the last ``m`` ≤ MOVE views of the first moved
+    to the second (in the views' order), each page's views grown alone (:data:`GROW`) while
+    they keep to one sheet: of m = 0 … MOVE the one whose emptier page is fullest (the views'
+    area over the field; the fewest moved of equals). A page of diagrams left at a sixth of
+    its sheet while the sheet before is crowded is what this mends."""
+    from flywheel.render.drawings.layout import pack
+    from flywheel.render.drawings.sheet import field_of
+
+    fx0, fy0, fx1, fy1 = field_of(size)
+
+    def fill(page) -> float:
+        return sum(v.size[0] * v.size[1] for v in page) / ((fx1 - fx0) * (fy1 - fy0))
+
+    def alone(page_names):                 # the page's views at a factor, if on one sheet
+        def at(factor: float):
+            grown = {v.name: v for v in views_at(factor)}
+            if set(grown) != set(names):
+                return None
+            placed, out = pack([grown[n] for n in page_names], size)
+            return placed[0] if len(placed) == 1 and not out else None
+        return at
+
+    first, last = [v.name for v in two[0]], [v.name for v in two[1]]
+    best, best_fill = two, -1.0
+    for m in range(0, min(MOVE, len(first) - 1) + 1):
+        kept = first[:len(first) - m]
+        moved = sorted(first[len(first) - m:] + last, key=names.index)
+        pages = [_largest((1.0, *GROW), alone(p)) for p in (kept, moved)]
+        if any(p is None for p in pages):
+            break                          # more moved would not keep to one sheet either
+        emptier = min(fill(p) for p in pages)
+        if emptier > best_fill + 1e-9:
+            best, best_fill = pages, emptier
+    return best
 
 
 def build_sheets(results, document, *, lang: str = "ru", size: str = "A1") -> list[Sheet]:
