@@ -132,3 +132,22 @@ def test_a_folder_of_the_users_is_not_written_into(compressor, sheet, tmp_path):
     assert res.exit_code == 2, res.output
     assert (mine / "notes.txt").read_text(encoding="utf-8") == "mine"
     assert sorted(p.name for p in mine.iterdir()) == ["notes.txt"]
+
+
+def test_a_task2_page_names_the_answers_as_its_task_sheet_does(tmp_path_factory, tmp_path):
+    """The page of a task2 key asks J_required as task2's sheet does — «приведённый момент
+    инерции, обеспечивающий заданный δ, J_пр» — not as a run's («необходимый момент инерции
+    первой группы звеньев J_I»: the page had named every key's answers as a run's)."""
+    folder = make(tmp_path_factory, "variants_task2.toml", count=1, seed=5)
+    key = key_of(folder)
+    assert key["kind"] == "task2" and "J_required" in key["answers"]
+    ans = dict(key["variants"]["01"])
+    ans["J_required"] *= 1.3
+    sheet = write_sheet(tmp_path / "s.csv", key, [("Иванов", "01", ans)])
+    out = tmp_path / "fb"
+    res = runner.invoke(app, ["grade", str(folder / "answers.json"), str(sheet),
+                              "--feedback", str(out), "--lang", "ru"])
+    assert res.exit_code == 0, res.output
+    rows = parse(next(out.glob("*.html")))
+    J = next(r[0] for r in rows if "J_required" in r[0])
+    assert "J_пр" in J and "обеспечивающий заданный δ" in J and "первой группы" not in J, J

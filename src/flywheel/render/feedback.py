@@ -36,11 +36,12 @@ def _num(x, lang: str, given: bool = False) -> str:
         return fmt(x, 6, zero=None, nonfinite="show", given=given)
 
 
-def label(answer: str, lang: str) -> str:
-    """An answer as the task sheet asks it (render/sheet_labels.py): «name symbol, unit»."""
+def label(answer: str, lang: str, kind: str = "run") -> str:
+    """An answer as the task sheet of a ``kind`` case ("run", "task2") asks it
+    (render/sheet_labels.py): «name symbol, unit»."""
     from flywheel.render.sheet_labels import answer_words
 
-    what, sym, u = answer_words("run", answer, lang)     # a table's cell: its own words
+    what, sym, u = answer_words(kind, answer, lang)      # a table's cell: its own words
     return " ".join(x for x in (what, sym) if x) + (f", {u}" if u else "")
 
 
@@ -63,8 +64,8 @@ def _pct(x: float, lang: str) -> str:
     return _num(round(100 * x), lang) + " %"
 
 
-def page(s, lang: str = "en", reveal: bool = True, share: float = 0.0) -> str:
-    """The HTML page of one graded student (``StudentGrade``)."""
+def page(s, lang: str = "en", reveal: bool = True, share: float = 0.0, kind: str = "run") -> str:
+    """The HTML page of one graded student (``StudentGrade``) of a key of ``kind`` variants."""
     t = T[lang]
     e = html.escape
     rows = []
@@ -72,7 +73,8 @@ def page(s, lang: str = "en", reveal: bool = True, share: float = 0.0) -> str:
     for j, a in enumerate(s.answers):
         if in_table >> j & 1 and a.passed:
             continue                  # a table's right cell: counted in its table's line
-        cells = [f"{e(label(a.answer, lang))}<br><small>{e(a.answer)}</small>", _num(a.given, lang, given=True), e(verdict_word(a, lang)),
+        cells = [f"{e(label(a.answer, lang, kind))}<br><small>{e(a.answer)}</small>",
+                 _num(a.given, lang, given=True), e(verdict_word(a, lang)),
                  e(MISTAKES[lang].get(a.diagnosis, a.diagnosis or t["none"]))]
         if reveal:
             cells.append(_num(a.key, lang))
@@ -129,6 +131,6 @@ def write_feedback(report, folder, lang: str = "en", reveal: bool = True, notes=
     def build(tmp: Path) -> None:
         for i, s in enumerate(report.students, start=1):
             (tmp / file_name(i, s.student)).write_text(
-                page(s, lang, reveal, report.carried_share), encoding="utf-8")
+                page(s, lang, reveal, report.carried_share, report.key.kind), encoding="utf-8")
 
     return write_folder(Path(folder), build, "", "feedback", notes)

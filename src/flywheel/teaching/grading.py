@@ -65,6 +65,7 @@ class Key:
     answers: tuple[str, ...] = ()
     givens: dict = field(default_factory=dict)   # variant id → teaching.chain.Givens
     tables: dict = field(default_factory=dict)   # name → teaching.tables.TableSpec
+    kind: str = "run"   # the case kind the variants are of ("run", "task2"): the sheet's words
 
     def tolerance_of(self, answer: str, default: float | None = None) -> float:
         """The per-answer tolerance of the key file (a table's cell: its column's), else
@@ -173,8 +174,9 @@ def parse_key(doc, source: str = "<key>") -> Key:
     tables = parse_key_tables(doc.get("tables") if "variants" in doc else None, source)
     listed = set(answers)
     answers = list(answers) + [c for t in tables.values() for c in t.cells if c not in listed]
+    kind = "task2" if "variants" in doc and doc.get("kind") == "task2" else "run"
     return Key(source, variants, float(tol), {str(k): float(v) for k, v in tols.items()},
-               tuple(answers), givens, tables)
+               tuple(answers), givens, tables, kind)
 
 
 def _chain_givens(chain, source: str) -> dict:
