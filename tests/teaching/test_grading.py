@@ -352,6 +352,11 @@ def test_the_whole_report_in_russian(tmp_path, key_dir, key):
                   "По ответам", "средний балл 100 %; все ответы верны: 4 из 4"):
         assert words in ru.stdout, words
     assert "By answer" not in ru.stdout and "mean score" not in ru.stdout
+    # the answers by the symbols of task2's sheet, not by the keys the English report keeps
+    for sym in ("M_С", "ω_max", "ω_min", "δ", "ΔT_нб", "J_пр"):
+        assert re.search(rf"│ {sym} +│", ru.stdout), sym
+    for k in ("omega_max", "J_required", "delta_T_max"):
+        assert k not in ru.stdout and re.search(rf"│ {k} +│", en.stdout), k
     assert not re.search(r"\d\.\d", ru.stdout)
     assert same_numbers(ru_numbers(ru.stdout), en_numbers(en.stdout))
 

@@ -7,7 +7,8 @@ from flywheel.render.numbers import fmt as _number
 from flywheel.render.numbers import russian
 
 # sentence templates of the class summary and the gradebook (the quantities' names are
-# answers' keys, which stay as the key spells them)
+# answers' keys, which stay as the key spells them; a Russian report names them by their
+# symbols: :func:`answer_names`)
 TEXT = words("grading", {"summary": "Class summary: {n} graded, mean score {mean}", "dist": "Score distribution",
                          "passed": "answers passed", "students": "students", "wrong": "Most often wrong",
                          "none": "none", "nothing": "Handed in nothing ({n})", "unassigned":
@@ -52,6 +53,22 @@ MISTAKES = words("mistake", {
     "radius_for_diameter": "the radius given for the diameter",
     "g_10": "g = 10 m/s² for 9.81 m/s² (within the tolerance)",
 })
+
+
+def answer_names(r, lang: str = "en") -> dict[str, str]:
+    """How the report's tables and lists name the answers of the report ``r``: in Russian by
+    the symbols the task sheet of the key's kind prints («M_Д», «ΔT_нб», «J_пр»), where two
+    answers share one (a disk's D and a rim's) and for a table's cell by the key the students'
+    sheet spells; in English by the key."""
+    from flywheel.render.sheet_labels import answer_words, cell_words
+
+    keys = list(r.key.answers)
+    if lang != "ru":
+        return {a: a for a in keys}
+    sym = {a: ("" if cell_words(a, lang) is not None else answer_words(r.key.kind, a, lang)[1])
+           for a in keys}
+    taken = [v for v in sym.values() if v]
+    return {a: sym[a] if sym[a] and taken.count(sym[a]) == 1 else a for a in keys}
 
 
 def verdict_word(a, lang: str = "en") -> str:
@@ -163,8 +180,10 @@ def print_class_summary(r, lang: str = "en", console=None) -> None:
     full = sum(s.passed == s.total for s in r.students)
     console.print(t["full"].format(k=full, n=len(r.students)), highlight=False)
     worst = r.most_often_wrong()
+    shown = answer_names(r, lang)
     console.print(f"{t['wrong']}: " + (t["none"] if worst is None else
-                  f"{', '.join(worst[0])} ({worst[1]} {t['of']} {len(r.students)}"
+                  f"{', '.join(shown.get(a, a) for a in worst[0])} ({worst[1]} {t['of']} "
+                  f"{len(r.students)}"
                   + (f" {t['each']})" if len(worst[0]) > 1 else ")")), highlight=False)
     for key, names in (("nothing", [s.student for s in r.handed_in_nothing]),
                        ("unassigned", r.unassigned_variants())):
@@ -246,6 +265,7 @@ def print_report(r, console=None, lang: str = "en") -> None:
 
     t = TEXT[lang]
     console = console or Console()
+    shown = answer_names(r, lang)
     for s in (r.students if len(r.students) <= DETAIL_STUDENTS else ()):
         table = Table(title=t["student_title"].format(student=s.student, variant=s.variant,
                                                       passed=s.passed, total=s.total,
@@ -272,7 +292,7 @@ def print_report(r, console=None, lang: str = "en") -> None:
             mark = f"[green]{t['pass']}[/]" if a.passed else (
                 f"[yellow]{t['carried']}[/]" if a.verdict == "carried" else
                 f"[red]{t['fail']}[/]" if a.given is not None else f"[red]{t['no_answer']}[/]")
-            cells = [a.answer, _g(a.given, given=True), _g(a.key), err,
+            cells = [shown.get(a.answer, a.answer), _g(a.given, given=True), _g(a.key), err,
                      f"{_pct_of(a.tolerance)} %", mark]
             if explained:
                 cells.append(MISTAKES[lang].get(a.diagnosis, a.diagnosis or ""))
@@ -292,7 +312,7 @@ def print_report(r, console=None, lang: str = "en") -> None:
         group.add_column(t["wrong_col"])
         for s in r.students[:GROUP_ROWS]:
             group.add_row(s.student, s.variant, f"{s.passed}/{s.total} ({_pct(s.score)})",
-                          ", ".join(s.wrong) or "—")
+                          ", ".join(shown.get(a, a) for a in s.wrong) or "—")
         console.print(group)
         if len(r.students) > GROUP_ROWS:
             console.print(t["more_students"].format(n=len(r.students) - GROUP_ROWS),
@@ -302,15 +322,17 @@ def print_report(r, console=None, lang: str = "en") -> None:
         per.add_column(t["wrong_col"], justify="right")
         per.add_column(t["tolerance"], justify="right")
         for a, (w, n) in r.wrong_counts().items():
-            per.add_row(a, f"{w}/{n}", f"{_pct_of(r.key.tolerance_of(a, r.tolerance))} %")
+            per.add_row(shown.get(a, a), f"{w}/{n}",
+                        f"{_pct_of(r.key.tolerance_of(a, r.tolerance))} %")
         console.print(per)
         worst = r.most_often_wrong()
         full = sum(s.passed == s.total for s in r.students)
         console.print(t["stats"].format(
             mean=_pct(r.mean_score), k=full, n=len(r.students),
             worst=t["none"] if worst is None else
-            f"{', '.join(worst[0])} ({worst[1]} {t['of']} {len(r.students)}"
-            + (f" {t['each']})" if len(worst[0]) > 1 else ")")), highlight=False)
+            f"{', '.join(shown.get(a, a) for a in worst[0])} ({worst[1]} {t['of']} "
+            f"{len(r.students)}" + (f" {t['each']})" if len(worst[0]) > 1 else ")")),
+            highlight=False)
         carried = sum(s.carried_count for s in r.students)
         if carried:
             share = _number(r.carried_share, sig=3)
