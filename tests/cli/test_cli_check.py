@@ -62,6 +62,20 @@ def test_check_compressor_prints_the_case_and_its_dead_centres():
     assert links["0.0000"][:2] == ["-1 / 0", "0.25 / 0"]
 
 
+def test_check_in_russian_names_the_groups_and_the_cylinders_as_the_outputs_do():
+    """--lang ru: an Assur group by its kind in Russian («ВВП B», as the record and the sheets
+    name it; it printed the case file's «RRP B»), a cylinder by its key and its label
+    («HP (ВД)»); in English as the case file spells them."""
+    ru = invoke("check", CASES / "compressor.toml", "--lang", "ru")
+    en = invoke("check", CASES / "compressor.toml")
+    assert ru.exit_code == en.exit_code == 0, ru.output
+    assert [r[0] for r in rows(ru.stdout) if r[0].startswith(("ВВП", "RRP"))] == ["ВВП B", "ВВП C"]
+    assert [r[0] for r in rows(en.stdout) if r[0].startswith("RRP")] == ["RRP B", "RRP C"]
+    assert [r[0] for r in rows(ru.stdout) if r[0].startswith(("HP", "LP"))] == ["HP (ВД)",
+                                                                                "LP (НД)"]
+    assert [r[0] for r in rows(en.stdout) if r[0] in ("HP", "LP")] == ["HP", "LP"]
+
+
 @pytest.mark.parametrize("name, expected", [
     ("fourbar.toml", "Crank-rocker four-bar"),
     ("slotted_link.toml", "Shaper: slotted-link mechanism"),

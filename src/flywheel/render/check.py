@@ -131,16 +131,16 @@ def print_check(report, console=None, lang: str = "en") -> None:
                                      tip=c.tip))
     for spec, d in zip(case.dyads, mech.dyads):
         if isinstance(spec, RRPSpec):
-            t.add_row(f"RRP {d.name}", f"{d.rod}, {d.slider}", f"{d.origin} → {d.joint}",
+            t.add_row(f"{nm.dyad_kind('RRP', lang)} {d.name}", f"{d.rod}, {d.slider}", f"{d.origin} → {d.joint}",
                       w["rrp"].format(l=_n(d.rod_length, ".6g", True), th=_xy(d.guide.through),
                                       a=_n(math.degrees(d.guide.angle)),
                                       o=_n(d.guide.offset, given=True), b=spec.branch))
         elif isinstance(spec, RPRSpec):
-            t.add_row(f"RPR {d.name}", f"{d.rocker}, {d.slider}",
+            t.add_row(f"{nm.dyad_kind('RPR', lang)} {d.name}", f"{d.rocker}, {d.slider}",
                       w["rpr_where"].format(o=d.origin, p=d.pivot),
                       w["rpr"].format(o=_n(d.offset, given=True), b=spec.branch))
         else:
-            t.add_row(f"RRR {d.name}", f"{d.link_a}, {d.link_b}",
+            t.add_row(f"{nm.dyad_kind('RRR', lang)} {d.name}", f"{d.link_a}, {d.link_b}",
                       f"{d.point_a} → {d.joint} ← {d.point_b}",
                       w["rrr"].format(a=_n(d.length_a, ".6g", True), b=_n(d.length_b, ".6g", True),
                                       br=spec.branch))
@@ -172,8 +172,10 @@ def print_check(report, console=None, lang: str = "en") -> None:
                                     nm.heading("p_max", lang, si="MPa"), w["head"],
                                     w["interpolation"], w["points"]))
         for cy in case.cylinders:
-            t.add_row(cy.name, cy.piston, _n(cy.bore, given=True), _n(cy.p_max / PA_PER_MPA),
-                      w.get(cy.head, cy.head),
+            label = nm.cylinder_label(cy, lang)          # «HP (ВД)»: the key, then its label
+            t.add_row(cy.name if label == cy.name else f"{cy.name} ({label})", cy.piston,
+                      _n(cy.bore, given=True),
+                      _n(cy.p_max / PA_PER_MPA), w.get(cy.head, cy.head),
                       cy.interpolation, str(len(cy.s if cy.s is not None else cy.diagram.s)))
         console.print(t)
 
