@@ -204,3 +204,29 @@ def test_the_summary_rows_follow_the_balance():
     assert "работа сил сопротивления за цикл A_С" not in out
     assert "приведённый движущий момент M_Д" not in out
     assert res.title.ru in out                      # the Russian title in a Russian summary
+
+
+def test_the_russian_summary_lists_numbers_with_semicolons():
+    """Russian typography: numbers listed in one cell are set apart by «;», the comma being
+    the decimal mark («i = 1; 3,968», «D = 0,4816; b = 0,09632; m = 136,9»: the summary had
+    written «i = 1, 3,968»); English keeps commas."""
+    import io
+
+    from rich.console import Console
+
+    from flywheel.render.numbers import typography
+    from flywheel.render.summary import print_summary
+
+    _, res, _ = _run_document("compressor")
+    for lang, sep in (("ru", "; "), ("en", ", ")):
+        buf = io.StringIO()
+        with typography(lang):                       # as the command line prints it
+            print_summary(res, Console(file=buf, width=200), lang)
+        rows = [ln for ln in buf.getvalue().splitlines() if re.search(r"[│ ]D = ", ln)]
+        assert len(rows) == 2, rows                                  # the disk, the rim
+        for ln in rows:
+            cell = ln.split("│")[2].strip()
+            assert cell.count(" = ") >= 3 and cell.count(sep) == cell.count(" = ") - 1, cell
+        i_row = next(ln for ln in buf.getvalue().splitlines() if re.search(r"│ +i = ", ln))
+        assert re.search(rf"i = 1{re.escape(sep)}\S", i_row), i_row
+        assert ("0,4816" if lang == "ru" else "0.4816") in buf.getvalue()

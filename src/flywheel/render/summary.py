@@ -132,9 +132,11 @@ def print_summary(results, console=None, lang: str = "en") -> None:
             tab.add_row(nm.name(key, lang), _g(getattr(s, key)), u(key))
     for key in ("omega_max", "omega_min", *(("epsilon_max", "epsilon_min") if given else ())):
         tab.add_row(nm.name(key, lang), at(key), u(key))
+    # numbers listed in a cell: «; » between them in Russian, where «,» is the decimal mark
+    sep = "; " if lang == "ru" else ", "
     tab.add_row(t["fw_shaft"].format(i=nm.symbol("flywheel_speed_ratio", lang),
                                      J=nm.symbol("flywheel_J_on_its_shaft", lang)),
-                f"{nm.symbol('flywheel_speed_ratio', lang)} = {_g(s.flywheel_speed_ratio)}, "
+                f"{nm.symbol('flywheel_speed_ratio', lang)} = {_g(s.flywheel_speed_ratio)}{sep}"
                 f"{_g(s.flywheel_J_on_its_shaft)}",
                 u("flywheel_speed_ratio", "flywheel_J_on_its_shaft"))
     lim = s.flywheel_rim_speed_limit
@@ -155,8 +157,8 @@ def print_summary(results, console=None, lang: str = "en") -> None:
         d = getattr(s, key)
         tab.add_row(nm.name("flywheel_rim_design" if key == "flywheel_rim" and designed else key,
                             lang),
-                    ", ".join(f"{nm.symbol(f, lang)} = {_g(getattr(d, f), n)}"
-                              for f, n in zip(fields, digits)), u(*fields))
+                    sep.join(f"{nm.symbol(f, lang)} = {_g(getattr(d, f), n)}"
+                             for f, n in zip(fields, digits)), u(*fields))
     console.print(tab)
     for a in results.at:
         pt = Table(title=t["title_at"].format(phi=_g(a.phi_deg), w=_g(a.omega), e=_g(a.epsilon),
