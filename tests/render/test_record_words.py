@@ -230,3 +230,15 @@ def test_the_russian_summary_lists_numbers_with_semicolons():
         i_row = next(ln for ln in buf.getvalue().splitlines() if re.search(r"│ +i = ", ln))
         assert re.search(rf"i = 1{re.escape(sep)}\S", i_row), i_row
         assert ("0,4816" if lang == "ru" else "0.4816") in buf.getvalue()
+
+
+def test_a_points_coordinates_are_set_apart_by_a_semicolon_in_russian():
+    """The записка's input data: a point of the frame as «E (x; y) | 0,7; 0,3» in Russian (it
+    wrote «0,7, 0,3», the decimal commas and the separator alike), "0.7, 0.3" in English."""
+    from flywheel.render.numbers import typography
+
+    for lang, row_g, row_E in (("ru", "| g (x; y) | 0; −9,81 |", "| E (x; y) | 0,7; 0,3 |"),
+                               ("en", "| g (x, y) | 0, -9.81 |", "| E (x, y) | 0.7, 0.3 |")):
+        with typography(lang):
+            md = markdown(_run_document("fourbar_rocker_load", lang)[2])
+        assert row_g in md and row_E in md, lang
