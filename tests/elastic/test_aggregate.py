@@ -638,6 +638,10 @@ def test_lang_ru_same_numbers_russian_labels(name):
     # typography: decimal commas, no decimal point
     assert len(_numbers(en.stdout)) > 20 and re.search(r"│ *[−-]?\d+,\d", ru.stdout)
     assert not re.search(r"│ *[−-]?\d+\.\d", ru.stdout)
+    # a mode's shape: its numbers set apart by «;» («1; −0,307; −0,6433»), the comma being the
+    # decimal mark (it wrote «1, −0,307, −0,6433»); English by commas
+    assert re.search(r"│ 1; [−-]?\d", ru.stdout) and not re.search(r"\d, [−-]?\d", ru.stdout)
+    assert re.search(r"│ 1, [−-]?\d", en.stdout)
     assert cli(*args, "--json", "--lang", "ru").stdout == cli(*args, "--json").stdout
 
 
@@ -716,3 +720,13 @@ def test_the_json_document_fits_the_schema_of_its_typed_entries(case):
     doc = json.loads(res.stdout)
     doc.pop("title", None), doc.pop("source", None)
     assert errors(doc, json_schema(AggregateDocument)) == []
+
+
+def test_the_russian_report_sets_a_modes_numbers_apart_by_semicolons(tmp_path):
+    """The report's table of natural frequencies: a mode's shape «1; −0,307; −0,6433» in
+    Russian (it wrote «1, −0,307, −0,6433», the decimal commas and the separator alike)."""
+    res = cli(CASES / "aggregate_khurmi_three_rotor.toml", "--lang", "ru", "-o", tmp_path / "o")
+    assert res.exit_code == 0, res.output
+    md = (tmp_path / "o" / "report.md").read_text(encoding="utf-8")
+    rows = [ln for ln in md.splitlines() if ln.startswith("| 1 | ") and ln.count("|") == 6]
+    assert rows and re.search(r"\| 1; [−-]\d,\d+; [−-]\d,\d+ \|$", rows[0]), rows
