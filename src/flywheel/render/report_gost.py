@@ -237,10 +237,16 @@ def typst_source(doc: Document, plots: bool = True) -> str:
     return "\n".join(out)
 
 
+#: a table of at most this many rows is kept on one page (moved whole to the next where it
+#: does not fit), not split with a row or two under «Продолжение таблицы N»
+SHORT_TABLE = 15
+
+
 def _table(b: Table, g: dict, landscape: str = "flipped: true") -> str:
     """A table under its caption «Таблица N — …» (a sticky block: never left at the foot of a
     page without the table), its header row repeated on each page it runs onto with
-    «Продолжение таблицы N» above it; the first column left, the numbers right."""
+    «Продолжение таблицы N» above it; the first column left, the numbers right; a short one
+    (:data:`SHORT_TABLE`) never split."""
     n = len(b.header)
     size = "12pt" if n <= WIDE else "10pt" if n <= 9 else "9pt"
     label = f"gost-table-{b.number}"
@@ -254,9 +260,10 @@ def _table(b: Table, g: dict, landscape: str = "flipped: true") -> str:
     src = (f"#block(sticky: true, above: 1.2em, below: 0.5em)[#set par(first-line-indent: 0pt, "
            f"justify: false); {first}]\n"
            f"#[#set text(size: {size})\n#set par(first-line-indent: 0pt, justify: false, leading: 0.5em)\n"
+           f"#block(breakable: {'false' if len(b.rows) <= SHORT_TABLE else 'true'})["
            f"#table(columns: {n}, inset: (x: 2.5pt, y: 4pt), "
            f"align: (x, y) => if x == 0 {{ left + horizon }} else {{ right + horizon }},\n"
-           f"table.header(repeat: true, {cont}, {head}),\n{cells}) <{label}>]")
+           f"table.header(repeat: true, {cont}, {head}),\n{cells}) <{label}>]]")
     return f"#page({landscape})[\n{src}\n]" if n > WIDE_PAGE else src
 
 
@@ -488,7 +495,8 @@ def _seq(name: str, number: int) -> str:
 
 def _table_xml(b: Table, width: int) -> str:
     """A table in the grid style, centred, its header row bold, centred and repeated on every
-    page it runs onto; the first column left, the numbers right; 12 pt (10 pt if wide, 9 pt
+    page it runs onto (a short one, :data:`SHORT_TABLE`, kept on one page: each row's
+    paragraphs kept with the next); the first column left, the numbers right; 12 pt (10 pt if wide, 9 pt
     beyond 9 columns, the cells' margins then 1 mm), single;
     its columns' widths fixed within the text's ``width`` [twips] (render/table_widths.py: left
     to LibreOffice, they were equal and broke words)."""
@@ -499,10 +507,12 @@ def _table_xml(b: Table, width: int) -> str:
     margin = MARGIN if n <= WIDE else NARROW_MARGIN
     widths = column_widths([tuple(b.header), *b.rows], width, hp, margin=margin)
     rows = []
+    short = len(b.rows) <= SHORT_TABLE      # kept on one page: each row with the next
     for r, cells in enumerate((b.header, *b.rows)):
+        keep = r == 0 or (short and r < len(b.rows))
         tcs = "".join(
             f'<w:tc><w:tcPr><w:tcW w:w="{widths[c]}" w:type="dxa"/></w:tcPr>'
-            + _p(_runs(text, bold=r == 0, half_points=hp), keep=r == 0, single=True, indent=True,
+            + _p(_runs(text, bold=r == 0, half_points=hp), keep=keep, single=True, indent=True,
                  jc="center" if r == 0 else "left" if c == 0 else "right") + "</w:tc>"
             for c, text in enumerate(cells))
         rows.append(f"<w:tr>{'<w:trPr><w:tblHeader/></w:trPr>' if r == 0 else ''}{tcs}</w:tr>")
