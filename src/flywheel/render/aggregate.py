@@ -13,7 +13,7 @@ motor drives the machine; the moment the coupling transmits is c·(φ1 − φ2) 
 from __future__ import annotations
 
 from flywheel.render import nomenclature as nm
-from flywheel.render.numbers import fmt as _number
+from flywheel.render.numbers import fmt as _number, separator
 from flywheel.units import RPM_PER_RAD_S, TWO_PI
 
 
@@ -100,7 +100,7 @@ def print_summary(r, title: str = "", source: str = "", console=None, lang: str 
     t = table(L("ag_modes"), (L("mode"), L("omega_n"), L("f_n"), L("shape")))
     rigid = r.modes.rigid
     for k, w in enumerate(r.modes.omega):
-        shape = ("; " if lang == "ru" else ", ").join(_g(x, ".4g") for x in r.modes.shapes[:, k])
+        shape = separator(lang).join(_g(x, ".4g") for x in r.modes.shapes[:, k])
         row(t, L("rigid_body") if k < rigid else k - rigid + 1, _g(w), _g(w / TWO_PI), shape)
     console.print(t)
     if modes:

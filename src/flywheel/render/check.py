@@ -8,7 +8,7 @@ from flywheel.io.text import in_language
 from flywheel.render import nomenclature as nm
 from flywheel.render.catalogue import words
 from flywheel.render.numbers import fmt as _number
-from flywheel.render.numbers import russian
+from flywheel.render.numbers import russian, separator
 from flywheel.units import PA_PER_MPA
 
 # the words of `flywheel check` (the quantities' names, symbols and units: the nomenclature)
@@ -64,7 +64,7 @@ def _xy(p) -> str:
     «(0; 0)» (the comma is the decimal sign)."""
     if not russian():
         return str(p)
-    return "(" + "; ".join(_n(v, given=True) for v in p) + ")"
+    return "(" + separator().join(_n(v, given=True) for v in p) + ")"
 
 
 def _crank_line(report, m, lang: str = "en") -> str:

@@ -17,7 +17,7 @@ from flywheel.render.catalogue import words
 from flywheel.render.blocks import (  # noqa: F401  (the model, re-exported)
     Bullets, Document, Figure, Formula, Heading, Paragraph, Table)
 from flywheel.io.text import in_language
-from flywheel.render.numbers import apart, fmt as _number
+from flywheel.render.numbers import apart, fmt as _number, separator
 from flywheel.units import PA_PER_MPA
 
 
@@ -249,15 +249,9 @@ def _mt(key: str, lang: str) -> str:
     return nm.tex(key, lang).strip("$")
 
 
-def _xy_sep(lang: str) -> str:
-    """Between a point's two coordinates: «; » in Russian, where the comma is the decimal mark
-    («0,7; 0,3», not «0,7, 0,3»), ", " in English."""
-    return "; " if lang == "ru" else ", "
-
-
 def _xy_head(lang: str) -> str:
-    """A point's coordinates named as :func:`_xy_sep` writes them: «(x; y)», "(x, y)"."""
-    return f"(x{_xy_sep(lang).rstrip()} y)"
+    """A point's coordinates named as numbers.separator sets them apart: «(x; y)», "(x, y)"."""
+    return f"(x{separator(lang).rstrip()} y)"
 
 
 def build_document(results, lang: str = "en", plots: list[str] | None = None,
@@ -307,7 +301,7 @@ def build_document(results, lang: str = "en", plots: list[str] | None = None,
                          u("J_first_group")])
         rows.append([t["balance_row"], t["balance_word"][case.machine.balance], ""])
         rows.append([f"{sym('gravity')} {_xy_head(lang)}",
-                     _xy_sep(lang).join(gi(x, 4) for x in case.machine.gravity), u("gravity")])
+                     separator(lang).join(gi(x, 4) for x in case.machine.gravity), u("gravity")])
     rows += [
         [nm.name("flywheel_material", lang), nm.material(s.flywheel_material, lang), ""],
         [f"{sym('flywheel_material_density')}", g(s.flywheel_material_density, 6),
@@ -513,7 +507,7 @@ def _input_of_case(b: _Builder, case, t: dict, lang: str) -> None:
         elif isinstance(d, RPRSpec) and d.offset:
             rows.append([f"{go} ({t['link']} {d.rocker})", gi(d.offset, 6), u("guide_offset")])
     for name, (x, y) in case.ground.items():
-        rows.append([f"{name} {_xy_head(lang)}", f"{gi(x, 6)}{_xy_sep(lang)}{gi(y, 6)}", u("x")])
+        rows.append([f"{name} {_xy_head(lang)}", f"{gi(x, 6)}{separator(lang)}{gi(y, 6)}", u("x")])
     b.add(Heading(3, f"1.2. {t['lengths']}"))
     b.table(t["lengths"], [t["qty"], t["val"], t["unit"]], rows)
 

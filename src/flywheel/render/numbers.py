@@ -98,6 +98,16 @@ def russian() -> bool:
     return _POLICY.get() is not None
 
 
+def separator(lang: str | None = None) -> str:
+    """Between numbers listed in one place: «; » in Russian, where the comma is the decimal mark
+    («i = 1; 3,968», «(0,7; 0,3)»), ", " in English; ``lang`` None: the typography in force.
+
+    >>> separator("ru"), separator("en")
+    ('; ', ', ')
+    """
+    return "; " if (russian() if lang is None else lang == "ru") else ", "
+
+
 def typeset(lang: str, build, /, *args, **kwargs):
     """``build(*args, **kwargs)`` under ``lang``'s typography (:func:`typography`): a Russian
     document or summary built with Russian numbers."""

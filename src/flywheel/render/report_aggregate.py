@@ -14,7 +14,7 @@ from __future__ import annotations
 from flywheel.render.catalogue import words
 from flywheel.render.document import Bullets, Document, Figure, Formula, Heading, Paragraph
 from flywheel.render.nomenclature import name as text, rotor_name, unit
-from flywheel.render.numbers import fmt as _number
+from flywheel.render.numbers import fmt as _number, separator
 from flywheel.units import RPM_PER_RAD_S, TWO_PI
 
 FIGURE = "aggregate.png"
@@ -122,7 +122,7 @@ def build_aggregate_document(r, title: str, source: str, lang: str = "en",
     table(t["modes_caption"], [L("mode"), f"ω, {U('rad/s')}", f"f, {U('Hz')}",
                                f"n, {U('rpm')}", L("shape")],
           [[L("rigid_body") if k < rigid else k - rigid + 1, g(w), g(w / TWO_PI), g(w * RPM_PER_RAD_S),
-            ("; " if lang == "ru" else ", ").join(g(x, ".4g") for x in r.modes.shapes[:, k])]
+            separator(lang).join(g(x, ".4g") for x in r.modes.shapes[:, k])]
            for k, w in enumerate(r.modes.omega)])
 
     # 5. forced vibration ---------------------------------------------------------------------

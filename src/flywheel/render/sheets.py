@@ -20,7 +20,7 @@ from flywheel.render import nomenclature as nm
 from flywheel.render.catalogue import words
 from flywheel.render.document import Document, Figure, Heading, Paragraph, Table
 from flywheel.render.numbers import fmt as _number
-from flywheel.render.numbers import russian, typeset
+from flywheel.render.numbers import russian, separator, typeset
 
 FORMATS = ("both", "html", "pdf")
 #: the sheet's own print style, after the записка's and as the PDF sheet's layout (typst_sheet:
@@ -96,7 +96,7 @@ def _num(v) -> str:
     """A datum the case gave, through the one formatter (in Russian, within ``typeset``: its
     own digits, a decimal comma, numbers of a list separated by «; »)."""
     if isinstance(v, tuple):
-        return ("; " if russian() else ", ").join(_num(x) for x in v)
+        return separator().join(_num(x) for x in v)
     if isinstance(v, int) and not russian():
         return str(v)
     return _number(float(v), 6, zero=0.0, nonfinite="show", given=True)

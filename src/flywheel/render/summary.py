@@ -4,7 +4,7 @@ from __future__ import annotations
 from flywheel.render import nomenclature as nm
 from flywheel.render.catalogue import words
 from flywheel.render.forces import print_forces
-from flywheel.render.numbers import fmt as _number
+from flywheel.render.numbers import fmt as _number, separator
 
 # Sentence templates and table words only: every quantity's name, symbol and unit comes from
 # the nomenclature (render/nomenclature.py), filled in where the templates say {…}.
@@ -132,8 +132,7 @@ def print_summary(results, console=None, lang: str = "en") -> None:
             tab.add_row(nm.name(key, lang), _g(getattr(s, key)), u(key))
     for key in ("omega_max", "omega_min", *(("epsilon_max", "epsilon_min") if given else ())):
         tab.add_row(nm.name(key, lang), at(key), u(key))
-    # numbers listed in a cell: «; » between them in Russian, where «,» is the decimal mark
-    sep = "; " if lang == "ru" else ", "
+    sep = separator(lang)                   # numbers listed in a cell: «; » in Russian
     tab.add_row(t["fw_shaft"].format(i=nm.symbol("flywheel_speed_ratio", lang),
                                      J=nm.symbol("flywheel_J_on_its_shaft", lang)),
                 f"{nm.symbol('flywheel_speed_ratio', lang)} = {_g(s.flywheel_speed_ratio)}{sep}"
