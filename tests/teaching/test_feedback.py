@@ -148,6 +148,9 @@ def test_a_task2_page_names_the_answers_as_its_task_sheet_does(tmp_path_factory,
     res = runner.invoke(app, ["grade", str(folder / "answers.json"), str(sheet),
                               "--feedback", str(out), "--lang", "ru"])
     assert res.exit_code == 0, res.output
-    rows = parse(next(out.glob("*.html")))
-    J = next(r[0] for r in rows if "J_required" in r[0])
-    assert "J_пр" in J and "обеспечивающий заданный δ" in J and "первой группы" not in J, J
+    page = next(out.glob("*.html"))
+    J = next(r[0] for r in parse(page) if "J_required" in r[0])
+    assert "Jпр" in J and "обеспечивающий заданный δ" in J and "первой группы" not in J, J
+    # the symbols' subscripts as the task sheet sets them, in <sub> (not «J_пр»)
+    text = page.read_text(encoding="utf-8")
+    assert "J<sub>пр</sub>" in text and "ΔT<sub>нб</sub>" in text and "J_пр" not in text

@@ -67,6 +67,9 @@ def test_the_bank_holds_one_question_per_answer_with_its_tolerance(made):
             assert q["text"].startswith(f"[flywheel {vid} {a}]")
             assert q["multiplier"] == 1
     assert by["01 delta_T_max"]["unit"] == "J" and by["01 J_required"]["unit"] == "kg·m²"
+    # the question's HTML sets a symbol's subscript as the task sheet does (not «ΔT_нб»)
+    assert "ΔT<sub>нб</sub>" in by["01 delta_T_max"]["text"]
+    assert "M<sub>D</sub>" in by["01 driving_moment"]["text"]
 
 
 def responses_csv(path, key, attempts, qs):

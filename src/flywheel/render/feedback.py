@@ -12,6 +12,7 @@ import re
 from flywheel.render.catalogue import words
 from flywheel.render.grading import MISTAKES, cells_off, table_verdict, verdict_word
 from flywheel.render.numbers import fmt, typography
+from flywheel.render.mathfmt import sub_html
 
 T = words("feedback", {
     "title": "Feedback: {student}, variant {variant}",
@@ -73,9 +74,9 @@ def page(s, lang: str = "en", reveal: bool = True, share: float = 0.0, kind: str
     for j, a in enumerate(s.answers):
         if in_table >> j & 1 and a.passed:
             continue                  # a table's right cell: counted in its table's line
-        cells = [f"{e(label(a.answer, lang, kind))}<br><small>{e(a.answer)}</small>",
+        cells = [f"{sub_html(label(a.answer, lang, kind))}<br><small>{e(a.answer)}</small>",
                  _num(a.given, lang, given=True), e(verdict_word(a, lang)),
-                 e(MISTAKES[lang].get(a.diagnosis, a.diagnosis or t["none"]))]
+                 sub_html(MISTAKES[lang].get(a.diagnosis, a.diagnosis or t["none"]))]
         if reveal:
             cells.append(_num(a.key, lang))
         cells.append(_num(100 * a.tolerance, lang, given=True) + " %")
@@ -83,7 +84,7 @@ def page(s, lang: str = "en", reveal: bool = True, share: float = 0.0, kind: str
         rows.append(f'<tr class="{cls}">' + "".join(f"<td>{c}</td>" for c in cells) + "</tr>")
     for name, right, n, off in s.table_grades:
         cls = "pass" if right == n else "fail"
-        cells = [f"{e(table_title(name, s.marking.table_phi[name], lang))}<br><small>{e(name)}"
+        cells = [f"{sub_html(table_title(name, s.marking.table_phi[name], lang))}<br><small>{e(name)}"
                  "</small>", e(table_verdict(right, n, lang)),
                  e(verdict_word(_Whole(right == n), lang)), e(cells_off(off, lang) or t["none"])]
         cells += [""] if reveal else []

@@ -12,7 +12,10 @@ from __future__ import annotations
 
 from xml.sax.saxutils import escape
 
+from html import escape as html_escape
+
 from flywheel.render.catalogue import words
+from flywheel.render.mathfmt import sub_html
 from flywheel.teaching.moodle import tag
 from flywheel.teaching.tables import cell_floors
 
@@ -56,9 +59,12 @@ def quiz_xml(vs, lang: str = "en") -> str:
             rel = t.tolerance_of(a)
             what, sym, unit, si = _unit_and_words(a, t.kind, lang)
             pct = f"{100 * rel:g}".replace(".", "," if lang == "ru" else ".")
-            text = (tag(v.id, a) + " " + w["question"].format(
-                variant=v.id, what=what, symbol=f" {sym}" if sym else "",
-                unit=f", {unit}" if unit else "", pct=pct))
+            # the question's HTML: the symbol's subscript in <sub> (M<sub>Д</sub>, as the task
+            # sheet sets it), the rest escaped; the tag as it is, for grade to read back
+            text = (html_escape(tag(v.id, a)) + " " + html_escape(w["question"]).format(
+                variant=html_escape(v.id), what=html_escape(what),
+                symbol=f" {sub_html(sym)}" if sym else "",
+                unit=f", {html_escape(unit)}" if unit else "", pct=pct))
             # a table's cell: judged against its column's scale too (teaching/tables.py)
             scale = max(abs(value), floors.get(a, 0.0))
             absolute = rel * scale if scale else rel
