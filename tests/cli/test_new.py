@@ -74,3 +74,21 @@ def test_an_unknown_kind_and_a_missing_folder(tmp_path):
     res = flywheel("new", "four-bar", "no/such/folder.toml", cwd=tmp_path)
     assert res.returncode == 2 and res.stderr.count("\n") == 1
     assert list(tmp_path.iterdir()) == []
+
+
+@pytest.mark.parametrize("kind, field, want", [
+    ("v-compressor", "cylinders", ["ВД", "НД"]),
+    ("shaper", "forces", ["пс"]),
+    ("slider-crank", "forces", ["пс"]),
+])
+def test_a_starters_loads_are_named_in_russian(tmp_path, kind, field, want):
+    """A case begun from `flywheel new` names its cylinders and forces in the Russian outputs
+    as the bundled cases do («цилиндр ВД», F_пс): the starters gave none, and a student's
+    record said «цилиндр HP», «F(cutting)»."""
+    from flywheel.cases.run import load_case
+    from flywheel.io.text import in_language
+
+    path = tmp_path / "c.toml"
+    path.write_text(starter_text(kind, "ru"), encoding="utf-8")
+    got = [in_language(x.label, "ru") for x in getattr(load_case(path), field)]
+    assert got == want
