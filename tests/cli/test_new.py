@@ -92,3 +92,25 @@ def test_a_starters_loads_are_named_in_russian(tmp_path, kind, field, want):
     path.write_text(starter_text(kind, "ru"), encoding="utf-8")
     got = [in_language(x.label, "ru") for x in getattr(load_case(path), field)]
     assert got == want
+
+
+@pytest.mark.parametrize("kind", list(KINDS))
+def test_a_starters_title_and_source_are_in_both_languages(kind):
+    """The starters' title and source in both languages (an untouched starter's Russian record
+    had an English title, «Two-stage V-type air compressor», and «(starter case)»)."""
+    import tomllib
+
+    data = tomllib.loads(starter_text(kind, "ru"))
+    for field in ("title", "source"):
+        ru, en = data[field]["ru"], data[field]["en"]
+        assert ru != en and re.search("[а-яё]", ru) and not re.search("[а-яё]", en), (field, ru)
+
+
+def test_a_starters_force_is_named_in_russian_in_its_record(tmp_path):
+    """The shaper's starter: «сила резания» in the Russian record (it said «сила cutting»)."""
+    res = flywheel("new", "shaper", "--lang", "ru", cwd=tmp_path)
+    assert res.returncode == 0, res.stderr
+    res = flywheel("run", "shaper.toml", "--lang", "ru", "--no-plots", "--out", "o", cwd=tmp_path)
+    assert res.returncode == 0, res.stderr
+    md = (tmp_path / "o" / "report.md").read_text(encoding="utf-8")
+    assert "сила резания" in md and "cutting" not in md and "starter case" not in md
