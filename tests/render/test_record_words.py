@@ -242,3 +242,19 @@ def test_a_points_coordinates_are_set_apart_by_a_semicolon_in_russian():
         with typography(lang):
             md = markdown(_run_document("fourbar_rocker_load", lang)[2])
         assert row_g in md and row_E in md, lang
+
+
+@pytest.mark.parametrize("name, words, not_words", [
+    ("engine_4stroke", ("Звено 3 последней группы (ползун)", "Крайние положения звена 3"),
+     ("Выходное звено", "выходного звена", "выходному звену")),
+    ("compressor", ("Выходное звено 5 (ползун)", "Крайние положения выходного звена 5"),
+     ("последней группы",)),
+])
+def test_an_engines_piston_is_not_called_its_output_link(name, words, not_words):
+    """An engine's given forces drive it: its output is the crank, and the piston of its last
+    group is «звено 3 последней группы», not «выходное звено 3» (a driven compressor's is)."""
+    from flywheel.render.numbers import typography
+
+    with typography("ru"):
+        md = markdown(_run_document(name, "ru")[2])
+    assert all(w in md for w in words) and not any(w in md for w in not_words), name

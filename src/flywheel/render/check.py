@@ -208,7 +208,8 @@ def print_check(report, console=None, lang: str = "en") -> None:
     if report.output_link is not None:                  # render/output_link.py
         from flywheel.render.output_link import print_check as print_output_link
 
-        print_output_link(report.output_link, console, lang)
+        print_output_link(report.output_link, console, lang,
+                          driven=case.machine.balance == "resistance")
     console.print(f"[green]{w['valid']}[/green]")
 
 

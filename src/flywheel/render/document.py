@@ -338,7 +338,8 @@ def build_document(results, lang: str = "en", plots: list[str] | None = None,
     if s.output_link is not None:                        # render/output_link.py
         from flywheel.render.output_link import add_report_section
 
-        add_report_section(b, s.output_link, lang, "2.1")
+        add_report_section(b, s.output_link, lang, "2.1",
+                           driven=results.energy.balance == "resistance")
 
     # 3. reduction ----------------------------------------------------------------------------
     b.add(Heading(2, t["red"]))

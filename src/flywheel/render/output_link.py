@@ -14,6 +14,11 @@ W = words("output_link", {
     "kind": {"rocker": "rocker", "slotted link": "slotted link", "slider": "slider"},
     "extreme": "extreme position", "output_angle": "angle of the link", "output_x": "x along the guide",
     "caption": "Extreme positions of the output link {link}",
+    # a machine its given forces drive (an engine: balance "resistance"): the crank is its
+    # output, the last group's slider the piston its gas drives, not an output link
+    "title_driven": "Link {link} of the last group ({kind}): extreme positions, time ratio, "
+                    "transmission angle",
+    "caption_driven": "Extreme positions of link {link}",
     "swing": "swing of the rocker {sym} = {v}°",
     "stroke": "stroke of the slider {sym} = {v} {u}",
     "strokes": ("working stroke {w}°, return stroke {r}° of the crank (the slower stroke taken as "
@@ -24,6 +29,10 @@ W = words("output_link", {
     "note": ("Extreme positions where the output's velocity analogue vanishes (found by "
              "bisection); transmission angle: the acute angle between the force the group "
              "passes to the output link and that link's velocity, 90° minus the pressure angle."),
+    "note_driven": ("Extreme positions where the link's velocity analogue vanishes (found by "
+                    "bisection); transmission angle: the acute angle between the force the "
+                    "group passes to the link and that link's velocity, 90° minus the pressure "
+                    "angle."),
 })
 
 
@@ -32,20 +41,23 @@ def _n(x: float, lang: str, digits: int = 6) -> str:
     return fmt(x, digits, zero=1e-12)
 
 
-def title(ol, lang: str) -> str:
+def title(ol, lang: str, driven: bool = False) -> str:
+    """The section's title; ``driven``: the machine's given forces drive it (an engine), so
+    that the crank is its output and the link is not called so."""
     w = W[lang]
-    return w["title"].format(link=ol.link, kind=w["kind"][ol.kind])
+    return w["title_driven" if driven else "title"].format(link=ol.link, kind=w["kind"][ol.kind])
 
 
-def table(ol, lang: str) -> tuple[str, list[str], list[list[str]]]:
-    """(caption, header, rows): each extreme's crank angle and the output's angle or x."""
+def table(ol, lang: str, driven: bool = False) -> tuple[str, list[str], list[list[str]]]:
+    """(caption, header, rows): each extreme's crank angle and the output's angle or x
+    (``driven``: as :func:`title`)."""
     w = W[lang]
     value = (nm.heading("x", lang, label=w["output_x"]) if ol.kind == "slider" else
              f"{w['output_angle']}, °" if lang == "ru" else f"{w['output_angle']} [deg]")
     header = [w["extreme"], nm.heading("phi_deg", lang), value]
     rows = [[str(i), _n(p, lang, 8), _n(v, lang, 6)]
             for i, (p, v) in enumerate(zip(ol.extremes_phi_deg, ol.extremes_output), 1)]
-    return w["caption"].format(link=ol.link), header, rows
+    return w["caption_driven" if driven else "caption"].format(link=ol.link), header, rows
 
 
 def lines(ol, lang: str) -> list[str]:
@@ -68,25 +80,25 @@ def lines(ol, lang: str) -> list[str]:
     return out
 
 
-def add_report_section(b, ol, lang: str, number: str) -> None:
+def add_report_section(b, ol, lang: str, number: str, driven: bool = False) -> None:
     """The record's section ``number`` (a sub-section of the kinematics) into the builder ``b``
-    of :mod:`flywheel.render.document`."""
+    of :mod:`flywheel.render.document` (``driven``: as :func:`title`)."""
     from flywheel.render.blocks import Bullets, Heading, Paragraph
 
-    b.add(Heading(3, f"{number}. {title(ol, lang)}"))
-    b.add(Paragraph(W[lang]["note"]))
-    caption, header, rows = table(ol, lang)
+    b.add(Heading(3, f"{number}. {title(ol, lang, driven)}"))
+    b.add(Paragraph(W[lang]["note_driven" if driven else "note"]))
+    caption, header, rows = table(ol, lang, driven)
     b.table(caption, header, rows)
     b.add(Bullets(tuple(lines(ol, lang))))
 
 
-def print_check(ol, console, lang: str) -> None:
-    """The section of `flywheel check` (rich)."""
+def print_check(ol, console, lang: str, driven: bool = False) -> None:
+    """The section of `flywheel check` (rich; ``driven``: as :func:`title`)."""
     from rich.markup import escape
     from rich.table import Table
 
-    caption, header, rows = table(ol, lang)
-    t = Table(title=escape(title(ol, lang)))
+    caption, header, rows = table(ol, lang, driven)
+    t = Table(title=escape(title(ol, lang, driven)))
     for i, col in enumerate(header):
         t.add_column(escape(col), justify="left" if i == 0 else "right")
     for r in rows:
