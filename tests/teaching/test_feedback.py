@@ -2,6 +2,7 @@
 and the diagnosis column of the gradebook."""
 import csv
 import math
+import re
 from html.parser import HTMLParser
 
 import pytest
@@ -151,6 +152,10 @@ def test_a_task2_page_names_the_answers_as_its_task_sheet_does(tmp_path_factory,
     page = next(out.glob("*.html"))
     J = next(r[0] for r in parse(page) if "J_required" in r[0])
     assert "Jпр" in J and "обеспечивающий заданный δ" in J and "первой группы" not in J, J
+    # a key within 0.001 % (ω_max) expected to the digits its tolerance tells apart, not to
+    # the four digits of a result (ω_max and ω_min had both read «250»)
+    w = next(r for r in parse(page) if "omega_max" in r[0])
+    assert re.fullmatch(r"\d+,\d{3,}", w[4]), w
     # the symbols' subscripts as the task sheet sets them, in <sub> (not «J_пр»)
     text = page.read_text(encoding="utf-8")
     assert "J<sub>пр</sub>" in text and "ΔT<sub>нб</sub>" in text and "J_пр" not in text

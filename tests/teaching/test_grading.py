@@ -357,6 +357,12 @@ def test_the_whole_report_in_russian(tmp_path, key_dir, key):
         assert re.search(rf"│ {sym} +│", ru.stdout), sym
     for k in ("omega_max", "J_required", "delta_T_max"):
         assert k not in ru.stdout and re.search(rf"│ {k} +│", en.stdout), k
+    # a key within 0.001 % (ω_max, ω_min) to the digits its tolerance tells apart: «250,0103»,
+    # not the four digits of a result («250», ω_min's too)
+    rows = [[c.strip() for c in ln.split("│")[1:-1]] for ln in ru.stdout.splitlines()
+            if ln.startswith("│ ω_m")]
+    keys = [r[2] for r in rows if len(r) >= 6]            # a student's table: the key column
+    assert keys and all(re.fullmatch(r"\d+,\d{3,}", v) for v in keys), keys
     assert not re.search(r"\d\.\d", ru.stdout)
     assert same_numbers(ru_numbers(ru.stdout), en_numbers(en.stdout))
 

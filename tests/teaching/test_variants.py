@@ -296,3 +296,22 @@ def test_variants_names_and_texts_at_most_1000_characters():
         line = str(e.value)
         assert line.startswith(f"t.toml: {where}") and "1001 characters" in line
         assert "at most 1000" in line and len(line) < 300
+
+
+def test_the_russian_table_of_variants_names_answers_by_symbols_and_tells_keys_apart(tmp_path):
+    """`variants --lang ru` lists each variant's answers by the task sheet's symbols (M_С, ω_max,
+    J_пр; it printed the keys) and each to the digits its tolerance tells apart: task2's ω_max
+    and ω_min, within 0.001 %, as «250,0103» and «249,9926» (both had read «250»)."""
+    import re
+
+    res = CliRunner().invoke(app, ["variants", str(CASES / "variants_task2.toml"), "--count", "2",
+                                   "--seed", "4", "--out", str(tmp_path / "v"), "--lang", "ru"],
+                             env={"COLUMNS": "160"})
+    assert res.exit_code == 0, res.output
+    cells = [c.strip() for ln in res.stdout.splitlines() if ln.startswith("│")
+             for c in ln.split("│")[1:-1]]
+    answers = [c for c in cells if re.match(r"^(M_С|ω_max|ω_min|δ|ΔT_нб|J_пр) = ", c)]
+    assert len(answers) == 12 and not any("omega_m" in c or "J_required" in c for c in cells)
+    for c in answers:
+        if c.startswith("ω_m"):
+            assert re.fullmatch(r"ω_m(ax|in) = \d+,\d{3,}", c), c

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from flywheel.render.catalogue import words
 from flywheel.render.numbers import fmt as _number
-from flywheel.render.numbers import russian
+from flywheel.render.numbers import russian, to_tolerance
 
 # sentence templates of the class summary and the gradebook (the quantities' names are
 # answers' keys, which stay as the key spells them; a Russian report names them by their
@@ -55,17 +55,17 @@ MISTAKES = words("mistake", {
 })
 
 
-def answer_names(r, lang: str = "en") -> dict[str, str]:
-    """How the report's tables and lists name the answers of the report ``r``: in Russian by
-    the symbols the task sheet of the key's kind prints («M_Д», «ΔT_нб», «J_пр»), where two
-    answers share one (a disk's D and a rim's) and for a table's cell by the key the students'
-    sheet spells; in English by the key."""
+def answer_names(answers, kind: str = "run", lang: str = "en") -> dict[str, str]:
+    """How the tables and lists of `grade` and `variants` name the ``answers`` of a ``kind``
+    key ("run", "task2"): in Russian by the symbols the task sheet prints («M_Д», «ΔT_нб»,
+    «J_пр»), where two answers share one (a disk's D and a rim's) and for a table's cell by
+    the key the students' sheet spells; in English by the key."""
     from flywheel.render.sheet_labels import answer_words, cell_words
 
-    keys = list(r.key.answers)
+    keys = list(answers)
     if lang != "ru":
         return {a: a for a in keys}
-    sym = {a: ("" if cell_words(a, lang) is not None else answer_words(r.key.kind, a, lang)[1])
+    sym = {a: ("" if cell_words(a, lang) is not None else answer_words(kind, a, lang)[1])
            for a in keys}
     taken = [v for v in sym.values() if v]
     return {a: sym[a] if sym[a] and taken.count(sym[a]) == 1 else a for a in keys}
@@ -180,7 +180,7 @@ def print_class_summary(r, lang: str = "en", console=None) -> None:
     full = sum(s.passed == s.total for s in r.students)
     console.print(t["full"].format(k=full, n=len(r.students)), highlight=False)
     worst = r.most_often_wrong()
-    shown = answer_names(r, lang)
+    shown = answer_names(r.key.answers, r.key.kind, lang)
     console.print(f"{t['wrong']}: " + (t["none"] if worst is None else
                   f"{', '.join(shown.get(a, a) for a in worst[0])} ({worst[1]} {t['of']} "
                   f"{len(r.students)}"
@@ -228,10 +228,13 @@ def print_variants(vs, out, console=None, sheets: str | None = None, lang: str =
     table.add_column(w["v_variant"], no_wrap=True)
     table.add_column(w["v_drawn"], style="cyan")
     table.add_column(w["v_answers"])
+    shown = answer_names(t.answers, t.kind, lang)
     for v in vs.variants:
         table.add_row(v.id, "\n".join(f"{p.path} = {_g(v.drawn[p.path], given=True)}"
                                      for p in t.varied),
-                      "\n".join(f"{a} = {_g(v.answers[a])}" for a in t.answers))
+                      "\n".join(f"{shown[a]} = "
+                                f"{_g(v.answers[a], to_tolerance(v.answers[a], t.tolerance_of(a)) or '.6g')}"
+                                for a in t.answers))
     console.print(table)
     for x in vs.warnings:
         console.print(f"[yellow]{prefix('warning', lang)}:[/] {message(x, lang)}")
@@ -265,7 +268,7 @@ def print_report(r, console=None, lang: str = "en") -> None:
 
     t = TEXT[lang]
     console = console or Console()
-    shown = answer_names(r, lang)
+    shown = answer_names(r.key.answers, r.key.kind, lang)
     for s in (r.students if len(r.students) <= DETAIL_STUDENTS else ()):
         table = Table(title=t["student_title"].format(student=s.student, variant=s.variant,
                                                       passed=s.passed, total=s.total,
@@ -292,7 +295,9 @@ def print_report(r, console=None, lang: str = "en") -> None:
             mark = f"[green]{t['pass']}[/]" if a.passed else (
                 f"[yellow]{t['carried']}[/]" if a.verdict == "carried" else
                 f"[red]{t['fail']}[/]" if a.given is not None else f"[red]{t['no_answer']}[/]")
-            cells = [shown.get(a.answer, a.answer), _g(a.given, given=True), _g(a.key), err,
+            key = _g(a.key, (to_tolerance(a.key, a.tolerance) if a.error_kind == "relative"
+                             else None) or ".6g")   # the digits its tolerance tells apart
+            cells = [shown.get(a.answer, a.answer), _g(a.given, given=True), key, err,
                      f"{_pct_of(a.tolerance)} %", mark]
             if explained:
                 cells.append(MISTAKES[lang].get(a.diagnosis, a.diagnosis or ""))

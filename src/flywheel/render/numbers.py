@@ -219,6 +219,25 @@ def fmt(x, sig: int = 6, *, zero: float | None = 1e-12, spec: str | None = None,
     return format(x, spec or f".{sig}g")
 
 
+def to_tolerance(x: float, tolerance: float, sig: int = RESULT_SIG, most: int = 12) -> str | None:
+    """A ".{d}f" spec that writes an answer ``x`` to a tenth of its relative ``tolerance``
+    where ``sig`` significant digits (the Russian policy's cap) would not: a key of ω_max
+    within 0.001 % as «250,0101», not «250», beside a student's «250,01»; None where ``sig``
+    digits do (a 1 % tolerance), or at most ``most`` decimals could not.
+
+    >>> to_tolerance(250.0101036, 1e-5), to_tolerance(197.9, 0.01), to_tolerance(7.06e-5, 0.01)
+    ('.4f', None, None)
+    """
+    if not x or not tolerance or not math.isfinite(x) or not math.isfinite(tolerance):
+        return None
+    step = abs(x) * tolerance / 10                          # the digit the answer needs
+    last = 10.0 ** (math.floor(math.log10(abs(x))) - sig + 1)   # the last of sig digits
+    if last <= step:
+        return None
+    d = max(0, math.ceil(-math.log10(step)))
+    return f".{d}f" if d <= most else None
+
+
 def apart(a: float, b: float, sig: int = RESULT_SIG, most: int = 9) -> str | None:
     """A format spec that writes ``a`` and ``b`` differently where ``sig`` significant digits
     (the Russian policy's cap) write them alike: ".{d}f" with one decimal more than the fewest
