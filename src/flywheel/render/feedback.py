@@ -10,8 +10,8 @@ import html
 import re
 
 from flywheel.render.catalogue import words
-from flywheel.render.grading import MISTAKES, cells_off, table_verdict, verdict_word
-from flywheel.render.numbers import fmt, to_tolerance, typography
+from flywheel.render.grading import MISTAKES, cells_off, key_spec, table_verdict, verdict_word
+from flywheel.render.numbers import fmt, typography
 from flywheel.render.mathfmt import sub_html
 
 T = words("feedback", {
@@ -36,12 +36,6 @@ def _num(x, lang: str, given: bool = False, spec: str | None = None) -> str:
         return "—"
     with typography(lang):
         return fmt(x, 6, spec=spec, zero=None, nonfinite="show", given=given)
-
-
-def _key_spec(a) -> str | None:
-    """The digits of an answer's key that its tolerance tells apart (numbers.to_tolerance; a
-    key of 0, judged absolutely, as it is)."""
-    return to_tolerance(a.key, a.tolerance) if a.error_kind == "relative" else None
 
 
 def label(answer: str, lang: str, kind: str = "run") -> str:
@@ -85,7 +79,7 @@ def page(s, lang: str = "en", reveal: bool = True, share: float = 0.0, kind: str
                  _num(a.given, lang, given=True), e(verdict_word(a, lang)),
                  sub_html(MISTAKES[lang].get(a.diagnosis, a.diagnosis or t["none"]))]
         if reveal:
-            cells.append(_num(a.key, lang, spec=_key_spec(a)))
+            cells.append(_num(a.key, lang, spec=key_spec(a)))
         cells.append(_num(100 * a.tolerance, lang, given=True) + " %")
         cls = a.verdict.replace(" ", "-")
         rows.append(f'<tr class="{cls}">' + "".join(f"<td>{c}</td>" for c in cells) + "</tr>")

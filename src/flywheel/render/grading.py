@@ -71,6 +71,26 @@ def answer_names(answers, kind: str = "run", lang: str = "en") -> dict[str, str]
     return {a: sym[a] if sym[a] and taken.count(sym[a]) == 1 else a for a in keys}
 
 
+def key_spec(a) -> str | None:
+    """The digits of an answer's key (an AnswerGrade's) that its tolerance tells apart
+    (numbers.to_tolerance; a key of 0, judged absolutely, as it is): the report's «ключ» and a
+    feedback page's «ожидалось»."""
+    return to_tolerance(a.key, a.tolerance) if a.error_kind == "relative" else None
+
+
+def _most_often_wrong(r, lang: str, shown: dict | None = None) -> str:
+    """The answers of the report ``r`` most often wrong, «J_I, D (2 из 3 каждый)», named as
+    :func:`answer_names` names them (``shown``, if at hand); «нет» if none."""
+    t = TEXT[lang]
+    worst = r.most_often_wrong()
+    if worst is None:
+        return t["none"]
+    shown = shown or answer_names(r.key.answers, r.key.kind, lang)
+    names, count = worst
+    return (f"{', '.join(shown.get(a, a) for a in names)} ({count} {t['of']} {len(r.students)}"
+            + (f" {t['each']})" if len(names) > 1 else ")"))
+
+
 def verdict_word(a, lang: str = "en") -> str:
     """An answer's verdict as the gradebook and the feedback say it."""
     t = TEXT[lang]
@@ -179,12 +199,7 @@ def print_class_summary(r, lang: str = "en", console=None) -> None:
     console.print(dist)
     full = sum(s.passed == s.total for s in r.students)
     console.print(t["full"].format(k=full, n=len(r.students)), highlight=False)
-    worst = r.most_often_wrong()
-    shown = answer_names(r.key.answers, r.key.kind, lang)
-    console.print(f"{t['wrong']}: " + (t["none"] if worst is None else
-                  f"{', '.join(shown.get(a, a) for a in worst[0])} ({worst[1]} {t['of']} "
-                  f"{len(r.students)}"
-                  + (f" {t['each']})" if len(worst[0]) > 1 else ")")), highlight=False)
+    console.print(f"{t['wrong']}: {_most_often_wrong(r, lang)}", highlight=False)
     for key, names in (("nothing", [s.student for s in r.handed_in_nothing]),
                        ("unassigned", r.unassigned_variants())):
         if names:
@@ -295,8 +310,7 @@ def print_report(r, console=None, lang: str = "en") -> None:
             mark = f"[green]{t['pass']}[/]" if a.passed else (
                 f"[yellow]{t['carried']}[/]" if a.verdict == "carried" else
                 f"[red]{t['fail']}[/]" if a.given is not None else f"[red]{t['no_answer']}[/]")
-            key = _g(a.key, (to_tolerance(a.key, a.tolerance) if a.error_kind == "relative"
-                             else None) or ".6g")   # the digits its tolerance tells apart
+            key = _g(a.key, key_spec(a) or ".6g")     # the digits its tolerance tells apart
             cells = [shown.get(a.answer, a.answer), _g(a.given, given=True), key, err,
                      f"{_pct_of(a.tolerance)} %", mark]
             if explained:
@@ -330,14 +344,10 @@ def print_report(r, console=None, lang: str = "en") -> None:
             per.add_row(shown.get(a, a), f"{w}/{n}",
                         f"{_pct_of(r.key.tolerance_of(a, r.tolerance))} %")
         console.print(per)
-        worst = r.most_often_wrong()
         full = sum(s.passed == s.total for s in r.students)
-        console.print(t["stats"].format(
-            mean=_pct(r.mean_score), k=full, n=len(r.students),
-            worst=t["none"] if worst is None else
-            f"{', '.join(shown.get(a, a) for a in worst[0])} ({worst[1]} {t['of']} "
-            f"{len(r.students)}" + (f" {t['each']})" if len(worst[0]) > 1 else ")")),
-            highlight=False)
+        console.print(t["stats"].format(mean=_pct(r.mean_score), k=full, n=len(r.students),
+                                        worst=_most_often_wrong(r, lang, shown)),
+                      highlight=False)
         carried = sum(s.carried_count for s in r.students)
         if carried:
             share = _number(r.carried_share, sig=3)
