@@ -186,3 +186,38 @@ def test_no_tables_no_change_and_a_bad_list_is_one_line(made, tmp_path):
                                   str(tmp_path / "o")])
         assert res.exit_code == 2 and words in res.output, res.output
         assert len(res.output.strip().splitlines()) == 1
+
+
+def test_the_russian_report_names_tables_rows_and_columns_as_the_sheet_does(made, tmp_path):
+    """`grade --lang ru` lists a table by its Russian name and a cell by its column's symbol
+    and its row as the task sheet prints them (a position's number, a pair «A (1→2)»): the
+    report had printed the keys («delta_T.4.T_II», «строка A:1->2: R неверно»). The
+    gradebook's diagnosis and the feedback page say the rows so too; English keeps the keys
+    but prints a pair as the sheet does."""
+    key = key_of(made / "v")
+    vid, ans = next(iter(key["variants"].items()))
+    wrong = dict(ans)
+    wrong["delta_T.4.T_II"] = ans["delta_T.4.T_II"] * (30 / math.pi) ** 2   # a named mistake
+    wrong["analogues.3.vq_B"] *= 1.3
+    wrong["analogues.7.vq_B"] *= 1.3
+    wrong["reactions.A:1->2.R"] *= 0.9
+    sheet = write(tmp_path / "s.csv", key, [("m", vid, wrong)])
+    res = runner.invoke(app, ["grade", str(made / "v" / "answers.json"), str(sheet),
+                              "--lang", "ru", "--gradebook", str(tmp_path / "book.csv"),
+                              "--feedback", str(tmp_path / "fb")], env={"COLUMNS": "200"})
+    assert res.exit_code == 0, res.output
+    out = res.stdout
+    assert "T_II, положение 4" in out and "delta_T.4.T_II" not in out
+    assert "положения 3, 7: v_q(B) неверно" in out
+    assert "пара A (1→2): R неверно" in out
+    assert "аналоги скоростей" in out and "реакции в парах" in out
+    assert "analogues" not in out and "A:1->2" not in out and "строк" not in out
+    with open(tmp_path / "book.csv", encoding="utf-8") as f:
+        book = next(csv.DictReader(f))
+    assert "delta_T: положение 4: T_II неверно" in book["диагностика"]
+    page = next((tmp_path / "fb").iterdir()).read_text(encoding="utf-8")
+    assert "пара A (1→2): R неверно" in page
+    assert "реакция в кинематической паре A (1→2): модуль" in page
+    english = runner.invoke(app, ["grade", str(made / "v" / "answers.json"), str(sheet)],
+                            env={"COLUMNS": "200"})
+    assert "rows 3, 7: vq_B off" in english.stdout and "pair A (1→2): R off" in english.stdout

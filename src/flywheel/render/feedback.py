@@ -87,7 +87,7 @@ def page(s, lang: str = "en", reveal: bool = True, share: float = 0.0, kind: str
         cls = "pass" if right == n else "fail"
         cells = [f"{sub_html(table_title(name, s.marking.table_phi[name], lang))}<br><small>{e(name)}"
                  "</small>", e(table_verdict(right, n, lang)),
-                 e(verdict_word(_Whole(right == n), lang)), e(cells_off(off, lang) or t["none"])]
+                 e(verdict_word(_Whole(right == n), lang)), e(cells_off(off, lang, name) or t["none"])]
         cells += [""] if reveal else []
         cells.append("")
         rows.append(f'<tr class="{cls}">' + "".join(f"<td>{c}</td>" for c in cells) + "</tr>")

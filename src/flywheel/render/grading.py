@@ -35,7 +35,9 @@ TEXT = words("grading", {"summary": "Class summary: {n} graded, mean score {mean
                          "carried_note": "carried forward: {n} answer(s) consistent with the "
                          "student's earlier ones, credited {share} each",
                          "cells": "{right}/{n} cells", "off_row": "row {rows}: {column} off",
-                         "off_rows": "rows {rows}: {column} off"})
+                         "off_rows": "rows {rows}: {column} off",
+                         "off_pair": "pair {rows}: {column} off",
+                         "off_pairs": "pairs {rows}: {column} off"})
 
 #: the names of the classic mistakes of teaching/mistakes.py's catalogue (by code), as the
 #: feedback and the gradebook say them
@@ -58,16 +60,17 @@ MISTAKES = words("mistake", {
 def answer_names(answers, kind: str = "run", lang: str = "en") -> dict[str, str]:
     """How the tables and lists of `grade` and `variants` name the ``answers`` of a ``kind``
     key ("run", "task2"): in Russian by the symbols the task sheet prints («M_Д», «ΔT_нб»,
-    «J_пр»), where two answers share one (a disk's D and a rim's) and for a table's cell by
-    the key the students' sheet spells; in English by the key."""
-    from flywheel.render.sheet_labels import answer_words, cell_words
+    «J_пр»; a table's cell by its column and row, «T_II, положение 4»; a table by its short
+    name, «работа и энергия»), where two answers share one symbol (a disk's D and a rim's) by
+    the key; in English by the key."""
+    from flywheel.render.sheet_labels import TABLE_NAMES, answer_words, cell_name, table_name
 
     keys = list(answers)
     if lang != "ru":
         return {a: a for a in keys}
-    sym = {a: ("" if cell_words(a, lang) is not None else answer_words(kind, a, lang)[1])
-           for a in keys}
-    taken = [v for v in sym.values() if v]
+    sym = {a: (table_name(a, lang) if a in TABLE_NAMES else cell_name(a, lang)
+               or answer_words(kind, a, lang)[1]) for a in keys}
+    taken = list(sym.values())
     return {a: sym[a] if sym[a] and taken.count(sym[a]) == 1 else a for a in keys}
 
 
@@ -85,7 +88,7 @@ def _most_often_wrong(r, lang: str, shown: dict | None = None) -> str:
     worst = r.most_often_wrong()
     if worst is None:
         return t["none"]
-    shown = shown or answer_names(r.key.answers, r.key.kind, lang)
+    shown = shown or answer_names(r.key.answers + tuple(r.key.tables), r.key.kind, lang)
     names, count = worst
     return (f"{', '.join(shown.get(a, a) for a in names)} ({count} {t['of']} {len(r.students)}"
             + (f" {t['each']})" if len(names) > 1 else ")"))
@@ -106,15 +109,23 @@ def diagnosis_text(s, lang: str = "en") -> str:
     names = s.marking.names
     parts = [f"{names[j]}: {m.get(code, code)}" for j, code in sorted(s.diagnoses)]
     parts += [f"{name}: {off}" for name, _, _, cells in s.table_grades
-              if (off := cells_off(cells, lang))]
+              if (off := cells_off(cells, lang, name))]
     return "; ".join(parts)
 
 
-def cells_off(off, lang: str = "en") -> str:
-    """A table's cells off, by column: «rows 3, 7: vq_B off; row 5: vq_C off»."""
+def cells_off(off, lang: str = "en", table: str = "") -> str:
+    """A table's cells off, by column: «rows 3, 7: vq_B off; row 5: vq_C off»; a reaction's
+    row as the sheet prints it, «O (0→1)»; in Russian by the sheet's words and column
+    symbols: «положения 3, 7: v_q(B) неверно», «пара O (0→1): R неверно»."""
+    from flywheel.render.sheet_labels import TABLE_ROWS, column_symbol, row_text
+
     t = TEXT[lang]
-    return "; ".join(t["off_row" if len(rows) == 1 else "off_rows"].format(
-        rows=", ".join(rows), column=column) for column, rows in off)
+    pair = TABLE_ROWS.get(table) == "joint"
+    word = ("off_pair", "off_pairs") if pair else ("off_row", "off_rows")
+    return "; ".join(t[word[len(rows) > 1]].format(
+        rows=", ".join(row_text(table, r) for r in rows),
+        column=column_symbol(table, column, lang) if lang == "ru" else column)
+        for column, rows in off)
 
 
 def table_verdict(right: int, n: int, lang: str = "en") -> str:
@@ -283,7 +294,7 @@ def print_report(r, console=None, lang: str = "en") -> None:
 
     t = TEXT[lang]
     console = console or Console()
-    shown = answer_names(r.key.answers, r.key.kind, lang)
+    shown = answer_names(r.key.answers + tuple(r.key.tables), r.key.kind, lang)
     for s in (r.students if len(r.students) <= DETAIL_STUDENTS else ()):
         table = Table(title=t["student_title"].format(student=s.student, variant=s.variant,
                                                       passed=s.passed, total=s.total,
@@ -318,8 +329,8 @@ def print_report(r, console=None, lang: str = "en") -> None:
             table.add_row(*cells)
         for name, right, n, off in s.table_grades:
             mark = f"[green]{t['pass']}[/]" if right == n else f"[red]{t['fail']}[/]"
-            table.add_row(name, table_verdict(right, n, lang), "", "", "", mark,
-                          cells_off(off, lang))
+            table.add_row(shown.get(name, name), table_verdict(right, n, lang), "", "", "",
+                          mark, cells_off(off, lang, name))
         console.print(table)
 
     if r.students:

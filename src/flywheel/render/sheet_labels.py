@@ -316,9 +316,15 @@ SHEET_TABLES: dict[str, tuple[str, str]] = {
     "reactions": ("Reactions in the kinematic pairs at φ = {a:g}°",
                   "Реакции в кинематических парах при φ = {a:g}°"),
 }
+#: a table's short name in a list of answers (`grade`'s report): (English, Russian)
+TABLE_NAMES = {"analogues": ("analogues", "аналоги скоростей"),
+               "delta_T": ("delta_T", "работа и энергия"),
+               "reactions": ("reactions", "реакции в парах")}
+#: what a table's row is (teaching/tables.py's ``row_label``)
+TABLE_ROWS = {"analogues": "position", "delta_T": "position", "reactions": "joint"}
 #: what a table's row is: (English, Russian)
 SHEET_ROWS = {"position": ("position", "положение"), "joint": ("pair", "кинематическая пара"),
-              "at": ("at position {row}", "в положении {row}")}
+              "at": ("at position {row}", "в положении {row}"), "pair": ("pair", "пара")}
 
 
 def table_title(table: str, phi_deg: float, lang: str = "en") -> str:
@@ -328,6 +334,24 @@ def table_title(table: str, phi_deg: float, lang: str = "en") -> str:
 
 def row_word(row_label: str, lang: str = "en") -> str:
     return SHEET_ROWS[row_label][lang == "ru"]
+
+
+def pair_label(joint: str) -> str:
+    """A reaction's row as the sheet prints it: ``O:0->1`` → «O (0→1)», the force of link 0
+    on link 1 at O."""
+    point, _, links = joint.partition(":")
+    return f"{point} ({links.replace('->', '→')})" if links else joint
+
+
+def row_text(table: str, row: str) -> str:
+    """A table's row label as the sheet prints it: a position's number, a pair «O (0→1)»."""
+    return pair_label(row) if TABLE_ROWS.get(table) == "joint" else row
+
+
+def table_name(table: str, lang: str = "en") -> str:
+    """A table's short name in `grade`'s lists: the key in English, «аналоги скоростей» in
+    Russian."""
+    return TABLE_NAMES[table][lang == "ru"] if table in TABLE_NAMES else table
 
 
 def _cell_parts(key: str) -> tuple[str, str, str] | None:
@@ -342,15 +366,33 @@ def _cell_parts(key: str) -> tuple[str, str, str] | None:
 def column_heading(table: str, column: str, lang: str = "en") -> str:
     """A table's column head: the symbol, its point or link, the unit («v_q(B), м/рад»,
     "R_x [N]")."""
-    term = f"{column}_O" if table == "reactions" else column
-    sym = symbol(term, lang)
-    m = re.fullmatch(r"(?:vq|omega_q)_(.+)", column)
-    if m:
-        sym = f"{sym}({m.group(1)})"
-    u = unit_of(term, lang)
+    sym = column_symbol(table, column, lang)
+    u = unit_of(f"{column}_O" if table == "reactions" else column, lang)
     if u in ("–", "-", ""):
         return sym
     return f"{sym}, {u}" if lang == "ru" else f"{sym} [{u}]"
+
+
+def column_symbol(table: str, column: str, lang: str = "en") -> str:
+    """A table's column symbol as its head prints it, with its point or link («v_q(B)»,
+    «ΔT_I», «R_x»)."""
+    sym = symbol(f"{column}_O" if table == "reactions" else column, lang)
+    m = re.fullmatch(r"(?:vq|omega_q)_(.+)", column)
+    return f"{sym}({m.group(1)})" if m else sym
+
+
+def cell_name(key: str, lang: str = "en") -> str | None:
+    """A table's cell as `grade`'s Russian report lists it: its column's symbol and its row
+    («T_II, положение 4», «R, пара O (0→1)»); in English the key; None if ``key`` is no
+    cell."""
+    parts = _cell_parts(key)
+    if parts is None:
+        return None
+    if lang != "ru":
+        return key
+    table, row, column = parts
+    word = SHEET_ROWS["pair" if TABLE_ROWS.get(table) == "joint" else "position"][1]
+    return f"{column_symbol(table, column, lang)}, {word} {row_text(table, row)}"
 
 
 def cell_words(key: str, lang: str = "en") -> tuple[str, str, str] | None:
@@ -360,7 +402,7 @@ def cell_words(key: str, lang: str = "en") -> tuple[str, str, str] | None:
     if parts is None:
         return None
     table, row, column = parts
-    term = f"{column}_{row}" if table == "reactions" else column
+    term = f"{column}_{pair_label(row)}" if table == "reactions" else column
     try:
         what, sym, u = name(term, lang), symbol(term, lang), unit_of(term, lang)
     except KeyError:

@@ -191,18 +191,11 @@ def build_sheet(sheet, lang: str = "ru", figure: str | None = None) -> Document:
 BLANK = "\u00a0" * 16
 
 
-def _pair(joint: str) -> str:
-    """A reaction's row as the sheet prints it: ``O:0->1`` → «O (0→1)», the force of link 0
-    on link 1 at O."""
-    point, _, links = joint.partition(":")
-    return f"{point} ({links.replace('->', '→')})" if links else joint
-
-
 def blank_tables(sheet, lang: str, tables_before: int, items_before: int) -> list:
     """The tables a student fills in (``[variants] tables``, teaching/tables.py): per table
     a find-item «Fill in Table 3: …» and the table with its rows' labels, the rows' angles
     and the columns with their units, the cells blank."""
-    from flywheel.render.sheet_labels import column_heading, row_word, table_title
+    from flywheel.render.sheet_labels import column_heading, row_text, row_word, table_title
 
     w = WORDS[lang]
     out = []
@@ -219,7 +212,7 @@ def blank_tables(sheet, lang: str, tables_before: int, items_before: int) -> lis
         head += [subscripts(column_heading(spec.name, c, lang)) for c in spec.columns]
         rows = []
         for r, phi in zip(spec.rows, spec.phi_deg):
-            label = r if spec.row_label == "position" else _pair(r)
+            label = row_text(spec.name, r)
             first = [label] + ([_num(phi)] if spec.row_label == "position" else [])
             rows.append(tuple(first + [BLANK] * len(spec.columns)))
         out.append(Table(number, title, tuple(head), tuple(rows)))
