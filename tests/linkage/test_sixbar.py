@@ -109,3 +109,21 @@ def test_shaper_and_four_bar_with_a_slider_against_numerical_derivatives():
     mech = Mechanism(fb.crank, fb.dyads + (RRP("G", coupler, "G", "6", 0.5, "7",
                                                Guide((0.0, -0.25), 0.0)),), fb.points, fb.ground)
     assert check_numerical(mech, phi0, 0.3) > 0
+
+
+def test_a_slotted_link_group_lists_its_links_in_the_order_of_its_chain(tmp_path):
+    """The shaper's group RPR is block 2 on the crank pin, then the lever 3 (the course writes
+    «группа звеньев 2, 3»): the record's structure, `check`, the force polygons and the link
+    tables list 2 before 3. They had said «звенья 3, 2» and ordered the links 1, 3, 2, 4, 5."""
+    mech = load_case(CASES / "shaper.toml").mechanism()
+    assert [d.links for d in mech.dyads] == [("2", "3"), ("4", "5")]
+    res = solve(mech, np.radians([60.0]))
+    assert list(res.links) == ["1", "2", "3", "4", "5"]
+    out = tmp_path / "o"
+    run = runner.invoke(app, ["run", str(CASES / "shaper.toml"), "--no-plots", "--lang", "ru",
+                              "-o", str(out)])
+    assert run.exit_code == 0, run.output
+    assert "вида ВПВ: звенья 2, 3" in (out / "report.md").read_text(encoding="utf-8")
+    check = runner.invoke(app, ["check", str(CASES / "shaper.toml"), "--lang", "ru"],
+                          env={"COLUMNS": "200"})
+    assert "2, 3" in check.stdout and "3, 2" not in check.stdout

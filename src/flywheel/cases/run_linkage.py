@@ -60,6 +60,11 @@ class RRPSpec(StrictModel):
     branch: Branch = Field("+", description="assembly: joint ahead (+) of or behind (−) the "
                                             "rod's foot along the guide direction")
 
+    @property
+    def links(self) -> tuple[str, str]:
+        """The group's links in the order of its chain (linkage.mechanism.RRP.links)."""
+        return self.rod, self.slider
+
 
 class RRRSpec(StrictModel):
     """Two links, three revolute joints."""
@@ -75,6 +80,10 @@ class RRRSpec(StrictModel):
     joint: Name = Field(description="name of the middle joint (new point)")
     branch: Branch = Field("+", description="joint left (+) or right (−) of the line from → to")
 
+    @property
+    def links(self) -> tuple[str, str]:
+        return self.link_from, self.link_to
+
 
 class RPRSpec(StrictModel):
     """Slotted link (кулиса): a block at a known point slides on a rocker about a pivot."""
@@ -87,6 +96,11 @@ class RPRSpec(StrictModel):
     slider: Name = Field(description="link name of the block")
     offset: Coord = Field(0.0, description="slide line offset from the pivot [m]")
     branch: Branch = Field("+", description="block on the rocker's positive (+) side of the pivot")
+
+    @property
+    def links(self) -> tuple[str, str]:
+        """The block, then the rocker (linkage.mechanism.RPR.links)."""
+        return self.slider, self.rocker
 
 
 DyadSpec = Annotated[Union[RRPSpec, RRRSpec, RPRSpec], Field(discriminator="kind")]

@@ -446,15 +446,15 @@ def _groups(mech: Mechanism) -> list[tuple[str, str, tuple[str, ...], list[tuple
     out = []
     for d in reversed(mech.dyads):
         if isinstance(d, RRR):
-            out.append((d.name, "RRR", (d.link_a, d.link_b), [
+            out.append((d.name, "RRR", d.links, [
                 (f"{d.point_a}:{c[d.point_a]}->{d.link_a}", (d.point_a, d.joint)),
                 (f"{d.point_b}:{c[d.point_b]}->{d.link_b}", (d.point_b, d.joint))]))
         elif isinstance(d, RRP):
-            out.append((d.name, "RRP", (d.rod, d.slider), [
+            out.append((d.name, "RRP", d.links, [
                 (f"{d.origin}:{c[d.origin]}->{d.rod}", (d.origin, d.joint)),
                 (f"{d.joint}:{FRAME}->{d.slider}", None)]))
         else:
-            out.append((d.name, "RPR", (d.slider, d.rocker), [
+            out.append((d.name, "RPR", d.links, [
                 (f"{d.origin}:{c[d.origin]}->{d.slider}", None),
                 (f"{d.pivot}:{c[d.pivot]}->{d.rocker}", None)]))
     k = mech.crank

@@ -64,6 +64,11 @@ class RRP:
     guide: Guide
     branch: int = 1
 
+    @property
+    def links(self) -> tuple[str, str]:
+        """The group's links in the order of its chain from the known point: rod, slider."""
+        return self.rod, self.slider
+
 
 @dataclass(frozen=True)
 class RRR:
@@ -81,6 +86,10 @@ class RRR:
     joint: str
     branch: int = 1
 
+    @property
+    def links(self) -> tuple[str, str]:
+        return self.link_a, self.link_b
+
 
 @dataclass(frozen=True)
 class RPR:
@@ -97,6 +106,12 @@ class RPR:
     slider: str
     offset: float = 0.0
     branch: int = 1
+
+    @property
+    def links(self) -> tuple[str, str]:
+        """The group's links in the order of its chain from the known point: block (on
+        ``origin``), then the rocker — «группа звеньев 2, 3» of a shaper."""
+        return self.slider, self.rocker
 
 
 @dataclass(frozen=True)

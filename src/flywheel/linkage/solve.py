@@ -248,8 +248,8 @@ def _rpr(d: RPR, phi: np.ndarray, points: dict, links: dict) -> None:
     w = _dot(d1, nrm) / s
     s1 = _dot(d1, u) + d.offset * w
     e = (_dot(d2, nrm) - 2 * s1 * w + d.offset * w**2) / s
+    links[d.slider] = LinkMotion(theta, w, e, d.origin)     # the group's order: RPR.links
     links[d.rocker] = LinkMotion(theta, w, e, d.pivot)
-    links[d.slider] = LinkMotion(theta, w, e, d.origin)
 
 
 def _passes_through(dr: np.ndarray, d1: np.ndarray, d2: np.ndarray, phi: np.ndarray,

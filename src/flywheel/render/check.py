@@ -131,16 +131,16 @@ def print_check(report, console=None, lang: str = "en") -> None:
                                      tip=c.tip))
     for spec, d in zip(case.dyads, mech.dyads):
         if isinstance(spec, RRPSpec):
-            t.add_row(f"{nm.dyad_kind('RRP', lang)} {d.name}", f"{d.rod}, {d.slider}", f"{d.origin} → {d.joint}",
+            t.add_row(f"{nm.dyad_kind('RRP', lang)} {d.name}", ", ".join(d.links), f"{d.origin} → {d.joint}",
                       w["rrp"].format(l=_n(d.rod_length, ".6g", True), th=_xy(d.guide.through),
                                       a=_n(math.degrees(d.guide.angle)),
                                       o=_n(d.guide.offset, given=True), b=spec.branch))
         elif isinstance(spec, RPRSpec):
-            t.add_row(f"{nm.dyad_kind('RPR', lang)} {d.name}", f"{d.rocker}, {d.slider}",
+            t.add_row(f"{nm.dyad_kind('RPR', lang)} {d.name}", ", ".join(d.links),
                       w["rpr_where"].format(o=d.origin, p=d.pivot),
                       w["rpr"].format(o=_n(d.offset, given=True), b=spec.branch))
         else:
-            t.add_row(f"{nm.dyad_kind('RRR', lang)} {d.name}", f"{d.link_a}, {d.link_b}",
+            t.add_row(f"{nm.dyad_kind('RRR', lang)} {d.name}", ", ".join(d.links),
                       f"{d.point_a} → {d.joint} ← {d.point_b}",
                       w["rrr"].format(a=_n(d.length_a, ".6g", True), b=_n(d.length_b, ".6g", True),
                                       br=spec.branch))

@@ -17,7 +17,7 @@ from flywheel.render.catalogue import words
 from flywheel.render.blocks import (  # noqa: F401  (the model, re-exported)
     Bullets, Document, Figure, Formula, Heading, Paragraph, Table)
 from flywheel.io.text import in_language
-from flywheel.render.numbers import apart, fmt as _number, separator
+from flywheel.render.numbers import apart, column_zero, fmt as _number, separator
 from flywheel.units import PA_PER_MPA
 
 
@@ -151,9 +151,10 @@ _FIGURE_SECTION = {"positions": "kin", "scheme": "kin", "velocity_analogues": "k
                    "plan_forces": "forces", "plan_lever": "forces"}
 
 
-def g(x, digits: int = 5) -> str:
-    """A number as the report prints it (``digits`` significant; −0 → 0; None → "—")."""
-    return _number(x, digits, zero=1e-13, nonfinite="dash")
+def g(x, digits: int = 5, zero: float = 1e-13) -> str:
+    """A number as the report prints it (``digits`` significant; −0, and |x| below ``zero``,
+    → 0; None → "—")."""
+    return _number(x, digits, zero=zero, nonfinite="dash")
 
 
 def gi(x, digits: int = 6) -> str:
@@ -331,8 +332,9 @@ def build_document(results, lang: str = "en", plots: list[str] | None = None,
         b.add(Heading(2, t["kin"]))
         b.add(Paragraph(t["kin_note"].format(vq=sym("v_q"), u=u("v_q"), wq=sym("omega_q"))))
         header = pos + [h("phi_deg")] + [f"{sym(k)}{nm.member(k, lang)}" for k in vq + wq]
-        body = [[*lab, g(cols["phi_deg"].values[i], 6)] + [g(cols[k].values[i], 4) for k in vq + wq]
-                for lab, i in idx]
+        z = {k: column_zero(cols[k].values, 1e-13) for k in vq + wq}
+        body = [[*lab, g(cols["phi_deg"].values[i], 6)] + [g(cols[k].values[i], 4, z[k])
+                                                           for k in vq + wq] for lab, i in idx]
         b.table(t["kin_caption"], header, body)
         b.figures_of("kin")
     if s.output_link is not None:                        # render/output_link.py
@@ -349,8 +351,11 @@ def build_document(results, lang: str = "en", plots: list[str] | None = None,
     mk = [k for k in cols if k.startswith("M ")]
     header = (pos + [h("phi_deg"), h("J_II"), h("dJ_II")]
               + [h(k, label=nm.member(k, lang, results.loads.titles, results.loads.labels)) for k in mk] + [h("M_sum")])
-    body = [[*lab, g(cols["phi_deg"].values[i], 6), g(cols["J_II"].values[i], 4), g(cols["dJ_II"].values[i], 4)]
-            + [g(cols[k].values[i], 5) for k in mk] + [g(cols["M_sum"].values[i], 5)] for lab, i in idx]
+    z = {k: column_zero(cols[k].values, 1e-13) for k in ["J_II", "dJ_II", *mk, "M_sum"]}
+    body = [[*lab, g(cols["phi_deg"].values[i], 6), g(cols["J_II"].values[i], 4, z["J_II"]),
+             g(cols["dJ_II"].values[i], 4, z["dJ_II"])]
+            + [g(cols[k].values[i], 5, z[k]) for k in mk] + [g(cols["M_sum"].values[i], 5, z["M_sum"])]
+            for lab, i in idx]
     b.table(t["red_caption"], header, body)
     b.figures_of("red")
 
@@ -373,7 +378,8 @@ def build_document(results, lang: str = "en", plots: list[str] | None = None,
     )))
     energy = ("A_D", "A_C", "A", "T_II", "dT_I", "omega", "epsilon")
     header = pos + [h("phi_deg")] + [h(k) for k in energy]
-    body = [[*lab, g(cols["phi_deg"].values[i], 6)] + [g(cols[k].values[i], 6) for k in energy]
+    z = {k: column_zero(cols[k].values, 1e-13) for k in energy}
+    body = [[*lab, g(cols["phi_deg"].values[i], 6)] + [g(cols[k].values[i], 6, z[k]) for k in energy]
             for lab, i in idx]
     b.table(t["energy_caption"], header, body)
     b.figures_of("energy")
@@ -566,15 +572,11 @@ def _structure(b: _Builder, case, t: dict, lang: str) -> None:
     """The Assur groups and the degree of freedom W = 3n − 2p₅ − p₄ (Chebyshev; Артоболевский
     ch. 2): a crank on the frame (one link, one revolute pair) and dyads of class II (two links,
     three lower pairs each)."""
-    from flywheel.cases.run import RPRSpec, RRPSpec, RRRSpec
-
     b.add(Heading(3, f"1.6. {t['structure']}"))
     b.add(Paragraph(t["structure_note"].format(c=case.crank.name)))
     groups = []
     for d in case.dyads:
-        links = ((d.rod, d.slider) if isinstance(d, RRPSpec) else (d.link_from, d.link_to)
-                 if isinstance(d, RRRSpec) else (d.rocker, d.slider) if isinstance(d, RPRSpec) else ())
-        groups.append(t["group"].format(kind=nm.dyad_kind(d.kind, lang), links=", ".join(links)))
+        groups.append(t["group"].format(kind=nm.dyad_kind(d.kind, lang), links=", ".join(d.links)))
     b.add(Bullets(tuple(groups)))
     n, p5, p4 = 1 + 2 * len(case.dyads), 1 + 3 * len(case.dyads), 0
     b.add(Paragraph(t["chebyshev"].format(n=n, p5=p5, p4=p4)))

@@ -15,7 +15,7 @@ from flywheel.dynamics.plans import link_pair
 from flywheel.render.blocks import Bullets, Heading, Paragraph
 from flywheel.render.catalogue import words
 from flywheel.render.nomenclature import csv_header, name, position_label, symbol, unit, unit_of
-from flywheel.render.numbers import fmt as _number, fmt_rows, fmt_text
+from flywheel.render.numbers import column_zero, fmt as _number, fmt_rows, fmt_text
 
 T = words("forces", {
     "title": "Force analysis (kinetostatics)",
@@ -74,8 +74,8 @@ SLIDER_CRANK = ("piston_effort", "side_thrust", "rod_thrust", "crank_pin_tangent
 CLOSURE_OK = 1e-9           # a closure above this is not round-off
 
 
-def _g(x, digits: int = 5) -> str:
-    return _number(x, digits, zero=1e-13, nonfinite="dash")
+def _g(x, digits: int = 5, zero: float = 1e-13) -> str:
+    return _number(x, digits, zero=zero, nonfinite="dash")
 
 
 # -- the columns ------------------------------------------------------------------------------------
@@ -298,7 +298,9 @@ def add_report_section(b, results, lang: str = "en") -> None:
     for a in results.at:
         i = results.at_index(a.phi_deg)
         b.add(Heading(3, t["at"].format(a=_g(a.phi_deg, 6)).strip()))
-        rows = [[reaction_label(r, lang), r.joint, r.by, r.on, _g(float(r.x[i]), 6), _g(float(r.y[i]), 6),
+        # a component of 10⁻⁹ of its reaction is the round-off of a projection: 0
+        rows = [[reaction_label(r, lang), r.joint, r.by, r.on,
+                 *(_g(float(c[i]), 6, column_zero((r.magnitude[i],), 1e-13)) for c in (r.x, r.y)),
                  _g(float(r.magnitude[i]), 6), _g(math.degrees(float(r.angle[i])), 5)]
                 for k, r in f.joints.items()]
         table(t["joints"].format(a=_g(a.phi_deg, 6)),

@@ -59,6 +59,8 @@ DASH = "—"
 NONFINITE = ("refuse", "show", "dash", "dash-nan")
 #: Russian typography: significant digits of a result; the noise below which a value is 0 (SI)
 RESULT_SIG, NOISE = 4, 1e-9
+#: a column of results: round-off relative to its largest magnitude (:func:`column_zero`)
+COLUMN_NOISE = 1e-9
 MINUS, THIN = "\u2212", "\u202f"
 
 
@@ -217,6 +219,21 @@ def fmt(x, sig: int = 6, *, zero: float | None = 1e-12, spec: str | None = None,
     if integers_above and abs(x) >= 10.0 ** sig:
         return f"{x:.0f}"
     return format(x, spec or f".{sig}g")
+
+
+def column_zero(values, floor: float = 0.0) -> float:
+    """The ``zero`` of :func:`fmt` for the numbers of one column of results over the cycle:
+    ``COLUMN_NOISE`` times its largest magnitude (at least ``floor``). A work integrated over
+    the grid returns to its start with a round-off of 10⁻¹² of its scale, a few 10⁻⁹ J for
+    hundreds of joules: it prints «0», not «−0,00000000106» (a Russian record) or
+    «-1.06e-09».
+
+    >>> column_zero([0.0, -1.06e-9, 556.9, -545.5]) > 1.06e-9, column_zero([0.0, 0.0])
+    (True, 0.0)
+    """
+    a = np.abs(np.asarray(values, dtype=float))
+    a = a[np.isfinite(a)]
+    return max(floor, COLUMN_NOISE * float(a.max()) if a.size else 0.0)
 
 
 def to_tolerance(x: float, tolerance: float, sig: int = RESULT_SIG, most: int = 12) -> str | None:
