@@ -55,13 +55,13 @@ T = words("forces", {
               "M_y,gr."),
     "positions": "Reactions |R_ij| [N] and M_y [N·m] at the standard positions",
     "at": "At φ = {a}°",
-    "frame": ("crank-pin load {P} N (F_T = {T} N, F_R = {R} N); main bearing {B} N; "
-              "shaking force {S} N, shaking moment {M} N·m"),
+    "frame": ("Crank-pin load {P} N (F_T = {T} N, F_R = {R} N); main bearing {B} N; "
+              "shaking force {S} N, shaking moment {M} N·m."),
     # a linkage without a crankshaft (no cylinder): the same in English; in Russian the
     # crank's pin and bearing («палец», «опора»), not a crankshaft's («шатунная шейка»,
     # «коренной подшипник»)
-    "frame_linkage": ("crank-pin load {P} N (F_T = {T} N, F_R = {R} N); main bearing {B} N; "
-                      "shaking force {S} N, shaking moment {M} N·m"),
+    "frame_linkage": ("Crank-pin load {P} N (F_T = {T} N, F_R = {R} N); main bearing {B} N; "
+                      "shaking force {S} N, shaking moment {M} N·m."),
     "tab_positions": ("M_y by the power balance at the table's positions [N·m], beside the "
                       "seed's static and dynamic moments at ω_m (with the steady motion "
                       "M_y = M_st + M_dyn)"),
