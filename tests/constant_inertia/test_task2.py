@@ -548,3 +548,24 @@ def test_readme_example_press():
     assert r.J_required == pytest.approx(1125 * PI / 2 / (0.05 * (4 * PI) ** 2), rel=1e-13)
     assert math.degrees(r.phi_omega_max) == pytest.approx(90.0)
     assert math.degrees(r.phi_omega_min) == pytest.approx(180.0)
+
+
+def test_the_russian_summary_writes_angles_and_units_as_the_course_does(tmp_path):
+    """The triangle's ε is largest on [0, π/2) (M_D alone: 15/12 = 1,25 рад/с²) and smallest at
+    its peak π ((15 − 60)/12 = −3,75): said «при φ = 0° (0 рад)» and «при φ = 180° (π рад)»,
+    not «0π», «1π»; the columns' units after a comma («длительность, с», «ε, рад/с²»), not in
+    brackets beside «ω, рад/с»."""
+    from typer.testing import CliRunner
+
+    from flywheel.cli import app
+
+    res = CliRunner().invoke(app, ["task2", "--profile", "triangle", "--lang", "ru",
+                                   "--epsilon", "--at", "45", "-o", str(tmp_path / "o")],
+                             env={"COLUMNS": "200"})
+    assert res.exit_code == 0, res.output
+    out = res.stdout
+    assert "1,25" in out and "при φ = 0° (0 рад)" in out
+    assert "−3,75" in out and "при φ = 180° (π рад)" in out
+    assert "(0,625π рад)" in out                      # ω_max where M_D = M_C: 5π/8
+    assert "длительность, с" in out and "ε, рад/с²" in out and "от φ, °" in out
+    assert "0π" not in out and "1π" not in out and "[с]" not in out and "φ°" not in out

@@ -32,7 +32,14 @@ def _g(x: float | None, fmt: str = ".6g") -> str:
 def _angle(phi: float | None, lang: str = "en") -> str:
     if phi is None or math.isnan(phi):
         return nm.name("angle_unknown", lang)
-    return nm.name("angle", lang, deg=_g(math.degrees(phi)), pi=_g(phi / math.pi))
+    return nm.name("angle", lang, deg=_g(math.degrees(phi)), pi=_pi(phi / math.pi))
+
+
+def _pi(k: float) -> str:
+    """An angle of ``k``·π as written: «0», «π», «−π», «0,625π»."""
+    text = _g(k)
+    return "0" if text in ("0", "-0", "−0") else text[:-1] + "π" if text in ("1", "-1", "−1") \
+        else f"{text}π"
 
 
 def print_summary(r, title: str = "", source: str = "", console=None, lang: str = "en",
