@@ -501,3 +501,15 @@ def test_the_domain_imports_no_presentation():
         mods = {n.module for n in ast.walk(tree) if isinstance(n, ast.ImportFrom) and n.module}
         assert all(m.split(".")[1] in ("errors", "units", "duty_cycle", "io") for m in mods
                    if m.startswith("flywheel.")), path
+
+
+def test_a_quantity_is_not_named_twice_beside_its_symbol_column(tmp_path):
+    """The summary's and the record's tables print the symbol in a column of its own: the name
+    beside it is «площадь среза», not «площадь среза A» next to «A»."""
+    from flywheel.render.duty_cycle import summary_tables
+
+    r = solve_case(load_duty_case(CASES / "duty_khurmi_16_20_punch_stroke.toml"))
+    rows = [row for _, _, rs, _, _ in summary_tables(r, "ru") for row in rs if len(row) == 4]
+    named = {sym: what for what, sym, _, _ in rows}
+    assert named["A"] == "площадь среза" and named["E"] == "работа одной операции"
+    assert all(not what.endswith(" " + sym) for what, sym, _, _ in rows if sym)

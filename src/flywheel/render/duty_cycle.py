@@ -48,8 +48,9 @@ def _g(x, digits: int = 6) -> str:
 
 
 def _rows(keys_values, lang: str) -> list[tuple[str, str, str, str]]:
-    """(name, symbol, value, unit) of each (nomenclature key, value) whose value is known."""
-    return [(nm.name(k, lang), nm.symbol(k, lang), _g(v), nm.unit_of(k, lang))
+    """(name, symbol, value, unit) of each (nomenclature key, value) whose value is known (the
+    name without the symbol its own column prints)."""
+    return [(nm.bare_name(k, lang), nm.symbol(k, lang), _g(v), nm.unit_of(k, lang))
             for k, v in keys_values if v is not None]
 
 

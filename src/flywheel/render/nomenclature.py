@@ -798,23 +798,27 @@ def heading(key: str, lang: str = "en", si: str | None = None, label: str | None
 def legend(key: str, lang: str = "en") -> str:
     """A legend entry: the mathtext symbol and the name without its trailing symbol
     ("$A_D$: work of the driving forces")."""
-    t, _ = term(key)
+    return f"{term(key)[0].tex(lang)}: {bare_name(key, lang)}"
+
+
+def bare_name(key: str, lang: str = "en") -> str:
+    """The name without its trailing symbol, for a table that prints the symbol in a column
+    of its own («площадь среза» beside «A»; "work of the driving forces").
+
+    >>> bare_name("energy_per_area", "ru"), bare_name("omega_max")
+    ('удельная работа на единицу площади среза', 'ω_max')
+    """
     nm = name(key, lang)
-    sym = t.sym(lang)
-    if sym and nm.endswith(" " + sym):
-        nm = nm[: -len(sym) - 1]
-    return f"{t.tex(lang)}: {nm}"
+    sym = term(key)[0].sym(lang)
+    return nm[: -len(sym) - 1] if sym and nm.endswith(" " + sym) else nm
 
 
 def name_tex(key: str, lang: str = "en") -> str:
     """The name with its trailing plain symbol typeset (a figure's title: "reduced moment of
     inertia of the second group $J_{II}$")."""
     t, _ = term(key)
-    nm = name(key, lang)
-    sym = t.sym(lang)
-    if sym and nm.endswith(" " + sym):
-        return nm[: -len(sym)] + t.tex(lang)
-    return nm
+    nm, bare = name(key, lang), bare_name(key, lang)
+    return f"{bare} {t.tex(lang)}" if bare != nm else nm
 
 
 def material(m: str, lang: str = "en") -> str:
