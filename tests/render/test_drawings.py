@@ -854,3 +854,22 @@ def test_the_dxf_does_not_follow_the_hash_seed(tmp_path, monkeypatch):
         files.append(tmp_path / f"{k}.dxf")
         write_dxf(files[-1], FORMATS["A3"], [view])
     assert files[0].read_bytes() == files[1].read_bytes()
+
+
+@pytest.mark.parametrize("case", ["shaper", "compressor"])
+def test_every_standard_position_is_numbered_on_the_scheme(case):
+    """Sheet 1's scheme numbers the crank's standard positions 0 … 11, the one drawn in main
+    lines (the first report angle: the shaper's 60° is position 2) too — it had been left
+    unnumbered."""
+    from flywheel.cases.run import load_case
+    from flywheel.dynamics.pipeline import analyze
+    from flywheel.render.drawings.model import Text
+    from flywheel.render.drawings.scheme import scheme_view
+
+    results = analyze(load_case(ROOT / "cases" / f"{case}.toml"))
+    i = results.at_index(results.at[0].phi_deg)
+    v = scheme_view(results, i, 200.0, "ru", positions=True)
+    numbers = {t.text for t in v.items if isinstance(t, Text) and t.text.isdigit()}
+    assert numbers == {str(p.number) for p in results.position_angles if p.number is not None}
+    assert any(results.index_of(p.phi) == i for p in results.position_angles
+               if p.number is not None)

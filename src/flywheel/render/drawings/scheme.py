@@ -81,11 +81,10 @@ def scheme_view(results, i: int, room_mm: float, lang: str, *, positions: bool,
     if positions:
         for pos in results.position_angles:
             j = results.index_of(pos.phi)
-            if j == i:
-                continue
-            for link, pts in d.links:
-                ends = [xy(P[p].r[j]) for p in pts[:2]]
-                v.line(*ends, line="thin")
+            if j != i:            # the position drawn in main lines is numbered all the same
+                for link, pts in d.links:
+                    ends = [xy(P[p].r[j]) for p in pts[:2]]
+                    v.line(*ends, line="thin")
             if pos.number is not None:
                 tip = np.array(xy(P[crank[1][1]].r[j]))
                 piv = np.array(xy(P[crank[1][0]].r[j]))
