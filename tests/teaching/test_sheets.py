@@ -236,6 +236,10 @@ def test_russian_and_english_wording(compressor_dir, task2_dir, tmp_path):
     assert ru.headings[:3] == ["Вариант 2", "Дано", "Определить"]
     assert any(p.startswith("Студент ____") and "Группа ____" in p for p in ru.paragraphs)
     assert ru.captions == ["Рис. 1 — Кинематическая схема механизма при φ = 120°"]
+    # a point's coordinates set apart as its value is, «0; 0,15» under «(x; y)», not «(x, y)»
+    points = [r for t in ru.tables for r in t if "(x; y)" in r[0]]
+    assert points and all("; " in r[1] for r in points)
+    assert not any("(x, y)" in r[0] for t in ru.tables for r in t)
     en = sheet_of(task2_dir, "03")
     assert en.headings[:3] == ["Variant 3", "Given", "Determine"]
     assert any(p.startswith("Student ____") and "Group ____" in p for p in en.paragraphs)
