@@ -873,3 +873,19 @@ def test_every_standard_position_is_numbered_on_the_scheme(case):
     assert numbers == {str(p.number) for p in results.position_angles if p.number is not None}
     assert any(results.index_of(p.phi) == i for p in results.position_angles
                if p.number is not None)
+
+
+def test_a_views_box_follows_the_items_appended_after_it_was_asked():
+    """View.box is kept as items are appended (the layout asks it thousands of times): it is
+    always the box of every item, as model.bounds computes it afresh."""
+    from flywheel.render.drawings.model import bounds
+
+    v = View("v")
+    v.line((0, 0), (10, 5))
+    assert v.box() == bounds(v.items) == (0.0, 0.0, 10.0, 5.0)
+    v.circle((20, -3), 2.0)
+    assert v.box() == bounds(v.items) == (0.0, -5.0, 22.0, 5.0)
+    v.text(-4.0, 1.0, "AB", 3.5)
+    assert v.box() == bounds(v.items) and v.box()[0] == -4.0
+    w = v.moved(1.0, 1.0)
+    assert w.box() == bounds(w.items) == tuple(a + 1.0 for a in v.box())

@@ -118,9 +118,20 @@ class View:
     items: list = field(default_factory=list)
     scales: dict = field(default_factory=dict)     # what its scales are: "mu_v" → μ …
     labels: list = field(default_factory=list)     # the boxes [mm] :meth:`label` placed
+    # the box of items[:_boxed], grown by the items appended since (items are only appended)
+    _box: tuple | None = field(default=None, init=False, repr=False, compare=False)
+    _boxed: int = field(default=0, init=False, repr=False, compare=False)
 
     def box(self) -> tuple[float, float, float, float]:
-        return bounds(self.items)
+        n = len(self.items)
+        if self._box is None or self._boxed > n:
+            self._box, self._boxed = bounds(self.items), n
+        elif self._boxed < n:
+            b = bounds(self.items[self._boxed:])
+            a = self._box
+            self._box = (min(a[0], b[0]), min(a[1], b[1]), max(a[2], b[2]), max(a[3], b[3]))
+            self._boxed = n
+        return self._box
 
     @property
     def size(self) -> tuple[float, float]:
