@@ -86,6 +86,10 @@ def test_slotted_link_extremes_where_the_slot_touches_the_crank_circle():
     # the slide through the pivot: the block's force is normal to the rocker, like its velocity
     assert out.transmission_angle_min_deg == pytest.approx(90.0, abs=1e-9)
     assert out.phi_transmission_angle_min_deg is None
+    # said as the course says it: a slotted link's swing, not a rocker's («коромысла»)
+    from flywheel.render.output_link import lines
+    assert lines(out, "ru")[0].startswith("угол размаха кулисы ψ = ")
+    assert lines(output_link(fourbar()), "ru")[0].startswith("угол размаха коромысла ψ = ")
 
 
 def test_slotted_link_with_an_offset_slide():

@@ -20,6 +20,7 @@ W = words("output_link", {
                     "transmission angle",
     "caption_driven": "Extreme positions of link {link}",
     "swing": "swing of the rocker {sym} = {v}°",
+    "swing_slotted": "swing of the slotted link {sym} = {v}°",
     "stroke": "stroke of the slider {sym} = {v} {u}",
     "strokes": ("working stroke {w}°, return stroke {r}° of the crank (the slower stroke taken as "
                 "the working one): {sym} = {w}/{r} = {K}"),
@@ -63,7 +64,8 @@ def table(ol, lang: str, driven: bool = False) -> tuple[str, list[str], list[lis
 def lines(ol, lang: str) -> list[str]:
     """The swing or stroke, the strokes' crank angles and K, the least transmission angle."""
     w = W[lang]
-    out = [w["swing"].format(sym=nm.symbol("swing_deg", lang), v=_n(ol.swing_deg, lang))
+    swing = w["swing_slotted" if ol.kind == "slotted link" else "swing"]
+    out = [swing.format(sym=nm.symbol("swing_deg", lang), v=_n(ol.swing_deg, lang))
            if ol.stroke is None else
            w["stroke"].format(sym=nm.symbol("output_stroke", lang), v=_n(ol.stroke, lang),
                               u=nm.unit_of("output_stroke", lang))]
