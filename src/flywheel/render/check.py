@@ -41,6 +41,12 @@ W = words("check", {"case": "case", "given_fw": "a given flywheel, ",
                     "kinematics_only": "the kinematics alone (ε = 0)"})
 
 
+
+def _load(x, lang: str) -> str:
+    """A tabulated force or moment as the Russian line names it: its Russian title where the
+    case gives one («сила тяжести шатуна G2»), else (and in English) its name."""
+    return in_language(x.title, lang) if lang == "ru" and x.title else x.name
+
 def _g(x: float) -> str:
     """6 significant digits; round-off below 1e-12 shown as 0."""
     return _number(x, 6, zero=1e-12, nonfinite="show")
@@ -176,7 +182,7 @@ def print_check(report, console=None, lang: str = "en") -> None:
             t.add_row(cy.name if label == cy.name else f"{cy.name} ({label})", cy.piston,
                       _n(cy.bore, given=True),
                       _n(cy.p_max / PA_PER_MPA), w.get(cy.head, cy.head),
-                      cy.interpolation, str(len(cy.s if cy.s is not None else cy.diagram.s)))
+                      nm.interpolation(cy.interpolation, lang), str(len(cy.s if cy.s is not None else cy.diagram.s)))
         console.print(t)
 
     if report.sliders:
@@ -222,7 +228,7 @@ def _print_tabulated(report, console, lang: str = "en") -> None:
     console.print(f"[bold]{title or w['case']}[/bold]"
                   + (f"  ({source})" if source else ""))
     console.print(f"{_crank_line(report, m, lang)}; "
-                  + w["J_II_by"].format(J=nm.symbol("J_II", lang), how=tab.interpolation),
+                  + w["J_II_by"].format(J=nm.symbol("J_II", lang), how=nm.interpolation(tab.interpolation, lang)),
                   markup=False)
     phi = nm.heading("phi_deg", lang)
     kin = [(phi, tab.positions_deg)]
@@ -237,15 +243,15 @@ def _print_tabulated(report, console, lang: str = "en") -> None:
     for title, cols in ((w["tab_kin"], kin),
                         (w["tab_red"].format(M=nm.symbol("M_dyn", lang),
                                              w=nm.symbol("omega_mean", lang), dJ=dJ,
-                                             how=tab.interpolation), reduced)):
+                                             how=nm.interpolation(tab.interpolation, lang)), reduced)):
         t = _table(title, ("#", *(c[0] for c in cols)))
         for k in range(len(tab.positions_deg)):
             t.add_row(str(k + 1), *(_g(float(v[k])) for _, v in cols))
         console.print(t)
     if tab.forces or tab.moments:
         console.print(w["loads"] + ", ".join(
-            [w["force_at"].format(n=f.name, p=f.point, how=f.interpolation) for f in tab.forces]
-            + [w["moment"].format(n=mo.name, how=mo.interpolation) for mo in tab.moments]),
+            [w["force_at"].format(n=_load(f, lang), p=f.point, how=nm.interpolation(f.interpolation, lang)) for f in tab.forces]
+            + [w["moment"].format(n=_load(mo, lang), how=nm.interpolation(mo.interpolation, lang)) for mo in tab.moments]),
             markup=False)
     t = _table(w["Links"], (w["link"], nm.heading("link_mass", lang,
                                                   label=nm.name("link_mass", lang)), w["at"],
