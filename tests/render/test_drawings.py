@@ -234,6 +234,38 @@ def test_the_last_two_sheets_share_their_views():
     assert min(fill(p) for p in pages) > 0.45
 
 
+def test_the_last_two_sheets_share_their_views_where_a_smaller_room_saved_a_sheet():
+    """fitted: where 0.8 of the room saves a sheet (three at the room, two at 0.8) and leaves
+    the last with one small view, the last two sheets still share, each drawn alone at 0.8,
+    0.9 or the room (no larger: no more builds than the search for the smaller room made) —
+    it had returned the shrunk sheets as packed, the last a fifth full (engine_inline4's
+    sheet 2-4 at A3: the hodograph alone at 12 %)."""
+    from flywheel.render.drawings import fitted
+    from flywheel.render.drawings.sheet import ROOM
+
+    x0, y0, x1, y1 = field_of("A3")
+    W, H = x1 - x0, y1 - y0
+    shapes = {"v1": (0.95, 0.55), "v2": (0.6, 0.55), "v3": (0.6, 0.5), "v4": (0.3, 0.25)}
+
+    def build(room):
+        f = room["plot_h"] / ROOM["A3"]["plot_h"]
+        return [_box_view(n, a * W * f, b * H * f) for n, (a, b) in shapes.items()]
+
+    def fill(page):
+        return sum(v.size[0] * v.size[1] for v in page) / (W * H)
+
+    def packed(f):
+        return pack(build({"plot_h": ROOM["A3"]["plot_h"] * f}), "A3")[0]
+
+    assert len(packed(1.0)) == len(packed(0.9)) == 3
+    shrunk = packed(0.8)
+    assert len(shrunk) == 2 and fill(shrunk[1]) < 0.2
+    views, pages, left_out = fitted(build, "A3")
+    assert len(pages) == 2 and not left_out
+    assert sorted(v.name for p in pages for v in p) == sorted(shapes)
+    assert min(fill(p) for p in pages) > 0.4
+
+
 @pytest.mark.parametrize("case", ["compressor", "shaper"])
 def test_fitted_sheets_are_never_more_and_their_lettering_never_smaller(case):
     """Against sheet.ROOM as it is: at every format no more sheets and no view left out, the

@@ -62,11 +62,11 @@ def fitted(build, size: str):
     sheets of ``size`` best: the fewest views left out, then the fewest sheets, then the
     largest drawings — sheet.ROOM times 1, or a factor of :data:`SHRINK` where the views take
     more sheets than one, or of :data:`GROW` where they take one. Where they take more sheets
-    whatever the room, the last two sheets share their views (:func:`_shared`): up to
-    :data:`MOVE` views of the one before go on to the last, as many as leave the emptier of the
-    two fullest, each sheet's views then grown alone by :data:`GROW` while they keep to it (the
-    lettering never changes). The factors are bisected, each room built once. Returns (views,
-    pages, left_out)."""
+    than one at the room chosen, the last two sheets share their views (:func:`_shared`): up
+    to :data:`MOVE` views of the one before go on to the last, as many as leave the emptier of
+    the two fullest, each sheet's views then drawn alone at that room or larger while they keep
+    to it (:func:`_shared`; the lettering never changes). The factors are bisected, each room
+    built once. Returns (views, pages, left_out)."""
     from flywheel.render.drawings.layout import pack
     from flywheel.render.drawings.sheet import ROOM
 
@@ -92,22 +92,27 @@ def fitted(build, size: str):
         return _largest(GROW, within(need(base))) or base
     least = attempt(SHRINK[-1])            # more: the largest factor that saves a sheet, if
     if need(least) < need(base):           # the smallest does
-        return _largest(SHRINK[:-1], within(need(least))) or least
-    views, pages, left_out = base
+        chosen = _largest(SHRINK[:-1], within(need(least))) or least
+    else:
+        chosen = base
+    views, pages, left_out = chosen
     names = [v.name for v in views]
-    if left_out or len(set(names)) < len(names):
-        return base
-    return views, [*pages[:-2], *_shared(pages[-2:], names, views_at, size)], left_out
+    if left_out or len(set(names)) < len(names) or len(pages) < 2:
+        return chosen
+    factor = next(f for f, built_views in built.items() if built_views is views)
+    return views, [*pages[:-2], *_shared(pages[-2:], names, views_at, size, factor)], left_out
 
 
 #: the most views of the sheet before the last that :func:`fitted` moves on to the last
 MOVE = 4
 
 
-def _shared(two: list[list[View]], names: list[str], views_at, size: str) -> list[list[View]]:
-    """The last two pages of :func:`fitted` with the last ``m`` ≤ MOVE views of the first moved
-    to the second (in the views' order), each page's views grown alone (:data:`GROW`) while
-    they keep to one sheet: of m = 0 … MOVE the one whose emptier page is fullest (the views'
+def _shared(two: list[list[View]], names: list[str], views_at, size: str,
+            factor: float = 1.0) -> list[list[View]]:
+    """The last two pages of :func:`fitted` (packed at the room's ``factor``) with the last
+    ``m`` ≤ MOVE views of the first moved to the second (in the views' order), each page's
+    views drawn alone at the largest room that keeps them to one sheet — of 1 and
+    :data:`GROW` at ``factor`` 1, of ``factor`` … 1 at a SHRINK ``factor``: of m = 0 … MOVE the one whose emptier page is fullest (the views'
     area over the field; the fewest moved of equals). A page of diagrams left at a sixth of
     its sheet while the sheet before is crowded is what this mends."""
     from flywheel.render.drawings.layout import pack
@@ -127,12 +132,15 @@ def _shared(two: list[list[View]], names: list[str], views_at, size: str) -> lis
             return placed[0] if len(placed) == 1 and not out else None
         return at
 
+    # each page's room: at 1, the room or larger (GROW); at a SHRINK that saved a sheet, that
+    # room up to the room itself (the rooms its search has built already)
+    rooms = (1.0, *GROW) if factor >= 1.0 else tuple(f for f in (*SHRINK, 1.0) if f >= factor)
     first, last = [v.name for v in two[0]], [v.name for v in two[1]]
     best, best_fill = two, -1.0
     for m in range(0, min(MOVE, len(first) - 1) + 1):
         kept = first[:len(first) - m]
         moved = sorted(first[len(first) - m:] + last, key=names.index)
-        pages = [_largest((1.0, *GROW), alone(p)) for p in (kept, moved)]
+        pages = [_largest(rooms, alone(p)) for p in (kept, moved)]
         if any(p is None for p in pages):
             break                          # more moved would not keep to one sheet either
         emptier = min(fill(p) for p in pages)
