@@ -29,6 +29,25 @@ def _box_view(name, w, h) -> View:
     return v
 
 
+def _a3_boxes(shapes):
+    """(build, fill) of boxes named by ``shapes`` {name: (width, height) as shares of the A3
+    field at sheet.ROOM}: build(room) the boxes at that room, fill(page) the page's boxes'
+    area over the field."""
+    from flywheel.render.drawings.sheet import ROOM
+
+    x0, y0, x1, y1 = field_of("A3")
+    W, H = x1 - x0, y1 - y0
+
+    def build(room):
+        f = room["plot_h"] / ROOM["A3"]["plot_h"]
+        return [_box_view(n, a * W * f, b * H * f) for n, (a, b) in shapes.items()]
+
+    def fill(page):
+        return sum(v.size[0] * v.size[1] for v in page) / (W * H)
+
+    return build, fill
+
+
 # -- the pieces, fast ---------------------------------------------------------------------------
 
 def test_gost_scales_are_the_largest_that_fit():
@@ -213,16 +232,8 @@ def test_the_last_two_sheets_share_their_views():
     from flywheel.render.drawings import fitted
     from flywheel.render.drawings.sheet import ROOM
 
-    x0, y0, x1, y1 = field_of("A3")
-    W, H = x1 - x0, y1 - y0
     shapes = {"v1": (0.95, 0.4), "v2": (0.45, 0.3), "v3": (0.45, 0.3), "v4": (0.95, 0.35)}
-
-    def build(room):
-        f = room["plot_h"] / ROOM["A3"]["plot_h"]
-        return [_box_view(n, a * W * f, b * H * f) for n, (a, b) in shapes.items()]
-
-    def fill(page):
-        return sum(v.size[0] * v.size[1] for v in page) / (W * H)
+    build, fill = _a3_boxes(shapes)
 
     packed, _ = pack(build(ROOM["A3"]), "A3")
     assert [[v.name for v in p] for p in packed] == [["v1", "v2", "v3"], ["v4"]]
@@ -243,16 +254,8 @@ def test_the_last_two_sheets_share_their_views_where_a_smaller_room_saved_a_shee
     from flywheel.render.drawings import fitted
     from flywheel.render.drawings.sheet import ROOM
 
-    x0, y0, x1, y1 = field_of("A3")
-    W, H = x1 - x0, y1 - y0
     shapes = {"v1": (0.95, 0.55), "v2": (0.6, 0.55), "v3": (0.6, 0.5), "v4": (0.3, 0.25)}
-
-    def build(room):
-        f = room["plot_h"] / ROOM["A3"]["plot_h"]
-        return [_box_view(n, a * W * f, b * H * f) for n, (a, b) in shapes.items()]
-
-    def fill(page):
-        return sum(v.size[0] * v.size[1] for v in page) / (W * H)
+    build, fill = _a3_boxes(shapes)
 
     def packed(f):
         return pack(build({"plot_h": ROOM["A3"]["plot_h"] * f}), "A3")[0]
