@@ -217,7 +217,7 @@ def test_the_russian_report_names_tables_rows_and_columns_as_the_sheet_does(made
     assert "delta_T: положение 4: T_II неверно" in book["диагностика"]
     page = next((tmp_path / "fb").iterdir()).read_text(encoding="utf-8")
     assert "пара A (1→2): R неверно" in page
-    assert "реакция в кинематической паре A (1→2): модуль" in page
+    assert "реакцию в кинематической паре A (1→2): модуль" in page   # the object of «Определить»
     english = runner.invoke(app, ["grade", str(made / "v" / "answers.json"), str(sheet)],
                             env={"COLUMNS": "200"})
     assert "rows 3, 7: vq_B off" in english.stdout and "pair A (1→2): R off" in english.stdout

@@ -218,6 +218,9 @@ SHEET_ANSWERS: dict[str, tuple[str, str]] = {
                          "постоянный момент из условия цикла (со знаком)"),
     "flywheel_J_on_its_shaft": ("the moment of inertia of the flywheel on its own shaft",
                                 "момент инерции маховика на его валу"),
+    # task2's masses: their names are templates of the radius they are taken at
+    "task2:flywheel_mass": ("the mass of the flywheel", "массу маховика"),
+    "task2:rim_mass": ("the mass of the flywheel's rim", "массу обода маховика"),
 }
 #: answers whose symbol differs between the two kinds (J_I of a run, J_пр of task2)
 SHEET_SYMBOLS = {"task2:J_required": ("J", "J_пр"), "task2:delta": ("δ", "δ")}
@@ -411,7 +414,7 @@ def cell_words(key: str, lang: str = "en") -> tuple[str, str, str] | None:
         what = what[:-len(sym)].rstrip(" ,")
     if table != "reactions":
         what = f"{what} {SHEET_ROWS['at'][lang == 'ru'].format(row=row)}"
-    return what, sym, "" if u in ("–", "-", "") else u
+    return (object_form(what) if lang == "ru" else what), sym, "" if u in ("–", "-", "") else u
 
 
 def answer_words(kind: str, key: str, lang: str = "en") -> tuple[str, str, str]:
@@ -436,6 +439,26 @@ def answer_words(kind: str, key: str, lang: str = "en") -> tuple[str, str, str]:
     if f"{kind}:{key}" in SHEET_SYMBOLS:
         sym = SHEET_SYMBOLS[f"{kind}:{key}"][lang == "ru"]
     what = words[lang == "ru"] if words else label
-    if sym and what.endswith(sym):          # a name that ends with its symbol: not twice
+    if sym and what.endswith(" " + sym):    # a name that ends with its symbol: not twice
         what = what[:-len(sym)].rstrip(" ,")
-    return what, sym, "" if u in ("–", "") else u
+    return (object_form(what) if lang == "ru" else what), sym, "" if u in ("–", "") else u
+
+
+def object_form(phrase: str) -> str:
+    """A Russian name as the object of «Определить»: its leading feminine adjectives and noun
+    in the accusative («кинетическая энергия второй группы» → «кинетическую энергию второй
+    группы», «реакция в паре» → «реакцию в паре»); a masculine or neuter name, one already
+    in the accusative and a neuter noun in -мя (время) as they are.
+
+    >>> object_form("суммарная работа в положении 4"), object_form("момент инерции маховика")
+    ('суммарную работу в положении 4', 'момент инерции маховика')
+    """
+    words = phrase.split(" ")
+    for i, w in enumerate(words):
+        if re.fullmatch(r"[а-яё]+(ая|яя)", w):          # a feminine adjective
+            words[i] = w[:-2] + ("ую" if w.endswith("ая") else "юю")
+            continue
+        if re.fullmatch(r"[а-яё]+[ая]", w) and not w.endswith("мя"):   # its noun
+            words[i] = w[:-1] + ("у" if w.endswith("а") else "ю")
+        break
+    return " ".join(words)
