@@ -20,6 +20,20 @@ class Paragraph:
     text: str           # may hold **bold** runs
 
 
+def sentence(text: str) -> str:
+    """A line of the terminal (``ratio: 0,16``) as a paragraph of the записка: a capital
+    first letter and a full stop.
+
+    >>> sentence("доля цикла, занятая операцией: t_оп/T_ц = 0,16")
+    'Доля цикла, занятая операцией: t_оп/T_ц = 0,16.'
+    """
+    text = text.strip()
+    if not text:
+        return text
+    text = text[0].upper() + text[1:]
+    return text if text[-1] in ".!?…:" else text + "."
+
+
 @dataclass(frozen=True)
 class Bullets:
     items: tuple[str, ...]

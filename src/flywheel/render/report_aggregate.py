@@ -11,6 +11,7 @@ labels come from render/nomenclature.py, this module keeps the section titles.
 """
 from __future__ import annotations
 
+from flywheel.render.blocks import sentence
 from flywheel.render.catalogue import words
 from flywheel.render.document import Bullets, Document, Figure, Formula, Heading, Paragraph
 from flywheel.render.nomenclature import name as text, rotor_name, unit
@@ -131,8 +132,8 @@ def build_aggregate_document(r, title: str, source: str, lang: str = "en",
     if st is None:
         add(Paragraph(t["no_motor"]))
     else:
-        add(Paragraph(L("ag_forcing", w=g(st.omega_forcing), f=g(st.omega_forcing / TWO_PI),
-                        omega=g(st.omega_mean), n=g(st.omega_mean * RPM_PER_RAD_S))))
+        add(Paragraph(sentence(L("ag_forcing", w=g(st.omega_forcing), f=g(st.omega_forcing / TWO_PI),
+                                 omega=g(st.omega_mean), n=g(st.omega_mean * RPM_PER_RAD_S)))))
         table(t["resonance_caption"], [L("mode"), f"f_n, {U('Hz')}", L("ratio"), L("margin")],
               [[k + 1, g(x.omega_n / TWO_PI), g(x.ratio, ".4f"), g(x.margin, ".4f")]
                for k, x in enumerate(r.resonance)])

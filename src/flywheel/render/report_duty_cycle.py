@@ -15,6 +15,7 @@ from flywheel.render.numbers import fmt as _number
 from flywheel.render import nomenclature as nm
 from flywheel.render.catalogue import words
 from flywheel.render.document import Bullets, Document, Formula, Heading, Paragraph
+from flywheel.render.blocks import sentence
 from flywheel.render.duty_cycle import summary_tables
 
 T = words("report_duty_cycle", {
@@ -56,8 +57,8 @@ def build_duty_cycle_document(r, title: str, source: str, lang: str = "en") -> D
     for caption, header, rows, note, _ in summary_tables(r, lang):
         if rows:
             table(caption, header, rows)
-        if note:
-            add(Paragraph(note))
+        if note:                      # a line of the terminal: a sentence here
+            add(Paragraph(sentence(note)))
     if r.checks:
         from flywheel.render.duty_cycle import L10N
 

@@ -16,6 +16,7 @@ from __future__ import annotations
 
 import math
 
+from flywheel.render.blocks import sentence
 from flywheel.render.catalogue import words
 from flywheel.render.document import Bullets, Document, Figure, Formula, Heading, Paragraph
 from flywheel.render.nomenclature import name as text, symbol, unit
@@ -138,10 +139,12 @@ def build_task2_document(r, title: str, source: str, lang: str = "en",
     if r.unknown:
         name = symbol({"resistance": "t2_M_C", "driving": "t2_M_D"}[r.unknown], lang)
         val = r.M_C if r.unknown == "resistance" else r.M_D
-        add(Paragraph(text("t2_balance", lang, name=name, value=g(val), work=g(r.work_driving))))
+        add(Paragraph(sentence(text("t2_balance", lang, name=name, value=g(val),
+                                     work=g(r.work_driving)))))
     if r.power_found is not None and r.power is not None:
         name = symbol("t2_M_D" if r.power_found == "driving" else "t2_M_C", lang)
-        add(Paragraph(text("t2_power", lang, P=g(r.power), name=name, T=g(r.power / r.omega_mean))))
+        add(Paragraph(sentence(text("t2_power", lang, P=g(r.power), name=name,
+                                     T=g(r.power / r.omega_mean)))))
     if not r.steady:
         add(Paragraph(t["steady_no"].format(work=g(r.work_end), omega_end=g(r.omega_end, ".6f"))))
     table(t["segments_caption"],
