@@ -135,6 +135,11 @@ def test_the_pdf_is_a4_with_title_page_and_contents(gost_run):
     sections = [int(m.group(1)) for m in re.finditer(r"^(\d+) \D.*?\d+$", pages[1], re.M)]
     assert sections == list(range(1, len(sections) + 1)) and len(sections) >= 6
     assert "СПИСОК ИСПОЛЬЗОВАННЫХ ИСТОЧНИКОВ" in pages[1] and "СПИСОК ИСПОЛЬЗОВАННЫХ ИСТОЧНИКОВ" in pages[-1]
+    # the sources numbered «1. …», «2. …» (ГОСТ 7.32-2017, 6.16), no bullets, no «[1]»
+    sources = pages[-1].split("СПИСОК ИСПОЛЬЗОВАННЫХ ИСТОЧНИКОВ", 1)[1]
+    assert re.search(r"^1\. Исходные данные", sources, re.M)
+    assert re.search(r"^2\. Артоболевский", sources, re.M)
+    assert "[1]" not in sources and "•" not in sources
     whole = "\n".join(pages)
     # the compressor's tables are all short, none split: a continued table is
     # test_a_short_table_is_never_split_a_long_one_is_continued's

@@ -54,6 +54,8 @@ G = words("report_gost", {
 
 #: the headings the builders give their list of sources (they become ГОСТ's structural element)
 _SOURCES = {"Источники", "Список источников", "Список использованных источников", "Sources"}
+#: an entry of the builders' list of sources, «[1] …»
+_SOURCE_ENTRY = re.compile(r"^\[(\d+)\]\s*")
 _NUMBER = re.compile(r"^\s*\d+(\.\d+)*\.?\s+")
 
 #: where the Times-metric serif is looked for (Debian/Ubuntu's fonts-liberation, Fedora's,
@@ -113,9 +115,14 @@ class Section:
 
 def sections(doc: Document) -> list:
     """The document's blocks for the ГОСТ layout: the title heading dropped (it is on the title
-    page), every other heading renumbered continuously, the sources a structural element."""
-    out, n, m, waiting = [], 0, 0, []
+    page), every other heading renumbered continuously, the sources a structural element whose
+    entries are numbered paragraphs «1. …» (ГОСТ 7.32-2017, 6.16: arabic numerals with a full
+    stop, from the paragraph indent), not bullets «• [1] …»."""
+    out, n, m, waiting, in_sources = [], 0, 0, [], False
     for b in doc.blocks:
+        if in_sources and isinstance(b, Bullets):
+            out += [Paragraph(_SOURCE_ENTRY.sub(r"\1. ", x, count=1)) for x in b.items]
+            continue
         if not out and not (isinstance(b, Heading) and b.level >= 2):
             if not isinstance(b, Heading):      # the source of the data: into section 1
                 waiting.append(b)
@@ -124,7 +131,8 @@ def sections(doc: Document) -> list:
             if b.level <= 1:
                 continue
             text = _NUMBER.sub("", b.text).rstrip(".")
-            if b.level == 2 and text in _SOURCES:
+            in_sources = b.level == 2 and text in _SOURCES
+            if in_sources:
                 out.append(Section("", 1, G[doc.lang]["sources"], True))
                 continue
             if b.level == 2:
