@@ -4,6 +4,8 @@ course's task sheets write it («Определить кинетическую �
 name never cut by a symbol that only ends a word."""
 from __future__ import annotations
 
+from pathlib import Path
+
 import pytest
 
 from flywheel.render.sheet_labels import answer_words, object_form
@@ -39,3 +41,60 @@ def test_neuter_nouns_in_mya_and_symbols_stay():
     assert object_form("время цикла") == "время цикла"
     assert object_form("J_II, среднее за цикл") == "J_II, среднее за цикл"
     assert object_form("длина кривошипа") == "длину кривошипа"
+
+
+@pytest.mark.parametrize("key, ru, en", [
+    ("at.0.omega", "угловую скорость звена приведения при φ = 60°",
+     "crank angular velocity at φ = 60°"),
+    ("at.1.balancing_moment.kinetostatic", "уравновешивающий момент (кинетостатика) при φ = 250°",
+     "balancing moment (kinetostatics) at φ = 250°"),
+    ("at.0.balancing_moment.zhukovsky", "уравновешивающий момент по рычагу Жуковского при φ = 60°",
+     "balancing moment by Zhukovsky's lever at φ = 60°"),
+    ("at.0.joints.O:0->3.F", "реакцию в кинематической паре O (0→3): модуль при φ = 60°",
+     "reaction O (0→3): magnitude at φ = 60°"),
+    ("at.0.points.B.v", "скорость точки B при φ = 60°", "velocity of point B at φ = 60°"),
+    ("at.0.links.3.epsilon", "угловое ускорение звена 3 при φ = 60°",
+     "angular acceleration of link 3 at φ = 60°"),
+    ("force_analysis.crank_pin_load_max", "наибольшую нагрузку на шатунную шейку за цикл",
+     "the greatest load on the crank pin over the cycle"),
+])
+def test_a_report_angles_quantity_is_asked_at_its_angle(key, ru, en):
+    """A template may ask any number of summary.json: a report angle's (``at.N.…``) is asked
+    at the variant's angle N, a force analysis's extreme in words — the sheet had printed
+    «Определить угловую скорость звена приведения ω» (at which angle?) and «Определить
+    at.0.balancing_moment.kinetostatic»."""
+    angles = (60.0, 250.0)
+    assert answer_words("run", key, "ru", angles)[0] == ru
+    assert answer_words("run", key, "en", angles)[0] == en
+
+
+def test_the_task_sheet_and_the_moodle_bank_ask_at_the_variants_angle(tmp_path):
+    """variants_shaper.toml asking M_у and a reaction at its report angle (output.at_deg =
+    [60, 250]): the sheet's «Определить» items and the Moodle questions name the angle."""
+    import re
+
+    from typer.testing import CliRunner
+
+    from flywheel.cli import app
+
+    root = Path(__file__).resolve().parents[2]
+    text = (root / "cases" / "variants_shaper.toml").read_text(encoding="utf-8")
+    text = re.sub(r'\nanswers = \[[^\]]*\]', '\nanswers = ["at.0.balancing_moment.kinetostatic", '
+                  '"at.1.joints.O:0->3.F", "force_analysis.balancing_moment_max"]', text)
+    text = re.sub(r'\ntolerances = \{[^}]*\}', '', text)
+    template = tmp_path / "t.toml"
+    template.write_text(text, encoding="utf-8")
+    res = CliRunner().invoke(app, ["variants", str(template), "--count", "1", "--seed", "1",
+                                   "--out", str(tmp_path / "v"), "--lang", "ru", "--sheets",
+                                   "--sheets-format", "html", "--moodle",
+                                   str(tmp_path / "q.xml")])
+    assert res.exit_code == 0, res.output
+    sheet = re.sub(r"<[^>]+>", "", (tmp_path / "v" / "sheets" / "variant_01.html").read_text(
+        encoding="utf-8"))
+    bank = re.sub(r"<[^>]+>|&lt;sub&gt;|&lt;/sub&gt;", "", (tmp_path / "q.xml").read_text(
+        encoding="utf-8"))
+    for said in ("Определить уравновешивающий момент (кинетостатика) при φ = 60°",
+                 "Определить реакцию в кинематической паре O (0→3): модуль при φ = 250°",
+                 "Определить наибольший уравновешивающий момент за цикл"):
+        assert said in sheet and said in bank, said
+    assert "at.0." not in sheet and "force_analysis." not in sheet

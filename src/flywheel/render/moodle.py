@@ -26,17 +26,31 @@ T = words("moodle", {
 })
 
 
-def _unit_and_words(answer: str, kind: str, lang: str) -> tuple[str, str, str, str]:
-    """(what, symbol, unit as the sheet prints it, SI unit symbol for Moodle's units)."""
+def _unit_and_words(answer: str, kind: str, lang: str,
+                    at_deg: tuple = ()) -> tuple[str, str, str, str]:
+    """(what, symbol, unit as the sheet prints it, SI unit symbol for Moodle's units); a report
+    angle's quantity at its angle of ``at_deg`` (the variant's)."""
     from flywheel.render.nomenclature import unit_of
     from flywheel.render.sheet_labels import answer_words
 
-    what, sym, u = answer_words(kind, answer, lang)
+    what, sym, u = answer_words(kind, answer, lang, at_deg)
     try:
         si = unit_of(answer.rsplit(".", 1)[-1], "en")
     except KeyError:
         si = answer_words(kind, answer, "en")[2]     # a reaction's cell: its term's unit
     return what, sym, u, "" if si in ("–", "-") else si
+
+
+def _angles(v, t) -> tuple:
+    """The report angles of variant ``v`` where the template asks a quantity at one
+    (``at.N.…``), else none."""
+    if t.kind != "run" or not any(a.startswith("at.") for a in t.keyed):
+        return ()
+    import tomllib
+
+    from flywheel.teaching.sheets import report_angles
+
+    return report_angles(tomllib.loads(v.text))
 
 
 def _text(s: str) -> str:
@@ -54,10 +68,11 @@ def quiz_xml(vs, lang: str = "en") -> str:
                 f"    <category>{_text(top + '/' + w['category'].format(variant=v.id))}"
                 "</category>", "  </question>"]
         floors = cell_floors(t.tables, v.answers) if t.tables else {}
+        at_deg = _angles(v, t)
         for a in t.keyed:
             value = v.answers[a]
             rel = t.tolerance_of(a)
-            what, sym, unit, si = _unit_and_words(a, t.kind, lang)
+            what, sym, unit, si = _unit_and_words(a, t.kind, lang, at_deg)
             pct = f"{100 * rel:g}".replace(".", "," if lang == "ru" else ".")
             # the question's HTML: the symbol's subscript in <sub> (M<sub>Д</sub>, as the task
             # sheet sets it), the rest escaped; the tag as it is, for grade to read back

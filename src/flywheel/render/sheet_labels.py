@@ -417,11 +417,96 @@ def cell_words(key: str, lang: str = "en") -> tuple[str, str, str] | None:
     return (object_form(what) if lang == "ru" else what), sym, "" if u in ("–", "-", "") else u
 
 
-def answer_words(kind: str, key: str, lang: str = "en") -> tuple[str, str, str]:
+#: a report angle's record of summary.json (``at.N.…``) as a task asks it: its group and the
+#: nomenclature's term; a point's or a link's quantity names its point or link
+_AT_GROUPS = {("balancing_moment", "kinetostatic"): "M_y",
+              ("balancing_moment", "zhukovsky"): "M_y_zhukovsky",
+              ("balancing_moment", "groups"): "M_y_groups",
+              ("balancing_moment", "power"): "M_y_power"}
+_AT_LOADS = {"crank_pin_load": "crank_pin_load", "main_bearing_load": "main_bearing_load",
+             "shaking_force": "shaking_force"}
+_COMPONENT = {"F": ("", ""), "Fx": (": x component", ": проекция на ось x"),
+              "Fy": (": y component", ": проекция на ось y")}
+#: a link's quantities at a report angle: (English, Russian, symbol) with the link's name
+_AT_LINK = {"omega": ("angular velocity of link {L}", "угловая скорость звена {L}", "ω_{L}", "rad/s"),
+            "epsilon": ("angular acceleration of link {L}", "угловое ускорение звена {L}", "ε_{L}",
+                        "rad/s²"),
+            "omega_q": ("angular velocity analogue of link {L}", "аналог угловой скорости звена {L}",
+                        "ω_q{L}", "-"),
+            "epsilon_q": ("angular acceleration analogue of link {L}",
+                          "аналог углового ускорения звена {L}", "ε_q{L}", "1/rad")}
+
+
+#: the force analysis's extremes over the cycle (summary.json results.force_analysis): key →
+#: (English, Russian, the nomenclature's term of its symbol and unit)
+_FORCE_ANALYSIS = {
+    "balancing_moment_max": ("the greatest balancing moment over the cycle",
+                             "наибольший уравновешивающий момент за цикл", "M_y"),
+    "balancing_moment_min": ("the least balancing moment over the cycle",
+                             "наименьший уравновешивающий момент за цикл", "M_y"),
+    "balancing_moment_cycle_mean": ("the mean of the balancing moment over the cycle",
+                                    "среднее за цикл значение уравновешивающего момента", "M_y"),
+    "crank_pin_load_max": ("the greatest load on the crank pin over the cycle",
+                           "наибольшая нагрузка на шатунную шейку за цикл", "crank_pin_load"),
+    "main_bearing_load_max": ("the greatest load on the main bearing over the cycle",
+                              "наибольшая нагрузка на коренной подшипник за цикл",
+                              "main_bearing_load"),
+    "shaking_force_max": ("the greatest shaking force on the frame over the cycle",
+                          "наибольшая неуравновешенная сила на стойку за цикл", "shaking_force"),
+    "shaking_moment_max": ("the greatest shaking moment on the frame over the cycle",
+                           "наибольший неуравновешенный момент на стойку за цикл",
+                           "shaking_moment"),
+}
+
+
+def _at_words(key: str, lang: str) -> tuple[str, str, str] | None:
+    """(what, symbol, unit) of a report angle's quantity ``at.N.…`` without its angle, or of
+    a force analysis's extreme over the cycle (``force_analysis.…_max``); None for another key
+    or one not worded here."""
+    from flywheel.render.nomenclature import unit
+
+    parts = key.split(".")
+    if len(parts) == 2 and parts[0] == "force_analysis" and parts[1] in _FORCE_ANALYSIS:
+        en, r, term = _FORCE_ANALYSIS[parts[1]]
+        return (r if lang == "ru" else en), symbol(term, lang), unit_of(term, lang)
+    if len(parts) < 3 or parts[0] != "at" or not parts[1].isdigit():
+        return None
+    ru = lang == "ru"
+    group, rest = parts[2], parts[3:]
+    if group == "points" and len(rest) == 2 and rest[1] in TERMS:
+        point, q = rest
+        what = name(q, lang)
+        tail = (" точки" if ru else " of a point")
+        what = (what[:-len(tail)] if what.endswith(tail) else what) + (
+            f" точки {point}" if ru else f" of point {point}")
+        return what, symbol(q, lang), unit_of(q, lang)
+    if group == "links" and len(rest) == 2 and rest[1] in _AT_LINK:
+        en, r, sym, u = _AT_LINK[rest[1]]
+        return (r if ru else en).format(L=rest[0]), sym.format(L=rest[0]), unit(u, lang)
+    if group == "joints" and len(rest) == 2 and rest[1] in ("F", "Fx", "Fy"):
+        column = {"F": "R", "Fx": "Rx", "Fy": "Ry"}[rest[1]]
+        return cell_words(f"reactions.{rest[0]}.{column}", lang)
+    term = _AT_GROUPS.get((group, rest[0])) if len(rest) == 1 else None
+    if term is None and group in _AT_LOADS and len(rest) == 1 and rest[0] in _COMPONENT:
+        term = _AT_LOADS[group]
+        what = name(term, lang) + _COMPONENT[rest[0]][ru]
+        return what, symbol(term, lang), unit_of(term, lang)
+    if term is None and not rest and group in TERMS:
+        term = group
+    if term is None:
+        return None
+    what, sym = name(term, lang), symbol(term, lang)
+    what = what.replace(f" {sym} ", " ", 1)
+    return what[:-len(sym) - 1] if what.endswith(" " + sym) else what, sym, unit_of(term, lang)
+
+
+def answer_words(kind: str, key: str, lang: str = "en",
+                 at_deg: tuple = ()) -> tuple[str, str, str]:
     """(what, symbol, unit) of an answer of a ``kind`` ("run", "task2") case as a task sheet
     asks it: the object of "Determine …", the symbol and the unit as printed ("" where the
     quantity has none; the result key itself if it is no term; a table's cell:
-    :func:`cell_words`).
+    :func:`cell_words`; a report angle's quantity ``at.N.…`` at ``at_deg[N]``, the variant's
+    report angles, where given: «угловую скорость звена 3 при φ = 60°»).
 
     >>> answer_words("run", "J_flywheel", "ru")
     ('момент инерции маховика', 'J_М', 'кг·м²')
@@ -429,6 +514,15 @@ def answer_words(kind: str, key: str, lang: str = "en") -> tuple[str, str, str]:
     cell = cell_words(key, lang)
     if cell is not None:
         return cell
+    at = _at_words(key, lang)
+    if at is not None:
+        what, sym, u = at
+        n = int(key.split(".")[1]) if key.startswith("at.") else len(at_deg)
+        if n < len(at_deg):                 # the variant's report angle it is asked at
+            from flywheel.render.numbers import fmt
+
+            what += (" при φ = " if lang == "ru" else " at φ = ") + fmt(at_deg[n], given=True) + "°"
+        return (object_form(what) if lang == "ru" else what), sym, "" if u in ("–", "") else u
     last = key.rsplit(".", 1)[-1]
     words = SHEET_ANSWERS.get(f"{kind}:{key}") or SHEET_ANSWERS.get(key)
     try:

@@ -87,6 +87,7 @@ class Sheet:
     names: dict[str, str] = field(default_factory=dict)
     tables: tuple = ()           # teaching.tables.TableSpec: blank tables to fill in
     default_tolerance: float = 0.01   # the template's: a table column's without its own
+    at_deg: tuple = ()           # the report angles [deg] an ``at.N.…`` answer is asked at
 
 
 # -- units from the schema -------------------------------------------------------------------------
@@ -230,6 +231,15 @@ def element_names(document: dict, prefix: str = "") -> dict[str, str]:
     return out
 
 
+def report_angles(doc: dict) -> tuple[float, ...]:
+    """The report angles [deg] of a run case's document: its ``output.at_deg``, else the case
+    file's default (cases.run.OutputSpec)."""
+    from flywheel.cases.run import OutputSpec
+
+    at = (doc.get("output") or {}).get("at_deg")
+    return tuple(float(a) for a in (at if at is not None else OutputSpec().at_deg))
+
+
 def find_list(template) -> tuple[Find, ...]:
     """The answers asked, each with the tolerance ``flywheel grade`` uses for it (the
     template's per-answer tolerance, else its default)."""
@@ -313,6 +323,7 @@ def sheets_of(vs, progress=None) -> list[Sheet]:
         given = given_rows(t.kind, doc, varied)
         if t.kind == "run":
             given += default_rows(doc, v.filename, t.answers)
+            kw["at_deg"] = report_angles(doc)
         out.append(Sheet(n, v.id, stem, t.kind, title, given, find, names=element_names(doc),
                          tables=t.tables, default_tolerance=t.tolerance, **kw))
         if progress is not None:
