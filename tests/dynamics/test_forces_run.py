@@ -322,14 +322,14 @@ def test_lang_ru_runs(tmp_path):
     assert "Силовой расчёт (кинетостатика)" in res.output
     assert "сходимость с динамикой" in res.output and "рычаг Жуковского" in res.output
     report = (out / "report.md").read_text(encoding="utf-8")
-    assert "## Силовой расчёт (кинетостатика)" in report
+    assert "## 7. Силовой расчёт (кинетостатика)" in report       # numbered as the rest
     assert "Реакции в кинематических парах при φ = 120°" in report
     assert "движущая сила на поршне" in report and "боковое давление на стенку цилиндра" in report
     en = runner.invoke(app, ["run", str(CASES / "compressor.toml"), "--no-plots", "--points", "720",
                              "--out", str(tmp_path / "en")])
     assert "Force analysis (kinetostatics)" in en.output and "closure with the dynamics" in en.output
     report = (tmp_path / "en" / "report.md").read_text(encoding="utf-8")
-    assert "## Force analysis (kinetostatics)" in report and "piston effort" in report
+    assert "## 7. Force analysis (kinetostatics)" in report and "piston effort" in report
 
 
 def test_tabulated_press_one_line_note_and_no_joints(tmp_path):

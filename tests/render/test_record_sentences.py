@@ -36,3 +36,29 @@ def test_no_paragraph_begins_with_a_small_letter(command, lang, tmp_path):
     md = (tmp_path / "o" / "report.md").read_text(encoding="utf-8")
     small = [p for p in _paragraphs(md) if p[0].islower() and p[0] not in "ωεφδ"]
     assert not small, small
+
+
+@pytest.mark.parametrize("case", ["compressor", "shaper"])
+def test_the_records_sections_are_numbered_without_a_gap(case, tmp_path):
+    """The markdown and HTML record number their sections 1, 2, … and subsections 1.1, 1.2, …
+    as the ГОСТ PDF does: the compressor has no technological forces (section 1.5 of the
+    builder), the shaper no cylinders (1.4); they had read 1.4 then 1.6, 1.3 then 1.5, and the
+    force analysis had no number at all. The sources are unnumbered."""
+    import re
+
+    res = runner.invoke(app, ["run", str(CASES / f"{case}.toml"), "--no-plots", "--lang", "ru",
+                              "-o", str(tmp_path / "o")])
+    assert res.exit_code == 0, res.output
+    md = (tmp_path / "o" / "report.md").read_text(encoding="utf-8")
+    heads = re.findall(r"^(##+) (.*)$", md, re.M)
+    sections = [t for level, t in heads if level == "##"]
+    assert sections[-1] == "Источники"
+    assert [int(t.split(".")[0]) for t in sections[:-1]] == list(range(1, len(sections)))
+    assert any(t.startswith("7. Силовой расчёт") for t in sections)
+    n = 0
+    for level, text in heads:
+        if level == "##" and text != "Источники":
+            n, m = int(text.split(".")[0]), 0
+        elif level == "###":
+            m += 1
+            assert text.startswith(f"{n}.{m}. "), (text, n, m)

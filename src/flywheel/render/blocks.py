@@ -6,6 +6,7 @@ the document builder.
 """
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass, field, replace
 
 
@@ -138,3 +139,33 @@ def front(doc: Document, spec, frame: str = "", **given: str | None) -> Document
     the options ``given``; the machine is the document's title; ``frame`` the page frame."""
     doc.front = replace(TitlePage.of(spec, doc.title, **given), frame=frame)
     return doc
+
+
+#: the headings the builders give their list of sources (unnumbered: a structural element)
+SOURCES = {"Источники", "Список источников", "Список использованных источников", "Sources"}
+#: a heading's own number, «1.6. », «7 »
+HEADING_NUMBER = re.compile(r"^\s*\d+(\.\d+)*\.?\s+")
+
+
+def numbered(blocks) -> list:
+    """The blocks with their sections numbered 1, 2, … and subsections 1.1, 1.2, … without a
+    gap, whatever numbers the builders wrote (a section left out where the case has nothing
+    for it — the compressor's technological forces — had left «1.4» followed by «1.6»; the
+    force analysis and the warnings had none); the sources unnumbered. The ГОСТ layout
+    (report_gost.sections) numbers them so too."""
+    out, n, m = [], 0, 0
+    for b in blocks:
+        if not isinstance(b, Heading) or b.level not in (2, 3):
+            out.append(b)
+            continue
+        text = HEADING_NUMBER.sub("", b.text)
+        if b.level == 2 and text.rstrip(".") in SOURCES:
+            out.append(replace(b, text=text))
+        elif b.level == 2:
+            n, m = n + 1, 0
+            out.append(replace(b, text=f"{n}. {text}"))
+        else:
+            m += 1
+            out.append(replace(b, text=f"{max(n, 1)}.{m}. {text}"))
+    return out
+

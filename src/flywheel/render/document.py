@@ -14,6 +14,7 @@ import math
 from flywheel.dynamics.loads import LoadKey
 from flywheel.render import nomenclature as nm
 from flywheel.render.catalogue import words
+from flywheel.render import blocks
 from flywheel.render.blocks import (  # noqa: F401  (the model, re-exported)
     Bullets, Document, Figure, Formula, Heading, Paragraph, Table)
 from flywheel.io.text import in_language
@@ -444,6 +445,7 @@ def build_document(results, lang: str = "en", plots: list[str] | None = None,
     if source:
         src.insert(0, t["case_source"].format(s=source))
     b.add(Bullets(tuple(f"[{i}] {x}" for i, x in enumerate(src, 1))))
+    b.doc.blocks[:] = blocks.numbered(b.doc.blocks)   # 1.1 … without a gap, all numbered
     return b.doc
 
 

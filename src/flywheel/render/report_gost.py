@@ -31,7 +31,8 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from flywheel.render import mathfmt
-from flywheel.render.blocks import Bullets, Document, Figure, Formula, Heading, Paragraph, Table, TitlePage
+from flywheel.render.blocks import (SOURCES, HEADING_NUMBER, Bullets, Document, Figure, Formula,
+                                    Heading, Paragraph, Table, TitlePage)
 from flywheel.render.catalogue import words
 from flywheel.render.typst_blocks import boxed_literal, markup, typst_block
 
@@ -52,11 +53,8 @@ G = words("report_gost", {
     "continued": "Continuation of table {n}",
 })
 
-#: the headings the builders give their list of sources (they become ГОСТ's structural element)
-_SOURCES = {"Источники", "Список источников", "Список использованных источников", "Sources"}
-#: an entry of the builders' list of sources, «[1] …»
+#: an entry of the builders' list of sources (blocks.SOURCES), «[1] …»
 _SOURCE_ENTRY = re.compile(r"^\[(\d+)\]\s*")
-_NUMBER = re.compile(r"^\s*\d+(\.\d+)*\.?\s+")
 
 #: where the Times-metric serif is looked for (Debian/Ubuntu's fonts-liberation, Fedora's,
 #: Arch's); $FLYWHEEL_FONTS (folders separated by os.pathsep) first
@@ -130,8 +128,8 @@ def sections(doc: Document) -> list:
         if isinstance(b, Heading):
             if b.level <= 1:
                 continue
-            text = _NUMBER.sub("", b.text).rstrip(".")
-            in_sources = b.level == 2 and text in _SOURCES
+            text = HEADING_NUMBER.sub("", b.text).rstrip(".")
+            in_sources = b.level == 2 and text in SOURCES
             if in_sources:
                 out.append(Section("", 1, G[doc.lang]["sources"], True))
                 continue
