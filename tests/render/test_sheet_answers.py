@@ -57,6 +57,13 @@ def test_neuter_nouns_in_mya_and_symbols_stay():
      "angular acceleration of link 3 at φ = 60°"),
     ("force_analysis.crank_pin_load_max", "наибольшую нагрузку на шатунную шейку за цикл",
      "the greatest load on the crank pin over the cycle"),
+    ("output_link.stroke", "ход ползуна", "stroke of the slider"),
+    ("output_link.extremes_phi_deg.1",
+     "угол поворота кривошипа в крайнем положении 2 выходного звена",
+     "crank angle of the output link's extreme position 2"),
+    ("output_link.phi_transmission_angle_min_deg",
+     "угол поворота кривошипа при наименьшем угле передачи",
+     "crank angle of the least transmission angle"),
 ])
 def test_a_report_angles_quantity_is_asked_at_its_angle(key, ru, en):
     """A template may ask any number of summary.json: a report angle's (``at.N.…``) is asked

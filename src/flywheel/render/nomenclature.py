@@ -450,6 +450,9 @@ TERMS: dict[str, Term] = {
                        "коэффициент изменения средней скорости хода"),
     "transmission_angle_min_deg": _t("γ_min", r"$\gamma_{min}$", "deg",
                                      "least transmission angle", "наименьший угол передачи"),
+    "phi_transmission_angle_min_deg": _t("φ", r"$\varphi$", "deg",
+                                         "crank angle of the least transmission angle",
+                                         "угол поворота кривошипа при наименьшем угле передачи"),
     # the kinematics alone (dynamics/kinematics_only.py): true values on the grid at ω_m
     "v_{point}": _t("v", "$v$", "m/s", "velocity of {x}", "скорость точки {x}"),
     "a_{point}": _t("a", "$a$", "m/s²", "acceleration of {x}", "ускорение точки {x}"),

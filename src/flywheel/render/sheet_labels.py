@@ -460,12 +460,21 @@ _FORCE_ANALYSIS = {
 
 
 def _at_words(key: str, lang: str) -> tuple[str, str, str] | None:
-    """(what, symbol, unit) of a report angle's quantity ``at.N.…`` without its angle, or of
-    a force analysis's extreme over the cycle (``force_analysis.…_max``); None for another key
-    or one not worded here."""
+    """(what, symbol, unit) of a report angle's quantity ``at.N.…`` without its angle, of a
+    force analysis's extreme over the cycle (``force_analysis.…_max``) or of the output link's
+    stroke and extreme positions (``output_link.stroke``, ``output_link.extremes_phi_deg.N``);
+    None for another key or one not worded here."""
     from flywheel.render.nomenclature import unit
 
     parts = key.split(".")
+    if parts[0] == "output_link" and len(parts) == 2 and parts[1] == "stroke":
+        return name("output_stroke", lang), symbol("output_stroke", lang), unit_of("output_stroke",
+                                                                                 lang)
+    if parts[:2] == ["output_link", "extremes_phi_deg"] and len(parts) == 3 and parts[2].isdigit():
+        k = int(parts[2]) + 1
+        return ((f"угол поворота кривошипа в крайнем положении {k} выходного звена" if
+                 lang == "ru" else f"crank angle of the output link's extreme position {k}"),
+                "φ", unit_of("phi_deg", lang))
     if len(parts) == 2 and parts[0] == "force_analysis" and parts[1] in _FORCE_ANALYSIS:
         en, r, term = _FORCE_ANALYSIS[parts[1]]
         return (r if lang == "ru" else en), symbol(term, lang), unit_of(term, lang)
