@@ -283,7 +283,9 @@ def test_scheme(results, made):
     assert ax.get_aspect() == 1.0
     assert (ax.get_xlabel(), ax.get_ylabel()) == ("$x$ [m]", "$y$ [m]")
     labels = {t.get_text() for t in ax.texts}
-    assert {"O", "A", "B", "C", "S2", "S4"} <= labels          # every named point
+    # every named point, a centroid's digit a subscript as the course and the sheets write it
+    assert {"O", "A", "B", "C", "S₂", "S₄"} <= labels and not {"S2", "S4"} & labels
+    assert "trajectory of S₂" in _legend_texts(fig)
     assert {"1", "2", "3", "4", "5"} <= labels                  # every link
     texts = _legend_texts(fig)
     assert sum(t.startswith("trajectory of ") for t in texts) == 5

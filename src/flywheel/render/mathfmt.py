@@ -26,6 +26,19 @@ SYMBOLS = {
 }
 _OPERATORS = set("=+−-·×/(),;:≤≥≈∮∫Σ|′[]<>")
 _SUP = str.maketrans("0123456789+−-", "⁰¹²³⁴⁵⁶⁷⁸⁹⁺⁻⁻")
+_SUB_DIGITS = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
+
+
+def point_name(name: str) -> str:
+    """A point's name as a figure letters it in plain text, its trailing digits a subscript
+    as the course and the drawing sheets write them: "S3" → "S₃", "B1" → "B₁"; "B", "AB",
+    "12" as they are.
+
+    >>> point_name("S3"), point_name("S12"), point_name("B"), point_name("12")
+    ('S₃', 'S₁₂', 'B', '12')
+    """
+    m = _re.match(r"^(.*?[^\d_])(\d+)$", name)
+    return m.group(1) + m.group(2).translate(_SUB_DIGITS) if m else name
 
 
 @dataclass(frozen=True)

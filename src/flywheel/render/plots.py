@@ -402,9 +402,11 @@ def _scheme_legend_handles(results, lang: str):
         h.append(Patch(facecolor="0.85", edgecolor="k", label=_t(lang, "sliders")))
     if results.drawing.guided_sliders:
         h.append(Line2D([], [], color="k", linewidth=1.0, label=_t(lang, "guides")))
+    from flywheel.render.mathfmt import point_name
+
     for k, name in enumerate(results.drawing.moving_points):
         h.append(Line2D([], [], color=f"C{k % 10}", linewidth=0.8,
-                        label=_t(lang, "trajectory", p=name)))
+                        label=_t(lang, "trajectory", p=point_name(name))))
     return h
 
 

@@ -16,7 +16,6 @@ layout), saved by its pool of workers (:func:`figures` is registered in
 from __future__ import annotations
 
 import math
-import re
 
 import numpy as np
 
@@ -120,9 +119,11 @@ def _sub(x: str) -> str:
 
 
 def _image(label: str) -> str:
-    """An image's letter as the course writes it: "s2" → s₂, "a3" → a₃, "p′" → p′."""
-    m = re.match(r"^(.*?)(\d+)$", label)
-    return m.group(1) + m.group(2).translate(_SUB) if m else label
+    """An image's letter as the course writes it: "s2" → s₂, "a3" → a₃, "p′" → p′
+    (mathfmt.point_name)."""
+    from flywheel.render.mathfmt import point_name
+
+    return point_name(label)
 
 
 def _vec_label(plan, v) -> str:

@@ -12,6 +12,7 @@ import math
 import numpy as np
 
 from flywheel.render import nomenclature as nm
+from flywheel.render.mathfmt import point_name
 
 
 
@@ -207,7 +208,7 @@ def scheme_names(labels, results, i: int, size: float) -> None:
         if name in fixed:               # beside its support, not on it
             out = np.array([-0.95, 0.3])
         first = np.array(toward(out + 0.5 * np.array([-out[1], out[0]]), 6.0))
-        labels.point(c, name, places=np.vstack([first, around(5.0)]), **bold)
+        labels.point(c, point_name(name), places=np.vstack([first, around(5.0)]), **bold)
     italic = {"fontsize": 8, "style": "italic", "color": "0.2", "zorder": 7}
     for link, xy in shapes:
         if len(xy) == 2:
