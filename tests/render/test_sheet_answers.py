@@ -105,3 +105,30 @@ def test_the_task_sheet_and_the_moodle_bank_ask_at_the_variants_angle(tmp_path):
                  "Определить наибольший уравновешивающий момент за цикл"):
         assert said in sheet and said in bank, said
     assert "at.0." not in sheet and "force_analysis." not in sheet
+    # the key keeps the variant's report angles, so a feedback page names them too
+    import json
+
+    key = json.loads((tmp_path / "v" / "answers.json").read_text(encoding="utf-8"))
+    assert key["at_deg"] == {"01": [60.0, 250.0]}
+    answers = key["variants"]["01"]
+    sheet_csv = tmp_path / "s.csv"
+    sheet_csv.write_text("student,variant," + ",".join(answers) + "\nИванов,01,"
+                         + ",".join(repr(v) for v in answers.values()) + "\n", encoding="utf-8")
+    res = CliRunner().invoke(app, ["grade", str(tmp_path / "v" / "answers.json"), str(sheet_csv),
+                                   "--lang", "ru", "--feedback", str(tmp_path / "fb")])
+    assert res.exit_code == 0, res.output
+    page = next((tmp_path / "fb").iterdir()).read_text(encoding="utf-8")
+    assert "уравновешивающий момент (кинетостатика) при φ = 60°" in page
+
+
+def test_a_broken_at_deg_of_a_key_is_one_line():
+    from flywheel.errors import CaseFileError
+    from flywheel.teaching.grading import parse_key
+
+    doc = {"variants": {"01": {"at.0.omega": 62.8}}, "tolerance": 0.01,
+           "at_deg": {"01": "sixty"}}
+    with pytest.raises(CaseFileError) as e:
+        parse_key(doc, "answers.json")
+    assert "answers.json: at_deg: must be an object {variant: [angles in degrees]}" in str(e.value)
+    doc["at_deg"] = {"01": [60, 250.0]}
+    assert parse_key(doc, "answers.json").at_deg == {"01": (60.0, 250.0)}

@@ -38,12 +38,13 @@ def _num(x, lang: str, given: bool = False, spec: str | None = None) -> str:
         return fmt(x, 6, spec=spec, zero=None, nonfinite="show", given=given)
 
 
-def label(answer: str, lang: str, kind: str = "run") -> str:
+def label(answer: str, lang: str, kind: str = "run", at_deg: tuple = ()) -> str:
     """An answer as the task sheet of a ``kind`` case ("run", "task2") asks it
-    (render/sheet_labels.py): «name symbol, unit»."""
+    (render/sheet_labels.py): «name symbol, unit»; an ``at.N.…`` one at its angle of
+    ``at_deg``, the variant's report angles."""
     from flywheel.render.sheet_labels import answer_words
 
-    what, sym, u = answer_words(kind, answer, lang)      # a table's cell: its own words
+    what, sym, u = answer_words(kind, answer, lang, at_deg)   # a table's cell: its own words
     return " ".join(x for x in (what, sym) if x) + (f", {u}" if u else "")
 
 
@@ -66,8 +67,10 @@ def _pct(x: float, lang: str) -> str:
     return _num(round(100 * x), lang) + " %"
 
 
-def page(s, lang: str = "en", reveal: bool = True, share: float = 0.0, kind: str = "run") -> str:
-    """The HTML page of one graded student (``StudentGrade``) of a key of ``kind`` variants."""
+def page(s, lang: str = "en", reveal: bool = True, share: float = 0.0, kind: str = "run",
+         at_deg: tuple = ()) -> str:
+    """The HTML page of one graded student (``StudentGrade``) of a key of ``kind`` variants
+    (``at_deg``: the student's variant's report angles, where the key keeps them)."""
     t = T[lang]
     e = html.escape
     rows = []
@@ -75,7 +78,7 @@ def page(s, lang: str = "en", reveal: bool = True, share: float = 0.0, kind: str
     for j, a in enumerate(s.answers):
         if in_table >> j & 1 and a.passed:
             continue                  # a table's right cell: counted in its table's line
-        cells = [f"{sub_html(label(a.answer, lang, kind))}<br><small>{e(a.answer)}</small>",
+        cells = [f"{sub_html(label(a.answer, lang, kind, at_deg))}<br><small>{e(a.answer)}</small>",
                  _num(a.given, lang, given=True), e(verdict_word(a, lang)),
                  sub_html(MISTAKES[lang].get(a.diagnosis, a.diagnosis or t["none"]))]
         if reveal:
@@ -132,7 +135,9 @@ def write_feedback(report, folder, lang: str = "en", reveal: bool = True, notes=
 
     def build(tmp: Path) -> None:
         for i, s in enumerate(report.students, start=1):
+            angles = report.key.at_deg.get(report.key.find(s.variant) or "", ())
             (tmp / file_name(i, s.student)).write_text(
-                page(s, lang, reveal, report.carried_share, report.key.kind), encoding="utf-8")
+                page(s, lang, reveal, report.carried_share, report.key.kind, angles),
+                encoding="utf-8")
 
     return write_folder(Path(folder), build, "", "feedback", notes)

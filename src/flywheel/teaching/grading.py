@@ -66,6 +66,7 @@ class Key:
     givens: dict = field(default_factory=dict)   # variant id → teaching.chain.Givens
     tables: dict = field(default_factory=dict)   # name → teaching.tables.TableSpec
     kind: str = "run"   # the case kind the variants are of ("run", "task2"): the sheet's words
+    at_deg: dict = field(default_factory=dict)   # variant id → its report angles [deg] (at.N)
 
     def tolerance_of(self, answer: str, default: float | None = None) -> float:
         """The per-answer tolerance of the key file (a table's cell: its column's), else
@@ -176,7 +177,22 @@ def parse_key(doc, source: str = "<key>") -> Key:
     answers = list(answers) + [c for t in tables.values() for c in t.cells if c not in listed]
     kind = "task2" if "variants" in doc and doc.get("kind") == "task2" else "run"
     return Key(source, variants, float(tol), {str(k): float(v) for k, v in tols.items()},
-               tuple(answers), givens, tables, kind)
+               tuple(answers), givens, tables, kind,
+               _at_deg(doc.get("at_deg") if "variants" in doc else None, source))
+
+
+def _at_deg(table, source: str) -> dict:
+    """The key's ``at_deg`` {variant: [report angles, deg]}: what an ``at.N.…`` answer is
+    asked at (a feedback page says it); {} without one; a broken one is one CaseFileError
+    line."""
+    if table is None:
+        return {}
+    if not isinstance(table, dict) or not all(
+            isinstance(a, list) and all(_number(x) for x in a) for a in table.values()):
+        raise CaseFileError(led(f"{source}: at_deg: ", Notice.of(
+            "key_at_deg", "must be an object {{variant: [angles in degrees]}} (got {got})",
+            got=repr(table)[:80])))
+    return {str(k): tuple(float(x) for x in a) for k, a in table.items()}
 
 
 def _chain_givens(chain, source: str) -> dict:

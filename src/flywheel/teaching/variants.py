@@ -590,6 +590,14 @@ def answers_json(vs: VariantSet) -> str:
         "variants": {v.id: v.answers for v in vs.variants},
         "drawn": {v.id: v.drawn for v in vs.variants},
     }
+    if t.kind == "run" and any(a.startswith("at.") for a in t.answers):
+        # the report angles an at.N answer is asked at (a feedback page names them); none: as
+        # before
+        import tomllib
+
+        from flywheel.teaching.sheets import report_angles
+
+        doc["at_deg"] = {v.id: list(report_angles(tomllib.loads(v.text))) for v in vs.variants}
     if t.tables:           # the cells of each table (teaching/tables.py); none: as before
         doc["tables"] = {s.name: s.to_document() for s in t.tables}
     text = json.dumps(doc, indent=2, ensure_ascii=False)
