@@ -526,24 +526,26 @@ def answer_words(kind: str, key: str, lang: str = "en",
     at = _at_words(key, lang)
     if at is not None:
         what, sym, u = at
-        n = int(key.split(".")[1]) if key.startswith("at.") else len(at_deg)
-        if n < len(at_deg):                 # the variant's report angle it is asked at
-            from flywheel.render.numbers import fmt
+    else:
+        last = key.rsplit(".", 1)[-1]
+        words = SHEET_ANSWERS.get(f"{kind}:{key}") or SHEET_ANSWERS.get(key)
+        try:
+            sym, u = symbol(last, lang), unit_of(last, lang)
+            label = name(key if key in TERMS else last, lang)
+        except KeyError:
+            sym, u, label = "", "", key
+        if f"{kind}:{key}" in SHEET_SYMBOLS:
+            sym = SHEET_SYMBOLS[f"{kind}:{key}"][lang == "ru"]
+        what = words[lang == "ru"] if words else label
+        if sym and what.endswith(" " + sym):    # a name that ends with its symbol: not twice
+            what = what[:-len(sym)].rstrip(" ,")
+    parts = key.split(".")
+    if (what != key and len(parts) > 2 and parts[0] == "at" and parts[1].isdigit()
+            and int(parts[1]) < len(at_deg)):
+        from flywheel.render.numbers import fmt     # the variant's report angle it is asked at
 
-            what += (" при φ = " if lang == "ru" else " at φ = ") + fmt(at_deg[n], given=True) + "°"
-        return (object_form(what) if lang == "ru" else what), sym, "" if u in ("–", "") else u
-    last = key.rsplit(".", 1)[-1]
-    words = SHEET_ANSWERS.get(f"{kind}:{key}") or SHEET_ANSWERS.get(key)
-    try:
-        sym, u = symbol(last, lang), unit_of(last, lang)
-        label = name(key if key in TERMS else last, lang)
-    except KeyError:
-        sym, u, label = "", "", key
-    if f"{kind}:{key}" in SHEET_SYMBOLS:
-        sym = SHEET_SYMBOLS[f"{kind}:{key}"][lang == "ru"]
-    what = words[lang == "ru"] if words else label
-    if sym and what.endswith(" " + sym):    # a name that ends with its symbol: not twice
-        what = what[:-len(sym)].rstrip(" ,")
+        what += (" при φ = " if lang == "ru" else " at φ = ") + fmt(at_deg[int(parts[1])],
+                                                                    given=True) + "°"
     return (object_form(what) if lang == "ru" else what), sym, "" if u in ("–", "") else u
 
 
