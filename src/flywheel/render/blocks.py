@@ -147,25 +147,32 @@ SOURCES = {"Источники", "Список источников", "Спис�
 HEADING_NUMBER = re.compile(r"^\s*\d+(\.\d+)*\.?\s+")
 
 
+def section_numbers(blocks):
+    """Each block with, for a section or subsection heading, its number counted without a gap
+    (2, then 2.1, 2.2; "" for the sources, a structural element) and its text without the
+    number its builder wrote; (block, None, None) for any other block. :func:`numbered` and
+    the ГОСТ layout (report_gost.sections) number by it."""
+    n, m = 0, 0
+    for b in blocks:
+        if not isinstance(b, Heading) or b.level not in (2, 3):
+            yield b, None, None
+            continue
+        text = HEADING_NUMBER.sub("", b.text)
+        if b.level == 2 and text.rstrip(".") in SOURCES:
+            yield b, "", text
+        elif b.level == 2:
+            n, m = n + 1, 0
+            yield b, str(n), text
+        else:
+            m += 1
+            yield b, f"{max(n, 1)}.{m}", text
+
+
 def numbered(blocks) -> list:
     """The blocks with their sections numbered 1, 2, … and subsections 1.1, 1.2, … without a
     gap, whatever numbers the builders wrote (a section left out where the case has nothing
     for it — the compressor's technological forces — had left «1.4» followed by «1.6»; the
-    force analysis and the warnings had none); the sources unnumbered. The ГОСТ layout
-    (report_gost.sections) numbers them so too."""
-    out, n, m = [], 0, 0
-    for b in blocks:
-        if not isinstance(b, Heading) or b.level not in (2, 3):
-            out.append(b)
-            continue
-        text = HEADING_NUMBER.sub("", b.text)
-        if b.level == 2 and text.rstrip(".") in SOURCES:
-            out.append(replace(b, text=text))
-        elif b.level == 2:
-            n, m = n + 1, 0
-            out.append(replace(b, text=f"{n}. {text}"))
-        else:
-            m += 1
-            out.append(replace(b, text=f"{max(n, 1)}.{m}. {text}"))
-    return out
-
+    force analysis and the warnings had none); the sources unnumbered
+    (:func:`section_numbers`)."""
+    return [b if number is None else replace(b, text=f"{number}. {text}" if number else text)
+            for b, number, text in section_numbers(blocks)]

@@ -31,8 +31,8 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from flywheel.render import mathfmt
-from flywheel.render.blocks import (SOURCES, HEADING_NUMBER, Bullets, Document, Figure, Formula,
-                                    Heading, Paragraph, Table, TitlePage)
+from flywheel.render.blocks import (Bullets, Document, Figure, Formula, Heading, Paragraph,
+                                    Table, TitlePage, section_numbers)
 from flywheel.render.catalogue import words
 from flywheel.render.typst_blocks import boxed_literal, markup, typst_block
 
@@ -53,7 +53,7 @@ G = words("report_gost", {
     "continued": "Continuation of table {n}",
 })
 
-#: an entry of the builders' list of sources (blocks.SOURCES), «[1] …»
+#: an entry of the builders' list of sources («Источники», blocks.SOURCES), «[1] …»
 _SOURCE_ENTRY = re.compile(r"^\[(\d+)\]\s*")
 
 #: where the Times-metric serif is looked for (Debian/Ubuntu's fonts-liberation, Fedora's,
@@ -116,8 +116,8 @@ def sections(doc: Document) -> list:
     page), every other heading renumbered continuously, the sources a structural element whose
     entries are numbered paragraphs «1. …» (ГОСТ 7.32-2017, 6.16: arabic numerals with a full
     stop, from the paragraph indent), not bullets «• [1] …»."""
-    out, n, m, waiting, in_sources = [], 0, 0, [], False
-    for b in doc.blocks:
+    out, waiting, in_sources = [], [], False
+    for b, number, text in section_numbers(doc.blocks):
         if in_sources and isinstance(b, Bullets):
             out += [Paragraph(_SOURCE_ENTRY.sub(r"\1. ", x, count=1)) for x in b.items]
             continue
@@ -125,24 +125,18 @@ def sections(doc: Document) -> list:
             if not isinstance(b, Heading):      # the source of the data: into section 1
                 waiting.append(b)
             continue
-        if isinstance(b, Heading):
-            if b.level <= 1:
-                continue
-            text = HEADING_NUMBER.sub("", b.text).rstrip(".")
-            in_sources = b.level == 2 and text in SOURCES
+        if not isinstance(b, Heading):
+            out.append(b)
+        elif b.level >= 2:
+            in_sources = number == ""
             if in_sources:
                 out.append(Section("", 1, G[doc.lang]["sources"], True))
-                continue
-            if b.level == 2:
-                n, m = n + 1, 0
-                out.append(Section(str(n), 1, text))
+            elif b.level == 2:
+                out.append(Section(number, 1, text.rstrip(".")))
                 out += waiting
                 waiting = []
             else:
-                m += 1
-                out.append(Section(f"{max(n, 1)}.{m}", 2, text))
-        else:
-            out.append(b)
+                out.append(Section(number, 2, text.rstrip(".")))
     return out
 
 
