@@ -177,12 +177,12 @@ def print_check(report, console=None, lang: str = "en") -> None:
                                     nm.heading("bore", lang, label=nm.name("bore", lang)),
                                     nm.heading("p_max", lang, si="MPa"), w["head"],
                                     w["interpolation"], w["points"]))
-        for cy in case.cylinders:
+        for k, cy in enumerate(case.cylinders):
             label = nm.cylinder_label(cy, lang)          # «HP (ВД)»: the key, then its label
             t.add_row(cy.name if label == cy.name else f"{cy.name} ({label})", cy.piston,
                       _n(cy.bore, given=True),
                       _n(cy.p_max / PA_PER_MPA), w.get(cy.head, cy.head),
-                      nm.interpolation(cy.interpolation, lang), str(len(cy.s if cy.s is not None else cy.diagram.s)))
+                      nm.field_value(f"cylinders.{k}.interpolation", cy.interpolation, lang), str(len(cy.s if cy.s is not None else cy.diagram.s)))
         console.print(t)
 
     if report.sliders:
@@ -227,9 +227,9 @@ def _print_tabulated(report, console, lang: str = "en") -> None:
     title, source = in_language(case.title, lang), in_language(case.source, lang)
     console.print(f"[bold]{title or w['case']}[/bold]"
                   + (f"  ({source})" if source else ""))
+    how = nm.field_value("tabulated.interpolation", tab.interpolation, lang)   # J_II's, in words
     console.print(f"{_crank_line(report, m, lang)}; "
-                  + w["J_II_by"].format(J=nm.symbol("J_II", lang), how=nm.interpolation(tab.interpolation, lang)),
-                  markup=False)
+                  + w["J_II_by"].format(J=nm.symbol("J_II", lang), how=how), markup=False)
     phi = nm.heading("phi_deg", lang)
     kin = [(phi, tab.positions_deg)]
     kin += [(nm.heading(f"vq_{k}", lang, label=f"|{nm.symbol(f'vq_{k}', lang)}| {k}"), v)
@@ -243,15 +243,19 @@ def _print_tabulated(report, console, lang: str = "en") -> None:
     for title, cols in ((w["tab_kin"], kin),
                         (w["tab_red"].format(M=nm.symbol("M_dyn", lang),
                                              w=nm.symbol("omega_mean", lang), dJ=dJ,
-                                             how=nm.interpolation(tab.interpolation, lang)), reduced)):
+                                             how=how), reduced)):
         t = _table(title, ("#", *(c[0] for c in cols)))
         for k in range(len(tab.positions_deg)):
             t.add_row(str(k + 1), *(_g(float(v[k])) for _, v in cols))
         console.print(t)
     if tab.forces or tab.moments:
         console.print(w["loads"] + ", ".join(
-            [w["force_at"].format(n=_load(f, lang), p=f.point, how=nm.interpolation(f.interpolation, lang)) for f in tab.forces]
-            + [w["moment"].format(n=_load(mo, lang), how=nm.interpolation(mo.interpolation, lang)) for mo in tab.moments]),
+            [w["force_at"].format(n=_load(f, lang), p=f.point, how=nm.field_value(
+                f"tabulated.forces.{k}.interpolation", f.interpolation, lang))
+             for k, f in enumerate(tab.forces)]
+            + [w["moment"].format(n=_load(mo, lang), how=nm.field_value(
+                f"tabulated.moments.{k}.interpolation", mo.interpolation, lang))
+               for k, mo in enumerate(tab.moments)]),
             markup=False)
     t = _table(w["Links"], (w["link"], nm.heading("link_mass", lang,
                                                   label=nm.name("link_mass", lang)), w["at"],

@@ -643,14 +643,6 @@ DEAD_CENTRE_LABEL = ("{s} {kind} d.c.", "ползун {s}: {kind} мёртвая
 # the flywheel's materials (case [flywheel] material)
 MATERIALS = {"steel": ("steel", "сталь"), "cast-iron": ("cast iron", "чугун")}
 
-# the case files' ways of joining a table's points (cylinders, [tabulated]): English keeps the
-# case file's spelling, Russian says it in words
-INTERPOLATIONS = {"linear": ("linear", "линейная"),
-                  "pchip": ("pchip", "монотонная кубическая (PCHIP)"),
-                  "natural-spline": ("natural-spline", "естественный кубический сплайн"),
-                  "periodic-spline": ("periodic-spline", "периодический кубический сплайн"),
-                  "finite-differences": ("finite-differences", "конечные разности")}
-
 # -- units ----------------------------------------------------------------------------------------
 _UNIT_RU = {"m": "м", "kg": "кг", "s": "с", "rad": "рад", "N": "Н", "J": "Дж", "Pa": "Па",
             "MPa": "МПа", "W": "Вт", "kW": "кВт", "deg": "°", "rpm": "об/мин", "min": "мин",
@@ -830,12 +822,6 @@ def name_tex(key: str, lang: str = "en") -> str:
     t, _ = term(key)
     nm, bare = name(key, lang), bare_name(key, lang)
     return f"{bare} {t.tex(lang)}" if bare != nm else nm
-
-
-def interpolation(kind: str, lang: str = "en") -> str:
-    """A way of joining a table's points in ``lang`` ("periodic-spline" → «периодический
-    кубический сплайн»; English: the case file's word)."""
-    return INTERPOLATIONS[kind][lang == "ru"] if kind in INTERPOLATIONS else kind
 
 
 def material(m: str, lang: str = "en") -> str:

@@ -268,8 +268,15 @@ def field_label(path: str, lang: str = "en", names: dict[str, str] | None = None
     return path
 
 
-#: the words of a case file's text fields on a task sheet: path pattern → value → (English,
-#: Russian); a value not listed is printed as it is
+#: the case files' ways of joining a table's points (cylinders, [tabulated]): English keeps the
+#: case file's spelling, Russian says it in words
+INTERPOLATIONS = {"linear": ("linear", "линейная"),
+                  "pchip": ("pchip", "монотонная кубическая (PCHIP)"),
+                  "natural-spline": ("natural-spline", "естественный кубический сплайн"),
+                  "periodic-spline": ("periodic-spline", "периодический кубический сплайн"),
+                  "finite-differences": ("finite-differences", "конечные разности")}
+#: the words of a case file's text fields on a task sheet and in `check`: path pattern → value
+#: → (English, Russian); a value not listed is printed as it is
 SHEET_VALUES: dict[str, dict[str, tuple[str, str]]] = {
     "machine.balance": {"driving": ("the driving moment M_D", "движущий момент M_Д"),
                         "resistance": ("the resistance moment M_C", "момент сопротивления M_С")},
@@ -287,6 +294,10 @@ SHEET_VALUES: dict[str, dict[str, tuple[str, str]]] = {
     "forces.#.stroke": {"towards": ("towards that dead centre", "к этой мёртвой точке"),
                         "away": ("away from that dead centre", "от этой мёртвой точки"),
                         "both": ("either way", "в обе стороны")},
+    "cylinders.#.interpolation": INTERPOLATIONS,
+    "tabulated.interpolation": INTERPOLATIONS,
+    "tabulated.forces.#.interpolation": INTERPOLATIONS,
+    "tabulated.moments.#.interpolation": INTERPOLATIONS,
 }
 _SHEET_VALUE_RX = [(_sheet_pattern(p), words) for p, words in SHEET_VALUES.items()]
 
