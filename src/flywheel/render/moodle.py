@@ -41,18 +41,6 @@ def _unit_and_words(answer: str, kind: str, lang: str,
     return what, sym, u, "" if si in ("–", "-") else si
 
 
-def _angles(v, t) -> tuple:
-    """The report angles of variant ``v`` where the template asks a quantity at one
-    (``at.N.…``), else none."""
-    if t.kind != "run" or not any(a.startswith("at.") for a in t.keyed):
-        return ()
-    import tomllib
-
-    from flywheel.teaching.sheets import report_angles
-
-    return report_angles(tomllib.loads(v.text))
-
-
 def _text(s: str) -> str:
     return f"<text>{escape(s)}</text>"
 
@@ -68,11 +56,10 @@ def quiz_xml(vs, lang: str = "en") -> str:
                 f"    <category>{_text(top + '/' + w['category'].format(variant=v.id))}"
                 "</category>", "  </question>"]
         floors = cell_floors(t.tables, v.answers) if t.tables else {}
-        at_deg = _angles(v, t)
         for a in t.keyed:
             value = v.answers[a]
             rel = t.tolerance_of(a)
-            what, sym, unit, si = _unit_and_words(a, t.kind, lang, at_deg)
+            what, sym, unit, si = _unit_and_words(a, t.kind, lang, v.at_deg)
             pct = f"{100 * rel:g}".replace(".", "," if lang == "ru" else ".")
             # the question's HTML: the symbol's subscript in <sub> (M<sub>Д</sub>, as the task
             # sheet sets it), the rest escaped; the tag as it is, for grade to read back

@@ -231,15 +231,6 @@ def element_names(document: dict, prefix: str = "") -> dict[str, str]:
     return out
 
 
-def report_angles(doc: dict) -> tuple[float, ...]:
-    """The report angles [deg] of a run case's document: its ``output.at_deg``, else the case
-    file's default (cases.run.OutputSpec)."""
-    from flywheel.cases.run import OutputSpec
-
-    at = (doc.get("output") or {}).get("at_deg")
-    return tuple(float(a) for a in (at if at is not None else OutputSpec().at_deg))
-
-
 def find_list(template) -> tuple[Find, ...]:
     """The answers asked, each with the tolerance ``flywheel grade`` uses for it (the
     template's per-answer tolerance, else its default)."""
@@ -323,7 +314,7 @@ def sheets_of(vs, progress=None) -> list[Sheet]:
         given = given_rows(t.kind, doc, varied)
         if t.kind == "run":
             given += default_rows(doc, v.filename, t.answers)
-            kw["at_deg"] = report_angles(doc)
+            kw["at_deg"] = v.at_deg
         out.append(Sheet(n, v.id, stem, t.kind, title, given, find, names=element_names(doc),
                          tables=t.tables, default_tolerance=t.tolerance, **kw))
         if progress is not None:

@@ -469,6 +469,7 @@ class Variant:
     text: str
     answers: dict[str, float]
     givens: Any = None           # teaching.chain.Givens of a run case (None: no chain)
+    at_deg: tuple = ()           # a run case's report angles [deg]: what at.N answers are at
 
 
 @dataclass(frozen=True)
@@ -479,6 +480,15 @@ class VariantSet:
     variants: tuple[Variant, ...]
     failed_draws: int = 0
     warnings: tuple[str, ...] = field(default=())
+
+
+def _report_angles(doc: dict) -> tuple[float, ...]:
+    """The report angles [deg] of a run case's document: its ``output.at_deg``, else the case
+    file's default (cases.run.OutputSpec)."""
+    from flywheel.cases.run import OutputSpec
+
+    at = (doc.get("output") or {}).get("at_deg")
+    return tuple(float(a) for a in (at if at is not None else OutputSpec().at_deg))
 
 
 def _set(doc: dict, parts, value) -> None:
@@ -563,7 +573,8 @@ def generate(template: Template, count: int, seed: int, n_points: int = RUN_POIN
                         "{detail})", number=number, failed=failed, detail=last_error))) from None
                 continue
             seen.add(signature)
-            variants.append(Variant(vid, filename, drawn, text, answers, givens))
+            variants.append(Variant(vid, filename, drawn, text, answers, givens,
+                                    _report_angles(doc) if template.kind == "run" else ()))
             break
         if progress is not None:
             progress(number)
@@ -593,11 +604,7 @@ def answers_json(vs: VariantSet) -> str:
     if t.kind == "run" and any(a.startswith("at.") for a in t.answers):
         # the report angles an at.N answer is asked at (a feedback page names them); none: as
         # before
-        import tomllib
-
-        from flywheel.teaching.sheets import report_angles
-
-        doc["at_deg"] = {v.id: list(report_angles(tomllib.loads(v.text))) for v in vs.variants}
+        doc["at_deg"] = {v.id: list(v.at_deg) for v in vs.variants}
     if t.tables:           # the cells of each table (teaching/tables.py); none: as before
         doc["tables"] = {s.name: s.to_document() for s in t.tables}
     text = json.dumps(doc, indent=2, ensure_ascii=False)
