@@ -329,13 +329,21 @@ def build_document(results, lang: str = "en", plots: list[str] | None = None,
            for p in results.position_angles]
     vq = [k for k in cols if k.startswith("vq_") and not k.startswith(("vqx_", "vqy_"))]
     wq = [k for k in cols if k.startswith("omega_q_")]
+    zero: dict[str, float] = {}
+
+    def at(k: str, i: int, digits: int) -> str:
+        """Column ``k`` at node ``i``, its round-off relative to the column printed 0
+        (numbers.column_zero)."""
+        if k not in zero:
+            zero[k] = column_zero(cols[k].values, 1e-13)
+        return g(cols[k].values[i], digits, zero[k])
+
     if vq or wq:
         b.add(Heading(2, t["kin"]))
         b.add(Paragraph(t["kin_note"].format(vq=sym("v_q"), u=u("v_q"), wq=sym("omega_q"))))
         header = pos + [h("phi_deg")] + [f"{sym(k)}{nm.member(k, lang)}" for k in vq + wq]
-        z = {k: column_zero(cols[k].values, 1e-13) for k in vq + wq}
-        body = [[*lab, g(cols["phi_deg"].values[i], 6)] + [g(cols[k].values[i], 4, z[k])
-                                                           for k in vq + wq] for lab, i in idx]
+        body = [[*lab, g(cols["phi_deg"].values[i], 6)] + [at(k, i, 4) for k in vq + wq]
+                for lab, i in idx]
         b.table(t["kin_caption"], header, body)
         b.figures_of("kin")
     if s.output_link is not None:                        # render/output_link.py
@@ -352,11 +360,8 @@ def build_document(results, lang: str = "en", plots: list[str] | None = None,
     mk = [k for k in cols if k.startswith("M ")]
     header = (pos + [h("phi_deg"), h("J_II"), h("dJ_II")]
               + [h(k, label=nm.member(k, lang, results.loads.titles, results.loads.labels)) for k in mk] + [h("M_sum")])
-    z = {k: column_zero(cols[k].values, 1e-13) for k in ["J_II", "dJ_II", *mk, "M_sum"]}
-    body = [[*lab, g(cols["phi_deg"].values[i], 6), g(cols["J_II"].values[i], 4, z["J_II"]),
-             g(cols["dJ_II"].values[i], 4, z["dJ_II"])]
-            + [g(cols[k].values[i], 5, z[k]) for k in mk] + [g(cols["M_sum"].values[i], 5, z["M_sum"])]
-            for lab, i in idx]
+    body = [[*lab, g(cols["phi_deg"].values[i], 6), at("J_II", i, 4), at("dJ_II", i, 4)]
+            + [at(k, i, 5) for k in mk] + [at("M_sum", i, 5)] for lab, i in idx]
     b.table(t["red_caption"], header, body)
     b.figures_of("red")
 
@@ -379,8 +384,7 @@ def build_document(results, lang: str = "en", plots: list[str] | None = None,
     )))
     energy = ("A_D", "A_C", "A", "T_II", "dT_I", "omega", "epsilon")
     header = pos + [h("phi_deg")] + [h(k) for k in energy]
-    z = {k: column_zero(cols[k].values, 1e-13) for k in energy}
-    body = [[*lab, g(cols["phi_deg"].values[i], 6)] + [g(cols[k].values[i], 6, z[k]) for k in energy]
+    body = [[*lab, g(cols["phi_deg"].values[i], 6)] + [at(k, i, 6) for k in energy]
             for lab, i in idx]
     b.table(t["energy_caption"], header, body)
     b.figures_of("energy")

@@ -8,7 +8,7 @@ from __future__ import annotations
 import re
 
 from flywheel.io.text import in_language
-from flywheel.render.nomenclature import MATERIALS, TERMS, name, symbol, unit_of
+from flywheel.render.nomenclature import MATERIALS, TERMS, bare_name, name, symbol, unit_of
 
 
 #: input fields of a case file: a dotted-path pattern (``#`` an array index, ``*`` a name) →
@@ -434,8 +434,7 @@ _AT_GROUPS = {("balancing_moment", "kinetostatic"): "M_y",
               ("balancing_moment", "zhukovsky"): "M_y_zhukovsky",
               ("balancing_moment", "groups"): "M_y_groups",
               ("balancing_moment", "power"): "M_y_power"}
-_AT_LOADS = {"crank_pin_load": "crank_pin_load", "main_bearing_load": "main_bearing_load",
-             "shaking_force": "shaking_force"}
+_AT_LOADS = ("crank_pin_load", "main_bearing_load", "shaking_force")   # the loads' own terms
 _COMPONENT = {"F": ("", ""), "Fx": (": x component", ": проекция на ось x"),
               "Fy": (": y component", ": проекция на ось y")}
 #: a link's quantities at a report angle: (English, Russian, symbol) with the link's name
@@ -508,16 +507,14 @@ def _at_words(key: str, lang: str) -> tuple[str, str, str] | None:
         return cell_words(f"reactions.{rest[0]}.{column}", lang)
     term = _AT_GROUPS.get((group, rest[0])) if len(rest) == 1 else None
     if term is None and group in _AT_LOADS and len(rest) == 1 and rest[0] in _COMPONENT:
-        term = _AT_LOADS[group]
-        what = name(term, lang) + _COMPONENT[rest[0]][ru]
-        return what, symbol(term, lang), unit_of(term, lang)
+        return name(group, lang) + _COMPONENT[rest[0]][ru], symbol(group, lang), unit_of(group,
+                                                                                          lang)
     if term is None and not rest and group in TERMS:
         term = group
     if term is None:
         return None
-    what, sym = name(term, lang), symbol(term, lang)
-    what = what.replace(f" {sym} ", " ", 1)
-    return what[:-len(sym) - 1] if what.endswith(" " + sym) else what, sym, unit_of(term, lang)
+    sym = symbol(term, lang)     # named once: not in the middle (M_у (кинетостатика)), not last
+    return bare_name(term, lang).replace(f" {sym} ", " ", 1), sym, unit_of(term, lang)
 
 
 def answer_words(kind: str, key: str, lang: str = "en",

@@ -112,8 +112,9 @@ def _shared(two: list[list[View]], names: list[str], views_at, size: str,
     """The last two pages of :func:`fitted` (packed at the room's ``factor``) with the last
     ``m`` ≤ MOVE views of the first moved to the second (in the views' order), each page's
     views drawn alone at the largest room that keeps them to one sheet — of 1 and
-    :data:`GROW` at ``factor`` 1, of ``factor`` … 1 at a SHRINK ``factor``: of m = 0 … MOVE the one whose emptier page is fullest (the views'
-    area over the field; the fewest moved of equals). A page of diagrams left at a sixth of
+    :data:`GROW` at ``factor`` 1, of ``factor`` … 1 at a SHRINK ``factor``: of m = 0 … MOVE
+    the one whose emptier page is fullest (the views' area over the field; the fewest moved of
+    equals). A page of diagrams left at a sixth of
     its sheet while the sheet before is crowded is what this mends."""
     from flywheel.render.drawings.layout import pack
     from flywheel.render.drawings.sheet import field_of
