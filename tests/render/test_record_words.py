@@ -237,8 +237,8 @@ def test_a_points_coordinates_are_set_apart_by_a_semicolon_in_russian():
     wrote «0,7, 0,3», the decimal commas and the separator alike), "0.7, 0.3" in English."""
     from flywheel.render.numbers import typography
 
-    for lang, row_g, row_E in (("ru", "| g (x; y) | 0; −9,81 |", "| E (x; y) | 0,7; 0,3 |"),
-                               ("en", "| g (x, y) | 0, -9.81 |", "| E (x, y) | 0.7, 0.3 |")):
+    for lang, row_g, row_E in (("ru", " g (x; y) | 0; −9,81 |", "| неподвижная точка E (x; y) | 0,7; 0,3 |"),
+                               ("en", " g (x, y) | 0, -9.81 |", "| fixed point E (x, y) | 0.7, 0.3 |")):
         with typography(lang):
             md = markdown(_run_document("fourbar_rocker_load", lang)[2])
         assert row_g in md and row_E in md, lang

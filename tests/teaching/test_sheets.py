@@ -517,10 +517,9 @@ def test_an_english_only_title_gives_way_to_the_tasks_russian_name(template, kin
 
 def test_a_russian_sheet_names_the_first_groups_parts_in_russian():
     """«момент инерции: crankshaft» was printed on a Russian sheet: a part the catalogue knows
-    is named in Russian (as the записка names it, render/document.py PART); a part of the
+    is named in Russian (as the записка names it, render/sheet_labels.py PART); a part of the
     case's own naming stays as written."""
-    from flywheel.render.document import part_name
-    from flywheel.render.sheet_labels import field_label
+    from flywheel.render.sheet_labels import field_label, part_name
 
     for part in ("crankshaft", "gearbox", "flywheel"):
         ru = field_label(f"machine.first_group.{part}", "ru")

@@ -167,7 +167,7 @@ def print_check(report, console=None, lang: str = "en") -> None:
                       lk.centroid or "—")
         console.print(t)
     if m.first_group:
-        from flywheel.render.document import part_name
+        from flywheel.render.sheet_labels import part_name
 
         console.print(w["first_group"] + ", ".join(
             f"{part_name(k, lang)} = {_n(v, given=True)} {nm.unit_of('J_first_group', lang)}"

@@ -14,6 +14,8 @@ import math
 from flywheel.dynamics.loads import LoadKey
 from flywheel.render import nomenclature as nm
 from flywheel.render.catalogue import words
+from flywheel.render.mathfmt import point_name, subscripted
+from flywheel.render.sheet_labels import field_label, field_value, part_name
 from flywheel.render import blocks
 from flywheel.render.blocks import (  # noqa: F401  (the model, re-exported)
     Bullets, Document, Figure, Formula, Heading, Paragraph, Table)
@@ -23,24 +25,9 @@ from flywheel.units import PA_PER_MPA
 
 
 # -- words ----------------------------------------------------------------------------------------
-#: the usual names of the first group's parts (machine.first_group's keys), said in a document's
-#: language; a name not here is printed as the case writes it
-PART = words("part", {
-    "crankshaft": "crankshaft", "crank": "crank", "crank_gear": "crank gear",
-    "gearbox": "gearbox", "gear": "gear", "rotor": "rotor", "motor": "motor rotor",
-    "coupling": "coupling", "pulley": "pulley", "counterweights": "counterweights",
-    "camshaft": "camshaft", "flywheel": "flywheel",
-})
-
-
-def part_name(key: str, lang: str) -> str:
-    """A first-group part's name in ``lang`` (:data:`PART`), else the case's own key."""
-    return PART[lang].get(key, key) if lang == "ru" else key
-
-
 T = words("report", {
     "title": "Dynamic analysis", "source": "Source", "input": "1. Input data",
-    "machine": "Machine, crank and flywheel", "lengths": "Lengths and guides",
+    "machine": "Machine, crank and flywheel", "lengths": "Dimensions of the mechanism",
     "masses": "Masses and moments of inertia of the links", "cyl": "Cylinders",
     "indicator": "Indicator table of cylinder {c}", "forces": "Technological forces and couples",
     "load_table": "a table of {n} rows against {of}", "of_phi": "φ", "of_travel": "the travel s",
@@ -72,6 +59,21 @@ T = words("report", {
     "pos": "position", "no": "no.", "qty": "quantity", "val": "value", "unit": "unit", "point": "point",
     "link": "link", "name": "name", "piston": "piston", "head": "head dead centre",
     "first_group": "first group", "centroid": "centroid",
+    "J_first": "moment of inertia of the first group's links (on the crank shaft)",
+    "part_of": "of which: {part}",
+    "pivot": "crank pivot {p}",
+    "length_of": "length of link {x}", "throw": "throw of crank pin {p}",
+    "pin_angle": "angle of crank pin {p} to crank pin {tip}",
+    "guide_point": "guide of slider {x}: a point",
+    "guide_angle": "guide of slider {x}: angle to the x axis",
+    "guide_offset": "guide of slider {x}: offset",
+    "slide_offset": "slide line of link {x}: offset from its pivot",
+    "share": "point {p} of link {x}: share of {ab}",
+    "across": "point {p} of link {x}: offset across {ab}",
+    "distance": "point {p} of link {x}: distance from {a}",
+    "at_angle": "point {p} of link {x}: angle to the link",
+    "ind_note": ("s is the piston's travel from the head over its stroke (0 … 1); p/p_max ↑ while "
+                 "the piston moves towards the head, ↓ while it moves away."),
     "balance_word": {"driving": "driving", "resistance": "resistance"},
     "balance_row": "constant moment balancing the cycle",
     "signs": ("Signs: a reduced moment and its work are positive where they drive (act in the "
@@ -290,25 +292,30 @@ def build_document(results, lang: str = "en", plots: list[str] | None = None,
     # 1. input data -------------------------------------------------------------------------
     b.add(Heading(2, t["input"]))
     head = [t["qty"], t["val"], t["unit"]]
+    def named(key: str, label: str | None = None) -> str:
+        """A quantity's name and its symbol («заданный коэффициент неравномерности δ»)."""
+        return f"{label or nm.bare_name(key, lang)} {sym(key)}".strip()
+
+    linkage = case is not None and case.crank is not None   # its lengths: table 2
     rows = [
-        [f"{sym('omega_mean')} = 2π·{sym('crank_speed')}", g(s.omega_mean, 6), u("omega_mean")],
-        [sym("crank_speed"), g(s.omega_mean / (2 * math.pi), 6), u("crank_speed")],
-        [sym("delta"), g(s.delta, 6), u("delta")],
-        [sym("crank_length"), g(s.crank_length, 6), u("crank_length")],
-        [f"{sym('J_first_group')} ({t['first_group']})", g(s.J_first_group, 6), u("J_first_group")],
+        [f"{named('omega_mean')} = 2π·{sym('crank_speed')}", g(s.omega_mean, 6), u("omega_mean")],
+        [named("crank_speed"), g(s.omega_mean / (2 * math.pi), 6), u("crank_speed")],
+        [field_label("machine.delta", lang), g(s.delta, 6), u("delta")],
+        *([] if linkage else [[named("crank_length"), g(s.crank_length, 6), u("crank_length")]]),
+        [named("J_first_group", t["J_first"]), g(s.J_first_group, 6), u("J_first_group")],
     ]
     if case is not None:
         for k, v in case.machine.first_group.items():
-            rows.append([f"{sym('J_first_group')}: {part_name(k, lang)}", gi(v, 6),
+            rows.append([t["part_of"].format(part=part_name(k, lang)), gi(v, 6),
                          u("J_first_group")])
         rows.append([t["balance_row"], t["balance_word"][case.machine.balance], ""])
-        rows.append([f"{sym('gravity')} {_xy_head(lang)}",
+        rows.append([field_label("machine.gravity", lang),
                      separator(lang).join(gi(x, 4) for x in case.machine.gravity), u("gravity")])
     rows += [
         [nm.name("flywheel_material", lang), nm.material(s.flywheel_material, lang), ""],
-        [f"{sym('flywheel_material_density')}", g(s.flywheel_material_density, 6),
+        [named("flywheel_material_density"), g(s.flywheel_material_density, 6),
          u("flywheel_material_density")],
-        [sym("flywheel_speed_ratio"), g(s.flywheel_speed_ratio, 6), u("flywheel_speed_ratio")],
+        [named("flywheel_speed_ratio"), g(s.flywheel_speed_ratio, 6), u("flywheel_speed_ratio")],
     ]
     b.add(Heading(3, f"1.1. {t['machine']}"))
     b.table(t["machine"], head, rows)
@@ -505,34 +512,75 @@ def _input_of_case(b: _Builder, case, t: dict, lang: str) -> None:
     def u(key):
         return nm.unit_of(key, lang)
 
+    c, sep, m = case.crank, separator(lang), u("x")
     ll, ga, go = nm.symbol("link_length", lang), nm.symbol("guide_angle", lang), nm.symbol("guide_offset", lang)
-    rows = [[f"{nm.symbol('crank_length', lang)} ({t['link']} {case.crank.name})", gi(case.crank_length, 6),
-             u("crank_length")]]
+
+    def xy(p) -> str:
+        return f"{gi(p[0], 6)}{sep}{gi(p[1], 6)}"
+
+    def length(a: str, b: str) -> str:          # l_AB: the link's length by its two points
+        return subscripted(ll, a + b)
+
+    rows = [[f"{t['pivot'].format(p=point_name(c.pivot))} {_xy_head(lang)}", xy(c.pivot_at), m],
+            [f"{nm.bare_name('crank_length', lang)} {length(c.pivot, c.tip)}",
+             gi(case.crank_length, 6), u("crank_length")]]
+    for pin in c.pins:
+        rows.append([t["throw"].format(p=point_name(pin.name)), gi(case.crank_length if pin.length is None
+                                                       else pin.length, 6), u("crank_length")])
+        rows.append([t["pin_angle"].format(p=point_name(pin.name), tip=point_name(c.tip)),
+                     gi(pin.angle_deg, 6),
+                     u("guide_angle")])
+    rows += [[field_label("crank.start_angle_deg", lang), gi(c.start_angle_deg, 6), u("guide_angle")],
+             [field_label("crank.rotation", lang), field_value("crank.rotation", c.rotation, lang),
+              ""]]
     for d in case.dyads:
         if isinstance(d, RRPSpec):
-            rows.append([f"{ll} ({t['link']} {d.rod})", gi(case.rod_length(d), 6), u("link_length")])
-            rows.append([f"{ga} ({t['link']} {d.slider})", gi(d.guide.angle_deg, 6), u("guide_angle")])
+            rows.append([f"{t['length_of'].format(x=d.rod)} {length(d.from_, d.joint)}",
+                         gi(case.rod_length(d), 6), u("link_length")])
+            rows.append([f"{t['guide_point'].format(x=d.slider)} {_xy_head(lang)}",
+                         xy(d.guide.through), m])
+            rows.append([f"{t['guide_angle'].format(x=d.slider)} {subscripted(ga, d.slider)}",
+                         gi(d.guide.angle_deg, 6), u("guide_angle")])
             if d.guide.offset:
-                rows.append([f"{go} ({t['link']} {d.slider})", gi(d.guide.offset, 6), u("guide_offset")])
+                rows.append([f"{t['guide_offset'].format(x=d.slider)} {subscripted(go, d.slider)}",
+                             gi(d.guide.offset, 6), u("guide_offset")])
         elif isinstance(d, RRRSpec):
-            rows.append([f"{ll} ({t['link']} {d.link_from})", gi(d.length_from, 6), u("link_length")])
-            rows.append([f"{ll} ({t['link']} {d.link_to})", gi(d.length_to, 6), u("link_length")])
+            rows.append([f"{t['length_of'].format(x=d.link_from)} {length(d.from_, d.joint)}",
+                         gi(d.length_from, 6), u("link_length")])
+            rows.append([f"{t['length_of'].format(x=d.link_to)} {length(d.joint, d.to)}",
+                         gi(d.length_to, 6), u("link_length")])
         elif isinstance(d, RPRSpec) and d.offset:
-            rows.append([f"{go} ({t['link']} {d.rocker})", gi(d.offset, 6), u("guide_offset")])
-    for name, (x, y) in case.ground.items():
-        rows.append([f"{name} {_xy_head(lang)}", f"{gi(x, 6)}{separator(lang)}{gi(y, 6)}", u("x")])
+            rows.append([f"{t['slide_offset'].format(x=d.rocker)} {subscripted(go, d.rocker)}",
+                         gi(d.offset, 6), u("guide_offset")])
+    for name, p in case.ground.items():
+        rows.append([field_label(f"ground.{name}", lang), xy(p), m])
+    for name, p in case.points.items():
+        at = {"p": point_name(name), "x": p.link, "a": point_name(p.from_),
+              "ab": f"{p.from_}{p.to or ''}"}
+        if p.to is not None:
+            rows.append([f"{t['share'].format(**at)} {length(p.from_, name)}/{length(p.from_, p.to)}",
+                         gi(p.fraction, 6), u("delta")])
+            if p.across:
+                rows.append([t["across"].format(**at), gi(p.across, 6), m])
+        else:
+            rows.append([f"{t['distance'].format(**at)} {length(p.from_, name)}",
+                         gi(p.distance, 6), m])
+            if p.angle_deg:
+                rows.append([t["at_angle"].format(**at), gi(p.angle_deg, 6), u("guide_angle")])
     b.add(Heading(3, f"1.2. {t['lengths']}"))
     b.table(t["lengths"], [t["qty"], t["val"], t["unit"]], rows)
 
     if case.links:
         b.add(Heading(3, f"1.3. {t['masses']}"))
         b.table(t["masses"], [t["link"], nm.heading("link_mass", lang), nm.heading("J_S", lang), t["centroid"]],
-                [[k, gi(v.mass, 6), gi(v.J_S, 6), v.centroid or "—"] for k, v in case.links.items()])
+                [[k, gi(v.mass, 6), gi(v.J_S, 6), point_name(v.centroid) if v.centroid else "—"]
+                 for k, v in case.links.items()])
     if case.cylinders:
         b.add(Heading(3, f"1.4. {t['cyl']}"))
         b.table(t["cyl"], [t["name"], t["piston"], nm.heading("bore", lang), nm.heading("p_max", lang), t["head"]],
                 [[nm.cylinder_label(c, lang), c.piston, gi(c.bore, 6), gi(c.p_max, 6),
                   nm.DEAD_CENTRES[c.head][lang == "ru"]] for c in case.cylinders])
+        noted = False
         for c in case.cylinders:
             sym_s, sym_p = nm.symbol("s_{cylinder}", lang), nm.symbol("p_rel", lang)
             if getattr(c, "strokes", None) is not None:      # a four-stroke cylinder
@@ -549,6 +597,9 @@ def _input_of_case(b: _Builder, case, t: dict, lang: str) -> None:
                 b.table(t["indicator"].format(c=nm.cylinder_label(c, lang)), [sym_s, f"{sym_p} ↑", f"{sym_p} ↓"],
                         [[gi(s_, 4), gi(a, 4), gi(w, 4)]
                          for s_, a, w in zip(c.s, c.towards_head, c.away_from_head)])
+                if not noted:                   # the columns said once, under the first
+                    b.add(Paragraph(t["ind_note"]))
+                    noted = True
     springs = getattr(case, "springs", ())
     if case.forces or case.couples or springs:
         b.add(Heading(3, f"1.5. {t['forces']}"))

@@ -325,6 +325,16 @@ _SUB_RX = _re.compile(r"(?<![\w.`\\])([^\W\d_][^\W\d_]{0,2})_"
                       r"(?![" + _L + r"_`])(?!\.\w)")
 
 
+def subscripted(base: str, sub: str) -> str:
+    """``base`` with the subscript ``sub`` as the record's text writes a symbol, for
+    :func:`subscripts` to read back: braces only where the subscript is over four letters.
+
+    >>> subscripted("l", "AB"), subscripted("l", "A1B1S")
+    ('l_AB', 'l_{A1B1S}')
+    """
+    return f"{base}_{sub}" if len(sub) <= 4 else f"{base}_{{{sub}}}"
+
+
 def subscripts(text: str) -> list[tuple[str, bool]]:
     """``text`` cut into runs (text, is a subscript) at its symbols' subscripts, the "_" (and a
     subscript's braces) dropped; text without a symbol's subscript is one run.

@@ -8,6 +8,7 @@ from __future__ import annotations
 import re
 
 from flywheel.io.text import in_language
+from flywheel.render.catalogue import words
 from flywheel.render.nomenclature import MATERIALS, TERMS, bare_name, name, symbol, unit_of
 
 
@@ -226,6 +227,21 @@ SHEET_ANSWERS: dict[str, tuple[str, str]] = {
 SHEET_SYMBOLS = {"task2:J_required": ("J", "J_пр"), "task2:delta": ("δ", "δ")}
 
 
+#: the usual names of the first group's parts (machine.first_group's keys), said in a document's
+#: language; a name not here is printed as the case writes it
+PART = words("part", {
+    "crankshaft": "crankshaft", "crank": "crank", "crank_gear": "crank gear",
+    "gearbox": "gearbox", "gear": "gear", "rotor": "rotor", "motor": "motor rotor",
+    "coupling": "coupling", "pulley": "pulley", "counterweights": "counterweights",
+    "camshaft": "camshaft", "flywheel": "flywheel",
+})
+
+
+def part_name(key: str, lang: str) -> str:
+    """A first-group part's name in ``lang`` (:data:`PART`), else the case's own key."""
+    return PART[lang].get(key, key) if lang == "ru" else key
+
+
 def _sheet_pattern(p: str) -> re.Pattern:
     rx = re.escape(p).replace("\\#", r"(?P<i>\d+)").replace("\\*", r"(?P<x>[^.]+)")
     return re.compile("^" + rx + "$")
@@ -258,8 +274,6 @@ def field_label(path: str, lang: str = "en", names: dict[str, str] | None = None
                 d = m.groupdict()
                 x = d.get("x") or ""
                 if x and key.endswith(f"first_group.{x}"):   # a part: its usual name
-                    from flywheel.render.document import part_name
-
                     x = part_name(x, lang)
                 if not x and d.get("i") is not None:
                     x = in_language((names or {}).get(
@@ -315,9 +329,9 @@ def field_value(path: str, value, lang: str = "en") -> str:
     if isinstance(value, (list, tuple)):
         items = [field_value(path, v, lang) for v in value]
         return (", " if any("-" in v for v in items) else "-").join(items)
-    for rx, words in _SHEET_VALUE_RX:
+    for rx, said in _SHEET_VALUE_RX:
         if rx.match(path):
-            return words[value][lang == "ru"] if value in words else value
+            return said[value][lang == "ru"] if value in said else value
     return value
 
 

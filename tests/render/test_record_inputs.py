@@ -1,0 +1,109 @@
+"""The записка's input data state the whole case (§1.1–1.2): each quantity by its name and its
+symbol, each link's length by its two points as the course writes it (l_AB), the guides, the
+fixed points, the crank's position at φ = 0 and its direction, and where every point of a link
+sits (S₂ at AS₂/AB of link 2). The record had listed bare symbols («δ», «i», «l (звено 2)») and
+left out the points, the guides' positions and the crank's start, so a teacher could not check
+a student's data against the task."""
+from __future__ import annotations
+
+import math
+import re
+from pathlib import Path
+
+import pytest
+
+from flywheel.cases.run import RPRSpec, RRPSpec, RRRSpec, load_case
+from flywheel.dynamics.pipeline import analyze
+from flywheel.render.blocks import Paragraph, Table
+from flywheel.render.document import T, build_document
+from flywheel.render.numbers import typography
+
+CASES = Path(__file__).resolve().parents[2] / "cases"
+LINKAGES = sorted(p.stem for p in CASES.glob("*.toml")
+                  if not p.stem.startswith(("task2", "aggregate", "duty", "variants"))
+                  and load_case(p).crank is not None)
+
+
+def _document(name: str, lang: str = "ru"):
+    case = load_case(CASES / f"{name}.toml")
+    with typography(lang):
+        return case, build_document(analyze(case, n_points=360), lang, [], case=case)
+
+
+def _rows(doc, caption: str) -> dict[str, str]:
+    """The rows of the table captioned ``caption``: its first column → its second."""
+    table = next(b for b in doc.blocks if isinstance(b, Table) and b.caption == caption)
+    return {r[0]: r[1] for r in table.rows}
+
+
+def _numbers(text: str) -> list[float]:
+    """A Russian cell's numbers: «0,7; −0,2» → [0.7, −0.2]."""
+    return [float(x.replace(",", ".").replace("−", "-").replace("\u202f", "").replace(" ", ""))
+            for x in text.split("; ")]
+
+
+def test_the_compressor_states_its_worksheets_lengths_by_their_points():
+    """Seed 000 (the compressor's worksheet), §1.1: l1 = V_ср/(4·n1) = 4/(4·10) = 0,1 м and
+    l2 = l4 = k·l1 = 4·0,1 = 0,4 м, the centroids at l_AS = 0,3·l: the case gives V_ср and k,
+    the record states the lengths they give, by the links' points."""
+    _, doc = _document("compressor")
+    rows = _rows(doc, T["ru"]["lengths"])
+    assert _numbers(rows["длина кривошипа l_OA"]) == [pytest.approx(4.0 / (4 * 10.0))]
+    assert _numbers(rows["длина звена 2 l_AB"]) == [pytest.approx(4 * 0.1)]
+    assert _numbers(rows["длина звена 4 l_AC"]) == [pytest.approx(4 * 0.1)]
+    assert rows["точка S₂ звена 2: доля длины AB l_AS2/l_AB"] == "0,3"
+    assert rows["направляющая ползуна 3: угол к оси x α_3"] == "90"
+    assert rows["направление вращения кривошипа"] == "по часовой стрелке"
+    assert rows["положение кривошипа при φ = 0 (от оси x)"] == "90"
+    machine = _rows(doc, T["ru"]["machine"])
+    assert machine["коэффициент неравномерности хода δ"] == "0,05"
+    assert machine["в том числе: коленчатый вал"] == "0,6"
+    assert machine["передаточное отношение к валу маховика i"] == "1"
+    assert not any(k in machine for k in ("δ", "i", "ρ", "n₁"))   # no bare symbol
+
+
+@pytest.mark.parametrize("name", LINKAGES)
+def test_every_length_guide_fixed_point_and_point_of_a_link_is_stated(name):
+    """Every bundled linkage: each value of the case's geometry is in table 2, as given."""
+    case, doc = _document(name)
+    rows = _rows(doc, T["ru"]["lengths"])
+    values = {k: _numbers(v) for k, v in rows.items() if re.match(r"^[−\d]", v)}
+
+    def stated(prefix: str, *expected: float) -> None:
+        found = [v for k, v in values.items() if k.startswith(prefix)]
+        assert found, (name, prefix, list(rows))
+        assert any(v == pytest.approx(list(expected), rel=1e-5, abs=1e-12) for v in found), (
+            name, prefix, found, expected)
+
+    stated(f"длина кривошипа l_{case.crank.pivot}{case.crank.tip}", case.crank_length)
+    for d in case.dyads:
+        if isinstance(d, RRPSpec):
+            stated(f"длина звена {d.rod} l_", case.rod_length(d))
+            stated(f"направляющая ползуна {d.slider}: угол", d.guide.angle_deg)
+            stated(f"направляющая ползуна {d.slider}: точка", *d.guide.through)
+        elif isinstance(d, RRRSpec):
+            stated(f"длина звена {d.link_from} l_", d.length_from)
+            stated(f"длина звена {d.link_to} l_", d.length_to)
+        elif isinstance(d, RPRSpec) and d.offset:
+            stated(f"линия скольжения звена {d.rocker}", d.offset)
+    for p, xy in case.ground.items():
+        stated(f"неподвижная точка {p} ", *xy)
+    for p, spec in case.points.items():
+        assert any(re.search(rf"точка {re.escape(p[:1])}\S* звена {re.escape(spec.link)}:", k)
+                   for k in rows), (name, p)
+        if spec.distance is not None:
+            stated(f"точка {p[:1]}", spec.distance)
+    assert not any(math.isnan(x) for v in values.values() for x in v)
+
+
+def test_a_cylinders_indicator_columns_are_said_once():
+    """The indicator tables' s and arrows are explained under the first of them, once."""
+    _, doc = _document("compressor")
+    notes = [b for b in doc.blocks if isinstance(b, Paragraph) and b.text == T["ru"]["ind_note"]]
+    assert len(notes) == 1 and "к головке" in notes[0].text
+
+
+def test_a_centroid_is_lettered_as_the_figures_letter_it():
+    _, doc = _document("compressor")
+    table = next(b for b in doc.blocks if isinstance(b, Table) and b.caption == T["ru"]["masses"])
+    assert [r[-1] for r in table.rows] == ["S₂", "B", "S₄", "C"]
