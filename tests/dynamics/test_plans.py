@@ -481,3 +481,21 @@ def test_plan_images_keep_their_order_under_any_hash_seed():
                           env={**os.environ, "PYTHONHASHSEED": seed}).stdout
            for seed in ("1", "2", "3")}
     assert len(out) == 1, out
+
+
+def test_a_plans_notes_name_each_links_value_and_vector_as_the_course_does():
+    """The compressor's acceleration plan at 120° (Russian): the links' ε as «ε₂ = …» with the
+    value the plan holds (it had read «2 12,32», a link's number against its value) and a
+    relative acceleration of a centroid as «aⁿ S₂A» (was «S2A» beside «πs₂»)."""
+    from flywheel.render import figure as fg
+    from flywheel.render import plots_plans as pp
+    from flywheel.render.numbers import fmt, typography
+
+    r = analyze(load_case(CASES / "compressor.toml"), n_points=360, at_deg=[120.0])
+    ps = r.plans[0]
+    with fg.style(), typography("ru"):
+        fig = pp.figure_acceleration_plan(r, ps, "ru")
+        text = " ".join(t.get_text() for t in fig.texts).replace("\n", " ")
+        eps_2 = fmt(ps.acceleration.links["2"], 4)
+    assert f"ε₂ = {eps_2}" in text, text
+    assert "aⁿ S₂A" in text and "S2" not in text, text

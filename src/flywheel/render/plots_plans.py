@@ -134,7 +134,7 @@ def _vec_label(plan, v) -> str:
     if plan.quantity == "velocity":
         return _image(lab[v.rel]) + _image(lab[v.to])
     sup = {"normal": "ⁿ", "tangential": "τ", "coriolis": "ᵏ", "sliding": "ʳ"}[v.kind]
-    return f"a{sup} {v.to}{v.rel}"
+    return f"a{sup} {_image(v.to)}{_image(v.rel)}"
 
 
 _ON_PLAN = {"normal": "n", "tangential": "τ", "coriolis": "k", "sliding": "r"}
@@ -393,9 +393,9 @@ def _kinematic_plan(results, ps, which: str, lang: str):
     aw, ah = _plan_box(lo, hi, W - left - right, 6.2)
     lw = plan.links
     wmax = max([abs(float(x)) for x in lw.values()] + [0.0])
-    name = "links_w" if which == "velocity" else "links_e"
-    head = (f"{_t(lang, 'omega', w=plan.omega, e=plan.epsilon)}; "
-            f"{_t(lang, name, x=_SEP[lang == 'ru'].join(f'{n} {_num(_clean(lw[n], wmax))}' for n in lw))}")
+    name, sym = ("links_w", "ω") if which == "velocity" else ("links_e", "ε")
+    each = _SEP[lang == "ru"].join(f"{sym}{_sub(n)} = {_num(_clean(lw[n], wmax))}" for n in lw)
+    head = f"{_t(lang, 'omega', w=plan.omega, e=plan.epsilon)}; {_t(lang, name, x=each)}"
     head = _wrap([head], int((W - left - right) / (_CHAR_W * 7.5 / _PT)))
     handles = [Line2D([], [], color=_COLOURS[k], linewidth=1.8 if k == "absolute" else 1.2,
                       linestyle="--" if k == "relative" else "-", label=_t(lang, k))
