@@ -499,3 +499,27 @@ def test_a_plans_notes_name_each_links_value_and_vector_as_the_course_does():
         eps_2 = fmt(ps.acceleration.links["2"], 4)
     assert f"ε₂ = {eps_2}" in text, text
     assert "aⁿ S₂A" in text and "S2" not in text, text
+
+
+@pytest.mark.parametrize("name", NAMES)
+def test_every_force_polygons_value_stays_inside_its_panel(name):
+    """A force polygon's values are set inside their panel's frame: the shaper's group 4, 5 at
+    60° had G₄'s value over the panel's tick labels (the placer lets a label out by a few
+    points where the frame is crowded; the frame is grown instead)."""
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+    from flywheel.render import figure as fg
+    from flywheel.render import plots_plans as pp
+    from flywheel.render.numbers import typography
+
+    r = analyze(load_case(CASES / f"{name}.toml"), n_points=360)
+    with fg.style(), typography("ru"):
+        for ps in r.plans:
+            fig = pp.figure_force_polygons(r, ps, "ru")
+            ren = FigureCanvasAgg(fig).get_renderer()
+            for ax in fig.axes:
+                f = ax.get_window_extent(ren)
+                for t in ax.texts:
+                    b = t.get_window_extent(ren)
+                    assert (f.x0 - 0.5 <= b.x0 and b.x1 <= f.x1 + 0.5 and f.y0 - 0.5 <= b.y0
+                            and b.y1 <= f.y1 + 0.5), (ps.phi_deg, t.get_text())

@@ -579,16 +579,11 @@ def figure_force_polygons(results, ps, lang: str = "en"):
                 heads = np.array([v.head for v in pg.chords]) / mu
                 segs += list(zip(tails, heads))
                 _arrows(ax, tails, heads, "0.45", 1.0, "--")
-            _set_frame(ax, lo, hi, lang)
-            labels = AxesLabels(ax)
-            labels.segments(segs)
-            _heads(labels, segs, 1.5)
-            # the longest first: the short vectors' labels then find room round them
-            for v in sorted(pg.vectors + pg.chords, key=lambda v: -float(v.value)):
-                labels.along(np.array(v.tail) / mu, np.array(v.head) / mu,
-                             f"{_force_label(v.label, lang)} {_num(v.value)}", fontsize=7.0,
-                             color=_COLOURS.get(v.kind, "k") if v not in pg.chords else "0.35",
-                             zorder=6)
+            for grow in (1.0, 1.15, 1.3):    # a label left the frame: the frame grown
+                mid, half = (lo + hi) / 2, (hi - lo) / 2 * grow
+                _set_frame(ax, mid - half, mid + half, lang)
+                if _force_labels(ax, pg, segs, lang, keep=grow == 1.3):
+                    break
             what = (_t(lang, "crank", l=pg.links[0]) if pg.kind == "crank"
                     else _t(lang, "group", k=nm.dyad_kind(pg.kind, lang), l=", ".join(pg.links)))
             scale = _scale_text("mu_F", mu, lang)
@@ -601,6 +596,30 @@ def figure_force_polygons(results, ps, lang: str = "en"):
     fig.suptitle(f"{_title(results, what)} ({_unit('N', lang)})", fontsize=10,
                  y=1 - 0.1 / H, va="top")
     return fig
+
+
+def _force_labels(ax, pg, segs, lang: str, keep: bool = False) -> bool:
+    """The values of a force polygon's vectors beside them, the longest first (the short
+    vectors' labels then find room round them); whether every label stays inside the frame
+    — where one does not, they are all taken away again (the caller grows the frame), unless
+    ``keep``."""
+    labels = AxesLabels(ax)
+    labels.segments(segs)
+    _heads(labels, segs, 1.5)
+    mu, placed = pg.scale, []
+    for v in sorted(pg.vectors + pg.chords, key=lambda v: -float(v.value)):
+        placed.append(labels.along(
+            np.array(v.tail) / mu, np.array(v.head) / mu,
+            f"{_force_label(v.label, lang)} {_num(v.value)}", fontsize=7.0,
+            color=_COLOURS.get(v.kind, "k") if v not in pg.chords else "0.35", zorder=6))
+    f0, g0, f1, g1 = labels.placer.frame
+    boxes = ax.figure.flywheel_labels[-len(placed):]
+    if keep or all(f0 <= b[0] and g0 <= b[1] and b[2] <= f1 and b[3] <= g1 for _, b in boxes):
+        return True
+    for a in placed:
+        a.remove()
+    del ax.figure.flywheel_labels[-len(placed):]
+    return False
 
 
 # -- Zhukovsky's lever ----------------------------------------------------------------------------
