@@ -57,9 +57,27 @@ def test_neuter_nouns_in_mya_and_symbols_stay():
      "angular acceleration of link 3 at φ = 60°"),
     ("force_analysis.crank_pin_load_max", "наибольшую нагрузку на шатунную шейку за цикл",
      "the greatest load on the crank pin over the cycle"),
-    ("at.0.slider_crank.3.piston_effort",
-     "движущую силу на поршне (к оси кривошипа) при φ = 60°",
-     "piston effort (towards the crank axis) at φ = 60°"),
+    ("at.0.slider_crank.3.piston_effort", "движущую силу на поршне 3 при φ = 60°",
+     "piston effort, slider 3 at φ = 60°"),
+    ("at.0.slider_crank.5.crank_pin_x",
+     "нагрузку на шатунную шейку: проекция на ось x от шатуна ползуна 5 при φ = 60°",
+     "load on the crank pin: x component from the rod of slider 5 at φ = 60°"),
+    ("at.1.joints.B:0->3.angle_deg",
+     "направление реакции в кинематической паре B (0→3), угол от оси x при φ = 250°",
+     "the direction of the reaction in pair B (0→3), from the x axis at φ = 250°"),
+    ("at.0.joints.B:0->3.offset",
+     "смещение линии действия реакции в кинематической паре B (0→3) вдоль линии скольжения "
+     "при φ = 60°",
+     "the offset of the line of action of the reaction in pair B (0→3) along the slide at "
+     "φ = 60°"),
+    ("at.0.main_bearing_load.angle_deg",
+     "направление нагрузки на коренной подшипник, угол от оси x при φ = 60°",
+     "the direction of the load on the main bearing, from the x axis at φ = 60°"),
+    ("at.0.moments.gravity 2", "приведённый момент: сила тяжести звена 2 при φ = 60°",
+     "reduced moment: gravity, link 2 at φ = 60°"),
+    ("firing_deg.3", "угол вспышки в цилиндре 3", "crank angle where cylinder 3 fires"),
+    ("delta_T_I_max", "наибольшее изменение кинетической энергии первой группы",
+     "the greatest change of the first group's kinetic energy"),
     ("output_link.stroke", "ход ползуна", "stroke of the slider"),
     ("output_link.extremes_phi_deg.1",
      "угол поворота кривошипа в крайнем положении 2 выходного звена",
@@ -90,7 +108,8 @@ def test_the_task_sheet_and_the_moodle_bank_ask_at_the_variants_angle(tmp_path):
     root = Path(__file__).resolve().parents[2]
     text = (root / "cases" / "variants_shaper.toml").read_text(encoding="utf-8")
     text = re.sub(r'\nanswers = \[[^\]]*\]', '\nanswers = ["at.0.balancing_moment.kinetostatic", '
-                  '"at.1.joints.O:0->3.F", "force_analysis.balancing_moment_max"]', text)
+                  '"at.1.joints.O:0->3.F", "force_analysis.balancing_moment_max", '
+                  '"at.0.moments.force cutting"]', text)
     text = re.sub(r'\ntolerances = \{[^}]*\}', '', text)
     template = tmp_path / "t.toml"
     template.write_text(text, encoding="utf-8")
@@ -105,7 +124,9 @@ def test_the_task_sheet_and_the_moodle_bank_ask_at_the_variants_angle(tmp_path):
         encoding="utf-8"))
     for said in ("Определить уравновешивающий момент (кинетостатика) при φ = 60°",
                  "Определить реакцию в кинематической паре O (0→3): модуль при φ = 250°",
-                 "Определить наибольший уравновешивающий момент за цикл"):
+                 "Определить наибольший уравновешивающий момент за цикл",
+                 # the force by the case's title, not its name «cutting»
+                 "Определить приведённый момент: сила резания при φ = 60°"):
         assert said in sheet and said in bank, said
     assert "at.0." not in sheet and "force_analysis." not in sheet
     # the key keeps the variant's report angles, so a feedback page names them too
@@ -135,3 +156,52 @@ def test_a_broken_at_deg_of_a_key_is_one_line():
     assert "answers.json: at_deg: must be an object {variant: [angles in degrees]}" in str(e.value)
     doc["at_deg"] = {"01": [60, 250.0]}
     assert parse_key(doc, "answers.json").at_deg == {"01": (60.0, 250.0)}
+
+
+@pytest.mark.parametrize("case", ["compressor", "engine_inline4", "shaper", "fourbar_rocker_load"])
+def test_every_number_of_summary_json_is_asked_in_words(case):
+    """Each number a run's summary.json holds, asked as a template may ask it: in words, never
+    by its key (a dotted path, a key's snake_case word such as angle_deg or crank_pin_x) — the
+    sheets had asked «Определить at.0.joints.B:0->3.angle_deg»."""
+    import json
+    import re
+
+    from flywheel.cases.run import load_case
+    from flywheel.dynamics.pipeline import analyze
+    from flywheel.render.tables import summary_json
+
+    root = Path(__file__).resolve().parents[2]
+    doc = json.loads(summary_json(analyze(load_case(root / "cases" / f"{case}.toml"),
+                                          n_points=360)))
+
+    def numbers(d, pre=""):
+        if isinstance(d, dict):
+            for k, v in d.items():
+                yield from numbers(v, f"{pre}{k}.")
+        elif isinstance(d, list):
+            for i, v in enumerate(d):
+                yield from numbers(v, f"{pre}{i}.")
+        elif isinstance(d, (int, float)) and not isinstance(d, bool):
+            yield pre[:-1]
+
+    keys = list(numbers(doc["results"]))
+    assert any(k.startswith("at.0.joints.") for k in keys)
+    for key in keys:
+        for lang in ("ru", "en"):
+            what = answer_words("run", key, lang, (60.0,))[0]
+            assert what != key and not re.search(r"[a-z]+_[a-z]+|->|\.\d", what), (key, what)
+
+
+def test_a_load_is_asked_by_the_title_the_case_gives_it():
+    """A report angle's load is named by its title (LoadsResult.titles) or its cylinder's
+    label where the variant's case gives one: «силу резания», not «силу cutting»."""
+    from flywheel.dynamics.loads import LoadKey
+    from flywheel.io.text import Text
+
+    loads = ({LoadKey("force", "cutting"): Text("cutting force", "сила резания")},
+             {LoadKey("gas", "HP"): Text("HP", "ВД")})
+    assert answer_words("run", "at.0.forces.cutting", "ru", (60.0,), loads)[0] == \
+        "силу резания при φ = 60°"
+    assert answer_words("run", "at.0.moments.gas HP", "ru", (60.0,), loads)[0] == \
+        "приведённый момент: газ ВД при φ = 60°"
+    assert answer_words("run", "at.0.forces.cutting", "ru", (60.0,))[0] == "силу cutting при φ = 60°"

@@ -26,14 +26,15 @@ T = words("moodle", {
 })
 
 
-def _unit_and_words(answer: str, kind: str, lang: str,
-                    at_deg: tuple = ()) -> tuple[str, str, str, str]:
+def _unit_and_words(answer: str, kind: str, lang: str, at_deg: tuple = (),
+                    loads: tuple = ({}, {})) -> tuple[str, str, str, str]:
     """(what, symbol, unit as the sheet prints it, SI unit symbol for Moodle's units); a report
-    angle's quantity at its angle of ``at_deg`` (the variant's)."""
+    angle's quantity at its angle of ``at_deg`` (the variant's), a load by its title or label
+    of ``loads`` (the variant's)."""
     from flywheel.render.nomenclature import unit_of
     from flywheel.render.sheet_labels import answer_words
 
-    what, sym, u = answer_words(kind, answer, lang, at_deg)
+    what, sym, u = answer_words(kind, answer, lang, at_deg, loads)
     try:
         si = unit_of(answer.rsplit(".", 1)[-1], "en")
     except KeyError:
@@ -59,7 +60,7 @@ def quiz_xml(vs, lang: str = "en") -> str:
         for a in t.keyed:
             value = v.answers[a]
             rel = t.tolerance_of(a)
-            what, sym, unit, si = _unit_and_words(a, t.kind, lang, v.at_deg)
+            what, sym, unit, si = _unit_and_words(a, t.kind, lang, v.at_deg, v.loads)
             pct = f"{100 * rel:g}".replace(".", "," if lang == "ru" else ".")
             # the question's HTML: the symbol's subscript in <sub> (M<sub>Д</sub>, as the task
             # sheet sets it), the rest escaped; the tag as it is, for grade to read back

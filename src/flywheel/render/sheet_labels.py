@@ -222,6 +222,18 @@ SHEET_ANSWERS: dict[str, tuple[str, str]] = {
     # task2's masses: their names are templates of the radius they are taken at
     "task2:flywheel_mass": ("the mass of the flywheel", "массу маховика"),
     "task2:rim_mass": ("the mass of the flywheel's rim", "массу обода маховика"),
+    "delta_T_I_max": ("the greatest change of the first group's kinetic energy",
+                      "наибольшее изменение кинетической энергии первой группы"),
+    "delta_T_I_min": ("the least change of the first group's kinetic energy",
+                      "наименьшее изменение кинетической энергии первой группы"),
+    "phi_delta_T_I_max_deg": ("the crank angle of the greatest ΔT_I",
+                              "угол поворота кривошипа при наибольшем ΔT_I"),
+    "phi_delta_T_I_min_deg": ("the crank angle of the least ΔT_I",
+                              "угол поворота кривошипа при наименьшем ΔT_I"),
+    "phi_omega_max_deg": ("the crank angle of the greatest angular velocity",
+                          "угол поворота кривошипа при наибольшей угловой скорости"),
+    "phi_omega_min_deg": ("the crank angle of the least angular velocity",
+                          "угол поворота кривошипа при наименьшей угловой скорости"),
 }
 #: answers whose symbol differs between the two kinds (J_I of a run, J_пр of task2)
 SHEET_SYMBOLS = {"task2:J_required": ("J", "J_пр"), "task2:delta": ("δ", "δ")}
@@ -451,6 +463,22 @@ _AT_GROUPS = {("balancing_moment", "kinetostatic"): "M_y",
 _AT_LOADS = ("crank_pin_load", "main_bearing_load", "shaking_force")   # the loads' own terms
 _COMPONENT = {"F": ("", ""), "Fx": (": x component", ": проекция на ось x"),
               "Fy": (": y component", ": проекция на ось y")}
+#: a force's or a reaction's further numbers at a report angle (summary.json's ``angle_deg``,
+#: a prismatic pair's ``normal`` and ``offset``): (English, Russian, symbol, unit) of ``{of}``, the
+#: force in the genitive (:data:`_OF_FORCE`)
+_FORCE_MORE = {"angle_deg": ("the direction of {of}, from the x axis",
+                             "направление {of}, угол от оси x", "α", "deg"),
+               "normal": ("the component of {of} along the slide's normal",
+                          "составляющая {of} по нормали к линии скольжения", "R", "N"),
+               "offset": ("the offset of the line of action of {of} along the slide",
+                          "смещение линии действия {of} вдоль линии скольжения", "h", "m")}
+_OF_FORCE = {"joints": ("the reaction in pair {x}", "реакции в кинематической паре {x}"),
+             "crank_pin_load": ("the load on the crank pin", "нагрузки на шатунную шейку"),
+             "main_bearing_load": ("the load on the main bearing", "нагрузки на коренной подшипник"),
+             "shaking_force": ("the shaking force on the frame", "неуравновешенной силы на стойку")}
+#: a slider-crank's crank-pin components at a report angle (summary.json's slider_crank.S.…):
+#: the term of its symbol and unit
+_PIN_XY = {"crank_pin_x": "crank_pin_Fx", "crank_pin_y": "crank_pin_Fy"}
 #: a link's quantities at a report angle: (English, Russian, symbol) with the link's name
 _AT_LINK = {"omega": ("angular velocity of link {L}", "угловая скорость звена {L}", "ω_{L}", "rad/s"),
             "epsilon": ("angular acceleration of link {L}", "угловое ускорение звена {L}", "ε_{L}",
@@ -483,10 +511,11 @@ _FORCE_ANALYSIS = {
 }
 
 
-def _at_words(key: str, lang: str) -> tuple[str, str, str] | None:
+def _at_words(key: str, lang: str, loads: tuple = ({}, {})) -> tuple[str, str, str] | None:
     """(what, symbol, unit) of a report angle's quantity ``at.N.…`` without its angle, of a
     force analysis's extreme over the cycle (``force_analysis.…_max``) or of the output link's
     stroke and extreme positions (``output_link.stroke``, ``output_link.extremes_phi_deg.N``);
+    a load by its title or its cylinder's label (``loads``: LoadsResult.titles, .labels);
     None for another key or one not worded here."""
     from flywheel.render.nomenclature import unit
 
@@ -502,10 +531,46 @@ def _at_words(key: str, lang: str) -> tuple[str, str, str] | None:
     if len(parts) == 2 and parts[0] == "force_analysis" and parts[1] in _FORCE_ANALYSIS:
         en, r, term = _FORCE_ANALYSIS[parts[1]]
         return (r if lang == "ru" else en), symbol(term, lang), unit_of(term, lang)
+    ru = lang == "ru"
+    if parts[0] == "firing_deg" and len(parts) == 2:       # an engine's cylinder fires at
+        return ((f"угол вспышки в цилиндре {parts[1]}" if ru else
+                 f"crank angle where cylinder {parts[1]} fires"), symbol("firing_deg", lang),
+                unit_of("firing_deg", lang))
     if len(parts) < 3 or parts[0] != "at" or not parts[1].isdigit():
         return None
-    ru = lang == "ru"
     group, rest = parts[2], parts[3:]
+    if group in ("moments", "forces") and len(rest) == 1:  # a load's reduced moment, a force
+        from flywheel.dynamics.loads import LoadKey
+        from flywheel.render.nomenclature import load_name
+
+        titles, labels = loads
+        if group == "moments":
+            term = f"M {rest[0]}"
+            what = name(term, lang, x=load_name(rest[0], lang, titles, labels))
+        else:       # a cylinder's gas force or a force: by its title where the case gives one
+            term = f"F_{rest[0]}"
+            titled = [k for k in (LoadKey("force", rest[0]), LoadKey("gas", rest[0]))
+                      if k in titles]
+            what = in_language(titles[titled[0]], lang) if titled else name(term, lang)
+        return what, symbol(term, lang), unit_of(term, lang)
+    if group == "slider_crank" and len(rest) == 2:          # by the slider of the rod
+        slider, q = rest
+        if f"{q}_{{link}}" in TERMS:
+            t = f"{q}_{slider}"
+            return name(t, lang), symbol(t, lang), unit_of(t, lang)
+        if q in _PIN_XY:
+            t = _PIN_XY[q]
+            return (name(t, lang) + (f" от шатуна ползуна {slider}" if ru else
+                                     f" from the rod of slider {slider}"),
+                    symbol(t, lang), unit_of(t, lang))
+    more = rest[-1] if rest and rest[-1] in _FORCE_MORE else None
+    if more and (group == "joints" and len(rest) == 2 or group in _AT_LOADS and len(rest) == 1):
+        of = _OF_FORCE[group][ru].format(x=pair_label(rest[0]))
+        return _FORCE_MORE[more][ru].format(of=of), _FORCE_MORE[more][2], unit(_FORCE_MORE[more][3],
+                                                                               lang)
+    if group == "crank_pin_load" and rest in (["tangential"], ["radial"]):
+        t = f"crank_pin_{rest[0]}"
+        return name(t, lang), symbol(t, lang), unit_of(t, lang)
     if group == "points" and len(rest) == 2 and rest[1] in TERMS:
         point, q = rest
         what = name(q, lang)
@@ -531,13 +596,14 @@ def _at_words(key: str, lang: str) -> tuple[str, str, str] | None:
     return bare_name(term, lang).replace(f" {sym} ", " ", 1), sym, unit_of(term, lang)
 
 
-def answer_words(kind: str, key: str, lang: str = "en",
-                 at_deg: tuple = ()) -> tuple[str, str, str]:
+def answer_words(kind: str, key: str, lang: str = "en", at_deg: tuple = (),
+                 loads: tuple = ({}, {})) -> tuple[str, str, str]:
     """(what, symbol, unit) of an answer of a ``kind`` ("run", "task2") case as a task sheet
     asks it: the object of "Determine …", the symbol and the unit as printed ("" where the
     quantity has none; the result key itself if it is no term; a table's cell:
     :func:`cell_words`; a report angle's quantity ``at.N.…`` at ``at_deg[N]``, the variant's
-    report angles, where given: «угловую скорость звена 3 при φ = 60°»).
+    report angles, where given: «угловую скорость звена 3 при φ = 60°»; a load by its title
+    or its cylinder's label of ``loads``, the variant's LoadsResult.titles and .labels).
 
     >>> answer_words("run", "J_flywheel", "ru")
     ('момент инерции маховика', 'J_М', 'кг·м²')
@@ -545,7 +611,7 @@ def answer_words(kind: str, key: str, lang: str = "en",
     cell = cell_words(key, lang)
     if cell is not None:
         return cell
-    at = _at_words(key, lang)
+    at = _at_words(key, lang, loads)
     if at is not None:
         what, sym, u = at
     else:

@@ -112,11 +112,12 @@ def _value(g, lang: str) -> str:
     return _num(g.value)
 
 
-def _answer_words(kind: str, key: str, lang: str, at_deg: tuple = ()) -> tuple[str, str, str]:
+def _answer_words(kind: str, key: str, lang: str, at_deg: tuple = (),
+                  loads: tuple = ({}, {})) -> tuple[str, str, str]:
     """(what, symbol, unit) of an answer in ``lang`` (the nomenclature's
     :func:`~flywheel.render.nomenclature.answer_words`; a report angle's quantity at its angle
-    of ``at_deg``), the subscripts marked."""
-    what, sym, unit = nm.answer_words(kind, key, lang, at_deg)
+    of ``at_deg``, a load by its title or label of ``loads``), the subscripts marked."""
+    what, sym, unit = nm.answer_words(kind, key, lang, at_deg, loads)
     return subscripts(what), subscripts(sym), unit
 
 
@@ -131,7 +132,7 @@ def find_items(sheet, lang: str) -> list[str]:
     w = WORDS[lang]
     out = []
     for k, f in enumerate(sheet.find, 1):
-        what, sym, unit = _answer_words(sheet.kind, f.answer, lang, sheet.at_deg)
+        what, sym, unit = _answer_words(sheet.kind, f.answer, lang, sheet.at_deg, sheet.loads)
         if unit:
             unit = f", {unit}" if lang == "ru" else f" [{unit}]"
         text = w["item"].format(what=what, sym=f" {sym}" if sym else "", unit=unit,

@@ -88,6 +88,7 @@ class Sheet:
     tables: tuple = ()           # teaching.tables.TableSpec: blank tables to fill in
     default_tolerance: float = 0.01   # the template's: a table column's without its own
     at_deg: tuple = ()           # the report angles [deg] an ``at.N.…`` answer is asked at
+    loads: tuple = ({}, {})      # the loads' titles and labels an ``at.N.…`` answer names
 
 
 # -- units from the schema -------------------------------------------------------------------------
@@ -314,7 +315,7 @@ def sheets_of(vs, progress=None) -> list[Sheet]:
         given = given_rows(t.kind, doc, varied)
         if t.kind == "run":
             given += default_rows(doc, v.filename, t.answers)
-            kw["at_deg"] = v.at_deg
+            kw.update(at_deg=v.at_deg, loads=v.loads)
         out.append(Sheet(n, v.id, stem, t.kind, title, given, find, names=element_names(doc),
                          tables=t.tables, default_tolerance=t.tolerance, **kw))
         if progress is not None:

@@ -470,6 +470,8 @@ class Variant:
     answers: dict[str, float]
     givens: Any = None           # teaching.chain.Givens of a run case (None: no chain)
     at_deg: tuple = ()           # a run case's report angles [deg]: what at.N answers are at
+    loads: tuple = ({}, {})      # a run case's loads' titles and cylinders' labels
+                                 # (LoadsResult.titles, .labels): how at.N answers name them
 
 
 @dataclass(frozen=True)
@@ -573,8 +575,11 @@ def generate(template: Template, count: int, seed: int, n_points: int = RUN_POIN
                         "{detail})", number=number, failed=failed, detail=last_error))) from None
                 continue
             seen.add(signature)
+            run = template.kind == "run"
             variants.append(Variant(vid, filename, drawn, text, answers, givens,
-                                    _report_angles(doc) if template.kind == "run" else ()))
+                                    _report_angles(doc) if run else (),
+                                    (dict(solution.loads.titles), dict(solution.loads.labels))
+                                    if run else ({}, {})))
             break
         if progress is not None:
             progress(number)
