@@ -316,7 +316,8 @@ def test_run_rich_summary(tmp_path):
     res = runner.invoke(app, ["run", str(CASES / "press.toml"), "--no-plots", "--out",
                               str(tmp_path / "o"), "--points", "360"])
     assert res.exit_code == 0, res.output
-    assert "B4" in res.output and "written" in res.output
+    # point B4 lettered as the figures and the sheets letter it, its digit a subscript
+    assert "B₄" in res.output and "B4" not in res.output and "written" in res.output
 
 
 def test_check_prints_the_table():

@@ -107,3 +107,6 @@ def test_a_centroid_is_lettered_as_the_figures_letter_it():
     _, doc = _document("compressor")
     table = next(b for b in doc.blocks if isinstance(b, Table) and b.caption == T["ru"]["masses"])
     assert [r[-1] for r in table.rows] == ["S₂", "B", "S₄", "C"]
+    at = next(b for b in doc.blocks if isinstance(b, Table)
+              and b.caption == T["ru"]["points_caption"].format(a="120"))
+    assert "S₂" in [r[0] for r in at.rows] and "S2" not in [r[0] for r in at.rows]

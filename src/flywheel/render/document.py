@@ -426,7 +426,8 @@ def build_document(results, lang: str = "en", plots: list[str] | None = None,
                                        ue=u("epsilon"))))
         if a.points:
             b.table(t["points_caption"].format(a=g(a.phi_deg, 6)), [t["point"], *(h(x) for x in point_keys)],
-                    [[n] + [g(getattr(p, x), 5) for x in point_keys] for n, p in a.points.items()])
+                    [[point_name(n)] + [g(getattr(p, x), 5) for x in point_keys]
+                     for n, p in a.points.items()])
         if a.links:
             b.table(t["links_caption"].format(a=g(a.phi_deg, 6)), [t["link"], *(h(x) for x in link_keys)],
                     [[n] + [g(getattr(lk, x), 5) for x in link_keys] for n, lk in a.links.items()])

@@ -9,6 +9,7 @@ import math
 
 from flywheel.render import nomenclature as nm
 from flywheel.render.catalogue import words
+from flywheel.render.mathfmt import point_name
 from flywheel.render.document import (T, Bullets, Formula, Heading, Paragraph, _Builder,
                                       _input_of_case, _structure, g)
 
@@ -77,7 +78,8 @@ def build_kinematics_document(results, lang: str = "en", plots: list[str] | None
     for n, a in enumerate(results.at, 1):
         b.add(Heading(3, f"3.{n}. φ = {g(a.phi_deg, 6)}°"))
         b.table(t["points_caption"].format(a=g(a.phi_deg, 6)), [t["point"], *(h(x) for x in point_keys)],
-                [[p] + [g(getattr(pt, x), 5) for x in point_keys] for p, pt in a.points.items()])
+                [[point_name(p)] + [g(getattr(pt, x), 5) for x in point_keys]
+                 for p, pt in a.points.items()])
         b.table(t["links_caption"].format(a=g(a.phi_deg, 6)), [t["link"], *(h(x) for x in link_keys)],
                 [[n_] + [g(getattr(lk, x), 5) for x in link_keys] for n_, lk in a.links.items()])
     if b.plots:
@@ -112,7 +114,7 @@ def print_kinematics_summary(results, lang: str = "en", console=None) -> None:
         for col in (t["point"], *(nm.heading(x, lang) for x in ("v", "a"))):
             tab.add_column(escape(col), justify="right")
         for p, pt in a.points.items():
-            tab.add_row(p, g(pt.v, 6), g(pt.a, 6))
+            tab.add_row(escape(point_name(p)), g(pt.v, 6), g(pt.a, 6))
         console.print(tab)
         tab = Table(title=escape(t["links_caption"].format(a=g(a.phi_deg, 6))))
         for col in (t["link"], *(nm.heading(x, lang) for x in ("omega", "epsilon"))):

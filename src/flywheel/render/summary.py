@@ -3,6 +3,7 @@ from __future__ import annotations
 
 from flywheel.render import nomenclature as nm
 from flywheel.render.catalogue import words
+from flywheel.render.mathfmt import point_name
 from flywheel.render.forces import print_forces
 from flywheel.render.numbers import fmt as _number, separator
 
@@ -167,7 +168,7 @@ def print_summary(results, console=None, lang: str = "en") -> None:
         for col in (t["point"], *(nm.heading(k, lang) for k in point_keys)):
             pt.add_column(escape(col), justify="right")
         for name, p in a.points.items():
-            pt.add_row(name, *(_g(getattr(p, k), 5) if getattr(p, k) is not None else "—" for k in point_keys))
+            pt.add_row(escape(point_name(name)), *(_g(getattr(p, k), 5) if getattr(p, k) is not None else "—" for k in point_keys))
         console.print(pt)
         lt = Table()
         link_keys = ("omega_q", "epsilon_q", "omega", "epsilon")
