@@ -924,3 +924,23 @@ def test_a_views_box_follows_the_items_appended_after_it_was_asked():
     assert v.box() == bounds(v.items) and v.box()[0] == -4.0
     w = v.moved(1.0, 1.0)
     assert w.box() == bounds(w.items) == tuple(a + 1.0 for a in v.box())
+
+
+def test_listov_is_written_on_the_first_sheet_only():
+    """ГОСТ 2.104-2006, 5.2: column 8 «Листов» (the sheets of the document) is filled on the
+    first sheet only, column 7 «Лист» left blank on a document of one sheet — every sheet had
+    said «Листов 2»."""
+    from flywheel.cases.run import DocumentSpec
+    from flywheel.render.drawings.model import Text
+    from flywheel.render.drawings.sheet import frame_view
+
+    def block(number: int, count: int) -> set[str]:
+        v = frame_view("A1", "ru", document=DocumentSpec(), title="Компрессор",
+                       sheet_name="Динамический анализ механизма", number=number, count=count,
+                       scale="1:2")
+        return {it.text for it in v.items if isinstance(it, Text)}
+
+    first, second, alone = block(1, 2), block(2, 2), block(1, 1)
+    assert {"Лист 1", "Листов 2"} <= first
+    assert "Лист 2" in second and "Листов" in second and "Листов 2" not in second
+    assert {"Лист", "Листов 1"} <= alone and "Лист 1" not in alone

@@ -157,8 +157,10 @@ def frame_view(size: str, lang: str, *, document, title: str, sheet_name: str, n
     v.text(X(137.5), Y(27.5), t["stage_letter"], 5.0, halign="center", valign="middle")
     if scale:
         v.text(X(176), Y(27.5), scale, 5.0, halign="center", valign="middle")
-    cell(135, 15, 20, f"{t['sheet']} {number}")
-    cell(155, 15, 30, f"{t['sheets']} {count}")
+    # ГОСТ 2.104-2006, 5.2: column 7 (Лист) is left blank on a document of one sheet, column 8
+    # (Листов) is filled on the first sheet only
+    cell(135, 15, 20, t["sheet"] if count == 1 else f"{t['sheet']} {number}")
+    cell(155, 15, 30, f"{t['sheets']} {count}" if number == 1 else t["sheets"])
     designation = document.designation_or_default
     d, h, q = fit(designation, 116.0, (7.0, 5.0, 3.5))
     v.text(X(125), Y(47.5), d, h, halign="center", valign="middle", squeeze=q)
