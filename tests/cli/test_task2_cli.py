@@ -366,7 +366,7 @@ def test_lang_ru_same_numbers_russian_labels(args):
     en = runner.invoke(app, ["task2", *map(str, args)], env=env)
     ru = runner.invoke(app, ["task2", *map(str, args), "--lang", "ru"], env=env)
     assert en.exit_code == 0 and ru.exit_code == 0, ru.output
-    for heading in ("Участки: ½·J_пр·(ω² − ω0²) = A(φ) = ∫(M_Д − M_С) dφ", "Результаты",
+    for heading in ("Участки: ½·J_пр·(ω² − ω₀²) = A(φ) = ∫(M_Д − M_С) dφ", "Результаты",
                     "величина", "значение", "рад/с", "ω_ср = (ω_max + ω_min)/2", "ΔT_нб",
                     "J_пр (приведённый момент инерции)"):
         assert heading in ru.stdout, heading

@@ -702,7 +702,7 @@ def test_balance_and_stopping_errors_are_russian(tmp_path):
                        "должен был бы быть -116.382 Н·м ≤ 0"),
                       ("task2/case-speed-falls-to-zero",
                        "speed: машина останавливается при φ = 181.938°: кинетической энергии "
-                       "½·J·ω0² = 1.5 Дж не хватает")):
+                       "½·J·ω₀² = 1.5 Дж не хватает")):
         entry = _entry(eid)
         d = tmp_path / eid.replace("/", "_")
         d.mkdir()

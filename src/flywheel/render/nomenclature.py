@@ -506,7 +506,7 @@ TERMS: dict[str, Term] = {
     # already had for another meaning carry the prefix t2_ (task 2's row labels).
     # -- quantities of task 2 ----------------------------------------------------------------
     "t2_J": _ci("J", "kg·m²", "J (reduced inertia)", "J_пр (приведённый момент инерции)", "J_пр"),
-    "omega0": _ci("ω0", "rad/s", "ω0 (at φ = 0)", "ω0 (при φ = 0)"),
+    "omega0": _ci("ω₀", "rad/s", "ω₀ (at φ = 0)", "ω₀ (при φ = 0)"),
     "t2_omega_mean": _ci("ω_ср", "rad/s", "ω_ср = (ω_max + ω_min)/2", "ω_ср = (ω_max + ω_min)/2"),
     "t2_delta": _ci("δ", "", "δ = (ω_max − ω_min)/ω_ср",
                       "δ = (ω_max − ω_min)/ω_ср, коэффициент неравномерности"),

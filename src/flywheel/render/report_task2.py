@@ -88,7 +88,7 @@ def build_task2_document(r, title: str, source: str, lang: str = "en",
     add(Heading(2, t["given"]))
     MD, MC = symbol("t2_M_D", lang), symbol("t2_M_C", lang)
     rows = [[t["given_J"], symbol("t2_J", lang), g(r.J), U("kg·m²")],
-            [t["given_w0"], "ω0", g(r.omega0), U("rad/s")],
+            [t["given_w0"], "ω₀", g(r.omega0), U("rad/s")],
             [t["given_cycle"], "Φ", g(math.degrees(r.cycle)), U("deg")]]
     for sym, graph, kind_key, found in ((MD, r.driving, "given_MD", r.unknown == "driving"),
                                         (MC, r.resistance, "given_MC", r.unknown == "resistance")):
