@@ -292,6 +292,7 @@ def build_document(results, lang: str = "en", plots: list[str] | None = None,
     # 1. input data -------------------------------------------------------------------------
     b.add(Heading(2, t["input"]))
     head = [t["qty"], t["val"], t["unit"]]
+
     def named(key: str, label: str | None = None) -> str:
         """A quantity's name and its symbol («заданный коэффициент неравномерности δ»)."""
         return f"{label or nm.bare_name(key, lang)} {sym(key)}".strip()
@@ -525,12 +526,11 @@ def _input_of_case(b: _Builder, case, t: dict, lang: str) -> None:
     rows = [[f"{t['pivot'].format(p=point_name(c.pivot))} {_xy_head(lang)}", xy(c.pivot_at), m],
             [f"{nm.bare_name('crank_length', lang)} {length(c.pivot, c.tip)}",
              gi(case.crank_length, 6), u("crank_length")]]
-    for pin in c.pins:
-        rows.append([t["throw"].format(p=point_name(pin.name)), gi(case.crank_length if pin.length is None
-                                                       else pin.length, 6), u("crank_length")])
+    for pin in c.pins:                       # a multi-throw crankshaft's further pins
+        throw = case.crank_length if pin.length is None else pin.length
+        rows.append([t["throw"].format(p=point_name(pin.name)), gi(throw, 6), u("crank_length")])
         rows.append([t["pin_angle"].format(p=point_name(pin.name), tip=point_name(c.tip)),
-                     gi(pin.angle_deg, 6),
-                     u("guide_angle")])
+                     gi(pin.angle_deg, 6), u("guide_angle")])
     rows += [[field_label("crank.start_angle_deg", lang), gi(c.start_angle_deg, 6), u("guide_angle")],
              [field_label("crank.rotation", lang), field_value("crank.rotation", c.rotation, lang),
               ""]]
@@ -560,7 +560,7 @@ def _input_of_case(b: _Builder, case, t: dict, lang: str) -> None:
               "ab": f"{p.from_}{p.to or ''}"}
         if p.to is not None:
             rows.append([f"{t['share'].format(**at)} {length(p.from_, name)}/{length(p.from_, p.to)}",
-                         gi(p.fraction, 6), u("delta")])
+                         gi(p.fraction, 6), nm.unit("-", lang)])
             if p.across:
                 rows.append([t["across"].format(**at), gi(p.across, 6), m])
         else:
