@@ -110,3 +110,23 @@ def test_a_centroid_is_lettered_as_the_figures_letter_it():
     at = next(b for b in doc.blocks if isinstance(b, Table)
               and b.caption == T["ru"]["points_caption"].format(a="120"))
     assert "S₂" in [r[0] for r in at.rows] and "S2" not in [r[0] for r in at.rows]
+
+
+def test_a_tabulated_case_states_its_links_and_loads():
+    """The press (cases/press.toml, the course project «Динамический анализ пресса», eqs. (8),
+    (9) and the moments Мст4 = −1750·0,05, Мст5 = −5540·0,042): the record states each link's
+    mass and J and the row it moves with, each force at its point, and the per-position values
+    in a table of their own — the punch's 1750 N at 90° and 5540 N at 120°, its weights' angles.
+    A tabulated case's record had said only that its kinematics are a table."""
+    _, doc = _document("press")
+    ru = T["ru"]
+    masses = next(b for b in doc.blocks if isinstance(b, Table) and b.caption == ru["tab_masses"])
+    assert [list(r[:4]) for r in masses.rows] == [["2", "255,1", "7,653", "B₂"], ["3", "81,6", "—", "B₂"],
+                                            ["4", "102", "—", "B₄"], ["5", "—", "2,251", "—"]]
+    loads = _rows(doc, ru["tab_loads"])
+    assert loads["сила полезного сопротивления (штамповки)"] == "B₄"
+    per = next(b for b in doc.blocks if isinstance(b, Table) and b.caption == ru["tab_rows"])
+    assert per.header[-1] == "F (сила полезного сопротивления (штамповки)), Н"
+    punch = {r[0]: r[-1] for r in per.rows}
+    assert (punch["90"], punch["120"], punch["150"]) == ("1750", "5540", "0")
+    assert [r[1] for r in per.rows][:3] == ["180", "128", "104"]      # α(G2) at 0°, 30°, 60°

@@ -22,9 +22,10 @@ RUN = sorted(p.stem for p in CASES.glob("*.toml")
 OTHER = sorted(p.stem for p in CASES.glob("*.toml") if p.stem.startswith(("task2", "aggregate",
                                                                             "duty")))
 #: Latin that is a symbol: extremes, Roman numerals of the groups, the Assur groups' kinds, and
-#: the values a case file takes that a warning names (the interpolations)
+#: the values a case file takes that a warning names (the interpolations), and the cosine of a
+#: formula in the text (M = F·|V_q|·cos α)
 SYMBOLS = {"max", "min", "II", "III", "RRR", "RRP", "RPR", "pchip", "linear", "natural", "spline",
-           "periodic"}
+           "periodic", "cos"}
 #: a Latin word of three letters or more standing alone (not part of a symbol like v_qA, J_II)
 WORD = re.compile(r"(?<![\w_/\\])[A-Za-z]{3,}(?![\w_])")
 

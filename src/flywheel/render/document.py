@@ -72,6 +72,11 @@ T = words("report", {
     "across": "point {p} of link {x}: offset across {ab}",
     "distance": "point {p} of link {x}: distance from {a}",
     "at_angle": "point {p} of link {x}: angle to the link",
+    "tab_masses": "Masses and moments of inertia of the links (the table's rows they use)",
+    "tab_loads": "Loads", "tab_rows": "Loads at the table's positions",
+    "per_position": "at each position (table {n})", "moves_with": "point (|V_q|)",
+    "tab_note": ("α is the angle between a force and its point's velocity (180° opposes the "
+                 "motion); a force's reduced moment is M = F·|V_q|·cos α."),
     "ind_note": ("s is the piston's travel from the head over its stroke (0 … 1); p/p_max ↑ while "
                  "the piston moves towards the head, ↓ while it moves away."),
     "balance_word": {"driving": "driving", "resistance": "resistance"},
@@ -325,6 +330,7 @@ def build_document(results, lang: str = "en", plots: list[str] | None = None,
         _structure(b, case, t, lang)
     elif case is not None:
         b.add(Paragraph(t["tabulated"]))
+        _input_of_table(b, case.tabulated, t, lang)
 
     # 2. kinematics ---------------------------------------------------------------------------
     # each position's label, then its number as plan_positions.png draws it (a tabulated
@@ -624,6 +630,62 @@ def _input_of_case(b: _Builder, case, t: dict, lang: str) -> None:
                   "–".join(s.links) if s.links is not None else s.link, f"c = {g(s.stiffness, 6)}",
                   nm.unit("N/m" if s.kind == "linear" else "N·m/rad", lang)] for s in springs]
         b.table(t["forces"], [t["name"], t["link"], t["val"], t["unit"]], rows)
+
+
+def _input_of_table(b: _Builder, tab, t: dict, lang: str) -> None:
+    """A ``[tabulated]`` case's links (mass, J, the rows they use) and loads (forces at its
+    points, reduced moments given outright), those given per position in a table of their own
+    (docs/tabulated.md; the kinematic rows are the table of §2)."""
+    def u(key):
+        return nm.unit_of(key, lang)
+
+    def called(kind, load) -> str:     # its title if the case gives one, else "kind name"
+        key = LoadKey(kind, load.name)
+        return nm.load_name(key, lang, {key: load.title} if load.title else None)
+
+    if tab.links:
+        b.add(Heading(3, f"1.2. {t['masses']}"))
+        b.table(t["tab_masses"], [t["link"], nm.heading("link_mass", lang),
+                                  nm.with_unit("J", u("J_S"), lang), t["moves_with"],
+                                  nm.symbol("omega_q", lang)],
+                [[k, gi(v.mass, 6) if v.mass else "—", gi(v.J, 6) if v.J else "—",
+                  point_name(v.point) if v.point else "—",
+                  (v.omega_q or k) if v.J and (v.omega_q or k) in tab.omega_q else "—"]
+                 for k, v in tab.links.items()])
+    if not (tab.forces or tab.moments):
+        return
+    rows_table = b.n_tables + 2                      # the table of the per-position values
+    per = t["per_position"].format(n=rows_table)
+    columns: list[tuple[str, list]] = []             # (heading, a value per position)
+
+    def given(x, head: str) -> str:                  # a number, or a column of the table
+        if isinstance(x, (int, float)):
+            return gi(x, 6)
+        columns.append((head, list(x)))
+        return per
+
+    rows = []
+    for f in tab.forces:               # a column by its load's name in the document's language
+        F, a = (f"{nm.symbol(k, lang)} ({called('force', f)})"
+                for k in ("force_magnitude", "guide_angle"))
+        rows.append([called("force", f), point_name(f.point),
+                     given(f.magnitude, nm.with_unit(F, u("force_magnitude"), lang)),
+                     given(f.angle_deg, nm.with_unit(a, u("guide_angle"), lang))])
+    for m in tab.moments:
+        M = f"M ({called('moment', m)})"
+        rows.append([called("moment", m), "—", given(m.values, nm.with_unit(M, u("M_sum"), lang)),
+                     "—"])
+    b.add(Heading(3, f"1.3. {t['tab_loads']}"))
+    size = nm.with_unit("F", u("force_magnitude"), lang)
+    if tab.moments:
+        size += f"{separator(lang)}{nm.with_unit('M', u('M_sum'), lang)}"
+    b.table(t["tab_loads"], [t["name"], t["point"], size,
+                             nm.with_unit("α", u("guide_angle"), lang)], rows)
+    b.add(Paragraph(t["tab_note"]))
+    if columns:
+        b.table(t["tab_rows"], [nm.heading("phi_deg", lang)] + [hd for hd, _ in columns],
+                [[gi(phi, 6)] + [gi(col[k], 6) for _, col in columns]
+                 for k, phi in enumerate(tab.positions_deg)])
 
 
 def _structure(b: _Builder, case, t: dict, lang: str) -> None:
