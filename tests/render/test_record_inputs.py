@@ -130,3 +130,22 @@ def test_a_tabulated_case_states_its_links_and_loads():
     punch = {r[0]: r[-1] for r in per.rows}
     assert (punch["90"], punch["120"], punch["150"]) == ("1750", "5540", "0")
     assert [r[1] for r in per.rows][:3] == ["180", "128", "104"]      # α(G2) at 0°, 30°, 60°
+
+
+def test_a_measured_indicator_diagram_is_said_not_listed():
+    """engine_measured's pressure trace (361 points of a CSV file) is said in one sentence with
+    its greatest gauge pressure, read here from the file itself: max p (bar, absolute) − 1
+    atmosphere, 4 digits — not listed row by row."""
+    import csv
+
+    with open(CASES / "data" / "engine_measured_p_phi.csv", encoding="utf-8") as f:
+        rows = [r for r in csv.reader(line for line in f if not line.startswith("#"))][1:]
+    p_max = max(float(r[1]) for r in rows) * 1e5 - 101325.0          # [Pa], gauge
+    _, doc = _document("engine_measured")
+    said = [b.text for b in doc.blocks if isinstance(b, Paragraph)
+            and b.text.startswith("Индикаторная диаграмма цилиндра 1 задана записью давления "
+                                  "по углу поворота кривошипа")]
+    assert len(said) == 1, said
+    printed = float(re.search(r"p_max = ([\d,]+) МПа", said[0]).group(1).replace(",", "."))
+    assert printed == pytest.approx(p_max / 1e6, rel=5e-4)                 # 4 digits
+    assert not any(isinstance(b, Table) and b.caption.startswith("Индикаторная") for b in doc.blocks)

@@ -7,6 +7,7 @@ drawing the figures."""
 from __future__ import annotations
 
 import re
+from functools import lru_cache
 from pathlib import Path
 
 import pytest
@@ -75,6 +76,7 @@ def _check(doc, case_path: Path, source: str) -> None:
     assert not left, left
 
 
+@lru_cache(maxsize=None)
 def _run_document(name: str, lang: str = "ru"):
     from flywheel.cases.run import load_case
     from flywheel.dynamics.pipeline import analyze
@@ -91,6 +93,27 @@ def test_a_russian_run_record_has_no_developer_text(name):
     case, _, doc = _run_document(name)
     assert doc.title == in_language(case.title, "ru") and re.search("[а-я]", doc.title)
     _check(doc, CASES / f"{name}.toml", in_language(case.source, "ru"))
+
+
+#: a number as the Russian record writes it: digits (narrow spaces between thousands), a
+#: decimal comma, a sign
+_NUMBER = re.compile(r"(?<![\w.,])[−-]?\d[\d\u202f]*(?:,\d+)?(?![\w])")
+
+
+@pytest.mark.parametrize("name", RUN)
+def test_a_russian_run_record_prints_no_number_past_seven_digits(name):
+    """Sensible significant figures: no number of the record (formulas aside) has more than 7
+    significant digits — a measured indicator diagram (engine_measured) had been listed as 360
+    rows of its travel and pressure to 17 digits."""
+    from flywheel.render.numbers import typography
+
+    with typography("ru"):
+        md = markdown(_run_document(name)[2])
+    long = [m.group() for line in md.splitlines() if not line.startswith("$$")
+            for m in _NUMBER.finditer(line)
+            if len(re.sub(r"\D", "", m.group()).strip("0" if "," in m.group() else "")
+                   .lstrip("0")) > 7]
+    assert not long, long[:5]
 
 
 def _other_document(name: str, lang: str = "ru"):

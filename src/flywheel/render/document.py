@@ -77,6 +77,11 @@ T = words("report", {
     "per_position": "at each position (table {n})", "moves_with": "point (|V_q|)",
     "tab_note": ("α is the angle between a force and its point's velocity (180° opposes the "
                  "motion); a force's reduced moment is M = F·|V_q|·cos α."),
+    "trace": ("The indicator diagram of cylinder {c} is a pressure trace against {against} "
+              "({where}); its greatest gauge pressure p_max = {p} MPa."),
+    "trace_against": {"crank_angle": "the crank angle", "volume": "the cylinder's volume",
+                      "travel": "the piston's travel"},
+    "trace_file": "file {f}", "trace_inline": "given in the case file",
     "ind_note": ("s is the piston's travel from the head over its stroke (0 … 1); p/p_max ↑ while "
                  "the piston moves towards the head, ↓ while it moves away."),
     "balance_word": {"driving": "driving", "resistance": "resistance"},
@@ -584,13 +589,24 @@ def _input_of_case(b: _Builder, case, t: dict, lang: str) -> None:
                  for k, v in case.links.items()])
     if case.cylinders:
         b.add(Heading(3, f"1.4. {t['cyl']}"))
+        def p_max(c) -> str:        # as given, or a measured trace's greatest to 4 digits
+            measured = getattr(c, "indicator", None) is not None
+            return g(float(f"{c.p_max:.4g}"), 6) if measured else gi(c.p_max, 6)
+
         b.table(t["cyl"], [t["name"], t["piston"], nm.heading("bore", lang), nm.heading("p_max", lang), t["head"]],
-                [[nm.cylinder_label(c, lang), c.piston, gi(c.bore, 6), gi(c.p_max, 6),
+                [[nm.cylinder_label(c, lang), c.piston, gi(c.bore, 6), p_max(c),
                   nm.DEAD_CENTRES[c.head][lang == "ru"]] for c in case.cylinders])
         noted = False
         for c in case.cylinders:
             sym_s, sym_p = nm.symbol("s_{cylinder}", lang), nm.symbol("p_rel", lang)
-            if getattr(c, "strokes", None) is not None:      # a four-stroke cylinder
+            if getattr(c, "indicator", None) is not None:    # a measured trace: said, not listed
+                i = c.indicator
+                where = (t["trace_file"].format(f=c.indicator_file) if c.indicator_file
+                         else t["trace_inline"])
+                b.add(Paragraph(t["trace"].format(c=nm.cylinder_label(c, lang),
+                                                  against=t["trace_against"][i.against],
+                                                  where=where, p=g(c.p_max / PA_PER_MPA, 4))))
+            elif getattr(c, "strokes", None) is not None:    # a four-stroke cylinder
                 st = c.strokes
                 names = ("intake", "compression", "expansion", "exhaust")
                 b.table(t["indicator"].format(c=nm.cylinder_label(c, lang)),
