@@ -212,6 +212,30 @@ def test_indicator(results, made):
     assert [a.get_ylabel() for a in ax.child_axes] == ["$p$ [MPa]"]     # secondary axis
 
 
+def test_the_indicator_diagram_is_a_closed_loop_with_russian_ticks_on_both_axes(made):
+    """The pump's cylinder (cases/pump.toml: p/p_max = 1 towards the head, 0 away) drawn as the
+    course draws it, a closed loop: the pressure's jumps where the piston turns are vertical
+    lines at s = 0 and s = 1 (the diagram had been two horizontal lines). In Russian the right
+    axis (p [МПа], a secondary axis) writes its ticks with a decimal comma as the left does (it
+    had «0.2 … 1.2»)."""
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+    from flywheel.render.numbers import typography
+
+    r = analyze(load_case(CASE.parent / "pump.toml"), n_points=360)
+    with fg.style("ru"), typography("ru"):
+        fig = plots.figure_indicator(r, r.cylinders[0], "ru")
+        FigureCanvasAgg(fig).draw()
+        made(fig)
+        ax = fig.axes[0]
+        verticals = sorted((float(ln.get_xdata()[0]), *sorted(map(float, ln.get_ydata())))
+                           for ln in ax.lines if len(ln.get_xdata()) == 2
+                           and ln.get_xdata()[0] == ln.get_xdata()[1])
+        assert verticals == [(0.0, 0.0, 1.0), (1.0, 0.0, 1.0)]
+        right = [t.get_text() for t in ax.child_axes[0].yaxis.get_ticklabels() if t.get_text()]
+        assert "1,2" in right and not any("." in t for t in right), right
+
+
 def test_piston_forces_mark_the_report_angle(made):
     from flywheel.cases.run import parse_case
     from flywheel.io.toml import read_toml

@@ -119,10 +119,13 @@ def _russian_ticks():
 
     from flywheel.render.numbers import fmt, typography
 
-    own = scale.LinearScale.set_default_locators_and_formatters
+    # a linear axis, and a secondary axis of a function of another's values (the indicator
+    # diagrams' p [MPa] beside p/p_max), which matplotlib gives a FuncScale
+    owns = {cls: cls.set_default_locators_and_formatters
+            for cls in (scale.LinearScale, scale.FuncScale)}
 
     def ticks(self, axis):
-        own(self, axis)
+        next(own for cls, own in owns.items() if isinstance(self, cls))(self, axis)
 
         locs: list = []                  # the ticks about to be labelled (set_locs)
 
@@ -137,10 +140,12 @@ def _russian_ticks():
         formatter.set_locs = set_locs
         axis.set_major_formatter(formatter)
 
-    scale.LinearScale.set_default_locators_and_formatters = ticks
+    for cls in owns:
+        cls.set_default_locators_and_formatters = ticks
 
     def restore() -> None:
-        scale.LinearScale.set_default_locators_and_formatters = own
+        for cls, own in owns.items():
+            cls.set_default_locators_and_formatters = own
     return restore
 
 

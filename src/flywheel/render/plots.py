@@ -204,15 +204,21 @@ def figure_indicator(results, cylinder, lang: str = "en"):
         s = np.asarray(cylinder.s, float)
         rel = np.asarray(cylinder.p, float) / cylinder.p_max
         towards = np.asarray(cylinder.towards_head, bool)
+        ends = {}
         for mask, key, color in ((towards, "towards", "C3"), (~towards, "away", "C0")):
             order = np.argsort(s[mask], kind="stable")
             ax.plot(s[mask][order], rel[mask][order], color=color, label=_t(lang, key))
+            if order.size:
+                ends[key] = (rel[mask][order][0], rel[mask][order][-1])
+        if len(ends) == 2:      # the loop closed at the dead centres, where the piston turns:
+            ax.plot([0.0, 0.0], [ends["towards"][0], ends["away"][0]], color="C0")   # at the head
+            ax.plot([1.0, 1.0], [ends["away"][1], ends["towards"][1]], color="C3")   # at s = 1
         ax.plot(cylinder.table_s, cylinder.table_towards, "o", color="C3", markersize=5,
                 markerfacecolor="none", label=_t(lang, "table_towards"))
         ax.plot(cylinder.table_s, cylinder.table_away, "s", color="C0", markersize=5,
                 markerfacecolor="none", label=_t(lang, "table_away"))
         ax.axhline(0.0, color="0.3", linewidth=0.6)
-        ax.set_xlim(0.0, 1.0)
+        ax.set_xlim(-0.02, 1.02)            # the dead centres' lines off the frame
         ax.set_xlabel(nm.axis("s_{cylinder}", lang))
         ax.set_ylabel(nm.axis("p_rel", lang))
         p_max = float(cylinder.p_max)
