@@ -523,3 +523,23 @@ def test_every_force_polygons_value_stays_inside_its_panel(name):
                     b = t.get_window_extent(ren)
                     assert (f.x0 - 0.5 <= b.x0 and b.x1 <= f.x1 + 0.5 and f.y0 - 0.5 <= b.y0
                             and b.y1 <= f.y1 + 0.5), (ps.phi_deg, t.get_text())
+
+
+def test_a_fractional_report_angle_is_written_with_a_decimal_comma_in_russian():
+    """A report angle of 224.2° (compressor_given_flywheel's ω_max): the Russian plans' titles
+    and the записка's captions write «φ = 224,2°» (they had «224.2°»)."""
+    from flywheel.render import figure as fg
+    from flywheel.render import plots_plans as pp
+    from flywheel.render.document import _figure_caption
+    from flywheel.render.numbers import typography
+
+    r = analyze(load_case(CASES / "compressor.toml"), n_points=360, at_deg=[224.2])
+    with fg.style("ru"), typography("ru"):
+        for build in (pp.figure_velocity_plan, pp.figure_acceleration_plan,
+                      pp.figure_force_polygons, pp.figure_lever):
+            fig = build(r, r.plans[0], "ru")
+            titles = " ".join(t.get_text() for t in fig.findobj(lambda o: hasattr(o, "get_text")))
+            assert "φ = 224,2°" in titles and "224.2" not in titles, build.__name__
+        assert _figure_caption("plan_velocity_224_2.png", "ru") == "План скоростей при φ = 224,2°"
+        assert _figure_caption("plan_lever_m22_5.png", "ru") == "Рычаг Жуковского при φ = −22,5°"
+    assert _figure_caption("plan_velocity_224_2.png", "en") == "Velocity plan at φ = 224.2°"

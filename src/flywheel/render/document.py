@@ -195,9 +195,8 @@ def _figure_caption(file: str, lang: str, pistons: bool = True,
         return t["indicator"].format(x=(cylinders or {}).get(stem, stem[len("indicator_"):]))
     if stem.startswith("plan_") and stem.count("_") >= 2:       # plan_velocity_22_5: 22.5°
         what, _, a = stem[len("plan_"):].partition("_")
-        if f"plan_{what}" in t:
-            a = a.replace("m", "−", 1).replace("_", ".")
-            return t[f"plan_{what}"].format(a=a)
+        if f"plan_{what}" in t:        # the angle as the document writes a number (224,2)
+            return t[f"plan_{what}"].format(a=g(float(a.replace("m", "-", 1).replace("_", ".")), 6))
     if stem in ("J_II", "omega", "epsilon"):
         n = nm.name(stem, lang)
         return f"{n[:1].upper()}{n[1:]}(φ)"

@@ -27,10 +27,10 @@ from flywheel.render.labels import AxesLabels, around
 from flywheel.render.numbers import fmt as _number
 
 _TEXT = words("plots_plans", {
-    "velocity": "{p} at φ = {a:g}°",
-    "acceleration": "{p} at φ = {a:g}°",
-    "forces": "{p} at φ = {a:g}°",
-    "lever": "{p} at φ = {a:g}° (the velocity plan turned 90° clockwise)",
+    "velocity": "{p} at φ = {a}°",
+    "acceleration": "{p} at φ = {a}°",
+    "forces": "{p} at φ = {a}°",
+    "lever": "{p} at φ = {a}° (the velocity plan turned 90° clockwise)",
     "positions": "{p} (план положений), {n} positions every 30°",
     "group": "group of links {l} ({k})",
     "crank": "crank {l} and the frame",
