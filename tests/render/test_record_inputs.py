@@ -149,3 +149,14 @@ def test_a_measured_indicator_diagram_is_said_not_listed():
     printed = float(re.search(r"p_max = ([\d,]+) МПа", said[0]).group(1).replace(",", "."))
     assert printed == pytest.approx(p_max / 1e6, rel=5e-4)                 # 4 digits
     assert not any(isinstance(b, Table) and b.caption.startswith("Индикаторная") for b in doc.blocks)
+
+
+def test_a_sliders_force_says_where_it_acts():
+    """The shaper's cutting force (cases/shaper.toml: 2500 N on s = 0.05 … 0.95 from the outer
+    dead centre, on the working stroke towards it): the record says where and when it acts, not
+    its size alone."""
+    _, doc = _document("shaper")
+    table = next(b for b in doc.blocks if isinstance(b, Table) and b.caption == T["ru"]["forces"])
+    assert [list(r) for r in table.rows] == [[
+        "сила резания", "5", "2500; при s = 0,05 … 0,95 от внешней мёртвой точки, при движении "
+        "ползуна к этой мёртвой точке", "Н"]]

@@ -32,6 +32,8 @@ T = words("report", {
     "indicator": "Indicator table of cylinder {c}", "forces": "Technological forces and couples",
     "load_table": "a table of {n} rows against {of}", "of_phi": "φ", "of_travel": "the travel s",
     "over": "at φ = {a}° … {b}°",
+    "s_range": "at s = {a} … {b} from the {ref} dead centre, the slider moving {stroke}",
+    "dead_centre": {"outer": "outer", "inner": "inner"},
     "structure": "Structure of the mechanism",
     "structure_note": ("The mechanism is the input mechanism (crank {c} on the frame) with "
                        "Assur groups attached in order:"),
@@ -626,11 +628,19 @@ def _input_of_case(b: _Builder, case, t: dict, lang: str) -> None:
     if case.forces or case.couples or springs:
         b.add(Heading(3, f"1.5. {t['forces']}"))
 
-        def value(load, size) -> str:     # a size or a table, and the range of φ if any
+        def value(load, size) -> str:     # a size or a table, and where it acts if not always
             text = gi(size, 6) if size is not None else t["load_table"].format(
                 n=len(load.table), of=t["of_" + getattr(load, "table_of", "phi")])
             rng = load.phi_range_deg
-            return text if rng is None else f"{text}; {t['over'].format(a=gi(rng[0], 6), b=gi(rng[1], 6))}"
+            if rng is not None:
+                text += f"; {t['over'].format(a=gi(rng[0], 6), b=gi(rng[1], 6))}"
+            if getattr(load, "slider", None) is not None and (
+                    tuple(load.s_range) != (0.0, 1.0) or load.stroke != "both"):
+                text += "; " + t["s_range"].format(
+                    a=gi(load.s_range[0], 6), b=gi(load.s_range[1], 6),
+                    ref=t["dead_centre"][load.reference],
+                    stroke=field_value("forces.0.stroke", load.stroke, lang))
+            return text
 
         def called(kind, load) -> str:    # its title if the case gives one, else "kind name"
             key = LoadKey(kind, load.name)
