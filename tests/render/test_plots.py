@@ -536,3 +536,18 @@ def test_the_plan_of_positions_numbers_stay_inside_its_frame(case):
     for t, b in numbers:
         assert f[0] - 0.5 <= b[0] and b[2] <= f[2] + 0.5 and f[1] - 0.5 <= b[1] \
             and b[3] <= f[3] + 0.5, (t.get_text(), b, f)
+
+
+def test_many_reactions_are_told_apart_by_their_line_style(made):
+    """engine_inline4's 13 reactions: past the ten colours of the cycle the curves are dashed
+    (fg.series) — R₀₁ and R₈₉ had been drawn alike in blue; a pair's point lettered B₁."""
+    from flywheel.render import plots_forces
+
+    r = analyze(load_case(CASE.parent / "engine_inline4.toml"), n_points=360)
+    with fg.style("ru"):
+        fig = plots_forces.figure_reactions(r, "ru")
+        made(fig)
+        lines = [ln for ln in fig.axes[0].lines if len(ln.get_xdata()) == r.phi.size]
+        styles = [(ln.get_color(), ln.get_linestyle()) for ln in lines]
+        assert len(lines) == 13 and len(set(styles)) == 13, styles
+        assert any("(B₁)" in t for t in _legend_texts(fig))

@@ -43,6 +43,21 @@ RC = {
     "axes.titley": 1.0,
 }
 
+#: the line styles of a figure's curves past the ten colours of the cycle: the 11th curve
+#: dashed in the first colour, … (a figure of many like curves: engine_inline4's 13 reactions)
+SERIES_STYLES = ("-", "--", "-.", ":")
+
+
+def series(k: int) -> dict:
+    """The colour and line style of a figure's curve ``k`` (from 0) of many like ones: the
+    cycle's ten colours, then again dashed, dash-dotted, dotted — no two curves alike up to 40.
+
+    >>> series(0), series(10)
+    ({'color': 'C0', 'linestyle': '-'}, {'color': 'C0', 'linestyle': '--'})
+    """
+    return {"color": f"C{k % 10}", "linestyle": SERIES_STYLES[(k // 10) % len(SERIES_STYLES)]}
+
+
 FORMATS = FIGURE_FORMATS             # `run --figure-format`; DPI_RANGE: `run --dpi`
 SVG_SALT = "flywheel"                # svg.hashsalt: the same ids in the SVG on every run
 

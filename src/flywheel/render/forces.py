@@ -14,6 +14,7 @@ import numpy as np
 from flywheel.dynamics.plans import link_pair
 from flywheel.render.blocks import Bullets, Heading, Paragraph
 from flywheel.render.catalogue import words
+from flywheel.render.mathfmt import point_name
 from flywheel.render.nomenclature import csv_header, name, position_label, symbol, unit, unit_of
 from flywheel.render.numbers import column_zero, fmt as _number, fmt_rows, fmt_text
 
@@ -177,11 +178,12 @@ def summary_lines(results, lang: str = "en") -> list[str]:
 
 def reaction_label(r, lang: str = "en") -> str:
     """A joint's reaction as the course writes it: R₀₁ (O) — the force of link 0 on link 1 at
-    O (Russian, subscript digits where both links' names are digits); R_01 (O) in English."""
+    O (Russian, subscript digits where both links' names are digits); R_01 (O) in English; a
+    point's trailing digits a subscript (B₁), as the figures letter it."""
     pair = link_pair(r.by, r.on)
     digits = pair.replace(",", "").isdigit()
     sub = pair.translate(_SUBSCRIPT) if lang == "ru" and digits else f"_{pair}"
-    return f"R{sub} ({r.joint})"
+    return f"R{sub} ({point_name(r.joint)})"
 
 
 _SUBSCRIPT = str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉")
@@ -299,7 +301,7 @@ def add_report_section(b, results, lang: str = "en") -> None:
         i = results.at_index(a.phi_deg)
         b.add(Heading(3, t["at"].format(a=_g(a.phi_deg, 6)).strip()))
         # a component of 10⁻⁹ of its reaction is the round-off of a projection: 0
-        rows = [[reaction_label(r, lang), r.joint, r.by, r.on,
+        rows = [[reaction_label(r, lang), point_name(r.joint), r.by, r.on,
                  *(_g(float(c[i]), 6, column_zero((r.magnitude[i],), 1e-13)) for c in (r.x, r.y)),
                  _g(float(r.magnitude[i]), 6), _g(math.degrees(float(r.angle[i])), 5)]
                 for k, r in f.joints.items()]

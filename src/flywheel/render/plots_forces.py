@@ -35,8 +35,8 @@ def figure_reactions(results, lang: str = "en"):
     deg = np.degrees(results.phi)
     from flywheel.render.forces import reaction_label
 
-    for r in results.forces.joints.values():
-        ax.plot(deg, r.magnitude, label=_reaction_tex(reaction_label(r, lang)))
+    for k, r in enumerate(results.forces.joints.values()):   # past ten: dashed (fg.series)
+        ax.plot(deg, r.magnitude, label=_reaction_tex(reaction_label(r, lang)), **fg.series(k))
     ax.set_ylabel(axis("reaction", lang))
     fg.phi_axis(ax, lang, cycle_deg=results.cycle_deg)
     ax.set_title(fg.title(results, _t(lang, "reactions")))
