@@ -160,3 +160,14 @@ def test_a_sliders_force_says_where_it_acts():
     assert [list(r) for r in table.rows] == [[
         "сила резания", "5", "2500; при s = 0,05 … 0,95 от внешней мёртвой точки, при движении "
         "ползуна к этой мёртвой точке", "Н"]]
+
+
+def test_the_report_angles_subsections_are_headed_alike():
+    """§6 (true velocities) and §7 (force analysis) head a report angle's subsection alike,
+    «При φ = 120°» (§6 had «φ = 120°»)."""
+    from flywheel.render.blocks import Heading
+
+    _, doc = _document("compressor")
+    heads = [b.text for b in doc.blocks if isinstance(b, Heading) and b.level == 3
+             and "φ = 120°" in b.text]
+    assert heads == ["6.1. При φ = 120°", "7.1. При φ = 120°"], heads

@@ -108,7 +108,7 @@ T = words("report", {
     "rim_design": ("- the rim as designed (share {share} of the flywheel's J; thin ring, Khurmi & "
                    "Gupta ch. 16): {dims}; σ = ρ·v² = {sigma} MPa"),
     "omega_extremes": "- {wmax} = {vmax} {uw} at {amax}°, {wmin} = {vmin} {uw} at {amin}°; {T} {v} {uT}",
-    "at": "ω = {w} {uw}, ε = {e} {ue}",
+    "at": "ω = {w} {uw}, ε = {e} {ue}", "at_phi": "At φ = {a}°",
     "time": "7. Motion in time",
     "time_note": ("The equation of motion J(φ)·φ̈ + ½·J′(φ)·φ̇² = M(φ, φ̇), J = J_I + J_II(φ), "
                   "integrated in time with scipy's solve_ivp; J, J′ and M are the tables of §3–4, "
@@ -434,7 +434,7 @@ def build_document(results, lang: str = "en", plots: list[str] | None = None,
                   r"\omega_{i} = \omega_{qi} \omega, \varepsilon_{i} = \varepsilon_{qi} \omega^{2} + \omega_{qi} \varepsilon"))
     point_keys, link_keys = ("v_q", "v", "a_q", "a"), ("omega_q", "omega", "epsilon_q", "epsilon")
     for k, a in enumerate(results.at, 1):
-        b.add(Heading(3, f"6.{k}. φ = {g(a.phi_deg, 6)}°"))
+        b.add(Heading(3, f"6.{k}. {t['at_phi'].format(a=g(a.phi_deg, 6))}"))
         b.add(Paragraph(t["at"].format(w=g(a.omega, 6), uw=u("omega"), e=g(a.epsilon, 6),
                                        ue=u("epsilon"))))
         if a.points:
