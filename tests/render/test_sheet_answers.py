@@ -205,3 +205,12 @@ def test_a_load_is_asked_by_the_title_the_case_gives_it():
     assert answer_words("run", "at.0.moments.gas HP", "ru", (60.0,), loads)[0] == \
         "приведённый момент: газ ВД при φ = 60°"
     assert answer_words("run", "at.0.forces.cutting", "ru", (60.0,))[0] == "силу cutting при φ = 60°"
+
+
+def test_a_point_in_a_field_label_is_lettered_as_the_figures_letter_it():
+    """A task sheet's «Дано» and the записка name a point S₂, O₁ (mathfmt.point_name), as the
+    scheme beside them draws it (they had «точка S2»)."""
+    from flywheel.render.sheet_labels import field_label
+
+    assert field_label("points.S2.fraction", "ru") == "точка S₂: доля длины звена"
+    assert field_label("ground.O1", "ru") == "неподвижная точка O₁ (x; y)"

@@ -9,6 +9,7 @@ import re
 
 from flywheel.io.text import in_language
 from flywheel.render.catalogue import words
+from flywheel.render.mathfmt import point_name
 from flywheel.render.nomenclature import MATERIALS, TERMS, bare_name, name, symbol, unit_of
 
 
@@ -287,6 +288,8 @@ def field_label(path: str, lang: str = "en", names: dict[str, str] | None = None
                 x = d.get("x") or ""
                 if x and key.endswith(f"first_group.{x}"):   # a part: its usual name
                     x = part_name(x, lang)
+                elif x and key.startswith(("points.", "ground.")):   # a point: S₂
+                    x = point_name(x)
                 if not x and d.get("i") is not None:
                     x = in_language((names or {}).get(
                         path[:m.end("i") - len(key) + len(path)]) or str(int(d["i"]) + 1), lang)
