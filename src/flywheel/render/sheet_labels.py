@@ -10,7 +10,9 @@ import re
 from flywheel.io.text import in_language
 from flywheel.render.catalogue import words
 from flywheel.render.mathfmt import point_name
-from flywheel.render.nomenclature import MATERIALS, TERMS, bare_name, name, symbol, unit_of
+from flywheel.dynamics.loads import LoadKey
+from flywheel.render.nomenclature import (MATERIALS, TERMS, bare_name, load_name, name, symbol,
+                                          unit_of)
 
 
 #: input fields of a case file: a dotted-path pattern (``#`` an array index, ``*`` a name) →
@@ -479,6 +481,8 @@ _OF_FORCE = {"joints": ("the reaction in pair {x}", "реакции в кине�
              "crank_pin_load": ("the load on the crank pin", "нагрузки на шатунную шейку"),
              "main_bearing_load": ("the load on the main bearing", "нагрузки на коренной подшипник"),
              "shaking_force": ("the shaking force on the frame", "неуравновешенной силы на стойку")}
+#: an engine's firing angle (summary.json's firing_deg.<cylinder>): (English, Russian)
+_FIRING = ("crank angle where cylinder {c} fires", "угол вспышки в цилиндре {c}")
 #: a slider-crank's crank-pin components at a report angle (summary.json's slider_crank.S.…):
 #: the term of its symbol and unit
 _PIN_XY = {"crank_pin_x": "crank_pin_Fx", "crank_pin_y": "crank_pin_Fy"}
@@ -536,16 +540,12 @@ def _at_words(key: str, lang: str, loads: tuple = ({}, {})) -> tuple[str, str, s
         return (r if lang == "ru" else en), symbol(term, lang), unit_of(term, lang)
     ru = lang == "ru"
     if parts[0] == "firing_deg" and len(parts) == 2:       # an engine's cylinder fires at
-        return ((f"угол вспышки в цилиндре {parts[1]}" if ru else
-                 f"crank angle where cylinder {parts[1]} fires"), symbol("firing_deg", lang),
+        return (_FIRING[ru].format(c=parts[1]), symbol("firing_deg", lang),
                 unit_of("firing_deg", lang))
     if len(parts) < 3 or parts[0] != "at" or not parts[1].isdigit():
         return None
     group, rest = parts[2], parts[3:]
     if group in ("moments", "forces") and len(rest) == 1:  # a load's reduced moment, a force
-        from flywheel.dynamics.loads import LoadKey
-        from flywheel.render.nomenclature import load_name
-
         titles, labels = loads
         if group == "moments":
             term = f"M {rest[0]}"
@@ -568,9 +568,9 @@ def _at_words(key: str, lang: str, loads: tuple = ({}, {})) -> tuple[str, str, s
                     symbol(t, lang), unit_of(t, lang))
     more = rest[-1] if rest and rest[-1] in _FORCE_MORE else None
     if more and (group == "joints" and len(rest) == 2 or group in _AT_LOADS and len(rest) == 1):
+        en, r, sym, u = _FORCE_MORE[more]
         of = _OF_FORCE[group][ru].format(x=pair_label(rest[0]))
-        return _FORCE_MORE[more][ru].format(of=of), _FORCE_MORE[more][2], unit(_FORCE_MORE[more][3],
-                                                                               lang)
+        return (r if ru else en).format(of=of), sym, unit(u, lang)
     if group == "crank_pin_load" and rest in (["tangential"], ["radial"]):
         t = f"crank_pin_{rest[0]}"
         return name(t, lang), symbol(t, lang), unit_of(t, lang)
