@@ -174,8 +174,8 @@ TERMS: dict[str, Term] = {
              "полная кинетическая энергия при φ = 0", "T0"),
     # flywheel
     "delta": _t("δ", r"$\delta$", "-", "target δ", "заданный коэффициент неравномерности δ"),
-    "J_first_group": _t("J_10 + J_ред", r"$J_{10} + J_{ред}$", "kg·m²",
-                        "already on the crank shaft", "уже на валу кривошипа (J_10 + J_ред)"),
+    "J_first_group": _t("J_10 + J_ред", r"$J_{10} + J_{ред}$", "kg·m²", "already on the crank shaft",
+                        "уже на валу кривошипа (J_10 + J_ред)", "J_10 + J_red", r"$J_{10} + J_{red}$"),
     "J_required": _t("J_I", "$J_I$", "kg·m²", "required inertia of the first group J_I "
                      "(Merzalov)", "необходимый момент инерции первой группы J_I (Мерцалов)"),
     "J_required_exact": _t("J_I", "$J_I$", "kg·m²", "required J_I, exact (energy–mass diagram)",
