@@ -171,3 +171,16 @@ def test_the_report_angles_subsections_are_headed_alike():
     heads = [b.text for b in doc.blocks if isinstance(b, Heading) and b.level == 3
              and "φ = 120°" in b.text]
     assert heads == ["6.1. При φ = 120°", "7.1. При φ = 120°"], heads
+
+
+def test_the_english_input_tables_have_no_russian_letters():
+    """The English record's input tables are English throughout: the first group's inertia is
+    J_10 + J_red (it had the Russian J_ред), the parts, the guides and the points in English."""
+    _, doc = _document("compressor", "en")
+    en = T["en"]
+    for caption in (en["machine"], en["lengths"]):
+        cells = [c for r in next(b for b in doc.blocks if isinstance(b, Table)
+                                 and b.caption == caption).rows for c in r]
+        assert not [c for c in cells if re.search("[а-яА-ЯёЁ]", c)], caption
+    assert "J_10 + J_red" in " ".join(r[0] for r in next(
+        b for b in doc.blocks if isinstance(b, Table) and b.caption == en["machine"]).rows)
