@@ -143,6 +143,26 @@ def test_the_task_sheet_and_the_moodle_bank_ask_at_the_variants_angle(tmp_path):
     assert res.exit_code == 0, res.output
     page = next((tmp_path / "fb").iterdir()).read_text(encoding="utf-8")
     assert "уравновешивающий момент (кинетостатика) при φ = 60°" in page
+    # the load by the case's title on the feedback page too: answers.json keeps it
+    assert key["load_names"]["titles"]["force cutting"] == {"en": "cutting force",
+                                                            "ru": "сила резания"}
+    assert "приведённый момент: сила резания при φ = 60°" in page and "cutting при" not in page
+
+
+def test_a_broken_load_names_of_a_key_is_one_line():
+    from flywheel.dynamics.loads import LoadKey
+    from flywheel.errors import CaseFileError
+    from flywheel.teaching.grading import parse_key
+
+    doc = {"variants": {"01": {"at.0.omega": 62.8}}, "tolerance": 0.01,
+           "load_names": {"titles": {"force cutting": "cutting force"}}}
+    with pytest.raises(CaseFileError) as e:
+        parse_key(doc, "answers.json")
+    assert str(e.value).startswith('answers.json: load_names: must be an object {"titles": ')
+    assert "\n" not in str(e.value)
+    doc["load_names"] = {"titles": {"force cutting": {"en": "cutting force", "ru": "сила резания"}}}
+    titles, labels = parse_key(doc, "answers.json").loads
+    assert titles[LoadKey("force", "cutting")].ru == "сила резания" and labels == {}
 
 
 def test_a_broken_at_deg_of_a_key_is_one_line():

@@ -38,13 +38,14 @@ def _num(x, lang: str, given: bool = False, spec: str | None = None) -> str:
         return fmt(x, 6, spec=spec, zero=None, nonfinite="show", given=given)
 
 
-def label(answer: str, lang: str, kind: str = "run", at_deg: tuple = ()) -> str:
+def label(answer: str, lang: str, kind: str = "run", at_deg: tuple = (),
+          loads: tuple = ({}, {})) -> str:
     """An answer as the task sheet of a ``kind`` case ("run", "task2") asks it
     (render/sheet_labels.py): «name symbol, unit»; an ``at.N.…`` one at its angle of
-    ``at_deg``, the variant's report angles."""
+    ``at_deg``, the variant's report angles, a load by its title or label of ``loads``."""
     from flywheel.render.sheet_labels import answer_words
 
-    what, sym, u = answer_words(kind, answer, lang, at_deg)   # a table's cell: its own words
+    what, sym, u = answer_words(kind, answer, lang, at_deg, loads)   # a table's cell: its own
     return " ".join(x for x in (what, sym) if x) + (f", {u}" if u else "")
 
 
@@ -68,9 +69,10 @@ def _pct(x: float, lang: str) -> str:
 
 
 def page(s, lang: str = "en", reveal: bool = True, share: float = 0.0, kind: str = "run",
-         at_deg: tuple = ()) -> str:
+         at_deg: tuple = (), loads: tuple = ({}, {})) -> str:
     """The HTML page of one graded student (``StudentGrade``) of a key of ``kind`` variants
-    (``at_deg``: the student's variant's report angles, where the key keeps them)."""
+    (``at_deg``: the student's variant's report angles, where the key keeps them; ``loads``:
+    the key's loads' titles and labels)."""
     t = T[lang]
     e = html.escape
     rows = []
@@ -78,7 +80,8 @@ def page(s, lang: str = "en", reveal: bool = True, share: float = 0.0, kind: str
     for j, a in enumerate(s.answers):
         if in_table >> j & 1 and a.passed:
             continue                  # a table's right cell: counted in its table's line
-        cells = [f"{sub_html(label(a.answer, lang, kind, at_deg))}<br><small>{e(a.answer)}</small>",
+        cells = [f"{sub_html(label(a.answer, lang, kind, at_deg, loads))}<br>"
+                 f"<small>{e(a.answer)}</small>",
                  _num(a.given, lang, given=True), e(verdict_word(a, lang)),
                  sub_html(MISTAKES[lang].get(a.diagnosis, a.diagnosis or t["none"]))]
         if reveal:
@@ -137,7 +140,8 @@ def write_feedback(report, folder, lang: str = "en", reveal: bool = True, notes=
         for i, s in enumerate(report.students, start=1):
             angles = report.key.at_deg.get(report.key.find(s.variant) or "", ())
             (tmp / file_name(i, s.student)).write_text(
-                page(s, lang, reveal, report.carried_share, report.key.kind, angles),
+                page(s, lang, reveal, report.carried_share, report.key.kind, angles,
+                     report.key.loads),
                 encoding="utf-8")
 
     return write_folder(Path(folder), build, "", "feedback", notes)

@@ -67,6 +67,7 @@ class Key:
     tables: dict = field(default_factory=dict)   # name → teaching.tables.TableSpec
     kind: str = "run"   # the case kind the variants are of ("run", "task2"): the sheet's words
     at_deg: dict = field(default_factory=dict)   # variant id → its report angles [deg] (at.N)
+    loads: tuple = ({}, {})     # the loads' titles and labels an at.N answer names them by
 
     def tolerance_of(self, answer: str, default: float | None = None) -> float:
         """The per-answer tolerance of the key file (a table's cell: its column's), else
@@ -178,7 +179,8 @@ def parse_key(doc, source: str = "<key>") -> Key:
     kind = "task2" if "variants" in doc and doc.get("kind") == "task2" else "run"
     return Key(source, variants, float(tol), {str(k): float(v) for k, v in tols.items()},
                tuple(answers), givens, tables, kind,
-               _at_deg(doc.get("at_deg") if "variants" in doc else None, source))
+               _at_deg(doc.get("at_deg") if "variants" in doc else None, source),
+               _load_names(doc.get("load_names") if "variants" in doc else None, source))
 
 
 def _at_deg(table, source: str) -> dict:
@@ -193,6 +195,30 @@ def _at_deg(table, source: str) -> dict:
             "key_at_deg", "must be an object {{variant: [angles in degrees]}} (got {got})",
             got=repr(table)[:80])))
     return {str(k): tuple(float(x) for x in a) for k, a in table.items()}
+
+
+def _load_names(table, source: str) -> tuple:
+    """The key's ``load_names`` {"titles": {load: {en, ru}}, "labels": {…}} (teaching/
+    variants.py) as (titles, labels) {LoadKey: Text}: what names a load's ``at.N.moments.…`` or
+    ``at.N.forces.…`` answer on a feedback page; ({}, {}) without one; a broken one is one
+    CaseFileError line."""
+    from flywheel.dynamics.loads import LoadKey
+    from flywheel.io.text import Text
+
+    if table is None:
+        return {}, {}
+
+    def texts(part) -> bool:
+        return isinstance(part, dict) and all(
+            isinstance(v, dict) and isinstance(v.get("en"), str) and isinstance(v.get("ru"), str)
+            for v in part.values())
+
+    if not isinstance(table, dict) or not all(texts(table.get(k, {})) for k in ("titles", "labels")):
+        raise CaseFileError(led(f"{source}: load_names: ", Notice.of(
+            "key_load_names", "must be an object {{\"titles\": {{load: {{\"en\": …, \"ru\": …}}}}, "
+            "\"labels\": {{…}}}} (got {got})", got=repr(table)[:80])))
+    return tuple({LoadKey.parse(k): Text(v["en"], v["ru"]) for k, v in table.get(part, {}).items()}
+                 for part in ("titles", "labels"))
 
 
 def _chain_givens(chain, source: str) -> dict:

@@ -484,6 +484,20 @@ class VariantSet:
     warnings: tuple[str, ...] = field(default=())
 
 
+def _load_names(loads: tuple) -> dict:
+    """answers.json's ``load_names``: {"titles": {load: {en, ru}}, "labels": {…}} of a variant's
+    LoadsResult.titles and .labels (``Variant.loads``), a load by its key's text ("force
+    cutting"); :func:`flywheel.teaching.grading.parse_key` reads it back."""
+    from flywheel.io.text import in_language
+
+    def both(text) -> dict:
+        return {"en": str(text), "ru": in_language(text, "ru")}
+
+    titles, labels = loads
+    return {"titles": {str(k): both(v) for k, v in titles.items()},
+            "labels": {str(k): both(v) for k, v in labels.items()}}
+
+
 def _report_angles(doc: dict) -> tuple[float, ...]:
     """The report angles [deg] of a run case's document: its ``output.at_deg``, else the case
     file's default (cases.run.OutputSpec)."""
@@ -610,6 +624,10 @@ def answers_json(vs: VariantSet) -> str:
         # the report angles an at.N answer is asked at (a feedback page names them); none: as
         # before
         doc["at_deg"] = {v.id: list(v.at_deg) for v in vs.variants}
+        if any(a.split(".")[2:3] in (["moments"], ["forces"]) for a in t.answers):
+            # a load's title and a cylinder's label, by which such an answer names it (the
+            # template's, the same for every variant)
+            doc["load_names"] = _load_names(vs.variants[0].loads)
     if t.tables:           # the cells of each table (teaching/tables.py); none: as before
         doc["tables"] = {s.name: s.to_document() for s in t.tables}
     text = json.dumps(doc, indent=2, ensure_ascii=False)
