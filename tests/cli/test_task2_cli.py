@@ -463,3 +463,22 @@ def test_plot_that_fails_leaves_the_old_image_and_no_temporary(tmp_path, monkeyp
                              f"left on device: '{out}')\n")
     assert out.read_bytes() == b"the old image"
     assert [p.name for p in tmp_path.iterdir()] == ["t2.png"]
+
+
+def test_the_record_lists_the_data_as_the_book_states_them(tmp_path):
+    """Khurmi & Gupta, Example 16.4 (cases/task2_khurmi_16_4.toml): the book gives 1800 rpm, a
+    flywheel of 36 kg with a radius of gyration of 150 mm, and the areas 295, 685, 40, 340, 960,
+    270 mm² of the turning-moment diagram at 1 mm = 5 N·m and 1 mm = 1°. The Russian record
+    lists them so beside the J_пр and ω₀ it computes from them (it had listed only those)."""
+    out = tmp_path / "o"
+    res = runner.invoke(app, ["task2", "--case", str(CASES / "task2_khurmi_16_4.toml"),
+                              "--lang", "ru", "--out", str(out), "--report", "md"])
+    assert res.exit_code == 0, res.output
+    md = (out / "report.md").read_text(encoding="utf-8")
+    for row in ("| средняя частота вращения n_ср | 1800 | об/мин |",
+                "| масса маховика m | 36 | кг |", "| радиус инерции маховика k | 0,15 | м |",
+                "| площади диаграммы моментов | 295; −685; 40; −340; 960; −270 | мм² |",
+                "| диаграмма: масштаб моментов | 5 | Н·м/мм |",
+                "| диаграмма: масштаб углов | 1 | °/мм |"):
+        assert row in md, row
+    assert "Таблица 2 — Данные условия задачи" in md

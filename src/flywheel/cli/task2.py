@@ -130,6 +130,7 @@ class _Job:
     doc_title: str
     doc_source: str
     document: object = None         # the case's [document] (the title page), if a case
+    case: object = None             # the validated case file (its data as given), if a case
 
 
 def _from_case(case: Path, at, profile, given, lang: str = "en") -> _Job:
@@ -153,7 +154,7 @@ def _from_case(case: Path, at, profile, given, lang: str = "en") -> _Job:
 
     return _Job(lambda: solve_case(c, str(case), at_deg=at or ()), case_numbers(c.model_dump()),
                 case, in_language(c.title, lang), in_language(c.source, lang), str(c.title),
-                str(c.source), c.document)
+                str(c.source), c.document, c)
 
 
 def _from_options(profile, given, v: dict, at, lang: str) -> _Job:
@@ -223,5 +224,6 @@ def _write_out(out: Path, result, formats, job: _Job, lang: str, frame: str = "n
         out, "task2", to_json(result, job.doc_title, job.doc_source) + "\n",
         lambda path: draw(result, path, job.title, lang), FIGURE,
         lambda fig: front(typeset(lang, build_task2_document, result, job.title, job.source, lang,
-                                  fig), job.document, frame="" if frame == "none" else frame, **(page or {})),
+                                  fig, job.case), job.document,
+                          frame="" if frame == "none" else frame, **(page or {})),
         formats)

@@ -52,7 +52,20 @@ T = words("report_task2", {
     "steady_no": ("The motion is not steady: the work over the cycle is {work} J, ω after "
                   "one cycle {omega_end} rad/s."),
     "quantity": "quantity", "symbol": "symbol", "value": "value", "unit": "unit",
+    "case_caption": "The data as the task states them",
 })
+
+#: the units of a task-2 case file's numbers (cases/task2.py: speed, flywheel, diagram, power),
+#: by the field's name
+CASE_UNITS = {"omega0": "rad/s", "mean": "rad/s", "max": "rad/s", "min": "rad/s",
+              "omega0_rpm": "rpm", "mean_rpm": "rpm", "max_rpm": "rpm", "min_rpm": "rpm",
+              "J": "kg·m²", "mass": "kg", "radius_of_gyration": "m", "rim_radius": "m",
+              "fluctuation_percent": "%", "density": "kg/m³", "allowable_stress": "Pa",
+              "areas": "mm²", "moment_scale": "N·m/mm", "angle_scale_deg": "°/mm",
+              "energies": "J", "crossings_deg": "deg", "delta_E": "J", "work_per_cycle": "J",
+              "power": "W"}
+#: the sections of a task-2 case file whose numbers the record lists as given
+CASE_SECTIONS = ("speed", "flywheel", "diagram", "power")
 
 KINDS = words("report_task2_kinds", {"constant": "(constant)", "triangle": "(triangle, peak)",
                                      "rectangle": "(rectangle)", "points": "(largest ordinate)",
@@ -68,14 +81,47 @@ def _deg(phi) -> str:
     return "—" if phi is None or math.isnan(phi) else g(math.degrees(phi))
 
 
+def _case_rows(case, lang: str, listed: set = frozenset()) -> list[list[str]]:
+    """The numbers a task-2 case file gives in :data:`CASE_SECTIONS` but those at the paths
+    ``listed``, each by its label as a task sheet words it (render/sheet_labels.py) with the
+    digits it was given; a list's numbers set apart as the language sets them («295; −685»)."""
+    from flywheel.render.numbers import separator
+    from flywheel.render.sheet_labels import field_label
+
+    data = case.model_dump(exclude_unset=True, exclude_none=True)
+    rows = []
+
+    def walk(node, path: str) -> None:
+        if isinstance(node, dict):
+            for k, v in node.items():
+                walk(v, f"{path}.{k}" if path else k)
+        elif isinstance(node, (int, float)) and not isinstance(node, bool) or (
+                isinstance(node, list) and node and all(isinstance(x, (int, float)) for x in node)):
+            if path in listed:
+                return
+            values = node if isinstance(node, list) else [node]
+            key = path.rsplit(".", 1)[-1]
+            rows.append([field_label(path, lang, kinds=("task2",)),
+                         separator(lang).join(_number(float(x), 6, given=True) for x in values),
+                         unit(CASE_UNITS[key], lang) if key in CASE_UNITS else ""])
+
+    for section in CASE_SECTIONS:
+        if section in data:
+            walk(data[section], section)
+    return rows
+
+
 def _sub(base: str, en: str, ru: str, lang: str) -> str:
     """A symbol with a subscript in the formula notation (render/mathfmt.py)."""
     return rf"{base}_{{\text{{{ru if lang == 'ru' else en}}}}}"
 
 
 def build_task2_document(r, title: str, source: str, lang: str = "en",
-                         figure: str | None = FIGURE) -> Document:
-    """The записка of one task-2 result; ``figure`` the plot's name under plots/ (None: none)."""
+                         figure: str | None = FIGURE, case=None) -> Document:
+    """The записка of one task-2 result; ``figure`` the plot's name under plots/ (None: none);
+    ``case`` the task-2 case file it solves (cases/task2.Task2Case; None: the options), whose
+    numbers are listed as the problem gives them (a mean speed in rpm, a flywheel's mass and
+    radius of gyration, a diagram's areas and scales)."""
     t = T[lang]
 
     def U(u: str) -> str:
@@ -105,6 +151,15 @@ def build_task2_document(r, title: str, source: str, lang: str = "en",
     if r.radius_of_gyration is not None:
         rows.append([t["given_k"], "k", g(r.radius_of_gyration), U("m")])
     table(t["given_caption"], [t["quantity"], t["symbol"], t["value"], t["unit"]], rows)
+    if case is not None:           # what table 1 does not list already, as the case gives it
+        listed = {"flywheel.J", "speed.omega0"} | {
+            path for path, v in (("flywheel.delta", r.delta_target),
+                                 ("flywheel.rim_radius", r.rim_radius),
+                                 ("flywheel.radius_of_gyration", r.radius_of_gyration))
+            if v is not None}
+        given = _case_rows(case, lang, listed)
+        if given:
+            table(t["case_caption"], [t["quantity"], t["value"], t["unit"]], given)
     if r.driving is not None and r.resistance is not None:
         cuts = sorted({round(p, 12) for m in (r.driving, r.resistance) for p in m.breakpoints()})
         scale = 1e-9 * max(abs(r.driving.nominal), abs(r.resistance.nominal), 1.0)
