@@ -642,19 +642,22 @@ def _input_of_case(b: _Builder, case, t: dict, lang: str) -> None:
                     stroke=field_value("forces.0.stroke", load.stroke, lang))
             return text
 
-        def called(kind, load) -> str:    # its title if the case gives one, else "kind name"
-            key = LoadKey(kind, load.name)
-            return nm.load_name(key, lang, {key: load.title} if load.title else None)
-
-        rows = [[called("force", f), f.slider if f.slider is not None else f.point,
+        rows = [[_load_called("force", f, lang), f.slider if f.slider is not None else f.point,
                  value(f, f.magnitude), u("force_magnitude")] for f in case.forces]
-        rows += [[called("couple", c), c.link, value(c, c.moment), u("couple_moment")]
+        rows += [[_load_called("couple", c, lang), c.link, value(c, c.moment), u("couple_moment")]
                  for c in case.couples]
-        rows += [[called("spring", s),
+        rows += [[_load_called("spring", s, lang),
                   "–".join(s.points) if s.kind == "linear" else
                   "–".join(s.links) if s.links is not None else s.link, f"c = {g(s.stiffness, 6)}",
                   nm.unit("N/m" if s.kind == "linear" else "N·m/rad", lang)] for s in springs]
         b.table(t["forces"], [t["name"], t["link"], t["val"], t["unit"]], rows)
+
+
+def _load_called(kind: str, load, lang: str) -> str:
+    """A case's load (a force, a couple, a spring of the case file or of its [tabulated]) by
+    its title if the case gives one, else its kind and name (nomenclature.load_name)."""
+    key = LoadKey(kind, load.name)
+    return nm.load_name(key, lang, {key: load.title} if load.title else None)
 
 
 def _input_of_table(b: _Builder, tab, t: dict, lang: str) -> None:
@@ -663,10 +666,6 @@ def _input_of_table(b: _Builder, tab, t: dict, lang: str) -> None:
     (docs/tabulated.md; the kinematic rows are the table of §2)."""
     def u(key):
         return nm.unit_of(key, lang)
-
-    def called(kind, load) -> str:     # its title if the case gives one, else "kind name"
-        key = LoadKey(kind, load.name)
-        return nm.load_name(key, lang, {key: load.title} if load.title else None)
 
     if tab.links:
         b.add(Heading(3, f"1.2. {t['masses']}"))
@@ -691,14 +690,14 @@ def _input_of_table(b: _Builder, tab, t: dict, lang: str) -> None:
 
     rows = []
     for f in tab.forces:               # a column by its load's name in the document's language
-        F, a = (f"{nm.symbol(k, lang)} ({called('force', f)})"
-                for k in ("force_magnitude", "guide_angle"))
-        rows.append([called("force", f), point_name(f.point),
+        called = _load_called("force", f, lang)
+        F, a = (f"{nm.symbol(k, lang)} ({called})" for k in ("force_magnitude", "guide_angle"))
+        rows.append([called, point_name(f.point),
                      given(f.magnitude, nm.with_unit(F, u("force_magnitude"), lang)),
                      given(f.angle_deg, nm.with_unit(a, u("guide_angle"), lang))])
     for m in tab.moments:
-        M = f"M ({called('moment', m)})"
-        rows.append([called("moment", m), "—", given(m.values, nm.with_unit(M, u("M_sum"), lang)),
+        called = _load_called("moment", m, lang)
+        rows.append([called, "—", given(m.values, nm.with_unit(f"M ({called})", u("M_sum"), lang)),
                      "—"])
     b.add(Heading(3, f"1.3. {t['tab_loads']}"))
     size = nm.with_unit("F", u("force_magnitude"), lang)

@@ -144,19 +144,16 @@ def build_task2_document(r, title: str, source: str, lang: str = "en",
         kind = KINDS[lang].get(graph.kind, "") if graph is not None else ""
         rows.append([t[kind_key].format(kind=kind).strip(), sym,
                      t["found"] if found else g(nominal), "" if found else U("N·m")])
-    if r.delta_target is not None:
-        rows.append([t["given_delta"], "δ", g(r.delta_target), ""])
-    if r.rim_radius is not None:
-        rows.append([t["given_R"], "R", g(r.rim_radius), U("m")])
-    if r.radius_of_gyration is not None:
-        rows.append([t["given_k"], "k", g(r.radius_of_gyration), U("m")])
+    listed = {"flywheel.J", "speed.omega0"}      # the case's fields table 1 states as they are
+    for path, key, sym, value, u in (("flywheel.delta", "given_delta", "δ", r.delta_target, ""),
+                                     ("flywheel.rim_radius", "given_R", "R", r.rim_radius, "m"),
+                                     ("flywheel.radius_of_gyration", "given_k", "k",
+                                      r.radius_of_gyration, "m")):
+        if value is not None:
+            rows.append([t[key], sym, g(value), U(u) if u else ""])
+            listed.add(path)
     table(t["given_caption"], [t["quantity"], t["symbol"], t["value"], t["unit"]], rows)
     if case is not None:           # what table 1 does not list already, as the case gives it
-        listed = {"flywheel.J", "speed.omega0"} | {
-            path for path, v in (("flywheel.delta", r.delta_target),
-                                 ("flywheel.rim_radius", r.rim_radius),
-                                 ("flywheel.radius_of_gyration", r.radius_of_gyration))
-            if v is not None}
         given = _case_rows(case, lang, listed)
         if given:
             table(t["case_caption"], [t["quantity"], t["value"], t["unit"]], given)
