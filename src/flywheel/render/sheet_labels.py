@@ -257,12 +257,37 @@ def part_name(key: str, lang: str) -> str:
     return PART[lang].get(key, key) if lang == "ru" else key
 
 
-def _sheet_pattern(p: str) -> re.Pattern:
-    rx = re.escape(p).replace("\\#", r"(?P<i>\d+)").replace("\\*", r"(?P<x>[^.]+)")
-    return re.compile("^" + rx + "$")
+def _patterns(patterns) -> dict[str, int]:
+    """A table's dotted-path patterns → their rank (the first of two that match a path wins)."""
+    rank: dict[str, int] = {}
+    for k, p in enumerate(patterns):
+        rank.setdefault(p, k)
+    return rank
 
 
-_SHEET_FIELD_RX = [(_sheet_pattern(p), en, ru) for p, en, ru in SHEET_FIELDS]
+def _matched(key: str, rank: dict[str, int]) -> tuple[int, str, str, int] | None:
+    """The first pattern of ``rank`` (:func:`_patterns`) that the dotted ``key`` matches, a
+    pattern's one wildcard standing for a whole segment — ``#`` an index (digits), ``*`` a name
+    — as (its rank, the name ``*`` stood for, the index ``#`` stood for, the length of the key
+    up to that index); None for none. A path is looked up, not matched against every pattern:
+    no regular expression to build (this module is imported with every record)."""
+    segs = key.split(".")
+    found = [(rank[key], "", "", 0)] if key in rank else []
+    for j, seg in enumerate(segs):
+        if not seg:
+            continue
+        head, tail = ".".join(segs[:j]), ".".join(segs[j + 1:])
+        for wild in ("*", "#") if seg.isdecimal() else ("*",):
+            p = f"{head}.{wild}" if head else wild
+            p = f"{p}.{tail}" if tail else p
+            if p in rank:
+                end = len(".".join(segs[:j + 1]))
+                found.append((rank[p], seg if wild == "*" else "", seg if wild == "#" else "",
+                              end))
+    return min(found) if found else None
+
+
+_SHEET_FIELD_RANK = _patterns(p for p, _, _ in SHEET_FIELDS)
 
 
 def field_label(path: str, lang: str = "en", names: dict[str, str] | None = None,
@@ -281,21 +306,21 @@ def field_label(path: str, lang: str = "en", names: dict[str, str] | None = None
     'момент инерции: редуктор (приведён к кривошипу)'
     """
     for key in (*(f"{k}:{path}" for k in kinds), path):
-        for rx, en, ru in _SHEET_FIELD_RX:
-            m = rx.match(key)
-            if m:
-                if en.startswith("@"):
-                    return name(en[1:], lang)
-                d = m.groupdict()
-                x = d.get("x") or ""
-                if x and key.endswith(f"first_group.{x}"):   # a part: its usual name
-                    x = part_name(x, lang)
-                elif x and key.startswith(("points.", "ground.")):   # a point: S₂
-                    x = point_name(x)
-                if not x and d.get("i") is not None:
-                    x = in_language((names or {}).get(
-                        path[:m.end("i") - len(key) + len(path)]) or str(int(d["i"]) + 1), lang)
-                return (ru if lang == "ru" else en).format(x=x)
+        m = _matched(key, _SHEET_FIELD_RANK)
+        if m is None:
+            continue
+        k, x, i, end = m
+        _, en, ru = SHEET_FIELDS[k]
+        if en.startswith("@"):
+            return name(en[1:], lang)
+        if x and key.endswith(f"first_group.{x}"):   # a part: its usual name
+            x = part_name(x, lang)
+        elif x and key.startswith(("points.", "ground.")):   # a point: S₂
+            x = point_name(x)
+        if not x and i:
+            x = in_language((names or {}).get(path[:end - len(key) + len(path)])
+                            or str(int(i) + 1), lang)
+        return (ru if lang == "ru" else en).format(x=x)
     return path
 
 
@@ -330,7 +355,8 @@ SHEET_VALUES: dict[str, dict[str, tuple[str, str]]] = {
     "tabulated.forces.#.interpolation": INTERPOLATIONS,
     "tabulated.moments.#.interpolation": INTERPOLATIONS,
 }
-_SHEET_VALUE_RX = [(_sheet_pattern(p), words) for p, words in SHEET_VALUES.items()]
+_SHEET_VALUE_RANK = _patterns(SHEET_VALUES)
+_SHEET_VALUE_WORDS = list(SHEET_VALUES.values())
 
 
 def field_value(path: str, value, lang: str = "en") -> str:
@@ -346,9 +372,10 @@ def field_value(path: str, value, lang: str = "en") -> str:
     if isinstance(value, (list, tuple)):
         items = [field_value(path, v, lang) for v in value]
         return (", " if any("-" in v for v in items) else "-").join(items)
-    for rx, said in _SHEET_VALUE_RX:
-        if rx.match(path):
-            return said[value][lang == "ru"] if value in said else value
+    m = _matched(path, _SHEET_VALUE_RANK)
+    if m is not None:
+        said = _SHEET_VALUE_WORDS[m[0]]
+        return said[value][lang == "ru"] if value in said else value
     return value
 
 
