@@ -944,3 +944,21 @@ def test_listov_is_written_on_the_first_sheet_only():
     assert {"Лист 1", "Листов 2"} <= first
     assert "Лист 2" in second and "Листов" in second and "Листов 2" not in second
     assert {"Лист", "Листов 1"} <= alone and "Лист 1" not in alone
+
+
+def test_a_force_polygon_of_one_link_is_named_in_the_singular():
+    """The crank's force polygon on sheet 2 read «План сил звеньев 1» (as a group's «звеньев
+    2, 3»): one link is «звена 1», "of link 1"; a group keeps the plural."""
+    from flywheel.cases.run import load_case
+    from flywheel.dynamics.pipeline import analyze
+    from flywheel.render.drawings import build_sheets
+    from flywheel.render.drawings.model import Text
+
+    c = load_case(ROOT / "cases" / "compressor.toml")
+    res = analyze(c, n_points=360)
+    for lang, one, group in (("ru", "План сил звена 1", "План сил звеньев 2, 3"),
+                             ("en", "Force polygon of link 1", "Force polygon of links 2, 3")):
+        texts = {it.text for s in build_sheets(res, c.document, lang=lang, size="A1")
+                 for it in s.items if isinstance(it, Text)}
+        assert one in texts and group in texts, sorted(t for t in texts if "сил" in t or "olygon" in t)
+        assert not any(t.endswith(("звеньев 1", "links 1")) for t in texts)

@@ -47,7 +47,8 @@ T = words("report", {
     "red": "3. Reduction of masses and forces",
     "red_caption": "Reduced inertia and moments at the standard positions",
     "red_note": ("J_II is the links' kinetic energy per ½ω²; the reduced moment of a force is "
-                 "F·v_q, of a weight m·g⃗·v_qS."),
+                 "F·v_q, of a link's weight m·(g_x·v_qSx + g_y·v_qSy), the components of the "
+                 "gravity vector by those of its centroid's velocity analogue."),
     "energy": "4. Works and kinetic energy",
     "energy_caption": "Works and kinetic energy at the standard positions",
     "sizing": "5. Flywheel", "sizing_caption": "The flywheel by both methods",
@@ -377,6 +378,7 @@ def build_document(results, lang: str = "en", plots: list[str] | None = None,
     b.add(Paragraph(t["red_note"]))
     b.add(Formula(_mt("J_II", lang) + r" = \sum (m_{i} v_{qSi}^{2} + J_{Si} \omega_{qi}^{2})"))
     b.add(Formula(r"M_{F} = F \cdot v_{q}"))
+    b.add(Formula(r"M_{G} = m (g_{x} v_{qSx} + g_{y} v_{qSy})"))
     mk = [k for k in cols if k.startswith("M ")]
     header = (pos + [h("phi_deg"), h("J_II"), h("dJ_II")]
               + [h(k, label=nm.member(k, lang, results.loads.titles, results.loads.labels)) for k in mk] + [h("M_sum")])

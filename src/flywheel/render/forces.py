@@ -30,8 +30,8 @@ T = words("forces", {
     "ok": " — M_y = {ref} at every φ, the equation of motion read backwards (the closure check)",
     "bad": " — NOT round-off: check the loads",
     "mean": "cycle mean of M_y: {m} N·m ({ref} = {d} N·m)",
-    "groups": ("M_y of the Assur groups, without the first group's inertia: from {lo} to {hi} "
-               "N·m over the cycle; M_y = M_y,gr + J_I·ε"),
+    "groups": ("balancing moment of the Assur groups M_y,gr (without the first group's inertia): "
+               "from {lo} to {hi} N·m over the cycle; M_y = M_y,gr + J_I·ε"),
     "moments": "Balancing moment M_y at the report angles [N·m]",
     "kin": "kinetostatics", "zhuk": "Zhukovsky's lever", "power": "power balance",
     "grp": "Assur groups",

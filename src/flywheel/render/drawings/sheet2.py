@@ -27,6 +27,7 @@ T = words("drawings2", {
     "group": "Group of links {l} ({k}) with its forces",
     "crank": "Initial mechanism (link {l}) with its forces",
     "polygon": "Force polygon of links {l}",
+    "polygon_link": "Force polygon of link {l}",
     "lever": "Zhukovsky's lever",
     "balancing": "M_y = {m} N·m",
     "reactions": "Reactions in the kinematic pairs",
@@ -194,7 +195,8 @@ def _polygon_view(poly, lang: str, longest_mm: float) -> View:
         v.label(placer, anchors, force_label(ch.label, lang), 3.5, places, prefer)
     x0, _, _, y1 = v.box()
     v.rich(x0, y1 + 3.0, mu_text("F", mu, _per_mm("mu_F", lang), lang), 3.5)
-    v.text(x0, y1 + 9.0, t["polygon"].format(l=", ".join(poly.links)), 5.0)
+    v.text(x0, y1 + 9.0, t["polygon" if len(poly.links) > 1 else "polygon_link"].format(
+        l=", ".join(poly.links)), 5.0)
     return v
 
 
