@@ -64,6 +64,27 @@ def test_quiet_prints_nothing_but_errors(tmp_path):
     assert res.returncode == 2 and res.stderr.startswith("error: ") and res.stdout == ""
 
 
+def test_quiet_is_taken_after_the_command_too(tmp_path):
+    """`flywheel run case.toml -q`, as one writes it, had been refused («no such option: -q»):
+    every command takes -q/--quiet after its name, a --json on either side of it still
+    printed."""
+    args = [CASES / "compressor.toml", "--no-plots", "--points", "360", "--out", tmp_path / "o"]
+    res = console_script("run", *args, "-q")
+    assert res.returncode == 0 and res.stdout == "" and res.stderr == ""
+    assert (tmp_path / "o" / "summary.json").is_file()
+    for flags in (("--json", "-q"), ("--quiet", "--json")):
+        res = console_script("run", *args, *flags)
+        assert res.returncode == 0 and res.stdout.lstrip().startswith("{") and res.stderr == ""
+    for command in (["check", CASES / "compressor.toml"], ["task2", "--profile", "triangle"],
+                    ["schema"]):
+        res = console_script(*command, "-q")
+        assert res.returncode == 0 and res.stdout == "" and res.stderr == "", command
+    res = console_script("check", tmp_path / "missing.toml", "--quiet")
+    assert res.returncode == 2 and res.stderr.startswith("error: ") and res.stdout == ""
+    res = console_script("run", "--help")
+    assert "--quiet" in res.stdout and "-q" in res.stdout
+
+
 BUG = """
 import flywheel.cases.run as r
 def broken(path):

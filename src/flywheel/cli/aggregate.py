@@ -11,7 +11,7 @@ from typing import Annotated, Optional
 import typer
 
 from flywheel.cli.guard import report_formats
-from flywheel.cli.options import Frame, Group, Json, Lang, Reports, Student, Teacher, title_page
+from flywheel.cli.options import Frame, Group, Json, Lang, Quiet, Reports, Student, Teacher, title_page
 from flywheel.io.text import in_language
 
 
@@ -38,7 +38,7 @@ AggregateCase = Annotated[Path, typer.Argument(
 
 
 def aggregate_command(case: AggregateCase, json: Json = False, plot: Plot = None,
-                      t_end: TEnd = None, lang: Lang = "en", modes: Modes = False,
+                      t_end: TEnd = None, lang: Lang = "en", quiet: Quiet = False, modes: Modes = False,
                       out: AggregateOut = None, report: Reports = None,
                       frame: Frame = "none", student: Student = None, group: Group = None,
                       teacher: Teacher = None) -> None:

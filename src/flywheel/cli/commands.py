@@ -17,7 +17,7 @@ app = typer.Typer(
 )
 
 
-from flywheel.cli.options import be_quiet, state  # noqa: E402
+from flywheel.cli.options import QUIET_HELP, be_quiet, state  # noqa: E402
 
 
 def _version(value: bool) -> None:
@@ -34,8 +34,7 @@ def _root(
                                  help="Print the version and exit."),
     debug: bool = typer.Option(False, "--debug", help="On an internal error (a bug), print "
                                "the Python traceback too."),
-    quiet: bool = typer.Option(False, "--quiet", "-q", help="Print nothing but errors (files "
-                               "are written as usual; --json still prints its JSON)."),
+    quiet: bool = typer.Option(False, "--quiet", "-q", help=QUIET_HELP),
 ) -> None:
     """Dynamic analysis of machines: kinematics, reduction, flywheel sizing, true motion."""
     state.lang, state.quiet, state.debug, state.stdout = state.argv_lang, False, debug, None

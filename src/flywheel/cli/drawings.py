@@ -7,7 +7,7 @@ from typing import Annotated, Optional
 
 import typer
 
-from flywheel.cli.options import CaseFile, Lang
+from flywheel.cli.options import CaseFile, Lang, Quiet
 
 
 Out = Annotated[Optional[Path], typer.Option(
@@ -18,7 +18,7 @@ SheetSize = Annotated[str, typer.Option(
     "--sheet-size", metavar="SIZE", help="Format of the sheets, landscape: A1, A2 or A3.")]
 
 
-def drawings_command(case: CaseFile, out: Out = None, at: At = None, lang: Lang = "en",
+def drawings_command(case: CaseFile, out: Out = None, at: At = None, lang: Lang = "en", quiet: Quiet = False,
                      sheet_size: SheetSize = "A1") -> None:
     """Write the project's drawing sheets (sheet 1 the law of motion, sheet 2 the force
     analysis) as PDF, SVG and DXF: `flywheel run CASE --drawings --no-plots`."""

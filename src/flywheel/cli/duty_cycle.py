@@ -11,7 +11,7 @@ from typing import Annotated
 import typer
 
 from flywheel.cli.guard import report_formats
-from flywheel.cli.options import (Frame, Group, Json, Lang, OutFolder, Reports, Student,
+from flywheel.cli.options import (Frame, Group, Json, Lang, OutFolder, Quiet, Reports, Student,
                                   Teacher, title_page)
 from flywheel.io.text import in_language
 
@@ -20,7 +20,7 @@ DutyCase = Annotated[Path, typer.Argument(
     metavar="CASE", help="Duty-cycle case file (TOML), see docs/duty-cycle.md.")]
 
 
-def duty_cycle_command(case: DutyCase, as_json: Json = False, lang: Lang = "en",
+def duty_cycle_command(case: DutyCase, as_json: Json = False, lang: Lang = "en", quiet: Quiet = False,
                        out: OutFolder = None, report: Reports = None,
                        frame: Frame = "none", student: Student = None, group: Group = None,
                        teacher: Teacher = None) -> None:

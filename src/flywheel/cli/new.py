@@ -15,7 +15,7 @@ from typing import Annotated, Optional
 
 import typer
 
-from flywheel.cli.options import Lang, state
+from flywheel.cli.options import Lang, Quiet, state
 
 
 Kind = Annotated[str, typer.Argument(
@@ -25,7 +25,7 @@ File = Annotated[Optional[Path], typer.Argument(
     metavar="FILE", help="The case file to write (default: KIND.toml here); never written over if it exists.")]
 
 
-def new_command(kind: Kind, file: File = None, lang: Lang = "en") -> None:
+def new_command(kind: Kind, file: File = None, lang: Lang = "en", quiet: Quiet = False) -> None:
     """Write a commented starter case of KIND that runs as written; its comments (in --lang)
     say which lines to change for your own variant."""
     from flywheel.cases.starter import KINDS, starter_text

@@ -101,6 +101,19 @@ def warn(text: str) -> None:
     _line("warning", text)
 
 
+QUIET_HELP = "Print nothing but errors (files are written as usual; --json still prints its JSON)."
+
+
+def _quiet(value: bool) -> bool:
+    if value and not state.quiet:
+        be_quiet()
+    return value
+
+
+#: the root's -q/--quiet, taken after a command's name too (`flywheel run c.toml -q`, as one
+#: writes it); eager, so that a --json before it still gets its stdout back
+Quiet = Annotated[bool, typer.Option("--quiet", "-q", callback=_quiet, is_eager=True,
+                                     help=QUIET_HELP)]
 Lang = Annotated[str, typer.Option(
     "--lang", callback=_lang, metavar="LANG",
     help="Language of what is printed and written (summary, plots, report, error line): "

@@ -13,7 +13,7 @@ from typing import Annotated, Optional
 import typer
 
 from flywheel.cli.guard import _guard, check_lang, choice, fail, frame_notice
-from flywheel.cli.options import (CaseFile, CsvStyle, Frame, Group, Json, Lang, Reports,
+from flywheel.cli.options import (CaseFile, CsvStyle, Frame, Group, Json, Lang, Quiet, Reports,
                                   Student, Teacher)
 from flywheel.errors import Notice
 
@@ -63,7 +63,7 @@ SchemaResults = Annotated[bool, typer.Option(
     "--results", help="The JSON Schema of a run's summary.json instead (docs/results.md).")]
 
 
-def schema_command(results: SchemaResults = False, lang: Lang = "en") -> None:
+def schema_command(results: SchemaResults = False, lang: Lang = "en", quiet: Quiet = False) -> None:
     """Print the JSON Schema of case files (for editors: completion and checking; --lang ru: the
     fields described in Russian), or with --results that of summary.json."""
     import json
@@ -81,7 +81,7 @@ def schema_command(results: SchemaResults = False, lang: Lang = "en") -> None:
     typer.echo(json.dumps(translated_schema(case_json_schema(), lang), indent=2, ensure_ascii=False))
 
 
-def check_command(case: CaseFile, lang: Lang = "en") -> None:
+def check_command(case: CaseFile, lang: Lang = "en", quiet: Quiet = False) -> None:
     """Validate a case file and print what it describes; exit 0 if valid, 2 if not."""
     from flywheel.cases.run import load_case
     from flywheel.dynamics.check import check_case
@@ -96,7 +96,7 @@ def check_command(case: CaseFile, lang: Lang = "en") -> None:
 
 def run_command(case: CaseFile, out: RunOut = None, points: Points = 3600, at: At = None,
                 plots: Plots = "all", no_plots: NoPlots = False, as_json: Json = False,
-                lang: Lang = "en", transients: Transients = False, animate: Animate = False,
+                lang: Lang = "en", quiet: Quiet = False, transients: Transients = False, animate: Animate = False,
                 motion: Motion = None, report: Reports = None, csv_style: CsvStyle = "plain",
                 figure_format: FigureFormat = "png", dpi: Dpi = 120, drawings: Drawings = False,
                 sheet_size: SheetSize = "A1", snapshot: Snapshot = None,

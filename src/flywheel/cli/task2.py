@@ -18,7 +18,7 @@ from typing import Annotated, List, Optional
 import typer
 
 from flywheel.cli.guard import report_formats
-from flywheel.cli.options import (Frame, Group, Json, Lang, OutFolder, Reports, Student,
+from flywheel.cli.options import (Frame, Group, Json, Lang, OutFolder, Quiet, Reports, Student,
                                   Teacher, title_page)
 
 PROFILES = ("triangle", "rectangle")
@@ -71,7 +71,7 @@ Plot = Annotated[Optional[Path], typer.Option(
 def task2_command(profile: Profile = None, md: Md = None, j: J = None, omega0: Omega0 = None,
                   start: From = None, end: To = None, mc: Mc = None, delta: Delta = None,
                   case: Task2Case = None, at: At = None, epsilon: Epsilon = False,
-                  plot: Plot = None, as_json: Json = False, lang: Lang = "en",
+                  plot: Plot = None, as_json: Json = False, lang: Lang = "en", quiet: Quiet = False,
                   out: OutFolder = None, report: Reports = None, frame: Frame = "none",
                   student: Student = None, group: Group = None, teacher: Teacher = None) -> None:
     """Task 2: ω_max, ω_min, ω_ср and δ of a machine with constant J under given M_D(φ), M_C(φ)."""

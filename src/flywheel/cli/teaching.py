@@ -13,7 +13,7 @@ from typing import Annotated, Optional
 
 import typer
 
-from flywheel.cli.options import CsvStyle, Json, Lang
+from flywheel.cli.options import CsvStyle, Json, Lang, Quiet
 
 Template = Annotated[Path, typer.Argument(
     metavar="TEMPLATE", help="Template: a run or task2 case file plus a \\[variants] table (see docs/teacher.md).")]
@@ -64,7 +64,7 @@ NoReveal = Annotated[bool, typer.Option(
 def variants_command(template: Template, count: Count, out: VariantsOut, seed: Seed = None,
                      points: Points = 1440, sheets: Sheets = False,
                      sheets_format: SheetsFormat = None, moodle: Moodle = None,
-                     lang: Lang = "en") -> None:
+                     lang: Lang = "en", quiet: Quiet = False) -> None:
     """Individual variants of a task from a template, with the answer key (answers.json,
     answers.csv), a blank answer sheet (students.csv) and, with --sheets, a printable task
     sheet per variant."""
@@ -131,7 +131,7 @@ def _check_variants(template: Path, count: int, out: Path, seed, points: int, sh
 def grade_command(key: Key, answers: Answers, tolerance: Tolerance = None, out: GradeOut = None,
                   gradebook: Gradebook = None, summary: ClassSummary = False,
                   carried_forward: CarriedForward = 0.0, feedback: Feedback = None,
-                  no_reveal: NoReveal = False, csv_style: CsvStyle = "plain", lang: Lang = "en",
+                  no_reveal: NoReveal = False, csv_style: CsvStyle = "plain", lang: Lang = "en", quiet: Quiet = False,
                   as_json: Json = False) -> None:
     """Grade students' answers against an answer key: per student each answer's error and
     pass/fail, the score, group statistics; broken files and rows are reported and skipped.
