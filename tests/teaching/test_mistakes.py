@@ -118,6 +118,11 @@ CHANGES = [
      lambda f, v, a, t: ("cycle_work_resistance", a["balancing_moment"] * 720)),
     ("radius_for_diameter", "engine", lambda f, v, a, t: ("flywheel_disk.D",
                                                          a["flywheel_disk.D"] / 2)),
+    # J_доп = J_PRI − J_10 − J_ред (seed 000 §4): J_I given for J_М, or J_10 + J_ред added
+    ("first_group_not_subtracted", "compressor",
+     lambda f, v, a, t: ("J_flywheel", a["J_required"])),
+    ("first_group_not_subtracted", "compressor", lambda f, v, a, t: (
+        "J_flywheel", a["J_required"] + sum(data_of(f, v)["machine"]["first_group"].values()))),
 ]
 
 

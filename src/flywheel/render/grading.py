@@ -53,6 +53,7 @@ MISTAKES = words("mistake", {
     "sign_lost": "a sign lost in the cycle balance",
     "degrees_for_radians": "degrees used for radians",
     "radius_for_diameter": "the radius given for the diameter",
+    "first_group_not_subtracted": "J_10 + J_red not subtracted from J_I",
     "g_10": "g = 10 m/s² for 9.81 m/s² (within the tolerance)",
 })
 

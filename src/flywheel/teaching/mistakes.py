@@ -115,6 +115,9 @@ CATALOGUE: tuple[Mistake, ...] = (
     Mistake("radius_for_diameter", "the flywheel's radius given for its diameter", {
         f"flywheel_{w}.{f}": (lambda g, J, w=w, f=f: (ch.shape(g, J, w, f) / 2,))
         for w, fs in (("disk", ("D",)), ("rim", ("D", "D_inner"))) for f in fs}),
+    Mistake("first_group_not_subtracted", "the first group's own J_10 + J_ред not subtracted "
+            "from J_I (J_М = J_I), or added to it (seed 000 §4: J_доп = J_PRI − J_10 − J_ред)",
+            {"J_flywheel": lambda g, J_I: (J_I, J_I + g.J_first) if g.J_first else ()}),
     Mistake("g_10", "g = 10 m/s² for 9.81: the weights do no work over a cycle (M unchanged) "
             "and their share of ΔT_I is small: a matter of the tolerance, not tried", {},
             tolerance_matter=True),
