@@ -368,7 +368,7 @@ def test_lang_ru_same_numbers_russian_labels(args):
     assert en.exit_code == 0 and ru.exit_code == 0, ru.output
     for heading in ("Участки: ½·J_пр·(ω² − ω₀²) = A(φ) = ∫(M_Д − M_С) dφ", "Результаты",
                     "величина", "значение", "рад/с", "ω_ср = (ω_max + ω_min)/2", "ΔT_нб",
-                    "J_пр (приведённый момент инерции)"):
+                    "приведённый момент инерции J_пр"):
         assert heading in ru.stdout, heading
     for english in ("Segments", "Results", "quantity", "rad/s", "rpm", "reduced inertia"):
         assert english not in ru.stdout, english

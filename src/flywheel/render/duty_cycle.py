@@ -15,7 +15,7 @@ from flywheel.render.numbers import fmt as _number
 
 L10N = words("duty_cycle", {
     "operation": "Operation", "motor": "Motor", "speeds": "Speeds of the flywheel shaft",
-    "flywheel": "Flywheel", "rim": "Rim of the flywheel ([flywheel.rim])", "timing": "Timing (the program converts time and angle at ω_m)",
+    "flywheel": "Flywheel", "rim": "Rim of the flywheel ([flywheel.rim])", "timing": "Time and angle of turn of each phase (one from the other at ω_m)",
     "checks": "Checks (identities; residuals)", "quantity": "quantity", "symbol": "symbol",
     "value": "value", "unit": "unit", "phase": "phase",
     "no_radius": "the radius is not given: J, ω and angles are unknown (speeds at the radius)",

@@ -214,8 +214,10 @@ TERMS: dict[str, Term] = {
                   "угловое ускорение звена приведения ε"),
     "omega_exact": _t("ω", r"$\omega$", "rad/s", "ω with the exact flywheel size",
                       "ω при точном моменте инерции маховика"),
-    "omega_max": _t("ω_max", r"$\omega_{max}$", "rad/s", "ω_max", "ω_max"),
-    "omega_min": _t("ω_min", r"$\omega_{min}$", "rad/s", "ω_min", "ω_min"),
+    "omega_max": _t("ω_max", r"$\omega_{max}$", "rad/s", "greatest angular velocity ω_max",
+                    "наибольшая угловая скорость ω_max"),
+    "omega_min": _t("ω_min", r"$\omega_{min}$", "rad/s", "least angular velocity ω_min",
+                    "наименьшая угловая скорость ω_min"),
     "phi_omega_max_deg": _t("φ", r"$\varphi$", "deg", "φ of ω_max", "φ при ω_max"),
     "phi_omega_min_deg": _t("φ", r"$\varphi$", "deg", "φ of ω_min", "φ при ω_min"),
     "t": _t("t", "$t$", "s", "time t(φ)", "время t(φ)"),
@@ -505,12 +507,16 @@ TERMS: dict[str, Term] = {
     # to rich in a table title keeps its square brackets escaped (\\[). Keys the table above
     # already had for another meaning carry the prefix t2_ (task 2's row labels).
     # -- quantities of task 2 ----------------------------------------------------------------
-    "t2_J": _ci("J", "kg·m²", "J (reduced inertia)", "J_пр (приведённый момент инерции)", "J_пр"),
-    "omega0": _ci("ω₀", "rad/s", "ω₀ (at φ = 0)", "ω₀ (при φ = 0)"),
-    "t2_omega_mean": _ci("ω_ср", "rad/s", "ω_ср = (ω_max + ω_min)/2", "ω_ср = (ω_max + ω_min)/2"),
-    "t2_delta": _ci("δ", "", "δ = (ω_max − ω_min)/ω_ср",
-                      "δ = (ω_max − ω_min)/ω_ср, коэффициент неравномерности"),
-    "t2_delta_T_max": _ci("ΔT_нб", "J", "ΔT_нб = A_max − A_min", "ΔT_нб = A_max − A_min"),
+    "t2_J": _ci("J", "kg·m²", "reduced moment of inertia J", "приведённый момент инерции J_пр",
+                "J_пр"),
+    "omega0": _ci("ω₀", "rad/s", "initial angular velocity ω₀ (at φ = 0)",
+                  "начальная угловая скорость ω₀ (при φ = 0)"),
+    "t2_omega_mean": _ci("ω_ср", "rad/s", "mean angular velocity ω_ср = (ω_max + ω_min)/2",
+                         "средняя угловая скорость ω_ср = (ω_max + ω_min)/2"),
+    "t2_delta": _ci("δ", "", "coefficient of speed fluctuation δ = (ω_max − ω_min)/ω_ср",
+                    "коэффициент неравномерности хода δ = (ω_max − ω_min)/ω_ср"),
+    "t2_delta_T_max": _ci("ΔT_нб", "J", "greatest change of kinetic energy ΔT_нб = A_max − A_min",
+                          "наибольшее изменение кинетической энергии ΔT_нб = A_max − A_min"),
     "t2_P": _ci("P", "W", "power = mean M_D · ω_ср", "мощность = среднее M_Д · ω_ср"),
     "t2_J_required": _ci("J", "kg·m²", "J for δ = {delta}", "J_пр для δ = {delta}", "J_пр"),
     "rim_mass": _ci("m", "kg", "rim mass at R = {R} m", "масса обода при R = {R} м"),
@@ -724,7 +730,7 @@ def name(key: str, lang: str = "en", **fields) -> str:
     >>> name("t2_balance", "ru", name="M_С", value="60", work="94.2478")
     'баланс работ за цикл ∮M_Д dφ = ∮M_С dφ даёт M_С = 60 Н·м (работа за цикл 94.2478 Дж)'
     >>> name("omega_max"), name("t2_J", "ru")
-    ('ω_max', 'J_пр (приведённый момент инерции)')
+    ('greatest angular velocity ω_max', 'приведённый момент инерции J_пр')
     """
     t, x = term(key)
     template = t.ru if lang == "ru" else t.en
@@ -809,7 +815,7 @@ def bare_name(key: str, lang: str = "en") -> str:
     of its own («площадь среза» beside «A»; "work of the driving forces").
 
     >>> bare_name("energy_per_area", "ru"), bare_name("omega_max")
-    ('удельная работа на единицу площади среза', 'ω_max')
+    ('удельная работа на единицу площади среза', 'greatest angular velocity')
     """
     nm = name(key, lang)
     sym = term(key)[0].sym(lang)
