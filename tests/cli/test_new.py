@@ -114,3 +114,19 @@ def test_a_starters_force_is_named_in_russian_in_its_record(tmp_path):
     assert res.returncode == 0, res.stderr
     md = (tmp_path / "o" / "report.md").read_text(encoding="utf-8")
     assert "сила резания" in md and "cutting" not in md and "starter case" not in md
+
+
+@pytest.mark.parametrize("lang", ["en", "ru"])
+@pytest.mark.parametrize("kind", list(KINDS))
+def test_a_starter_points_to_its_formats_page_in_its_language(kind, lang):
+    """Every docs/ page a starter names exists; a Russian starter of `run` names the Russian
+    page of the fields, docs/ru/case-format.md (it had sent a Russian student to the English
+    one)."""
+    from pathlib import Path
+
+    root = Path(__file__).resolve().parents[2]
+    text = starter_text(kind, lang)
+    pages = re.findall(r"docs/[\w/.-]+\.md", text)
+    assert pages and all((root / p).is_file() for p in pages), pages
+    if lang == "ru" and KINDS[kind][1] == "run":
+        assert "docs/ru/case-format.md" in pages and "docs/case-format.md" not in pages
