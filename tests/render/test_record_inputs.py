@@ -184,3 +184,26 @@ def test_the_english_input_tables_have_no_russian_letters():
         assert not [c for c in cells if re.search("[а-яА-ЯёЁ]", c)], caption
     assert "J_10 + J_red" in " ".join(r[0] for r in next(
         b for b in doc.blocks if isinstance(b, Table) and b.caption == en["machine"]).rows)
+
+
+def test_task2s_given_data_take_their_units_from_the_schema():
+    """task2's table of the data as the task states them prints each number's unit as the case
+    schema's description states it (cases/describe.unit_of_path, the task sheets' source too):
+    a mean speed «об/мин», the ± fluctuation «%», the diagram's scales «мм²», «°/мм»; no number
+    of it without a unit but the dimensionless ones."""
+    from pathlib import Path
+
+    from flywheel.cases.task2 import load_task2_case
+    from flywheel.render.numbers import typeset
+    from flywheel.render.report_task2 import _case_rows
+
+    cases = Path(__file__).resolve().parents[2] / "cases"
+    units = {}
+    for name in ("task2_khurmi_16_5", "task2_khurmi_16_4"):
+        c = load_task2_case(cases / f"{name}.toml")
+        for label, _, u in typeset("ru", _case_rows, c, "ru"):
+            units[label] = u
+    assert units["средняя частота вращения n_ср"] == "об/мин", units
+    assert any(u == "%" for u in units.values()), units
+    assert {"мм²", "°/мм"} <= set(units.values()), units
+    assert not [k for k, u in units.items() if not u and "δ" not in k], units

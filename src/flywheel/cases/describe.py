@@ -6,7 +6,9 @@ Russian, in the catalogue."""
 from __future__ import annotations
 
 import json
+import re
 from dataclasses import dataclass
+from functools import lru_cache
 
 
 def case_schema() -> dict:
@@ -155,3 +157,45 @@ def _kind_heading(heading: str, node: dict) -> str:
 def _shared(ref: str, headings: dict[str, str]) -> bool:
     """Whether another table goes by the same heading (the kinds of [[dyads]])."""
     return sum(h == headings[ref] for h in headings.values()) > 1
+
+
+# -- units from the schema -------------------------------------------------------------------------
+
+@lru_cache(maxsize=2)
+def field_units(kind: str) -> dict[str, str]:
+    """Field name → unit as its description states it ("[kg·m²]"; a name ending in _deg: deg),
+    over every model of a ``kind`` ("run", "task2") case's schema; a name whose models disagree
+    is left out (the unit is then not printed). The one source of a case field's unit: the task
+    sheets (teaching/sheets.py) and task2's record (render/report_task2.py) print it."""
+    if kind == "run":
+        schema = case_schema()
+    else:
+        from flywheel.cases.task2 import Task2Case
+
+        schema = Task2Case.model_json_schema()
+    found: dict[str, set[str]] = {}
+    for model in [schema, *schema.get("$defs", {}).values()]:
+        for name, prop in model.get("properties", {}).items():
+            m = re.search(r"\[([^\]]+)\]", prop.get("description", ""))
+            unit = m.group(1) if m else ("deg" if name.endswith("_deg") else "")
+            if unit in ("-", "1"):
+                unit = ""
+            found.setdefault(name, set()).add(unit)
+    return {k: next(iter(v)) for k, v in found.items() if len(v) == 1}
+
+
+def unit_of_path(kind: str, path: str) -> str:
+    """The unit of a field of the case document: its own name's, else the nearest table's
+    that states one (``machine.first_group.crankshaft`` → kg·m² of first_group).
+
+    >>> unit_of_path("run", "machine.first_group.crankshaft"), unit_of_path("task2", "speed.mean_rpm")
+    ('kg·m²', 'rev/min')
+    """
+    units = field_units(kind)
+    parts = [p for p in path.split(".") if not p.isdigit()]
+    for name in reversed(parts):
+        if units.get(name):
+            return units[name]
+        if name in units:           # known and dimensionless
+            return ""
+    return ""

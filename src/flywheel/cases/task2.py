@@ -179,7 +179,7 @@ class Flywheel(StrictModel):
         None, description="k [m]: with mass, J = m·k²; without it, the mass m = J/k² is reported")
     delta: float | None = Field(None, description="asked δ = (ω_max − ω_min)/ω_ср")
     fluctuation_percent: float | None = Field(
-        None, description="asked '±x % of the mean speed': δ = 2x/100")
+        None, description="asked '±x % of the mean speed': δ = 2x/100 [%]")
     rim_radius: float | None = Field(None, description="mean radius of a rim: m = J/R² [m]")
     material: Material = Field("steel", description="for [flywheel.rim]: sets density (7800 / "
                                "7200 kg/m³) and allowable rim stress (20 / 7 MPa) unless given")

@@ -55,15 +55,6 @@ T = words("report_task2", {
     "case_caption": "The data as the task states them",
 })
 
-#: the units of a task-2 case file's numbers (cases/task2.py: speed, flywheel, diagram, power),
-#: by the field's name
-CASE_UNITS = {"omega0": "rad/s", "mean": "rad/s", "max": "rad/s", "min": "rad/s",
-              "omega0_rpm": "rpm", "mean_rpm": "rpm", "max_rpm": "rpm", "min_rpm": "rpm",
-              "J": "kg·m²", "mass": "kg", "radius_of_gyration": "m", "rim_radius": "m",
-              "fluctuation_percent": "%", "density": "kg/m³", "allowable_stress": "Pa",
-              "areas": "mm²", "moment_scale": "N·m/mm", "angle_scale_deg": "°/mm",
-              "energies": "J", "crossings_deg": "deg", "delta_E": "J", "work_per_cycle": "J",
-              "power": "W"}
 #: the sections of a task-2 case file whose numbers the record lists as given
 CASE_SECTIONS = ("speed", "flywheel", "diagram", "power")
 
@@ -85,6 +76,7 @@ def _case_rows(case, lang: str, listed: set = frozenset()) -> list[list[str]]:
     """The numbers a task-2 case file gives in :data:`CASE_SECTIONS` but those at the paths
     ``listed``, each by its label as a task sheet words it (render/sheet_labels.py) with the
     digits it was given; a list's numbers set apart as the language sets them («295; −685»)."""
+    from flywheel.cases.describe import unit_of_path
     from flywheel.render.numbers import separator
     from flywheel.render.sheet_labels import field_label
 
@@ -100,10 +92,9 @@ def _case_rows(case, lang: str, listed: set = frozenset()) -> list[list[str]]:
             if path in listed:
                 return
             values = node if isinstance(node, list) else [node]
-            key = path.rsplit(".", 1)[-1]
             rows.append([field_label(path, lang, kinds=("task2",)),
                          separator(lang).join(_number(float(x), 6, given=True) for x in values),
-                         unit(CASE_UNITS[key], lang) if key in CASE_UNITS else ""])
+                         unit(unit_of_path("task2", path), lang)])
 
     for section in CASE_SECTIONS:
         if section in data:

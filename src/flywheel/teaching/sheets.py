@@ -16,8 +16,9 @@ import math
 import re
 import tomllib
 from dataclasses import dataclass, field
-from functools import lru_cache
 from typing import Any
+
+from flywheel.cases.describe import unit_of_path
 
 #: top-level tables of a case that are not data of the task (how to report, the start-up motor)
 NOT_DATA = ("title", "source", "output", "motor", "force_analysis")
@@ -89,44 +90,6 @@ class Sheet:
     default_tolerance: float = 0.01   # the template's: a table column's without its own
     at_deg: tuple = ()           # the report angles [deg] an ``at.N.…`` answer is asked at
     loads: tuple = ({}, {})      # the loads' titles and labels an ``at.N.…`` answer names
-
-
-# -- units from the schema -------------------------------------------------------------------------
-
-@lru_cache(maxsize=2)
-def _units(kind: str) -> dict[str, str]:
-    """Field name → unit as its description states it ("[kg·m²]"), over every model of the
-    kind's schema; a name whose models disagree is left out (the unit is then not printed)."""
-    if kind == "run":
-        from flywheel.cases.run import case_json_schema
-
-        schema = case_json_schema()
-    else:
-        from flywheel.cases.task2 import Task2Case
-
-        schema = Task2Case.model_json_schema()
-    found: dict[str, set[str]] = {}
-    for model in [schema, *schema.get("$defs", {}).values()]:
-        for name, prop in model.get("properties", {}).items():
-            m = re.search(r"\[([^\]]+)\]", prop.get("description", ""))
-            unit = m.group(1) if m else ("deg" if name.endswith("_deg") else "")
-            if unit in ("-", "1"):
-                unit = ""
-            found.setdefault(name, set()).add(unit)
-    return {k: next(iter(v)) for k, v in found.items() if len(v) == 1}
-
-
-def unit_of_path(kind: str, path: str) -> str:
-    """The unit of a field of the case document: its own name's, else the nearest table's
-    that states one (``machine.first_group.crankshaft`` → kg·m² of first_group)."""
-    units = _units(kind)
-    parts = [p for p in path.split(".") if not p.isdigit()]
-    for name in reversed(parts):
-        if units.get(name):
-            return units[name]
-        if name in units:           # known and dimensionless
-            return ""
-    return ""
 
 
 # -- the data rows ---------------------------------------------------------------------------------
