@@ -188,6 +188,31 @@ def test_unreadable_files(tmp_path, content, expected):
     assert "\n" not in str(exc.value)
 
 
+@pytest.mark.parametrize("encoding, said", [("cp1251", "Windows-1251"), ("cp866", "DOS (cp866)"),
+                                             ("utf-16", "UTF-16"), ("utf-32", "UTF-32")])
+def test_a_case_saved_in_another_encoding_is_told_so(tmp_path, encoding, said):
+    """A Russian starter case saved by a Windows or DOS editor in its own encoding: the line
+    names that encoding and says to save the file as UTF-8 (it had said «not UTF-8 text
+    (invalid continuation byte at byte 2)», Python's English words in a Russian line too)."""
+    from flywheel.cases.starter import starter_text
+
+    path = tmp_path / "case.toml"
+    path.write_bytes(starter_text("slider-crank", "ru").encode(encoding, errors="replace"))
+    with pytest.raises(CaseFileError) as exc:
+        load_case(path)
+    assert str(exc.value) == (f"{path}: not UTF-8 text but {said} (allowed: UTF-8 only; save "
+                              "the file again as UTF-8)")
+
+
+def test_binary_data_is_not_given_an_encoding(tmp_path):
+    path = tmp_path / "case.toml"
+    path.write_bytes(bytes.fromhex("89504e470d0a1a0a0000000d4948445200000010"))
+    with pytest.raises(CaseFileError) as exc:
+        load_case(path)
+    assert str(exc.value) == (f"{path}: not UTF-8 text (byte 0 is not part of a UTF-8 character; "
+                              "allowed: a text file saved as UTF-8)")
+
+
 def test_a_folder_is_not_a_case(tmp_path):
     with pytest.raises(CaseFileError, match="is a folder"):
         load_case(tmp_path)

@@ -22,9 +22,7 @@ def read_toml(path, what: str = "a TOML case file") -> dict:
             "is_a_folder", "{path}: is a folder, expected {what}", path=str(path), what=what
         )) from None
     except UnicodeDecodeError as exc:
-        raise CaseFileError(Notice.of(
-            "not_utf8", "{path}: not UTF-8 text ({reason} at byte {byte})", path=str(path),
-            reason=exc.reason, byte=exc.start)) from None
+        raise CaseFileError(not_utf8(path, exc)) from None
     except OSError as exc:
         raise CaseFileError(Notice.of(
             "run_cannot_read", "{path}: cannot be read ({reason})", path=str(path),
@@ -41,6 +39,43 @@ def read_toml(path, what: str = "a TOML case file") -> dict:
         raise too_long_number(path, str(exc)) from None
     check_document(doc, path)
     return doc
+
+
+#: the encodings a text file that is not UTF-8 is told to be in (a Windows or DOS editor's
+#: Russian text, a Unicode file with its byte-order mark): charset-normalizer's codec → the name
+#: said; each a TOML file must be saved again as UTF-8 to be read (TOML 1.0: "A TOML file must be
+#: a valid UTF-8 encoded Unicode document")
+OTHER_ENCODINGS = {"utf_16": "UTF-16", "utf_32": "UTF-32", "cp1251": "Windows-1251",
+                   "cp866": "DOS (cp866)", "koi8_r": "KOI8-R"}
+#: a file's first bytes from which its encoding is guessed
+GUESS_BYTES = 1 << 16
+
+
+def not_utf8(path, exc: UnicodeDecodeError) -> Notice:
+    """The notice of a text file that is not UTF-8: the encoding it is in where a Unicode
+    byte-order mark or charset-normalizer's guess (on its first GUESS_BYTES, decoding as TOML
+    text: an "=" on a line) tells one of OTHER_ENCODINGS, else the first byte that is not
+    part of a UTF-8 character; with what to do, save it as UTF-8."""
+    data = exc.object[:GUESS_BYTES]
+    name = None
+    if data.startswith((b"\xff\xfe\x00\x00", b"\x00\x00\xfe\xff")):
+        name = "UTF-32"
+    elif data.startswith((b"\xff\xfe", b"\xfe\xff")):
+        name = "UTF-16"
+    elif b"\x00" not in data:
+        from charset_normalizer import from_bytes
+
+        best = from_bytes(data, cp_isolation=[c for c in OTHER_ENCODINGS if c.startswith(
+            ("cp", "koi"))]).best()
+        if best is not None and "=" in str(best):
+            name = OTHER_ENCODINGS.get(best.encoding)
+    if name is not None:
+        return Notice.of("not_utf8_encoding", "{path}: not UTF-8 text but {encoding} (allowed: "
+                         "UTF-8 only; save the file again as UTF-8)",
+                         path=str(path), encoding=name)
+    return Notice.of("not_utf8", "{path}: not UTF-8 text (byte {byte} is not part of a UTF-8 "
+                     "character; allowed: a text file saved as UTF-8)", path=str(path),
+                     byte=exc.start)
 
 
 #: the deepest nesting of tables and arrays a case file may have (the deepest bundled case: 4)

@@ -261,9 +261,9 @@ def load_key(path) -> Key:
             "key_is_a_folder", "{path}: is a folder, expected the answers.json of flywheel "
             "variants", path=str(path))) from None
     except UnicodeDecodeError as exc:
-        raise CaseFileError(Notice.of(
-            "not_utf8", "{path}: not UTF-8 text ({reason} at byte {byte})", path=str(path),
-            reason=exc.reason, byte=exc.start)) from None
+        from flywheel.io.toml import not_utf8
+
+        raise CaseFileError(not_utf8(path, exc)) from None
     except OSError as exc:
         raise CaseFileError(Notice.of(
             "grade_key_unreadable", "{path}: cannot be read ({reason})", path=str(path),
