@@ -70,7 +70,7 @@ def test_formula_notation_converts():
     assert mathfmt.plain(src) == "J_I = ΔT_нб/(δ·ω_ср²)"
     ml = mathfmt.mathml(src)
     assert "<mfrac>" in ml and "<mi>нб</mi>" in ml and "http" not in ml
-    assert mathfmt.typst(src) == 'J_(I) = frac(Δ T_("нб"), δ · ω_("ср")^(2))'
+    assert mathfmt.typst(src) == 'J_("I") = frac(Δ T_("нб"), δ · ω_("ср")^(2))'
     with pytest.raises(ValueError):
         mathfmt.parse(r"\nosuchthing x")
 

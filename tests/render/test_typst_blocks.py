@@ -28,3 +28,20 @@ def test_paragraphs_lists_and_formulas_are_the_same_lines_in_both_layouts():
     for group in lines:
         text = "\n".join(group)
         assert text in plain and text in gost, text
+
+
+def test_the_first_groups_index_is_upright_as_the_seconds():
+    """J_I and ΔT_I (the first group) were set with an italic I beside J_II's upright II in the
+    PDF and the DOCX: a Roman numeral index is upright (ГОСТ 2.105); a letter index i stays a
+    variable, italic."""
+    from flywheel.render import mathfmt
+
+    assert mathfmt.typst(r"J_{I} = \frac{\Delta T}{\delta}").startswith('J_("I") = ')
+    assert mathfmt.typst(r"\Delta T_I") == 'Δ T_("I")'
+    assert mathfmt.typst(r"J_{II}") == 'J_("II")'
+    assert mathfmt.typst(r"m_{i} v_{i}^{2}") == "m_(i) v_(i)^(2)"
+    upright = '<m:sub><m:r><m:rPr><m:sty m:val="p"/></m:rPr><m:t xml:space="preserve">I</m:t>'
+    assert upright in mathfmt.omml(r"J_{I}")
+    assert '<m:sub><m:r><m:t xml:space="preserve">i</m:t>' in mathfmt.omml(r"J_{i}")
+    assert '<mrow><mi mathvariant="normal">I</mi></mrow></msub>' in mathfmt.mathml(r"J_{I}")
+    assert "<mrow><mi>i</mi></mrow></msub>" in mathfmt.mathml(r"J_{i}")

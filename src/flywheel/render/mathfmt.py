@@ -187,7 +187,10 @@ def _mml(n: Node) -> str:
     tag = {"row": "mrow", "sub": "msub", "sup": "msup", "subsup": "msubsup", "frac": "mfrac",
            "sqrt": "msqrt"}[k]
     if k in ("sub", "sup", "subsup", "frac"):
-        inner = "".join(f"<mrow>{_mml(c)}</mrow>" if c.kind != "row" else _mml(c) for c in n.kids)
+        parts = [f"<mrow>{_mml(c)}</mrow>" if c.kind != "row" else _mml(c) for c in n.kids]
+        if k in ("sub", "subsup") and _roman_one(n.kids[1]):
+            parts[1] = '<mrow><mi mathvariant="normal">I</mi></mrow>'
+        inner = "".join(parts)
     return f"<{tag}>{inner}</{tag}>"
 
 
@@ -198,6 +201,15 @@ def mathml(src: str, display: bool = True) -> str:
 
 
 # -- typst ----------------------------------------------------------------------------------------
+def _roman_one(n: Node) -> bool:
+    """A subscript that is the Roman numeral I (J_I, ΔT_I: the first group of links), set
+    upright as II, III are (ISO 80000-2, ГОСТ 2.105: an index that is not a variable is
+    upright); a lone letter is otherwise a variable, italic."""
+    while n.kind == "row" and len(n.kids) == 1:
+        n = n.kids[0]
+    return n.kind == "i" and n.text == "I"
+
+
 def _ty(n: Node) -> str:
     k = n.kind
     if k == "i":
@@ -212,6 +224,8 @@ def _ty(n: Node) -> str:
     if k == "row":
         return " ".join(_ty(c) for c in n.kids)
     a = [_ty(c) for c in n.kids]
+    if k in ("sub", "subsup") and _roman_one(n.kids[1]):
+        a[1] = '"I"'                      # upright as the longer group numbers, "II"
     if k == "sub":
         return f"{a[0]}_({a[1]})"
     if k == "sup":
@@ -287,6 +301,8 @@ def _om(n: Node) -> str:
     if k == "row":
         return "".join(_om(c) for c in n.kids)
     a = [_om(c) for c in n.kids]
+    if k in ("sub", "subsup") and _roman_one(n.kids[1]):
+        a[1] = _om_run("I", plain=True)
     if k == "sub":
         return f"<m:sSub><m:e>{a[0]}</m:e><m:sub>{a[1]}</m:sub></m:sSub>"
     if k == "sup":
