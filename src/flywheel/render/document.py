@@ -99,9 +99,9 @@ T = words("report", {
     },
     "extremes": ("- {dT} max = {vmax} {uJ} at {amax}°, min = {vmin} {uJ} at {amin}° (global "
                  "extremes); {span} = {v} {uJ}"),
-    "merzalov": "- Merzalov: {J} = {span}/(δ·{w}²) = {v} {uI}, δ achieved {d}",
+    "merzalov": "- Merzalov: {J} = {span}/(δ·{w}²) = {v} {uI}, δ achieved = {d}",
     "given": "- the flywheel is given (not sized): {J} = {v} {uI} on the crank shaft gives δ = {d}",
-    "exact": "- exact (energy–mass diagram): {J} = {v} {uI}, δ achieved {d}",
+    "exact": "- exact (energy–mass diagram): {J} = {v} {uI}, δ achieved = {d}",
     "flywheel": "- flywheel {JM} = {J} − ({J1}) = {v} {uI}",
     "shaft": "; on a shaft {i:g} times faster: {v} {uI}",
     "disk": "- disk ({mat}): {dims}, {speed} {v} {u}",
