@@ -207,3 +207,15 @@ def test_task2s_given_data_take_their_units_from_the_schema():
     assert any(u == "%" for u in units.values()), units
     assert {"мм²", "°/мм"} <= set(units.values()), units
     assert not [k for k, u in units.items() if not u and "δ" not in k], units
+
+
+def test_a_first_group_part_is_named_in_words_in_english_too():
+    """The shaper's English record listed «of which: crank_gear» (the case's key); a part the
+    catalogue knows is named in words in both languages, another by its key."""
+    from flywheel.render.sheet_labels import part_name
+
+    en = _rows(_document("shaper", "en")[1], T["en"]["machine"])
+    assert any("crank gear" in k for k in en) and not any("crank_gear" in k for k in en), en
+    ru = _rows(_document("shaper", "ru")[1], T["ru"]["machine"])
+    assert any("кривошипное колесо" in k for k in ru), ru
+    assert part_name("my_rotor", "en") == part_name("my_rotor", "ru") == "my_rotor"

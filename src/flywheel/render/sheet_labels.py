@@ -256,8 +256,9 @@ PART = words("part", {
 
 
 def part_name(key: str, lang: str) -> str:
-    """A first-group part's name in ``lang`` (:data:`PART`), else the case's own key."""
-    return PART[lang].get(key, key) if lang == "ru" else key
+    """A first-group part's name in ``lang`` (:data:`PART`: "crank_gear" → "crank gear",
+    «кривошипное колесо»), else the case's own key."""
+    return PART[lang].get(key, key)
 
 
 def _patterns(patterns) -> dict[str, int]:
