@@ -159,3 +159,31 @@ def test_a_task2_page_names_the_answers_as_its_task_sheet_does(tmp_path_factory,
     # the symbols' subscripts as the task sheet sets them, in <sub> (not «J_пр»)
     text = page.read_text(encoding="utf-8")
     assert "J<sub>пр</sub>" in text and "ΔT<sub>нб</sub>" in text and "J_пр" not in text
+
+
+def test_a_wrong_answer_no_mistake_explains_points_at_its_formula(compressor, sheet, tmp_path):
+    """Ivanov's ΔT_нб is 1.3 times the key's, which no classic mistake gives: the page had said
+    «—» in «в чём ошибка»; it names the formula to check, in the course's notation (seed 000
+    §4). An answer right, carried forward or with a named mistake keeps its own words."""
+    out = tmp_path / "fb"
+    res = runner.invoke(app, ["grade", str(compressor / "answers.json"), str(sheet),
+                              "--feedback", str(out), "--lang", "ru", "--no-reveal"])
+    assert res.exit_code == 0, res.output
+    rows = {r[0].split("\n")[0]: r for r in parse(next(out.glob("001_*.html")))}
+    dT = next(r for k, r in rows.items() if "delta_T_max" in "".join(r))
+    assert dT[2] == "НЕВЕРНО"
+    assert dT[3] == "проверьте: ΔTнб = max ΔTI − min ΔTI за весь цикл, ΔTI = A − (TII − TII(0))"
+    assert all(r[3] == "—" for r in rows.values() if r[2] != "НЕВЕРНО")
+    rows = parse(next(out.glob("002_*.html")))
+    assert next(r for r in rows if "J_required" in r[0])[3] == "вместо δ взято δ/2"
+
+
+def test_every_formula_of_the_feedback_is_a_chains_answer():
+    """The formulas name answers the chains compute (teaching/chain.py, chain_task2.py)."""
+    from flywheel.render.grading import FORMULAS_RUN, FORMULAS_TASK2
+    from flywheel.teaching import chain, chain_task2
+
+    assert set(FORMULAS_RUN["en"]) <= set(chain.STEPS)
+    assert set(FORMULAS_TASK2["en"]) <= set(chain_task2.STEPS["resistance"]) | set(
+        chain_task2.STEPS["driving"])
+    assert set(FORMULAS_RUN["ru"]) == set(FORMULAS_RUN["en"])

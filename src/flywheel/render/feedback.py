@@ -10,7 +10,8 @@ import html
 import re
 
 from flywheel.render.catalogue import words
-from flywheel.render.grading import MISTAKES, cells_off, key_spec, table_verdict, verdict_word
+from flywheel.render.grading import (FORMULAS_RUN, FORMULAS_TASK2, MISTAKES, cells_off, key_spec,
+                                    table_verdict, verdict_word)
 from flywheel.render.numbers import fmt, typography
 from flywheel.render.mathfmt import sub_html
 
@@ -24,6 +25,7 @@ T = words("feedback", {
     "note_carried": "«Consistent with your earlier answer»: wrong against the key, but right "
                     "when computed from your own earlier answers — the mistake is further up.",
     "hidden": "The expected values are not shown.",
+    "check": "check: {formula}",
 })
 
 
@@ -75,15 +77,18 @@ def page(s, lang: str = "en", reveal: bool = True, share: float = 0.0, kind: str
     the key's loads' titles and labels)."""
     t = T[lang]
     e = html.escape
+    formulas = (FORMULAS_TASK2 if kind == "task2" else FORMULAS_RUN)[lang]
     rows = []
     in_table = s.marking.cells
     for j, a in enumerate(s.answers):
         if in_table >> j & 1 and a.passed:
             continue                  # a table's right cell: counted in its table's line
+        why = MISTAKES[lang].get(a.diagnosis, a.diagnosis) if a.diagnosis else (
+            t["check"].format(formula=formulas[a.answer])
+            if a.verdict == "fail" and a.answer in formulas else t["none"])
         cells = [f"{sub_html(label(a.answer, lang, kind, at_deg, loads))}<br>"
                  f"<small>{e(a.answer)}</small>",
-                 _num(a.given, lang, given=True), e(verdict_word(a, lang)),
-                 sub_html(MISTAKES[lang].get(a.diagnosis, a.diagnosis or t["none"]))]
+                 _num(a.given, lang, given=True), e(verdict_word(a, lang)), sub_html(why)]
         if reveal:
             cells.append(_num(a.key, lang, spec=key_spec(a)))
         cells.append(_num(100 * a.tolerance, lang, given=True) + " %")

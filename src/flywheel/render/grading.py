@@ -58,6 +58,32 @@ MISTAKES = words("mistake", {
 })
 
 
+#: how an answer of a chain is computed, in the course's notation (seed 000 §4, the task-2
+#: seeds), for the feedback page to point a wrong answer that no classic mistake explains at
+#: the formula to check: a run case's answers
+FORMULAS_RUN = words("formula_run", {
+    "balancing_moment": "the cycle condition: A_D + A_C = 0 over the cycle, M = −A(Φ)/Φ",
+    "driving_moment": "the cycle condition: A_D + A_C = 0 over the cycle, M_D = −A_C/Φ",
+    "cycle_work_resistance": "the cycle condition: A_D + A_C = 0 over the cycle",
+    "delta_T_max": "ΔT_нб = max ΔT_I − min ΔT_I over the whole cycle, "
+                   "ΔT_I = A − (T_II − T_II(0))",
+    "J_required": "J_I = ΔT_нб/(δ·ω_m²)",
+    "J_flywheel": "J_M = J_I − (J_10 + J_red)",
+    "flywheel_J_on_its_shaft": "J_M reduced to the flywheel's shaft: J_M/i²",
+})
+#: the same of a task-2 case's answers
+FORMULAS_TASK2 = words("formula_task2", {
+    "M_C": "the cycle condition: ∮M_D dφ = ∮M_C dφ",
+    "M_D": "the cycle condition: ∮M_D dφ = ∮M_C dφ",
+    "delta_T_max": "ΔT_нб = A_max − A_min, A(φ) = ∫(M_D − M_C) dφ",
+    "omega_max": "ω_max = √(ω₀² + 2·A_max/J)",
+    "omega_min": "ω_min = √(ω₀² + 2·A_min/J)",
+    "delta": "δ = ΔT_нб/(J·ω_m²)",
+    "J_required": "J = ΔT_нб/(δ·ω_m²)",
+    "rim_mass": "m = J/R²",
+})
+
+
 def answer_names(answers, kind: str = "run", lang: str = "en") -> dict[str, str]:
     """How the tables and lists of `grade` and `variants` name the ``answers`` of a ``kind``
     key ("run", "task2"): in Russian by the symbols the task sheet prints («M_Д», «ΔT_нб»,
