@@ -48,6 +48,7 @@ def questions(path):
                     "value": float(answers[0].find("text").text),
                     "tolerance": float(answers[0].find("tolerance").text),
                     "unit": None if unit is None else unit.find("unit_name").text,
+                    "general": q.find("generalfeedback/text").text or "",
                     "multiplier": None if unit is None else float(unit.find("multiplier").text)})
     return out
 
@@ -155,3 +156,21 @@ def test_moodle_inside_the_variants_folder_is_refused(tmp_path):
                               str(tmp_path / "v" / "q.xml")])
     assert res.exit_code == 2 and "--moodle" in res.output and "Traceback" not in res.output
     assert not (tmp_path / "v").exists()
+
+
+def test_each_question_shows_its_formula_after_the_attempt(made, tmp_path):
+    """A question's general feedback (Moodle shows it once the attempt is over) is the course's
+    formula the answer is computed by, where the chain has one (seed 000 §4): J_М = J_I −
+    (J_10 + J_ред) for the flywheel's J; none for the disk's diameter. It had been empty."""
+    qs = {q["name"].split()[1]: q for q in questions(made / "quiz.xml") if q["name"].startswith("01")}
+    assert qs["J_flywheel"]["general"] == ("How it is computed: J<sub>M</sub> = J<sub>I</sub> − "
+                                           "(J<sub>10</sub> + J<sub>red</sub>)")
+    assert qs["J_required"]["general"].endswith("J<sub>I</sub> = ΔT<sub>нб</sub>/(δ·ω<sub>m</sub>²)")
+    assert qs["flywheel_disk.D"]["general"] == ""
+    res = runner.invoke(app, ["variants", "cases/variants_task2.toml", "--count", "1", "--seed",
+                              "1", "--out", str(tmp_path / "v"), "--moodle",
+                              str(tmp_path / "quiz.xml"), "--lang", "ru"])
+    assert res.exit_code == 0, res.output
+    qs = {q["name"].split()[1]: q for q in questions(tmp_path / "quiz.xml")}
+    assert qs["omega_max"]["general"] == ("Как считается: ω<sub>max</sub> = √(ω₀² + "
+                                          "2·A<sub>max</sub>/J<sub>пр</sub>)")

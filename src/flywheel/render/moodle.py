@@ -1,6 +1,7 @@
 """The variants as a Moodle XML question bank (``flywheel variants … --moodle quiz.xml``,
 issue 27, step 6): one category per variant, one numerical question per answer, with its
-unit and its tolerance. The structure is Moodle's documented "Moodle XML format"
+unit, its tolerance and, as the general feedback shown after the attempt, the course's formula
+it is computed by. The structure is Moodle's documented "Moodle XML format"
 (docs.moodle.org, Moodle XML format: ``<quiz>``, ``<question type="category">``,
 ``<question type="numerical">`` with ``name``, ``questiontext``, ``answer fraction="100"``
 holding ``text`` and ``tolerance``, ``units``); a numerical answer's tolerance is absolute,
@@ -23,6 +24,7 @@ T = words("moodle", {
     "category": "Variant {variant}",
     "question": "Variant {variant}. Determine {what}{symbol}{unit} (accepted within ±{pct} %). "
                 "The data are those of your variant's task sheet.",
+    "how": "How it is computed: {formula}",
 })
 
 
@@ -48,8 +50,11 @@ def _text(s: str) -> str:
 
 def quiz_xml(vs, lang: str = "en") -> str:
     """The question bank of a VariantSet as Moodle XML text."""
+    from flywheel.render.grading import FORMULAS_RUN, FORMULAS_TASK2
+
     t = vs.template
     w = T[lang]
+    formulas = (FORMULAS_TASK2 if t.kind == "task2" else FORMULAS_RUN)[lang]
     out = ['<?xml version="1.0" encoding="UTF-8"?>', "<quiz>"]
     top = f"$course$/top/flywheel/{t.name}"
     for v in vs.variants:
@@ -68,6 +73,9 @@ def quiz_xml(vs, lang: str = "en") -> str:
                 variant=html_escape(v.id), what=html_escape(what),
                 symbol=f" {sub_html(sym)}" if sym else "",
                 unit=f", {html_escape(unit)}" if unit else "", pct=pct))
+            # shown after the attempt: the formula of the course it is computed by, where the
+            # chain has one (render/grading.py)
+            general = (sub_html(w["how"].format(formula=formulas[a])) if a in formulas else "")
             # a table's cell: judged against its column's scale too (teaching/tables.py)
             scale = max(abs(value), floors.get(a, 0.0))
             absolute = rel * scale if scale else rel
@@ -75,7 +83,7 @@ def quiz_xml(vs, lang: str = "en") -> str:
                 '  <question type="numerical">',
                 f"    <name>{_text(f'{v.id} {a}')}</name>",
                 f'    <questiontext format="html">{_text(text)}</questiontext>',
-                '    <generalfeedback format="html"><text></text></generalfeedback>',
+                f'    <generalfeedback format="html">{_text(general)}</generalfeedback>',
                 "    <defaultgrade>1</defaultgrade>",
                 "    <penalty>0</penalty>",
                 "    <hidden>0</hidden>",
