@@ -76,6 +76,20 @@ def test_check_in_russian_names_the_groups_and_the_cylinders_as_the_outputs_do()
     assert [r[0] for r in rows(en.stdout) if r[0] in ("HP", "LP")] == ["HP", "LP"]
 
 
+def test_check_letters_a_points_digits_as_the_figures_do():
+    """`check` printed «S3», «A2», «B1» where the scheme, the record and the sheets letter
+    S₃, A₂, B₁ (mathfmt.point_name): in the mechanism's table, the links' centroids and the
+    dead centres' columns."""
+    res = invoke("check", CASES / "engine_inline4.toml", "--lang", "ru")
+    assert res.exit_code == 0, res.output
+    cells = {c for r in rows(res.stdout) for c in r}
+    assert {"ВВП B₁", "O → A₂", "A₁ → B₁", "S₂"} <= cells, sorted(cells)[:40]
+    assert not {c for c in cells if re.fullmatch(r"(?:[A-Z]\d+|.*[A-Z]\d+ → .*)", c)}
+    res = invoke("check", CASES / "shaper.toml")
+    header = next(line for line in res.stdout.splitlines() if "┃" in line and " P " in line)
+    assert "S₃" in header and "S3" not in header
+
+
 @pytest.mark.parametrize("name, expected", [
     ("fourbar.toml", "Crank-rocker four-bar"),
     ("slotted_link.toml", "Shaper: slotted-link mechanism"),

@@ -7,6 +7,7 @@ import math
 from flywheel.io.text import in_language
 from flywheel.render import nomenclature as nm
 from flywheel.render.catalogue import words
+from flywheel.render.mathfmt import point_name as P
 from flywheel.render.numbers import fmt as _number
 from flywheel.render.numbers import russian, separator
 from flywheel.units import PA_PER_MPA
@@ -127,35 +128,35 @@ def print_check(report, console=None, lang: str = "en") -> None:
     t = Table(title=w["mechanism"], show_lines=False)
     for col in ("group", "links", "points", "data"):
         t.add_column(w[col])
-    t.add_row(w["crank"], c.name, f"{c.pivot} → {c.tip}",
+    t.add_row(w["crank"], c.name, f"{P(c.pivot)} → {P(c.tip)}",
               f"l = {_n(c.length, '.6g', True)} {nm.unit('m', lang)}, "
               f"θ0 = {_n(math.degrees(c.start_angle))}°, "
               f"{w['cw'] if c.direction < 0 else w['ccw']}")
     for pin in c.pins:
-        t.add_row(w["crank_pin"], c.name, f"{c.pivot} → {pin.name}",
+        t.add_row(w["crank_pin"], c.name, f"{P(c.pivot)} → {P(pin.name)}",
                   w["pin_at"].format(l=_n(pin.length, ".6g", True), a=_n(math.degrees(pin.angle)),
-                                     tip=c.tip))
+                                     tip=P(c.tip)))
     for spec, d in zip(case.dyads, mech.dyads):
         if isinstance(spec, RRPSpec):
-            t.add_row(f"{nm.dyad_kind('RRP', lang)} {d.name}", ", ".join(d.links), f"{d.origin} → {d.joint}",
+            t.add_row(f"{nm.dyad_kind('RRP', lang)} {P(d.name)}", ", ".join(d.links), f"{P(d.origin)} → {P(d.joint)}",
                       w["rrp"].format(l=_n(d.rod_length, ".6g", True), th=_xy(d.guide.through),
                                       a=_n(math.degrees(d.guide.angle)),
                                       o=_n(d.guide.offset, given=True), b=spec.branch))
         elif isinstance(spec, RPRSpec):
-            t.add_row(f"{nm.dyad_kind('RPR', lang)} {d.name}", ", ".join(d.links),
-                      w["rpr_where"].format(o=d.origin, p=d.pivot),
+            t.add_row(f"{nm.dyad_kind('RPR', lang)} {P(d.name)}", ", ".join(d.links),
+                      w["rpr_where"].format(o=P(d.origin), p=P(d.pivot)),
                       w["rpr"].format(o=_n(d.offset, given=True), b=spec.branch))
         else:
-            t.add_row(f"{nm.dyad_kind('RRR', lang)} {d.name}", ", ".join(d.links),
-                      f"{d.point_a} → {d.joint} ← {d.point_b}",
+            t.add_row(f"{nm.dyad_kind('RRR', lang)} {P(d.name)}", ", ".join(d.links),
+                      f"{P(d.point_a)} → {P(d.joint)} ← {P(d.point_b)}",
                       w["rrr"].format(a=_n(d.length_a, ".6g", True), b=_n(d.length_b, ".6g", True),
                                       br=spec.branch))
     for p in mech.points:
-        how = (w["of"].format(f=_n(p.fraction, given=True), o=p.origin, t=p.toward)
+        how = (w["of"].format(f=_n(p.fraction, given=True), o=P(p.origin), t=P(p.toward))
                + (w["across"].format(a=_n(p.across, given=True)) if p.across else "")
-               if p.toward else w["from"].format(d=_n(p.distance, given=True), o=p.origin,
+               if p.toward else w["from"].format(d=_n(p.distance, given=True), o=P(p.origin),
                                                  a=_n(math.degrees(p.angle))))
-        t.add_row(w["point"], p.link, p.name, how)
+        t.add_row(w["point"], p.link, P(p.name), how)
     console.print(t)
 
     if case.links:
@@ -164,7 +165,7 @@ def print_check(report, console=None, lang: str = "en") -> None:
                                 nm.heading("J_S", lang), w["centroid"]))
         for name, lk in case.links.items():
             t.add_row(name, _n(lk.mass, given=True) if lk.mass else "—", _n(lk.J_S, given=True),
-                      lk.centroid or "—")
+                      P(lk.centroid) if lk.centroid else "—")
         console.print(t)
     if m.first_group:
         from flywheel.render.sheet_labels import part_name
@@ -199,7 +200,7 @@ def print_check(report, console=None, lang: str = "en") -> None:
             vq = nm.heading("v_q", lang, label=f"|{nm.symbol('v_q', lang)}|")
             aq = nm.heading("a_q", lang, label=f"|{nm.symbol('a_q', lang)}|")
             t = _table(w["pts_dc"].format(v=vq, a=aq),
-                       (nm.heading("phi_deg", lang), *report.point_analogues))
+                       (nm.heading("phi_deg", lang), *map(P, report.point_analogues)))
             for i, a in enumerate(angles):
                 t.add_row(_deg(a), *(
                     f"{_g(v[i])} / {_g(acc[i])}" for v, acc in report.point_analogues.values()))
