@@ -161,12 +161,14 @@ def test_moodle_inside_the_variants_folder_is_refused(tmp_path):
 def test_each_question_shows_its_formula_after_the_attempt(made, tmp_path):
     """A question's general feedback (Moodle shows it once the attempt is over) is the course's
     formula the answer is computed by, where the chain has one (seed 000 §4): J_М = J_I −
-    (J_10 + J_ред) for the flywheel's J; none for the disk's diameter. It had been empty."""
+    (J_10 + J_ред) for the flywheel's J, J = π·ρ·b·D⁴/32 for the disk's diameter. It had been
+    empty."""
     qs = {q["name"].split()[1]: q for q in questions(made / "quiz.xml") if q["name"].startswith("01")}
     assert qs["J_flywheel"]["general"] == ("How it is computed: J<sub>M</sub> = J<sub>I</sub> − "
                                            "(J<sub>10</sub> + J<sub>red</sub>)")
     assert qs["J_required"]["general"].endswith("J<sub>I</sub> = ΔT<sub>нб</sub>/(δ·ω<sub>m</sub>²)")
-    assert qs["flywheel_disk.D"]["general"] == ""
+    assert qs["flywheel_disk.D"]["general"] == ("How it is computed: disk: J = π·ρ·b·D⁴/32, "
+                                                "b = ψ·D, so D = ⁵√(32·J/(π·ρ·ψ))")
     res = runner.invoke(app, ["variants", "cases/variants_task2.toml", "--count", "1", "--seed",
                               "1", "--out", str(tmp_path / "v"), "--moodle",
                               str(tmp_path / "quiz.xml"), "--lang", "ru"])

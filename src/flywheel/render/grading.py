@@ -70,6 +70,15 @@ FORMULAS_RUN = words("formula_run", {
     "J_required": "J_I = ΔT_нб/(δ·ω_m²)",
     "J_flywheel": "J_M = J_I − (J_10 + J_red)",
     "flywheel_J_on_its_shaft": "J_M reduced to the flywheel's shaft: J_M/i²",
+    # a flywheel's dimensions (dynamics/sizing.py; the course's D = 0.366·J^(1/5) is this
+    # for steel and ψ = 0.2): J the flywheel's on its own shaft, ψ = b/D, c = D₁/D
+    "flywheel_disk.D": "disk: J = π·ρ·b·D⁴/32, b = ψ·D, so D = ⁵√(32·J/(π·ρ·ψ))",
+    "flywheel_disk.b": "b = ψ·D",
+    "flywheel_disk.mass": "m = ρ·π·D²·b/4 = 8·J/D²",
+    "flywheel_rim.D": "rim: its share of J = π·ρ·b·(D⁴ − D₁⁴)/32, b = ψ·D, D₁ = c·D",
+    "flywheel_rim.D_inner": "D₁ = c·D",
+    "flywheel_rim.b": "b = ψ·D",
+    "flywheel_rim.mass": "m = ρ·π·(D² − D₁²)·b/4",
 })
 #: the same of a task-2 case's answers
 FORMULAS_TASK2 = words("formula_task2", {
