@@ -293,3 +293,28 @@ def test_a_quantity_column_names_each_quantity_in_words(name):
     bare = [(t.caption, r[0]) for t in doc.tables if t.header and t.header[0] == "величина"
             for r in t.rows if not re.search(r"[а-яё]{3,}", r[0])]
     assert not bare, bare
+
+
+@pytest.mark.parametrize("lang, head", [("ru", "группы Ассура: M_угр = M_у − J_I·ε"),
+                                        ("en", "Assur groups: M_y,gr = M_y − J_I·ε")])
+def test_the_groups_column_of_the_moments_says_what_it_holds(lang, head):
+    """Table «Уравновешивающий момент M_у в расчётных положениях» set the groups' −441,2 N·m
+    beside M_у = 197,5 three ways under «группы Ассура» alone, which read as a fourth M_у that
+    disagreed. Its header states the identity, and the compressor's numbers at 120° hold it:
+    M_угр = M_у − J_I·ε with J_I by Merzalov and the true ε."""
+    from flywheel.cases.run import load_case
+    from flywheel.dynamics.pipeline import analyze
+    from flywheel.render.document import build_document
+    from flywheel.render.numbers import typography
+
+    case = load_case(CASES / "compressor.toml")
+    res = analyze(case, n_points=720)
+    with typography(lang):
+        doc = build_document(res, lang, [], case=case)
+    table = next(t for t in doc.tables if head in t.header)
+    row = table.rows[0]
+    num = lambda c: float(c.replace("\u2212", "-").replace(",", "."))     # noqa: E731
+    kin, groups = num(row[1]), num(row[table.header.index(head)])
+    a = res.at[0]
+    assert groups == pytest.approx(kin - res.scalars.J_required * a.epsilon, rel=2e-3)
+    assert abs(groups - kin) > 100                    # the two differ: the header must say why

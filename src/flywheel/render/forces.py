@@ -34,7 +34,7 @@ T = words("forces", {
                "from {lo} to {hi} N·m over the cycle; M_y = M_y,gr + J_I·ε"),
     "moments": "Balancing moment M_y at the report angles [N·m]",
     "kin": "kinetostatics", "zhuk": "Zhukovsky's lever", "power": "power balance",
-    "grp": "Assur groups",
+    "grp": "Assur groups: M_y,gr = M_y − J_I·ε",
     "joints": "Joint reactions at φ = {a}° (R_ij: the force of link i on link j)",
     "sc": "Slider-crank quantities at φ = {a}°",
     "joint": "joint", "point": "point", "by": "by", "on": "on", "angle": "angle",
