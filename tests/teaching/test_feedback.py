@@ -187,3 +187,26 @@ def test_every_formula_of_the_feedback_is_a_chains_answer():
     assert set(FORMULAS_TASK2["en"]) <= set(chain_task2.STEPS["resistance"]) | set(
         chain_task2.STEPS["driving"])
     assert set(FORMULAS_RUN["ru"]) == set(FORMULAS_RUN["en"])
+
+
+def test_a_wrong_answer_is_worked_from_the_students_own_earlier_answer(compressor, sheet,
+                                                                       tmp_path):
+    """With the key revealed, the formula to check goes with what the student's own earlier
+    answer gives by it (the chain, teaching/chain.py): Ivanov's M_Д is right, so his ΔT_нб
+    worked from it is the key's; without the key shown, the formula alone."""
+    out = tmp_path / "fb"
+    res = runner.invoke(app, ["grade", str(compressor / "answers.json"), str(sheet),
+                              "--feedback", str(out), "--lang", "ru"])
+    assert res.exit_code == 0, res.output
+    key = key_of(compressor)["variants"]["01"]
+    rows = parse(next(out.glob("001_*.html")))
+    dT = next(r for r in rows if "delta_T_max" in r[0])
+    m = re.fullmatch(r"проверьте: .*; из вашего MД = ([\d,\u202f]+) получается ([\d,\u202f]+)",
+                     dT[3])
+    assert m, dT[3]
+    assert ru_numbers(m.group(2)) == pytest.approx([key["delta_T_max"]], rel=5e-4)
+    assert m.group(2) == dT[4]                      # as the expected value is printed
+    hidden = tmp_path / "hidden"
+    runner.invoke(app, ["grade", str(compressor / "answers.json"), str(sheet),
+                        "--feedback", str(hidden), "--lang", "ru", "--no-reveal"])
+    assert "из вашего" not in next(hidden.glob("001_*.html")).read_text(encoding="utf-8")

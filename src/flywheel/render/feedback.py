@@ -14,6 +14,7 @@ from flywheel.render.grading import (FORMULAS_RUN, FORMULAS_TASK2, MISTAKES, cel
                                     table_verdict, verdict_word)
 from flywheel.render.numbers import fmt, typography
 from flywheel.render.mathfmt import sub_html
+from flywheel.render.sheet_labels import answer_words
 
 T = words("feedback", {
     "title": "Feedback: {student}, variant {variant}",
@@ -26,6 +27,7 @@ T = words("feedback", {
                     "when computed from your own earlier answers — the mistake is further up.",
     "hidden": "The expected values are not shown.",
     "check": "check: {formula}",
+    "yours": "; from your {symbol} = {given} it is {value}",
 })
 
 
@@ -45,8 +47,6 @@ def label(answer: str, lang: str, kind: str = "run", at_deg: tuple = (),
     """An answer as the task sheet of a ``kind`` case ("run", "task2") asks it
     (render/sheet_labels.py): «name symbol, unit»; an ``at.N.…`` one at its angle of
     ``at_deg``, the variant's report angles, a load by its title or label of ``loads``."""
-    from flywheel.render.sheet_labels import answer_words
-
     what, sym, u = answer_words(kind, answer, lang, at_deg, loads)   # a table's cell: its own
     return " ".join(x for x in (what, sym) if x) + (f", {u}" if u else "")
 
@@ -86,6 +86,14 @@ def page(s, lang: str = "en", reveal: bool = True, share: float = 0.0, kind: str
         why = MISTAKES[lang].get(a.diagnosis, a.diagnosis) if a.diagnosis else (
             t["check"].format(formula=formulas[a.answer])
             if a.verdict == "fail" and a.answer in formulas else t["none"])
+        own = s.from_own(j) if reveal and not a.diagnosis and a.verdict == "fail" \
+            and a.answer in formulas else None
+        if own is not None:           # worked from the student's own earlier answer
+            value, source = own
+            k = s.marking.names.index(source)
+            why += t["yours"].format(symbol=answer_words(kind, source, lang)[1] or source,
+                                     given=_num(s.given[k], lang, given=True),
+                                     value=_num(value, lang, spec=key_spec(a)))
         cells = [f"{sub_html(label(a.answer, lang, kind, at_deg, loads))}<br>"
                  f"<small>{e(a.answer)}</small>",
                  _num(a.given, lang, given=True), e(verdict_word(a, lang)), sub_html(why)]
