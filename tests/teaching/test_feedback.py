@@ -156,6 +156,9 @@ def test_a_task2_page_names_the_answers_as_its_task_sheet_does(tmp_path_factory,
     # the four digits of a result (ω_max and ω_min had both read «250»)
     w = next(r for r in parse(page) if "omega_max" in r[0])
     assert re.fullmatch(r"\d+,\d{3,}", w[4]), w
+    # a table's row names its answer in the nominative, as a table does: «наибольшая угловая
+    # скорость», not the sheet's «Определить наибольшую угловую скорость» (it had)
+    assert w[0].startswith("наибольшая угловая скорость ωmax"), w[0]
     # the symbols' subscripts as the task sheet sets them, in <sub> (not «J_пр»)
     text = page.read_text(encoding="utf-8")
     assert "J<sub>пр</sub>" in text and "ΔT<sub>нб</sub>" in text and "J_пр" not in text

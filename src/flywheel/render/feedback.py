@@ -47,7 +47,8 @@ def label(answer: str, lang: str, kind: str = "run", at_deg: tuple = (),
     """An answer as the task sheet of a ``kind`` case ("run", "task2") asks it
     (render/sheet_labels.py): «name symbol, unit»; an ``at.N.…`` one at its angle of
     ``at_deg``, the variant's report angles, a load by its title or label of ``loads``."""
-    what, sym, u = answer_words(kind, answer, lang, at_deg, loads)   # a table's cell: its own
+    what, sym, u = answer_words(kind, answer, lang, at_deg, loads,  # a table's cell: its own
+                                asked=False)
     return " ".join(x for x in (what, sym) if x) + (f", {u}" if u else "")
 
 

@@ -193,8 +193,9 @@ SHEET_FIELDS: list[tuple[str, str, str]] = [
          (f"{graph}.top_from_deg", f"{en}: start of the top", f"{ru}: начало верхнего участка"),
          (f"{graph}.top_to_deg", f"{en}: end of the top", f"{ru}: конец верхнего участка"))]
 
-#: the answers as a task: key → (English, Russian) object of "Determine …" (the symbol and
-#: the unit are the term's; "{kind}:key" entries, of one case kind, first)
+#: the answers as a task: key → (English, Russian) name, the Russian in the nominative
+#: (answer_words makes it the object of «Определить»: object_form); the symbol and the unit
+#: are the term's; "{kind}:key" entries, of one case kind, first
 SHEET_ANSWERS: dict[str, tuple[str, str]] = {
     "run:J_required": ("the required moment of inertia of the first group",
                        "необходимый момент инерции первой группы звеньев"),
@@ -209,25 +210,25 @@ SHEET_ANSWERS: dict[str, tuple[str, str]] = {
     "flywheel_disk.D": ("the outer diameter of the flywheel as a solid disk",
                         "наружный диаметр маховика в виде сплошного диска"),
     "flywheel_disk.b": ("the width of the flywheel as a solid disk",
-                        "ширину маховика в виде сплошного диска"),
+                        "ширина маховика в виде сплошного диска"),
     "flywheel_disk.mass": ("the mass of the flywheel as a solid disk",
-                           "массу маховика в виде сплошного диска"),
+                           "масса маховика в виде сплошного диска"),
     "flywheel_rim.D": ("the outer diameter of the flywheel's rim", "наружный диаметр обода маховика"),
-    "flywheel_rim.mass": ("the mass of the flywheel's rim", "массу обода маховика"),
+    "flywheel_rim.mass": ("the mass of the flywheel's rim", "масса обода маховика"),
     "M_C": ("the resistance moment", "момент сопротивления"),
     "M_D": ("the driving moment", "движущий момент"),
-    "omega_max": ("the greatest angular velocity", "наибольшую угловую скорость"),
-    "omega_min": ("the least angular velocity", "наименьшую угловую скорость"),
-    "omega_mean": ("the mean angular velocity", "среднюю угловую скорость"),
+    "omega_max": ("the greatest angular velocity", "наибольшая угловая скорость"),
+    "omega_min": ("the least angular velocity", "наименьшая угловая скорость"),
+    "omega_mean": ("the mean angular velocity", "средняя угловая скорость"),
     "cycle_work_resistance": ("the work of the resistance over a cycle",
-                              "работу сил сопротивления за цикл"),
+                              "работа сил сопротивления за цикл"),
     "balancing_moment": ("the constant moment that balances the cycle (with its sign)",
                          "постоянный момент из условия цикла (со знаком)"),
     "flywheel_J_on_its_shaft": ("the moment of inertia of the flywheel on its own shaft",
                                 "момент инерции маховика на его валу"),
     # task2's masses: their names are templates of the radius they are taken at
-    "task2:flywheel_mass": ("the mass of the flywheel", "массу маховика"),
-    "task2:rim_mass": ("the mass of the flywheel's rim", "массу обода маховика"),
+    "task2:flywheel_mass": ("the mass of the flywheel", "масса маховика"),
+    "task2:rim_mass": ("the mass of the flywheel's rim", "масса обода маховика"),
     "delta_T_I_max": ("the greatest change of the first group's kinetic energy",
                       "наибольшее изменение кинетической энергии первой группы"),
     "delta_T_I_min": ("the least change of the first group's kinetic energy",
@@ -631,9 +632,10 @@ def _at_words(key: str, lang: str, loads: tuple = ({}, {})) -> tuple[str, str, s
 
 
 def answer_words(kind: str, key: str, lang: str = "en", at_deg: tuple = (),
-                 loads: tuple = ({}, {})) -> tuple[str, str, str]:
+                 loads: tuple = ({}, {}), asked: bool = True) -> tuple[str, str, str]:
     """(what, symbol, unit) of an answer of a ``kind`` ("run", "task2") case as a task sheet
-    asks it: the object of "Determine …", the symbol and the unit as printed ("" where the
+    asks it: the object of "Determine …" (``asked``; else the name as a table's row names it,
+    «наибольшая угловая скорость»), the symbol and the unit as printed ("" where the
     quantity has none; the result key itself if it is no term; a table's cell:
     :func:`cell_words`; a report angle's quantity ``at.N.…`` at ``at_deg[N]``, the variant's
     report angles, where given: «угловую скорость звена 3 при φ = 60°»; a load by its title
@@ -641,6 +643,8 @@ def answer_words(kind: str, key: str, lang: str = "en", at_deg: tuple = (),
 
     >>> answer_words("run", "J_flywheel", "ru")
     ('момент инерции маховика', 'J_М', 'кг·м²')
+    >>> answer_words("task2", "omega_max", "ru")[0], answer_words("task2", "omega_max", "ru", asked=False)[0]
+    ('наибольшую угловую скорость', 'наибольшая угловая скорость')
     """
     cell = cell_words(key, lang)
     if cell is not None:
@@ -668,7 +672,8 @@ def answer_words(kind: str, key: str, lang: str = "en", at_deg: tuple = (),
 
         what += (" при φ = " if lang == "ru" else " at φ = ") + fmt(at_deg[int(parts[1])],
                                                                     given=True) + "°"
-    return (object_form(what) if lang == "ru" else what), sym, "" if u in ("–", "") else u
+    return (object_form(what) if lang == "ru" and asked else what), sym, \
+        "" if u in ("–", "") else u
 
 
 def object_form(phrase: str) -> str:
