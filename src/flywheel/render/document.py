@@ -58,7 +58,7 @@ T = words("report", {
     "motion": "6. True velocities and accelerations",
     "points_caption": "Points at φ = {a}°", "links_caption": "Links at φ = {a}°",
     "warn": "Warnings", "figures": "Figures", "sources": "Sources",
-    "no_plots": "The figures were not drawn (run with --no-plots).",
+    "no_plots": "The figures were not drawn (run with --plots none).",
     "pos": "position", "no": "no.", "qty": "quantity", "val": "value", "unit": "unit", "point": "point",
     "link": "link", "name": "name", "piston": "piston", "head": "head dead centre",
     "first_group": "first group", "centroid": "centroid",
