@@ -184,7 +184,7 @@ def test_reruns_are_byte_identical_and_no_plots_says_so(tmp_path):
     for f in ("md", "html", "docx", "pdf"):
         assert (tmp_path / "a" / f"report.{f}").read_bytes() == (tmp_path / "b" / f"report.{f}").read_bytes(), f
     html = (tmp_path / "a" / "report.html").read_text(encoding="utf-8")
-    assert "<img" not in html and "--no-plots" in html
+    assert "<img" not in html and "--plots none" in html
 
 
 def test_bad_report_format_is_one_line(tmp_path):

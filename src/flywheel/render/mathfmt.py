@@ -327,6 +327,12 @@ def omml(src: str) -> str:
             f"{_om(parse(src))}</m:oMath></m:oMathPara>")
 
 
+def omml_inline(src: str) -> str:
+    """The formula as an ``m:oMath`` element in a line of a paragraph (a formula numbered by
+    tabs beside it, ГОСТ 7.32-2017, 6.8.3)."""
+    return f'<m:oMath xmlns:m="{OMML_NS}" xmlns:w="{_W_NS}">{_om(parse(src))}</m:oMath>'
+
+
 # -- symbols in running text: their subscripts (the report's prose, tables; the figures) ----------
 import re as _re
 

@@ -164,6 +164,7 @@ _PREAMBLE = """#set document(title: {title}, date: none)
   if it.supplement == [S] {{ align(center, it.body) }} else {{ h(1.25cm) + it.body }})
 #set list(indent: 1.25cm)
 #show math.equation: set text(font: ("New Computer Modern Math", {fonts}))
+#set math.equation(numbering: "(1)")
 #set table(stroke: 0.5pt)
 """
 
@@ -427,6 +428,16 @@ def _p(inner: str, style: str | None = None, jc: str | None = None, indent: bool
     return f"<w:p>{f'<w:pPr>{props}</w:pPr>' if props else ''}{inner}</w:p>"
 
 
+def _numbered_formula(math: str, number: int, width: int) -> str:
+    """A formula's paragraph: the formula at a centre tab stop in the middle of the text's
+    ``width`` [twips], its number «(n)» at a right tab stop at the margin — as ГОСТ 7.32-2017,
+    6.8.3 numbers formulas (the PDF's typst does the same by its equation numbering)."""
+    tabs = (f'<w:tabs><w:tab w:val="center" w:pos="{width // 2}"/>'
+            f'<w:tab w:val="right" w:pos="{width}"/></w:tabs>')
+    return (f'<w:p><w:pPr>{tabs}<w:ind w:firstLine="0"/></w:pPr><w:r><w:tab/></w:r>{math}'
+            f'<w:r><w:tab/><w:t xml:space="preserve">({number})</w:t></w:r></w:p>')
+
+
 #: the children of w:pPr after w:framePr in the schema's sequence (ECMA-376 part 1, 17.3.1.26)
 _AFTER_FRAME = frozenset((
     "widowControl", "numPr", "suppressLineNumbers", "pBdr", "shd", "tabs", "suppressAutoHyphens",
@@ -624,6 +635,7 @@ def docx(doc: Document, plots_dir: Path | None = None) -> bytes:
     put(_toc(heads, width))
 
     k = 0                                   # the heading's number: its bookmark _Toc{k}
+    formulas = 0                            # the formulas numbered through the record
     for b in body:
         if isinstance(b, Section):
             k += 1
@@ -637,8 +649,9 @@ def docx(doc: Document, plots_dir: Path | None = None) -> bytes:
         elif isinstance(b, Bullets):
             for i in b.items:
                 put(_p(_runs(i), style="ListBullet"))
-        elif isinstance(b, Formula):
-            put(_p(mathfmt.omml(b.tex), jc="center", indent=True))
+        elif isinstance(b, Formula):        # centred, its number at the right margin
+            formulas += 1                       # (ГОСТ 7.32-2017, 6.8.3)
+            put(_numbered_formula(mathfmt.omml_inline(b.tex), formulas, width))
         elif isinstance(b, Table):
             put(_p(_r(g["table"] + " ") + _seq(g["table"], b.number) + _runs(f" — {b.caption}"),
                    style="Caption", keep=True))
