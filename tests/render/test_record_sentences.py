@@ -34,7 +34,10 @@ def test_no_paragraph_begins_with_a_small_letter(command, lang, tmp_path):
     res = runner.invoke(app, [*COMMANDS[command], "--lang", lang, "-o", str(tmp_path / "o")])
     assert res.exit_code == 0, res.output
     md = (tmp_path / "o" / "report.md").read_text(encoding="utf-8")
-    small = [p for p in _paragraphs(md) if p[0].islower() and p[0] not in "ωεφδ"]
+    # but the explanation of a formula's symbols, which opens with «где» («where») and no
+    # colon (ГОСТ 7.32-2017, 6.8.2)
+    small = [p for p in _paragraphs(md) if p[0].islower() and p[0] not in "ωεφδ"
+             and not p.startswith(("где ", "where "))]
     assert not small, small
 
 
@@ -62,3 +65,28 @@ def test_the_records_sections_are_numbered_without_a_gap(case, tmp_path):
         elif level == "###":
             m += 1
             assert text.startswith(f"{n}.{m}. "), (text, n, m)
+
+
+def test_a_formulas_symbols_are_explained_under_it_a_line_each(tmp_path):
+    """ГОСТ 7.32-2017, 6.8.2: under the reduction's formulas and under the flywheel's, their
+    symbols, each on a line of its own, the first line opening with «где» and no colon; in
+    the markdown a hard break between the lines, in the PDF's typst a forced line break."""
+    from flywheel.cases.run import load_case
+    from flywheel.dynamics.pipeline import analyze
+    from flywheel.render.blocks import Formula, Where
+    from flywheel.render.document import build_document
+    from flywheel.render.numbers import typography
+    from flywheel.render.typst_blocks import typst_block
+
+    case = load_case(CASES / "compressor.toml")
+    with typography("ru"):
+        doc = build_document(analyze(case, n_points=360), "ru", [], case=case)
+    where = [(k, b) for k, b in enumerate(doc.blocks) if isinstance(b, Where)]
+    assert len(where) == 2
+    for k, b in where:
+        assert isinstance(doc.blocks[k - 1], Formula)            # directly under its formula
+        assert b.lines[0].startswith("где ") and not b.lines[0].startswith("где:")
+        assert len(b.lines) >= 3 and all(" — " in line for line in b.lines)
+        assert typst_block(b, lambda x: x)[0].count(" \\\n") == len(b.lines) - 1
+    assert "ΔT_нб — наибольшее изменение кинетической энергии" in where[1][1].text
+    assert "J_10 + J_ред — момент инерции звеньев первой группы" in where[1][1].text

@@ -21,6 +21,17 @@ class Paragraph:
     text: str           # may hold **bold** runs
 
 
+@dataclass(frozen=True)
+class Where(Paragraph):
+    """The symbols of the formula above it explained, one a line, the first line opening with
+    «где» ("where") and no colon (ГОСТ 7.32-2017, 6.8.2): ``text`` its lines joined by "\\n".
+    A renderer that knows no line break sets it as a paragraph."""
+
+    @property
+    def lines(self) -> list[str]:
+        return self.text.split("\n")
+
+
 def sentence(text: str) -> str:
     """A line of the terminal (``ratio: 0,16``) as a paragraph of the записка: a capital
     first letter and a full stop.

@@ -18,7 +18,7 @@ from flywheel.render.mathfmt import point_name, subscripted
 from flywheel.render.sheet_labels import field_label, field_value, part_name
 from flywheel.render import blocks
 from flywheel.render.blocks import (  # noqa: F401  (the model, re-exported)
-    Bullets, Document, Figure, Formula, Heading, Paragraph, Table)
+    Bullets, Document, Figure, Formula, Heading, Paragraph, Table, Where)
 from flywheel.io.text import in_language
 from flywheel.render.numbers import apart, column_zero, fmt as _number, separator
 from flywheel.units import PA_PER_MPA
@@ -47,8 +47,19 @@ T = words("report", {
     "red": "3. Reduction of masses and forces",
     "red_caption": "Reduced inertia and moments at the standard positions",
     "red_note": ("J_II is the links' kinetic energy per ½ω²; the reduced moment of a force is "
-                 "F·v_q, of a link's weight m·(g_x·v_qSx + g_y·v_qSy), the components of the "
-                 "gravity vector by those of its centroid's velocity analogue."),
+                 "its power per ω; a link's weight acts at its centroid."),
+    # the symbols of a section's formulas, a line each (ГОСТ 7.32-2017, 6.8.2)
+    "where_red": ("where m_i is the mass of link i, v_qSi the velocity analogue of its centroid;\n"
+                  "J_Si the moment of inertia of link i about its centroid, ω_qi its angular "
+                  "velocity analogue;\n"
+                  "F a force, v_q the velocity analogue of its point (the scalar product);\n"
+                  "m the mass of a link, g_x, g_y the components of gravity, v_qSx, v_qSy those "
+                  "of its centroid's velocity analogue."),
+    "where_sizing": ("where {dT} is the largest change of the first group's kinetic energy over "
+                     "the cycle;\n"
+                     "δ the coefficient of speed fluctuation, {w} the mean angular velocity;\n"
+                     "{J1} the moment of inertia of the first group's links on the crank shaft "
+                     "(without the flywheel)."),
     "energy": "4. Works and kinetic energy",
     "energy_caption": "Works and kinetic energy at the standard positions",
     "sizing": "5. Flywheel", "sizing_caption": "The flywheel by both methods",
@@ -379,6 +390,7 @@ def build_document(results, lang: str = "en", plots: list[str] | None = None,
     b.add(Formula(_mt("J_II", lang) + r" = \sum (m_{i} v_{qSi}^{2} + J_{Si} \omega_{qi}^{2})"))
     b.add(Formula(r"M_{F} = F \cdot v_{q}"))
     b.add(Formula(r"M_{G} = m (g_{x} v_{qSx} + g_{y} v_{qSy})"))
+    b.add(Where(t["where_red"]))
     mk = [k for k in cols if k.startswith("M ")]
     header = (pos + [h("phi_deg"), h("J_II"), h("dJ_II")]
               + [h(k, label=nm.member(k, lang, results.loads.titles, results.loads.labels)) for k in mk] + [h("M_sum")])
@@ -417,6 +429,8 @@ def build_document(results, lang: str = "en", plots: list[str] | None = None,
     b.add(Formula(rf"{JI} = \frac{{{dT}}}{{\delta \cdot {wm}^{{2}}}} = {g(s.J_required, 6)}\,\text{{{u('J_required')}}}"))
     b.add(Formula(rf"{_mt('J_flywheel', lang)} = {JI} - ({_mt('J_first_group', lang)}) = "
                   rf"{g(s.J_flywheel, 6)}\,\text{{{u('J_flywheel')}}}"))
+    b.add(Where(t["where_sizing"].format(dT=sym("delta_T_max"), w=sym("omega_mean"),
+                                         J1=sym("J_first_group"))))
     b.add(Bullets(tuple(x[2:] for x in _sizing_lines(s, t, lang))))
     b.table(t["sizing_caption"], [t["method"], nm.heading("J_required", lang), nm.heading("J_flywheel", lang),
                                   nm.heading("delta_achieved", lang)],

@@ -5,7 +5,7 @@ Text only: every number comes from the document model, built once from Results.
 """
 from __future__ import annotations
 
-from flywheel.render.document import (Bullets, Document, Figure, Formula, Heading, Paragraph, Table,
+from flywheel.render.document import (Bullets, Document, Figure, Formula, Heading, Paragraph, Table, Where,
                                       build_document)
 from flywheel.render.catalogue import words
 
@@ -24,6 +24,8 @@ def markdown(doc: Document) -> str:
     for blk in doc.blocks:
         if isinstance(blk, Heading):
             parts.append("#" * blk.level + " " + blk.text + "\n")
+        elif isinstance(blk, Where):                   # a line each, hard breaks between
+            parts.append("  \n".join(blk.lines) + "\n")
         elif isinstance(blk, Paragraph):
             parts.append(blk.text + "\n")
         elif isinstance(blk, Bullets):

@@ -21,7 +21,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from flywheel.render import mathfmt
-from flywheel.render.document import Bullets, Document, Figure, Formula, Heading, Paragraph, Table
+from flywheel.render.document import Bullets, Document, Figure, Formula, Heading, Paragraph, Table, Where
 from flywheel.render.report import CAPTION
 from flywheel.render.choices import REPORT_FORMATS
 from flywheel.render.typst_blocks import markup, typst_block
@@ -107,6 +107,8 @@ def html_page(doc: Document):
     for b in doc.blocks:
         if isinstance(b, Heading):
             blocks.append({"kind": "h", "level": b.level, "html": _bold_html(b.text)})
+        elif isinstance(b, Where):
+            blocks.append({"kind": "p", "html": Markup("<br>").join(map(_bold_html, b.lines))})
         elif isinstance(b, Paragraph):
             blocks.append({"kind": "p", "html": _bold_html(b.text)})
         elif isinstance(b, Bullets):
@@ -241,6 +243,12 @@ def docx(doc: Document, plots_dir: Path | None = None) -> bytes:
     for b in doc.blocks:
         if isinstance(b, Heading):
             d.add_heading(b.text, level=b.level - 1 if b.level > 1 else 0)
+        elif isinstance(b, Where):
+            p = d.add_paragraph()
+            for k, line in enumerate(b.lines):
+                if k:
+                    p.add_run().add_break()
+                runs(p, line)
         elif isinstance(b, Paragraph):
             runs(d.add_paragraph(), b.text)
         elif isinstance(b, Bullets):

@@ -31,7 +31,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from flywheel.render import mathfmt
-from flywheel.render.blocks import (Bullets, Document, Figure, Formula, Heading, Paragraph,
+from flywheel.render.blocks import (Bullets, Document, Figure, Formula, Heading, Paragraph, Where,
                                     Table, TitlePage, section_numbers)
 from flywheel.render.catalogue import words
 from flywheel.render.typst_blocks import boxed_literal, markup, typst_block
@@ -644,6 +644,8 @@ def docx(doc: Document, plots_dir: Path | None = None) -> bytes:
                        indent=True))
             else:
                 put(_p(_marked(_runs(f"{b.number} {b.text}"), k), style=f"Heading{b.level}"))
+        elif isinstance(b, Where):              # left-aligned: a line before a break is not
+            put(_p("<w:r><w:br/></w:r>".join(_runs(line) for line in b.lines), jc="left"))
         elif isinstance(b, Paragraph):
             put(_p(_runs(b.text)))
         elif isinstance(b, Bullets):

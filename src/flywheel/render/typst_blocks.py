@@ -11,7 +11,7 @@ from __future__ import annotations
 from collections.abc import Callable
 
 from flywheel.render import mathfmt
-from flywheel.render.blocks import Bullets, Formula, Paragraph
+from flywheel.render.blocks import Bullets, Formula, Paragraph, Where
 
 
 def literal(s: str) -> str:
@@ -40,6 +40,8 @@ def markup(text: str, lit: Callable[[str], str] = literal) -> str:
 def typst_block(b, ts: Callable[[str], str] = markup) -> list[str] | None:
     """The typst lines of a paragraph, a bulleted list or a display formula, its text written
     by ``ts``; None for another kind of block (a heading, a table, a figure: the writer's)."""
+    if isinstance(b, Where):                           # a forced line break between lines
+        return [" \\\n".join(ts(line) for line in b.lines)]
     if isinstance(b, Paragraph):
         return [ts(b.text)]
     if isinstance(b, Bullets):
