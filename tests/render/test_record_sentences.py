@@ -82,11 +82,18 @@ def test_a_formulas_symbols_are_explained_under_it_a_line_each(tmp_path):
     with typography("ru"):
         doc = build_document(analyze(case, n_points=360), "ru", [], case=case)
     where = [(k, b) for k, b in enumerate(doc.blocks) if isinstance(b, Where)]
-    assert len(where) == 2
+    assert len(where) == 3                               # reduction, energy, flywheel
     for k, b in where:
         assert isinstance(doc.blocks[k - 1], Formula)            # directly under its formula
         assert b.lines[0].startswith("где ") and not b.lines[0].startswith("где:")
         assert len(b.lines) >= 3 and all(" — " in line for line in b.lines)
         assert typst_block(b, lambda x: x)[0].count(" \\\n") == len(b.lines) - 1
-    assert "ΔT_нб — наибольшее изменение кинетической энергии" in where[1][1].text
-    assert "J_10 + J_ред — момент инерции звеньев первой группы" in where[1][1].text
+    assert where[1][1].lines[0].startswith("где M_С — приведённый момент сил сопротивления")
+    assert "ΔT_нб — наибольшее изменение кинетической энергии" in where[2][1].text
+    assert "J_10 + J_ред — момент инерции звеньев первой группы" in where[2][1].text
+    # an engine's known moment is the driving one (its cycle balanced by M_С)
+    case = load_case(CASES / "engine_4stroke.toml")
+    with typography("ru"):
+        doc = build_document(analyze(case, n_points=720), "ru", [], case=case)
+    energy = [b for b in doc.blocks if isinstance(b, Where)][1]
+    assert energy.lines[0].startswith("где M_Д — приведённый момент движущих сил")

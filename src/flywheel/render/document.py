@@ -55,6 +55,11 @@ T = words("report", {
                   "F a force, v_q the velocity analogue of its point (the scalar product);\n"
                   "m the mass of a link, g_x, g_y the components of gravity, v_qSx, v_qSy those "
                   "of its centroid's velocity analogue."),
+    "where_M": {"driving": "reduced moment of the resistance forces",
+                "resistance": "reduced moment of the driving forces"},
+    "where_energy": ("where {M} is the {M_name}, Φ the crank's angle of turn over the cycle;\n"
+                     "A the {A_name} of the reduced moments;\n"
+                     "{T} the {T_name}, {J} the {J_name}, {w} the {w_name}."),
     "where_sizing": ("where {dT} is the largest change of the first group's kinetic energy over "
                      "the cycle;\n"
                      "δ the coefficient of speed fluctuation, {w} the mean angular velocity;\n"
@@ -408,6 +413,11 @@ def build_document(results, lang: str = "en", plots: list[str] | None = None,
     b.add(Formula(rf"{_mt(kA, lang)} = \oint {_mt(kM, lang)} d\varphi = {g(bal.work, 6)}\,\text{{{u(kA)}}}"))
     b.add(Formula(rf"{_mt(kx, lang)} = -\frac{{{_mt(kA, lang)}}}{{\Phi}} = {g(bal.moment, 6)}\,\text{{{u(kx)}}}"))
     b.add(Formula(rf"{dTI} = A - ({TII} - {TII}(0)), {TII} = \frac{{{_mt('J_II', lang)} {wm}^{{2}}}}{{2}}"))
+    b.add(Where(t["where_energy"].format(
+        M=sym(kM), M_name=t["where_M"][bal.balance], A_name=nm.bare_name("A", lang),
+        T=sym("T_II"), T_name=nm.bare_name("T_II", lang), J=sym("J_II"),
+        J_name=nm.bare_name("J_II", lang), w=sym("omega_mean"),
+        w_name=nm.bare_name("omega_mean", lang))))
     b.add(Bullets((
         t["balance"][bal.balance].format(A=sym(kA), M=sym(kM), Mx=sym(kx), vA=g(bal.work, 6),
                                          uJ=u(kA), vM=g(bal.moment, 6), uM=u(kx),
