@@ -82,7 +82,7 @@ def test_a_formulas_symbols_are_explained_under_it_a_line_each(tmp_path):
     with typography("ru"):
         doc = build_document(analyze(case, n_points=360), "ru", [], case=case)
     where = [(k, b) for k, b in enumerate(doc.blocks) if isinstance(b, Where)]
-    assert len(where) == 3                               # reduction, energy, flywheel
+    assert len(where) == 4                        # reduction, energy, flywheel, motion
     for k, b in where:
         assert isinstance(doc.blocks[k - 1], Formula)            # directly under its formula
         assert b.lines[0].startswith("где ") and not b.lines[0].startswith("где:")

@@ -60,6 +60,9 @@ T = words("report", {
     "where_energy": ("where {M} is the {M_name}, Φ the crank's angle of turn over the cycle;\n"
                      "A the {A_name} of the reduced moments;\n"
                      "{T} the {T_name}, {J} the {J_name}, {w} the {w_name}."),
+    "where_motion": ("where v_q, a_q are the velocity and acceleration analogues of a point;\n"
+                     "ω, ε the angular velocity and acceleration of the crank (the true motion);\n"
+                     "ω_qi, ε_qi the angular velocity and acceleration analogues of link i."),
     "where_sizing": ("where {dT} is the largest change of the first group's kinetic energy over "
                      "the cycle;\n"
                      "δ the coefficient of speed fluctuation, {w} the mean angular velocity;\n"
@@ -458,6 +461,7 @@ def build_document(results, lang: str = "en", plots: list[str] | None = None,
     b.add(Heading(2, t["motion"]))
     b.add(Formula(r"v = v_{q} \omega, a = |a_{q} \omega^{2} + v_{q} \varepsilon|, "
                   r"\omega_{i} = \omega_{qi} \omega, \varepsilon_{i} = \varepsilon_{qi} \omega^{2} + \omega_{qi} \varepsilon"))
+    b.add(Where(t["where_motion"]))
     point_keys, link_keys = ("v_q", "v", "a_q", "a"), ("omega_q", "omega", "epsilon_q", "epsilon")
     for k, a in enumerate(results.at, 1):
         b.add(Heading(3, f"6.{k}. {t['at_phi'].format(a=g(a.phi_deg, 6))}"))
