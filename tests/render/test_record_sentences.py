@@ -97,3 +97,19 @@ def test_a_formulas_symbols_are_explained_under_it_a_line_each(tmp_path):
         doc = build_document(analyze(case, n_points=720), "ru", [], case=case)
     energy = [b for b in doc.blocks if isinstance(b, Where)][1]
     assert energy.lines[0].startswith("где M_Д — приведённый момент движущих сил")
+
+
+def test_task2s_method_explains_its_symbols_under_its_formulas():
+    """task2's «2. Метод решения»: under its formulas, their symbols a line each from «где»;
+    ε and t where the task's graphs give them."""
+    from flywheel.cases.task2 import load_task2_case, solve_case
+    from flywheel.render.blocks import Formula, Where
+    from flywheel.render.report_task2 import build_task2_document
+
+    path = CASES / "task2_seed_triangle.toml"
+    doc = build_task2_document(solve_case(load_task2_case(path), str(path)), "", "", "ru",
+                               None)
+    k, where = next((k, b) for k, b in enumerate(doc.blocks) if isinstance(b, Where))
+    assert isinstance(doc.blocks[k - 1], Formula)
+    assert where.lines[0] == "где M_Д, M_С — приведённые движущий момент и момент сопротивления;"
+    assert where.lines[-1] == "ε — угловое ускорение, t — время от φ = 0."

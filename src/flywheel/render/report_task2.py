@@ -18,7 +18,7 @@ import math
 
 from flywheel.render.blocks import sentence
 from flywheel.render.catalogue import words
-from flywheel.render.document import Bullets, Document, Figure, Formula, Heading, Paragraph
+from flywheel.render.document import Bullets, Document, Figure, Formula, Heading, Paragraph, Where
 from flywheel.render.nomenclature import name as text, symbol, unit
 from flywheel.render.numbers import fmt as _number
 
@@ -33,6 +33,14 @@ T = words("report_task2", {
     "method_note": ("The reduced inertia J is constant, so the kinetic energy theorem over "
                     "the angle φ gives the speed directly; the extremes of ω lie where "
                     "M_D = M_C, and the cycle is steady when ∮(M_D − M_C)dφ = 0."),
+    # the symbols of the method's formulas, a line each (ГОСТ 7.32-2017, 6.8.2)
+    "where": ("where {MD}, {MC} are the reduced driving and resistance moments;\n"
+              "{J} the reduced moment of inertia (constant), ω₀ the angular velocity at φ = 0;\n"
+              "ω_max, ω_min the greatest and least angular velocities over the cycle, {wm} "
+              "their mean;\n"
+              "{dT} the largest change of kinetic energy, δ the coefficient of speed "
+              "fluctuation"),
+    "where_time": ";\nε the angular acceleration, t the time from φ = 0",
     "solution": "3. Solution", "segments_caption": "Segments: works and speeds at the breakpoints and crossings",
     "results_caption": "Results",
     "motion": "4. Acceleration, phases and time", "motion_caption": "Acceleration and cycle time",
@@ -176,6 +184,10 @@ def build_task2_document(r, title: str, source: str, lang: str = "en",
                     rf"t(\varphi) = \int_{{0}}^{{\varphi}} \frac{{d\varphi}}{{\omega}}"))
     if r.J_required is not None:
         add(Formula(rf"{J} = \frac{{{dT}}}{{\delta {wm}^{{2}}}}"))
+    add(Where(t["where"].format(MD=symbol("t2_M_D", lang), MC=symbol("t2_M_C", lang),
+                                J=symbol("t2_J", lang), wm=symbol("t2_plot_omega_mean", lang),
+                                dT=symbol("t2_delta_T_max", lang))
+              + (t["where_time"] if r.driving is not None else "") + "."))
 
     # 3. solution -----------------------------------------------------------------------------
     add(Heading(2, t["solution"]))
