@@ -112,4 +112,4 @@ def test_task2s_method_explains_its_symbols_under_its_formulas():
     k, where = next((k, b) for k, b in enumerate(doc.blocks) if isinstance(b, Where))
     assert isinstance(doc.blocks[k - 1], Formula)
     assert where.lines[0] == "где M_Д, M_С — приведённые движущий момент и момент сопротивления;"
-    assert where.lines[-1] == "ε — угловое ускорение, t — время от φ = 0."
+    assert where.lines[-1] == "ε — угловое ускорение, t — время от φ\u00a0=\u00a00."
