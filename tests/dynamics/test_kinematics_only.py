@@ -139,6 +139,9 @@ def test_plots_and_russian_report(tmp_path):
                                   for a in (0, 75, 180)])
     text = (tmp_path / "o" / "report.md").read_text(encoding="utf-8")
     assert "# Кинематический анализ" in text and "Выходное звено 3 (коромысло)" in text
+    # the formula's symbols under it, from «где» (ГОСТ 7.32-2017, 6.8.2): ω constant here
+    assert ("где v_q, a_q — аналоги скорости и ускорения точки, ω — постоянная угловая "
+            "скорость кривошипа;  \n") in text
 
 
 def test_animate_and_a_given_motion_option(tmp_path):

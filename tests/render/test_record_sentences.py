@@ -113,3 +113,20 @@ def test_task2s_method_explains_its_symbols_under_its_formulas():
     assert isinstance(doc.blocks[k - 1], Formula)
     assert where.lines[0] == "где M_Д, M_С — приведённые движущий момент и момент сопротивления;"
     assert where.lines[-1] == "ε — угловое ускорение, t — время от φ\u00a0=\u00a00."
+
+
+def test_the_duty_cycles_formulas_are_explained_under_them():
+    """The duty-cycle's «1. Метод»: its formulas' symbols from «где», a line each; the rim's
+    too where the case designs one ([flywheel.rim])."""
+    from flywheel.cases.duty_cycle import load_duty_case, solve_case
+    from flywheel.render.blocks import Formula, Where
+    from flywheel.render.report_duty_cycle import build_duty_cycle_document
+
+    for name, rim in (("duty_khurmi_16_19_punch", False), ("duty_khurmi_16_23_punch_force", True)):
+        path = CASES / f"{name}.toml"
+        doc = build_duty_cycle_document(solve_case(load_duty_case(path), str(path)), "", "", "ru")
+        k, where = next((k, b) for k, b in enumerate(doc.blocks) if isinstance(b, Where))
+        assert isinstance(doc.blocks[k - 1], Formula)
+        assert where.lines[0].startswith("где E — работа одной операции, t_оп — её время")
+        assert where.lines[-1].startswith("D_ср — средний диаметр обода") == rim
+        assert where.text.endswith(".") and not where.text.endswith(";.")

@@ -14,7 +14,7 @@ from flywheel.render.numbers import fmt as _number
 
 from flywheel.render import nomenclature as nm
 from flywheel.render.catalogue import words
-from flywheel.render.document import Bullets, Document, Formula, Heading, Paragraph
+from flywheel.render.document import Bullets, Document, Formula, Heading, Paragraph, Where
 from flywheel.render.blocks import sentence
 from flywheel.render.duty_cycle import summary_tables
 
@@ -25,6 +25,16 @@ T = words("report_duty_cycle", {
                     "motor gives the constant torque M_D (power P) and the flywheel the rest, "
                     "ΔE; its speed falls from ω_max to ω_min during the operation and the motor "
                     "brings it back before the next one."),
+    # the symbols of the formulas, a line each (ГОСТ 7.32-2017, 6.8.2)
+    "where": ("where E is the work of one operation, {top} its time, P the motor's power and "
+              "{MD} its torque;\n"
+              "J the flywheel's moment of inertia, m its mass, k its radius of gyration, v the "
+              "speed at the radius k;\n"
+              "ω_max, ω_min the shaft's angular velocities at the start and the end of the "
+              "operation, ω_ср their mean, δ the coefficient of speed fluctuation;\n"
+              "{trec} the time in which the motor brings the speed back"),
+    "where_rim": (";\n{D} the rim's mean diameter, {k} its share of J, {m} its mass, R its mean "
+                  "radius, ρ the density, b, t the rim's width and thickness, σ its hoop stress"),
     "results": "2. Solution", "checks": "3. Checks", "warn": "Warnings", "sources": "Sources",
     "case_source": "Input data: {s}.",
     "book": ("Khurmi R. S., Gupta J. K. Theory of Machines, ch. 16: Turning Moment Diagrams "
@@ -52,6 +62,11 @@ def build_duty_cycle_document(r, title: str, source: str, lang: str = "en") -> D
                    else (r"k_{rim}", r"m_{rim}", r"D_{m}"))
         add(Formula(rf"{D} = \frac{{2 v}}{{{wm}}}, {m} = \frac{{{k} J}}{{R^{{2}}}} = "
                     rf"\rho \pi {D} b t, \sigma = \rho v^{{2}}"))
+    plain = {"MD": "M_Д" if lang == "ru" else "M_D", "top": "t_оп" if lang == "ru" else "t_op",
+             "trec": "t_вос" if lang == "ru" else "t_rec"}
+    add(Where(t["where"].format(**plain) + (t["where_rim"].format(
+        D="D_ср" if lang == "ru" else "D_m", k="k_об" if lang == "ru" else "k_rim",
+        m="m_об" if lang == "ru" else "m_rim") if r.rim is not None else "") + "."))
 
     add(Heading(2, t["results"]))
     for caption, header, rows, note, _ in summary_tables(r, lang):

@@ -10,7 +10,7 @@ import math
 from flywheel.render import nomenclature as nm
 from flywheel.render.catalogue import words
 from flywheel.render.mathfmt import point_name
-from flywheel.render.document import (T, Bullets, Formula, Heading, Paragraph, _Builder,
+from flywheel.render.document import (T, Bullets, Formula, Heading, Paragraph, Where, _Builder,
                                       _input_of_case, _structure, g)
 
 K = words("report_kinematics", {
@@ -19,6 +19,10 @@ K = words("report_kinematics", {
              "(ε = 0); no masses, loads or flywheel are analysed."),
     "motion": "3. True velocities and accelerations at the constant crank speed",
     "summary": "kinematics alone at {w} = {v} {u} (ε = 0)",
+    # the symbols of the formula, a line each (ГОСТ 7.32-2017, 6.8.2)
+    "where": ("where v_q, a_q are the velocity and acceleration analogues of a point, ω the "
+              "crank's constant angular velocity;\n"
+              "ω_qi, ε_qi the angular velocity and acceleration analogues of link i."),
 })
 
 
@@ -74,6 +78,7 @@ def build_kinematics_document(results, lang: str = "en", plots: list[str] | None
     b.add(Heading(2, k["motion"]))
     b.add(Formula(r"v = v_{q} \omega, a = a_{q} \omega^{2}, \omega_{i} = \omega_{qi} \omega, "
                   r"\varepsilon_{i} = \varepsilon_{qi} \omega^{2}"))
+    b.add(Where(k["where"]))
     point_keys, link_keys = ("v_q", "v", "a_q", "a"), ("omega_q", "omega", "epsilon_q", "epsilon")
     for n, a in enumerate(results.at, 1):
         b.add(Heading(3, f"3.{n}. φ = {g(a.phi_deg, 6)}°"))
