@@ -130,3 +130,20 @@ def test_the_duty_cycles_formulas_are_explained_under_them():
         assert where.lines[0].startswith("где E — работа одной операции, t_оп — её время")
         assert where.lines[-1].startswith("D_ср — средний диаметр обода") == rim
         assert where.text.endswith(".") and not where.text.endswith(";.")
+
+
+def test_the_aggregates_formulas_are_explained_under_them():
+    """The aggregate's «Метод решения»: a_ij, b_ij, c_ij, q_j, Q_i, ω, f from «где»; the drive's
+    δ and the margin from resonance where the case gives a drive."""
+    from flywheel.cases.aggregate import load_aggregate_case, to_model
+    from flywheel.elastic.model import analyze as analyze_aggregate
+    from flywheel.render.blocks import Formula, Where
+    from flywheel.render.report_aggregate import FIGURE, build_aggregate_document
+
+    path = CASES / "aggregate.toml"
+    doc = build_aggregate_document(analyze_aggregate(*to_model(load_aggregate_case(path),
+                                                               str(path))), "", "", "ru", FIGURE)
+    k, where = next((k, b) for k, b in enumerate(doc.blocks) if isinstance(b, Where))
+    assert isinstance(doc.blocks[k - 1], Formula)
+    assert where.lines[0].startswith("где a_ij, b_ij, c_ij — инерционные коэффициенты")
+    assert where.lines[-1].startswith("ω_в — вынуждающая частота")

@@ -13,7 +13,7 @@ from __future__ import annotations
 
 from flywheel.render.blocks import sentence
 from flywheel.render.catalogue import words
-from flywheel.render.document import Bullets, Document, Figure, Formula, Heading, Paragraph
+from flywheel.render.document import Bullets, Document, Figure, Formula, Heading, Paragraph, Where
 from flywheel.render.nomenclature import name as text, rotor_name, unit
 from flywheel.render.numbers import fmt as _number, separator
 from flywheel.units import RPM_PER_RAD_S, TWO_PI
@@ -47,6 +47,14 @@ T = words("report_aggregate", {
     "forcing_ratio": "forcing frequency / ω_I",
     "quantity": "quantity", "value": "value", "unit": "unit", "matrix": "{name}, {u}",
     "check": "solve_ivp check",
+    # the symbols of the method's formulas, a line each (ГОСТ 7.32-2017, 6.8.2)
+    "where": ("where a_ij, b_ij, c_ij are the inertia, damping and stiffness coefficients, "
+              "q_j the generalised coordinates, Q_i the generalised forces;\n"
+              "ω a natural circular frequency, f the same in hertz"),
+    "where_drive": (";\nω_max, ω_min, ω_ср the greatest, least and mean angular velocities of "
+                    "shaft I, δ the coefficient of speed fluctuation;\n"
+                    "ω_в the forcing frequency, ω_n the natural frequency of mode n, Δ the margin "
+                    "from resonance"),
 })
 
 
@@ -108,6 +116,7 @@ def build_aggregate_document(r, title: str, source: str, lang: str = "en",
     if dr is not None:
         add(Formula(r"\delta = \frac{\omega_{max} - \omega_{min}}{\omega_{\text{ср}}}, "
                     r"\Delta = |1 - \frac{\omega_{\text{в}}}{\omega_{n}}|"))
+    add(Where(t["where"] + (t["where_drive"] if dr is not None else "") + "."))
 
     # 3. coefficients -------------------------------------------------------------------------
     add(Heading(2, t["coefficients"]))
