@@ -147,3 +147,20 @@ def test_the_aggregates_formulas_are_explained_under_them():
     assert isinstance(doc.blocks[k - 1], Formula)
     assert where.lines[0].startswith("где a_ij, b_ij, c_ij — инерционные коэффициенты")
     assert where.lines[-1].startswith("ω_в — вынуждающая частота")
+
+
+def test_the_aggregates_coordinates_are_set_without_underscores(tmp_path):
+    """The aggregate's record had copied the terminal's «Σ_j a_ij·q̈_j …, q_(k+1) = φ_(k+1) − φ_k»
+    before the formula that says the same: the PDF showed «q̈_j» and «q_(k+1)» with their
+    underscores. It states the generalised coordinates alone, each subscript one the record
+    sets (q_1, q_{k+1})."""
+    from flywheel.render.mathfmt import subscripts
+
+    for case in ("aggregate", "aggregate_branched_gear", "aggregate_khurmi_fixed_flywheel"):
+        res = runner.invoke(app, ["aggregate", str(CASES / f"{case}.toml"), "--lang", "ru",
+                                  "-o", str(tmp_path / case)])
+        assert res.exit_code == 0, res.output
+        md = (tmp_path / case / "report.md").read_text(encoding="utf-8")
+        line = next(ln for ln in md.splitlines() if ln.startswith("Обобщённые координаты"))
+        assert "Σ" not in line and "q̈" not in line
+        assert not any("_" in text for text, _ in subscripts(line)), line

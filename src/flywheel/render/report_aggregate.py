@@ -55,6 +55,15 @@ T = words("report_aggregate", {
                     "shaft I, δ the coefficient of speed fluctuation;\n"
                     "ω_в the forcing frequency, ω_n the natural frequency of mode n, Δ the margin "
                     "from resonance"),
+    # the generalised coordinates of the equations below (the terminal prints them with the
+    # equations in one line: render/aggregate.py, the nomenclature's ag_equations*)
+    "coords": ("Generalised coordinates: q_1 = φ_1, the angle of the first rotor; "
+               "q_{k+1} = φ_{k+1} − φ_k, the twist of connection k."),
+    "coords_fixed": ("Generalised coordinates: the rotors' absolute angles φ_j (a shaft fixed to "
+                     "the frame: no rigid rotation; a = M, c = K)."),
+    "coords_tree": ("Generalised coordinates: q_1, the angle of the first rotor; "
+                    "q_{k+1} = φ_to − φ_from, the twist of shaft k (the angles of its end and "
+                    "its start)."),
 })
 
 
@@ -108,8 +117,8 @@ def build_aggregate_document(r, title: str, source: str, lang: str = "en",
     # 2. method -------------------------------------------------------------------------------
     add(Heading(2, t["method"]))
     add(Paragraph(t["method_note"]))
-    add(Paragraph(L("ag_equations_fixed" if ch.fixed else
-                    "ag_equations" if ch.ends is None else "ag_equations_tree")))
+    add(Paragraph(t["coords_fixed" if ch.fixed else "coords" if ch.ends is None
+                    else "coords_tree"]))
     add(Formula(r"\sum_{j} (a_{ij} \frac{d^{2}q_{j}}{dt^{2}} + b_{ij} \frac{dq_{j}}{dt} + "
                 r"c_{ij} q_{j}) = Q_{i}"))
     add(Formula(r"\text{det}(c_{ij} - \omega^{2} a_{ij}) = 0, f = \frac{\omega}{2\pi}"))
