@@ -117,3 +117,28 @@ def translated_schema(schema, lang: str = "en"):
     if isinstance(schema, list):
         return [translated_schema(v, lang) for v in schema]
     return schema
+
+
+def compiled_msgstrs(lang: str, prefix: str) -> dict[str, str]:
+    """msgctxt → msgstr of the ``lang`` catalogue's entries whose msgctxt starts with ``prefix``
+    ("term:"), read from the compiled catalogue directly: what ``catalogue(lang).pgettext(ctx,
+    msgid)`` gives (the last entry of a msgctxt, as :func:`_english` keeps), without gettext
+    parsing every entry of the file — which an English run never asks for. The .mo layout: the
+    GNU gettext manual, "The Format of GNU MO Files" (a magic number, the revision, the count N,
+    the offsets of the originals' and the translations' tables; each entry a length and an
+    offset; UTF-8)."""
+    import struct
+
+    data = (LOCALE / lang / "LC_MESSAGES" / f"{DOMAIN}.mo").read_bytes()
+    order = "<" if struct.unpack("<I", data[:4])[0] == 0x950412DE else ">"
+    _magic, _revision, n, originals, translations = struct.unpack(order + "5I", data[:20])
+    start = prefix.encode("utf-8")
+    out = {}
+    for i in range(n):
+        length, offset = struct.unpack_from(order + "II", data, originals + 8 * i)
+        key = data[offset: offset + length]
+        if key.startswith(start) and b"\x04" in key and b"\x00" not in key:
+            t_length, t_offset = struct.unpack_from(order + "II", data, translations + 8 * i)
+            out[key.split(b"\x04", 1)[0].decode("utf-8")] = \
+                data[t_offset: t_offset + t_length].decode("utf-8")
+    return out

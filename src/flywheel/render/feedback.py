@@ -15,6 +15,7 @@ from flywheel.render.grading import (FORMULAS_RUN, FORMULAS_TASK2, MISTAKES, cel
 from flywheel.render.numbers import fmt, typography
 from flywheel.render.mathfmt import sub_html
 from flywheel.render.sheet_labels import answer_words
+from flywheel.teaching.explain import from_own
 
 T = words("feedback", {
     "title": "Feedback: {student}, variant {variant}",
@@ -87,7 +88,7 @@ def page(s, lang: str = "en", reveal: bool = True, share: float = 0.0, kind: str
         why = MISTAKES[lang].get(a.diagnosis, a.diagnosis) if a.diagnosis else (
             t["check"].format(formula=formulas[a.answer])
             if a.verdict == "fail" and a.answer in formulas else t["none"])
-        own = s.from_own(j) if reveal and not a.diagnosis and a.verdict == "fail" \
+        own = from_own(s, j) if reveal and not a.diagnosis and a.verdict == "fail" \
             and a.answer in formulas else None
         if own is not None:           # worked from the student's own earlier answer
             value, source = own

@@ -856,36 +856,11 @@ def csv_header(key: str) -> str:
 # -- the labels and sentences without a symbol or a unit: the catalogue -----------------------------
 # (locale/ru/LC_MESSAGES/flywheel.po, msgctxt "term:<key>": English the msgid, Russian the msgstr)
 def _catalogue_terms() -> dict[str, Term]:
-    from flywheel.render.catalogue import _english
+    from flywheel.render.catalogue import _english, compiled_msgstrs
 
-    russian = _term_msgstrs()
+    russian = compiled_msgstrs("ru", "term:")
     return {ctx[5:]: Term("", "", "", en, russian[ctx])
             for ctx, en in _english().items() if ctx.startswith("term:")}
-
-
-def _term_msgstrs() -> dict[str, str]:
-    """msgctxt → msgstr of the catalogue's "term:" entries, read from the compiled Russian
-    catalogue directly: what ``catalogue("ru").pgettext(ctx, msgid)`` gives (the last entry of a
-    msgctxt, as catalogue._english keeps), without gettext parsing every entry of the file —
-    which an English run never asks for. The .mo layout: the GNU gettext manual, "The Format of
-    GNU MO Files" (a magic number, the revision, the count N, the offsets of the originals' and
-    the translations' tables; each entry a length and an offset; UTF-8)."""
-    import struct
-
-    from flywheel.render.catalogue import DOMAIN, LOCALE
-
-    data = (LOCALE / "ru" / "LC_MESSAGES" / f"{DOMAIN}.mo").read_bytes()
-    order = "<" if struct.unpack("<I", data[:4])[0] == 0x950412DE else ">"
-    _magic, _revision, n, originals, translations = struct.unpack(order + "5I", data[:20])
-    out = {}
-    for i in range(n):
-        length, offset = struct.unpack_from(order + "II", data, originals + 8 * i)
-        key = data[offset: offset + length]
-        if key.startswith(b"term:") and b"\x04" in key and b"\x00" not in key:
-            t_length, t_offset = struct.unpack_from(order + "II", data, translations + 8 * i)
-            out[key.split(b"\x04", 1)[0].decode("utf-8")] = \
-                data[t_offset: t_offset + t_length].decode("utf-8")
-    return out
 
 
 TERMS.update(_catalogue_terms())

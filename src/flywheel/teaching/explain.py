@@ -33,10 +33,7 @@ def explain(marking, given, mask: int, close) -> tuple[int, tuple[tuple[int, str
         if mask >> j & 1 or g != g or not chain.knows(a):
             continue
         tol = marking.tolerances[j]
-        try:
-            cands, source = chain.recompute(a, values)
-        except (ArithmeticError, ValueError):
-            cands, source = (), None
+        cands, source = _recomputed(chain, a, values)
         if source is not None and cands and math.isfinite(cands[0]) and close(g, cands[0], tol):
             k = pos[source]
             repeats = close(g, given[k], tol) and not close(marking.keys[j], marking.keys[k], tol)
@@ -47,3 +44,27 @@ def explain(marking, given, mask: int, close) -> tuple[int, tuple[tuple[int, str
         if code is not None:
             named.append((j, code))
     return carried, tuple(named)
+
+
+def _recomputed(chain, answer: str, values: dict) -> tuple[tuple[float, ...], str | None]:
+    """``chain.recompute(answer, values)``, a step the student's numbers cannot be put through
+    (a root of a negative, a division by 0) giving no value: ((), None)."""
+    try:
+        return chain.recompute(answer, values)
+    except (ArithmeticError, ValueError):
+        return (), None
+
+
+def from_own(student, j: int) -> tuple[float, str] | None:
+    """(value, source): answer j of a graded ``student`` (grading.StudentGrade) as the variant's
+    chain computes it from the student's own earlier answer ``source``, for a feedback page to
+    work a wrong answer from the student's own numbers; None where the chain does not know the
+    answer or none of the student's answers feeds it."""
+    marking = student.marking
+    chain, a = marking.chain, marking.names[j]
+    if chain is None or not chain.knows(a):
+        return None
+    values, source = _recomputed(chain, a, dict(zip(marking.names, student.given)))
+    if source is None or not values or not math.isfinite(values[0]):
+        return None
+    return values[0], source

@@ -460,22 +460,6 @@ class StudentGrade:
         diagnosis = (dict(self.diagnoses) if named is None else named).get(j)
         return AnswerGrade(a, g, k, err, kind, tol, passed, verdict, diagnosis)
 
-    def from_own(self, j: int) -> tuple[float, str] | None:
-        """(value, source): answer j as the variant's chain computes it from the student's
-        own earlier answer ``source`` (teaching/chain.py ``recompute``), for a feedback page to
-        show a wrong answer worked from the student's own numbers; None where the chain does
-        not know the answer or none of the student's answers feeds it."""
-        chain, a = self.marking.chain, self.marking.names[j]
-        if chain is None or not chain.knows(a):
-            return None
-        try:
-            values, source = chain.recompute(a, dict(zip(self.marking.names, self.given)))
-        except (ArithmeticError, ValueError):
-            return None
-        if source is None or not values or not math.isfinite(values[0]):
-            return None
-        return values[0], source
-
     @property
     def passed(self) -> int:
         """Answers right (a table counts as one, right when all its cells are)."""
