@@ -10,8 +10,8 @@ import html
 import re
 
 from flywheel.render.catalogue import words
-from flywheel.render.grading import (FORMULAS_RUN, FORMULAS_TASK2, MISTAKES, cells_off, key_spec,
-                                    table_verdict, verdict_word)
+from flywheel.render.grading import (MISTAKES, cells_off, formulas, key_spec, table_verdict,
+                                    verdict_word)
 from flywheel.render.numbers import fmt, typography
 from flywheel.render.mathfmt import sub_html
 from flywheel.render.sheet_labels import answer_words
@@ -79,17 +79,17 @@ def page(s, lang: str = "en", reveal: bool = True, share: float = 0.0, kind: str
     the key's loads' titles and labels)."""
     t = T[lang]
     e = html.escape
-    formulas = (FORMULAS_TASK2 if kind == "task2" else FORMULAS_RUN)[lang]
+    said = formulas(kind, lang)
     rows = []
     in_table = s.marking.cells
     for j, a in enumerate(s.answers):
         if in_table >> j & 1 and a.passed:
             continue                  # a table's right cell: counted in its table's line
         why = MISTAKES[lang].get(a.diagnosis, a.diagnosis) if a.diagnosis else (
-            t["check"].format(formula=formulas[a.answer])
-            if a.verdict == "fail" and a.answer in formulas else t["none"])
+            t["check"].format(formula=said[a.answer])
+            if a.verdict == "fail" and a.answer in said else t["none"])
         own = from_own(s, j) if reveal and not a.diagnosis and a.verdict == "fail" \
-            and a.answer in formulas else None
+            and a.answer in said else None
         if own is not None:           # worked from the student's own earlier answer
             value, source = own
             k = s.marking.names.index(source)

@@ -93,6 +93,11 @@ FORMULAS_TASK2 = words("formula_task2", {
 })
 
 
+def formulas(kind: str, lang: str) -> dict[str, str]:
+    """The formulas of a ``kind`` ("run", "task2") key's answers in ``lang``, by answer."""
+    return (FORMULAS_TASK2 if kind == "task2" else FORMULAS_RUN)[lang]
+
+
 def answer_names(answers, kind: str = "run", lang: str = "en") -> dict[str, str]:
     """How the tables and lists of `grade` and `variants` name the ``answers`` of a ``kind``
     key ("run", "task2"): in Russian by the symbols the task sheet prints («M_Д», «ΔT_нб»,

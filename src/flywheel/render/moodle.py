@@ -50,11 +50,11 @@ def _text(s: str) -> str:
 
 def quiz_xml(vs, lang: str = "en") -> str:
     """The question bank of a VariantSet as Moodle XML text."""
-    from flywheel.render.grading import FORMULAS_RUN, FORMULAS_TASK2
+    from flywheel.render.grading import formulas
 
     t = vs.template
     w = T[lang]
-    formulas = (FORMULAS_TASK2 if t.kind == "task2" else FORMULAS_RUN)[lang]
+    said = formulas(t.kind, lang)
     out = ['<?xml version="1.0" encoding="UTF-8"?>', "<quiz>"]
     top = f"$course$/top/flywheel/{t.name}"
     for v in vs.variants:
@@ -75,7 +75,7 @@ def quiz_xml(vs, lang: str = "en") -> str:
                 unit=f", {html_escape(unit)}" if unit else "", pct=pct))
             # shown after the attempt: the formula of the course it is computed by, where the
             # chain has one (render/grading.py)
-            general = (sub_html(w["how"].format(formula=formulas[a])) if a in formulas else "")
+            general = sub_html(w["how"].format(formula=said[a])) if a in said else ""
             # a table's cell: judged against its column's scale too (teaching/tables.py)
             scale = max(abs(value), floors.get(a, 0.0))
             absolute = rel * scale if scale else rel

@@ -62,11 +62,12 @@ def build_duty_cycle_document(r, title: str, source: str, lang: str = "en") -> D
                    else (r"k_{rim}", r"m_{rim}", r"D_{m}"))
         add(Formula(rf"{D} = \frac{{2 v}}{{{wm}}}, {m} = \frac{{{k} J}}{{R^{{2}}}} = "
                     rf"\rho \pi {D} b t, \sigma = \rho v^{{2}}"))
-    plain = {"MD": "M_Д" if lang == "ru" else "M_D", "top": "t_оп" if lang == "ru" else "t_op",
-             "trec": "t_вос" if lang == "ru" else "t_rec"}
-    add(Where(t["where"].format(**plain) + (t["where_rim"].format(
-        D="D_ср" if lang == "ru" else "D_m", k="k_об" if lang == "ru" else "k_rim",
-        m="m_об" if lang == "ru" else "m_rim") if r.rim is not None else "") + "."))
+    sym = lambda key: nm.symbol(key, lang)        # noqa: E731  (the one nomenclature's)
+    add(Where(t["where"].format(MD=sym("motor_torque"), top=sym("operation_time"),
+                                trec=sym("recovery_time"))
+              + (t["where_rim"].format(D=sym("D_mean"), k=sym("share"),
+                                       m=sym("rim_mass_designed")) if r.rim is not None else "")
+              + "."))
 
     add(Heading(2, t["results"]))
     for caption, header, rows, note, _ in summary_tables(r, lang):
