@@ -185,7 +185,7 @@ def build_task2_document(r, title: str, source: str, lang: str = "en",
     if r.J_required is not None:
         add(Formula(rf"{J} = \frac{{{dT}}}{{\delta {wm}^{{2}}}}"))
     add(Where(t["where"].format(MD=symbol("t2_M_D", lang), MC=symbol("t2_M_C", lang),
-                                J=symbol("t2_J", lang), wm=symbol("t2_plot_omega_mean", lang),
+                                J=symbol("t2_J", lang), wm=symbol("t2_omega_mean", lang),
                                 dT=symbol("t2_delta_T_max", lang))
               + (t["where_time"] if r.driving is not None else "") + "."))
 
