@@ -97,8 +97,8 @@ def test_html_is_self_contained_and_numbered(ru_run):
     page.feed(text)
     assert not re.search(r"https?://", text)
     assert page.refs and all(r.startswith("data:image/png;base64,") for r in page.refs)
-    figs = [int(m) for c in page.captions for m in re.findall(r"^Рис\. (\d+) — ", c)]
-    tabs = [int(m) for c in page.captions for m in re.findall(r"^Таблица (\d+) — ", c)]
+    figs = [int(m) for c in page.captions for m in re.findall(r"^Рис\. (\d+)\u00a0— ", c)]
+    tabs = [int(m) for c in page.captions for m in re.findall(r"^Таблица (\d+)\u00a0— ", c)]
     assert figs == list(range(1, len(figs) + 1)) and len(figs) == len(page.refs) >= 10
     assert tabs == list(range(1, len(tabs) + 1)) and len(tabs) >= 10
     assert "<math" in text and "@media print" in text and "size: A4" in text

@@ -87,9 +87,9 @@ def test_task2_html_reads_back(t2):
     assert ru(f"{doc['omega_max']:.6f}") in page.cells and ru(f"{doc['omega_min']:.6f}") in page.cells
     assert ru(f"{doc['delta']:.4g}") in page.cells and ru(f"{doc['delta_T_max']:.4g}") in page.cells
     # the symbols' subscripts typeset (<sub>), not printed as "M_Д"
-    assert "Рис. 1 — Моменты MД, MС" in page.captions[-1]
+    assert "Рис. 1\u00a0— Моменты MД, MС" in page.captions[-1]
     assert "Моменты M<sub>Д</sub>, M<sub>С</sub>" in (t2 / "report.html").read_text(encoding="utf-8")
-    assert [c.split(" — ")[0] for c in page.captions[:-1]] == [
+    assert [c.split("\u00a0— ")[0] for c in page.captions[:-1]] == [
         f"Таблица {i}" for i in range(1, len(page.captions))]
     assert page.refs == [r for r in page.refs if r.startswith("data:image/png;base64,")]
     assert len(page.refs) == 1 and "<math" in (t2 / "report.html").read_text(encoding="utf-8")
@@ -123,7 +123,7 @@ def test_aggregate_reads_back(ag):
     # in Russian typography: four significant digits, a decimal comma, a true minus
     assert _ru4(doc['natural_frequencies_hz'][0]) in page.cells
     assert _ru4(doc['twist_amplitude']) in page.cells
-    assert len(page.refs) == 1 and page.captions[-1].startswith("Рис. 1 — ")
+    assert len(page.refs) == 1 and page.captions[-1].startswith("Рис. 1\u00a0— ")
     text = _pdf_text(ag / "report.pdf")
     assert "Собственные частоты" in text and _ru4(doc['natural_frequencies_hz'][0]) in text
     d = docx.Document(str(ag / "report.docx"))

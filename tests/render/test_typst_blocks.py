@@ -45,3 +45,29 @@ def test_the_first_groups_index_is_upright_as_the_seconds():
     assert '<m:sub><m:r><m:t xml:space="preserve">i</m:t>' in mathfmt.omml(r"J_{i}")
     assert '<mrow><mi mathvariant="normal">I</mi></mrow></msub>' in mathfmt.mathml(r"J_{I}")
     assert "<mrow><mi>i</mi></mrow></msub>" in mathfmt.mathml(r"J_{i}")
+
+
+def test_no_line_opens_with_a_dash():
+    """The aggregate's PDF had a line open with «— коэффициент…» (the break fell between «δ»
+    and its dash): every writer of a document now sets the space before a dash as a no-break
+    space, so the dash stays on the line of the word before it; a dash alone (a table's «—»,
+    nothing there) and an en dash are left as they are."""
+    import io
+
+    from docx import Document as Docx
+
+    from flywheel.render import mathfmt, report_formats
+
+    assert mathfmt.subscripts("δ — коэффициент") == [("δ\u00a0— коэффициент", False)]
+    assert mathfmt.subscripts("ΔT_нб — перепад") == [("ΔT", False), ("нб", True),
+                                                    ("\u00a0— перепад", False)]
+    assert mathfmt.subscripts("—") == [("—", False)]
+    assert mathfmt.subscripts("0 – 1") == [("0 – 1", False)]
+    doc = Document("T", "ru")
+    doc.blocks += [Heading(1, "T"), Paragraph("где δ — коэффициент неравномерности"),
+                   Table(1, "Маховик — размеры", ("форма", "b"), (("диск", "—"),))]
+    typst = report_formats.typst_source(doc)
+    html = report_formats.html(doc)
+    docx_text = "\n".join(p.text for p in Docx(io.BytesIO(report_formats.docx(doc))).paragraphs)
+    for text in (typst, html, docx_text):
+        assert "δ\u00a0— коэффициент" in text and "δ — " not in text

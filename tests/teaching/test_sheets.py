@@ -211,7 +211,7 @@ def test_the_pdf_carries_the_same_values_and_no_answer(tmp_path):
         for text in (pages_of[0].extract_text(), combined[n - 1].extract_text()):
             lines = text.splitlines()
             assert lines[0] == f"Вариант {n}"
-            assert {"Дано", "Определить", "Таблица 1 — Данные варианта"} <= set(lines)
+            assert {"Дано", "Определить", "Таблица 1\u00a0— Данные варианта"} <= set(lines)
             assert any(ln.startswith("Студент ___") and "Группа ___" in ln for ln in lines)
             for value in v.drawn.values():              # in Russian typography
                 assert value in ru_numbers(text), (n, value)
@@ -235,7 +235,7 @@ def test_russian_and_english_wording(compressor_dir, task2_dir, tmp_path):
     ru = sheet_of(compressor_dir, "02")
     assert ru.headings[:3] == ["Вариант 2", "Дано", "Определить"]
     assert any(p.startswith("Студент ____") and "Группа ____" in p for p in ru.paragraphs)
-    assert ru.captions == ["Рис. 1 — Кинематическая схема механизма при φ = 120°"]
+    assert ru.captions == ["Рис. 1\u00a0— Кинематическая схема механизма при φ = 120°"]
     # a point's coordinates set apart as its value is, «0; 0,15» under «(x; y)», not «(x, y)»
     points = [r for t in ru.tables for r in t if "(x; y)" in r[0]]
     assert points and all("; " in r[1] for r in points)
@@ -243,13 +243,13 @@ def test_russian_and_english_wording(compressor_dir, task2_dir, tmp_path):
     en = sheet_of(task2_dir, "03")
     assert en.headings[:3] == ["Variant 3", "Given", "Determine"]
     assert any(p.startswith("Student ____") and "Group ____" in p for p in en.paragraphs)
-    assert en.captions == ["Figure 1 — The given moment graphs M_D(φ) and M_C(φ)"]
+    assert en.captions == ["Figure 1\u00a0— The given moment graphs M_D(φ) and M_C(φ)"]
     # the same task2 variants in Russian: the course's symbols
     out = tmp_path / "ru"
     assert invoke(TASK2, "--count", 1, "--seed", 5, "--out", out, "--sheets",
                   "--lang", "ru").exit_code == 0
     sh = sheet_of(out, "01")
-    assert sh.captions == ["Рис. 1 — Заданные графики моментов M_Д(φ) и M_С(φ)"]
+    assert sh.captions == ["Рис. 1\u00a0— Заданные графики моментов M_Д(φ) и M_С(φ)"]
     assert sh.paragraphs[-6] == "1. Определить момент сопротивления M_С, Н·м (допуск ±1 %)."
 
 

@@ -347,6 +347,13 @@ _SUB_RX = _re.compile(r"(?<![\w.`\\])([^\W\d_][^\W\d_]{0,2})_"
                       r"(?![" + _L + r"_`])(?!\.\w)")
 
 
+#: " — " as the documents write it: the space before the dash a no-break space, so a line may
+#: end with the dash but never open with it (the rule of Russian typesetting that a dash inside
+#: a sentence stays on the line of the word before it: Мильчин А. Э., Чельцова Л. К.
+#: Справочник издателя и автора, the chapter on typesetting)
+NO_BREAK_DASH = "\u00a0\u2014 "
+
+
 def subscripted(base: str, sub: str) -> str:
     """``base`` with the subscript ``sub`` as the record's text writes a symbol, for
     :func:`subscripts` to read back: braces only where the subscript is over four letters.
@@ -359,13 +366,16 @@ def subscripted(base: str, sub: str) -> str:
 
 def subscripts(text: str) -> list[tuple[str, bool]]:
     """``text`` cut into runs (text, is a subscript) at its symbols' subscripts, the "_" (and a
-    subscript's braces) dropped; text without a symbol's subscript is one run.
+    subscript's braces) dropped; text without a symbol's subscript is one run. The space before
+    a dash becomes a no-break space (:data:`NO_BREAK_DASH`): no line of a document, a figure or
+    a sheet opens with «—».
 
     >>> subscripts("J_I = ΔT_нб/(δ·ω_m²)")
     [('J', False), ('I', True), (' = ΔT', False), ('нб', True), ('/(δ·ω', False), ('m', True), ('²)', False)]
     >>> subscripts("`results.flywheel_rim` in summary.json")
     [('`results.flywheel_rim` in summary.json', False)]
     """
+    text = text.replace(" — ", NO_BREAK_DASH)
     out: list[tuple[str, bool]] = []
     pos = 0
     for m in _SUB_RX.finditer(text):
