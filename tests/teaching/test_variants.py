@@ -315,3 +315,28 @@ def test_the_russian_table_of_variants_names_answers_by_symbols_and_tells_keys_a
     for c in answers:
         if c.startswith("ω_m"):
             assert re.fullmatch(r"ω_m(ax|in) = \d+,\d{3,}", c), c
+
+
+def test_the_terminal_words_the_drawn_values_in_russian():
+    """`variants --lang ru` had printed what it drew by the case file's paths
+    («machine.speed_rpm = 40»); it now words them as the task sheet does, with their units; in
+    English the path stays (what the teacher edits in the template)."""
+    from types import SimpleNamespace
+
+    from flywheel.render.grading import drawn_line
+
+    shaper = load_template(CASES / "variants_shaper.toml")
+    v = SimpleNamespace(drawn={"machine.speed_rpm": 40.0, "links.5.mass": 25.0,
+                               "forces.0.magnitude": 3500.0, "flywheel.speed_ratio": 25.0})
+    assert drawn_line(shaper, v, "machine.speed_rpm", "ru") == \
+        "частота вращения кривошипа n₁ = 40 об/мин"
+    assert drawn_line(shaper, v, "links.5.mass", "ru") == "масса звена 5 m_5 = 25 кг"
+    assert drawn_line(shaper, v, "forces.0.magnitude", "ru").endswith("= 3500 Н")
+    assert drawn_line(shaper, v, "flywheel.speed_ratio", "ru") == \
+        "передаточное отношение к валу маховика i = 25"
+    assert drawn_line(shaper, v, "machine.speed_rpm") == "machine.speed_rpm = 40"
+    task2 = load_template(TASK2)
+    v = SimpleNamespace(drawn={"resistance.from_deg": 120.0, "flywheel.J": 12.0})
+    assert drawn_line(task2, v, "resistance.from_deg", "ru").endswith(" = 120°")
+    assert drawn_line(task2, v, "flywheel.J", "ru") == \
+        "приведённый момент инерции J_пр = 12 кг·м²"

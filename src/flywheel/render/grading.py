@@ -278,6 +278,28 @@ def _pct_of(share: float) -> str:
     return _number(100 * share, spec="g", zero=None, nonfinite="show", given=True)
 
 
+def drawn_line(template, variant, path: str, lang: str = "en") -> str:
+    """A value drawn for a variant as `variants` prints it: in English by the case file's path
+    («machine.speed_rps = 9», what the teacher edits in the template); in Russian worded as
+    the task sheet words it, with its unit («частота вращения кривошипа n_1 = 9 об/с»)."""
+    value = variant.drawn[path]
+    if lang != "ru":
+        return f"{path} = {_g(value, given=True)}"
+    from flywheel.cases.describe import unit_of_path
+    from flywheel.render.nomenclature import unit
+    from flywheel.render.sheet_labels import field_kinds, field_label, field_value
+    from flywheel.teaching.sheets import element_names
+
+    fw = template.document.get("flywheel")
+    ratio = variant.drawn.get("flywheel.speed_ratio",
+                              fw.get("speed_ratio", 1) if isinstance(fw, dict) else 1)
+    label = field_label(path, lang, element_names(template.document),
+                        field_kinds(template.kind, ratio))
+    said = field_value(path, value, lang) if isinstance(value, str) else _g(value, given=True)
+    u = unit(unit_of_path(template.kind, path), lang)
+    return f"{label} = {said}" + ("" if u in ("", "–") else u if u == "°" else f" {u}")
+
+
 def print_variants(vs, out, console=None, sheets: str | None = None, lang: str = "en") -> None:
     """The variants drawn and their answers, one row each; ``sheets``: the format of the task
     sheets written (both, html, pdf), None if none; the wording in ``lang``."""
@@ -297,8 +319,7 @@ def print_variants(vs, out, console=None, sheets: str | None = None, lang: str =
     table.add_column(w["v_answers"])
     shown = answer_names(t.answers, t.kind, lang)
     for v in vs.variants:
-        table.add_row(v.id, "\n".join(f"{p.path} = {_g(v.drawn[p.path], given=True)}"
-                                     for p in t.varied),
+        table.add_row(v.id, "\n".join(drawn_line(t, v, p.path, lang) for p in t.varied),
                       "\n".join(f"{shown[a]} = "
                                 f"{_g(v.answers[a], to_tolerance(v.answers[a], t.tolerance_of(a)) or '.6g')}"
                                 for a in t.answers))

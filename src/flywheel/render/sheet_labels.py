@@ -295,6 +295,16 @@ def _matched(key: str, rank: dict[str, int]) -> tuple[int, str, str, int] | None
 _SHEET_FIELD_RANK = _patterns(p for p, _, _ in SHEET_FIELDS)
 
 
+def field_kinds(kind: str, speed_ratio=1) -> tuple[str, ...]:
+    """The kinds :func:`field_label` tries for a case of ``kind`` ("run", "task2"): a run's
+    flywheel on a shaft of its own (``speed_ratio`` i ≠ 1) first as "run,i" (its J is J_M/i²).
+
+    >>> field_kinds("run", 3), field_kinds("run"), field_kinds("task2")
+    (('run,i', 'run'), ('run',), ('task2',))
+    """
+    return ("run,i", "run") if kind == "run" and speed_ratio != 1 else (kind,)
+
+
 def field_label(path: str, lang: str = "en", names: dict[str, str] | None = None,
                 kinds: tuple[str, ...] = ()) -> str:
     """The label of a case file's input field on a task sheet ("links.2.mass" → "масса звена 2

@@ -21,6 +21,7 @@ from flywheel.render.catalogue import words
 from flywheel.render.document import Document, Figure, Heading, Paragraph, Table
 from flywheel.render.numbers import fmt as _number
 from flywheel.render.numbers import russian, separator, typeset
+from flywheel.render.sheet_labels import field_kinds
 
 FORMATS = ("both", "html", "pdf")
 #: the sheet's own print style, after the записка's and as the PDF sheet's layout (typst_sheet:
@@ -84,12 +85,10 @@ def field_label(path: str, lang: str, names: dict[str, str] | None = None,
 
 
 def _kinds(sheet) -> tuple[str, ...]:
-    """The nomenclature's kinds of the sheet's fields: its case kind's; a run's flywheel on a
-    shaft of its own (speed ratio i ≠ 1) first as "run,i" (its J is J_M/i²)."""
-    if sheet.kind == "run" and any(g.path == "flywheel.speed_ratio" and g.value != 1
-                                   for g in sheet.given):
-        return ("run,i", "run")
-    return (sheet.kind,)
+    """The nomenclature's kinds of the sheet's fields (:func:`field_kinds` of its flywheel's
+    speed ratio)."""
+    ratio = next((g.value for g in sheet.given if g.path == "flywheel.speed_ratio"), 1)
+    return field_kinds(sheet.kind, ratio)
 
 
 def _num(v) -> str:
