@@ -200,8 +200,11 @@ def test_the_cycle_condition_speaks_of_the_machine(name, known, found):
     _, res, doc = _run_document(name)
     md = markdown(doc)
     A, M = known
-    sentence = next(ln for ln in md.splitlines() if ln.startswith(f"- {A} = ∮ {M} dφ"))
-    assert f"{found} = −{A}/Φ" in sentence and "условие цикла" in sentence
+    formula = next(ln for ln in md.splitlines() if ln.startswith(f"$$ {found} = "))
+    assert f"{found} = -\\frac{{{A}}}{{\\Phi}}" in formula
+    assert f"$$ {A} = \\oint {M} d\\varphi" in md
+    sentence = next(ln for ln in md.splitlines() if ln.startswith(f"- {A} = "))
+    assert f"; {found} = " in sentence and "условие цикла" in sentence
     assert md.count("Правило знаков") == 1 and "M_const" not in md and "M_{const}" not in md
     assert f"M_у = {found} при каждом φ" in md
     # the value is the result's: M_Д of a compressor, M_С (negative) of an engine
@@ -209,7 +212,7 @@ def test_the_cycle_condition_speaks_of_the_machine(name, known, found):
     assert (M_found > 0) == (found == "M_Д")
     en = markdown(_run_document(name, "en")[2])
     A_en, M_en = (a.replace("Д", "D").replace("С", "C") for a in known)
-    assert f"- {A_en} = ∮ {M_en} dφ" in en and "M_const" not in en
+    assert f"$$ {A_en} = \\oint {M_en} d\\varphi" in en and "M_const" not in en
 
 
 def test_the_summary_rows_follow_the_balance():

@@ -296,8 +296,8 @@ def test_symbols_are_typeset_with_subscripts(lang, tmp_path):
     subs = [c for c in sym.cells if "<sub>" in c]
     assert "J<sub>II</sub>" in "".join(subs) and len(subs) >= 10
     assert "ΔT<sub>нб</sub>" in page
-    # the bullets: Merzalov's flywheel as J_I = ΔT_нб/(δ·ω²) with its subscripts
-    assert re.search(r"<li>[^<]*J<sub>I</sub> = ΔT<sub>нб</sub>/\(δ·ω<sub>(m|ср)</sub>²\)", page)
+    # the bullets: Merzalov's flywheel J_I, its formula cited by number, with its subscripts
+    assert re.search(r"<li>[^<]*\(\d+\)\W*J<sub>I</sub> = \d", page)
     # Word: the same subscripts as subscript runs
     d = docx.Document(str(tmp_path / "a" / "report.docx"))
     runs = [r for p in d.paragraphs for r in p.runs]

@@ -63,6 +63,9 @@ T = words("report", {
     "where_motion": ("where v_q, a_q are the velocity and acceleration analogues of a point;\n"
                      "ω, ε the angular velocity and acceleration of the crank (the true motion);\n"
                      "ω_qi, ε_qi the angular velocity and acceleration analogues of link i."),
+    "where_given": ("where {JM} is the given flywheel's moment of inertia on the crank shaft;\n"
+                    "{J1} the moment of inertia of the first group's links on the crank shaft "
+                    "(without the flywheel)."),
     "where_sizing": ("where {dT} is the largest change of the first group's kinetic energy over "
                      "the cycle;\n"
                      "δ the coefficient of speed fluctuation, {w} the mean angular velocity;\n"
@@ -111,17 +114,20 @@ T = words("report", {
     "signs": ("Signs: a reduced moment and its work are positive where they drive (act in the "
               "direction of rotation) and negative where they resist."),
     "balance": {
-        "driving": ("- {A} = ∮ {M} dφ = {vA} {uJ}; {Mx} = −{A}/Φ = {vM} {uM} (the cycle "
-                    "condition: the driving moment is constant, Φ = {cycle}°)"),
-        "resistance": ("- {A} = ∮ {M} dφ = {vA} {uJ}; {Mx} = −{A}/Φ = {vM} {uM} (the cycle "
-                       "condition: the moment of resistance is constant, Φ = {cycle}°)"),
+        "driving": ("- {A} = {vA} {uJ} by formula ({nA}); {Mx} = {vM} {uM} by formula ({nM}) "
+                    "(the cycle condition: the driving moment is constant, Φ = {cycle}°)"),
+        "resistance": ("- {A} = {vA} {uJ} by formula ({nA}); {Mx} = {vM} {uM} by formula "
+                       "({nM}) (the cycle condition: the moment of resistance is constant, "
+                       "Φ = {cycle}°)"),
     },
     "extremes": ("- {dT} max = {vmax} {uJ} at {amax}°, min = {vmin} {uJ} at {amin}° (global "
                  "extremes); {span} = {v} {uJ}"),
-    "merzalov": "- Merzalov: {J} = {span}/(δ·{w}²) = {v} {uI}, δ achieved = {d}",
-    "given": "- the flywheel is given (not sized): {J} = {v} {uI} on the crank shaft gives δ = {d}",
+    "merzalov": "- Merzalov, formula ({n}): {J} = {v} {uI}, δ achieved = {d}",
+    "given": ("- the flywheel is given (not sized): {J} = {v} {uI} on the crank shaft by formula "
+              "({n}) gives δ = {d}"),
     "exact": "- exact (energy–mass diagram): {J} = {v} {uI}, δ achieved = {d}",
-    "flywheel": "- flywheel {JM} = {J} − ({J1}) = {v} {uI}",
+    "flywheel": "- flywheel, formula ({n}): {JM} = {v} {uI}",
+    "flywheel_given": "- flywheel {JM} = {v} {uI}",
     "shaft": "; on a shaft {i:g} times faster: {v} {uI}",
     "disk": "- disk ({mat}): {dims}, {speed} {v} {u}",
     "rim": "- rim: {dims}, {speed} {v} {u} (limit {lim} {u})",
@@ -242,6 +248,12 @@ class _Builder:
 
     def add(self, block) -> None:
         self.doc.blocks.append(block)
+
+    def formula(self, tex: str) -> int:
+        """Add a display formula; its number «(n)» (every writer numbers the document's
+        formulas in their order, ГОСТ 7.32-2017, 6.8.3), which the text cites."""
+        self.add(Formula(tex))
+        return sum(isinstance(x, Formula) for x in self.doc.blocks)
 
     def table(self, caption: str, header, rows) -> None:
         self.n_tables += 1
@@ -413,8 +425,13 @@ def build_document(results, lang: str = "en", plots: list[str] | None = None,
     kA, kM, kx = bal.keys
     dTI, TII, wm = _mt("dT_I", lang), _mt("T_II", lang), _mt("omega_mean", lang)
     b.add(Paragraph(t["signs"]))
-    b.add(Formula(rf"{_mt(kA, lang)} = \oint {_mt(kM, lang)} d\varphi = {g(bal.work, 6)}\,\text{{{u(kA)}}}"))
-    b.add(Formula(rf"{_mt(kx, lang)} = -\frac{{{_mt(kA, lang)}}}{{\Phi}} = {g(bal.moment, 6)}\,\text{{{u(kx)}}}"))
+    nA = b.formula(rf"{_mt(kA, lang)} = \oint {_mt(kM, lang)} d\varphi = {g(bal.work, 6)}\,\text{{{u(kA)}}}")
+    turns = s.cycle_deg // 180                       # Φ = 2π (a crank's turn), 4π (four strokes)
+    cycle = (rf"{'' if turns == 1 else turns}\pi" if s.cycle_deg % 180 == 0
+             else g(math.radians(s.cycle_deg), 6))
+    nM = b.formula(rf"{_mt(kx, lang)} = -\frac{{{_mt(kA, lang)}}}{{\Phi}} = "
+                   rf"{'-' if bal.work > 0 else ''}\frac{{{g(abs(bal.work), 6)}}}{{{cycle}}} = "
+                   rf"{g(bal.moment, 6)}\,\text{{{u(kx)}}}")
     b.add(Formula(rf"{dTI} = A - ({TII} - {TII}(0)), {TII} = \frac{{{_mt('J_II', lang)} {wm}^{{2}}}}{{2}}"))
     b.add(Where(t["where_energy"].format(
         M=sym(kM), M_name=t["where_M"][bal.balance], A_name=nm.bare_name("A", lang),
@@ -422,7 +439,7 @@ def build_document(results, lang: str = "en", plots: list[str] | None = None,
         J_name=nm.bare_name("J_II", lang), w=sym("omega_mean"),
         w_name=nm.bare_name("omega_mean", lang))))
     b.add(Bullets((
-        t["balance"][bal.balance].format(A=sym(kA), M=sym(kM), Mx=sym(kx), vA=g(bal.work, 6),
+        t["balance"][bal.balance].format(A=sym(kA), Mx=sym(kx), vA=g(bal.work, 6), nA=nA, nM=nM,
                                          uJ=u(kA), vM=g(bal.moment, 6), uM=u(kx),
                                          cycle=g(s.cycle_deg, 6))[2:],
         t["extremes"].format(dT=sym("dT_I"), vmax=g(s.delta_T_I_max, 6), amax=g(round(s.phi_delta_T_I_max_deg, 2), 6),
@@ -438,13 +455,23 @@ def build_document(results, lang: str = "en", plots: list[str] | None = None,
 
     # 5. flywheel -----------------------------------------------------------------------------
     b.add(Heading(2, t["sizing"]))
-    JI, dT = _mt("J_required", lang), _mt("delta_T_max", lang)
-    b.add(Formula(rf"{JI} = \frac{{{dT}}}{{\delta \cdot {wm}^{{2}}}} = {g(s.J_required, 6)}\,\text{{{u('J_required')}}}"))
-    b.add(Formula(rf"{_mt('J_flywheel', lang)} = {JI} - ({_mt('J_first_group', lang)}) = "
-                  rf"{g(s.J_flywheel, 6)}\,\text{{{u('J_flywheel')}}}"))
-    b.add(Where(t["where_sizing"].format(dT=sym("delta_T_max"), w=sym("omega_mean"),
-                                         J1=sym("J_first_group"))))
-    b.add(Bullets(tuple(x[2:] for x in _sizing_lines(s, t, lang))))
+    # the numbers put into each formula are those the record prints (seed 000 §4: J_доп =
+    # ΔT/(δ·ω²) − J_10 − J_ред; a given flywheel the other way round)
+    JI, dT, JM = _mt("J_required", lang), _mt("delta_T_max", lang), _mt("J_flywheel", lang)
+    J1, uI = _mt("J_first_group", lang), rf"\,\text{{{u('J_required')}}}"
+    if s.flywheel_given:
+        numbers = (b.formula(rf"{JI} = {JM} + ({J1}) = {g(s.J_flywheel, 6)} + "
+                           rf"{g(s.J_first_group, 6)} = {g(s.J_required, 6)}{uI}"),)
+        b.add(Where(t["where_given"].format(JM=sym("J_flywheel"), J1=sym("J_first_group"))))
+    else:
+        numbers = (b.formula(rf"{JI} = \frac{{{dT}}}{{\delta \cdot {wm}^{{2}}}} = "
+                             rf"\frac{{{g(s.delta_T_max, 6)}}}{{{gi(s.delta)} \cdot "
+                             rf"{g(s.omega_mean, 6)}^{{2}}}} = {g(s.J_required, 6)}{uI}"),
+                   b.formula(rf"{JM} = {JI} - ({J1}) = {g(s.J_required, 6)} - "
+                             rf"{g(s.J_first_group, 6)} = {g(s.J_flywheel, 6)}{uI}"))
+        b.add(Where(t["where_sizing"].format(dT=sym("delta_T_max"), w=sym("omega_mean"),
+                                             J1=sym("J_first_group"))))
+    b.add(Bullets(tuple(x[2:] for x in _sizing_lines(s, t, lang, numbers))))
     b.table(t["sizing_caption"], [t["method"], nm.heading("J_required", lang), nm.heading("J_flywheel", lang),
                                   nm.heading("delta_achieved", lang)],
             [[t["m_merzalov"], g(s.J_required, 6), g(s.J_flywheel, 6), g(s.delta_achieved, 6)],
@@ -504,7 +531,8 @@ def build_document(results, lang: str = "en", plots: list[str] | None = None,
     return b.doc
 
 
-def _sizing_lines(s, t: dict, lang: str) -> list[str]:
+def _sizing_lines(s, t: dict, lang: str, numbers: tuple[int, ...]) -> list[str]:
+    """§5's lines; ``numbers``: the numbers of its formulas (J_I's, then J_M's if sized)."""
     def sym(key):
         return nm.symbol(key, lang)
 
@@ -520,15 +548,16 @@ def _sizing_lines(s, t: dict, lang: str) -> list[str]:
     spec = apart(s.omega_max, s.omega_min)
     w_max, w_min = (g(w, 6) if spec is None else _number(w, spec=spec, zero=1e-13)
                     for w in (s.omega_max, s.omega_min))
-    fw = t["flywheel"].format(JM=sym("J_flywheel"), J=sym("J_required"), J1=sym("J_first_group"),
-                              v=g(s.J_flywheel, 6), uI=uI)
+    fw = (t["flywheel_given"].format(JM=sym("J_flywheel"), v=g(s.J_flywheel, 6), uI=uI)
+          if s.flywheel_given else
+          t["flywheel"].format(JM=sym("J_flywheel"), v=g(s.J_flywheel, 6), uI=uI, n=numbers[-1]))
     if s.flywheel_speed_ratio != 1:
         fw += t["shaft"].format(i=s.flywheel_speed_ratio, v=g(s.flywheel_J_on_its_shaft, 6), uI=uI)
     return [
-        t["given"].format(J=sym("J_required"), v=g(s.J_required, 6), uI=uI,
+        t["given"].format(J=sym("J_required"), v=g(s.J_required, 6), uI=uI, n=numbers[0],
                           d=g(s.delta_achieved, 6)) if s.flywheel_given else
-        t["merzalov"].format(J=sym("J_required"), span=sym("delta_T_max"), w=sym("omega_mean"),
-                             v=g(s.J_required, 6), uI=uI, d=g(s.delta_achieved, 6)),
+        t["merzalov"].format(J=sym("J_required"), v=g(s.J_required, 6), uI=uI, n=numbers[0],
+                             d=g(s.delta_achieved, 6)),
         t["exact"].format(J=sym("J_required_exact"), v=g(s.J_required_exact, 6), uI=uI,
                           d=g(s.delta_achieved_exact, 6)),
         fw,

@@ -1,5 +1,7 @@
 """report.md: the записка (render/document.py) written as Markdown — numbered sections, tables
-with their captions «Таблица N — …», formulas as ``$$ … $$`` (LaTeX), figures «Рис. N — …».
+with their captions «Таблица N — …», formulas as ``$$ … \\tag{n} $$`` (LaTeX; numbered in their
+order through the document, as every writer numbers them: ГОСТ 7.32-2017, 6.8.3), figures
+«Рис. N — …».
 
 Text only: every number comes from the document model, built once from Results.
 """
@@ -21,6 +23,7 @@ def markdown(doc: Document) -> str:
     """The document as Markdown."""
     tab, fig = CAPTION[doc.lang]
     parts: list[str] = []
+    formulas = 0
     for blk in doc.blocks:
         if isinstance(blk, Heading):
             parts.append("#" * blk.level + " " + blk.text + "\n")
@@ -31,7 +34,8 @@ def markdown(doc: Document) -> str:
         elif isinstance(blk, Bullets):
             parts.append("\n".join(f"- {x}" for x in blk.items) + "\n")
         elif isinstance(blk, Formula):
-            parts.append(f"$$ {blk.tex} $$\n")
+            formulas += 1
+            parts.append(f"$$ {blk.tex} \\tag{{{formulas}}} $$\n")
         elif isinstance(blk, Table):
             out = [f"{tab} {blk.number} — {blk.caption}\n",
                    "| " + " | ".join(map(_cell, blk.header)) + " |", "|" + "---|" * len(blk.header)]

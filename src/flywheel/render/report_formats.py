@@ -42,6 +42,7 @@ figure { margin: 1em 0; text-align: center; page-break-inside: avoid; break-insi
 figure img { max-width: 100%; height: auto; }
 figcaption { font-size: 0.9em; margin-top: 0.3em; }
 math[display="block"] { margin: 0.5em 0; }
+.eq { display: flex; align-items: center; } .eq math { flex: 1; } .eqn { margin-left: 1em; }
 .tab { overflow-x: auto; } .wide table { font-size: 0.72em; } .wide th, .wide td { padding: 0.1em 0.25em; }
 @page { size: A4; margin: 18mm 15mm; }
 @page landscape { size: A4 landscape; margin: 15mm 15mm; }
@@ -63,7 +64,7 @@ _TEMPLATE = """<!DOCTYPE html>
 {% if b.kind == "h" %}<h{{ b.level }}>{{ b.html }}</h{{ b.level }}>
 {% elif b.kind == "p" %}<p>{{ b.html }}</p>
 {% elif b.kind == "ul" %}<ul>{% for i in b.entries %}<li>{{ i }}</li>{% endfor %}</ul>
-{% elif b.kind == "f" %}{{ b.mathml }}
+{% elif b.kind == "f" %}<div class="eq" id="formula-{{ b.number }}">{{ b.mathml }}<span class="eqn">({{ b.number }})</span></div>
 {% elif b.kind == "t" %}<div class="tab{{ b.width }}"><p class="caption" id="table-{{ b.number }}">{{ b.label }}</p>
 <table>
 <thead><tr>{% for c in b.header %}<th>{{ c }}</th>{% endfor %}</tr></thead>
@@ -113,8 +114,9 @@ def html_page(doc: Document):
             blocks.append({"kind": "p", "html": _bold_html(b.text)})
         elif isinstance(b, Bullets):
             blocks.append({"kind": "ul", "entries": [_bold_html(i) for i in b.items]})
-        elif isinstance(b, Formula):
-            blocks.append({"kind": "f", "mathml": Markup(mathfmt.mathml(b.tex))})
+        elif isinstance(b, Formula):                    # numbered in order: (1), (2), …
+            number = sum(x["kind"] == "f" for x in blocks) + 1
+            blocks.append({"kind": "f", "number": number, "mathml": Markup(mathfmt.mathml(b.tex))})
         elif isinstance(b, Table):
             n = len(b.header)
             blocks.append({"kind": "t", "number": b.number,
@@ -161,6 +163,7 @@ def typst_source(doc: Document, layout: TypstLayout = TypstLayout()) -> str:
            f'#set page(paper: "a4", {layout.page})',
            f'#set text(lang: "{doc.lang}", size: 10pt)',
            '#set par(justify: false)',
+           '#set math.equation(numbering: "(1)")',     # as the ГОСТ layout: (1), (2), …
            ""]
     for b in doc.blocks:
         if isinstance(b, Heading):
@@ -209,7 +212,7 @@ def docx(doc: Document, plots_dir: Path | None = None) -> bytes:
     import datetime
 
     import docx as pydocx
-    from docx.enum.text import WD_ALIGN_PARAGRAPH
+    from docx.enum.text import WD_ALIGN_PARAGRAPH, WD_TAB_ALIGNMENT
     from docx.oxml import parse_xml
     from docx.table import _Cell
     from docx.shared import Mm, Pt, Twips
@@ -240,6 +243,8 @@ def docx(doc: Document, plots_dir: Path | None = None) -> bytes:
                     if size is not None:
                         r.font.size = size
 
+    text_width = Mm(210 - 2 * 18)
+    formulas = 0
     for b in doc.blocks:
         if isinstance(b, Heading):
             d.add_heading(b.text, level=b.level - 1 if b.level > 1 else 0)
@@ -254,10 +259,15 @@ def docx(doc: Document, plots_dir: Path | None = None) -> bytes:
         elif isinstance(b, Bullets):
             for i in b.items:
                 runs(d.add_paragraph(style="List Bullet"), i)
-        elif isinstance(b, Formula):
+        elif isinstance(b, Formula):        # a native Word equation at a centre tab stop, its
+            formulas += 1                   # number «(n)» at a right one (as report_gost's)
             p = d.add_paragraph()
-            p.alignment = WD_ALIGN_PARAGRAPH.CENTER
-            p._p.append(parse_xml(mathfmt.omml(b.tex)))       # a native Word equation
+            p.paragraph_format.tab_stops.add_tab_stop(text_width // 2, WD_TAB_ALIGNMENT.CENTER)
+            p.paragraph_format.tab_stops.add_tab_stop(text_width, WD_TAB_ALIGNMENT.RIGHT)
+            p.paragraph_format.first_line_indent = 0
+            p.add_run("\t")
+            p._p.append(parse_xml(mathfmt.omml_inline(b.tex)))
+            p.add_run(f"\t({formulas})")
         elif isinstance(b, Table):
             runs(d.add_paragraph(), f"{tab} {b.number} — {b.caption}")
             t = d.add_table(rows=1 + len(b.rows), cols=len(b.header))

@@ -1,0 +1,121 @@
+"""The записка's formulas are numbered in every format and cited by their numbers (ГОСТ
+7.32-2017, 6.8.3: «Ссылки в тексте на порядковые номера формул дают в скобках»), and a
+formula that gives a result shows the numbers put into it (seed 000 §4: J_доп = ΔT/(δ·ω²) −
+J_10 − J_ред). The numbers put in are checked by working the formula again from them: they give
+the printed result to its last printed digit."""
+from __future__ import annotations
+
+import io
+import math
+import re
+from functools import lru_cache
+from pathlib import Path
+
+import pytest
+
+from flywheel.render.blocks import Bullets, Formula
+
+CASES = Path(__file__).resolve().parents[2] / "cases"
+
+
+@lru_cache(maxsize=None)
+def _document(name: str, lang: str = "ru"):
+    from flywheel.cases.run import load_case
+    from flywheel.dynamics.pipeline import analyze
+    from flywheel.render.document import build_document
+    from flywheel.render.numbers import typography
+
+    res = analyze(load_case(CASES / f"{name}.toml"), n_points=720)
+    with typography(lang):
+        return res, build_document(res, lang)
+
+
+def _num(text: str) -> float:
+    """A number as the record prints it («−1241», «0,05», «4 500»)."""
+    return float(text.replace("\u202f", "").replace(",", ".").replace("−", "-"))
+
+
+def _formulas(doc) -> dict[int, str]:
+    tex = [b.tex for b in doc.blocks if isinstance(b, Formula)]
+    return {n: t for n, t in enumerate(tex, 1)}
+
+
+def _cited(doc, pattern: str) -> int:
+    """The number of the formula a bullet cites where ``pattern`` (a regex with one group,
+    the number) matches."""
+    for b in doc.blocks:
+        if isinstance(b, Bullets):
+            for item in b.items:
+                if m := re.search(pattern, item):
+                    return int(m.group(1))
+    raise AssertionError(pattern)
+
+
+N = r"(−?[\d\u202f]+(?:,\d+)?)"
+
+
+def _close(worked: float, printed: str) -> None:
+    """``worked`` (from the printed inputs) agrees with ``printed`` to its last digit."""
+    digits = len(re.sub(r"\D", "", printed.lstrip("−0,").replace(",", "")))
+    assert math.isclose(worked, _num(printed), rel_tol=1.5 * 10 ** (1 - digits)), (worked, printed)
+
+
+def test_the_flywheel_formulas_show_their_numbers_and_the_text_cites_them():
+    res, doc = _document("compressor")
+    f = _formulas(doc)
+    nJ = _cited(doc, r"по Мерцалову, формула \((\d+)\)")
+    nM = _cited(doc, r"маховик, формула \((\d+)\)")
+    m = re.search(rf"\\frac\{{{N}\}}\{{{N} \\cdot {N}\^\{{2\}}\}} = {N}", f[nJ])
+    dT, delta, w, J = m.groups()
+    _close(_num(dT) / (_num(delta) * _num(w) ** 2), J)
+    assert _num(delta) == 0.05 and J == "4,642"        # seed 000 (the worksheet): J_PRI 4,64
+    m = re.search(rf"= {N} - {N} = {N}", f[nM])
+    _close(_num(m.group(1)) - _num(m.group(2)), m.group(3))
+    assert m.group(1) == J and f[nM].startswith("J_М = ")
+    nA = _cited(doc, r"по формуле \((\d+)\); M_Д")
+    nMD = _cited(doc, r"M_Д = [^;]* по формуле \((\d+)\)")
+    assert r"\oint" in f[nA] and f[nMD].startswith("M_Д = ")
+    m = re.search(rf"\\frac\{{{N}\}}\{{2\\pi\}} = {N}", f[nMD])
+    _close(_num(m.group(1)) / (2 * math.pi), m.group(2))
+    assert _num(m.group(2)) == pytest.approx(res.scalars.driving_moment, rel=1e-3)
+
+
+def test_an_engine_finds_its_resistance_over_two_turns():
+    """A four-stroke engine's cycle is 4π: M_С = −A_Д/Φ = −449,7/(4π)."""
+    _, doc = _document("engine_4stroke")
+    f = _formulas(doc)
+    n = _cited(doc, r"M_С = [^;]* по формуле \((\d+)\)")
+    m = re.search(rf"= -\\frac\{{{N}\}}\{{4\\pi\}} = {N}", f[n])
+    _close(-_num(m.group(1)) / (4 * math.pi), m.group(2))
+
+
+def test_a_given_flywheel_adds_up_rather_than_being_sized():
+    """compressor_given_flywheel: the record had written the sizing formula J_I = ΔT_нб/(δ·ω²)
+    = 4,674 and J_М = J_I − (J_10 + J_ред) = 4 for a flywheel that was given: the formula now
+    runs the way the case does, J_I = J_М + (J_10 + J_ред)."""
+    _, doc = _document("compressor_given_flywheel")
+    f = _formulas(doc)
+    n = _cited(doc, r"на валу кривошипа по формуле \((\d+)\)")
+    m = re.search(rf"^J_I = J_М \+ \(J_\{{10\}} \+ J_\{{ред\}}\) = {N} \+ {N} = {N}", f[n])
+    _close(_num(m.group(1)) + _num(m.group(2)), m.group(3))
+    assert not any(r"\delta \cdot" in t for t in f.values())
+
+
+def test_every_writer_numbers_the_formulas_in_their_order():
+    """md, HTML, the plain typst and DOCX number them as the ГОСТ layout does: (1), (2), …"""
+    from docx import Document as Docx
+
+    from flywheel.render import report_formats
+    from flywheel.render.blocks import Document, Heading, Paragraph
+    from flywheel.render.report import markdown
+
+    doc = Document("T", "en")
+    doc.blocks += [Heading(1, "T"), Formula(r"a = b"), Paragraph("x"), Formula(r"c = d")]
+    assert re.findall(r"\\tag\{(\d)\} \$\$", markdown(doc)) == ["1", "2"]
+    page = report_formats.html(doc)
+    assert re.findall(r'<span class="eqn">\((\d)\)</span>', page) == ["1", "2"]
+    assert '#set math.equation(numbering: "(1)")' in report_formats.typst_source(doc)
+    paragraphs = Docx(io.BytesIO(report_formats.docx(doc))).paragraphs
+    numbered = [p for p in paragraphs if p._p.xpath(".//m:oMath")]
+    assert [p.text.strip() for p in numbered] == ["(1)", "(2)"]
+    assert [s.alignment for s in numbered[0].paragraph_format.tab_stops] == [1, 2]  # centre, right
