@@ -112,7 +112,8 @@ def test_a_720_degree_run_writes_every_output(tmp_path):
     assert len(rows) == 24
     phi = np.loadtxt(tmp_path / "o" / "table.csv", delimiter=",", skiprows=1, usecols=0)
     assert phi[0] == 0.0 and phi[-1] == 720.0
-    assert "M_D = −A_C/Φ" in (md := (tmp_path / "o" / "report.md").read_text(encoding="utf-8"))
+    md = (tmp_path / "o" / "report.md").read_text(encoding="utf-8")
+    assert "M_D = -\\frac{A_C}{\\Phi} = \\frac{" in md and "}{4\\pi} = " in md   # Φ = 4π
     assert "Φ = 720°" in md
 
 

@@ -14,6 +14,7 @@ moment equations of the groups, not the lever); the scale rule (1, 2, 2.5, 5 × 
 from __future__ import annotations
 
 import math
+import re
 from pathlib import Path
 
 import numpy as np
@@ -439,7 +440,19 @@ def test_position_numbers_match_the_drawing(name, tmp_path):
     from flywheel.render import nomenclature as nm
 
     assert [lab for lab, _ in want] == [p.label for p in r.position_angles]
-    assert [row[0] for row in tb.rows] == [nm.position_label(p, "ru") for p in r.position_angles]
+    # the tables give the number alone (its angle is the φ column beside it); the record names
+    # the dead centres once, under the first of them, each at its number or its angle
+    assert tb.header[:2] == ("№", "φ, °")
+    _, note = nm.position_cells(r.position_angles, "ru")
+    blocks = build_document(r, "ru").blocks
+    assert [getattr(b, "text", "") for b in blocks].count(note) == 1
+    said = {part.split(" — ")[0].lower(): part.split(" — ")[1] for part in note.rstrip(".").split("; ")}
+    for p in r.position_angles:
+        if p.dead_centres:
+            where = f"положение {p.number}" if p.number is not None else \
+                next(w for w in said if w.startswith("φ = ") and
+                     abs(float(w[4:-1].replace(",", ".")) - math.degrees(p.phi)) < 0.1)
+            assert {dc.slider for dc in p.dead_centres} == set(re.findall(r"\d+", said[where]))
 
 
 def test_point_letters_do_not_touch_on_a_crowded_plan():

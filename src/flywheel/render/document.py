@@ -374,11 +374,17 @@ def build_document(results, lang: str = "en", plots: list[str] | None = None,
     # each position's label, then its number as plan_positions.png draws it (a tabulated
     # case's table has no drawing: no number column)
     numbered = any(p.number is not None for p in results.position_angles)
-    pos = [t["pos"], t["no"]] if numbered else [t["pos"]]
-    idx = [([nm.position_label(p, lang)] + ([] if not numbered else
-                                             ["" if p.number is None else str(p.number)]),
-            results.index_of(p.phi))
-           for p in results.position_angles]
+    pos = [t["no"]] if numbered else [t["pos"]]
+    cells, dead_note = nm.position_cells(results.position_angles, lang)
+    idx = [([c], results.index_of(p.phi)) for c, p in zip(cells, results.position_angles)]
+
+    def positions_table(caption: str, header, body) -> None:
+        """A table of the positions; the dead centres named under the first."""
+        nonlocal dead_note
+        b.table(caption, header, body)
+        if dead_note:
+            b.add(Paragraph(dead_note))
+            dead_note = ""
     vq = [k for k in cols if k.startswith("vq_") and not k.startswith(("vqx_", "vqy_"))]
     wq = [k for k in cols if k.startswith("omega_q_")]
     zero: dict[str, float] = {}
@@ -396,7 +402,7 @@ def build_document(results, lang: str = "en", plots: list[str] | None = None,
         header = pos + [h("phi_deg")] + [f"{sym(k)}{nm.member(k, lang)}" for k in vq + wq]
         body = [[*lab, g(cols["phi_deg"].values[i], 6)] + [at(k, i, 4) for k in vq + wq]
                 for lab, i in idx]
-        b.table(t["kin_caption"], header, body)
+        positions_table(t["kin_caption"], header, body)
         b.figures_of("kin")
     if s.output_link is not None:                        # render/output_link.py
         from flywheel.render.output_link import add_report_section
@@ -416,7 +422,7 @@ def build_document(results, lang: str = "en", plots: list[str] | None = None,
               + [h(k, label=nm.member(k, lang, results.loads.titles, results.loads.labels)) for k in mk] + [h("M_sum")])
     body = [[*lab, g(cols["phi_deg"].values[i], 6), at("J_II", i, 4), at("dJ_II", i, 4)]
             + [at(k, i, 5) for k in mk] + [at("M_sum", i, 5)] for lab, i in idx]
-    b.table(t["red_caption"], header, body)
+    positions_table(t["red_caption"], header, body)
     b.figures_of("red")
 
     # 4. energy -------------------------------------------------------------------------------
@@ -450,7 +456,7 @@ def build_document(results, lang: str = "en", plots: list[str] | None = None,
     header = pos + [h("phi_deg")] + [h(k) for k in energy]
     body = [[*lab, g(cols["phi_deg"].values[i], 6)] + [at(k, i, 6) for k in energy]
             for lab, i in idx]
-    b.table(t["energy_caption"], header, body)
+    positions_table(t["energy_caption"], header, body)
     b.figures_of("energy")
 
     # 5. flywheel -----------------------------------------------------------------------------

@@ -15,7 +15,8 @@ from flywheel.dynamics.plans import link_pair
 from flywheel.render.blocks import Bullets, Heading, Paragraph
 from flywheel.render.catalogue import words
 from flywheel.render.mathfmt import point_name
-from flywheel.render.nomenclature import csv_header, name, position_label, symbol, unit, unit_of
+from flywheel.render.nomenclature import (csv_header, name, position_cells, position_label, symbol,
+                                          unit, unit_of)
 from flywheel.render.numbers import column_zero, fmt as _number, fmt_rows, fmt_text
 
 T = words("forces", {
@@ -286,12 +287,14 @@ def add_report_section(b, results, lang: str = "en") -> None:
         table(t["moments"], [deg, t["power"]], _moment_rows(results))
         return
     keys = list(f.joints)
-    header = [t["pos"], t["no"], deg, My] + [reaction_label(f.joints[k], lang) for k in keys]
+    numbered = any(p.number is not None for p in results.position_angles)
+    header = [t["no"] if numbered else t["pos"], deg, My] + [reaction_label(f.joints[k], lang)
+                                                            for k in keys]
     body = []
-    for pos in results.position_angles:
+    cells, _ = position_cells(results.position_angles, lang)   # the dead centres: named in §2
+    for pos, cell in zip(results.position_angles, cells):
         i = results.index_of(pos.phi)
-        body.append([position_label(pos, lang), "" if pos.number is None else str(pos.number),
-                     _g(math.degrees(pos.phi), 6),
+        body.append([cell, _g(math.degrees(pos.phi), 6),
                      _g(float(fa.balancing_moment[i]), 6)]
                     + [_g(float(fa.joints[k].magnitude[i]), 5) for k in keys])
     table(t["positions"], header, body)

@@ -56,10 +56,9 @@ def build_kinematics_document(results, lang: str = "en", plots: list[str] | None
 
     cols = results.columns
     numbered = any(p.number is not None for p in results.position_angles)
-    pos = [t["pos"], t["no"]] if numbered else [t["pos"]]
-    idx = [([nm.position_label(p, lang)] + ([] if not numbered else
-                                             ["" if p.number is None else str(p.number)]),
-            results.index_of(p.phi)) for p in results.position_angles]
+    pos = [t["no"]] if numbered else [t["pos"]]
+    cells, dead_note = nm.position_cells(results.position_angles, lang)
+    idx = [([c], results.index_of(p.phi)) for c, p in zip(cells, results.position_angles)]
     vq = [c for c in cols if c.startswith("vq_")]
     wq = [c for c in cols if c.startswith("omega_q_")]
     b.add(Heading(2, t["kin"]))
@@ -69,6 +68,8 @@ def build_kinematics_document(results, lang: str = "en", plots: list[str] | None
     body = [[*lab, g(cols["phi_deg"].values[i], 6)] + [g(cols[c].values[i], 4) for c in vq + wq]
             for lab, i in idx]
     b.table(t["kin_caption"], header, body)
+    if dead_note:
+        b.add(Paragraph(dead_note))
     b.figures_of("kin")
     if results.output_link is not None:
         from flywheel.render.output_link import add_report_section
