@@ -15,8 +15,7 @@ from flywheel.dynamics.plans import link_pair
 from flywheel.render.blocks import Bullets, Heading, Paragraph
 from flywheel.render.catalogue import words
 from flywheel.render.mathfmt import point_name
-from flywheel.render.nomenclature import (csv_header, name, position_cells, position_label, symbol,
-                                          unit, unit_of)
+from flywheel.render.nomenclature import csv_header, name, position_cells, symbol, unit, unit_of
 from flywheel.render.numbers import column_zero, fmt as _number, fmt_rows, fmt_text
 
 T = words("forces", {
@@ -274,24 +273,27 @@ def add_report_section(b, results, lang: str = "en") -> None:
     def table(caption, header, rows):
         b.table(caption, _cells(header), [_cells(r) for r in rows])
 
+    # each position by its number (its dead centres are named under the record's first table
+    # of the positions, §2), or a tabulated case's by its row's label
+    cells, _ = position_cells(results.position_angles, lang)
+    first = t["no"] if any(p.number is not None for p in results.position_angles) else t["pos"]
+
     if fa is None:
         parts_of = [k for k in ("M_st", "M_dyn") if k in results.columns]    # seed 004's Мст, Мдин
-        header = [t["pos"], deg] + [_h(symbol(k, lang), unit_of(k, lang), lang) for k in parts_of] + [My]
+        header = ([first, deg]
+                  + [_h(symbol(k, lang), unit_of(k, lang), lang) for k in parts_of] + [My])
         body = []
-        for pos in results.position_angles:
+        for pos, cell in zip(results.position_angles, cells):
             i = results.index_of(pos.phi)
-            body.append([position_label(pos, lang), _g(math.degrees(pos.phi), 6)]
+            body.append([cell, _g(math.degrees(pos.phi), 6)]
                         + [_g(float(results.columns[k].values[i]), 6) for k in parts_of]
                         + [_g(float(f.M_y_power[i]), 6)])
         table(t["tab_positions"], header, body)
         table(t["moments"], [deg, t["power"]], _moment_rows(results))
         return
     keys = list(f.joints)
-    numbered = any(p.number is not None for p in results.position_angles)
-    header = [t["no"] if numbered else t["pos"], deg, My] + [reaction_label(f.joints[k], lang)
-                                                            for k in keys]
+    header = [first, deg, My] + [reaction_label(f.joints[k], lang) for k in keys]
     body = []
-    cells, _ = position_cells(results.position_angles, lang)   # the dead centres: named in §2
     for pos, cell in zip(results.position_angles, cells):
         i = results.index_of(pos.phi)
         body.append([cell, _g(math.degrees(pos.phi), 6),
