@@ -13,7 +13,7 @@ from __future__ import annotations
 
 from flywheel.render.blocks import sentence
 from flywheel.render.catalogue import words
-from flywheel.render.document import Bullets, Document, Figure, Formula, Heading, Paragraph, Where
+from flywheel.render.document import T as RECORD, Bullets, Document, Figure, Formula, Heading, Paragraph, Where
 from flywheel.render.nomenclature import name as text, rotor_name, unit
 from flywheel.render.numbers import fmt as _number, separator
 from flywheel.units import RPM_PER_RAD_S, TWO_PI
@@ -98,9 +98,9 @@ def build_aggregate_document(r, title: str, source: str, lang: str = "en",
     ch = r.chain
     names = [rotor_name(n, lang) for n in ch.names]
     add(Heading(2, t["given"]))
-    table(t["rotors"], ["#", L("rotor"), f"J_{'пр' if lang == 'ru' else 'reduced'}, {U('kg·m²')}", "u"],
+    table(t["rotors"], [RECORD[lang]["no"], L("rotor"), f"J_{'пр' if lang == 'ru' else 'reduced'}, {U('kg·m²')}", "u"],
           [[k + 1, n, g(j), g(u)] for k, (n, j, u) in enumerate(zip(names, ch.J, ch.ratio))])
-    table(t["connections"], ["#", L("between"), f"c, {U('N·m/rad')}", f"b, {U('N·m·s/rad')}"],
+    table(t["connections"], [RECORD[lang]["no"], L("between"), f"c, {U('N·m/rad')}", f"b, {U('N·m·s/rad')}"],
           [[k + 1, f"{names[i]} – {names[j]}", g(c), g(b)]
            for k, (c, b, (i, j)) in enumerate(zip(ch.c, ch.damping, ch.pairs))])
     dr = r.drive

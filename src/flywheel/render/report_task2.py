@@ -18,7 +18,7 @@ import math
 
 from flywheel.render.blocks import sentence
 from flywheel.render.catalogue import words
-from flywheel.render.document import Bullets, Document, Figure, Formula, Heading, Paragraph, Where
+from flywheel.render.document import T as RECORD, Bullets, Document, Figure, Formula, Heading, Paragraph, Where
 from flywheel.render.nomenclature import name as text, symbol, unit
 from flywheel.render.numbers import fmt as _number
 
@@ -203,7 +203,7 @@ def build_task2_document(r, title: str, source: str, lang: str = "en",
     if not r.steady:
         add(Paragraph(t["steady_no"].format(work=g(r.work_end), omega_end=g(r.omega_end, ".6f"))))
     table(t["segments_caption"],
-          ["#", f"φ, {U('deg')}", "φ/π", text("point", lang), f"{MD}, {U('N·m')}",
+          [RECORD[lang]["no"], f"φ, {U('deg')}", "φ/π", text("point", lang), f"{MD}, {U('N·m')}",
            f"{MC}, {U('N·m')}", f"A, {U('J')}", f"ω, {U('rad/s')}"],
           [[str(i), _deg(row.phi), "—" if math.isnan(row.phi) else g(row.phi / math.pi),
             text("crossing_MD_MC", lang) if row.kind == "crossing" and row.M_D is not None
@@ -238,7 +238,7 @@ def build_task2_document(r, title: str, source: str, lang: str = "en",
                [text("t2_cycle_time", lang), g(r.cycle_time), U("s"), ""]])
         if r.phases:
             table(t["phases_caption"],
-                  ["#", f"φ₁, {U('deg')}", f"φ₂, {U('deg')}", text("trend", lang),
+                  [RECORD[lang]["no"], f"φ₁, {U('deg')}", f"φ₂, {U('deg')}", text("trend", lang),
                    f"t, {U('s')}", f"Δt, {U('s')}"],
                   [[str(i), _deg(p.phi_start), _deg(p.phi_end), text(f"trend_{p.trend}", lang),
                     g(p.t_start), g(p.duration)] for i, p in enumerate(r.phases)])
