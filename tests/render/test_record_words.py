@@ -146,6 +146,12 @@ def _other_document(name: str, lang: str = "ru"):
 def test_a_russian_task2_aggregate_duty_record_has_no_developer_text(name):
     c, doc = _other_document(name)
     _check(doc, CASES / f"{name}.toml", in_language(c.source, "ru"))
+    # a table's rows numbered under «№», as the run's record numbers its positions (task2's
+    # segments and phases, the aggregate's rotors and connections had a bare «#»)
+    assert not [tb.caption for tb in doc.tables if "#" in tb.header]
+    numbered = [tb.header[0] for tb in doc.tables if tb.header[1:2] in (("φ, °",), ("φ₁, °",))
+                or "между" in tb.header]
+    assert numbered.count("№") >= (1 if name.startswith(("task2", "aggregate")) else 0)
 
 
 def test_every_bundled_case_gives_its_title_and_source_in_both_languages():
