@@ -33,7 +33,7 @@ def test_run_writes_every_output(tmp_path):
                                               ".flywheel-manifest.json"}
     report = (out / "report.md").read_text(encoding="utf-8")
     assert report.startswith("# Dynamic analysis: Two-stage V-type air compressor")
-    assert "ΔT_нб = " in report and "## 5. Flywheel" in report and "## 6. True velocities" in report
+    assert "ΔT_max = " in report and "ΔT_нб" not in report and "## 5. Flywheel" in report and "## 6. True velocities" in report
     assert "J_I" in res.output and "written" in res.output
     header = (out / "table.csv").read_text(encoding="utf-8").splitlines()[0]
     assert header.startswith("phi_deg [deg],") and "J_II [kg·m²]" in header and "omega [rad/s]" in header

@@ -61,7 +61,7 @@ def test_given_peak_says_not_steady():
 def test_summary_shows_the_table():
     res = run("--profile", "triangle")
     assert res.exit_code == 0
-    for text in ("M_D = M_C", "112.5", "247.5", "199.988955", "0.000110447", "ΔT_нб"):
+    for text in ("M_D = M_C", "112.5", "247.5", "199.988955", "0.000110447", "ΔT_max"):
         assert text in res.stdout
 
 

@@ -65,7 +65,7 @@ def _check_energy_mass(results, lang="en"):
     assert any(x.get_text().startswith(f"$J_I$ = {s.J_required_exact:.5g}") for x in full.texts)
     assert zoom.get_xlabel() == J_axis
     assert merz.get_xlabel() == nm.axis("phi_deg", lang) == (r"$\varphi$, °" if lang == "ru" else r"$\varphi$ [deg]")
-    assert r"$\Delta T_{нб}$" in " ".join(x.get_text() for x in merz.get_legend().get_texts())
+    assert (r"$\Delta T_{нб}$" if lang == "ru" else r"$\Delta T_{max}$") in " ".join(x.get_text() for x in merz.get_legend().get_texts())
 
 
 def test_energy_mass_diagram(results):

@@ -68,8 +68,8 @@ def test_the_bank_holds_one_question_per_answer_with_its_tolerance(made):
             assert q["text"].startswith(f"[flywheel {vid} {a}]")
             assert q["multiplier"] == 1
     assert by["01 delta_T_max"]["unit"] == "J" and by["01 J_required"]["unit"] == "kg·m²"
-    # the question's HTML sets a symbol's subscript as the task sheet does (not «ΔT_нб»)
-    assert "ΔT<sub>нб</sub>" in by["01 delta_T_max"]["text"]
+    # the question's HTML sets a symbol's subscript as the task sheet does (not «ΔT_max»)
+    assert "ΔT<sub>max</sub>" in by["01 delta_T_max"]["text"]
     assert "M<sub>D</sub>" in by["01 driving_moment"]["text"]
 
 
@@ -166,7 +166,7 @@ def test_each_question_shows_its_formula_after_the_attempt(made, tmp_path):
     qs = {q["name"].split()[1]: q for q in questions(made / "quiz.xml") if q["name"].startswith("01")}
     assert qs["J_flywheel"]["general"] == ("How it is computed: J<sub>M</sub> = J<sub>I</sub> − "
                                            "(J<sub>10</sub> + J<sub>red</sub>)")
-    assert qs["J_required"]["general"].endswith("J<sub>I</sub> = ΔT<sub>нб</sub>/(δ·ω<sub>m</sub>²)")
+    assert qs["J_required"]["general"].endswith("J<sub>I</sub> = ΔT<sub>max</sub>/(δ·ω<sub>m</sub>²)")
     assert qs["flywheel_disk.D"]["general"] == ("How it is computed: disk: J = π·ρ·b·D⁴/32, "
                                                 "b = ψ·D, so D = ⁵√(32·J/(π·ρ·ψ))")
     res = runner.invoke(app, ["variants", "cases/variants_task2.toml", "--count", "1", "--seed",

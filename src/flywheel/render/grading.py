@@ -65,9 +65,9 @@ FORMULAS_RUN = words("formula_run", {
     "balancing_moment": "the cycle condition: A_D + A_C = 0 over the cycle, M = −A(Φ)/Φ",
     "driving_moment": "the cycle condition: A_D + A_C = 0 over the cycle, M_D = −A_C/Φ",
     "cycle_work_resistance": "the cycle condition: A_D + A_C = 0 over the cycle",
-    "delta_T_max": "ΔT_нб = max ΔT_I − min ΔT_I over the whole cycle, "
+    "delta_T_max": "ΔT_max = max ΔT_I − min ΔT_I over the whole cycle, "
                    "ΔT_I = A − (T_II − T_II(0))",
-    "J_required": "J_I = ΔT_нб/(δ·ω_m²)",
+    "J_required": "J_I = ΔT_max/(δ·ω_m²)",
     "J_flywheel": "J_M = J_I − (J_10 + J_red)",
     "flywheel_J_on_its_shaft": "J_M reduced to the flywheel's shaft: J_M/i²",
     # a flywheel's dimensions (dynamics/sizing.py; the course's D = 0.366·J^(1/5) is this
@@ -84,11 +84,11 @@ FORMULAS_RUN = words("formula_run", {
 FORMULAS_TASK2 = words("formula_task2", {
     "M_C": "the cycle condition: ∮M_D dφ = ∮M_C dφ",
     "M_D": "the cycle condition: ∮M_D dφ = ∮M_C dφ",
-    "delta_T_max": "ΔT_нб = A_max − A_min, A(φ) = ∫(M_D − M_C) dφ",
+    "delta_T_max": "ΔT_max = A_max − A_min, A(φ) = ∫(M_D − M_C) dφ",
     "omega_max": "ω_max = √(ω₀² + 2·A_max/J)",
     "omega_min": "ω_min = √(ω₀² + 2·A_min/J)",
-    "delta": "δ = ΔT_нб/(J·ω_m²)",
-    "J_required": "J = ΔT_нб/(δ·ω_m²)",
+    "delta": "δ = ΔT_max/(J·ω_m²)",
+    "J_required": "J = ΔT_max/(δ·ω_m²)",
     "rim_mass": "m = J/R²",
 })
 

@@ -172,7 +172,7 @@ def build_task2_document(r, title: str, source: str, lang: str = "en",
     add(Paragraph(t["method_note"]))
     md, mc = _sub("M", "D", "Д", lang), _sub("M", "C", "С", lang)
     J = _sub("J", "", "пр", lang) if lang == "ru" else "J"
-    wm, dT = _sub(r"\omega", "ср", "ср", lang), _sub(r"\Delta T", "нб", "нб", lang)
+    wm, dT = _sub(r"\omega", "m", "ср", lang), _sub(r"\Delta T", "max", "нб", lang)
     add(Formula(rf"A(\varphi) = \int_{{0}}^{{\varphi}} ({md} - {mc}) d\varphi = "
                 rf"\frac{{{J} (\omega^{{2}} - \omega_{{0}}^{{2}})}}{{2}}"))
     add(Formula(rf"\omega(\varphi) = \sqrt{{\omega_{{0}}^{{2}} + \frac{{2A(\varphi)}}{{{J}}}}}"))
