@@ -327,3 +327,25 @@ def test_the_groups_column_of_the_moments_says_what_it_holds(lang, head):
     a = res.at[0]
     assert groups == pytest.approx(kin - res.scalars.J_required * a.epsilon, rel=2e-3)
     assert abs(groups - kin) > 100                    # the two differ: the header must say why
+
+
+#: a Cyrillic letter (the course's subscripts нб, ср, ц in an English document)
+CYRILLIC = re.compile(r"[А-Яа-яЁё]")
+
+
+@pytest.mark.parametrize("name", ["compressor", "engine_4stroke", "shaper",
+                                  "task2_seed_triangle", "task2_khurmi_16_4"])
+def test_an_english_record_writes_no_cyrillic(name):
+    """English records had written the course's ΔT_нб (and task 2's ω_ср, T_ц) beside M_D,
+    ω_m, J_red: every symbol of an English record is English now (ΔT_max, ω_m, T_c). The case's
+    own title and source, quoted, may be Russian."""
+    if name.startswith("task2"):
+        c, doc = _other_document(name, "en")
+    else:
+        c, _, doc = _run_document(name, "en")
+    quoted = [in_language(c.title, "en"), in_language(c.source, "en")]
+    text = markdown(doc)
+    for q in quoted:
+        text = text.replace(q, "")
+    body = text.split("## Sources")[0]
+    assert not [ln for ln in body.splitlines() if CYRILLIC.search(ln)], name
