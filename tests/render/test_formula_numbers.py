@@ -119,3 +119,34 @@ def test_every_writer_numbers_the_formulas_in_their_order():
     numbered = [p for p in paragraphs if p._p.xpath(".//m:oMath")]
     assert [p.text.strip() for p in numbered] == ["(1)", "(2)"]
     assert [s.alignment for s in numbered[0].paragraph_format.tab_stops] == [1, 2]  # centre, right
+
+
+@pytest.mark.parametrize("name", ["task2_seed_triangle", "task2_khurmi_16_4", "task2_khurmi_16_3",
+                                  "task2_readme_press"])
+def test_task2_puts_its_found_values_into_the_method_formulas(name):
+    """Task 2's solution works ω_ср, δ (and J_пр where a δ is asked) with the numbers printed
+    in its results table, citing the method's formulas by number; each gives its result again
+    from the numbers put in."""
+    from flywheel.cases.task2 import load_task2_case, solve_case
+    from flywheel.render.blocks import Paragraph
+    from flywheel.render.numbers import typography
+    from flywheel.render.report_task2 import build_task2_document
+
+    case = load_task2_case(CASES / f"{name}.toml")
+    r = solve_case(case, name)
+    with typography("ru"):
+        doc = build_task2_document(r, "T", "S", "ru")
+    f = _formulas(doc)
+    k = next(i for i, b in enumerate(doc.blocks) if isinstance(b, Paragraph)
+             and b.text.startswith("Подстановка найденных значений"))
+    cited = [int(n) for n in re.findall(r"\((\d+)\)", doc.blocks[k].text)]
+    assert r"\delta = \frac{\omega_{max} - \omega_{min}}" in f[cited[0]]
+    worked = [b.tex for b in doc.blocks[k + 1:k + 4] if isinstance(b, Formula)]
+    m = re.search(rf"\\frac\{{{N} \+ {N}\}}\{{2\}} = {N}", worked[0])
+    _close((_num(m.group(1)) + _num(m.group(2))) / 2, m.group(3))
+    m = re.search(rf"\\delta = \\frac\{{{N} - {N}\}}\{{{N}\}} = {N}", worked[1])
+    _close((_num(m.group(1)) - _num(m.group(2))) / _num(m.group(3)), m.group(4))
+    if r.J_required is not None:
+        assert len(cited) == 2 and r"\delta \omega" in f[cited[1]]
+        m = re.search(rf"\\frac\{{{N}\}}\{{{N} \\cdot {N}\^\{{2\}}\}} = {N}", worked[2])
+        _close(_num(m.group(1)) / (_num(m.group(2)) * _num(m.group(3)) ** 2), m.group(4))

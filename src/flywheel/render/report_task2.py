@@ -43,6 +43,9 @@ T = words("report_task2", {
     "where_time": ";\nε the angular acceleration, t the time from φ = 0",
     "solution": "3. Solution", "segments_caption": "Segments: works and speeds at the breakpoints and crossings",
     "results_caption": "Results",
+    # the found values put into the method's formulas, as a solution is written by hand
+    "put_one": "The values found, put into formula ({n}):",
+    "put_two": "The values found, put into formulas ({n}) and ({m}):",
     "motion": "4. Acceleration, phases and time", "motion_caption": "Acceleration and cycle time",
     "phases_caption": "Phases between the extremes of ω",
     "at_caption": "The motion at the asked angles",
@@ -179,11 +182,14 @@ def build_task2_document(r, title: str, source: str, lang: str = "en",
     add(Formula(rf"{wm} = \frac{{\omega_{{max}} + \omega_{{min}}}}{{2}}, "
                 rf"\delta = \frac{{\omega_{{max}} - \omega_{{min}}}}{{{wm}}}, "
                 rf"{dT} = A_{{max}} - A_{{min}}"))
+    n_speed = sum(isinstance(b, Formula) for b in doc.blocks)     # its number, (3)
     if r.driving is not None:
         add(Formula(rf"\varepsilon(\varphi) = \frac{{{md} - {mc}}}{{{J}}}, "
                     rf"t(\varphi) = \int_{{0}}^{{\varphi}} \frac{{d\varphi}}{{\omega}}"))
+    n_J = None
     if r.J_required is not None:
         add(Formula(rf"{J} = \frac{{{dT}}}{{\delta {wm}^{{2}}}}"))
+        n_J = sum(isinstance(b, Formula) for b in doc.blocks)
     add(Where(t["where"].format(MD=symbol("t2_M_D", lang), MC=symbol("t2_M_C", lang),
                                 J=symbol("t2_J", lang), wm=symbol("t2_omega_mean", lang),
                                 dT=symbol("t2_delta_T_max", lang))
@@ -228,6 +234,15 @@ def build_task2_document(r, title: str, source: str, lang: str = "en",
         res.append([text("t2_energy_fluctuation_coefficient", lang),
                     g(r.energy_fluctuation_coefficient), "", ""])
     table(t["results_caption"], [t["quantity"], t["value"], t["unit"], f"φ, {U('deg')}"], res)
+    # the numbers put in are those printed above, so a teacher checks each with a calculator
+    w_max, w_min, w_m = (g(w, ".6f") for w in (r.omega_max, r.omega_min, r.omega_mean))
+    add(Paragraph(t["put_one"].format(n=n_speed) if n_J is None else
+                  t["put_two"].format(n=n_speed, m=n_J)))
+    add(Formula(rf"{wm} = \frac{{{w_max} + {w_min}}}{{2}} = {w_m}\,\text{{{U('rad/s')}}}"))
+    add(Formula(rf"\delta = \frac{{{w_max} - {w_min}}}{{{w_m}}} = {g(r.delta)}"))
+    if n_J is not None:
+        add(Formula(rf"{J} = \frac{{{g(r.delta_T_max)}}}{{{g(r.delta_target)} \cdot "
+                    rf"{g(r.omega_mean)}^{{2}}}} = {g(r.J_required)}\,\text{{{U('kg·m²')}}}"))
 
     # 4. motion -------------------------------------------------------------------------------
     if r.driving is not None:
