@@ -530,7 +530,7 @@ def test_cli_new_cases_run(tmp_path):
         assert res.exit_code == 0, (name, res.output)
         assert (tmp_path / f"{name}.png").stat().st_size > 1000
     power = _run("--case", CASES / "task2_khurmi_16_9_power.toml")
-    assert "mean power P = 20000 W at ω_ср: mean M_D = P/ω_ср = 636.62 N·m" in power.stdout
+    assert "mean power P = 20000 W at ω_m: mean M_D = P/ω_m = 636.62 N·m" in power.stdout
     mass = _run("--case", CASES / "task2_khurmi_16_3.toml")
     assert "mass at k = 2 m" in mass.stdout and "5628.95" in mass.stdout
     assert "C_E = ΔT_нб" in mass.stdout
