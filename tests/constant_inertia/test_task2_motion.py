@@ -533,4 +533,4 @@ def test_cli_new_cases_run(tmp_path):
     assert "mean power P = 20000 W at ω_m: mean M_D = P/ω_m = 636.62 N·m" in power.stdout
     mass = _run("--case", CASES / "task2_khurmi_16_3.toml")
     assert "mass at k = 2 m" in mass.stdout and "5628.95" in mass.stdout
-    assert "C_E = ΔT_нб" in mass.stdout
+    assert "C_E = ΔT_max" in mass.stdout
