@@ -253,8 +253,12 @@ def test_ctrl_c_stops_every_share_and_the_run_says_so(tmp_path):
                f"    Path({str(pids)!r}, str(os.getpid())).write_text('')\n"
                f"    time.sleep(120)\n")
     root = _tree(tmp_path, {f"test_s{n}.py": sleeper.replace("{n}", str(n)) for n in (1, 2)})
+    # Ctrl-C as a terminal sends it to a foreground run: SIGINT's default restored for the
+    # runner (a suite started in the background, `cmd &`, hands its children SIGINT ignored,
+    # and the runner would never see this one)
     proc = subprocess.Popen([sys.executable, str(TOOL), "--root", str(root), "-n", "2", "--all"],
-                            stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+                            stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
+                            preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
     deadline = time.monotonic() + 60
     while len(list(pids.iterdir())) < 2 and time.monotonic() < deadline:
         time.sleep(0.05)
