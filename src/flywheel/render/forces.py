@@ -15,7 +15,8 @@ from flywheel.dynamics.plans import link_pair
 from flywheel.render.blocks import Bullets, Heading, Paragraph
 from flywheel.render.catalogue import words
 from flywheel.render.mathfmt import point_name
-from flywheel.render.nomenclature import csv_header, name, position_cells, symbol, unit, unit_of
+from flywheel.render.nomenclature import csv_header, name, symbol, unit, unit_of
+from flywheel.render.positions import position_cells
 from flywheel.render.numbers import column_zero, fmt as _number, fmt_rows, fmt_text
 
 T = words("forces", {
