@@ -334,12 +334,14 @@ CYRILLIC = re.compile(r"[А-Яа-яЁё]")
 
 
 @pytest.mark.parametrize("name", ["compressor", "engine_4stroke", "shaper",
-                                  "task2_seed_triangle", "task2_khurmi_16_4"])
+                                  "task2_seed_triangle", "task2_khurmi_16_4", "aggregate",
+                                  "duty_khurmi_16_19_punch"])
 def test_an_english_record_writes_no_cyrillic(name):
-    """English records had written the course's ΔT_нб (and task 2's ω_ср, T_ц) beside M_D,
-    ω_m, J_red: every symbol of an English record is English now (ΔT_max, ω_m, T_c). The case's
-    own title and source, quoted, may be Russian."""
-    if name.startswith("task2"):
+    """English records had written the course's ΔT_нб (task 2's ω_ср, T_ц; the aggregate's
+    ω_ср, ω_в and its rotors J_Д, J_пр.I; the duty cycle's ω_ср) beside M_D, ω_m, J_red: every
+    symbol of an English record is English now (ΔT_max, ω_m, T_c, ω_f, J_D, J_red.I). The
+    case's own title and source, quoted, may be Russian."""
+    if name.startswith(("task2", "aggregate", "duty")):
         c, doc = _other_document(name, "en")
     else:
         c, _, doc = _run_document(name, "en")

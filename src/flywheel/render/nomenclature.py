@@ -743,14 +743,17 @@ def name(key: str, lang: str = "en", **fields) -> str:
     return template.format(**typeset_params(fields)) if fields else template
 
 
+#: the two-mass model's rotors as English writes them (their names in summary.json keep the
+#: course's J_Д and J_пр.I, cases/aggregate.py)
+ROTORS_EN = {"rotor_motor": "motor J_D", "rotor_machine": "machine J_red.I"}
+
+
 def rotor_name(rotor: str, lang: str = "en") -> str:
     """A rotor's name in ``lang`` (`flywheel aggregate`): the two-mass model's own names
-    translate, a user's stay."""
-    if lang != "ru":
-        return rotor
+    translate (English subscripts in English), a user's stay."""
     for key in ("rotor_motor", "rotor_machine"):
         if rotor == TERMS[key].en:
-            return TERMS[key].ru
+            return TERMS[key].ru if lang == "ru" else ROTORS_EN[key]
     return rotor
 
 

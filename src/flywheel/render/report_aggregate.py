@@ -51,9 +51,9 @@ T = words("report_aggregate", {
     "where": ("where a_ij, b_ij, c_ij are the inertia, damping and stiffness coefficients, "
               "q_j the generalised coordinates, Q_i the generalised forces;\n"
               "ω a natural circular frequency, f the same in hertz"),
-    "where_drive": (";\nω_max, ω_min, ω_ср the greatest, least and mean angular velocities of "
+    "where_drive": (";\nω_max, ω_min, ω_m the greatest, least and mean angular velocities of "
                     "shaft I, δ the coefficient of speed fluctuation;\n"
-                    "ω_в the forcing frequency, ω_n the natural frequency of mode n, Δ the margin "
+                    "ω_f the forcing frequency, ω_n the natural frequency of mode n, Δ the margin "
                     "from resonance"),
     # the generalised coordinates of the equations below (the terminal prints them with the
     # equations in one line: render/aggregate.py, the nomenclature's ag_equations*)
@@ -123,8 +123,9 @@ def build_aggregate_document(r, title: str, source: str, lang: str = "en",
                 r"c_{ij} q_{j}) = Q_{i}"))
     add(Formula(r"\text{det}(c_{ij} - \omega^{2} a_{ij}) = 0, f = \frac{\omega}{2\pi}"))
     if dr is not None:
-        add(Formula(r"\delta = \frac{\omega_{max} - \omega_{min}}{\omega_{\text{ср}}}, "
-                    r"\Delta = |1 - \frac{\omega_{\text{в}}}{\omega_{n}}|"))
+        wm, wf = ("ср", "в") if lang == "ru" else ("m", "f")     # mean; forcing (вынуждающая)
+        add(Formula(rf"\delta = \frac{{\omega_{{max}} - \omega_{{min}}}}{{\omega_{{\text{{{wm}}}}}}}, "
+                    rf"\Delta = |1 - \frac{{\omega_{{\text{{{wf}}}}}}}{{\omega_{{n}}}}|"))
     add(Where(t["where"] + (t["where_drive"] if dr is not None else "") + "."))
 
     # 3. coefficients -------------------------------------------------------------------------

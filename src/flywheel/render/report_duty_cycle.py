@@ -31,7 +31,7 @@ T = words("report_duty_cycle", {
               "J the flywheel's moment of inertia, m its mass, k its radius of gyration, v the "
               "speed at the radius k;\n"
               "ω_max, ω_min the shaft's angular velocities at the start and the end of the "
-              "operation, ω_ср their mean, δ the coefficient of speed fluctuation;\n"
+              "operation, ω_m their mean, δ the coefficient of speed fluctuation;\n"
               "{trec} the time in which the motor brings the speed back"),
     "where_rim": (";\n{D} the rim's mean diameter, {k} its share of J, {m} its mass, R its mean "
                   "radius, ρ the density, b, t the rim's width and thickness, σ its hoop stress"),
@@ -51,7 +51,7 @@ def build_duty_cycle_document(r, title: str, source: str, lang: str = "en") -> D
     add(Paragraph(t["method_note"]))
     MD = r"M_{\text{Д}}" if lang == "ru" else r"M_{D}"
     top = r"t_{\text{оп}}" if lang == "ru" else r"t_{op}"
-    wm = r"\omega_{\text{ср}}"
+    wm = r"\omega_{\text{ср}}" if lang == "ru" else r"\omega_{m}"
     add(Formula(rf"\Delta E = E - P {top}, P = {MD} {wm}"))
     add(Formula(rf"\Delta E = \frac{{J (\omega_{{max}}^{{2}} - \omega_{{min}}^{{2}})}}{{2}} = "
                 rf"J {wm}^{{2}} \delta, \delta = \frac{{\omega_{{max}} - \omega_{{min}}}}{{{wm}}}"))
