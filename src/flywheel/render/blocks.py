@@ -133,6 +133,12 @@ class Document:
         self.blocks.append(Table(len(self.tables) + 1, caption, tuple(header),
                                  tuple(tuple(str(c) for c in r) for r in rows)))
 
+    def add_formula(self, tex: str) -> int:
+        """Append a display formula; its number «(n)», which the text cites: every writer
+        numbers the document's formulas in their order (ГОСТ 7.32-2017, 6.8.3)."""
+        self.blocks.append(Formula(tex))
+        return sum(isinstance(b, Formula) for b in self.blocks)
+
     @classmethod
     def titled(cls, heading: str, title: str, source: str, source_word: str,
                lang: str) -> "Document":

@@ -251,10 +251,9 @@ class _Builder:
         self.doc.blocks.append(block)
 
     def formula(self, tex: str) -> int:
-        """Add a display formula; its number «(n)» (every writer numbers the document's
-        formulas in their order, ГОСТ 7.32-2017, 6.8.3), which the text cites."""
-        self.add(Formula(tex))
-        return sum(isinstance(x, Formula) for x in self.doc.blocks)
+        """Add a display formula; its number «(n)», which the text cites
+        (:meth:`~flywheel.render.blocks.Document.add_formula`)."""
+        return self.doc.add_formula(tex)
 
     def table(self, caption: str, header, rows) -> None:
         self.n_tables += 1

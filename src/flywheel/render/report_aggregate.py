@@ -13,7 +13,8 @@ from __future__ import annotations
 
 from flywheel.render.blocks import sentence
 from flywheel.render.catalogue import words
-from flywheel.render.document import T as RECORD, Bullets, Document, Figure, Formula, Heading, Paragraph, Where
+from flywheel.render.document import (T as RECORD, Bullets, Document, Figure, Formula, Heading,
+                                      Paragraph, Where)
 from flywheel.render.nomenclature import name as text, rotor_name, unit
 from flywheel.render.numbers import fmt as _number, separator
 from flywheel.units import RPM_PER_RAD_S, TWO_PI

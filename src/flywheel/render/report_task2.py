@@ -18,7 +18,8 @@ import math
 
 from flywheel.render.blocks import sentence
 from flywheel.render.catalogue import words
-from flywheel.render.document import T as RECORD, Bullets, Document, Figure, Formula, Heading, Paragraph, Where
+from flywheel.render.document import (T as RECORD, Bullets, Document, Figure, Formula, Heading,
+                                      Paragraph, Where)
 from flywheel.render.nomenclature import name as text, symbol, unit
 from flywheel.render.numbers import fmt as _number
 
@@ -179,17 +180,15 @@ def build_task2_document(r, title: str, source: str, lang: str = "en",
     add(Formula(rf"A(\varphi) = \int_{{0}}^{{\varphi}} ({md} - {mc}) d\varphi = "
                 rf"\frac{{{J} (\omega^{{2}} - \omega_{{0}}^{{2}})}}{{2}}"))
     add(Formula(rf"\omega(\varphi) = \sqrt{{\omega_{{0}}^{{2}} + \frac{{2A(\varphi)}}{{{J}}}}}"))
-    add(Formula(rf"{wm} = \frac{{\omega_{{max}} + \omega_{{min}}}}{{2}}, "
-                rf"\delta = \frac{{\omega_{{max}} - \omega_{{min}}}}{{{wm}}}, "
-                rf"{dT} = A_{{max}} - A_{{min}}"))
-    n_speed = sum(isinstance(b, Formula) for b in doc.blocks)     # its number, (3)
+    n_speed = doc.add_formula(rf"{wm} = \frac{{\omega_{{max}} + \omega_{{min}}}}{{2}}, "
+                              rf"\delta = \frac{{\omega_{{max}} - \omega_{{min}}}}{{{wm}}}, "
+                              rf"{dT} = A_{{max}} - A_{{min}}")
     if r.driving is not None:
         add(Formula(rf"\varepsilon(\varphi) = \frac{{{md} - {mc}}}{{{J}}}, "
                     rf"t(\varphi) = \int_{{0}}^{{\varphi}} \frac{{d\varphi}}{{\omega}}"))
     n_J = None
     if r.J_required is not None:
-        add(Formula(rf"{J} = \frac{{{dT}}}{{\delta {wm}^{{2}}}}"))
-        n_J = sum(isinstance(b, Formula) for b in doc.blocks)
+        n_J = doc.add_formula(rf"{J} = \frac{{{dT}}}{{\delta {wm}^{{2}}}}")
     add(Where(t["where"].format(MD=symbol("t2_M_D", lang), MC=symbol("t2_M_C", lang),
                                 J=symbol("t2_J", lang), wm=symbol("t2_omega_mean", lang),
                                 dT=symbol("t2_delta_T_max", lang))
