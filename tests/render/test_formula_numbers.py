@@ -150,3 +150,31 @@ def test_task2_puts_its_found_values_into_the_method_formulas(name):
         assert len(cited) == 2 and r"\delta \omega" in f[cited[1]]
         m = re.search(rf"\\frac\{{{N}\}}\{{{N} \\cdot {N}\^\{{2\}}\}} = {N}", worked[2])
         _close(_num(m.group(1)) / (_num(m.group(2)) * _num(m.group(3)) ** 2), m.group(4))
+
+
+@pytest.mark.parametrize("name", ["duty_khurmi_16_19_punch", "duty_khurmi_16_22_punch",
+                                  "duty_readme_press"])
+def test_a_duty_cycles_flywheel_is_worked_with_its_numbers(name):
+    """A punching press's flywheel found from its speeds: J = ΔE/(ω_ср²·δ) and m = J/k², the
+    numbers put in to six digits, each giving its result again (Khurmi & Gupta Ex. 16.19 prints
+    m = 618 kg: 617,94 here)."""
+    from flywheel.cases.duty_cycle import load_duty_case, solve_case
+    from flywheel.render.blocks import Paragraph
+    from flywheel.render.numbers import typography
+    from flywheel.render.report_duty_cycle import build_duty_cycle_document
+
+    r = solve_case(load_duty_case(CASES / f"{name}.toml"), name)
+    with typography("ru"):
+        doc = build_duty_cycle_document(r, "T", "S", "ru")
+    f = _formulas(doc)
+    k = next(i for i, b in enumerate(doc.blocks) if isinstance(b, Paragraph)
+             and b.text.startswith("Подстановка найденных значений"))
+    cited = [int(n) for n in re.findall(r"\((\d+)\)", doc.blocks[k].text)]
+    assert r"\Delta E = \frac{J (\omega_{max}^{2}" in f[cited[0]] and "J = m k^{2}" in f[cited[1]]
+    J, m = (b.tex for b in doc.blocks[k + 1:k + 3])
+    got = re.search(rf"= \\frac\{{{N}\}}\{{{N}\^\{{2\}} \\cdot {N}\}} = {N}", J)
+    _close(_num(got.group(1)) / (_num(got.group(2)) ** 2 * _num(got.group(3))), got.group(4))
+    assert _num(got.group(4)) == pytest.approx(r.J, rel=1e-5)
+    got = re.search(rf"= \\frac\{{{N}\}}\{{{N}\^\{{2\}}\}} = {N}", m)
+    _close(_num(got.group(1)) / _num(got.group(2)) ** 2, got.group(3))
+    assert _num(got.group(3)) == pytest.approx(r.mass, rel=1e-5)

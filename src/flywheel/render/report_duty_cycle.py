@@ -10,6 +10,8 @@ result (``DutyCycleResult``, by attribute).
 """
 from __future__ import annotations
 
+import math
+
 from flywheel.render.numbers import fmt as _number
 
 from flywheel.render import nomenclature as nm
@@ -35,6 +37,9 @@ T = words("report_duty_cycle", {
               "{trec} the time in which the motor brings the speed back"),
     "where_rim": (";\n{D} the rim's mean diameter, {k} its share of J, {m} its mass, R its mean "
                   "radius, ρ the density, b, t the rim's width and thickness, σ its hoop stress"),
+    # the found flywheel with the numbers put into the method's formulas (a sized flywheel)
+    "put_one": "The values found, put into formula ({n}):",
+    "put_two": "The values found, put into formulas ({n}) and ({m}):",
     "results": "2. Solution", "checks": "3. Checks", "warn": "Warnings", "sources": "Sources",
     "case_source": "Input data: {s}.",
     "book": ("Khurmi R. S., Gupta J. K. Theory of Machines, ch. 16: Turning Moment Diagrams "
@@ -53,9 +58,10 @@ def build_duty_cycle_document(r, title: str, source: str, lang: str = "en") -> D
     top = r"t_{\text{оп}}" if lang == "ru" else r"t_{op}"
     wm = r"\omega_{\text{ср}}" if lang == "ru" else r"\omega_{m}"
     add(Formula(rf"\Delta E = E - P {top}, P = {MD} {wm}"))
-    add(Formula(rf"\Delta E = \frac{{J (\omega_{{max}}^{{2}} - \omega_{{min}}^{{2}})}}{{2}} = "
-                rf"J {wm}^{{2}} \delta, \delta = \frac{{\omega_{{max}} - \omega_{{min}}}}{{{wm}}}"))
-    add(Formula(r"J = m k^{2}, \Delta E = m v^{2} \delta"))
+    n_J = doc.add_formula(
+        rf"\Delta E = \frac{{J (\omega_{{max}}^{{2}} - \omega_{{min}}^{{2}})}}{{2}} = "
+        rf"J {wm}^{{2}} \delta, \delta = \frac{{\omega_{{max}} - \omega_{{min}}}}{{{wm}}}")
+    n_m = doc.add_formula(r"J = m k^{2}, \Delta E = m v^{2} \delta")
     add(Formula(rf"t_{{\text{{{'вос' if lang == 'ru' else 'rec'}}}}} = \frac{{\Delta E}}{{P}}"))
     if r.rim is not None:             # [flywheel.rim]: Khurmi & Gupta ch. 16, the rim's dimensions
         k, m, D = ((r"k_{\text{об}}", r"m_{\text{об}}", r"D_{\text{ср}}") if lang == "ru"
@@ -75,6 +81,22 @@ def build_duty_cycle_document(r, title: str, source: str, lang: str = "en") -> D
             table(caption, header, rows)
         if note:                      # a line of the terminal: a sentence here
             add(Paragraph(sentence(note)))
+    # a flywheel found from the speeds: J and m worked with six digits of the numbers the
+    # tables print (four would not give J's last digit back); a given flywheel's speeds are
+    # found the other way, and its J is the case's
+    if not r.flywheel_given and None not in (r.J, r.omega_mean, r.delta):
+        def n6(x: float) -> str:        # six significant digits, trailing zeros dropped
+            places = max(0, 5 - math.floor(math.log10(abs(x)))) if x else 0
+            text = _number(x, spec=f".{places}f", zero=1e-12, nonfinite="dash")
+            return text.rstrip("0").rstrip(",.") if places else text
+        kg = rf"\,\text{{{nm.unit('kg·m²', lang)}}}"
+        mass = r.mass is not None and r.radius is not None
+        add(Paragraph(t["put_two"].format(n=n_J, m=n_m) if mass else t["put_one"].format(n=n_J)))
+        add(Formula(rf"J = \frac{{\Delta E}}{{{wm}^{{2}} \delta}} = \frac{{{n6(r.delta_E)}}}"
+                    rf"{{{n6(r.omega_mean)}^{{2}} \cdot {n6(r.delta)}}} = {n6(r.J)}{kg}"))
+        if mass:
+            add(Formula(rf"m = \frac{{J}}{{k^{{2}}}} = \frac{{{n6(r.J)}}}{{{n6(r.radius)}^{{2}}}} = "
+                        rf"{n6(r.mass)}\,\text{{{nm.unit('kg', lang)}}}"))
     if r.checks:
         from flywheel.render.duty_cycle import L10N
 
