@@ -20,7 +20,7 @@ from flywheel.render import blocks
 from flywheel.render.blocks import (  # noqa: F401  (the model, re-exported)
     Bullets, Document, Figure, Formula, Heading, Paragraph, Table, Where)
 from flywheel.io.text import in_language
-from flywheel.render.numbers import apart, column_zero, fmt as _number, separator
+from flywheel.render.numbers import apart, column_zero, fmt as _number, fmt_worked, separator
 from flywheel.render.positions import position_cells
 from flywheel.units import PA_PER_MPA
 
@@ -436,7 +436,7 @@ def build_document(results, lang: str = "en", plots: list[str] | None = None,
     cycle = (rf"{'' if turns == 1 else turns}\pi" if s.cycle_deg % 180 == 0
              else g(math.radians(s.cycle_deg), 6))
     nM = b.formula(rf"{_mt(kx, lang)} = -\frac{{{_mt(kA, lang)}}}{{\Phi}} = "
-                   rf"{'-' if bal.work > 0 else ''}\frac{{{g(abs(bal.work), 6)}}}{{{cycle}}} = "
+                   rf"{'-' if bal.work > 0 else ''}\frac{{{fmt_worked(abs(bal.work))}}}{{{cycle}}} = "
                    rf"{g(bal.moment, 6)}\,\text{{{u(kx)}}}")
     b.add(Formula(rf"{dTI} = A - ({TII} - {TII}(0)), {TII} = \frac{{{_mt('J_II', lang)} {wm}^{{2}}}}{{2}}"))
     b.add(Where(t["where_energy"].format(
@@ -461,20 +461,21 @@ def build_document(results, lang: str = "en", plots: list[str] | None = None,
 
     # 5. flywheel -----------------------------------------------------------------------------
     b.add(Heading(2, t["sizing"]))
-    # the numbers put into each formula are those the record prints (seed 000 §4: J_доп =
-    # ΔT/(δ·ω²) − J_10 − J_ред; a given flywheel the other way round)
+    # the numbers put into each formula to six digits (numbers.fmt_worked: a teacher's
+    # calculator gives the printed result back), the result as the record prints it (seed 000
+    # §4: J_доп = ΔT/(δ·ω²) − J_10 − J_ред; a given flywheel the other way round)
     JI, dT, JM = _mt("J_required", lang), _mt("delta_T_max", lang), _mt("J_flywheel", lang)
     J1, uI = _mt("J_first_group", lang), rf"\,\text{{{u('J_required')}}}"
     if s.flywheel_given:
-        numbers = (b.formula(rf"{JI} = {JM} + ({J1}) = {g(s.J_flywheel, 6)} + "
-                           rf"{g(s.J_first_group, 6)} = {g(s.J_required, 6)}{uI}"),)
+        numbers = (b.formula(rf"{JI} = {JM} + ({J1}) = {fmt_worked(s.J_flywheel)} + "
+                             rf"{fmt_worked(s.J_first_group)} = {g(s.J_required, 6)}{uI}"),)
         b.add(Where(t["where_given"].format(JM=sym("J_flywheel"), J1=sym("J_first_group"))))
     else:
         numbers = (b.formula(rf"{JI} = \frac{{{dT}}}{{\delta \cdot {wm}^{{2}}}} = "
-                             rf"\frac{{{g(s.delta_T_max, 6)}}}{{{gi(s.delta)} \cdot "
-                             rf"{g(s.omega_mean, 6)}^{{2}}}} = {g(s.J_required, 6)}{uI}"),
-                   b.formula(rf"{JM} = {JI} - ({J1}) = {g(s.J_required, 6)} - "
-                             rf"{g(s.J_first_group, 6)} = {g(s.J_flywheel, 6)}{uI}"))
+                             rf"\frac{{{fmt_worked(s.delta_T_max)}}}{{{gi(s.delta)} \cdot "
+                             rf"{fmt_worked(s.omega_mean)}^{{2}}}} = {g(s.J_required, 6)}{uI}"),
+                   b.formula(rf"{JM} = {JI} - ({J1}) = {fmt_worked(s.J_required)} - "
+                             rf"{fmt_worked(s.J_first_group)} = {g(s.J_flywheel, 6)}{uI}"))
         b.add(Where(t["where_sizing"].format(dT=sym("delta_T_max"), w=sym("omega_mean"),
                                              J1=sym("J_first_group"))))
     b.add(Bullets(tuple(x[2:] for x in _sizing_lines(s, t, lang, numbers))))

@@ -221,6 +221,24 @@ def fmt(x, sig: int = 6, *, zero: float | None = 1e-12, spec: str | None = None,
     return format(x, spec or f".{sig}g")
 
 
+#: the significant digits of a number put into a worked formula (:func:`fmt_worked`)
+WORKED_SIG = 6
+
+
+def fmt_worked(x: float) -> str:
+    """A number put into a formula the record works («J_I = 916,283/(0,05·62,8319²) = 4,642»):
+    :data:`WORKED_SIG` significant digits in every language, trailing zeros dropped — the
+    Russian policy's four (:data:`RESULT_SIG`) would not always give the result back to its
+    last printed digit (2,656 printed, 2,654 worked again from four-digit inputs).
+
+    >>> fmt_worked(62.83185307), fmt_worked(9000.0), fmt_worked(0.05)
+    ('62.8319', '9000', '0.05')
+    """
+    places = max(0, WORKED_SIG - 1 - math.floor(math.log10(abs(x)))) if x else 0
+    text = fmt(x, spec=f".{places}f", zero=None, nonfinite="dash")
+    return text.rstrip("0").rstrip(",.") if places else text
+
+
 def column_zero(values, floor: float = 0.0) -> float:
     """The ``zero`` of :func:`fmt` for the numbers of one column of results over the cycle:
     ``COLUMN_NOISE`` times its largest magnitude (at least ``floor``). A work integrated over

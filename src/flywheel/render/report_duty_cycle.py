@@ -10,9 +10,7 @@ result (``DutyCycleResult``, by attribute).
 """
 from __future__ import annotations
 
-import math
-
-from flywheel.render.numbers import fmt as _number
+from flywheel.render.numbers import fmt as _number, fmt_worked
 
 from flywheel.render import nomenclature as nm
 from flywheel.render.catalogue import words
@@ -82,13 +80,10 @@ def build_duty_cycle_document(r, title: str, source: str, lang: str = "en") -> D
         if note:                      # a line of the terminal: a sentence here
             add(Paragraph(sentence(note)))
     # a flywheel found from the speeds: J and m worked with six digits of the numbers the
-    # tables print (four would not give J's last digit back); a given flywheel's speeds are
-    # found the other way, and its J is the case's
+    # tables print (numbers.fmt_worked); a given flywheel's speeds are found the other way,
+    # and its J is the case's
     if not r.flywheel_given and None not in (r.J, r.omega_mean, r.delta):
-        def n6(x: float) -> str:        # six significant digits, trailing zeros dropped
-            places = max(0, 5 - math.floor(math.log10(abs(x)))) if x else 0
-            text = _number(x, spec=f".{places}f", zero=1e-12, nonfinite="dash")
-            return text.rstrip("0").rstrip(",.") if places else text
+        n6 = fmt_worked
         kg = rf"\,\text{{{nm.unit('kg·m²', lang)}}}"
         mass = r.mass is not None and r.radius is not None
         add(Paragraph(t["put_two"].format(n=n_J, m=n_m) if mass else t["put_one"].format(n=n_J)))

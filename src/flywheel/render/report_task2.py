@@ -21,7 +21,7 @@ from flywheel.render.catalogue import words
 from flywheel.render.document import (T as RECORD, Bullets, Document, Figure, Formula, Heading,
                                       Paragraph, Where)
 from flywheel.render.nomenclature import name as text, symbol, unit
-from flywheel.render.numbers import fmt as _number
+from flywheel.render.numbers import fmt as _number, fmt_worked
 
 FIGURE = "task2.png"
 
@@ -240,8 +240,8 @@ def build_task2_document(r, title: str, source: str, lang: str = "en",
     add(Formula(rf"{wm} = \frac{{{w_max} + {w_min}}}{{2}} = {w_m}\,\text{{{U('rad/s')}}}"))
     add(Formula(rf"\delta = \frac{{{w_max} - {w_min}}}{{{w_m}}} = {g(r.delta)}"))
     if n_J is not None:
-        add(Formula(rf"{J} = \frac{{{g(r.delta_T_max)}}}{{{g(r.delta_target)} \cdot "
-                    rf"{g(r.omega_mean)}^{{2}}}} = {g(r.J_required)}\,\text{{{U('kg·m²')}}}"))
+        add(Formula(rf"{J} = \frac{{{fmt_worked(r.delta_T_max)}}}{{{g(r.delta_target)} \cdot "
+                    rf"{fmt_worked(r.omega_mean)}^{{2}}}} = {g(r.J_required)}\,\text{{{U('kg·m²')}}}"))
 
     # 4. motion -------------------------------------------------------------------------------
     if r.driving is not None:
