@@ -180,3 +180,26 @@ def test_a_duty_cycles_flywheel_is_worked_with_its_numbers(name):
     got = re.search(rf"= \\frac\{{{N}\}}\{{{N}\^\{{2\}}\}} = {N}", m)
     _close(_num(got.group(1)) / _num(got.group(2)) ** 2, got.group(3))
     assert _num(got.group(3)) == pytest.approx(r.mass, rel=1e-5)
+
+
+RUN = sorted(p.stem for p in CASES.glob("*.toml")
+             if not p.stem.startswith(("task2", "aggregate", "duty", "variants")))
+
+
+@pytest.mark.parametrize("name", RUN)
+def test_every_run_records_flywheel_comes_back_from_its_numbers(name):
+    """Each bundled run case's J_I (or a given flywheel's sum), worked again from the numbers
+    its record puts into the formula, is the printed J_I to its last digit."""
+    res, doc = _document(name)
+    texts = list(_formulas(doc).values())
+    sized = [re.search(rf"\\frac\{{{N}\}}\{{{N} \\cdot {N}\^\{{2\}}\}} = {N}", t) for t in texts]
+    given = [re.search(rf"^J_I = J_М \+ .* = {N} \+ {N} = {N}", t) for t in texts]
+    if m := next((m for m in sized if m), None):
+        dT, delta, w, J = m.groups()
+        worked = _num(dT) / (_num(delta) * _num(w) ** 2)
+    else:
+        m = next(m for m in given if m)
+        worked, J = _num(m.group(1)) + _num(m.group(2)), m.group(3)
+    digits = len(re.sub(r"\D", "", J.lstrip("−0,").replace(",", "")))
+    last = 10.0 ** (math.floor(math.log10(abs(_num(J)))) - digits + 1)   # the last digit's unit
+    assert abs(worked - _num(J)) <= 0.5 * last * 1.01, (worked, J)
