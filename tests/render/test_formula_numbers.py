@@ -56,6 +56,22 @@ def _cited(doc, pattern: str) -> int:
 N = r"(−?[\d\u202f]+(?:,\d+)?)"
 
 
+def _put(doc) -> tuple[list[int], list[str]]:
+    """The formula numbers the «Подстановка найденных значений в формулы …» line cites, and
+    the worked formulas after it."""
+    from flywheel.render.blocks import Paragraph
+
+    k = next(i for i, b in enumerate(doc.blocks) if isinstance(b, Paragraph)
+             and b.text.startswith("Подстановка найденных значений"))
+    cited = [int(n) for n in re.findall(r"\((\d+)\)", doc.blocks[k].text)]
+    worked = []
+    for b in doc.blocks[k + 1:]:
+        if not isinstance(b, Formula):
+            break
+        worked.append(b.tex)
+    return cited, worked
+
+
 def _close(worked: float, printed: str) -> None:
     """``worked`` (from the printed inputs) agrees with ``printed`` to its last digit."""
     digits = len(re.sub(r"\D", "", printed.lstrip("−0,").replace(",", "")))
@@ -130,7 +146,6 @@ def test_task2_puts_its_found_values_into_the_method_formulas(name):
     in its results table, citing the method's formulas by number; each gives its result again
     from the numbers put in."""
     from flywheel.cases.task2 import load_task2_case, solve_case
-    from flywheel.render.blocks import Paragraph
     from flywheel.render.numbers import typography
     from flywheel.render.report_task2 import build_task2_document
 
@@ -139,11 +154,8 @@ def test_task2_puts_its_found_values_into_the_method_formulas(name):
     with typography("ru"):
         doc = build_task2_document(r, "T", "S", "ru")
     f = _formulas(doc)
-    k = next(i for i, b in enumerate(doc.blocks) if isinstance(b, Paragraph)
-             and b.text.startswith("Подстановка найденных значений"))
-    cited = [int(n) for n in re.findall(r"\((\d+)\)", doc.blocks[k].text)]
+    cited, worked = _put(doc)
     assert r"\delta = \frac{\omega_{max} - \omega_{min}}" in f[cited[0]]
-    worked = [b.tex for b in doc.blocks[k + 1:k + 4] if isinstance(b, Formula)]
     m = re.search(rf"\\frac\{{{N} \+ {N}\}}\{{2\}} = {N}", worked[0])
     _close((_num(m.group(1)) + _num(m.group(2))) / 2, m.group(3))
     m = re.search(rf"\\delta = \\frac\{{{N} - {N}\}}\{{{N}\}} = {N}", worked[1])
@@ -161,7 +173,6 @@ def test_a_duty_cycles_flywheel_is_worked_with_its_numbers(name):
     numbers put in to six digits, each giving its result again (Khurmi & Gupta Ex. 16.19 prints
     m = 618 kg: 617,94 here)."""
     from flywheel.cases.duty_cycle import load_duty_case, solve_case
-    from flywheel.render.blocks import Paragraph
     from flywheel.render.numbers import typography
     from flywheel.render.report_duty_cycle import build_duty_cycle_document
 
@@ -169,11 +180,8 @@ def test_a_duty_cycles_flywheel_is_worked_with_its_numbers(name):
     with typography("ru"):
         doc = build_duty_cycle_document(r, "T", "S", "ru")
     f = _formulas(doc)
-    k = next(i for i, b in enumerate(doc.blocks) if isinstance(b, Paragraph)
-             and b.text.startswith("Подстановка найденных значений"))
-    cited = [int(n) for n in re.findall(r"\((\d+)\)", doc.blocks[k].text)]
+    cited, (J, m) = _put(doc)
     assert r"\Delta E = \frac{J (\omega_{max}^{2}" in f[cited[0]] and "J = m k^{2}" in f[cited[1]]
-    J, m = (b.tex for b in doc.blocks[k + 1:k + 3])
     got = re.search(rf"= \\frac\{{{N}\}}\{{{N}\^\{{2\}} \\cdot {N}\}} = {N}", J)
     _close(_num(got.group(1)) / (_num(got.group(2)) ** 2 * _num(got.group(3))), got.group(4))
     assert _num(got.group(4)) == pytest.approx(r.J, rel=1e-5)
