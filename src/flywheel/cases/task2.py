@@ -164,7 +164,7 @@ class Speed(StrictModel):
     mean: Annotated[float, within(1e-3, 1e5, "rad/s")] | None = Field(None, description="mean speed ω_ср [rad/s]")
     mean_rpm: Annotated[float, within(1e-2, 1e6, "rpm")] | None = Field(None, description="mean speed [rev/min]")
     max: Annotated[float, within(1e-3, 1e5, "rad/s")] | None = Field(None, description="the largest speed allowed [rad/s] (with min): "
-                                                "ω_ср = (max + min)/2, δ = (max − min)/ω_ср")
+                                                "ω_m = (max + min)/2, δ = (max − min)/ω_m")
     min: Annotated[float, within(1e-3, 1e5, "rad/s")] | None = Field(None, description="the smallest speed allowed [rad/s] (with max)")
     max_rpm: Annotated[float, within(1e-2, 1e6, "rpm")] | None = Field(None, description="the largest speed allowed [rev/min]")
     min_rpm: Annotated[float, within(1e-2, 1e6, "rpm")] | None = Field(None, description="the smallest speed allowed [rev/min]")
@@ -234,7 +234,7 @@ class Task2Case(StrictModel):
         360.0, description="length of the cycle [deg]: 360, 720, 1080 … (at most 100 revolutions)")
     power: float | None = Field(None, description="mean power [W]: a graph value \"power\" is "
                                                   "found from T_mean = P/ω_ср; with [diagram] "
-                                                  "energy_fluctuation_coefficient, W = P·Φ/ω_ср")
+                                                  "energy_fluctuation_coefficient, W = P·Φ/ω_m")
     at_deg: Annotated[list[float], at_most(MAX_ANGLES, "angles")] = Field(default_factory=list,
                                 description="angles [deg] where ω, ε and t are reported")
     speed: Speed
@@ -348,7 +348,7 @@ def _check(case: Task2Case) -> None:
     if limits and (f.delta is not None or f.fluctuation_percent is not None):
         which = "delta" if f.delta is not None else "fluctuation_percent"
         raise FieldError(f"flywheel.{which}", Notice.of(
-            "t2_limits_give_delta", "the speed limits already give δ = (max − min)/ω_ср: give one "
+            "t2_limits_give_delta", "the speed limits already give δ = (max − min)/ω_m: give one "
             "or the other"))
     if f.J is None and f.mass is None and f.delta is None and f.fluctuation_percent is None \
             and not limits:
@@ -387,7 +387,7 @@ def _check(case: Task2Case) -> None:
                 "[J], or the mean power (top-level power [W]) with a mean speed"))
         if uses_power and not mean_known:
             raise FieldError("power", Notice.of(
-                "t2_work_needs_mean", "the work per cycle P·Φ/ω_ср needs the mean speed: give "
+                "t2_work_needs_mean", "the work per cycle P·Φ/ω_m needs the mean speed: give "
                 "speed.mean, mean_rpm or the limits max/min"))
         if case.power is not None and not uses_power:
             raise FieldError("power", Notice.of(

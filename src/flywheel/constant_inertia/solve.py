@@ -476,7 +476,7 @@ def power_value(make: Callable[[float], Moment], power: float, omega_mean: float
     if x < 0.0:
         raise InputError(Notice.of(
             "t2_power_negative", "the mean power {power:.6g} W needs a negative {which} moment "
-            "value ({x:.6g}): the graph's fixed part alone does more work than P·Φ/ω_ср = "
+            "value ({x:.6g}): the graph's fixed part alone does more work than P·Φ/ω_m = "
             "{target:.6g} J", power=power, which=which, x=x, target=target))
     return x
 

@@ -190,7 +190,7 @@ def true_motion(phi: np.ndarray, en: EnergyResult, red: ReductionResult,
     if not J_I + float(J_II.min()) > 0:
         raise InputError(Notice.of(
             "run_no_inertia", "the machine has no inertia: the loads cause no fluctuation of "
-            "energy (ΔT_нб = 0, so no flywheel is sized), no link carries mass and nothing is on "
+            "energy (ΔT_max = 0, so no flywheel is sized), no link carries mass and nothing is on "
             "the crank shaft, so ω(φ) is undefined (allowed: masses in [links] or "
             "machine.first_group)"))
     if not all(np.isfinite(x) for x in (J_I, en.delta_T_max, float(np.max(np.abs(J_II))),

@@ -31,7 +31,7 @@ _TEXT = words("plots_plans", {
     "acceleration": "{p} at φ = {a}°",
     "forces": "{p} at φ = {a}°",
     "lever": "{p} at φ = {a}° (the velocity plan turned 90° clockwise)",
-    "positions": "{p} (план положений), {n} positions every 30°",
+    "positions": "{p}, {n} positions every 30°",
     "group": "group of links {l} ({k})",
     "crank": "crank {l} and the frame",
     "pole_v": "pole p",
