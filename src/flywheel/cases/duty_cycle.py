@@ -112,7 +112,7 @@ class Motor(StrictModel):
     """The motor: its power or its constant torque."""
 
     power: _num(1e-6, 1e10, "W") = Field(None, description="mean power while it works P [W]")
-    torque: _num(1e-6, 1e10, "N·m") = Field(None, description="constant torque M_Д [N·m]")
+    torque: _num(1e-6, 1e10, "N·m") = Field(None, description="constant torque M_D [N·m]")
     efficiency: Annotated[float, _within(0.0, 1.0, "", lo_open=True)] = Field(
         1.0, description="the motor's (drive's) efficiency η: input P/η, (0, 1]")
 

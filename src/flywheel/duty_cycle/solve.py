@@ -421,7 +421,7 @@ def _check_timeline(d: DutyCycle, tl: _Timeline) -> None:
     if d.period is not None and tl.P < E / d.period * (1 - _TOL):
         what = "power" if d.motor_torque is None else "torque"
         have = (f"{tl.P:.6g} W" if what == "power"
-                else f"{tl.T:.6g} N·m (P = M_Д·ω_ср = {tl.P:.6g} W)")
+                else f"{tl.T:.6g} N·m (P = M_D·ω_m = {tl.P:.6g} W)")
         raise DutyCycleError(d.field("motor", f"motor.{what}"), Notice.of(
             "dc_motor_weak", "the motor's {have} is less than the mean power of the operations "
             "E/T_c = {need:.6g} W: the flywheel would never recover (allowed: at least {need:.6g} "
