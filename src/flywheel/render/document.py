@@ -64,6 +64,9 @@ T = words("report", {
     "where_motion": ("where v_q, a_q are the velocity and acceleration analogues of a point;\n"
                      "ω, ε the angular velocity and acceleration of the crank (the true motion);\n"
                      "ω_qi, ε_qi the angular velocity and acceleration analogues of link i."),
+    # the line before a record's formulas worked with their numbers (run, task 2, duty cycle)
+    "put_one": "The values found, put into formula ({n}):",
+    "put_two": "The values found, put into formulas ({n}) and ({m}):",
     "where_given": ("where {JM} is the given flywheel's moment of inertia on the crank shaft;\n"
                     "{J1} the moment of inertia of the first group's links on the crank shaft "
                     "(without the flywheel)."),
@@ -284,6 +287,14 @@ class CycleBalance:
         else:
             self.keys = ("cycle_work_resistance", "M_C", "driving_moment")
             self.work, self.moment = s.cycle_work_resistance, s.driving_moment
+
+
+def put_into(lang: str, *numbers: int) -> str:
+    """The line before a record's worked formulas, citing the one or two formulas (their
+    ``numbers``) they put the found values into."""
+    t = T[lang]
+    return (t["put_one"].format(n=numbers[0]) if len(numbers) == 1 else
+            t["put_two"].format(n=numbers[0], m=numbers[1]))
 
 
 def cycle_balance(results) -> CycleBalance:

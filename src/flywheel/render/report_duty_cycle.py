@@ -14,7 +14,8 @@ from flywheel.render.numbers import fmt as _number, fmt_worked
 
 from flywheel.render import nomenclature as nm
 from flywheel.render.catalogue import words
-from flywheel.render.document import Bullets, Document, Formula, Heading, Paragraph, Where
+from flywheel.render.document import (Bullets, Document, Formula, Heading, Paragraph, Where,
+                                      put_into)
 from flywheel.render.blocks import sentence
 from flywheel.render.duty_cycle import summary_tables
 
@@ -35,9 +36,6 @@ T = words("report_duty_cycle", {
               "{trec} the time in which the motor brings the speed back"),
     "where_rim": (";\n{D} the rim's mean diameter, {k} its share of J, {m} its mass, R its mean "
                   "radius, ρ the density, b, t the rim's width and thickness, σ its hoop stress"),
-    # the found flywheel with the numbers put into the method's formulas (a sized flywheel)
-    "put_one": "The values found, put into formula ({n}):",
-    "put_two": "The values found, put into formulas ({n}) and ({m}):",
     "results": "2. Solution", "checks": "3. Checks", "warn": "Warnings", "sources": "Sources",
     "case_source": "Input data: {s}.",
     "book": ("Khurmi R. S., Gupta J. K. Theory of Machines, ch. 16: Turning Moment Diagrams "
@@ -86,7 +84,7 @@ def build_duty_cycle_document(r, title: str, source: str, lang: str = "en") -> D
         n6 = fmt_worked
         kg = rf"\,\text{{{nm.unit('kg·m²', lang)}}}"
         mass = r.mass is not None and r.radius is not None
-        add(Paragraph(t["put_two"].format(n=n_J, m=n_m) if mass else t["put_one"].format(n=n_J)))
+        add(Paragraph(put_into(lang, n_J, n_m) if mass else put_into(lang, n_J)))
         add(Formula(rf"J = \frac{{\Delta E}}{{{wm}^{{2}} \delta}} = \frac{{{n6(r.delta_E)}}}"
                     rf"{{{n6(r.omega_mean)}^{{2}} \cdot {n6(r.delta)}}} = {n6(r.J)}{kg}"))
         if mass:

@@ -19,7 +19,7 @@ import math
 from flywheel.render.blocks import sentence
 from flywheel.render.catalogue import words
 from flywheel.render.document import (T as RECORD, Bullets, Document, Figure, Formula, Heading,
-                                      Paragraph, Where)
+                                      Paragraph, Where, put_into)
 from flywheel.render.nomenclature import name as text, symbol, unit
 from flywheel.render.numbers import fmt as _number, fmt_worked
 
@@ -44,9 +44,6 @@ T = words("report_task2", {
     "where_time": ";\nε the angular acceleration, t the time from φ = 0",
     "solution": "3. Solution", "segments_caption": "Segments: works and speeds at the breakpoints and crossings",
     "results_caption": "Results",
-    # the found values put into the method's formulas, as a solution is written by hand
-    "put_one": "The values found, put into formula ({n}):",
-    "put_two": "The values found, put into formulas ({n}) and ({m}):",
     "motion": "4. Acceleration, phases and time", "motion_caption": "Acceleration and cycle time",
     "phases_caption": "Phases between the extremes of ω",
     "at_caption": "The motion at the asked angles",
@@ -235,8 +232,7 @@ def build_task2_document(r, title: str, source: str, lang: str = "en",
     table(t["results_caption"], [t["quantity"], t["value"], t["unit"], f"φ, {U('deg')}"], res)
     # the numbers put in are those printed above, so a teacher checks each with a calculator
     w_max, w_min, w_m = (g(w, ".6f") for w in (r.omega_max, r.omega_min, r.omega_mean))
-    add(Paragraph(t["put_one"].format(n=n_speed) if n_J is None else
-                  t["put_two"].format(n=n_speed, m=n_J)))
+    add(Paragraph(put_into(lang, n_speed) if n_J is None else put_into(lang, n_speed, n_J)))
     add(Formula(rf"{wm} = \frac{{{w_max} + {w_min}}}{{2}} = {w_m}\,\text{{{U('rad/s')}}}"))
     add(Formula(rf"\delta = \frac{{{w_max} - {w_min}}}{{{w_m}}} = {g(r.delta)}"))
     if n_J is not None:
