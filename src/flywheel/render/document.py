@@ -21,7 +21,7 @@ from flywheel.render.blocks import (  # noqa: F401  (the model, re-exported)
     Bullets, Document, Figure, Formula, Heading, Paragraph, Table, Where)
 from flywheel.io.text import in_language
 from flywheel.render.numbers import apart, column_zero, fmt as _number, fmt_worked, separator
-from flywheel.render.positions import position_cells
+from flywheel.render.positions import numbered, position_cells
 from flywheel.units import PA_PER_MPA
 
 
@@ -384,8 +384,7 @@ def build_document(results, lang: str = "en", plots: list[str] | None = None,
     # 2. kinematics ---------------------------------------------------------------------------
     # each position by its number as plan_positions.png draws it, the dead centres named under
     # the first table (a tabulated case's table has no drawing: its rows' labels instead)
-    numbered = any(p.number is not None for p in results.position_angles)
-    pos = [t["no"]] if numbered else [t["pos"]]
+    pos = [t["no"]] if numbered(results.position_angles) else [t["pos"]]
     cells, dead_note = position_cells(results.position_angles, lang)
     idx = [([c], results.index_of(p.phi)) for c, p in zip(cells, results.position_angles)]
 

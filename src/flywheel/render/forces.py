@@ -16,7 +16,7 @@ from flywheel.render.blocks import Bullets, Heading, Paragraph
 from flywheel.render.catalogue import words
 from flywheel.render.mathfmt import point_name
 from flywheel.render.nomenclature import csv_header, name, symbol, unit, unit_of
-from flywheel.render.positions import position_cells
+from flywheel.render.positions import numbered, position_cells
 from flywheel.render.numbers import column_zero, fmt as _number, fmt_rows, fmt_text
 
 T = words("forces", {
@@ -277,7 +277,7 @@ def add_report_section(b, results, lang: str = "en") -> None:
     # each position by its number (its dead centres are named under the record's first table
     # of the positions, §2), or a tabulated case's by its row's label
     cells, _ = position_cells(results.position_angles, lang)
-    first = t["no"] if any(p.number is not None for p in results.position_angles) else t["pos"]
+    first = t["no"] if numbered(results.position_angles) else t["pos"]
 
     if fa is None:
         parts_of = [k for k in ("M_st", "M_dyn") if k in results.columns]    # seed 004's Мст, Мдин

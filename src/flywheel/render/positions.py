@@ -33,6 +33,12 @@ DEAD_CENTRES_PLURAL = {"outer": "внешние", "inner": "внутренние
 POSITION_WHERE = ("position {n}", "положение {n}")
 
 
+def numbered(positions) -> bool:
+    """Whether a record's tables give these positions by their numbers (a linkage's, as
+    plan_positions.png draws them) rather than by their labels (a tabulated case's rows)."""
+    return any(p.number is not None for p in positions)
+
+
 def position_cells(positions, lang: str = "en") -> tuple[list[str], str]:
     """The first cell of each standard position's row in a record's table, and the sentence
     under the first such table that names the dead centres among them ("" if none).
@@ -49,7 +55,7 @@ def position_cells(positions, lang: str = "en") -> tuple[list[str], str]:
     (['0', '1'], 'Положение 0 — внешние мёртвые точки ползунов 3 и 9, внутренняя мёртвая точка ползуна 5.')
     """
     ru = lang == "ru"
-    if not any(p.number is not None for p in positions):
+    if not numbered(positions):
         return [position_label(p, lang) for p in positions], ""
     from flywheel.render.numbers import fmt
 

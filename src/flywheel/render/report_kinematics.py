@@ -8,7 +8,7 @@ from __future__ import annotations
 import math
 
 from flywheel.render import nomenclature as nm
-from flywheel.render.positions import position_cells
+from flywheel.render.positions import numbered, position_cells
 from flywheel.render.catalogue import words
 from flywheel.render.mathfmt import point_name
 from flywheel.render.document import (T, Bullets, Formula, Heading, Paragraph, Where, _Builder,
@@ -56,8 +56,7 @@ def build_kinematics_document(results, lang: str = "en", plots: list[str] | None
         _structure(b, case, t, lang)
 
     cols = results.columns
-    numbered = any(p.number is not None for p in results.position_angles)
-    pos = [t["no"]] if numbered else [t["pos"]]
+    pos = [t["no"]] if numbered(results.position_angles) else [t["pos"]]
     cells, dead_note = position_cells(results.position_angles, lang)
     idx = [([c], results.index_of(p.phi)) for c, p in zip(cells, results.position_angles)]
     vq = [c for c in cols if c.startswith("vq_")]
