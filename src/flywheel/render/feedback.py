@@ -85,11 +85,11 @@ def page(s, lang: str = "en", reveal: bool = True, share: float = 0.0, kind: str
     for j, a in enumerate(s.answers):
         if in_table >> j & 1 and a.passed:
             continue                  # a table's right cell: counted in its table's line
-        why = MISTAKES[lang].get(a.diagnosis, a.diagnosis) if a.diagnosis else (
-            t["check"].format(formula=said[a.answer])
-            if a.verdict == "fail" and a.answer in said else t["none"])
-        own = from_own(s, j) if reveal and not a.diagnosis and a.verdict == "fail" \
-            and a.answer in said else None
+        # a wrong answer no classic mistake explains: the formula to check
+        unexplained = not a.diagnosis and a.verdict == "fail" and a.answer in said
+        why = (MISTAKES[lang].get(a.diagnosis, a.diagnosis) if a.diagnosis else
+               t["check"].format(formula=said[a.answer]) if unexplained else t["none"])
+        own = from_own(s, j) if reveal and unexplained else None
         if own is not None:           # worked from the student's own earlier answer
             value, source = own
             k = s.marking.names.index(source)
