@@ -62,3 +62,16 @@ def test_an_option_that_takes_a_value_says_what_in_words():
         for p in command.params:
             if p.param_type_name == "option" and not p.is_flag:
                 assert p.metavar and re.fullmatch(r"[A-Z][A-Z_:]*", p.metavar), (name, p.name)
+
+
+@pytest.mark.parametrize("lang", ["en", "ru"])
+def test_the_root_lists_each_command_on_one_line_when_the_terminal_is_wide(lang):
+    """The root's list of commands shows each command's first paragraph as a sentence: on a
+    wide terminal one line per command, not broken where its docstring's source lines break
+    (typer's rich help keeps single line breaks there)."""
+    res = runner.invoke(app, ["--help", "--lang", lang], env={"COLUMNS": "400"}, terminal_width=400)
+    assert res.exit_code == 0, res.output
+    rows = [ln.strip("│ ").split(None, 1) for ln in res.output.splitlines()
+            if ln.startswith("│ ") and not ln.startswith("│ -")]
+    names = [row[0] for row in rows if row]
+    assert names == list(COMMAND.commands), names          # no continuation lines between them

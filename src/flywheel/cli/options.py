@@ -219,7 +219,14 @@ class _UserWords:
     With ``--lang ru`` among the arguments the page is in Russian: each help text (msgctxt
     "help", msgid :func:`help_msgid` of the English) and typer's words (:func:`_typer_words`)
     from the catalogue, set while the page is formatted and put back after it (the English
-    page is typer's own, untouched)."""
+    page is typer's own, untouched). A help text's paragraphs have their lines joined
+    (:func:`help_msgid`): typer's rich help would keep a docstring's line breaks in the root's
+    list of commands."""
+
+    def __init__(self, *args, **kwargs):
+        super().__init__(*args, **kwargs)
+        if self.help:
+            self.help = help_msgid(self.help)
 
     def parse_args(self, ctx, args):
         ctx.meta.setdefault(_HELP_LANG, lang_of_argv(list(args)))
