@@ -213,3 +213,25 @@ def test_a_wrong_answer_is_worked_from_the_students_own_earlier_answer(compresso
     runner.invoke(app, ["grade", str(compressor / "answers.json"), str(sheet),
                         "--feedback", str(hidden), "--lang", "ru", "--no-reveal"])
     assert "из вашего" not in next(hidden.glob("001_*.html")).read_text(encoding="utf-8")
+
+
+def test_the_terminal_report_points_a_wrong_answer_at_its_formula_too(compressor, sheet):
+    """The teacher's terminal report had left the diagnosis of a wrong answer no classic mistake
+    explains empty (the feedback page gave the formula): it names the formula to check and what
+    the student's own earlier answer gives by it. Ivanov's M_Д is right, so his ΔT_нб worked
+    from it is the key's (within the printing's four digits)."""
+    res = runner.invoke(app, ["grade", str(compressor / "answers.json"), str(sheet),
+                              "--lang", "ru"], env={"COLUMNS": "400"}, terminal_width=400)
+    assert res.exit_code == 0, res.output
+    key = key_of(compressor)["variants"]["01"]
+    row = next(ln for ln in res.output.splitlines() if ln.startswith("│ ΔT_нб") and "НЕВЕРНО" in ln)
+    said = row.split("│")[7].strip()
+    m = re.fullmatch(r"проверить ΔT_нб = .*; из M_Д = ([\d,\u202f]+) студента получается "
+                     r"([\d,\u202f]+)", said)
+    assert m, said
+    assert ru_numbers(m.group(2)) == pytest.approx([key["delta_T_max"]], rel=5e-4)
+    half = next(ln for ln in res.output.splitlines() if ln.startswith("│ J_I") and "НЕВЕРНО" in ln)
+    assert half.split("│")[7].strip() == "вместо δ взято δ/2"      # a named mistake: its name
+    # the default share is 0: the carried-forward answers are counted and said not credited
+    assert ("верно по данным студента (следуют из его же предыдущих ответов): 3; не засчитаны"
+            in " ".join(res.output.split()))

@@ -10,12 +10,11 @@ import html
 import re
 
 from flywheel.render.catalogue import words
-from flywheel.render.grading import (MISTAKES, cells_off, formulas, key_spec, table_verdict,
+from flywheel.render.grading import (MISTAKES, cells_off, key_spec, table_verdict, to_check,
                                     verdict_word)
 from flywheel.render.numbers import fmt, typography
 from flywheel.render.mathfmt import sub_html
 from flywheel.render.sheet_labels import answer_words
-from flywheel.teaching.explain import from_own
 
 T = words("feedback", {
     "title": "Feedback: {student}, variant {variant}",
@@ -79,22 +78,18 @@ def page(s, lang: str = "en", reveal: bool = True, share: float = 0.0, kind: str
     the key's loads' titles and labels)."""
     t = T[lang]
     e = html.escape
-    said = formulas(kind, lang)
     rows = []
     in_table = s.marking.cells
     for j, a in enumerate(s.answers):
         if in_table >> j & 1 and a.passed:
             continue                  # a table's right cell: counted in its table's line
         # a wrong answer no classic mistake explains: the formula to check
-        unexplained = not a.diagnosis and a.verdict == "fail" and a.answer in said
+        check = to_check(s, j, kind, lang, reveal)
         why = (MISTAKES[lang].get(a.diagnosis, a.diagnosis) if a.diagnosis else
-               t["check"].format(formula=said[a.answer]) if unexplained else t["none"])
-        own = from_own(s, j) if reveal and unexplained else None
-        if own is not None:           # worked from the student's own earlier answer
-            value, source = own
-            k = s.marking.names.index(source)
-            why += t["yours"].format(symbol=answer_words(kind, source, lang)[1] or source,
-                                     given=_num(s.given[k], lang, given=True),
+               t["check"].format(formula=check[0]) if check else t["none"])
+        if check and check[1]:        # worked from the student's own earlier answer
+            symbol, given, value = check[1]
+            why += t["yours"].format(symbol=symbol, given=_num(given, lang, given=True),
                                      value=_num(value, lang, spec=key_spec(a)))
         cells = [f"{sub_html(label(a.answer, lang, kind, at_deg, loads))}<br>"
                  f"<small>{e(a.answer)}</small>",

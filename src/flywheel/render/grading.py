@@ -34,6 +34,10 @@ TEXT = words("grading", {"summary": "Class summary: {n} graded, mean score {mean
                          "carried_col": "carried forward",
                          "carried_note": "carried forward: {n} answer(s) consistent with the "
                          "student's earlier ones, credited {share} each",
+                         "carried_none": "carried forward: {n} answer(s) consistent with the "
+                         "student's earlier ones, not credited (a share: --carried-forward)",
+                         "check": "check {formula}",
+                         "theirs": "; from the student's {symbol} = {given} it is {value}",
                          "cells": "{right}/{n} cells", "off_row": "row {rows}: {column} off",
                          "off_rows": "rows {rows}: {column} off",
                          "off_pair": "pair {rows}: {column} off",
@@ -113,6 +117,29 @@ def answer_names(answers, kind: str = "run", lang: str = "en") -> dict[str, str]
                or answer_words(kind, a, lang)[1]) for a in keys}
     taken = list(sym.values())
     return {a: sym[a] if sym[a] and taken.count(sym[a]) == 1 else a for a in keys}
+
+
+def to_check(s, j: int, kind: str, lang: str, reveal: bool = True):
+    """What to check in answer ``j`` of a graded student ``s`` (grading.StudentGrade) that is
+    wrong and no classic mistake explains: (formula, worked) — the answer's formula in
+    ``lang`` (:func:`formulas`) and, with ``reveal``, (symbol, given, value): the student's
+    own earlier answer the formula starts from (its symbol as the task sheet prints it, the
+    student's value of it) and what the formula gives from it (teaching/explain.py
+    ``from_own``), else None. None for an answer right, carried forward, named as a classic
+    mistake, or without a formula. Shared by the terminal report and the feedback page."""
+    from flywheel.render.sheet_labels import answer_words
+    from flywheel.teaching.explain import from_own
+
+    a = s.answers[j]
+    said = formulas(kind, lang)
+    if a.diagnosis or a.verdict != "fail" or a.answer not in said:
+        return None
+    own = from_own(s, j) if reveal else None
+    if own is None:
+        return said[a.answer], None
+    value, source = own
+    given = s.given[s.marking.names.index(source)]
+    return said[a.answer], (answer_words(kind, source, lang)[1] or source, given, value)
 
 
 def key_spec(a) -> str | None:
@@ -336,6 +363,20 @@ def print_variants(vs, out, console=None, sheets: str | None = None, lang: str =
                   highlight=False, markup=False, soft_wrap=True)
 
 
+def _check_text(check, a, t: dict) -> str:
+    """The terminal's diagnosis of a wrong answer no classic mistake explains (:func:`to_check`):
+    «проверить J_I = ΔT_нб/(δ·ω_ср²); из ΔT_нб = 810,1 студента получается 1,781»."""
+    from rich.markup import escape
+
+    formula, worked = check
+    text = t["check"].format(formula=formula)
+    if worked:
+        symbol, given, value = worked
+        text += t["theirs"].format(symbol=symbol, given=_g(given, given=True),
+                                   value=_g(value, key_spec(a) or ".6g"))
+    return escape(text)
+
+
 def _pct(x: float | None) -> str:
     return "—" if x is None else _number(100 * x, spec=".0f", zero=None, nonfinite="show") + " %"
 
@@ -367,9 +408,11 @@ def print_report(r, console=None, lang: str = "en") -> None:
         table.add_column(t["error"], justify="right")
         table.add_column(t["tolerance"], justify="right")
         table.add_column("")
-        # the diagnosis column where there is one to show
+        # the diagnosis column where there is one to show: a named mistake, a table's cells
+        # off, or the formula to check of a wrong answer no classic mistake explains
+        checks = {j: c for j in range(len(s.answers)) if (c := to_check(s, j, r.key.kind, lang))}
         explained = any(a.diagnosis for a in s.answers) or any(
-            off for *_, off in s.table_grades)
+            off for *_, off in s.table_grades) or bool(checks)
         if explained:
             table.add_column(t["diagnosis"])
         in_table = s.marking.cells
@@ -387,7 +430,8 @@ def print_report(r, console=None, lang: str = "en") -> None:
             cells = [shown.get(a.answer, a.answer), _g(a.given, given=True), key, err,
                      f"{_pct_of(a.tolerance)} %", mark]
             if explained:
-                cells.append(MISTAKES[lang].get(a.diagnosis, a.diagnosis or ""))
+                cells.append(MISTAKES[lang].get(a.diagnosis, a.diagnosis or "")
+                             if j not in checks else _check_text(checks[j], a, t))
             table.add_row(*cells)
         for name, right, n, off in s.table_grades:
             mark = f"[green]{t['pass']}[/]" if right == n else f"[red]{t['fail']}[/]"
@@ -424,7 +468,7 @@ def print_report(r, console=None, lang: str = "en") -> None:
         carried = sum(s.carried_count for s in r.students)
         if carried:
             share = _number(r.carried_share, sig=3)
-            console.print(t["carried_note"].format(
+            console.print(t["carried_note" if r.carried_share else "carried_none"].format(
                 n=carried, share=share.replace(".", ",") if lang == "ru" else share),
                 highlight=False)
     if r.problems:
