@@ -407,7 +407,7 @@ def print_report(r, console=None, lang: str = "en") -> None:
         table.add_column(t["key"], justify="right")
         table.add_column(t["error"], justify="right")
         table.add_column(t["tolerance"], justify="right")
-        table.add_column("")
+        table.add_column(t["verdict"])
         # the diagnosis column where there is one to show: a named mistake, a table's cells
         # off, or the formula to check of a wrong answer no classic mistake explains
         checks = {j: c for j in range(len(s.answers)) if (c := to_check(s, j, r.key.kind, lang))}
