@@ -684,29 +684,43 @@ def test_no_force_name_on_sheet_2_lies_along_a_line(case):
 @pytest.mark.parametrize("case", ["compressor", "compressor_given_flywheel"])
 @pytest.mark.parametrize("lang", ["ru", "en"])
 def test_sheet_1s_results_name_each_row_once(case, lang):
-    """The main results' table of sheet 1: no two rows with the same name — its two δ were both
-    «δ» (0,05 and 0,04965); they are the target (or the given flywheel's) and the achieved."""
+    """The main results' table of sheet 1 has four columns — name, symbol, value, unit — and
+    every row a name of words from a capital letter (ГОСТ 2.105, 4.4): its rows had mixed a
+    symbol alone («M_Д») with words («маховик (диск): масса m»), and its two δ had both read
+    «δ». No two rows share a name; the two δ are told apart by it (the target and the
+    achieved); a given flywheel has one δ, the one it achieves, and a J_I not «required»."""
     from flywheel.cases.run import load_case
     from flywheel.dynamics.pipeline import analyze
     from flywheel.render.drawings import sheet1
-    from flywheel.render.drawings.model import Text
+    from flywheel.render.drawings.model import Polyline, Text
 
     res = analyze(load_case(Path(__file__).resolve().parents[2] / "cases" / f"{case}.toml"),
                   n_points=360)
     v = sheet1.results_table(res, lang)
-    x0 = v.box()[0]
-    rows: dict[int, str] = {}                    # the first column's lettering, row by row
-    for t in v.items:                            # (rows 8 mm high, a subscript 1 mm lower)
-        if isinstance(t, Text) and t.x < x0 + 30 and t.y < v.box()[3] - 1:
-            k = int((t.y - v.box()[1]) // 8.0)
-            rows[k] = rows.get(k, "") + t.text
-    names = list(rows.values())
-    assert len(names) >= 9 and len(set(names)) == len(names), names
-    deltas = [n for n in names if n.startswith("δ")]
-    assert len(deltas) == 2
-    word = {"ru": ("при заданном маховике" if "given" in case else "заданный", "достигнутый"),
-            "en": ("given flywheel" if "given" in case else "target", "achieved")}[lang]
-    assert word[0] in deltas[0] and word[1] in deltas[1], deltas
+    y0 = v.box()[1]
+    cells = [t for t in v.items if isinstance(t, Text) and t.height < 5]   # not its title
+    # the column lines: the vertical lines of the grid, the outline's aside
+    walls = sorted({it.points[0][0] for it in v.items if isinstance(it, Polyline)
+                    and len(it.points) == 2 and it.points[0][0] == it.points[1][0]})
+    rows: dict[int, list[str]] = {}              # each row's lettering, column by column
+    for t in cells:                              # (rows 8 mm high, a subscript 1 mm lower)
+        k = int((t.y - y0) // 8.0)
+        col = sum(t.x > x for x in walls)
+        rows.setdefault(k, ["", "", "", ""])[col] += t.text
+    table = [rows[k] for k in sorted(rows, reverse=True)]
+    head, body = table[0], table[1:]
+    assert head == {"ru": ["Величина", "Обозначение", "Значение", "Ед. изм."],
+                    "en": ["Quantity", "Symbol", "Value", "Unit"]}[lang], head
+    names = [r[0] for r in body]
+    assert len(names) >= 8 and len(set(names)) == len(names), names
+    assert all(n[0].isupper() and len(n.split()) >= 2 for n in names), names
+    deltas = [r[0] for r in body if r[1] == "δ"]
+    given = "given" in case
+    word = {"ru": ["при заданном маховике"] if given else ["Заданный", "Достигнутый"],
+            "en": ["given flywheel"] if given else ["target", "achieved"]}[lang]
+    assert len(deltas) == len(word) and all(w in d for w, d in zip(word, deltas)), deltas
+    J_I = next(r[0] for r in body if r[1].startswith("J") and r[1].endswith("I"))
+    assert (("Необходимый" in J_I or "Required" in J_I) != given), J_I
 
 
 def test_the_sheets_lowercase_letters_stand_at_one_x_height():

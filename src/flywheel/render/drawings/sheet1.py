@@ -31,14 +31,21 @@ T = words("drawings1", {
     "results": "Main results",
     "stroke": "stroke of the piston = 100 mm",
     "quantity": "Quantity",
+    "symbol": "Symbol",
     "value": "Value",
     "unit": "Unit",
-    "flywheel_D": "flywheel (disk): outer diameter D",
-    "flywheel_b": "flywheel (disk): width b",
-    "flywheel_m": "flywheel (disk): mass m",
-    "delta_target": "δ, the target",
-    "delta_given": "δ of the given flywheel",
-    "delta_achieved": "δ achieved",
+    "row_driving": "Driving moment (cycle mean)",
+    "row_resistance": "Moment of the resistance (cycle mean)",
+    "row_delta_T": "Largest change of kinetic energy",
+    "row_J_I": "Required inertia of the first group",
+    "row_J_I_given": "Moment of inertia of the first group",
+    "row_J_M": "Moment of inertia of the flywheel",
+    "row_delta_target": "Coefficient of speed fluctuation, target",
+    "row_delta_given": "Coefficient of speed fluctuation with the given flywheel",
+    "row_delta_achieved": "Coefficient of speed fluctuation, achieved",
+    "row_D": "Outer diameter of the flywheel disk",
+    "row_b": "Width of the flywheel disk",
+    "row_m": "Mass of the flywheel disk",
 })
 
 DIAGRAM_W = 180.0     # a φ diagram's abscissa over the cycle [mm]
@@ -172,29 +179,40 @@ def _wittenbauer(results, lang: str, side: float) -> View:
 
 
 def results_table(results, lang: str) -> View:
-    """The main results: M_Д (or M_С), ΔT_нб, J_I, J_М, δ, the disk flywheel's D, b, m."""
+    """The main results as a table of four columns — name, symbol, value, unit (ГОСТ 2.105-2019,
+    4.4: a table's column heads and its cells' text from a capital letter): M_Д (or M_С),
+    ΔT_нб, J_I, J_М, the two δ (the target and the achieved: both «δ» as symbols, told apart
+    by their names; a given flywheel's one, which it achieves), the disk flywheel's D, b, m.
+    A given flywheel's J_I is the first group's, J_М + (J_10 + J_ред), not a required one."""
     t = _t(lang)
     sc = results.scalars
     key = "driving_moment" if sc.balance == "driving" else "M_C"
     disk = sc.flywheel_disk
-    rows = [(nm.symbol(key, lang), sc.balancing_moment, nm.unit_of(key, lang)),
-            (nm.symbol("delta_T_max", lang), sc.delta_T_max, nm.unit_of("delta_T_max", lang)),
-            (nm.symbol("J_required", lang), sc.J_required, nm.unit_of("J_required", lang)),
-            (nm.symbol("J_flywheel", lang), sc.J_flywheel, nm.unit_of("J_flywheel", lang)),
-            # the two δ by name: both are «δ» as symbols
-            (t["delta_given" if sc.flywheel_given else "delta_target"], sc.delta, "–"),
-            (t["delta_achieved"], sc.delta_achieved, "–"),
-            (t["flywheel_D"], disk.D, nm.unit_of("D", lang)),
-            (t["flywheel_b"], disk.b, nm.unit_of("b", lang)),
-            (t["flywheel_m"], disk.mass, nm.unit_of("mass", lang))]
-    head = (t["quantity"], t["value"], t["unit"])
-    w0 = max(text_width(r[0].replace("_", ""), 3.5) for r in rows + [head]) + 6.0
-    widths = (max(w0, 40.0), 30.0, 22.0)
+    rows = [(t["row_driving" if key == "driving_moment" else "row_resistance"], nm.symbol(key, lang),
+             sc.balancing_moment, nm.unit_of(key, lang)),
+            (t["row_delta_T"], nm.symbol("delta_T_max", lang), sc.delta_T_max,
+             nm.unit_of("delta_T_max", lang)),
+            (t["row_J_I_given" if sc.flywheel_given else "row_J_I"],
+             nm.symbol("J_required", lang), sc.J_required, nm.unit_of("J_required", lang)),
+            (t["row_J_M"], nm.symbol("J_flywheel", lang), sc.J_flywheel,
+             nm.unit_of("J_flywheel", lang))]
+    if sc.flywheel_given:           # its δ is the one it achieves: one row
+        rows.append((t["row_delta_given"], "δ", sc.delta_achieved, "–"))
+    else:
+        rows += [(t["row_delta_target"], "δ", sc.delta, "–"),
+                 (t["row_delta_achieved"], "δ", sc.delta_achieved, "–")]
+    rows += [(t["row_D"], "D", disk.D, nm.unit_of("D", lang)),
+             (t["row_b"], "b", disk.b, nm.unit_of("b", lang)),
+             (t["row_m"], "m", disk.mass, nm.unit_of("mass", lang))]
+    head = (t["quantity"], t["symbol"], t["value"], t["unit"])
+    w0 = max(text_width(r[0], 3.5) for r in rows + [head]) + 6.0
+    w1 = max(text_width(r[1].replace("_", ""), 3.5) for r in rows + [head]) + 8.0
+    widths = (max(w0, 40.0), w1, 30.0, 24.0)
     row_h = 8.0
     v = View("results")
     n = len(rows) + 1
     W, H = v.grid(widths, n, row_h)
-    for k, row in enumerate([head] + [(a, num(b, lang), c) for a, b, c in rows]):
+    for k, row in enumerate([head] + [(a, b, num(c, lang), d) for a, b, c, d in rows]):
         y = H - (k + 0.5) * row_h
         x = 0.0
         for j, (w, cell) in enumerate(zip(widths, row)):
