@@ -137,3 +137,22 @@ def test_a_usage_error_is_one_error_line():
         assert "--help)" in lines[0] and res.stdout == ""
     res = console_script()                               # no arguments: the help, exit 0
     assert res.returncode == 0 and "Commands" in res.stdout
+
+
+import pytest  # noqa: E402
+
+
+@pytest.mark.parametrize("args", [("task2", "--profile", "triangle"),
+                                  ("aggregate", CASES / "aggregate.toml", "--t-end", "0.2")])
+def test_russian_terminal_tables_number_rows_under_the_number_sign(args):
+    """A Russian terminal table numbers its rows under «№», as the records do; task 2's and the
+    aggregate's had a bare «#». English keeps «#». The aggregate's min … max is said in words."""
+    ru = console_script(*args, "--lang", "ru")
+    assert ru.returncode == 0, ru.stderr
+    heads = [ln for ln in ru.stdout.splitlines() if ln.startswith("┃")]
+    assert heads and not any(ln.split("┃")[1].strip() == "#" for ln in heads), heads
+    assert any(ln.split("┃")[1].strip() == "№" for ln in heads), heads
+    assert "min … max" not in ru.stdout
+    en = console_script(*args)
+    assert any(ln.split("┃")[1].strip() == "#" for ln in en.stdout.splitlines()
+               if ln.startswith("┃"))

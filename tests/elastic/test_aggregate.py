@@ -395,6 +395,31 @@ def test_case_errors_name_the_field(patch, where):
     assert "\n" not in str(e.value)
 
 
+@pytest.mark.parametrize("patch, english, russian", [
+    ({"motor": {"J": None}}, "(J_D, the motor's rotor", "(J_Д, момент инерции ротора"),
+    ({"motor": {"starting_torque": None, "rated_torque": 100.0}}, "(M_st = M_r/s_r)",
+     "(M_п = M_н/s_н)"),
+    ({"machine": {"M0": 1e6}}, "M_st = 500 N·m is not above", "M_п = 500 Н·м не больше"),
+    ({"machine": {"J_III": None}}, "(J_red.III [kg·m²])", "(J_пр.III, кг·м²)"),
+])
+def test_an_english_error_writes_english_symbols_a_russian_one_efanovs(patch, english, russian):
+    """English error lines had carried Efanov's Cyrillic symbols (J_Д, M_п = M_н/s_н, J_пр.III);
+    they write J_D, M_st = M_r/s_r, J_red.III, and the Russian lines keep his."""
+    from flywheel.render.messages import message
+
+    base = {"motor": {"J": 0.1, "synchronous_rpm": 1500.0, "starting_torque": 500.0},
+            "coupling": {"c": 3000.0}, "machine": {"J_III": 0.7, "i31": 0.4, "M0": 100.0}}
+    for k, v in patch.items():
+        base[k] = {key: x for key, x in {**base[k], **v}.items() if x is not None}
+    with pytest.raises(CaseFileError) as e:
+        parse_aggregate_case(base, "x.toml")
+    from flywheel.errors import said
+
+    en, ru = message(said(e.value), "en"), message(said(e.value), "ru")
+    assert english in en and not re.search("[А-Яа-яЁё]", en.replace("x.toml", "")), en
+    assert russian in ru, ru
+
+
 # -- CLI ------------------------------------------------------------------------------------------
 
 runner = CliRunner()

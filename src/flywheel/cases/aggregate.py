@@ -46,16 +46,16 @@ Ratio = Annotated[float, Field(gt=0), within(1e-3, 1e3, "")]
 class Motor(StrictModel):
     """The driving motor on shaft I."""
 
-    J: Inertia | None = Field(None, description="J_Д, the rotor's moment of inertia [kg·m²] (two-mass "
+    J: Inertia | None = Field(None, description="J_D, the rotor's moment of inertia [kg·m²] (two-mass "
                                             "form only; in a chain the first rotor is the motor)")
     characteristic: Literal["linear", "constant"] = Field(
-        "linear", description="linear: M_Д = M_п·(1 − ω/ω_x); constant: M_Д = M_0·i31")
+        "linear", description="linear: M_D = M_st·(1 − ω/ω_x); constant: M_D = M_0·i31")
     synchronous_rpm: Rpm | None = Field(None, description="ω_x, synchronous (no-load) speed "
                                                           "[rev/min] (linear)")
-    starting_torque: Torque | None = Field(None, description="M_п [N·m] (linear)")
-    rated_torque: Torque | None = Field(None, description="M_н [N·m] (linear, with rated_slip, "
+    starting_torque: Torque | None = Field(None, description="M_st, the starting torque [N·m] (linear)")
+    rated_torque: Torque | None = Field(None, description="M_r, the rated torque [N·m] (linear, with rated_slip, "
                                                        "instead of starting_torque)")
-    rated_slip: float | None = Field(None, gt=0, lt=1, description="s_н, 0 < s < 1: M_п = M_н/s_н")
+    rated_slip: float | None = Field(None, gt=0, lt=1, description="s_r, the rated slip, 0 < s_r < 1: M_st = M_r/s_r")
     speed_rpm: Annotated[float, Field(gt=0), within(1e-6, 1e5, "rpm")] | None = Field(None, description="steady speed of shaft I [rev/min] (constant)")
 
 
@@ -95,13 +95,13 @@ class Flywheel(StrictModel):
 class Machine(StrictModel):
     """The machine behind the coupling (seed 003)."""
 
-    J_III: Inertia | None = Field(None, description="J_пр.III, the mechanism reduced to shaft III "
+    J_III: Inertia | None = Field(None, description="J_red.III, the mechanism reduced to shaft III "
                                                 "[kg·m²]")
-    J_III_0: NonNeg | None = Field(None, description="J_пр.0, its constant part [kg·m²] (with "
+    J_III_0: NonNeg | None = Field(None, description="J_red.0, its constant part [kg·m²] (with "
                                                      "J_III_positions)")
     J_III_positions: list[NonNeg] | None = Field(
         None, description="J̃_i, the variable part at the positions of a cycle [kg·m²]: "
-                          "J_пр.III = J_пр.0 + ΣJ̃_i/n")
+                          "J_red.III = J_red.0 + ΣJ̃_i/n")
     i21: Ratio | None = Field(None, description="ω_II/ω_I (needed with a flywheel on shaft II)")
     i31: Ratio = Field(description="ω_III/ω_I")
     flywheel: Flywheel | None = None
@@ -224,7 +224,7 @@ def _motor(m: Motor, M0: float, forcing_ratio: float, amplitude: float, chain_fo
             "ag_chain_motor_J", "in a chain the first rotor is the motor: give its J in rotors[0]"))
     if not chain_form and m.J is None:
         raise FieldError("motor.J", Notice.of(
-            "motor_J_missing", "missing required field (J_Д, the motor's rotor [kg·m²])"))
+            "motor_J_missing", "missing required field (J_D, the motor's rotor [kg·m²])"))
     if m.characteristic == "linear":
         for k in ("speed_rpm",):
             if getattr(m, k) is not None:
@@ -241,7 +241,7 @@ def _motor(m: Motor, M0: float, forcing_ratio: float, amplitude: float, chain_fo
                 "rated_slip"))
         if m.rated_torque is not None and m.rated_slip is None:
             raise FieldError("motor.rated_slip", Notice.of(
-                "ag_slip_missing", "missing: needed with rated_torque (M_п = M_н/s_н)"))
+                "ag_slip_missing", "missing: needed with rated_torque (M_st = M_r/s_r)"))
         if m.starting_torque is not None and m.rated_slip is not None:
             raise FieldError("motor.rated_slip", Notice.of(
                 "ag_slip_only_rated", "only with rated_torque"))
@@ -249,7 +249,7 @@ def _motor(m: Motor, M0: float, forcing_ratio: float, amplitude: float, chain_fo
                    else starting_torque_from_rated(m.rated_torque, m.rated_slip))
         if not M0 < M_start:
             raise FieldError("motor.starting_torque", Notice.of(
-                "ag_motor_too_weak", "the motor cannot drive the machine: M_п = {M_start:g} N·m is "
+                "ag_motor_too_weak", "the motor cannot drive the machine: M_st = {M_start:g} N·m is "
                 "not above the mean resistance reduced to shaft I, {M0:g} N·m", M_start=M_start,
                 M0=M0))
         return Drive("linear", M0, amplitude, forcing_ratio, M_start=M_start,
@@ -283,7 +283,7 @@ def build(case: AggregateCase):
                     "and [machine]"))
         if case.motor is None:
             raise FieldError("motor", Notice.of(
-                "ag_two_mass_motor", "missing: the two-mass aggregate needs [motor] with J (J_Д)"))
+                "ag_two_mass_motor", "missing: the two-mass aggregate needs [motor] with J (J_D)"))
         m = case.machine
         if m.J_III is not None and (m.J_III_0 is not None or m.J_III_positions is not None):
             raise FieldError("machine.J_III", Notice.of(
@@ -291,7 +291,7 @@ def build(case: AggregateCase):
         if m.J_III is None:
             if m.J_III_positions is None:
                 raise FieldError("machine.J_III", Notice.of(
-                    "J_III_missing", "missing: give J_III (J_пр.III [kg·m²]), or J_III_0 with "
+                    "J_III_missing", "missing: give J_III (J_red.III [kg·m²]), or J_III_0 with "
                     "J_III_positions"))
             if not m.J_III_positions:
                 raise FieldError("machine.J_III_positions", Notice.of(
@@ -299,7 +299,7 @@ def build(case: AggregateCase):
             J_III = mean_reduced_inertia(m.J_III_0 or 0.0, m.J_III_positions)
             if not J_III > 0:
                 raise FieldError("machine.J_III_positions", Notice.of(
-                    "ag_J_III_zero", "J_пр.III comes out zero: must be positive"))
+                    "ag_J_III_zero", "J_red.III comes out zero: must be positive"))
         else:
             J_III = m.J_III
         if m.flywheel is not None and m.flywheel.shaft == "II" and m.i21 is None:

@@ -406,7 +406,7 @@ class Drive:
                 raise InputError(
                     f"the motor cannot drive the machine: the mean resistance reduced to shaft I, "
                     f"M_0·i31 = {self.M0:g} N·m, is not below the starting torque "
-                    f"M_п = {self.M_start:g} N·m")
+                    f"M_st = {self.M_start:g} N·m")
             return self.omega_x * (1.0 - self.M0 / self.M_start)
         return self.omega_nominal
 

@@ -149,7 +149,7 @@ def check_work(ch: Chain, drive: Drive | None, t_end: float, what: str, option: 
         fix = f"give a shorter {option}"
     elif motor_rate >= 0.5 * rho:
         cause = "motor: "
-        fix = (f"the motor's characteristic is steep for its rotor: M_п/ω_x over J_Д = "
+        fix = (f"the motor's characteristic is steep for its rotor: M_st/ω_x over J_D = "
                f"{motor_rate:.3g} 1/s; a gentler slope (motor.synchronous_rpm, the torque) or a "
                "heavier rotor (the motor's J) makes it tractable")
     else:

@@ -76,11 +76,11 @@ def print_summary(r, title: str = "", source: str = "", console=None, lang: str 
                       + (f"  ({e(cut_end(source))})" if source else ""))
     ch = r.chain
     names = [nm.rotor_name(n, lang) for n in ch.names]
-    t = table(L("ag_rotors"), ("#", L("rotor"), L("J_reduced"), L("u")))
+    t = table(L("ag_rotors"), (L("row_no"), L("rotor"), L("J_reduced"), L("u")))
     for k, (n, j, u) in enumerate(zip(names, ch.J, ch.ratio)):
         row(t, k + 1, n, _g(j), _g(u))
     console.print(t)
-    t = table(L("ag_connections"), ("#", L("between"), L("c"), L("damping")))
+    t = table(L("ag_connections"), (L("row_no"), L("between"), L("c"), L("damping")))
     for k, (c, b, (i, j)) in enumerate(zip(ch.c, ch.damping, ch.pairs)):
         row(t, k + 1, f"{names[i]} – {names[j]}", _g(c), _g(b))
     if ch.fixed:
@@ -180,7 +180,7 @@ def _print_modes(r, console, lang: str) -> None:
         t.add_row(str(k + 1), e(_g(w / TWO_PI)), e(_g(w * RPM_PER_RAD_S)), e("; ".join(parts) or "—"))
     console.print(t)
     t = Table(title=e(L("ag_shafts")))
-    for col in ("#", L("between"), L("gear_ratio"), L("c_input"), L("length"),
+    for col in (L("row_no"), L("between"), L("gear_ratio"), L("c_input"), L("length"),
                 L("equivalent_length"), L("d_ref")):
         t.add_column(e(col))
     for line in ch.lines:

@@ -245,7 +245,7 @@ def _print_tabulated(report, console, lang: str = "en") -> None:
                         (w["tab_red"].format(M=nm.symbol("M_dyn", lang),
                                              w=nm.symbol("omega_mean", lang), dJ=dJ,
                                              how=how), reduced)):
-        t = _table(title, ("#", *(c[0] for c in cols)))
+        t = _table(title, (nm.name("row_no", lang), *(c[0] for c in cols)))
         for k in range(len(tab.positions_deg)):
             t.add_row(str(k + 1), *(_g(float(v[k])) for _, v in cols))
         console.print(t)

@@ -530,6 +530,7 @@ TERMS: dict[str, Term] = {
     "t2_omega": _ci("ω", "rad/s", "ω", "ω"),
     "t2_phi_deg": _ci("φ°", "deg", "φ°", "φ, °"),
     "phi_pi": _ci("φ/π", "", "φ/π", "φ/π"),
+    "row_no": _ci("", "", "#", "№"),      # a terminal table's row number (a record's: «№»)
     "rpm": _ci("n", "rpm", "{n} rpm", "{n} об/мин"),
     "angle": _ci("φ", "deg", "φ = {deg}° ({pi} rad)", "φ = {deg}° ({pi} рад)"),
     # --- flywheel (task2's designed rim; were in render/nomenclature_ci.py) ---
@@ -600,10 +601,11 @@ TERMS: dict[str, Term] = {
                          "упругий момент c·(φ1 − φ2) = −c·q2, среднее"),
     "moment_amp": _ci("M_у", "N·m", "elastic moment −c·q2, amplitude",
                         "упругий момент −c·q2, амплитуда"),
-    "omega_motor": _ci("ω1", "rad/s", "ω1 (motor) min … max", "ω1 (двигатель) min … max"),
+    "omega_motor": _ci("ω1", "rad/s", "ω1 (motor) min … max",
+                         "ω1 двигателя, наименьшая … наибольшая"),
     "delta_motor": _ci("δ", "", "δ motor", "δ двигателя"),
     "omega_machine": _ci("ω2", "rad/s", "ω2 (machine, own shaft) min … max",
-                           "ω2 (машина, на своём валу) min … max"),
+                           "ω2 машины (на своём валу), наименьшая … наибольшая"),
     "delta_machine": _ci("δ", "", "δ machine", "δ машины"),
     "startup_peak": _ci("", "N·m", "start-up: peak elastic moment",
                           "пуск: наибольший упругий момент"),

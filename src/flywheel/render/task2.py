@@ -78,7 +78,7 @@ def print_summary(r, title: str = "", source: str = "", console=None, lang: str 
                         omega0=_g(r.omega0, ".6f")))
 
     t = Table(title=L("t2_segments"))
-    for col, just in (("#", "right"), (L("t2_phi_deg"), "right"), (L("phi_pi"), "right"),
+    for col, just in ((L("row_no"), "right"), (L("t2_phi_deg"), "right"), (L("phi_pi"), "right"),
                       (L("point"), "left"), (nm.symbol("t2_M_D", lang), "right"),
                       (nm.symbol("t2_M_C", lang), "right"), (L("t2_A"), "right"), (L("t2_omega"), "right")):
         t.add_column(col, justify=just, no_wrap=True)
@@ -155,7 +155,7 @@ def _print_motion(r, console, lang: str) -> None:
                   "")
     console.print(t)
     t = Table(title=L("t2_phases"))
-    for col, just in (("#", "right"), (L("phi_from"), "right"), (L("phi_to"), "right"),
+    for col, just in ((L("row_no"), "right"), (L("phi_from"), "right"), (L("phi_to"), "right"),
                       (L("trend"), "left"), (L("t_start"), "right"), (L("duration"), "right")):
         t.add_column(col, justify=just, no_wrap=True)
     for i, ph in enumerate(r.phases):
