@@ -190,6 +190,55 @@ def test_a_duty_cycles_flywheel_is_worked_with_its_numbers(name):
     assert _num(got.group(3)) == pytest.approx(r.mass, rel=1e-5)
 
 
+def test_a_given_flywheels_speed_after_the_operation_is_worked_with_its_numbers():
+    """Khurmi & Gupta Ex. 16.21 gives the riveter's flywheel (150 kg at k = 0,6 m) and its speed
+    before riveting: the record works J = m·k² and ω_min = √(ω_max² − 2·ΔE/J) with the numbers
+    the tables print, citing formulas (3) and the new one, and n_min = 30·ω_min/π. The FOSSEE
+    companion prints N2 = 257.6 rpm; exactly ΔE = 7000 J, ω_min = √((10π)² − 14000/54)."""
+    from flywheel.cases.duty_cycle import load_duty_case, solve_case
+    from flywheel.render.numbers import typography
+    from flywheel.render.report_duty_cycle import build_duty_cycle_document
+
+    name = "duty_khurmi_16_21_riveting"
+    r = solve_case(load_duty_case(CASES / f"{name}.toml"), name)
+    with typography("ru"):
+        doc = build_duty_cycle_document(r, "T", "S", "ru")
+    f = _formulas(doc)
+    cited, (J, w, n) = _put(doc)
+    assert "J = m k^{2}" in f[cited[0]]
+    assert f[cited[1]].startswith(r"\omega_{min} = \sqrt{\omega_{max}^{2} - \frac{2 \Delta E}{J}}")
+    got = re.search(rf"J = m k\^\{{2\}} = {N} \\cdot {N}\^\{{2\}} = {N}", J)
+    _close(_num(got.group(1)) * _num(got.group(2)) ** 2, got.group(3))
+    got = re.search(rf"\\sqrt\{{{N}\^\{{2\}} - \\frac\{{2 \\cdot {N}\}}\{{{N}\}}\}} = {N}", w)
+    w1, dE, J_, w2 = (_num(got.group(k)) for k in range(1, 5))
+    _close(math.sqrt(w1 ** 2 - 2 * dE / J_), got.group(4))
+    assert w2 == pytest.approx(math.sqrt((10 * math.pi) ** 2 - 14000 / 54), rel=5e-6)
+    got = re.search(rf"n_{{min}} = \\frac\{{30 \\omega_\{{min\}}\}}\{{\\pi\}} = {N}", n)
+    assert round(_num(got.group(1)), 1) == 257.6             # printed: 257.6 rpm
+
+
+def test_a_line_leading_into_formulas_stays_on_their_page():
+    """«Подстановка найденных значений в формулы (3) и (4):» had closed page 4 of Ex. 16.21's
+    PDF, its formulas on page 5: the typst of both layouts keeps it with them (a sticky block,
+    still a paragraph with its indent) and both DOCX writers set keep-with-next."""
+    from docx import Document as Docx
+
+    from flywheel.render import report_formats, report_gost
+    from flywheel.render.blocks import Document, Heading, Paragraph
+
+    doc = Document("T", "ru")
+    doc.blocks += [Heading(1, "T"), Heading(2, "1. Метод"), Paragraph("Текст."),
+                   Paragraph("Подстановка в формулу (1):"), Formula(r"a = b")]
+    for source in (report_formats.typst_source(doc), report_gost.typst_source(doc)):
+        assert "#block(sticky: true" in source and "#par[" in source
+        assert source.count("sticky: true, spacing") == 1          # the lead-in alone
+    for data in (report_formats.docx(doc), report_gost.docx(doc)):
+        paragraphs = Docx(io.BytesIO(data)).paragraphs
+        lead = next(p for p in paragraphs if p.text.startswith("Подстановка"))
+        plain = next(p for p in paragraphs if p.text == "Текст.")
+        assert lead.paragraph_format.keep_with_next and not plain.paragraph_format.keep_with_next
+
+
 RUN = sorted(p.stem for p in CASES.glob("*.toml")
              if not p.stem.startswith(("task2", "aggregate", "duty", "variants")))
 

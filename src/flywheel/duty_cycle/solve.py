@@ -176,6 +176,9 @@ class DutyCycleResult:
     checks: tuple[tuple[str, float], ...]
     warnings: tuple[str, ...]
     rim: object | None = None     # [flywheel.rim]: the designed rim (dynamics.sizing.RimDesign)
+    #: a given flywheel's given speed, "max", "mean" or "min" (the others found from it by
+    #: ½·J·(ω_max² − ω_min²) = ΔE); None for a flywheel found from its speeds
+    speed_given: str | None = None
 
     #: the JSON document's keys in order (io/serialize.py; every None is written as null):
     #: docs/duty-cycle.md "Results"
@@ -511,7 +514,9 @@ def _result(d: DutyCycle, tl: _Timeline, J: float) -> DutyCycleResult:
         revolutions_per_operation=None if cycle_angle is None else cycle_angle / TWO_PI,
         operations_per_hour=None if tl.Tc is None else 3600.0 / tl.Tc,
         flywheel_given=d.flywheel_given,
-        checks=tuple(checks), warnings=tuple(warnings))
+        checks=tuple(checks), warnings=tuple(warnings),
+        speed_given=None if not d.flywheel_given else "max" if d.speed_max is not None
+        else "mean" if d.speed_mean is not None else "min")
 
 
 def nonfinite(r: DutyCycleResult) -> str | None:

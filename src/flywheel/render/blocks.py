@@ -20,6 +20,12 @@ class Heading:
 class Paragraph:
     text: str           # may hold **bold** runs
 
+    @property
+    def leads_in(self) -> bool:
+        """Whether it leads into the block after it (it ends with a colon: «Подстановка
+        найденных значений в формулы (3) и (4):»): a page writer keeps the two on one page."""
+        return self.text.rstrip().endswith(":")
+
 
 @dataclass(frozen=True)
 class Where(Paragraph):

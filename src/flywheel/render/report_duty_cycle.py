@@ -58,6 +58,9 @@ def build_duty_cycle_document(r, title: str, source: str, lang: str = "en") -> D
         rf"\Delta E = \frac{{J (\omega_{{max}}^{{2}} - \omega_{{min}}^{{2}})}}{{2}} = "
         rf"J {wm}^{{2}} \delta, \delta = \frac{{\omega_{{max}} - \omega_{{min}}}}{{{wm}}}")
     n_m = doc.add_formula(r"J = m k^{2}, \Delta E = m v^{2} \delta")
+    # a given flywheel: its other speeds from the given one by (2) (Khurmi & Gupta, Ex. 16.21)
+    n_w = (doc.add_formula(_SPEEDS_FROM_J[r.speed_given].replace("WM", wm))
+           if _worked_speeds(r) else None)
     add(Formula(rf"t_{{\text{{{'вос' if lang == 'ru' else 'rec'}}}}} = \frac{{\Delta E}}{{P}}"))
     if r.rim is not None:             # [flywheel.rim]: Khurmi & Gupta ch. 16, the rim's dimensions
         k, m, D = ((r"k_{\text{об}}", r"m_{\text{об}}", r"D_{\text{ср}}") if lang == "ru"
@@ -90,6 +93,8 @@ def build_duty_cycle_document(r, title: str, source: str, lang: str = "en") -> D
         if mass:
             add(Formula(rf"m = \frac{{J}}{{k^{{2}}}} = \frac{{{n6(r.J)}}}{{{n6(r.radius)}^{{2}}}} = "
                         rf"{n6(r.mass)}\,\text{{{nm.unit('kg', lang)}}}"))
+    if n_w is not None:
+        _work_speeds(doc, r, lang, n_m, n_w, wm)
     if r.checks:
         from flywheel.render.duty_cycle import L10N
 
@@ -105,3 +110,49 @@ def build_duty_cycle_document(r, title: str, source: str, lang: str = "en") -> D
     src = ([t["case_source"].format(s=source)] if source else []) + [t["book"]]
     add(Bullets(tuple(f"[{i}] {x}" for i, x in enumerate(src, 1))))
     return doc
+
+
+#: a given flywheel's other speeds from its given one ("WM": ω_ср in the record's language),
+#: formula (2) solved for them: ½·J·(ω_max² − ω_min²) = ΔE, ΔE = J·ω_ср²·δ
+_SPEEDS_FROM_J = {
+    "max": r"\omega_{min} = \sqrt{\omega_{max}^{2} - \frac{2 \Delta E}{J}}",
+    "min": r"\omega_{max} = \sqrt{\omega_{min}^{2} + \frac{2 \Delta E}{J}}",
+    "mean": (r"\delta = \frac{\Delta E}{J WM^{2}}, \omega_{max} = WM \left(1 + "
+             r"\frac{\delta}{2}\right), \omega_{min} = WM \left(1 - \frac{\delta}{2}\right)"),
+}
+
+
+def _worked_speeds(r) -> bool:
+    """Whether the record works a given flywheel's speeds with numbers: a flywheel given with
+    the shaft's speed (not speeds at the radius) that gives some energy."""
+    return (r.flywheel_given and r.speed_given in _SPEEDS_FROM_J and r.J
+            and None not in (r.omega_max, r.omega_min, r.omega_mean) and r.delta_E > 0)
+
+
+def _work_speeds(doc: Document, r, lang: str, n_m: int, n_w: int, wm: str) -> None:
+    """A given flywheel's J = m·k² (where its mass and radius are known) and its other speeds
+    from the given one (formula ``n_w``), each with six digits of the numbers the tables print
+    (numbers.fmt_worked): Khurmi & Gupta, Ex. 16.21, ω_min = √(ω_max² − 2·ΔE/J)."""
+    n6, add = fmt_worked, doc.blocks.append
+    rad = rf"\,\text{{{nm.unit('rad/s', lang)}}}"
+    rpm = rf"\,\text{{{nm.unit('rpm', lang)}}}"
+    mass = r.mass is not None and r.radius is not None
+    add(Paragraph(put_into(lang, n_m, n_w) if mass else put_into(lang, n_w)))
+    if mass:
+        add(Formula(rf"J = m k^{{2}} = {n6(r.mass)} \cdot {n6(r.radius)}^{{2}} = {n6(r.J)}"
+                    rf"\,\text{{{nm.unit('kg·m²', lang)}}}"))
+    w1, w2, wmean, dE, J = (n6(x) for x in (r.omega_max, r.omega_min, r.omega_mean, r.delta_E, r.J))
+    n = (r"n_{max}", r"\omega_{max}", r.rpm_max) if r.speed_given == "min" else (
+        r"n_{min}", r"\omega_{min}", r.rpm_min)
+    in_rpm = rf"{n[0]} = \frac{{30 {n[1]}}}{{\pi}} = {n6(n[2])}{rpm}"
+    if r.speed_given == "max":
+        add(Formula(rf"\omega_{{min}} = \sqrt{{{w1}^{{2}} - \frac{{2 \cdot {dE}}}{{{J}}}}} = "
+                    rf"{w2}{rad}"))
+        add(Formula(in_rpm))
+    elif r.speed_given == "min":
+        add(Formula(rf"\omega_{{max}} = \sqrt{{{w2}^{{2}} + \frac{{2 \cdot {dE}}}{{{J}}}}} = "
+                    rf"{w1}{rad}"))
+        add(Formula(in_rpm))
+    else:
+        add(Formula(rf"\delta = \frac{{{dE}}}{{{J} \cdot {wmean}^{{2}}}} = {n6(r.delta)}, "
+                    rf"\omega_{{max}} = {w1}{rad}, \omega_{{min}} = {w2}{rad}"))

@@ -255,7 +255,10 @@ def docx(doc: Document, plots_dir: Path | None = None) -> bytes:
                     p.add_run().add_break()
                 runs(p, line)
         elif isinstance(b, Paragraph):
-            runs(d.add_paragraph(), b.text)
+            p = d.add_paragraph()
+            runs(p, b.text)
+            if b.leads_in:                  # kept with the formula it leads into
+                p.paragraph_format.keep_with_next = True
         elif isinstance(b, Bullets):
             for i in b.items:
                 runs(d.add_paragraph(style="List Bullet"), i)

@@ -225,7 +225,7 @@ def typst_source(doc: Document, plots: bool = True) -> str:
                 out.append(f"#heading(level: 1, numbering: none, supplement: [S])[{body}]")
             else:
                 out.append(f"#heading(level: {b.level}, numbering: none)[{_lit(b.number)}#h(0.6em){body}]")
-        elif (lines := typst_block(b, _ts)) is not None:    # a paragraph, a list, a formula
+        elif (lines := typst_block(b, _ts, "1em")) is not None:  # a paragraph, a list, a formula
             out += lines
         elif isinstance(b, Table):
             out.append(_table(b, g, landscape))
@@ -646,8 +646,8 @@ def docx(doc: Document, plots_dir: Path | None = None) -> bytes:
                 put(_p(_marked(_runs(f"{b.number} {b.text}"), k), style=f"Heading{b.level}"))
         elif isinstance(b, Where):              # left-aligned: a line before a break is not
             put(_p("<w:r><w:br/></w:r>".join(_runs(line) for line in b.lines), jc="left"))
-        elif isinstance(b, Paragraph):
-            put(_p(_runs(b.text)))
+        elif isinstance(b, Paragraph):           # one leading into a formula: kept with it
+            put(_p(_runs(b.text), keep=b.leads_in))
         elif isinstance(b, Bullets):
             for i in b.items:
                 put(_p(_runs(i), style="ListBullet"))

@@ -37,12 +37,17 @@ def markup(text: str, lit: Callable[[str], str] = literal) -> str:
     return "".join(subs(p) if i % 2 == 0 else f"#strong[{subs(p)}]" for i, p in enumerate(parts))
 
 
-def typst_block(b, ts: Callable[[str], str] = markup) -> list[str] | None:
+def typst_block(b, ts: Callable[[str], str] = markup, spacing: str = "1.2em") -> list[str] | None:
     """The typst lines of a paragraph, a bulleted list or a display formula, its text written
-    by ``ts``; None for another kind of block (a heading, a table, a figure: the writer's)."""
+    by ``ts``; None for another kind of block (a heading, a table, a figure: the writer's).
+    A paragraph that leads into what follows (``Paragraph.leads_in``) is kept on one page
+    with it: a sticky block, ``spacing`` the layout's paragraph spacing, so that it stands as
+    a paragraph would."""
     if isinstance(b, Where):                           # a forced line break between lines
         return [" \\\n".join(ts(line) for line in b.lines)]
     if isinstance(b, Paragraph):
+        if b.leads_in:
+            return [f"#block(sticky: true, spacing: {spacing})[#par[{ts(b.text)}]]"]
         return [ts(b.text)]
     if isinstance(b, Bullets):
         return ["- " + ts(i) for i in b.items]
