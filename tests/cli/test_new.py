@@ -113,7 +113,7 @@ def test_a_starters_force_is_named_in_russian_in_its_record(tmp_path):
     res = flywheel("run", "shaper.toml", "--lang", "ru", "--no-plots", "--out", "o", cwd=tmp_path)
     assert res.returncode == 0, res.stderr
     md = (tmp_path / "o" / "report.md").read_text(encoding="utf-8")
-    assert "сила резания" in md and "cutting" not in md and "starter case" not in md
+    assert "Сила резания" in md and "cutting" not in md and "starter case" not in md
 
 
 @pytest.mark.parametrize("lang", ["en", "ru"])

@@ -431,7 +431,7 @@ def test_position_numbers_match_the_drawing(name, tmp_path):
     from flywheel.render.document import build_document
 
     want = [(row[0], row[1]) for row in tables[0][1:]]  # the report's tables: the same numbers
-    for lang, no in (("en", "no."), ("ru", "№")):
+    for lang, no in (("en", "No."), ("ru", "№")):
         at_positions = [tb for tb in build_document(r, lang).tables if no in tb.header]
         assert len(at_positions) >= 4         # kinematics, reduction, energy, reactions
         for tb in at_positions:

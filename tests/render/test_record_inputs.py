@@ -48,17 +48,17 @@ def test_the_compressor_states_its_worksheets_lengths_by_their_points():
     the record states the lengths they give, by the links' points."""
     _, doc = _document("compressor")
     rows = _rows(doc, T["ru"]["lengths"])
-    assert _numbers(rows["длина кривошипа l_OA"]) == [pytest.approx(4.0 / (4 * 10.0))]
-    assert _numbers(rows["длина звена 2 l_AB"]) == [pytest.approx(4 * 0.1)]
-    assert _numbers(rows["длина звена 4 l_AC"]) == [pytest.approx(4 * 0.1)]
-    assert rows["точка S₂ звена 2: доля длины AB l_AS2/l_AB"] == "0,3"
-    assert rows["направляющая ползуна 3: угол к оси x α_3"] == "90"
-    assert rows["направление вращения кривошипа"] == "по часовой стрелке"
-    assert rows["положение кривошипа при φ = 0 (от оси x)"] == "90"
+    assert _numbers(rows["Длина кривошипа l_OA"]) == [pytest.approx(4.0 / (4 * 10.0))]
+    assert _numbers(rows["Длина звена 2 l_AB"]) == [pytest.approx(4 * 0.1)]
+    assert _numbers(rows["Длина звена 4 l_AC"]) == [pytest.approx(4 * 0.1)]
+    assert rows["Точка S₂ звена 2: доля длины AB l_AS2/l_AB"] == "0,3"
+    assert rows["Направляющая ползуна 3: угол к оси x α_3"] == "90"
+    assert rows["Направление вращения кривошипа"] == "по часовой стрелке"
+    assert rows["Положение кривошипа при φ = 0 (от оси x)"] == "90"
     machine = _rows(doc, T["ru"]["machine"])
-    assert machine["коэффициент неравномерности хода δ"] == "0,05"
+    assert machine["Коэффициент неравномерности хода δ"] == "0,05"
     assert machine["в том числе: коленчатый вал"] == "0,6"
-    assert machine["передаточное отношение к валу маховика i"] == "1"
+    assert machine["Передаточное отношение к валу маховика i"] == "1"
     assert not any(k in machine for k in ("δ", "i", "ρ", "n₁"))   # no bare symbol
 
 
@@ -75,24 +75,24 @@ def test_every_length_guide_fixed_point_and_point_of_a_link_is_stated(name):
         assert any(v == pytest.approx(list(expected), rel=1e-5, abs=1e-12) for v in found), (
             name, prefix, found, expected)
 
-    stated(f"длина кривошипа l_{case.crank.pivot}{case.crank.tip}", case.crank_length)
+    stated(f"Длина кривошипа l_{case.crank.pivot}{case.crank.tip}", case.crank_length)
     for d in case.dyads:
         if isinstance(d, RRPSpec):
-            stated(f"длина звена {d.rod} l_", case.rod_length(d))
-            stated(f"направляющая ползуна {d.slider}: угол", d.guide.angle_deg)
-            stated(f"направляющая ползуна {d.slider}: точка", *d.guide.through)
+            stated(f"Длина звена {d.rod} l_", case.rod_length(d))
+            stated(f"Направляющая ползуна {d.slider}: угол", d.guide.angle_deg)
+            stated(f"Направляющая ползуна {d.slider}: точка", *d.guide.through)
         elif isinstance(d, RRRSpec):
-            stated(f"длина звена {d.link_from} l_", d.length_from)
-            stated(f"длина звена {d.link_to} l_", d.length_to)
+            stated(f"Длина звена {d.link_from} l_", d.length_from)
+            stated(f"Длина звена {d.link_to} l_", d.length_to)
         elif isinstance(d, RPRSpec) and d.offset:
-            stated(f"линия скольжения звена {d.rocker}", d.offset)
+            stated(f"Линия скольжения звена {d.rocker}", d.offset)
     for p, xy in case.ground.items():
-        stated(f"неподвижная точка {p} ", *xy)
+        stated(f"Неподвижная точка {p} ", *xy)
     for p, spec in case.points.items():
-        assert any(re.search(rf"точка {re.escape(p[:1])}\S* звена {re.escape(spec.link)}:", k)
+        assert any(re.search(rf"[Тт]очка {re.escape(p[:1])}\S* звена {re.escape(spec.link)}:", k)
                    for k in rows), (name, p)
         if spec.distance is not None:
-            stated(f"точка {p[:1]}", spec.distance)
+            stated(f"Точка {p[:1]}", spec.distance)
     assert not any(math.isnan(x) for v in values.values() for x in v)
 
 
@@ -124,7 +124,7 @@ def test_a_tabulated_case_states_its_links_and_loads():
     assert [list(r[:4]) for r in masses.rows] == [["2", "255,1", "7,653", "B₂"], ["3", "81,6", "—", "B₂"],
                                             ["4", "102", "—", "B₄"], ["5", "—", "2,251", "—"]]
     loads = _rows(doc, ru["tab_loads"])
-    assert loads["сила полезного сопротивления (штамповки)"] == "B₄"
+    assert loads["Сила полезного сопротивления (штамповки)"] == "B₄"
     per = next(b for b in doc.blocks if isinstance(b, Table) and b.caption == ru["tab_rows"])
     assert per.header[-1] == "F (сила полезного сопротивления (штамповки)), Н"
     punch = {r[0]: r[-1] for r in per.rows}
@@ -158,7 +158,7 @@ def test_a_sliders_force_says_where_it_acts():
     _, doc = _document("shaper")
     table = next(b for b in doc.blocks if isinstance(b, Table) and b.caption == T["ru"]["forces"])
     assert [list(r) for r in table.rows] == [[
-        "сила резания", "5", "2500; при s = 0,05 … 0,95 от внешней мёртвой точки, при движении "
+        "Сила резания", "5", "2500; при s = 0,05 … 0,95 от внешней мёртвой точки, при движении "
         "ползуна к этой мёртвой точке", "Н"]]
 
 

@@ -114,4 +114,4 @@ def test_libreoffice_breaks_no_word_of_the_russian_docx_tables(tmp_path):
     text = subprocess.run(["pdftotext", str(tmp_path / "r.pdf"), "-"], capture_output=True,
                           text=True, check=True).stdout
     words = text.split()
-    assert words.count("внутренняя") == 4 and words.count("положение") == 1, words[:80]
+    assert words.count("внутренняя") == 4 and words.count("Положение") == 1, words[:80]

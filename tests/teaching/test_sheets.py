@@ -139,12 +139,12 @@ def test_the_sheet_carries_the_variants_own_values(compressor_dir):
         # the fixed data a student needs, from the variant file itself
         doc = tomllib.loads((compressor_dir / f"variant_{vid}.toml").read_text(encoding="utf-8"))
         rows = {r[0]: r[1:] for r in other[1:]}
-        assert rows["масса звена 5 m_5"] == [("%g" % doc["links"]["5"]["mass"]).replace(".", ","),
+        assert rows["Масса звена 5 m_5"] == [("%g" % doc["links"]["5"]["mass"]).replace(".", ","),
                                              "кг"]
-        assert rows["плотность материала маховика ρ"] == ["7800", "кг/м³"]
-        assert ru_numbers(rows["цилиндр НД: p/p_max при движении поршня к головке"][0]) == \
+        assert rows["Плотность материала маховика ρ"] == ["7800", "кг/м³"]
+        assert ru_numbers(rows["Цилиндр НД: p/p_max при движении поршня к головке"][0]) == \
             doc["cylinders"][1]["towards_head"]
-        assert rows["момент инерции: редуктор (приведён к кривошипу)"] == ["0,074", "кг·м²"]
+        assert rows["Момент инерции: редуктор (приведён к кривошипу)"] == ["0,074", "кг·м²"]
 
 
 def test_the_find_list_is_worded_as_a_task_with_units_and_tolerances(compressor_dir, task2_dir):
@@ -215,8 +215,8 @@ def test_the_pdf_carries_the_same_values_and_no_answer(tmp_path):
             assert any(ln.startswith("Студент ___") and "Группа ___" in ln for ln in lines)
             for value in v.drawn.values():              # in Russian typography
                 assert value in ru_numbers(text), (n, value)
-            assert "направление вращения кривошипа по часовой стрелке" in text
-            assert "плотность материала маховика ρ 7800 кг/м³" in text
+            assert "Направление вращения кривошипа по часовой стрелке" in text
+            assert "Плотность материала маховика ρ 7800 кг/м³" in text
             assert "(допуск ±2 %)" in text and "Определить момент инерции маховика" in text
             for value in key["variants"][v.id].values():
                 assert ("%.4g" % value).replace(".", ",") not in text
@@ -258,11 +258,11 @@ def test_task2_sheet_gives_the_graphs_data(task2_dir):
     for vid, drawn in key["drawn"].items():
         sh = sheet_of(task2_dir, vid)
         rows = {r[0]: r[1:] for r in sh.tables[0][1:]}
-        assert rows["angular velocity at φ = 0, ω0"] == ["%g" % drawn["speed.omega0"], "rad/s"]
-        assert rows["driving moment M_D"] == ["%g" % drawn["driving.value"], "N·m"]
+        assert rows["Angular velocity at φ = 0, ω0"] == ["%g" % drawn["speed.omega0"], "rad/s"]
+        assert rows["Driving moment M_D"] == ["%g" % drawn["driving.value"], "N·m"]
         assert rows["M_C: start of its graph"] == ["%g" % drawn["resistance.from_deg"], "°"]
         other = {r[0]: r[1:] for r in sh.tables[1][1:]}
-        assert other["coefficient of speed fluctuation asked δ"] == ["0.0001", "–"]
+        assert other["Coefficient of speed fluctuation asked δ"] == ["0.0001", "–"]
 
 
 def test_tabulated_template_sheets_without_drawing_one_note(tmp_path):
@@ -339,8 +339,8 @@ def test_engine_and_shaper_sheets_name_every_field(tmp_path):
         assert not [x for x in labels if re.fullmatch(r"[\w.]+", x) and "." in x], labels
     engine = sheet_of(tmp_path / "variants_engine.toml", "01")
     labels = [r[0] for t in engine.tables for r in t[1:]]
-    assert "цилиндр 1: p/p_max на такте сжатия" in labels
-    assert "цилиндр 1: воспламенение при φ" in labels
+    assert "Цилиндр 1: p/p_max на такте сжатия" in labels
+    assert "Цилиндр 1: воспламенение при φ" in labels
     items = [p for p in sheet_of(tmp_path / "variants_shaper.toml", "01").paragraphs
              if re.match(r"\d+\. ", p)]
     assert "4. Определить момент инерции маховика на его валу J_М/i², кг·м² (допуск ±1 %)." \
@@ -361,12 +361,12 @@ def test_text_data_are_on_the_sheet_in_words(tmp_path):
                         + '\n[variants]\n"machine.delta" = { values = [0.008, 0.01] }\n'
                         'answers = ["J_required"]\n', encoding="utf-8")
     for lang, order, head, turn, balance in (
-            ("ru", "порядок работы цилиндров", "цилиндр 3: мёртвая точка у головки",
-             ["направление вращения кривошипа", "по часовой стрелке"],
-             ["постоянный момент, определяемый из условия цикла", "момент сопротивления M_С"]),
-            ("en", "firing order of the cylinders", "cylinder 3: dead centre at the head",
-             ["direction of the crank's rotation", "clockwise"],
-             ["the constant moment, found from the cycle balance",
+            ("ru", "Порядок работы цилиндров", "Цилиндр 3: мёртвая точка у головки",
+             ["Направление вращения кривошипа", "по часовой стрелке"],
+             ["Постоянный момент, определяемый из условия цикла", "момент сопротивления M_С"]),
+            ("en", "Firing order of the cylinders", "Cylinder 3: dead centre at the head",
+             ["Direction of the crank's rotation", "clockwise"],
+             ["The constant moment, found from the cycle balance",
               "the resistance moment M_C"])):
         out = tmp_path / lang
         res = invoke(template, "--count", 1, "--seed", 1, "--out", out, "--sheets",
@@ -385,12 +385,12 @@ def test_text_data_are_on_the_sheet_in_words(tmp_path):
     assert invoke(CASES / "variants_shaper.toml", "--count", 1, "--seed", 2, "--out", shaper,
                   "--sheets", "--sheets-format", "html", "--lang", "ru").exit_code == 0
     rows = rows_of(sheet_of(shaper, "01"))
-    assert rows["материал маховика"] == ["чугун", "–"]
-    assert rows["сила F_пс: действует при движении ползуна"] == ["к этой мёртвой точке", "–"]
-    assert rows["сила F_пс: мёртвая точка начала отсчёта перемещения s"][0] == \
+    assert rows["Материал маховика"] == ["чугун", "–"]
+    assert rows["Сила F_пс: действует при движении ползуна"] == ["к этой мёртвой точке", "–"]
+    assert rows["Сила F_пс: мёртвая точка начала отсчёта перемещения s"][0] == \
         "внешняя (дальняя от оси кривошипа)"
     # a force's magnitude is worded as its other rows are (its label the subscript of F)
-    assert [k for k in rows if k.startswith("сила F_пс")][0] == "сила F_пс: модуль F"
+    assert [k for k in rows if k.startswith("Сила F_пс")][0] == "Сила F_пс: модуль F"
 
 
 def test_flywheel_J_is_worded_by_the_case_kind(tmp_path):
@@ -414,15 +414,15 @@ def test_flywheel_J_is_worded_by_the_case_kind(tmp_path):
             labels[name, lang] = sh.tables[0][1][0]
             assert sh.tables[0][1][1:] == ["%g" % key_of(out)["drawn"]["01"]["flywheel.J"],
                                            "кг·м²" if lang == "ru" else "kg·m²"]
-    assert labels == {("given", "ru"): "момент инерции заданного маховика J_М",
-                      ("given", "en"): "moment of inertia of the given flywheel J_M",
-                      ("geared", "ru"): "момент инерции заданного маховика на его валу J_М/i²",
-                      ("geared", "en"): "moment of inertia of the given flywheel on its own "
+    assert labels == {("given", "ru"): "Момент инерции заданного маховика J_М",
+                      ("given", "en"): "Moment of inertia of the given flywheel J_M",
+                      ("geared", "ru"): "Момент инерции заданного маховика на его валу J_М/i²",
+                      ("geared", "en"): "Moment of inertia of the given flywheel on its own "
                                         "shaft J_M/i²"}
     out = tmp_path / "task2"
     assert invoke(TASK2, "--count", 1, "--seed", 5, "--out", out, "--sheets",
                   "--sheets-format", "html", "--lang", "ru").exit_code == 0
-    assert rows_of(sheet_of(out, "01"))["приведённый момент инерции J_пр"][1] == "кг·м²"
+    assert rows_of(sheet_of(out, "01"))["Приведённый момент инерции J_пр"][1] == "кг·м²"
 
 
 @pytest.mark.parametrize("lang", ["ru", "en"])
@@ -470,7 +470,7 @@ def test_the_sheet_gives_the_defaults_a_flywheels_diameter_needs(tmp_path):
     key = key_of(out)["variants"]
     for vid, answers in key.items():
         rows = {r[0]: r for t in sheet_of(out, vid).tables for r in t}
-        (rho,) = [numbers(r[1])[0] for label, r in rows.items() if "density" in label]
+        (rho,) = [numbers(r[1])[0] for label, r in rows.items() if "Density" in label]
         (ratio,) = [numbers(r[1])[0] for label, r in rows.items() if "b/D" in label]
         assert rho == 7800.0
         D = (32 * answers["J_flywheel"] / (3.141592653589793 * rho * ratio)) ** 0.2
@@ -478,7 +478,7 @@ def test_the_sheet_gives_the_defaults_a_flywheels_diameter_needs(tmp_path):
     res = invoke(COMPRESSOR, "--count", 1, "--seed", 3, "--out", tmp_path / "c", "--sheets",
                  "--sheets-format", "html", "--lang", "en")
     rows = [r[0] for t in sheet_of(tmp_path / "c", "01").tables for r in t]
-    assert sum("density" in label for label in rows) == 1
+    assert sum("Density" in label for label in rows) == 1
 
 
 def test_the_title_is_in_the_sheets_language(compressor_dir, task2_dir):

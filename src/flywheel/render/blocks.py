@@ -62,12 +62,36 @@ class Formula:
     tex: str            # render/mathfmt.py notation
 
 
+#: a cell that opens with a word (two lower-case letters or more, then a space, a full stop, a
+#: bracket or nothing: «величина», «ед.», "no."), not with a symbol («φ, °», «k», «n_max»)
+_OPENING_WORD = re.compile(r"[a-zа-яё]{2,}(?=$|[\s.,:;()])")
+
+
+def capital(cell: str) -> str:
+    """A table's column head or row head from a capital letter, where it opens with a word
+    (ГОСТ 2.105-2019, 4.4.5: «Заголовки граф и строк таблицы следует писать с прописной
+    буквы»); a cell that opens with a symbol as it is.
+
+    >>> capital("величина"), capital("ед."), capital("φ, °"), capital("k"), capital("n_max")
+    ('Величина', 'Ед.', 'φ, °', 'k', 'n_max')
+    """
+    return cell[0].upper() + cell[1:] if _OPENING_WORD.match(cell) else cell
+
+
 @dataclass(frozen=True)
 class Table:
+    """A numbered table: its column heads and each row's head (its first cell) from a capital
+    letter (:func:`capital`), whoever builds it."""
+
     number: int
     caption: str
     header: tuple[str, ...]
     rows: tuple[tuple[str, ...], ...]
+
+    def __post_init__(self):
+        object.__setattr__(self, "header", tuple(capital(h) for h in self.header))
+        object.__setattr__(self, "rows", tuple((capital(r[0]), *r[1:]) if r else r
+                                               for r in self.rows))
 
 
 @dataclass(frozen=True)

@@ -579,7 +579,7 @@ def _sizing_lines(s, t: dict, lang: str, numbers: tuple[int, ...]) -> list[str]:
                           d=g(s.delta_achieved_exact, 6)),
         fw,
         t["disk"].format(mat=nm.material(s.flywheel_material, lang),
-                         dims=dims(d, ("D", "b", "mass"), (4, 4, 5)), speed=nm.name("rim_speed", lang),
+                         dims=dims(d, ("D", "b", "mass"), (4, 4, 5)), speed=nm.name("disk_speed", lang),
                          v=g(d.rim_speed, 4), u=u("rim_speed")),
         t["rim"].format(dims=dims(r, ("D", "D_inner", "b", "mass"), (4, 4, 4, 5)),
                         speed=nm.name("rim_speed", lang), v=g(r.rim_speed, 4), u=u("rim_speed"),

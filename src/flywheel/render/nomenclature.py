@@ -209,6 +209,7 @@ TERMS: dict[str, Term] = {
     "b": _t("b", "$b$", "m", "width", "ширина"),
     "mass": _t("m", "$m$", "kg", "mass", "масса"),
     "rim_speed": _t("v", "$v$", "m/s", "rim speed", "окружная скорость обода"),
+    "disk_speed": _t("v", "$v$", "m/s", "peripheral speed", "окружная скорость на наружном диаметре"),
     # true motion
     "omega": _t("ω", r"$\omega$", "rad/s", "crank angular velocity ω",
                 "угловая скорость звена приведения ω"),
