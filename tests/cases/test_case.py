@@ -71,7 +71,7 @@ BAD = [
      r"cylinders\[0\]\.bore: input should be a valid number.*\(got 'wide'\)"),
     # numbers are strict: a quoted number or a boolean is a mistake, not a number to convert
     ("quoted-number", "delta     = 0.05", 'delta     = "0.05"',
-     r"machine\.delta: input should be a valid number \(got '0\.05'\)"),
+     r"machine\.delta: must be a number, written without quotes \(a decimal point, not a comma\): 0\.05 \(got '0\.05'\)"),
     ("boolean-as-number", "start_angle_deg = 90.0", "start_angle_deg = true",
      r"crank\.start_angle_deg: input should be a valid number \(got True\)"),
     ("boolean-in-a-pair", "through = [0.0, 0.0], angle_deg = 90.0", "through = [0.0, false], angle_deg = 90.0",

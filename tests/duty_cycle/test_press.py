@@ -443,7 +443,7 @@ def test_bad_entry_of_a_per_position_row_is_named_by_index(tmp_path):
     # angle_deg is "one number or one per position": the error names the entry, not the union
     row = "angle_deg = [180, 128, 104"
     _bad(tmp_path, row, 'angle_deg = [180, "128", 104', "tabulated.forces[0].angle_deg[1]:",
-         "valid number (got '128')")
+         "must be a number, written without quotes (a decimal point, not a comma): 128 (got '128')")
     _bad(tmp_path, row, "angle_deg = [180, inf, 104", "tabulated.forces[0].angle_deg[1]:",
          "must be a finite number (got inf)")
     _bad(tmp_path, "B2 = [0.025, 0.032,", "B2 = [0.025, true,", "tabulated.points.B2[1]:",

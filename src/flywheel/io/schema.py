@@ -6,6 +6,7 @@ A problem becomes one line: ``file: field.path: what is wrong (what is allowed)`
 from __future__ import annotations
 
 import difflib
+import math
 import re
 from collections.abc import Callable, Iterable
 from typing import TypeVar
@@ -221,6 +222,17 @@ def describe(err: dict, allowed: Callable[[tuple], list[str]], drop: Iterable[st
     return led(f"{where}: ", out)
 
 
+def _as_number(text: str) -> str:
+    """A number written as a string («0,05», "10", «−9,81»), as TOML writes it ("0.05", "10",
+    "-9.81"); "" for a string that is no number."""
+    fixed = text.strip().replace(",", ".").replace("\u2212", "-")
+    try:
+        value = float(fixed)
+    except ValueError:
+        return ""
+    return fixed if math.isfinite(value) else ""
+
+
 def _describe(err, allowed, drop, messages) -> str:
     loc = clean_loc(err["loc"], drop)
     kind, msg = err["type"], err["msg"]
@@ -248,6 +260,11 @@ def _describe(err, allowed, drop, messages) -> str:
         if ctx is not None and isinstance(said(ctx), Notice):
             return led(f"{where}: ", said(ctx))
         return f"{where}: {msg.removeprefix('Value error, ')}"
+    if kind in ("float_type", "float_parsing", "int_type") and isinstance(got, str) and (
+            fixed := _as_number(got)):   # «"0,05"», «"10"»: a number in quotes
+        return led(f"{where}: ", Notice.of(
+            "quoted_number", "must be a number, written without quotes (a decimal point, not a "
+            "comma): {fixed} (got {got})", fixed=fixed, got=cut(repr(got))))
     if messages and kind in messages:
         return f"{where}: {messages[kind]}{got_s}"
     return f"{where}: {msg[0].lower() + msg[1:]}{got_s}"

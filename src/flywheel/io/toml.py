@@ -30,6 +30,12 @@ def read_toml(path, what: str = "a TOML case file") -> dict:
     try:
         doc = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
+        given = decimal_comma(text, str(exc))
+        if given:                   # «delta = 0,05»: the Russian decimal comma
+            raise CaseFileError(Notice.of(
+                "toml_decimal_comma", "{path}: TOML syntax error: {detail}: a number takes a "
+                "decimal point: {fixed}, not {given}", path=str(path), detail=str(exc),
+                given=given, fixed=given.replace(",", "."))) from None
         raise CaseFileError(Notice.of(
             "toml_syntax", "{path}: TOML syntax error: {detail}", path=str(path), detail=str(exc)
         )) from None
@@ -39,6 +45,20 @@ def read_toml(path, what: str = "a TOML case file") -> dict:
         raise too_long_number(path, str(exc)) from None
     check_document(doc, path)
     return doc
+
+
+def decimal_comma(text: str, detail: str) -> str:
+    """The number written with a decimal comma («0,05», «−9,81») on the line a TOML syntax error
+    ``detail`` names («… (at line 11, column 14)»), where that is what the error is; else ""."""
+    import re
+
+    at = re.search(r"at line (\d+), column (\d+)", detail)
+    lines = text.splitlines()
+    if not at or not 0 < int(at.group(1)) <= len(lines):
+        return ""
+    line = lines[int(at.group(1)) - 1].split("#", 1)[0]
+    number = re.search(r"(?<![\w.])[-+]?\d+,\d+(?![\w.])", line)
+    return number.group(0) if number else ""
 
 
 #: the encodings a text file that is not UTF-8 is told to be in (a Windows or DOS editor's

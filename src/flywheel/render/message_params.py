@@ -320,7 +320,7 @@ def _msgs_libraries_ru_params(code: str, p: dict) -> dict:
     if code == "plot_cannot_write":
         p["reason_ru"] = (os_reason_ru(p["errno"], p["strerror"]) if p.get("strerror")
                           else said_ru(p["reason"], MATPLOTLIB_RU))
-    elif code == "toml_syntax":
+    elif code in ("toml_syntax", "toml_decimal_comma"):
         p["detail_ru"] = toml_detail_ru(p["detail"])
     elif code == "not_json":
         p["msg"] = said_ru(p["msg"], JSON_RU)
