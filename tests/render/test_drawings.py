@@ -976,3 +976,27 @@ def test_a_force_polygon_of_one_link_is_named_in_the_singular():
                  for it in s.items if isinstance(it, Text)}
         assert one in texts and group in texts, sorted(t for t in texts if "сил" in t or "olygon" in t)
         assert not any(t.endswith(("звеньев 1", "links 1")) for t in texts)
+
+
+@pytest.mark.parametrize("title, height", [
+    ("Двухступенчатый воздушный компрессор", 5.0),
+    ("Поперечно-строгальный станок: кривошипно-кулисный механизм с быстрым обратным ходом и "
+     "ползуном", 2.5),
+])
+def test_the_title_blocks_name_holds_a_long_title_whole(title, height):
+    """The name field of the title block (70 × 25 mm, ГОСТ 2.104 form 1) holds the shaper's long
+    title whole at 2.5 mm (ГОСТ 2.304's sizes), the sheet's name with it; it had been cut at
+    3.5 mm, «механизм с быстрым обратн…». A short title keeps 5 mm. Every line within the
+    field's 66 mm, all within its 24 mm."""
+    from flywheel.render.drawings.model import text_width
+    from flywheel.render.drawings.sheet import name_lines
+
+    lines = name_lines(title, "Динамический анализ механизма", 0.0)
+    said = [" ".join(ln for ln, _, _ in lines[:n]) for n in range(len(lines) + 1)]
+    n = said.index(title)                           # the title's lines, whole, then the name's
+    assert {h for _, h, _ in lines[:n]} == {height} and not any("…" in ln for ln, _, _ in lines)
+    assert " ".join(ln for ln, _, _ in lines[n:]) == "Динамический анализ механизма"
+    assert all(text_width(ln, h) <= 66.0 for ln, h, _ in lines)
+    top = max(y + h / 2 for _, h, y in lines)
+    bottom = min(y - h / 2 for _, h, y in lines)
+    assert top - bottom <= 24.0

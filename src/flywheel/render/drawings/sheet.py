@@ -190,13 +190,21 @@ def organisation_lines(document, t: dict) -> list[str]:
 def name_lines(title: str, sheet_name: str, centre: float) -> list[tuple[str, float, float]]:
     """The name field of a title block (70 × 25 mm, forms 1 and 2) as (line, height, y of its
     middle) [mm], y up from ``centre``, the field's middle: the machine at 5 mm (two lines) or
-    3.5 mm (three), then the sheet's or document's name at 3.5 mm."""
-    title_lines, th = wrap(title, 66.0, 5.0, 2), 5.0
-    if len(title_lines) == 2 and (text_width(title_lines[-1], 5.0) > 66.0
-                                  or title_lines[-1].endswith("…")):
-        title_lines, th = wrap(title, 66.0, 3.5, 3), 3.5
-    sheet_lines = wrap(sheet_name, 66.0, 3.5, 2)
-    lines = [(ln, th) for ln in title_lines] + [(ln, 3.5) for ln in sheet_lines]
+    3.5 mm (three or four), then the sheet's or document's name at 3.5 mm; a title longer
+    still, and the name with it, at 2.5 mm (ГОСТ 2.304's next size). Only a title that 2.5 mm
+    does not hold either is cut with «…» (the shaper's «… механизм с быстрым обратным ходом и
+    ползуном» had been cut at 3.5 mm)."""
+    for th, most in ((5.0, 2), (3.5, 3), (3.5, 4), (2.5, 4)):
+        sh = min(th, 3.5)
+        sheet_lines = wrap(sheet_name, 66.0, sh, 2)
+        title_lines = wrap(title, 66.0, th, most)
+        whole = " ".join(title_lines) == " ".join(title.split())
+        if whole and 1.25 * (th * len(title_lines) + sh * len(sheet_lines)) <= 24.0:
+            break
+    else:
+        title_lines, th, sh = wrap(title, 66.0, 3.5, 3), 3.5, 3.5
+        sheet_lines = wrap(sheet_name, 66.0, sh, 2)
+    lines = [(ln, th) for ln in title_lines] + [(ln, sh) for ln in sheet_lines]
     # the lines 1.6 of their height apart, closer (down to 1.25) to stay within 24 mm
     k = max(1.25, min(1.6, 24.0 / sum(h for _, h in lines)))
     while k * sum(h for _, h in lines) > 24.0 and len(lines) > 2:
@@ -204,7 +212,7 @@ def name_lines(title: str, sheet_name: str, centre: float) -> list[tuple[str, fl
         title_lines = title_lines[:cut]
         title_lines[-1] = _cut(title_lines[-1] + " …", 66.0, th) \
             if text_width(title_lines[-1] + " …", th) > 66.0 else title_lines[-1] + " …"
-        lines = [(ln, th) for ln in title_lines] + [(ln, 3.5) for ln in sheet_lines]
+        lines = [(ln, th) for ln in title_lines] + [(ln, sh) for ln in sheet_lines]
     step = [h * k for _, h in lines]
     y = centre + sum(step) / 2
     out = []
