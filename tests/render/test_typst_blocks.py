@@ -71,3 +71,21 @@ def test_no_line_opens_with_a_dash():
     docx_text = "\n".join(p.text for p in Docx(io.BytesIO(report_formats.docx(doc))).paragraphs)
     for text in (typst, html, docx_text):
         assert "δ\u00a0— коэффициент" in text and "δ — " not in text
+
+
+def test_an_index_that_abbreviates_a_word_is_upright_in_every_writer():
+    """ω_ср, ΔT_нб, ω_max: an index that abbreviates a word is set upright (ISO 80000-2), a
+    one-letter variable italic. typst and MathML set a many-letter identifier upright; Word's
+    OMML had kept a Cyrillic one («ср», «нб») italic beside an upright "max", so the run's
+    record and the duty cycle's (\\text{ср}) set the same ω_ср two ways."""
+    import re
+
+    from flywheel.render import mathfmt
+
+    om = mathfmt.omml(r"\omega_{ср} = \omega_{max} - \Delta T_{нб}")
+    upright = {text for style, text in re.findall(
+        r"<m:r>(<m:rPr><m:sty m:val=\"p\"/></m:rPr>)?<m:t xml:space=\"preserve\">([^<]*)</m:t>",
+        om) if style}
+    assert {"ср", "max", "нб"} <= upright and "ω" not in upright and "T" not in upright, om
+    assert '"ср"' in mathfmt.typst(r"\omega_{ср}")                  # typst: upright text
+    assert "<mi>ср</mi>" in mathfmt.mathml(r"\omega_{ср}")          # MathML: many letters, upright

@@ -287,7 +287,9 @@ _W_NS = "http://schemas.openxmlformats.org/wordprocessingml/2006/main"
 
 
 def _om_run(text: str, plain: bool) -> str:
-    """One math run; identifiers keep Word's math italic, numbers, operators and words upright."""
+    """One math run; a one-letter identifier (a variable) keeps Word's math italic; numbers,
+    operators, words and a many-letter identifier — an index that abbreviates a word, «ср»,
+    «нб», "max" (ISO 80000-2, as typst and MathML set it) — upright."""
     sty = '<m:rPr><m:sty m:val="p"/></m:rPr>' if plain else ""
     return f'<m:r>{sty}<m:t xml:space="preserve">{escape(text, quote=False)}</m:t></m:r>'
 
@@ -295,7 +297,7 @@ def _om_run(text: str, plain: bool) -> str:
 def _om(n: Node) -> str:
     k = n.kind
     if k == "i":
-        return _om_run(n.text, plain=len(n.text) > 1 and n.text.isascii())
+        return _om_run(n.text, plain=len(n.text) > 1)
     if k in ("n", "o", "t"):
         return _om_run(n.text, plain=True)
     if k == "row":
