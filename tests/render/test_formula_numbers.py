@@ -180,8 +180,10 @@ def test_a_duty_cycles_flywheel_is_worked_with_its_numbers(name):
     with typography("ru"):
         doc = build_duty_cycle_document(r, "T", "S", "ru")
     f = _formulas(doc)
-    cited, (J, m) = _put(doc)
-    assert r"\Delta E = \frac{J (\omega_{max}^{2}" in f[cited[0]] and "J = m k^{2}" in f[cited[1]]
+    cited, (dE, J, m) = _put(doc)
+    assert r"\Delta E = E - P" in f[cited[0]]
+    assert r"\Delta E = \frac{J (\omega_{max}^{2}" in f[cited[1]] and "J = m k^{2}" in f[cited[2]]
+    _energy_comes_back(dE, r)
     got = re.search(rf"= \\frac\{{{N}\}}\{{{N}\^\{{2\}} \\cdot {N}\}} = {N}", J)
     _close(_num(got.group(1)) / (_num(got.group(2)) ** 2 * _num(got.group(3))), got.group(4))
     assert _num(got.group(4)) == pytest.approx(r.J, rel=1e-5)
@@ -204,9 +206,11 @@ def test_a_given_flywheels_speed_after_the_operation_is_worked_with_its_numbers(
     with typography("ru"):
         doc = build_duty_cycle_document(r, "T", "S", "ru")
     f = _formulas(doc)
-    cited, (J, w, n) = _put(doc)
-    assert "J = m k^{2}" in f[cited[0]]
-    assert f[cited[1]].startswith(r"\omega_{min} = \sqrt{\omega_{max}^{2} - \frac{2 \Delta E}{J}}")
+    cited, (dE, J, w, n) = _put(doc)
+    _energy_comes_back(dE, r)
+    assert _num(re.search(rf"= {N}\\,", dE).group(1)) == 7000           # printed: 7000 J
+    assert "J = m k^{2}" in f[cited[1]]
+    assert f[cited[2]].startswith(r"\omega_{min} = \sqrt{\omega_{max}^{2} - \frac{2 \Delta E}{J}}")
     got = re.search(rf"J = m k\^\{{2\}} = {N} \\cdot {N}\^\{{2\}} = {N}", J)
     _close(_num(got.group(1)) * _num(got.group(2)) ** 2, got.group(3))
     got = re.search(rf"\\sqrt\{{{N}\^\{{2\}} - \\frac\{{2 \\cdot {N}\}}\{{{N}\}}\}} = {N}", w)
@@ -215,6 +219,35 @@ def test_a_given_flywheels_speed_after_the_operation_is_worked_with_its_numbers(
     assert w2 == pytest.approx(math.sqrt((10 * math.pi) ** 2 - 14000 / 54), rel=5e-6)
     got = re.search(rf"n_{{min}} = \\frac\{{30 \\omega_\{{min\}}\}}\{{\\pi\}} = {N}", n)
     assert round(_num(got.group(1)), 1) == 257.6             # printed: 257.6 rpm
+
+
+def _energy_comes_back(worked: str, r) -> None:
+    """ΔE = E − P·t_оп worked from its printed numbers gives the printed ΔE, the result's."""
+    got = re.search(rf"= {N} - {N} \\cdot {N} = {N}", worked)
+    E, P, t, dE = (_num(got.group(k)) for k in range(1, 5))
+    _close(E - P * t, got.group(4))
+    assert dE == pytest.approx(r.delta_E, rel=1e-5)
+
+
+def test_a_flywheel_given_by_its_rim_speeds_is_worked_with_its_numbers():
+    """Khurmi & Gupta Ex. 16.20 gives the rim's mean speed (25 m/s) and δ = 0,03, no radius: the
+    record works ΔE = E − P·t_оп and m = ΔE/(v_ср²·δ) with the numbers its tables print, citing
+    formulas (1) and (3). The FOSSEE companion prints m = 1198 kg; exactly 22 462,6/(625·0,03)."""
+    from flywheel.cases.duty_cycle import load_duty_case, solve_case
+    from flywheel.render.numbers import typography
+    from flywheel.render.report_duty_cycle import build_duty_cycle_document
+
+    name = "duty_khurmi_16_20_punch_stroke"
+    r = solve_case(load_duty_case(CASES / f"{name}.toml"), name)
+    with typography("ru"):
+        doc = build_duty_cycle_document(r, "T", "S", "ru")
+    f = _formulas(doc)
+    cited, (dE, m) = _put(doc)
+    assert r"\Delta E = E - P" in f[cited[0]] and r"\Delta E = m v^{2} \delta" in f[cited[1]]
+    _energy_comes_back(dE, r)
+    got = re.search(rf"= \\frac\{{{N}\}}\{{{N}\^\{{2\}} \\cdot {N}\}} = {N}", m)
+    _close(_num(got.group(1)) / (_num(got.group(2)) ** 2 * _num(got.group(3))), got.group(4))
+    assert round(_num(got.group(4))) == 1198                   # printed: 1198 kg
 
 
 def test_a_line_leading_into_formulas_stays_on_their_page():

@@ -89,3 +89,15 @@ def test_an_index_that_abbreviates_a_word_is_upright_in_every_writer():
     assert {"ср", "max", "нб"} <= upright and "ω" not in upright and "T" not in upright, om
     assert '"ср"' in mathfmt.typst(r"\omega_{ср}")                  # typst: upright text
     assert "<mi>ср</mi>" in mathfmt.mathml(r"\omega_{ср}")          # MathML: many letters, upright
+
+
+def test_a_number_with_grouped_thousands_is_one_number_in_a_formula():
+    """«26 741,2 − 2674,12·1,6» (Russian typography: a narrow no-break space between the
+    thousands) had been read as 26, a space and 741,2, and typst set the minus after it without
+    its spaces («26 741,2−2674,12»): the whole number is one, in every writer."""
+    from flywheel.render import mathfmt
+
+    tex = "E = 26\u202f741,2 - 2674,12"
+    assert mathfmt.typst(tex) == 'E = "26\u202f741,2" − "2674,12"'
+    assert "<mn>26\u202f741,2</mn><mo>−</mo>" in mathfmt.mathml(tex)
+    assert mathfmt.plain(tex) == "E = 26\u202f741,2 − 2674,12"

@@ -67,6 +67,7 @@ T = words("report", {
     # the line before a record's formulas worked with their numbers (run, task 2, duty cycle)
     "put_one": "The values found, put into formula ({n}):",
     "put_two": "The values found, put into formulas ({n}) and ({m}):",
+    "put_many": "The values found, put into formulas {head} and ({m}):",
     "where_given": ("where {JM} is the given flywheel's moment of inertia on the crank shaft;\n"
                     "{J1} the moment of inertia of the first group's links on the crank shaft "
                     "(without the flywheel)."),
@@ -290,11 +291,15 @@ class CycleBalance:
 
 
 def put_into(lang: str, *numbers: int) -> str:
-    """The line before a record's worked formulas, citing the one or two formulas (their
-    ``numbers``) they put the found values into."""
+    """The line before a record's worked formulas, citing the formulas (their ``numbers``, in
+    order, each once) they put the found values into: «… в формулы (1), (2) и (3):»."""
     t = T[lang]
-    return (t["put_one"].format(n=numbers[0]) if len(numbers) == 1 else
-            t["put_two"].format(n=numbers[0], m=numbers[1]))
+    numbers = sorted(set(numbers))
+    if len(numbers) == 1:
+        return t["put_one"].format(n=numbers[0])
+    if len(numbers) == 2:
+        return t["put_two"].format(n=numbers[0], m=numbers[1])
+    return t["put_many"].format(head=", ".join(f"({k})" for k in numbers[:-1]), m=numbers[-1])
 
 
 def cycle_balance(results) -> CycleBalance:

@@ -63,9 +63,10 @@ def _tokens(src: str) -> list[str]:
             i = max(j, i + 2) if j == i + 1 else j
         elif c.isdigit() or (c == "." and i + 1 < len(src) and src[i + 1].isdigit()):
             j = i
-            while j < len(src) and (src[j].isdigit() or (src[j] in ".," and j + 1 < len(src)
+            while j < len(src) and (src[j].isdigit() or (src[j] in ".,\u202f" and j + 1 < len(src)
                                                           and src[j + 1].isdigit())):
-                j += 1                   # a decimal comma (Russian typography) stays in the number
+                j += 1                   # a decimal comma and a thousands' narrow space (Russian
+                #                          typography: «26 741,2») stay in the number
             out.append(src[i:j])
             i = j
         elif c.isalpha():
@@ -214,8 +215,8 @@ def _ty(n: Node) -> str:
     k = n.kind
     if k == "i":
         return n.text if len(n.text) == 1 else f'"{n.text}"'
-    if k == "n":                         # "0,452" as text: typst's math spaces a comma
-        return f'"{n.text}"' if "," in n.text else n.text
+    if k == "n":                         # "0,452", "26 741" as text: typst's math spaces a comma
+        return f'"{n.text}"' if "," in n.text or "\u202f" in n.text else n.text
     if k == "o":
         return {"/": "\\/", " ": "thin", ",": "\\,", "(": "\\(", ")": "\\)", "[": "\\[",
                 "]": "\\]", ";": "\\;", "|": "|"}.get(n.text, n.text)

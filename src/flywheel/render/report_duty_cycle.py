@@ -53,7 +53,7 @@ def build_duty_cycle_document(r, title: str, source: str, lang: str = "en") -> D
     MD = r"M_{\text{Д}}" if lang == "ru" else r"M_{D}"
     top = r"t_{\text{оп}}" if lang == "ru" else r"t_{op}"
     wm = r"\omega_{\text{ср}}" if lang == "ru" else r"\omega_{m}"
-    add(Formula(rf"\Delta E = E - P {top}, P = {MD} {wm}"))
+    n_E = doc.add_formula(rf"\Delta E = E - P {top}, P = {MD} {wm}")
     n_J = doc.add_formula(
         rf"\Delta E = \frac{{J (\omega_{{max}}^{{2}} - \omega_{{min}}^{{2}})}}{{2}} = "
         rf"J {wm}^{{2}} \delta, \delta = \frac{{\omega_{{max}} - \omega_{{min}}}}{{{wm}}}")
@@ -80,21 +80,7 @@ def build_duty_cycle_document(r, title: str, source: str, lang: str = "en") -> D
             table(caption, header, rows)
         if note:                      # a line of the terminal: a sentence here
             add(Paragraph(sentence(note)))
-    # a flywheel found from the speeds: J and m worked with six digits of the numbers the
-    # tables print (numbers.fmt_worked); a given flywheel's speeds are found the other way,
-    # and its J is the case's
-    if not r.flywheel_given and None not in (r.J, r.omega_mean, r.delta):
-        n6 = fmt_worked
-        kg = rf"\,\text{{{nm.unit('kg·m²', lang)}}}"
-        mass = r.mass is not None and r.radius is not None
-        add(Paragraph(put_into(lang, n_J, n_m) if mass else put_into(lang, n_J)))
-        add(Formula(rf"J = \frac{{\Delta E}}{{{wm}^{{2}} \delta}} = \frac{{{n6(r.delta_E)}}}"
-                    rf"{{{n6(r.omega_mean)}^{{2}} \cdot {n6(r.delta)}}} = {n6(r.J)}{kg}"))
-        if mass:
-            add(Formula(rf"m = \frac{{J}}{{k^{{2}}}} = \frac{{{n6(r.J)}}}{{{n6(r.radius)}^{{2}}}} = "
-                        rf"{n6(r.mass)}\,\text{{{nm.unit('kg', lang)}}}"))
-    if n_w is not None:
-        _work_speeds(doc, r, lang, n_m, n_w, wm)
+    _work(doc, r, lang, {"E": n_E, "J": n_J, "m": n_m, "w": n_w}, wm, top)
     if r.checks:
         from flywheel.render.duty_cycle import L10N
 
@@ -129,30 +115,63 @@ def _worked_speeds(r) -> bool:
             and None not in (r.omega_max, r.omega_min, r.omega_mean) and r.delta_E > 0)
 
 
-def _work_speeds(doc: Document, r, lang: str, n_m: int, n_w: int, wm: str) -> None:
-    """A given flywheel's J = m·k² (where its mass and radius are known) and its other speeds
-    from the given one (formula ``n_w``), each with six digits of the numbers the tables print
-    (numbers.fmt_worked): Khurmi & Gupta, Ex. 16.21, ω_min = √(ω_max² − 2·ΔE/J)."""
-    n6, add = fmt_worked, doc.blocks.append
-    rad = rf"\,\text{{{nm.unit('rad/s', lang)}}}"
-    rpm = rf"\,\text{{{nm.unit('rpm', lang)}}}"
+def _work(doc: Document, r, lang: str, n: dict, wm: str, top: str) -> None:
+    """The record's results worked with the numbers the tables print, six digits each
+    (numbers.fmt_worked), citing the method's formulas ``n`` (by "E", "J", "m", "w"): the
+    energy the flywheel gives, ΔE = E − P·t_оп; a flywheel found from its speeds, J =
+    ΔE/(ω_ср²·δ) and m = J/k² (Khurmi & Gupta Ex. 16.19: m = 617,94 кг, printed 618 kg), or
+    from the speeds at its radius, m = ΔE/(v_ср²·δ) (Ex. 16.20: 1198 кг); a given one, J =
+    m·k² and its other speed from the given one (Ex. 16.21: ω_min = √(ω_max² − 2·ΔE/J),
+    n_min = 257,6 об/мин). Nothing where the case gives too little to work them."""
+    n6, out, cited = fmt_worked, [], []
+
+    def unit(u: str) -> str:
+        return rf"\,\text{{{nm.unit(u, lang)}}}"
+
+    if r.energy and r.delta_E > 0 and None not in (r.motor_power, r.operation_time):
+        cited.append(n["E"])
+        out.append(rf"\Delta E = E - P {top} = {n6(r.energy)} - {n6(r.motor_power)} \cdot "
+                   rf"{n6(r.operation_time)} = {n6(r.delta_E)}{unit('J')}")
     mass = r.mass is not None and r.radius is not None
-    add(Paragraph(put_into(lang, n_m, n_w) if mass else put_into(lang, n_w)))
-    if mass:
-        add(Formula(rf"J = m k^{{2}} = {n6(r.mass)} \cdot {n6(r.radius)}^{{2}} = {n6(r.J)}"
-                    rf"\,\text{{{nm.unit('kg·m²', lang)}}}"))
+    if not r.flywheel_given and r.delta_E > 0 and None not in (r.J, r.omega_mean):
+        cited += [n["J"]] + ([n["m"]] if mass else [])
+        out.append(rf"J = \frac{{\Delta E}}{{{wm}^{{2}} \delta}} = \frac{{{n6(r.delta_E)}}}"
+                   rf"{{{n6(r.omega_mean)}^{{2}} \cdot {n6(r.delta)}}} = {n6(r.J)}{unit('kg·m²')}")
+        if mass:
+            out.append(rf"m = \frac{{J}}{{k^{{2}}}} = \frac{{{n6(r.J)}}}{{{n6(r.radius)}^{{2}}}} = "
+                       rf"{n6(r.mass)}{unit('kg')}")
+    elif (not r.flywheel_given and r.delta_E > 0 and r.omega_mean is None
+          and None not in (r.mass, r.rim_speed_mean)):      # speeds at the radius (m/s)
+        cited.append(n["m"])
+        vm = r"v_{\text{ср}}" if lang == "ru" else r"v_{m}"
+        out.append(rf"m = \frac{{\Delta E}}{{{vm}^{{2}} \delta}} = \frac{{{n6(r.delta_E)}}}"
+                   rf"{{{n6(r.rim_speed_mean)}^{{2}} \cdot {n6(r.delta)}}} = {n6(r.mass)}{unit('kg')}")
+    if n["w"] is not None:
+        if mass:
+            cited.append(n["m"])
+            out.append(rf"J = m k^{{2}} = {n6(r.mass)} \cdot {n6(r.radius)}^{{2}} = {n6(r.J)}"
+                       rf"{unit('kg·m²')}")
+        cited.append(n["w"])
+        out += _speeds_worked(r, unit)
+    if out:
+        doc.blocks.append(Paragraph(put_into(lang, *cited)))
+        doc.blocks.extend(Formula(f) for f in out)
+
+
+def _speeds_worked(r, unit) -> list[str]:
+    """A given flywheel's other speed from the given one (formula :data:`_SPEEDS_FROM_J`), and
+    in rev/min."""
+    n6 = fmt_worked
     w1, w2, wmean, dE, J = (n6(x) for x in (r.omega_max, r.omega_min, r.omega_mean, r.delta_E, r.J))
+    rad = unit("rad/s")
     n = (r"n_{max}", r"\omega_{max}", r.rpm_max) if r.speed_given == "min" else (
         r"n_{min}", r"\omega_{min}", r.rpm_min)
-    in_rpm = rf"{n[0]} = \frac{{30 {n[1]}}}{{\pi}} = {n6(n[2])}{rpm}"
+    in_rpm = rf"{n[0]} = \frac{{30 {n[1]}}}{{\pi}} = {n6(n[2])}{unit('rpm')}"
     if r.speed_given == "max":
-        add(Formula(rf"\omega_{{min}} = \sqrt{{{w1}^{{2}} - \frac{{2 \cdot {dE}}}{{{J}}}}} = "
-                    rf"{w2}{rad}"))
-        add(Formula(in_rpm))
-    elif r.speed_given == "min":
-        add(Formula(rf"\omega_{{max}} = \sqrt{{{w2}^{{2}} + \frac{{2 \cdot {dE}}}{{{J}}}}} = "
-                    rf"{w1}{rad}"))
-        add(Formula(in_rpm))
-    else:
-        add(Formula(rf"\delta = \frac{{{dE}}}{{{J} \cdot {wmean}^{{2}}}} = {n6(r.delta)}, "
-                    rf"\omega_{{max}} = {w1}{rad}, \omega_{{min}} = {w2}{rad}"))
+        return [rf"\omega_{{min}} = \sqrt{{{w1}^{{2}} - \frac{{2 \cdot {dE}}}{{{J}}}}} = {w2}{rad}",
+                in_rpm]
+    if r.speed_given == "min":
+        return [rf"\omega_{{max}} = \sqrt{{{w2}^{{2}} + \frac{{2 \cdot {dE}}}{{{J}}}}} = {w1}{rad}",
+                in_rpm]
+    return [rf"\delta = \frac{{{dE}}}{{{J} \cdot {wmean}^{{2}}}} = {n6(r.delta)}, "
+            rf"\omega_{{max}} = {w1}{rad}, \omega_{{min}} = {w2}{rad}"]
