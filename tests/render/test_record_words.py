@@ -351,3 +351,22 @@ def test_an_english_record_writes_no_cyrillic(name):
         text = text.replace(q, "")
     body = text.split("## Sources")[0]
     assert not [ln for ln in body.splitlines() if CYRILLIC.search(ln)], name
+
+
+def test_a_tables_empty_cell_is_a_dash_and_its_heads_open_with_a_capital():
+    """ГОСТ 2.105-2019, 4.4.5 and 4.4.15: column and row heads from a capital letter, a dash where
+    a cell has no data. The shaper's dead centre between two numbered positions has no number
+    («—»), a text value no unit («движущий», «—»), a task-2 result without rev/min no note; a
+    subordinate row («в том числе: …») and a symbol («φ, °») keep their lower case."""
+    shaper = _run_document("shaper")[2]
+    kin = next(t for t in shaper.tables if t.header[:2] == ("№", "φ, °"))
+    dead = [r for r in kin.rows if r[1].startswith("22")]
+    assert dead and dead[0][0] == "—", dead
+    compressor = _run_document("compressor")[2]
+    rows = {r[0]: r for t in compressor.tables for r in t.rows}
+    assert rows["Постоянный момент из условия цикла"][1:] == ("движущий", "—")
+    assert "в том числе: коленчатый вал" in rows
+    assert all(c.strip() for t in compressor.tables + shaper.tables for r in t.rows for c in r)
+    _, task2 = _other_document("task2_khurmi_16_1")
+    mean = next(r for t in task2.tables for r in t.rows if r[0].startswith("Средняя угловая"))
+    assert mean[-1] == "—", mean

@@ -78,10 +78,16 @@ def capital(cell: str) -> str:
     return cell[0].upper() + cell[1:] if _OPENING_WORD.match(cell) else cell
 
 
+#: a table's cell with nothing to say (ГОСТ 2.105-2019, 4.4.15: «Если в графе таблицы
+#: отсутствуют данные, ставится прочерк»)
+NO_DATA = "—"
+
+
 @dataclass(frozen=True)
 class Table:
     """A numbered table: its column heads and each row's head (its first cell) from a capital
-    letter (:func:`capital`), whoever builds it."""
+    letter (:func:`capital`), an empty cell a dash (:data:`NO_DATA`; a task sheet's blank cell to
+    fill in is no-break spaces, not empty), whoever builds it."""
 
     number: int
     caption: str
@@ -90,8 +96,9 @@ class Table:
 
     def __post_init__(self):
         object.__setattr__(self, "header", tuple(capital(h) for h in self.header))
-        object.__setattr__(self, "rows", tuple((capital(r[0]), *r[1:]) if r else r
-                                               for r in self.rows))
+        object.__setattr__(self, "rows", tuple(
+            tuple(capital(c) if k == 0 else c for k, c in
+                  enumerate(c or NO_DATA for c in r)) for r in self.rows))
 
 
 @dataclass(frozen=True)

@@ -106,13 +106,13 @@ def build_aggregate_document(r, title: str, source: str, lang: str = "en",
            for k, (c, b, (i, j)) in enumerate(zip(ch.c, ch.damping, ch.pairs))])
     dr = r.drive
     if dr is not None:
-        rows = [[t["kind"], t.get(dr.kind, dr.kind), ""]]
+        rows = [[t["kind"], t.get(dr.kind, dr.kind), U("-")]]
         if dr.kind == "linear":
             rows += [[t["M_start"], g(dr.M_start), U("N·m")], [t["omega_x"], g(dr.omega_x), U("rad/s")]]
         elif dr.omega_nominal is not None:
             rows.append([t["omega_nominal"], g(dr.omega_nominal), U("rad/s")])
         rows += [[t["M0"], g(dr.M0), U("N·m")], [t["amplitude"], g(dr.amplitude), U("N·m")],
-                 [t["forcing_ratio"], g(dr.forcing_ratio), ""]]
+                 [t["forcing_ratio"], g(dr.forcing_ratio), U("-")]]
         table(t["drive"], [t["quantity"], t["value"], t["unit"]], rows)
 
     # 2. method -------------------------------------------------------------------------------
@@ -165,10 +165,10 @@ def build_aggregate_document(r, title: str, source: str, lang: str = "en",
             [L("moment_amp"), g(st.moment_amplitude[0]), U("N·m"), ""],
             [L("omega_motor"), f"{g(st.omega_mean - st.omega_amplitude[0])} … "
              f"{g(st.omega_mean + st.omega_amplitude[0])}", U("rad/s"), ""],
-            [L("delta_motor"), g(st.delta[0]), "", g(r.check_delta[0] if r.check_delta else None)],
+            [L("delta_motor"), g(st.delta[0]), U("-"), g(r.check_delta[0] if r.check_delta else None)],
             [L("omega_machine"), f"{g((st.omega_mean - st.omega_amplitude[-1]) * u_last)} … "
              f"{g((st.omega_mean + st.omega_amplitude[-1]) * u_last)}", U("rad/s"), ""],
-            [L("delta_machine"), g(st.delta[-1]), "", g(r.check_delta[1] if r.check_delta else None)],
+            [L("delta_machine"), g(st.delta[-1]), U("-"), g(r.check_delta[1] if r.check_delta else None)],
         ]
         if r.startup is not None:
             rows.append([L("startup_peak"), g(r.startup_peak_moment), U("N·m"),
