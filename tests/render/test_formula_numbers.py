@@ -293,3 +293,35 @@ def test_every_run_records_flywheel_comes_back_from_its_numbers(name):
     digits = len(re.sub(r"\D", "", J.lstrip("−0,").replace(",", "")))
     last = 10.0 ** (math.floor(math.log10(abs(_num(J)))) - digits + 1)   # the last digit's unit
     assert abs(worked - _num(J)) <= 0.5 * last * 1.01, (worked, J)
+
+
+def test_the_two_mass_aggregates_frequency_and_margin_are_worked_with_their_numbers():
+    """The seed's two-mass aggregate (seed 003, Ефанов ch. 9): ω = √(c·(J_1 + J_2)/(J_1·J_2))
+    and Δ = |1 − ω_вын/ω_n| worked with the numbers of the record's tables, each giving its
+    result again; ω is the modal analysis's (an independent route: the eigenvalues of
+    K·x = ω²·M·x) to the six digits printed."""
+    from flywheel.cases.aggregate import load_aggregate_case, to_model
+    from flywheel.elastic.model import analyze
+    from flywheel.render.numbers import typography
+    from flywheel.render.report_aggregate import build_aggregate_document
+
+    ch, drive = to_model(load_aggregate_case(CASES / "aggregate.toml"))
+    r = analyze(ch, drive, t_end=0.2)
+    with typography("ru"):
+        doc = build_aggregate_document(r, "T", "S", "ru", figure=None)
+    from flywheel.render.blocks import Paragraph
+
+    f = _formulas(doc)
+    starts = [k for k, b in enumerate(doc.blocks) if isinstance(b, Paragraph)
+              and b.text.startswith("Подстановка найденных значений")]
+    assert len(starts) == 2
+    cited = [int(re.search(r"\((\d+)\)", doc.blocks[k].text).group(1)) for k in starts]
+    assert r"\omega = \sqrt{\frac{c (J_{1} + J_{2})}{J_{1} J_{2}}}" == f[cited[0]]
+    assert r"\Delta = |1 - \frac{\omega_{\text{вын}}}" in f[cited[1]]
+    w, margin = (doc.blocks[k + 1].tex for k in starts)
+    got = re.search(rf"\\frac\{{{N} \\cdot \({N} \+ {N}\)\}}\{{{N} \\cdot {N}\}}\}} = {N}", w)
+    c, J1, J2 = (_num(got.group(k)) for k in (1, 2, 3))
+    _close(math.sqrt(c * (J1 + J2) / (J1 * J2)), got.group(6))
+    assert _num(got.group(6)) == pytest.approx(r.modes.omega[-1], rel=1e-5)
+    got = re.search(rf"\|1 - \\frac\{{{N}\}}\{{{N}\}}\| = {N}", margin)
+    _close(abs(1 - _num(got.group(1)) / _num(got.group(2))), got.group(3))

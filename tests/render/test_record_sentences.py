@@ -146,7 +146,7 @@ def test_the_aggregates_formulas_are_explained_under_them():
     k, where = next((k, b) for k, b in enumerate(doc.blocks) if isinstance(b, Where))
     assert isinstance(doc.blocks[k - 1], Formula)
     assert where.lines[0].startswith("где a_ij, b_ij, c_ij — инерционные коэффициенты")
-    assert where.lines[-1].startswith("ω_в — вынуждающая частота")
+    assert where.lines[-1].startswith("ω_вын — вынуждающая частота")
 
 
 def test_the_aggregates_coordinates_are_set_without_underscores(tmp_path):

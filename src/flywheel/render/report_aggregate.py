@@ -14,9 +14,9 @@ from __future__ import annotations
 from flywheel.render.blocks import sentence
 from flywheel.render.catalogue import words
 from flywheel.render.document import (T as RECORD, Bullets, Document, Figure, Formula, Heading,
-                                      Paragraph, Where)
+                                      Paragraph, Where, put_into)
 from flywheel.render.nomenclature import name as text, rotor_name, unit
-from flywheel.render.numbers import fmt as _number, separator
+from flywheel.render.numbers import fmt as _number, fmt_worked, separator
 from flywheel.units import RPM_PER_RAD_S, TWO_PI
 
 FIGURE = "aggregate.png"
@@ -52,6 +52,8 @@ T = words("report_aggregate", {
     "where": ("where a_ij, b_ij, c_ij are the inertia, damping and stiffness coefficients, "
               "q_j the generalised coordinates, Q_i the generalised forces;\n"
               "ω a natural circular frequency, f the same in hertz"),
+    "where_two": (";\nJ_1, J_2 the two masses' moments of inertia and c the stiffness of their "
+                  "connection, reduced to shaft I"),
     "where_drive": (";\nω_max, ω_min, ω_m the greatest, least and mean angular velocities of "
                     "shaft I, δ the coefficient of speed fluctuation;\n"
                     "ω_f the forcing frequency, ω_n the natural frequency of mode n, Δ the margin "
@@ -123,11 +125,17 @@ def build_aggregate_document(r, title: str, source: str, lang: str = "en",
     add(Formula(r"\sum_{j} (a_{ij} \frac{d^{2}q_{j}}{dt^{2}} + b_{ij} \frac{dq_{j}}{dt} + "
                 r"c_{ij} q_{j}) = Q_{i}"))
     add(Formula(r"\text{det}(c_{ij} - \omega^{2} a_{ij}) = 0, f = \frac{\omega}{2\pi}"))
+    # two free masses: the determinant's root in closed form (seed 003, Ефанов ch. 9)
+    two = len(ch.J) == 2 and not ch.fixed
+    n_two = doc.add_formula(r"\omega = \sqrt{\frac{c (J_{1} + J_{2})}{J_{1} J_{2}}}") if two else None
+    wm, wf = ("ср", "вын") if lang == "ru" else ("m", "f")   # mean; forcing (as the tables)
+    n_margin = None
     if dr is not None:
-        wm, wf = ("ср", "в") if lang == "ru" else ("m", "f")     # mean; forcing (вынуждающая)
-        add(Formula(rf"\delta = \frac{{\omega_{{max}} - \omega_{{min}}}}{{\omega_{{\text{{{wm}}}}}}}, "
-                    rf"\Delta = |1 - \frac{{\omega_{{\text{{{wf}}}}}}}{{\omega_{{n}}}}|"))
-    add(Where(t["where"] + (t["where_drive"] if dr is not None else "") + "."))
+        n_margin = doc.add_formula(
+            rf"\delta = \frac{{\omega_{{max}} - \omega_{{min}}}}{{\omega_{{\text{{{wm}}}}}}}, "
+            rf"\Delta = |1 - \frac{{\omega_{{\text{{{wf}}}}}}}{{\omega_{{n}}}}|")
+    add(Where(t["where"] + (t["where_two"] if two else "")
+              + (t["where_drive"] if dr is not None else "") + "."))
 
     # 3. coefficients -------------------------------------------------------------------------
     add(Heading(2, t["coefficients"]))
@@ -145,6 +153,12 @@ def build_aggregate_document(r, title: str, source: str, lang: str = "en",
           [[L("rigid_body") if k < rigid else k - rigid + 1, g(w), g(w / TWO_PI), g(w * RPM_PER_RAD_S),
             separator(lang).join(g(x, ".4g") for x in r.modes.shapes[:, k])]
            for k, w in enumerate(r.modes.omega)])
+    if n_two is not None:             # worked with six digits of the tables' numbers
+        n6 = fmt_worked
+        J1, J2, c = (n6(float(x)) for x in (ch.J[0], ch.J[1], ch.c[0]))
+        add(Paragraph(put_into(lang, n_two)))
+        add(Formula(rf"\omega = \sqrt{{\frac{{{c} \cdot ({J1} + {J2})}}{{{J1} \cdot {J2}}}}} = "
+                    rf"{n6(float(r.modes.omega[-1]))}\,\text{{{U('rad/s')}}}"))
 
     # 5. forced vibration ---------------------------------------------------------------------
     add(Heading(2, t["resonance"]))
@@ -157,6 +171,11 @@ def build_aggregate_document(r, title: str, source: str, lang: str = "en",
         table(t["resonance_caption"], [L("mode"), f"f_n, {U('Hz')}", L("ratio"), L("margin")],
               [[k + 1, g(x.omega_n / TWO_PI), g(x.ratio, ".4f"), g(x.margin, ".4f")]
                for k, x in enumerate(r.resonance)])
+        if r.resonance and n_margin is not None:      # the first mode's, worked
+            x = r.resonance[0]
+            add(Paragraph(put_into(lang, n_margin)))
+            add(Formula(rf"\Delta_{{1}} = |1 - \frac{{{fmt_worked(st.omega_forcing)}}}"
+                        rf"{{{fmt_worked(x.omega_n)}}}| = {fmt_worked(x.margin)}"))
         u_last = float(ch.ratio[-1])
         rows = [
             [L("twist_mean"), g(st.twist_mean[0]), U("rad"), ""],
