@@ -232,6 +232,9 @@ def test_the_terminal_report_points_a_wrong_answer_at_its_formula_too(compressor
     assert ru_numbers(m.group(2)) == pytest.approx([key["delta_T_max"]], rel=5e-4)
     half = next(ln for ln in res.output.splitlines() if ln.startswith("│ J_I") and "НЕВЕРНО" in ln)
     assert half.split("│")[7].strip() == "вместо δ взято δ/2"      # a named mistake: its name
+    # the teacher's report names a carried-forward verdict in the third person (the student's
+    # own page says «верно по вашим данным»)
+    assert "верно по данным студента" in res.output and "по вашим данным" not in res.output
     # the default share is 0: the carried-forward answers are counted and said not credited
     assert ("верно по данным студента (следуют из его же предыдущих ответов): 3; не засчитаны"
             in " ".join(res.output.split()))

@@ -423,7 +423,7 @@ def test_a_class_batch_scored_as_a_teacher_would(tmp_path, key_dir, key):
     # every answer 1.5 times the key: the later ones are consistent with the student's own
     # earlier ones (a task2 key's chain, issue 27) and say so; none passes
     assert verdicts["sidorov"][0] == "FAIL" and set(verdicts["sidorov"]) <= {
-        "FAIL", "consistent with your earlier answer"} and verdicts["kim"] == ["no answer"] * n
+        "FAIL", "consistent with the student's earlier answer"} and verdicts["kim"] == ["no answer"] * n
     errors = {r[0]: r[3:3 + 2 * n:2] for r in rows[1:]}
     assert [float(e) for e in errors["sidorov"]] == pytest.approx([0.5] * n)
     assert [float(e) for e in errors["petrova"]] == pytest.approx([tol[a] / 2 for a in answers])

@@ -31,6 +31,7 @@ TEXT = words("grading", {"summary": "Class summary: {n} graded, mean score {mean
                          "v_failed": "{n} draw(s) failed validation or analysis and were drawn again",
                          "v_seed": "seed {seed} (the same seed gives the same files)",
                          "carried": "consistent with your earlier answer", "diagnosis": "diagnosis",
+                         "carried_teacher": "consistent with the student's earlier answer",
                          "carried_col": "carried forward",
                          "carried_note": "carried forward: {n} answer(s) consistent with the "
                          "student's earlier ones, credited {share} each",
@@ -162,10 +163,13 @@ def _most_often_wrong(r, lang: str, shown: dict | None = None) -> str:
             + (f" {t['each']})" if len(names) > 1 else ")"))
 
 
-def verdict_word(a, lang: str = "en") -> str:
-    """An answer's verdict as the gradebook and the feedback say it."""
+def verdict_word(a, lang: str = "en", to_student: bool = True) -> str:
+    """An answer's verdict as the feedback page says it to the student («верно по вашим
+    данным») or, ``to_student`` False, as the teacher's gradebook and terminal report say it
+    («верно по данным студента»)."""
     t = TEXT[lang]
-    return {"pass": t["pass"], "carried": t["carried"], "fail": t["fail"],
+    carried = t["carried"] if to_student else t["carried_teacher"]
+    return {"pass": t["pass"], "carried": carried, "fail": t["fail"],
             "no answer": t["no_answer"]}.get(a.verdict, t["pass"] if a.passed else t["fail"])
 
 
@@ -230,7 +234,7 @@ def _gradebook_rows(r, lang: str = "en"):
             if g is None:
                 row += ["", None]
                 continue
-            row += [verdict_word(g, lang), g.error]
+            row += [verdict_word(g, lang, to_student=False), g.error]
         yield row + [s.passed, s.total, round(s.score, 4)] + (
             [s.carried_count, diagnosis_text(s, lang)] if explained else [])
 
@@ -424,7 +428,7 @@ def print_report(r, console=None, lang: str = "en") -> None:
                 if a.error_kind == "relative"
                 else f"{_number(a.error, spec='.3g', zero=None, nonfinite='show')} {t['abs']}")
             mark = f"[green]{t['pass']}[/]" if a.passed else (
-                f"[yellow]{t['carried']}[/]" if a.verdict == "carried" else
+                f"[yellow]{t['carried_teacher']}[/]" if a.verdict == "carried" else
                 f"[red]{t['fail']}[/]" if a.given is not None else f"[red]{t['no_answer']}[/]")
             key = _g(a.key, key_spec(a) or ".6g")     # the digits its tolerance tells apart
             cells = [shown.get(a.answer, a.answer), _g(a.given, given=True), key, err,
