@@ -96,9 +96,13 @@ class Table:
 
     def __post_init__(self):
         object.__setattr__(self, "header", tuple(capital(h) for h in self.header))
-        object.__setattr__(self, "rows", tuple(
-            tuple(capital(c) if k == 0 else c for k, c in
-                  enumerate(c or NO_DATA for c in r)) for r in self.rows))
+        object.__setattr__(self, "rows", tuple(_row(r) for r in self.rows))
+
+
+def _row(cells: tuple[str, ...]) -> tuple[str, ...]:
+    """A table's row as :class:`Table` keeps it: its head from a capital, an empty cell a dash."""
+    cells = tuple(c or NO_DATA for c in cells)
+    return (capital(cells[0]), *cells[1:]) if cells else cells
 
 
 @dataclass(frozen=True)

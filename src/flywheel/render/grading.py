@@ -427,9 +427,8 @@ def print_report(r, console=None, lang: str = "en") -> None:
                 f"{_number(100 * a.error, spec='.3g', zero=None, nonfinite='show')} %"
                 if a.error_kind == "relative"
                 else f"{_number(a.error, spec='.3g', zero=None, nonfinite='show')} {t['abs']}")
-            mark = f"[green]{t['pass']}[/]" if a.passed else (
-                f"[yellow]{t['carried_teacher']}[/]" if a.verdict == "carried" else
-                f"[red]{t['fail']}[/]" if a.given is not None else f"[red]{t['no_answer']}[/]")
+            colour = "green" if a.passed else "yellow" if a.verdict == "carried" else "red"
+            mark = f"[{colour}]{verdict_word(a, lang, to_student=False)}[/]"
             key = _g(a.key, key_spec(a) or ".6g")     # the digits its tolerance tells apart
             cells = [shown.get(a.answer, a.answer), _g(a.given, given=True), key, err,
                      f"{_pct_of(a.tolerance)} %", mark]

@@ -154,11 +154,14 @@ def _ts(text: str) -> str:
     return markup(text, boxed_literal)
 
 
+#: the paragraphs' spacing of the ГОСТ layout (a lead-in's sticky block keeps it: typst_blocks)
+PAR_SPACING = "1em"
+
 _PREAMBLE = """#set document(title: {title}, date: none)
 #set page(paper: "a4", margin: (left: 30mm, right: {right}mm, top: 20mm, bottom: 20mm),
   footer: context {{ if counter(page).get().first() > 1 {{ align(center, counter(page).display()) }} }})
 #set text(font: ({fonts}), size: 14pt, lang: "ru", hyphenate: true)
-#set par(justify: true, leading: 1em, spacing: 1em, first-line-indent: (amount: 1.25cm, all: true))
+#set par(justify: true, leading: 1em, spacing: {spacing}, first-line-indent: (amount: 1.25cm, all: true))
 #show heading: set text(size: 14pt, weight: "bold")
 #show heading: it => block(above: 1.5em, below: 1em, sticky: true, width: 100%,
   if it.supplement == [S] {{ align(center, it.body) }} else {{ h(1.25cm) + it.body }})
@@ -205,7 +208,7 @@ def typst_source(doc: Document, plots: bool = True) -> str:
                 "#outline(title: none, indent: 1.25cm, depth: 2)"]
     landscape = "flipped: true"
     out = [_PREAMBLE.format(title=_ts(doc.title)[1:] or '""', right=f"{f.margin_right_mm:g}",
-                            fonts=fonts)]
+                            fonts=fonts, spacing=PAR_SPACING)]
     if f.frame == "eskd":                       # the ЕСКД frame (render/report_frame.py)
         from flywheel.render import report_frame as rf
 
@@ -225,7 +228,7 @@ def typst_source(doc: Document, plots: bool = True) -> str:
                 out.append(f"#heading(level: 1, numbering: none, supplement: [S])[{body}]")
             else:
                 out.append(f"#heading(level: {b.level}, numbering: none)[{_lit(b.number)}#h(0.6em){body}]")
-        elif (lines := typst_block(b, _ts, "1em")) is not None:  # a paragraph, a list, a formula
+        elif (lines := typst_block(b, _ts, PAR_SPACING)) is not None:  # a paragraph, a list, a formula
             out += lines
         elif isinstance(b, Table):
             out.append(_table(b, g, landscape))

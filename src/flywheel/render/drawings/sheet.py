@@ -194,16 +194,17 @@ def name_lines(title: str, sheet_name: str, centre: float) -> list[tuple[str, fl
     still, and the name with it, at 2.5 mm (ГОСТ 2.304's next size). Only a title that 2.5 mm
     does not hold either is cut with «…» (the shaper's «… механизм с быстрым обратным ходом и
     ползуном» had been cut at 3.5 mm)."""
-    for th, most in ((5.0, 2), (3.5, 3), (3.5, 4), (2.5, 4)):
+    def trial(th: float, most: int):
         sh = min(th, 3.5)
-        sheet_lines = wrap(sheet_name, 66.0, sh, 2)
-        title_lines = wrap(title, 66.0, th, most)
+        return wrap(title, 66.0, th, most), th, wrap(sheet_name, 66.0, sh, 2), sh
+
+    for title_lines, th, sheet_lines, sh in (trial(th, most) for th, most in
+                                              ((5.0, 2), (3.5, 3), (3.5, 4), (2.5, 4))):
         whole = " ".join(title_lines) == " ".join(title.split())
         if whole and 1.25 * (th * len(title_lines) + sh * len(sheet_lines)) <= 24.0:
             break
-    else:
-        title_lines, th, sh = wrap(title, 66.0, 3.5, 3), 3.5, 3.5
-        sheet_lines = wrap(sheet_name, 66.0, sh, 2)
+    else:                             # none holds it whole: three lines at 3.5 mm, cut below
+        title_lines, th, sheet_lines, sh = trial(3.5, 3)
     lines = [(ln, th) for ln in title_lines] + [(ln, sh) for ln in sheet_lines]
     # the lines 1.6 of their height apart, closer (down to 1.25) to stay within 24 mm
     k = max(1.25, min(1.6, 24.0 / sum(h for _, h in lines)))
