@@ -8,6 +8,7 @@ from __future__ import annotations
 import difflib
 import math
 import re
+from pathlib import Path
 from collections.abc import Callable, Iterable
 from typing import TypeVar
 
@@ -162,7 +163,42 @@ def load(path, parse: Callable[[dict, str], M], what: str = "a TOML case file") 
     ``parse_*``): the one way every case file is loaded."""
     from flywheel.io.toml import read_toml
 
-    return parse(read_toml(path, what), str(path))
+    data = read_toml(path, what)
+    try:
+        return parse(data, str(path))
+    except CaseFileError as exc:
+        hinted = _comma_hint(path, said(exc))
+        if hinted is None:
+            raise
+        raise CaseFileError(hinted) from None
+
+
+def _comma_hint(path, error: str) -> str | None:
+    """``error`` (a field's error in the case file at ``path``) with a hint when an array of the
+    file holds a number written with a decimal comma («[0.0, -9,81]»: three numbers to TOML,
+    so "too many items"), the field's own array first; None when none does."""
+    from flywheel.io.toml import comma_in_array
+
+    lead = getattr(error, "lead", "")
+    if not getattr(error, "code", ""):
+        return None
+    try:
+        text = Path(path).read_bytes().decode("utf-8-sig")
+    except (OSError, UnicodeDecodeError):
+        return None
+    keys = re.findall(r"(?:^|\.)([A-Za-z_][\w-]*)(?:\[\d+\])*$", lead.rstrip(": ").split(": ")[-1])
+    given, line = comma_in_array(text, keys[-1]) if keys else ("", 0)
+    if not given:
+        given, line = comma_in_array(text)
+    if not given:
+        return None
+    what = Notice(str(error)[len(lead):], error.code, **error.params)
+    what.template = error.template
+    return led(lead, Notice.of(
+        "comma_in_array", "{what}; if {given} on line {line} is one number written with a "
+        "decimal comma, write it with a point: {fixed}", what=what, given=given, line=line,
+        fixed=given.replace(",", ".")))
+
 
 # pydantic puts the member of a union it tried into the location ('float', 'list[float]', …):
 # not a key of the file

@@ -61,6 +61,43 @@ def decimal_comma(text: str, detail: str) -> str:
     return number.group(0) if number else ""
 
 
+def comma_in_array(text: str, key: str = "") -> tuple[str, int]:
+    """A number of an array in the TOML ``text`` that looks written with a decimal comma, and
+    its line (from 1): «gravity = [0.0, -9,81]» parses as three numbers, 0.0, −9 and 81, and
+    the case then fails as too long a list, or a list not increasing; ("", 0) when there is
+    none. ``key``: only the array assigned to that key, else any. The array may run over
+    several lines; comments are skipped. A digit, a comma and a digit with no space between
+    («-9,81») is the sign: TOML's own style puts a space after a comma."""
+    import re
+
+    lines = text.splitlines()
+    name = re.escape(key) if key else r"[\w-]+"
+    head = re.compile(r'(?:^|[{,\s])"?' + name + r'"?\s*=\s*\[')
+    comma = re.compile(r"(?<![\w.])[-+]?\d+,\d+(?![\w.])")
+    for i, line in enumerate(lines):
+        at = head.search(line.split("#", 1)[0])
+        if not at:
+            continue
+        depth = 0
+        for n, part in enumerate([line.split("#", 1)[0][at.end() - 1:]] + [
+                ln.split("#", 1)[0] for ln in lines[i + 1:i + 1 + MAX_ARRAY_LINES]]):
+            for j, ch in enumerate(part):
+                depth += (ch == "[") - (ch == "]")
+                if depth == 0:
+                    part = part[:j]
+                    break
+            number = comma.search(part)
+            if number:
+                return number.group(0), i + 1 + n
+            if depth == 0:
+                break
+    return "", 0
+
+
+#: the lines an array of a case file is followed over when looking for a decimal comma in it
+MAX_ARRAY_LINES = 200
+
+
 #: the encodings a text file that is not UTF-8 is told to be in (a Windows or DOS editor's
 #: Russian text, a Unicode file with its byte-order mark): charset-normalizer's codec → the name
 #: said; each a TOML file must be saved again as UTF-8 to be read (TOML 1.0: "A TOML file must be
