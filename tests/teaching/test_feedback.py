@@ -108,8 +108,30 @@ def test_the_gradebook_has_the_diagnosis(compressor, sheet, tmp_path):
                               "--gradebook", str(book)])
     assert res.exit_code == 0, res.output
     rows = list(csv.DictReader(book.open(encoding="utf-8")))
-    assert rows[0]["carried forward"] == "3" and rows[0]["diagnosis"] == ""
+    # student 1's ΔT_max is 1.3 times the key's, no classic mistake: the formula to check, and
+    # what it gives from the student's own (right) M_D: the key's value
+    key = key_of(compressor)["variants"]["01"]
+    assert rows[0]["carried forward"] == "3"
+    assert rows[0]["diagnosis"] == (
+        "delta_T_max: check ΔT_max = max ΔT_I − min ΔT_I over the whole cycle, ΔT_I = A − "
+        f"(T_II − T_II(0)); from the student's M_D = {key['driving_moment']:.6g} it is "
+        f"{key['delta_T_max']:.6g}")
     assert rows[1]["diagnosis"] == "J_required: δ/2 used for δ"
+
+
+def test_the_russian_gradebook_says_what_to_check_with_decimal_commas(compressor, sheet,
+                                                                      tmp_path):
+    book = tmp_path / "b.csv"
+    res = runner.invoke(app, ["grade", str(compressor / "answers.json"), str(sheet),
+                              "--gradebook", str(book), "--lang", "ru"])
+    assert res.exit_code == 0, res.output
+    rows = list(csv.reader(book.open(encoding="utf-8")))
+    diagnosis = rows[1][-1]
+    assert diagnosis.startswith("delta_T_max: проверить ΔT_нб = "), diagnosis
+    assert "из M_Д = " in diagnosis and "студента получается" in diagnosis, diagnosis
+    key = key_of(compressor)["variants"]["01"]
+    assert ru_numbers(diagnosis)[-1] == pytest.approx(key["delta_T_max"], rel=5e-4)
+    assert "." not in diagnosis.split("проверить")[1].split("студента")[1], diagnosis
 
 
 @pytest.mark.parametrize("args, fragment", [

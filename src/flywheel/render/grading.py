@@ -173,13 +173,24 @@ def verdict_word(a, lang: str = "en", to_student: bool = True) -> str:
             "no answer": t["no_answer"]}.get(a.verdict, t["pass"] if a.passed else t["fail"])
 
 
-def diagnosis_text(s, lang: str = "en") -> str:
-    """A student's diagnosis: each named mistake as «answer: mistake», then each table's
-    cells off («analogues: rows 3, 7: vq_B off»); carried-forward answers are their own
-    verdict."""
+def diagnosis_text(s, kind: str = "run", lang: str = "en") -> str:
+    """A student's diagnosis (the gradebook's column): each answer named as a classic mistake
+    as «answer: mistake», each other wrong answer with a formula as «answer: check …»
+    (:func:`check_text`, with the student's own numbers), in the order of the answers; then
+    each table's cells off («analogues: rows 3, 7: vq_B off»); carried-forward answers are
+    their own verdict. ``kind``: the key's ("run", "task2")."""
+    from flywheel.render.numbers import typography
+
     m = MISTAKES[lang]
     names = s.marking.names
-    parts = [f"{names[j]}: {m.get(code, code)}" for j, code in sorted(s.diagnoses)]
+    named = dict(s.diagnoses)
+    parts = []
+    with typography(lang):
+        for j in range(len(names)):
+            if j in named:
+                parts.append(f"{names[j]}: {m.get(named[j], named[j])}")
+            elif (check := to_check(s, j, kind, lang)) is not None:
+                parts.append(f"{names[j]}: {check_text(check, s.answers[j], lang)}")
     parts += [f"{name}: {off}" for name, _, _, cells in s.table_grades
               if (off := cells_off(cells, lang, name))]
     return "; ".join(parts)
@@ -236,7 +247,7 @@ def _gradebook_rows(r, lang: str = "en"):
                 continue
             row += [verdict_word(g, lang, to_student=False), g.error]
         yield row + [s.passed, s.total, round(s.score, 4)] + (
-            [s.carried_count, diagnosis_text(s, lang)] if explained else [])
+            [s.carried_count, diagnosis_text(s, r.key.kind, lang)] if explained else [])
 
 
 def gradebook_csv(r, style: str = "plain", lang: str = "en") -> str:
@@ -367,18 +378,19 @@ def print_variants(vs, out, console=None, sheets: str | None = None, lang: str =
                   highlight=False, markup=False, soft_wrap=True)
 
 
-def _check_text(check, a, t: dict) -> str:
-    """The terminal's diagnosis of a wrong answer no classic mistake explains (:func:`to_check`):
-    «проверить J_I = ΔT_нб/(δ·ω_ср²); из ΔT_нб = 810,1 студента получается 1,781»."""
-    from rich.markup import escape
-
+def check_text(check, a, lang: str = "en") -> str:
+    """The teacher's diagnosis of a wrong answer ``a`` no classic mistake explains
+    (:func:`to_check`'s ``check``), as the terminal report and the gradebook say it: «проверить
+    J_I = ΔT_нб/(δ·ω_ср²); из ΔT_нб = 810,1 студента получается 1,781». Numbers in the
+    typography in force (the CLI's ``typeset``)."""
+    t = TEXT[lang]
     formula, worked = check
     text = t["check"].format(formula=formula)
     if worked:
         symbol, given, value = worked
         text += t["theirs"].format(symbol=symbol, given=_g(given, given=True),
                                    value=_g(value, key_spec(a) or ".6g"))
-    return escape(text)
+    return text
 
 
 def _pct(x: float | None) -> str:
@@ -397,6 +409,7 @@ def print_report(r, console=None, lang: str = "en") -> None:
     from flywheel.render.messages import message
 
     from rich.console import Console
+    from rich.markup import escape
     from rich.table import Table
 
     t = TEXT[lang]
@@ -434,7 +447,7 @@ def print_report(r, console=None, lang: str = "en") -> None:
                      f"{_pct_of(a.tolerance)} %", mark]
             if explained:
                 cells.append(MISTAKES[lang].get(a.diagnosis, a.diagnosis or "")
-                             if j not in checks else _check_text(checks[j], a, t))
+                             if j not in checks else escape(check_text(checks[j], a, lang)))
             table.add_row(*cells)
         for name, right, n, off in s.table_grades:
             mark = f"[green]{t['pass']}[/]" if right == n else f"[red]{t['fail']}[/]"
