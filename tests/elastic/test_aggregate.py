@@ -456,6 +456,11 @@ def test_cli_summary_and_plot(tmp_path):
     res = cli(CASES / "aggregate.toml", "--plot", png, "--t-end", "0.2")
     assert res.exit_code == 0, res.output
     assert "a_ij" in res.stdout and "Resonance margins" in res.stdout
+    # the forcing frequency by one symbol in the sentence and the margins' table (ω_вын in
+    # Russian: test_lang_ru_steady_state_and_start_up)
+    out = " ".join(res.stdout.replace("│", " ").replace("┃", " ").split())
+    assert "forcing frequency ω_f = " in out and "ω_f/ω_n margin |1 − ω_f/ω_n|" in out, out
+    assert "ω_III" not in out and "ω_forcing" not in out
     assert png.stat().st_size > 10000
     assert b"Software" not in png.read_bytes()[:4000]
 
@@ -675,7 +680,7 @@ def test_lang_ru_steady_state_and_start_up(tmp_path):
                tmp_path / "ru.png")
     assert res.exit_code == 0, res.output
     out = " ".join(res.stdout.replace("│", " ").split())
-    for text in ("двигатель J_Д", "машина J_пр.I", "вынуждающая частота ω_III = ",
+    for text in ("двигатель J_Д", "машина J_пр.I", "вынуждающая частота ω_вын = ",
                  "Отстройка от резонанса", "Установившийся режим",
                  "упругий момент c·(φ1 − φ2) = −c·q2, среднее 80,75 Н·м",
                  "угол закручивания q2 = φ2 − φ1, среднее −0,02692 рад",
