@@ -79,6 +79,10 @@ def test_a_page_per_student_in_russian_with_verdicts_diagnosis_and_the_key(compr
                                       "верно по вашим данным", "верно по вашим данным"]
     # the expected value is the key's in Russian typography (a decimal comma, four digits)
     assert "," in rows[1][4] and "." not in rows[1][4]
+    # the table's heads from a capital letter (ГОСТ 2.105-2019, 4.4.5), the tolerance as ±
+    heads = re.findall(r"<th>([^<]*)</th>", text)
+    assert heads == ["Величина", "Ваш ответ", "Итог", "В чём ошибка", "Ожидалось", "Допуск"]
+    assert all(r[5] == "±1 %" or r[5].startswith("±") for r in rows), [r[5] for r in rows]
     assert ru_numbers(rows[1][4]) == pytest.approx([key["variants"]["01"]["delta_T_max"]],
                                                    rel=5e-4)
     rows = parse(out / pages[1])
@@ -197,7 +201,7 @@ def test_a_wrong_answer_no_mistake_explains_points_at_its_formula(compressor, sh
     rows = {r[0].split("\n")[0]: r for r in parse(next(out.glob("001_*.html")))}
     dT = next(r for k, r in rows.items() if "delta_T_max" in "".join(r))
     assert dT[2] == "НЕВЕРНО"
-    assert dT[3] == "проверьте: ΔTнб = max ΔTI − min ΔTI за весь цикл, ΔTI = A − (TII − TII(0))"
+    assert dT[3] == "проверьте ΔTнб = max ΔTI − min ΔTI за весь цикл, ΔTI = A − (TII − TII(0))"
     assert all(r[3] == "—" for r in rows.values() if r[2] != "НЕВЕРНО")
     rows = parse(next(out.glob("002_*.html")))
     assert next(r for r in rows if "J_required" in r[0])[3] == "вместо δ взято δ/2"
@@ -226,7 +230,7 @@ def test_a_wrong_answer_is_worked_from_the_students_own_earlier_answer(compresso
     key = key_of(compressor)["variants"]["01"]
     rows = parse(next(out.glob("001_*.html")))
     dT = next(r for r in rows if "delta_T_max" in r[0])
-    m = re.fullmatch(r"проверьте: .*; из вашего MД = ([\d,\u202f]+) получается ([\d,\u202f]+)",
+    m = re.fullmatch(r"проверьте .*; из вашего MД = ([\d,\u202f]+) получается ([\d,\u202f]+)",
                      dT[3])
     assert m, dT[3]
     assert ru_numbers(m.group(2)) == pytest.approx([key["delta_T_max"]], rel=5e-4)

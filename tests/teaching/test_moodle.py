@@ -167,8 +167,8 @@ def test_each_question_shows_its_formula_after_the_attempt(made, tmp_path):
     assert qs["J_flywheel"]["general"] == ("How it is computed: J<sub>M</sub> = J<sub>I</sub> − "
                                            "(J<sub>10</sub> + J<sub>red</sub>)")
     assert qs["J_required"]["general"].endswith("J<sub>I</sub> = ΔT<sub>max</sub>/(δ·ω<sub>m</sub>²)")
-    assert qs["flywheel_disk.D"]["general"] == ("How it is computed: disk: J = π·ρ·b·D⁴/32, "
-                                                "b = ψ·D, so D = ⁵√(32·J/(π·ρ·ψ))")
+    assert qs["flywheel_disk.D"]["general"] == ("How it is computed: J = π·ρ·b·D⁴/32 of a solid "
+                                                "disk, b = ψ·D, so D = ⁵√(32·J/(π·ρ·ψ))")
     res = runner.invoke(app, ["variants", "cases/variants_task2.toml", "--count", "1", "--seed",
                               "1", "--out", str(tmp_path / "v"), "--moodle",
                               str(tmp_path / "quiz.xml"), "--lang", "ru"])

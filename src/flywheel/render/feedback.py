@@ -20,13 +20,13 @@ T = words("feedback", {
     "title": "Feedback: {student}, variant {variant}",
     "score": "Score: {passed} of {total} answers right ({pct})",
     "carried": "{n} answer(s) consistent with your earlier answers (credited {share} each)",
-    "answer": "answer", "given": "your answer", "verdict": "verdict",
-    "diagnosis": "what went wrong", "expected": "expected", "tolerance": "tolerance",
+    "answer": "Quantity", "given": "Your answer", "verdict": "Verdict",
+    "diagnosis": "What went wrong", "expected": "Expected", "tolerance": "Tolerance",
     "none": "—",
     "note_carried": "«Consistent with your earlier answer»: wrong against the key, but right "
                     "when computed from your own earlier answers — the mistake is further up.",
     "hidden": "The expected values are not shown.",
-    "check": "check: {formula}",
+    "check": "check {formula}",
     "yours": "; from your {symbol} = {given} it is {value}",
 })
 
@@ -96,7 +96,7 @@ def page(s, lang: str = "en", reveal: bool = True, share: float = 0.0, kind: str
                  _num(a.given, lang, given=True), e(verdict_word(a, lang)), sub_html(why)]
         if reveal:
             cells.append(_num(a.key, lang, spec=key_spec(a)))
-        cells.append(_num(100 * a.tolerance, lang, given=True) + " %")
+        cells.append("±" + _num(100 * a.tolerance, lang, given=True) + " %")
         cls = a.verdict.replace(" ", "-")
         rows.append(f'<tr class="{cls}">' + "".join(f"<td>{c}</td>" for c in cells) + "</tr>")
     for name, right, n, off in s.table_grades:

@@ -18,7 +18,7 @@ TEXT = words("grading", {"summary": "Class summary: {n} graded, mean score {mean
                          "student": "student", "variant": "variant", "full": "full marks: {k} of {n}",
                          "each": "each", "of": "of",
                          "student_title": "{student} — variant {variant} — {passed}/{total} ({pct})",
-                         "answer": "answer", "given": "given", "key": "key", "tolerance": "tolerance",
+                         "answer": "answer", "given": "student's answer", "key": "key", "tolerance": "tolerance",
                          "abs": "abs", "group": "Group: {n} graded, mean score {mean}", "wrong_col": "wrong",
                          "more_students": "… and {n} more students (the whole report: --out REPORT.csv or "
                          "--json)", "by_answer": "By answer",
@@ -77,10 +77,10 @@ FORMULAS_RUN = words("formula_run", {
     "flywheel_J_on_its_shaft": "J_M reduced to the flywheel's shaft: J_M/i²",
     # a flywheel's dimensions (dynamics/sizing.py; the course's D = 0.366·J^(1/5) is this
     # for steel and ψ = 0.2): J the flywheel's on its own shaft, ψ = b/D, c = D₁/D
-    "flywheel_disk.D": "disk: J = π·ρ·b·D⁴/32, b = ψ·D, so D = ⁵√(32·J/(π·ρ·ψ))",
+    "flywheel_disk.D": "J = π·ρ·b·D⁴/32 of a solid disk, b = ψ·D, so D = ⁵√(32·J/(π·ρ·ψ))",
     "flywheel_disk.b": "b = ψ·D",
     "flywheel_disk.mass": "m = ρ·π·D²·b/4 = 8·J/D²",
-    "flywheel_rim.D": "rim: its share of J = π·ρ·b·(D⁴ − D₁⁴)/32, b = ψ·D, D₁ = c·D",
+    "flywheel_rim.D": "the rim's share of J = π·ρ·b·(D⁴ − D₁⁴)/32, b = ψ·D, D₁ = c·D",
     "flywheel_rim.D_inner": "D₁ = c·D",
     "flywheel_rim.b": "b = ψ·D",
     "flywheel_rim.mass": "m = ρ·π·(D² − D₁²)·b/4",
