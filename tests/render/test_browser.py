@@ -137,4 +137,4 @@ def test_a_task_sheet_prints_on_one_a4_page(tmp_path, template):
         box = pdf.pages[0].mediabox
         assert (round(float(box.width)), round(float(box.height))) == (595, 842)
         text = pdf.pages[0].extract_text()
-        assert "Дано" in text and "Определить" in text, text[:300]
+        assert "Дано" in text and "Задание" in text and "1. Определить" in text, text[:300]

@@ -211,7 +211,7 @@ def test_the_pdf_carries_the_same_values_and_no_answer(tmp_path):
         for text in (pages_of[0].extract_text(), combined[n - 1].extract_text()):
             lines = text.splitlines()
             assert lines[0] == f"Вариант {n}"
-            assert {"Дано", "Определить", "Таблица 1\u00a0— Данные варианта"} <= set(lines)
+            assert {"Дано", "Задание", "Таблица 1\u00a0— Данные варианта"} <= set(lines)
             assert any(ln.startswith("Студент ___") and "Группа ___" in ln for ln in lines)
             for value in v.drawn.values():              # in Russian typography
                 assert value in ru_numbers(text), (n, value)
@@ -233,7 +233,7 @@ def test_byte_identical_on_rerun(tmp_path, compressor_dir):
 
 def test_russian_and_english_wording(compressor_dir, task2_dir, tmp_path):
     ru = sheet_of(compressor_dir, "02")
-    assert ru.headings[:3] == ["Вариант 2", "Дано", "Определить"]
+    assert ru.headings[:3] == ["Вариант 2", "Дано", "Задание"]
     assert any(p.startswith("Студент ____") and "Группа ____" in p for p in ru.paragraphs)
     assert ru.captions == ["Рис. 1\u00a0— Кинематическая схема механизма при φ = 120°"]
     # a point's coordinates set apart as its value is, «0; 0,15» under «(x; y)», not «(x, y)»
@@ -241,7 +241,7 @@ def test_russian_and_english_wording(compressor_dir, task2_dir, tmp_path):
     assert points and all("; " in r[1] for r in points)
     assert not any("(x, y)" in r[0] for t in ru.tables for r in t)
     en = sheet_of(task2_dir, "03")
-    assert en.headings[:3] == ["Variant 3", "Given", "Determine"]
+    assert en.headings[:3] == ["Variant 3", "Given", "Task"]
     assert any(p.startswith("Student ____") and "Group ____" in p for p in en.paragraphs)
     assert en.captions == ["Figure 1\u00a0— The given moment graphs M_D(φ) and M_C(φ)"]
     # the same task2 variants in Russian: the course's symbols
@@ -298,7 +298,7 @@ def test_the_default_language_is_english_as_every_other_command(tmp_path):
     assert invoke(TASK2, "--count", 1, "--seed", 5, "--out", out, "--sheets",
                   "--sheets-format", "html").exit_code == 0
     sh = sheet_of(out, "01")
-    assert sh.headings[:3] == ["Variant 1", "Given", "Determine"]
+    assert sh.headings[:3] == ["Variant 1", "Given", "Task"]
 
 
 def test_symbols_are_typeset_with_subscripts_not_underscores(compressor_dir):
@@ -479,6 +479,28 @@ def test_the_sheet_gives_the_defaults_a_flywheels_diameter_needs(tmp_path):
                  "--sheets-format", "html", "--lang", "en")
     rows = [r[0] for t in sheet_of(tmp_path / "c", "01").tables for r in t]
     assert sum("Density" in label for label in rows) == 1
+
+
+def test_a_flywheels_proportion_no_answer_needs_is_not_on_the_sheet(tmp_path):
+    """The compressor template gives the rim's D₁/D but asks a solid disk's D: «D₁/D = 0,8»
+    beside «a solid disk D» read as a contradiction; it is given where a rim is asked, and ρ,
+    b/D only where a flywheel's dimension is."""
+    text = COMPRESSOR.read_text(encoding="utf-8")
+    assert "inner_ratio = 0.8" in text and '"flywheel_disk.D"' in text
+    variants = [("disk", text),
+                ("rim", text.replace('"flywheel_disk.D"]', '"flywheel_rim.D"]')),
+                ("none", text.replace(', "flywheel_disk.D"]', ']'))]
+    for name, template in variants:
+        path = tmp_path / f"{name}.toml"
+        path.write_text(template.replace('tolerances = { "flywheel_disk.D" = 0.02 }', ""),
+                        encoding="utf-8")
+        res = invoke(path, "--count", 1, "--seed", 3, "--out", tmp_path / name, "--sheets",
+                     "--sheets-format", "html", "--lang", "en")
+        assert res.exit_code == 0, res.output
+        rows = [r[0] for t in sheet_of(tmp_path / name, "01").tables for r in t]
+        assert sum("D1/D" in label for label in rows) == (name == "rim"), (name, rows)
+        assert sum("Density" in label for label in rows) == (name != "none"), (name, rows)
+        assert sum("b/D" in label for label in rows) == (name != "none"), (name, rows)
 
 
 def test_the_title_is_in_the_sheets_language(compressor_dir, task2_dir):

@@ -156,9 +156,9 @@ def test_the_sheet_and_the_moodle_bank_carry_the_cells(made, tmp_path):
     page = (made / "v" / "sheets" / "variant_01.html").read_text(encoding="utf-8")
     assert "Аналоги скоростей в положениях механизма" in page
     assert "Реакции в кинематических парах при φ = 120°" in page
-    assert "O (0→1)" in page and "_" not in page.split("<body", 1)[1].split("Определить")[1]
+    assert "O (0→1)" in page and "_" not in page.split("<body", 1)[1].split("Задание")[1]
     # the cells to fill in are blank: not the dash of a record's cell without data
-    to_fill = page.split("Определить", 1)[1]
+    to_fill = page.split("Задание", 1)[1]
     assert "<td>\u00a0" in to_fill.replace("&nbsp;", "\u00a0") and "<td>—</td>" not in to_fill
     names = list(key["variants"]["01"])
     assert str(key["variants"]["01"]["analogues.3.vq_B"]) not in page

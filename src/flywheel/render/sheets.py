@@ -1,5 +1,5 @@
 """Printable task sheets of ``flywheel variants … --sheets`` (docs/teacher.md): one A4 page per
-variant — the drawing, «Дано» (the variant's data with units), «Определить» (the answers asked,
+variant — the drawing, «Дано» (the variant's data with units), «Задание» (the answers asked,
 with units and the grader's tolerance) and the student's name line — as HTML and PDF through
 the записка's path (a :class:`~flywheel.render.document.Document` written by
 render/report_formats.py: Jinja2 for HTML, typst for PDF).
@@ -40,7 +40,7 @@ FOLDER = "sheets"
 
 WORDS = words("sheets", {"variant": "Variant {n}", "student": "Student ______________________________"
                          "        Group ____________", "given": "Given", "drawn": "Data of the variant",
-                         "fixed": "Other data", "find": "Determine", "quantity": "Quantity",
+                         "fixed": "Other data", "find": "Task", "quantity": "Quantity",
                          "value": "Value", "unit": "Unit",
                          "item": "Determine {what}{sym}{unit}; accepted within ±{tol} %.",
                          "scheme": "Kinematic scheme of the mechanism at φ = {a:g}°",
@@ -155,7 +155,7 @@ def sheet_title(sheet, lang: str) -> str:
 
 def build_sheet(sheet, lang: str = "ru", figure: str | None = None) -> Document:
     """The sheet as a document: title, name line, the drawing (``figure``: the PNG's name, or
-    None), «Дано» (the drawn values, then the other data), «Определить»."""
+    None), «Дано» (the drawn values, then the other data), «Задание» (what to determine)."""
     w = WORDS[lang]
     doc = Document(w["variant"].format(n=sheet.number), lang)
     doc.blocks.append(Heading(1, w["variant"].format(n=sheet.number)))

@@ -125,20 +125,37 @@ def _tuple(v):
     return tuple(_tuple(x) if isinstance(x, list) else x for x in v)
 
 
-def given_rows(kind: str, document: dict, varied) -> tuple[Given, ...]:
+#: answers that depend on the flywheel's material and proportions (summary.json keys' first part)
+_FLYWHEEL_DIMENSIONS = ("flywheel_disk", "flywheel_rim")
+
+
+#: a flywheel's proportions and material, by the answers that need them (summary.json keys'
+#: first part): a sheet that asks no rim has no use for the rim's D₁/D, one that asks no
+#: dimension none for ρ and b/D — a datum that no answer uses reads as a contradiction
+#: («D₁/D = 0,8» beside «a solid disk D»)
+_FLYWHEEL_DATA = {"flywheel.inner_ratio": ("flywheel_rim",),
+                  "flywheel.density": _FLYWHEEL_DIMENSIONS,
+                  "flywheel.width_ratio": _FLYWHEEL_DIMENSIONS}
+
+
+def given_rows(kind: str, document: dict, varied, answers=None) -> tuple[Given, ...]:
     """The inputs of a case document: the drawn values first (``varied``: their paths, in the
     template's order), then the fixed data a student needs (every number of the case but the
     report settings and the start-up motor, and the text fields of :data:`TEXT_DATA`, in
-    document order)."""
+    document order; with the ``answers`` asked, a flywheel's proportion or material that none
+    of them needs is left out, :data:`_FLYWHEEL_DATA`)."""
     order = {p: i for i, p in enumerate(varied)}
+    asked = None if answers is None else {a.split(".")[0] for a in answers}
+
+    def needed(path: str) -> bool:
+        return asked is None or path in order or not (
+            path in _FLYWHEEL_DATA and asked.isdisjoint(_FLYWHEEL_DATA[path]))
+
     rows = [Given(p, v, unit_of_path(kind, p), p in order)
-            for p, v in _leaves({k: v for k, v in document.items() if k not in NOT_DATA})]
+            for p, v in _leaves({k: v for k, v in document.items() if k not in NOT_DATA})
+            if needed(p)]
     drawn = sorted((g for g in rows if g.varied), key=lambda g: order[g.path])
     return tuple(drawn + [g for g in rows if not g.varied])
-
-
-#: answers that depend on the flywheel's material and proportions (summary.json keys' first part)
-_FLYWHEEL_DIMENSIONS = ("flywheel_disk", "flywheel_rim")
 
 
 def default_rows(document: dict, source: str, answers) -> tuple[Given, ...]:
@@ -275,7 +292,7 @@ def sheets_of(vs, progress=None) -> list[Sheet]:
             graphs, why = _moments(doc, v.filename)
             kw.update(moments=graphs, no_drawing=why)
         title = _title(doc.get("title", ""))
-        given = given_rows(t.kind, doc, varied)
+        given = given_rows(t.kind, doc, varied, t.answers)
         if t.kind == "run":
             given += default_rows(doc, v.filename, t.answers)
             kw.update(at_deg=v.at_deg, loads=v.loads)
