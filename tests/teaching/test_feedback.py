@@ -177,7 +177,7 @@ def test_a_task2_page_names_the_answers_as_its_task_sheet_does(tmp_path_factory,
     assert res.exit_code == 0, res.output
     page = next(out.glob("*.html"))
     J = next(r[0] for r in parse(page) if "J_required" in r[0])
-    assert "Jпр" in J and "обеспечивающий заданный δ" in J and "первой группы" not in J, J
+    assert "Jтреб" in J and "при [δ]" in J and "первой группы" not in J, J
     # a key within 0.001 % (ω_max) expected to the digits its tolerance tells apart, not to
     # the four digits of a result (ω_max and ω_min had both read «250»)
     w = next(r for r in parse(page) if "omega_max" in r[0])
@@ -187,7 +187,7 @@ def test_a_task2_page_names_the_answers_as_its_task_sheet_does(tmp_path_factory,
     assert w[0].startswith("наибольшая угловая скорость ωmax"), w[0]
     # the symbols' subscripts as the task sheet sets them, in <sub> (not «J_пр»)
     text = page.read_text(encoding="utf-8")
-    assert "J<sub>пр</sub>" in text and "ΔT<sub>нб</sub>" in text and "J_пр" not in text
+    assert "J<sub>треб</sub>" in text and "ΔT<sub>нб</sub>" in text and "J_треб" not in text
 
 
 def test_a_wrong_answer_no_mistake_explains_points_at_its_formula(compressor, sheet, tmp_path):

@@ -353,7 +353,7 @@ def test_the_whole_report_in_russian(tmp_path, key_dir, key):
         assert words in ru.stdout, words
     assert "By answer" not in ru.stdout and "mean score" not in ru.stdout
     # the answers by the symbols of task2's sheet, not by the keys the English report keeps
-    for sym in ("M_С", "ω_max", "ω_min", "δ", "ΔT_нб", "J_пр"):
+    for sym in ("M_С", "ω_max", "ω_min", "δ", "ΔT_нб", "J_треб"):
         assert re.search(rf"│ {sym} +│", ru.stdout), sym
     for k in ("omega_max", "J_required", "delta_T_max"):
         assert k not in ru.stdout and re.search(rf"│ {k} +│", en.stdout), k

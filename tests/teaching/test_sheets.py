@@ -262,7 +262,7 @@ def test_task2_sheet_gives_the_graphs_data(task2_dir):
         assert rows["Driving moment M_D"] == ["%g" % drawn["driving.value"], "N·m"]
         assert rows["M_C: start of its graph"] == ["%g" % drawn["resistance.from_deg"], "°"]
         other = {r[0]: r[1:] for r in sh.tables[1][1:]}
-        assert other["Coefficient of speed fluctuation asked δ"] == ["0.0001", "–"]
+        assert other["Allowed coefficient of speed fluctuation [δ]"] == ["0.0001", "–"]
 
 
 def test_tabulated_template_sheets_without_drawing_one_note(tmp_path):

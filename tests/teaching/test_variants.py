@@ -310,7 +310,7 @@ def test_the_russian_table_of_variants_names_answers_by_symbols_and_tells_keys_a
     assert res.exit_code == 0, res.output
     cells = [c.strip() for ln in res.stdout.splitlines() if ln.startswith("│")
              for c in ln.split("│")[1:-1]]
-    answers = [c for c in cells if re.match(r"^(M_С|ω_max|ω_min|δ|ΔT_нб|J_пр) = ", c)]
+    answers = [c for c in cells if re.match(r"^(M_С|ω_max|ω_min|δ|ΔT_нб|J_треб) = ", c)]
     assert len(answers) == 12 and not any("omega_m" in c or "J_required" in c for c in cells)
     for c in answers:
         if c.startswith("ω_m"):

@@ -93,7 +93,7 @@ FORMULAS_TASK2 = words("formula_task2", {
     "omega_max": "ω_max = √(ω₀² + 2·A_max/J)",
     "omega_min": "ω_min = √(ω₀² + 2·A_min/J)",
     "delta": "δ = ΔT_max/(J·ω_m²)",
-    "J_required": "J = ΔT_max/(δ·ω_m²)",
+    "J_required": "J_req = ΔT_max/([δ]·ω_m²)",
     "rim_mass": "m = J/R²",
 })
 

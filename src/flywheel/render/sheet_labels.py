@@ -124,8 +124,8 @@ SHEET_FIELDS: list[tuple[str, str, str]] = [
     ("speed.omega0", "angular velocity at φ = 0, ω0", "угловая скорость при φ = 0, ω₀"),
     ("speed.mean", "mean angular velocity ω_m", "средняя угловая скорость ω_ср"),
     # flywheel.J means two things (docs/case-format.md, docs/task2.md): "run:" and "task2:" below
-    ("flywheel.delta", "coefficient of speed fluctuation asked δ",
-     "заданный коэффициент неравномерности хода δ"),
+    ("flywheel.delta", "allowed coefficient of speed fluctuation [δ]",
+     "допускаемый коэффициент неравномерности хода [δ]"),
     ("driving.value", "driving moment M_D", "движущий момент M_Д"),
     ("driving.peak", "driving moment M_D, peak", "движущий момент M_Д, наибольший"),
     ("resistance.value", "resistance moment M_C", "момент сопротивления M_С"),
@@ -199,8 +199,8 @@ SHEET_FIELDS: list[tuple[str, str, str]] = [
 SHEET_ANSWERS: dict[str, tuple[str, str]] = {
     "run:J_required": ("the required moment of inertia of the first group",
                        "необходимый момент инерции первой группы звеньев"),
-    "task2:J_required": ("the moment of inertia that gives the asked δ,",
-                         "приведённый момент инерции, обеспечивающий заданный δ,"),
+    "task2:J_required": ("the reduced moment of inertia required for [δ]",
+                         "необходимый приведённый момент инерции при [δ]"),
     "task2:delta": ("the coefficient of speed fluctuation", "коэффициент неравномерности хода"),
     "driving_moment": ("the driving moment that balances the cycle",
                        "приведённый движущий момент из условия цикла"),
@@ -243,7 +243,7 @@ SHEET_ANSWERS: dict[str, tuple[str, str]] = {
                           "угол поворота кривошипа при наименьшей угловой скорости"),
 }
 #: answers whose symbol differs between the two kinds (J_I of a run, J_пр of task2)
-SHEET_SYMBOLS = {"task2:J_required": ("J", "J_пр"), "task2:delta": ("δ", "δ")}
+SHEET_SYMBOLS = {"task2:J_required": ("J_req", "J_треб"), "task2:delta": ("δ", "δ")}
 
 
 #: the usual names of the first group's parts (machine.first_group's keys), said in a document's
