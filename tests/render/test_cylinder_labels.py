@@ -127,8 +127,11 @@ def test_the_task_sheet_names_the_cylinders_by_their_labels():
 
     doc = tomllib.loads((CASES / "variants_compressor.toml").read_text(encoding="utf-8"))
     names = element_names(doc)
-    assert field_label("cylinders.0.bore", "ru", names) == "диаметр цилиндра ВД d"
-    assert field_label("cylinders.1.bore", "en", names) == "bore of cylinder LP d"
+    # each cylinder's own symbol: two d on one sheet are two quantities (seed 000: d2, d1)
+    assert field_label("cylinders.0.bore", "ru", names) == "диаметр цилиндра ВД d_ВД"
+    assert field_label("cylinders.1.bore", "en", names) == "bore of cylinder LP d_LP"
+    assert field_label("cylinders.1.p_max", "ru", names) == \
+        "максимальное давление в цилиндре НД p_max,НД"
     assert element_names({"cylinders": [{"name": "A"}]}) == {"cylinders.0": "A"}   # no label
     # a force's label is its F's subscript: «сила F_пс», not «сила пс»; a couple's its M's
     names = element_names({"forces": [{"name": "cutting", "label": {"ru": "пс", "en": "c"}}],

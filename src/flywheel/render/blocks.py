@@ -9,6 +9,8 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass, field, replace
 
+from flywheel.render.catalogue import words
+
 
 @dataclass(frozen=True)
 class Heading:
@@ -197,6 +199,90 @@ def front(doc: Document, spec, frame: str = "", **given: str | None) -> Document
     the options ``given``; the machine is the document's title; ``frame`` the page frame."""
     doc.front = replace(TitlePage.of(spec, doc.title, **given), frame=frame)
     return doc
+
+
+#: the sentence that refers to a table or figure the text does not name (ГОСТ 7.32-2017, 6.5
+#: and 6.6, as ГОСТ 2.105: every illustration and every table is referred to in the text, and
+#: stands after the text that first names it): the caption and where it is — a dash, so that
+#: no verb has to agree with the caption
+REFERENCE = words("reference", {"table": "{caption} — in Table {n}.",
+                                "figure": "{caption} — in Figure {n}.",
+                                "table_short": "The values are in Table {n}.",
+                                "figure_short": "See Figure {n}.",
+                                "figures": "The graphs — in Figures {first}–{last}."})
+#: a caption too long to open a sentence with, or with a dash or a semicolon of its own, or the
+#: heading's words just above: the short reference («Данные приведены в таблице 18.»)
+CAPTION_IN_SENTENCE = 70
+#: a reference the text already makes: «в таблице 5», «(таблица 5)», «на рисунке 3», «рис. 3»
+_CITED = {"table": re.compile(r"(?i)таблиц\w*\s+(\d+)"),
+          "figure": re.compile(r"(?i)(?:рисун\w*|рис\.)\s+(\d+)")}
+
+
+def _texts(b) -> tuple[str, ...]:
+    if isinstance(b, Paragraph):
+        return (b.text,)
+    if isinstance(b, Bullets):
+        return b.items
+    return ()
+
+
+def referenced(blocks, lang: str) -> list:
+    """A Russian записка's blocks with a sentence before each table and each figure the text
+    does not refer to (ГОСТ 7.32-2017, 6.5, 6.6: every table and illustration is referred to
+    in the text): «Аналоги скоростей в стандартных положениях — в таблице 5.»; a run of two or more
+    figures one after the other, «Графики — на рисунках 14–26.» before the first. Placed
+    before a paragraph that leads into the table (:attr:`Paragraph.leads_in`), so that the two
+    stay together. Another language's blocks as they are (the ГОСТ layout is the Russian
+    record's)."""
+    blocks = list(blocks)
+    if lang != "ru":
+        return blocks
+    cited = {kind: {int(m) for b in blocks for t in _texts(b) for m in rx.findall(t)}
+             for kind, rx in _CITED.items()}
+    out: list = []
+    i = 0
+    while i < len(blocks):
+        b = blocks[i]
+        kind = "table" if isinstance(b, Table) else "figure" if isinstance(b, Figure) else ""
+        if not kind or b.number in cited[kind]:
+            out.append(b)
+            i += 1
+            continue
+        run = 1
+        while (kind == "figure" and i + run < len(blocks)
+               and isinstance(blocks[i + run], Figure)
+               and blocks[i + run].number not in cited["figure"]):
+            run += 1
+        said = REFERENCE[lang]
+        if run > 1:
+            text = said["figures"].format(first=b.number, last=blocks[i + run - 1].number)
+        elif (len(b.caption) > CAPTION_IN_SENTENCE or " — " in b.caption
+              or ";" in b.caption or _heads(out, b.caption)):
+            text = said[kind + "_short"].format(n=b.number)
+        else:
+            text = said[kind].format(caption=_caption_start(b.caption), n=b.number)
+        at = len(out)
+        while at and isinstance(out[at - 1], Paragraph) and out[at - 1].leads_in:
+            at -= 1
+        out.insert(at, Paragraph(text))
+        out.extend(blocks[i:i + run])
+        i += run
+    return out
+
+
+def _heads(out: list, caption: str) -> bool:
+    """Whether the last heading of ``out`` says ``caption`` («1.1 Машина, кривошип и маховик»
+    over «Таблица 1 — Машина, кривошип и маховик»): the caption a third time would be too
+    many."""
+    heading = next((b for b in reversed(out) if isinstance(b, Heading)), None)
+    return heading is not None and HEADING_NUMBER.sub("", heading.text).strip(" .").lower() \
+        == caption.strip(" .").lower()
+
+
+def _caption_start(caption: str) -> str:
+    """A caption as the start of a sentence: from a capital letter, no full stop of its own."""
+    caption = caption.strip().rstrip(".")
+    return caption[:1].upper() + caption[1:]
 
 
 #: the headings the builders give their list of sources (unnumbered: a structural element)

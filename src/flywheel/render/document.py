@@ -549,8 +549,8 @@ def build_document(results, lang: str = "en", plots: list[str] | None = None,
     if source:
         src.insert(0, t["case_source"].format(s=source))
     b.add(Bullets(tuple(f"[{i}] {x}" for i, x in enumerate(src, 1))))
-    b.doc.blocks[:] = blocks.numbered(b.doc.blocks)   # 1.1 … without a gap, all numbered
-    return b.doc
+    b.doc.blocks[:] = blocks.referenced(blocks.numbered(b.doc.blocks), lang)   # 1.1 … without a
+    return b.doc                                          # gap; every table and figure cited
 
 
 def _sizing_lines(s, t: dict, lang: str, numbers: tuple[int, ...]) -> list[str]:
@@ -671,11 +671,13 @@ def _input_of_case(b: _Builder, case, t: dict, lang: str) -> None:
                  for k, v in case.links.items()])
     if case.cylinders:
         b.add(Heading(3, f"1.4. {t['cyl']}"))
-        def p_max(c) -> str:        # as given, or a measured trace's greatest to 4 digits
-            measured = getattr(c, "indicator", None) is not None
-            return g(float(f"{c.p_max:.4g}"), 6) if measured else gi(c.p_max, 6)
+        def p_max(c) -> str:        # in MPa (seed 000: p_max2 = 0.882 MPa) as given, or a
+            measured = getattr(c, "indicator", None) is not None     # measured trace's to 4 digits
+            mpa = c.p_max / PA_PER_MPA
+            return g(float(f"{mpa:.4g}"), 6) if measured else gi(mpa, 6)
 
-        b.table(t["cyl"], [t["name"], t["piston"], nm.heading("bore", lang), nm.heading("p_max", lang), t["head"]],
+        b.table(t["cyl"], [t["name"], t["piston"], nm.heading("bore", lang),
+                           nm.heading("p_max", lang, si="MPa"), t["head"]],
                 [[nm.cylinder_label(c, lang), c.piston, gi(c.bore, 6), p_max(c),
                   nm.DEAD_CENTRES[c.head][lang == "ru"]] for c in case.cylinders])
         noted = False

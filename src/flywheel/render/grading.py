@@ -329,7 +329,7 @@ def drawn_line(template, variant, path: str, lang: str = "en") -> str:
         return f"{path} = {_g(value, given=True)}"
     from flywheel.cases.describe import unit_of_path
     from flywheel.render.nomenclature import unit
-    from flywheel.render.sheet_labels import field_kinds, field_label, field_value
+    from flywheel.render.sheet_labels import as_printed, field_kinds, field_label, field_value
     from flywheel.teaching.sheets import element_names
 
     fw = template.document.get("flywheel")
@@ -337,8 +337,9 @@ def drawn_line(template, variant, path: str, lang: str = "en") -> str:
                               fw.get("speed_ratio", 1) if isinstance(fw, dict) else 1)
     label = field_label(path, lang, element_names(template.document),
                         field_kinds(template.kind, ratio))
+    value, si = as_printed(value, unit_of_path(template.kind, path))     # a pressure in MPa
     said = field_value(path, value, lang) if isinstance(value, str) else _g(value, given=True)
-    u = unit(unit_of_path(template.kind, path), lang)
+    u = unit(si, lang)
     return f"{label} = {said}" + ("" if u in ("", "–") else u if u == "°" else f" {u}")
 
 

@@ -11,7 +11,7 @@ labels come from render/nomenclature.py, this module keeps the section titles.
 """
 from __future__ import annotations
 
-from flywheel.render.blocks import sentence
+from flywheel.render.blocks import referenced, sentence
 from flywheel.render.catalogue import words
 from flywheel.render.document import (T as RECORD, Bullets, Document, Figure, Formula, Heading,
                                       Paragraph, Where, put_into)
@@ -203,4 +203,5 @@ def build_aggregate_document(r, title: str, source: str, lang: str = "en",
     add(Heading(2, t["sources"]))
     src = ([t["case_source"].format(s=source)] if source else []) + [t["book"]]
     add(Bullets(tuple(f"[{i}] {x}" for i, x in enumerate(src, 1))))
+    doc.blocks[:] = referenced(doc.blocks, lang)         # every table and figure cited
     return doc

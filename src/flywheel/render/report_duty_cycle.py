@@ -16,7 +16,7 @@ from flywheel.render import nomenclature as nm
 from flywheel.render.catalogue import words
 from flywheel.render.document import (Bullets, Document, Formula, Heading, Paragraph, Where,
                                       put_into)
-from flywheel.render.blocks import sentence
+from flywheel.render.blocks import referenced, sentence
 from flywheel.render.duty_cycle import summary_tables
 
 T = words("report_duty_cycle", {
@@ -95,6 +95,7 @@ def build_duty_cycle_document(r, title: str, source: str, lang: str = "en") -> D
     add(Heading(2, t["sources"]))
     src = ([t["case_source"].format(s=source)] if source else []) + [t["book"]]
     add(Bullets(tuple(f"[{i}] {x}" for i, x in enumerate(src, 1))))
+    doc.blocks[:] = referenced(doc.blocks, lang)         # every table and figure cited
     return doc
 
 

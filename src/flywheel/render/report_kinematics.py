@@ -8,6 +8,7 @@ from __future__ import annotations
 import math
 
 from flywheel.render import nomenclature as nm
+from flywheel.render.blocks import referenced
 from flywheel.render.positions import numbered, position_cells
 from flywheel.render.catalogue import words
 from flywheel.render.mathfmt import point_name
@@ -96,6 +97,7 @@ def build_kinematics_document(results, lang: str = "en", plots: list[str] | None
     if results.source:
         src.insert(0, t["case_source"].format(s=results.source))
     b.add(Bullets(tuple(f"[{i}] {x}" for i, x in enumerate(src, 1))))
+    b.doc.blocks[:] = referenced(b.doc.blocks, lang)     # every table and figure cited
     return b.doc
 
 

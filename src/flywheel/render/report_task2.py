@@ -16,7 +16,7 @@ from __future__ import annotations
 
 import math
 
-from flywheel.render.blocks import sentence
+from flywheel.render.blocks import referenced, sentence
 from flywheel.render.catalogue import words
 from flywheel.render.document import (T as RECORD, Bullets, Document, Figure, Formula, Heading,
                                       Paragraph, Where, put_into)
@@ -262,4 +262,5 @@ def build_task2_document(r, title: str, source: str, lang: str = "en",
     add(Heading(2, t["sources"]))
     src = ([t["case_source"].format(s=source)] if source else []) + [t["book"]]
     add(Bullets(tuple(f"[{i}] {x}" for i, x in enumerate(src, 1))))
+    doc.blocks[:] = referenced(doc.blocks, lang)         # every table and figure cited
     return doc

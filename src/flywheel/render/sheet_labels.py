@@ -49,9 +49,11 @@ SHEET_FIELDS: list[tuple[str, str, str]] = [
     ("links.*.mass", "mass of link {x} m_{x}", "масса звена {x} m_{x}"),
     ("links.*.J_S", "moment of inertia of link {x} about its centroid J_S{x}",
      "момент инерции звена {x} относительно центра масс J_S{x}"),
-    ("cylinders.#.bore", "bore of cylinder {x} d", "диаметр цилиндра {x} d"),
-    ("cylinders.#.p_max", "maximum pressure in cylinder {x} p_max",
-     "максимальное давление в цилиндре {x} p_max"),
+    # each cylinder's own symbols (seed 000: d2, p_max2 of cylinder 2): two cylinders' d and
+    # p_max on one sheet are two quantities
+    ("cylinders.#.bore", "bore of cylinder {x} d_{x}", "диаметр цилиндра {x} d_{x}"),
+    ("cylinders.#.p_max", "maximum pressure in cylinder {x} p_max,{x}",
+     "максимальное давление в цилиндре {x} p_max,{x}"),
     ("cylinders.#.s", "cylinder {x}: relative piston travel s",
      "цилиндр {x}: относительное перемещение поршня s"),
     ("cylinders.#.towards_head", "cylinder {x}: p/p_max, piston moving to the head",
@@ -305,6 +307,24 @@ def field_kinds(kind: str, speed_ratio=1) -> tuple[str, ...]:
     return ("run,i", "run") if kind == "run" and speed_ratio != 1 else (kind,)
 
 
+def as_printed(value, si: str):
+    """(value, unit) of a datum as the sheets and the list of drawn values print it: a pressure
+    in MPa as the course gives it (seed 000: p_max2 = 0.882 MPa; «880 000 Па» is hard to read),
+    the case's pascals over 10⁶, an array's each; any other as it is.
+
+    >>> as_printed(882000.0, "Pa"), as_printed((0.5, 1.0), "m")
+    ((0.882, 'MPa'), ((0.5, 1.0), 'm'))
+    """
+    if si != "Pa":
+        return value, si
+
+    def mpa(v):
+        return tuple(mpa(x) for x in v) if isinstance(v, tuple) else (
+            v / 1e6 if isinstance(v, (int, float)) and not isinstance(v, bool) else v)
+
+    return mpa(value), "MPa"
+
+
 def field_label(path: str, lang: str = "en", names: dict[str, str] | None = None,
                 kinds: tuple[str, ...] = ()) -> str:
     """The label of a case file's input field on a task sheet ("links.2.mass" → "масса звена 2
@@ -314,7 +334,7 @@ def field_label(path: str, lang: str = "en", names: dict[str, str] | None = None
     as the case file spells it.
 
     >>> field_label("cylinders.0.bore", "ru", {"cylinders.0": "HP"}), field_label("crank.length")
-    ('диаметр цилиндра HP d', 'crank length l1')
+    ('диаметр цилиндра HP d_HP', 'crank length l1')
     >>> field_label("flywheel.J", "ru", kinds=("run",)), field_label("flywheel.J", "ru")
     ('момент инерции заданного маховика J_М', 'flywheel.J')
     >>> field_label("machine.first_group.gearbox", "ru")

@@ -21,7 +21,7 @@ from flywheel.render.catalogue import words
 from flywheel.render.document import Document, Figure, Heading, Paragraph, Table
 from flywheel.render.numbers import fmt as _number
 from flywheel.render.numbers import russian, separator, typeset
-from flywheel.render.sheet_labels import field_kinds
+from flywheel.render.sheet_labels import as_printed, field_kinds
 
 FORMATS = ("both", "html", "pdf")
 #: the sheet's own print style, after the записка's and as the PDF sheet's layout (typst_sheet:
@@ -59,13 +59,14 @@ _LATIN_WORD = re.compile(r"[A-Za-z]{2,}")
 #: a subscript as marked in a sheet's text (private-use characters, which no number or word of
 #: ours contains), typeset by :func:`sheet_html` (<sub>) and :func:`sheet_typst` (#sub[])
 SUB = ("\ue000", "\ue001")
-_SUB_RX = re.compile(r"(?:(?<!\w)|(?<=Δ))([^\W\d_])_([^\W_]+)")
+_SUB_RX = re.compile(r"(?:(?<!\w)|(?<=Δ))([^\W\d_])_([^\W_]+(?:,[^\W_]+)?)")
 
 
 def subscripts(text: str) -> str:
-    """The symbols of ``text`` written with an underscore ("M_Д", "ΔT_нб", "p/p_max", "J_S2")
-    with their subscripts marked for typesetting; an underscore inside a word (a case file's
-    name like "crank_gear") is left as it is."""
+    """The symbols of ``text`` written with an underscore ("M_Д", "ΔT_нб", "p/p_max", "J_S2",
+    a cylinder's "p_max,ВД" — a comma with no space after it is inside the subscript) with
+    their subscripts marked for typesetting; an underscore inside a word (a case file's name
+    like "crank_gear") is left as it is."""
     return _SUB_RX.sub(lambda m: f"{m[1]}{SUB[0]}{m[2]}{SUB[1]}", text)
 
 
@@ -109,6 +110,15 @@ def _value(g, lang: str) -> str:
     if isinstance(first, str):
         return subscripts(nm.field_value(g.path, g.value, lang))
     return _num(g.value)
+
+
+def _in_mpa(g):
+    """A datum with its value in the unit the sheet prints (:func:`as_printed`: a pressure in
+    MPa)."""
+    from dataclasses import replace
+
+    value, unit = as_printed(g.value, g.unit)
+    return replace(g, value=value, unit=unit)
 
 
 def _answer_words(kind: str, key: str, lang: str, at_deg: tuple = (),
@@ -179,8 +189,8 @@ def build_sheet(sheet, lang: str = "ru", figure: str | None = None) -> Document:
         if rows:
             number += 1
             doc.blocks.append(Table(number, w[part], header, tuple(
-                (field_label(g.path, lang, names, kinds), _value(g, lang),
-                 nm.unit(g.unit, lang) if g.unit else "–") for g in rows)))
+                (field_label(g.path, lang, names, kinds), _value(_in_mpa(g), lang),
+                 nm.unit(_in_mpa(g).unit, lang) if g.unit else "–") for g in rows)))
     doc.blocks.append(Heading(2, w["find"]))
     items = find_items(sheet, lang)
     doc.blocks += [Paragraph(item) for item in items]
