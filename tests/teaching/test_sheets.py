@@ -551,3 +551,24 @@ def test_a_russian_sheet_names_the_first_groups_parts_in_russian():
         assert part not in ru and part_name(part, "ru") in ru
         assert part in field_label(f"machine.first_group.{part}", "en")
     assert "my_part" in field_label("machine.first_group.my_part", "ru")
+
+
+def test_the_drawings_letters_print_at_a_readable_size():
+    """The linkage is drawn at about its printed size (render/sheets.py IMAGE_MM high on the
+    sheet): every letter of it — tick labels, the joints' names, the links' numbers — prints at
+    6.5 pt or more (drawn at 6 × 4.6 in and printed 52 mm high, the tick labels had printed at
+    4 pt)."""
+    from flywheel.render import sheets as render_sheets
+    from flywheel.teaching.sheets import sheets_of
+    from flywheel.teaching.variants import generate, load_template
+
+    sheet = sheets_of(generate(load_template(COMPRESSOR), 1, 5))[0]
+    with render_sheets._style("ru"):
+        fig = render_sheets.linkage_figure(sheet, "ru")
+        scale = render_sheets.IMAGE_MM / 25.4 / fig.get_figheight()
+        texts = [t for t in fig.findobj(lambda a: hasattr(a, "get_fontsize")
+                                        and hasattr(a, "get_text"))
+                 if t.get_text().strip() and t.get_visible()]
+        sizes = {t.get_text(): t.get_fontsize() * scale for t in texts}
+    assert {"A", "B", "C", "O"} <= set(sizes), sizes
+    assert min(sizes.values()) >= 6.5, sorted(sizes.items(), key=lambda kv: kv[1])[:5]

@@ -24,10 +24,12 @@ from flywheel.render.numbers import russian, separator, typeset
 from flywheel.render.sheet_labels import as_printed, field_kinds
 
 FORMATS = ("both", "html", "pdf")
+#: the drawing's printed height on a sheet [mm]
+IMAGE_MM = 52
 #: the sheet's own print style, after the записка's and as the PDF sheet's layout (typst_sheet:
 #: margins 15 × 10 mm, the drawing 52 mm high): one A4 page for a run template's 40-odd data
 #: rows too; a table longer than what is left of a page breaks rather than moving whole
-_CSS = ("figure img { max-height: 52mm; width: auto; } "
+_CSS = (f"figure img {{ max-height: {IMAGE_MM}mm; width: auto; }} "
         "@page { size: A4; margin: 10mm 15mm; } "
         "@media print { body { font-size: 9pt; line-height: 1.25; } h1 { font-size: 1.3em; "
         "margin: 0 0 0.3em; } h2 { margin: 0.6em 0 0.3em; } figure { margin: 0.3em 0; } "
@@ -247,17 +249,31 @@ def _style(lang: str):
     return figure.style(lang)
 
 
-def _linkage_png(sheet, path: Path, lang: str) -> None:
+def linkage_figure(sheet, lang: str):
+    """The sheet's drawing of its linkage at the sheet's angle, a matplotlib Figure drawn at
+    about its printed size (IMAGE_MM high on the sheet), so that its letters print at 7 – 8 pt,
+    not scaled down to 4 pt from a larger figure. Within the figures' style (:func:`_style`)."""
     import math
 
     from matplotlib.figure import Figure as MplFigure
 
     r = sheet.linkage
+    fig = MplFigure(figsize=SCHEME_INCHES, dpi=SHEET_DPI)
+    ax = fig.add_axes((0.17, 0.17, 0.81, 0.80))
+    draw_linkage(ax, r, r.index_of(math.radians(sheet.angle_deg) % r.cycle), lang)
+    return fig
+
+
+def _linkage_png(sheet, path: Path, lang: str) -> None:
     with _style(lang):
-        fig = MplFigure(figsize=(6.0, 4.6), dpi=120)
-        ax = fig.add_axes((0.12, 0.11, 0.85, 0.85))
-        draw_linkage(ax, r, r.index_of(math.radians(sheet.angle_deg) % r.cycle), lang)
-        fig.savefig(path, format="png", metadata={"Software": None})
+        linkage_figure(sheet, lang).savefig(path, format="png", metadata={"Software": None})
+
+
+#: the drawings' size [in] and resolution on a sheet: printed IMAGE_MM high, nearly at this
+#: size (tests/teaching/test_sheets.py: its letters print at 7 pt or more)
+SCHEME_INCHES = (3.2, 2.45)
+MOMENTS_INCHES = (4.4, 2.2)
+SHEET_DPI = 300
 
 
 def _moments_png(sheet, path: Path, lang: str) -> None:
@@ -268,8 +284,8 @@ def _moments_png(sheet, path: Path, lang: str) -> None:
     g = sheet.moments
     w = WORDS[lang]
     with _style(lang):
-        fig = MplFigure(figsize=(6.4, 3.2), dpi=120)
-        ax = fig.add_axes((0.06, 0.16, 0.9, 0.78))
+        fig = MplFigure(figsize=MOMENTS_INCHES, dpi=SHEET_DPI)
+        ax = fig.add_axes((0.07, 0.2, 0.9, 0.6))
         for key, ys, which, c in (("driving_moment", g.M_D, "driving", "C0"),
                                   ("M_C", g.M_C, "resistance", "C3")):
             label = nm.tex(key, lang) + "(φ)"
@@ -283,10 +299,11 @@ def _moments_png(sheet, path: Path, lang: str) -> None:
         ax.set_yticks([])
         lo = min(0.0, *g.M_D, *g.M_C)
         hi = max(0.0, *g.M_D, *g.M_C)
-        ax.set_ylim(lo - 0.08 * (hi - lo or 1.0), hi + 0.3 * (hi - lo or 1.0))
+        ax.set_ylim(lo - 0.08 * (hi - lo or 1.0), hi + 0.08 * (hi - lo or 1.0))
         ax.set_xlabel("φ")
         ax.set_ylabel("M")
-        ax.legend(loc="upper right", fontsize=8)
+        # above the graphs, where no curve is (inside, it had covered a triangle's apex)
+        ax.legend(loc="lower center", bbox_to_anchor=(0.5, 1.0), fontsize=8, frameon=False)
         fig.savefig(path, format="png", metadata={"Software": None})
 
 
@@ -311,7 +328,7 @@ def sheet_typst(doc: Document) -> str:
 
     src = typst_source(doc, TypstLayout(page="margin: (x: 15mm, y: 10mm)",
                                         table="inset: 2pt, align: (left, right, left)",
-                                        image="height: 52mm"))
+                                        image=f"height: {IMAGE_MM}mm"))
     # a marked subscript is inside one of the source's string literals (#"…"): close it
     return src.replace(SUB[0], '"#sub[#"').replace(SUB[1], '"]#"')
 
