@@ -32,9 +32,9 @@ IMAGE_MM = 52
 _CSS = (f"figure img {{ max-height: {IMAGE_MM}mm; width: auto; }} "
         "@page { size: A4; margin: 10mm 15mm; } "
         "@media print { body { font-size: 9pt; line-height: 1.25; } h1 { font-size: 1.3em; "
-        "margin: 0 0 0.3em; } h2 { margin: 0.6em 0 0.3em; } figure { margin: 0.3em 0; } "
+        "margin: 0 0 0.3em; } h2 { margin: 0.45em 0 0.2em; } figure { margin: 0.3em 0; } "
         "table { font-size: 0.78em; break-inside: auto; page-break-inside: auto; } "
-        "td, th { padding: 0 0.35em; } p { margin: 0.3em 0; } .caption { margin: 0.4em 0 0.1em; } "
+        "td, th { padding: 0 0.35em; } p { margin: 0.2em 0; } .caption { margin: 0.4em 0 0.1em; } "
         "li { margin: 0.1em 0; } } td:nth-child(2) { white-space: normal; }")
 #: the combined file of all sheets, one per page, for printing the class set
 COMBINED = "sheets.pdf"
