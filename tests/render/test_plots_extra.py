@@ -175,6 +175,29 @@ def test_energy_mass_tangency_angles_clear_of_the_curve_and_tangents(name, lang)
     assert not boxes[0].overlaps(boxes[1])
 
 
+@pytest.mark.parametrize("name", ["engine_measured.toml", "compressor.toml", "pump.toml"])
+def test_energy_mass_tick_labels_do_not_run_together(name):
+    """Every panel's tick labels stand apart in the saved figure (the engine's part b had
+    run seven of them together, «0,00060,00080,0010…», in its half-width panel)."""
+    import io
+
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+    from flywheel.render import figure as fg
+
+    res = analyze(load_case(CASES / name), n_points=720)
+    with fg.style("ru"):
+        fig = plots_extra.figure_energy_mass(res, "ru")
+        fg.save(fig, io.BytesIO())
+        renderer = FigureCanvasAgg(fig).get_renderer()
+        for ax in fig.axes:
+            for axis in (ax.xaxis, ax.yaxis):
+                boxes = [t.get_window_extent(renderer) for t in axis.get_ticklabels()
+                         if t.get_visible() and t.get_text()]
+                for a, b in zip(boxes, boxes[1:]):
+                    assert not a.overlaps(b), (ax.get_label(), a, b)
+
+
 @pytest.mark.parametrize("case, lang, names", [
     ("shaper.toml", "ru", ("epsilon.png", "time_law.png", "energy_mass.png")),
     ("engine_inline4.toml", "ru", ("indicator_1.png",)),

@@ -164,6 +164,10 @@ def figure_energy_mass(results, lang: str = "en"):
     zx.plot(J_II[i_min], A[i_min], "o", color="tab:green", ms=5)
     phi_deg = np.degrees(results.phi)
     zx.set_xlim(*z)
+    # a half-width panel: at most five ticks, whose labels («0,0014») do not run together
+    from matplotlib.ticker import MaxNLocator
+
+    zx.xaxis.set_major_locator(MaxNLocator(4))
     zx.set_xlabel(nm.axis("J_II", lang))
     zx.set_ylabel(_f(t, "T", u=uJ))
     zx.set_title(f"{_f(t, 'part_b')} {_f(t, 'zoom')}", fontsize=10)

@@ -52,7 +52,7 @@ _TEXT = words("plots_plans", {
     "omega": "ω = {w} rad/s, ε = {e} rad/s²",
     "links_w": "ω of the links, rad/s: {x}",
     "links_e": "ε of the links, rad/s²: {x}",
-    "lever_sum": "Σ moments about p: {s} W",
+    "lever_sum": "Σ moments about p, that is Σ powers of the forces: {s} W",
     "lever_My": "M_y = −Σ/ω = {m} N·m (kinetostatics: {k} N·m)",
     "lever_Py": "P_y = M_y/l₁ = {p} N at the crank pin",
     "couple": "{n} on link {l}: M·ω_i = {m} N·m · {w} rad/s = {p} W",
