@@ -681,7 +681,7 @@ def test_no_force_name_on_sheet_2_lies_along_a_line(case):
     assert named > 20
 
 
-@pytest.mark.parametrize("case", ["compressor", "compressor_given_flywheel"])
+@pytest.mark.parametrize("case", ["compressor", "compressor_given_flywheel", "pump"])
 @pytest.mark.parametrize("lang", ["ru", "en"])
 def test_sheet_1s_results_name_each_row_once(case, lang):
     """The main results' table of sheet 1 has four columns — name, symbol, value, unit — and
@@ -721,6 +721,17 @@ def test_sheet_1s_results_name_each_row_once(case, lang):
     assert len(deltas) == len(word) and all(w in d for w, d in zip(word, deltas)), deltas
     J_I = next(r[0] for r in body if r[1].startswith("J") and r[1].endswith("I"))
     assert (("Необходимый" in J_I or "Required" in J_I) != given), J_I
+    # the disk is sized on the flywheel's shaft: the pump's (i = 10) J_М/i² is a row of its own,
+    # from which the disk's m·D²/8 is worked (m D² / 8 = J of a solid disk)
+    s = res.scalars
+    on_shaft = [r for r in body if "/i" in r[1]]
+    assert len(on_shaft) == (s.flywheel_speed_ratio != 1.0), on_shaft
+    if on_shaft:
+        assert "i = 10" in on_shaft[0][0]
+        value = float(on_shaft[0][2].replace(",", ".").replace("\u202f", ""))
+        assert value == pytest.approx(s.J_flywheel / s.flywheel_speed_ratio ** 2, rel=1e-3)
+        disk = s.flywheel_disk
+        assert disk.mass * disk.D ** 2 / 8 == pytest.approx(value, rel=1e-3)
 
 
 def test_the_sheets_lowercase_letters_stand_at_one_x_height():

@@ -40,6 +40,7 @@ T = words("drawings1", {
     "row_J_I": "Required inertia of the first group",
     "row_J_I_given": "Moment of inertia of the first group",
     "row_J_M": "Moment of inertia of the flywheel",
+    "row_J_M_shaft": "Moment of inertia of the flywheel on its shaft (i = {i})",
     "row_delta_target": "Coefficient of speed fluctuation, target",
     "row_delta_given": "Coefficient of speed fluctuation with the given flywheel",
     "row_delta_achieved": "Coefficient of speed fluctuation, achieved",
@@ -182,7 +183,9 @@ def results_table(results, lang: str) -> View:
     """The main results as a table of four columns — name, symbol, value, unit (ГОСТ 2.105-2019,
     4.4: a table's column heads and its cells' text from a capital letter): M_Д (or M_С),
     ΔT_нб, J_I, J_М, the two δ (the target and the achieved: both «δ» as symbols, told apart
-    by their names; a given flywheel's one, which it achieves), the disk flywheel's D, b, m.
+    by their names; a given flywheel's one, which it achieves), the disk flywheel's D, b, m —
+    sized on the flywheel's own shaft, whose J_М/i² is then a row of its own (a pump's
+    J_М = 296,3 kg·m² beside a disk of 111 kg read as a contradiction).
     A given flywheel's J_I is the first group's, J_М + (J_10 + J_ред), not a required one."""
     t = _t(lang)
     sc = results.scalars
@@ -196,6 +199,10 @@ def results_table(results, lang: str) -> View:
              nm.symbol("J_required", lang), sc.J_required, nm.unit_of("J_required", lang)),
             (t["row_J_M"], nm.symbol("J_flywheel", lang), sc.J_flywheel,
              nm.unit_of("J_flywheel", lang))]
+    if sc.flywheel_speed_ratio != 1.0:      # the disk below is sized for the flywheel's shaft
+        rows.append((t["row_J_M_shaft"].format(i=num(sc.flywheel_speed_ratio, lang)),
+                     nm.symbol("flywheel_J_on_its_shaft", lang), sc.flywheel_J_on_its_shaft,
+                     nm.unit_of("flywheel_J_on_its_shaft", lang)))
     if sc.flywheel_given:           # its δ is the one it achieves: one row
         rows.append((t["row_delta_given"], "δ", sc.delta_achieved, "–"))
     else:
