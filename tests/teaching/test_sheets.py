@@ -572,3 +572,21 @@ def test_the_drawings_letters_print_at_a_readable_size():
         sizes = {t.get_text(): t.get_fontsize() * scale for t in texts}
     assert {"A", "B", "C", "O"} <= set(sizes), sizes
     assert min(sizes.values()) >= 6.5, sorted(sizes.items(), key=lambda kv: kv[1])[:5]
+
+
+def test_a_set_with_a_negative_answer_says_the_sign_convention(tmp_path):
+    """The engine template asks M_С and A_С, negative in the key (the resistance works against
+    the crank's rotation): each of its sheets says which sign is which; the compressor's
+    answers are all positive and its sheets say nothing of signs."""
+    for template, signed in (("variants_engine.toml", True), ("variants_compressor.toml", False)):
+        out = tmp_path / template
+        res = invoke(CASES / template, "--count", 2, "--seed", 7, "--out", out, "--sheets",
+                     "--sheets-format", "html", "--lang", "ru")
+        assert res.exit_code == 0, res.output
+        negative = any(x < 0 for answers in key_of(out)["variants"].values()
+                       for x in answers.values())
+        assert negative == signed
+        for page in (out / "sheets").glob("variant_*.html"):
+            text = page.read_text(encoding="utf-8").replace("\xa0", " ")
+            assert ("Моменты и работы — со знаком: положительные направлены по вращению "
+                    "кривошипа" in text) == signed, page.name

@@ -35,7 +35,8 @@ _CSS = (f"figure img {{ max-height: {IMAGE_MM}mm; width: auto; }} "
         "margin: 0 0 0.3em; } h2 { margin: 0.45em 0 0.2em; } figure { margin: 0.3em 0; } "
         "table { font-size: 0.78em; break-inside: auto; page-break-inside: auto; } "
         "td, th { padding: 0 0.35em; } p { margin: 0.2em 0; } .caption { margin: 0.4em 0 0.1em; } "
-        "li { margin: 0.1em 0; } } td:nth-child(2) { white-space: normal; }")
+        "li { margin: 0.1em 0; } td:first-child { white-space: nowrap; } } "
+        "td:nth-child(2) { white-space: normal; }")
 #: the combined file of all sheets, one per page, for printing the class set
 COMBINED = "sheets.pdf"
 FOLDER = "sheets"
@@ -49,6 +50,9 @@ WORDS = words("sheets", {"variant": "Variant {n}", "student": "Student _________
                          "moments": "The given moment graphs {MD}(φ) and {MC}(φ)",
                          "unknown": "{M} = ? (from the cycle balance)",
                          "fill": "Fill in Table {n}: {title}; each cell is accepted within ±{tol} %.",
+                         "signs": "Moments and works with their signs: positive in the crank's "
+                                  "direction of rotation (driving), negative against it "
+                                  "(resisting).",
                          # the title of a Russian sheet whose template says its title in English
                          # only: the kind of task
                          "title": {"run": "Dynamic analysis of a machine",
@@ -196,6 +200,8 @@ def build_sheet(sheet, lang: str = "ru", figure: str | None = None) -> Document:
     doc.blocks.append(Heading(2, w["find"]))
     items = find_items(sheet, lang)
     doc.blocks += [Paragraph(item) for item in items]
+    if sheet.signed:                # an engine's M_С = −50 N·m: which way is positive
+        doc.blocks.append(Paragraph(w["signs"]))
     doc.blocks += blank_tables(sheet, lang, number, len(items))
     return doc
 

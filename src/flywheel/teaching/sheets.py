@@ -90,6 +90,9 @@ class Sheet:
     default_tolerance: float = 0.01   # the template's: a table column's without its own
     at_deg: tuple = ()           # the report angles [deg] an ``at.N.…`` answer is asked at
     loads: tuple = ({}, {})      # the loads' titles and labels an ``at.N.…`` answer names
+    #: whether an answer asked is negative in some variant of the set (an engine's M_С and
+    #: A_С): the sheet then says the sign convention, on every sheet of the set alike
+    signed: bool = False
 
 
 # -- the data rows ---------------------------------------------------------------------------------
@@ -277,6 +280,8 @@ def sheets_of(vs, progress=None) -> list[Sheet]:
     t = vs.template
     find = find_list(t)
     varied = [v.path for v in t.varied]
+    signed = any(isinstance(x, (int, float)) and x < 0 for v in vs.variants
+                 for a, x in v.answers.items() if a in t.answers)
     out = []
     for n, v in enumerate(vs.variants, 1):
         doc = tomllib.loads(v.text)
@@ -297,7 +302,7 @@ def sheets_of(vs, progress=None) -> list[Sheet]:
             given += default_rows(doc, v.filename, t.answers)
             kw.update(at_deg=v.at_deg, loads=v.loads)
         out.append(Sheet(n, v.id, stem, t.kind, title, given, find, names=element_names(doc),
-                         tables=t.tables, default_tolerance=t.tolerance, **kw))
+                         tables=t.tables, default_tolerance=t.tolerance, signed=signed, **kw))
         if progress is not None:
             progress(n)
     return out
