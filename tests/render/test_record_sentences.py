@@ -164,3 +164,40 @@ def test_the_aggregates_coordinates_are_set_without_underscores(tmp_path):
         line = next(ln for ln in md.splitlines() if ln.startswith("Обобщённые координаты"))
         assert "Σ" not in line and "q̈" not in line
         assert not any("_" in text for text, _ in subscripts(line)), line
+
+
+@pytest.mark.parametrize("name, lang", [("compressor", "ru"), ("engine_4stroke", "en"),
+                                        ("shaper", "ru")])
+def test_the_reduced_moments_sum_adds_up_with_the_constant_moment_it_names(name, lang):
+    """The reduction table's M_Σ is its moments' columns plus the constant moment of the cycle
+    balance, which has no column (the pump's φ = 0: −7,063 + 0 + 0 ≠ 882,4 had read as an
+    error): the sentence under it names that moment, and each row's printed numbers add up to
+    its printed M_Σ (to their printed digits)."""
+    import re
+
+    from flywheel.cases.run import load_case
+    from flywheel.dynamics.pipeline import analyze
+    from flywheel.render.blocks import Paragraph, Table
+    from flywheel.render.document import build_document
+    from flywheel.render.numbers import typography
+
+    res = analyze(load_case(CASES / f"{name}.toml"), n_points=360)
+    with typography(lang):
+        doc = build_document(res, lang)
+    k, table = next((k, b) for k, b in enumerate(doc.blocks)
+                    if isinstance(b, Table) and b.header[-1].startswith("M_Σ"))
+    note = doc.blocks[k + 1]
+    where = "в таблице" if lang == "ru" else "in Table"
+    assert isinstance(note, Paragraph) and note.text.startswith(f"M_Σ {where} {table.number}")
+
+    def number(text: str) -> float:
+        return float(text.replace("\u2212", "-").replace("\u202f", "").replace(",", "."))
+
+    constant = number(re.search(r"= (\S+) (Н·м|N·m)", note.text).group(1))
+    assert constant == pytest.approx(res.scalars.balancing_moment, rel=1e-3)
+    first = next(j for j, h in enumerate(table.header) if h.startswith("dJ")) + 1
+    for row in table.rows:
+        parts = [number(c) for c in row[first:-1] if c != "—"]
+        total = number(row[-1])
+        assert sum(parts) + constant == pytest.approx(total, abs=2e-3 * max(1.0, abs(total))
+                                                      + 5e-4 * sum(abs(p) for p in parts)), row

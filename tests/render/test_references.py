@@ -37,6 +37,13 @@ def test_a_table_the_text_names_gets_no_second_reference():
     assert referenced(blocks, "ru") == blocks
 
 
+def test_a_mention_after_the_table_is_no_reference_to_it():
+    """A table stands after the text that first names it: «M_Σ в таблице 9 — …» under the
+    table does not spare the sentence before it."""
+    out = referenced([table(9), Paragraph("M_Σ в таблице 9 — сумма её столбцов.")], "ru")
+    assert texts(out) == ["Аналоги скоростей — в таблице 9.", "M_Σ в таблице 9 — сумма её столбцов."]
+
+
 def test_figures_one_after_another_are_referred_to_once():
     out = referenced([Figure(k, f"График {k}", f"{k}.png") for k in (3, 4, 5)]
                      + [Paragraph("Далее."), Figure(6, "Одна", "6.png")], "ru")

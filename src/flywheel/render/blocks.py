@@ -229,22 +229,28 @@ def _texts(b) -> tuple[str, ...]:
 def referenced(blocks, lang: str) -> list:
     """A Russian записка's blocks with a sentence before each table and each figure the text
     does not refer to (ГОСТ 7.32-2017, 6.5, 6.6: every table and illustration is referred to
-    in the text): «Аналоги скоростей в стандартных положениях — в таблице 5.»; a run of two or more
-    figures one after the other, «Графики — на рисунках 14–26.» before the first. Placed
+    in the text): «Аналоги скоростей в стандартных положениях — в таблице 5.»; a run of two
+    or more figures one after the other, «Графики — на рисунках 14–26.» before the first. Placed
     before a paragraph that leads into the table (:attr:`Paragraph.leads_in`), so that the two
     stay together. Another language's blocks as they are (the ГОСТ layout is the Russian
-    record's)."""
+    record's). A reference counts where it stands before the table or figure (a table stands
+    after the text that first names it): a sentence after it is no reference to it."""
     blocks = list(blocks)
     if lang != "ru":
         return blocks
-    cited = {kind: {int(m) for b in blocks for t in _texts(b) for m in rx.findall(t)}
-             for kind, rx in _CITED.items()}
+    cited: dict[str, set] = {kind: set() for kind in _CITED}     # by the text so far
+
+    def read(b) -> None:
+        for kind, rx in _CITED.items():
+            cited[kind] |= {int(m) for t in _texts(b) for m in rx.findall(t)}
+
     out: list = []
     i = 0
     while i < len(blocks):
         b = blocks[i]
         kind = "table" if isinstance(b, Table) else "figure" if isinstance(b, Figure) else ""
         if not kind or b.number in cited[kind]:
+            read(b)
             out.append(b)
             i += 1
             continue

@@ -56,6 +56,9 @@ T = words("report", {
                   "F a force, v_q the velocity analogue of its point (the scalar product);\n"
                   "m the mass of a link, g_x, g_y the components of gravity, v_qSx, v_qSy those "
                   "of its centroid's velocity analogue."),
+    # the table's last column adds the constant moment of the cycle balance, not a column of it
+    "sum_note": "{S} in Table {n} is the sum of its moments' columns and the constant {M} = {v} "
+                "{u} of the cycle balance.",
     "where_M": {"driving": "reduced moment of the resistance forces",
                 "resistance": "reduced moment of the driving forces"},
     "where_energy": ("where {M} is the {M_name}, Φ the crank's angle of turn over the cycle;\n"
@@ -438,6 +441,9 @@ def build_document(results, lang: str = "en", plots: list[str] | None = None,
     body = [[*lab, g(cols["phi_deg"].values[i], 6), at("J_II", i, 4), at("dJ_II", i, 4)]
             + [at(k, i, 5) for k in mk] + [at("M_sum", i, 5)] for lab, i in idx]
     positions_table(t["red_caption"], header, body)
+    bal = cycle_balance(results)              # M_Σ's constant part: the moment found in §4
+    b.add(Paragraph(t["sum_note"].format(S=sym("M_sum"), n=b.n_tables, M=sym(bal.keys[2]),
+                                         v=g(bal.moment, 4), u=u("M_sum"))))
     b.figures_of("red")
 
     # 4. energy -------------------------------------------------------------------------------
