@@ -130,3 +130,39 @@ def test_every_table_and_figure_of_the_other_russian_records_is_cited():
     for doc in docs:
         assert doc.tables
         _cited_before(doc.blocks)
+
+
+@pytest.mark.parametrize("name, lang", [("compressor", "ru"), ("pump", "en"),
+                                        ("compressor_given_flywheel", "ru")])
+def test_the_run_record_ends_with_a_conclusion_of_its_main_results(name, lang):
+    """«Заключение» before the sources (ГОСТ 7.32-2017: the conclusion states the results):
+    the main results a line each, as drawing sheet 1's table has them, each value the
+    summary's to the record's digits."""
+    from flywheel.cases.run import load_case
+    from flywheel.dynamics.pipeline import analyze
+    from flywheel.render.document import build_document
+    from flywheel.render.numbers import typography
+
+    res = analyze(load_case(CASES / f"{name}.toml"), n_points=360)
+    with typography(lang):
+        doc = build_document(res, lang)
+    heads = [b.text for b in doc.blocks if isinstance(b, Heading) and b.level == 2]
+    word = "Заключение" if lang == "ru" else "Conclusion"
+    assert heads[-2].endswith(word) and heads[-1] in ("Источники", "Sources"), heads
+    k = next(k for k, b in enumerate(doc.blocks) if isinstance(b, Bullets)
+             and isinstance(doc.blocks[k - 2], Heading) and doc.blocks[k - 2].text.endswith(word))
+    items = doc.blocks[k].items
+    s = res.scalars
+
+    def value(symbol: str) -> float:
+        item = next(x for x in items if f" {symbol} = " in x)
+        text = item.split(f" {symbol} = ")[1].split()[0].rstrip(";.")
+        return float(text.replace("\u2212", "-").replace("\u202f", "").replace(",", "."))
+
+    sym = {"ru": ("ΔT_нб", "J_I", "J_М"), "en": ("ΔT_max", "J_I", "J_M")}[lang]
+    for symbol, expected in zip(sym, (s.delta_T_max, s.J_required, s.J_flywheel)):
+        assert value(symbol) == pytest.approx(expected, rel=1e-3), symbol
+    assert value("D") == pytest.approx(s.flywheel_disk.D, rel=1e-3)
+    assert value("m") == pytest.approx(s.flywheel_disk.mass, rel=1e-3)
+    assert items[-1].endswith(".") and all(x.endswith(";") for x in items[:-1])
+    assert (s.flywheel_speed_ratio != 1.0) == any("/i" in x for x in items)

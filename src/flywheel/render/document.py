@@ -88,6 +88,7 @@ T = words("report", {
     "motion": "6. True velocities and accelerations",
     "points_caption": "Points at φ = {a}°", "links_caption": "Links at φ = {a}°",
     "warn": "Warnings", "figures": "Figures", "sources": "Sources",
+    "conclusion": "Conclusion", "conclusion_lead": "The dynamic analysis of the machine gives:",
     "no_plots": "The figures were not drawn (run with --plots none).",
     "pos": "position", "no": "no.", "qty": "quantity", "val": "value", "unit": "unit", "point": "point",
     "link": "link", "name": "name", "piston": "piston", "head": "head dead centre",
@@ -550,6 +551,7 @@ def build_document(results, lang: str = "en", plots: list[str] | None = None,
     if b.plots:
         b.add(Heading(2, t["figures"]))
         b.figures_of("figures")
+    _conclusion(b, results, t, lang)
     b.add(Heading(2, t["sources"]))
     src = [t["book"]]
     if source:
@@ -557,6 +559,20 @@ def build_document(results, lang: str = "en", plots: list[str] | None = None,
     b.add(Bullets(tuple(f"[{i}] {x}" for i, x in enumerate(src, 1))))
     b.doc.blocks[:] = blocks.referenced(blocks.numbered(b.doc.blocks), lang)   # 1.1 … without a
     return b.doc                                          # gap; every table and figure cited
+
+
+def _conclusion(b: _Builder, results, t: dict, lang: str) -> None:
+    """«Заключение» (ГОСТ 7.32-2017: the conclusion states the work's results): the main
+    results, as drawing sheet 1's table gives them (render/main_results.py), a line each,
+    «приведённый движущий момент (среднее за цикл) M_Д = 197,5 Н·м;»."""
+    from flywheel.render.main_results import main_results
+
+    rows = main_results(results, lang, ratio_text=lambda i: g(i, 6))
+    b.add(Heading(2, t["conclusion"]))
+    b.add(Paragraph(t["conclusion_lead"]))
+    items = [f"{name[:1].lower()}{name[1:]} {sym} = {g(value, 4)}"
+             + ("" if unit in ("", "–", "-") else f" {unit}") for name, sym, value, unit in rows]
+    b.add(Bullets(tuple(x + (";" if k < len(items) - 1 else ".") for k, x in enumerate(items))))
 
 
 def _sizing_lines(s, t: dict, lang: str, numbers: tuple[int, ...]) -> list[str]:

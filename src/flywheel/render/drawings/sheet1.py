@@ -34,19 +34,6 @@ T = words("drawings1", {
     "symbol": "Symbol",
     "value": "Value",
     "unit": "Unit",
-    "row_driving": "Driving moment (cycle mean)",
-    "row_resistance": "Moment of the resistance (cycle mean)",
-    "row_delta_T": "Largest change of kinetic energy",
-    "row_J_I": "Required inertia of the first group",
-    "row_J_I_given": "Moment of inertia of the first group",
-    "row_J_M": "Moment of inertia of the flywheel",
-    "row_J_M_shaft": "Moment of inertia of the flywheel on its shaft (i = {i})",
-    "row_delta_target": "Coefficient of speed fluctuation, target",
-    "row_delta_given": "Coefficient of speed fluctuation with the given flywheel",
-    "row_delta_achieved": "Coefficient of speed fluctuation, achieved",
-    "row_D": "Outer diameter of the flywheel disk",
-    "row_b": "Width of the flywheel disk",
-    "row_m": "Mass of the flywheel disk",
 })
 
 DIAGRAM_W = 180.0     # a φ diagram's abscissa over the cycle [mm]
@@ -180,37 +167,13 @@ def _wittenbauer(results, lang: str, side: float) -> View:
 
 
 def results_table(results, lang: str) -> View:
-    """The main results as a table of four columns — name, symbol, value, unit (ГОСТ 2.105-2019,
-    4.4: a table's column heads and its cells' text from a capital letter): M_Д (or M_С),
-    ΔT_нб, J_I, J_М, the two δ (the target and the achieved: both «δ» as symbols, told apart
-    by their names; a given flywheel's one, which it achieves), the disk flywheel's D, b, m —
-    sized on the flywheel's own shaft, whose J_М/i² is then a row of its own (a pump's
-    J_М = 296,3 kg·m² beside a disk of 111 kg read as a contradiction).
-    A given flywheel's J_I is the first group's, J_М + (J_10 + J_ред), not a required one."""
+    """The main results (render/main_results.py) as a table of four columns — name, symbol,
+    value, unit (ГОСТ 2.105-2019, 4.4: a table's column heads and its cells' text from a
+    capital letter)."""
+    from flywheel.render.main_results import main_results
+
     t = _t(lang)
-    sc = results.scalars
-    key = "driving_moment" if sc.balance == "driving" else "M_C"
-    disk = sc.flywheel_disk
-    rows = [(t["row_driving" if key == "driving_moment" else "row_resistance"], nm.symbol(key, lang),
-             sc.balancing_moment, nm.unit_of(key, lang)),
-            (t["row_delta_T"], nm.symbol("delta_T_max", lang), sc.delta_T_max,
-             nm.unit_of("delta_T_max", lang)),
-            (t["row_J_I_given" if sc.flywheel_given else "row_J_I"],
-             nm.symbol("J_required", lang), sc.J_required, nm.unit_of("J_required", lang)),
-            (t["row_J_M"], nm.symbol("J_flywheel", lang), sc.J_flywheel,
-             nm.unit_of("J_flywheel", lang))]
-    if sc.flywheel_speed_ratio != 1.0:      # the disk below is sized for the flywheel's shaft
-        rows.append((t["row_J_M_shaft"].format(i=num(sc.flywheel_speed_ratio, lang)),
-                     nm.symbol("flywheel_J_on_its_shaft", lang), sc.flywheel_J_on_its_shaft,
-                     nm.unit_of("flywheel_J_on_its_shaft", lang)))
-    if sc.flywheel_given:           # its δ is the one it achieves: one row
-        rows.append((t["row_delta_given"], "δ", sc.delta_achieved, "–"))
-    else:
-        rows += [(t["row_delta_target"], "δ", sc.delta, "–"),
-                 (t["row_delta_achieved"], "δ", sc.delta_achieved, "–")]
-    rows += [(t["row_D"], "D", disk.D, nm.unit_of("D", lang)),
-             (t["row_b"], "b", disk.b, nm.unit_of("b", lang)),
-             (t["row_m"], "m", disk.mass, nm.unit_of("mass", lang))]
+    rows = main_results(results, lang, ratio_text=lambda i: num(i, lang))
     head = (t["quantity"], t["symbol"], t["value"], t["unit"])
     w0 = max(text_width(r[0], 3.5) for r in rows + [head]) + 6.0
     w1 = max(text_width(r[1].replace("_", ""), 3.5) for r in rows + [head]) + 8.0
