@@ -55,8 +55,8 @@ def test_one_wrong_early_answer_carries_forward_exactly_to_the_dependent_ones(ta
     got = graded(task2 / "answers.json", sheet, "--carried-forward", "0.5")
     for vid, ans in key["variants"].items():
         wrong = textbook(data_of(task2, vid), ans["M_C"] * 1.5)
-        # ω changes by ~0.01 % over the cycle: a 50 % wrong M_C may move ω_max or ω_min by
-        # less than their tolerance 1e-5; then they pass against the key itself
+        # a 50 % wrong M_C may move ω_max or ω_min by less than their tolerance (0.05 %);
+        # then they pass against the key itself
         expected = {a: "pass" if abs(wrong[a] - ans[a]) <= key["tolerances"].get(
             a, key["tolerance"]) * abs(ans[a]) else "carried" for a in wrong}
         assert verdicts(got[f"M{vid}"]) == {"M_C": "fail", **expected}
@@ -65,6 +65,36 @@ def test_one_wrong_early_answer_carries_forward_exactly_to_the_dependent_ones(ta
             "M_C": "pass", "omega_max": "pass", "omega_min": "pass", "delta": "pass",
             "delta_T_max": "fail", "J_required": "carried"}
         assert got[f"T{vid}"]["score"] == pytest.approx((4 + 0.5) / 6)
+
+
+def test_a_wrong_M_carries_forward_to_delta_and_J_without_the_speeds(task2, tmp_path):
+    """At a machine's δ (0.007 – 0.14 here) a 50 % wrong M_C moves ω_ср by a few per cent:
+    δ and J worked from it are the student's own only with his own ω_ср. Where he gave ω_max
+    and ω_min the grader takes their mean (the test above); where he left them blank it finds
+    the M that gives his ΔT_нб and that motion's ω_ср (chain_task2.mean_speed_for)."""
+    key = key_of(task2)
+    rows, moved = [], []
+    for vid, ans in key["variants"].items():
+        wrong = dict(ans, M_C=ans["M_C"] * 1.5)
+        wrong.update(textbook(data_of(task2, vid), wrong["M_C"]))
+        rows.append((f"B{vid}", vid, wrong))
+        moved.append(abs((wrong["omega_max"] + wrong["omega_min"])
+                         / (ans["omega_max"] + ans["omega_min"]) - 1))
+    # the key's ω_ср would not do: δ ∝ 1/ω_ср² from it would be off by more than its 1 %
+    assert max(moved) > 0.005, moved
+    path = tmp_path / "b.csv"
+    write_sheet(path, key, rows)
+    text = path.read_text(encoding="utf-8").splitlines()
+    head = text[0].split(",")
+    blank = [head.index("omega_max"), head.index("omega_min")]
+    lines = [text[0]] + [",".join("" if k in blank else c for k, c in enumerate(ln.split(",")))
+                         for ln in text[1:]]
+    path.write_text("\n".join(lines) + "\n", encoding="utf-8")
+    got = graded(task2 / "answers.json", path, "--carried-forward", "0.5")
+    for vid in key["variants"]:
+        v = verdicts(got[f"B{vid}"])
+        assert v["M_C"] == "fail" and v["omega_max"] == v["omega_min"] == "no answer", v
+        assert v["delta_T_max"] == v["delta"] == v["J_required"] == "carried", v
 
 
 def test_copying_the_wrong_number_earns_nothing(task2, tmp_path):

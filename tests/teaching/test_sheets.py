@@ -158,7 +158,7 @@ def test_the_find_list_is_worded_as_a_task_with_units_and_tolerances(compressor_
     en = [p for p in sheet_of(task2_dir, "01").paragraphs if re.match(r"\d+\. ", p)]
     assert en[0] == "1. Determine the resistance moment M_C [N·m]; accepted within ±1 %."
     assert en[1] == ("2. Determine the greatest angular velocity ω_max [rad/s]; accepted within "
-                     "±0.001 %.")                  # tolerances.omega_max = 1e-5
+                     "±0.05 %.")                   # tolerances.omega_max = 5e-4
 
 
 @pytest.mark.parametrize("which", ["compressor_dir", "task2_dir"])
@@ -265,7 +265,7 @@ def test_task2_sheet_gives_the_graphs_data(task2_dir):
         assert rows["Driving moment M_D"] == ["%g" % drawn["driving.value"], "N·m"]
         assert rows["M_C: start of its graph"] == ["%g" % drawn["resistance.from_deg"], "°"]
         other = {r[0]: r[1:] for r in sh.tables[1][1:]}
-        assert other["Allowed coefficient of speed fluctuation [δ]"] == ["0.0001", "–"]
+        assert other["Allowed coefficient of speed fluctuation [δ]"] == ["0.05", "–"]
 
 
 def test_tabulated_template_sheets_without_drawing_one_note(tmp_path):

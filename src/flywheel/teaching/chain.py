@@ -217,6 +217,10 @@ class Step:
     fn: Callable
     scale: Callable | None = None     # a multiple of M: value = scale(g)·M
     twist_as: str | None = None       # the catalogue's name of the step (None: ``name``)
+    #: other answers the step reads as the student gave them, where they come before it:
+    #: ``fn(g, x, own={name: value})`` (task 2's δ and J take the student's own ω_ср from his
+    #: ω_max and ω_min); a value not given is nan
+    also: tuple[str, ...] = ()
 
     @property
     def twist_key(self) -> str:
@@ -331,6 +335,10 @@ class Chain:
             ins, src, twisted = self._value(step.parent, before, given, twist)
         if twist is not None and twist[0] == node:
             return tuple(v for x in ins for v in twist[1](self.g, x)), src, True
+        if step.also:
+            own = {a: given.get(a, math.nan) if self.pos.get(a, before) < before else math.nan
+                   for a in step.also}
+            return tuple(step.fn(self.g, x, own=own) for x in ins), src, twisted
         return tuple(step.fn(self.g, x) for x in ins), src, twisted
 
     def recompute(self, answer: str, given, twist: Twist | None = None

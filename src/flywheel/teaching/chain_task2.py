@@ -10,6 +10,9 @@ so that ``flywheel grade`` carries an error forward and names the classic mistak
       │         └─ rim_mass = J_required/R²
       └─ omega_max, omega_min = √(ω0² + 2·A_max/J), √(ω0² + 2·A_min/J)
 
+δ and J_required take the student's own ω_ср (his ω_max and ω_min where he gave them, else the
+motion's with his ΔT_нб): at a machine's δ it moves with M (``mean_speed``).
+
 The graphs' works A_D(φ), A_C(φ) are sampled on the cycle (every 1.5° and the segment
 table's angles: its bounds and crossings, where A has its extremes) from the moment graphs of
 the solved variant (``Piece.work``, the closed form the solver uses); the found graph's work
@@ -172,17 +175,62 @@ def speed_at(g: Task2Givens, M: float, which: str) -> float:
     return math.sqrt(w0sq + 2 * (top if which == "max" else bottom) / g.J)
 
 
-def fluctuation(g: Task2Givens, dT: float, omega: float | None = None) -> float:
+#: the bisection's steps in :func:`mean_speed_for` (the bracket halves to 2⁻⁶⁰ of its width)
+BISECTIONS = 60
+
+
+def mean_speed_for(g: Task2Givens, dT: float) -> float:
+    """ω_ср [rad/s] of the motion whose ΔT_нб is ``dT``: with ω0 given, ω_max and ω_min —
+    and their mean — move with the found graph's value M, so a student who took a wrong M has
+    his own ω_ср, not the key's (at the textbook's δ ≈ 10⁻⁴ the two differ in the fifth digit;
+    at a machine's δ of 0.05 a 50 % wrong M moves ω_ср by a few per cent). M is found from
+    ``dT`` on ΔT_нб(M) (:func:`energy_swing`, convex in M: the greatest minus the least of
+    functions linear in M) by bisection on the side of the key's M where ``dT`` lies; the
+    key's ω_ср when the mean speed is given, or where no M gives ``dT``."""
+    M0, dT0 = g.nominal, energy_swing(g, g.nominal)
+    if g.omega0 is None or not math.isfinite(dT) or dT <= 0 or dT == dT0:
+        return g.omega_mean
+    step = 0.01 * abs(M0) or 1.0
+    rising = energy_swing(g, M0 + step) >= dT0      # ΔT_нб grows with M here
+    sign = 1.0 if (dT > dT0) == rising else -1.0
+    near, far = M0, M0 + sign * step
+    for _ in range(BISECTIONS):                     # a bracket: ΔT_нб(far) past dT
+        if (energy_swing(g, far) - dT) * (dT0 - dT) <= 0:
+            break
+        near, far = far, M0 + 2 * (far - M0)
+    else:
+        return g.omega_mean
+    for _ in range(BISECTIONS):
+        mid = 0.5 * (near + far)
+        if (energy_swing(g, mid) - dT) * (dT0 - dT) > 0:
+            near = mid
+        else:
+            far = mid
+    M = 0.5 * (near + far)
+    return 0.5 * (speed_at(g, M, "max") + speed_at(g, M, "min"))
+
+
+def mean_speed(g: Task2Givens, dT: float, own: dict | None = None) -> float:
+    """ω_ср [rad/s] a student works δ and J with: his own (ω_max + ω_min)/2 where he gave both
+    (``own``: his answers), else the motion's with his ΔT_нб (:func:`mean_speed_for`)."""
+    w = ((own or {}).get("omega_max", math.nan) + (own or {}).get("omega_min", math.nan)) / 2
+    return w if math.isfinite(w) and w > 0 else mean_speed_for(g, dT)
+
+
+def fluctuation(g: Task2Givens, dT: float, omega: float | None = None,
+                own: dict | None = None) -> float:
     """δ = ΔT_нб/(J·ω_ср²): ω_max² − ω_min² = 2ΔT_нб/J with ω_ср = (ω_max + ω_min)/2
-    (``constant_inertia.solve``: δ = (ω_max − ω_min)/ω_ср). ``omega``: a classic mistake's."""
-    w = g.omega_mean if omega is None else omega
+    (``constant_inertia.solve``: δ = (ω_max − ω_min)/ω_ср), ω_ср the student's own
+    (:func:`mean_speed`). ``omega``: a classic mistake's."""
+    w = mean_speed(g, dT, own) if omega is None else omega
     return dT / (g.J * w * w)
 
 
 def required_inertia(g: Task2Givens, dT: float, omega: float | None = None,
-                     delta: float | None = None) -> float:
-    """J = ΔT_нб/(ω_ср²·δ) [kg·m²] (``sizing.J_required_merzalov``, as ``_J_for``)."""
-    return sizing.J_required_merzalov(dT, g.omega_mean if omega is None else omega,
+                     delta: float | None = None, own: dict | None = None) -> float:
+    """J = ΔT_нб/(ω_ср²·δ) [kg·m²] (``sizing.J_required_merzalov``, as ``_J_for``), ω_ср the
+    student's own (:func:`mean_speed`)."""
+    return sizing.J_required_merzalov(dT, mean_speed(g, dT, own) if omega is None else omega,
                                       g.delta if delta is None else delta)
 
 
@@ -199,9 +247,11 @@ def _steps(found: str) -> dict:
              twist_as="task2:omega_max"),
         Step("omega_min", "M", "√(ω0² + 2·A_min/J)", lambda g, M: speed_at(g, M, "min"),
              twist_as="task2:omega_min"),
-        Step("delta", "delta_T_max", "ΔT_нб/(J·ω_ср²)", fluctuation, twist_as="task2:delta"),
+        Step("delta", "delta_T_max", "ΔT_нб/(J·ω_ср²)", fluctuation, twist_as="task2:delta",
+             also=("omega_max", "omega_min")),
         # the same step as a run case's: its classic mistakes (rev/min, δ/2, …) apply
-        Step("J_required", "delta_T_max", "sizing.J_required_merzalov", required_inertia),
+        Step("J_required", "delta_T_max", "sizing.J_required_merzalov", required_inertia,
+             also=("omega_max", "omega_min")),
         Step("rim_mass", "J_required", "J_required/R²", lambda g, J: J / g.rim_radius ** 2,
              twist_as="task2:rim_mass"),
     ]
