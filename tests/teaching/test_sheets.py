@@ -145,7 +145,7 @@ def test_the_sheet_carries_the_variants_own_values(compressor_dir):
         assert rows["Плотность материала маховика ρ"] == ["7800", "кг/м³"]
         assert ru_numbers(rows["Цилиндр НД: p/p_max при движении поршня к головке"][0]) == \
             doc["cylinders"][1]["towards_head"]
-        assert rows["Момент инерции: редуктор (приведён к кривошипу)"] == ["0,074", "кг·м²"]
+        assert rows["Момент инерции редуктора (приведённый к кривошипу) J_ред"] == ["0,074", "кг·м²"]
 
 
 def test_the_find_list_is_worded_as_a_task_with_units_and_tolerances(compressor_dir, task2_dir):
@@ -542,13 +542,19 @@ def test_an_english_only_title_gives_way_to_the_tasks_russian_name(template, kin
 
 def test_a_russian_sheet_names_the_first_groups_parts_in_russian():
     """«момент инерции: crankshaft» was printed on a Russian sheet: a part the catalogue knows
-    is named in Russian (as the записка names it, render/sheet_labels.py PART); a part of the
-    case's own naming stays as written."""
-    from flywheel.render.sheet_labels import field_label, part_name
+    is named in Russian, in the genitive its label needs (render/sheet_labels.py PART_OF), with
+    the course's symbol where it has one (seed 000: J_10 the crankshaft's, J_ред the
+    gearbox's, as J_М = J_I − (J_10 + J_ред) names them); a part of the case's own naming stays
+    as written."""
+    from flywheel.render.sheet_labels import field_label
 
+    assert field_label("machine.first_group.crankshaft", "ru") == \
+        "момент инерции коленчатого вала (приведённый к кривошипу) J_10"
+    assert field_label("machine.first_group.gearbox", "ru") == \
+        "момент инерции редуктора (приведённый к кривошипу) J_ред"
+    assert field_label("machine.first_group.flywheel", "ru") == \
+        "момент инерции маховика (приведённый к кривошипу)"
     for part in ("crankshaft", "gearbox", "flywheel"):
-        ru = field_label(f"machine.first_group.{part}", "ru")
-        assert part not in ru and part_name(part, "ru") in ru
         assert part in field_label(f"machine.first_group.{part}", "en")
     assert "my_part" in field_label("machine.first_group.my_part", "ru")
 

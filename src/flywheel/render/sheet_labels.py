@@ -25,7 +25,7 @@ SHEET_FIELDS: list[tuple[str, str, str]] = [
     ("machine.gravity", "gravity g (x, y)", "ускорение свободного падения g (x; y)"),
     ("machine.cycle_deg", "cycle Φ", "цикл Φ"),
     ("machine.first_group.*", "J of the {x} (reduced to the crank)",
-     "момент инерции: {x} (приведён к кривошипу)"),
+     "момент инерции {x} (приведённый к кривошипу)"),
     ("design.mean_piston_speed", "mean piston speed V_m", "средняя скорость поршня V_ср"),
     ("design.rod_to_crank", "rod to crank length ratio k", "отношение длин шатуна и кривошипа k"),
     ("crank.length", "@crank_length", ""),
@@ -258,6 +258,19 @@ PART = words("part", {
 })
 
 
+#: the same parts as a field's label names them: «момент инерции коленчатого вала» (Russian's
+#: genitive; English as PART)
+PART_OF = words("part_of", {
+    "crankshaft": "crankshaft", "crank": "crank", "crank_gear": "crank gear",
+    "gearbox": "gearbox", "gear": "gear", "rotor": "rotor", "motor": "motor rotor",
+    "coupling": "coupling", "pulley": "pulley", "counterweights": "counterweights",
+    "camshaft": "camshaft", "flywheel": "flywheel",
+})
+#: the course's symbols of the first group's parts (seed 000: J_10 the crankshaft's, J_ред the
+#: gearbox's reduced to the crank), as the formula J_М = J_I − (J_10 + J_ред) names them
+PART_SYMBOL = {"crankshaft": ("J_10", "J_10"), "gearbox": ("J_red", "J_ред")}
+
+
 def part_name(key: str, lang: str) -> str:
     """A first-group part's name in ``lang`` (:data:`PART`: "crank_gear" → "crank gear",
     «кривошипное колесо»), else the case's own key."""
@@ -338,7 +351,7 @@ def field_label(path: str, lang: str = "en", names: dict[str, str] | None = None
     >>> field_label("flywheel.J", "ru", kinds=("run",)), field_label("flywheel.J", "ru")
     ('момент инерции заданного маховика J_М', 'flywheel.J')
     >>> field_label("machine.first_group.gearbox", "ru")
-    'момент инерции: редуктор (приведён к кривошипу)'
+    'момент инерции редуктора (приведённый к кривошипу) J_ред'
     """
     for key in (*(f"{k}:{path}" for k in kinds), path):
         m = _matched(key, _SHEET_FIELD_RANK)
@@ -348,8 +361,10 @@ def field_label(path: str, lang: str = "en", names: dict[str, str] | None = None
         _, en, ru = SHEET_FIELDS[k]
         if en.startswith("@"):
             return name(en[1:], lang)
-        if x and key.endswith(f"first_group.{x}"):   # a part: its usual name
-            x = part_name(x, lang)
+        if x and key.endswith(f"first_group.{x}"):   # a part: «коленчатого вала J_10»
+            sym = PART_SYMBOL.get(x, ("", ""))[lang == "ru"]
+            label = (ru if lang == "ru" else en).format(x=PART_OF[lang].get(x, x))
+            return f"{label} {sym}" if sym else label
         elif x and key.startswith(("points.", "ground.")):   # a point: S₂
             x = point_name(x)
         if not x and i:
