@@ -596,3 +596,24 @@ def test_a_set_with_a_negative_answer_says_the_sign_convention(tmp_path):
             text = page.read_text(encoding="utf-8").replace("\xa0", " ")
             assert ("Моменты и работы — со знаком: положительные направлены по вращению "
                     "кривошипа" in text) == signed, page.name
+
+
+def test_a_points_place_on_its_link_says_from_which_joint():
+    """«Точка S₂: доля длины звена 0,3» left the student to guess which end it is measured
+    from: the label names the link and the joints as the записка does, «точка S₂ звена 2:
+    доля длины AB l_AS2/l_AB» (cases/variants_compressor.toml: S2 on link 2 from A to B)."""
+    import tomllib
+
+    from flywheel.render.sheet_labels import field_label
+    from flywheel.teaching.sheets import element_names
+
+    doc = tomllib.loads(COMPRESSOR.read_text(encoding="utf-8"))
+    names = element_names(doc)
+    assert field_label("points.S2.fraction", "ru", names) == \
+        "точка S₂ звена 2: доля длины AB l_AS2/l_AB"
+    assert field_label("points.S4.fraction", "en", names) == \
+        "point S₄ of link 4: share of AC l_AS4/l_AC"
+    shaper = tomllib.loads((CASES / "variants_shaper.toml").read_text(encoding="utf-8"))
+    assert field_label("points.Q.distance", "ru", element_names(shaper)) == \
+        "точка Q звена 3: расстояние от O l_OQ"
+    assert field_label("points.S2.fraction", "ru") == "точка S₂: доля длины звена"   # no names

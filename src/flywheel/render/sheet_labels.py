@@ -320,6 +320,28 @@ def field_kinds(kind: str, speed_ratio=1) -> tuple[str, ...]:
     return ("run,i", "run") if kind == "run" and speed_ratio != 1 else (kind,)
 
 
+#: a point on its link, where the case says the joints it is measured from (and to), as the
+#: записка's input table words it (render/document.py "share", "distance")
+POINT_LABELS = {"fraction": ("point {p} of link {x}: share of {ab} l_{a}{n}/l_{ab}",
+                             "точка {p} звена {x}: доля длины {ab} l_{a}{n}/l_{ab}"),
+                "distance": ("point {p} of link {x}: distance from {a} l_{a}{n}",
+                             "точка {p} звена {x}: расстояние от {a} l_{a}{n}")}
+
+
+def _point_label(path: str, lang: str, names: dict) -> str:
+    """The label of a point's share or distance along its link («точка S₂ звена 2: доля длины
+    AB l_AS2/l_AB») where ``names`` has its link and joints (teaching/sheets.element_names);
+    "" otherwise (the plain «точка S₂: доля длины звена»)."""
+    parts = path.split(".")
+    if len(parts) != 3 or parts[0] != "points" or parts[2] not in POINT_LABELS:
+        return ""
+    n, what = parts[1], parts[2]
+    a, b, x = (names.get(f"points.{n}.{k}", "") for k in ("from", "to", "link"))
+    if not a or not x or (what == "fraction" and not b):
+        return ""
+    return POINT_LABELS[what][lang == "ru"].format(p=point_name(n), x=x, a=a, n=n, ab=a + b)
+
+
 def as_printed(value, si: str):
     """(value, unit) of a datum as the sheets and the list of drawn values print it: a pressure
     in MPa as the course gives it (seed 000: p_max2 = 0.882 MPa; «880 000 Па» is hard to read),
@@ -353,6 +375,9 @@ def field_label(path: str, lang: str = "en", names: dict[str, str] | None = None
     >>> field_label("machine.first_group.gearbox", "ru")
     'момент инерции редуктора (приведённый к кривошипу) J_ред'
     """
+    point = _point_label(path, lang, names or {})
+    if point:
+        return point
     for key in (*(f"{k}:{path}" for k in kinds), path):
         m = _matched(key, _SHEET_FIELD_RANK)
         if m is None:

@@ -191,7 +191,8 @@ def element_names(document: dict, prefix: str = "") -> dict[str, str]:
     "A2"): a load's ``label`` (a string, or an io.text.Text of its ``{ ru, en }``) — a
     cylinder's as it is («цилиндр ВД»), a force's or spring's as its F's subscript («сила
     F_пс»), a couple's as its M's — else its ``name``, else its ``joint`` (a dyad is named by
-    its joint); arrays inside a table too (a crank's pins)."""
+    its joint); arrays inside a table too (a crank's pins); a point's link and the joints it is
+    measured from and to ("points.S2.from" → "A")."""
     from flywheel.io.text import Text
 
     out = {}
@@ -212,6 +213,11 @@ def element_names(document: dict, prefix: str = "") -> dict[str, str]:
                         out[f"{prefix}{key}.{i}"] = name
         elif isinstance(value, dict) and not prefix:
             out.update(element_names(value, f"{key}."))
+    points = document.get("points") if not prefix else None
+    for name, p in (points.items() if isinstance(points, dict) else ()):
+        for k in ("link", "from", "to"):        # a point on its link: «l_AS2/l_AB» on the sheet
+            if isinstance(p, dict) and isinstance(p.get(k), str) and p[k]:
+                out[f"points.{name}.{k}"] = p[k]
     return out
 
 
