@@ -166,3 +166,20 @@ def test_the_run_record_ends_with_a_conclusion_of_its_main_results(name, lang):
     assert value("m") == pytest.approx(s.flywheel_disk.mass, rel=1e-3)
     assert items[-1].endswith(".") and all(x.endswith(";") for x in items[:-1])
     assert (s.flywheel_speed_ratio != 1.0) == any("/i" in x for x in items)
+
+
+def test_a_tables_dashes_are_one_dash():
+    """A «Ед.» column had mixed «–» (a dimensionless quantity) and «—» (a text value, no data):
+    a table keeps one dash, «—», for both (ГОСТ 2.105-2019, 4.4.15: «ставится прочерк»)."""
+    from flywheel.cases.run import load_case
+    from flywheel.dynamics.pipeline import analyze
+    from flywheel.render.document import build_document
+    from flywheel.render.numbers import typography
+
+    t = Table(1, "x", ("Величина", "Значение", "Ед."), (("δ", "0,05", "–"), ("материал", "сталь", "")))
+    assert [r[2] for r in t.rows] == ["—", "—"]
+    res = analyze(load_case(CASES / "compressor.toml"), n_points=360)
+    with typography("ru"):
+        doc = build_document(res, "ru")
+    cells = [c for b in doc.tables for r in b.rows for c in r]
+    assert "—" in cells and "–" not in cells

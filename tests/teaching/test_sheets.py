@@ -136,7 +136,7 @@ def test_the_sheet_carries_the_variants_own_values(compressor_dir):
         # (the pressure in MPa, as the course gives it: seed 000's p_max2 = 0.882 MPa)
         expected = [v / 1e6 if path.endswith("p_max") else v for path, v in drawn.items()]
         assert [ru_numbers(r[1])[0] for r in given[1:]] == pytest.approx(expected, rel=1e-9)
-        assert [r[2] for r in given[1:]] == ["об/с", "–", "кг", "кг", "МПа", "м"]
+        assert [r[2] for r in given[1:]] == ["об/с", "—", "кг", "кг", "МПа", "м"]
         # the fixed data a student needs, from the variant file itself
         doc = tomllib.loads((compressor_dir / f"variant_{vid}.toml").read_text(encoding="utf-8"))
         rows = {r[0]: r[1:] for r in other[1:]}
@@ -265,7 +265,7 @@ def test_task2_sheet_gives_the_graphs_data(task2_dir):
         assert rows["Driving moment M_D"] == ["%g" % drawn["driving.value"], "N·m"]
         assert rows["M_C: start of its graph"] == ["%g" % drawn["resistance.from_deg"], "°"]
         other = {r[0]: r[1:] for r in sh.tables[1][1:]}
-        assert other["Allowed coefficient of speed fluctuation [δ]"] == ["0.05", "–"]
+        assert other["Allowed coefficient of speed fluctuation [δ]"] == ["0.05", "—"]
 
 
 def test_tabulated_template_sheets_without_drawing_one_note(tmp_path):
@@ -376,11 +376,11 @@ def test_text_data_are_on_the_sheet_in_words(tmp_path):
                      "--sheets-format", "html", "--lang", lang)
         assert res.exit_code == 0, res.output
         rows = rows_of(sheet_of(out, "01"))
-        assert rows[order] == ["1-3-4-2", "–"]
+        assert rows[order] == ["1-3-4-2", "—"]
         assert rows[head][0] == ("внешняя (дальняя от оси кривошипа)" if lang == "ru"
                                  else "outer (farther from the crank axis)")
-        assert rows[turn[0]] == [turn[1], "–"]
-        assert rows[balance[0]] == [balance[1], "–"]
+        assert rows[turn[0]] == [turn[1], "—"]
+        assert rows[balance[0]] == [balance[1], "—"]
         # the element names and the computing choices are not data of the task
         values = [v[0] for v in rows.values()]
         assert not {"outer", "cw", "resistance", "RRP", "p1", "r1"} & set(values)
@@ -388,8 +388,8 @@ def test_text_data_are_on_the_sheet_in_words(tmp_path):
     assert invoke(CASES / "variants_shaper.toml", "--count", 1, "--seed", 2, "--out", shaper,
                   "--sheets", "--sheets-format", "html", "--lang", "ru").exit_code == 0
     rows = rows_of(sheet_of(shaper, "01"))
-    assert rows["Материал маховика"] == ["чугун", "–"]
-    assert rows["Сила F_пс: действует при движении ползуна"] == ["к этой мёртвой точке", "–"]
+    assert rows["Материал маховика"] == ["чугун", "—"]
+    assert rows["Сила F_пс: действует при движении ползуна"] == ["к этой мёртвой точке", "—"]
     assert rows["Сила F_пс: мёртвая точка начала отсчёта перемещения s"][0] == \
         "внешняя (дальняя от оси кривошипа)"
     # a force's magnitude is worded as its other rows are (its label the subscript of F)

@@ -88,8 +88,8 @@ NO_DATA = "—"
 @dataclass(frozen=True)
 class Table:
     """A numbered table: its column heads and each row's head (its first cell) from a capital
-    letter (:func:`capital`), an empty cell a dash (:data:`NO_DATA`; a task sheet's blank cell to
-    fill in is no-break spaces, not empty), whoever builds it."""
+    letter (:func:`capital`), an empty cell and a dimensionless unit a dash (:data:`NO_DATA`; a
+    task sheet's blank cell to fill in is no-break spaces, not empty), whoever builds it."""
 
     number: int
     caption: str
@@ -101,9 +101,15 @@ class Table:
         object.__setattr__(self, "rows", tuple(_row(r) for r in self.rows))
 
 
+#: a cell that says "no unit" (a dimensionless quantity's, nomenclature.unit("-")): in a table
+#: the same dash as a cell without data, so that a column holds one kind of dash
+NO_UNIT = "–"
+
+
 def _row(cells: tuple[str, ...]) -> tuple[str, ...]:
-    """A table's row as :class:`Table` keeps it: its head from a capital, an empty cell a dash."""
-    cells = tuple(c or NO_DATA for c in cells)
+    """A table's row as :class:`Table` keeps it: its head from a capital, an empty cell and a
+    dimensionless unit's «–» the one dash «—» (a «Ед.» column had mixed the two)."""
+    cells = tuple(NO_DATA if not c or c == NO_UNIT else c for c in cells)
     return (capital(cells[0]), *cells[1:]) if cells else cells
 
 
