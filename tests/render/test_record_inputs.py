@@ -123,6 +123,10 @@ def test_a_tabulated_case_states_its_links_and_loads():
     masses = next(b for b in doc.blocks if isinstance(b, Table) and b.caption == ru["tab_masses"])
     assert [list(r[:4]) for r in masses.rows] == [["2", "255,1", "7,653", "B₂"], ["3", "81,6", "—", "B₂"],
                                             ["4", "102", "—", "B₄"], ["5", "—", "2,251", "—"]]
+    # the ω_q row a rotating link uses, by its name: «ω_q2» under «Вращение (ω_q)» (a bare «2»
+    # under «ω_q» had read as a value of ω_q)
+    assert masses.header[-1] == "Вращение (ω_q)"
+    assert [r[4] for r in masses.rows] == ["ω_q2", "—", "—", "ω_q5"]
     loads = _rows(doc, ru["tab_loads"])
     assert loads["Сила полезного сопротивления (штамповки)"] == "B₄"
     per = next(b for b in doc.blocks if isinstance(b, Table) and b.caption == ru["tab_rows"])

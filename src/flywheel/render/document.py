@@ -109,6 +109,7 @@ T = words("report", {
     "tab_masses": "Masses and moments of inertia of the links (the table's rows they use)",
     "tab_loads": "Loads", "tab_rows": "Loads at the table's positions",
     "per_position": "at each position (table {n})", "moves_with": "point (|V_q|)",
+    "turns_with": "rotation (ω_q)",
     "tab_note": ("α is the angle between a force and its point's velocity (180° opposes the "
                  "motion); a force's reduced moment is M = F·|V_q|·cos α."),
     "trace": ("The indicator diagram of cylinder {c} is a pressure trace against {against} "
@@ -774,12 +775,13 @@ def _input_of_table(b: _Builder, tab, t: dict, lang: str) -> None:
 
     if tab.links:
         b.add(Heading(3, f"1.2. {t['masses']}"))
+        wq = nm.symbol("omega_q", lang)         # a row of the table: «ω_q2», not «2»
         b.table(t["tab_masses"], [t["link"], nm.heading("link_mass", lang),
                                   nm.with_unit("J", u("J_S"), lang), t["moves_with"],
-                                  nm.symbol("omega_q", lang)],
+                                  t["turns_with"]],
                 [[k, gi(v.mass, 6) if v.mass else "—", gi(v.J, 6) if v.J else "—",
                   point_name(v.point) if v.point else "—",
-                  (v.omega_q or k) if v.J and (v.omega_q or k) in tab.omega_q else "—"]
+                  f"{wq}{v.omega_q or k}" if v.J and (v.omega_q or k) in tab.omega_q else "—"]
                  for k, v in tab.links.items()])
     if not (tab.forces or tab.moments):
         return
