@@ -134,6 +134,14 @@ def test_a_tabulated_case_states_its_links_and_loads():
     punch = {r[0]: r[-1] for r in per.rows}
     assert (punch["90"], punch["120"], punch["150"]) == ("1750", "5540", "0")
     assert [r[1] for r in per.rows][:3] == ["180", "128", "104"]      # α(G2) at 0°, 30°, 60°
+    # the positions' tables: a row's label without the angle the φ column beside it says
+    # («1 (0°) | 0» had said it twice); the report angle's tables without the columns the
+    # table's kinematics cannot fill (no acceleration analogues: a_q, a, ε_q, ε all «—»)
+    kin = next(b for b in doc.blocks if isinstance(b, Table) and b.header[1] == "φ, °")
+    assert [r[:2] for r in kin.rows[:2]] == [("1", "0"), ("2", "30")], kin.rows[:2]
+    at = [b for b in doc.blocks if isinstance(b, Table) and "φ = 120°" in b.caption]
+    assert [b.header for b in at] == [("Точка", "v_q, м/рад", "v, м/с"),
+                                      ("Звено", "ω_q", "ω, рад/с")], [b.header for b in at]
 
 
 def test_a_measured_indicator_diagram_is_said_not_listed():

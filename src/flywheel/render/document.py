@@ -524,13 +524,17 @@ def build_document(results, lang: str = "en", plots: list[str] | None = None,
         b.add(Heading(3, f"6.{k}. {t['at_phi'].format(a=g(a.phi_deg, 6))}"))
         b.add(Paragraph(t["at"].format(w=g(a.omega, 6), uw=u("omega"), e=g(a.epsilon, 6),
                                        ue=u("epsilon"))))
+        # a column no row has a value for is left out (a tabulated case's kinematics give no
+        # acceleration analogues: its a_q, a, ε_q, ε had been columns of dashes)
+        pk = [x for x in point_keys if any(getattr(p, x) is not None for p in a.points.values())]
+        lk_ = [x for x in link_keys if any(getattr(v, x) is not None for v in a.links.values())]
         if a.points:
-            b.table(t["points_caption"].format(a=g(a.phi_deg, 6)), [t["point"], *(h(x) for x in point_keys)],
-                    [[point_name(n)] + [g(getattr(p, x), 5) for x in point_keys]
+            b.table(t["points_caption"].format(a=g(a.phi_deg, 6)), [t["point"], *(h(x) for x in pk)],
+                    [[point_name(n)] + [g(getattr(p, x), 5) for x in pk]
                      for n, p in a.points.items()])
         if a.links:
-            b.table(t["links_caption"].format(a=g(a.phi_deg, 6)), [t["link"], *(h(x) for x in link_keys)],
-                    [[n] + [g(getattr(lk, x), 5) for x in link_keys] for n, lk in a.links.items()])
+            b.table(t["links_caption"].format(a=g(a.phi_deg, 6)), [t["link"], *(h(x) for x in lk_)],
+                    [[n] + [g(getattr(lk, x), 5) for x in lk_] for n, lk in a.links.items()])
     b.figures_of("motion")
 
     td = s.time_domain

@@ -5,6 +5,7 @@ render/report_kinematics.py, render/forces.py)."""
 from __future__ import annotations
 
 import math
+import re
 
 from flywheel.render.nomenclature import DEAD_CENTRES
 
@@ -33,6 +34,10 @@ DEAD_CENTRES_PLURAL = {"outer": "внешние", "inner": "внутренние
 POSITION_WHERE = ("position {n}", "положение {n}")
 
 
+#: a tabulated position's label's own angle, «2 (30°)»: the tables give φ in a column beside it
+_WITH_ANGLE = re.compile(r"\s*\([−\-+]?[\d.,]+°\)$")
+
+
 def numbered(positions) -> bool:
     """Whether a record's tables give these positions by their numbers (a linkage's, as
     plan_positions.png draws them) rather than by their labels (a tabulated case's rows)."""
@@ -47,7 +52,8 @@ def position_cells(positions, lang: str = "en") -> tuple[list[str], str]:
     alone: the angle is the table's φ column beside it, the dead centres the sentence's —
     «Положение 0 — внешняя мёртвая точка ползуна 3; положение 6 — …»; a position off the
     numbered ones (a dead centre between them) is named by its angle. Unnumbered positions (a
-    table's rows) keep their :func:`position_label`.
+    table's rows) keep their :func:`position_label`, without the angle in brackets «(30°)» it
+    may end with (the φ column says it).
 
     >>> from flywheel.dynamics.results import DeadCentre as D, Position as P
     >>> position_cells([P(phi=0.0, standard_deg=0, number=0, dead_centres=(D("3", "outer"),
@@ -55,8 +61,8 @@ def position_cells(positions, lang: str = "en") -> tuple[list[str], str]:
     (['0', '1'], 'Положение 0 — внешние мёртвые точки ползунов 3 и 9, внутренняя мёртвая точка ползуна 5.')
     """
     ru = lang == "ru"
-    if not numbered(positions):
-        return [position_label(p, lang) for p in positions], ""
+    if not numbered(positions):                 # a table's row «2 (30°)»: «2», φ beside it
+        return [_WITH_ANGLE.sub("", position_label(p, lang)) for p in positions], ""
     from flywheel.render.numbers import fmt
 
     one, several = DEAD_CENTRE_NOTE[ru]
