@@ -246,6 +246,11 @@ def test_the_docx_has_the_gost_margins_styles_and_caption_fields(gost_run):
     captions = [p for p in d.paragraphs if p.style.name == "Caption"]
     assert any(p.text.startswith("Таблица ") for p in captions)
     assert any(p.text.startswith("Рисунок ") for p in captions)
+    # a table's caption at the left, not justified as the text is (its two lines had been
+    # stretched); a figure's centred under it
+    assert d.styles["Caption"].paragraph_format.alignment == WD_ALIGN_PARAGRAPH.LEFT
+    assert all(p.paragraph_format.alignment in (None, WD_ALIGN_PARAGRAPH.LEFT)
+               for p in captions if p.text.startswith("Таблица "))
     # the numbers of a table right-aligned, its first column left
     t = d.tables[0]
     body = t.rows[1:]

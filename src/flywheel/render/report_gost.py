@@ -359,6 +359,9 @@ def _styles(d) -> None:
     cap = d.styles["Caption"]
     font(cap, 14)
     cap.paragraph_format.first_line_indent = Cm(0)
+    # a table's caption at the left (ГОСТ 7.32-2017, 6.6.3), not justified as Normal is: a
+    # caption of two lines had had its first stretched across the page
+    cap.paragraph_format.alignment = WD_ALIGN_PARAGRAPH.LEFT
     cap.paragraph_format.space_before, cap.paragraph_format.space_after = Pt(6), Pt(6)
     cap.paragraph_format.line_spacing_rule = WD_LINE_SPACING.SINGLE
     lst = d.styles["List Bullet"]
