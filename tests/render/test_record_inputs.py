@@ -231,3 +231,26 @@ def test_a_first_group_part_is_named_in_words_in_english_too():
     ru = _rows(_document("shaper", "ru")[1], T["ru"]["machine"])
     assert any("кривошипное колесо" in k for k in ru), ru
     assert part_name("my_rotor", "en") == part_name("my_rotor", "ru") == "my_rotor"
+
+
+@pytest.mark.parametrize("name, caption, title", [
+    ("press", "Уравновешивающий момент на кривошипе из баланса мощностей", "из баланса мощностей"),
+    ("compressor", "Уравновешивающий момент на кривошипе: групп Ассура и с учётом инерции маховика",
+     "группы Ассура и маховик")])
+def test_the_balancing_moments_figure_says_the_methods_it_draws(name, caption, title):
+    """A tabulated case (the press) has no Assur groups and no kinetostatics: its figure draws
+    M_у from the power balance alone, and its caption and title say so (they had said «групп
+    Ассура …» and «три способа» over one line)."""
+    from flywheel.render import figure as fg
+    from flywheel.render.blocks import Figure
+    from flywheel.render.plots_forces import figure_balancing_moment
+
+    case = load_case(CASES / f"{name}.toml")
+    res = analyze(case, n_points=360)
+    with typography("ru"):
+        doc = build_document(res, "ru", ["balancing_moment.png"], case=case)
+    (fig,) = [b for b in doc.blocks if isinstance(b, Figure)]
+    assert fig.caption == caption
+    with fg.style("ru"):
+        plot = figure_balancing_moment(res, "ru")
+    assert title in plot.axes[0].get_title().replace("\n", " ")

@@ -173,6 +173,8 @@ T = words("report", {
         "positions": "Position functions of the points x(φ), y(φ)", "scheme": "Scheme of the mechanism",
         "reactions": "Reactions in the kinematic pairs",
         "balancing_moment": "Balancing moment on the crank: of the Assur groups and with the flywheel's inertia",
+        # a tabulated case's: no groups, the power balance alone (dynamics/forces.py)
+        "balancing_moment_power": "Balancing moment on the crank from the power balance",
         "hodographs": "Polar diagrams of the crank-pin, main-bearing and shaking loads",
         "hodographs_linkage": "Polar diagrams of the crank-pin, main-bearing and shaking loads",
         "velocity_analogues": "Velocity analogues of the points",
@@ -215,14 +217,17 @@ def gi(x, digits: int = 6) -> str:
 
 
 def _figure_caption(file: str, lang: str, pistons: bool = True,
-                    cylinders: dict[str, str] | None = None) -> str:
+                    cylinders: dict[str, str] | None = None, groups: bool = True) -> str:
     """The caption of plots/``file``; piston_forces.png of a machine with no cylinder draws
     the applied forces (a cutting force, a spring's tension), and its hodographs' crank pin
     and main bearing are the crank's, not a crankshaft's: ``pistons`` False. ``cylinders``:
     an indicator diagram's file stem → its cylinder's label in ``lang`` (else the stem's
-    name)."""
+    name). ``groups`` False: a tabulated case's balancing moment, from the power balance
+    alone."""
     t = T[lang]["fig"]
     stem = file.rsplit(".", 1)[0]
+    if stem == "balancing_moment" and not groups:
+        return t["balancing_moment_power"]
     if stem == "piston_forces" and not pistons:
         return t["applied_forces"]
     if stem == "hodographs" and not pistons:      # no crankshaft: the crank's pin and bearing
@@ -254,6 +259,7 @@ class _Builder:
         self.n_figures = 0
         self.plots = list(plots or [])
         self.pistons = True             # piston_forces.png draws gas forces (else applied ones)
+        self.groups = True              # a linkage's Assur groups (a tabulated case has none)
         self.cylinders: dict[str, str] = {}   # an indicator figure's stem → its cylinder's label
 
     def add(self, block) -> None:
@@ -271,7 +277,8 @@ class _Builder:
     def figures_of(self, section: str) -> None:
         for f in [p for p in self.plots if _section_of(p) == section]:
             self.n_figures += 1
-            caption = _figure_caption(f, self.doc.lang, self.pistons, self.cylinders)
+            caption = _figure_caption(f, self.doc.lang, self.pistons, self.cylinders,
+                                      self.groups)
             self.add(Figure(self.n_figures, caption, f))
             self.plots.remove(f)
 
@@ -332,6 +339,7 @@ def build_document(results, lang: str = "en", plots: list[str] | None = None,
     title, source = in_language(results.title, lang), in_language(results.source, lang)
     b = _Builder(title, lang, plots)
     b.pistons = bool(results.cylinders)
+    b.groups = results.drawing is not None
     b.cylinders = {nm.indicator_stem(c.name): nm.cylinder_label(c, lang) for c in results.cylinders}
 
     def sym(key):

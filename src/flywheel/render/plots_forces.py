@@ -95,7 +95,9 @@ def figure_balancing_moment(results, lang: str = "en"):
     ax.set_ylim(lo - pad, hi + pad)
     ax.set_ylabel(axis("M_y", lang))
     fg.phi_axis(ax, lang, cycle_deg=results.cycle_deg)
-    what = (_t(lang, "moment_groups") if groups else _t(lang, "moment") if f.motion == "true"
+    what = (_t(lang, "moment_groups") if groups else
+            _t(lang, "moment_power") if f.analysis is None and f.motion == "true" else
+            _t(lang, "moment") if f.motion == "true"
             else _t(lang, "moment_steady", w=float(f.omega[0])))
     ax.set_title(fg.title(results, what))
     fg.legend(ax)            # after the title: a title too wide is broken
