@@ -8,8 +8,8 @@ from __future__ import annotations
 import difflib
 import math
 import re
-from pathlib import Path
 from collections.abc import Callable, Iterable
+from pathlib import Path
 from typing import TypeVar
 
 from pydantic import BaseModel, ConfigDict, ValidationError

@@ -534,15 +534,15 @@ def build_document(results, lang: str = "en", plots: list[str] | None = None,
                                        ue=u("epsilon"))))
         # a column no row has a value for is left out (a tabulated case's kinematics give no
         # acceleration analogues: its a_q, a, ε_q, ε had been columns of dashes)
-        pk = [x for x in point_keys if any(getattr(p, x) is not None for p in a.points.values())]
-        lk_ = [x for x in link_keys if any(getattr(v, x) is not None for v in a.links.values())]
+        pkeys = [x for x in point_keys if any(getattr(p, x) is not None for p in a.points.values())]
+        lkeys = [x for x in link_keys if any(getattr(v, x) is not None for v in a.links.values())]
         if a.points:
-            b.table(t["points_caption"].format(a=g(a.phi_deg, 6)), [t["point"], *(h(x) for x in pk)],
-                    [[point_name(n)] + [g(getattr(p, x), 5) for x in pk]
+            b.table(t["points_caption"].format(a=g(a.phi_deg, 6)), [t["point"], *(h(x) for x in pkeys)],
+                    [[point_name(n)] + [g(getattr(p, x), 5) for x in pkeys]
                      for n, p in a.points.items()])
         if a.links:
-            b.table(t["links_caption"].format(a=g(a.phi_deg, 6)), [t["link"], *(h(x) for x in lk_)],
-                    [[n] + [g(getattr(lk, x), 5) for x in lk_] for n, lk in a.links.items()])
+            b.table(t["links_caption"].format(a=g(a.phi_deg, 6)), [t["link"], *(h(x) for x in lkeys)],
+                    [[n] + [g(getattr(lk, x), 5) for x in lkeys] for n, lk in a.links.items()])
     b.figures_of("motion")
 
     td = s.time_domain
@@ -577,7 +577,7 @@ def build_document(results, lang: str = "en", plots: list[str] | None = None,
 def _conclusion(b: _Builder, results, t: dict, lang: str) -> None:
     """«Заключение» (ГОСТ 7.32-2017: the conclusion states the work's results): the main
     results, as drawing sheet 1's table gives them (render/main_results.py), a line each,
-    «приведённый движущий момент (среднее за цикл) M_Д = 197,5 Н·м;»."""
+    «приведённый движущий момент M_Д = 197,5 Н·м;», the last with a full stop."""
     from flywheel.render.main_results import main_results
 
     rows = main_results(results, lang, ratio_text=lambda i: g(i, 6))

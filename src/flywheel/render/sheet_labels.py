@@ -350,12 +350,14 @@ def as_printed(value, si: str):
     >>> as_printed(882000.0, "Pa"), as_printed((0.5, 1.0), "m")
     ((0.882, 'MPa'), ((0.5, 1.0), 'm'))
     """
+    from flywheel.units import PA_PER_MPA
+
     if si != "Pa":
         return value, si
 
     def mpa(v):
         return tuple(mpa(x) for x in v) if isinstance(v, tuple) else (
-            v / 1e6 if isinstance(v, (int, float)) and not isinstance(v, bool) else v)
+            v / PA_PER_MPA if isinstance(v, (int, float)) and not isinstance(v, bool) else v)
 
     return mpa(value), "MPa"
 
