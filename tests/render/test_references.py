@@ -37,6 +37,19 @@ def test_a_table_the_text_names_gets_no_second_reference():
     assert referenced(blocks, "ru") == blocks
 
 
+def test_the_sources_own_table_and_figure_are_no_reference():
+    """Task 2's source names the textbook's «таблица 27, рис. 5» (and so does the list of
+    sources): not this record's table 1 or figure 1, which keep their sentences; a record with a
+    fifth figure had lost its reference to that «рис. 5»."""
+    from flywheel.render.blocks import Source
+
+    src = Source("Источник: учебная задача «Задача 2» (таблица 1), рис. 1")
+    out = referenced([src, table(1), Figure(1, "Графики моментов", "m.png"),
+                      Heading(2, "Источники"), Bullets(("[1] то же, таблица 2",)), table(2)], "ru")
+    assert texts(out) == [src.text, "Аналоги скоростей — в таблице 1.",
+                          "Графики моментов — на рисунке 1.", "Аналоги скоростей — в таблице 2."]
+
+
 def test_a_mention_after_the_table_is_no_reference_to_it():
     """A table stands after the text that first names it: «M_Σ в таблице 9 — …» under the
     table does not spare the sentence before it."""

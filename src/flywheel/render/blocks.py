@@ -40,6 +40,13 @@ class Where(Paragraph):
         return self.text.split("\n")
 
 
+@dataclass(frozen=True)
+class Source(Paragraph):
+    """The line that names the case's source («Источник: учебная задача «Задача 2» …, таблица
+    27, рис. 5»): a paragraph to every writer; its «таблица 27» is the source's, not a
+    reference to this document's table (:func:`referenced`)."""
+
+
 def sentence(text: str) -> str:
     """A line of the terminal (``ratio: 0,16``) as a paragraph of the записка: a capital
     first letter and a full stop.
@@ -196,7 +203,7 @@ class Document:
         doc = cls(title or heading, lang)
         doc.blocks.append(Heading(1, f"{heading}: {title}" if title else heading))
         if source:
-            doc.blocks.append(Paragraph(f"{source_word}: {source}"))
+            doc.blocks.append(Source(f"{source_word}: {source}"))
         return doc
 
 
@@ -225,6 +232,9 @@ _CITED = {"table": re.compile(r"(?i)таблиц\w*\s+(\d+)"),
 
 
 def _texts(b) -> tuple[str, ...]:
+    """The text of a block that may refer to a table or figure (not the case's source line)."""
+    if isinstance(b, Source):
+        return ()
     if isinstance(b, Paragraph):
         return (b.text,)
     if isinstance(b, Bullets):
@@ -251,12 +261,15 @@ def referenced(blocks, lang: str) -> list:
             cited[kind] |= {int(m) for t in _texts(b) for m in rx.findall(t)}
 
     out: list = []
-    i = 0
+    i, sources = 0, False               # the list of sources cites other works' tables
     while i < len(blocks):
         b = blocks[i]
+        if isinstance(b, Heading):
+            sources = HEADING_NUMBER.sub("", b.text).rstrip(".") in SOURCES
         kind = "table" if isinstance(b, Table) else "figure" if isinstance(b, Figure) else ""
         if not kind or b.number in cited[kind]:
-            read(b)
+            if not sources:
+                read(b)
             out.append(b)
             i += 1
             continue

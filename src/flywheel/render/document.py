@@ -357,7 +357,7 @@ def build_document(results, lang: str = "en", plots: list[str] | None = None,
 
     b.add(Heading(1, f"{t['title']}: {title}"))
     if source:
-        b.add(Paragraph(f"{t['source']}: {source}"))
+        b.add(blocks.Source(f"{t['source']}: {source}"))
     if not plots:
         b.add(Paragraph(t["no_plots"]))
 

@@ -8,7 +8,7 @@ from __future__ import annotations
 import math
 
 from flywheel.render import nomenclature as nm
-from flywheel.render.blocks import referenced
+from flywheel.render.blocks import Source, referenced
 from flywheel.render.positions import numbered, position_cells
 from flywheel.render.catalogue import words
 from flywheel.render.mathfmt import point_name
@@ -39,7 +39,7 @@ def build_kinematics_document(results, lang: str = "en", plots: list[str] | None
 
     b.add(Heading(1, f"{k['title']}: {results.title}"))
     if results.source:
-        b.add(Paragraph(f"{t['source']}: {results.source}"))
+        b.add(Source(f"{t['source']}: {results.source}"))
     w = results.omega_mean
     b.add(Paragraph(k["note"].format(w=nm.symbol("omega_mean", lang), v=g(w, 6),
                                      u=nm.unit_of("omega_mean", lang))))
