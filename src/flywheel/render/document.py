@@ -451,14 +451,13 @@ def build_document(results, lang: str = "en", plots: list[str] | None = None,
     body = [[*lab, g(cols["phi_deg"].values[i], 6), at("J_II", i, 4), at("dJ_II", i, 4)]
             + [at(k, i, 5) for k in mk] + [at("M_sum", i, 5)] for lab, i in idx]
     positions_table(t["red_caption"], header, body)
-    bal = cycle_balance(results)              # M_Σ's constant part: the moment found in §4
+    bal = cycle_balance(results)              # M_Σ's constant part, the moment §4 finds
     b.add(Paragraph(t["sum_note"].format(S=sym("M_sum"), n=b.n_tables, M=sym(bal.keys[2]),
                                          v=g(bal.moment, 4), u=u("M_sum"))))
     b.figures_of("red")
 
     # 4. energy -------------------------------------------------------------------------------
     b.add(Heading(2, t["energy"]))
-    bal = cycle_balance(results)
     kA, kM, kx = bal.keys
     dTI, TII, wm = _mt("dT_I", lang), _mt("T_II", lang), _mt("omega_mean", lang)
     b.add(Paragraph(t["signs"]))

@@ -1,8 +1,8 @@
 """The main results of a run, a row each — name, symbol, value, unit — as drawing sheet 1's
 table and the записка's conclusion give them (ГОСТ 7.32-2017: the conclusion, «Заключение»,
-states the results of the work): the constant moment of the cycle balance, ΔT_нб, J_I, J_М (and J_М/i² on
-the flywheel's own shaft), the δ asked and the δ achieved (a given flywheel's one), the disk
-flywheel's D, b, m. Values in SI; the renderers format them.
+states the results of the work): the constant moment of the cycle balance, ΔT_нб, J_I, J_М
+(and J_М/i² on the flywheel's own shaft), the δ asked and the δ achieved (a given flywheel's
+one), the disk flywheel's D, b, m. Values in SI; the renderers format them.
 """
 from __future__ import annotations
 

@@ -195,8 +195,8 @@ def build_sheet(sheet, lang: str = "ru", figure: str | None = None) -> Document:
         if rows:
             number += 1
             doc.blocks.append(Table(number, w[part], header, tuple(
-                (field_label(g.path, lang, names, kinds), _value(_in_mpa(g), lang),
-                 nm.unit(_in_mpa(g).unit, lang) if g.unit else "–") for g in rows)))
+                (field_label(g.path, lang, names, kinds), _value(g, lang),
+                 nm.unit(g.unit, lang) if g.unit else "–") for g in map(_in_mpa, rows))))
     doc.blocks.append(Heading(2, w["find"]))
     items = find_items(sheet, lang)
     doc.blocks += [Paragraph(item) for item in items]

@@ -136,9 +136,15 @@ _FLYWHEEL_DIMENSIONS = ("flywheel_disk", "flywheel_rim")
 #: first part): a sheet that asks no rim has no use for the rim's D₁/D, one that asks no
 #: dimension none for ρ and b/D — a datum that no answer uses reads as a contradiction
 #: («D₁/D = 0,8» beside «a solid disk D»)
-_FLYWHEEL_DATA = {"flywheel.inner_ratio": ("flywheel_rim",),
-                  "flywheel.density": _FLYWHEEL_DIMENSIONS,
-                  "flywheel.width_ratio": _FLYWHEEL_DIMENSIONS}
+_FLYWHEEL_DATA = {"flywheel.density": _FLYWHEEL_DIMENSIONS,
+                  "flywheel.width_ratio": _FLYWHEEL_DIMENSIONS,
+                  "flywheel.inner_ratio": ("flywheel_rim",)}
+
+
+def _needed(path: str, asked: set) -> bool:
+    """Whether a flywheel datum of :data:`_FLYWHEEL_DATA` is needed by an answer ``asked``
+    (their first parts); any other datum is."""
+    return path not in _FLYWHEEL_DATA or not asked.isdisjoint(_FLYWHEEL_DATA[path])
 
 
 def given_rows(kind: str, document: dict, varied, answers=None) -> tuple[Given, ...]:
@@ -151,8 +157,7 @@ def given_rows(kind: str, document: dict, varied, answers=None) -> tuple[Given, 
     asked = None if answers is None else {a.split(".")[0] for a in answers}
 
     def needed(path: str) -> bool:
-        return asked is None or path in order or not (
-            path in _FLYWHEEL_DATA and asked.isdisjoint(_FLYWHEEL_DATA[path]))
+        return asked is None or path in order or _needed(path, asked)
 
     rows = [Given(p, v, unit_of_path(kind, p), p in order)
             for p, v in _leaves({k: v for k, v in document.items() if k not in NOT_DATA})
@@ -175,11 +180,12 @@ def default_rows(document: dict, source: str, answers) -> tuple[Given, ...]:
     if fw.formulas == "course":
         return ()
     given = document.get("flywheel", {}) if isinstance(document.get("flywheel"), dict) else {}
-    wanted = [("density", fw.rho, "kg/m³"), ("width_ratio", fw.width_ratio, "")]
-    if any(a.split(".")[0] == "flywheel_rim" for a in answers):
-        wanted.append(("inner_ratio", fw.inner_ratio, ""))
-    return tuple(Given(f"flywheel.{k}", float(v), u, False) for k, v, u in wanted
-                 if k not in given)
+    value = {"density": (fw.rho, "kg/m³"), "width_ratio": (fw.width_ratio, ""),
+             "inner_ratio": (fw.inner_ratio, "")}
+    asked = {a.split(".")[0] for a in answers}
+    return tuple(Given(path, float(value[k][0]), value[k][1], False)
+                 for path in _FLYWHEEL_DATA if _needed(path, asked)
+                 and (k := path.split(".")[1]) not in given)
 
 
 #: the symbol whose subscript a load's ``label`` is, by its array: «сила F_пс», «пара сил M_с»
